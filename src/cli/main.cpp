@@ -1,0 +1,117 @@
+// attractor-cli: the command-line face of Attractor Workbench.
+
+#include "cli/FigureRenderer.h"
+#include "cli/Gallery.h"
+#include "core/Spectrum.h"
+
+#include <QCommandLineParser>
+#include <QDir>
+#include <QGuiApplication>
+#include <QTextStream>
+
+using namespace awb;
+
+namespace {
+
+QTextStream &out()
+{
+    static QTextStream s(stdout);
+    return s;
+}
+QTextStream &err()
+{
+    static QTextStream s(stderr);
+    return s;
+}
+
+int runExamples(const QStringList &args)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        "Render the bundled paper figures to PNG files (one row of panels per figure: the start "
+        "set, a few iterates of the Hutchinson operator, and the attractor, over the control "
+        "polygon).");
+    parser.addHelpOption();
+    parser.addOption({"out", "Directory for the PNG files (created if missing).", "dir",
+                      "gallery"});
+    parser.addOption({"list", "List the examples and exit."});
+    parser.process(args);
+    const auto gallery = builtinGallery();
+    if (parser.isSet("list")) {
+        for (const auto &ex : gallery)
+            out() << ex.id << "\t" << ex.title << "\n";
+        return 0;
+    }
+    QDir dir(parser.value("out"));
+    if (!dir.mkpath(".")) {
+        err() << "attractor-cli: cannot create directory " << dir.path() << "\n";
+        return 1;
+    }
+    for (const auto &ex : gallery) {
+        const SubdivisionIfs s = buildSubdivisionIfs(*ex.scheme, ex.controlPoints);
+        const IfsCheck check = checkIfs(s.ifs);
+        if (!check.contractive) {
+            err() << ex.id << ": " << QString::fromStdString(check.message) << "\n";
+            return 1;
+        }
+        FigureSpec spec;
+        spec.title = ex.title;
+        spec.ifs = &s.ifs;
+        spec.start = {ex.startKind, s.toIfsSpace(ex.start)};
+        spec.controlPoints = ex.controlPoints;
+        if (auto exact = ex.scheme->exactCurve(ex.controlPoints, 600))
+            spec.overlays.push_back(*exact);
+        spec.panels = {{"X0", 0}, {"F(X0)", 1}, {"F^3(X0)", 3}, {"F^6(X0)", 6},
+                       {QString("F^%1(X0)").arg(ex.depth), ex.depth}};
+        const QImage img = renderFigure(spec);
+        const QString file = dir.filePath(ex.id + ".png");
+        if (!img.save(file)) {
+            err() << "attractor-cli: cannot write " << file << "\n";
+            return 1;
+        }
+        out() << file << "\n";
+    }
+    return 0;
+}
+
+void usage()
+{
+    out() << "Usage: attractor-cli <command> [options]\n\n"
+             "Commands:\n"
+             "  examples   render the bundled paper figures to PNG files\n\n"
+             "Run 'attractor-cli <command> --help' for the options of a command.\n";
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    // Text in images needs a QGuiApplication; without a display, render off screen.
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") && qEnvironmentVariableIsEmpty("DISPLAY"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    QGuiApplication app(argc, argv);
+    QGuiApplication::setApplicationName("attractor-cli");
+    QGuiApplication::setApplicationVersion(PROJECT_VERSION);
+    QStringList args = app.arguments();
+    if (args.size() < 2 || args[1] == "--help" || args[1] == "-h" || args[1] == "help") {
+        usage();
+        return args.size() < 2 ? 2 : 0;
+    }
+    if (args[1] == "--version") {
+        out() << "attractor-cli " << PROJECT_VERSION << "\n";
+        return 0;
+    }
+    const QString command = args[1];
+    args.removeAt(1);
+    args[0] = "attractor-cli " + command;
+    try {
+        if (command == "examples")
+            return runExamples(args);
+    } catch (const InputError &e) {
+        err() << "attractor-cli " << command << ": " << e.what() << "\n";
+        return 1;
+    }
+    err() << "attractor-cli: unknown command '" << command << "'\n";
+    usage();
+    return 2;
+}

@@ -1,0 +1,156 @@
+#pragma once
+// Drawing attractors: deterministic iteration of the Hutchinson operator F(X) = U f_i(X) from
+// any start set, and random iteration (chaos game). Both stream what they make to a sink, so a
+// deep level never needs all N^k images in memory.
+
+#include "core/Ifs.h"
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+
+namespace awb {
+
+// A compact start set X_0 in the IFS space. Images of segments and polygons under affine maps
+// are segments and polygons, so only the vertices travel through the maps.
+struct StartSet {
+    enum class Kind { Points, Polyline, Polygon };
+    Kind kind = Kind::Points;
+    Mat vertices; // n x D
+
+    static StartSet points(const Mat &pts) { return {Kind::Points, pts}; }
+    static StartSet polyline(const Mat &pts) { return {Kind::Polyline, pts}; }
+    static StartSet polygon(const Mat &pts) { return {Kind::Polygon, pts}; }
+};
+std::string toString(StartSet::Kind kind);
+
+// Receives the image f_w(X_0) of the start set for each address w. address[0] is the map
+// applied last (the outermost one, i.e. which of the N pieces the image lies in).
+class AttractorSink {
+public:
+    virtual ~AttractorSink() = default;
+    virtual void consume(const Mat &vertices, StartSet::Kind kind, const std::uint8_t *address,
+                         int length) = 0;
+};
+
+struct IterationControl {
+    const std::atomic<bool> *cancel = nullptr;    // polled; set it to stop early
+    std::function<void(double)> progress;         // fraction done, called from worker threads
+};
+
+struct IterationStats {
+    std::uint64_t images = 0;  // start-set images emitted
+    bool cancelled = false;
+};
+
+// Number of images F^depth makes: N^depth (as a double, it may be huge).
+double imageCount(const Ifs &ifs, int depth);
+
+// F^depth(X_0), every image sent to sink. depth 0 emits X_0 itself. Throws InputError for
+// depth < 0 or > 64, or an invalid IFS.
+IterationStats iterate(const Ifs &ifs, const StartSet &start, int depth, AttractorSink &sink,
+                       const IterationControl &control = {});
+// The same on sinks.size() threads; each thread feeds its own sink (merge them afterwards).
+IterationStats iterateParallel(const Ifs &ifs, const StartSet &start, int depth,
+                               const std::vector<AttractorSink *> &sinks,
+                               const IterationControl &control = {});
+
+struct ChaosOptions {
+    std::uint64_t samples = 100000;
+    std::uint64_t seed = 1;
+    int skip = 32;            // first iterates not emitted (the orbit is not yet on the attractor)
+    int addressLength = 8;    // how many of the latest maps are passed as the address
+};
+// Random iteration from start point x0 (1 x D) with the IFS's probabilities (uniform if none).
+IterationStats chaosGame(const Ifs &ifs, const RowVec &x0, const ChaosOptions &options,
+                         AttractorSink &sink, const IterationControl &control = {});
+IterationStats chaosGameParallel(const Ifs &ifs, const RowVec &x0, const ChaosOptions &options,
+                                 const std::vector<AttractorSink *> &sinks,
+                                 const IterationControl &control = {});
+
+// ---- sinks ------------------------------------------------------------------------------------
+
+class CallbackSink : public AttractorSink {
+public:
+    using Fn = std::function<void(const Mat &, StartSet::Kind, const std::uint8_t *, int)>;
+    explicit CallbackSink(Fn fn) : m_fn(std::move(fn)) {}
+    void consume(const Mat &v, StartSet::Kind k, const std::uint8_t *a, int n) override
+    {
+        m_fn(v, k, a, n);
+    }
+
+private:
+    Fn m_fn;
+};
+
+// Collects the projected vertices of every image for one view, with the first address symbol.
+class PointCollector : public AttractorSink {
+public:
+    explicit PointCollector(Projection view, std::size_t maxPoints = 50'000'000);
+    void consume(const Mat &v, StartSet::Kind k, const std::uint8_t *a, int n) override;
+    // All collected points, one per row (k columns).
+    Mat points() const;
+    const std::vector<std::uint8_t> &firstSymbols() const { return m_symbols; }
+    bool truncated() const { return m_truncated; }
+
+private:
+    Projection m_view;
+    std::size_t m_max;
+    std::vector<double> m_data;
+    std::vector<std::uint8_t> m_symbols;
+    bool m_truncated = false;
+};
+
+// Axis-aligned bounds of the projected images (all views).
+class BoundsSink : public AttractorSink {
+public:
+    explicit BoundsSink(std::vector<Projection> views) : m_views(std::move(views)) {}
+    void consume(const Mat &v, StartSet::Kind k, const std::uint8_t *a, int n) override;
+    bool empty() const { return m_lo.size() == 0; }
+    RowVec lo() const { return m_lo; }
+    RowVec hi() const { return m_hi; }
+    bool finite() const { return m_finite; }
+
+private:
+    std::vector<Projection> m_views;
+    RowVec m_lo, m_hi;
+    bool m_finite = true;
+};
+
+// A 2D raster of hit counts, with an address-prefix label per pixel. World
+// rectangle [x0, x1] x [y0, y1] maps onto width x height pixels, y up. Segments are drawn as
+// lines, polygons filled.
+class RasterSink : public AttractorSink {
+public:
+    RasterSink(int width, int height, double x0, double y0, double x1, double y1,
+               std::vector<Projection> views, int prefixLength = 1);
+    void consume(const Mat &v, StartSet::Kind k, const std::uint8_t *a, int n) override;
+    void merge(const RasterSink &other);
+    void clear();
+
+    int width() const { return m_w; }
+    int height() const { return m_h; }
+    // Row 0 is the top of the image.
+    std::uint32_t hits(int x, int y) const { return m_hits[std::size_t(y) * m_w + x]; }
+    // 1 + address prefix (base-256 number of the first prefixLength symbols), smallest over all
+    // hits of the pixel; 0 where nothing hit it.
+    std::uint32_t label(int x, int y) const { return m_label[std::size_t(y) * m_w + x]; }
+    std::uint64_t litPixels() const;
+    std::uint64_t offscreen() const { return m_offscreen; }
+    std::uint64_t nonFinite() const { return m_nonFinite; }
+
+private:
+    void plot(int x, int y, std::uint32_t label);
+    void line(double ax, double ay, double bx, double by, std::uint32_t label);
+    void fill(const Mat &screen, std::uint32_t label);
+    Eigen::Vector2d toScreen(double x, double y) const;
+
+    int m_w, m_h;
+    double m_x0, m_y0, m_x1, m_y1;
+    std::vector<Projection> m_views;
+    int m_prefix;
+    std::vector<std::uint32_t> m_hits, m_label;
+    std::uint64_t m_offscreen = 0, m_nonFinite = 0;
+};
+
+} // namespace awb

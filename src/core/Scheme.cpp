@@ -1,0 +1,346 @@
+#include "core/Scheme.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace awb {
+
+namespace {
+std::string fmt(double v)
+{
+    std::ostringstream os;
+    os.precision(12);
+    os << v;
+    return os.str();
+}
+
+std::vector<double> linspace(double a, double b, int n)
+{
+    std::vector<double> v(n);
+    for (int i = 0; i < n; ++i)
+        v[i] = a + (b - a) * i / std::max(1, n - 1);
+    return v;
+}
+} // namespace
+
+Mat SubdivisionMatrices::refinement() const
+{
+    const Eigen::Index m = S.front().rows();
+    const Eigen::Index rows = m + Eigen::Index(S.size() - 1) * (m - overlap);
+    Mat R(rows, S.front().cols());
+    R.topRows(m) = S.front();
+    for (size_t j = 1; j < S.size(); ++j)
+        R.middleRows(m + Eigen::Index(j - 1) * (m - overlap), m - overlap) = S[j].bottomRows(m - overlap);
+    return R;
+}
+
+std::optional<Mat> CurveScheme::exactCurve(const Mat &, int) const { return std::nullopt; }
+
+void CurveScheme::requireControlPointCount(int m) const
+{
+    if (m < minControlPoints() || m > maxControlPoints()) {
+        std::ostringstream os;
+        os << name() << " needs ";
+        if (minControlPoints() == maxControlPoints())
+            os << "exactly " << minControlPoints();
+        else
+            os << "at least " << minControlPoints();
+        os << " control points, got " << m;
+        throw InputError(os.str());
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+
+UniformScheme::UniformScheme(std::string name, int arity, std::vector<SchemeRule> rules)
+    : m_name(std::move(name)), m_arity(arity), m_rules(std::move(rules))
+{
+    if (arity < 2)
+        throw InputError(m_name + ": the arity of a scheme must be at least 2, got "
+                         + std::to_string(arity));
+    if (int(m_rules.size()) != arity)
+        throw InputError(m_name + ": a scheme of arity " + std::to_string(arity) + " needs "
+                         + std::to_string(arity) + " rules, got " + std::to_string(m_rules.size()));
+    int kmin = INT_MAX, kmax = INT_MIN;
+    for (int r = 0; r < arity; ++r) {
+        const auto &rule = m_rules[r];
+        if (rule.weights.empty())
+            throw InputError(m_name + ": rule " + std::to_string(r + 1) + " has no weights");
+        double sum = 0.0, abssum = 0.0;
+        for (size_t j = 0; j < rule.weights.size(); ++j) {
+            const double w = rule.weights[j];
+            if (!std::isfinite(w))
+                throw InputError(m_name + ": weight " + std::to_string(j + 1) + " of rule "
+                                 + std::to_string(r + 1) + " is not a finite number");
+            sum += w;
+            abssum += std::abs(w);
+        }
+        if (std::abs(sum - 1.0) > 1e-9 * std::max(1.0, abssum))
+            throw InputError(m_name + ": the weights of rule " + std::to_string(r + 1)
+                             + " sum to " + fmt(sum)
+                             + ", not 1 (an affine rule must reproduce constants)");
+        for (size_t j = 0; j < rule.weights.size(); ++j) {
+            const int k = r - arity * (rule.offset + int(j));
+            kmin = std::min(kmin, k);
+            kmax = std::max(kmax, k);
+        }
+    }
+    // Pad the support on the right so that (p - 1) divides its length: the IFS split below
+    // needs an integral basis-function support [k0/(p-1), k1/(p-1)].
+    while ((kmax - kmin) % (arity - 1) != 0)
+        ++kmax;
+    m_k0 = kmin;
+    m_mask.assign(kmax - kmin + 1, 0.0);
+    for (int r = 0; r < arity; ++r)
+        for (size_t j = 0; j < m_rules[r].weights.size(); ++j)
+            m_mask[r - arity * (m_rules[r].offset + int(j)) - m_k0] += m_rules[r].weights[j];
+}
+
+int UniformScheme::minControlPoints() const
+{
+    const int span = int(m_mask.size()) - 1;
+    return std::max(2, span / (m_arity - 1));
+}
+
+int UniformScheme::firstRow() const
+{
+    const int k1 = m_k0 + int(m_mask.size()) - 1;
+    return k1 - m_arity + 1;
+}
+
+int UniformScheme::pieceShift(int m) const
+{
+    const int span = int(m_mask.size()) - 1;
+    return m + 1 - span / (m_arity - 1);
+}
+
+Mat UniformScheme::refinementMatrix(int m) const
+{
+    requireControlPointCount(m);
+    const int p = m_arity;
+    const int first = firstRow();
+    const int last = p * m + m_k0 - 1;
+    Mat R = Mat::Zero(last - first + 1, m);
+    const int k1 = m_k0 + int(m_mask.size()) - 1;
+    for (int n = first; n <= last; ++n) {
+        for (int l = 0; l < m; ++l) {
+            const int k = n - p * l;
+            if (k >= m_k0 && k <= k1)
+                R(n - first, l) = m_mask[k - m_k0];
+        }
+    }
+    return R;
+}
+
+SubdivisionMatrices UniformScheme::matrices(int m) const
+{
+    const Mat R = refinementMatrix(m);
+    const int L = pieceShift(m);
+    SubdivisionMatrices out;
+    out.overlap = m - L;
+    for (int j = 0; j < m_arity; ++j)
+        out.S.push_back(R.middleRows(j * L, m));
+    return out;
+}
+
+std::optional<Mat> UniformScheme::exactCurve(const Mat &P, int samples) const
+{
+    if (m_bsplineDegree < 1)
+        return std::nullopt;
+    requireControlPointCount(int(P.rows()));
+    return BSplineBasis::uniform(m_bsplineDegree, int(P.rows())).curve(P, samples);
+}
+
+UniformScheme bsplineScheme(int degree)
+{
+    if (degree < 1 || degree > 15)
+        throw InputError("B-spline degree must be between 1 and 15, got " + std::to_string(degree));
+    // 004 (2.7): p_{2i} = 2^-n sum_j C(n+1, 2j) p_{i-1+j}, p_{2i+1} = 2^-n sum_j C(n+1, 2j+1) p_{i+j}
+    auto binom = [](int n, int k) {
+        double r = 1;
+        for (int i = 1; i <= k; ++i)
+            r = r * (n - k + i) / i;
+        return r;
+    };
+    const double scale = std::ldexp(1.0, -degree);
+    SchemeRule even{-1, {}}, odd{0, {}};
+    for (int j = 0; 2 * j <= degree + 1; ++j)
+        even.weights.push_back(binom(degree + 1, 2 * j) * scale);
+    for (int j = 0; 2 * j + 1 <= degree + 1; ++j)
+        odd.weights.push_back(binom(degree + 1, 2 * j + 1) * scale);
+    UniformScheme s("uniform B-spline of degree " + std::to_string(degree), 2, {even, odd});
+    s.setBSplineDegree(degree);
+    return s;
+}
+
+UniformScheme cornerCuttingScheme(double a, double b)
+{
+    if (!std::isfinite(a) || !std::isfinite(b) || !(0.0 < a && a < b && b < 1.0))
+        throw InputError("corner cutting needs 0 < a < b < 1, got a = " + fmt(a) + ", b = " + fmt(b));
+    // Even point 2i: parameter b on edge (p_{i-1}, p_i); odd point 2i+1: parameter a on (p_i, p_{i+1}).
+    return UniformScheme("corner cutting (" + fmt(a) + ", " + fmt(b) + ")", 2,
+                         {SchemeRule{-1, {1.0 - b, b}}, SchemeRule{0, {1.0 - a, a}}});
+}
+
+UniformScheme chaikinScheme()
+{
+    UniformScheme s("Chaikin", 2, {SchemeRule{-1, {0.25, 0.75}}, SchemeRule{0, {0.75, 0.25}}});
+    s.setBSplineDegree(2);
+    return s;
+}
+
+UniformScheme fourPointScheme(double omega)
+{
+    if (!std::isfinite(omega))
+        throw InputError("four-point tension omega is not a finite number");
+    return UniformScheme("four-point (omega = " + fmt(omega) + ")", 2,
+                         {SchemeRule{0, {1.0}},
+                          SchemeRule{-1, {-omega, 0.5 + omega, 0.5 + omega, -omega}}});
+}
+
+// ---------------------------------------------------------------------------------------------
+
+BezierScheme::BezierScheme(int degree, double t) : m_degree(degree), m_t(t)
+{
+    if (degree < 1 || degree > 30)
+        throw InputError("Bézier degree must be between 1 and 30, got " + std::to_string(degree));
+    if (!std::isfinite(t) || !(t > 0.0 && t < 1.0))
+        throw InputError("the de Casteljau split parameter t must lie strictly between 0 and 1, got "
+                         + fmt(t));
+}
+
+std::string BezierScheme::name() const
+{
+    return "Bézier of degree " + std::to_string(m_degree) + " (de Casteljau at t = " + fmt(m_t) + ")";
+}
+
+SubdivisionMatrices BezierScheme::matrices(int m) const
+{
+    requireControlPointCount(m);
+    return {{deCasteljauL(m_degree, m_t), deCasteljauR(m_degree, m_t)}, 1};
+}
+
+std::optional<Mat> BezierScheme::exactCurve(const Mat &P, int samples) const
+{
+    requireControlPointCount(int(P.rows()));
+    return bezierPoints(P, linspace(0.0, 1.0, samples));
+}
+
+// ---------------------------------------------------------------------------------------------
+
+EndInterpolatingBSplineScheme::EndInterpolatingBSplineScheme(int degree) : m_degree(degree)
+{
+    if (degree < 1 || degree > 15)
+        throw InputError("B-spline degree must be between 1 and 15, got " + std::to_string(degree));
+}
+
+std::string EndInterpolatingBSplineScheme::name() const
+{
+    return "end-interpolating B-spline of degree " + std::to_string(m_degree);
+}
+
+SubdivisionMatrices EndInterpolatingBSplineScheme::matrices(int m) const
+{
+    requireControlPointCount(m);
+    const BSplineBasis basis = BSplineBasis::endInterpolating(m_degree, m);
+    const double N = basis.domainEnd();
+    // Each half has the knots of the whole, scaled by 1/2: the middle knot becomes n-fold.
+    std::vector<double> finer;
+    for (double t : basis.knots())
+        finer.push_back(0.5 * t);
+    for (size_t i = m_degree; i < basis.knots().size(); ++i)
+        finer.push_back(0.5 * N + 0.5 * basis.knots()[i]);
+    const Mat K = basis.insertionMatrix(finer);
+    SubdivisionMatrices out;
+    out.S = {K.topRows(m), K.bottomRows(m)};
+    out.overlap = 2 * m - int(K.rows());
+    return out;
+}
+
+std::optional<Mat> EndInterpolatingBSplineScheme::exactCurve(const Mat &P, int samples) const
+{
+    requireControlPointCount(int(P.rows()));
+    return BSplineBasis::endInterpolating(m_degree, int(P.rows())).curve(P, samples);
+}
+
+// ---------------------------------------------------------------------------------------------
+
+MatrixScheme::MatrixScheme(std::vector<Mat> S, std::string name)
+    : m_S(std::move(S)), m_name(std::move(name))
+{
+    if (m_S.size() < 2)
+        throw InputError(m_name + ": an IFS needs at least two matrices, got "
+                         + std::to_string(m_S.size()));
+    const Eigen::Index m = m_S.front().rows();
+    if (m < 1)
+        throw InputError(m_name + ": matrix S_1 is empty");
+    for (size_t i = 0; i < m_S.size(); ++i) {
+        const std::string label = m_name + ": matrix S_" + std::to_string(i + 1);
+        if (m_S[i].rows() != m || m_S[i].cols() != m) {
+            std::ostringstream os;
+            os << label << " is " << m_S[i].rows() << " x " << m_S[i].cols() << ", expected "
+               << m << " x " << m << " like S_1";
+            throw InputError(os.str());
+        }
+        requireFinite(m_S[i], label);
+        for (Eigen::Index r = 0; r < m; ++r) {
+            const double sum = m_S[i].row(r).sum();
+            if (std::abs(sum - 1.0) > 1e-9 * std::max(1.0, m_S[i].row(r).cwiseAbs().sum()))
+                throw InputError(label + ", row " + std::to_string(r + 1) + " sums to " + fmt(sum)
+                                 + ", not 1 (subdivision rows are affine combinations)");
+        }
+    }
+    m_overlap = int(m);
+    for (size_t i = 1; i < m_S.size(); ++i)
+        m_overlap = std::min(m_overlap, sharedRows(m_S[i - 1], m_S[i]));
+}
+
+SubdivisionMatrices MatrixScheme::matrices(int m) const
+{
+    requireControlPointCount(m);
+    return {m_S, m_overlap};
+}
+
+// ---------------------------------------------------------------------------------------------
+
+int sharedRows(const Mat &prev, const Mat &next)
+{
+    const Eigen::Index m = std::min(prev.rows(), next.rows());
+    for (Eigen::Index o = m; o > 0; --o) {
+        if ((prev.bottomRows(o) - next.topRows(o)).cwiseAbs().maxCoeff() < 1e-12)
+            return int(o);
+    }
+    return 0;
+}
+
+Mat subdivide(const CurveScheme &scheme, const Mat &P, int steps)
+{
+    requireFinite(P, "control points");
+    if (steps < 0)
+        throw InputError("the number of subdivision steps cannot be negative");
+    const SubdivisionMatrices sm = scheme.matrices(int(P.rows()));
+    const double rows = double(P.rows()) * std::pow(double(sm.S.size()), steps);
+    if (rows > 5e7)
+        throw InputError("classic subdivision with " + std::to_string(steps) + " steps would make "
+                         + fmt(rows) + " points; use fewer steps");
+    std::vector<Mat> pieces{P};
+    for (int k = 0; k < steps; ++k) {
+        std::vector<Mat> next;
+        next.reserve(pieces.size() * sm.S.size());
+        for (const Mat &Q : pieces)
+            for (const Mat &S : sm.S)
+                next.push_back(S * Q);
+        pieces.swap(next);
+    }
+    if (steps == 0)
+        return P;
+    const Eigen::Index m = P.rows();
+    const Eigen::Index keep = m - sm.overlap;
+    Mat out(m + Eigen::Index(pieces.size() - 1) * keep, P.cols());
+    out.topRows(m) = pieces.front();
+    for (size_t i = 1; i < pieces.size(); ++i)
+        out.middleRows(m + Eigen::Index(i - 1) * keep, keep) = pieces[i].bottomRows(keep);
+    return out;
+}
+
+} // namespace awb

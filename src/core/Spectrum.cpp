@@ -1,0 +1,263 @@
+#include "core/Spectrum.h"
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <numeric>
+#include <sstream>
+
+namespace awb {
+
+namespace {
+
+Spectrum fromSolver(const CVec &vals, const CMat &vecs, double tol)
+{
+    const Eigen::Index n = vals.size();
+    std::vector<Eigen::Index> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) {
+        const double ma = std::abs(vals(a)), mb = std::abs(vals(b));
+        if (std::abs(ma - mb) > 1e-12 * std::max(1.0, ma))
+            return ma > mb;
+        if (std::abs(vals(a).real() - vals(b).real()) > 1e-12)
+            return vals(a).real() > vals(b).real();
+        return vals(a).imag() > vals(b).imag();
+    });
+    Spectrum s;
+    for (Eigen::Index k : order) {
+        s.values.push_back(vals(k));
+        CVec v = vecs.col(k);
+        const double nv = v.norm();
+        if (nv > 0)
+            v /= nv;
+        s.vectors.push_back(v);
+    }
+    // Cluster: values within tol (relative) of each other are one eigenvalue with multiplicity.
+    s.multiplicity.assign(s.values.size(), 1);
+    for (size_t i = 0; i < s.values.size(); ++i) {
+        int count = 0;
+        Complex mean = 0;
+        for (size_t j = 0; j < s.values.size(); ++j)
+            if (std::abs(s.values[i] - s.values[j]) <= tol * std::max(1.0, std::abs(s.values[i]))) {
+                ++count;
+                mean += s.values[j];
+            }
+        s.multiplicity[i] = count;
+    }
+    // Replace each cluster's members by the cluster mean: a defective eigenvalue's perturbed
+    // copies (error ~ sqrt(eps)) average back to full accuracy.
+    std::vector<Complex> snapped = s.values;
+    for (size_t i = 0; i < s.values.size(); ++i) {
+        if (s.multiplicity[i] < 2)
+            continue;
+        Complex mean = 0;
+        int count = 0;
+        for (size_t j = 0; j < s.values.size(); ++j)
+            if (std::abs(s.values[i] - s.values[j]) <= tol * std::max(1.0, std::abs(s.values[i]))) {
+                mean += s.values[j];
+                ++count;
+            }
+        snapped[i] = mean / double(count);
+    }
+    s.values = snapped;
+    for (auto &v : s.values) {
+        // Real eigenvalues of real matrices come with +-1e-17 imaginary noise.
+        if (std::abs(v.imag()) < 1e-13 * std::max(1.0, std::abs(v)))
+            v = Complex(v.real(), 0.0);
+    }
+    s.spectralRadius = s.values.empty() ? 0.0 : std::abs(s.values.front());
+    return s;
+}
+
+} // namespace
+
+Spectrum spectrum(const Mat &M, double tol)
+{
+    if (M.rows() != M.cols())
+        throw InputError("eigenvalues need a square matrix");
+    requireFinite(M, "matrix");
+    if (M.rows() == 0)
+        return {};
+    Eigen::EigenSolver<Mat> es(M, true);
+    if (es.info() != Eigen::Success)
+        throw InputError("the eigenvalue computation did not converge");
+    return fromSolver(es.eigenvalues(), es.eigenvectors(), tol);
+}
+
+Spectrum spectrum(const CMat &M, double tol)
+{
+    if (M.rows() != M.cols())
+        throw InputError("eigenvalues need a square matrix");
+    requireFinite(M, "matrix");
+    if (M.rows() == 0)
+        return {};
+    Eigen::ComplexEigenSolver<CMat> es(M, true);
+    if (es.info() != Eigen::Success)
+        throw InputError("the eigenvalue computation did not converge");
+    return fromSolver(es.eigenvalues(), es.eigenvectors(), tol);
+}
+
+std::string toString(SubdominantKind kind)
+{
+    switch (kind) {
+    case SubdominantKind::None: return "none";
+    case SubdominantKind::RealPositive: return "real positive";
+    case SubdominantKind::RealNegative: return "real negative";
+    case SubdominantKind::ComplexPair: return "complex pair";
+    case SubdominantKind::Mixed: return "mixed";
+    }
+    return "none";
+}
+
+std::string Subdominant::meaning() const
+{
+    switch (kind) {
+    case SubdominantKind::None:
+        return "no subdominant eigenvalue (the map is constant)";
+    case SubdominantKind::RealPositive:
+        return multiplicity == 1
+                   ? "real positive: the curve has a half-tangent at the fixed point, along the "
+                     "eigenvector (G1 where the two sides' eigenvectors align)"
+                   : "real positive but repeated: the tangent direction at the fixed point "
+                     "depends on the control points";
+    case SubdominantKind::RealNegative:
+        return "real negative: the curve oscillates at the fixed point and has no tangent there";
+    case SubdominantKind::ComplexPair:
+        return "complex pair: the curve spirals around the fixed point (no tangent)";
+    case SubdominantKind::Mixed:
+        return "several eigenvalues of the same modulus with different signs or phases: no "
+               "single tangent behaviour";
+    }
+    return {};
+}
+
+Subdominant subdominant(const Spectrum &s, bool dominantIsOne, double tol)
+{
+    Subdominant out;
+    std::vector<size_t> rest(s.values.size());
+    std::iota(rest.begin(), rest.end(), 0);
+    if (dominantIsOne && !rest.empty()) {
+        // Remove one eigenvalue closest to 1.
+        auto it = std::min_element(rest.begin(), rest.end(), [&](size_t a, size_t b) {
+            return std::abs(s.values[a] - 1.0) < std::abs(s.values[b] - 1.0);
+        });
+        rest.erase(it);
+    }
+    if (rest.empty())
+        return out;
+    double top = 0;
+    for (size_t i : rest)
+        top = std::max(top, std::abs(s.values[i]));
+    if (top < 1e-14)
+        return out;
+    for (size_t i : rest)
+        if (std::abs(std::abs(s.values[i]) - top) <= tol * std::max(1.0, top)) {
+            out.values.push_back(s.values[i]);
+            out.vectors.push_back(s.vectors[i]);
+        }
+    out.modulus = top;
+    out.multiplicity = int(out.values.size());
+    bool allPos = true, allNeg = true, anyComplex = false;
+    for (const Complex &v : out.values) {
+        const bool real = std::abs(v.imag()) <= tol * std::max(1.0, std::abs(v));
+        anyComplex = anyComplex || !real;
+        allPos = allPos && real && v.real() > 0;
+        allNeg = allNeg && real && v.real() < 0;
+    }
+    if (allPos)
+        out.kind = SubdominantKind::RealPositive;
+    else if (allNeg)
+        out.kind = SubdominantKind::RealNegative;
+    else if (anyComplex && out.values.size() == 2
+             && std::abs(out.values[0] - std::conj(out.values[1])) <= tol * std::max(1.0, top))
+        out.kind = SubdominantKind::ComplexPair;
+    else
+        out.kind = SubdominantKind::Mixed;
+    return out;
+}
+
+namespace {
+template<class M>
+Contractivity contractivityT(const M &A)
+{
+    Contractivity c;
+    if (A.rows() == 0) {
+        c.eventuallyContractive = true;
+        c.exponent = 1;
+        return c;
+    }
+    c.spectralRadius = spectrum(A).spectralRadius;
+    c.eventuallyContractive = c.spectralRadius < 1.0 - 1e-12;
+    Eigen::JacobiSVD<M> svd(A);
+    c.normFactor = svd.singularValues()(0);
+    M power = A;
+    for (int k = 1; k <= 200; ++k) {
+        Eigen::JacobiSVD<M> s(power);
+        if (s.singularValues()(0) < 1.0) {
+            c.exponent = k;
+            break;
+        }
+        power = (power * A).eval();
+    }
+    return c;
+}
+} // namespace
+
+Contractivity contractivity(const Mat &A) { return contractivityT(A); }
+Contractivity contractivity(const CMat &A) { return contractivityT(A); }
+
+std::string Contractivity::verdict() const
+{
+    std::ostringstream os;
+    os.precision(6);
+    if (!eventuallyContractive) {
+        os << "not contractive: spectral radius " << spectralRadius << " >= 1";
+        return os.str();
+    }
+    if (normFactor < 1.0)
+        os << "contractive (factor ||A||_2 = " << normFactor << ")";
+    else if (exponent > 0)
+        os << "eventually contractive (spectral radius " << spectralRadius << " < 1; ||A^"
+           << exponent << "||_2 < 1)";
+    else
+        os << "eventually contractive (spectral radius " << spectralRadius << " < 1)";
+    return os.str();
+}
+
+std::optional<RowVec> fixedPoint(const Mat &A, const RowVec &b)
+{
+    const Eigen::Index n = A.rows();
+    if (n == 0)
+        return RowVec();
+    const Mat IA = Mat::Identity(n, n) - A;
+    Eigen::FullPivLU<Mat> lu(IA);
+    lu.setThreshold(1e-12);
+    if (!lu.isInvertible())
+        return std::nullopt;
+    // x (I - A) = b  <=>  (I - A)^T x^T = b^T
+    const Vec x = IA.transpose().fullPivLu().solve(b.transpose());
+    return RowVec(x.transpose());
+}
+
+std::optional<RowVec> fixedPoint(const AffineMap &f) { return fixedPoint(f.A, f.b); }
+
+IfsCheck checkIfs(const Ifs &ifs)
+{
+    ifs.validate();
+    IfsCheck out;
+    for (int i = 0; i < ifs.size(); ++i) {
+        out.maps.push_back(contractivity(ifs.effectiveLinearPart(i)));
+        if (out.contractive && !out.maps.back().eventuallyContractive) {
+            out.contractive = false;
+            std::ostringstream os;
+            os.precision(6);
+            os << "map " << i + 1 << " is not contractive: the spectral radius of its linear part"
+               << " is " << out.maps.back().spectralRadius
+               << " >= 1, so the IFS has no attractor (the iteration does not converge)";
+            out.message = os.str();
+        }
+    }
+    return out;
+}
+
+} // namespace awb

@@ -1,0 +1,65 @@
+#pragma once
+// Spectral analysis of subdivision and IFS matrices: eigenvalues/eigenvectors, the subdominant
+// eigenvalue and what it says about the curve (003 §4, 004 §2.1), contractivity (004 Thm 3.5.1)
+// and fixed points x* = b (I - A)^-1 (004 eq. (3.21), row convention).
+
+#include "core/Ifs.h"
+
+#include <optional>
+
+namespace awb {
+
+struct Spectrum {
+    // Sorted by modulus, largest first (ties: larger real part, then larger imaginary part).
+    std::vector<Complex> values;
+    std::vector<CVec> vectors;        // right eigenvectors: M v = lambda v (unit 2-norm)
+    std::vector<int> multiplicity;    // algebraic multiplicity of values[i] (its cluster size)
+    double spectralRadius = 0.0;
+};
+// Clustered to `tol` relative: defective eigenvalues (e.g. 1/8 twice) come out as one value
+// with multiplicity 2 rather than two values 1e-8 apart.
+Spectrum spectrum(const Mat &M, double tol = 1e-6);
+Spectrum spectrum(const CMat &M, double tol = 1e-6);
+
+enum class SubdominantKind { None, RealPositive, RealNegative, ComplexPair, Mixed };
+std::string toString(SubdominantKind kind);
+
+struct Subdominant {
+    SubdominantKind kind = SubdominantKind::None;
+    std::vector<Complex> values;   // all eigenvalues of the subdominant modulus (with repeats)
+    std::vector<CVec> vectors;     // their eigenvectors
+    double modulus = 0.0;
+    int multiplicity = 0;
+    // What it means for the curve at the fixed point (003 §4/§6): half-tangent, oscillation,
+    // spiral.
+    std::string meaning() const;
+};
+// The eigenvalues of largest modulus after removing one dominant eigenvalue 1 (the affine
+// invariance eigenvalue of a row-stochastic S_i). Pass dominantIsOne = false for A_i (whose
+// largest eigenvalue is already the subdominant one of S_i).
+Subdominant subdominant(const Spectrum &s, bool dominantIsOne = true, double tol = 1e-6);
+
+struct Contractivity {
+    double spectralRadius = 0.0;     // rho(A)
+    bool eventuallyContractive = false;  // rho(A) < 1 (004 Thm 3.5.1)
+    double normFactor = 0.0;         // ||A||_2, a contraction factor when < 1
+    int exponent = -1;               // smallest k <= 200 with ||A^k||_2 < 1; -1 if none
+    std::string verdict() const;
+};
+Contractivity contractivity(const Mat &A);
+Contractivity contractivity(const CMat &A);
+
+// x* with x* = x* A + b, i.e. x* = b (I - A)^-1; nullopt when 1 is an eigenvalue of A.
+std::optional<RowVec> fixedPoint(const Mat &A, const RowVec &b);
+std::optional<RowVec> fixedPoint(const AffineMap &f);
+
+// Per-map analysis of an IFS: the verdict of each map, and whether all are eventually
+// contractive (the IFS then has a unique attractor).
+struct IfsCheck {
+    std::vector<Contractivity> maps;
+    bool contractive = true;
+    std::string message;  // empty when contractive; names the first offending map otherwise
+};
+IfsCheck checkIfs(const Ifs &ifs);
+
+} // namespace awb

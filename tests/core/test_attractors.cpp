@@ -1,0 +1,336 @@
+// Attractors of subdivision IFS drawn from any start set (000 §2, Figs. 2-5; 004 §3.6):
+// deterministic and random iteration, unions (000 §2.2), singular control points (NOTES.md).
+
+#include "core/Attractor.h"
+#include "core/Geometry.h"
+#include "core/Spectrum.h"
+
+#include <QtTest>
+#include <algorithm>
+
+using namespace awb;
+
+namespace {
+
+Mat pts(std::initializer_list<std::initializer_list<double>> r)
+{
+    Mat M(r.size(), r.begin()->size());
+    int i = 0;
+    for (auto row : r) {
+        int j = 0;
+        for (double v : row)
+            M(i, j++) = v;
+        ++i;
+    }
+    return M;
+}
+
+// The plane points of F^depth(start).
+Mat attractorPoints(const SubdivisionIfs &s, const StartSet &start, int depth)
+{
+    PointCollector c(s.ifs.views.front());
+    iterate(s.ifs, start, depth, c);
+    return c.points();
+}
+
+// 000 Fig. 2: a cubic B-spline on five control points.
+const Mat kFig2 = pts({{0, 0}, {1, 2}, {3, 2.5}, {4.5, 1}, {6, 2}});
+
+} // namespace
+
+class TestAttractors : public QObject {
+    Q_OBJECT
+private slots:
+    void convergesFromAnyStartSetAtEigenvalueRate_data();
+    void convergesFromAnyStartSetAtEigenvalueRate();
+    void thesisExample362FromItsStartSet();
+    void fourPointFromSegment();
+    void bezierAnyDegreeAndSplit();
+    void liftedStartPoint();
+    void chaosGameLiesOnCurveWithAddresses();
+    void parallelEqualsSerial();
+    void rasterIsFilledAndDeterministic();
+    void unionOfTwoBeziers();
+    void singularControlPointsUseBarycentricForm();
+    void badInputIsRefused();
+    void cancellation();
+};
+
+void TestAttractors::convergesFromAnyStartSetAtEigenvalueRate_data()
+{
+    QTest::addColumn<int>("kind");
+    QTest::newRow("point") << 0;
+    QTest::newRow("segment") << 1;
+    QTest::newRow("triangle") << 2;
+}
+
+void TestAttractors::convergesFromAnyStartSetAtEigenvalueRate()
+{
+    // 000 §2: "iteration on any compact set X0 would yield the same fractal". The Hausdorff
+    // distance between F^k(X0) and the curve falls by the factor 1/lambda = 2 per level, where
+    // lambda = 1/2 is the subdominant eigenvalue of S_1, S_2 (the largest of A_1, A_2).
+    QFETCH(int, kind);
+    const UniformScheme cubic = bsplineScheme(3);
+    const auto s = buildSubdivisionIfs(cubic, kFig2);
+    const double lambda = subdominant(spectrum(s.matrices.S[0])).modulus;
+    QVERIFY(std::abs(lambda - 0.5) < 1e-12);
+    Mat X0;
+    StartSet::Kind k = StartSet::Kind::Points;
+    if (kind == 0)
+        X0 = pts({{7, -3}});
+    else if (kind == 1)
+        X0 = pts({{7, -3}, {-2, 5}}), k = StartSet::Kind::Polyline;
+    else
+        X0 = pts({{7, -3}, {-2, 5}, {1, 8}}), k = StartSet::Kind::Polygon;
+    const StartSet start{k, s.toIfsSpace(X0)};
+    const Mat exact = *cubic.exactCurve(kFig2, 40000);
+    std::vector<double> d;
+    for (int depth = 8; depth <= 13; ++depth) {
+        // Sample the segments/triangles densely enough that their images are covered too.
+        PointCollector c(s.ifs.views.front());
+        iterate(s.ifs, start, depth, c);
+        d.push_back(hausdorffToCurve(c.points(), exact));
+    }
+    for (size_t i = 1; i < d.size(); ++i) {
+        const double ratio = d[i - 1] / d[i];
+        // Asymptotically exactly 1/lambda; within 10 % from depth 8 on.
+        QVERIFY2(std::abs(ratio - 1.0 / lambda) < 0.2,
+                 qPrintable(QString("depth %1: ratio %2").arg(8 + i).arg(ratio)));
+    }
+    QVERIFY(d.back() < 0.01);
+}
+
+void TestAttractors::thesisExample362FromItsStartSet()
+{
+    // 004 Example 3.6.2, Fig. 3.2: X0 = {[0,0],[1,4],[2,4],[4,0],[5,0]} converges to the
+    // quadratic B-spline, which interpolates the fixed points (1/2, 2) and (6, -1/2).
+    const Mat P = pts({{0, 0}, {1, 4}, {4, 4}, {5, -1}, {7, 0}});
+    const auto s = buildSubdivisionIfs(chaikinScheme(), P);
+    const Mat X = attractorPoints(s, StartSet::points(s.toIfsSpace(
+                                         pts({{0, 0}, {1, 4}, {2, 4}, {4, 0}, {5, 0}}))), 14);
+    const Mat exact = *chaikinScheme().exactCurve(P, 20000);
+    QVERIFY(hausdorffToCurve(X, exact) < 1e-3);
+    QVERIFY((exact.row(0) - pts({{0.5, 2}})).norm() < 1e-12);
+    QVERIFY((exact.row(exact.rows() - 1) - pts({{6, -0.5}})).norm() < 1e-12);
+}
+
+void TestAttractors::fourPointFromSegment()
+{
+    // 000 Fig. 5: the four-point IFS from a line segment converges to the curve of classic
+    // subdivision (no closed form: compare with 12 levels of classic subdivision, whose vertices
+    // lie on the limit curve because the scheme interpolates).
+    const Mat P = pts({{0, 0}, {1, 1.5}, {2, 0.2}, {3, 2}, {4, 0.5}, {5, 1.8}, {6, 0}});
+    const UniformScheme four = fourPointScheme(1.0 / 16);
+    const auto s = buildSubdivisionIfs(four, P);
+    QVERIFY(checkIfs(s.ifs).contractive);
+    const Mat ref = subdivide(four, P, 12);
+    // The interpolating scheme's level-k polygon starts at P_1 and ends at P_5: the IFS curve
+    // is the part between (rows 2^k .. ) -- compare against the vertices inside the domain.
+    const Mat X = attractorPoints(
+        s, StartSet::polyline(s.toIfsSpace(pts({{-3, 4}, {9, -2}}))), 14);
+    const double d = directedDistance(X, ref);
+    QVERIFY2(d < 2e-3, qPrintable(QString::number(d)));
+    // The curve passes through control points 3, 4, 5 (the domain of 7 points is [p_2, p_4]
+    // in 0-based indices) and, being interpolatory, the fixed points of f_1, f_2 are p_2, p_4.
+    const auto x1 = fixedPoint(s.lifted[0].A, s.lifted[0].b);
+    const auto x2 = fixedPoint(s.lifted[1].A, s.lifted[1].b);
+    QVERIFY(x1 && x2);
+    QVERIFY((x1->head(2) - P.row(2)).norm() < 1e-10);
+    QVERIFY((x2->head(2) - P.row(4)).norm() < 1e-10);
+}
+
+void TestAttractors::bezierAnyDegreeAndSplit()
+{
+    for (int n : {2, 3, 5}) {
+        for (double t : {0.5, 0.3}) {
+            Mat P(n + 1, 2);
+            for (int i = 0; i <= n; ++i)
+                P.row(i) << i, (i % 2 ? 2.0 : -1.0) + 0.2 * i;
+            const BezierScheme bez(n, t);
+            const auto s = buildSubdivisionIfs(bez, P);
+            const Mat exact = *bez.exactCurve(P, 40000);
+            const StartSet start = StartSet::points(s.toIfsSpace(pts({{3, 3}})));
+            const double d12 = hausdorffToCurve(attractorPoints(s, start, 12), exact);
+            const double d15 = hausdorffToCurve(attractorPoints(s, start, 15), exact);
+            // The slower piece contracts by max(t, 1-t) per level (the subdominant eigenvalue
+            // of R(t) is 1-t): over three levels the distance falls by max(t, 1-t)^-3, to 15 %.
+            const double expected = std::pow(std::max(t, 1 - t), -3);
+            QVERIFY2(std::abs(d12 / d15 / expected - 1.0) < 0.15,
+                     qPrintable(QString("n=%1 t=%2 ratio=%3 expected %4")
+                                    .arg(n).arg(t).arg(d12 / d15).arg(expected)));
+            // The curves are about 5 units across: 5 * 0.7^15 = 0.024.
+            QVERIFY(d15 < 0.05 * std::pow(std::max(t, 1 - t) / 0.7, 15));
+        }
+    }
+}
+
+void TestAttractors::liftedStartPoint()
+{
+    // 000 Fig. 2: "a random homogeneous point in five dimensions".
+    const auto s = buildSubdivisionIfs(bsplineScheme(3), kFig2);
+    const Mat X = attractorPoints(s, StartSet::points(s.toIfsSpace(pts({{9, -4, 3, 7, 1}}))), 14);
+    QVERIFY(hausdorffToCurve(X, *bsplineScheme(3).exactCurve(kFig2, 20000)) < 2e-3);
+}
+
+void TestAttractors::chaosGameLiesOnCurveWithAddresses()
+{
+    const UniformScheme cubic = bsplineScheme(3);
+    const auto s = buildSubdivisionIfs(cubic, kFig2);
+    const Mat exact = *cubic.exactCurve(kFig2, 20000);
+    const int half = int(exact.rows()) / 2;
+    std::vector<double> dist;
+    int wrongHalf = 0, n = 0;
+    CallbackSink sink([&](const Mat &v, StartSet::Kind, const std::uint8_t *a, int len) {
+        const Mat p = project(s.ifs.views.front(), v);
+        // The latest map decides which half of the curve the point is on.
+        Eigen::Index nearest = 0;
+        (exact.rowwise() - p.row(0)).rowwise().squaredNorm().minCoeff(&nearest);
+        if (len > 0 && std::abs(nearest - half) > 40 && (a[0] == 0) != (nearest < half))
+            ++wrongHalf;
+        ++n;
+        dist.push_back(distanceToPolyline(p, exact));
+    });
+    ChaosOptions opt;
+    opt.samples = 20000;
+    opt.skip = 40; // 0.5^40 of the start distance is far below the tolerance
+    chaosGame(s.ifs, s.toIfsSpace(pts({{50, 50}})).row(0), opt, sink);
+    QCOMPARE(n, 20000);
+    QCOMPARE(wrongHalf, 0);
+    QVERIFY(*std::max_element(dist.begin(), dist.end()) < 1e-6);
+}
+
+void TestAttractors::parallelEqualsSerial()
+{
+    const auto s = buildSubdivisionIfs(fourPointScheme(1.0 / 16),
+                                       pts({{0, 0}, {1, 1}, {2, 0}, {3, 1}, {4, 0}, {5, 1}, {6, 0}}));
+    const StartSet start = StartSet::points(s.toIfsSpace(pts({{1, 1}})));
+    PointCollector serial(s.ifs.views.front()), a(s.ifs.views.front()), b(s.ifs.views.front());
+    iterate(s.ifs, start, 12, serial);
+    const auto stats = iterateParallel(s.ifs, start, 12, {&a, &b});
+    QCOMPARE(stats.images, std::uint64_t(4096));
+    auto sorted = [](Mat m) {
+        std::vector<std::pair<double, double>> v;
+        for (Eigen::Index i = 0; i < m.rows(); ++i)
+            v.emplace_back(m(i, 0), m(i, 1));
+        std::sort(v.begin(), v.end());
+        return v;
+    };
+    Mat both(a.points().rows() + b.points().rows(), 2);
+    both << a.points(), b.points();
+    QVERIFY(sorted(serial.points()) == sorted(both));
+}
+
+void TestAttractors::rasterIsFilledAndDeterministic()
+{
+    const auto s = buildSubdivisionIfs(EndInterpolatingBSplineScheme(3),
+                                       pts({{0, 0}, {4, 4}, {2, -1}, {-1, 3}, {5, 0}}));
+    // 000 Fig. 3: start with a triangle.
+    const StartSet tri = StartSet::polygon(s.toIfsSpace(pts({{0, 5}, {5, 5}, {2, 8}})));
+    RasterSink one(200, 150, -2, -2, 6, 6, s.ifs.views);
+    iterate(s.ifs, tri, 10, one);
+    RasterSink a(200, 150, -2, -2, 6, 6, s.ifs.views), b(200, 150, -2, -2, 6, 6, s.ifs.views);
+    iterateParallel(s.ifs, tri, 10, {&a, &b});
+    a.merge(b);
+    QVERIFY(one.litPixels() > 200);
+    bool same = true;
+    for (int y = 0; y < 150; ++y)
+        for (int x = 0; x < 200; ++x)
+            same = same && one.hits(x, y) == a.hits(x, y) && one.label(x, y) == a.label(x, y);
+    QVERIFY(same);
+}
+
+void TestAttractors::unionOfTwoBeziers()
+{
+    // 000 §2.2, Fig. 4: block IFS of two quadratic Bézier curves; start point
+    // (2, 3/2, 1, 2, 3/2, 1): each component gets (2, 3/2) with its homogeneous 1.
+    const Mat P = pts({{0, 0}, {1, 2}, {2, 0}});
+    const Mat Q = pts({{3, 1}, {4, -1}, {5, 1.5}});
+    const BezierScheme bez(2, 0.5);
+    const auto sp = buildSubdivisionIfs(bez, P), sq = buildSubdivisionIfs(bez, Q);
+    const Ifs u = blockUnion({sp.ifs, sq.ifs});
+    QCOMPARE(u.dim(), 4);
+    QCOMPARE(int(u.views.size()), 2);
+    // Two homogeneous components: the lifted maps M_i of the union have eigenvalue 1 twice.
+    Mat M1 = Mat::Zero(6, 6);
+    M1.topLeftCorner(3, 3) = sp.lifted[0].M;
+    M1.bottomRightCorner(3, 3) = sq.lifted[0].M;
+    QCOMPARE(spectrum(M1).multiplicity[0], 2);
+    QVERIFY(checkIfs(u).contractive);
+    RowVec x0(4);
+    x0 << 2, 1.5, 2, 1.5;
+    Mat all;
+    for (int v = 0; v < 2; ++v) {
+        PointCollector c(u.views[v]);
+        iterate(u, StartSet::points(x0), 14, c);
+        const Mat exact = *bez.exactCurve(v == 0 ? P : Q, 20000);
+        QVERIFY(hausdorffToCurve(c.points(), exact) < 1e-3);
+    }
+}
+
+void TestAttractors::singularControlPointsUseBarycentricForm()
+{
+    // The last three control points are collinear: P is singular (NOTES.md), the attractor is
+    // computed in barycentric form and is still the B-spline curve.
+    const Mat P = pts({{0, 0}, {1, 3}, {2, 1}, {3, 2}, {4, 3}});
+    const UniformScheme cubic = bsplineScheme(3);
+    const auto s = buildSubdivisionIfs(cubic, P);
+    QVERIFY(!s.lifting.invertible);
+    QVERIFY(s.barycentric());
+    QVERIFY(s.lifted.empty());
+    QCOMPARE(s.lifting.culprits, (std::vector<int>{2, 3, 4}));
+    QVERIFY2(QString::fromStdString(s.lifting.reason).contains("control points 3, 4 and 5 are collinear"),
+             s.lifting.reason.c_str());
+    QVERIFY(checkIfs(s.ifs).contractive);
+    const Mat X = attractorPoints(s, StartSet::points(s.toIfsSpace(pts({{10, -10}}))), 13);
+    QVERIFY(hausdorffToCurve(X, *cubic.exactCurve(P, 20000)) < 3e-3);
+    // Asking for the lifted form explicitly names the problem.
+    try {
+        buildSubdivisionIfs(cubic, P, IfsForm::Lifted);
+        QFAIL("singular lifting accepted");
+    } catch (const InputError &e) {
+        QVERIFY(QString(e.what()).contains("collinear"));
+    }
+    // All points on one line: still a (straight) curve.
+    const Mat line = pts({{0, 0}, {1, 1}, {2, 2}, {3, 3}, {4, 4}});
+    const auto sl = buildSubdivisionIfs(cubic, line);
+    QVERIFY(sl.barycentric());
+    const Mat Y = attractorPoints(sl, StartSet::points(sl.toIfsSpace(pts({{5, -1}}))), 12);
+    QVERIFY((Y.col(0) - Y.col(1)).cwiseAbs().maxCoeff() < 1e-12);
+}
+
+void TestAttractors::badInputIsRefused()
+{
+    const auto s = buildSubdivisionIfs(bsplineScheme(3), kFig2);
+    const StartSet p = StartSet::points(s.toIfsSpace(pts({{0, 0}})));
+    PointCollector c(s.ifs.views.front());
+    QVERIFY_THROWS_EXCEPTION(InputError, iterate(s.ifs, p, 65, c));
+    QVERIFY_THROWS_EXCEPTION(InputError, iterate(s.ifs, p, -1, c));
+    QVERIFY_THROWS_EXCEPTION(InputError, iterate(s.ifs, StartSet::points(pts({{0, 0}})), 3, c));
+    Mat nan = s.toIfsSpace(pts({{0, 0}}));
+    nan(0, 1) = std::nan("");
+    QVERIFY_THROWS_EXCEPTION(InputError, iterate(s.ifs, StartSet::points(nan), 3, c));
+    Ifs badProb = s.ifs;
+    badProb.probabilities = {0.5, -0.1};
+    ChaosOptions opt;
+    QVERIFY_THROWS_EXCEPTION(InputError, chaosGame(badProb, p.vertices.row(0), opt, c));
+}
+
+void TestAttractors::cancellation()
+{
+    const auto s = buildSubdivisionIfs(bsplineScheme(3), kFig2);
+    std::atomic<bool> cancel{false};
+    IterationControl control;
+    control.cancel = &cancel;
+    std::uint64_t seen = 0;
+    CallbackSink sink([&](const Mat &, StartSet::Kind, const std::uint8_t *, int) {
+        if (++seen == 10000)
+            cancel = true;
+    });
+    const auto stats = iterate(s.ifs, StartSet::points(s.toIfsSpace(pts({{0, 0}}))), 30, sink,
+                               control);
+    QVERIFY(stats.cancelled);
+    QVERIFY(stats.images < 20000);
+}
+
+QTEST_APPLESS_MAIN(TestAttractors)
+#include "test_attractors.moc"
