@@ -68,9 +68,23 @@ public:
 private:
     void step(int level, int i)
     {
+        // y = x A + b row by row. Plain loops over column-major A: the dynamic-size Eigen
+        // product costs more in dispatch than in arithmetic for D <= 8, the common case.
         const AffineMap &f = m_ifs.maps[i];
-        m_buf[level + 1].noalias() = m_buf[level] * f.A;
-        m_buf[level + 1].rowwise() += f.b;
+        const Mat &X = m_buf[level];
+        Mat &Y = m_buf[level + 1];
+        const Eigen::Index n = X.rows(), D = X.cols();
+        const double *a = f.A.data();
+        const double *b = f.b.data();
+        for (Eigen::Index r = 0; r < n; ++r) {
+            for (Eigen::Index j = 0; j < D; ++j) {
+                const double *col = a + j * D;
+                double s = b[j];
+                for (Eigen::Index k = 0; k < D; ++k)
+                    s += X(r, k) * col[k];
+                Y(r, j) = s;
+            }
+        }
         m_address[m_depth - level - 1] = std::uint8_t(i);
     }
 
