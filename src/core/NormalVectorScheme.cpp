@@ -1,0 +1,508 @@
+// The normal-vector p-ary scheme of 001: subdivision, analysis, equivalent IFS and presets.
+#include "core/NormalVectorScheme.h"
+
+#include "core/Geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace awb {
+
+namespace {
+
+std::string num(double v)
+{
+    std::ostringstream os;
+    os.precision(6);
+    os << v;
+    return os.str();
+}
+
+std::string list(const std::vector<double> &v)
+{
+    std::string s = "(";
+    for (size_t j = 0; j < v.size(); ++j)
+        s += (j ? ", " : "") + num(v[j]);
+    return s + ")";
+}
+
+// The edge vector e rotated by +90° (positive normal) or -90°: this is d = |e| n of eq. (1),
+// with no division, so a zero-length edge simply gets d = 0.
+Eigen::RowVector2d normalOf(const Eigen::RowVector2d &e, NormalDirection normal)
+{
+    return normal == NormalDirection::Positive ? Eigen::RowVector2d(-e.y(), e.x())
+                                               : Eigen::RowVector2d(e.y(), -e.x());
+}
+
+bool dependsOnLevel(BetaSign s)
+{
+    return s == BetaSign::LevelEdgeAlternating || s == BetaSign::LevelAlternating;
+}
+
+bool dependsOnEdge(BetaSign s)
+{
+    return s == BetaSign::EdgeAlternating || s == BetaSign::LevelEdgeAlternating;
+}
+
+// Points of rule j on the unit edge (0,0) -> (1,0) for sign parities (k, i): (p + 1) points,
+// the last being the end of the edge (only meaningful for an interpolatory scheme).
+std::vector<Eigen::RowVector2d> unitEdgePoints(const NormalVectorScheme &s, int k, int i)
+{
+    const double n = s.normal() == NormalDirection::Positive ? 1.0 : -1.0;
+    std::vector<Eigen::RowVector2d> a;
+    for (int j = 0; j < s.arity(); ++j)
+        a.emplace_back(s.alpha()[j], n * s.signedBeta(j, k, i));
+    a.emplace_back(1.0, 0.0);
+    return a;
+}
+
+} // namespace
+
+std::string toString(NormalDirection normal)
+{
+    return normal == NormalDirection::Positive ? "positive (edge rotated 90° counter-clockwise)"
+                                               : "negative (edge rotated 90° clockwise)";
+}
+
+std::string toString(BetaSign sign)
+{
+    switch (sign) {
+    case BetaSign::Constant: return "constant";
+    case BetaSign::EdgeAlternating: return "(-1)^i";
+    case BetaSign::LevelEdgeAlternating: return "(-1)^(k+i)";
+    case BetaSign::LevelAlternating: return "(-1)^(k+1)";
+    }
+    return "";
+}
+
+int betaSignValue(BetaSign sign, int level, long long edge)
+{
+    switch (sign) {
+    case BetaSign::Constant: return 1;
+    case BetaSign::EdgeAlternating: return edge % 2 == 0 ? 1 : -1;
+    case BetaSign::LevelEdgeAlternating: return (level + edge) % 2 == 0 ? 1 : -1;
+    case BetaSign::LevelAlternating: return (level + 1) % 2 == 0 ? 1 : -1;
+    }
+    return 1;
+}
+
+std::string normalVectorConventions()
+{
+    return "Positive normal: the edge vector P_i P_{i+1} rotated 90° counter-clockwise; negative:"
+           " rotated clockwise. d_i = |P_i P_{i+1}| n_i. In the β signs (-1)^i, (-1)^(k+i),"
+           " (-1)^(k+1), k is the level of the polygon being subdivided (the first step has"
+           " k = 0) and i the 0-based index of the edge.";
+}
+
+ControlPolygon unitSegment()
+{
+    ControlPolygon poly;
+    poly.points.resize(2, 2);
+    poly.points << 0, 0, 1, 0;
+    return poly;
+}
+
+ControlPolygon equilateralTriangle()
+{
+    ControlPolygon poly;
+    poly.points.resize(3, 2);
+    poly.points << 0, 0, 1, 0, 0.5, std::sqrt(3.0) / 2;
+    poly.closed = true;
+    return poly;
+}
+
+ControlPolygon unitSquare()
+{
+    ControlPolygon poly;
+    poly.points.resize(4, 2);
+    poly.points << 0, 0, 1, 0, 1, 1, 0, 1;
+    poly.closed = true;
+    return poly;
+}
+
+// ---- the scheme ------------------------------------------------------------------------------
+
+NormalVectorScheme::NormalVectorScheme(std::vector<double> alpha, std::vector<double> beta,
+                                       NormalDirection normal, std::vector<BetaSign> signs)
+    : m_alpha(std::move(alpha)), m_beta(std::move(beta)), m_normal(normal),
+      m_signs(std::move(signs))
+{
+    const size_t p = m_alpha.size();
+    if (p < 2)
+        throw InputError("p = " + std::to_string(p) + ": the normal-vector scheme needs p >= 2"
+                         " rules, one (α_j, β_j) pair each");
+    if (m_beta.size() != p)
+        throw InputError("β has " + std::to_string(m_beta.size()) + " values but α has "
+                         + std::to_string(p) + ": eq. (1) needs one (α_j, β_j) pair per rule"
+                         " j = 0..p-1");
+    for (size_t j = 0; j < p; ++j) {
+        if (!std::isfinite(m_alpha[j]))
+            throw InputError("α_" + std::to_string(j) + " is not a finite number");
+        if (!std::isfinite(m_beta[j]))
+            throw InputError("β_" + std::to_string(j) + " is not a finite number");
+    }
+    if (m_signs.empty())
+        m_signs.assign(p, BetaSign::Constant);
+    else if (m_signs.size() == 1)
+        m_signs.assign(p, m_signs.front());
+    else if (m_signs.size() != p)
+        throw InputError(std::to_string(m_signs.size()) + " β signs given for p = "
+                         + std::to_string(p) + " rules: give none, one for all rules, or one"
+                         " per rule");
+}
+
+bool NormalVectorScheme::interpolatory() const { return m_alpha[0] == 0 && m_beta[0] == 0; }
+
+bool NormalVectorScheme::levelDependent() const
+{
+    for (int j = 0; j < arity(); ++j)
+        if (m_beta[j] != 0 && dependsOnLevel(m_signs[j]))
+            return true;
+    return false;
+}
+
+bool NormalVectorScheme::edgeDependent() const
+{
+    for (int j = 0; j < arity(); ++j)
+        if (m_beta[j] != 0 && dependsOnEdge(m_signs[j]))
+            return true;
+    return false;
+}
+
+double NormalVectorScheme::signedBeta(int j, int level, long long edge) const
+{
+    return betaSignValue(m_signs[j], level, edge) * m_beta[j];
+}
+
+std::string NormalVectorScheme::describe() const
+{
+    std::string signs;
+    for (int j = 0; j < arity(); ++j)
+        signs += (j ? ", " : "") + toString(m_signs[j]);
+    return "p = " + std::to_string(arity()) + ", α = " + list(m_alpha) + ", β = "
+           + list(m_beta) + ", β signs (" + signs + "), normals " + toString(m_normal);
+}
+
+void NormalVectorScheme::validate(const ControlPolygon &poly) const
+{
+    if (poly.points.cols() != 2)
+        throw InputError("the normal-vector scheme works in the plane: control points need 2"
+                         " coordinates, got " + std::to_string(poly.points.cols()));
+    requireFinite(poly.points, "control polygon");
+    const Eigen::Index need = poly.closed ? 3 : 2;
+    if (poly.points.rows() < need)
+        throw InputError(std::string(poly.closed ? "a closed" : "an open")
+                         + " control polygon needs at least " + std::to_string(need)
+                         + " points, got " + std::to_string(poly.points.rows()));
+    if (!poly.closed && !interpolatory())
+        throw InputError("open control polygons need α_0 = β_0 = 0: rule 0 at the last point"
+                         " (i = p^k n in eq. (1)) would use a point after the end; close the"
+                         " polygon instead");
+}
+
+double NormalVectorScheme::pointCount(const ControlPolygon &poly, int steps) const
+{
+    return double(poly.edgeCount()) * std::pow(double(arity()), steps) + (poly.closed ? 0 : 1);
+}
+
+namespace {
+
+// One step of eq. (1); the polygon is already validated. m x 2 -> (p n [+ 1]) x 2.
+ControlPolygon stepUnchecked(const NormalVectorScheme &s, const ControlPolygon &poly, int level)
+{
+    const Mat &P = poly.points;
+    const Eigen::Index n = P.rows(), edges = poly.edgeCount();
+    const int p = s.arity();
+    ControlPolygon out;
+    out.closed = poly.closed;
+    out.points.resize(p * edges + (poly.closed ? 0 : 1), 2);
+    for (Eigen::Index i = 0; i < edges; ++i) {
+        const Eigen::RowVector2d a = P.row(i), b = P.row((i + 1) % n);
+        const Eigen::RowVector2d d = normalOf(b - a, s.normal());
+        for (int j = 0; j < p; ++j) {
+            // (1 - α) a + α b rather than a + α (b - a): α = 0 and α = 1 then give exactly
+            // a and b, so interpolatory schemes keep their old points bit for bit.
+            const double al = s.alpha()[j];
+            out.points.row(p * i + j) = (1.0 - al) * a + al * b + s.signedBeta(j, level, i) * d;
+        }
+    }
+    if (!poly.closed) // rule 0 at i = p^k n with α_0 = β_0 = 0 keeps the end point
+        out.points.row(p * edges) = P.row(n - 1);
+    return out;
+}
+
+// Throws InputError unless `steps` steps from level firstLevel are possible and small enough.
+void requireSteps(const NormalVectorScheme &s, const ControlPolygon &poly, int steps,
+                  int firstLevel)
+{
+    s.validate(poly);
+    if (steps < 0)
+        throw InputError("the number of subdivision steps cannot be negative, got "
+                         + std::to_string(steps));
+    if (firstLevel < 0)
+        throw InputError("the subdivision level cannot be negative, got "
+                         + std::to_string(firstLevel));
+    const double count = s.pointCount(poly, steps);
+    if (count > NormalVectorScheme::maxPoints())
+        throw InputError(std::to_string(steps) + " subdivision steps of a polygon with "
+                         + std::to_string(poly.edgeCount()) + " edges would make "
+                         + num(count) + " points (at most " + num(NormalVectorScheme::maxPoints())
+                         + "); use fewer steps");
+}
+
+} // namespace
+
+ControlPolygon NormalVectorScheme::step(const ControlPolygon &poly, int level) const
+{
+    requireSteps(*this, poly, 1, level);
+    return stepUnchecked(*this, poly, level);
+}
+
+ControlPolygon NormalVectorScheme::subdivide(const ControlPolygon &poly, int steps,
+                                             int firstLevel) const
+{
+    requireSteps(*this, poly, steps, firstLevel);
+    ControlPolygon cur = poly;
+    for (int k = 0; k < steps; ++k)
+        cur = stepUnchecked(*this, cur, firstLevel + k);
+    return cur;
+}
+
+std::vector<ControlPolygon> NormalVectorScheme::levels(const ControlPolygon &poly,
+                                                       int steps) const
+{
+    requireSteps(*this, poly, steps, 0);
+    std::vector<ControlPolygon> out{poly};
+    for (int k = 0; k < steps; ++k)
+        out.push_back(stepUnchecked(*this, out.back(), k));
+    return out;
+}
+
+// ---- analysis (001 §4) -------------------------------------------------------------------------
+
+NormalVectorAnalysis analyse(const NormalVectorScheme &s)
+{
+    const int p = s.arity();
+    const bool interp = s.interpolatory();
+    NormalVectorAnalysis out;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    double lenMin = std::numeric_limits<double>::infinity(), lenMax = 0.0, edge = 0.0;
+    // Every sign rule is ±1 by the parities of k and i, so four cases cover all of them.
+    for (int k = 0; k < 2; ++k) {
+        for (int i = 0; i < 2; ++i) {
+            const auto a = unitEdgePoints(s, k, i);
+            double len = 0.0;
+            for (int j = 0; j < (interp ? p : p - 1); ++j) {
+                const Eigen::RowVector2d delta = a[j + 1] - a[j];
+                out.paperContractionBound = std::max(out.paperContractionBound,
+                                                     delta.cwiseAbs().sum());
+                edge = std::max(edge, delta.norm());
+                len += delta.norm();
+            }
+            lenMin = std::min(lenMin, len);
+            lenMax = std::max(lenMax, len);
+        }
+    }
+    if (!interp) {
+        // P_{p(i+1)} - P_{pi+p-1} = (1 - α_{p-1}) e_i + α_0 e_{i+1} + β_0 d_{i+1} - β_{p-1} d_i.
+        const double across = std::abs(1.0 - s.alpha()[p - 1]) + std::abs(s.alpha()[0])
+                              + std::abs(s.beta()[p - 1]) + std::abs(s.beta()[0]);
+        out.paperContractionBound = std::max(out.paperContractionBound, across);
+    }
+    out.edgeContraction = interp ? edge : nan;
+    out.lengthRatioMin = interp ? lenMin : nan;
+    out.lengthRatioMax = interp ? lenMax : nan;
+    for (int j = 0; j < p; ++j)
+        out.displacementFactor = std::max(
+            out.displacementFactor, std::hypot(s.alpha()[j] - double(j) / p, s.beta()[j]));
+
+    const double gamma = interp ? out.edgeContraction : out.paperContractionBound;
+    out.convergent = gamma < 1.0;
+    if (out.convergent) {
+        out.verdict = "convergent: every edge shrinks by a factor of at most " + num(gamma)
+                      + " per step, so ||F^{k+1} - F^k|| <= " + num(out.displacementFactor)
+                      + " * " + num(gamma) + "^k * (longest initial edge) and F^k is a Cauchy"
+                      " sequence (the argument of 001 Theorem 1)";
+    } else {
+        out.verdict = "not decided: the one-step edge bound is " + num(gamma)
+                      + " >= 1, so the argument of 001 Theorem 1 does not apply (see the"
+                      " measured edge lengths per level)";
+    }
+    out.nonRectifiable = interp && out.convergent && lenMin > 1.0;
+    if (out.nonRectifiable)
+        out.verdict += "; non-rectifiable: the polygon length grows by a factor of at least "
+                       + num(lenMin) + " per step (001 Theorem 2)";
+    return out;
+}
+
+std::vector<LevelMeasure> measureLevels(const NormalVectorScheme &s, const ControlPolygon &poly,
+                                        int steps)
+{
+    requireSteps(s, poly, steps, 0);
+    std::vector<LevelMeasure> out;
+    ControlPolygon cur = poly;
+    for (int k = 0;; ++k) {
+        LevelMeasure m;
+        m.level = k;
+        m.points = cur.points.rows();
+        m.length = polygonLength(cur.points, cur.closed);
+        const Eigen::Index n = cur.points.rows();
+        for (Eigen::Index i = 0; i < cur.edgeCount(); ++i)
+            m.maxEdge = std::max(m.maxEdge, (cur.points.row((i + 1) % n) - cur.points.row(i))
+                                                .norm());
+        m.area = cur.closed ? polygonArea(cur.points) : std::numeric_limits<double>::quiet_NaN();
+        out.push_back(m);
+        if (k == steps)
+            break;
+        cur = stepUnchecked(s, cur, k);
+    }
+    return out;
+}
+
+// ---- equivalent IFS ---------------------------------------------------------------------------
+
+std::optional<std::string> whyNoEquivalentIfs(const NormalVectorScheme &s)
+{
+    if (!s.interpolatory())
+        return "α_0 and β_0 are not both 0: the new edge across each old vertex joins two old"
+               " edges and is not the image of one edge, so no IFS of one similarity per new"
+               " edge exists";
+    for (int j = 0; j < s.arity(); ++j) {
+        if (s.beta()[j] == 0)
+            continue;
+        switch (s.signs()[j]) {
+        case BetaSign::Constant:
+            break;
+        case BetaSign::EdgeAlternating:
+            return "the β sign (-1)^i differs between neighbouring edges: every other edge uses"
+                   " the mirrored rule, so the pieces are not images of the unit edge's limit"
+                   " under p fixed similarities";
+        case BetaSign::LevelEdgeAlternating:
+            return "the β sign (-1)^(k+i) changes with the level and the edge: the rules are"
+                   " neither the same at every step nor on every edge";
+        case BetaSign::LevelAlternating:
+            return "the β sign (-1)^(k+1) changes with the level: the rules repeat only every"
+                   " two steps (an IFS would need p^2 maps)";
+        }
+    }
+    return std::nullopt;
+}
+
+Ifs equivalentIfs(const NormalVectorScheme &s)
+{
+    if (const auto why = whyNoEquivalentIfs(s))
+        throw InputError("no equivalent IFS: " + *why);
+    const auto a = unitEdgePoints(s, 0, 0);
+    Ifs ifs;
+    ifs.space = "plane (frame of the unit edge)";
+    for (int j = 0; j < s.arity(); ++j) {
+        const Eigen::RowVector2d delta = a[j + 1] - a[j];
+        if (!(delta.norm() < 1.0))
+            throw InputError("map " + std::to_string(j + 1) + " of the equivalent IFS has ratio "
+                             + num(delta.norm()) + " >= 1: it does not contract, so the IFS"
+                             " has no attractor");
+        AffineMap f{Mat(2, 2), RowVec(a[j])};
+        // Row form of z |-> a_j + Δ_j z: (x, y) [[u, v], [-v, u]] = (xu - yv, xv + yu).
+        f.A << delta.x(), delta.y(), -delta.y(), delta.x();
+        ifs.maps.push_back(f);
+    }
+    ifs.views.push_back({Mat::Identity(2, 2), RowVec::Zero(2)});
+    return ifs;
+}
+
+Ifs equivalentIfs(const NormalVectorScheme &s, const ControlPolygon &poly)
+{
+    s.validate(poly);
+    Ifs ifs = equivalentIfs(s);
+    ifs.views.clear();
+    const Mat &P = poly.points;
+    for (Eigen::Index i = 0; i < poly.edgeCount(); ++i) {
+        const Eigen::RowVector2d e = P.row((i + 1) % P.rows()) - P.row(i);
+        Projection v{Mat(2, 2), RowVec(P.row(i))};
+        v.V << e.x(), e.y(), -e.y(), e.x();
+        ifs.views.push_back(v);
+    }
+    return ifs;
+}
+
+// ---- presets (001 §3) -------------------------------------------------------------------------
+
+std::vector<NormalVectorPreset> normalVectorPresets()
+{
+    using Id = NormalVectorPresetId;
+    const auto pos = NormalDirection::Positive, neg = NormalDirection::Negative;
+    const double r3 = std::sqrt(3.0);
+    std::vector<NormalVectorPreset> v;
+    v.push_back({Id::Levy, "levy", "Lévy C curve", "001 §3.1, scheme (2), Fig. 2(b)",
+                 "binary interpolatory; new point at the apex of a right isosceles triangle",
+                 NormalVectorScheme({0, 0.5}, {0, 0.5}, pos), unitSegment(), 11});
+    v.push_back({Id::Dragon, "dragon", "Dragon curve", "001 §3.1, Fig. 3(a)",
+                 "scheme (2) with β_1 = (-1)^i / 2: the bump alternates sides along the curve",
+                 NormalVectorScheme({0, 0.5}, {0, 0.5}, pos, {BetaSign::EdgeAlternating}),
+                 unitSegment(), 10});
+    v.push_back({Id::SierpinskiArrowhead, "sierpinski", "Sierpiński gasket (arrowhead curve)",
+                 "001 §3.2, scheme (3), Fig. 4(d)",
+                 "non-stationary and non-uniform, as in the paper: β_1 = β_2 = (-1)^(k+i) √3/4"
+                 " flips with the level k and the edge i; the polygons tend to the gasket",
+                 NormalVectorScheme({0, 0.25, 0.75}, {0, r3 / 4, r3 / 4}, pos,
+                                    {BetaSign::LevelEdgeAlternating}),
+                 unitSegment(), 7});
+    const std::vector<double> kochA{0, 1.0 / 3, 0.5, 2.0 / 3}, kochB{0, 0, r3 / 6, 0};
+    v.push_back({Id::Koch, "koch", "Koch curve", "001 §3.3, scheme (5), Fig. 6(a)",
+                 "quaternary interpolatory; the limit is the classic Koch curve",
+                 NormalVectorScheme(kochA, kochB, pos), unitSegment(), 5});
+    v.push_back({Id::KochSnowflake, "snowflake", "Koch snowflake",
+                 "001 §3.3, scheme (5), Fig. 7(b)",
+                 "the triangle traversed counter-clockwise with negative normals, so every"
+                 " bump points outwards (NOTES.md)",
+                 NormalVectorScheme(kochA, kochB, neg), equilateralTriangle(), 5});
+    v.push_back({Id::Tigerhead, "tigerhead", "Tigerhead-like curve", "001 §3.3, Fig. 8(a)",
+                 "α = (0, -1/4, 1/2, 5/4), β = (0, 1/3, 1/2, 1/3): rules 1 and 3 lie outside"
+                 " the edge, so the curve overlaps itself",
+                 NormalVectorScheme({0, -0.25, 0.5, 1.25}, {0, 1.0 / 3, 0.5, 1.0 / 3}, pos),
+                 unitSegment(), 6});
+    v.push_back({Id::HumanLike, "human", "Human-like curve", "001 §3.3, Fig. 8(b)",
+                 "β = (-1)^(k+1) (0, 1/3, 1/2, 1/3): the bumps point down at the first step"
+                 " (k = 0) and flip at every level",
+                 NormalVectorScheme({0, 5.0 / 9, 0.5, 4.0 / 9}, {0, 1.0 / 3, 0.5, 1.0 / 3}, pos,
+                                    {BetaSign::LevelAlternating}),
+                 unitSegment(), 7});
+    v.push_back({Id::Approximating, "approximating", "Approximating curve",
+                 "001 §3.3, Fig. 8(c)",
+                 "α_0 = -1/2 moves the old points, so the polygon must be closed; the text does"
+                 " not give the quadrilateral of Fig. 3(c): a unit square traversed"
+                 " counter-clockwise is assumed",
+                 NormalVectorScheme({-0.5, -0.25, 0.25, 0.5}, {0, 0.2, 0.2, 0}, neg),
+                 unitSquare(), 5});
+    v.push_back({Id::Crown, "crown", "Crown-like curve", "001 §3.4, Fig. 9(a)",
+                 "6-ary interpolatory",
+                 NormalVectorScheme({0, 1.0 / 3, 1.0 / 3, 0.5, 2.0 / 3, 2.0 / 3},
+                                    {0, -r3 / 9, r3 / 9, -r3 / 18, r3 / 9, -r3 / 9}, pos),
+                 unitSegment(), 4});
+    v.push_back({Id::SevenAry, "sevenary", "7-ary square-wave curve", "001 §3.4, Fig. 9(b)",
+                 "the paper calls it the Minkowski curve; it equals the Minkowski sausage only"
+                 " at level 1 (its middle edge has length 1/2 and is replaced by a half-size"
+                 " copy), so it is a different curve of similarity dimension log_2 3, not 1.5",
+                 NormalVectorScheme({0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75},
+                                    {0, 0, 0.25, 0.25, -0.25, -0.25, 0}, pos),
+                 unitSegment(), 5});
+    return v;
+}
+
+NormalVectorPreset normalVectorPreset(NormalVectorPresetId id)
+{
+    for (NormalVectorPreset &p : normalVectorPresets())
+        if (p.id == id)
+            return p;
+    throw InputError("unknown normal-vector preset " + std::to_string(int(id)));
+}
+
+ControlPolygon subdividePreset(NormalVectorPresetId id, int steps)
+{
+    const NormalVectorPreset p = normalVectorPreset(id);
+    return p.scheme.subdivide(p.polygon, steps);
+}
+
+} // namespace awb
