@@ -2,6 +2,8 @@
 // goals are set elsewhere. Run: build/bin/attractor-bench [--quick]
 
 #include "core/Attractor.h"
+#include "core/ControlPointFractal.h"
+#include "core/NormalVectorScheme.h"
 #include "core/Scheme.h"
 
 #include <chrono>
@@ -82,6 +84,40 @@ void chaos(const Case &c, std::uint64_t samples, int threads)
                 st.images / dt / 1e6);
 }
 
+// Normal-vector Koch scheme (001 scheme 5) for 7 steps from the unit segment, repeated until
+// the time is measurable. On 2 threads the polygon after the first step is split into two
+// halves subdivided independently (valid here: Koch's beta signs depend on neither level nor
+// edge).
+void normalVectorKoch(int threads)
+{
+    const NormalVectorPreset preset = normalVectorPreset(NormalVectorPresetId::Koch);
+    const NormalVectorScheme &scheme = preset.scheme;
+    std::uint64_t points = 0;
+    int reps = 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    while (seconds(t0) < 0.5) {
+        if (threads == 1) {
+            points += std::uint64_t(scheme.subdivide(preset.polygon, 7).points.rows());
+        } else {
+            const ControlPolygon first = scheme.step(preset.polygon, 0);
+            const Eigen::Index mid = first.points.rows() / 2;
+            ControlPolygon a{first.points.topRows(mid + 1), false};
+            ControlPolygon b{first.points.bottomRows(first.points.rows() - mid), false};
+            std::uint64_t na = 0, nb = 0;
+            std::thread t([&] { na = scheme.subdivide(a, 6, 1).points.rows(); });
+            nb = std::uint64_t(scheme.subdivide(b, 6, 1).points.rows());
+            t.join();
+            points += na + nb - 1;
+        }
+        ++reps;
+    }
+    const double dt = seconds(t0);
+    std::printf("normal-vector  %-28s 7 steps  threads %d  %12llu points  %8.3f s  "
+                "%7.2f Mpoints/s  (%d runs)\n",
+                "Koch (001 scheme 5)", threads, (unsigned long long)points, dt,
+                points / dt / 1e6, reps);
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -95,6 +131,13 @@ int main(int argc, char **argv)
         {"cubic B-spline (5 points)", buildSubdivisionIfs(bsplineScheme(3), P5)},
         {"four-point (7 points)", buildSubdivisionIfs(fourPointScheme(1.0 / 16), P7)},
     };
+    // 000 §4.2: the Sierpinski gasket with 6 control points (lifted 6 x 6 matrices) at depth 13.
+    const Case sierpinski{"Sierpinski, control points",
+                          controlPointFractalIfs(sierpinskiControlPointFractal())};
+    for (int threads : {1, 2})
+        deterministic(sierpinski, 13, threads);
+    for (int threads : {1, 2})
+        normalVectorKoch(threads);
     const int maxDepth = quick ? 16 : 20;
     for (const Case &c : cases)
         for (int depth = 12; depth <= maxDepth; depth += 4)
