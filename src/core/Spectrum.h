@@ -16,8 +16,10 @@ struct Spectrum {
     std::vector<int> multiplicity;    // algebraic multiplicity of values[i] (its cluster size)
     double spectralRadius = 0.0;
 };
-// Clustered to `tol` relative: defective eigenvalues (e.g. 1/8 twice) come out as one value
-// with multiplicity 2 rather than two values 1e-8 apart.
+// Every eigenvalue is listed once per copy (values.size() == rows). Copies within `tol`
+// (relative) of each other form a cluster: each is snapped to the cluster mean and carries the
+// cluster size as its multiplicity, so a defective 1/8 twice comes out as 1/8, 1/8 with
+// multiplicity 2 rather than two values 1e-8 apart.
 Spectrum spectrum(const Mat &M, double tol = 1e-6);
 Spectrum spectrum(const CMat &M, double tol = 1e-6);
 

@@ -1,0 +1,313 @@
+#include "gui/views/AnalysisCharts.h"
+
+#include "core/Geometry.h"
+#include "gui/views/AttractorRenderer.h"
+#include "gui/views/NumberFormat.h"
+
+#include <QCategoryAxis>
+#include <QChart>
+#include <QChartView>
+#include <QLineSeries>
+#include <QLogValueAxis>
+#include <QScatterSeries>
+#include <QTabWidget>
+#include <QVBoxLayout>
+#include <QValueAxis>
+
+#include <algorithm>
+#include <cmath>
+
+namespace awb {
+
+namespace {
+
+void clearChart(QChart *chart)
+{
+    chart->removeAllSeries();
+    for (QAbstractAxis *a : chart->axes()) {
+        chart->removeAxis(a);
+        delete a;
+    }
+}
+
+void attach(QChart *chart, QAbstractSeries *s, QAbstractAxis *x, QAbstractAxis *y)
+{
+    chart->addSeries(s);
+    s->attachAxis(x);
+    s->attachAxis(y);
+}
+
+// Integer ticks for a step/depth axis, at most about ten of them.
+QValueAxis *integerAxis(const QString &title, double lo, double hi)
+{
+    auto *axis = new QValueAxis;
+    axis->setTitleText(title);
+    axis->setLabelFormat(QStringLiteral("%.0f"));
+    if (hi <= lo)
+        hi = lo + 1;
+    axis->setRange(lo - 0.3, hi + 0.3);
+    axis->setTickType(QValueAxis::TicksDynamic);
+    axis->setTickAnchor(0.0);
+    axis->setTickInterval(std::max(1.0, std::ceil((hi - lo) / 10.0)));
+    return axis;
+}
+
+// A value axis over exactly [lo, hi] with ticks at round numbers (applyNiceNumbers() would
+// widen the range to the next round numbers and leave much of a small chart empty).
+QValueAxis *valueAxis(const QString &title, double lo, double hi)
+{
+    auto *axis = new QValueAxis;
+    axis->setTitleText(title);
+    if (!(hi > lo))
+        hi = lo + 1;
+    axis->setRange(lo, hi);
+    const double approx = (hi - lo) / 6.0;
+    const double e = std::pow(10.0, std::floor(std::log10(approx)));
+    const double f = approx / e;
+    const double step = (f < 1.5 ? 1.0 : f < 3.5 ? 2.0 : f < 7.5 ? 5.0 : 10.0) * e;
+    axis->setTickType(QValueAxis::TicksDynamic);
+    axis->setTickAnchor(0.0);
+    axis->setTickInterval(step);
+    axis->setLabelFormat(QStringLiteral("%.4g"));
+    return axis;
+}
+
+QPen dashed(const QColor &c) { return QPen(c, 1.5, Qt::DashLine); }
+
+} // namespace
+
+AnalysisCharts::AnalysisCharts(QWidget *parent) : QWidget(parent)
+{
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_tabs = new QTabWidget(this);
+    layout->addWidget(m_tabs);
+    m_tabs->addTab(makeView(tr("Distance to the exact curve")), tr("Distance"));
+    m_tabs->addTab(makeView(tr("Control polygon length")), tr("Length"));
+    m_tabs->addTab(makeView(tr("Box counting")), tr("Box counting"));
+    m_tabs->addTab(makeView(tr("Eigenvalue moduli")), tr("|λ| per map"));
+}
+
+AnalysisCharts::~AnalysisCharts() = default;
+
+QChartView *AnalysisCharts::makeView(const QString &title)
+{
+    auto *chart = new QChart;
+    chart->setTitle(title);
+    QFont f = chart->titleFont();
+    f.setPointSizeF(f.pointSizeF() * 1.15);
+    f.setBold(true);
+    chart->setTitleFont(f);
+    chart->legend()->setAlignment(Qt::AlignBottom);
+    chart->setMargins(QMargins(6, 6, 6, 6));
+    auto *view = new QChartView(chart);
+    view->setRenderHint(QPainter::Antialiasing);
+    view->setMinimumSize(260, 200);
+    m_views << view;
+    return view;
+}
+
+QChartView *AnalysisCharts::chartView(Tab tab) const { return m_views.value(int(tab)); }
+
+QChart *AnalysisCharts::chart(Tab tab) const
+{
+    QChartView *v = chartView(tab);
+    return v ? v->chart() : nullptr;
+}
+
+void AnalysisCharts::setDistances(const QList<DistanceSeries> &series, double rate)
+{
+    QChart *c = chart(DistanceTab);
+    clearChart(c);
+    double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
+    QList<QLineSeries *> made;
+    for (int i = 0; i < series.size(); ++i) {
+        const DistanceSeries &d = series[i];
+        auto *s = new QLineSeries;
+        s->setName(d.name);
+        s->setPointsVisible(true);
+        s->setColor(AttractorRenderer::mapColor(i));
+        for (std::size_t k = 0; k < std::min(d.depth.size(), d.distance.size()); ++k) {
+            // A log axis cannot show 0 (an exact hit) or a failed measurement.
+            if (!(d.distance[k] > 0) || !std::isfinite(d.distance[k]))
+                continue;
+            s->append(d.depth[k], d.distance[k]);
+            xlo = std::min(xlo, d.depth[k]);
+            xhi = std::max(xhi, d.depth[k]);
+            ylo = std::min(ylo, d.distance[k]);
+            yhi = std::max(yhi, d.distance[k]);
+        }
+        made << s;
+    }
+    QLineSeries *reference = nullptr;
+    if (rate > 0 && rate != 1 && !made.isEmpty() && made.front()->count() > 0) {
+        // C rate^k through the first measured point: the convergence the eigenvalue predicts.
+        const QPointF p0 = made.front()->at(0);
+        reference = new QLineSeries;
+        reference->setName(tr("∝ %1^k").arg(formatNumber(rate, 4)));
+        reference->setPen(dashed(QColor(120, 120, 120)));
+        for (double k = xlo; k <= xhi + 1e-9; k += 0.25) {
+            const double y = p0.y() * std::pow(rate, k - p0.x());
+            reference->append(k, y);
+            ylo = std::min(ylo, y);
+            yhi = std::max(yhi, y);
+        }
+    }
+    if (!std::isfinite(xlo)) {
+        xlo = 0, xhi = 1, ylo = 0.1, yhi = 1;
+    }
+    auto *x = integerAxis(tr("depth k"), xlo, xhi);
+    auto *y = new QLogValueAxis;
+    y->setTitleText(tr("Hausdorff distance"));
+    y->setBase(10.0);
+    y->setLabelFormat(QStringLiteral("%.0e"));
+    y->setRange(std::pow(10.0, std::floor(std::log10(ylo))),
+                std::pow(10.0, std::ceil(std::log10(yhi * 1.0001))));
+    y->setMinorTickCount(0); // minor lines per decade clutter a small chart
+    c->addAxis(x, Qt::AlignBottom);
+    c->addAxis(y, Qt::AlignLeft);
+    for (QLineSeries *s : made)
+        attach(c, s, x, y);
+    if (reference)
+        attach(c, reference, x, y);
+}
+
+void AnalysisCharts::setPolygonLengths(const std::vector<double> &lengths, double exactLength)
+{
+    QChart *c = chart(LengthTab);
+    clearChart(c);
+    auto *s = new QLineSeries;
+    s->setName(tr("control polygon"));
+    s->setPointsVisible(true);
+    s->setColor(AttractorRenderer::mapColor(0));
+    double ylo = INFINITY, yhi = -INFINITY;
+    for (std::size_t k = 0; k < lengths.size(); ++k) {
+        if (!std::isfinite(lengths[k]))
+            continue;
+        s->append(double(k), lengths[k]);
+        ylo = std::min(ylo, lengths[k]);
+        yhi = std::max(yhi, lengths[k]);
+    }
+    QLineSeries *exact = nullptr;
+    const double last = lengths.empty() ? 1.0 : double(lengths.size() - 1);
+    if (exactLength > 0 && std::isfinite(exactLength)) {
+        exact = new QLineSeries;
+        exact->setName(tr("exact curve"));
+        exact->setPen(dashed(QColor(20, 150, 60)));
+        exact->append(0, exactLength);
+        exact->append(last, exactLength);
+        ylo = std::min(ylo, exactLength);
+        yhi = std::max(yhi, exactLength);
+    }
+    if (!std::isfinite(ylo))
+        ylo = 0, yhi = 1;
+    const double pad = std::max(1e-12, 0.08 * (yhi - ylo));
+    auto *x = integerAxis(tr("subdivision step k"), 0, last);
+    auto *y = valueAxis(tr("length"), ylo - pad, yhi + pad);
+    c->addAxis(x, Qt::AlignBottom);
+    c->addAxis(y, Qt::AlignLeft);
+    attach(c, s, x, y);
+    if (exact)
+        attach(c, exact, x, y);
+}
+
+void AnalysisCharts::setBoxCounting(const BoxDimension &box)
+{
+    QChart *c = chart(BoxCountingTab);
+    clearChart(c);
+    if (box.valid)
+        c->setTitle(tr("Box counting: dimension D = %1, R² = %2")
+                        .arg(QString::number(box.dimension, 'f', 4),
+                             QString::number(box.r2, 'f', 5)));
+    else
+        c->setTitle(tr("Box counting: no fit (%1)").arg(QString::fromStdString(box.note)));
+    auto *all = new QScatterSeries;
+    all->setName(tr("not fitted"));
+    all->setMarkerSize(7);
+    all->setColor(QColor(170, 170, 170));
+    all->setBorderColor(QColor(170, 170, 170));
+    auto *fitted = new QScatterSeries;
+    fitted->setName(tr("fitted levels"));
+    fitted->setMarkerSize(9);
+    fitted->setColor(AttractorRenderer::mapColor(0));
+    fitted->setBorderColor(AttractorRenderer::mapColor(0).darker(130));
+    double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
+    const std::size_t n = std::min(box.logInverseEps.size(), box.logCount.size());
+    for (std::size_t l = 0; l < n; ++l) {
+        const double x = box.logInverseEps[l], y = box.logCount[l];
+        const bool inFit = box.valid && int(l) >= box.levelFrom && int(l) <= box.levelTo;
+        (inFit ? fitted : all)->append(x, y);
+        xlo = std::min(xlo, x), xhi = std::max(xhi, x);
+        ylo = std::min(ylo, y), yhi = std::max(yhi, y);
+    }
+    QLineSeries *line = nullptr;
+    if (box.valid && n > 0) {
+        line = new QLineSeries;
+        line->setName(tr("fit: log N = %1 log(1/ε) + %2")
+                          .arg(QString::number(box.dimension, 'f', 3),
+                               QString::number(box.intercept, 'f', 3)));
+        line->setPen(QPen(QColor(200, 0, 60), 1.6));
+        for (double x : {xlo, xhi}) {
+            const double y = box.intercept + box.dimension * x;
+            line->append(x, y);
+            ylo = std::min(ylo, y), yhi = std::max(yhi, y);
+        }
+    }
+    if (!std::isfinite(xlo))
+        xlo = 0, xhi = 1, ylo = 0, yhi = 1;
+    const double px = std::max(1e-9, 0.05 * (xhi - xlo)), py = std::max(1e-9, 0.05 * (yhi - ylo));
+    auto *x = valueAxis(tr("log(1/ε)"), xlo - px, xhi + px);
+    auto *y = valueAxis(tr("log N(ε)"), ylo - py, yhi + py);
+    c->addAxis(x, Qt::AlignBottom);
+    c->addAxis(y, Qt::AlignLeft);
+    attach(c, all, x, y);
+    attach(c, fitted, x, y);
+    if (line)
+        attach(c, line, x, y);
+}
+
+void AnalysisCharts::setModuli(const QList<MapModuli> &maps)
+{
+    QChart *c = chart(ModuliTab);
+    clearChart(c);
+    auto *x = new QCategoryAxis;
+    x->setTitleText(tr("map"));
+    x->setLabelsPosition(QCategoryAxis::AxisLabelsPositionOnValue);
+    x->setStartValue(0.5);
+    double ymax = 1.0;
+    QList<QScatterSeries *> made;
+    for (int i = 0; i < maps.size(); ++i) {
+        auto *s = new QScatterSeries;
+        s->setName(subscriptName(maps[i].label));
+        s->setMarkerSize(10);
+        s->setColor(AttractorRenderer::mapColor(i));
+        s->setBorderColor(AttractorRenderer::mapColor(i).darker(130));
+        for (double m : maps[i].moduli) {
+            if (!std::isfinite(m))
+                continue;
+            s->append(i + 1, m);
+            ymax = std::max(ymax, m);
+        }
+        // Category labels sit at the category's end value: put it on the map's column.
+        // Category labels must be unique.
+        QString label = subscriptName(maps[i].label);
+        if (x->categoriesLabels().contains(label))
+            label += QStringLiteral(" (%1)").arg(i + 1);
+        x->append(label, i + 1);
+        made << s;
+    }
+    x->setRange(0.5, std::max(1, int(maps.size())) + 0.5);
+    auto *unit = new QLineSeries;
+    unit->setName(tr("|λ| = 1"));
+    unit->setPen(dashed(QColor(200, 0, 60)));
+    unit->append(0.5, 1.0);
+    unit->append(std::max(1, int(maps.size())) + 0.5, 1.0);
+    auto *y = valueAxis(tr("|λ|"), 0.0, ymax * 1.08);
+    c->addAxis(x, Qt::AlignBottom);
+    c->addAxis(y, Qt::AlignLeft);
+    for (QScatterSeries *s : made)
+        attach(c, s, x, y);
+    attach(c, unit, x, y);
+}
+
+} // namespace awb

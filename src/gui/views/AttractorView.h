@@ -1,0 +1,206 @@
+#pragma once
+// The attractor view: the current item's attractor (rendered off the GUI thread by an
+// AttractorRenderer) with the control polygon, start set, exact curve, classic subdivision
+// polygons and Hutchinson iterates painted on top as vector overlays. It takes plain core data
+// through setters and reports edits as press/drag/release signals (one undo step per drag is
+// the owner's job); it never changes the data itself. The plane is shown with equal axis scale.
+
+#include "gui/views/AttractorRenderer.h"
+
+#include <QElapsedTimer>
+#include <QPointF>
+#include <QPolygonF>
+#include <QTimer>
+#include <QWidget>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+class QPainter;
+
+namespace awb {
+
+class AttractorView : public QWidget {
+    Q_OBJECT
+public:
+    // How the attractor raster is made and coloured.
+    struct RenderSettings {
+        RenderRequest::Mode mode = RenderRequest::Mode::Deterministic;
+        int depth = 12;
+        std::uint64_t samples = 300000;
+        std::uint64_t seed = 1;
+        AttractorColorMode colorMode = AttractorColorMode::ByMap;
+        int prefixLength = 2;
+        QList<QColor> palette;   // empty: the renderer's defaults
+        int dotRadius = 1;       // in screen pixels: a one-pixel curve is hard to see
+    };
+    enum class Layer { Attractor, ControlPolygon, StartSet, ExactCurve, Subdivision, Hutchinson,
+                       Grid };
+
+    explicit AttractorView(QWidget *parent = nullptr);
+    ~AttractorView() override;
+
+    // ---- data (plain core types; the view keeps copies, the owner stays the document) ----
+    // The IFS and its start set X0 (in the IFS space; drawn through the IFS's first view).
+    void setIfs(std::shared_ptr<const Ifs> ifs, const StartSet &start);
+    void setStartSet(const StartSet &start);
+    // Control points m x 2 (one per row), drawn as the control polygon; empty to hide.
+    void setControlPoints(const Mat &points, bool closed = false);
+    // The exact limit curve (n x 2) where one exists; empty to clear.
+    void setExactCurve(const Mat &curve);
+    // Classic subdivision polygons, coarse to fine (k x 2 each).
+    void setSubdivisionPolygons(const std::vector<Mat> &polygons);
+    // Draw F^k(X0) as vectors (the papers' step-by-step figures); -1 turns it off.
+    void setHutchinsonStep(int k);
+    int hutchinsonStep() const { return m_hutchStep; }
+    // Images of F^k(X0) currently drawn (0 when off or too many to draw as vectors).
+    int hutchinsonImageCount() const { return int(m_hutch.size()); }
+    void setRenderSettings(const RenderSettings &settings);
+    RenderSettings renderSettings() const { return m_settings; }
+    void setLayerVisible(Layer layer, bool visible);
+    bool isLayerVisible(Layer layer) const;
+    void setControlPointsEditable(bool editable) { m_editControl = editable; }
+    void setStartSetEditable(bool editable) { m_editStart = editable; }
+    // Fit the view to the content whenever data arrives, until the user zooms or pans.
+    void setAutoFit(bool on) { m_autoFit = on; }
+
+    // ---- world <-> screen (widget pixels), equal scale on both axes, y up ----
+    QPointF worldToScreen(const QPointF &world) const;
+    QPointF screenToWorld(const QPointF &screen) const;
+    double pixelsPerUnit() const { return m_scale; }
+    QPointF viewCenter() const { return m_center; }
+    QRectF visibleWorldRect() const;
+    void setView(const QPointF &center, double pixelsPerUnit);
+    // Control points and start-set vertices as drawn (in world coordinates).
+    QPointF controlPointPosition(int i) const;
+    QPointF startVertexPosition(int i) const;
+    int controlPointCount() const { return int(m_control.size()); }
+    int startVertexCount() const { return int(m_startPlane.size()); }
+
+    // Paints the figure as shown into `target` of any painter (SVG, PDF, printer, image):
+    // overlays as vector paths, the attractor as the raster image, or as vector dots when
+    // the drawing has few points.
+    void renderTo(QPainter *painter, const QRectF &target);
+    // The latest rendered attractor raster and what it shows.
+    QImage currentImage() const { return m_image; }
+    RenderInfo currentImageInfo() const { return m_imageInfo; }
+    QString lastError() const { return m_error; }
+    AttractorRenderer *renderer() const { return m_renderer; }
+
+    QSize sizeHint() const override { return {640, 480}; }
+    QSize minimumSizeHint() const override { return {160, 120}; }
+
+public slots:
+    void fitToContents();
+    // Multiplies the scale by `factor`, keeping the world point under `screenAnchor` fixed.
+    void zoomBy(double factor, const QPointF &screenAnchor);
+    void zoomIn() { zoomBy(1.25, rect().center()); }
+    void zoomOut() { zoomBy(0.8, rect().center()); }
+
+signals:
+    void controlPointPressed(int index);
+    void controlPointDragged(int index, const QPointF &world);
+    void controlPointReleased(int index, const QPointF &startWorld, const QPointF &endWorld);
+    void startVertexPressed(int index);
+    void startVertexDragged(int index, const QPointF &world);
+    void startVertexReleased(int index, const QPointF &startWorld, const QPointF &endWorld);
+    // The world coordinates under the cursor (for a status bar); cursorLeft when it leaves.
+    void cursorMoved(const QPointF &world);
+    void cursorLeft();
+    void viewChanged();
+    // Rendering state, forwarded from the renderer.
+    void renderProgress(double fraction);
+    void renderFinished(const awb::RenderInfo &info);
+    void renderFailed(const QString &message);
+
+protected:
+    void paintEvent(QPaintEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
+    void showEvent(QShowEvent *event) override;
+    void mousePressEvent(QMouseEvent *event) override;
+    void mouseMoveEvent(QMouseEvent *event) override;
+    void mouseReleaseEvent(QMouseEvent *event) override;
+    void wheelEvent(QWheelEvent *event) override;
+    void keyPressEvent(QKeyEvent *event) override;
+    void leaveEvent(QEvent *event) override;
+
+private:
+    // World -> some device rectangle: the widget, or an export target.
+    struct Mapping {
+        QPointF center;       // world point at the middle of `target`
+        double scale = 1.0;   // device pixels per world unit
+        QRectF target;
+        QPointF map(const QPointF &w) const;
+        QPointF unmap(const QPointF &s) const;
+    };
+    // One start-set image of a vector drawing (Hutchinson step or few-point export).
+    struct VectorImage {
+        QPolygonF polygon;    // plane coordinates
+        QColor colour;
+    };
+    enum class DragKind { None, ControlPoint, StartVertex, Pan };
+    struct Drag {
+        DragKind kind = DragKind::None;
+        int index = -1;
+        QPointF pressScreen, lastScreen;
+        QPointF pressWorld, startWorld, currentWorld;
+    };
+
+    Mapping screenMapping() const;
+    void paintScene(QPainter &p, const Mapping &m, bool forExport);
+    void paintGrid(QPainter &p, const Mapping &m) const;
+    QFont sceneFont(double factor, double u) const;
+    QImage exportRaster(const Mapping &m, RenderInfo *info) const;
+    void paintVectorImages(QPainter &p, const Mapping &m, const std::vector<VectorImage> &images,
+                           StartSet::Kind kind) const;
+    void paintHandles(QPainter &p, const Mapping &m) const;
+    void paintStatus(QPainter &p) const;
+
+    void dataChanged(bool geometryChanged);
+    void scheduleRender();
+    void startRender();
+    void userMovedView();
+    void updateStartPlane();
+    void updateHutchinson();
+    // F^depth(X0) as vector images when there are at most `maxVertices` vertices; false if more.
+    bool vectorImages(int depth, std::size_t maxVertices, std::vector<VectorImage> *out) const;
+    bool randomVectorImages(std::size_t maxVertices, std::vector<VectorImage> *out) const;
+    std::optional<QRectF> contentBounds() const;
+    // Index of the handle under `screen`, or -1.
+    int hitControlPoint(const QPointF &screen) const;
+    int hitStartVertex(const QPointF &screen) const;
+
+    AttractorRenderer *m_renderer = nullptr;
+    QTimer m_renderTimer;
+
+    std::shared_ptr<const Ifs> m_ifs;
+    StartSet m_start;
+    std::vector<QPointF> m_startPlane;
+    std::vector<QPointF> m_control;
+    bool m_controlClosed = false;
+    QPolygonF m_exact;
+    std::vector<QPolygonF> m_subdivision;
+    int m_hutchStep = -1;
+    std::vector<VectorImage> m_hutch;
+    bool m_hutchTooMany = false;
+    RenderSettings m_settings;
+    std::uint32_t m_hiddenLayers = 0;
+    bool m_editControl = true, m_editStart = true;
+
+    QPointF m_center{0, 0};
+    double m_scale = 50.0;
+    bool m_autoFit = true;
+
+    QImage m_image;
+    RenderInfo m_imageInfo;
+    QString m_error;
+    double m_progress = 1.0;
+    bool m_busy = false;
+    QElapsedTimer m_busySince;
+
+    Drag m_drag;
+    int m_hoverControl = -1, m_hoverStart = -1;
+};
+
+} // namespace awb

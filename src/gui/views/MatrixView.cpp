@@ -1,0 +1,354 @@
+#include "gui/views/MatrixView.h"
+
+#include "gui/views/NumberFormat.h"
+
+#include <QAbstractTableModel>
+#include <QFont>
+#include <QHeaderView>
+#include <QLabel>
+#include <QRegularExpression>
+#include <QScrollArea>
+#include <QTableView>
+#include <QVBoxLayout>
+
+#include <cmath>
+#include <functional>
+
+namespace awb {
+
+namespace {
+
+const QColor kABlock(226, 236, 250);
+const QColor kBRow(252, 236, 214);
+const QColor kFixed(240, 240, 240);
+const QColor kSum(232, 232, 232);
+
+// "S_1" -> "S<sub>1</sub>" for the table titles.
+QString richName(const QString &name)
+{
+    QString s = name.toHtmlEscaped();
+    static const QRegularExpression sub(QStringLiteral("_\\{?([A-Za-z0-9]+)\\}?"));
+    s.replace(sub, QStringLiteral("<sub>\\1</sub>"));
+    return s;
+}
+
+} // namespace
+
+// One matrix as a table: formatted cells, shaded blocks, an extra sum row or column. Edits
+// are validated here and handed to callbacks; the stored numbers change only via setMatrix.
+class MatrixTableModel : public QAbstractTableModel {
+public:
+    std::function<void(int row, int col, double value)> onEdited;
+    std::function<void(const QString &message)> onRejected;
+
+    void setMatrix(const NamedMatrix &m)
+    {
+        const bool reshape = m.values.rows() != m_m.values.rows()
+                             || m.values.cols() != m_m.values.cols();
+        if (reshape)
+            beginResetModel();
+        m_m = m;
+        if (reshape)
+            endResetModel();
+        else if (rowCount() > 0 && columnCount() > 0)
+            emit dataChanged(index(0, 0), index(rowCount() - 1, columnCount() - 1));
+    }
+    const NamedMatrix &matrix() const { return m_m; }
+    void setSums(MatrixView::Sums s)
+    {
+        beginResetModel();
+        m_sums = s;
+        endResetModel();
+    }
+    void setEditable(bool e)
+    {
+        m_editable = e;
+        if (rowCount() > 0 && columnCount() > 0)
+            emit dataChanged(index(0, 0), index(rowCount() - 1, columnCount() - 1));
+    }
+    void setDigits(int d)
+    {
+        m_digits = d;
+        if (rowCount() > 0 && columnCount() > 0)
+            emit dataChanged(index(0, 0), index(rowCount() - 1, columnCount() - 1));
+    }
+
+    int rowCount(const QModelIndex &parent = {}) const override
+    {
+        if (parent.isValid())
+            return 0;
+        return int(m_m.values.rows()) + (m_sums == MatrixView::Sums::Columns ? 1 : 0);
+    }
+    int columnCount(const QModelIndex &parent = {}) const override
+    {
+        if (parent.isValid())
+            return 0;
+        return int(m_m.values.cols()) + (m_sums == MatrixView::Sums::Rows ? 1 : 0);
+    }
+
+    QVariant data(const QModelIndex &index, int role) const override
+    {
+        if (!index.isValid())
+            return {};
+        const int r = index.row(), c = index.column();
+        const bool sum = isSum(r, c);
+        switch (role) {
+        case Qt::DisplayRole:
+            return formatNumber(value(r, c), m_digits);
+        case Qt::EditRole:
+            return editableNumber(value(r, c));
+        case Qt::ToolTipRole: {
+            const QString exact = QString::number(value(r, c), 'g', 17);
+            if (sum)
+                return m_sums == MatrixView::Sums::Rows
+                           ? MatrixView::tr("Sum of row %1: %2").arg(r + 1).arg(exact)
+                           : MatrixView::tr("Sum of column %1: %2").arg(c + 1).arg(exact);
+            const QString block = blockName(r, c);
+            return block.isEmpty() ? exact : QStringLiteral("%1 (%2)").arg(exact, block);
+        }
+        case Qt::TextAlignmentRole:
+            return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
+        case Qt::BackgroundRole:
+            if (sum)
+                return kSum;
+            if (m_m.affineBlock >= 0) {
+                const int a = m_m.affineBlock;
+                if (r < a && c < a)
+                    return kABlock;
+                if (r == a && c < a)
+                    return kBRow;
+                return kFixed;
+            }
+            return {};
+        case Qt::FontRole:
+            if (sum) {
+                QFont f;
+                f.setItalic(true);
+                return f;
+            }
+            return {};
+        default:
+            return {};
+        }
+    }
+
+    QVariant headerData(int section, Qt::Orientation o, int role) const override
+    {
+        if (role != Qt::DisplayRole)
+            return QAbstractTableModel::headerData(section, o, role);
+        const bool sum = o == Qt::Horizontal ? section == int(m_m.values.cols())
+                                             : section == int(m_m.values.rows());
+        return sum ? QStringLiteral("Σ") : QString::number(section + 1);
+    }
+
+    Qt::ItemFlags flags(const QModelIndex &index) const override
+    {
+        Qt::ItemFlags f = Qt::ItemIsEnabled | Qt::ItemIsSelectable;
+        if (m_editable && m_m.editable && !isSum(index.row(), index.column()))
+            f |= Qt::ItemIsEditable;
+        return f;
+    }
+
+    bool setData(const QModelIndex &index, const QVariant &v, int role) override
+    {
+        if (role != Qt::EditRole || !(flags(index) & Qt::ItemIsEditable))
+            return false;
+        const QString text = v.toString();
+        const std::optional<double> x = parseNumber(text);
+        if (!x) {
+            if (onRejected)
+                onRejected(MatrixView::tr("“%1” is not a finite number: %2, row %3, column %4 "
+                                          "was not changed.")
+                               .arg(text.trimmed(), m_m.name)
+                               .arg(index.row() + 1)
+                               .arg(index.column() + 1));
+            return false;
+        }
+        // No-op edits make no undo step.
+        if (*x != m_m.values(index.row(), index.column()) && onEdited)
+            onEdited(index.row(), index.column(), *x);
+        return true;
+    }
+
+private:
+    bool isSum(int r, int c) const
+    {
+        return r >= m_m.values.rows() || c >= m_m.values.cols();
+    }
+    double value(int r, int c) const
+    {
+        if (c >= m_m.values.cols())
+            return m_m.values.row(r).sum();
+        if (r >= m_m.values.rows())
+            return m_m.values.col(c).sum();
+        return m_m.values(r, c);
+    }
+    QString blockName(int r, int c) const
+    {
+        const int a = m_m.affineBlock;
+        if (a < 0)
+            return {};
+        if (r < a && c < a)
+            return MatrixView::tr("A block");
+        if (r == a && c < a)
+            return MatrixView::tr("b row");
+        return MatrixView::tr("fixed part of the lifted map");
+    }
+
+    NamedMatrix m_m;
+    MatrixView::Sums m_sums = MatrixView::Sums::Rows;
+    bool m_editable = false;
+    int m_digits = 6;
+};
+
+MatrixView::MatrixView(QWidget *parent) : QWidget(parent)
+{
+    auto *outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    auto *scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    auto *content = new QWidget(scroll);
+    m_tables = new QVBoxLayout(content);
+    m_tables->setContentsMargins(6, 6, 6, 6);
+    m_tables->addStretch(1);
+    scroll->setWidget(content);
+    outer->addWidget(scroll, 1);
+    // The refusal message sits outside the scroll area: it stays visible whatever is scrolled.
+    m_error = new QLabel(this);
+    m_error->setWordWrap(true);
+    m_error->setStyleSheet(QStringLiteral("QLabel { color: #b01e1e; padding: 4px; }"));
+    m_error->hide();
+    outer->addWidget(m_error);
+}
+
+MatrixView::~MatrixView() = default;
+
+void MatrixView::setMatrices(const QList<NamedMatrix> &matrices)
+{
+    bool same = matrices.size() == m_models.size();
+    for (int i = 0; same && i < matrices.size(); ++i) {
+        const NamedMatrix &a = matrices[i], &b = m_models[i]->matrix();
+        same = a.name == b.name && a.values.rows() == b.values.rows()
+               && a.values.cols() == b.values.cols() && a.affineBlock == b.affineBlock;
+    }
+    if (!same) {
+        rebuild(matrices);
+        return;
+    }
+    for (int i = 0; i < matrices.size(); ++i)
+        m_models[i]->setMatrix(matrices[i]);
+    for (QTableView *v : m_views)
+        fitTable(v);
+}
+
+void MatrixView::rebuild(const QList<NamedMatrix> &matrices)
+{
+    // Each box owns its title, table and (through the table) model.
+    qDeleteAll(m_boxes);
+    m_boxes.clear();
+    m_views.clear();
+    m_models.clear();
+    for (int i = 0; i < matrices.size(); ++i) {
+        const NamedMatrix &nm = matrices[i];
+        auto *model = new MatrixTableModel;
+        model->setSums(m_sums);
+        model->setDigits(m_digits);
+        model->setMatrix(nm);
+        model->setEditable(m_editable);
+        model->onEdited = [this, i](int r, int c, double v) {
+            m_error->hide();
+            m_error->clear();
+            emit cellEdited(i, r, c, v);
+        };
+        model->onRejected = [this](const QString &message) { showError(message); };
+
+        QString title = QStringLiteral("<b>%1</b>").arg(richName(nm.name));
+        if (nm.affineBlock >= 0)
+            title += QStringLiteral(" <span style='color:#555'>%1</span>")
+                         .arg(tr("— <span style='background:#e2ecfa'>&nbsp;A&nbsp;</span> "
+                                 "block, <span style='background:#fcecd6'>&nbsp;b&nbsp;</span> "
+                                 "row"));
+        auto *box = new QWidget;
+        auto *boxLayout = new QVBoxLayout(box);
+        boxLayout->setContentsMargins(0, 0, 0, 8);
+        boxLayout->setSpacing(3);
+        auto *label = new QLabel(title, box);
+        label->setTextFormat(Qt::RichText);
+        auto *view = new QTableView(box);
+        view->setModel(model);
+        model->setParent(view);
+        view->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+        view->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+        view->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
+        view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
+                              | QAbstractItemView::AnyKeyPressed);
+        view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+        view->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+        view->horizontalHeader()->setMinimumSectionSize(44);
+        boxLayout->addWidget(label);
+        boxLayout->addWidget(view, 0, Qt::AlignLeft);
+        m_tables->insertWidget(m_tables->count() - 1, box); // before the stretch
+        m_boxes << box;
+        m_views << view;
+        m_models << model;
+        fitTable(view);
+    }
+}
+
+void MatrixView::fitTable(QTableView *view) const
+{
+    // Whole tables, no inner scroll bars: the outer scroll area scrolls them all together.
+    view->resizeColumnsToContents();
+    view->resizeRowsToContents();
+    int w = view->verticalHeader()->sizeHint().width() + 2 * view->frameWidth();
+    for (int c = 0; c < view->model()->columnCount(); ++c)
+        w += view->columnWidth(c);
+    int h = view->horizontalHeader()->sizeHint().height() + 2 * view->frameWidth();
+    for (int r = 0; r < view->model()->rowCount(); ++r)
+        h += view->rowHeight(r);
+    view->setFixedSize(w, h);
+}
+
+void MatrixView::setSums(Sums sums)
+{
+    m_sums = sums;
+    for (MatrixTableModel *m : m_models)
+        m->setSums(sums);
+    for (QTableView *v : m_views)
+        fitTable(v);
+}
+
+void MatrixView::setEditable(bool editable)
+{
+    m_editable = editable;
+    for (MatrixTableModel *m : m_models)
+        m->setEditable(editable);
+}
+
+void MatrixView::setDigits(int significantDigits)
+{
+    m_digits = std::clamp(significantDigits, 1, 17);
+    for (MatrixTableModel *m : m_models)
+        m->setDigits(m_digits);
+    for (QTableView *v : m_views)
+        fitTable(v);
+}
+
+QTableView *MatrixView::table(int matrix) const
+{
+    return matrix >= 0 && matrix < m_views.size() ? m_views[matrix] : nullptr;
+}
+
+QString MatrixView::errorMessage() const
+{
+    return m_error->isHidden() ? QString() : m_error->text();
+}
+
+void MatrixView::showError(const QString &message)
+{
+    m_error->setText(message);
+    m_error->show();
+}
+
+} // namespace awb

@@ -1,0 +1,71 @@
+#pragma once
+// Tables of named matrices (S_1..S_p, M_i = P^-1 S_i P with its A_i / b_i blocks) with exact
+// fractions where they are easy, and row or column sums. In editable mode a cell edit is
+// validated here and reported as cellEdited(); the view does not change its own numbers: the
+// owner applies the edit (one undo step) and sets the matrices again.
+
+#include "core/Types.h"
+
+#include <QList>
+#include <QString>
+#include <QWidget>
+
+class QLabel;
+class QTableView;
+class QVBoxLayout;
+
+namespace awb {
+
+class MatrixTableModel;
+
+struct NamedMatrix {
+    QString name;            // "S_1", "M_2", ...
+    Mat values;
+    // Size of the A block of a lifted map M = [[A, 0], [b, 1]] (A top-left, b the row below
+    // it); -1 for a plain matrix. Shades the blocks differently.
+    int affineBlock = -1;
+    bool editable = false;   // the user's own matrix (only then can cells be edited)
+};
+
+class MatrixView : public QWidget {
+    Q_OBJECT
+public:
+    enum class Sums { None, Rows, Columns };
+
+    explicit MatrixView(QWidget *parent = nullptr);
+    ~MatrixView() override;
+
+    // Replaces the shown matrices. When names and shapes are unchanged the tables are updated
+    // in place (no flicker, the scroll position and an open editor survive a live drag).
+    void setMatrices(const QList<NamedMatrix> &matrices);
+    int matrixCount() const { return int(m_models.size()); }
+    void setSums(Sums sums);
+    Sums sums() const { return m_sums; }
+    // Allows editing cells of matrices marked editable.
+    void setEditable(bool editable);
+    bool isEditable() const { return m_editable; }
+    void setDigits(int significantDigits);
+
+    QTableView *table(int matrix) const;
+    // The message shown after a refused edit (empty when none).
+    QString errorMessage() const;
+
+signals:
+    void cellEdited(int matrix, int row, int column, double value);
+
+private:
+    void rebuild(const QList<NamedMatrix> &matrices);
+    void showError(const QString &message);
+    void fitTable(QTableView *view) const;
+
+    QVBoxLayout *m_tables = nullptr;
+    QLabel *m_error = nullptr;
+    QList<MatrixTableModel *> m_models;
+    QList<QTableView *> m_views;
+    QList<QWidget *> m_boxes;
+    Sums m_sums = Sums::Rows;
+    bool m_editable = false;
+    int m_digits = 6;
+};
+
+} // namespace awb

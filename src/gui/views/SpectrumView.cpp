@@ -1,0 +1,448 @@
+#include "gui/views/SpectrumView.h"
+
+#include "gui/views/AttractorRenderer.h"
+#include "gui/views/NumberFormat.h"
+
+#include <QFileInfo>
+#include <QHelpEvent>
+#include <QResizeEvent>
+#include <QSplitter>
+#include <QSvgGenerator>
+#include <QTextBrowser>
+#include <QToolTip>
+#include <QVBoxLayout>
+
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace awb {
+
+namespace {
+
+constexpr double kTooltipRadius = 9.0;  // pixels
+constexpr double kSamePoint = 1e-9;     // eigenvalues closer than this share a marker
+
+bool isOne(Complex z) { return std::abs(z - Complex(1.0, 0.0)) < 1e-9; }
+
+// Points of map i get smaller markers than those of map i-1: coinciding eigenvalues of
+// different maps (common: S_1 and S_2 share most of theirs) show as concentric discs.
+double markerSize(int map) { return std::max(6.0, 14.0 - 3.5 * map); }
+
+QString richLabel(const QString &name)
+{
+    QString s = name.toHtmlEscaped();
+    const qsizetype u = s.indexOf(QLatin1Char('_'));
+    if (u >= 0)
+        s = s.left(u) + QStringLiteral("<sub>") + s.mid(u + 1) + QStringLiteral("</sub>");
+    return s;
+}
+
+void addUnique(std::vector<Complex> &list, Complex z)
+{
+    for (Complex w : list)
+        if (std::abs(w - z) < kSamePoint)
+            return;
+    list.push_back(z);
+}
+
+} // namespace
+
+SpectrumView::SpectrumView(QWidget *parent) : QWidget(parent)
+{
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_splitter = new QSplitter(Qt::Horizontal, this);
+    layout->addWidget(m_splitter);
+
+    m_plot = new QCustomPlot(m_splitter);
+    m_plot->setMinimumSize(220, 200);
+    m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    m_plot->xAxis->setLabel(tr("Re λ"));
+    m_plot->yAxis->setLabel(tr("Im λ"));
+    m_plot->xAxis2->setVisible(true);
+    m_plot->yAxis2->setVisible(true);
+    m_plot->xAxis2->setTickLabels(false);
+    m_plot->yAxis2->setTickLabels(false);
+    connect(m_plot->xAxis, qOverload<const QCPRange &>(&QCPAxis::rangeChanged), m_plot->xAxis2,
+            qOverload<const QCPRange &>(&QCPAxis::setRange));
+    connect(m_plot->yAxis, qOverload<const QCPRange &>(&QCPAxis::rangeChanged), m_plot->yAxis2,
+            qOverload<const QCPRange &>(&QCPAxis::setRange));
+    // The legend goes below the axis rectangle so that it never hides an eigenvalue.
+    m_plot->legend->setVisible(true);
+    m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    m_plot->legend->setWrap(4);
+    QFont legendFont = font();
+    legendFont.setPointSizeF(legendFont.pointSizeF() * 0.9);
+    m_plot->legend->setFont(legendFont);
+    m_plot->axisRect()->insetLayout()->take(m_plot->legend);
+    m_plot->plotLayout()->addElement(1, 0, m_plot->legend);
+    m_plot->plotLayout()->setRowStretchFactor(1, 0.001);
+    m_plot->legend->setBorderPen(Qt::NoPen);
+    m_plot->legend->setIconSize(28, 24); // room for the subdominant ring
+    // Equal scale on both axes, kept after every layout (resizes, exports at any size).
+    connect(m_plot, &QCustomPlot::afterLayout, this, &SpectrumView::keepAspect);
+    // A user zoom or drag ends the automatic fitting until fit() is called.
+    connect(m_plot, &QCustomPlot::mouseWheel, this, [this] { m_fitPending = false; });
+    connect(m_plot, &QCustomPlot::mouseMove, this, [this](QMouseEvent *e) {
+        if (e->buttons() != Qt::NoButton)
+            m_fitPending = false;
+    });
+    connect(m_plot, &QCustomPlot::mouseDoubleClick, this, [this] { fit(); });
+    m_plot->installEventFilter(this);
+
+    m_text = new QTextBrowser(m_splitter);
+    m_text->setMinimumWidth(180);
+    m_text->setOpenLinks(false);
+    m_splitter->addWidget(m_plot);
+    m_splitter->addWidget(m_text);
+    m_splitter->setStretchFactor(0, 3);
+    m_splitter->setStretchFactor(1, 2);
+    m_splitter->setChildrenCollapsible(false);
+
+    rebuildPlot();
+    updateVerdicts();
+}
+
+SpectrumView::~SpectrumView() = default;
+
+void SpectrumView::setMaps(const QList<MapSpectrum> &maps)
+{
+    m_maps = maps;
+    rebuildPlot();
+    updateVerdicts();
+}
+
+void SpectrumView::rebuildPlot()
+{
+    m_plot->clearGraphs();
+    m_plot->clearPlottables();
+    m_mapGraphs.clear();
+
+    auto *circle = new QCPCurve(m_plot->xAxis, m_plot->yAxis);
+    circle->setName(tr("unit circle"));
+    circle->setPen(QPen(QColor(150, 150, 150), 1.2));
+    QVector<QCPCurveData> pts;
+    for (int k = 0; k <= 360; ++k) {
+        const double t = 2 * M_PI * k / 360.0;
+        pts << QCPCurveData(k, std::cos(t), std::sin(t));
+    }
+    circle->data()->set(pts, true);
+    circle->removeFromLegend(); // self-explanatory; the legend has little room
+
+    std::vector<Complex> dominant, sub;
+    for (int i = 0; i < m_maps.size(); ++i) {
+        const MapSpectrum &m = m_maps[i];
+        QCPGraph *g = m_plot->addGraph();
+        g->setName(subscriptName(m.label));
+        g->setLineStyle(QCPGraph::lsNone);
+        const QColor c = AttractorRenderer::mapColor(i);
+        // ssCircle takes the brush as fill (ssDisc would fill with the pen's colour).
+        g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::white, 1.0),
+                                           QBrush(c), markerSize(i)));
+        g->setPen(QPen(c));
+        QVector<double> x, y;
+        for (Complex z : m.spectrum.values) {
+            x << z.real();
+            y << z.imag();
+            if (isOne(z) && z == m.spectrum.values.front())
+                addUnique(dominant, z);
+        }
+        // Keyed data is sorted by real part; that is fine for unconnected markers.
+        g->setData(x, y);
+        m_mapGraphs << g;
+        for (Complex z : m.subdominant.values)
+            addUnique(sub, z);
+    }
+
+    auto addMarkers = [&](const std::vector<Complex> &zs, const QString &name,
+                          QCPScatterStyle style) {
+        QCPGraph *g = m_plot->addGraph();
+        g->setName(name);
+        g->setLineStyle(QCPGraph::lsNone);
+        g->setScatterStyle(style);
+        QVector<double> x, y;
+        for (Complex z : zs) {
+            x << z.real();
+            y << z.imag();
+        }
+        g->setData(x, y);
+        if (zs.empty())
+            g->removeFromLegend();
+        return g;
+    };
+    m_dominantGraph = addMarkers(dominant, tr("dominant 1"),
+                                 QCPScatterStyle(QCPScatterStyle::ssSquare,
+                                                 QPen(QColor(30, 30, 30), 1.8), Qt::NoBrush, 19));
+    m_subdominantGraph = addMarkers(sub, tr("subdominant"),
+                                    QCPScatterStyle(QCPScatterStyle::ssCircle,
+                                                    QPen(QColor(200, 0, 60), 2.2), Qt::NoBrush,
+                                                    22));
+    if (m_fitPending)
+        fit();
+    else
+        m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void SpectrumView::fit()
+{
+    m_fitPending = true;
+    // keepAspect() sets the ranges from the axis rectangle's size after the next layout.
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void SpectrumView::keepAspect()
+{
+    if (m_inKeepAspect)
+        return;
+    m_inKeepAspect = true;
+    // The layout that just ran computed ticks and margins for the old ranges: after changing
+    // the ranges, lay out again (as QCustomPlot::updateLayout does) until they settle.
+    for (int pass = 0; pass < 3; ++pass) {
+        const QRect r = m_plot->axisRect()->rect();
+        if (r.width() < 2 || r.height() < 2)
+            break;
+        const QCPRange x0 = m_plot->xAxis->range(), y0 = m_plot->yAxis->range();
+        if (m_fitPending) {
+            double lo = -1.0, hi = 1.0, bottom = -1.0, top = 1.0;
+            for (const MapSpectrum &m : m_maps)
+                for (Complex z : m.spectrum.values) {
+                    if (!std::isfinite(z.real()) || !std::isfinite(z.imag()))
+                        continue;
+                    lo = std::min(lo, z.real());
+                    hi = std::max(hi, z.real());
+                    bottom = std::min(bottom, z.imag());
+                    top = std::max(top, z.imag());
+                }
+            // Room for the markers around the extreme points and the unit circle.
+            const double pad = 0.12 * std::max(hi - lo, top - bottom);
+            lo -= pad, hi += pad, bottom -= pad, top += pad;
+            const double scale = std::min(r.width() / (hi - lo), r.height() / (top - bottom));
+            const double cx = 0.5 * (lo + hi), cy = 0.5 * (bottom + top);
+            m_plot->xAxis->setRange(cx - 0.5 * r.width() / scale, cx + 0.5 * r.width() / scale);
+            m_plot->yAxis->setRange(cy - 0.5 * r.height() / scale,
+                                    cy + 0.5 * r.height() / scale);
+        } else {
+            m_plot->xAxis->setScaleRatio(m_plot->yAxis, 1.0);
+        }
+        const QCPRange x1 = m_plot->xAxis->range(), y1 = m_plot->yAxis->range();
+        const double tol = 1e-9 * std::max(x1.size(), y1.size());
+        if (std::abs(x1.lower - x0.lower) < tol && std::abs(x1.upper - x0.upper) < tol
+            && std::abs(y1.lower - y0.lower) < tol && std::abs(y1.upper - y0.upper) < tol)
+            break;
+        m_plot->plotLayout()->update(QCPLayoutElement::upPreparation);
+        m_plot->plotLayout()->update(QCPLayoutElement::upMargins);
+        m_plot->plotLayout()->update(QCPLayoutElement::upLayout);
+    }
+    m_inKeepAspect = false;
+}
+
+int SpectrumView::plottedEigenvalueCount() const
+{
+    int n = 0;
+    for (QCPGraph *g : m_mapGraphs)
+        n += g->dataCount();
+    return n;
+}
+
+int SpectrumView::subdominantMarkerCount() const
+{
+    return m_subdominantGraph ? m_subdominantGraph->dataCount() : 0;
+}
+
+std::vector<Complex> SpectrumView::subdominantMarkers() const
+{
+    std::vector<Complex> out;
+    if (!m_subdominantGraph)
+        return out;
+    for (auto it = m_subdominantGraph->data()->constBegin();
+         it != m_subdominantGraph->data()->constEnd(); ++it)
+        out.emplace_back(it->key, it->value);
+    return out;
+}
+
+QPointF SpectrumView::pixelOf(Complex z) const
+{
+    return {m_plot->xAxis->coordToPixel(z.real()), m_plot->yAxis->coordToPixel(z.imag())};
+}
+
+QString SpectrumView::tooltipAt(const QPointF &pixel) const
+{
+    QStringList lines;
+    for (const MapSpectrum &m : m_maps) {
+        const auto &vals = m.spectrum.values;
+        for (std::size_t k = 0; k < vals.size(); ++k) {
+            const Complex z = vals[k];
+            if (QLineF(pixelOf(z), pixel).length() > kTooltipRadius)
+                continue;
+            // A repeated eigenvalue is listed once per copy; its multiplicity says it all.
+            if (std::any_of(vals.begin(), vals.begin() + k,
+                            [&](Complex w) { return std::abs(w - z) < kSamePoint; }))
+                continue;
+            const int mult = k < m.spectrum.multiplicity.size() ? m.spectrum.multiplicity[k] : 1;
+            QString line = tr("<b>%1</b>: λ = %2, |λ| = %3, multiplicity %4")
+                               .arg(richLabel(m.label), formatComplex(z, 10),
+                                    formatNumber(std::abs(z), 10))
+                               .arg(mult);
+            if (k == 0 && isOne(z))
+                line += tr(" — dominant");
+            for (Complex s : m.subdominant.values)
+                if (std::abs(s - z) < kSamePoint) {
+                    line += tr(" — subdominant");
+                    break;
+                }
+            lines << line;
+        }
+    }
+    return lines.join(QStringLiteral("<br>"));
+}
+
+bool SpectrumView::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == m_plot && event->type() == QEvent::Resize) {
+        // Legend columns that fit the width (before QCustomPlot lays out the new size).
+        const int columns = std::max(1, static_cast<QResizeEvent *>(event)->size().width() / 120);
+        if (m_plot->legend->wrap() != columns) {
+            m_plot->legend->setWrap(columns);
+            // setWrap alone keeps the old arrangement until elements are added.
+            m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+        }
+    }
+    if (watched == m_plot && event->type() == QEvent::ToolTip) {
+        auto *help = static_cast<QHelpEvent *>(event);
+        const QString text = tooltipAt(help->pos());
+        if (text.isEmpty()) {
+            QToolTip::hideText();
+            event->ignore();
+        } else {
+            QToolTip::showText(help->globalPos(), text, m_plot);
+        }
+        return true;
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+void SpectrumView::updateVerdicts()
+{
+    if (m_maps.isEmpty()) {
+        m_text->setHtml(tr("<p>No maps.</p>"));
+        return;
+    }
+    QString html;
+    bool allContractive = true;
+    QString firstBad;
+    for (const MapSpectrum &m : m_maps)
+        if (!m.contractivity.eventuallyContractive) {
+            if (allContractive)
+                firstBad = richLabel(m.label);
+            allContractive = false;
+        }
+    html += allContractive
+                ? tr("<p><b>All maps are (eventually) contractive</b>: the IFS has a unique "
+                     "attractor.</p>")
+                : tr("<p style='color:#b01e1e'><b>%1 is not contractive</b>: the IFS has no "
+                     "attractor and its iteration does not converge.</p>")
+                      .arg(firstBad);
+    for (int i = 0; i < m_maps.size(); ++i) {
+        const MapSpectrum &m = m_maps[i];
+        const Contractivity &c = m.contractivity;
+        const Subdominant &s = m.subdominant;
+        html += QStringLiteral("<p><span style='color:%1'>&#9632;</span> <b>%2</b><br>")
+                    .arg(AttractorRenderer::mapColor(i).name(), richLabel(m.label));
+        const QString rho = formatNumber(c.spectralRadius, 4);
+        if (!c.eventuallyContractive)
+            html += tr("Not contractive: spectral radius %1 ≥ 1.").arg(rho);
+        else if (c.normFactor < 1.0)
+            html += tr("Contractive: ‖A‖<sub>2</sub> = %1 &lt; 1.")
+                        .arg(formatNumber(c.normFactor, 4));
+        else if (c.exponent > 0)
+            html += tr("Eventually contractive: spectral radius %1 &lt; 1, "
+                       "‖A<sup>%2</sup>‖<sub>2</sub> &lt; 1.")
+                        .arg(rho)
+                        .arg(c.exponent);
+        else
+            html += tr("Eventually contractive: spectral radius %1 &lt; 1.").arg(rho);
+        html += QStringLiteral("<br>");
+        QString kind;
+        QString meaning;
+        switch (s.kind) {
+        case SubdominantKind::None:
+            kind = tr("none");
+            meaning = tr("No subdominant eigenvalue: the map is constant.");
+            break;
+        case SubdominantKind::RealPositive:
+            kind = tr("real positive");
+            meaning = s.multiplicity == 1
+                          ? tr("The curve has a half-tangent at the fixed point, along the "
+                               "eigenvector (G¹ where the two sides' eigenvectors align).")
+                          : tr("Repeated: the tangent direction at the fixed point depends on "
+                               "the control points.");
+            break;
+        case SubdominantKind::RealNegative:
+            kind = tr("real negative");
+            meaning = tr("The curve oscillates at the fixed point and has no tangent there.");
+            break;
+        case SubdominantKind::ComplexPair:
+            kind = tr("complex pair");
+            meaning = tr("The curve spirals around the fixed point (no tangent).");
+            break;
+        case SubdominantKind::Mixed:
+            kind = tr("mixed");
+            meaning = tr("Several eigenvalues of the same modulus with different signs or "
+                         "phases: no single tangent behaviour.");
+            break;
+        }
+        QStringList values;
+        for (Complex z : s.values)
+            values << formatComplex(z, 4);
+        values.removeDuplicates();
+        if (s.kind == SubdominantKind::None)
+            html += tr("Subdominant: none.");
+        else
+            html += tr("Subdominant: %1 (%2, |λ| = %3, multiplicity %4).")
+                        .arg(values.join(QStringLiteral(", ")), kind,
+                             formatNumber(s.modulus, 4))
+                        .arg(s.multiplicity);
+        html += QStringLiteral("<br><i>%1</i></p>").arg(meaning);
+    }
+    m_text->setHtml(html);
+}
+
+QString SpectrumView::verdictText() const { return m_text->toPlainText(); }
+
+bool SpectrumView::exportPlot(const QString &fileName, const QSize &size, QString *error)
+{
+    const QString suffix = QFileInfo(fileName).suffix().toLower();
+    const int w = std::max(1, size.width()), h = std::max(1, size.height());
+    bool ok = false;
+    if (suffix == QLatin1String("pdf")) {
+        ok = m_plot->savePdf(fileName, w, h, QCP::epNoCosmetic, QString(),
+                             tr("Eigenvalues"));
+    } else if (suffix == QLatin1String("png")) {
+        ok = m_plot->savePng(fileName, w, h);
+    } else if (suffix == QLatin1String("svg")) {
+        QSvgGenerator gen;
+        gen.setFileName(fileName);
+        gen.setSize(QSize(w, h));
+        gen.setViewBox(QRect(0, 0, w, h));
+        gen.setTitle(tr("Eigenvalues"));
+        QCPPainter painter;
+        ok = painter.begin(&gen);
+        if (ok) {
+            m_plot->toPainter(&painter, w, h);
+            ok = painter.end();
+        }
+    } else {
+        if (error)
+            *error = tr("Unknown file type “%1”: use .pdf, .svg or .png.").arg(suffix);
+        return false;
+    }
+    // The export laid the plot out at its own size: lay it out again for the screen.
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+    if (!ok && error)
+        *error = tr("Could not write %1.").arg(fileName);
+    return ok;
+}
+
+} // namespace awb

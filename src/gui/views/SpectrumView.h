@@ -1,0 +1,80 @@
+#pragma once
+// The spectrum view: eigenvalues of each map of the current item in the complex plane (one
+// colour per map) with the unit circle, the dominant eigenvalue 1 and the subdominant ones
+// marked, and beside it the verdicts (contractive or not; subdominant kind and what it means
+// for tangents at the fixed points). Cheap to update: it follows a live parameter drag.
+// QCustomPlot stays out of this header.
+
+#include "core/Spectrum.h"
+
+#include <QList>
+#include <QSize>
+#include <QString>
+#include <QWidget>
+
+#include <vector>
+
+class QCustomPlot;
+class QCPGraph;
+class QSplitter;
+class QTextBrowser;
+
+namespace awb {
+
+struct MapSpectrum {
+    QString label;            // "S_1", "A_2", ...
+    Spectrum spectrum;
+    Subdominant subdominant;
+    Contractivity contractivity;
+};
+
+class SpectrumView : public QWidget {
+    Q_OBJECT
+public:
+    explicit SpectrumView(QWidget *parent = nullptr);
+    ~SpectrumView() override;
+
+    void setMaps(const QList<MapSpectrum> &maps);
+    const QList<MapSpectrum> &maps() const { return m_maps; }
+
+    // Eigenvalue points plotted (one per distinct eigenvalue of each map; multiplicity is
+    // in the tooltip), and subdominant markers drawn.
+    int plottedEigenvalueCount() const;
+    int subdominantMarkerCount() const;
+    // Plot positions of the subdominant markers (for tests and for the owner's status text).
+    std::vector<Complex> subdominantMarkers() const;
+    // The tooltip text for a point of the plot widget (empty when no eigenvalue is near).
+    QString tooltipAt(const QPointF &plotPixel) const;
+    // Where eigenvalue z is drawn, in plot widget pixels.
+    QPointF pixelOf(Complex z) const;
+    QString verdictText() const;   // the panel's text as plain text
+
+    QCustomPlot *plot() const { return m_plot; }
+    // Writes the plot to .pdf, .svg or .png (by suffix) at `size` (in points/pixels).
+    // Returns false with a message in *error on failure.
+    bool exportPlot(const QString &fileName, const QSize &size, QString *error = nullptr);
+
+public slots:
+    // Ranges to show the unit circle and every eigenvalue, with equal scale on both axes.
+    void fit();
+
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
+private:
+    void rebuildPlot();
+    void updateVerdicts();
+    void keepAspect();
+
+    QSplitter *m_splitter = nullptr;
+    QCustomPlot *m_plot = nullptr;
+    QTextBrowser *m_text = nullptr;
+    QList<MapSpectrum> m_maps;
+    QList<QCPGraph *> m_mapGraphs;
+    QCPGraph *m_dominantGraph = nullptr;
+    QCPGraph *m_subdominantGraph = nullptr;
+    bool m_fitPending = true;
+    bool m_inKeepAspect = false;
+};
+
+} // namespace awb

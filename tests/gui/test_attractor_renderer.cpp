@@ -1,0 +1,303 @@
+// The off-GUI-thread attractor renderer: a cubic B-spline attractor (000 Fig. 2) drawn
+// progressively, cancellation by a newer request, pixel-identical output for equal requests,
+// and a clear message for an IFS without an attractor.
+
+#include "gui/views/AttractorRenderer.h"
+
+#include "core/Geometry.h"
+
+#include <QElapsedTimer>
+#include <QSignalSpy>
+#include <QtTest>
+
+using namespace awb;
+
+namespace {
+
+// 000 Fig. 2: a cubic B-spline on five control points.
+Mat fig2()
+{
+    Mat P(5, 2);
+    P << 0, 0, 1, 2, 3, 2.5, 4.5, 1, 6, 2;
+    return P;
+}
+
+RenderRequest cubicRequest(int depth)
+{
+    const SubdivisionIfs s = buildSubdivisionIfs(bsplineScheme(3), fig2());
+    RenderRequest r;
+    r.ifs = std::make_shared<const Ifs>(s.ifs);
+    Mat x0(1, 2);
+    x0 << 7, -3;
+    r.start = StartSet::points(s.toIfsSpace(x0));
+    r.depth = depth;
+    r.world = QRectF(-0.5, -0.5, 7.0, 3.5);
+    r.size = QSize(280, 140);
+    return r;
+}
+
+int litPixels(const QImage &img)
+{
+    int n = 0;
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x)
+            n += qAlpha(img.pixel(x, y)) > 0;
+    return n;
+}
+
+// Waits for the final image; returns every info received on the way.
+QList<RenderInfo> waitFinal(QSignalSpy &spy, int timeoutMs = 60000)
+{
+    QElapsedTimer t;
+    t.start();
+    for (;;) {
+        if (!spy.isEmpty() && spy.last().at(1).value<RenderInfo>().final)
+            break;
+        if (t.elapsed() > timeoutMs || !spy.wait(timeoutMs - int(t.elapsed())))
+            break;
+    }
+    QList<RenderInfo> out;
+    for (const auto &args : spy)
+        out << args.at(1).value<RenderInfo>();
+    return out;
+}
+
+} // namespace
+
+class TestAttractorRenderer : public QObject {
+    Q_OBJECT
+private slots:
+    void cubicBSplineIsDrawnOnTheCurve();
+    void coarseLevelComesFirst();
+    void newerRequestCancelsTheRunningOne();
+    void newerRequestBeforeAnyResult();
+    void equalRequestsGiveIdenticalPixels();
+    void colourModes();
+    void dotRadiusGrowsTheCurve();
+    void nonContractiveIfsFails();
+    void badStartSetFails();
+};
+
+void TestAttractorRenderer::cubicBSplineIsDrawnOnTheCurve()
+{
+    AttractorRenderer renderer;
+    QSignalSpy ready(&renderer, &AttractorRenderer::imageReady);
+    QSignalSpy failed(&renderer, &AttractorRenderer::failed);
+    QSignalSpy progress(&renderer, &AttractorRenderer::progress);
+    const RenderRequest r = cubicRequest(12);
+    renderer.request(r);
+    const QList<RenderInfo> infos = waitFinal(ready);
+    QVERIFY(failed.isEmpty());
+    QVERIFY(!infos.isEmpty() && infos.last().final);
+    const QImage img = ready.last().at(0).value<QImage>();
+    QCOMPARE(img.size(), r.size);
+    QCOMPARE(infos.last().depth, 12);
+    QCOMPARE(infos.last().images, 4096.0);
+    const int lit = litPixels(img);
+    QVERIFY2(lit > 150, qPrintable(QString::number(lit)));
+    QCOMPARE(std::uint64_t(lit), infos.last().litPixels);
+    QVERIFY(!progress.isEmpty());
+    QCOMPARE(progress.last().at(0).toDouble(), 1.0);
+    QVERIFY(!renderer.isBusy());
+
+    // Every lit pixel lies on the exact cubic B-spline (within a pixel and a half).
+    const Mat exact = *bsplineScheme(3).exactCurve(fig2(), 20000);
+    const double px = r.world.width() / r.size.width();
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+            if (qAlpha(img.pixel(x, y)) == 0)
+                continue;
+            Mat c(1, 2);
+            c << r.world.left() + (x + 0.5) * px, r.world.bottom() - (y + 0.5) * px;
+            const double d = distanceToPolyline(c, exact);
+            QVERIFY2(d < 1.5 * px, qPrintable(QStringLiteral("pixel %1,%2 is %3 away")
+                                                  .arg(x).arg(y).arg(d)));
+        }
+}
+
+void TestAttractorRenderer::coarseLevelComesFirst()
+{
+    AttractorRenderer renderer;
+    QSignalSpy ready(&renderer, &AttractorRenderer::imageReady);
+    renderer.request(cubicRequest(17));
+    const QList<RenderInfo> infos = waitFinal(ready);
+    QCOMPARE(infos.size(), 2);
+    // 2^14 = 16384 images <= 30000 < 2^15.
+    QCOMPARE(infos[0].depth, 14);
+    QVERIFY(!infos[0].final);
+    QCOMPARE(infos[1].depth, 17);
+    QVERIFY(infos[1].final);
+}
+
+void TestAttractorRenderer::newerRequestCancelsTheRunningOne()
+{
+    AttractorRenderer renderer;
+    QSignalSpy ready(&renderer, &AttractorRenderer::imageReady);
+    // 2^27 images take many seconds: far longer than the whole test may wait below.
+    RenderRequest slow = cubicRequest(27);
+    renderer.request(slow);
+    QVERIFY(ready.wait(20000)); // the coarse preview: the full pass is now running
+    QCOMPARE(ready.size(), 1);
+    QVERIFY(!ready.first().at(1).value<RenderInfo>().final);
+    QVERIFY(renderer.isBusy());
+
+    QElapsedTimer t;
+    t.start();
+    RenderRequest quick = cubicRequest(9);
+    quick.world = QRectF(0, 0, 6, 3);
+    renderer.request(quick);
+    ready.clear();
+    const QList<RenderInfo> infos = waitFinal(ready, 20000);
+    QVERIFY(!infos.isEmpty());
+    for (const RenderInfo &info : infos) {
+        QCOMPARE(info.world, quick.world); // nothing more of the slow request
+        QCOMPARE(info.depth, 9);
+    }
+    QVERIFY(infos.last().final);
+    QVERIFY2(t.elapsed() < 8000, qPrintable(QString::number(t.elapsed())));
+    QVERIFY(!renderer.isBusy());
+    // Nothing of the cancelled request arrives later either.
+    QTest::qWait(200);
+    QCOMPARE(ready.size(), infos.size());
+}
+
+void TestAttractorRenderer::newerRequestBeforeAnyResult()
+{
+    AttractorRenderer renderer;
+    QSignalSpy ready(&renderer, &AttractorRenderer::imageReady);
+    renderer.request(cubicRequest(27));
+    renderer.request(cubicRequest(27));
+    RenderRequest last = cubicRequest(8);
+    renderer.request(last);
+    const QList<RenderInfo> infos = waitFinal(ready, 20000);
+    QCOMPARE(infos.size(), 1); // depth 8 needs no coarse pass
+    QCOMPARE(infos.first().depth, 8);
+    QVERIFY(infos.first().final);
+}
+
+void TestAttractorRenderer::equalRequestsGiveIdenticalPixels()
+{
+    for (auto mode : {RenderRequest::Mode::Deterministic, RenderRequest::Mode::Random}) {
+        RenderRequest r = cubicRequest(13);
+        r.mode = mode;
+        r.samples = 60000;
+        r.seed = 7;
+        r.colorMode = AttractorColorMode::ByAddress;
+        r.prefixLength = 3;
+        QImage images[2];
+        for (QImage &img : images) {
+            AttractorRenderer renderer;
+            QSignalSpy ready(&renderer, &AttractorRenderer::imageReady);
+            renderer.request(r);
+            const QList<RenderInfo> infos = waitFinal(ready);
+            QVERIFY(!infos.isEmpty() && infos.last().final);
+            img = ready.last().at(0).value<QImage>();
+        }
+        QVERIFY(litPixels(images[0]) > 100);
+        QVERIFY(images[0] == images[1]);
+        // The synchronous path draws the same pixels.
+        QVERIFY(AttractorRenderer::renderNow(r) == images[0]);
+    }
+}
+
+void TestAttractorRenderer::colourModes()
+{
+    RenderRequest r = cubicRequest(11);
+    r.colorMode = AttractorColorMode::ByMap;
+    const QImage byMap = AttractorRenderer::renderNow(r);
+    QSet<QRgb> colours;
+    for (int y = 0; y < byMap.height(); ++y)
+        for (int x = 0; x < byMap.width(); ++x)
+            if (qAlpha(byMap.pixel(x, y)))
+                colours.insert(byMap.pixel(x, y));
+    // Two maps, two colours: the default palette's first two.
+    QCOMPARE(colours.size(), 2);
+    QVERIFY(colours.contains(AttractorRenderer::mapColor(0).rgba()));
+    QVERIFY(colours.contains(AttractorRenderer::mapColor(1).rgba()));
+
+    r.colorMode = AttractorColorMode::Single;
+    r.palette = {QColor(10, 20, 30)};
+    const QImage single = AttractorRenderer::renderNow(r);
+    for (int y = 0; y < single.height(); ++y)
+        for (int x = 0; x < single.width(); ++x)
+            if (qAlpha(single.pixel(x, y)))
+                QCOMPARE(single.pixel(x, y), QColor(10, 20, 30).rgba());
+
+    r.colorMode = AttractorColorMode::ByAddress;
+    r.prefixLength = 3;
+    r.palette.clear();
+    const QImage byAddress = AttractorRenderer::renderNow(r);
+    colours.clear();
+    for (int y = 0; y < byAddress.height(); ++y)
+        for (int x = 0; x < byAddress.width(); ++x)
+            if (qAlpha(byAddress.pixel(x, y)))
+                colours.insert(byAddress.pixel(x, y));
+    QCOMPARE(colours.size(), 8); // 2^3 address prefixes
+}
+
+void TestAttractorRenderer::dotRadiusGrowsTheCurve()
+{
+    RenderRequest r = cubicRequest(12);
+    const QImage thin = AttractorRenderer::renderNow(r);
+    r.dotRadius = 2;
+    RenderInfo info;
+    const QImage thick = AttractorRenderer::renderNow(r, &info);
+    QVERIFY(litPixels(thick) > 2 * litPixels(thin));
+    QCOMPARE(std::uint64_t(litPixels(thin)), info.litPixels);
+    // Every pixel of the thin curve is still there with its colour (smallest label wins).
+    for (int y = 0; y < thin.height(); ++y)
+        for (int x = 0; x < thin.width(); ++x)
+            if (qAlpha(thin.pixel(x, y)))
+                QVERIFY(qAlpha(thick.pixel(x, y)));
+    // And nothing is further than the radius from a thin pixel.
+    for (int y = 0; y < thick.height(); ++y)
+        for (int x = 0; x < thick.width(); ++x) {
+            if (!qAlpha(thick.pixel(x, y)))
+                continue;
+            bool near = false;
+            for (int dy = -2; dy <= 2 && !near; ++dy)
+                for (int dx = -2; dx <= 2 && !near; ++dx)
+                    near = thin.valid(x + dx, y + dy) && qAlpha(thin.pixel(x + dx, y + dy));
+            QVERIFY(near);
+        }
+}
+
+void TestAttractorRenderer::nonContractiveIfsFails()
+{
+    auto ifs = std::make_shared<Ifs>();
+    ifs->maps.push_back({Mat::Identity(2, 2) * 0.5, RowVec::Zero(2)});
+    ifs->maps.push_back({Mat::Identity(2, 2) * 1.5, RowVec::Ones(2)});
+    ifs->views.push_back({Mat::Identity(2, 2), RowVec::Zero(2)});
+    RenderRequest r;
+    r.ifs = ifs;
+    r.start = StartSet::points(Mat::Zero(1, 2));
+    r.depth = 10;
+    r.world = QRectF(-1, -1, 2, 2);
+    r.size = QSize(50, 50);
+    AttractorRenderer renderer;
+    QSignalSpy ready(&renderer, &AttractorRenderer::imageReady);
+    QSignalSpy failed(&renderer, &AttractorRenderer::failed);
+    renderer.request(r);
+    QVERIFY(failed.wait(10000));
+    QCOMPARE(failed.size(), 1);
+    const QString message = failed.first().at(0).toString();
+    QVERIFY2(message.contains(QLatin1String("map 2 is not contractive")), qPrintable(message));
+    QVERIFY(ready.isEmpty());
+    QVERIFY(!renderer.isBusy());
+    QVERIFY_THROWS_EXCEPTION(InputError, AttractorRenderer::renderNow(r));
+}
+
+void TestAttractorRenderer::badStartSetFails()
+{
+    RenderRequest r = cubicRequest(5);
+    r.start = StartSet::points(Mat::Zero(1, 3)); // the lifted space has 4 coordinates
+    AttractorRenderer renderer;
+    QSignalSpy failed(&renderer, &AttractorRenderer::failed);
+    renderer.request(r);
+    QVERIFY(failed.wait(10000));
+    QVERIFY2(failed.first().at(0).toString().contains(QLatin1String("coordinates")),
+             qPrintable(failed.first().at(0).toString()));
+}
+
+QTEST_MAIN(TestAttractorRenderer)
+#include "test_attractor_renderer.moc"
