@@ -1,0 +1,190 @@
+#include "model/AttractorItem.h"
+
+#include "model/Commands.h"
+#include "model/Project.h"
+#include "model/ProjectIO.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace awb {
+
+AttractorItem::AttractorItem(const QString &defaultName) : Item(defaultName) {}
+
+bool AttractorItem::setStartSet(const StartSetSpec &startSet, int gesture)
+{
+    if (checkStartSet(startSet))
+        return false;
+    applyProperty(&AttractorItem::m_startSet, startSet, &AttractorItem::startSetChanged,
+                  tr("Change start set of %1").arg(name()), gesture);
+    return true;
+}
+
+bool AttractorItem::setAlgorithm(const AlgorithmSpec &algorithm, int gesture)
+{
+    if (checkAlgorithm(algorithm))
+        return false;
+    applyProperty(&AttractorItem::m_algorithm, algorithm, &AttractorItem::algorithmChanged,
+                  tr("Change algorithm of %1").arg(name()), gesture);
+    return true;
+}
+
+// ---- control points ---------------------------------------------------------------------------
+
+const PointList &AttractorItem::controlPoints(int set) const
+{
+    static const PointList none;
+    return validSet(set) ? pointStorage(set) : none;
+}
+
+bool AttractorItem::moveControlPoint(int index, const PlanePoint &to, int gesture, int set)
+{
+    return moveControlPoints({{index, to}}, gesture, set);
+}
+
+bool AttractorItem::moveControlPoints(const std::map<int, PlanePoint> &to, int gesture, int set)
+{
+    if (!validSet(set) || to.empty())
+        return false;
+    const PointList &points = pointStorage(set);
+    std::map<int, PlanePoint> changes;
+    for (const auto &[index, p] : to) {
+        if (index < 0 || index >= int(points.size()) || !allFinite({p}))
+            return false;
+        if (!(points[size_t(index)] == p))
+            changes.emplace(index, p);
+    }
+    if (!changes.empty())
+        execute(new MoveControlPointsCommand(this, set, changes, gesture));
+    return true;
+}
+
+bool AttractorItem::insertControlPoint(int index, const PlanePoint &point, int set)
+{
+    if (!validSet(set) || index < 0 || index > int(pointStorage(set).size())
+        || !allFinite({point}))
+        return false;
+    execute(new InsertControlPointCommand(this, set, index, point));
+    return true;
+}
+
+bool AttractorItem::removeControlPoint(int index, int set)
+{
+    return removeControlPoints({index}, set);
+}
+
+bool AttractorItem::removeControlPoints(std::vector<int> indices, int set)
+{
+    if (!validSet(set) || indices.empty())
+        return false;
+    std::sort(indices.begin(), indices.end());
+    indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+    if (indices.front() < 0 || indices.back() >= int(pointStorage(set).size()))
+        return false;
+    if (indices.size() == 1) {
+        execute(new RemoveControlPointCommand(this, set, indices.front()));
+        return true;
+    }
+    // From the back, so that the indices still to remove do not shift.
+    CompoundEdit edit(project(), tr("Remove %n control points of %1", nullptr,
+                                    int(indices.size())).arg(name()));
+    for (auto it = indices.rbegin(); it != indices.rend(); ++it)
+        execute(new RemoveControlPointCommand(this, set, *it));
+    return true;
+}
+
+void AttractorItem::storePoint(int set, int index, const PlanePoint &p)
+{
+    pointStorage(set)[size_t(index)] = p;
+    inputsChanged();
+    emit controlPointMoved(set, index);
+    emit controlPointsChanged(set);
+    emit changed();
+}
+
+void AttractorItem::storeInsertedPoint(int set, int index, const PlanePoint &p)
+{
+    PointList &points = pointStorage(set);
+    points.insert(points.begin() + index, p);
+    inputsChanged();
+    emit controlPointInserted(set, index);
+    emit controlPointsChanged(set);
+    emit changed();
+}
+
+void AttractorItem::storeRemovedPoint(int set, int index)
+{
+    PointList &points = pointStorage(set);
+    points.erase(points.begin() + index);
+    inputsChanged();
+    emit controlPointRemoved(set, index);
+    emit controlPointsChanged(set);
+    emit changed();
+}
+
+// ---- derived data -----------------------------------------------------------------------------
+
+std::shared_ptr<const DerivedIfs> AttractorItem::derivedIfs() const
+{
+    return m_derived.get([this] { return computeIfs(); });
+}
+
+QString AttractorItem::derivedError() const
+{
+    derivedIfs();
+    return m_derived.error();
+}
+
+bool AttractorItem::dropDerived()
+{
+    return m_derived.drop();
+}
+
+void AttractorItem::applyAlgorithm(Ifs &ifs) const
+{
+    if (m_algorithm.mode == AlgorithmSpec::Mode::Random)
+        ifs.probabilities = m_algorithm.probabilities;
+    ifs.validate();
+}
+
+StartSet AttractorItem::coreStartSet(const DerivedIfs &derived) const
+{
+    const Mat vertices = derived.toIfsSpace(toMatrix(m_startSet.points));
+    switch (m_startSet.kind) {
+    case StartSetSpec::Kind::Point:
+    case StartSetSpec::Kind::Points:
+        return StartSet::points(vertices);
+    case StartSetSpec::Kind::Segment:
+        return StartSet::polyline(vertices);
+    case StartSetSpec::Kind::Triangle:
+    case StartSetSpec::Kind::Polygon:
+        break;
+    }
+    return StartSet::polygon(vertices);
+}
+
+// ---- files ------------------------------------------------------------------------------------
+
+void AttractorItem::write(QJsonObject &json) const
+{
+    Item::write(json);
+    json["start_set"] = ProjectIO::startSetToJson(m_startSet);
+    json["algorithm"] = ProjectIO::algorithmToJson(m_algorithm);
+}
+
+void AttractorItem::read(const FieldReader &fields)
+{
+    Item::read(fields);
+    if (auto s = fields.object("start_set"))
+        m_startSet = ProjectIO::readStartSet(*s);
+    if (auto a = fields.object("algorithm"))
+        m_algorithm = ProjectIO::readAlgorithm(*a);
+}
+
+void AttractorItem::checkLoaded(const FieldReader &fields) const
+{
+    Item::checkLoaded(fields);
+    fields.require(m_algorithm.check(mapCount()), "algorithm");
+}
+
+} // namespace awb

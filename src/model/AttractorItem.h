@@ -1,0 +1,114 @@
+#pragma once
+// The base of every item that is drawn as the attractor of an IFS (layer 2, model): subdivision
+// curves now; fractals, Bézier unions, normal-vector curves, ... later. It adds the common
+// inputs (start set, algorithm), editable control point sets with their undo commands, and the
+// derived IFS, built lazily from the inputs by the subclass and cached until the next edit.
+
+#include "core/Attractor.h"
+#include "core/Ifs.h"
+#include "model/Item.h"
+
+#include <functional>
+#include <map>
+
+namespace awb {
+
+// Matrices an eigenvalue plot can analyse: real, or complex (a complex Bézier parameter).
+struct AnalysisMatrices {
+    std::vector<Mat> real;
+    std::vector<CMat> complex;
+    QString unavailable;  // why there are none (e.g. M_i is undefined for a singular P)
+    int count() const { return int(real.empty() ? complex.size() : real.size()); }
+    bool isComplex() const { return !complex.empty(); }
+};
+
+// What an attractor item derives from its inputs. Never saved.
+struct DerivedIfs {
+    Ifs ifs;            // validated; probabilities set in random mode
+    AnalysisMatrices S; // subdivision matrices S_1..S_p (m x m)
+    AnalysisMatrices A; // linear parts A_i of M_i = P^-1 S_i P ((m-1) x (m-1))
+    // The core's full result when the item is a real subdivision scheme (lifting, M_i, ...).
+    std::shared_ptr<const SubdivisionIfs> subdivision;
+    QString note;       // e.g. why the barycentric form is used
+    // Plane points (n x 2) to points of the IFS space (n x D).
+    std::function<Mat(const Mat &)> toIfsSpace;
+};
+
+class AttractorItem : public Item {
+    Q_OBJECT
+public:
+    const StartSetSpec &startSet() const { return m_startSet; }
+    MaybeProblem checkStartSet(const StartSetSpec &s) const { return s.check(); }
+    bool setStartSet(const StartSetSpec &startSet, int gesture = 0);
+
+    const AlgorithmSpec &algorithm() const { return m_algorithm; }
+    MaybeProblem checkAlgorithm(const AlgorithmSpec &a) const { return a.check(mapCount()); }
+    bool setAlgorithm(const AlgorithmSpec &algorithm, int gesture = 0);
+
+    // The number of maps the inputs ask for, known without building the IFS (-1: unknown).
+    virtual int mapCount() const = 0;
+
+    // ---- control points: an item has controlPointSetCount() ordered lists of plane points.
+    virtual int controlPointSetCount() const { return 0; }
+    const PointList &controlPoints(int set = 0) const;
+    // Undoable; false for a bad set/index or non-finite coordinates. Moves within one drag
+    // share a gesture id (Project::beginGesture) and become one undo step.
+    bool moveControlPoint(int index, const PlanePoint &to, int gesture = 0, int set = 0);
+    // Several points at once: one undo step (merging by gesture like a single point).
+    bool moveControlPoints(const std::map<int, PlanePoint> &to, int gesture = 0, int set = 0);
+    bool insertControlPoint(int index, const PlanePoint &point, int set = 0);
+    bool removeControlPoint(int index, int set = 0);
+    // Removes several points as one undo step.
+    bool removeControlPoints(std::vector<int> indices, int set = 0);
+
+    // The derived IFS, computed on first use after an edit; null when it cannot be computed,
+    // with the reason in derivedError().
+    std::shared_ptr<const DerivedIfs> derivedIfs() const;
+    QString derivedError() const override;
+    // The start set mapped into the IFS space of `derived`, ready for core::iterate().
+    // Throws InputError.
+    StartSet coreStartSet(const DerivedIfs &derived) const;
+
+    void write(QJsonObject &json) const override;
+    void read(const FieldReader &fields) override;
+    void checkLoaded(const FieldReader &fields) const override;
+
+signals:
+    void startSetChanged();
+    void algorithmChanged();
+    // Any change of a point set (then also one of the finer signals below).
+    void controlPointsChanged(int set);
+    void controlPointMoved(int set, int index);
+    void controlPointInserted(int set, int index);
+    void controlPointRemoved(int set, int index);
+
+protected:
+    explicit AttractorItem(const QString &defaultName);
+    // Builds the IFS from the inputs; throws InputError with a message for the user.
+    virtual DerivedIfs computeIfs() const = 0;
+    bool dropDerived() override;
+    // The storage of point set `set` (0 <= set < controlPointSetCount()).
+    virtual PointList &pointStorage(int set) = 0;
+    const PointList &pointStorage(int set) const
+    {
+        return const_cast<AttractorItem *>(this)->pointStorage(set);
+    }
+    // Random mode: the probabilities go into the IFS (validated with it).
+    void applyAlgorithm(Ifs &ifs) const;
+
+private:
+    friend class MoveControlPointsCommand;
+    friend class InsertControlPointCommand;
+    friend class RemoveControlPointCommand;
+    // Raw edits for the commands: store, invalidate, notify.
+    void storePoint(int set, int index, const PlanePoint &p);
+    void storeInsertedPoint(int set, int index, const PlanePoint &p);
+    void storeRemovedPoint(int set, int index);
+    bool validSet(int set) const { return set >= 0 && set < controlPointSetCount(); }
+
+    StartSetSpec m_startSet;
+    AlgorithmSpec m_algorithm;
+    DerivedCache<DerivedIfs> m_derived;
+};
+
+} // namespace awb

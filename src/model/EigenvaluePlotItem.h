@@ -1,0 +1,66 @@
+#pragma once
+// Document item "eigenvalue-plot" (layer 2, model): the spectra of another item's matrices,
+// the subdivision matrices S_i or the linear parts A_i of M_i = P^-1 S_i P (003 §4, 004 §2.1).
+// It stores only which item (by name) and which matrices; the spectra are derived from the
+// source's derived IFS and recomputed when the source changes.
+
+#include "core/Spectrum.h"
+#include "model/Item.h"
+
+namespace awb {
+
+// What an eigenvalue plot derives: the spectrum of each of the source's matrices. Never saved.
+struct EigenvalueData {
+    QString symbol;                      // "S" or "A"
+    bool complexMatrices = false;        // the source has a complex Bézier parameter
+    std::vector<Spectrum> spectra;       // one per map, in map order
+    // The subdominant eigenvalues (for S: after the eigenvalue 1 of affine invariance).
+    std::vector<Subdominant> subdominants;
+};
+
+class EigenvaluePlotItem : public Item {
+    Q_OBJECT
+public:
+    enum class MatrixKind { S, A };
+
+    EigenvaluePlotItem();
+
+    static QString staticType() { return QStringLiteral("eigenvalue-plot"); }
+    static QString staticTypeName() { return tr("Eigenvalue plot"); }
+    QString type() const override { return staticType(); }
+    QString typeName() const override { return staticTypeName(); }
+
+    // The name of the item whose matrices are analysed ("" for none yet).
+    QString source() const { return m_source; }
+    bool setSource(const QString &name);
+    MatrixKind matrixKind() const { return m_matrixKind; }
+    bool setMatrixKind(MatrixKind kind);
+    // "S", "A" in enum order.
+    static const QStringList &matrixKindNames();
+
+    // Null when they cannot be computed (no such item, its IFS fails, M_i undefined, ...),
+    // with the reason in derivedError().
+    std::shared_ptr<const EigenvalueData> eigenvalues() const;
+    QString derivedError() const override;
+    QStringList references() const override { return {m_source}; }
+
+    void write(QJsonObject &json) const override;
+    void read(const FieldReader &fields) override;
+
+signals:
+    void sourceChanged();
+    void matrixKindChanged();
+
+protected:
+    bool dropDerived() override { return m_eigenvalues.drop(); }
+    void renameReference(const QString &from, const QString &to) override;
+
+private:
+    EigenvalueData compute() const;
+
+    QString m_source;
+    MatrixKind m_matrixKind = MatrixKind::S;
+    DerivedCache<EigenvalueData> m_eigenvalues;
+};
+
+} // namespace awb

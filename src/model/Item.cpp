@@ -1,0 +1,91 @@
+#include "model/Item.h"
+
+#include "model/Commands.h"
+#include "model/Project.h"
+#include "model/ProjectIO.h"
+
+namespace awb {
+
+Item::Item(const QString &defaultName) : m_name(defaultName) {}
+
+Item::~Item() = default;
+
+Item *Item::child(int row) const
+{
+    return row >= 0 && row < childCount() ? m_children[size_t(row)].get() : nullptr;
+}
+
+int Item::indexOfChild(const Item *child) const
+{
+    for (size_t i = 0; i < m_children.size(); ++i)
+        if (m_children[i].get() == child)
+            return int(i);
+    return -1;
+}
+
+bool Item::isAncestorOf(const Item *other) const
+{
+    for (const Item *p = other ? other->m_parent : nullptr; p; p = p->m_parent)
+        if (p == this)
+            return true;
+    return false;
+}
+
+bool Item::setName(const QString &name)
+{
+    if (m_project)
+        return m_project->renameItem(this, name);
+    if (name.trimmed().isEmpty())
+        return false;
+    applyProperty(&Item::m_name, name, &Item::nameChanged, tr("Rename"));
+    return true;
+}
+
+bool Item::setStyle(const StyleSpec &style, int gesture)
+{
+    if (checkStyle(style))
+        return false;
+    applyProperty(&Item::m_style, style, &Item::styleChanged,
+                  tr("Change style of %1").arg(m_name), gesture);
+    return true;
+}
+
+void Item::execute(QUndoCommand *command)
+{
+    if (m_project) {
+        m_project->push(command);
+    } else {
+        command->redo();
+        delete command;
+    }
+}
+
+void Item::inputsChanged()
+{
+    ++m_generation;
+    dropDerived();
+    emit derivedChanged();
+}
+
+void Item::renameReference(const QString &, const QString &) {}
+
+void Item::write(QJsonObject &json) const
+{
+    for (auto it = m_unknownFields.begin(); it != m_unknownFields.end(); ++it)
+        json.insert(it.key(), it.value());
+    json["name"] = m_name;
+    json["style"] = ProjectIO::styleToJson(m_style);
+}
+
+void Item::read(const FieldReader &fields)
+{
+    m_name = fields.string("name");
+    if (m_name.trimmed().isEmpty())
+        fields.fail("name", tr("the name cannot be empty"));
+    if (auto style = fields.object("style"))
+        m_style = ProjectIO::readStyle(*style);
+}
+
+void Item::checkLoaded(const FieldReader &) const {}
+
+} // namespace awb

@@ -1,0 +1,163 @@
+#pragma once
+// The base of every document item (layer 2, model). An item holds only inputs: its name, its
+// display style and whatever its kind adds (scheme, control points, ...). Derived data
+// (matrices, IFS, spectra) lives in DerivedCache members, is recomputed on first use after an
+// edit and is never saved. Items form an ordered tree owned by the Project; every user edit goes
+// through an undo command on the project's stack (STYLE.md §5-6). An item that is not in a
+// project (being built, or loaded) applies its setters directly.
+
+#include "model/ItemValues.h"
+
+#include <QJsonObject>
+#include <QObject>
+
+#include <memory>
+#include <vector>
+
+class QUndoCommand;
+
+namespace awb {
+
+class FieldReader;
+class Project;
+
+// A derived value computed lazily from an item's inputs, or the reason it could not be
+// computed (the core's InputError message). Owned by the item, dropped on every edit.
+template <class T>
+class DerivedCache {
+public:
+    // Computes on first use; `compute` returns T or throws (InputError / std::exception).
+    template <class Compute>
+    std::shared_ptr<const T> get(Compute &&compute) const
+    {
+        if (m_valid)
+            return m_value;
+        if (m_computing) // an item that (indirectly) reads itself
+            return fail(QCoreApplication::translate("awb::Item", "circular reference"));
+        m_computing = true;
+        try {
+            m_value = std::make_shared<const T>(compute());
+            m_error.clear();
+        } catch (const std::exception &e) {
+            m_value.reset();
+            m_error = QString::fromStdString(e.what());
+        }
+        m_computing = false;
+        m_valid = true;
+        return m_value;
+    }
+    // Empty when the last computation succeeded (or nothing was computed yet).
+    const QString &error() const { return m_error; }
+    // Drops the cached value; true when there was one (value or error) to drop.
+    bool drop()
+    {
+        const bool was = m_valid;
+        m_valid = false;
+        m_value.reset();
+        m_error.clear();
+        return was;
+    }
+
+private:
+    std::shared_ptr<const T> fail(const QString &message) const
+    {
+        m_error = message;
+        return nullptr;
+    }
+    mutable std::shared_ptr<const T> m_value;
+    mutable QString m_error;
+    mutable bool m_valid = false;
+    mutable bool m_computing = false;
+};
+
+class Item : public QObject {
+    Q_OBJECT
+public:
+    ~Item() override;
+
+    // The JSON "type" of the item kind ("subdivision-curve") and its translated display name.
+    virtual QString type() const = 0;
+    virtual QString typeName() const = 0;
+
+    QString name() const { return m_name; }
+    // Undoable. Refused (false) for an empty name or one another item of the project has;
+    // items that refer to this one by name are updated in the same undo step.
+    bool setName(const QString &name);
+
+    const StyleSpec &style() const { return m_style; }
+    MaybeProblem checkStyle(const StyleSpec &style) const { return style.check(); }
+    // Undoable; refused when checkStyle() complains. Edits sharing a nonzero gesture id
+    // (Project::beginGesture) merge into one undo step.
+    bool setStyle(const StyleSpec &style, int gesture = 0);
+
+    // Position in the tree. Top-level items have no parent item.
+    Project *project() const { return m_project; }
+    Item *parentItem() const { return m_parent; }
+    int childCount() const { return int(m_children.size()); }
+    Item *child(int row) const;
+    int indexOfChild(const Item *child) const;
+    bool isAncestorOf(const Item *other) const;
+
+    // Increases with every input edit (undo and redo included): a key for views' caches.
+    quint64 generation() const { return m_generation; }
+
+    // Names of the items this one reads (an eigenvalue plot reads its source). The project
+    // recomputes this item when one of them changes and keeps the names on rename.
+    virtual QStringList references() const { return {}; }
+    // Why this item's derived data cannot be computed ("" when it can, or has none).
+    virtual QString derivedError() const { return {}; }
+
+    // Serialization: each kind writes and reads its own fields and calls its base first.
+    // "type" and "children" are handled by ProjectIO. read() throws LoadError.
+    virtual void write(QJsonObject &json) const;
+    virtual void read(const FieldReader &fields);
+    // Checks that need all fields read (e.g. depth against the number of maps). Throws
+    // LoadError.
+    virtual void checkLoaded(const FieldReader &fields) const;
+
+    // Fields of the file this version does not know: written back unchanged.
+    const QJsonObject &unknownFields() const { return m_unknownFields; }
+
+signals:
+    void nameChanged();
+    void styleChanged();
+    // Any input of this item changed (after the property's own signal).
+    void changed();
+    // Cached derived data was dropped: views showing it should ask again.
+    void derivedChanged();
+
+protected:
+    explicit Item(const QString &defaultName);
+
+    // The property template (Commands.h): skips a no-op change, otherwise runs a
+    // PropertyCommand that swaps the field and emits `signal`.
+    template <class Owner, class Value>
+    void applyProperty(Value Owner::*field, const Value &value, void (Owner::*signal)(),
+                       const QString &text, int gesture = 0);
+    // Pushes on the project's stack, or applies at once when the item is not in a project.
+    void execute(QUndoCommand *command);
+    // For the commands, after they stored an input and before the property's own signal:
+    // bumps the generation, drops the derived data and emits derivedChanged().
+    void inputsChanged();
+    // Called after every input change, before the change signals: drop derived caches here.
+    // Returns true when something was cached.
+    virtual bool dropDerived() { return false; }
+    // Rename support: point references to `from` at `to` (through undoable setters).
+    virtual void renameReference(const QString &from, const QString &to);
+
+private:
+    friend class Project;
+    friend class ProjectIO; // attaches children and unknown fields while reading
+    template <class, class>
+    friend class PropertyCommand;
+
+    QString m_name;
+    StyleSpec m_style;
+    QJsonObject m_unknownFields;
+    Project *m_project = nullptr;
+    Item *m_parent = nullptr;
+    std::vector<std::unique_ptr<Item>> m_children;
+    quint64 m_generation = 0;
+};
+
+} // namespace awb

@@ -1,0 +1,43 @@
+#include "model/ItemRegistry.h"
+
+#include "model/EigenvaluePlotItem.h"
+#include "model/SubdivisionCurveItem.h"
+
+namespace awb {
+
+ItemRegistry::ItemRegistry()
+{
+    // One line per item kind.
+    add<SubdivisionCurveItem>();
+    add<EigenvaluePlotItem>();
+}
+
+const ItemRegistry &ItemRegistry::instance()
+{
+    static const ItemRegistry registry;
+    return registry;
+}
+
+const ItemRegistry::Kind *ItemRegistry::find(const QString &type) const
+{
+    for (const Kind &k : m_kinds)
+        if (k.type == type)
+            return &k;
+    return nullptr;
+}
+
+std::unique_ptr<Item> ItemRegistry::create(const QString &type) const
+{
+    const Kind *k = find(type);
+    return k ? k->create() : nullptr;
+}
+
+QStringList ItemRegistry::types() const
+{
+    QStringList out;
+    for (const Kind &k : m_kinds)
+        out << k.type;
+    return out;
+}
+
+} // namespace awb

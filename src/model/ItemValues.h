@@ -1,0 +1,97 @@
+#pragma once
+// Value types of the inputs every attractor item shares (start set, algorithm, display style),
+// and the plane point used for control points. Layer 2 (model): plain values with exact
+// equality, because the undo template compares them to skip no-op edits and the tests compare
+// them to prove that undo restores a state exactly. Each value checks itself with the same
+// function for the setters and for the file loader, so whatever can be set can be saved and
+// loaded again.
+
+#include "core/Types.h"
+
+#include <QCoreApplication>
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+#include <vector>
+
+namespace awb {
+
+struct PlanePoint {
+    double x = 0.0;
+    double y = 0.0;
+    bool operator==(const PlanePoint &) const = default;
+};
+using PointList = std::vector<PlanePoint>;
+
+// The points as the core wants them: n x 2, one point per row.
+Mat toMatrix(const PointList &points);
+bool allFinite(const PointList &points);
+
+// Why a value cannot be stored: the field inside the value's JSON object ("points",
+// "depth", ...; empty for the value as a whole) and a translated message. The loader prefixes
+// the file, the item and the enclosing field.
+struct Problem {
+    QString field;
+    QString message;
+};
+using MaybeProblem = std::optional<Problem>;
+
+// The set X_0 that deterministic iteration starts from, in plane coordinates.
+struct StartSetSpec {
+    Q_DECLARE_TR_FUNCTIONS(awb::StartSetSpec)
+public:
+    enum class Kind { Point, Segment, Triangle, Polygon, Points };
+    Kind kind = Kind::Point;
+    PointList points{{0.0, 0.0}};
+
+    bool operator==(const StartSetSpec &) const = default;
+    // Right number of finite points for the kind (1, 2, 3, >= 3, >= 1).
+    MaybeProblem check() const;
+    // JSON spellings, in enum order.
+    static const QStringList &kindNames();
+};
+
+// How the attractor is drawn: deterministic iteration to a depth, or random iteration.
+struct AlgorithmSpec {
+    Q_DECLARE_TR_FUNCTIONS(awb::AlgorithmSpec)
+public:
+    enum class Mode { Deterministic, Random };
+    Mode mode = Mode::Deterministic;
+    int depth = 8;
+    qint64 samples = 100000;
+    std::vector<double> probabilities;  // one per map; empty means uniform
+    qint64 seed = 1;
+
+    // Deterministic depth k makes N^k images of the start set: more than this is refused.
+    static constexpr double maxImages = 2147483648.0;  // 2^31
+    static constexpr int maxDepth = 64;                 // the core's own limit
+    static constexpr qint64 maxSamples = qint64(1) << 31;
+    static constexpr qint64 maxSeed = (qint64(1) << 53) - 1;  // exact in a JSON number
+
+    bool operator==(const AlgorithmSpec &) const = default;
+    // `maps` is the item's number of maps (-1 when unknown): it bounds the depth.
+    MaybeProblem check(int maps) const;
+    static const QStringList &modeNames();
+};
+
+// How an attractor is coloured and drawn. Kept apart from the geometry (STYLE.md §4).
+struct StyleSpec {
+    Q_DECLARE_TR_FUNCTIONS(awb::StyleSpec)
+public:
+    enum class ColorBy { Map, Address, None };
+    ColorBy colorBy = ColorBy::Map;
+    int prefixLength = 1;     // address symbols that pick the colour (ColorBy::Address)
+    double pointSize = 2.0;   // pixels
+    QStringList colors;       // "#rrggbb" in lower case; empty: the views' own palette
+
+    // The raster label packs the prefix base 256 into 32 bits (core RasterSink).
+    static constexpr int maxPrefixLength = 3;
+    static constexpr double maxPointSize = 100.0;
+
+    bool operator==(const StyleSpec &) const = default;
+    MaybeProblem check() const;
+    static const QStringList &colorByNames();
+};
+
+} // namespace awb

@@ -1,0 +1,501 @@
+#include "model/ProjectIO.h"
+
+#include "model/ItemRegistry.h"
+#include "model/Project.h"
+
+#include <QFile>
+#include <QJsonDocument>
+#include <QSaveFile>
+
+#include <cmath>
+#include <cstdlib>
+
+namespace awb {
+
+namespace {
+
+// A number the JSON parser refused (1e400, NaN, Infinity) is replaced by a string with this
+// prefix, so that the field it sits in can be named in the message.
+const QString notFiniteMarker = QStringLiteral("\x1f" "awb-not-finite:");
+constexpr double maxExactInteger = 9007199254740992.0; // 2^53
+
+// An error inside item `label` (1-based, "2" or "2.1" for a child).
+struct ItemError {
+    QString label;
+    QString name;
+    LoadError error;
+};
+
+QString quoted(const QString &s) { return QLatin1Char('"') + s + QLatin1Char('"'); }
+
+} // namespace
+
+// ---- FieldReader ------------------------------------------------------------------------------
+
+FieldReader::FieldReader(QJsonObject object, QString path)
+    : m_object(std::move(object)), m_path(std::move(path))
+{
+}
+
+void FieldReader::fail(const QString &key, const QString &message) const
+{
+    throw LoadError{path(key), message};
+}
+
+void FieldReader::require(const MaybeProblem &problem, const QString &key) const
+{
+    if (!problem)
+        return;
+    QString field = key;
+    if (!problem->field.isEmpty())
+        field = key.isEmpty() ? problem->field : key + QLatin1Char('.') + problem->field;
+    fail(field, problem->message);
+}
+
+QJsonValue FieldReader::value(const QString &key) const
+{
+    m_read.insert(key);
+    return m_object.value(key);
+}
+
+QString FieldReader::string(const QString &key, const std::optional<QString> &fallback) const
+{
+    const QJsonValue v = value(key);
+    if (v.isUndefined() && fallback)
+        return *fallback;
+    if (v.isUndefined())
+        fail(key, tr("missing"));
+    if (!v.isString())
+        fail(key, tr("expected a string"));
+    return v.toString();
+}
+
+int FieldReader::choice(const QString &key, const QStringList &names,
+                        std::optional<int> fallback) const
+{
+    const QString s = string(key, fallback ? std::optional<QString>(names.at(*fallback))
+                                           : std::nullopt);
+    const int index = int(names.indexOf(s));
+    if (index < 0) {
+        QStringList options;
+        for (const QString &n : names)
+            options << quoted(n);
+        fail(key, tr("expected one of %1, got %2").arg(options.join(QLatin1String(", ")),
+                                                       quoted(s)));
+    }
+    return index;
+}
+
+qint64 FieldReader::integer(const QString &key, std::optional<qint64> fallback, qint64 min,
+                            qint64 max) const
+{
+    const QJsonValue v = value(key);
+    if (v.isUndefined() && fallback)
+        return *fallback;
+    if (v.isUndefined())
+        fail(key, tr("missing"));
+    if (v.isString() && v.toString().startsWith(notFiniteMarker))
+        toNumber(v, path(key)); // throws with the "not finite" message
+    const double d = v.toDouble();
+    if (!v.isDouble() || d != std::floor(d) || std::abs(d) > maxExactInteger)
+        fail(key, tr("expected an integer"));
+    if (d < double(min) || d > double(max))
+        fail(key, tr("expected an integer between %1 and %2").arg(min).arg(max));
+    return qint64(d);
+}
+
+double FieldReader::number(const QString &key, std::optional<double> fallback) const
+{
+    const QJsonValue v = value(key);
+    if (v.isUndefined() && fallback)
+        return *fallback;
+    if (v.isUndefined())
+        fail(key, tr("missing"));
+    return toNumber(v, path(key));
+}
+
+std::vector<double> FieldReader::numbers(const QString &key,
+                                         const std::optional<std::vector<double>> &fallback) const
+{
+    const QJsonValue v = value(key);
+    if (v.isUndefined() && fallback)
+        return *fallback;
+    if (v.isUndefined())
+        fail(key, tr("missing"));
+    if (!v.isArray())
+        fail(key, tr("expected an array of numbers"));
+    std::vector<double> out;
+    const QJsonArray a = v.toArray();
+    for (qsizetype i = 0; i < a.size(); ++i)
+        out.push_back(toNumber(a[i], path(key) + QStringLiteral("[%1]").arg(i + 1)));
+    return out;
+}
+
+PointList FieldReader::points(const QString &key, const std::optional<PointList> &fallback) const
+{
+    const QJsonValue v = value(key);
+    if (v.isUndefined() && fallback)
+        return *fallback;
+    if (v.isUndefined())
+        fail(key, tr("missing"));
+    if (!v.isArray())
+        fail(key, tr("expected an array of points [x, y]"));
+    PointList out;
+    const QJsonArray a = v.toArray();
+    for (qsizetype i = 0; i < a.size(); ++i)
+        out.push_back(toPoint(a[i], path(key) + QStringLiteral("[%1]").arg(i + 1)));
+    return out;
+}
+
+std::vector<Mat> FieldReader::matrices(const QString &key) const
+{
+    const QJsonValue v = value(key);
+    if (v.isUndefined())
+        fail(key, tr("missing"));
+    if (!v.isArray())
+        fail(key, tr("expected an array of matrices"));
+    std::vector<Mat> out;
+    const QJsonArray list = v.toArray();
+    for (qsizetype k = 0; k < list.size(); ++k) {
+        const QString where = path(key) + QStringLiteral("[%1]").arg(k + 1);
+        const QJsonArray rows = list[k].toArray();
+        if (!list[k].isArray() || rows.isEmpty())
+            throw LoadError{where, tr("expected a matrix: a non-empty array of rows")};
+        const qsizetype cols = rows[0].toArray().size();
+        Mat M(rows.size(), cols);
+        for (qsizetype r = 0; r < rows.size(); ++r) {
+            const QString rowWhere = where + QStringLiteral("[%1]").arg(r + 1);
+            const QJsonArray row = rows[r].toArray();
+            if (!rows[r].isArray() || row.isEmpty())
+                throw LoadError{rowWhere, tr("expected a row: a non-empty array of numbers")};
+            if (row.size() != cols)
+                throw LoadError{rowWhere, tr("row %1 has %2 numbers, row 1 has %3")
+                                              .arg(r + 1).arg(row.size()).arg(cols)};
+            for (qsizetype c = 0; c < cols; ++c)
+                M(r, c) = toNumber(row[c], rowWhere + QStringLiteral("[%1]").arg(c + 1));
+        }
+        out.push_back(std::move(M));
+    }
+    return out;
+}
+
+std::optional<FieldReader> FieldReader::object(const QString &key, bool required) const
+{
+    const QJsonValue v = value(key);
+    if (v.isUndefined() && !required)
+        return std::nullopt;
+    if (v.isUndefined())
+        fail(key, tr("missing"));
+    if (!v.isObject())
+        fail(key, tr("expected an object"));
+    return FieldReader(v.toObject(), path(key) + QLatin1Char('.'));
+}
+
+QJsonObject FieldReader::unread() const
+{
+    QJsonObject out;
+    for (auto it = m_object.begin(); it != m_object.end(); ++it)
+        if (!m_read.contains(it.key()))
+            out.insert(it.key(), it.value());
+    return out;
+}
+
+double FieldReader::toNumber(const QJsonValue &v, const QString &where)
+{
+    if (v.isString() && v.toString().startsWith(notFiniteMarker)) {
+        const QString token = v.toString().mid(notFiniteMarker.size());
+        // 1e400, NaN, Infinity; else a literal like 01 or 2e-400 that is no double either.
+        const double d = std::strtod(token.toLatin1().constData(), nullptr);
+        throw LoadError{where, !std::isfinite(d)
+                                   ? tr("%1 is not a finite number").arg(token)
+                                   : tr("%1 cannot be read as a double-precision number")
+                                         .arg(token)};
+    }
+    if (!v.isDouble())
+        throw LoadError{where, tr("expected a number")};
+    const double d = v.toDouble();
+    if (!std::isfinite(d))
+        throw LoadError{where, tr("expected a finite number")};
+    return d;
+}
+
+PlanePoint FieldReader::toPoint(const QJsonValue &v, const QString &where)
+{
+    const QJsonArray a = v.toArray();
+    if (!v.isArray() || a.size() != 2)
+        throw LoadError{where, tr("expected a point [x, y]")};
+    return {toNumber(a[0], where + QStringLiteral("[1]")),
+            toNumber(a[1], where + QStringLiteral("[2]"))};
+}
+
+// ---- writing ----------------------------------------------------------------------------------
+
+QJsonObject ProjectIO::toJson(const Project &project)
+{
+    QJsonObject root = project.unknownFields();
+    root["format"] = formatName();
+    root["version"] = formatVersion;
+    QJsonArray items;
+    for (int i = 0; i < project.childCount(); ++i)
+        items.append(itemToJson(*project.child(i)));
+    root["items"] = items;
+    return root;
+}
+
+QJsonObject ProjectIO::itemToJson(const Item &item)
+{
+    QJsonObject json;
+    item.write(json);
+    json["type"] = item.type();
+    if (item.childCount() > 0) {
+        QJsonArray children;
+        for (int i = 0; i < item.childCount(); ++i)
+            children.append(itemToJson(*item.child(i)));
+        json["children"] = children;
+    }
+    return json;
+}
+
+QByteArray ProjectIO::toBytes(const QJsonObject &root)
+{
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+bool ProjectIO::writeFile(const QString &fileName, const QByteArray &bytes, QString *error)
+{
+    QSaveFile file(fileName);
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size()
+        || !file.commit()) {
+        if (error)
+            *error = tr("%1: cannot save: %2").arg(fileName, file.errorString());
+        file.cancelWriting();
+        return false;
+    }
+    return true;
+}
+
+// ---- reading ----------------------------------------------------------------------------------
+
+bool ProjectIO::readFile(const QString &fileName, ProjectData *out, QString *error)
+{
+    QFile file(fileName);
+    if (!file.open(QIODevice::ReadOnly)) {
+        if (error)
+            *error = tr("%1: cannot open: %2").arg(fileName, file.errorString());
+        return false;
+    }
+    return parse(file.readAll(), fileName, out, error);
+}
+
+bool ProjectIO::parse(const QByteArray &bytes, const QString &source, ProjectData *out,
+                      QString *error)
+{
+    QJsonObject root;
+    return parseJson(bytes, source, &root, error) && parseRoot(root, source, out, error);
+}
+
+bool ProjectIO::parseJson(const QByteArray &bytes, const QString &source, QJsonObject *out,
+                          QString *error)
+{
+    auto isTokenChar = [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '+' || c == '-' || c == '.';
+    };
+    QString ignored;
+    if (!error)
+        error = &ignored;
+    QByteArray text = bytes;
+    for (int attempt = 0;; ++attempt) {
+        QJsonParseError pe;
+        const QJsonDocument doc = QJsonDocument::fromJson(text, &pe);
+        if (pe.error == QJsonParseError::NoError) {
+            if (!doc.isObject()) {
+                *error = tr("%1: expected a JSON object at the top level").arg(source);
+                return false;
+            }
+            *out = doc.object();
+            return true;
+        }
+        // Qt points at or next to the offending literal: take the whole token.
+        qsizetype begin = std::clamp<qsizetype>(pe.offset, 0, text.size() - 1);
+        if (begin > 0 && !isTokenChar(text[begin]) && isTokenChar(text[begin - 1]))
+            --begin;
+        qsizetype end = begin;
+        while (begin > 0 && isTokenChar(text[begin - 1]))
+            --begin;
+        while (end < text.size() && isTokenChar(text[end]))
+            ++end;
+        if (pe.error != QJsonParseError::IllegalNumber || end == begin || attempt >= 100) {
+            const QByteArray before = text.left(pe.offset);
+            const qsizetype line = before.count('\n') + 1;
+            const qsizetype column = pe.offset - (before.lastIndexOf('\n') + 1) + 1;
+            *error = tr("%1: not valid JSON: %2 at line %3, column %4")
+                         .arg(source, pe.errorString()).arg(line).arg(column);
+            return false;
+        }
+        const QByteArray token = text.mid(begin, end - begin);
+        text.replace(begin, end - begin, "\"\\u001fawb-not-finite:" + token + "\"");
+    }
+}
+
+bool ProjectIO::parseRoot(const QJsonObject &root, const QString &source, ProjectData *out,
+                          QString *error)
+{
+    QString ignored;
+    if (!error)
+        error = &ignored;
+    ProjectData data;
+    try {
+        const FieldReader r(root);
+        const QJsonValue format = r.value("format");
+        if (format.toString() != formatName())
+            r.fail("format", tr("expected \"%1\": this is not an Attractor Workbench project")
+                                 .arg(formatName()));
+        const qint64 version = r.integer("version", std::nullopt, 1);
+        if (version > formatVersion) {
+            *error = tr("%1: the file has format version %2, written by a newer version of "
+                        "Attractor Workbench; this version reads format version %3 only. "
+                        "Please update the application.")
+                         .arg(source).arg(version).arg(formatVersion);
+            return false;
+        }
+        const QJsonValue items = r.value("items");
+        if (!items.isArray())
+            r.fail("items", items.isUndefined() ? tr("missing") : tr("expected an array"));
+        QSet<QString> names;
+        const QJsonArray list = items.toArray();
+        for (qsizetype i = 0; i < list.size(); ++i)
+            data.items.push_back(readItem(list[i], QString::number(i + 1), names));
+        data.unknownFields = r.unread();
+    } catch (const LoadError &e) {
+        *error = tr("%1: field \"%2\": %3").arg(source, e.field, e.message);
+        return false;
+    } catch (const ItemError &e) {
+        QString where = tr("item %1").arg(e.label);
+        if (!e.name.isEmpty())
+            where += QStringLiteral(" (%1)").arg(quoted(e.name));
+        if (e.error.field.isEmpty())
+            *error = QStringLiteral("%1: %2: %3").arg(source, where, e.error.message);
+        else
+            *error = tr("%1: %2: field \"%3\": %4")
+                         .arg(source, where, e.error.field, e.error.message);
+        return false;
+    }
+    *out = std::move(data);
+    return true;
+}
+
+std::unique_ptr<Item> ProjectIO::readItem(const QJsonValue &value, const QString &label,
+                                          QSet<QString> &names)
+{
+    if (!value.isObject())
+        throw ItemError{label, {}, {{}, tr("expected an object")}};
+    const FieldReader r(value.toObject());
+    QString name;
+    try {
+        name = r.string("name");
+        const QString type = r.string("type");
+        std::unique_ptr<Item> item = ItemRegistry::instance().create(type);
+        if (!item)
+            r.fail("type", tr("unknown item type %1; this version knows %2")
+                               .arg(quoted(type), ItemRegistry::instance().types().join(", ")));
+        item->read(r);
+        item->checkLoaded(r);
+        if (names.contains(name))
+            r.fail("name", tr("another item is already called %1").arg(quoted(name)));
+        names.insert(name);
+        const QJsonValue children = r.value("children");
+        if (!children.isUndefined() && !children.isArray())
+            r.fail("children", tr("expected an array of items"));
+        const QJsonArray list = children.toArray();
+        for (qsizetype i = 0; i < list.size(); ++i) {
+            std::unique_ptr<Item> child = readItem(list[i], label + '.' + QString::number(i + 1),
+                                                   names);
+            child->m_parent = item.get();
+            item->m_children.push_back(std::move(child));
+        }
+        item->m_unknownFields = r.unread();
+        return item;
+    } catch (const LoadError &e) {
+        throw ItemError{label, name, e};
+    }
+}
+
+// ---- common values ----------------------------------------------------------------------------
+
+QJsonArray ProjectIO::pointsToJson(const PointList &points)
+{
+    QJsonArray out;
+    for (const PlanePoint &p : points)
+        out.append(QJsonArray{p.x, p.y});
+    return out;
+}
+
+QJsonObject ProjectIO::startSetToJson(const StartSetSpec &s)
+{
+    return {{"kind", StartSetSpec::kindNames().at(int(s.kind))},
+            {"points", pointsToJson(s.points)}};
+}
+
+StartSetSpec ProjectIO::readStartSet(const FieldReader &r)
+{
+    StartSetSpec s;
+    s.kind = StartSetSpec::Kind(r.choice("kind", StartSetSpec::kindNames(), int(s.kind)));
+    s.points = r.points("points", s.points);
+    r.require(s.check());
+    return s;
+}
+
+QJsonObject ProjectIO::algorithmToJson(const AlgorithmSpec &a)
+{
+    QJsonArray probabilities;
+    for (double p : a.probabilities)
+        probabilities.append(p);
+    return {{"mode", AlgorithmSpec::modeNames().at(int(a.mode))},
+            {"depth", a.depth},
+            {"samples", a.samples},
+            {"probabilities", probabilities},
+            {"seed", a.seed}};
+}
+
+AlgorithmSpec ProjectIO::readAlgorithm(const FieldReader &r)
+{
+    AlgorithmSpec a;
+    a.mode = AlgorithmSpec::Mode(r.choice("mode", AlgorithmSpec::modeNames(), int(a.mode)));
+    a.depth = int(r.integer("depth", a.depth));
+    a.samples = r.integer("samples", a.samples, 0, AlgorithmSpec::maxSamples);
+    a.probabilities = r.numbers("probabilities", a.probabilities);
+    a.seed = r.integer("seed", a.seed, 0, AlgorithmSpec::maxSeed);
+    r.require(a.check(-1)); // the bound from the number of maps: Item::checkLoaded()
+    return a;
+}
+
+QJsonObject ProjectIO::styleToJson(const StyleSpec &s)
+{
+    return {{"color_by", StyleSpec::colorByNames().at(int(s.colorBy))},
+            {"prefix_length", s.prefixLength},
+            {"point_size", s.pointSize},
+            {"colors", QJsonArray::fromStringList(s.colors)}};
+}
+
+StyleSpec ProjectIO::readStyle(const FieldReader &r)
+{
+    StyleSpec s;
+    s.colorBy = StyleSpec::ColorBy(r.choice("color_by", StyleSpec::colorByNames(),
+                                            int(s.colorBy)));
+    s.prefixLength = int(r.integer("prefix_length", s.prefixLength));
+    s.pointSize = r.number("point_size", s.pointSize);
+    const QJsonValue colors = r.value("colors");
+    if (!colors.isUndefined() && !colors.isArray())
+        r.fail("colors", tr("expected an array of \"#rrggbb\" strings"));
+    const QJsonArray list = colors.toArray();
+    for (qsizetype i = 0; i < list.size(); ++i) {
+        if (!list[i].isString())
+            throw LoadError{r.path("colors") + QStringLiteral("[%1]").arg(i + 1),
+                            tr("expected a string \"#rrggbb\"")};
+        s.colors << list[i].toString().toLower();
+    }
+    r.require(s.check());
+    return s;
+}
+
+} // namespace awb

@@ -1,0 +1,326 @@
+#include "model/SubdivisionCurveItem.h"
+
+#include "core/Curves.h"
+#include "core/Scheme.h"
+#include "model/Commands.h"
+#include "model/ProjectIO.h"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+
+namespace awb {
+
+namespace {
+
+QString fromStd(const std::string &s) { return QString::fromStdString(s); }
+
+QString kindName(SchemeSpec::Kind kind) { return SchemeSpec::kindNames().at(int(kind)); }
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("awb::SubdivisionCurveItem", text);
+}
+
+// The IFS of a Bézier curve split at a complex t (004 §3.7): control point k is the complex
+// number z_k = x_k + i y_k and the maps are those of the real case with complex entries, made
+// real by realify(). The core builds only real subdivision IFS so far; the complex lifting
+// mirrors liftControlPoints() with d = 1 (one complex coordinate).
+DerivedIfs complexBezierIfs(int n, Complex t, const Mat &P)
+{
+    requireFinite(P, "control points");
+    const int m = int(P.rows());
+    if (m != n + 1)
+        throw InputError(tr("Bézier of degree %1 needs exactly %2 control points, got %3")
+                             .arg(n).arg(n + 1).arg(m).toStdString());
+    const CVec z = P.col(0).cast<Complex>() + Complex(0.0, 1.0) * P.col(1).cast<Complex>();
+    DerivedIfs out;
+    out.S.complex = {deCasteljauL(n, t), deCasteljauR(n, t)};
+
+    // Lifted: [z | identity columns | ones] (m x m); singular iff the last two points coincide.
+    CMat L = CMat::Zero(m, m);
+    L.col(0) = z;
+    for (int i = 0; i + 2 < m; ++i)
+        L(i, 1 + i) = 1.0;
+    L.col(m - 1).setOnes();
+    const Eigen::JacobiSVD<CMat> svd(L);
+    const auto &sv = svd.singularValues();
+    if (sv(0) > 0 && sv(sv.size() - 1) / sv(0) > 1e-12) {
+        const CMat inverse = L.fullPivLu().inverse();
+        const int D = m - 1;
+        out.ifs.space = "lifted (complex)";
+        for (const CMat &S : out.S.complex) {
+            const CMat M = inverse * S * L;
+            out.A.complex.push_back(M.topLeftCorner(D, D));
+            out.ifs.maps.push_back(realify(out.A.complex.back(), M.bottomLeftCorner(1, D)));
+        }
+        Mat V = Mat::Zero(2 * D, 2);
+        V(0, 0) = V(1, 1) = 1.0; // (Re, Im) of the first complex coordinate is the point
+        out.ifs.views.push_back({V, RowVec::Zero(2)});
+        out.toIfsSpace = [D](const Mat &X) {
+            Mat Y = Mat::Zero(X.rows(), 2 * D);
+            Y.leftCols(2) = X;
+            return Y;
+        };
+        return out;
+    }
+
+    // Barycentric: lambda |-> lambda S_i on C^m, coordinates (Re lambda, Im lambda) so that
+    // both blocks keep their sums (1 and 0): the core's barycentric blocks.
+    out.note = tr("control points %1 and %2 coincide, so the lifted matrix P of 000 §2 is "
+                  "singular and M_i = P^-1 S_i P is not defined; the attractor is computed in "
+                  "barycentric form").arg(m - 1).arg(m);
+    out.A.unavailable = out.note;
+    Mat Q = Mat::Zero(2 * m, 2 * m); // interleaved (Re, Im) pairs -> (Re block, Im block)
+    for (int k = 0; k < m; ++k) {
+        Q(2 * k, k) = 1.0;
+        Q(2 * k + 1, m + k) = 1.0;
+    }
+    out.ifs.space = "barycentric";
+    for (const CMat &S : out.S.complex) {
+        const AffineMap f = realify(S, Eigen::RowVectorXcd::Zero(m));
+        out.ifs.maps.push_back({Q.transpose() * f.A * Q, RowVec::Zero(2 * m)});
+    }
+    Mat V(2 * m, 2); // Re/Im of sum lambda_k z_k
+    for (int k = 0; k < m; ++k) {
+        V.row(k) << P(k, 0), P(k, 1);
+        V.row(m + k) << -P(k, 1), P(k, 0);
+    }
+    out.ifs.views.push_back({V, RowVec::Zero(2)});
+    out.ifs.barycentricBlocks = {{0, m}, {m, m}};
+    out.toIfsSpace = [z, m](const Mat &X) {
+        // Least-norm lambda with sum lambda_k z_k = w and sum lambda_k = 1.
+        CMat E(2, m);
+        E.row(0) = z.transpose();
+        E.row(1).setOnes();
+        const Eigen::CompleteOrthogonalDecomposition<CMat> cod(E);
+        Mat Y(X.rows(), 2 * m);
+        for (Eigen::Index r = 0; r < X.rows(); ++r) {
+            CVec rhs(2);
+            rhs << Complex(X(r, 0), X(r, 1)), 1.0;
+            const CVec lambda = cod.solve(rhs);
+            Y.row(r) << lambda.real().transpose(), lambda.imag().transpose();
+        }
+        return Y;
+    };
+    return out;
+}
+
+} // namespace
+
+// ---- SchemeSpec -------------------------------------------------------------------------------
+
+const QStringList &SchemeSpec::kindNames()
+{
+    static const QStringList names{"bspline",     "bspline-end-interpolating", "chaikin",
+                                   "corner-cutting", "four-point",          "bezier",
+                                   "matrices"};
+    return names;
+}
+
+bool SchemeSpec::operator==(const SchemeSpec &o) const
+{
+    if (kind != o.kind || degree != o.degree || t != o.t || omega != o.omega || a != o.a
+        || b != o.b || matrices.size() != o.matrices.size())
+        return false;
+    for (size_t i = 0; i < matrices.size(); ++i)
+        if (matrices[i].rows() != o.matrices[i].rows()
+            || matrices[i].cols() != o.matrices[i].cols()
+            || !(matrices[i].array() == o.matrices[i].array()).all())
+            return false;
+    return true;
+}
+
+int SchemeSpec::arity() const
+{
+    return kind == Kind::Matrices ? int(matrices.size()) : 2;
+}
+
+std::unique_ptr<CurveScheme> SchemeSpec::makeScheme() const
+{
+    switch (kind) {
+    case Kind::BSpline: return std::make_unique<UniformScheme>(bsplineScheme(degree));
+    case Kind::EndInterpolatingBSpline:
+        return std::make_unique<EndInterpolatingBSplineScheme>(degree);
+    case Kind::Chaikin: return std::make_unique<UniformScheme>(chaikinScheme());
+    case Kind::CornerCutting: return std::make_unique<UniformScheme>(cornerCuttingScheme(a, b));
+    case Kind::FourPoint: return std::make_unique<UniformScheme>(fourPointScheme(omega));
+    case Kind::Bezier:
+        if (isComplex())
+            throw InputError(tr("a complex Bézier parameter has no real scheme").toStdString());
+        return std::make_unique<BezierScheme>(degree, t.real());
+    case Kind::Matrices: return std::make_unique<MatrixScheme>(matrices);
+    }
+    throw InputError(tr("unknown scheme kind").toStdString());
+}
+
+MaybeProblem SchemeSpec::check() const
+{
+    // The core's constructors are the judges of the parameters; name the field they concern.
+    QString field;
+    try {
+        switch (kind) {
+        case Kind::BSpline:
+        case Kind::EndInterpolatingBSpline:
+            field = "degree";
+            makeScheme();
+            break;
+        case Kind::Chaikin: break;
+        case Kind::CornerCutting:
+            field = std::isfinite(a) && a > 0.0 && a < 1.0 ? "b" : "a";
+            makeScheme();
+            break;
+        case Kind::FourPoint:
+            field = "omega";
+            makeScheme();
+            break;
+        case Kind::Bezier:
+            field = "degree";
+            (void)BezierScheme(degree, 0.5);
+            field = "t";
+            if (!isComplex()) {
+                makeScheme();
+            } else if (!std::isfinite(t.real()) || !std::isfinite(t.imag())
+                       || !(std::abs(t) < 1.0 && std::abs(1.0 - t) < 1.0)) {
+                return Problem{field, tr("the complex parameter t = %1 %2 %3i must satisfy "
+                                         "|t| < 1 and |1 - t| < 1 (004 §3.7)")
+                                          .arg(t.real())
+                                          .arg(t.imag() < 0 ? "-" : "+")
+                                          .arg(std::abs(t.imag()))};
+            }
+            break;
+        case Kind::Matrices:
+            field = "matrices";
+            makeScheme();
+            break;
+        }
+    } catch (const InputError &e) {
+        return Problem{field, fromStd(e.what())};
+    }
+    return std::nullopt;
+}
+
+// ---- SubdivisionCurveItem ---------------------------------------------------------------------
+
+SubdivisionCurveItem::SubdivisionCurveItem()
+    : AttractorItem(tr("Curve")), m_points{{0.0, 0.0}, {1.0, 2.0}, {3.0, 2.0}, {4.0, 0.0}}
+{
+}
+
+MaybeProblem SubdivisionCurveItem::checkScheme(const SchemeSpec &scheme) const
+{
+    if (auto p = scheme.check())
+        return Problem{"scheme." + p->field, p->message};
+    if (auto p = algorithm().check(scheme.arity()))
+        return Problem{"algorithm." + p->field, p->message};
+    return std::nullopt;
+}
+
+bool SubdivisionCurveItem::setScheme(const SchemeSpec &scheme, int gesture)
+{
+    if (checkScheme(scheme))
+        return false;
+    applyProperty(&SubdivisionCurveItem::m_scheme, scheme, &SubdivisionCurveItem::schemeChanged,
+                  tr("Change scheme of %1").arg(name()), gesture);
+    return true;
+}
+
+DerivedIfs SubdivisionCurveItem::computeIfs() const
+{
+    const Mat P = toMatrix(m_points);
+    DerivedIfs out;
+    if (m_scheme.isComplex()) {
+        out = complexBezierIfs(m_scheme.degree, m_scheme.t, P);
+    } else {
+        const auto s = std::make_shared<const SubdivisionIfs>(
+            buildSubdivisionIfs(*m_scheme.makeScheme(), P));
+        out.S.real = s->matrices.S;
+        for (const LiftedMap &l : s->lifted)
+            out.A.real.push_back(l.A);
+        if (s->lifted.empty())
+            out.A.unavailable = fromStd(s->lifting.reason);
+        if (s->barycentric())
+            out.note = fromStd(s->lifting.reason);
+        out.ifs = s->ifs;
+        out.toIfsSpace = [s](const Mat &X) { return s->toIfsSpace(X); };
+        out.subdivision = s;
+    }
+    applyAlgorithm(out.ifs);
+    return out;
+}
+
+void SubdivisionCurveItem::write(QJsonObject &json) const
+{
+    AttractorItem::write(json);
+    QJsonObject scheme{{"kind", kindName(m_scheme.kind)}};
+    switch (m_scheme.kind) {
+    case SchemeSpec::Kind::BSpline:
+    case SchemeSpec::Kind::EndInterpolatingBSpline: scheme["degree"] = m_scheme.degree; break;
+    case SchemeSpec::Kind::Chaikin: break;
+    case SchemeSpec::Kind::CornerCutting:
+        scheme["a"] = m_scheme.a;
+        scheme["b"] = m_scheme.b;
+        break;
+    case SchemeSpec::Kind::FourPoint: scheme["omega"] = m_scheme.omega; break;
+    case SchemeSpec::Kind::Bezier:
+        scheme["degree"] = m_scheme.degree;
+        scheme["t"] = QJsonArray{m_scheme.t.real(), m_scheme.t.imag()};
+        break;
+    case SchemeSpec::Kind::Matrices: {
+        QJsonArray list;
+        for (const Mat &S : m_scheme.matrices) {
+            QJsonArray rows;
+            for (Eigen::Index r = 0; r < S.rows(); ++r) {
+                QJsonArray row;
+                for (Eigen::Index c = 0; c < S.cols(); ++c)
+                    row.append(S(r, c));
+                rows.append(row);
+            }
+            list.append(rows);
+        }
+        scheme["matrices"] = list;
+        break;
+    }
+    }
+    json["scheme"] = scheme;
+    json["control_points"] = ProjectIO::pointsToJson(m_points);
+}
+
+void SubdivisionCurveItem::read(const FieldReader &fields)
+{
+    AttractorItem::read(fields);
+    const FieldReader s = *fields.object("scheme", true);
+    SchemeSpec spec;
+    spec.kind = SchemeSpec::Kind(s.choice("kind", SchemeSpec::kindNames()));
+    switch (spec.kind) {
+    case SchemeSpec::Kind::BSpline:
+    case SchemeSpec::Kind::EndInterpolatingBSpline:
+        spec.degree = int(s.integer("degree", spec.degree));
+        break;
+    case SchemeSpec::Kind::Chaikin: break;
+    case SchemeSpec::Kind::CornerCutting:
+        spec.a = s.number("a", spec.a);
+        spec.b = s.number("b", spec.b);
+        break;
+    case SchemeSpec::Kind::FourPoint: spec.omega = s.number("omega", spec.omega); break;
+    case SchemeSpec::Kind::Bezier: {
+        spec.degree = int(s.integer("degree", spec.degree));
+        const QJsonValue t = s.value("t");
+        const QJsonArray pair = t.toArray();
+        if (t.isArray() && pair.size() == 2)
+            spec.t = {FieldReader::toNumber(pair[0], s.path("t") + "[1]"),
+                      FieldReader::toNumber(pair[1], s.path("t") + "[2]")};
+        else if (t.isDouble()) // a real t may be written as a plain number
+            spec.t = FieldReader::toNumber(t, s.path("t"));
+        else if (!t.isUndefined())
+            s.fail("t", tr("expected [re, im] or a number"));
+        break;
+    }
+    case SchemeSpec::Kind::Matrices: spec.matrices = s.matrices("matrices"); break;
+    }
+    s.require(spec.check());
+    m_scheme = spec;
+    m_points = fields.points("control_points");
+}
+
+} // namespace awb

@@ -1,0 +1,86 @@
+#pragma once
+// Document item "subdivision-curve" (layer 2, model): a stationary subdivision scheme with its
+// parameters and the control points; its attractor is the limit curve (000 §2). The derived IFS
+// comes from the core's buildSubdivisionIfs() (lifted M_i = P^-1 S_i P, or barycentric when P
+// is singular). A Bézier scheme may have a complex parameter t (004 §3.7): the control points
+// are then complex numbers x + iy and the IFS acts on complex coordinates.
+
+#include "model/AttractorItem.h"
+
+#include <complex>
+
+namespace awb {
+
+class CurveScheme;
+
+// The scheme and all its parameters. Parameters of other kinds are kept (switching the kind
+// back restores them) but only the current kind's are saved.
+struct SchemeSpec {
+    Q_DECLARE_TR_FUNCTIONS(awb::SchemeSpec)
+public:
+    enum class Kind {
+        BSpline,
+        EndInterpolatingBSpline,
+        Chaikin,
+        CornerCutting,
+        FourPoint,
+        Bezier,
+        Matrices,
+    };
+    Kind kind = Kind::BSpline;
+    int degree = 3;                       // bspline, bspline-end-interpolating, bezier
+    std::complex<double> t{0.5, 0.0};     // bezier: de Casteljau split parameter
+    double omega = 1.0 / 16.0;            // four-point tension
+    double a = 0.25, b = 0.75;            // corner cutting
+    std::vector<Mat> matrices;            // matrices: S_1..S_p, m x m, row-stochastic
+
+    bool operator==(const SchemeSpec &other) const;
+    // The parameters the core refuses (degree out of range, t outside the lens |t| < 1,
+    // |1 - t| < 1, a matrix of the wrong size or with a row not summing to 1, ...). The
+    // field is the parameter's JSON key.
+    MaybeProblem check() const;
+    // Number of maps: 2, or the number of matrices.
+    int arity() const;
+    bool isComplex() const { return kind == Kind::Bezier && t.imag() != 0.0; }
+    // The core scheme of a real kind. Throws InputError.
+    std::unique_ptr<CurveScheme> makeScheme() const;
+    // JSON spellings, in enum order.
+    static const QStringList &kindNames();
+};
+
+class SubdivisionCurveItem : public AttractorItem {
+    Q_OBJECT
+public:
+    SubdivisionCurveItem();
+
+    static QString staticType() { return QStringLiteral("subdivision-curve"); }
+    static QString staticTypeName() { return tr("Subdivision curve"); }
+    QString type() const override { return staticType(); }
+    QString typeName() const override { return staticTypeName(); }
+
+    const SchemeSpec &scheme() const { return m_scheme; }
+    // The scheme's own check, plus the depth bound with the new number of maps.
+    MaybeProblem checkScheme(const SchemeSpec &scheme) const;
+    // Undoable (kind, degree, t, omega, a, b, matrices: any of them); refused when
+    // checkScheme() complains. A nonzero gesture merges the edits of one slider drag.
+    bool setScheme(const SchemeSpec &scheme, int gesture = 0);
+
+    int mapCount() const override { return m_scheme.arity(); }
+    int controlPointSetCount() const override { return 1; }
+
+    void write(QJsonObject &json) const override;
+    void read(const FieldReader &fields) override;
+
+signals:
+    void schemeChanged();
+
+protected:
+    DerivedIfs computeIfs() const override;
+    PointList &pointStorage(int) override { return m_points; }
+
+private:
+    SchemeSpec m_scheme;
+    PointList m_points;
+};
+
+} // namespace awb
