@@ -88,4 +88,13 @@ void Item::read(const FieldReader &fields)
 
 void Item::checkLoaded(const FieldReader &) const {}
 
+QVariant Item::parameter(const QString &) const { return {}; }
+
+bool Item::setParameter(const QString &key, const QVariant &, int, QString *error)
+{
+    if (error)
+        *error = tr("%1 has no parameter \"%2\"").arg(typeName(), key);
+    return false;
+}
+
 } // namespace awb

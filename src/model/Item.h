@@ -7,6 +7,7 @@
 // project (being built, or loaded) applies its setters directly.
 
 #include "model/ItemValues.h"
+#include "model/Parameters.h"
 
 #include <QJsonObject>
 #include <QObject>
@@ -106,6 +107,16 @@ public:
     virtual QStringList references() const { return {}; }
     // Why this item's derived data cannot be computed ("" when it can, or has none).
     virtual QString derivedError() const { return {}; }
+
+    // ---- scalar parameters, generically (Parameters.h). The list may depend on the item's
+    // state (e.g. ω only while the scheme is the four-point scheme).
+    virtual QList<ParameterInfo> parameters() const { return {}; }
+    // Invalid QVariant for an unknown key.
+    virtual QVariant parameter(const QString &key) const;
+    // Undoable, one step (edits sharing a nonzero gesture merge). False when the key is
+    // unknown or the value refused; *error then says why, in words for the user.
+    virtual bool setParameter(const QString &key, const QVariant &value, int gesture = 0,
+                              QString *error = nullptr);
 
     // Serialization: each kind writes and reads its own fields and calls its base first.
     // "type" and "children" are handled by ProjectIO. read() throws LoadError.

@@ -323,4 +323,101 @@ void SubdivisionCurveItem::read(const FieldReader &fields)
     m_points = fields.points("control_points");
 }
 
+// ---- generic parameters ---------------------------------------------------------------------
+
+QList<ParameterInfo> SubdivisionCurveItem::parameters() const
+{
+    using P = ParameterInfo;
+    const QString group = tr("Scheme");
+    QList<ParameterInfo> list;
+    list << P::make("scheme.kind", tr("Scheme"), P::Type::Choice)
+                .options({tr("Uniform B-spline"), tr("End-interpolating B-spline"), tr("Chaikin"),
+                          tr("Corner cutting"), tr("Four-point"), tr("Bézier (de Casteljau)"),
+                          tr("Own matrices")})
+                .in(group);
+    const bool bezier = m_scheme.kind == SchemeSpec::Kind::Bezier;
+    if (bezier || m_scheme.kind == SchemeSpec::Kind::BSpline
+        || m_scheme.kind == SchemeSpec::Kind::EndInterpolatingBSpline) {
+        list << P::make("scheme.degree", tr("Degree"), P::Type::Integer)
+                    .range(1, bezier ? 30 : 15)
+                    .in(group)
+                    .tip(bezier ? tr("Degree n: the curve has n + 1 control points")
+                                : tr("Degree of the B-spline (Lane–Riesenfeld, 004 eq. 2.7)"));
+    }
+    if (bezier) {
+        list << P::make("scheme.t", tr("Split parameter t"), P::Type::Complex)
+                    .in(group)
+                    .tip(tr("de Casteljau split at t (004 eq. 2.5). A complex t inside both "
+                            "discs |t| < 1, |1 − t| < 1 gives a fractal curve (004 §3.7)."));
+    }
+    if (m_scheme.kind == SchemeSpec::Kind::FourPoint) {
+        list << P::make("scheme.omega", tr("Tension ω"), P::Type::Real)
+                    .slider(-0.5, 0.5)
+                    .in(group)
+                    .tip(tr("1/16 gives C1 curves reproducing cubics; −1/2 < ω < 0 or "
+                            "1/4 ≤ ω < 1/2 gives fractal curves (004 Thm. 2.4.1)"));
+    }
+    if (m_scheme.kind == SchemeSpec::Kind::CornerCutting) {
+        const QString tip = tr("New points at parameters a < b on every edge (Chaikin: 1/4, 3/4)");
+        for (const auto &[key, label] : {std::pair{"scheme.a", tr("First cut a")},
+                                         std::pair{"scheme.b", tr("Second cut b")}})
+            list << P::make(key, label, P::Type::Real).range(0, 1).slider(0, 1).in(group).tip(tip);
+    }
+    return list;
+}
+
+QVariant SubdivisionCurveItem::parameter(const QString &key) const
+{
+    if (key == "scheme.kind")
+        return int(m_scheme.kind);
+    if (key == "scheme.degree")
+        return m_scheme.degree;
+    if (key == "scheme.t")
+        return QPointF(m_scheme.t.real(), m_scheme.t.imag());
+    if (key == "scheme.omega")
+        return m_scheme.omega;
+    if (key == "scheme.a")
+        return m_scheme.a;
+    if (key == "scheme.b")
+        return m_scheme.b;
+    return {};
+}
+
+bool SubdivisionCurveItem::setParameter(const QString &key, const QVariant &value, int gesture,
+                                        QString *error)
+{
+    SchemeSpec next = m_scheme;
+    bool ok = true;
+    if (key == "scheme.kind") {
+        const int k = value.toInt(&ok);
+        ok = ok && k >= 0 && k < SchemeSpec::kindNames().size();
+        if (ok)
+            next.kind = SchemeSpec::Kind(k);
+    } else if (key == "scheme.degree") {
+        next.degree = value.toInt(&ok);
+    } else if (key == "scheme.t") {
+        const QPointF t = value.toPointF();
+        next.t = {t.x(), t.y()};
+    } else if (key == "scheme.omega") {
+        next.omega = value.toDouble(&ok);
+    } else if (key == "scheme.a") {
+        next.a = value.toDouble(&ok);
+    } else if (key == "scheme.b") {
+        next.b = value.toDouble(&ok);
+    } else {
+        return Item::setParameter(key, value, gesture, error);
+    }
+    if (!ok) {
+        if (error)
+            *error = tr("\"%1\" is not a valid value for %2").arg(value.toString(), key);
+        return false;
+    }
+    if (const MaybeProblem p = checkScheme(next)) {
+        if (error)
+            *error = p->message;
+        return false;
+    }
+    return setScheme(next, gesture);
+}
+
 } // namespace awb

@@ -65,6 +65,13 @@ public:
     // checkScheme() complains. A nonzero gesture merges the edits of one slider drag.
     bool setScheme(const SchemeSpec &scheme, int gesture = 0);
 
+    // Parameters: "scheme.kind" always; "scheme.degree", "scheme.t", "scheme.omega",
+    // "scheme.a", "scheme.b" while the kind uses them. Edits go through setScheme().
+    QList<ParameterInfo> parameters() const override;
+    QVariant parameter(const QString &key) const override;
+    bool setParameter(const QString &key, const QVariant &value, int gesture = 0,
+                      QString *error = nullptr) override;
+
     int mapCount() const override { return m_scheme.arity(); }
     int controlPointSetCount() const override { return 1; }
 
