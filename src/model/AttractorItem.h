@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 
 namespace awb {
 
@@ -32,6 +33,19 @@ struct DerivedIfs {
     QString note;       // e.g. why the barycentric form is used
     // Plane points (n x 2) to points of the IFS space (n x D).
     std::function<Mat(const Mat &)> toIfsSpace;
+
+    // Items whose attractor is not that of the single IFS `ifs` (a CIFS state, a junction
+    // automaton) set `iterate`: it streams the images of depth `depth` to the sinks (one per
+    // thread) like awb::iterateParallel, addresses included; `ifs.views` still say how a point
+    // of its space is drawn. Renderers call it when set, awb::iterateParallel(ifs, ...)
+    // otherwise.
+    std::function<IterationStats(const StartSet &, int depth, const std::vector<AttractorSink *> &,
+                                 const IterationControl &)>
+        iterate;
+    // Items whose figure is a polygon rather than (only) an attractor: the normal-vector
+    // scheme's polygon at the item's number of steps (n x 2; closed when polygonClosed).
+    std::optional<Mat> polygon;
+    bool polygonClosed = false;
 };
 
 class AttractorItem : public Item {
