@@ -1,8 +1,13 @@
 #include "cli/FigureRenderer.h"
 
+#include <QFileInfo>
+#include <QPageSize>
 #include <QPainter>
 #include <QPainterPath>
+#include <QPdfWriter>
+#include <QSvgGenerator>
 #include <cmath>
+#include <thread>
 
 namespace awb {
 
@@ -19,6 +24,39 @@ namespace {
 
 constexpr double kVectorLimit = 4000; // images drawn as vector shapes below this count
 
+const std::vector<Projection> &viewsOf(const FigureSpec &spec)
+{
+    return spec.views.empty() ? spec.ifs->views : spec.views;
+}
+
+IterationStats runIterate(const FigureSpec &spec, int depth, const std::vector<AttractorSink *> &sinks)
+{
+    if (spec.iterate)
+        return spec.iterate(spec.start, depth, sinks, {});
+    if (spec.random) {
+        ChaosOptions opt;
+        opt.samples = spec.samples;
+        opt.seed = spec.seed;
+        return chaosGameParallel(*spec.ifs, spec.start.vertices.row(0), opt, sinks);
+    }
+    return iterateParallel(*spec.ifs, spec.start, depth, sinks);
+}
+
+bool hasAttractor(const FigureSpec &spec)
+{
+    return spec.iterate || (spec.ifs && spec.ifs->size() > 0);
+}
+
+double imagesAt(const FigureSpec &spec, int depth)
+{
+    if (spec.random)
+        return double(spec.samples);
+    const double perImage = std::max<double>(1, spec.start.vertices.rows());
+    if (spec.ifs && spec.ifs->size() > 0)
+        return imageCount(*spec.ifs, depth) * perImage;
+    return 1e18; // an automaton: count unknown, use the raster
+}
+
 struct Frame {
     double x0, y0, x1, y1;
     QRectF target;
@@ -32,26 +70,45 @@ struct Frame {
 // Bounds of everything drawn in all panels, padded, with equal scale on both axes.
 Frame frameFor(const FigureSpec &spec, const QRectF &target)
 {
-    BoundsSink bounds(spec.ifs->views);
-    int shallow = 0;
-    for (const auto &p : spec.panels)
-        shallow = std::max(shallow, std::min(p.depth, 10));
-    iterate(*spec.ifs, spec.start, shallow, bounds);
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
     auto grow = [&](const Mat &m) {
         for (Eigen::Index r = 0; r < m.rows(); ++r)
-            for (int a = 0; a < 2; ++a) {
-                lo[a] = std::min(lo[a], m(r, a));
-                hi[a] = std::max(hi[a], m(r, a));
-            }
+            for (int a = 0; a < 2; ++a)
+                if (std::isfinite(m(r, a))) {
+                    lo[a] = std::min(lo[a], m(r, a));
+                    hi[a] = std::max(hi[a], m(r, a));
+                }
     };
-    if (!bounds.empty() && bounds.finite())
-        grow(Mat(bounds.lo()).leftCols(2)), grow(Mat(bounds.hi()).leftCols(2));
-    // The start set as drawn (depth 0) counts too.
-    for (const Projection &v : spec.ifs->views)
-        grow(project(v, spec.start.vertices).leftCols(2));
-    if (spec.controlPoints.rows() > 0)
-        grow(spec.controlPoints);
+    if (hasAttractor(spec)) {
+        BoundsSink bounds(viewsOf(spec));
+        int shallow = 0;
+        for (const auto &p : spec.panels)
+            shallow = std::max(shallow, p.depth);
+        // Enough levels to see the attractor's extent, few enough to be instant.
+        while (shallow > 0 && imagesAt(spec, shallow) > 50000)
+            --shallow;
+        if (spec.random) {
+            ChaosOptions opt;
+            opt.samples = std::min<std::uint64_t>(spec.samples, 20000);
+            opt.seed = spec.seed;
+            chaosGame(*spec.ifs, spec.start.vertices.row(0), opt, bounds);
+        } else if (spec.iterate) {
+            spec.iterate(spec.start, std::min(shallow, 8), {&bounds}, {});
+        } else {
+            iterate(*spec.ifs, spec.start, shallow, bounds);
+        }
+        if (!bounds.empty() && bounds.finite())
+            grow(Mat(bounds.lo()).leftCols(2)), grow(Mat(bounds.hi()).leftCols(2));
+        if (!spec.random)
+            for (const Projection &v : viewsOf(spec))
+                grow(project(v, spec.start.vertices).leftCols(2));
+    }
+    for (const Mat &m : spec.controlPolygons)
+        grow(m);
+    for (const Mat &m : spec.polygons)
+        grow(m);
+    if (lo[0] > hi[0])
+        lo[0] = lo[1] = -1, hi[0] = hi[1] = 1;
     double w = hi[0] - lo[0], h = hi[1] - lo[1];
     const double pad = 0.06 * std::max({w, h, 1e-9});
     lo[0] -= pad, lo[1] -= pad, hi[0] += pad, hi[1] += pad;
@@ -66,7 +123,7 @@ void drawVector(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
 {
     CallbackSink sink([&](const Mat &v, StartSet::Kind kind, const std::uint8_t *a, int n) {
         const QColor c = mapColor(n > 0 ? a[0] : 0);
-        for (const Projection &view : spec.ifs->views) {
+        for (const Projection &view : viewsOf(spec)) {
             const Mat q = project(view, v);
             QPolygonF poly;
             for (Eigen::Index r = 0; r < q.rows(); ++r)
@@ -74,7 +131,7 @@ void drawVector(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
             if (kind == StartSet::Kind::Points || q.rows() == 1) {
                 p.setPen(Qt::NoPen);
                 p.setBrush(c);
-                const double radius = depth <= 3 ? 3.5 : 2.2;
+                const double radius = depth <= 3 && !spec.random ? 3.5 : 2.0;
                 for (const QPointF &pt : poly)
                     p.drawEllipse(pt, radius, radius);
             } else if (kind == StartSet::Kind::Polyline) {
@@ -90,38 +147,71 @@ void drawVector(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
             }
         }
     });
-    iterate(*spec.ifs, spec.start, depth, sink);
+    runIterate(spec, depth, {&sink});
 }
 
 void drawRaster(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
 {
-    const int w = int(f.target.width()), h = int(f.target.height());
-    RasterSink raster(w, h, f.x0, f.y0, f.x1, f.y1, spec.ifs->views);
-    RasterSink second(w, h, f.x0, f.y0, f.x1, f.y1, spec.ifs->views);
-    iterateParallel(*spec.ifs, spec.start, depth, {&raster, &second});
-    raster.merge(second);
+    // Rasterise at the device resolution of the target (sharp in PDF at 300 dpi too).
+    const double scale = std::clamp(p.device()->logicalDpiX() / 96.0, 1.0, 4.0);
+    const int w = std::max(1, int(f.target.width() * scale));
+    const int h = std::max(1, int(f.target.height() * scale));
+    const int threads = std::max(1u, std::min(4u, std::thread::hardware_concurrency()));
+    std::vector<RasterSink> rasters;
+    rasters.reserve(threads);
+    for (int t = 0; t < threads; ++t)
+        rasters.emplace_back(w, h, f.x0, f.y0, f.x1, f.y1, viewsOf(spec));
+    std::vector<AttractorSink *> sinks;
+    for (auto &r : rasters)
+        sinks.push_back(&r);
+    runIterate(spec, depth, sinks);
+    for (int t = 1; t < threads; ++t)
+        rasters[0].merge(rasters[t]);
     QImage img(w, h, QImage::Format_ARGB32_Premultiplied);
     img.fill(Qt::transparent);
+    // Thicken single pixels a little so that the curve reads at print size.
+    const int dot = scale > 1.5 ? 1 : 0;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
-            if (raster.hits(x, y))
-                img.setPixelColor(x, y, mapColor(int(raster.label(x, y)) - 1));
-    p.drawImage(f.target.topLeft(), img);
+            if (rasters[0].hits(x, y)) {
+                const QColor c = mapColor(int(rasters[0].label(x, y)) - 1);
+                for (int dy = -dot; dy <= dot; ++dy)
+                    for (int dx = -dot; dx <= dot; ++dx)
+                        if (x + dx >= 0 && y + dy >= 0 && x + dx < w && y + dy < h)
+                            img.setPixelColor(x + dx, y + dy, c);
+            }
+    p.drawImage(f.target, img);
+}
+
+void drawPolyline(QPainter &p, const Frame &f, const Mat &m, bool closed)
+{
+    QPolygonF poly;
+    for (Eigen::Index r = 0; r < m.rows(); ++r)
+        poly << f.map(m(r, 0), m(r, 1));
+    if (closed)
+        p.drawPolygon(poly);
+    else
+        p.drawPolyline(poly);
 }
 
 } // namespace
 
-QImage renderFigure(const FigureSpec &spec)
+QSize figureSize(const FigureSpec &spec)
 {
-    if (!spec.ifs)
-        throw InputError("no IFS to render");
+    const int titleH = spec.title.isEmpty() ? 0 : 34;
+    return {spec.panelWidth * int(std::max<size_t>(1, spec.panels.size())),
+            spec.panelHeight + titleH + 26};
+}
+
+void paintFigure(QPainter &p, const FigureSpec &spec)
+{
+    if (!spec.ifs && !spec.iterate && spec.polygons.empty())
+        throw InputError("nothing to draw");
     const int n = int(spec.panels.size());
     const int titleH = spec.title.isEmpty() ? 0 : 34;
     const int captionH = 26;
-    QImage image(spec.panelWidth * n, spec.panelHeight + titleH + captionH,
-                 QImage::Format_ARGB32_Premultiplied);
-    image.fill(Qt::white);
-    QPainter p(&image);
+    const QSize size = figureSize(spec);
+    p.fillRect(QRect(QPoint(0, 0), size), Qt::white);
     p.setRenderHint(QPainter::Antialiasing);
     QFont font = p.font();
     font.setPixelSize(15);
@@ -132,7 +222,7 @@ QImage renderFigure(const FigureSpec &spec)
         bold.setPixelSize(17);
         p.setFont(bold);
         p.setPen(Qt::black);
-        p.drawText(QRectF(0, 0, image.width(), titleH), Qt::AlignCenter, spec.title);
+        p.drawText(QRectF(0, 0, size.width(), titleH), Qt::AlignCenter, spec.title);
         p.setFont(font);
     }
     for (int i = 0; i < n; ++i) {
@@ -144,36 +234,97 @@ QImage renderFigure(const FigureSpec &spec)
         p.drawRect(cell);
         p.save();
         p.setClipRect(cell);
+        p.setBrush(Qt::NoBrush);
         for (const Mat &o : spec.overlays) {
-            QPolygonF poly;
-            for (Eigen::Index r = 0; r < o.rows(); ++r)
-                poly << f.map(o(r, 0), o(r, 1));
             p.setPen(QPen(QColor(60, 60, 60, 110), 4));
-            p.drawPolyline(poly);
+            drawPolyline(p, f, o, false);
         }
-        if (spec.controlPoints.rows() > 0) {
-            QPolygonF poly;
-            for (Eigen::Index r = 0; r < spec.controlPoints.rows(); ++r)
-                poly << f.map(spec.controlPoints(r, 0), spec.controlPoints(r, 1));
+        for (const Mat &m : spec.controlPolygons) {
             p.setPen(QPen(QColor(40, 150, 60), 1.5, Qt::DashLine));
-            p.drawPolyline(poly);
+            p.setBrush(Qt::NoBrush);
+            drawPolyline(p, f, m, false);
             p.setPen(QPen(Qt::black, 1));
             p.setBrush(QColor(40, 150, 60));
-            for (const QPointF &pt : poly)
-                p.drawRect(QRectF(pt - QPointF(3.5, 3.5), QSizeF(7, 7)));
+            for (Eigen::Index r = 0; r < m.rows(); ++r)
+                p.drawRect(QRectF(f.map(m(r, 0), m(r, 1)) - QPointF(3.5, 3.5), QSizeF(7, 7)));
+        }
+        p.setBrush(Qt::NoBrush);
+        for (const Mat &m : spec.polygons) {
+            p.setPen(QPen(mapColor(0), 1.2));
+            drawPolyline(p, f, m, false);
         }
         const int depth = spec.panels[i].depth;
-        if (imageCount(*spec.ifs, depth) * double(spec.start.vertices.rows()) <= kVectorLimit)
-            drawVector(p, spec, f, depth);
-        else
-            drawRaster(p, spec, f, depth);
+        if (hasAttractor(spec)) {
+            if (imagesAt(spec, depth) <= kVectorLimit)
+                drawVector(p, spec, f, depth);
+            else
+                drawRaster(p, spec, f, depth);
+        }
         p.restore();
         p.setPen(Qt::black);
         p.drawText(QRectF(i * spec.panelWidth, titleH + spec.panelHeight - 2, spec.panelWidth,
                           captionH),
                    Qt::AlignCenter, spec.panels[i].caption);
     }
+}
+
+QImage renderFigure(const FigureSpec &spec)
+{
+    QImage image(figureSize(spec), QImage::Format_ARGB32_Premultiplied);
+    QPainter p(&image);
+    paintFigure(p, spec);
     return image;
+}
+
+bool writeFigure(const FigureSpec &spec, const QString &fileName, QString *error)
+{
+    const QString suffix = QFileInfo(fileName).suffix().toLower();
+    const QSize size = figureSize(spec);
+    if (suffix == "png") {
+        if (!renderFigure(spec).save(fileName, "PNG")) {
+            *error = QString("cannot write %1").arg(fileName);
+            return false;
+        }
+        return true;
+    }
+    if (suffix == "svg") {
+        QSvgGenerator svg;
+        svg.setFileName(fileName);
+        svg.setSize(size);
+        svg.setViewBox(QRect(QPoint(0, 0), size));
+        svg.setTitle(spec.title);
+        svg.setDescription("Attractor Workbench figure");
+        QPainter p;
+        if (!p.begin(&svg)) {
+            *error = QString("cannot write %1").arg(fileName);
+            return false;
+        }
+        paintFigure(p, spec);
+        return true;
+    }
+    if (suffix == "pdf") {
+        QPdfWriter pdf(fileName);
+        pdf.setTitle(spec.title);
+        pdf.setCreator("Attractor Workbench");
+        pdf.setResolution(300);
+        // A page of the figure's own proportions: width 180 mm (a journal column pair).
+        const double mm = 180.0;
+        pdf.setPageSize(QPageSize(QSizeF(mm, mm * size.height() / size.width()),
+                                  QPageSize::Millimeter));
+        pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
+        QPainter p;
+        if (!p.begin(&pdf)) {
+            *error = QString("cannot write %1").arg(fileName);
+            return false;
+        }
+        // Scale figure pixels to the page: fonts given in pixels scale with it.
+        const double s = pdf.width() / double(size.width());
+        p.scale(s, s);
+        paintFigure(p, spec);
+        return true;
+    }
+    *error = QString("unknown output format '.%1' (use .png, .svg or .pdf)").arg(suffix);
+    return false;
 }
 
 } // namespace awb

@@ -1,14 +1,19 @@
 #pragma once
-// Renders attractor figures to images the way the papers show them: a row of panels with the
-// control polygon and the iterates X_0, F(X_0), F^2(X_0), ... of a start set. Used by the CLI;
-// only QtGui (QImage/QPainter), no widgets.
+// Renders attractor figures the way the papers show them: one or more panels with the control
+// polygon(s) and the iterates X_0, F(X_0), ..., F^k(X_0) of a start set, or a random-iteration
+// picture. Paints on any QPainter, so the same figure goes to PNG, SVG or PDF (vector shapes
+// where the content is vector: polygons, shallow levels; a raster for deep levels). Used by
+// the CLI; QtGui (+ QtSvg for SVG files) only, no widgets.
 
 #include "core/Attractor.h"
 
 #include <QColor>
 #include <QImage>
 #include <QString>
+#include <functional>
 #include <vector>
+
+class QPainter;
 
 namespace awb {
 
@@ -17,22 +22,36 @@ struct FigurePanel {
     int depth = 0;
 };
 
+// Streams F^depth(start) to sinks (one per thread), like awb::iterateParallel.
+using IterateFn = std::function<IterationStats(const StartSet &, int, const std::vector<AttractorSink *> &,
+                                               const IterationControl &)>;
+
 struct FigureSpec {
     QString title;
-    const Ifs *ifs = nullptr;
+    const Ifs *ifs = nullptr;          // maps (may be empty when `iterate` or `polygon` is set)
+    std::vector<Projection> views;     // how IFS points are drawn (defaults to ifs->views)
+    IterateFn iterate;                 // custom deterministic iteration (automata)
     StartSet start;
-    Mat controlPoints;                 // m x 2, drawn as the control polygon (may be empty)
-    std::vector<Mat> overlays;         // extra polylines (e.g. the exact curve), n x 2 each
+    bool random = false;               // chaos game instead of deterministic iteration
+    std::uint64_t samples = 200000;
+    std::uint64_t seed = 1;
+    std::vector<Mat> controlPolygons;  // m x 2 each, drawn dashed with square handles
+    std::vector<Mat> overlays;         // e.g. the exact curve (n x 2), a grey band underneath
+    std::vector<Mat> polygons;         // figures that are polygons (normal-vector curves)
     std::vector<FigurePanel> panels;
     int panelWidth = 420;
     int panelHeight = 360;
 };
 
-// Colour of map i (by address) — a qualitative palette that reads on white and in print.
+// Colour of map i (by address): a qualitative palette that reads on white and in print.
 QColor mapColor(int i);
 
-// Draws all panels side by side. Shallow levels are drawn as vector dots/segments/polygons,
-// deep ones through a RasterSink at the panel's resolution. Throws InputError on bad input.
+// Size of the whole figure in pixels (panels side by side, title, captions).
+QSize figureSize(const FigureSpec &spec);
+// Paints the figure into the rectangle (0, 0, figureSize) of the painter's device.
+void paintFigure(QPainter &painter, const FigureSpec &spec);
 QImage renderFigure(const FigureSpec &spec);
+// Writes PNG, SVG or PDF by the file's suffix; false with *error set on failure.
+bool writeFigure(const FigureSpec &spec, const QString &fileName, QString *error);
 
 } // namespace awb

@@ -2,6 +2,7 @@
 
 #include "cli/FigureRenderer.h"
 #include "cli/Gallery.h"
+#include "cli/ProjectCommands.h"
 #include "core/Spectrum.h"
 
 #include <QCommandLineParser>
@@ -58,7 +59,7 @@ int runExamples(const QStringList &args)
         spec.title = ex.title;
         spec.ifs = &s.ifs;
         spec.start = {ex.startKind, s.toIfsSpace(ex.start)};
-        spec.controlPoints = ex.controlPoints;
+        spec.controlPolygons = {ex.controlPoints};
         if (auto exact = ex.scheme->exactCurve(ex.controlPoints, 600))
             spec.overlays.push_back(*exact);
         spec.panels = {{"X0", 0}, {"F(X0)", 1}, {"F^3(X0)", 3}, {"F^6(X0)", 6},
@@ -78,7 +79,12 @@ void usage()
 {
     out() << "Usage: attractor-cli <command> [options]\n\n"
              "Commands:\n"
-             "  examples   render the bundled paper figures to PNG files\n\n"
+             "  render     render an item of a project to PNG, SVG or PDF\n"
+             "  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)\n"
+             "  points     the points of F^k(X0) as CSV\n"
+             "  check      validate a project file\n"
+             "  rewrite    load and save a project in canonical form\n"
+             "  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG\n\n"
              "Run 'attractor-cli <command> --help' for the options of a command.\n";
 }
 
@@ -89,6 +95,13 @@ int main(int argc, char **argv)
     // Text in images needs a QGuiApplication; without a display, render off screen.
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") && qEnvironmentVariableIsEmpty("DISPLAY"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
+    // Without a session (CI, ssh) Qt warns on every run that XDG_RUNTIME_DIR is unset.
+    if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
+        const QString dir = QDir::tempPath() + "/attractor-cli-runtime-" + qgetenv("USER");
+        QDir().mkpath(dir);
+        QFile::setPermissions(dir, QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+        qputenv("XDG_RUNTIME_DIR", dir.toLocal8Bit());
+    }
     QGuiApplication app(argc, argv);
     QGuiApplication::setApplicationName("attractor-cli");
     QGuiApplication::setApplicationVersion(PROJECT_VERSION);
@@ -107,6 +120,16 @@ int main(int argc, char **argv)
     try {
         if (command == "examples")
             return runExamples(args);
+        if (command == "render")
+            return cli::render(args);
+        if (command == "analyse" || command == "analyze")
+            return cli::analyse(args);
+        if (command == "points")
+            return cli::points(args);
+        if (command == "check")
+            return cli::check(args);
+        if (command == "rewrite")
+            return cli::rewrite(args);
     } catch (const InputError &e) {
         err() << "attractor-cli " << command << ": " << e.what() << "\n";
         return 1;
