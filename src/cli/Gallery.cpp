@@ -5,18 +5,7 @@
 namespace awb {
 
 namespace {
-Mat pts(std::initializer_list<std::initializer_list<double>> r)
-{
-    Mat M(r.size(), r.begin()->size());
-    int i = 0;
-    for (auto row : r) {
-        int j = 0;
-        for (double v : row)
-            M(i, j++) = v;
-        ++i;
-    }
-    return M;
-}
+Mat pts(std::initializer_list<std::initializer_list<double>> r) { return matrixFromRows(r); }
 } // namespace
 
 std::vector<GalleryExample> builtinGallery()

@@ -21,6 +21,22 @@ void requireFiniteImpl(const M &m, const std::string &what)
 }
 } // namespace
 
+Mat matrixFromRows(std::initializer_list<std::initializer_list<double>> rows)
+{
+    const Eigen::Index cols = rows.size() ? Eigen::Index(rows.begin()->size()) : 0;
+    Mat M(Eigen::Index(rows.size()), cols);
+    Eigen::Index i = 0;
+    for (auto row : rows) {
+        if (Eigen::Index(row.size()) != cols)
+            throw InputError("matrix rows of different lengths");
+        Eigen::Index j = 0;
+        for (double v : row)
+            M(i, j++) = v;
+        ++i;
+    }
+    return M;
+}
+
 void requireFinite(const Mat &m, const std::string &what) { requireFiniteImpl(m, what); }
 void requireFinite(const CMat &m, const std::string &what) { requireFiniteImpl(m, what); }
 

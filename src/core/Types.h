@@ -26,6 +26,10 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// A matrix written row by row: matrixFromRows({{1, 0}, {0.5, 0.5}}). Rows must have equal
+// length (InputError otherwise).
+Mat matrixFromRows(std::initializer_list<std::initializer_list<double>> rows);
+
 // Throws InputError naming `what` when m holds a NaN or an infinity.
 void requireFinite(const Mat &m, const std::string &what);
 void requireFinite(const CMat &m, const std::string &what);

@@ -16,18 +16,7 @@ using namespace awb;
 
 namespace {
 
-Mat rows(std::initializer_list<std::initializer_list<double>> r)
-{
-    Mat M(r.size(), r.begin()->size());
-    int i = 0;
-    for (auto row : r) {
-        int j = 0;
-        for (double v : row)
-            M(i, j++) = v;
-        ++i;
-    }
-    return M;
-}
+Mat rows(std::initializer_list<std::initializer_list<double>> r) { return matrixFromRows(r); }
 
 std::string str(const Mat &m)
 {

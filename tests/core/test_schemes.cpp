@@ -13,18 +13,7 @@ using namespace awb;
 
 namespace {
 
-Mat rows(std::initializer_list<std::initializer_list<double>> r)
-{
-    Mat M(r.size(), r.begin()->size());
-    int i = 0;
-    for (auto row : r) {
-        int j = 0;
-        for (double v : row)
-            M(i, j++) = v;
-        ++i;
-    }
-    return M;
-}
+Mat rows(std::initializer_list<std::initializer_list<double>> r) { return matrixFromRows(r); }
 
 // Exact dyadic fractions: the printed matrices must come out to rounding error.
 constexpr double kExact = 1e-14;
