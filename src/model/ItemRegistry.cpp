@@ -1,6 +1,12 @@
 #include "model/ItemRegistry.h"
 
+#include "model/BcifsJunctionItem.h"
+#include "model/BezierUnionItem.h"
+#include "model/CifsItem.h"
+#include "model/ComplexBezierItem.h"
 #include "model/EigenvaluePlotItem.h"
+#include "model/FractalItem.h"
+#include "model/NormalVectorItem.h"
 #include "model/SubdivisionCurveItem.h"
 
 namespace awb {
@@ -10,6 +16,12 @@ ItemRegistry::ItemRegistry()
     // One line per item kind.
     add<SubdivisionCurveItem>();
     add<EigenvaluePlotItem>();
+    add<FractalItem>();
+    add<BezierUnionItem>();
+    add<NormalVectorItem>();
+    add<ComplexBezierItem>();
+    add<CifsItem>();
+    add<BcifsJunctionItem>();
 }
 
 const ItemRegistry &ItemRegistry::instance()

@@ -202,7 +202,8 @@ private slots:
         QTest::newRow("unknown type")
             << project(R"({"type": "teapot", "name": "t"})")
             << "item 1 (\"t\"): field \"type\": unknown item type \"teapot\"; this version "
-               "knows subdivision-curve, eigenvalue-plot";
+               "knows subdivision-curve, eigenvalue-plot, fractal, bezier-union, normal-vector, "
+               "complex-bezier, cifs, bcifs-junction";
         QTest::newRow("missing field")
             << project(R"({"type": "subdivision-curve", "name": "a",
                            "scheme": {"kind": "chaikin"}})")
@@ -401,7 +402,7 @@ private slots:
                     QVERIFY2(a->derivedIfs(), qPrintable(a->derivedError()));
             ++examples;
         }
-        QCOMPARE(examples, 4);
+        QCOMPARE(examples, 10);
     }
 };
 

@@ -1,0 +1,53 @@
+#pragma once
+// Document item "complex-bezier" (layer 2, model): a Bézier curve split at a complex parameter t
+// (004 §3.7). The control points are complex numbers x + iy; the core's complexBezierIfs()
+// gives the realified lifted IFS, whose attractor is the fractal "complex Bézier curve" when t
+// is hyperbolic (|t| < 1 and |1 - t| < 1).
+
+#include "model/AttractorItem.h"
+
+#include <complex>
+
+namespace awb {
+
+class ComplexBezierItem : public AttractorItem {
+    Q_OBJECT
+public:
+    ComplexBezierItem();
+
+    static QString staticType() { return QStringLiteral("complex-bezier"); }
+    static QString staticTypeName() { return tr("Complex Bézier curve"); }
+    QString type() const override { return staticType(); }
+    QString typeName() const override { return staticTypeName(); }
+
+    std::complex<double> t() const { return m_t; }
+    // Refused only when not finite: a t outside the discs is stored, and derivedError() says
+    // why there is no attractor (the user may be dragging t across the boundary).
+    MaybeProblem checkT(std::complex<double> t) const;
+    bool setT(std::complex<double> t, int gesture = 0);
+
+    // "t" (Complex).
+    QList<ParameterInfo> parameters() const override;
+    QVariant parameter(const QString &key) const override;
+    bool setParameter(const QString &key, const QVariant &value, int gesture = 0,
+                      QString *error = nullptr) override;
+
+    int mapCount() const override { return 2; }
+    int controlPointSetCount() const override { return 1; }
+
+    void write(QJsonObject &json) const override;
+    void read(const FieldReader &fields) override;
+
+signals:
+    void tChanged();
+
+protected:
+    DerivedIfs computeIfs() const override;
+    PointList &pointStorage(int) override { return m_points; }
+
+private:
+    std::complex<double> m_t{0.5, 0.5};
+    PointList m_points;
+};
+
+} // namespace awb
