@@ -1,0 +1,210 @@
+#include "gui/app/FigureSheet.h"
+
+#include "gui/views/AttractorView.h"
+#include "gui/views/SpectrumView.h"
+#include "model/AttractorItem.h"
+
+#include <QFileInfo>
+#include <QFontMetricsF>
+#include <QPageLayout>
+#include <QPainter>
+#include <QPdfWriter>
+#include <QPicture>
+#include <qcustomplot.h>
+#include <cmath>
+
+namespace awb {
+
+namespace {
+
+QString valueText(const ParameterInfo &p, const QVariant &v)
+{
+    switch (p.type) {
+    case ParameterInfo::Type::Choice: {
+        const int i = v.toInt();
+        return i >= 0 && i < p.choices.size() ? p.choices[i] : QString::number(i);
+    }
+    case ParameterInfo::Type::Complex: {
+        const QPointF z = v.toPointF();
+        return QStringLiteral("%1 %2 %3i")
+            .arg(z.x(), 0, 'g', 6)
+            .arg(z.y() < 0 ? QLatin1Char('-') : QLatin1Char('+'))
+            .arg(std::abs(z.y()), 0, 'g', 6);
+    }
+    case ParameterInfo::Type::Bool:
+        return v.toBool() ? FigureSheet::tr("yes") : FigureSheet::tr("no");
+    case ParameterInfo::Type::Integer: return QString::number(v.toInt());
+    case ParameterInfo::Type::Real: return QString::number(v.toDouble(), 'g', 8);
+    }
+    return v.toString();
+}
+
+} // namespace
+
+void paintSpectrum(SpectrumView *view, QPainter *painter, const QRectF &target)
+{
+    if (!view || target.isEmpty())
+        return;
+    // Record the plot at a pixel size like the screen's so fonts and markers keep their
+    // proportions, then scale the recording into the target.
+    const double aspect = target.width() / target.height();
+    const int h = 420, w = std::max(200, int(h * aspect));
+    QPicture picture;
+    {
+        QCPPainter recorder(&picture);
+        view->plot()->toPainter(&recorder, w, h);
+    }
+    painter->save();
+    painter->translate(target.topLeft());
+    painter->scale(target.width() / w, target.height() / h);
+    // Playing a picture scales it by the device's resolution over the recording's: undo that,
+    // the scale above already maps the recorded pixels onto the target.
+    if (QPaintDevice *device = painter->device()) {
+        const double k = double(picture.logicalDpiX()) / double(device->logicalDpiX());
+        const double l = double(picture.logicalDpiY()) / double(device->logicalDpiY());
+        painter->scale(k, l);
+    }
+    painter->drawPicture(0, 0, picture);
+    painter->restore();
+}
+
+FigureSheet::FigureSheet(Item *item, AttractorView *attractor, SpectrumView *spectrum)
+    : m_item(item), m_attractor(attractor), m_spectrum(spectrum)
+{
+}
+
+QStringList FigureSheet::caption() const
+{
+    if (!m_item)
+        return {tr("No item")};
+    QStringList lines;
+    lines << tr("%1 (%2)").arg(m_item->name(), m_item->typeName());
+    QStringList params;
+    for (const ParameterInfo &p : m_item->parameters())
+        params << QStringLiteral("%1 = %2").arg(p.label, valueText(p, m_item->parameter(p.key)));
+    if (const auto *a = qobject_cast<const AttractorItem *>(m_item)) {
+        params << tr("maps = %1").arg(a->mapCount());
+        if (a->controlPointSetCount() > 0)
+            params << tr("control points = %1").arg(a->controlPoints(0).size());
+        params << (a->algorithm().mode == AlgorithmSpec::Mode::Deterministic
+                       ? tr("depth = %1").arg(a->algorithm().depth)
+                       : tr("samples = %1").arg(a->algorithm().samples));
+    }
+    lines << params.join(QStringLiteral(";  "));
+    return lines;
+}
+
+QStringList FigureSheet::matrixLines() const
+{
+    QStringList lines;
+    const auto *a = qobject_cast<const AttractorItem *>(m_item);
+    const auto d = a ? a->derivedIfs() : nullptr;
+    if (!d)
+        return lines;
+    const auto addMatrix = [&lines](const QString &name, const Mat &M) {
+        lines << name + QLatin1Char(':');
+        for (Eigen::Index r = 0; r < M.rows(); ++r) {
+            QString row;
+            for (Eigen::Index c = 0; c < M.cols(); ++c) {
+                // Rounding noise (1e-17) would hide the structure of the matrix.
+                const double v = std::abs(M(r, c)) < 1e-12 ? 0.0 : M(r, c);
+                row += QStringLiteral("%1").arg(v, 10, 'g', 5);
+            }
+            lines << row;
+        }
+        lines << QString();
+    };
+    for (std::size_t i = 0; i < d->S.real.size(); ++i)
+        addMatrix(QStringLiteral("S_%1").arg(i + 1), d->S.real[i]);
+    if (d->subdivision)
+        for (std::size_t i = 0; i < d->subdivision->lifted.size(); ++i)
+            addMatrix(QStringLiteral("M_%1").arg(i + 1), d->subdivision->lifted[i].M);
+    if (d->S.real.empty())
+        for (int i = 0; i < d->ifs.size(); ++i)
+            addMatrix(QStringLiteral("A_%1").arg(i + 1), d->ifs.maps[std::size_t(i)].A);
+    return lines;
+}
+
+void FigureSheet::paint(QPainter *painter, const QRectF &page) const
+{
+    painter->save();
+    const double unit = page.width() / 100.0;  // 1% of the page width
+    QFont title = painter->font();
+    title.setPixelSize(std::max(8, int(unit * 1.8)));
+    title.setBold(true);
+    QFont body = title;
+    body.setBold(false);
+    body.setPixelSize(std::max(6, int(unit * 1.2)));
+    const QStringList cap = caption();
+
+    // Caption at the top.
+    painter->setPen(Qt::black);
+    painter->setFont(title);
+    QRectF r(page.left(), page.top(), page.width(), unit * 3);
+    painter->drawText(r, Qt::AlignLeft | Qt::AlignVCenter, cap.value(0));
+    painter->setFont(body);
+    QRectF capRect(page.left(), r.bottom(), page.width(), unit * 5);
+    painter->drawText(capRect, Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap,
+                      cap.mid(1).join(QLatin1Char('\n')));
+
+    // Attractor left (large), spectrum and matrices right.
+    const double top = capRect.bottom() + unit;
+    const QRectF figure(page.left(), top, page.width() * 0.6, page.bottom() - top);
+    painter->setPen(QPen(Qt::gray, 0));
+    painter->drawRect(figure);
+    if (m_attractor)
+        m_attractor->renderTo(painter, figure.adjusted(1, 1, -1, -1));
+    const double rightX = figure.right() + unit * 2;
+    const QRectF spec(rightX, top, page.right() - rightX, (page.bottom() - top) * 0.5);
+    paintSpectrum(m_spectrum, painter, spec);
+
+    QFont mono = body;
+    mono.setFamily(QStringLiteral("monospace"));
+    mono.setStyleHint(QFont::TypeWriter);
+    const QStringList lines = matrixLines();
+    QRectF text(rightX, spec.bottom() + unit, spec.width(), page.bottom() - spec.bottom() - unit);
+    // Shrink the text until the matrices fit their box.
+    int px = body.pixelSize();
+    for (; px > 3; --px) {
+        mono.setPixelSize(px);
+        const QFontMetricsF fm(mono);
+        double widest = 0;
+        for (const QString &l : lines)
+            widest = std::max(widest, fm.horizontalAdvance(l));
+        if (widest <= text.width() && fm.lineSpacing() * lines.size() <= text.height())
+            break;
+    }
+    painter->setFont(mono);
+    painter->setPen(Qt::black);
+    painter->drawText(text, Qt::AlignLeft | Qt::AlignTop, lines.join(QLatin1Char('\n')));
+    painter->restore();
+}
+
+bool FigureSheet::print(QPagedPaintDevice *device) const
+{
+    QPainter painter;
+    if (!painter.begin(device))
+        return false;
+    // The printable area in device pixels: the printer's resolution applies.
+    const QRectF page = device->pageLayout().paintRectPixels(device->logicalDpiX());
+    paint(&painter, QRectF(QPointF(0, 0), page.size()));
+    return painter.end();
+}
+
+bool FigureSheet::writePdf(const QString &fileName, QString *error) const
+{
+    QPdfWriter pdf(fileName);
+    pdf.setResolution(300);
+    pdf.setPageLayout(QPageLayout(QPageSize(QPageSize::A4), QPageLayout::Landscape,
+                                  QMarginsF(12, 12, 12, 12), QPageLayout::Millimeter));
+    pdf.setTitle(caption().value(0));
+    pdf.setCreator(QCoreApplication::applicationName());
+    if (!print(&pdf)) {
+        if (error)
+            *error = tr("Cannot write %1.").arg(QFileInfo(fileName).fileName());
+        return false;
+    }
+    return true;
+}
+
+} // namespace awb

@@ -1,0 +1,47 @@
+#pragma once
+// FigureSheet: the printed figure of the current item, one page: a caption (item name, scheme,
+// parameters), the attractor with its control polygon, the spectrum plot and the matrices.
+// It paints on any QPainter (printer, print preview, PDF writer, SVG), keeping vector content
+// vector: the attractor's overlays come from AttractorView::renderTo, the spectrum plot is
+// recorded as a QPicture of QCustomPlot's own drawing, and the matrices are text.
+#include <QCoreApplication>
+#include <QRectF>
+#include <QString>
+#include <QStringList>
+
+class QPainter;
+class QPagedPaintDevice;
+
+namespace awb {
+
+class AttractorView;
+class Item;
+class MatrixView;
+class SpectrumView;
+
+class FigureSheet {
+    Q_DECLARE_TR_FUNCTIONS(awb::FigureSheet)
+public:
+    FigureSheet(Item *item, AttractorView *attractor, SpectrumView *spectrum);
+
+    // The caption's lines: item name and kind, then "label = value" of every parameter.
+    QStringList caption() const;
+    // Paints the sheet into `page` (device coordinates of `painter`).
+    void paint(QPainter *painter, const QRectF &page) const;
+    // Paints one page on a printer or PDF writer (begins and ends its own painter).
+    bool print(QPagedPaintDevice *device) const;
+    // Writes the sheet as a one-page A4 landscape PDF. False with a message on failure.
+    bool writePdf(const QString &fileName, QString *error = nullptr) const;
+
+private:
+    QStringList matrixLines() const;
+
+    Item *m_item;
+    AttractorView *m_attractor;
+    SpectrumView *m_spectrum;
+};
+
+// Paints the spectrum plot into `target` as vectors (QCustomPlot records into a QPicture).
+void paintSpectrum(SpectrumView *view, QPainter *painter, const QRectF &target);
+
+} // namespace awb

@@ -1,0 +1,450 @@
+#include "gui/app/ItemController.h"
+
+#include "core/Attractor.h"
+#include "core/Geometry.h"
+#include "core/Scheme.h"
+#include "core/Spectrum.h"
+#include "gui/views/AnalysisCharts.h"
+#include "gui/views/AttractorView.h"
+#include "gui/views/MatrixView.h"
+#include "gui/views/SpectrumView.h"
+#include "model/AttractorItem.h"
+#include "model/Project.h"
+#include "model/SubdivisionCurveItem.h"
+
+#include <QColor>
+#include <algorithm>
+#include <cmath>
+
+namespace awb {
+
+// What the worker thread computes for the analysis charts.
+struct AnalysisResult {
+    QList<AnalysisCharts::DistanceSeries> distances;
+    double rate = 0.0;
+    std::vector<double> lengths;
+    double exactLength = 0.0;
+    BoxDimension box;
+    bool cancelled = false;
+};
+
+namespace {
+
+constexpr int exactSamples = 600;
+// Deterministic levels are analysed while they have at most this many start-set images: the
+// charts must come quickly, even for many maps.
+constexpr double analysisImages = 60000.0;
+
+Mat planePoints(const Ifs &ifs, const StartSet &start, int depth, const std::atomic<bool> *cancel)
+{
+    if (ifs.views.empty())
+        return {};
+    PointCollector collector(ifs.views.front(), 2'000'000);
+    IterationControl control;
+    control.cancel = cancel;
+    iterate(ifs, start, depth, collector, control);
+    return collector.points();
+}
+
+std::shared_ptr<const CurveScheme> realScheme(const Item *item)
+{
+    const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item);
+    if (!curve || curve->scheme().isComplex())
+        return nullptr;
+    try {
+        return std::shared_ptr<const CurveScheme>(curve->scheme().makeScheme());
+    } catch (const std::exception &) {
+        return nullptr;
+    }
+}
+
+QList<NamedMatrix> namedMatrices(const DerivedIfs &d, bool sEditable)
+{
+    QList<NamedMatrix> list;
+    for (std::size_t i = 0; i < d.S.real.size(); ++i)
+        list.append({QStringLiteral("S_%1").arg(i + 1), d.S.real[i], -1, sEditable});
+    if (d.subdivision) {
+        const auto &lifted = d.subdivision->lifted;
+        for (std::size_t i = 0; i < lifted.size(); ++i)
+            list.append({QStringLiteral("M_%1").arg(i + 1), lifted[i].M, int(lifted[i].A.rows()),
+                         false});
+    } else if (d.S.real.empty()) {
+        // Items without subdivision matrices (fractals, automata): their affine maps.
+        for (int i = 0; i < d.ifs.size(); ++i) {
+            const AffineMap &f = d.ifs.maps[std::size_t(i)];
+            Mat M = Mat::Zero(f.dim() + 1, f.dim() + 1);
+            M.topLeftCorner(f.dim(), f.dim()) = f.A;
+            M.block(f.dim(), 0, 1, f.dim()) = f.b;
+            M(f.dim(), f.dim()) = 1.0;
+            list.append({QStringLiteral("f_%1").arg(i + 1), M, f.dim(), false});
+        }
+    }
+    return list;
+}
+
+QList<MapSpectrum> mapSpectra(const DerivedIfs &d)
+{
+    QList<MapSpectrum> maps;
+    const auto contractivityOf = [&](int i) {
+        if (int(d.A.real.size()) > i)
+            return contractivity(d.A.real[std::size_t(i)]);
+        if (int(d.A.complex.size()) > i)
+            return contractivity(d.A.complex[std::size_t(i)]);
+        return contractivity(d.ifs.effectiveLinearPart(i));
+    };
+    if (!d.S.real.empty() || !d.S.complex.empty()) {
+        for (int i = 0; i < d.S.count(); ++i) {
+            MapSpectrum m;
+            m.label = QStringLiteral("S_%1").arg(i + 1);
+            m.spectrum = d.S.isComplex() ? spectrum(d.S.complex[std::size_t(i)])
+                                         : spectrum(d.S.real[std::size_t(i)]);
+            m.subdominant = subdominant(m.spectrum, true);
+            m.contractivity = contractivityOf(i);
+            maps.append(m);
+        }
+    } else {
+        for (int i = 0; i < d.ifs.size(); ++i) {
+            MapSpectrum m;
+            m.label = QStringLiteral("A_%1").arg(i + 1);
+            m.spectrum = spectrum(d.ifs.effectiveLinearPart(i));
+            m.subdominant = subdominant(m.spectrum, false);
+            m.contractivity = contractivityOf(i);
+            maps.append(m);
+        }
+    }
+    return maps;
+}
+
+AttractorColorMode colorMode(StyleSpec::ColorBy by)
+{
+    switch (by) {
+    case StyleSpec::ColorBy::Map: return AttractorColorMode::ByMap;
+    case StyleSpec::ColorBy::Address: return AttractorColorMode::ByAddress;
+    case StyleSpec::ColorBy::None: break;
+    }
+    return AttractorColorMode::Single;
+}
+
+} // namespace
+
+ItemController::ItemController(AttractorView *attractor, MatrixView *matrices,
+                               SpectrumView *spectrum, AnalysisCharts *charts, QObject *parent)
+    : QObject(parent), m_attractor(attractor), m_matrices(matrices), m_spectrum(spectrum),
+      m_charts(charts)
+{
+    m_refreshTimer.setSingleShot(true);
+    m_refreshTimer.setInterval(0);
+    connect(&m_refreshTimer, &QTimer::timeout, this, &ItemController::refreshNow);
+    // The analysis waits until a drag pauses: it is the slow part.
+    m_analysisTimer.setSingleShot(true);
+    m_analysisTimer.setInterval(250);
+    connect(&m_analysisTimer, &QTimer::timeout, this, &ItemController::startAnalysis);
+
+    connect(m_attractor, &AttractorView::controlPointPressed, this,
+            &ItemController::onControlPressed);
+    connect(m_attractor, &AttractorView::controlPointDragged, this,
+            &ItemController::onControlDragged);
+    connect(m_attractor, &AttractorView::controlPointReleased, this,
+            &ItemController::onControlReleased);
+    connect(m_attractor, &AttractorView::startVertexPressed, this,
+            &ItemController::onStartPressed);
+    connect(m_attractor, &AttractorView::startVertexDragged, this,
+            &ItemController::onStartDragged);
+    connect(m_attractor, &AttractorView::startVertexReleased, this,
+            &ItemController::onStartReleased);
+    connect(m_matrices, &MatrixView::cellEdited, this, &ItemController::onCellEdited);
+}
+
+ItemController::~ItemController()
+{
+    cancelAnalysis();
+}
+
+void ItemController::setItem(Item *item)
+{
+    for (const auto &c : m_connections)
+        disconnect(c);
+    m_connections.clear();
+    m_item = item;
+    m_gesture = 0;
+    if (item) {
+        m_connections << connect(item, &Item::derivedChanged, this,
+                                 &ItemController::scheduleRefresh);
+        m_connections << connect(item, &Item::changed, this, &ItemController::scheduleRefresh);
+    }
+    m_attractor->setAutoFit(true);
+    refreshNow();
+    m_attractor->fitToContents();
+}
+
+void ItemController::setSubdivisionSteps(int steps)
+{
+    m_subdivisionSteps = std::max(0, steps);
+    refreshNow();
+}
+
+void ItemController::scheduleRefresh()
+{
+    // During a drag the views follow every move at once (live update); otherwise coalesce.
+    if (m_gesture != 0)
+        refreshNow();
+    else
+        m_refreshTimer.start();
+}
+
+void ItemController::clearViews()
+{
+    m_attractor->setIfs(nullptr, StartSet{});
+    m_attractor->setControlPoints(Mat());
+    m_attractor->setExactCurve(Mat());
+    m_attractor->setSubdivisionPolygons({});
+    m_matrices->setMatrices({});
+    m_spectrum->setMaps({});
+    m_charts->setDistances({});
+    m_charts->setPolygonLengths({});
+    m_charts->setBoxCounting(BoxDimension{});
+    m_charts->setModuli({});
+}
+
+void ItemController::refreshNow()
+{
+    m_refreshTimer.stop();
+    auto *item = qobject_cast<AttractorItem *>(m_item.data());
+    QString problem;
+    if (!item) {
+        clearViews();
+        problem = m_item ? tr("%1 has no attractor to draw.").arg(m_item->name()) : QString();
+    } else if (auto d = item->derivedIfs(); !d) {
+        clearViews();
+        problem = tr("%1 cannot be drawn: %2").arg(item->name(), item->derivedError());
+    } else {
+        try {
+            m_attractor->setIfs(std::make_shared<const Ifs>(d->ifs), item->coreStartSet(*d));
+        } catch (const std::exception &e) {
+            problem = tr("Start set: %1").arg(QString::fromStdString(e.what()));
+            m_attractor->setIfs(nullptr, StartSet{});
+        }
+        const Mat P = item->controlPointSetCount() > 0 ? toMatrix(item->controlPoints(0)) : Mat();
+        m_attractor->setControlPoints(P, false);
+        m_attractor->setControlPointsEditable(item->controlPointSetCount() > 0);
+
+        AttractorView::RenderSettings rs = m_attractor->renderSettings();
+        const AlgorithmSpec &alg = item->algorithm();
+        rs.mode = alg.mode == AlgorithmSpec::Mode::Random ? RenderRequest::Mode::Random
+                                                           : RenderRequest::Mode::Deterministic;
+        rs.depth = m_maxDepth > 0 ? std::min(alg.depth, m_maxDepth) : alg.depth;
+        rs.samples = std::uint64_t(std::max<qint64>(1, alg.samples));
+        rs.seed = std::uint64_t(alg.seed);
+        rs.colorMode = colorMode(item->style().colorBy);
+        rs.prefixLength = std::clamp(item->style().prefixLength, 1, 3);
+        rs.dotRadius = std::clamp(int(std::lround(item->style().pointSize / 2.0)), 0, 4);
+        rs.palette.clear();
+        for (const QString &c : item->style().colors)
+            rs.palette.append(QColor(c));
+        if (rs.palette.isEmpty())
+            rs.palette = m_palette;
+        m_attractor->setRenderSettings(rs);
+
+        const auto scheme = realScheme(item);
+        Mat exact;
+        std::vector<Mat> polygons;
+        if (scheme && P.rows() > 0) {
+            try {
+                if (auto c = scheme->exactCurve(P, exactSamples))
+                    exact = *c;
+                for (int k = 1; k <= m_subdivisionSteps; ++k)
+                    polygons.push_back(subdivide(*scheme, P, k));
+            } catch (const std::exception &) {
+                // No overlay: the attractor itself shows what the scheme does.
+            }
+        }
+        if (d->polygon)
+            polygons.push_back(*d->polygon);
+        m_attractor->setExactCurve(exact);
+        m_attractor->setSubdivisionPolygons(polygons);
+
+        const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item);
+        const bool ownMatrices = curve && curve->scheme().kind == SchemeSpec::Kind::Matrices;
+        m_matrices->setEditable(ownMatrices);
+        m_matrices->setMatrices(namedMatrices(*d, ownMatrices));
+        const QList<MapSpectrum> spectra = mapSpectra(*d);
+        m_spectrum->setMaps(spectra);
+        QList<AnalysisCharts::MapModuli> moduli;
+        for (const MapSpectrum &m : spectra) {
+            AnalysisCharts::MapModuli mm{m.label, {}};
+            for (const Complex &z : m.spectrum.values)
+                mm.moduli.push_back(std::abs(z));
+            moduli.append(mm);
+        }
+        m_charts->setModuli(moduli);
+        if (!d->note.isEmpty())
+            problem = d->note;
+        m_analysisTimer.start();
+    }
+    if (problem != m_problem) {
+        m_problem = problem;
+        emit problemChanged(problem);
+    }
+}
+
+void ItemController::cancelAnalysis()
+{
+    m_analysisTimer.stop();
+    m_cancel = true;
+    if (m_worker.joinable())
+        m_worker.join();
+    m_cancel = false;
+}
+
+void ItemController::startAnalysis()
+{
+    cancelAnalysis();
+    auto *item = qobject_cast<AttractorItem *>(m_item.data());
+    if (!item)
+        return;
+    const auto d = item->derivedIfs();
+    if (!d)
+        return;
+    StartSet start;
+    try {
+        start = item->coreStartSet(*d);
+    } catch (const std::exception &) {
+        return;
+    }
+    const auto scheme = realScheme(item);
+    const Mat P = item->controlPointSetCount() > 0 ? toMatrix(item->controlPoints(0)) : Mat();
+    const int maxDepth = item->algorithm().depth;
+    const quint64 ticket = ++m_analysisTicket;
+    m_workerDone = false;
+    emit analysisStarted();
+    const QString seriesName = tr("F^k(X0)");
+    m_worker = std::thread([this, d, start, scheme, P, maxDepth, ticket, seriesName] {
+        auto result = std::make_shared<AnalysisResult>();
+        try {
+            Mat exact;
+            if (scheme && P.rows() > 0) {
+                if (auto c = scheme->exactCurve(P, exactSamples))
+                    exact = *c;
+                for (int k = 0; k <= 8 && !m_cancel; ++k) {
+                    const Mat level = k == 0 ? P : subdivide(*scheme, P, k);
+                    result->lengths.push_back(polygonLength(level));
+                    if (level.rows() > 20000)
+                        break;
+                }
+                if (exact.rows() > 1)
+                    result->exactLength = polygonLength(exact);
+            }
+            AnalysisCharts::DistanceSeries series{seriesName, {}, {}};
+            Mat deepest;
+            for (int k = 0; k <= maxDepth && !m_cancel && !d->iterate; ++k) {
+                if (imageCount(d->ifs, k) * double(std::max<Eigen::Index>(1, start.vertices.rows()))
+                    > analysisImages)
+                    break;
+                deepest = planePoints(d->ifs, start, k, &m_cancel);
+                if (exact.rows() > 1 && deepest.rows() > 0) {
+                    series.depth.push_back(k);
+                    series.distance.push_back(hausdorffToCurve(deepest, exact));
+                }
+                QMetaObject::invokeMethod(this, [this, k, maxDepth] {
+                    emit analysisProgress(double(k + 1) / double(maxDepth + 2));
+                }, Qt::QueuedConnection);
+            }
+            if (!series.depth.empty())
+                result->distances.append(series);
+            if (d->subdivision && !d->A.real.empty()) {
+                double rate = 0.0;
+                for (const Mat &A : d->A.real)
+                    rate = std::max(rate, spectrum(A).spectralRadius);
+                result->rate = rate < 1.0 ? rate : 0.0;
+            }
+            if (deepest.rows() >= 16 && !m_cancel)
+                result->box = boxCountingDimension(deepest);
+        } catch (const std::exception &e) {
+            result->box.note = e.what();
+        }
+        result->cancelled = m_cancel;
+        m_workerDone = true;
+        QMetaObject::invokeMethod(this, [this, result, ticket] {
+            if (ticket == m_analysisTicket)
+                applyAnalysis(result);
+        }, Qt::QueuedConnection);
+    });
+}
+
+void ItemController::applyAnalysis(const std::shared_ptr<AnalysisResult> &result)
+{
+    if (!result->cancelled) {
+        m_charts->setDistances(result->distances, result->rate);
+        m_charts->setPolygonLengths(result->lengths, result->exactLength);
+        m_charts->setBoxCounting(result->box);
+    }
+    emit analysisFinished(result->cancelled);
+}
+
+void ItemController::onControlPressed(int)
+{
+    // The view must not refit under the user's hand while the curve changes shape.
+    m_attractor->setAutoFit(false);
+    if (m_item && m_item->project())
+        m_gesture = m_item->project()->beginGesture();
+}
+
+void ItemController::onControlDragged(int index, const QPointF &world)
+{
+    if (auto *item = qobject_cast<AttractorItem *>(m_item.data()))
+        item->moveControlPoint(index, {world.x(), world.y()}, m_gesture);
+}
+
+void ItemController::onControlReleased(int index, const QPointF &start, const QPointF &end)
+{
+    if (start != end)
+        onControlDragged(index, end);
+    m_gesture = 0;
+}
+
+void ItemController::onStartPressed(int)
+{
+    m_attractor->setAutoFit(false);
+    if (m_item && m_item->project())
+        m_gesture = m_item->project()->beginGesture();
+}
+
+void ItemController::onStartDragged(int index, const QPointF &world)
+{
+    auto *item = qobject_cast<AttractorItem *>(m_item.data());
+    if (!item)
+        return;
+    StartSetSpec s = item->startSet();
+    if (index < 0 || index >= int(s.points.size()))
+        return;
+    s.points[std::size_t(index)] = {world.x(), world.y()};
+    item->setStartSet(s, m_gesture);
+}
+
+void ItemController::onStartReleased(int index, const QPointF &start, const QPointF &end)
+{
+    if (start != end)
+        onStartDragged(index, end);
+    m_gesture = 0;
+}
+
+void ItemController::onCellEdited(int matrix, int row, int column, double value)
+{
+    auto *curve = qobject_cast<SubdivisionCurveItem *>(m_item.data());
+    if (!curve || curve->scheme().kind != SchemeSpec::Kind::Matrices)
+        return;
+    SchemeSpec s = curve->scheme();
+    if (matrix < 0 || matrix >= int(s.matrices.size()))
+        return;
+    s.matrices[std::size_t(matrix)](row, column) = value;
+    if (auto problem = curve->checkScheme(s)) {
+        refreshNow(); // the table shows the model's value again
+        emit editRefused(tr("S_%1 (%2, %3) = %4 was refused: %5")
+                             .arg(matrix + 1).arg(row + 1).arg(column + 1).arg(value)
+                             .arg(problem->message));
+        return;
+    }
+    curve->setScheme(s);
+}
+
+} // namespace awb

@@ -1,0 +1,93 @@
+#pragma once
+// ItemController: binds the current item of the project to the views (attractor, matrices,
+// spectrum, analysis charts). It reads the item's derived data whenever the item changes and
+// turns view gestures (control point drags, start vertex drags, matrix cell edits) into the
+// item's undoable setters: a drag is one gesture and so one undo step. It owns no data: the
+// item stays the single source of truth. Heavy analysis (distances, box counting) runs on a
+// worker thread that a newer edit cancels.
+#include "core/Types.h"
+#include "model/Item.h"
+#include <QObject>
+#include <QPointer>
+#include <QTimer>
+#include <atomic>
+#include <memory>
+#include <thread>
+
+namespace awb {
+
+class AnalysisCharts;
+class AttractorItem;
+class AttractorView;
+class Item;
+class MatrixView;
+class Messages;
+class SpectrumView;
+struct AnalysisResult;
+
+class ItemController : public QObject {
+    Q_OBJECT
+public:
+    ItemController(AttractorView *attractor, MatrixView *matrices, SpectrumView *spectrum,
+                   AnalysisCharts *charts, QObject *parent = nullptr);
+    ~ItemController() override;
+
+    void setItem(Item *item);
+    Item *item() const { return m_item; }
+    // Default render depth when an item asks for more than the preferences allow (0: none).
+    void setMaxDepth(int depth) { m_maxDepth = depth; refreshNow(); }
+    void setPalette(const QList<QColor> &palette) { m_palette = palette; refreshNow(); }
+    // Classic subdivision polygons beside the IFS: how many steps (0 hides them).
+    void setSubdivisionSteps(int steps);
+    int subdivisionSteps() const { return m_subdivisionSteps; }
+    // Pushes the item's current data to every view at once (normally deferred to the event
+    // loop so that a burst of edits costs one update).
+    void refreshNow();
+    // Whether the analysis worker is running.
+    bool analysisRunning() const { return m_worker.joinable() && !m_workerDone; }
+    void cancelAnalysis();
+
+    // The text shown when the item cannot be drawn (empty when it can).
+    QString problem() const { return m_problem; }
+
+signals:
+    void problemChanged(const QString &problem);
+    // An edit from a view was refused by the item (the message says why).
+    void editRefused(const QString &message);
+    void analysisStarted();
+    void analysisProgress(double fraction);
+    void analysisFinished(bool cancelled);
+
+private:
+    void scheduleRefresh();
+    void clearViews();
+    void startAnalysis();
+    void applyAnalysis(const std::shared_ptr<AnalysisResult> &result);
+    void onControlPressed(int index);
+    void onControlDragged(int index, const QPointF &world);
+    void onControlReleased(int index, const QPointF &start, const QPointF &end);
+    void onStartPressed(int index);
+    void onStartDragged(int index, const QPointF &world);
+    void onStartReleased(int index, const QPointF &start, const QPointF &end);
+    void onCellEdited(int matrix, int row, int column, double value);
+
+    AttractorView *m_attractor;
+    MatrixView *m_matrices;
+    SpectrumView *m_spectrum;
+    AnalysisCharts *m_charts;
+    QPointer<Item> m_item;
+    QList<QMetaObject::Connection> m_connections;
+    QTimer m_refreshTimer;
+    QTimer m_analysisTimer;
+    int m_gesture = 0;
+    int m_maxDepth = 0;
+    int m_subdivisionSteps = 0;
+    QList<QColor> m_palette;
+    QString m_problem;
+    std::thread m_worker;
+    std::atomic<bool> m_cancel{false};
+    std::atomic<bool> m_workerDone{true};
+    quint64 m_analysisTicket = 0;
+};
+
+} // namespace awb

@@ -1,0 +1,848 @@
+#include "gui/app/MainWindow.h"
+
+#include "gui/app/FigureSheet.h"
+#include "gui/app/ItemController.h"
+#include "gui/app/Messages.h"
+#include "gui/app/PropertiesDock.h"
+#include "gui/views/AnalysisCharts.h"
+#include "gui/views/AttractorView.h"
+#include "gui/views/MatrixView.h"
+#include "gui/views/SpectrumView.h"
+#include "model/AttractorItem.h"
+#include "model/ItemRegistry.h"
+#include "model/Project.h"
+#include "model/ProjectIO.h"
+#include "model/ProjectTreeModel.h"
+#include "model/Recovery.h"
+#include "model/SubdivisionCurveItem.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QChartView>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QImage>
+#include <QJsonArray>
+#include <QLabel>
+#include <QMenuBar>
+#include <QPainter>
+#include <QPdfWriter>
+#include <QPrintDialog>
+#include <QPrintPreviewDialog>
+#include <QPrinter>
+#include <QProgressBar>
+#include <QScreen>
+#include <QSettings>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QSvgGenerator>
+#include <QTabWidget>
+#include <QToolBar>
+#include <QToolButton>
+#include <QTreeView>
+#include <QUndoView>
+#include <cmath>
+
+// Resources of a static library are only registered when asked for (outside any namespace).
+static void initResources()
+{
+    Q_INIT_RESOURCE(resources);
+}
+
+namespace awb {
+
+namespace {
+
+constexpr int maxRecentFiles = 8;
+
+QString fileFilter()
+{
+    return MainWindow::tr("Attractor Workbench projects (*.awb);;All files (*)");
+}
+
+} // namespace
+
+MainWindow::MainWindow(Messages *messages, const QString &recoveryDirectory, QWidget *parent)
+    : QMainWindow(parent), m_messages(messages), m_project(std::make_unique<Project>()),
+      m_recoveryDirectory(recoveryDirectory.isEmpty() ? Recovery::defaultDirectory()
+                                                      : recoveryDirectory),
+      m_preferences(Preferences::load())
+{
+    if (!m_messages) {
+        m_ownMessages = std::make_unique<Messages>();
+        m_messages = m_ownMessages.get();
+    }
+    initResources();
+    setObjectName(QStringLiteral("MainWindow"));
+    setWindowIcon(QIcon(QStringLiteral(":/icons/attractor-workbench.svg")));
+    setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
+    createViews();
+    createActions();
+    createDocks();
+    createMenus();
+
+    connect(m_project.get(), &Project::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(m_project.get(), &Project::fileNameChanged, this, &MainWindow::updateTitle);
+    connect(m_project.get(), &Project::aboutToReset, this, [this] { setCurrentItem(nullptr); });
+    connect(m_project.get(), &Project::reset, this, &MainWindow::selectFirstItem);
+    connect(m_project.get(), &Project::itemInserted, this,
+            [this](Item *item) { setCurrentItem(item); });
+    connect(m_project.get(), &Project::itemAboutToBeRemoved, this, [this](Item *item) {
+        if (m_current && (m_current == item || item->isAncestorOf(m_current)))
+            setCurrentItem(nullptr);
+    });
+    connect(m_project.get(), &Project::itemRemoved, this, [this] {
+        if (!m_current)
+            selectFirstItem();
+    });
+    connect(m_project->undoStack(), &QUndoStack::indexChanged, this, &MainWindow::updateActions);
+
+    m_recovery = std::make_unique<Recovery>(m_project.get(), m_recoveryDirectory);
+    connect(m_recovery.get(), &Recovery::autosaveFailed, this, [this](const QString &message) {
+        statusBar()->showMessage(tr("Autosave failed: %1").arg(message), 8000);
+    });
+    applyPreferences(m_preferences);
+
+    // A first size that uses most of the screen; the saved geometry wins when there is one.
+    if (const QScreen *screen = QGuiApplication::primaryScreen())
+        resize(screen->availableSize() * 0.9);
+    else
+        resize(1400, 900);
+    m_defaultState = saveState();
+    QSettings settings;
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    updateRecentMenu();
+    newProject();
+}
+
+MainWindow::~MainWindow()
+{
+    // The controller and the properties read the items: unbind before the project goes.
+    m_controller->setItem(nullptr);
+    m_properties->setItem(nullptr);
+    // The project (a member) dies before the child widgets: detach the views that read it.
+    m_tree->setModel(nullptr);
+    delete m_treeModel;
+    m_undoView->setStack(nullptr);
+    m_recovery.reset();
+}
+
+QAction *MainWindow::action(const QString &objectName) const
+{
+    return findChild<QAction *>(objectName);
+}
+
+Item *MainWindow::currentItem() const { return m_current; }
+
+void MainWindow::createViews()
+{
+    m_attractor = new AttractorView;
+    m_attractor->setObjectName(QStringLiteral("attractorView"));
+    setCentralWidget(m_attractor);
+    m_matrices = new MatrixView;
+    m_spectrum = new SpectrumView;
+    m_charts = new AnalysisCharts;
+    m_properties = new PropertiesWidget(m_messages);
+    m_treeModel = new ProjectTreeModel(m_project.get(), this);
+    m_tree = new QTreeView;
+    m_tree->setModel(m_treeModel);
+    m_tree->setHeaderHidden(false);
+    m_tree->header()->setSectionResizeMode(0, QHeaderView::Stretch);
+    m_tree->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+    m_tree->header()->setStretchLastSection(false);
+    m_tree->setEditTriggers(QAbstractItemView::EditKeyPressed | QAbstractItemView::DoubleClicked);
+    connect(m_tree->selectionModel(), &QItemSelectionModel::currentChanged, this,
+            [this](const QModelIndex &index) {
+                Item *item = m_treeModel->itemAt(index);
+                if (item != m_current)
+                    setCurrentItem(item);
+            });
+    m_undoView = new QUndoView(m_project->undoStack());
+    m_undoView->setEmptyLabel(tr("<original>"));
+    m_controller = new ItemController(m_attractor, m_matrices, m_spectrum, m_charts, this);
+
+    // Status bar: cursor position, problems, long-work progress with a cancel button.
+    m_cursorLabel = new QLabel;
+    m_cursorLabel->setMinimumWidth(180);
+    m_problemLabel = new QLabel;
+    m_progress = new QProgressBar;
+    m_progress->setRange(0, 100);
+    m_progress->setMaximumWidth(160);
+    m_progress->setVisible(false);
+    m_cancel = new QToolButton;
+    m_cancel->setText(tr("Cancel"));
+    m_cancel->setToolTip(tr("Cancel the analysis"));
+    m_cancel->setVisible(false);
+    statusBar()->addWidget(m_problemLabel, 1);
+    statusBar()->addPermanentWidget(m_progress);
+    statusBar()->addPermanentWidget(m_cancel);
+    statusBar()->addPermanentWidget(m_cursorLabel);
+    connect(m_cancel, &QToolButton::clicked, m_controller, &ItemController::cancelAnalysis);
+    connect(m_controller, &ItemController::analysisStarted, this, [this] {
+        m_progress->setValue(0);
+        m_progress->setFormat(tr("Analysis %p%"));
+        m_progress->setVisible(true);
+        m_cancel->setVisible(true);
+    });
+    connect(m_controller, &ItemController::analysisProgress, this,
+            [this](double f) { m_progress->setValue(int(f * 100)); });
+    connect(m_controller, &ItemController::analysisFinished, this, [this](bool cancelled) {
+        m_progress->setVisible(false);
+        m_cancel->setVisible(false);
+        if (cancelled)
+            statusBar()->showMessage(tr("Analysis cancelled."), 4000);
+    });
+    connect(m_controller, &ItemController::problemChanged, m_problemLabel, &QLabel::setText);
+    connect(m_controller, &ItemController::editRefused, this, [this](const QString &message) {
+        m_messages->error(this, tr("Edit refused"), message);
+    });
+    connect(m_attractor, &AttractorView::cursorMoved, this, [this](const QPointF &w) {
+        m_cursorLabel->setText(tr("x = %1, y = %2").arg(w.x(), 0, 'g', 5).arg(w.y(), 0, 'g', 5));
+    });
+    connect(m_attractor, &AttractorView::cursorLeft, m_cursorLabel, &QLabel::clear);
+    connect(m_attractor, &AttractorView::renderFailed, this, [this](const QString &message) {
+        statusBar()->showMessage(tr("Drawing failed: %1").arg(message), 8000);
+    });
+}
+
+void MainWindow::createActions()
+{
+    const auto make = [this](const QString &name, const QString &text, const QString &icon,
+                             QKeySequence key, auto slot) {
+        auto *a = new QAction(QIcon::fromTheme(icon), text, this);
+        a->setObjectName(name);
+        if (!key.isEmpty())
+            a->setShortcut(key);
+        connect(a, &QAction::triggered, this, slot);
+        return a;
+    };
+    make(QStringLiteral("actionNew"), tr("&New"), QStringLiteral("document-new"),
+         QKeySequence::New, [this] {
+             if (maybeSave())
+                 newProject();
+         });
+    make(QStringLiteral("actionOpen"), tr("&Open…"), QStringLiteral("document-open"),
+         QKeySequence::Open, &MainWindow::openDialog);
+    make(QStringLiteral("actionSave"), tr("&Save"), QStringLiteral("document-save"),
+         QKeySequence::Save, &MainWindow::save);
+    make(QStringLiteral("actionSaveAs"), tr("Save &As…"), QStringLiteral("document-save-as"),
+         QKeySequence::SaveAs, &MainWindow::saveAs);
+    make(QStringLiteral("actionRevert"), tr("Re&vert"), QStringLiteral("document-revert"),
+         QKeySequence(), &MainWindow::revert);
+    make(QStringLiteral("actionClose"), tr("&Close"), QStringLiteral("document-close"),
+         QKeySequence::Close, &MainWindow::closeProject);
+    make(QStringLiteral("actionPrint"), tr("&Print…"), QStringLiteral("document-print"),
+         QKeySequence::Print, &MainWindow::print);
+    make(QStringLiteral("actionPrintPreview"), tr("Print Pre&view…"),
+         QStringLiteral("document-print-preview"), QKeySequence(tr("Ctrl+Shift+P")),
+         &MainWindow::printPreview);
+    make(QStringLiteral("actionPrintPdf"), tr("Print to P&DF…"), QStringLiteral("document-export"),
+         QKeySequence(), [this] {
+             const QString name = QFileDialog::getSaveFileName(
+                 this, tr("Print to PDF"), QString(), tr("PDF document (*.pdf)"));
+             QString error;
+             if (!name.isEmpty() && !printToPdf(name, &error))
+                 m_messages->error(this, tr("Print to PDF"), error);
+         });
+    make(QStringLiteral("actionExport"), tr("&Export Figure…"), QStringLiteral("document-export"),
+         QKeySequence(tr("Ctrl+E")), &MainWindow::exportDialog);
+    make(QStringLiteral("actionQuit"), tr("&Quit"), QStringLiteral("application-exit"),
+         QKeySequence::Quit, &QWidget::close);
+    make(QStringLiteral("actionPreferences"), tr("Pre&ferences…"),
+         QStringLiteral("preferences-system"), QKeySequence::Preferences,
+         &MainWindow::preferencesDialog);
+    make(QStringLiteral("actionDuplicate"), tr("D&uplicate Item"), QStringLiteral("edit-copy"),
+         QKeySequence(tr("Ctrl+D")), &MainWindow::duplicateItem);
+    make(QStringLiteral("actionDelete"), tr("&Delete Item"), QStringLiteral("edit-delete"),
+         QKeySequence::Delete, &MainWindow::deleteItem);
+    make(QStringLiteral("actionZoomIn"), tr("Zoom &In"), QStringLiteral("zoom-in"),
+         QKeySequence::ZoomIn, [this] { m_attractor->zoomIn(); });
+    make(QStringLiteral("actionZoomOut"), tr("Zoom &Out"), QStringLiteral("zoom-out"),
+         QKeySequence::ZoomOut, [this] { m_attractor->zoomOut(); });
+    make(QStringLiteral("actionFit"), tr("&Fit"), QStringLiteral("zoom-fit-best"),
+         QKeySequence(tr("Ctrl+0")), [this] { m_attractor->fitToContents(); });
+    make(QStringLiteral("actionResetLayout"), tr("&Reset Layout"), QString(), QKeySequence(),
+         &MainWindow::resetLayout);
+    make(QStringLiteral("actionAbout"), tr("&About Attractor Workbench"),
+         QStringLiteral("help-about"), QKeySequence(), &MainWindow::about);
+    make(QStringLiteral("actionAboutQt"), tr("About &Qt"), QString(), QKeySequence(),
+         [] { QApplication::aboutQt(); });
+
+    QAction *undo = m_project->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setObjectName(QStringLiteral("actionUndo"));
+    undo->setShortcut(QKeySequence::Undo);
+    undo->setIcon(QIcon::fromTheme(QStringLiteral("edit-undo")));
+    QAction *redo = m_project->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setObjectName(QStringLiteral("actionRedo"));
+    redo->setShortcut(QKeySequence::Redo);
+    redo->setIcon(QIcon::fromTheme(QStringLiteral("edit-redo")));
+
+    // Overlays of the attractor view.
+    const auto layerAction = [this](const QString &name, const QString &text,
+                                    AttractorView::Layer layer, bool on) {
+        auto *a = new QAction(text, this);
+        a->setObjectName(name);
+        a->setCheckable(true);
+        a->setChecked(on);
+        m_attractor->setLayerVisible(layer, on);
+        connect(a, &QAction::toggled, this,
+                [this, layer](bool v) { m_attractor->setLayerVisible(layer, v); });
+    };
+    layerAction(QStringLiteral("actionShowControl"), tr("&Control Polygon"),
+                AttractorView::Layer::ControlPolygon, true);
+    layerAction(QStringLiteral("actionShowStart"), tr("&Start Set"),
+                AttractorView::Layer::StartSet, true);
+    layerAction(QStringLiteral("actionShowExact"), tr("&Exact Curve"),
+                AttractorView::Layer::ExactCurve, true);
+    layerAction(QStringLiteral("actionShowGrid"), tr("&Grid"), AttractorView::Layer::Grid, true);
+}
+
+void MainWindow::createDocks()
+{
+    const auto dock = [this](const QString &name, const QString &title, QWidget *w,
+                             Qt::DockWidgetArea area) {
+        auto *d = new QDockWidget(title, this);
+        d->setObjectName(name);
+        d->setWidget(w);
+        addDockWidget(area, d);
+        m_docks.append(d);
+        return d;
+    };
+    QDockWidget *tree = dock(QStringLiteral("dockProject"), tr("Project"), m_tree,
+                             Qt::LeftDockWidgetArea);
+    QDockWidget *props = dock(QStringLiteral("dockProperties"), tr("Properties"), m_properties,
+                              Qt::LeftDockWidgetArea);
+    QDockWidget *undo = dock(QStringLiteral("dockUndo"), tr("Undo History"), m_undoView,
+                             Qt::LeftDockWidgetArea);
+    QDockWidget *spec = dock(QStringLiteral("dockSpectrum"), tr("Spectrum"), m_spectrum,
+                             Qt::RightDockWidgetArea);
+    QDockWidget *mats = dock(QStringLiteral("dockMatrices"), tr("Matrices"), m_matrices,
+                             Qt::RightDockWidgetArea);
+    QDockWidget *charts = dock(QStringLiteral("dockAnalysis"), tr("Analysis"), m_charts,
+                               Qt::RightDockWidgetArea);
+    tabifyDockWidget(props, undo);
+    props->raise();
+    tabifyDockWidget(mats, charts);
+    mats->raise();
+    // A sensible first layout: side columns wide enough for their tables and plots.
+    resizeDocks({tree, props}, {200, 560}, Qt::Vertical);
+    resizeDocks({spec, mats}, {420, 420}, Qt::Vertical);
+    resizeDocks({props, spec}, {370, 460}, Qt::Horizontal);
+}
+
+void MainWindow::createMenus()
+{
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    file->addAction(action(QStringLiteral("actionNew")));
+    file->addAction(action(QStringLiteral("actionOpen")));
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    file->addAction(action(QStringLiteral("actionSave")));
+    file->addAction(action(QStringLiteral("actionSaveAs")));
+    file->addAction(action(QStringLiteral("actionRevert")));
+    file->addAction(action(QStringLiteral("actionClose")));
+    file->addSeparator();
+    file->addAction(action(QStringLiteral("actionPrint")));
+    file->addAction(action(QStringLiteral("actionPrintPreview")));
+    file->addAction(action(QStringLiteral("actionPrintPdf")));
+    file->addAction(action(QStringLiteral("actionExport")));
+    file->addSeparator();
+    file->addAction(action(QStringLiteral("actionQuit")));
+
+    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
+    edit->addAction(action(QStringLiteral("actionUndo")));
+    edit->addAction(action(QStringLiteral("actionRedo")));
+    edit->addSeparator();
+    edit->addAction(action(QStringLiteral("actionPreferences")));
+
+    QMenu *itemMenu = menuBar()->addMenu(tr("&Item"));
+    QMenu *add = itemMenu->addMenu(QIcon::fromTheme(QStringLiteral("list-add")), tr("&Add"));
+    for (const ItemRegistry::Kind &kind : ItemRegistry::instance().kinds()) {
+        QAction *a = add->addAction(kind.displayName());
+        a->setObjectName(QStringLiteral("actionAdd_") + kind.type);
+        const QString type = kind.type;
+        connect(a, &QAction::triggered, this, [this, type] { addItem(type); });
+    }
+    itemMenu->addAction(action(QStringLiteral("actionDuplicate")));
+    itemMenu->addAction(action(QStringLiteral("actionDelete")));
+
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    m_viewMenu->addAction(action(QStringLiteral("actionZoomIn")));
+    m_viewMenu->addAction(action(QStringLiteral("actionZoomOut")));
+    m_viewMenu->addAction(action(QStringLiteral("actionFit")));
+    m_viewMenu->addSeparator();
+    m_viewMenu->addAction(action(QStringLiteral("actionShowControl")));
+    m_viewMenu->addAction(action(QStringLiteral("actionShowStart")));
+    m_viewMenu->addAction(action(QStringLiteral("actionShowExact")));
+    m_viewMenu->addAction(action(QStringLiteral("actionShowGrid")));
+    m_viewMenu->addSeparator();
+    for (QDockWidget *d : std::as_const(m_docks))
+        m_viewMenu->addAction(d->toggleViewAction());
+    m_viewMenu->addSeparator();
+    m_viewMenu->addAction(action(QStringLiteral("actionResetLayout")));
+
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(action(QStringLiteral("actionAbout")));
+    help->addAction(action(QStringLiteral("actionAboutQt")));
+
+    QToolBar *bar = addToolBar(tr("Main"));
+    bar->setObjectName(QStringLiteral("toolBarMain"));
+    for (const char *name : {"actionNew", "actionOpen", "actionSave", "actionPrint",
+                             "actionExport", "actionUndo", "actionRedo", "actionZoomIn",
+                             "actionZoomOut", "actionFit"})
+        bar->addAction(action(QString::fromLatin1(name)));
+    bar->addSeparator();
+    // Step-by-step Hutchinson iteration F^k(X0) and classic subdivision polygons.
+    bar->addWidget(new QLabel(tr(" Hutchinson step: ")));
+    m_hutchStep = new QSpinBox;
+    m_hutchStep->setObjectName(QStringLiteral("hutchinsonStep"));
+    m_hutchStep->setRange(-1, 20);
+    m_hutchStep->setValue(-1);
+    m_hutchStep->setSpecialValueText(tr("off"));
+    m_hutchStep->setToolTip(tr("Draw F^k(X0) of the start set X0 as vectors"));
+    connect(m_hutchStep, &QSpinBox::valueChanged, m_attractor, &AttractorView::setHutchinsonStep);
+    bar->addWidget(m_hutchStep);
+    bar->addWidget(new QLabel(tr("  Subdivision steps: ")));
+    m_subdivSteps = new QSpinBox;
+    m_subdivSteps->setObjectName(QStringLiteral("subdivisionSteps"));
+    m_subdivSteps->setRange(0, 8);
+    m_subdivSteps->setSpecialValueText(tr("off"));
+    m_subdivSteps->setToolTip(tr("Classic subdivision polygons beside the IFS attractor"));
+    connect(m_subdivSteps, &QSpinBox::valueChanged, m_controller,
+            &ItemController::setSubdivisionSteps);
+    bar->addWidget(m_subdivSteps);
+}
+
+void MainWindow::applyPreferences(const Preferences &preferences)
+{
+    m_preferences = preferences;
+    m_recovery->setInterval(std::max(5, preferences.autosaveSeconds) * 1000);
+    m_controller->setPalette(preferences.palette);
+    m_controller->setMaxDepth(preferences.maxRenderDepth);
+}
+
+void MainWindow::setCurrentItem(Item *item)
+{
+    m_current = item;
+    m_controller->setItem(item);
+    m_properties->setItem(item);
+    const QModelIndex index = item ? m_treeModel->indexOf(item) : QModelIndex();
+    if (m_tree->currentIndex() != index)
+        m_tree->setCurrentIndex(index);
+    updateActions();
+}
+
+void MainWindow::selectFirstItem()
+{
+    setCurrentItem(m_project->childCount() > 0 ? m_project->child(0) : nullptr);
+}
+
+void MainWindow::updateTitle()
+{
+    const QString file = m_project->fileName();
+    setWindowFilePath(file.isEmpty() ? tr("Untitled") : file);
+    setWindowTitle(tr("%1[*] — Attractor Workbench")
+                       .arg(file.isEmpty() ? tr("Untitled") : QFileInfo(file).fileName()));
+    setWindowModified(m_project->isModified());
+    updateActions();
+}
+
+void MainWindow::updateActions()
+{
+    const bool hasItem = m_current != nullptr;
+    action(QStringLiteral("actionDuplicate"))->setEnabled(hasItem);
+    action(QStringLiteral("actionDelete"))->setEnabled(hasItem);
+    action(QStringLiteral("actionRevert"))
+        ->setEnabled(!m_project->fileName().isEmpty() && m_project->isModified());
+    for (const char *name : {"actionPrint", "actionPrintPreview", "actionPrintPdf"})
+        action(QString::fromLatin1(name))->setEnabled(hasItem);
+}
+
+void MainWindow::newProject()
+{
+    m_project->clear();
+    auto curve = std::make_unique<SubdivisionCurveItem>();
+    curve->setName(tr("Cubic B-spline"));
+    curve->moveControlPoints({{0, {0, 0}}, {1, {1, 2}}, {2, {3, 2.5}}, {3, {4.5, 1}}});
+    curve->insertControlPoint(4, {6, 2});
+    AlgorithmSpec a = curve->algorithm();
+    a.depth = m_preferences.defaultDepth;
+    if (!curve->checkAlgorithm(a))
+        curve->setAlgorithm(a);
+    StartSetSpec s;
+    s.kind = StartSetSpec::Kind::Triangle;
+    s.points = {{2, -0.5}, {4, -0.5}, {3, 0.5}};
+    curve->setStartSet(s);
+    m_project->addItem(std::move(curve));
+    // Building the first item is not an edit the user made.
+    m_project->undoStack()->clear();
+    m_project->undoStack()->setClean();
+    updateTitle();
+    selectFirstItem();
+}
+
+bool MainWindow::openFile(const QString &fileName)
+{
+    QString error;
+    if (!m_project->open(fileName, &error)) {
+        m_messages->error(this, tr("Open Project"), error);
+        return false;
+    }
+    addRecentFile(QFileInfo(fileName).absoluteFilePath());
+    updateTitle();
+    selectFirstItem();
+    statusBar()->showMessage(tr("Opened %1").arg(QFileInfo(fileName).fileName()), 4000);
+    return true;
+}
+
+bool MainWindow::saveFile(const QString &fileName)
+{
+    QString error;
+    if (!m_project->saveAs(fileName, &error)) {
+        m_messages->error(this, tr("Save Project"), error);
+        return false;
+    }
+    addRecentFile(QFileInfo(fileName).absoluteFilePath());
+    updateTitle();
+    statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(fileName).fileName()), 4000);
+    return true;
+}
+
+bool MainWindow::maybeSave()
+{
+    if (!m_project->isModified())
+        return true;
+    const auto answer = m_messages->question(
+        this, tr("Unsaved Changes"),
+        tr("The project \"%1\" has unsaved changes. Save them?")
+            .arg(m_project->fileName().isEmpty() ? tr("Untitled")
+                                                 : QFileInfo(m_project->fileName()).fileName()),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save)
+        return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::openDialog()
+{
+    if (!maybeSave())
+        return;
+    const QString name = QFileDialog::getOpenFileName(this, tr("Open Project"),
+                                                      QFileInfo(m_project->fileName()).path(),
+                                                      fileFilter());
+    if (!name.isEmpty())
+        openFile(name);
+}
+
+bool MainWindow::save()
+{
+    if (m_project->fileName().isEmpty())
+        return saveAs();
+    return saveFile(m_project->fileName());
+}
+
+bool MainWindow::saveAs()
+{
+    QString name = QFileDialog::getSaveFileName(this, tr("Save Project As"),
+                                                m_project->fileName(), fileFilter());
+    if (name.isEmpty())
+        return false;
+    if (QFileInfo(name).suffix().isEmpty())
+        name += QStringLiteral(".awb");
+    return saveFile(name);
+}
+
+void MainWindow::revert()
+{
+    const QString file = m_project->fileName();
+    if (file.isEmpty())
+        return;
+    const auto answer = m_messages->question(
+        this, tr("Revert"), tr("Discard all changes and reload %1?").arg(QFileInfo(file).fileName()),
+        QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel);
+    if (answer == QMessageBox::Discard)
+        openFile(file);
+}
+
+void MainWindow::closeProject()
+{
+    if (maybeSave())
+        newProject();
+}
+
+void MainWindow::print()
+{
+    QPrinter printer(QPrinter::HighResolution);
+    printer.setPageOrientation(QPageLayout::Landscape);
+    QPrintDialog dialog(&printer, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    FigureSheet sheet(m_current, m_attractor, m_spectrum);
+    if (!sheet.print(&printer))
+        m_messages->error(this, tr("Print"), tr("The printer could not be started."));
+}
+
+void MainWindow::printPreview()
+{
+    QPrinter printer(QPrinter::HighResolution);
+    printer.setPageOrientation(QPageLayout::Landscape);
+    QPrintPreviewDialog preview(&printer, this);
+    preview.resize(1100, 800);
+    connect(&preview, &QPrintPreviewDialog::paintRequested, this, [this](QPrinter *p) {
+        FigureSheet(m_current, m_attractor, m_spectrum).print(p);
+    });
+    preview.exec();
+}
+
+bool MainWindow::printToPdf(const QString &fileName, QString *error)
+{
+    return FigureSheet(m_current, m_attractor, m_spectrum).writePdf(fileName, error);
+}
+
+bool MainWindow::exportView(const ExportDialog::Options &o, QString *error)
+{
+    const QString suffix = QFileInfo(o.fileName).suffix().toLower();
+    const QRectF target(0, 0, o.size.width(), o.size.height());
+    const auto paint = [this, &o, &target](QPainter &p) {
+        switch (o.target) {
+        case ExportDialog::Target::Attractor:
+            m_attractor->renderTo(&p, target);
+            break;
+        case ExportDialog::Target::Spectrum:
+            paintSpectrum(m_spectrum, &p, target);
+            break;
+        case ExportDialog::Target::Matrices: {
+            const QSize s = m_matrices->size();
+            const double k = std::min(target.width() / std::max(1, s.width()),
+                                      target.height() / std::max(1, s.height()));
+            p.scale(k, k);
+            m_matrices->render(&p, QPoint(), QRegion(), QWidget::DrawChildren);
+            break;
+        }
+        case ExportDialog::Target::Analysis: {
+            // Lay the chart out at the export size (in points at the chosen resolution) so
+            // that titles and axes get the room they have in the figure, not in the dock.
+            auto *view = m_charts->chartView(AnalysisCharts::Tab(m_charts->tabs()->currentIndex()));
+            const QSize old = view->size();
+            const double k = std::max(1.0, o.dpi / 96.0);
+            const QSize laidOut = (QSizeF(target.size()) / k).toSize();
+            view->resize(laidOut);
+            view->chart()->resize(laidOut);
+            view->setSceneRect(QRectF(QPointF(0, 0), laidOut));
+            view->render(&p, target, QRect(QPoint(0, 0), laidOut), Qt::IgnoreAspectRatio);
+            view->resize(old);
+            view->chart()->resize(old);
+            view->setSceneRect(QRectF(QPointF(0, 0), old));
+            break;
+        }
+        case ExportDialog::Target::FigureSheet:
+            FigureSheet(m_current, m_attractor, m_spectrum).paint(&p, target);
+            break;
+        }
+    };
+    bool ok = false;
+    if (suffix == QLatin1String("png")) {
+        QImage image(o.size, QImage::Format_ARGB32_Premultiplied);
+        image.fill(Qt::white);
+        const int dpm = int(std::lround(o.dpi / 0.0254));
+        image.setDotsPerMeterX(dpm);
+        image.setDotsPerMeterY(dpm);
+        {
+            QPainter p(&image);
+            p.setRenderHint(QPainter::Antialiasing);
+            paint(p);
+        }
+        ok = image.save(o.fileName);
+    } else if (suffix == QLatin1String("svg")) {
+        QSvgGenerator svg;
+        svg.setFileName(o.fileName);
+        svg.setSize(o.size);
+        svg.setViewBox(target);
+        svg.setResolution(o.dpi);
+        svg.setTitle(m_current ? m_current->name() : QString());
+        QPainter p;
+        ok = p.begin(&svg);
+        if (ok) {
+            paint(p);
+            ok = p.end();
+        }
+    } else if (suffix == QLatin1String("pdf")) {
+        QPdfWriter pdf(o.fileName);
+        pdf.setResolution(o.dpi);
+        pdf.setPageLayout(QPageLayout(
+            QPageSize(QSizeF(o.size.width() * 72.0 / o.dpi, o.size.height() * 72.0 / o.dpi),
+                      QPageSize::Point),
+            QPageLayout::Portrait, QMarginsF()));
+        QPainter p;
+        ok = p.begin(&pdf);
+        if (ok) {
+            paint(p);
+            ok = p.end();
+        }
+    } else {
+        if (error)
+            *error = tr("Unknown format \"%1\": use .png, .svg or .pdf.").arg(suffix);
+        return false;
+    }
+    if (!ok && error)
+        *error = tr("Cannot write %1.").arg(o.fileName);
+    return ok;
+}
+
+void MainWindow::exportDialog()
+{
+    ExportDialog::Options initial;
+    initial.fileName = m_lastExport.isEmpty()
+                           ? QFileInfo(m_project->fileName()).path() + QStringLiteral("/figure.png")
+                           : m_lastExport;
+    initial.size = m_attractor->size() * 2;
+    ExportDialog dialog(initial, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const ExportDialog::Options o = dialog.options();
+    QString error;
+    if (!exportView(o, &error))
+        m_messages->error(this, tr("Export"), error);
+    else
+        statusBar()->showMessage(tr("Exported %1").arg(o.fileName), 4000);
+    m_lastExport = o.fileName;
+}
+
+void MainWindow::preferencesDialog()
+{
+    PreferencesDialog dialog(m_preferences, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const Preferences p = dialog.preferences();
+    p.save();
+    applyPreferences(p);
+}
+
+void MainWindow::about()
+{
+    m_messages->information(
+        this, tr("About Attractor Workbench"),
+        tr("Attractor Workbench %1\n\nSubdivision curves as attractors of iterated function "
+           "systems: control points, subdivision matrices, spectra and figures.")
+            .arg(QStringLiteral(AWB_VERSION)));
+}
+
+void MainWindow::addItem(const QString &type)
+{
+    std::unique_ptr<Item> item = ItemRegistry::instance().create(type);
+    if (!item)
+        return;
+    if (auto *a = qobject_cast<AttractorItem *>(item.get())) {
+        AlgorithmSpec alg = a->algorithm();
+        alg.depth = m_preferences.defaultDepth;
+        if (!a->checkAlgorithm(alg))
+            a->setAlgorithm(alg);
+    }
+    m_project->addItem(std::move(item), nullptr);
+}
+
+void MainWindow::duplicateItem()
+{
+    if (!m_current)
+        return;
+    QJsonObject root = ProjectIO::toJson(*m_project);
+    root[QStringLiteral("items")] = QJsonArray{ProjectIO::itemToJson(*m_current)};
+    ProjectData data;
+    QString error;
+    if (!ProjectIO::parseRoot(root, tr("duplicate"), &data, &error) || data.items.empty()) {
+        m_messages->error(this, tr("Duplicate Item"), error);
+        return;
+    }
+    m_project->addItem(std::move(data.items.front()), m_current->parentItem(),
+                       m_project->rowOf(m_current) + 1);
+}
+
+void MainWindow::deleteItem()
+{
+    if (m_current)
+        m_project->removeItem(m_current);
+}
+
+void MainWindow::resetLayout()
+{
+    restoreState(m_defaultState);
+    for (QDockWidget *d : std::as_const(m_docks))
+        d->show();
+}
+
+void MainWindow::addRecentFile(const QString &fileName)
+{
+    QSettings settings;
+    QStringList files = settings.value(QStringLiteral("recentFiles")).toStringList();
+    files.removeAll(fileName);
+    files.prepend(fileName);
+    while (files.size() > maxRecentFiles)
+        files.removeLast();
+    settings.setValue(QStringLiteral("recentFiles"), files);
+    updateRecentMenu();
+}
+
+void MainWindow::updateRecentMenu()
+{
+    if (!m_recentMenu)
+        return;
+    m_recentMenu->clear();
+    const QStringList files = QSettings().value(QStringLiteral("recentFiles")).toStringList();
+    for (int i = 0; i < files.size(); ++i) {
+        QAction *a = m_recentMenu->addAction(
+            tr("&%1 %2").arg(i + 1).arg(QFileInfo(files[i]).fileName()));
+        a->setToolTip(files[i]);
+        const QString file = files[i];
+        connect(a, &QAction::triggered, this, [this, file] {
+            if (maybeSave())
+                openFile(file);
+        });
+    }
+    m_recentMenu->setEnabled(!files.isEmpty());
+}
+
+bool MainWindow::offerRecovery()
+{
+    const QList<RecoveryFile> files = Recovery::orphans(m_recoveryDirectory);
+    for (const RecoveryFile &f : files) {
+        const QString what = f.originalFile.isEmpty() ? tr("an unsaved project")
+                                                      : QFileInfo(f.originalFile).fileName();
+        const auto answer = m_messages->question(
+            this, tr("Recover Project"),
+            tr("Attractor Workbench did not shut down properly. A recovery copy of %1 from %2 "
+               "exists. Recover it? (Discard deletes the copy.)")
+                .arg(what, QLocale().toString(f.savedAt.toLocalTime(), QLocale::ShortFormat)),
+            QMessageBox::Yes | QMessageBox::Discard | QMessageBox::Ignore, QMessageBox::Yes);
+        if (answer == QMessageBox::Discard) {
+            Recovery::discard(f);
+        } else if (answer == QMessageBox::Yes) {
+            QString error;
+            if (!Recovery::recover(f, m_project.get(), &error)) {
+                m_messages->error(this, tr("Recover Project"), error);
+                continue;
+            }
+            Recovery::discard(f);
+            updateTitle();
+            selectFirstItem();
+            return true;
+        }
+    }
+    return false;
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
+    event->accept();
+}
+
+} // namespace awb

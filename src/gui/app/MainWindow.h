@@ -1,0 +1,138 @@
+#pragma once
+// MainWindow: the application window over one Project. The attractor view is central; the
+// project tree, properties, matrices, spectrum, analysis charts and undo history are docks
+// showing the same current item (bound by ItemController). It owns the file actions (new, open,
+// recent, save, revert, close) with unsaved-changes prompts, printing and export, the window
+// title, settings and crash recovery. Every message to the user goes through Messages so that
+// tests can drive the window without modal boxes.
+#include "gui/app/Dialogs.h"
+#include "model/Item.h"
+#include <QMainWindow>
+#include <QPointer>
+#include <memory>
+
+class QAction;
+class QDockWidget;
+class QLabel;
+class QMenu;
+class QPrinter;
+class QProgressBar;
+class QSpinBox;
+class QToolButton;
+class QTreeView;
+class QUndoView;
+
+namespace awb {
+
+class AnalysisCharts;
+class AttractorView;
+class Item;
+class ItemController;
+class MatrixView;
+class Messages;
+class Project;
+class ProjectTreeModel;
+class PropertiesWidget;
+class Recovery;
+class SpectrumView;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    // `messages` (not owned; nullptr: modal message boxes). `recoveryDirectory` empty: the
+    // per-user default.
+    explicit MainWindow(Messages *messages = nullptr, const QString &recoveryDirectory = {},
+                        QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    Project *project() const { return m_project.get(); }
+    Item *currentItem() const;
+    void setCurrentItem(Item *item);
+
+    // A new project with one cubic B-spline item: the window is never empty.
+    void newProject();
+    // Opens without asking about unsaved changes (the caller did); reports failures.
+    bool openFile(const QString &fileName);
+    bool saveFile(const QString &fileName);
+    // Offers the recovery files of crashed sessions; true when one was recovered.
+    bool offerRecovery();
+
+    // Export of one view (format from the suffix). False with a message on failure.
+    bool exportView(const ExportDialog::Options &options, QString *error = nullptr);
+    // The figure sheet of the current item as a PDF page.
+    bool printToPdf(const QString &fileName, QString *error = nullptr);
+
+    // The views (for tests and export).
+    AttractorView *attractorView() const { return m_attractor; }
+    MatrixView *matrixView() const { return m_matrices; }
+    SpectrumView *spectrumView() const { return m_spectrum; }
+    AnalysisCharts *analysisCharts() const { return m_charts; }
+    PropertiesWidget *propertiesWidget() const { return m_properties; }
+    ItemController *controller() const { return m_controller; }
+    QTreeView *projectTree() const { return m_tree; }
+    QAction *action(const QString &objectName) const;
+
+    void applyPreferences(const Preferences &preferences);
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
+
+private:
+    void createViews();
+    void createActions();
+    void createMenus();
+    void createDocks();
+    void updateTitle();
+    void updateActions();
+    void updateRecentMenu();
+    void addRecentFile(const QString &fileName);
+    // Asks to save unsaved changes; false when the user cancels.
+    bool maybeSave();
+    void openDialog();
+    bool save();
+    bool saveAs();
+    void revert();
+    void closeProject();
+    void print();
+    void printPreview();
+    void exportDialog();
+    void preferencesDialog();
+    void about();
+    void addItem(const QString &type);
+    void duplicateItem();
+    void deleteItem();
+    void resetLayout();
+    void selectFirstItem();
+
+    Messages *m_messages;
+    std::unique_ptr<Messages> m_ownMessages;
+    std::unique_ptr<Project> m_project;
+    ProjectTreeModel *m_treeModel = nullptr;
+    std::unique_ptr<Recovery> m_recovery;
+    QString m_recoveryDirectory;
+    Preferences m_preferences;
+
+    AttractorView *m_attractor = nullptr;
+    MatrixView *m_matrices = nullptr;
+    SpectrumView *m_spectrum = nullptr;
+    AnalysisCharts *m_charts = nullptr;
+    PropertiesWidget *m_properties = nullptr;
+    QTreeView *m_tree = nullptr;
+    QUndoView *m_undoView = nullptr;
+    ItemController *m_controller = nullptr;
+    QPointer<Item> m_current;
+
+    QList<QDockWidget *> m_docks;
+    QMenu *m_viewMenu = nullptr;
+    QMenu *m_recentMenu = nullptr;
+    QByteArray m_defaultState;
+    QSpinBox *m_hutchStep = nullptr;
+    QSpinBox *m_subdivSteps = nullptr;
+    QLabel *m_cursorLabel = nullptr;
+    QLabel *m_problemLabel = nullptr;
+    QProgressBar *m_progress = nullptr;
+    QToolButton *m_cancel = nullptr;
+    QString m_lastExport;
+};
+
+} // namespace awb

@@ -1,0 +1,499 @@
+#include "gui/app/PropertiesDock.h"
+
+#include "gui/app/Messages.h"
+#include "model/AttractorItem.h"
+#include "model/Project.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMap>
+#include <QScrollArea>
+#include <QSlider>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace awb {
+
+namespace {
+
+constexpr int sliderSteps = 1000;
+constexpr double spinLimit = 1e9;
+
+double finiteOr(double v, double fallback) { return std::isfinite(v) ? v : fallback; }
+
+QDoubleSpinBox *realSpin(double lo, double hi)
+{
+    auto *spin = new QDoubleSpinBox;
+    spin->setDecimals(6);
+    spin->setRange(finiteOr(lo, -spinLimit), finiteOr(hi, spinLimit));
+    spin->setSingleStep(0.01);
+    spin->setKeyboardTracking(false);
+    spin->setMinimumWidth(90);
+    return spin;
+}
+
+// The start set's default points when its kind changes: taken from the control polygon so that
+// the new set lies where the curve is.
+PointList startPoints(StartSetSpec::Kind kind, const PointList &control)
+{
+    PointList c = control.empty() ? PointList{{0, 0}, {1, 0}, {0.5, 1}} : control;
+    const PlanePoint first = c.front(), last = c.back(), middle = c[c.size() / 2];
+    switch (kind) {
+    case StartSetSpec::Kind::Point: {
+        PlanePoint m;
+        for (const auto &p : c)
+            m = {m.x + p.x / double(c.size()), m.y + p.y / double(c.size())};
+        return {m};
+    }
+    case StartSetSpec::Kind::Segment: return {first, last};
+    case StartSetSpec::Kind::Triangle:
+        if (c.size() < 3)
+            return {{0, 0}, {1, 0}, {0.5, 1}};
+        return {first, middle, last};
+    case StartSetSpec::Kind::Polygon:
+        if (c.size() < 3)
+            return {{0, 0}, {1, 0}, {0.5, 1}};
+        return c;
+    case StartSetSpec::Kind::Points: return c;
+    }
+    return c;
+}
+
+} // namespace
+
+PropertiesWidget::PropertiesWidget(Messages *messages, QWidget *parent)
+    : QWidget(parent), m_messages(messages)
+{
+    auto *outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    auto *scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    // Editors fit the dock's width; a horizontal scroll bar would hide half of a row.
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    outer->addWidget(scroll);
+    auto *holder = new QWidget;
+    m_layout = new QVBoxLayout(holder);
+    scroll->setWidget(holder);
+    rebuild();
+}
+
+void PropertiesWidget::setItem(Item *item)
+{
+    if (m_connection)
+        disconnect(m_connection);
+    m_item = item;
+    if (item)
+        m_connection = connect(item, &Item::changed, this, &PropertiesWidget::onItemChanged);
+    rebuild();
+}
+
+QWidget *PropertiesWidget::editor(const QString &key) const { return m_editors.value(key); }
+QWidget *PropertiesWidget::slider(const QString &key) const { return m_sliders.value(key); }
+
+void PropertiesWidget::onItemChanged()
+{
+    QStringList keys;
+    if (m_item)
+        for (const auto &p : m_item->parameters())
+            keys << p.key;
+    // The parameter list depends on the state (ω only for the four-point scheme): rebuild
+    // when it changed, otherwise only show the new values (keeps focus and slider grabs).
+    if (keys != m_keys)
+        rebuild();
+    else
+        updateValues();
+}
+
+void PropertiesWidget::report(const QString &message)
+{
+    if (m_messages)
+        m_messages->error(this, tr("Value refused"), message);
+}
+
+int PropertiesWidget::beginGesture()
+{
+    return m_item && m_item->project() ? m_item->project()->beginGesture() : 0;
+}
+
+bool PropertiesWidget::apply(const QString &key, const QVariant &value, int gesture)
+{
+    if (!m_item || m_updating)
+        return false;
+    QString error;
+    if (!m_item->setParameter(key, value, gesture, &error)) {
+        updateValues();
+        report(error.isEmpty() ? tr("%1 cannot be set to %2.").arg(key, value.toString())
+                               : error);
+        return false;
+    }
+    return true;
+}
+
+void PropertiesWidget::updateValues()
+{
+    ++m_updating;
+    for (const Binding &b : std::as_const(m_bindings))
+        b.update();
+    --m_updating;
+}
+
+void PropertiesWidget::rebuild()
+{
+    ++m_updating;
+    m_bindings.clear();
+    m_editors.clear();
+    m_sliders.clear();
+    m_keys.clear();
+    m_points = nullptr;
+    if (m_content) {
+        m_layout->removeWidget(m_content);
+        m_content->deleteLater();
+    }
+    m_content = new QWidget;
+    auto *content = new QVBoxLayout(m_content);
+    content->setContentsMargins(4, 4, 4, 4);
+    m_layout->insertWidget(0, m_content);
+    if (!m_item) {
+        content->addWidget(new QLabel(tr("No item selected.")));
+        content->addStretch();
+        --m_updating;
+        return;
+    }
+
+    auto *itemBox = new QGroupBox(m_item->typeName());
+    auto *itemForm = new QFormLayout(itemBox);
+    auto *name = new QLineEdit;
+    itemForm->addRow(tr("&Name:"), name);
+    m_editors.insert(QStringLiteral("name"), name);
+    connect(name, &QLineEdit::editingFinished, this, [this, name] {
+        if (!m_item || m_updating || name->text() == m_item->name())
+            return;
+        if (!m_item->setName(name->text())) {
+            QString why = tr("The name is empty or already taken.");
+            if (m_item->project())
+                if (auto p = m_item->project()->checkName(m_item, name->text()))
+                    why = p->message;
+            name->setText(m_item->name());
+            report(why);
+        }
+    });
+    m_bindings.append({QStringLiteral("name"), [this, name] {
+        if (!name->hasFocus())
+            name->setText(m_item->name());
+    }});
+    content->addWidget(itemBox);
+
+    // Parameters, grouped by their heading.
+    QMap<QString, QFormLayout *> groups;
+    for (const ParameterInfo &info : m_item->parameters()) {
+        m_keys << info.key;
+        QFormLayout *form = groups.value(info.group);
+        if (!form) {
+            auto *box = new QGroupBox(info.group.isEmpty() ? tr("Parameters") : info.group);
+            form = new QFormLayout(box);
+            groups.insert(info.group, form);
+            content->addWidget(box);
+        }
+        addParameter(form, info);
+    }
+    if (qobject_cast<AttractorItem *>(m_item.data()))
+        addAttractorEditors();
+    content->addStretch();
+    --m_updating;
+    updateValues();
+}
+
+void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info)
+{
+    const QString key = info.key;
+    QWidget *row = nullptr;
+    switch (info.type) {
+    case ParameterInfo::Type::Real:
+    case ParameterInfo::Type::Integer: {
+        const bool integer = info.type == ParameterInfo::Type::Integer;
+        QAbstractSpinBox *spinBase;
+        std::function<void(double)> setSpin;
+        if (integer) {
+            auto *spin = new QSpinBox;
+            spin->setRange(int(std::max(finiteOr(info.minimum, -spinLimit), -spinLimit)),
+                           int(std::min(finiteOr(info.maximum, spinLimit), spinLimit)));
+            spin->setKeyboardTracking(false);
+            connect(spin, &QSpinBox::valueChanged, this, [this, key](int v) { apply(key, v); });
+            setSpin = [spin](double v) { spin->setValue(int(std::lround(v))); };
+            spinBase = spin;
+        } else {
+            auto *spin = realSpin(info.minimum, info.maximum);
+            connect(spin, &QDoubleSpinBox::valueChanged, this,
+                    [this, key](double v) { apply(key, v); });
+            setSpin = [spin](double v) { spin->setValue(v); };
+            spinBase = spin;
+        }
+        spinBase->setToolTip(info.toolTip);
+        m_editors.insert(key, spinBase);
+        QSlider *slider = nullptr;
+        if (info.hasSlider()) {
+            slider = new QSlider(Qt::Horizontal);
+            const double lo = info.sliderMinimum, hi = info.sliderMaximum;
+            const int steps = integer ? int(std::lround(hi - lo)) : sliderSteps;
+            slider->setRange(0, std::max(1, steps));
+            slider->setToolTip(info.toolTip);
+            m_sliders.insert(key, slider);
+            auto gesture = std::make_shared<int>(0);
+            connect(slider, &QSlider::sliderPressed, this,
+                    [this, gesture] { *gesture = beginGesture(); });
+            connect(slider, &QSlider::sliderReleased, this, [gesture] { *gesture = 0; });
+            connect(slider, &QSlider::valueChanged, this,
+                    [this, key, lo, hi, steps, integer, gesture](int pos) {
+                        const double v = lo + (hi - lo) * pos / double(std::max(1, steps));
+                        apply(key, integer ? QVariant(int(std::lround(v))) : QVariant(v),
+                              *gesture);
+                    });
+            m_bindings.append({key, [this, key, slider, lo, hi, steps] {
+                if (slider->isSliderDown())
+                    return;  // never move the slider under the user's hand
+                const double v = m_item->parameter(key).toDouble();
+                const QSignalBlocker block(slider);
+                slider->setValue(int(std::lround((v - lo) / (hi - lo) * steps)));
+            }});
+        }
+        m_bindings.append({key, [this, key, spinBase, setSpin] {
+            const QSignalBlocker block(spinBase);
+            setSpin(m_item->parameter(key).toDouble());
+        }});
+        if (slider) {
+            row = new QWidget;
+            auto *h = new QHBoxLayout(row);
+            h->setContentsMargins(0, 0, 0, 0);
+            h->addWidget(slider, 1);
+            h->addWidget(spinBase);
+        } else {
+            row = spinBase;
+        }
+        break;
+    }
+    case ParameterInfo::Type::Choice: {
+        auto *combo = new QComboBox;
+        combo->addItems(info.choices);
+        combo->setToolTip(info.toolTip);
+        connect(combo, &QComboBox::currentIndexChanged, this,
+                [this, key](int i) { apply(key, i); });
+        m_bindings.append({key, [this, key, combo] {
+            const QSignalBlocker block(combo);
+            combo->setCurrentIndex(m_item->parameter(key).toInt());
+        }});
+        m_editors.insert(key, combo);
+        row = combo;
+        break;
+    }
+    case ParameterInfo::Type::Complex: {
+        auto *re = realSpin(-spinLimit, spinLimit);
+        auto *im = realSpin(-spinLimit, spinLimit);
+        re->setPrefix(tr("Re "));
+        im->setPrefix(tr("Im "));
+        re->setToolTip(info.toolTip);
+        im->setToolTip(info.toolTip);
+        const auto send = [this, key, re, im] { apply(key, QPointF(re->value(), im->value())); };
+        connect(re, &QDoubleSpinBox::valueChanged, this, send);
+        connect(im, &QDoubleSpinBox::valueChanged, this, send);
+        m_bindings.append({key, [this, key, re, im] {
+            const QPointF z = m_item->parameter(key).toPointF();
+            const QSignalBlocker b1(re), b2(im);
+            re->setValue(z.x());
+            im->setValue(z.y());
+        }});
+        m_editors.insert(key, re);
+        // Stacked: side by side they do not fit a narrow dock.
+        row = new QWidget;
+        auto *v = new QVBoxLayout(row);
+        v->setContentsMargins(0, 0, 0, 0);
+        v->addWidget(re);
+        v->addWidget(im);
+        break;
+    }
+    case ParameterInfo::Type::Bool: {
+        auto *check = new QCheckBox;
+        check->setToolTip(info.toolTip);
+        connect(check, &QCheckBox::toggled, this, [this, key](bool on) { apply(key, on); });
+        m_bindings.append({key, [this, key, check] {
+            const QSignalBlocker block(check);
+            check->setChecked(m_item->parameter(key).toBool());
+        }});
+        m_editors.insert(key, check);
+        row = check;
+        break;
+    }
+    }
+    auto *label = new QLabel(info.label + QLatin1Char(':'));
+    label->setToolTip(info.toolTip);
+    form->addRow(label, row);
+}
+
+void PropertiesWidget::addAttractorEditors()
+{
+    auto *item = qobject_cast<AttractorItem *>(m_item.data());
+    auto *content = static_cast<QVBoxLayout *>(m_content->layout());
+
+    // ---- start set
+    auto *startBox = new QGroupBox(tr("Start set X0"));
+    auto *startForm = new QFormLayout(startBox);
+    auto *startKind = new QComboBox;
+    startKind->addItems({tr("Point"), tr("Segment"), tr("Triangle"), tr("Polygon"),
+                         tr("Points")});
+    startForm->addRow(tr("Kind:"), startKind);
+    startForm->addRow(new QLabel(tr("Drag its vertices in the attractor view.")));
+    m_editors.insert(QStringLiteral("start.kind"), startKind);
+    connect(startKind, &QComboBox::currentIndexChanged, this, [this, item](int i) {
+        if (m_updating)
+            return;
+        StartSetSpec s;
+        s.kind = StartSetSpec::Kind(i);
+        s.points = startPoints(s.kind, item->controlPointSetCount() ? item->controlPoints(0)
+                                                                    : PointList{});
+        if (auto p = item->checkStartSet(s); p || !item->setStartSet(s)) {
+            report(p ? p->message : tr("The start set was refused."));
+            updateValues();
+        }
+    });
+    m_bindings.append({QStringLiteral("start.kind"), [item, startKind] {
+        const QSignalBlocker block(startKind);
+        startKind->setCurrentIndex(int(item->startSet().kind));
+    }});
+    content->addWidget(startBox);
+
+    // ---- algorithm
+    auto *algBox = new QGroupBox(tr("Algorithm"));
+    auto *algForm = new QFormLayout(algBox);
+    auto *mode = new QComboBox;
+    mode->addItems({tr("Deterministic"), tr("Random (chaos game)")});
+    auto *depth = new QSpinBox;
+    depth->setRange(0, AlgorithmSpec::maxDepth);
+    depth->setKeyboardTracking(false);
+    auto *samples = new QSpinBox;
+    samples->setRange(1, 100'000'000);
+    samples->setSingleStep(10000);
+    samples->setKeyboardTracking(false);
+    algForm->addRow(tr("Mode:"), mode);
+    algForm->addRow(tr("Depth:"), depth);
+    algForm->addRow(tr("Samples:"), samples);
+    m_editors.insert(QStringLiteral("algorithm.depth"), depth);
+    const auto setAlg = [this, item](const std::function<void(AlgorithmSpec &)> &edit) {
+        if (m_updating)
+            return;
+        AlgorithmSpec a = item->algorithm();
+        edit(a);
+        if (auto p = item->checkAlgorithm(a)) {
+            updateValues();
+            report(p->message);
+            return;
+        }
+        item->setAlgorithm(a);
+    };
+    connect(mode, &QComboBox::currentIndexChanged, this,
+            [setAlg](int i) { setAlg([i](AlgorithmSpec &a) { a.mode = AlgorithmSpec::Mode(i); }); });
+    connect(depth, &QSpinBox::valueChanged, this,
+            [setAlg](int v) { setAlg([v](AlgorithmSpec &a) { a.depth = v; }); });
+    connect(samples, &QSpinBox::valueChanged, this,
+            [setAlg](int v) { setAlg([v](AlgorithmSpec &a) { a.samples = v; }); });
+    m_bindings.append({QStringLiteral("algorithm"), [item, mode, depth, samples] {
+        const QSignalBlocker b1(mode), b2(depth), b3(samples);
+        const AlgorithmSpec &a = item->algorithm();
+        mode->setCurrentIndex(int(a.mode));
+        depth->setValue(a.depth);
+        samples->setValue(int(std::min<qint64>(a.samples, 100'000'000)));
+        depth->setEnabled(a.mode == AlgorithmSpec::Mode::Deterministic);
+        samples->setEnabled(a.mode == AlgorithmSpec::Mode::Random);
+    }});
+    content->addWidget(algBox);
+
+    // ---- style
+    auto *styleBox = new QGroupBox(tr("Style"));
+    auto *styleForm = new QFormLayout(styleBox);
+    auto *colorBy = new QComboBox;
+    colorBy->addItems({tr("By map"), tr("By address prefix"), tr("Single colour")});
+    auto *prefix = new QSpinBox;
+    prefix->setRange(1, StyleSpec::maxPrefixLength);
+    auto *pointSize = new QDoubleSpinBox;
+    pointSize->setRange(0.5, StyleSpec::maxPointSize);
+    pointSize->setSingleStep(0.5);
+    pointSize->setKeyboardTracking(false);
+    styleForm->addRow(tr("Colour:"), colorBy);
+    styleForm->addRow(tr("Prefix length:"), prefix);
+    styleForm->addRow(tr("Point size:"), pointSize);
+    m_editors.insert(QStringLiteral("style.colorBy"), colorBy);
+    const auto setStyle = [this, item](const std::function<void(StyleSpec &)> &edit) {
+        if (m_updating)
+            return;
+        StyleSpec s = item->style();
+        edit(s);
+        if (auto p = item->checkStyle(s)) {
+            updateValues();
+            report(p->message);
+            return;
+        }
+        item->setStyle(s);
+    };
+    connect(colorBy, &QComboBox::currentIndexChanged, this, [setStyle](int i) {
+        setStyle([i](StyleSpec &s) { s.colorBy = StyleSpec::ColorBy(i); });
+    });
+    connect(prefix, &QSpinBox::valueChanged, this,
+            [setStyle](int v) { setStyle([v](StyleSpec &s) { s.prefixLength = v; }); });
+    connect(pointSize, &QDoubleSpinBox::valueChanged, this,
+            [setStyle](double v) { setStyle([v](StyleSpec &s) { s.pointSize = v; }); });
+    m_bindings.append({QStringLiteral("style"), [item, colorBy, prefix, pointSize] {
+        const QSignalBlocker b1(colorBy), b2(prefix), b3(pointSize);
+        colorBy->setCurrentIndex(int(item->style().colorBy));
+        prefix->setValue(item->style().prefixLength);
+        prefix->setEnabled(item->style().colorBy == StyleSpec::ColorBy::Address);
+        pointSize->setValue(item->style().pointSize);
+    }});
+    content->addWidget(styleBox);
+
+    // ---- control points
+    if (item->controlPointSetCount() < 1)
+        return;
+    auto *pointsBox = new QGroupBox(tr("Control points"));
+    auto *pointsLayout = new QVBoxLayout(pointsBox);
+    m_points = new QTableWidget(0, 2);
+    m_points->setHorizontalHeaderLabels({tr("x"), tr("y")});
+    m_points->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_points->setMinimumHeight(140);
+    pointsLayout->addWidget(m_points);
+    m_editors.insert(QStringLiteral("points"), m_points);
+    auto *table = m_points;
+    connect(table, &QTableWidget::cellChanged, this, [this, item, table](int r, int c) {
+        if (m_updating)
+            return;
+        bool ok = false;
+        const double v = table->item(r, c)->text().toDouble(&ok);
+        PlanePoint p = item->controlPoints(0)[std::size_t(r)];
+        (c == 0 ? p.x : p.y) = v;
+        if (!ok || !std::isfinite(v) || !item->moveControlPoint(r, p)) {
+            updateValues();
+            report(tr("\"%1\" is not a finite number.").arg(table->item(r, c)->text()));
+        }
+    });
+    m_bindings.append({QStringLiteral("points"), [item, table] {
+        const QSignalBlocker block(table);
+        const PointList &pts = item->controlPoints(0);
+        table->setRowCount(int(pts.size()));
+        for (int i = 0; i < int(pts.size()); ++i) {
+            table->setVerticalHeaderItem(i, new QTableWidgetItem(QString::number(i + 1)));
+            table->setItem(i, 0, new QTableWidgetItem(QString::number(pts[std::size_t(i)].x, 'g', 10)));
+            table->setItem(i, 1, new QTableWidgetItem(QString::number(pts[std::size_t(i)].y, 'g', 10)));
+        }
+    }});
+    content->addWidget(pointsBox);
+}
+
+} // namespace awb

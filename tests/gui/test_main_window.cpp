@@ -1,0 +1,500 @@
+// The main window end to end: opening projects fills every view, a mouse drag of a control
+// point is one undo step that undo reverts pixel for pixel, properties edits are undoable and
+// reach every view, the figure sheet prints to PDF, SVG export keeps the control polygon as
+// vector paths, and a corrupt file is reported without touching the open project.
+#include "core/Spectrum.h"
+#include "gui/app/ItemController.h"
+#include "gui/app/MainWindow.h"
+#include "gui/app/Messages.h"
+#include "gui/app/PropertiesDock.h"
+#include "gui/views/AttractorView.h"
+#include "gui/views/MatrixView.h"
+#include "gui/views/SpectrumView.h"
+#include "model/Project.h"
+#include "model/Recovery.h"
+#include "model/SubdivisionCurveItem.h"
+
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QComboBox>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace awb;
+
+namespace {
+
+std::unique_ptr<SubdivisionCurveItem> curve(const QString &name, SchemeSpec::Kind kind,
+                                            const PointList &points)
+{
+    auto item = std::make_unique<SubdivisionCurveItem>();
+    item->setName(name);
+    SchemeSpec s = item->scheme();
+    s.kind = kind;
+    item->setScheme(s);
+    // Replace the default points by `points`.
+    while (item->controlPoints(0).size() > 1)
+        item->removeControlPoint(int(item->controlPoints(0).size()) - 1);
+    item->moveControlPoint(0, points.front());
+    for (std::size_t i = 1; i < points.size(); ++i)
+        item->insertControlPoint(int(i), points[i]);
+    AlgorithmSpec a = item->algorithm();
+    a.depth = 9;
+    item->setAlgorithm(a);
+    return item;
+}
+
+// A project file with a cubic B-spline on 5 points, a four-point curve and a cubic Bézier.
+QString writeTestProject(const QString &dir)
+{
+    Project project;
+    project.addItem(curve(QStringLiteral("B-spline"), SchemeSpec::Kind::BSpline,
+                          {{0, 0}, {1, 2}, {3, 2.5}, {4.5, 1}, {6, 2}}));
+    project.addItem(curve(QStringLiteral("Four-point"), SchemeSpec::Kind::FourPoint,
+                          {{0, 0}, {1, 1.5}, {2.5, 2}, {4, 0.5}, {5, 1}, {6.5, 2}}));
+    project.addItem(curve(QStringLiteral("Bezier"), SchemeSpec::Kind::Bezier,
+                          {{0, 0}, {1, 3}, {3, 3}, {4, 0}}));
+    const QString file = dir + QStringLiteral("/test.awb");
+    QString error;
+    if (!project.saveAs(file, &error))
+        qWarning() << error;
+    return file;
+}
+
+// Waits for a final raster with lit pixels.
+bool waitForFinalImage(AttractorView *view)
+{
+    const bool ok = QTest::qWaitFor([view] {
+        return view->currentImageInfo().final && view->currentImageInfo().litPixels > 0
+               && !view->renderer()->isBusy();
+    }, 30000);
+    if (!ok)
+        qWarning() << "no final image: final" << view->currentImageInfo().final << "lit"
+                   << view->currentImageInfo().litPixels << "busy" << view->renderer()->isBusy()
+                   << "error" << view->lastError() << "visible" << view->isVisible();
+    return ok;
+}
+
+// One point per eigenvalue of each map: m per m x m matrix S_i (or A_i).
+int expectedPoints(const DerivedIfs &d)
+{
+    int n = 0;
+    for (const Mat &S : d.S.real)
+        n += int(S.rows());
+    for (const CMat &S : d.S.complex)
+        n += int(S.rows());
+    if (n == 0)
+        for (int i = 0; i < d.ifs.size(); ++i)
+            n += int(d.ifs.effectiveLinearPart(i).rows());
+    return n;
+}
+
+// Every cell of the first matrix table, as shown.
+QStringList firstTable(MatrixView *view)
+{
+    QStringList cells;
+    const QAbstractItemModel *m = view->table(0)->model();
+    for (int r = 0; r < m->rowCount(); ++r)
+        for (int c = 0; c < m->columnCount(); ++c)
+            cells << m->index(r, c).data().toString();
+    return cells;
+}
+
+int liftedCount(const AttractorItem *item)
+{
+    const auto d = item->derivedIfs();
+    return d && d->subdivision ? int(d->subdivision->lifted.size()) : 0;
+}
+
+} // namespace
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void startsWithOneCurve();
+    void openingFillsEveryView();
+    void dragIsOneUndoStep();
+    void propertiesEditIsUndoable();
+    void printToPdf();
+    void svgExportHasControlPolygon();
+    void corruptFileIsReported();
+    void unsavedChangesPrompt();
+    void titleShowsFileAndModified();
+    void recoveryIsOffered();
+
+private:
+    QTemporaryDir m_dir;
+    QString m_file;
+};
+
+void TestMainWindow::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("awb-test"));
+    QCoreApplication::setApplicationName(QStringLiteral("test-main-window"));
+    QVERIFY(m_dir.isValid());
+    // To look at the printed sheet and the exports after a run.
+    if (qEnvironmentVariableIsSet("AWB_KEEP_TEST_FILES")) {
+        m_dir.setAutoRemove(false);
+        qInfo() << "test files in" << m_dir.path();
+    }
+    m_file = writeTestProject(m_dir.path());
+    QVERIFY(QFile::exists(m_file));
+}
+
+void TestMainWindow::startsWithOneCurve()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    QCOMPARE(w.project()->childCount(), 1);
+    QVERIFY(w.currentItem());
+    QVERIFY(!w.project()->isModified());
+    QCOMPARE(w.project()->undoStack()->count(), 0);
+    QVERIFY(w.matrixView()->matrixCount() > 0);
+}
+
+void TestMainWindow::openingFillsEveryView()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QStringList files{m_file};
+    const QDir examples(QStringLiteral(AWB_TEST_SOURCE_DIR "/examples"));
+    for (const QString &f : examples.entryList({QStringLiteral("*.awb")}, QDir::Files))
+        files << examples.filePath(f);
+    for (const QString &file : std::as_const(files)) {
+        QVERIFY2(w.openFile(file), qPrintable(messages.errors.join('\n')));
+        QVERIFY(w.project()->childCount() > 0);
+        for (Item *item : w.project()->items()) {
+            auto *a = qobject_cast<AttractorItem *>(item);
+            // Every item of our own project can be drawn; an example may hold other kinds.
+            if (file == m_file)
+                QVERIFY2(a && a->derivedIfs(), qPrintable(item->name() + ": "
+                                                          + item->derivedError()));
+            if (!a || !a->derivedIfs())
+                continue;
+            w.setCurrentItem(item);
+            w.controller()->refreshNow();
+            const QString where = file + QStringLiteral(": ") + item->name();
+            QVERIFY2(waitForFinalImage(w.attractorView()), qPrintable(where));
+            const auto d = a->derivedIfs();
+            if (!d->S.real.empty()) {
+                QCOMPARE(w.matrixView()->matrixCount(), d->S.count() + liftedCount(a));
+                const int m = int(d->S.real.front().rows());
+                QCOMPARE(w.matrixView()->table(0)->model()->rowCount(), m);
+                QCOMPARE(w.matrixView()->table(0)->model()->columnCount() >= m, true);
+            }
+            QVERIFY2(w.spectrumView()->maps().size() > 0, qPrintable(where));
+            QCOMPARE(w.spectrumView()->plottedEigenvalueCount(),
+                     expectedPoints(*d));
+        }
+    }
+    QVERIFY(messages.errors.isEmpty());
+}
+
+void TestMainWindow::dragIsOneUndoStep()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    w.resize(1300, 850);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openFile(m_file));
+    auto *item = qobject_cast<SubdivisionCurveItem *>(w.project()->child(0));
+    QVERIFY(item);
+    w.setCurrentItem(item);
+    AttractorView *view = w.attractorView();
+    QVERIFY(waitForFinalImage(view));
+    QTest::qWait(50);
+    QVERIFY(waitForFinalImage(view));
+    const QImage before = view->currentImage();
+    const PointList pointsBefore = item->controlPoints(0);
+    const std::vector<Complex> spectrumBefore = w.spectrumView()->maps().front().spectrum.values;
+    const int steps = w.project()->undoStack()->count();
+
+    QSignalSpy finished(view, &AttractorView::renderFinished);
+    const QPoint grab = view->worldToScreen(view->controlPointPosition(1)).toPoint();
+    QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, grab);
+    QTest::mouseMove(view, grab + QPoint(10, -5));
+    QTest::mouseMove(view, grab + QPoint(25, -15));
+    const QPoint end = grab + QPoint(40, -30);
+    QTest::mouseMove(view, end);
+    QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, end);
+
+    QCOMPARE(w.project()->undoStack()->count(), steps + 1);
+    QVERIFY(item->controlPoints(0) != pointsBefore);
+    QCOMPARE(item->controlPoints(0)[0], pointsBefore[0]);
+    // The spectrum of S_i of a B-spline does not depend on P, but the lifted M_i do: the view
+    // shows the new point and a new attractor.
+    QVERIFY(waitForFinalImage(view));
+    QTRY_VERIFY_WITH_TIMEOUT(view->currentImage() != before, 20000);
+    QCOMPARE(view->controlPointPosition(1),
+             QPointF(item->controlPoints(0)[1].x, item->controlPoints(0)[1].y));
+
+    w.project()->undoStack()->undo();
+    QCOMPARE(item->controlPoints(0), pointsBefore);
+    QCOMPARE(w.spectrumView()->maps().front().spectrum.values, spectrumBefore);
+    QTRY_VERIFY_WITH_TIMEOUT(view->currentImageInfo().final && !view->renderer()->isBusy()
+                                 && view->currentImage() == before, 30000);
+}
+
+void TestMainWindow::propertiesEditIsUndoable()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openFile(m_file));
+    auto *item = qobject_cast<SubdivisionCurveItem *>(w.project()->findItem("Four-point"));
+    QVERIFY(item);
+    w.setCurrentItem(item);
+    QVERIFY(waitForFinalImage(w.attractorView()));
+    const QImage before = w.attractorView()->currentImage();
+    const auto specBefore = w.spectrumView()->maps().front().spectrum.values;
+    const QStringList matBefore = firstTable(w.matrixView());
+
+    auto *omega = qobject_cast<QDoubleSpinBox *>(w.propertiesWidget()->editor("scheme.omega"));
+    QVERIFY(omega);
+    QVERIFY(w.propertiesWidget()->slider("scheme.omega"));
+    const int steps = w.project()->undoStack()->count();
+    omega->setValue(0.03);
+    QCOMPARE(item->scheme().omega, 0.03);
+    QCOMPARE(w.project()->undoStack()->count(), steps + 1);
+    w.controller()->refreshNow();
+    QVERIFY(w.spectrumView()->maps().front().spectrum.values != specBefore);
+    QVERIFY(firstTable(w.matrixView()) != matBefore);
+    QVERIFY(waitForFinalImage(w.attractorView()));
+    QTRY_VERIFY_WITH_TIMEOUT(w.attractorView()->currentImage() != before, 20000);
+
+    w.project()->undoStack()->undo();
+    QCOMPARE(item->scheme().omega, 1.0 / 16.0);
+    QCOMPARE(omega->value(), 1.0 / 16.0);
+    w.controller()->refreshNow();
+    QCOMPARE(w.spectrumView()->maps().front().spectrum.values, specBefore);
+    QCOMPARE(firstTable(w.matrixView()), matBefore);
+
+    // One slider drag (press, moves, release) is one undo step, and the spectrum follows it.
+    auto *slider = qobject_cast<QSlider *>(w.propertiesWidget()->slider("scheme.omega"));
+    QVERIFY(slider);
+    const int before2 = w.project()->undoStack()->index();
+    slider->setSliderDown(true);
+    emit slider->sliderPressed();
+    slider->setValue(slider->value() + 10);
+    const double omegaMid = item->scheme().omega;
+    slider->setValue(slider->value() + 10);
+    QVERIFY(item->scheme().omega > omegaMid);
+    QTRY_VERIFY(w.spectrumView()->maps().front().spectrum.values != specBefore);
+    slider->setSliderDown(false);
+    emit slider->sliderReleased();
+    QCOMPARE(w.project()->undoStack()->index(), before2 + 1);
+    QCOMPARE(w.project()->undoStack()->count(), before2 + 1);
+    w.project()->undoStack()->undo();
+    QCOMPARE(item->scheme().omega, 1.0 / 16.0);
+
+    // A refused value is reported and the editor shows the model's value again.
+    auto *depth = qobject_cast<QSpinBox *>(w.propertiesWidget()->editor("algorithm.depth"));
+    QVERIFY(depth);
+    const int depthBefore = item->algorithm().depth;
+    depth->setValue(64);  // 2^64 images: refused by the model
+    QCOMPARE(item->algorithm().depth, depthBefore);
+    QCOMPARE(depth->value(), depthBefore);
+    QCOMPARE(messages.errors.size(), 1);
+}
+
+void TestMainWindow::printToPdf()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openFile(m_file));
+    QVERIFY(waitForFinalImage(w.attractorView()));
+    const QString pdf = m_dir.path() + QStringLiteral("/sheet.pdf");
+    QString error;
+    QVERIFY2(w.printToPdf(pdf, &error), qPrintable(error));
+    QFile f(pdf);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QByteArray bytes = f.readAll();
+    QVERIFY(bytes.startsWith("%PDF"));
+    QCOMPARE(bytes.count("/Type /Page\n") + bytes.count("/Type /Page\r")
+                 + bytes.count("/Type /Page "), 1);
+    QVERIFY(bytes.size() > 5000);  // the figure, not an empty page
+}
+
+void TestMainWindow::svgExportHasControlPolygon()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openFile(m_file));
+    QVERIFY(waitForFinalImage(w.attractorView()));
+    ExportDialog::Options o;
+    o.target = ExportDialog::Target::Attractor;
+    o.fileName = m_dir.path() + QStringLiteral("/attractor.svg");
+    o.size = QSize(800, 600);
+    o.dpi = 96;
+    QString error;
+    QVERIFY2(w.exportView(o, &error), qPrintable(error));
+    QFile f(o.fileName);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QString svg = QString::fromUtf8(f.readAll());
+    // The control polygon: one vector element (polyline or path) through its five vertices,
+    // where the export maps them (the screen's world rectangle fitted into 800 x 600).
+    AttractorView *view = w.attractorView();
+    const QRectF vis = view->visibleWorldRect();
+    const double k = std::min(800 / vis.width(), 600 / vis.height());
+    const QPointF c = view->viewCenter();
+    QList<QPointF> expected;
+    for (int i = 0; i < view->controlPointCount(); ++i) {
+        const QPointF p = view->controlPointPosition(i);
+        expected << QPointF(400 + (p.x() - c.x()) * k, 300 - (p.y() - c.y()) * k);
+    }
+    QCOMPARE(expected.size(), 5);
+    static const QRegularExpression elementRe(
+        QStringLiteral("<(?:polyline[^>]*points|path[^>]*\\bd)=\"([^\"]*)\""));
+    static const QRegularExpression numberRe(QStringLiteral("-?[0-9.]+(?:e-?[0-9]+)?"));
+    bool found = false;
+    for (auto it = elementRe.globalMatch(svg); it.hasNext() && !found;) {
+        QList<double> numbers;
+        for (auto n = numberRe.globalMatch(it.next().captured(1)); n.hasNext();)
+            numbers << n.next().captured().toDouble();
+        int hits = 0;
+        for (const QPointF &e : expected)
+            for (int i = 0; i + 1 < numbers.size(); i += 2)
+                if (QLineF(e, QPointF(numbers[i], numbers[i + 1])).length() < 1.0) {
+                    ++hits;
+                    break;
+                }
+        found = hits == expected.size();
+    }
+    QVERIFY2(found, "no vector path through the control points");
+
+    // PNG at a chosen size and DPI.
+    o.fileName = m_dir.path() + QStringLiteral("/spectrum.png");
+    o.target = ExportDialog::Target::Spectrum;
+    o.dpi = 200;
+    QVERIFY2(w.exportView(o, &error), qPrintable(error));
+    QImage png(o.fileName);
+    QCOMPARE(png.size(), QSize(800, 600));
+    QCOMPARE(qRound(png.dotsPerMeterX() * 0.0254), 200);
+
+    // The analysis charts, computed off the GUI thread, export like any view.
+    QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->analysisRunning(), 30000);
+    QTest::qWait(300);
+    QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->analysisRunning(), 30000);
+    o.fileName = m_dir.path() + QStringLiteral("/analysis.png");
+    o.target = ExportDialog::Target::Analysis;
+    QVERIFY2(w.exportView(o, &error), qPrintable(error));
+    o.fileName = m_dir.path() + QStringLiteral("/sheet.png");
+    o.target = ExportDialog::Target::FigureSheet;
+    o.size = QSize(1400, 1000);
+    QVERIFY2(w.exportView(o, &error), qPrintable(error));
+    QImage sheet(o.fileName);
+    QCOMPARE(sheet.size(), QSize(1400, 1000));
+    // The caption is at the top left, the figure below: both leave ink.
+    int dark = 0;
+    for (int y = 0; y < 60; ++y)
+        for (int x = 0; x < 400; ++x)
+            dark += qGray(sheet.pixel(x, y)) < 128;
+    QVERIFY(dark > 50);
+}
+
+void TestMainWindow::corruptFileIsReported()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    QVERIFY(w.openFile(m_file));
+    const QByteArray before = w.project()->serialize();
+    const QString bad = m_dir.path() + QStringLiteral("/corrupt.awb");
+    QFile f(bad);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("{\"format\": \"attractor-workbench\", \"version\": 1, \"items\": [{\"type\": ");
+    f.close();
+    QString loaderMessage;
+    {
+        Project probe;
+        QVERIFY(!probe.open(bad, &loaderMessage));
+    }
+    QVERIFY(!w.openFile(bad));
+    QCOMPARE(messages.errors.size(), 1);
+    QVERIFY(messages.errors.first().contains(loaderMessage));
+    QCOMPARE(w.project()->serialize(), before);
+    QCOMPARE(w.project()->fileName(), m_file);
+}
+
+void TestMainWindow::unsavedChangesPrompt()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    auto *item = qobject_cast<AttractorItem *>(w.currentItem());
+    QVERIFY(item);
+    QVERIFY(item->moveControlPoint(0, {0.5, 0.5}));
+    QVERIFY(w.project()->isModified());
+    messages.answer = QMessageBox::Cancel;
+    w.action(QStringLiteral("actionNew"))->trigger();
+    QCOMPARE(messages.questions.size(), 1);
+    QCOMPARE(item->controlPoints(0)[0], (PlanePoint{0.5, 0.5}));  // cancelled: still there
+    messages.answer = QMessageBox::Discard;
+    w.action(QStringLiteral("actionNew"))->trigger();
+    QCOMPARE(messages.questions.size(), 2);
+    QVERIFY(!w.project()->isModified());
+    QCOMPARE(w.project()->childCount(), 1);
+}
+
+void TestMainWindow::titleShowsFileAndModified()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    QVERIFY(w.openFile(m_file));
+    QVERIFY(w.windowTitle().contains(QStringLiteral("test.awb")));
+    QVERIFY(!w.isWindowModified());
+    auto *item = qobject_cast<AttractorItem *>(w.project()->child(0));
+    QVERIFY(item->moveControlPoint(0, {0.25, 0.0}));
+    QVERIFY(w.isWindowModified());
+    w.project()->undoStack()->undo();
+    QVERIFY(!w.isWindowModified());
+}
+
+void TestMainWindow::recoveryIsOffered()
+{
+    const QString dir = m_dir.path() + QStringLiteral("/recovery-offer");
+    QString crashed;
+    QByteArray edited;
+    {
+        // A session with an unsaved edit writes its recovery file; copying it under another
+        // name leaves a file whose process (lock) is gone, as after a crash.
+        Project project;
+        Recovery recovery(&project, dir);
+        QVERIFY(project.open(m_file));
+        auto *item = qobject_cast<AttractorItem *>(project.child(0));
+        QVERIFY(item->moveControlPoint(0, {-1.0, 0.5}));
+        QVERIFY(recovery.autosave());
+        const QFileInfo info(recovery.filePath());
+        crashed = info.path() + QStringLiteral("/crashed-") + info.fileName();
+        QVERIFY(QFile::copy(recovery.filePath(), crashed));
+        edited = project.serialize();
+    }
+    RecordingMessages messages;
+    messages.answer = QMessageBox::Yes;
+    MainWindow w(&messages, dir);
+    QVERIFY(w.offerRecovery());
+    QCOMPARE(messages.questions.size(), 1);
+    QVERIFY(messages.questions.first().contains(QStringLiteral("test.awb")));
+    QCOMPARE(w.project()->serialize(), edited);
+    QVERIFY(w.project()->isModified());
+    QCOMPARE(w.project()->fileName(), m_file);
+    QVERIFY(w.isWindowModified());
+    QVERIFY(!QFile::exists(crashed));  // recovered: the copy is gone
+    QVERIFY(!w.offerRecovery());
+}
+
+QTEST_MAIN(TestMainWindow)
+#include "test_main_window.moc"
