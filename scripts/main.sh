@@ -1,13 +1,18 @@
 #!/usr/bin/env bash
-# Sets everything up and runs the main job: renders every example project of the gallery
-# (examples/*.awb, one per paper figure) with the CLI, and the built-in figure strips.
+# Sets everything up and runs the main job. With a display: the desktop application on an
+# example of the gallery. Without one (or with AWB_NO_GUI=1): renders every example project of
+# the gallery (examples/*.awb, one per paper figure) with the CLI to build/gallery/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
+if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && [ -z "${AWB_NO_GUI:-}" ] \
+   && [ -x build/bin/attractor-workbench ]; then
+    exec ./build/bin/attractor-workbench examples/000-fig11-sierpinski-with-control-points.awb
+fi
 out="$(pwd)/build/gallery"
 mkdir -p "$out"
 for f in examples/*.awb; do
     ./build/bin/attractor-cli render "$f" --out "$out/$(basename "$f" .awb).png" --size 900x700
 done
 ./build/bin/attractor-cli examples --out "$out/strips"
-echo "The figures are in $out"
+echo "No display: the gallery was rendered to $out"

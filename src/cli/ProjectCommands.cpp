@@ -301,9 +301,14 @@ int render(const QStringList &args)
         }
         spec.panelWidth = sm.captured(1).toInt();
         spec.panelHeight = sm.captured(2).toInt() - 26;
-        spec.panels = {{spec.random ? QString("%1: %2 random points").arg(item->name()).arg(spec.samples)
-                                    : QString("%1: F^%2(X0)").arg(item->name()).arg(depth),
-                        depth}};
+        QString caption = spec.random
+                              ? QString("%1: %2 random points").arg(item->name()).arg(spec.samples)
+                              : QString("%1: F^%2(X0)").arg(item->name()).arg(depth);
+        if (d->polygon) // a normal-vector curve: the polygon after `steps` is the figure
+            caption = QString("%1: polygon after %2 steps")
+                          .arg(item->name())
+                          .arg(item->parameter("steps").toInt());
+        spec.panels = {{caption, depth}};
         QString error;
         if (!writeFigure(spec, parser.value("out"), &error))
             throw Failure{error};
