@@ -90,7 +90,15 @@ QList<MapSpectrum> mapSpectra(const DerivedIfs &d)
             return contractivity(d.A.real[std::size_t(i)]);
         if (int(d.A.complex.size()) > i)
             return contractivity(d.A.complex[std::size_t(i)]);
-        return contractivity(d.ifs.effectiveLinearPart(i));
+        if (i < d.ifs.size())
+            return contractivity(d.ifs.effectiveLinearPart(i));
+        // Automata list their row-stochastic arc matrices in S but have no plain maps: the
+        // matrix acts on barycentric coordinates, so restrict it to the sum-preserving part.
+        Ifs arc;
+        const Mat &S = d.S.real.at(std::size_t(i));
+        arc.maps.push_back({S, RowVec::Zero(S.rows())});
+        arc.barycentricBlocks.push_back({0, int(S.rows())});
+        return contractivity(arc.effectiveLinearPart(0));
     };
     if (!d.S.real.empty() || !d.S.complex.empty()) {
         for (int i = 0; i < d.S.count(); ++i) {
@@ -219,7 +227,11 @@ void ItemController::refreshNow()
         problem = tr("%1 cannot be drawn: %2").arg(item->name(), item->derivedError());
     } else {
         try {
-            m_attractor->setIfs(std::make_shared<const Ifs>(d->ifs), item->coreStartSet(*d));
+            if (d->ifs.size() > 0 || d->iterate)
+                m_attractor->setIfs(std::make_shared<const Ifs>(d->ifs), item->coreStartSet(*d),
+                                    d->iterate);
+            else // a polygon figure (normal-vector curve without an equivalent IFS)
+                m_attractor->setIfs(nullptr, StartSet{});
         } catch (const std::exception &e) {
             problem = tr("Start set: %1").arg(QString::fromStdString(e.what()));
             m_attractor->setIfs(nullptr, StartSet{});

@@ -115,15 +115,17 @@ QImage colourise(const RasterSink &raster, const RenderRequest &r, int prefix, i
 
 void checkRequest(const RenderRequest &r)
 {
-    if (!r.ifs || r.ifs->size() == 0)
+    if (!r.ifs || (r.ifs->size() == 0 && !r.iterate))
         throw InputError("there is no IFS to draw");
     if (r.ifs->views.empty())
         throw InputError("the IFS has no view to draw it with");
     if (r.size.width() < 1 || r.size.height() < 1)
         throw InputError("the image is empty");
-    const IfsCheck check = checkIfs(*r.ifs);
-    if (!check.contractive)
-        throw InputError(check.message);
+    if (!r.iterate) {
+        const IfsCheck check = checkIfs(*r.ifs);
+        if (!check.contractive)
+            throw InputError(check.message);
+    }
     if (r.start.vertices.rows() == 0)
         throw InputError("the start set is empty");
 }
@@ -154,7 +156,9 @@ bool renderPass(const RenderRequest &r, const Pass &pass, const IterationControl
         sinks.push_back(rasters.back().get());
     }
     IterationStats stats;
-    if (r.mode == RenderRequest::Mode::Deterministic) {
+    if (r.iterate) {
+        stats = r.iterate(r.start, pass.depth, sinks, control);
+    } else if (r.mode == RenderRequest::Mode::Deterministic) {
         stats = iterateParallel(*r.ifs, r.start, pass.depth, sinks, control);
     } else {
         ChaosOptions opt;
@@ -167,7 +171,7 @@ bool renderPass(const RenderRequest &r, const Pass &pass, const IterationControl
         return false;
     for (std::size_t t = 1; t < rasters.size(); ++t)
         rasters.front()->merge(*rasters[t]);
-    *image = colourise(*rasters.front(), r, prefix, r.ifs->size());
+    *image = colourise(*rasters.front(), r, prefix, std::max(1, r.ifs->size()));
     info->depth = r.mode == RenderRequest::Mode::Deterministic ? pass.depth : 0;
     info->images = double(stats.images);
     info->seconds = timer.nsecsElapsed() * 1e-9;
@@ -181,6 +185,11 @@ std::vector<Pass> passesFor(const RenderRequest &r)
 {
     std::vector<Pass> out;
     const double views = double(std::max<std::size_t>(1, r.ifs->views.size()));
+    if (r.iterate) {
+        // An automaton: the image count is not N^k, so draw the requested depth at once.
+        out.push_back({r.depth, 0, 0.0, true});
+        return out;
+    }
     if (r.mode == RenderRequest::Mode::Deterministic) {
         const int N = r.ifs->size();
         int coarse = 0;

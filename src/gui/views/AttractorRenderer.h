@@ -31,10 +31,17 @@ enum class AttractorColorMode {
     Single      // one colour
 };
 
+// Streams F^depth of an attractor that is not that of one IFS (an automaton's state) to the
+// sinks, like awb::iterateParallel (model/AttractorItem.h, DerivedIfs::iterate).
+using CustomIterate = std::function<IterationStats(const StartSet &, int,
+                                                   const std::vector<AttractorSink *> &,
+                                                   const IterationControl &)>;
+
 struct RenderRequest {
     enum class Mode { Deterministic, Random };
 
-    std::shared_ptr<const Ifs> ifs;
+    std::shared_ptr<const Ifs> ifs;   // with `iterate`: only its views are used
+    CustomIterate iterate;            // set for automata: deterministic depth only
     StartSet start;                 // in the IFS space (n x D)
     Mode mode = Mode::Deterministic;
     int depth = 10;                 // deterministic: F^depth(start)

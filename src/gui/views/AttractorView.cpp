@@ -204,9 +204,11 @@ AttractorView::AttractorView(QWidget *parent) : QWidget(parent)
 
 AttractorView::~AttractorView() = default;
 
-void AttractorView::setIfs(std::shared_ptr<const Ifs> ifs, const StartSet &start)
+void AttractorView::setIfs(std::shared_ptr<const Ifs> ifs, const StartSet &start,
+                           CustomIterate iterate)
 {
     m_ifs = std::move(ifs);
+    m_iterate = std::move(iterate);
     m_start = start;
     if (!m_ifs) {
         // Nothing to draw: a picture of the previous IFS would be wrong.
@@ -466,6 +468,7 @@ void AttractorView::startRender()
     }
     RenderRequest r;
     r.ifs = m_ifs;
+    r.iterate = m_iterate;
     r.start = m_start;
     r.mode = m_settings.mode;
     r.depth = m_settings.depth;
@@ -586,6 +589,7 @@ QImage AttractorView::exportRaster(const Mapping &m, RenderInfo *info) const
     // data arrived): the export must not silently lack the attractor.
     RenderRequest r;
     r.ifs = m_ifs;
+    r.iterate = m_iterate;
     r.start = m_start;
     r.mode = m_settings.mode;
     r.depth = m_settings.depth;

@@ -43,7 +43,9 @@ public:
 
     // ---- data (plain core types; the view keeps copies, the owner stays the document) ----
     // The IFS and its start set X0 (in the IFS space; drawn through the IFS's first view).
-    void setIfs(std::shared_ptr<const Ifs> ifs, const StartSet &start);
+    // `iterate` draws automata (CIFS states): then only the views of `ifs` are used.
+    void setIfs(std::shared_ptr<const Ifs> ifs, const StartSet &start,
+                CustomIterate iterate = {});
     void setStartSet(const StartSet &start);
     // Control points m x 2 (one per row), drawn as the control polygon; empty to hide.
     void setControlPoints(const Mat &points, bool closed = false);
@@ -175,6 +177,7 @@ private:
     QTimer m_renderTimer;
 
     std::shared_ptr<const Ifs> m_ifs;
+    CustomIterate m_iterate;
     StartSet m_start;
     std::vector<QPointF> m_startPlane;
     std::vector<QPointF> m_control;
