@@ -174,17 +174,8 @@ bool CifsItem::setParameter(const QString &key, const QVariant &value, int gestu
     } else {
         return Item::setParameter(key, value, gesture, error);
     }
-    if (!ok) {
-        if (error)
-            *error = tr("\"%1\" is not a valid value for %2").arg(value.toString(), key);
-        return false;
-    }
-    if (const MaybeProblem p = checkSpec(next)) {
-        if (error)
-            *error = p->message;
-        return false;
-    }
-    return setSpec(next, gesture);
+    return commitParameter(key, value, ok, checkSpec(next),
+                           [&] { return setSpec(next, gesture); }, error);
 }
 
 } // namespace awb

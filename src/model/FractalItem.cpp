@@ -286,17 +286,8 @@ bool FractalItem::setParameter(const QString &key, const QVariant &value, int ge
     } else {
         return Item::setParameter(key, value, gesture, error);
     }
-    if (!ok) {
-        if (error)
-            *error = tr("\"%1\" is not a valid value for %2").arg(value.toString(), key);
-        return false;
-    }
-    if (const MaybeProblem p = checkFractal(next)) {
-        if (error)
-            *error = p->message;
-        return false;
-    }
-    return setFractal(next, gesture);
+    return commitParameter(key, value, ok, checkFractal(next),
+                           [&] { return setFractal(next, gesture); }, error);
 }
 
 } // namespace awb

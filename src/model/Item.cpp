@@ -97,4 +97,21 @@ bool Item::setParameter(const QString &key, const QVariant &, int, QString *erro
     return false;
 }
 
+bool Item::commitParameter(const QString &key, const QVariant &value, bool parsed,
+                           const MaybeProblem &problem, const std::function<bool()> &apply,
+                           QString *error)
+{
+    if (!parsed) {
+        if (error)
+            *error = tr("\"%1\" is not a valid value for %2").arg(value.toString(), key);
+        return false;
+    }
+    if (problem) {
+        if (error)
+            *error = problem->message;
+        return false;
+    }
+    return apply();
+}
+
 } // namespace awb

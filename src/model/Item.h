@@ -12,6 +12,7 @@
 #include <QJsonObject>
 #include <QObject>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -117,6 +118,12 @@ public:
     // unknown or the value refused; *error then says why, in words for the user.
     virtual bool setParameter(const QString &key, const QVariant &value, int gesture = 0,
                               QString *error = nullptr);
+
+    // The common end of every setParameter(): refuses a value that did not parse (`parsed`
+    // false) or that `problem` objects to, with *error saying why; otherwise runs `apply`.
+    bool commitParameter(const QString &key, const QVariant &value, bool parsed,
+                         const MaybeProblem &problem, const std::function<bool()> &apply,
+                         QString *error);
 
     // Serialization: each kind writes and reads its own fields and calls its base first.
     // "type" and "children" are handled by ProjectIO. read() throws LoadError.

@@ -344,17 +344,8 @@ bool NormalVectorItem::setParameter(const QString &key, const QVariant &value, i
     } else {
         return Item::setParameter(key, value, gesture, error);
     }
-    if (!ok) {
-        if (error)
-            *error = tr("\"%1\" is not a valid value for %2").arg(value.toString(), key);
-        return false;
-    }
-    if (const MaybeProblem problem = checkSpec(next)) {
-        if (error)
-            *error = problem->message;
-        return false;
-    }
-    return setSpec(next, gesture);
+    return commitParameter(key, value, ok, checkSpec(next),
+                           [&] { return setSpec(next, gesture); }, error);
 }
 
 } // namespace awb

@@ -407,17 +407,8 @@ bool SubdivisionCurveItem::setParameter(const QString &key, const QVariant &valu
     } else {
         return Item::setParameter(key, value, gesture, error);
     }
-    if (!ok) {
-        if (error)
-            *error = tr("\"%1\" is not a valid value for %2").arg(value.toString(), key);
-        return false;
-    }
-    if (const MaybeProblem p = checkScheme(next)) {
-        if (error)
-            *error = p->message;
-        return false;
-    }
-    return setScheme(next, gesture);
+    return commitParameter(key, value, ok, checkScheme(next),
+                           [&] { return setScheme(next, gesture); }, error);
 }
 
 } // namespace awb
