@@ -293,7 +293,7 @@ ConjectureComparison compareConjecture(const CVec &P, double y, int depth)
         takagiParams[j] = Complex(r, 2.0 * y * takagi(r, depth));
     }
     const CVec cs = bezierPoints(P, s);
-    const CVec ct = bezierPoints(P, takagiParams);
+    const CVec ct = bezierPoints(P, takagiParams);  // = takagiImage(P, y, depth) without x = 1
     ConjectureComparison c;
     c.y = y;
     c.depth = depth;
@@ -313,6 +313,26 @@ ConjectureComparison compareConjecture(const CVec &P, double y, int depth)
     c.toPlainCurve = hausdorffToCurve(
         pts, toPlane(std::vector<Complex>(plain.data(), plain.data() + plain.size())));
     return c;
+}
+
+std::vector<Complex> takagiImage(const CVec &P, double y, int depth)
+{
+    if (P.size() < 2)
+        throw InputError("Takagi image: needs at least 2 control points, got "
+                         + std::to_string(P.size()));
+    if (!P.allFinite() || !std::isfinite(y))
+        throw InputError("Takagi image: control points and y must be finite");
+    if (depth < 1 || depth > 20)
+        throw InputError("Takagi image: depth " + std::to_string(depth)
+                         + " is outside 1..20");
+    const std::size_t n = (std::size_t(1) << depth) + 1;
+    std::vector<Complex> params(n);
+    for (std::size_t j = 0; j < n; ++j) {
+        const double x = std::ldexp(double(j), -depth);
+        params[j] = Complex(x, 2.0 * y * takagi(x, depth));
+    }
+    const CVec c = bezierPoints(P, params);
+    return std::vector<Complex>(c.data(), c.data() + c.size());
 }
 
 CVec example373ControlPoints()

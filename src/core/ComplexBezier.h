@@ -131,6 +131,14 @@ struct ConjectureComparison {
 };
 ConjectureComparison compareConjecture(const CVec &P, double y, int depth = 14);
 
+// The Takagi image of Conjecture 3.7.1 as a polyline: the 2^depth + 1 points
+// c(x_j + 2 i y T(x_j)), x_j = j / 2^depth, c the Bézier curve of P at complex parameters (T is
+// exact at these dyadics). For P = (0, 1) it is the graph x + 2 i y T(x), which the attractor of
+// t = 1/2 + i y approaches as O(y^2) (TakagiComparison). Any finite y (y = 0 gives the plain
+// curve c([0, 1])); InputError for fewer than 2 control points, non-finite input, depth outside
+// 1..20.
+std::vector<Complex> takagiImage(const CVec &P, double y, int depth = 10);
+
 // 004 Example 3.7.3: p_0 = 0, p_1 = 1/2 + 2i, p_2 = 1/2 (the thesis uses y = 10^-2).
 CVec example373ControlPoints();
 

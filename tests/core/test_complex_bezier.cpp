@@ -92,6 +92,7 @@ private slots:
     void takagiFunction();
     void theorem373ErrorShrinksLikeYSquared();
     void conjecture371Example373();
+    void takagiImageIsTheOverlay();
     void badInput();
 };
 
@@ -380,6 +381,49 @@ void TestComplexBezier::conjecture371Example373()
     // Fig. 3.9 "we can not quite see any difference" at y = 10^-2: relative to the curve's size
     // (~1.4) the distance is below 1e-3, under a pixel of the printed figure.
     QVERIFY(c[1].toTakagiImage < 1e-3);
+}
+
+void TestComplexBezier::takagiImageIsTheOverlay()
+{
+    // The polyline the attractor view overlays: for the segment (0, 1) it is the graph
+    // x + 2iy T(x) at dyadics, T(1/2) = 1/2, T(1/4) = T(3/4) = 1/2 (sum of 1/4 + 1/4), T(0) = 0.
+    const double y = 0.05;
+    const std::vector<Complex> g = takagiImage(segment(), y, 2);
+    QCOMPARE(int(g.size()), 5);
+    const double T[5] = {0.0, 0.5, 0.5, 0.5, 0.0};
+    for (int j = 0; j < 5; ++j) {
+        QVERIFY(std::abs(g[std::size_t(j)] - Complex(j / 4.0, 2 * y * T[j])) < 1e-15);
+    }
+    // Example 3.7.3 at y = 10^-2: the overlay is the Takagi image of compareConjecture, so the
+    // attractor is as close to it as that comparison says (O(y^2), below a printed pixel).
+    const CVec P = example373ControlPoints();
+    const std::vector<Complex> image = takagiImage(P, 0.01, 12);
+    QCOMPARE(int(image.size()), 4097);
+    QVERIFY(std::abs(image.front() - P(0)) < 1e-15);
+    QVERIFY(std::abs(image.back() - P(2)) < 1e-15);
+    const std::vector<Complex> a = attractorPoints(complexBezierIfs(P, Complex(0.5, 0.01)), 12);
+    double pointwise = 0.0;
+    for (std::size_t j = 0; j < a.size(); ++j)
+        pointwise = std::max(pointwise, std::abs(a[j] - image[j]));
+    const double bound = compareConjecture(P, 0.01, 12).toTakagiImage;
+    QVERIFY2(std::abs(pointwise - bound) < 1e-12,
+             (std::to_string(pointwise) + " vs " + std::to_string(bound)).c_str());
+    // Set to set (the overlay also has x = 1, the end point p_2, which the depth-12 points
+    // approach to within |1 - t|^12 * diameter): below a printed pixel.
+    const double dH = hausdorffDistance(toPlane(a), toPlane(image));
+    QVERIFY2(dH < 1e-3, std::to_string(dH).c_str());
+    // y = 0: the plain Bézier curve.
+    const std::vector<Complex> plain = takagiImage(P, 0.0, 4);
+    std::vector<Complex> params;
+    for (int j = 0; j <= 16; ++j)
+        params.push_back(j / 16.0);
+    const CVec expected = bezierPoints(P, params);
+    for (int j = 0; j <= 16; ++j)
+        QVERIFY(std::abs(plain[std::size_t(j)] - expected(j)) < 1e-15);
+    VERIFY_INPUT_ERROR(takagiImage(CVec::Constant(1, 1.0), 0.1), "at least 2");
+    VERIFY_INPUT_ERROR(takagiImage(P, std::numeric_limits<double>::quiet_NaN()), "finite");
+    VERIFY_INPUT_ERROR(takagiImage(P, 0.1, 0), "depth");
+    VERIFY_INPUT_ERROR(takagiImage(P, 0.1, 21), "depth");
 }
 
 void TestComplexBezier::badInput()

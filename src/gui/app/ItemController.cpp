@@ -1,14 +1,17 @@
 #include "gui/app/ItemController.h"
 
 #include "core/Attractor.h"
+#include "core/ComplexBezier.h"
 #include "core/Geometry.h"
 #include "core/Scheme.h"
 #include "core/Spectrum.h"
 #include "gui/views/AnalysisCharts.h"
 #include "gui/views/AttractorView.h"
 #include "gui/views/MatrixView.h"
+#include "gui/views/NumberFormat.h"
 #include "gui/views/SpectrumView.h"
 #include "model/AttractorItem.h"
+#include "model/ComplexBezierItem.h"
 #include "model/Project.h"
 #include "model/SubdivisionCurveItem.h"
 
@@ -55,6 +58,31 @@ std::shared_ptr<const CurveScheme> realScheme(const Item *item)
         return std::shared_ptr<const CurveScheme>(curve->scheme().makeScheme());
     } catch (const std::exception &) {
         return nullptr;
+    }
+}
+
+// The exact-curve overlay of a complex Bézier item (004 §3.7): for a real t the attractor is
+// the Bézier curve itself; for t = 1/2 + iy the Takagi image c(x + 2iy T(x)) of Conjecture
+// 3.7.1, which the attractor approaches as O(y^2). Other t: no overlay (the attractor is
+// c(A_1), a curve known only through the IFS).
+Mat complexBezierOverlay(const ComplexBezierItem &item, const Mat &P, QString *label)
+{
+    const Complex t = item.t();
+    const bool real = std::abs(t.imag()) < 1e-12;
+    if (P.rows() < 2 || (!real && std::abs(t.real() - 0.5) > 1e-12))
+        return {};
+    const CVec z = P.col(0).cast<Complex>() + Complex(0.0, 1.0) * P.col(1).cast<Complex>();
+    try {
+        const std::vector<Complex> c = takagiImage(z, real ? 0.0 : t.imag(), 10);
+        Mat out(Eigen::Index(c.size()), 2);
+        for (std::size_t i = 0; i < c.size(); ++i)
+            out.row(Eigen::Index(i)) << c[i].real(), c[i].imag();
+        *label = real ? ItemController::tr("Bézier curve c([0, 1])")
+                      : ItemController::tr("Takagi image c(x + 2iy·T(x)), y = %1")
+                            .arg(formatNumber(t.imag(), 4));
+        return out;
+    } catch (const std::exception &) {
+        return {};
     }
 }
 
@@ -259,6 +287,7 @@ void ItemController::refreshNow()
 
         const auto scheme = realScheme(item);
         Mat exact;
+        QString exactLabel;
         std::vector<Mat> polygons;
         if (scheme && P.rows() > 0) {
             try {
@@ -270,9 +299,13 @@ void ItemController::refreshNow()
                 // No overlay: the attractor itself shows what the scheme does.
             }
         }
+        if (const auto *cb = qobject_cast<const ComplexBezierItem *>(item))
+            exact = complexBezierOverlay(*cb, P, &exactLabel);
+        else if (exact.rows() > 1)
+            exactLabel = tr("exact limit curve");
         if (d->polygon)
             polygons.push_back(*d->polygon);
-        m_attractor->setExactCurve(exact);
+        m_attractor->setExactCurve(exact, exactLabel);
         m_attractor->setSubdivisionPolygons(polygons);
 
         const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item);

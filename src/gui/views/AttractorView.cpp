@@ -240,9 +240,10 @@ void AttractorView::setControlPoints(const Mat &points, bool closed)
     dataChanged(true);
 }
 
-void AttractorView::setExactCurve(const Mat &curve)
+void AttractorView::setExactCurve(const Mat &curve, const QString &label)
 {
     m_exact = toPolygon(curve);
+    m_exactLabel = m_exact.size() > 1 ? label : QString();
     update();
 }
 
@@ -581,6 +582,35 @@ void AttractorView::paintScene(QPainter &p, const Mapping &m, bool forExport)
         paintVectorImages(p, m, m_hutch, m_start.kind);
 
     paintHandles(p, m);
+    paintLegend(p, m);
+}
+
+void AttractorView::paintLegend(QPainter &p, const Mapping &m) const
+{
+    if (m_exactLabel.isEmpty() || !isLayerVisible(Layer::ExactCurve) || m_exact.size() < 2)
+        return;
+    const double u = m.scale / m_scale;
+    p.save();
+    const QFont f = sceneFont(1.0, u);
+    p.setFont(f);
+    const QFontMetricsF fm(f, p.device());
+    const double pad = 5.0 * u, swatch = 22.0 * u;
+    const QRectF text = fm.boundingRect(m_exactLabel);
+    const QRectF box(m.target.left() + pad, m.target.top() + pad,
+                     swatch + 3 * pad + text.width(), text.height() + 2 * pad);
+    p.setPen(QPen(QColor(200, 200, 200), 1.0 * u));
+    p.setBrush(QColor(255, 255, 255, 225));
+    p.drawRect(box);
+    QColor band = kExactColour;
+    band.setAlphaF(0.3f);
+    const double y = box.center().y();
+    p.setPen(QPen(band, 7.0 * u, Qt::SolidLine, Qt::RoundCap));
+    p.drawLine(QPointF(box.left() + pad, y), QPointF(box.left() + pad + swatch, y));
+    p.setPen(QColor(40, 40, 40));
+    p.drawText(QRectF(box.left() + 2 * pad + swatch, box.top() + pad, text.width() + pad,
+                      text.height()),
+               Qt::AlignLeft | Qt::AlignVCenter, m_exactLabel);
+    p.restore();
 }
 
 QImage AttractorView::exportRaster(const Mapping &m, RenderInfo *info) const

@@ -49,8 +49,11 @@ public:
     void setStartSet(const StartSet &start);
     // Control points m x 2 (one per row), drawn as the control polygon; empty to hide.
     void setControlPoints(const Mat &points, bool closed = false);
-    // The exact limit curve (n x 2) where one exists; empty to clear.
-    void setExactCurve(const Mat &curve);
+    // The exact limit curve (n x 2) where one exists; empty to clear. A non-empty `label`
+    // (what the curve is, e.g. "Takagi image c(x + 2iy·T(x))") is drawn as a legend entry.
+    void setExactCurve(const Mat &curve, const QString &label = {});
+    QString exactCurveLabel() const { return m_exactLabel; }
+    int exactCurvePointCount() const { return int(m_exact.size()); }
     // Classic subdivision polygons, coarse to fine (k x 2 each).
     void setSubdivisionPolygons(const std::vector<Mat> &polygons);
     // Draw F^k(X0) as vectors (the papers' step-by-step figures); -1 turns it off.
@@ -157,6 +160,7 @@ private:
     void paintVectorImages(QPainter &p, const Mapping &m, const std::vector<VectorImage> &images,
                            StartSet::Kind kind) const;
     void paintHandles(QPainter &p, const Mapping &m) const;
+    void paintLegend(QPainter &p, const Mapping &m) const;
     void paintStatus(QPainter &p) const;
 
     void dataChanged(bool geometryChanged);
@@ -183,6 +187,7 @@ private:
     std::vector<QPointF> m_control;
     bool m_controlClosed = false;
     QPolygonF m_exact;
+    QString m_exactLabel;
     std::vector<QPolygonF> m_subdivision;
     int m_hutchStep = -1;
     std::vector<VectorImage> m_hutch;
