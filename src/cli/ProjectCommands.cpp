@@ -4,6 +4,7 @@
 #include "core/Geometry.h"
 #include "core/Spectrum.h"
 #include "model/AttractorItem.h"
+#include "model/ExactCurve.h"
 #include "model/Project.h"
 #include "model/SubdivisionCurveItem.h"
 
@@ -293,12 +294,8 @@ int render(const QStringList &args)
                 spec.controlPolygons.push_back(toMatrix(item->controlPoints(s)));
         if (d->polygon)
             spec.polygons.push_back(*d->polygon);
-        if (auto *curve = qobject_cast<SubdivisionCurveItem *>(item); curve && d->subdivision
-            && !curve->scheme().isComplex()) {
-            if (auto exact = curve->scheme().makeScheme()->exactCurve(
-                    toMatrix(curve->controlPoints()), 800))
-                spec.overlays.push_back(*exact);
-        }
+        if (const auto exact = exactCurveOf(item, 800))
+            spec.overlays.push_back(exact->points);
         spec.panelWidth = sm.captured(1).toInt();
         spec.panelHeight = sm.captured(2).toInt() - 26;
         QString caption = spec.random
@@ -430,7 +427,8 @@ int check(const QStringList &args)
             err() << project.fileName() << ": " << p << "\n";
         if (!problems.isEmpty())
             return 3;
-        out() << project.fileName() << ": OK, " << project.items().size() << " items\n";
+        const auto n = project.items().size();
+        out() << project.fileName() << ": OK, " << n << (n == 1 ? " item\n" : " items\n");
         return 0;
     });
 }

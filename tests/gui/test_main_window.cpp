@@ -10,6 +10,7 @@
 #include "gui/views/AttractorView.h"
 #include "gui/views/MatrixView.h"
 #include "gui/views/SpectrumView.h"
+#include "model/ExactCurve.h"
 #include "model/Project.h"
 #include "model/Recovery.h"
 #include "model/SubdivisionCurveItem.h"
@@ -198,6 +199,16 @@ void TestMainWindow::openingFillsEveryView()
             }
             if (d->S.count() > 0)
                 QVERIFY2(w.spectrumView()->maps().size() > 0, qPrintable(where));
+            // The exact-curve overlay where one is known (B-spline, Bézier, Takagi image).
+            if (const auto exact = exactCurveOf(item)) {
+                QCOMPARE(w.attractorView()->exactCurvePointCount(), int(exact->points.rows()));
+                QCOMPARE(w.attractorView()->exactCurveLabel(), exact->label);
+            } else {
+                QCOMPARE(w.attractorView()->exactCurvePointCount(), 0);
+            }
+            if (file.contains(QStringLiteral("004-fig3.9")))
+                QVERIFY2(w.attractorView()->exactCurveLabel().contains(QStringLiteral("Takagi")),
+                         qPrintable(where));
             QCOMPARE(w.spectrumView()->plottedEigenvalueCount(),
                      expectedPoints(*d));
         }

@@ -1,7 +1,6 @@
 #include "gui/app/ItemController.h"
 
 #include "core/Attractor.h"
-#include "core/ComplexBezier.h"
 #include "core/Geometry.h"
 #include "core/Scheme.h"
 #include "core/Spectrum.h"
@@ -11,7 +10,7 @@
 #include "gui/views/NumberFormat.h"
 #include "gui/views/SpectrumView.h"
 #include "model/AttractorItem.h"
-#include "model/ComplexBezierItem.h"
+#include "model/ExactCurve.h"
 #include "model/Project.h"
 #include "model/SubdivisionCurveItem.h"
 
@@ -58,31 +57,6 @@ std::shared_ptr<const CurveScheme> realScheme(const Item *item)
         return std::shared_ptr<const CurveScheme>(curve->scheme().makeScheme());
     } catch (const std::exception &) {
         return nullptr;
-    }
-}
-
-// The exact-curve overlay of a complex Bézier item (004 §3.7): for a real t the attractor is
-// the Bézier curve itself; for t = 1/2 + iy the Takagi image c(x + 2iy T(x)) of Conjecture
-// 3.7.1, which the attractor approaches as O(y^2). Other t: no overlay (the attractor is
-// c(A_1), a curve known only through the IFS).
-Mat complexBezierOverlay(const ComplexBezierItem &item, const Mat &P, QString *label)
-{
-    const Complex t = item.t();
-    const bool real = std::abs(t.imag()) < 1e-12;
-    if (P.rows() < 2 || (!real && std::abs(t.real() - 0.5) > 1e-12))
-        return {};
-    const CVec z = P.col(0).cast<Complex>() + Complex(0.0, 1.0) * P.col(1).cast<Complex>();
-    try {
-        const std::vector<Complex> c = takagiImage(z, real ? 0.0 : t.imag(), 10);
-        Mat out(Eigen::Index(c.size()), 2);
-        for (std::size_t i = 0; i < c.size(); ++i)
-            out.row(Eigen::Index(i)) << c[i].real(), c[i].imag();
-        *label = real ? ItemController::tr("Bézier curve c([0, 1])")
-                      : ItemController::tr("Takagi image c(x + 2iy·T(x)), y = %1")
-                            .arg(formatNumber(t.imag(), 4));
-        return out;
-    } catch (const std::exception &) {
-        return {};
     }
 }
 
@@ -286,26 +260,21 @@ void ItemController::refreshNow()
         m_attractor->setRenderSettings(rs);
 
         const auto scheme = realScheme(item);
-        Mat exact;
-        QString exactLabel;
         std::vector<Mat> polygons;
         if (scheme && P.rows() > 0) {
             try {
-                if (auto c = scheme->exactCurve(P, exactSamples))
-                    exact = *c;
                 for (int k = 1; k <= m_subdivisionSteps; ++k)
                     polygons.push_back(subdivide(*scheme, P, k));
             } catch (const std::exception &) {
                 // No overlay: the attractor itself shows what the scheme does.
             }
         }
-        if (const auto *cb = qobject_cast<const ComplexBezierItem *>(item))
-            exact = complexBezierOverlay(*cb, P, &exactLabel);
-        else if (exact.rows() > 1)
-            exactLabel = tr("exact limit curve");
         if (d->polygon)
             polygons.push_back(*d->polygon);
-        m_attractor->setExactCurve(exact, exactLabel);
+        if (const auto exact = exactCurveOf(item, exactSamples))
+            m_attractor->setExactCurve(exact->points, exact->label);
+        else
+            m_attractor->setExactCurve(Mat());
         m_attractor->setSubdivisionPolygons(polygons);
 
         const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item);
