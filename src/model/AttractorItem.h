@@ -28,6 +28,9 @@ struct DerivedIfs {
     Ifs ifs;            // validated; probabilities set in random mode
     AnalysisMatrices S; // subdivision matrices S_1..S_p (m x m)
     AnalysisMatrices A; // linear parts A_i of M_i = P^-1 S_i P ((m-1) x (m-1))
+    // The whole lifted maps M_i = P^-1 S_i P = [[A_i, 0], [b_i, 1]] of a complex lifting (a
+    // Bézier curve split at a complex t, 004 §3.7); real liftings are in `subdivision`.
+    std::vector<CMat> liftedComplex;
     // The core's full result when the item is a real subdivision scheme (lifting, M_i, ...).
     std::shared_ptr<const SubdivisionIfs> subdivision;
     QString note;       // e.g. why the barycentric form is used

@@ -44,6 +44,7 @@ DerivedIfs ComplexBezierItem::computeIfs() const
     for (int i = 0; i < 2; ++i) {
         out.S.complex.push_back(c->S[size_t(i)]);
         out.A.complex.push_back(c->M[size_t(i)].topLeftCorner(n, n));
+        out.liftedComplex.push_back(c->M[size_t(i)]);
     }
     out.note = QString::fromStdString(c->parameter.message);
     // A plane point is the first complex coordinate; the other lifted ones are 0 (any start

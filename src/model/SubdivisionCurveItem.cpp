@@ -51,6 +51,7 @@ DerivedIfs complexBezierIfs(int n, Complex t, const Mat &P)
         out.ifs.space = "lifted (complex)";
         for (const CMat &S : out.S.complex) {
             const CMat M = inverse * S * L;
+            out.liftedComplex.push_back(M);
             out.A.complex.push_back(M.topLeftCorner(D, D));
             out.ifs.maps.push_back(realify(out.A.complex.back(), M.bottomLeftCorner(1, D)));
         }

@@ -197,6 +197,12 @@ void TestMainWindow::openingFillsEveryView()
                 QCOMPARE(w.matrixView()->table(0)->model()->rowCount(), m);
                 QCOMPARE(w.matrixView()->table(0)->model()->columnCount() >= m, true);
             }
+            if (d->S.isComplex()) { // complex L(t), R(t) and the complex lifted M_i
+                QCOMPARE(w.matrixView()->matrixCount(),
+                         d->S.count() + int(d->liftedComplex.size()));
+                QCOMPARE(w.matrixView()->table(0)->model()->rowCount(),
+                         int(d->S.complex.front().rows()));
+            }
             if (d->S.count() > 0)
                 QVERIFY2(w.spectrumView()->maps().size() > 0, qPrintable(where));
             // The exact-curve overlay where one is known (B-spline, Bézier, Takagi image).

@@ -38,6 +38,7 @@ private slots:
     void validEditIsReportedOnce();
     void badEditIsRefusedWithAMessage();
     void readOnlyMatricesCannotBeEdited();
+    void complexMatrices();
 };
 
 void TestMatrixView::sizesAndFractions()
@@ -195,6 +196,34 @@ void TestMatrixView::readOnlyMatricesCannotBeEdited()
                                             QStringLiteral("1")));
     QCOMPARE(edited.size(), 1);
     QCOMPARE(edited.first().at(0).toInt(), 1);
+}
+
+void TestMatrixView::complexMatrices()
+{
+    // 004 eq. (2.5) with complex t = 1/2 + i/2 (the Lévy C curve): L(t) = [[1, 0], [1 - t, t]].
+    const std::complex<double> t(0.5, 0.5);
+    CMat L(2, 2);
+    L << 1.0, 0.0, 1.0 - t, t;
+    NamedMatrix m{QStringLiteral("S_1"), L};
+    m.editable = true; // even so: complex cells are not edited
+    MatrixView view;
+    view.setEditable(true);
+    view.setMatrices({m});
+    QTableView *tv = view.table(0);
+    QCOMPARE(tv->model()->rowCount(), 2);
+    QCOMPARE(tv->model()->columnCount(), 3);
+    QCOMPARE(text(tv, 1, 0), QStringLiteral("1/2 ") + kMinus + QStringLiteral(" (1/2)i"));
+    QCOMPARE(text(tv, 1, 1), QStringLiteral("1/2 + (1/2)i"));
+    QCOMPARE(text(tv, 1, 2), QStringLiteral("1"));  // rows of L(t) sum to 1 for any t
+    const QString tip = tv->model()->data(tv->model()->index(1, 1), Qt::ToolTipRole).toString();
+    QVERIFY2(tip.contains(QStringLiteral("0.70710678118654")), qPrintable(tip)); // |t|
+    // Complex matrices are never edited in the table.
+    QVERIFY(!(tv->model()->flags(tv->model()->index(0, 0)) & Qt::ItemIsEditable));
+    // Real -> complex with the same name and shape rebuilds the table (no stale real cells).
+    view.setMatrices({{QStringLiteral("S_1"), Mat::Identity(2, 2), -1, false}});
+    QCOMPARE(text(view.table(0), 1, 1), QStringLiteral("1"));
+    view.setMatrices({m});
+    QCOMPARE(text(view.table(0), 1, 1), QStringLiteral("1/2 + (1/2)i"));
 }
 
 QTEST_MAIN(TestMatrixView)

@@ -73,6 +73,7 @@ void TestComplexBezierItem::derivedMatchesCore()
             QVERIFY(derived->ifs.maps[i].A == core.ifs.maps[i].A);
             QVERIFY(derived->ifs.maps[i].b == core.ifs.maps[i].b);
             QVERIFY(derived->S.complex[i] == core.S[i]);
+            QVERIFY(derived->liftedComplex.at(i) == core.M[i]);
         }
         QVERIFY(derived->S.isComplex());
         QCOMPARE(derived->A.complex[0].rows(), Eigen::Index(core.degree()));

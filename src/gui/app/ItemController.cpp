@@ -70,6 +70,15 @@ QList<NamedMatrix> namedMatrices(const DerivedIfs &d, bool sEditable)
         for (std::size_t i = 0; i < lifted.size(); ++i)
             list.append({QStringLiteral("M_%1").arg(i + 1), lifted[i].M, int(lifted[i].A.rows()),
                          false});
+    } else if (d.S.isComplex()) {
+        // Complex de Casteljau L(t), R(t) and their complex lifted maps (004 §3.7).
+        for (std::size_t i = 0; i < d.S.complex.size(); ++i) {
+            list.append({QStringLiteral("S_%1").arg(i + 1), d.S.complex[i]});
+        }
+        for (std::size_t i = 0; i < d.liftedComplex.size(); ++i) {
+            const CMat &M = d.liftedComplex[i];
+            list.append({QStringLiteral("M_%1").arg(i + 1), M, int(M.rows()) - 1});
+        }
     } else if (d.S.real.empty()) {
         // Items without subdivision matrices (fractals, automata): their affine maps.
         for (int i = 0; i < d.ifs.size(); ++i) {

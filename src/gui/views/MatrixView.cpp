@@ -43,8 +43,7 @@ public:
 
     void setMatrix(const NamedMatrix &m)
     {
-        const bool reshape = m.values.rows() != m_m.values.rows()
-                             || m.values.cols() != m_m.values.cols();
+        const bool reshape = m.rows() != m_m.rows() || m.cols() != m_m.cols();
         if (reshape)
             beginResetModel();
         m_m = m;
@@ -77,13 +76,13 @@ public:
     {
         if (parent.isValid())
             return 0;
-        return int(m_m.values.rows()) + (m_sums == MatrixView::Sums::Columns ? 1 : 0);
+        return int(m_m.rows()) + (m_sums == MatrixView::Sums::Columns ? 1 : 0);
     }
     int columnCount(const QModelIndex &parent = {}) const override
     {
         if (parent.isValid())
             return 0;
-        return int(m_m.values.cols()) + (m_sums == MatrixView::Sums::Rows ? 1 : 0);
+        return int(m_m.cols()) + (m_sums == MatrixView::Sums::Rows ? 1 : 0);
     }
 
     QVariant data(const QModelIndex &index, int role) const override
@@ -94,11 +93,21 @@ public:
         const bool sum = isSum(r, c);
         switch (role) {
         case Qt::DisplayRole:
-            return formatNumber(value(r, c), m_digits);
+            return m_m.isComplex() ? formatComplex(complexValue(r, c), m_digits)
+                                   : formatNumber(value(r, c), m_digits);
         case Qt::EditRole:
-            return editableNumber(value(r, c));
+            return m_m.isComplex() ? formatComplex(complexValue(r, c), 17)
+                                   : editableNumber(value(r, c));
         case Qt::ToolTipRole: {
-            const QString exact = QString::number(value(r, c), 'g', 17);
+            QString exact = QString::number(value(r, c), 'g', 17);
+            if (m_m.isComplex()) {
+                const std::complex<double> z = complexValue(r, c);
+                exact = MatrixView::tr("%1 %2 %3i (modulus %4)")
+                            .arg(QString::number(z.real(), 'g', 17),
+                                 z.imag() < 0 ? QStringLiteral("−") : QStringLiteral("+"),
+                                 QString::number(std::abs(z.imag()), 'g', 17),
+                                 QString::number(std::abs(z), 'g', 17));
+            }
             if (sum)
                 return m_sums == MatrixView::Sums::Rows
                            ? MatrixView::tr("Sum of row %1: %2").arg(r + 1).arg(exact)
@@ -136,15 +145,15 @@ public:
     {
         if (role != Qt::DisplayRole)
             return QAbstractTableModel::headerData(section, o, role);
-        const bool sum = o == Qt::Horizontal ? section == int(m_m.values.cols())
-                                             : section == int(m_m.values.rows());
+        const bool sum = o == Qt::Horizontal ? section == int(m_m.cols())
+                                             : section == int(m_m.rows());
         return sum ? QStringLiteral("Σ") : QString::number(section + 1);
     }
 
     Qt::ItemFlags flags(const QModelIndex &index) const override
     {
         Qt::ItemFlags f = Qt::ItemIsEnabled | Qt::ItemIsSelectable;
-        if (m_editable && m_m.editable && !isSum(index.row(), index.column()))
+        if (m_editable && m_m.editable && !m_m.isComplex() && !isSum(index.row(), index.column()))
             f |= Qt::ItemIsEditable;
         return f;
     }
@@ -173,10 +182,21 @@ public:
 private:
     bool isSum(int r, int c) const
     {
-        return r >= m_m.values.rows() || c >= m_m.values.cols();
+        return r >= m_m.rows() || c >= m_m.cols();
+    }
+    std::complex<double> complexValue(int r, int c) const
+    {
+        const CMat &M = m_m.complexValues;
+        if (c >= M.cols())
+            return M.row(r).sum();
+        if (r >= M.rows())
+            return M.col(c).sum();
+        return M(r, c);
     }
     double value(int r, int c) const
     {
+        if (m_m.isComplex())
+            return complexValue(r, c).real();
         if (c >= m_m.values.cols())
             return m_m.values.row(r).sum();
         if (r >= m_m.values.rows())
@@ -229,8 +249,8 @@ void MatrixView::setMatrices(const QList<NamedMatrix> &matrices)
     bool same = matrices.size() == m_models.size();
     for (int i = 0; same && i < matrices.size(); ++i) {
         const NamedMatrix &a = matrices[i], &b = m_models[i]->matrix();
-        same = a.name == b.name && a.values.rows() == b.values.rows()
-               && a.values.cols() == b.values.cols() && a.affineBlock == b.affineBlock;
+        same = a.name == b.name && a.rows() == b.rows() && a.cols() == b.cols()
+               && a.isComplex() == b.isComplex() && a.affineBlock == b.affineBlock;
     }
     if (!same) {
         rebuild(matrices);
@@ -269,6 +289,9 @@ void MatrixView::rebuild(const QList<NamedMatrix> &matrices)
                          .arg(tr("— <span style='background:#e2ecfa'>&nbsp;A&nbsp;</span> "
                                  "block, <span style='background:#fcecd6'>&nbsp;b&nbsp;</span> "
                                  "row"));
+        if (nm.isComplex())
+            title += QStringLiteral(" <span style='color:#555'>%1</span>")
+                         .arg(tr("(complex entries)"));
         auto *box = new QWidget;
         auto *boxLayout = new QVBoxLayout(box);
         boxLayout->setContentsMargins(0, 0, 0, 8);

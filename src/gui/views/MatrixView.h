@@ -1,6 +1,6 @@
 #pragma once
-// Tables of named matrices (S_1..S_p, M_i = P^-1 S_i P with its A_i / b_i blocks) with exact
-// fractions where they are easy, and row or column sums. In editable mode a cell edit is
+// Tables of named matrices (S_1..S_p, M_i = P^-1 S_i P with its A_i / b_i blocks), real or
+// complex, with exact fractions where they are easy, and row or column sums. In editable mode a cell edit is
 // validated here and reported as cellEdited(); the view does not change its own numbers: the
 // owner applies the edit (one undo step) and sets the matrices again.
 
@@ -9,6 +9,8 @@
 #include <QList>
 #include <QString>
 #include <QWidget>
+
+#include <utility>
 
 class QLabel;
 class QTableView;
@@ -19,12 +21,31 @@ namespace awb {
 class MatrixTableModel;
 
 struct NamedMatrix {
+    NamedMatrix() = default;
+    NamedMatrix(QString name, Mat values, int affineBlock = -1, bool editable = false)
+        : name(std::move(name)), values(std::move(values)), affineBlock(affineBlock),
+          editable(editable)
+    {
+    }
+    NamedMatrix(QString name, CMat complexValues, int affineBlock = -1)
+        : name(std::move(name)), affineBlock(affineBlock),
+          complexValues(std::move(complexValues))
+    {
+    }
+
     QString name;            // "S_1", "M_2", ...
     Mat values;
     // Size of the A block of a lifted map M = [[A, 0], [b, 1]] (A top-left, b the row below
     // it); -1 for a plain matrix. Shades the blocks differently.
     int affineBlock = -1;
     bool editable = false;   // the user's own matrix (only then can cells be edited)
+    // A complex matrix (complex de Casteljau L(t), R(t) of 004 §3.7 and their lifted maps):
+    // shown instead of `values` when non-empty, never editable.
+    CMat complexValues;
+
+    bool isComplex() const { return complexValues.size() > 0; }
+    Eigen::Index rows() const { return isComplex() ? complexValues.rows() : values.rows(); }
+    Eigen::Index cols() const { return isComplex() ? complexValues.cols() : values.cols(); }
 };
 
 class MatrixView : public QWidget {
