@@ -122,6 +122,7 @@ private slots:
     void openingFillsEveryView();
     void dragIsOneUndoStep();
     void propertiesEditIsUndoable();
+    void matrixCellEditRebalancesRow();
     void printToPdf();
     void svgExportHasControlPolygon();
     void corruptFileIsReported();
@@ -329,6 +330,66 @@ void TestMainWindow::propertiesEditIsUndoable()
     QCOMPARE(item->algorithm().depth, depthBefore);
     QCOMPARE(depth->value(), depthBefore);
     QCOMPARE(messages.errors.size(), 1);
+}
+
+void TestMainWindow::matrixCellEditRebalancesRow()
+{
+    // The user's own matrices: the uniform quadratic B-spline (Chaikin) S_1, S_2 of 000 §3.
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    auto own = curve(QStringLiteral("Own"), SchemeSpec::Kind::Matrices,
+                     {{0, 0}, {2, 3}, {4, 0}});
+    SchemeSpec s = own->scheme();
+    s.kind = SchemeSpec::Kind::Matrices;
+    Mat S1(3, 3), S2(3, 3);
+    S1 << 0.75, 0.25, 0, 0.25, 0.75, 0, 0, 0.75, 0.25;
+    S2 << 0.25, 0.75, 0, 0, 0.75, 0.25, 0, 0.25, 0.75;
+    s.matrices = {S1, S2};
+    QVERIFY(!own->checkScheme(s));
+    own->setScheme(s);
+    auto *item = own.get();
+    w.project()->addItem(std::move(own));
+    w.setCurrentItem(item);
+    w.controller()->refreshNow();
+    QVERIFY2(item->derivedIfs(), qPrintable(item->derivedError()));
+    QVERIFY(w.matrixView()->table(0));
+    QAbstractItemModel *table = w.matrixView()->table(0)->model();
+    QUndoStack *undo = w.project()->undoStack();
+    const int steps = undo->count();
+
+    // 3/4 -> 1/2 breaks row 1's sum; declined: nothing changes, no undo step, no error.
+    messages.answer = QMessageBox::No;
+    QVERIFY(table->setData(table->index(0, 0), QStringLiteral("1/2")));
+    QCOMPARE(messages.questions.size(), 1);
+    QVERIFY2(messages.questions.front().contains(QStringLiteral("sum to 3/4")),
+             qPrintable(messages.questions.front()));
+    QVERIFY2(messages.questions.front().contains(QStringLiteral("column 2 (1/4 → 1/2)")),
+             qPrintable(messages.questions.front()));
+    QCOMPARE(item->scheme().matrices[0](0, 0), 0.75);
+    QCOMPARE(undo->count(), steps);
+    QVERIFY(messages.errors.isEmpty());
+
+    // Accepted: the largest other entry (column 2) takes the difference; one undo step.
+    messages.answer = QMessageBox::Yes;
+    QVERIFY(table->setData(table->index(0, 0), QStringLiteral("1/2")));
+    QCOMPARE(item->scheme().matrices[0](0, 0), 0.5);
+    QCOMPARE(item->scheme().matrices[0](0, 1), 0.5);
+    QCOMPARE(item->scheme().matrices[0].row(0).sum(), 1.0);
+    QCOMPARE(undo->count(), steps + 1);
+    w.controller()->refreshNow();
+    QCOMPARE(w.matrixView()->table(0)->model()->index(0, 1).data().toString(),
+             QStringLiteral("1/2"));
+    undo->undo();
+    QCOMPARE(item->scheme().matrices[0], S1);
+
+    // Typing the value a cell already has is no edit: no question, no undo step.
+    const int asked = int(messages.questions.size());
+    QVERIFY(w.matrixView()->table(1)->model()->setData(
+        w.matrixView()->table(1)->model()->index(2, 2), QStringLiteral("3/4")));
+    QCOMPARE(int(messages.questions.size()), asked);
+    QCOMPARE(undo->index(), steps);
+    QCOMPARE(item->scheme().matrices[1], S2);
+    QVERIFY(messages.errors.isEmpty());
 }
 
 void TestMainWindow::printToPdf()

@@ -459,15 +459,55 @@ void ItemController::onCellEdited(int matrix, int row, int column, double value)
     SchemeSpec s = curve->scheme();
     if (matrix < 0 || matrix >= int(s.matrices.size()))
         return;
-    s.matrices[std::size_t(matrix)](row, column) = value;
-    if (auto problem = curve->checkScheme(s)) {
-        refreshNow(); // the table shows the model's value again
-        emit editRefused(tr("S_%1 (%2, %3) = %4 was refused: %5")
-                             .arg(matrix + 1).arg(row + 1).arg(column + 1).arg(value)
-                             .arg(problem->message));
+    Mat &S = s.matrices[std::size_t(matrix)];
+    if (row < 0 || row >= S.rows() || column < 0 || column >= S.cols())
+        return;
+    const double old = S(row, column);
+    S(row, column) = value;
+    const auto problem = curve->checkScheme(s);
+    if (!problem) {
+        curve->setScheme(s);
         return;
     }
-    curve->setScheme(s);
+    const QString name = subscriptName(QStringLiteral("S_%1").arg(matrix + 1));
+    // Offer to keep the row affine: the largest other entry (nearest column on a tie) absorbs
+    // the difference, if that makes the matrices valid.
+    const double defect = S.row(row).sum() - 1.0;
+    int partner = -1;
+    for (int c = 0; c < S.cols(); ++c) {
+        if (c == column)
+            continue;
+        if (partner < 0 || std::abs(S(row, c)) > std::abs(S(row, partner)) + 1e-15
+            || (std::abs(S(row, c)) >= std::abs(S(row, partner)) - 1e-15
+                && std::abs(c - column) < std::abs(partner - column)))
+            partner = c;
+    }
+    if (partner >= 0 && std::abs(defect) > 0 && std::isfinite(defect) && m_askRebalance) {
+        SchemeSpec balanced = s;
+        Mat &B = balanced.matrices[std::size_t(matrix)];
+        B(row, partner) -= defect;
+        if (!curve->checkScheme(balanced)) {
+            const QString question
+                = tr("Changing %1 (%2, %3) from %4 to %5 makes row %2 sum to %6, not 1: the rows "
+                     "of a subdivision matrix are affine combinations.\n\nTake the difference "
+                     "%7 from the entry in column %8 (%9 → %10) so that the row sums to 1?")
+                      .arg(name).arg(row + 1).arg(column + 1)
+                      .arg(formatNumber(old), formatNumber(value), formatNumber(1.0 + defect),
+                           formatNumber(defect))
+                      .arg(partner + 1)
+                      .arg(formatNumber(S(row, partner)), formatNumber(B(row, partner)));
+            if (m_askRebalance(question)) {
+                curve->setScheme(balanced); // both cells: one undo step
+                return;
+            }
+            refreshNow();
+            return; // declined: nothing changes, nothing to report
+        }
+    }
+    refreshNow(); // the table shows the model's value again
+    emit editRefused(tr("%1 (%2, %3) = %4 was refused: %5")
+                         .arg(name).arg(row + 1).arg(column + 1).arg(formatNumber(value))
+                         .arg(problem->message));
 }
 
 } // namespace awb

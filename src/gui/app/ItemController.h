@@ -11,6 +11,7 @@
 #include <QPointer>
 #include <QTimer>
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <thread>
 
@@ -46,6 +47,15 @@ public:
     // Whether the analysis worker is running.
     bool analysisRunning() const { return m_worker.joinable() && !m_workerDone; }
     void cancelAnalysis();
+
+    // Asked when a matrix cell edit would break only its row's sum (the rows of a subdivision
+    // matrix are affine combinations): whether to take the difference from the largest other
+    // entry of the row. True applies the edit and the compensation as one undo step; without
+    // an answerer (or on false) the edit is refused.
+    void setRebalanceQuestion(std::function<bool(const QString &question)> ask)
+    {
+        m_askRebalance = std::move(ask);
+    }
 
     // The text shown when the item cannot be drawn (empty when it can).
     QString problem() const { return m_problem; }
@@ -88,6 +98,7 @@ private:
     std::atomic<bool> m_cancel{false};
     std::atomic<bool> m_workerDone{true};
     quint64 m_analysisTicket = 0;
+    std::function<bool(const QString &)> m_askRebalance;
 };
 
 } // namespace awb

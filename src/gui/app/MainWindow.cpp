@@ -197,6 +197,11 @@ void MainWindow::createViews()
             statusBar()->showMessage(tr("Analysis cancelled."), 4000);
     });
     connect(m_controller, &ItemController::problemChanged, m_problemLabel, &QLabel::setText);
+    m_controller->setRebalanceQuestion([this](const QString &question) {
+        return m_messages->question(this, tr("Row sum"), question,
+                                    QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes)
+               == QMessageBox::Yes;
+    });
     connect(m_controller, &ItemController::editRefused, this, [this](const QString &message) {
         m_messages->error(this, tr("Edit refused"), message);
     });
