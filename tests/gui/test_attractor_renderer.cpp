@@ -1,5 +1,6 @@
 // The off-GUI-thread attractor renderer: a cubic B-spline attractor (000 Fig. 2) drawn
-// progressively, cancellation by a newer request, pixel-identical output for equal requests,
+// progressively, cancellation by a newer request or by cancel(), pixel-identical output for
+// equal requests,
 // and a clear message for an IFS without an attractor.
 
 #include "gui/views/AttractorRenderer.h"
@@ -71,6 +72,7 @@ private slots:
     void coarseLevelComesFirst();
     void newerRequestCancelsTheRunningOne();
     void newerRequestBeforeAnyResult();
+    void cancelStopsTheRunningRender();
     void equalRequestsGiveIdenticalPixels();
     void colourModes();
     void dotRadiusGrowsTheCurve();
@@ -159,6 +161,63 @@ void TestAttractorRenderer::newerRequestCancelsTheRunningOne()
     // Nothing of the cancelled request arrives later either.
     QTest::qWait(200);
     QCOMPARE(ready.size(), infos.size());
+}
+
+void TestAttractorRenderer::cancelStopsTheRunningRender()
+{
+    AttractorRenderer renderer;
+    QSignalSpy ready(&renderer, &AttractorRenderer::imageReady);
+    QSignalSpy progress(&renderer, &AttractorRenderer::progress);
+    QSignalSpy busy(&renderer, &AttractorRenderer::busyChanged);
+    QSignalSpy failed(&renderer, &AttractorRenderer::failed);
+    renderer.request(cubicRequest(27)); // many seconds: only the cancel ends it in time
+    QVERIFY(ready.wait(20000));         // the coarse preview: the full pass is now running
+    QVERIFY(renderer.isBusy());
+    ready.clear();
+    progress.clear();
+    busy.clear();
+
+    renderer.cancel();
+    QVERIFY(!renderer.isBusy());
+    QCOMPARE(busy.size(), 1);
+    QCOMPARE(busy.first().at(0).toBool(), false);
+    // Nothing of the cancelled request arrives later.
+    QTest::qWait(500);
+    QVERIFY(ready.isEmpty());
+    QVERIFY(progress.isEmpty());
+    QVERIFY(failed.isEmpty());
+    QCOMPARE(busy.size(), 1);
+
+    // Cancelled before any result: nothing at all arrives (not even what the worker had
+    // already posted when the cancel came).
+    renderer.request(cubicRequest(27));
+    renderer.cancel();
+    QVERIFY(!renderer.isBusy());
+    QCOMPARE(busy.size(), 3); // + on, off
+    QTest::qWait(500);
+    QVERIFY(ready.isEmpty());
+    QVERIFY(progress.isEmpty());
+    QCOMPARE(busy.size(), 3);
+    busy.clear();
+    // Cancelling with nothing running changes nothing.
+    renderer.cancel();
+    QVERIFY(busy.isEmpty());
+
+    // The worker is free again: the next request is drawn to the end, and soon.
+    QElapsedTimer t;
+    t.start();
+    RenderRequest quick = cubicRequest(9);
+    quick.world = QRectF(0, 0, 6, 3);
+    renderer.request(quick);
+    QVERIFY(renderer.isBusy());
+    const QList<RenderInfo> infos = waitFinal(ready, 20000);
+    QVERIFY(!infos.isEmpty());
+    for (const RenderInfo &info : infos)
+        QCOMPARE(info.world, quick.world);
+    QVERIFY(infos.last().final);
+    QCOMPARE(infos.last().depth, 9);
+    QVERIFY2(t.elapsed() < 8000, qPrintable(QString::number(t.elapsed())));
+    QVERIFY(!renderer.isBusy());
 }
 
 void TestAttractorRenderer::newerRequestBeforeAnyResult()

@@ -1,6 +1,7 @@
 // The attractor view: dragging control points and start-set vertices (one press, moves, one
-// release, in world coordinates), wheel zoom about the cursor, pan, fit, the rendered raster
-// and the vector export (SVG) of the control polygon.
+// release, in world coordinates), wheel zoom about the cursor, pan, fit, the rendered raster,
+// cancelling a long render and rendering again, and the vector export (SVG) of the control
+// polygon.
 
 #include "gui/views/AttractorView.h"
 
@@ -23,6 +24,19 @@ Mat fig2()
 }
 
 QPointF row(const Mat &P, int i) { return {P(i, 0), P(i, 1)}; }
+
+// The widget as painted on screen (status overlay included), as SVG: its texts are readable.
+QString screenSvg(AttractorView &view)
+{
+    QBuffer buffer;
+    buffer.open(QIODevice::WriteOnly);
+    QSvgGenerator gen;
+    gen.setOutputDevice(&buffer);
+    gen.setSize(view.size());
+    gen.setViewBox(view.rect());
+    view.render(&gen);
+    return QString::fromUtf8(buffer.data());
+}
 
 bool near(const QPointF &a, const QPointF &b, double tol)
 {
@@ -60,6 +74,7 @@ private slots:
     void wheelZoomsAboutTheCursor();
     void panWithMiddleAndRightButton();
     void rendersTheAttractor();
+    void cancelAndRenderAgain();
     void hutchinsonStep();
     void svgExportHasVectorPaths();
     void hiddenViewExportsTheRaster();
@@ -252,6 +267,83 @@ void TestAttractorView::rendersTheAttractor()
     QVERIFY(failed.wait(30000));
     QVERIFY(f.view.currentImage().isNull());
     QVERIFY(f.view.lastError().contains(QLatin1String("not contractive")));
+}
+
+void TestAttractorView::cancelAndRenderAgain()
+{
+    Fixture f;
+    QSignalSpy finished(&f.view, &AttractorView::renderFinished);
+    QSignalSpy cancelled(&f.view, &AttractorView::renderCancelled);
+    QSignalSpy progress(&f.view, &AttractorView::renderProgress);
+    // 2^27 triangles take far longer than this test waits for anything: only a cancel ends it.
+    AttractorView::RenderSettings heavy;
+    heavy.depth = 27;
+    f.view.setRenderSettings(heavy);
+    QVERIFY(QTest::qWaitForWindowExposed(&f.view));
+    // The coarse preview (2^14 images) arrives first; the full pass is then running.
+    QTRY_VERIFY_WITH_TIMEOUT(!f.view.currentImage().isNull()
+                                 && f.view.currentImageInfo().depth == 14,
+                             30000);
+    QVERIFY(!f.view.currentImageInfo().final);
+    QVERIFY(f.view.isRendering());
+    QVERIFY(!screenSvg(f.view).contains(QLatin1String("cancelled")));
+    const qint64 coarseKey = f.view.currentImage().cacheKey();
+
+    // Esc stops it; the coarse picture stays on screen and the overlay says what happened.
+    QTest::keyClick(&f.view, Qt::Key_Escape);
+    QCOMPARE(cancelled.size(), 1);
+    QTRY_VERIFY_WITH_TIMEOUT(!f.view.isRendering(), 2000);
+    QVERIFY(!f.view.renderer()->isBusy());
+    QCOMPARE(f.view.currentImage().cacheKey(), coarseKey);
+    const QString svg = screenSvg(f.view);
+    QVERIFY2(svg.contains(QLatin1String("Rendering cancelled at")), qPrintable(svg.right(2000)));
+    QVERIFY(svg.contains(QLatin1String("F5")));
+    // Nothing of the cancelled render arrives later.
+    progress.clear();
+    QTest::qWait(500);
+    QVERIFY(finished.isEmpty());
+    QVERIFY(progress.isEmpty());
+    QCOMPARE(f.view.currentImage().cacheKey(), coarseKey);
+    QVERIFY(!f.view.isRendering());
+    // With nothing running, Esc is left to the parent and cancels nothing.
+    QKeyEvent esc(QEvent::KeyPress, Qt::Key_Escape, Qt::NoModifier);
+    QApplication::sendEvent(&f.view, &esc);
+    QVERIFY(!esc.isAccepted());
+    f.view.cancelRender();
+    QCOMPARE(cancelled.size(), 1);
+
+    // renderAgain() starts the same render at once; cancelRender() stops it again.
+    f.view.renderAgain();
+    QVERIFY(f.view.isRendering());
+    QVERIFY(!screenSvg(f.view).contains(QLatin1String("cancelled")));
+    QTRY_VERIFY_WITH_TIMEOUT(f.view.currentImage().cacheKey() != coarseKey, 30000);
+    QCOMPARE(f.view.currentImageInfo().depth, 14);
+    QVERIFY(f.view.isRendering());
+    f.view.cancelRender();
+    QCOMPARE(cancelled.size(), 2);
+    QVERIFY(!f.view.isRendering());
+    QVERIFY(screenSvg(f.view).contains(QLatin1String("Rendering cancelled at")));
+
+    // An edit after the cancel renders normally: to the end, and the note is gone.
+    AttractorView::RenderSettings light;
+    light.depth = 10;
+    f.view.setRenderSettings(light);
+    QVERIFY(finished.wait(30000));
+    QCOMPARE(finished.size(), 1);
+    QVERIFY(f.view.currentImageInfo().final);
+    QCOMPARE(f.view.currentImageInfo().depth, 10);
+    QVERIFY(!f.view.isRendering());
+    QVERIFY(!screenSvg(f.view).contains(QLatin1String("cancelled")));
+
+    // F5 renders the unchanged data again.
+    const qint64 lightKey = f.view.currentImage().cacheKey();
+    QTest::keyClick(&f.view, Qt::Key_F5);
+    QVERIFY(f.view.isRendering());
+    QVERIFY(finished.wait(30000));
+    QCOMPARE(finished.size(), 2);
+    QVERIFY(f.view.currentImage().cacheKey() != lightKey);
+    QCOMPARE(f.view.currentImageInfo().depth, 10);
+    QCOMPARE(cancelled.size(), 2);
 }
 
 void TestAttractorView::hutchinsonStep()

@@ -4,6 +4,9 @@
 // polygons and Hutchinson iterates painted on top as vector overlays. It takes plain core data
 // through setters and reports edits as press/drag/release signals (one undo step per drag is
 // the owner's job); it never changes the data itself. The plane is shown with equal axis scale.
+// A running render can be cancelled (Esc, cancelRender()) and started again (F5, renderAgain()).
+// The class is defined across AttractorView.cpp, AttractorViewPainting.cpp,
+// AttractorViewEvents.cpp and AttractorViewImages.cpp (helpers: AttractorViewDetail.h).
 
 #include "gui/views/AttractorRenderer.h"
 
@@ -92,6 +95,8 @@ public:
     RenderInfo currentImageInfo() const { return m_imageInfo; }
     QString lastError() const { return m_error; }
     AttractorRenderer *renderer() const { return m_renderer; }
+    // True while the renderer works on a request of this view (coarse or full pass).
+    bool isRendering() const { return m_busy; }
 
     QSize sizeHint() const override { return {640, 480}; }
     QSize minimumSizeHint() const override { return {160, 120}; }
@@ -102,6 +107,12 @@ public slots:
     void zoomBy(double factor, const QPointF &screenAnchor);
     void zoomIn() { zoomBy(1.25, rect().center()); }
     void zoomOut() { zoomBy(0.8, rect().center()); }
+    // Stops the running render (Esc): the last image (perhaps the coarse preview) stays, the
+    // status overlay says the render was cancelled, and nothing more of it arrives. Does
+    // nothing when no render is running. The next edit (or renderAgain) renders normally.
+    void cancelRender();
+    // Renders the current data again at once (F5), e.g. after a cancel.
+    void renderAgain();
 
 signals:
     void controlPointPressed(int index);
@@ -118,6 +129,8 @@ signals:
     void renderProgress(double fraction);
     void renderFinished(const awb::RenderInfo &info);
     void renderFailed(const QString &message);
+    // The running render was stopped by cancelRender(); no renderFinished follows for it.
+    void renderCancelled();
 
 protected:
     void paintEvent(QPaintEvent *event) override;
@@ -206,6 +219,8 @@ private:
     double m_progress = 1.0;
     bool m_busy = false;
     QElapsedTimer m_busySince;
+    bool m_cancelled = false;      // the last render was cancelled (until the next one starts)
+    double m_cancelledAt = 0.0;    // its progress then
 
     Drag m_drag;
     int m_hoverControl = -1, m_hoverStart = -1;
