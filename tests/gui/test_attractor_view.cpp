@@ -78,6 +78,7 @@ private slots:
     void hutchinsonStep();
     void svgExportHasVectorPaths();
     void hiddenViewExportsTheRaster();
+    void fittedExportIgnoresZoom();
 };
 
 void TestAttractorView::fitShowsEverythingWithEqualScale()
@@ -433,6 +434,55 @@ void TestAttractorView::hiddenViewExportsTheRaster()
             red += out.pixel(x, y) == AttractorRenderer::mapColor(1).rgb();
         }
     QVERIFY2(blue > 50 && red > 50, qPrintable(QStringLiteral("%1 %2").arg(blue).arg(red)));
+}
+
+void TestAttractorView::fittedExportIgnoresZoom()
+{
+    // The printed figure frames the content whatever the screen shows: zoomed far into one
+    // corner, an "as shown" export lacks most of the attractor, a fitted one has all of it.
+    Fixture f;
+    QVERIFY(QTest::qWaitForWindowExposed(&f.view));
+    AttractorView::RenderSettings rs;
+    rs.depth = 14; // a raster, not vector dots
+    f.view.setRenderSettings(rs);
+    f.view.setView(QPointF(0.2, 0.2), f.view.pixelsPerUnit() * 12);
+    QTRY_VERIFY_WITH_TIMEOUT(f.view.currentImageInfo().final, 20000);
+    const auto colouredColumns = [](const QImage &img, int *left, int *right) {
+        int count = 0;
+        *left = img.width();
+        *right = -1;
+        for (int x = 0; x < img.width(); ++x)
+            for (int y = 0; y < img.height(); ++y)
+                if (img.pixel(x, y) == AttractorRenderer::mapColor(0).rgb()
+                    || img.pixel(x, y) == AttractorRenderer::mapColor(1).rgb()) {
+                    ++count;
+                    *left = std::min(*left, x);
+                    *right = std::max(*right, x);
+                    break;
+                }
+        return count;
+    };
+    const auto exportWith = [&](AttractorView::Framing framing) {
+        QImage out(800, 400, QImage::Format_ARGB32);
+        out.fill(Qt::white);
+        QPainter p(&out);
+        f.view.renderTo(&p, QRectF(0, 0, 800, 400), framing);
+        return out;
+    };
+    int l1, r1, l2, r2;
+    const int shown = colouredColumns(exportWith(AttractorView::Framing::AsShown), &l1, &r1);
+    const QImage fittedImage = exportWith(AttractorView::Framing::FitContents);
+    if (qEnvironmentVariableIsSet("AWB_KEEP_TEST_FILES"))
+        fittedImage.save(QStringLiteral("/tmp/fitted-export.png"));
+    const int fitted = colouredColumns(fittedImage, &l2, &r2);
+    // The content is x in 0..6, y in -1..2.5 (control polygon and triangle), so the 800 x 400
+    // target is filled in height: ~100 px per unit. The curve runs from x ~ 1 to ~ 4.5, so
+    // ~330 columns show it.
+    QVERIFY2(fitted > 250 && fitted < 420 && l2 > 150 && r2 < 650,
+             qPrintable(QStringLiteral("%1 %2..%3").arg(fitted).arg(l2).arg(r2)));
+    QVERIFY2(shown < fitted / 2, qPrintable(QStringLiteral("%1 vs %2").arg(shown).arg(fitted)));
+    // The screen's framing is untouched by the export.
+    QCOMPARE(f.view.viewCenter(), QPointF(0.2, 0.2));
 }
 
 QTEST_MAIN(TestAttractorView)

@@ -1,6 +1,9 @@
 #include "gui/app/FigureSheet.h"
 
+#include "gui/app/ItemController.h"
 #include "gui/views/AttractorView.h"
+#include "gui/views/MatrixView.h"
+#include "gui/views/NumberFormat.h"
 #include "gui/views/SpectrumView.h"
 #include "model/AttractorItem.h"
 
@@ -101,27 +104,30 @@ QStringList FigureSheet::matrixLines() const
     const auto d = a ? a->derivedIfs() : nullptr;
     if (!d)
         return lines;
-    const auto addMatrix = [&lines](const QString &name, const Mat &M) {
-        lines << name + QLatin1Char(':');
-        for (Eigen::Index r = 0; r < M.rows(); ++r) {
-            QString row;
-            for (Eigen::Index c = 0; c < M.cols(); ++c) {
-                // Rounding noise (1e-17) would hide the structure of the matrix.
-                const double v = std::abs(M(r, c)) < 1e-12 ? 0.0 : M(r, c);
-                row += QStringLiteral("%1").arg(v, 10, 'g', 5);
+    // The matrix view's matrices, as text with right-aligned columns: fractions where exact
+    // (3/8 reads better than 0.375), complex entries as a + bi.
+    for (const NamedMatrix &m : namedMatrices(*d)) {
+        QList<QStringList> cells;
+        int width = 1;
+        for (Eigen::Index r = 0; r < m.rows(); ++r) {
+            QStringList row;
+            for (Eigen::Index c = 0; c < m.cols(); ++c) {
+                const QString t = m.isComplex() ? formatComplex(m.complexValues(r, c), 5)
+                                                : formatNumber(m.values(r, c), 5);
+                width = std::max(width, int(t.size()));
+                row << t;
             }
-            lines << row;
+            cells << row;
+        }
+        lines << subscriptName(m.name) + QLatin1Char(':');
+        for (const QStringList &row : std::as_const(cells)) {
+            QString line;
+            for (const QString &t : row)
+                line += t.rightJustified(width + 2);
+            lines << line;
         }
         lines << QString();
-    };
-    for (std::size_t i = 0; i < d->S.real.size(); ++i)
-        addMatrix(QStringLiteral("S_%1").arg(i + 1), d->S.real[i]);
-    if (d->subdivision)
-        for (std::size_t i = 0; i < d->subdivision->lifted.size(); ++i)
-            addMatrix(QStringLiteral("M_%1").arg(i + 1), d->subdivision->lifted[i].M);
-    if (d->S.real.empty())
-        for (int i = 0; i < d->ifs.size(); ++i)
-            addMatrix(QStringLiteral("A_%1").arg(i + 1), d->ifs.maps[std::size_t(i)].A);
+    }
     return lines;
 }
 
@@ -137,15 +143,25 @@ void FigureSheet::paint(QPainter *painter, const QRectF &page) const
     body.setPixelSize(std::max(6, int(unit * 1.2)));
     const QStringList cap = caption();
 
-    // Caption at the top.
+    // Caption at the top: the title wraps (long item names), the parameters below it. Metrics
+    // come from the painter's device (a printer's resolution differs from the screen's).
     painter->setPen(Qt::black);
     painter->setFont(title);
-    QRectF r(page.left(), page.top(), page.width(), unit * 3);
-    painter->drawText(r, Qt::AlignLeft | Qt::AlignVCenter, cap.value(0));
+    const QFontMetricsF titleMetrics(title, painter->device());
+    const QRectF titleBox = titleMetrics.boundingRect(
+        QRectF(page.left(), page.top(), page.width(), page.height() / 4),
+        Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, cap.value(0));
+    QRectF r(page.left(), page.top(), page.width(), std::max(unit * 3, titleBox.height()));
+    painter->drawText(r, Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, cap.value(0));
     painter->setFont(body);
-    QRectF capRect(page.left(), r.bottom(), page.width(), unit * 5);
-    painter->drawText(capRect, Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap,
-                      cap.mid(1).join(QLatin1Char('\n')));
+    const QFontMetricsF bodyMetrics(body, painter->device());
+    const QString params = cap.mid(1).join(QLatin1Char('\n'));
+    const QRectF paramsBox = bodyMetrics.boundingRect(
+        QRectF(page.left(), r.bottom(), page.width(), page.height() / 4),
+        Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, params);
+    QRectF capRect(page.left(), r.bottom() + unit * 0.5, page.width(),
+                   std::max(unit * 2, paramsBox.height()));
+    painter->drawText(capRect, Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap, params);
 
     // Attractor left (large), spectrum and matrices right.
     const double top = capRect.bottom() + unit;
@@ -153,7 +169,8 @@ void FigureSheet::paint(QPainter *painter, const QRectF &page) const
     painter->setPen(QPen(Qt::gray, 0));
     painter->drawRect(figure);
     if (m_attractor)
-        m_attractor->renderTo(painter, figure.adjusted(1, 1, -1, -1));
+        m_attractor->renderTo(painter, figure.adjusted(1, 1, -1, -1),
+                              AttractorView::Framing::FitContents);
     const double rightX = figure.right() + unit * 2;
     const QRectF spec(rightX, top, page.right() - rightX, (page.bottom() - top) * 0.5);
     paintSpectrum(m_spectrum, painter, spec);
@@ -167,7 +184,7 @@ void FigureSheet::paint(QPainter *painter, const QRectF &page) const
     int px = body.pixelSize();
     for (; px > 3; --px) {
         mono.setPixelSize(px);
-        const QFontMetricsF fm(mono);
+        const QFontMetricsF fm(mono, painter->device());
         double widest = 0;
         for (const QString &l : lines)
             widest = std::max(widest, fm.horizontalAdvance(l));

@@ -33,7 +33,7 @@ QPointF AttractorView::Mapping::unmap(const QPointF &s) const
 
 AttractorView::Mapping AttractorView::screenMapping() const
 {
-    return {m_center, m_scale, QRectF(rect())};
+    return {m_center, m_scale, QRectF(rect()), 1.0};
 }
 
 QPointF AttractorView::worldToScreen(const QPointF &world) const
@@ -259,13 +259,11 @@ std::optional<QRectF> AttractorView::contentBounds() const
     return boundsOf(all);
 }
 
-void AttractorView::fitToContents()
+std::optional<QRectF> AttractorView::fittedWorld() const
 {
     const std::optional<QRectF> bounds = contentBounds();
-    if (!bounds) {
-        setView(QPointF(0, 0), 50.0);
-        return;
-    }
+    if (!bounds)
+        return std::nullopt;
     QRectF r = *bounds;
     // A single point or a straight horizontal/vertical set still needs a visible extent.
     const double extent = std::max({r.width(), r.height(), 1e-9 * std::abs(r.center().x()),
@@ -274,6 +272,17 @@ void AttractorView::fitToContents()
         r.adjust(-0.5 * extent, 0, 0.5 * extent, 0);
     if (r.height() < 1e-3 * extent)
         r.adjust(0, -0.5 * extent, 0, 0.5 * extent);
+    return r;
+}
+
+void AttractorView::fitToContents()
+{
+    const std::optional<QRectF> fitted = fittedWorld();
+    if (!fitted) {
+        setView(QPointF(0, 0), 50.0);
+        return;
+    }
+    const QRectF r = *fitted;
     const double w = std::max(1.0, width() - 2 * kFitMargin);
     const double h = std::max(1.0, height() - 2 * kFitMargin);
     setView(r.center(), std::min(w / r.width(), h / r.height()));

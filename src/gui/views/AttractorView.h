@@ -86,10 +86,14 @@ public:
     int controlPointCount() const { return int(m_control.size()); }
     int startVertexCount() const { return int(m_startPlane.size()); }
 
-    // Paints the figure as shown into `target` of any painter (SVG, PDF, printer, image):
-    // overlays as vector paths, the attractor as the raster image, or as vector dots when
-    // the drawing has few points.
-    void renderTo(QPainter *painter, const QRectF &target);
+    // How an export frames the world: as the view shows it (zoom and pan included), or
+    // fitted to the content (control points, start set, overlays and the attractor), as a
+    // printed figure wants it.
+    enum class Framing { AsShown, FitContents };
+    // Paints the figure into `target` of any painter (SVG, PDF, printer, image): overlays as
+    // vector paths, the attractor as a raster made for the target's framing (the view's own
+    // raster when it covers it), or as vector dots when the drawing has few points.
+    void renderTo(QPainter *painter, const QRectF &target, Framing framing = Framing::AsShown);
     // The latest rendered attractor raster and what it shows.
     QImage currentImage() const { return m_image; }
     RenderInfo currentImageInfo() const { return m_imageInfo; }
@@ -149,6 +153,9 @@ private:
         QPointF center;       // world point at the middle of `target`
         double scale = 1.0;   // device pixels per world unit
         QRectF target;
+        // Device pixels per screen pixel: line widths, markers and fonts follow the figure,
+        // not the device (an export at printer resolution looks like the screen).
+        double unit = 1.0;
         QPointF map(const QPointF &w) const;
         QPointF unmap(const QPointF &s) const;
     };
@@ -186,6 +193,8 @@ private:
     bool vectorImages(int depth, std::size_t maxVertices, std::vector<VectorImage> *out) const;
     bool randomVectorImages(std::size_t maxVertices, std::vector<VectorImage> *out) const;
     std::optional<QRectF> contentBounds() const;
+    // contentBounds() with a visible extent even for a point or a straight set.
+    std::optional<QRectF> fittedWorld() const;
     // Index of the handle under `screen`, or -1.
     int hitControlPoint(const QPointF &screen) const;
     int hitStartVertex(const QPointF &screen) const;

@@ -26,7 +26,7 @@ void AttractorView::paintEvent(QPaintEvent *)
     paintStatus(p);
 }
 
-void AttractorView::renderTo(QPainter *painter, const QRectF &target)
+void AttractorView::renderTo(QPainter *painter, const QRectF &target, Framing framing)
 {
     if (!painter || target.isEmpty())
         return;
@@ -34,6 +34,18 @@ void AttractorView::renderTo(QPainter *painter, const QRectF &target)
     const QRectF vis = visibleWorldRect();
     Mapping m{m_center, std::min(target.width() / vis.width(), target.height() / vis.height()),
               target};
+    m.unit = std::min(target.width() / std::max(1, width()),
+                      target.height() / std::max(1, height()));
+    if (framing == Framing::FitContents) {
+        if (const auto r = fittedWorld()) {
+            // The view's fit margin, in the target's units.
+            const double margin = kFitMargin * m.unit;
+            const double w = std::max(1.0, target.width() - 2 * margin);
+            const double h = std::max(1.0, target.height() - 2 * margin);
+            m.center = r->center();
+            m.scale = std::min(w / r->width(), h / r->height());
+        }
+    }
     painter->save();
     painter->setClipRect(target);
     painter->setRenderHint(QPainter::Antialiasing);
@@ -45,7 +57,7 @@ void AttractorView::paintScene(QPainter &p, const Mapping &m, bool forExport)
 {
     // Line widths and marker sizes follow the figure, not the device: an export at printer
     // resolution looks like the screen.
-    const double u = m.scale / m_scale;
+    const double u = m.unit;
     p.fillRect(m.target, Qt::white);
     if (isLayerVisible(Layer::Grid))
         paintGrid(p, m);
@@ -88,7 +100,14 @@ void AttractorView::paintScene(QPainter &p, const Mapping &m, bool forExport)
         }
         QImage image = m_image;
         RenderInfo info = m_imageInfo;
-        if (forExport && !vector && image.isNull() && m_ifs && m_error.isEmpty())
+        // An export renders its own raster when the view's does not cover its framing (a
+        // figure fitted to the page, a target of another aspect ratio) or there is none yet.
+        const QRectF needed = QRectF(m.unmap(m.target.bottomLeft()),
+                                     m.unmap(m.target.topRight())).normalized();
+        const double slack = 1e-6 * std::max(needed.width(), needed.height());
+        const bool covers = !image.isNull() && info.world.isValid()
+                            && info.world.adjusted(-slack, -slack, slack, slack).contains(needed);
+        if (forExport && !vector && !covers && m_ifs && m_error.isEmpty())
             image = exportRaster(m, &info);
         if (vector) {
             paintVectorImages(p, m, dots, m_settings.mode == RenderRequest::Mode::Random
@@ -118,7 +137,7 @@ void AttractorView::paintLegend(QPainter &p, const Mapping &m) const
 {
     if (m_exactLabel.isEmpty() || !isLayerVisible(Layer::ExactCurve) || m_exact.size() < 2)
         return;
-    const double u = m.scale / m_scale;
+    const double u = m.unit;
     p.save();
     const QFont f = sceneFont(1.0, u);
     p.setFont(f);
@@ -183,10 +202,10 @@ void AttractorView::paintGrid(QPainter &p, const Mapping &m) const
 {
     const QRectF w = QRectF(m.unmap(m.target.bottomLeft()), m.unmap(m.target.topRight()))
                          .normalized();
-    const double step = niceStep(90.0 / m.scale * (m.scale / m_scale)); // ~90 screen px
+    const double step = niceStep(90.0 * m.unit / m.scale); // ~90 screen px
     if (!(step > 0) || !std::isfinite(step) || w.width() / step > 400)
         return;
-    const double u = m.scale / m_scale;
+    const double u = m.unit;
     p.save();
     p.setPen(QPen(QColor(232, 232, 236), 1.0 * u));
     for (double x = std::ceil(w.left() / step) * step; x <= w.right(); x += step)
@@ -223,7 +242,7 @@ void AttractorView::paintVectorImages(QPainter &p, const Mapping &m,
                                       const std::vector<VectorImage> &images,
                                       StartSet::Kind kind) const
 {
-    const double u = m.scale / m_scale;
+    const double u = m.unit;
     p.save();
     for (const VectorImage &im : images) {
         QPolygonF s;
@@ -253,7 +272,7 @@ void AttractorView::paintVectorImages(QPainter &p, const Mapping &m,
 
 void AttractorView::paintHandles(QPainter &p, const Mapping &m) const
 {
-    const double u = m.scale / m_scale;
+    const double u = m.unit;
     const bool onScreen = u == 1.0 && m.target == QRectF(rect());
     const QFont f = sceneFont(0.9, u);
     p.save();

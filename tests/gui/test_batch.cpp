@@ -1,0 +1,87 @@
+// attractor-workbench in batch mode (--item, --print-pdf, --screenshot): the figure sheet of a
+// chosen example item is printed to a one-page PDF and the window saved as a PNG without a
+// display; bad options name the problem and exit non-zero.
+
+#include <QFile>
+#include <QImage>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+class TestBatch : public QObject {
+    Q_OBJECT
+private slots:
+    void printsSheetAndScreenshot();
+    void badOptions();
+
+private:
+    QTemporaryDir m_home;
+    int run(const QStringList &args, QString *err = nullptr)
+    {
+        const QString dir = qEnvironmentVariable("AWB_BIN_DIR",
+                                                 QCoreApplication::applicationDirPath() + "/../bin");
+        QProcess p;
+        // Settings and autosave copies go to a scratch home, not the user's.
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("QT_QPA_PLATFORM", "offscreen");
+        env.insert("HOME", m_home.path());
+        env.insert("XDG_CONFIG_HOME", m_home.path() + "/config");
+        env.insert("XDG_DATA_HOME", m_home.path() + "/data");
+        env.insert("XDG_RUNTIME_DIR", m_home.path());
+        p.setProcessEnvironment(env);
+        p.start(dir + "/attractor-workbench", args);
+        if (!p.waitForFinished(120000)) {
+            p.kill();
+            p.waitForFinished();
+            return -1;
+        }
+        if (err)
+            *err = QString::fromUtf8(p.readAllStandardError());
+        return p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    }
+    QString example(const QString &name) const
+    {
+        return qEnvironmentVariable("AWB_SOURCE_DIR", AWB_TEST_SOURCE_DIR) + "/examples/" + name;
+    }
+};
+
+void TestBatch::printsSheetAndScreenshot()
+{
+    QTemporaryDir out;
+    const QString pdf = out.filePath("sheet.pdf"), png = out.filePath("window.png");
+    QString err;
+    const int code = run({example("004-fig3.7-takagi-y-quarter-and-eighth.awb"), "--item",
+                          "004 Fig. 3.7 (right): A*(y), t = 1/2 + i/8", "--print-pdf", pdf,
+                          "--screenshot", png, "--window-size", "1200x800"},
+                         &err);
+    QVERIFY2(code == 0, qPrintable(err));
+    QFile f(pdf);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QByteArray bytes = f.readAll();
+    QVERIFY(bytes.startsWith("%PDF"));
+    QCOMPARE(bytes.count("/Type /Page\n") + bytes.count("/Type /Page\r")
+                 + bytes.count("/Type /Page "), 1);
+    QVERIFY(bytes.size() > 5000);
+    const QImage shot(png);
+    QCOMPARE(shot.size(), QSize(1200, 800));
+}
+
+void TestBatch::badOptions()
+{
+    QTemporaryDir out;
+    QString err;
+    QCOMPARE(run({example("001-fig02-levy-curve.awb"), "--item", "no such item", "--print-pdf",
+                  out.filePath("x.pdf")},
+                 &err),
+             1);
+    QVERIFY2(err.contains("no item named \"no such item\""), qPrintable(err));
+    QVERIFY(!QFile::exists(out.filePath("x.pdf")));
+    QCOMPARE(run({example("001-fig02-levy-curve.awb"), "--screenshot", out.filePath("x.png"),
+                  "--window-size", "huge"},
+                 &err),
+             2);
+    QVERIFY2(err.contains("--window-size huge"), qPrintable(err));
+}
+
+QTEST_GUILESS_MAIN(TestBatch)
+#include "test_batch.moc"
