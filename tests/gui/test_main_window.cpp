@@ -19,6 +19,7 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QComboBox>
+#include <QScrollArea>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
@@ -165,6 +166,7 @@ void TestMainWindow::openingFillsEveryView()
 {
     RecordingMessages messages;
     MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    w.resize(1400, 900); // a laptop screen, the default dock layout
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
     QStringList files{m_file};
@@ -185,6 +187,15 @@ void TestMainWindow::openingFillsEveryView()
             w.setCurrentItem(item);
             w.controller()->refreshNow();
             const QString where = file + QStringLiteral(": ") + item->name();
+            // The properties fit the dock's width (no editor clipped at the right edge).
+            if (auto *scroll = w.propertiesWidget()->findChild<QScrollArea *>()) {
+                QCoreApplication::processEvents();
+                QVERIFY2(scroll->widget()->minimumSizeHint().width()
+                             <= scroll->viewport()->width(),
+                         qPrintable(where + QStringLiteral(": properties need %1 px, dock has %2")
+                                        .arg(scroll->widget()->minimumSizeHint().width())
+                                        .arg(scroll->viewport()->width())));
+            }
             const auto d = a->derivedIfs();
             // A normal-vector curve without an equivalent IFS is drawn as its polygon only.
             if (d->ifs.size() == 0 && !d->iterate) {

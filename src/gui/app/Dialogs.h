@@ -1,17 +1,21 @@
 #pragma once
 // The application's small dialogs: ExportDialog (which view, format by file suffix, size in
 // pixels and resolution) and PreferencesDialog (default depth, palette, autosave interval),
-// whose values live in QSettings through the Preferences value type.
+// whose values live in QSettings through the Preferences value type. Their layouts are the
+// Qt Designer forms ui/exportdialog.ui and ui/preferencesdialog.ui.
 #include <QColor>
 #include <QDialog>
 #include <QList>
 #include <QSize>
 
-class QComboBox;
-class QDoubleSpinBox;
-class QLineEdit;
-class QSpinBox;
+#include <memory>
+
 class QToolButton;
+
+namespace Ui {
+class ExportDialog;
+class PreferencesDialog;
+} // namespace Ui
 
 namespace awb {
 
@@ -36,25 +40,25 @@ public:
         int dpi = 300;
     };
     explicit ExportDialog(const Options &initial, QWidget *parent = nullptr);
+    ~ExportDialog() override;
     Options options() const;
 
 private:
     void browse();
-    QComboBox *m_target;
-    QLineEdit *m_file;
-    QSpinBox *m_width, *m_height, *m_dpi;
+    std::unique_ptr<Ui::ExportDialog> m_ui;
 };
 
 class PreferencesDialog : public QDialog {
     Q_OBJECT
 public:
     explicit PreferencesDialog(const Preferences &initial, QWidget *parent = nullptr);
+    ~PreferencesDialog() override;
     Preferences preferences() const;
 
 private:
+    QList<QToolButton *> colourButtons() const;  // the form's, in map order
     void showColours();
-    QSpinBox *m_depth, *m_maxDepth, *m_autosave;
-    QList<QToolButton *> m_colourButtons;
+    std::unique_ptr<Ui::PreferencesDialog> m_ui;
     QList<QColor> m_palette;
 };
 

@@ -29,6 +29,16 @@ namespace {
 constexpr int sliderSteps = 1000;
 constexpr double spinLimit = 1e9;
 
+// A combo box whose width does not follow its longest entry (long preset names would make the
+// dock's content wider than the dock, clipping every row's right end).
+QComboBox *compactCombo()
+{
+    auto *combo = new QComboBox;
+    combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    combo->setMinimumContentsLength(8);
+    return combo;
+}
+
 double finiteOr(double v, double fallback) { return std::isfinite(v) ? v : fallback; }
 
 QDoubleSpinBox *realSpin(double lo, double hi)
@@ -226,6 +236,7 @@ void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info
         std::function<void(double)> setSpin;
         if (integer) {
             auto *spin = new QSpinBox;
+            spin->setMinimumWidth(70); // not the width of its largest value
             spin->setRange(int(std::max(finiteOr(info.minimum, -spinLimit), -spinLimit)),
                            int(std::min(finiteOr(info.maximum, spinLimit), spinLimit)));
             spin->setKeyboardTracking(false);
@@ -283,7 +294,7 @@ void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info
         break;
     }
     case ParameterInfo::Type::Choice: {
-        auto *combo = new QComboBox;
+        auto *combo = compactCombo();
         combo->addItems(info.choices);
         combo->setToolTip(info.toolTip);
         connect(combo, &QComboBox::currentIndexChanged, this,
@@ -347,7 +358,7 @@ void PropertiesWidget::addAttractorEditors()
     // ---- start set
     auto *startBox = new QGroupBox(tr("Start set X0"));
     auto *startForm = new QFormLayout(startBox);
-    auto *startKind = new QComboBox;
+    auto *startKind = compactCombo();
     startKind->addItems({tr("Point"), tr("Segment"), tr("Triangle"), tr("Polygon"),
                          tr("Points")});
     startForm->addRow(tr("Kind:"), startKind);
@@ -374,12 +385,14 @@ void PropertiesWidget::addAttractorEditors()
     // ---- algorithm
     auto *algBox = new QGroupBox(tr("Algorithm"));
     auto *algForm = new QFormLayout(algBox);
-    auto *mode = new QComboBox;
+    auto *mode = compactCombo();
     mode->addItems({tr("Deterministic"), tr("Random (chaos game)")});
     auto *depth = new QSpinBox;
+    depth->setMinimumWidth(70); // not the width of its largest value
     depth->setRange(0, AlgorithmSpec::maxDepth);
     depth->setKeyboardTracking(false);
     auto *samples = new QSpinBox;
+    samples->setMinimumWidth(70); // not the width of its largest value
     samples->setRange(1, 100'000'000);
     samples->setSingleStep(10000);
     samples->setKeyboardTracking(false);
@@ -419,9 +432,10 @@ void PropertiesWidget::addAttractorEditors()
     // ---- style
     auto *styleBox = new QGroupBox(tr("Style"));
     auto *styleForm = new QFormLayout(styleBox);
-    auto *colorBy = new QComboBox;
+    auto *colorBy = compactCombo();
     colorBy->addItems({tr("By map"), tr("By address prefix"), tr("Single colour")});
     auto *prefix = new QSpinBox;
+    prefix->setMinimumWidth(70); // not the width of its largest value
     prefix->setRange(1, StyleSpec::maxPrefixLength);
     auto *pointSize = new QDoubleSpinBox;
     pointSize->setRange(0.5, StyleSpec::maxPointSize);
