@@ -122,6 +122,7 @@ private slots:
     void startsWithOneCurve();
     void openingFillsEveryView();
     void dragIsOneUndoStep();
+    void everyPointSetIsShownAndDraggable();
     void propertiesEditIsUndoable();
     void matrixCellEditRebalancesRow();
     void printToPdf();
@@ -278,6 +279,49 @@ void TestMainWindow::dragIsOneUndoStep()
     QCOMPARE(w.spectrumView()->maps().front().spectrum.values, spectrumBefore);
     QTRY_VERIFY_WITH_TIMEOUT(view->currentImageInfo().final && !view->renderer()->isBusy()
                                  && view->currentImage() == before, 30000);
+}
+
+void TestMainWindow::everyPointSetIsShownAndDraggable()
+{
+    // 002 Fig. 3: two quadratic Bézier curves, two control polygons. The second curve's points
+    // follow the first's in the view's handle numbering.
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    w.resize(1300, 850);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openFile(QStringLiteral(AWB_TEST_SOURCE_DIR "/examples/002-fig03-union-p3.awb")));
+    auto *item = qobject_cast<AttractorItem *>(w.project()->child(0));
+    QVERIFY(item && item->controlPointSetCount() == 2);
+    w.setCurrentItem(item);
+    w.controller()->refreshNow();
+    AttractorView *view = w.attractorView();
+    QCOMPARE(view->controlPolygonCount(), 2);
+    const int n0 = int(item->controlPoints(0).size());
+    QCOMPARE(view->controlPointCount(), n0 + int(item->controlPoints(1).size()));
+    QCOMPARE(view->controlPointSet(n0 + 1), std::make_pair(1, 1));
+    QCOMPARE(view->controlPointSet(n0 - 1), std::make_pair(0, n0 - 1));
+    QCOMPARE(view->controlPointSet(view->controlPointCount()), std::make_pair(-1, -1));
+    const PointList first = item->controlPoints(0), second = item->controlPoints(1);
+    const PlanePoint q1 = second[1];
+    QCOMPARE(view->controlPointPosition(n0 + 1), QPointF(q1.x, q1.y));
+    // Every handle lies inside the fitted view.
+    for (int i = 0; i < view->controlPointCount(); ++i)
+        QVERIFY(view->visibleWorldRect().contains(view->controlPointPosition(i)));
+
+    const int steps = w.project()->undoStack()->count();
+    const QPoint grab = view->worldToScreen(view->controlPointPosition(n0 + 1)).toPoint();
+    QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, grab);
+    QTest::mouseMove(view, grab + QPoint(10, 10));
+    const QPoint end = grab + QPoint(30, 20);
+    QTest::mouseMove(view, end);
+    QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, end);
+    QCOMPARE(w.project()->undoStack()->count(), steps + 1);
+    QCOMPARE(item->controlPoints(0), first);           // the first curve is untouched
+    QVERIFY(!(item->controlPoints(1)[1] == q1));        // the second curve's q_1 moved
+    QCOMPARE(item->controlPoints(1)[0], second[0]);
+    w.project()->undoStack()->undo();
+    QCOMPARE(item->controlPoints(1), second);
 }
 
 void TestMainWindow::propertiesEditIsUndoable()

@@ -248,7 +248,10 @@ void ItemController::refreshNow()
             m_attractor->setIfs(nullptr, StartSet{});
         }
         const Mat P = item->controlPointSetCount() > 0 ? toMatrix(item->controlPoints(0)) : Mat();
-        m_attractor->setControlPoints(P, false);
+        std::vector<Mat> sets;
+        for (int k = 0; k < item->controlPointSetCount(); ++k)
+            sets.push_back(toMatrix(item->controlPoints(k)));
+        m_attractor->setControlPolygons(sets);
         m_attractor->setControlPointsEditable(item->controlPointSetCount() > 0);
 
         AttractorView::RenderSettings rs = m_attractor->renderSettings();
@@ -414,8 +417,10 @@ void ItemController::onControlPressed(int)
 
 void ItemController::onControlDragged(int index, const QPointF &world)
 {
-    if (auto *item = qobject_cast<AttractorItem *>(m_item.data()))
-        item->moveControlPoint(index, {world.x(), world.y()}, m_gesture);
+    // The view numbers the handles of all point sets in one sequence.
+    const auto [set, i] = m_attractor->controlPointSet(index);
+    if (auto *item = qobject_cast<AttractorItem *>(m_item.data()); item && set >= 0)
+        item->moveControlPoint(i, {world.x(), world.y()}, m_gesture, set);
 }
 
 void ItemController::onControlReleased(int index, const QPointF &start, const QPointF &end)

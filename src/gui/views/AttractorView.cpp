@@ -151,12 +151,37 @@ void AttractorView::setStartSet(const StartSet &start)
 
 void AttractorView::setControlPoints(const Mat &points, bool closed)
 {
-    const QPolygonF poly = toPolygon(points);
-    m_control.assign(poly.begin(), poly.end());
-    m_controlClosed = closed;
+    setControlPolygons(points.rows() > 0 ? std::vector<Mat>{points} : std::vector<Mat>{},
+                       {closed});
+}
+
+void AttractorView::setControlPolygons(const std::vector<Mat> &sets,
+                                       const std::vector<bool> &closed)
+{
+    m_control.clear();
+    m_controlSets.clear();
+    m_controlClosedSets.clear();
+    for (std::size_t k = 0; k < sets.size(); ++k) {
+        const QPolygonF poly = toPolygon(sets[k]);
+        m_control.insert(m_control.end(), poly.begin(), poly.end());
+        m_controlSets.push_back(int(poly.size()));
+        m_controlClosedSets.push_back(k < closed.size() && closed[k]);
+    }
     if (m_drag.kind == DragKind::ControlPoint && m_drag.index >= int(m_control.size()))
         m_drag = Drag();
     dataChanged(true);
+}
+
+std::pair<int, int> AttractorView::controlPointSet(int flat) const
+{
+    if (flat < 0)
+        return {-1, -1};
+    for (int k = 0; k < int(m_controlSets.size()); ++k) {
+        if (flat < m_controlSets[std::size_t(k)])
+            return {k, flat};
+        flat -= m_controlSets[std::size_t(k)];
+    }
+    return {-1, -1};
 }
 
 void AttractorView::setExactCurve(const Mat &curve, const QString &label)
@@ -254,6 +279,24 @@ std::optional<QRectF> AttractorView::contentBounds() const
             }
         } catch (const std::exception &) {
             // An invalid IFS is reported by the renderer; fit to the rest.
+        }
+    } else if (m_iterate && m_ifs && !m_ifs->views.empty() && m_start.vertices.rows() > 0) {
+        // An automaton (CIFS, junction curve): its image count per level is not N^depth, so
+        // deepen until a level has a few thousand images.
+        try {
+            for (int depth = 1; depth <= 30; ++depth) {
+                BoundsSink bounds(m_ifs->views);
+                std::vector<AttractorSink *> sinks{&bounds};
+                const IterationStats stats = m_iterate(
+                    StartSet::points(m_start.vertices.topRows(1)), depth, sinks, {});
+                if (stats.images >= 4000 || depth == 30) {
+                    if (!bounds.empty() && bounds.finite() && bounds.lo().size() >= 2)
+                        add(QPolygonF{QPointF(bounds.lo()(0), bounds.lo()(1)),
+                                      QPointF(bounds.hi()(0), bounds.hi()(1))});
+                    break;
+                }
+            }
+        } catch (const std::exception &) {
         }
     }
     return boundsOf(all);

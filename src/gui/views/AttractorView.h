@@ -18,6 +18,7 @@
 
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 class QPainter;
@@ -52,6 +53,14 @@ public:
     void setStartSet(const StartSet &start);
     // Control points m x 2 (one per row), drawn as the control polygon; empty to hide.
     void setControlPoints(const Mat &points, bool closed = false);
+    // Several control polygons (a union of Bézier curves, the two curves and the handles of a
+    // junction): drawn one after another, the points of set k labelled with the k-th letter
+    // of p, q, r, s, ... Handles are addressed by one flat index (set 0 first) in
+    // controlPointPosition() and the press/drag/release signals; controlPointSet() splits it.
+    void setControlPolygons(const std::vector<Mat> &sets, const std::vector<bool> &closed = {});
+    int controlPolygonCount() const { return int(m_controlSets.size()); }
+    // {set, index within the set} of flat handle index `flat`; {-1, -1} when out of range.
+    std::pair<int, int> controlPointSet(int flat) const;
     // The exact limit curve (n x 2) where one exists; empty to clear. A non-empty `label`
     // (what the curve is, e.g. "Takagi image c(x + 2iy·T(x))") is drawn as a legend entry.
     void setExactCurve(const Mat &curve, const QString &label = {});
@@ -206,8 +215,9 @@ private:
     CustomIterate m_iterate;
     StartSet m_start;
     std::vector<QPointF> m_startPlane;
-    std::vector<QPointF> m_control;
-    bool m_controlClosed = false;
+    std::vector<QPointF> m_control;          // all sets, flat
+    std::vector<int> m_controlSets;          // number of points of each set
+    std::vector<bool> m_controlClosedSets;   // per set
     QPolygonF m_exact;
     QString m_exactLabel;
     std::vector<QPolygonF> m_subdivision;

@@ -302,38 +302,46 @@ void AttractorView::paintHandles(QPainter &p, const Mapping &m) const
     }
 
     if (isLayerVisible(Layer::ControlPolygon) && !m_control.empty()) {
-        QPolygonF s;
-        for (int i = 0; i < int(m_control.size()); ++i)
-            s << m.map(controlPointPosition(i));
-        // One path (an SVG <path>, a PDF path) for the whole polygon. A light halo under it
-        // keeps it readable over a dense attractor.
-        const QPainterPath polygon = polylinePath(s, m_controlClosed);
-        p.setBrush(Qt::NoBrush);
-        p.setPen(QPen(QColor(255, 255, 255, 200), 3.5 * u, Qt::SolidLine, Qt::RoundCap,
-                      Qt::RoundJoin));
-        p.drawPath(polygon);
-        p.setPen(QPen(kControlColour, 1.2 * u, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-        p.drawPath(polygon);
-        const double r = kHandleRadius * u;
-        for (int i = 0; i < s.size(); ++i) {
-            const bool hot = onScreen && (i == m_hoverControl
-                                          || (m_drag.kind == DragKind::ControlPoint
-                                              && m_drag.index == i));
-            p.setPen(QPen(kControlColour, 1.5 * u));
-            p.setBrush(hot ? QColor(255, 200, 0) : QColor(Qt::white));
-            p.drawEllipse(s[i], r, r);
-            const QString text = QStringLiteral("p") + subscript(i);
-            const QPointF at(s[i].x() + r + 2 * u, s[i].y() - r - 1 * u);
-            // White outline text: readable over the attractor and the grid.
-            QPainterPath path;
-            path.addText(at, f, text);
-            p.setPen(QPen(QColor(255, 255, 255, 220), 3.0 * u, Qt::SolidLine, Qt::RoundCap,
-                          Qt::RoundJoin));
+        int first = 0;
+        for (std::size_t k = 0; k < m_controlSets.size(); ++k) {
+            const int n = m_controlSets[k];
+            QPolygonF s;
+            for (int i = first; i < first + n; ++i)
+                s << m.map(controlPointPosition(i));
+            // One path (an SVG <path>, a PDF path) per polygon. A light halo under it keeps
+            // it readable over a dense attractor.
+            const QPainterPath polygon = polylinePath(s, m_controlClosedSets[k]);
             p.setBrush(Qt::NoBrush);
-            p.drawPath(path);
-            p.setPen(Qt::NoPen);
-            p.setBrush(kControlColour);
-            p.drawPath(path);
+            p.setPen(QPen(QColor(255, 255, 255, 200), 3.5 * u, Qt::SolidLine, Qt::RoundCap,
+                          Qt::RoundJoin));
+            p.drawPath(polygon);
+            p.setPen(QPen(kControlColour, 1.2 * u, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            p.drawPath(polygon);
+            const double r = kHandleRadius * u;
+            // p, q, r, ... (after z: p again)
+            const QChar letter(char16_t(u'a' + (15 + int(k)) % 26));
+            for (int j = 0; j < n; ++j) {
+                const int i = first + j;
+                const bool hot = onScreen && (i == m_hoverControl
+                                              || (m_drag.kind == DragKind::ControlPoint
+                                                  && m_drag.index == i));
+                p.setPen(QPen(kControlColour, 1.5 * u));
+                p.setBrush(hot ? QColor(255, 200, 0) : QColor(Qt::white));
+                p.drawEllipse(s[j], r, r);
+                const QString text = QString(letter) + subscript(j);
+                const QPointF at(s[j].x() + r + 2 * u, s[j].y() - r - 1 * u);
+                // White outline text: readable over the attractor and the grid.
+                QPainterPath path;
+                path.addText(at, f, text);
+                p.setPen(QPen(QColor(255, 255, 255, 220), 3.0 * u, Qt::SolidLine, Qt::RoundCap,
+                              Qt::RoundJoin));
+                p.setBrush(Qt::NoBrush);
+                p.drawPath(path);
+                p.setPen(Qt::NoPen);
+                p.setBrush(kControlColour);
+                p.drawPath(path);
+            }
+            first += n;
         }
     }
     p.restore();
