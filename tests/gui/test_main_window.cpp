@@ -19,7 +19,9 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QComboBox>
+#include <QProgressBar>
 #include <QScrollArea>
+#include <QToolButton>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
@@ -123,6 +125,7 @@ private slots:
     void openingFillsEveryView();
     void dragIsOneUndoStep();
     void everyPointSetIsShownAndDraggable();
+    void longRenderShowsProgressAndStops();
     void propertiesEditIsUndoable();
     void matrixCellEditRebalancesRow();
     void printToPdf();
@@ -322,6 +325,44 @@ void TestMainWindow::everyPointSetIsShownAndDraggable()
     QCOMPARE(item->controlPoints(1)[0], second[0]);
     w.project()->undoStack()->undo();
     QCOMPARE(item->controlPoints(1), second);
+}
+
+void TestMainWindow::longRenderShowsProgressAndStops()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    w.resize(1300, 850);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openFile(m_file));
+    auto *item = qobject_cast<SubdivisionCurveItem *>(w.project()->findItem("B-spline"));
+    QVERIFY(item);
+    w.setCurrentItem(item);
+    QVERIFY(waitForFinalImage(w.attractorView()));
+    auto *progress = w.findChild<QProgressBar *>(QStringLiteral("renderProgress"));
+    auto *stop = w.findChild<QToolButton *>(QStringLiteral("renderCancel"));
+    QVERIFY(progress && stop);
+    QVERIFY(!progress->isVisible() && !stop->isVisible()); // quick renders show nothing
+    // 2^26 images from a point: seconds of work, so the progress and the button appear.
+    AlgorithmSpec a = item->algorithm();
+    a.depth = 26;
+    QVERIFY(item->setAlgorithm(a));
+    QTRY_VERIFY_WITH_TIMEOUT(stop->isVisible() && progress->isVisible(), 10000);
+    QVERIFY(w.attractorView()->isRendering());
+    QTest::mouseClick(stop, Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!w.attractorView()->isRendering(), 5000);
+    QVERIFY(!stop->isVisible() && !progress->isVisible());
+    QVERIFY(!w.attractorView()->currentImage().isNull()); // the coarse picture stays
+    // Draw Again (F5) starts it again; a shallower depth lets it finish.
+    a.depth = 9;
+    QVERIFY(item->setAlgorithm(a));
+    QVERIFY(waitForFinalImage(w.attractorView()));
+    QAction *again = w.action(QStringLiteral("actionRenderAgain"));
+    QVERIFY(again);
+    QCOMPARE(again->shortcut(), QKeySequence(QKeySequence::Refresh));
+    again->trigger();
+    QVERIFY(w.attractorView()->isRendering());
+    QVERIFY(waitForFinalImage(w.attractorView()));
 }
 
 void TestMainWindow::propertiesEditIsUndoable()

@@ -5,6 +5,7 @@
 #include "gui/app/Messages.h"
 #include "gui/app/PropertiesDock.h"
 #include "gui/views/AnalysisCharts.h"
+#include "gui/views/AttractorRenderer.h"
 #include "gui/views/AttractorView.h"
 #include "gui/views/MatrixView.h"
 #include "gui/views/SpectrumView.h"
@@ -34,6 +35,7 @@
 #include <QPrintPreviewDialog>
 #include <QPrinter>
 #include <QProgressBar>
+#include <QTimer>
 #include <QScreen>
 #include <QSettings>
 #include <QSpinBox>
@@ -177,9 +179,49 @@ void MainWindow::createViews()
     m_cancel->setText(tr("Cancel"));
     m_cancel->setToolTip(tr("Cancel the analysis"));
     m_cancel->setVisible(false);
+    m_renderProgress = new QProgressBar;
+    m_renderProgress->setObjectName(QStringLiteral("renderProgress"));
+    m_renderProgress->setRange(0, 100);
+    m_renderProgress->setMaximumWidth(160);
+    m_renderProgress->setFormat(tr("Drawing %p%"));
+    m_renderProgress->setVisible(false);
+    m_renderCancel = new QToolButton;
+    m_renderCancel->setObjectName(QStringLiteral("renderCancel"));
+    m_renderCancel->setText(tr("Stop"));
+    m_renderCancel->setToolTip(tr("Stop drawing the attractor (Esc in the view); F5 draws it "
+                                  "again"));
+    m_renderCancel->setVisible(false);
+    m_renderShowTimer = new QTimer(this);
+    m_renderShowTimer->setSingleShot(true);
+    m_renderShowTimer->setInterval(400);
     statusBar()->addWidget(m_problemLabel, 1);
+    statusBar()->addPermanentWidget(m_renderProgress);
+    statusBar()->addPermanentWidget(m_renderCancel);
     statusBar()->addPermanentWidget(m_progress);
     statusBar()->addPermanentWidget(m_cancel);
+    connect(m_renderCancel, &QToolButton::clicked, m_attractor, &AttractorView::cancelRender);
+    connect(m_attractor->renderer(), &AttractorRenderer::busyChanged, this, [this](bool busy) {
+        if (busy) {
+            m_renderProgress->setValue(0);
+            if (!m_renderShowTimer->isActive() && !m_renderProgress->isVisible())
+                m_renderShowTimer->start();
+        } else {
+            m_renderShowTimer->stop();
+            m_renderProgress->setVisible(false);
+            m_renderCancel->setVisible(false);
+        }
+    });
+    connect(m_renderShowTimer, &QTimer::timeout, this, [this] {
+        if (m_attractor->isRendering()) {
+            m_renderProgress->setVisible(true);
+            m_renderCancel->setVisible(true);
+        }
+    });
+    connect(m_attractor, &AttractorView::renderProgress, this,
+            [this](double f) { m_renderProgress->setValue(int(std::lround(100 * f))); });
+    connect(m_attractor, &AttractorView::renderCancelled, this, [this] {
+        statusBar()->showMessage(tr("Drawing stopped; press F5 to draw again."), 6000);
+    });
     statusBar()->addPermanentWidget(m_cursorLabel);
     connect(m_cancel, &QToolButton::clicked, m_controller, &ItemController::cancelAnalysis);
     connect(m_controller, &ItemController::analysisStarted, this, [this] {
@@ -270,6 +312,10 @@ void MainWindow::createActions()
          QKeySequence::ZoomOut, [this] { m_attractor->zoomOut(); });
     make(QStringLiteral("actionFit"), tr("&Fit"), QStringLiteral("zoom-fit-best"),
          QKeySequence(tr("Ctrl+0")), [this] { m_attractor->fitToContents(); });
+    make(QStringLiteral("actionStopRender"), tr("&Stop Drawing"), QStringLiteral("process-stop"),
+         QKeySequence(), [this] { m_attractor->cancelRender(); });
+    make(QStringLiteral("actionRenderAgain"), tr("&Draw Again"), QStringLiteral("view-refresh"),
+         QKeySequence::Refresh, [this] { m_attractor->renderAgain(); });
     make(QStringLiteral("actionResetLayout"), tr("&Reset Layout"), QString(), QKeySequence(),
          &MainWindow::resetLayout);
     make(QStringLiteral("actionAbout"), tr("&About Attractor Workbench"),
@@ -378,6 +424,9 @@ void MainWindow::createMenus()
     m_viewMenu->addAction(action(QStringLiteral("actionZoomIn")));
     m_viewMenu->addAction(action(QStringLiteral("actionZoomOut")));
     m_viewMenu->addAction(action(QStringLiteral("actionFit")));
+    m_viewMenu->addSeparator();
+    m_viewMenu->addAction(action(QStringLiteral("actionStopRender")));
+    m_viewMenu->addAction(action(QStringLiteral("actionRenderAgain")));
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(action(QStringLiteral("actionShowControl")));
     m_viewMenu->addAction(action(QStringLiteral("actionShowStart")));

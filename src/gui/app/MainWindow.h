@@ -17,6 +17,7 @@ class QLabel;
 class QMenu;
 class QPrinter;
 class QProgressBar;
+class QTimer;
 class QSpinBox;
 class QToolButton;
 class QTreeView;
@@ -132,6 +133,11 @@ private:
     QLabel *m_problemLabel = nullptr;
     QProgressBar *m_progress = nullptr;
     QToolButton *m_cancel = nullptr;
+    // The attractor render's progress and cancel button, shown only for renders that take a
+    // while (a drag's quick renders would make them flicker).
+    QProgressBar *m_renderProgress = nullptr;
+    QToolButton *m_renderCancel = nullptr;
+    QTimer *m_renderShowTimer = nullptr;
     QString m_lastExport;
 };
 
