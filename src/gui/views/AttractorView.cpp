@@ -363,6 +363,19 @@ void AttractorView::startRender()
         || !std::isfinite(world.height())) {
         return;
     }
+    const double dpr = devicePixelRatioF();
+    const RenderRequest r = renderRequest(world,
+                                          QSize(std::max(1, int(std::lround(width() * dpr))),
+                                                std::max(1, int(std::lround(height() * dpr)))),
+                                          dpr);
+    m_progress = 0.0;
+    m_cancelled = false; // a new render replaces the "cancelled" note
+    m_renderer->request(r);
+}
+
+RenderRequest AttractorView::renderRequest(const QRectF &world, QSize size,
+                                           double pixelsPerScreenPixel) const
+{
     RenderRequest r;
     r.ifs = m_ifs;
     r.iterate = m_iterate;
@@ -372,16 +385,12 @@ void AttractorView::startRender()
     r.samples = m_settings.samples;
     r.seed = m_settings.seed;
     r.world = world;
-    const double dpr = devicePixelRatioF();
-    r.size = QSize(std::max(1, int(std::lround(width() * dpr))),
-                   std::max(1, int(std::lround(height() * dpr))));
+    r.size = size;
     r.colorMode = m_settings.colorMode;
     r.prefixLength = m_settings.prefixLength;
     r.palette = m_settings.palette;
-    r.dotRadius = int(std::lround(m_settings.dotRadius * dpr));
-    m_progress = 0.0;
-    m_cancelled = false; // a new render replaces the "cancelled" note
-    m_renderer->request(r);
+    r.dotRadius = int(std::lround(m_settings.dotRadius * pixelsPerScreenPixel));
+    return r;
 }
 
 void AttractorView::cancelRender()

@@ -192,6 +192,10 @@ private:
     void paintLegend(QPainter &p, const Mapping &m) const;
     void paintStatus(QPainter &p) const;
 
+    // The render of `world` into `size` pixels with the current data and settings; dots are
+    // `pixelsPerScreenPixel` times the settings' radius.
+    RenderRequest renderRequest(const QRectF &world, QSize size,
+                                double pixelsPerScreenPixel) const;
     void dataChanged(bool geometryChanged);
     void scheduleRender();
     void startRender();

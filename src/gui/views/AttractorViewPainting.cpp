@@ -165,23 +165,12 @@ QImage AttractorView::exportRaster(const Mapping &m, RenderInfo *info) const
 {
     // Only for a view that never rendered on screen (hidden, or exported right after the
     // data arrived): the export must not silently lack the attractor.
-    RenderRequest r;
-    r.ifs = m_ifs;
-    r.iterate = m_iterate;
-    r.start = m_start;
-    r.mode = m_settings.mode;
-    r.depth = m_settings.depth;
-    r.samples = m_settings.samples;
-    r.seed = m_settings.seed;
-    r.world = QRectF(m.unmap(m.target.bottomLeft()), m.unmap(m.target.topRight())).normalized();
     const double k = std::min(1.0, kMaxExportRaster / std::max(m.target.width(),
                                                                m.target.height()));
-    r.size = QSize(std::max(1, int(m.target.width() * k)),
-                   std::max(1, int(m.target.height() * k)));
-    r.colorMode = m_settings.colorMode;
-    r.prefixLength = m_settings.prefixLength;
-    r.palette = m_settings.palette;
-    r.dotRadius = m_settings.dotRadius;
+    const RenderRequest r = renderRequest(
+        QRectF(m.unmap(m.target.bottomLeft()), m.unmap(m.target.topRight())).normalized(),
+        QSize(std::max(1, int(m.target.width() * k)), std::max(1, int(m.target.height() * k))),
+        1.0);
     try {
         return AttractorRenderer::renderNow(r, info);
     } catch (const std::exception &) {
