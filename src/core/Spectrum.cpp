@@ -104,6 +104,7 @@ std::string toString(SubdominantKind kind)
     case SubdominantKind::RealPositive: return "real positive";
     case SubdominantKind::RealNegative: return "real negative";
     case SubdominantKind::ComplexPair: return "complex pair";
+    case SubdominantKind::Complex: return "complex";
     case SubdominantKind::Mixed: return "mixed";
     }
     return "none";
@@ -124,6 +125,9 @@ std::string Subdominant::meaning() const
         return "real negative: the curve oscillates at the fixed point and has no tangent there";
     case SubdominantKind::ComplexPair:
         return "complex pair: the curve spirals around the fixed point (no tangent)";
+    case SubdominantKind::Complex:
+        return "complex: near the fixed point the map acts as the spiral similarity z -> lambda z, "
+               "so the curve spirals around the fixed point (no tangent)";
     case SubdominantKind::Mixed:
         return "several eigenvalues of the same modulus with different signs or phases: no "
                "single tangent behaviour";
@@ -171,6 +175,11 @@ Subdominant subdominant(const Spectrum &s, bool dominantIsOne, double tol)
     else if (anyComplex && out.values.size() == 2
              && std::abs(out.values[0] - std::conj(out.values[1])) <= tol * std::max(1.0, top))
         out.kind = SubdominantKind::ComplexPair;
+    else if (anyComplex
+             && std::all_of(out.values.begin(), out.values.end(), [&](const Complex &v) {
+                    return std::abs(v - out.values.front()) <= tol * std::max(1.0, top);
+                }))
+        out.kind = SubdominantKind::Complex;
     else
         out.kind = SubdominantKind::Mixed;
     return out;

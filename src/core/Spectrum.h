@@ -23,7 +23,9 @@ struct Spectrum {
 Spectrum spectrum(const Mat &M, double tol = 1e-6);
 Spectrum spectrum(const CMat &M, double tol = 1e-6);
 
-enum class SubdominantKind { None, RealPositive, RealNegative, ComplexPair, Mixed };
+// Complex: one non-real eigenvalue (repeats allowed) without its conjugate, which only a
+// complex matrix has (L(t) of a complex de Casteljau split, 004 §3.7).
+enum class SubdominantKind { None, RealPositive, RealNegative, ComplexPair, Complex, Mixed };
 std::string toString(SubdominantKind kind);
 
 struct Subdominant {

@@ -385,6 +385,18 @@ void TestComplexBezier::conjecture371Example373()
 
 void TestComplexBezier::takagiImageIsTheOverlay()
 {
+    // The subdominant eigenvalue of L(t) is t itself, alone (no conjugate: a complex matrix):
+    // the Lévy C curve spirals around its end point 0, as f_1(z) = t z rotates by 45 degrees.
+    const Subdominant levy = subdominant(spectrum(deCasteljauL(1, Complex(0.5, 0.5))), true);
+    QVERIFY(levy.kind == SubdominantKind::Complex);
+    QCOMPARE(levy.multiplicity, 1);
+    QVERIFY(std::abs(levy.values.front() - Complex(0.5, 0.5)) < 1e-12);
+    QVERIFY(levy.meaning().find("spiral") != std::string::npos);
+    // Degree 2: eigenvalues 1, t, t^2; t is subdominant.
+    const Subdominant quad = subdominant(spectrum(deCasteljauL(2, Complex(0.5, 0.01))), true);
+    QVERIFY(quad.kind == SubdominantKind::Complex);
+    QVERIFY(std::abs(quad.values.front() - Complex(0.5, 0.01)) < 1e-12);
+
     // The polyline the attractor view overlays: for the segment (0, 1) it is the graph
     // x + 2iy T(x) at dyadics, T(1/2) = 1/2, T(1/4) = T(3/4) = 1/2 (sum of 1/4 + 1/4), T(0) = 0.
     const double y = 0.05;

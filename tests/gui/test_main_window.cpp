@@ -8,6 +8,7 @@
 #include "gui/app/Messages.h"
 #include "gui/app/PropertiesDock.h"
 #include "gui/views/AttractorView.h"
+#include "gui/views/ComplexPlanePicker.h"
 #include "gui/views/MatrixView.h"
 #include "gui/views/SpectrumView.h"
 #include "model/ExactCurve.h"
@@ -127,6 +128,7 @@ private slots:
     void everyPointSetIsShownAndDraggable();
     void longRenderShowsProgressAndStops();
     void propertiesEditIsUndoable();
+    void dragTInTheComplexPlane();
     void matrixCellEditRebalancesRow();
     void printToPdf();
     void svgExportHasControlPolygon();
@@ -486,6 +488,52 @@ void TestMainWindow::matrixCellEditRebalancesRow()
     QCOMPARE(undo->index(), steps);
     QCOMPARE(item->scheme().matrices[1], S2);
     QVERIFY(messages.errors.isEmpty());
+}
+
+void TestMainWindow::dragTInTheComplexPlane()
+{
+    // 004 Fig. 3.9's t = 1/2 + i/100 dragged to 1/2 + 3i/10 in the plane of 004 Fig. 3.3: the
+    // spectrum (eigenvalues 1, t, t^2 of L(t)) follows live, the whole drag is one undo step.
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    w.resize(1300, 850);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openFile(
+        QStringLiteral(AWB_TEST_SOURCE_DIR "/examples/004-fig3.9-example-3.7.3-takagi-image.awb")));
+    Item *item = w.project()->child(0);
+    w.setCurrentItem(item);
+    w.controller()->refreshNow();
+    QTest::qWait(100); // the properties dock rebuilds for the new item
+    QPointer<ComplexPlanePicker> plane = w.propertiesWidget()->findChild<ComplexPlanePicker *>(
+        QStringLiteral("complexPlane:t"));
+    QVERIFY(plane);
+    QTRY_VERIFY(plane->isVisible());
+    QCOMPARE(plane->value(), QPointF(0.5, 0.01));
+    const int steps = w.project()->undoStack()->count();
+    const QPoint from = plane->toScreen({0.5, 0.01}).toPoint();
+    const QPoint to = plane->toScreen({0.5, 0.3}).toPoint();
+    QTest::mousePress(plane, Qt::LeftButton, Qt::NoModifier, from);
+    QTest::mouseMove(plane, (from + to) / 2);
+    QTest::mouseMove(plane, to);
+    // Live: the item and the spectrum follow before the button is released.
+    const QPointF t = item->parameter(QStringLiteral("t")).toPointF();
+    const double pixel = 1.0 / (plane->toScreen({1, 0}).x() - plane->toScreen({0, 0}).x());
+    QVERIFY2(std::abs(t.x() - 0.5) <= pixel && std::abs(t.y() - 0.3) <= pixel,
+             qPrintable(QStringLiteral("t = %1 + %2i").arg(t.x()).arg(t.y())));
+    w.controller()->refreshNow();
+    const Complex tc(t.x(), t.y());
+    bool found = false;
+    for (const Complex &z : w.spectrumView()->maps().front().spectrum.values)
+        found = found || std::abs(z - tc * tc) < 1e-9;
+    QVERIFY2(found, "t^2 is an eigenvalue of L(t)");
+    QTest::mouseRelease(plane, Qt::LeftButton, Qt::NoModifier, to);
+    QCOMPARE(w.project()->undoStack()->count(), steps + 1);
+    QVERIFY(ComplexPlanePicker::inLens(plane->value()));
+    QVERIFY(!ComplexPlanePicker::inLens({0.5, 0.9}));  // |t|^2 = 0.25 + 0.81 > 1
+    w.project()->undoStack()->undo();
+    QCOMPARE(item->parameter(QStringLiteral("t")).toPointF(), QPointF(0.5, 0.01));
+    QCOMPARE(plane->value(), QPointF(0.5, 0.01));
 }
 
 void TestMainWindow::printToPdf()

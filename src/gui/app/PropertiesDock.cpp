@@ -1,6 +1,7 @@
 #include "gui/app/PropertiesDock.h"
 
 #include "gui/app/Messages.h"
+#include "gui/views/ComplexPlanePicker.h"
 #include "model/AttractorItem.h"
 #include "model/Project.h"
 
@@ -317,11 +318,22 @@ void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info
         const auto send = [this, key, re, im] { apply(key, QPointF(re->value(), im->value())); };
         connect(re, &QDoubleSpinBox::valueChanged, this, send);
         connect(im, &QDoubleSpinBox::valueChanged, this, send);
-        m_bindings.append({key, [this, key, re, im] {
+        // Dragging t in its plane (the discs of 004 Fig. 3.3): one gesture, one undo step,
+        // every view updated on the way.
+        auto *plane = new ComplexPlanePicker;
+        plane->setObjectName(QStringLiteral("complexPlane:") + key);
+        auto gesture = std::make_shared<int>(0);
+        connect(plane, &ComplexPlanePicker::pressed, this,
+                [this, gesture] { *gesture = beginGesture(); });
+        connect(plane, &ComplexPlanePicker::moved, this,
+                [this, key, gesture](const QPointF &t) { apply(key, t, *gesture); });
+        connect(plane, &ComplexPlanePicker::released, this, [gesture] { *gesture = 0; });
+        m_bindings.append({key, [this, key, re, im, plane] {
             const QPointF z = m_item->parameter(key).toPointF();
             const QSignalBlocker b1(re), b2(im);
             re->setValue(z.x());
             im->setValue(z.y());
+            plane->setValue(z);
         }});
         m_editors.insert(key, re);
         // Stacked: side by side they do not fit a narrow dock.
@@ -330,6 +342,7 @@ void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info
         v->setContentsMargins(0, 0, 0, 0);
         v->addWidget(re);
         v->addWidget(im);
+        v->addWidget(plane);
         break;
     }
     case ParameterInfo::Type::Bool: {

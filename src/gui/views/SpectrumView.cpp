@@ -387,6 +387,11 @@ void SpectrumView::updateVerdicts()
             kind = tr("complex pair");
             meaning = tr("The curve spirals around the fixed point (no tangent).");
             break;
+        case SubdominantKind::Complex:
+            kind = tr("complex");
+            meaning = tr("Near the fixed point the map acts as the spiral similarity z ↦ λz: "
+                         "the curve spirals around the fixed point (no tangent).");
+            break;
         case SubdominantKind::Mixed:
             kind = tr("mixed");
             meaning = tr("Several eigenvalues of the same modulus with different signs or "
