@@ -21,6 +21,9 @@
 #include <QFile>
 #include <QComboBox>
 #include <QProgressBar>
+#include <QElapsedTimer>
+#include <QTimer>
+#include <QProgressDialog>
 #include <QScrollArea>
 #include <QToolButton>
 #include <QSignalSpy>
@@ -131,6 +134,7 @@ private slots:
     void dragTInTheComplexPlane();
     void matrixCellEditRebalancesRow();
     void printToPdf();
+    void cancelledPrintWritesNothing();
     void svgExportHasControlPolygon();
     void corruptFileIsReported();
     void unsavedChangesPrompt();
@@ -554,6 +558,51 @@ void TestMainWindow::printToPdf()
     QCOMPARE(bytes.count("/Type /Page\n") + bytes.count("/Type /Page\r")
                  + bytes.count("/Type /Page "), 1);
     QVERIFY(bytes.size() > 5000);  // the figure, not an empty page
+}
+
+void TestMainWindow::cancelledPrintWritesNothing()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    w.resize(1300, 850);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openFile(m_file));
+    auto *item = qobject_cast<SubdivisionCurveItem *>(w.project()->findItem("B-spline"));
+    w.setCurrentItem(item);
+    QVERIFY(waitForFinalImage(w.attractorView()));
+    // Zoomed far in, the screen's raster does not cover the page's fitted framing: the sheet
+    // draws its own, 2^26 images deep, which takes seconds and shows a progress dialog.
+    AlgorithmSpec a = item->algorithm();
+    a.depth = 26;
+    QVERIFY(item->setAlgorithm(a));
+    w.controller()->refreshNow();
+    QCOMPARE(w.attractorView()->renderSettings().depth, 26);
+    w.attractorView()->setView(QPointF(3, 2), w.attractorView()->pixelsPerUnit() * 20);
+    w.attractorView()->cancelRender();
+    bool sawDialog = false;
+    QTimer::singleShot(900, &w, [&] {
+        if (auto *d = w.findChild<QProgressDialog *>(QStringLiteral("exportProgress"))) {
+            sawDialog = d->isVisible();
+            d->cancel();
+        }
+    });
+    const QString pdf = m_dir.path() + QStringLiteral("/cancelled.pdf");
+    QString error;
+    QElapsedTimer timer;
+    timer.start();
+    QVERIFY(!w.printToPdf(pdf, &error));
+    QVERIFY2(error.contains(QStringLiteral("cancelled")), qPrintable(error));
+    QVERIFY(sawDialog);
+    QVERIFY(!QFile::exists(pdf));
+    QVERIFY(!w.findChild<QProgressDialog *>(QStringLiteral("exportProgress")));
+    qInfo("cancelled after %lld ms", timer.elapsed());
+    // A shallow item prints again (the cancel does not stick).
+    a.depth = 9;
+    QVERIFY(item->setAlgorithm(a));
+    w.controller()->refreshNow();
+    QVERIFY2(w.printToPdf(pdf, &error), qPrintable(error));
+    QVERIFY(QFile::exists(pdf));
 }
 
 void TestMainWindow::svgExportHasControlPolygon()

@@ -7,12 +7,14 @@
 #include "gui/views/SpectrumView.h"
 #include "model/AttractorItem.h"
 
+#include <QFile>
 #include <QFileInfo>
 #include <QFontMetricsF>
 #include <QPageLayout>
 #include <QPainter>
 #include <QPdfWriter>
 #include <QPicture>
+#include <QPrinter>
 #include <qcustomplot.h>
 #include <cmath>
 
@@ -205,7 +207,19 @@ bool FigureSheet::print(QPagedPaintDevice *device) const
     // The printable area in device pixels: the printer's resolution applies.
     const QRectF page = device->pageLayout().paintRectPixels(device->logicalDpiX());
     paint(&painter, QRectF(QPointF(0, 0), page.size()));
+    if (cancelled()) {
+        // The user stopped drawing the attractor: no sheet without its figure.
+        if (auto *printer = dynamic_cast<QPrinter *>(device))
+            printer->abort();
+        painter.end();
+        return false;
+    }
     return painter.end();
+}
+
+bool FigureSheet::cancelled() const
+{
+    return m_attractor && m_attractor->exportCancelled();
 }
 
 bool FigureSheet::writePdf(const QString &fileName, QString *error) const
@@ -218,7 +232,12 @@ bool FigureSheet::writePdf(const QString &fileName, QString *error) const
     pdf.setCreator(QCoreApplication::applicationName());
     if (!print(&pdf)) {
         if (error)
-            *error = tr("Cannot write %1.").arg(QFileInfo(fileName).fileName());
+            *error = cancelled()
+                         ? tr("Printing %1 was cancelled while the attractor was drawn.")
+                               .arg(QFileInfo(fileName).fileName())
+                         : tr("Cannot write %1.").arg(QFileInfo(fileName).fileName());
+        if (cancelled())
+            QFile::remove(fileName);
         return false;
     }
     return true;

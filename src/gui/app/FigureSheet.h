@@ -28,8 +28,12 @@ public:
     QStringList caption() const;
     // Paints the sheet into `page` (device coordinates of `painter`).
     void paint(QPainter *painter, const QRectF &page) const;
-    // Paints one page on a printer or PDF writer (begins and ends its own painter).
+    // Paints one page on a printer or PDF writer (begins and ends its own painter). False
+    // when the device fails or the user cancelled drawing the attractor (a printer job is
+    // then aborted).
     bool print(QPagedPaintDevice *device) const;
+    // Whether the last paint lost its attractor to a cancel (AttractorView::exportCancelled).
+    bool cancelled() const;
     // Writes the sheet as a one-page A4 landscape PDF. False with a message on failure.
     bool writePdf(const QString &fileName, QString *error = nullptr) const;
 

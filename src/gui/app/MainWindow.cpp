@@ -22,6 +22,7 @@
 #include <QChartView>
 #include <QCloseEvent>
 #include <QDockWidget>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHeaderView>
@@ -35,6 +36,7 @@
 #include <QPrintPreviewDialog>
 #include <QPrinter>
 #include <QProgressBar>
+#include <QProgressDialog>
 #include <QTimer>
 #include <QScreen>
 #include <QSettings>
@@ -200,6 +202,24 @@ void MainWindow::createViews()
     statusBar()->addPermanentWidget(m_progress);
     statusBar()->addPermanentWidget(m_cancel);
     connect(m_renderCancel, &QToolButton::clicked, m_attractor, &AttractorView::cancelRender);
+    // An export or a print that draws the attractor anew (another framing, a hidden view)
+    // shows its progress after a moment and can be cancelled.
+    m_attractor->setExportProgress([this](double fraction) {
+        if (!m_exportProgress) {
+            m_exportProgress = new QProgressDialog(tr("Drawing the attractor for the figure…"),
+                                                   tr("Cancel"), 0, 100, this);
+            m_exportProgress->setObjectName(QStringLiteral("exportProgress"));
+            m_exportProgress->setWindowTitle(tr("Figure"));
+            m_exportProgress->setWindowModality(Qt::ApplicationModal);
+            m_exportProgress->setMinimumDuration(400);
+            m_exportProgress->setAutoReset(false);
+            m_exportProgress->setAutoClose(false);
+            m_exportProgress->setValue(0);
+        }
+        m_exportProgress->setValue(std::clamp(int(std::lround(100 * fraction)), 0, 99));
+        QCoreApplication::processEvents();
+        return !m_exportProgress->wasCanceled();
+    });
     connect(m_attractor->renderer(), &AttractorRenderer::busyChanged, this, [this](bool busy) {
         if (busy) {
             m_renderProgress->setValue(0);
@@ -627,6 +647,12 @@ void MainWindow::closeProject()
         newProject();
 }
 
+void MainWindow::endExportProgress()
+{
+    delete m_exportProgress;
+    m_exportProgress = nullptr;
+}
+
 void MainWindow::print()
 {
     QPrinter printer(QPrinter::HighResolution);
@@ -635,7 +661,11 @@ void MainWindow::print()
     if (dialog.exec() != QDialog::Accepted)
         return;
     FigureSheet sheet(m_current, m_attractor, m_spectrum);
-    if (!sheet.print(&printer))
+    const bool ok = sheet.print(&printer);
+    endExportProgress();
+    if (sheet.cancelled())
+        statusBar()->showMessage(tr("Printing cancelled."), 4000);
+    else if (!ok)
         m_messages->error(this, tr("Print"), tr("The printer could not be started."));
 }
 
@@ -647,13 +677,16 @@ void MainWindow::printPreview()
     preview.resize(1100, 800);
     connect(&preview, &QPrintPreviewDialog::paintRequested, this, [this](QPrinter *p) {
         FigureSheet(m_current, m_attractor, m_spectrum).print(p);
+        endExportProgress();
     });
     preview.exec();
 }
 
 bool MainWindow::printToPdf(const QString &fileName, QString *error)
 {
-    return FigureSheet(m_current, m_attractor, m_spectrum).writePdf(fileName, error);
+    const bool ok = FigureSheet(m_current, m_attractor, m_spectrum).writePdf(fileName, error);
+    endExportProgress();
+    return ok;
 }
 
 bool MainWindow::exportView(const ExportDialog::Options &o, QString *error)
@@ -739,6 +772,17 @@ bool MainWindow::exportView(const ExportDialog::Options &o, QString *error)
     } else {
         if (error)
             *error = tr("Unknown format \"%1\": use .png, .svg or .pdf.").arg(suffix);
+        return false;
+    }
+    endExportProgress();
+    const bool attractorShown = o.target == ExportDialog::Target::Attractor
+                                || o.target == ExportDialog::Target::FigureSheet;
+    if (attractorShown && m_attractor->exportCancelled()) {
+        // No figure without its attractor.
+        QFile::remove(o.fileName);
+        if (error)
+            *error = tr("Exporting %1 was cancelled while the attractor was drawn.")
+                         .arg(QFileInfo(o.fileName).fileName());
         return false;
     }
     if (!ok && error)

@@ -17,6 +17,7 @@ class QLabel;
 class QMenu;
 class QPrinter;
 class QProgressBar;
+class QProgressDialog;
 class QTimer;
 class QSpinBox;
 class QToolButton;
@@ -95,6 +96,7 @@ private:
     void revert();
     void closeProject();
     void print();
+    void endExportProgress();
     void printPreview();
     void exportDialog();
     void preferencesDialog();
@@ -138,6 +140,8 @@ private:
     QProgressBar *m_renderProgress = nullptr;
     QToolButton *m_renderCancel = nullptr;
     QTimer *m_renderShowTimer = nullptr;
+    // Progress of an export's own attractor raster (created on demand, deleted after).
+    QPointer<QProgressDialog> m_exportProgress;
     QString m_lastExport;
 };
 

@@ -300,12 +300,14 @@ void AttractorRenderer::cancel()
     }
 }
 
-QImage AttractorRenderer::renderNow(const RenderRequest &r, RenderInfo *info)
+QImage AttractorRenderer::renderNow(const RenderRequest &r, RenderInfo *info,
+                                   const IterationControl &control)
 {
     checkRequest(r);
     QImage image;
     RenderInfo local;
-    renderPass(r, passesFor(r).back(), {}, &image, info ? info : &local);
+    if (!renderPass(r, passesFor(r).back(), control, &image, info ? info : &local))
+        return {};
     return image;
 }
 

@@ -87,8 +87,10 @@ public:
     bool isBusy() const { return m_busy; }
 
     // The full-depth image of `request`, computed synchronously on the calling thread with
-    // the same code (and so the same pixels) as the asynchronous path. Throws InputError.
-    static QImage renderNow(const RenderRequest &request, RenderInfo *info = nullptr);
+    // the same code (and so the same pixels) as the asynchronous path. `control` may cancel it
+    // (then the image is null) and reports progress. Throws InputError.
+    static QImage renderNow(const RenderRequest &request, RenderInfo *info = nullptr,
+                            const IterationControl &control = {});
 
     // Default qualitative colours for maps and the default address gradient.
     static QColor mapColor(int i);

@@ -94,6 +94,8 @@ AttractorView::AttractorView(QWidget *parent) : QWidget(parent)
             [this](const QImage &image, const RenderInfo &info) {
                 m_image = image;
                 m_imageInfo = info;
+                // The renderer delivers only the latest request's images.
+                m_imageVersion = m_requestedVersion;
                 m_error.clear();
                 update();
                 if (info.final)
@@ -243,6 +245,7 @@ void AttractorView::updateStartPlane()
 
 void AttractorView::dataChanged(bool geometryChanged)
 {
+    ++m_contentVersion;
     if (geometryChanged && m_autoFit && m_drag.kind == DragKind::None && width() > 0)
         fitToContents();
     scheduleRender();
@@ -369,6 +372,7 @@ void AttractorView::startRender()
                                                 std::max(1, int(std::lround(height() * dpr)))),
                                           dpr);
     m_progress = 0.0;
+    m_requestedVersion = m_contentVersion;
     m_cancelled = false; // a new render replaces the "cancelled" note
     m_renderer->request(r);
 }

@@ -16,6 +16,7 @@
 #include <QTimer>
 #include <QWidget>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -103,6 +104,13 @@ public:
     // vector paths, the attractor as a raster made for the target's framing (the view's own
     // raster when it covers it), or as vector dots when the drawing has few points.
     void renderTo(QPainter *painter, const QRectF &target, Framing framing = Framing::AsShown);
+    // An export that needs its own raster computes it on a worker thread and, while it runs,
+    // calls `progress` on the calling thread every ~50 ms with the fraction done; returning
+    // false cancels it (the export then lacks the attractor and exportCancelled() is true
+    // until the next renderTo). Without a callback the export simply waits.
+    using ExportProgress = std::function<bool(double fraction)>;
+    void setExportProgress(ExportProgress progress) { m_exportProgress = std::move(progress); }
+    bool exportCancelled() const { return m_exportCancelled; }
     // The latest rendered attractor raster and what it shows.
     QImage currentImage() const { return m_image; }
     RenderInfo currentImageInfo() const { return m_imageInfo; }
@@ -238,12 +246,18 @@ private:
 
     QImage m_image;
     RenderInfo m_imageInfo;
+    // Which content (data and settings) the screen raster shows: an export may reuse it only
+    // when it is final and of the current content.
+    std::uint64_t m_contentVersion = 0, m_requestedVersion = 0, m_imageVersion = 0;
     QString m_error;
     double m_progress = 1.0;
     bool m_busy = false;
     QElapsedTimer m_busySince;
     bool m_cancelled = false;      // the last render was cancelled (until the next one starts)
     double m_cancelledAt = 0.0;    // its progress then
+
+    ExportProgress m_exportProgress;
+    mutable bool m_exportCancelled = false;
 
     Drag m_drag;
     int m_hoverControl = -1, m_hoverStart = -1;

@@ -10,7 +10,10 @@
 #include <QPainterPath>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 namespace awb {
 
@@ -28,6 +31,7 @@ void AttractorView::paintEvent(QPaintEvent *)
 
 void AttractorView::renderTo(QPainter *painter, const QRectF &target, Framing framing)
 {
+    m_exportCancelled = false;
     if (!painter || target.isEmpty())
         return;
     // The same world rectangle as on screen, fitted into the target with equal scale.
@@ -105,7 +109,8 @@ void AttractorView::paintScene(QPainter &p, const Mapping &m, bool forExport)
         const QRectF needed = QRectF(m.unmap(m.target.bottomLeft()),
                                      m.unmap(m.target.topRight())).normalized();
         const double slack = 1e-6 * std::max(needed.width(), needed.height());
-        const bool covers = !image.isNull() && info.world.isValid()
+        const bool current = info.final && m_imageVersion == m_contentVersion;
+        const bool covers = current && !image.isNull() && info.world.isValid()
                             && info.world.adjusted(-slack, -slack, slack, slack).contains(needed);
         if (forExport && !vector && !covers && m_ifs && m_error.isEmpty())
             image = exportRaster(m, &info);
@@ -171,11 +176,40 @@ QImage AttractorView::exportRaster(const Mapping &m, RenderInfo *info) const
         QRectF(m.unmap(m.target.bottomLeft()), m.unmap(m.target.topRight())).normalized(),
         QSize(std::max(1, int(m.target.width() * k)), std::max(1, int(m.target.height() * k))),
         1.0);
-    try {
-        return AttractorRenderer::renderNow(r, info);
-    } catch (const std::exception &) {
-        return {};
+    if (!m_exportProgress) {
+        try {
+            return AttractorRenderer::renderNow(r, info);
+        } catch (const std::exception &) {
+            return {};
+        }
     }
+    // On a worker thread, so the caller can show progress and offer to cancel.
+    std::atomic<bool> cancel{false}, done{false};
+    std::atomic<double> fraction{0.0};
+    QImage image;
+    RenderInfo local;
+    std::thread worker([&] {
+        IterationControl control;
+        control.cancel = &cancel;
+        control.progress = [&fraction](double f) { fraction.store(f); };
+        try {
+            image = AttractorRenderer::renderNow(r, &local, control);
+        } catch (const std::exception &) {
+            image = QImage();
+        }
+        done.store(true);
+    });
+    while (!done.load()) {
+        if (!cancel.load() && !m_exportProgress(fraction.load())) {
+            cancel.store(true);
+            m_exportCancelled = true;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    worker.join();
+    if (info)
+        *info = local;
+    return image;
 }
 
 QFont AttractorView::sceneFont(double factor, double u) const
