@@ -343,22 +343,26 @@ void ItemController::startAnalysis()
     const quint64 ticket = ++m_analysisTicket;
     m_workerDone = false;
     emit analysisStarted();
-    const QString seriesName = tr("F^k(X0)");
-    m_worker = std::thread([this, d, start, scheme, P, maxDepth, ticket, seriesName] {
+    // The curve the attractor is measured against (a closed-form limit curve, or for a
+    // complex Bézier curve the Takagi image of 004 Conj. 3.7.1, where the distance levels off
+    // at O(y^2) instead of going to 0).
+    const auto exactCurve = exactCurveOf(item, exactSamples);
+    const Mat exact = exactCurve ? exactCurve->points : Mat();
+    const QString seriesName = exactCurve
+                                   ? tr("F^k(X0) to the %1").arg(exactCurve->label)
+                                   : tr("F^k(X0)");
+    m_worker = std::thread([this, d, start, scheme, P, exact, maxDepth, ticket, seriesName] {
         auto result = std::make_shared<AnalysisResult>();
         try {
-            Mat exact;
+            if (exact.rows() > 1)
+                result->exactLength = polygonLength(exact);
             if (scheme && P.rows() > 0) {
-                if (auto c = scheme->exactCurve(P, exactSamples))
-                    exact = *c;
                 for (int k = 0; k <= 8 && !m_cancel; ++k) {
                     const Mat level = k == 0 ? P : subdivide(*scheme, P, k);
                     result->lengths.push_back(polygonLength(level));
                     if (level.rows() > 20000)
                         break;
                 }
-                if (exact.rows() > 1)
-                    result->exactLength = polygonLength(exact);
             }
             AnalysisCharts::DistanceSeries series{seriesName, {}, {}};
             Mat deepest;
