@@ -29,32 +29,38 @@ bool ComplexBezierItem::setT(std::complex<double> t, int gesture)
     return true;
 }
 
-DerivedIfs ComplexBezierItem::computeIfs() const
+DerivedIfs complexBezierDerivedIfs(const Mat &P, std::complex<double> t)
 {
-    const Mat P = toMatrix(m_points);
     requireFinite(P, "control points");
     const CVec z = P.col(0).cast<Complex>() + Complex(0.0, 1.0) * P.col(1).cast<Complex>();
-    const auto c = std::make_shared<const ComplexBezierIfs>(complexBezierIfs(z, m_t));
-    // Outside the discs the maps exist but have no attractor: an error, in the core's words.
-    if (!c->parameter.hyperbolic)
-        throw InputError(c->parameter.message);
+    const ComplexBezierIfs c = complexBezierIfs(z, t);
     DerivedIfs out;
-    out.ifs = c->ifs;
-    const int n = c->degree();
-    for (int i = 0; i < 2; ++i) {
-        out.S.complex.push_back(c->S[size_t(i)]);
-        out.A.complex.push_back(c->M[size_t(i)].topLeftCorner(n, n));
-        out.liftedComplex.push_back(c->M[size_t(i)]);
+    out.ifs = c.ifs;
+    const int n = c.degree();
+    for (std::size_t i = 0; i < 2; ++i) {
+        out.S.complex.push_back(c.S[i]);
+        out.A.complex.push_back(c.M[i].topLeftCorner(n, n));
+        out.liftedComplex.push_back(c.M[i]);
     }
-    out.note = QString::fromStdString(c->parameter.message);
+    out.note = QString::fromStdString(c.parameter.message);
     // A plane point is the first complex coordinate; the other lifted ones are 0 (any start
     // set converges to the same attractor).
-    const int D = int(c->ifs.dim());
+    const int D = int(c.ifs.dim());
     out.toIfsSpace = [D](const Mat &X) {
         Mat Y = Mat::Zero(X.rows(), D);
         Y.leftCols(2) = X;
         return Y;
     };
+    return out;
+}
+
+DerivedIfs ComplexBezierItem::computeIfs() const
+{
+    DerivedIfs out = complexBezierDerivedIfs(toMatrix(m_points), m_t);
+    // Outside the discs the maps exist but have no attractor: an error, in the core's words.
+    const ParameterReport report = classifyParameter(m_t);
+    if (!report.hyperbolic)
+        throw InputError(report.message);
     applyAlgorithm(out.ifs);
     return out;
 }

@@ -10,6 +10,13 @@
 
 namespace awb {
 
+// The derived IFS of the complex Bézier curve with control points P (rows (x, y) = x + iy) split
+// at t, by the core's complexBezierIfs() (004 §3.7): complex S_i = L(t), R(t), the complex
+// lifted M_i and A_i, the realified maps, plane points placed as the first complex coordinate.
+// Shared by this item and a subdivision curve with a complex Bézier parameter. Throws
+// InputError (non-finite or coinciding points).
+DerivedIfs complexBezierDerivedIfs(const Mat &P, std::complex<double> t);
+
 class ComplexBezierItem : public AttractorItem {
     Q_OBJECT
 public:

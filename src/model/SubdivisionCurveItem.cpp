@@ -1,8 +1,10 @@
 #include "model/SubdivisionCurveItem.h"
 
+#include "core/ComplexBezier.h"
 #include "core/Curves.h"
 #include "core/Scheme.h"
 #include "model/Commands.h"
+#include "model/ComplexBezierItem.h"
 #include "model/ProjectIO.h"
 
 #include <Eigen/Dense>
@@ -22,10 +24,6 @@ QString tr(const char *text)
     return QCoreApplication::translate("awb::SubdivisionCurveItem", text);
 }
 
-// The IFS of a Bézier curve split at a complex t (004 §3.7): control point k is the complex
-// number z_k = x_k + i y_k and the maps are those of the real case with complex entries, made
-// real by realify(). The core builds only real subdivision IFS so far; the complex lifting
-// mirrors liftControlPoints() with d = 1 (one complex coordinate).
 DerivedIfs complexBezierIfs(int n, Complex t, const Mat &P)
 {
     requireFinite(P, "control points");
@@ -33,78 +31,7 @@ DerivedIfs complexBezierIfs(int n, Complex t, const Mat &P)
     if (m != n + 1)
         throw InputError(tr("Bézier of degree %1 needs exactly %2 control points, got %3")
                              .arg(n).arg(n + 1).arg(m).toStdString());
-    const CVec z = P.col(0).cast<Complex>() + Complex(0.0, 1.0) * P.col(1).cast<Complex>();
-    DerivedIfs out;
-    out.S.complex = {deCasteljauL(n, t), deCasteljauR(n, t)};
-
-    // Lifted: [z | identity columns | ones] (m x m); singular iff the last two points coincide.
-    CMat L = CMat::Zero(m, m);
-    L.col(0) = z;
-    for (int i = 0; i + 2 < m; ++i)
-        L(i, 1 + i) = 1.0;
-    L.col(m - 1).setOnes();
-    const Eigen::JacobiSVD<CMat> svd(L);
-    const auto &sv = svd.singularValues();
-    if (sv(0) > 0 && sv(sv.size() - 1) / sv(0) > 1e-12) {
-        const CMat inverse = L.fullPivLu().inverse();
-        const int D = m - 1;
-        out.ifs.space = "lifted (complex)";
-        for (const CMat &S : out.S.complex) {
-            const CMat M = inverse * S * L;
-            out.liftedComplex.push_back(M);
-            out.A.complex.push_back(M.topLeftCorner(D, D));
-            out.ifs.maps.push_back(realify(out.A.complex.back(), M.bottomLeftCorner(1, D)));
-        }
-        Mat V = Mat::Zero(2 * D, 2);
-        V(0, 0) = V(1, 1) = 1.0; // (Re, Im) of the first complex coordinate is the point
-        out.ifs.views.push_back({V, RowVec::Zero(2)});
-        out.toIfsSpace = [D](const Mat &X) {
-            Mat Y = Mat::Zero(X.rows(), 2 * D);
-            Y.leftCols(2) = X;
-            return Y;
-        };
-        return out;
-    }
-
-    // Barycentric: lambda |-> lambda S_i on C^m, coordinates (Re lambda, Im lambda) so that
-    // both blocks keep their sums (1 and 0): the core's barycentric blocks.
-    out.note = tr("control points %1 and %2 coincide, so the lifted matrix P of 000 §2 is "
-                  "singular and M_i = P^-1 S_i P is not defined; the attractor is computed in "
-                  "barycentric form").arg(m - 1).arg(m);
-    out.A.unavailable = out.note;
-    Mat Q = Mat::Zero(2 * m, 2 * m); // interleaved (Re, Im) pairs -> (Re block, Im block)
-    for (int k = 0; k < m; ++k) {
-        Q(2 * k, k) = 1.0;
-        Q(2 * k + 1, m + k) = 1.0;
-    }
-    out.ifs.space = "barycentric";
-    for (const CMat &S : out.S.complex) {
-        const AffineMap f = realify(S, Eigen::RowVectorXcd::Zero(m));
-        out.ifs.maps.push_back({Q.transpose() * f.A * Q, RowVec::Zero(2 * m)});
-    }
-    Mat V(2 * m, 2); // Re/Im of sum lambda_k z_k
-    for (int k = 0; k < m; ++k) {
-        V.row(k) << P(k, 0), P(k, 1);
-        V.row(m + k) << -P(k, 1), P(k, 0);
-    }
-    out.ifs.views.push_back({V, RowVec::Zero(2)});
-    out.ifs.barycentricBlocks = {{0, m}, {m, m}};
-    out.toIfsSpace = [z, m](const Mat &X) {
-        // Least-norm lambda with sum lambda_k z_k = w and sum lambda_k = 1.
-        CMat E(2, m);
-        E.row(0) = z.transpose();
-        E.row(1).setOnes();
-        const Eigen::CompleteOrthogonalDecomposition<CMat> cod(E);
-        Mat Y(X.rows(), 2 * m);
-        for (Eigen::Index r = 0; r < X.rows(); ++r) {
-            CVec rhs(2);
-            rhs << Complex(X(r, 0), X(r, 1)), 1.0;
-            const CVec lambda = cod.solve(rhs);
-            Y.row(r) << lambda.real().transpose(), lambda.imag().transpose();
-        }
-        return Y;
-    };
-    return out;
+    return complexBezierDerivedIfs(P, t);
 }
 
 } // namespace

@@ -33,10 +33,10 @@ Mat attractorPoints(const DerivedIfs &d, const StartSet &start, int depth)
 }
 
 // The points B(s) of the complex Bézier curve with control points z for the parameters of the
-// parameter IFS {s -> t s, s -> t + (1 - t) s} at `depth`, started from s = 1.
-Mat complexCurvePoints(const CVec &z, Complex t, int depth)
+// parameter IFS {s -> t s, s -> t + (1 - t) s} at `depth`, started from s = s0.
+Mat complexCurvePoints(const CVec &z, Complex t, int depth, Complex s0 = 1.0)
 {
-    std::vector<Complex> params{1.0};
+    std::vector<Complex> params{s0};
     for (int k = 0; k < depth; ++k) {
         std::vector<Complex> next;
         for (Complex s : params) {
@@ -220,7 +220,7 @@ private slots:
         item = curve("quadratic", s, points);
         const auto q = item->derivedIfs();
         QVERIFY2(q, qPrintable(item->derivedError()));
-        QCOMPARE(q->ifs.space, std::string("lifted (complex)"));
+        QCOMPARE(q->ifs.space, std::string("complex lifted"));
         CVec z(3);
         for (int k = 0; k < 3; ++k)
             z(k) = Complex(points[k].x, points[k].y);
@@ -232,35 +232,36 @@ private slots:
         QVERIFY(hausdorffDistance(pts, expected) < 1e-12);
     }
 
-    void complexBezierBarycentric()
+    void complexBezierCoincidingPoints()
     {
+        // The last two control points coincide: 000's lifting would be singular, so the core
+        // frees another pair of distinct points and the IFS stays lifted (A_i available).
         SchemeSpec s = scheme(K::Bezier);
         s.degree = 2;
         s.t = Complex(0.4, -0.3);
-        const PointList points{{0, 0}, {1, 1}, {1, 1}}; // the last two coincide
+        const PointList points{{0, 0}, {1, 1}, {1, 1}};
         auto item = curve("coincide", s, points);
         const auto d = item->derivedIfs();
         QVERIFY2(d, qPrintable(item->derivedError()));
-        QCOMPARE(d->ifs.space, std::string("barycentric"));
-        QVERIFY(d->note.contains("coincide"));
-        QVERIFY(!d->A.unavailable.isEmpty());
-        QCOMPARE(d->ifs.dim(), 6);
-        // The barycentric coordinates of the last control point: e_3 in the real block.
-        RowVec e3 = RowVec::Zero(6);
-        e3(2) = 1.0;
+        QCOMPARE(d->ifs.space, std::string("complex lifted"));
+        QVERIFY(d->A.unavailable.isEmpty());
+        QCOMPARE(d->A.complex.size(), std::size_t(2));
+        QCOMPARE(d->ifs.dim(), 4);
         CVec z(3);
         for (int k = 0; k < 3; ++k)
             z(k) = Complex(points[k].x, points[k].y);
-        const Mat pts = attractorPoints(*d, StartSet::points(e3), 8);
-        QVERIFY(hausdorffDistance(pts, complexCurvePoints(z, s.t, 8)) < 1e-12);
-        // Plane points map to barycentric coordinates that draw as themselves.
-        Mat plane(2, 2);
-        plane << 0.25, 0.5, -1, 2;
-        const Mat back = project(d->ifs.views[0], d->toIfsSpace(plane));
-        QVERIFY((back - plane).cwiseAbs().maxCoeff() < 1e-12);
-        // Both blocks keep their sums: the effective linear parts contract.
+        // p_0 is in a free row (the farthest pair), so its lifted point is (z_0, 0): the
+        // images of depth 8 are the curve points of the parameters reached from s = 0.
+        Mat first(1, 2);
+        first << points[0].x, points[0].y;
+        const Mat pts = attractorPoints(*d, StartSet::points(d->toIfsSpace(first)), 8);
+        QVERIFY(hausdorffDistance(pts, complexCurvePoints(z, s.t, 8, 0.0)) < 1e-12);
         const IfsCheck check = checkIfs(d->ifs);
         QVERIFY2(check.contractive, check.message.c_str());
+        // All points equal: a single point, no lifting; the item says why.
+        auto point = curve("point", s, {{1, 1}, {1, 1}, {1, 1}});
+        QVERIFY(!point->derivedIfs());
+        QVERIFY2(point->derivedError().contains("coincide"), qPrintable(point->derivedError()));
     }
 
     void eigenvaluePlots()
