@@ -3,6 +3,7 @@
 // reach every view, the figure sheet prints to PDF, SVG export keeps the control polygon as
 // vector paths, and a corrupt file is reported without touching the open project.
 #include "core/Spectrum.h"
+#include "gui/app/FigureSheet.h"
 #include "gui/app/ItemController.h"
 #include "gui/app/MainWindow.h"
 #include "gui/app/Messages.h"
@@ -315,6 +316,9 @@ void TestMainWindow::everyPointSetIsShownAndDraggable()
     QCOMPARE(view->controlPointSet(n0 + 1), std::make_pair(1, 1));
     QCOMPARE(view->controlPointSet(n0 - 1), std::make_pair(0, n0 - 1));
     QCOMPARE(view->controlPointSet(view->controlPointCount()), std::make_pair(-1, -1));
+    // The printed caption counts both sets.
+    const QString caption = FigureSheet(item, view, w.spectrumView()).caption().join(' ');
+    QVERIFY2(caption.contains(QStringLiteral("control points = 3 + 3")), qPrintable(caption));
     const PointList first = item->controlPoints(0), second = item->controlPoints(1);
     const PlanePoint q1 = second[1];
     QCOMPARE(view->controlPointPosition(n0 + 1), QPointF(q1.x, q1.y));

@@ -89,8 +89,12 @@ QStringList FigureSheet::caption() const
         params << QStringLiteral("%1 = %2").arg(p.label, valueText(p, m_item->parameter(p.key)));
     if (const auto *a = qobject_cast<const AttractorItem *>(m_item)) {
         params << tr("maps = %1").arg(a->mapCount());
-        if (a->controlPointSetCount() > 0)
-            params << tr("control points = %1").arg(a->controlPoints(0).size());
+        if (a->controlPointSetCount() > 0) {
+            QStringList counts; // per point set: "4 + 3" for the two curves of a junction
+            for (int k = 0; k < a->controlPointSetCount(); ++k)
+                counts << QString::number(a->controlPoints(k).size());
+            params << tr("control points = %1").arg(counts.join(QStringLiteral(" + ")));
+        }
         params << (a->algorithm().mode == AlgorithmSpec::Mode::Deterministic
                        ? tr("depth = %1").arg(a->algorithm().depth)
                        : tr("samples = %1").arg(a->algorithm().samples));
