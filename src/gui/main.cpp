@@ -5,6 +5,7 @@
 // then quit (--print-pdf, --screenshot; with QT_QPA_PLATFORM=offscreen no display is needed).
 #include "gui/app/ItemController.h"
 #include "gui/app/MainWindow.h"
+#include "gui/app/Messages.h"
 #include "gui/views/AttractorRenderer.h"
 #include "gui/views/AttractorView.h"
 #include "model/Item.h"
@@ -67,8 +68,10 @@ int main(int argc, char *argv[])
     parser.addOptions({itemOption, pdfOption, shotOption, sizeOption});
     parser.process(app);
 
-    awb::MainWindow window;
     const bool batch = parser.isSet(pdfOption) || parser.isSet(shotOption);
+    // Without a user, messages go to standard error (a modal box would wait forever).
+    awb::ConsoleMessages console;
+    awb::MainWindow window(batch ? &console : nullptr);
     if (batch) {
         const QStringList wh = parser.value(sizeOption).split(QLatin1Char('x'));
         const int w = wh.value(0).toInt(), h = wh.value(1).toInt();
@@ -83,7 +86,7 @@ int main(int argc, char *argv[])
     window.show();
     if (!parser.positionalArguments().isEmpty()) {
         if (!window.openFile(parser.positionalArguments().constFirst()) && batch)
-            return 1; // the message box (or stderr under offscreen) said why
+            return 1; // ConsoleMessages wrote the loader's message to stderr
     } else if (!batch) {
         window.offerRecovery();
     }

@@ -81,6 +81,16 @@ void TestBatch::badOptions()
                  &err),
              2);
     QVERIFY2(err.contains("--window-size huge"), qPrintable(err));
+    // A malformed project: the loader's message on stderr and exit 1, no modal box waiting
+    // for a user who is not there (run() gives -1 after its 120 s timeout).
+    const QString bad = out.filePath("bad.awb");
+    QFile f(bad);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(R"({"format": "attractor-workbench", "version": 1, "items": [{"type": "fractal"}]})");
+    f.close();
+    QCOMPARE(run({bad, "--print-pdf", out.filePath("bad.pdf")}, &err), 1);
+    QVERIFY2(err.contains("bad.awb") && err.contains("item 1"), qPrintable(err));
+    QVERIFY(!QFile::exists(out.filePath("bad.pdf")));
 }
 
 QTEST_GUILESS_MAIN(TestBatch)

@@ -22,6 +22,22 @@ public:
                                                  QMessageBox::StandardButton defaultButton);
 };
 
+// Writes errors and notes to standard error and takes every question's default answer: for
+// runs without a user (attractor-workbench --print-pdf / --screenshot), where a modal box would
+// wait forever.
+class ConsoleMessages : public Messages {
+public:
+    void error(QWidget *, const QString &title, const QString &text) override;
+    void information(QWidget *, const QString &title, const QString &text) override;
+    QMessageBox::StandardButton question(QWidget *, const QString &title, const QString &text,
+                                         QMessageBox::StandardButtons,
+                                         QMessageBox::StandardButton defaultButton) override;
+    int errorCount() const { return m_errors; }
+
+private:
+    int m_errors = 0;
+};
+
 // Records everything and answers with `answer`; for tests and scripted runs.
 class RecordingMessages : public Messages {
 public:
