@@ -1,13 +1,9 @@
 #include "model/SubdivisionCurveItem.h"
 
-#include "core/ComplexBezier.h"
-#include "core/Curves.h"
 #include "core/Scheme.h"
 #include "model/Commands.h"
 #include "model/ComplexBezierItem.h"
 #include "model/ProjectIO.h"
-
-#include <Eigen/Dense>
 
 #include <cmath>
 
