@@ -27,12 +27,12 @@ Figures measure(Project &project, AttractorItem *item, int depth, int steps)
     AlgorithmSpec alg = item->algorithm();
     alg.depth = depth;
     item->setAlgorithm(alg);
-    const PlanePoint home = item->controlPoints().at(3);
+    const Point home = item->controlPoints().at(3);
     std::vector<double> ms;
     for (int s = 0; s < steps; ++s) {
         // A drag: small moves of one control point, all in one gesture.
         const int gesture = project.beginGesture();
-        const PlanePoint p{home.x + 0.002 * (s % 17), home.y - 0.0015 * (s % 11)};
+        const Point p{home.x + 0.002 * (s % 17), home.y - 0.0015 * (s % 11)};
         QElapsedTimer t;
         t.start();
         item->moveControlPoint(3, p, gesture);

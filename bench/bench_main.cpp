@@ -1,10 +1,10 @@
 // attractor-bench: throughput of the attractor engine on this machine. Prints figures only;
 // goals are set elsewhere. Run: build/bin/attractor-bench [--quick]
 
-#include "core/Attractor.h"
-#include "core/ControlPointFractal.h"
-#include "core/NormalVectorScheme.h"
-#include "core/Scheme.h"
+#include "core/ifs/Attractor.h"
+#include "core/schemes/ControlPointFractal.h"
+#include "core/schemes/NormalVectorScheme.h"
+#include "core/schemes/Scheme.h"
 
 #include <chrono>
 #include <cstdio>

@@ -5,7 +5,7 @@
 // where the content is vector: polygons, shallow levels; a raster for deep levels). Used by
 // the CLI; QtGui (+ QtSvg for SVG files) only, no widgets.
 
-#include "core/Attractor.h"
+#include "core/ifs/Attractor.h"
 
 #include <QColor>
 #include <QImage>

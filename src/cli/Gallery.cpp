@@ -1,6 +1,6 @@
 #include "cli/Gallery.h"
 
-#include "core/Attractor.h"
+#include "core/ifs/Attractor.h"
 
 namespace awb {
 

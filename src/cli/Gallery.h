@@ -2,7 +2,7 @@
 // The bundled figures the first CLI renders: 000 Figs. 2, 3 and 5 (cubic B-spline from a
 // single point, end-interpolating cubic from a triangle, four-point scheme from a segment).
 
-#include "core/Attractor.h"
+#include "core/ifs/Attractor.h"
 
 #include <QString>
 #include <memory>

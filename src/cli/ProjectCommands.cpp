@@ -1,8 +1,8 @@
 #include "cli/ProjectCommands.h"
 
 #include "cli/FigureRenderer.h"
-#include "core/Geometry.h"
-#include "core/Spectrum.h"
+#include "core/analysis/Geometry.h"
+#include "core/analysis/Spectrum.h"
 #include "model/AttractorItem.h"
 #include "model/ExactCurve.h"
 #include "model/Project.h"

@@ -3,7 +3,7 @@
 #include "cli/FigureRenderer.h"
 #include "cli/Gallery.h"
 #include "cli/ProjectCommands.h"
-#include "core/Spectrum.h"
+#include "core/analysis/Spectrum.h"
 
 #include <QCommandLineParser>
 #include <QDir>

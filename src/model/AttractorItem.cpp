@@ -37,17 +37,17 @@ const PointList &AttractorItem::controlPoints(int set) const
     return validSet(set) ? pointStorage(set) : none;
 }
 
-bool AttractorItem::moveControlPoint(int index, const PlanePoint &to, int gesture, int set)
+bool AttractorItem::moveControlPoint(int index, const Point &to, int gesture, int set)
 {
     return moveControlPoints({{index, to}}, gesture, set);
 }
 
-bool AttractorItem::moveControlPoints(const std::map<int, PlanePoint> &to, int gesture, int set)
+bool AttractorItem::moveControlPoints(const std::map<int, Point> &to, int gesture, int set)
 {
     if (!validSet(set) || to.empty())
         return false;
     const PointList &points = pointStorage(set);
-    std::map<int, PlanePoint> changes;
+    std::map<int, Point> changes;
     for (const auto &[index, p] : to) {
         if (index < 0 || index >= int(points.size()) || !allFinite({p}))
             return false;
@@ -59,10 +59,10 @@ bool AttractorItem::moveControlPoints(const std::map<int, PlanePoint> &to, int g
     return true;
 }
 
-bool AttractorItem::insertControlPoint(int index, const PlanePoint &point, int set)
+bool AttractorItem::insertControlPoint(int index, const Point &point, int set)
 {
-    if (!validSet(set) || index < 0 || index > int(pointStorage(set).size())
-        || !allFinite({point}))
+    if (!validSet(set) || !pointCountEditable(set) || index < 0
+        || index > int(pointStorage(set).size()) || !allFinite({point}))
         return false;
     execute(new InsertControlPointCommand(this, set, index, point));
     return true;
@@ -75,7 +75,7 @@ bool AttractorItem::removeControlPoint(int index, int set)
 
 bool AttractorItem::removeControlPoints(std::vector<int> indices, int set)
 {
-    if (!validSet(set) || indices.empty())
+    if (!validSet(set) || !pointCountEditable(set) || indices.empty())
         return false;
     std::sort(indices.begin(), indices.end());
     indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
@@ -93,7 +93,7 @@ bool AttractorItem::removeControlPoints(std::vector<int> indices, int set)
     return true;
 }
 
-void AttractorItem::storePoint(int set, int index, const PlanePoint &p)
+void AttractorItem::storePoint(int set, int index, const Point &p)
 {
     pointStorage(set)[size_t(index)] = p;
     inputsChanged();
@@ -102,7 +102,7 @@ void AttractorItem::storePoint(int set, int index, const PlanePoint &p)
     emit changed();
 }
 
-void AttractorItem::storeInsertedPoint(int set, int index, const PlanePoint &p)
+void AttractorItem::storeInsertedPoint(int set, int index, const Point &p)
 {
     PointList &points = pointStorage(set);
     points.insert(points.begin() + index, p);
@@ -149,7 +149,7 @@ void AttractorItem::applyAlgorithm(Ifs &ifs) const
 
 StartSet AttractorItem::coreStartSet(const DerivedIfs &derived) const
 {
-    const Mat vertices = derived.toIfsSpace(toMatrix(m_startSet.points));
+    const Mat vertices = derived.toIfsSpace(toMatrix(m_startSet.points, pointDimension()));
     switch (m_startSet.kind) {
     case StartSetSpec::Kind::Point:
     case StartSetSpec::Kind::Points:
@@ -168,7 +168,7 @@ StartSet AttractorItem::coreStartSet(const DerivedIfs &derived) const
 void AttractorItem::write(QJsonObject &json) const
 {
     Item::write(json);
-    json["start_set"] = ProjectIO::startSetToJson(m_startSet);
+    json["start_set"] = ProjectIO::startSetToJson(m_startSet, pointDimension());
     json["algorithm"] = ProjectIO::algorithmToJson(m_algorithm);
 }
 
@@ -176,7 +176,7 @@ void AttractorItem::read(const FieldReader &fields)
 {
     Item::read(fields);
     if (auto s = fields.object("start_set"))
-        m_startSet = ProjectIO::readStartSet(*s);
+        m_startSet = ProjectIO::readStartSet(*s, pointDimension());
     if (auto a = fields.object("algorithm"))
         m_algorithm = ProjectIO::readAlgorithm(*a);
 }

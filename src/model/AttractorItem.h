@@ -4,8 +4,8 @@
 // inputs (start set, algorithm), editable control point sets with their undo commands, and the
 // derived IFS, built lazily from the inputs by the subclass and cached until the next edit.
 
-#include "core/Attractor.h"
-#include "core/Ifs.h"
+#include "core/ifs/Attractor.h"
+#include "core/ifs/Ifs.h"
 #include "model/Item.h"
 
 #include <functional>
@@ -13,6 +13,8 @@
 #include <optional>
 
 namespace awb {
+
+struct SurfaceIfs;
 
 // Matrices an eigenvalue plot can analyse: real, or complex (a complex Bézier parameter).
 struct AnalysisMatrices {
@@ -33,6 +35,12 @@ struct DerivedIfs {
     std::vector<CMat> liftedComplex;
     // The core's full result when the item is a real subdivision scheme (lifting, M_i, ...).
     std::shared_ptr<const SubdivisionIfs> subdivision;
+    // The core's surface IFS when the item is a subdivision surface patch (000 §3).
+    std::shared_ptr<const SurfaceIfs> surface;
+    // Map k of `ifs` is map mapIndex[k] of the analysis matrices S, A (an IFS over a subset of
+    // the maps, 000 Fig. 9); empty: the same index.
+    std::vector<int> mapIndex;
+    int analysisIndex(int k) const { return mapIndex.empty() ? k : mapIndex[size_t(k)]; }
     QString note;       // e.g. why the barycentric form is used
     // Plane points (n x 2) to points of the IFS space (n x D).
     std::function<Mat(const Mat &)> toIfsSpace;
@@ -64,16 +72,21 @@ public:
 
     // The number of maps the inputs ask for, known without building the IFS (-1: unknown).
     virtual int mapCount() const = 0;
+    // Coordinates of control points and start-set vertices: 2 (plane curves) or 3 (surfaces).
+    virtual int pointDimension() const { return 2; }
+    // Whether points may be inserted into or removed from point set `set` (a surface's net is
+    // fixed by its scheme).
+    virtual bool pointCountEditable(int set) const { Q_UNUSED(set); return true; }
 
     // ---- control points: an item has controlPointSetCount() ordered lists of plane points.
     virtual int controlPointSetCount() const { return 0; }
     const PointList &controlPoints(int set = 0) const;
     // Undoable; false for a bad set/index or non-finite coordinates. Moves within one drag
     // share a gesture id (Project::beginGesture) and become one undo step.
-    bool moveControlPoint(int index, const PlanePoint &to, int gesture = 0, int set = 0);
+    bool moveControlPoint(int index, const Point &to, int gesture = 0, int set = 0);
     // Several points at once: one undo step (merging by gesture like a single point).
-    bool moveControlPoints(const std::map<int, PlanePoint> &to, int gesture = 0, int set = 0);
-    bool insertControlPoint(int index, const PlanePoint &point, int set = 0);
+    bool moveControlPoints(const std::map<int, Point> &to, int gesture = 0, int set = 0);
+    bool insertControlPoint(int index, const Point &point, int set = 0);
     bool removeControlPoint(int index, int set = 0);
     // Removes several points as one undo step.
     bool removeControlPoints(std::vector<int> indices, int set = 0);
@@ -112,14 +125,16 @@ protected:
     }
     // Random mode: the probabilities go into the IFS (validated with it).
     void applyAlgorithm(Ifs &ifs) const;
+    // The start set a new item of the kind begins with (not an edit: no undo step).
+    void setInitialStartSet(const StartSetSpec &startSet) { m_startSet = startSet; }
 
 private:
     friend class MoveControlPointsCommand;
     friend class InsertControlPointCommand;
     friend class RemoveControlPointCommand;
     // Raw edits for the commands: store, invalidate, notify.
-    void storePoint(int set, int index, const PlanePoint &p);
-    void storeInsertedPoint(int set, int index, const PlanePoint &p);
+    void storePoint(int set, int index, const Point &p);
+    void storeInsertedPoint(int set, int index, const Point &p);
     void storeRemovedPoint(int set, int index);
     bool validSet(int set) const { return set >= 0 && set < controlPointSetCount(); }
 

@@ -6,7 +6,7 @@
 // automaton (DerivedIfs::iterate); the junction matrices go to DerivedIfs::S so that an
 // eigenvalue plot shows the paper's spectrum, and the spectral verdict goes to the note.
 
-#include "core/Bcifs.h"
+#include "core/ifs/Bcifs.h"
 #include "model/AttractorItem.h"
 
 #include <array>

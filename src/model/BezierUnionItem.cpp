@@ -1,6 +1,6 @@
 #include "model/BezierUnionItem.h"
 
-#include "core/BezierAttractor.h"
+#include "core/ifs/BezierAttractor.h"
 #include "model/Commands.h"
 #include "model/ProjectIO.h"
 

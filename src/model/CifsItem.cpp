@@ -1,6 +1,6 @@
 #include "model/CifsItem.h"
 
-#include "core/Cifs.h"
+#include "core/ifs/Cifs.h"
 #include "model/Commands.h"
 #include "model/ProjectIO.h"
 

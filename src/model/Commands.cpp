@@ -63,7 +63,7 @@ void MoveItemCommand::undo()
 // ---- control points ---------------------------------------------------------------------------
 
 MoveControlPointsCommand::MoveControlPointsCommand(AttractorItem *item, int set,
-                                                   const std::map<int, PlanePoint> &to,
+                                                   const std::map<int, Point> &to,
                                                    int gesture)
     : QUndoCommand(tr("Move %n control points of %1", nullptr, int(to.size()))
                        .arg(item->name())),
@@ -103,7 +103,7 @@ bool MoveControlPointsCommand::mergeWith(const QUndoCommand *other)
 }
 
 InsertControlPointCommand::InsertControlPointCommand(AttractorItem *item, int set, int index,
-                                                     const PlanePoint &point)
+                                                     const Point &point)
     : QUndoCommand(tr("Add a control point to %1").arg(item->name())), m_item(item), m_set(set),
       m_index(index), m_point(point)
 {

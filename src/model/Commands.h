@@ -141,7 +141,7 @@ private:
 class MoveControlPointsCommand : public QUndoCommand {
     Q_DECLARE_TR_FUNCTIONS(awb::MoveControlPointsCommand)
 public:
-    MoveControlPointsCommand(AttractorItem *item, int set, const std::map<int, PlanePoint> &to,
+    MoveControlPointsCommand(AttractorItem *item, int set, const std::map<int, Point> &to,
                              int gesture);
     void redo() override;
     void undo() override;
@@ -151,7 +151,7 @@ public:
 
 private:
     struct Move {
-        PlanePoint from, to;
+        Point from, to;
     };
     void apply(bool forward);
 
@@ -165,14 +165,14 @@ private:
 class InsertControlPointCommand : public QUndoCommand {
     Q_DECLARE_TR_FUNCTIONS(awb::InsertControlPointCommand)
 public:
-    InsertControlPointCommand(AttractorItem *item, int set, int index, const PlanePoint &point);
+    InsertControlPointCommand(AttractorItem *item, int set, int index, const Point &point);
     void redo() override;
     void undo() override;
 
 private:
     AttractorItem *m_item;
     int m_set, m_index;
-    PlanePoint m_point;
+    Point m_point;
 };
 
 class RemoveControlPointCommand : public QUndoCommand {
@@ -185,7 +185,7 @@ public:
 private:
     AttractorItem *m_item;
     int m_set, m_index;
-    PlanePoint m_point;
+    Point m_point;
 };
 
 // Several edits as one undo step (a multi-point or multi-item edit). The project collects the

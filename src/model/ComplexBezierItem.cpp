@@ -1,6 +1,6 @@
 #include "model/ComplexBezierItem.h"
 
-#include "core/ComplexBezier.h"
+#include "core/schemes/ComplexBezier.h"
 #include "model/Commands.h"
 #include "model/ProjectIO.h"
 

@@ -4,7 +4,7 @@
 // It stores only which item (by name) and which matrices; the spectra are derived from the
 // source's derived IFS and recomputed when the source changes.
 
-#include "core/Spectrum.h"
+#include "core/analysis/Spectrum.h"
 #include "model/Item.h"
 
 namespace awb {

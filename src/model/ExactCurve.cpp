@@ -1,7 +1,7 @@
 #include "model/ExactCurve.h"
 
-#include "core/ComplexBezier.h"
-#include "core/Scheme.h"
+#include "core/schemes/ComplexBezier.h"
+#include "core/schemes/Scheme.h"
 #include "model/ComplexBezierItem.h"
 #include "model/SubdivisionCurveItem.h"
 

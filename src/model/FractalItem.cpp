@@ -1,6 +1,6 @@
 #include "model/FractalItem.h"
 
-#include "core/ControlPointFractal.h"
+#include "core/schemes/ControlPointFractal.h"
 #include "model/Commands.h"
 #include "model/ProjectIO.h"
 

@@ -8,6 +8,7 @@
 #include "model/FractalItem.h"
 #include "model/NormalVectorItem.h"
 #include "model/SubdivisionCurveItem.h"
+#include "model/SubdivisionSurfaceItem.h"
 
 namespace awb {
 
@@ -22,6 +23,7 @@ ItemRegistry::ItemRegistry()
     add<ComplexBezierItem>();
     add<CifsItem>();
     add<BcifsJunctionItem>();
+    add<SubdivisionSurfaceItem>();
 }
 
 const ItemRegistry &ItemRegistry::instance()

@@ -6,20 +6,27 @@
 
 namespace awb {
 
-Mat toMatrix(const PointList &points)
+Mat toMatrix(const PointList &points, int dim)
 {
-    Mat P(Eigen::Index(points.size()), 2);
-    for (size_t i = 0; i < points.size(); ++i) {
-        P(Eigen::Index(i), 0) = points[i].x;
-        P(Eigen::Index(i), 1) = points[i].y;
-    }
+    Mat P(Eigen::Index(points.size()), dim);
+    for (size_t i = 0; i < points.size(); ++i)
+        for (int k = 0; k < dim; ++k)
+            P(Eigen::Index(i), k) = points[i][k];
     return P;
+}
+
+PointList toPointList(const Mat &P)
+{
+    PointList out(size_t(P.rows()));
+    for (Eigen::Index i = 0; i < P.rows(); ++i)
+        out[size_t(i)] = {P(i, 0), P.cols() > 1 ? P(i, 1) : 0.0, P.cols() > 2 ? P(i, 2) : 0.0};
+    return out;
 }
 
 bool allFinite(const PointList &points)
 {
-    for (const PlanePoint &p : points)
-        if (!std::isfinite(p.x) || !std::isfinite(p.y))
+    for (const Point &p : points)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
             return false;
     return true;
 }

@@ -17,15 +17,20 @@
 
 namespace awb {
 
-struct PlanePoint {
+// A control point or start-set vertex. Items of plane curves use x, y (z stays 0); surface
+// items use all three (AttractorItem::pointDimension()).
+struct Point {
     double x = 0.0;
     double y = 0.0;
-    bool operator==(const PlanePoint &) const = default;
+    double z = 0.0;
+    bool operator==(const Point &) const = default;
+    double operator[](int k) const { return k == 0 ? x : k == 1 ? y : z; }
 };
-using PointList = std::vector<PlanePoint>;
+using PointList = std::vector<Point>;
 
-// The points as the core wants them: n x 2, one point per row.
-Mat toMatrix(const PointList &points);
+// The points as the core wants them: n x dim (2 or 3), one point per row.
+Mat toMatrix(const PointList &points, int dim = 2);
+PointList toPointList(const Mat &P);
 bool allFinite(const PointList &points);
 
 // Why a value cannot be stored: the field inside the value's JSON object ("points",

@@ -1,6 +1,6 @@
 #include "model/NormalVectorItem.h"
 
-#include "core/NormalVectorScheme.h"
+#include "core/schemes/NormalVectorScheme.h"
 #include "model/Commands.h"
 #include "model/ProjectIO.h"
 

@@ -131,7 +131,8 @@ std::vector<double> FieldReader::numbers(const QString &key,
     return out;
 }
 
-PointList FieldReader::points(const QString &key, const std::optional<PointList> &fallback) const
+PointList FieldReader::points(const QString &key, const std::optional<PointList> &fallback,
+                              int dim) const
 {
     const QJsonValue v = value(key);
     if (v.isUndefined() && fallback)
@@ -139,11 +140,12 @@ PointList FieldReader::points(const QString &key, const std::optional<PointList>
     if (v.isUndefined())
         fail(key, tr("missing"));
     if (!v.isArray())
-        fail(key, tr("expected an array of points [x, y]"));
+        fail(key, dim == 3 ? tr("expected an array of points [x, y, z]")
+                           : tr("expected an array of points [x, y]"));
     PointList out;
     const QJsonArray a = v.toArray();
     for (qsizetype i = 0; i < a.size(); ++i)
-        out.push_back(toPoint(a[i], path(key) + QStringLiteral("[%1]").arg(i + 1)));
+        out.push_back(toPoint(a[i], path(key) + QStringLiteral("[%1]").arg(i + 1), dim));
     return out;
 }
 
@@ -219,13 +221,15 @@ double FieldReader::toNumber(const QJsonValue &v, const QString &where)
     return d;
 }
 
-PlanePoint FieldReader::toPoint(const QJsonValue &v, const QString &where)
+Point FieldReader::toPoint(const QJsonValue &v, const QString &where, int dim)
 {
     const QJsonArray a = v.toArray();
-    if (!v.isArray() || a.size() != 2)
-        throw LoadError{where, tr("expected a point [x, y]")};
+    if (!v.isArray() || a.size() != dim)
+        throw LoadError{where, dim == 3 ? tr("expected a point [x, y, z]")
+                                        : tr("expected a point [x, y]")};
     return {toNumber(a[0], where + QStringLiteral("[1]")),
-            toNumber(a[1], where + QStringLiteral("[2]"))};
+            toNumber(a[1], where + QStringLiteral("[2]")),
+            dim == 3 ? toNumber(a[2], where + QStringLiteral("[3]")) : 0.0};
 }
 
 // ---- writing ----------------------------------------------------------------------------------
@@ -422,25 +426,25 @@ std::unique_ptr<Item> ProjectIO::readItem(const QJsonValue &value, const QString
 
 // ---- common values ----------------------------------------------------------------------------
 
-QJsonArray ProjectIO::pointsToJson(const PointList &points)
+QJsonArray ProjectIO::pointsToJson(const PointList &points, int dim)
 {
     QJsonArray out;
-    for (const PlanePoint &p : points)
-        out.append(QJsonArray{p.x, p.y});
+    for (const Point &p : points)
+        out.append(dim == 3 ? QJsonArray{p.x, p.y, p.z} : QJsonArray{p.x, p.y});
     return out;
 }
 
-QJsonObject ProjectIO::startSetToJson(const StartSetSpec &s)
+QJsonObject ProjectIO::startSetToJson(const StartSetSpec &s, int dim)
 {
     return {{"kind", StartSetSpec::kindNames().at(int(s.kind))},
-            {"points", pointsToJson(s.points)}};
+            {"points", pointsToJson(s.points, dim)}};
 }
 
-StartSetSpec ProjectIO::readStartSet(const FieldReader &r)
+StartSetSpec ProjectIO::readStartSet(const FieldReader &r, int dim)
 {
     StartSetSpec s;
     s.kind = StartSetSpec::Kind(r.choice("kind", StartSetSpec::kindNames(), int(s.kind)));
-    s.points = r.points("points", s.points);
+    s.points = r.points("points", s.points, dim);
     r.require(s.check());
     return s;
 }

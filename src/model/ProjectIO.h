@@ -51,7 +51,9 @@ public:
     double number(const QString &key, std::optional<double> fallback = {}) const;
     std::vector<double> numbers(const QString &key,
                                 const std::optional<std::vector<double>> &fallback = {}) const;
-    PointList points(const QString &key, const std::optional<PointList> &fallback = {}) const;
+    // Points of `dim` (2 or 3) coordinates each.
+    PointList points(const QString &key, const std::optional<PointList> &fallback = {},
+                     int dim = 2) const;
     // A list of matrices, each an array of rows (rows of equal length).
     std::vector<Mat> matrices(const QString &key) const;
     // A nested object: nullopt when absent and optional; fails when absent and required.
@@ -61,7 +63,7 @@ public:
 
     // Element-level conversions; `where` is the element's full path.
     static double toNumber(const QJsonValue &v, const QString &where);
-    static PlanePoint toPoint(const QJsonValue &v, const QString &where);
+    static Point toPoint(const QJsonValue &v, const QString &where, int dim = 2);
 
 private:
     QJsonObject m_object;
@@ -104,9 +106,10 @@ public:
                           QString *error);
 
     // ---- the common values, for the items' read()/write()
-    static QJsonArray pointsToJson(const PointList &points);
-    static QJsonObject startSetToJson(const StartSetSpec &s);
-    static StartSetSpec readStartSet(const FieldReader &r);
+    // dim: 2 writes [x, y], 3 writes [x, y, z] (surface items).
+    static QJsonArray pointsToJson(const PointList &points, int dim = 2);
+    static QJsonObject startSetToJson(const StartSetSpec &s, int dim = 2);
+    static StartSetSpec readStartSet(const FieldReader &r, int dim = 2);
     static QJsonObject algorithmToJson(const AlgorithmSpec &a);
     static AlgorithmSpec readAlgorithm(const FieldReader &r);
     static QJsonObject styleToJson(const StyleSpec &s);

@@ -1,6 +1,6 @@
 #include "model/SubdivisionCurveItem.h"
 
-#include "core/Scheme.h"
+#include "core/schemes/Scheme.h"
 #include "model/Commands.h"
 #include "model/ComplexBezierItem.h"
 #include "model/ProjectIO.h"

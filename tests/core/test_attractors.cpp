@@ -1,9 +1,9 @@
 // Attractors of subdivision IFS drawn from any start set (000 §2, Figs. 2-5; 004 §3.6):
 // deterministic and random iteration, unions (000 §2.2), singular control points (NOTES.md).
 
-#include "core/Attractor.h"
-#include "core/Geometry.h"
-#include "core/Spectrum.h"
+#include "core/ifs/Attractor.h"
+#include "core/analysis/Geometry.h"
+#include "core/analysis/Spectrum.h"
 
 #include <QtTest>
 #include <algorithm>

@@ -4,9 +4,9 @@
 // eigenvector e4 - e5, ranges of j and r, G1 through aligned handles), the unreproducible
 // second example of Fig. 16, and the messages for bad input.
 
-#include "core/Bcifs.h"
-#include "core/Curves.h"
-#include "core/Geometry.h"
+#include "core/ifs/Bcifs.h"
+#include "core/schemes/Curves.h"
+#include "core/analysis/Geometry.h"
 
 #include <Eigen/Dense>
 #include <QtTest>

@@ -2,10 +2,10 @@
 // 002 = C. T. John, "All Bézier curves are attractors of iterated function systems" (NYJM 2007),
 // with the block union of 000 §2.2 (Schaefer, Levin, Goldman, SGP 2005).
 
-#include "core/Attractor.h"
-#include "core/BezierAttractor.h"
-#include "core/Curves.h"
-#include "core/Geometry.h"
+#include "core/ifs/Attractor.h"
+#include "core/ifs/BezierAttractor.h"
+#include "core/schemes/Curves.h"
+#include "core/analysis/Geometry.h"
 
 #include <QtTest>
 

@@ -2,9 +2,9 @@
 // classic fern IFS, the fern with one arc redirected into a Sierpinski state (Fig. 4 right,
 // Fig. 5 bottom), cycle contractivity, random iteration and the messages for bad input.
 
-#include "core/Cifs.h"
-#include "core/Geometry.h"
-#include "core/Spectrum.h"
+#include "core/ifs/Cifs.h"
+#include "core/analysis/Geometry.h"
+#include "core/analysis/Spectrum.h"
 
 #include <QtTest>
 

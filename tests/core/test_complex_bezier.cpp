@@ -2,11 +2,11 @@
 // "Fractals and Splines" (diploma thesis, Plzeň 2012), §3.7: eqs. (3.29)-(3.44), Figs. 3.4-3.9,
 // Lemma 3.7.1, Lemma 3.7.2, Theorem 3.7.3 and Conjecture 3.7.1 (Example 3.7.3).
 
-#include "core/Attractor.h"
-#include "core/ComplexBezier.h"
-#include "core/Curves.h"
-#include "core/Geometry.h"
-#include "core/Spectrum.h"
+#include "core/ifs/Attractor.h"
+#include "core/schemes/ComplexBezier.h"
+#include "core/schemes/Curves.h"
+#include "core/analysis/Geometry.h"
+#include "core/analysis/Spectrum.h"
 
 #include <QtTest>
 

@@ -1,10 +1,10 @@
 // Tests of fractals with control points (000 §4): the printed Koch and Sierpinski matrices, the
 // agreement of their subdivision attractors with the classic IFS, dimensions, locality of a
 // control point, and the general recipe in both weight modes.
-#include "core/Attractor.h"
-#include "core/ControlPointFractal.h"
-#include "core/Geometry.h"
-#include "core/Spectrum.h"
+#include "core/ifs/Attractor.h"
+#include "core/schemes/ControlPointFractal.h"
+#include "core/analysis/Geometry.h"
+#include "core/analysis/Spectrum.h"
 
 #include <QtTest>
 #include <cmath>

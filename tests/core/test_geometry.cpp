@@ -1,8 +1,8 @@
 // Measures of point sets: Hausdorff distance (004 eq. (3.11)), box-counting dimension
 // (004 eq. (3.15)), lengths and areas, and exact curve evaluation (004 §1).
 
-#include "core/Curves.h"
-#include "core/Geometry.h"
+#include "core/schemes/Curves.h"
+#include "core/analysis/Geometry.h"
 
 #include <QtTest>
 #include <random>

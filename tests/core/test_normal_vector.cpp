@@ -1,10 +1,10 @@
 // Tests of the normal-vector p-ary scheme of 001: point counts, the presets of §3 against their
 // classic constructions, the analysis of §4 (Theorems 1 and 2), the snowflake area, the
 // equivalent IFS, the sign conventions of NOTES.md and the refusal of bad input.
-#include "core/Attractor.h"
-#include "core/ControlPointFractal.h"
-#include "core/Geometry.h"
-#include "core/NormalVectorScheme.h"
+#include "core/ifs/Attractor.h"
+#include "core/schemes/ControlPointFractal.h"
+#include "core/analysis/Geometry.h"
+#include "core/schemes/NormalVectorScheme.h"
 
 #include <QtTest>
 #include <cmath>

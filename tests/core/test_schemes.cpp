@@ -2,10 +2,10 @@
 // 000 = Schaefer, Levin, Goldman, "Subdivision Schemes and Attractors" (SGP 2005);
 // 004 = Ptáčková, "Fractals and Splines" (thesis, 2012).
 
-#include "core/Geometry.h"
-#include "core/Ifs.h"
-#include "core/Scheme.h"
-#include "core/Spectrum.h"
+#include "core/analysis/Geometry.h"
+#include "core/ifs/Ifs.h"
+#include "core/schemes/Scheme.h"
+#include "core/analysis/Spectrum.h"
 
 #include <QtTest>
 

@@ -4,8 +4,8 @@
 
 #include "gui/views/AnalysisCharts.h"
 
-#include "core/Attractor.h"
-#include "core/Geometry.h"
+#include "core/ifs/Attractor.h"
+#include "core/analysis/Geometry.h"
 
 #include <QChart>
 #include <QLineSeries>

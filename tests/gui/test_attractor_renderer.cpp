@@ -5,7 +5,7 @@
 
 #include "gui/views/AttractorRenderer.h"
 
-#include "core/Geometry.h"
+#include "core/analysis/Geometry.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>

@@ -2,7 +2,7 @@
 // point is one undo step that undo reverts pixel for pixel, properties edits are undoable and
 // reach every view, the figure sheet prints to PDF, SVG export keeps the control polygon as
 // vector paths, and a corrupt file is reported without touching the open project.
-#include "core/Spectrum.h"
+#include "core/analysis/Spectrum.h"
 #include "gui/app/FigureSheet.h"
 #include "gui/app/ItemController.h"
 #include "gui/app/MainWindow.h"
@@ -320,7 +320,7 @@ void TestMainWindow::everyPointSetIsShownAndDraggable()
     const QString caption = FigureSheet(item, view, w.spectrumView()).caption().join(' ');
     QVERIFY2(caption.contains(QStringLiteral("control points = 3 + 3")), qPrintable(caption));
     const PointList first = item->controlPoints(0), second = item->controlPoints(1);
-    const PlanePoint q1 = second[1];
+    const Point q1 = second[1];
     QCOMPARE(view->controlPointPosition(n0 + 1), QPointF(q1.x, q1.y));
     // Every handle lies inside the fitted view.
     for (int i = 0; i < view->controlPointCount(); ++i)
@@ -762,7 +762,7 @@ void TestMainWindow::unsavedChangesPrompt()
     messages.answer = QMessageBox::Cancel;
     w.action(QStringLiteral("actionNew"))->trigger();
     QCOMPARE(messages.questions.size(), 1);
-    QCOMPARE(item->controlPoints(0)[0], (PlanePoint{0.5, 0.5}));  // cancelled: still there
+    QCOMPARE(item->controlPoints(0)[0], (Point{0.5, 0.5}));  // cancelled: still there
     messages.answer = QMessageBox::Discard;
     w.action(QStringLiteral("actionNew"))->trigger();
     QCOMPARE(messages.questions.size(), 2);

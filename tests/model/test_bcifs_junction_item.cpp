@@ -4,8 +4,8 @@
 
 #include "ItemKindTests.h"
 
-#include "core/Bcifs.h"
-#include "core/Spectrum.h"
+#include "core/ifs/Bcifs.h"
+#include "core/analysis/Spectrum.h"
 #include "model/BcifsJunctionItem.h"
 
 using namespace awb;
@@ -79,14 +79,14 @@ void TestBcifsJunctionItem::issueShapesLoadExactly()
     QCOMPARE(cq->spec().free.d, 0.289);
     QCOMPARE(cq->spec().free.n, 0.12);
     QCOMPARE(cq->controlPointSetCount(), 2);
-    QCOMPARE(cq->controlPoints(0)[2], (PlanePoint{3, 2.5}));
-    QCOMPARE(cq->controlPoints(1)[2], (PlanePoint{10, 1.5}));
+    QCOMPARE(cq->controlPoints(0)[2], (Point{3, 2.5}));
+    QCOMPARE(cq->controlPoints(1)[2], (Point{10, 1.5}));
     BcifsJunctionItem *refined = junction(p, "Refined");
     QCOMPARE(refined->spec().variant, JunctionSpec::Variant::Refined);
     QCOMPARE(refined->spec().refined.j, 0.8);
     QCOMPARE(refined->spec().refined.r, 0.4);
     QCOMPARE(refined->controlPointSetCount(), 3);
-    QCOMPARE(refined->controlPoints(2)[1], (PlanePoint{5.5, 0.75}));
+    QCOMPARE(refined->controlPoints(2)[1], (Point{5.5, 0.75}));
     for (BcifsJunctionItem *j : {cq, refined}) {
         QVERIFY2(j->derivedIfs(), qPrintable(j->derivedError()));
         QVERIFY(j->derivedIfs()->iterate);

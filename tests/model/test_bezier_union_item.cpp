@@ -3,7 +3,7 @@
 
 #include "ItemKindTests.h"
 
-#include "core/BezierAttractor.h"
+#include "core/ifs/BezierAttractor.h"
 #include "model/BezierUnionItem.h"
 
 using namespace awb;
@@ -155,8 +155,8 @@ void TestBezierUnionItem::pointSetsAreCurves()
     BezierUnionItem *item = unionItem(p, "Block");
     test::roundTrip(
         p, [&] { QVERIFY(item->moveControlPoint(3, {3, 0.5}, 0, 1)); },
-        [&] { QCOMPARE(item->controlPoints(1)[3], (PlanePoint{3, 0.5})); },
-        [&] { QCOMPARE(item->controlPoints(1)[3], (PlanePoint{3, 0})); });
+        [&] { QCOMPARE(item->controlPoints(1)[3], (Point{3, 0.5})); },
+        [&] { QCOMPARE(item->controlPoints(1)[3], (Point{3, 0})); });
     QVERIFY(!item->moveControlPoint(0, {1, 1}, 0, 2)); // no third curve
 }
 

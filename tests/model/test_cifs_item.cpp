@@ -4,7 +4,7 @@
 
 #include "ItemKindTests.h"
 
-#include "core/Cifs.h"
+#include "core/ifs/Cifs.h"
 #include "model/CifsItem.h"
 
 using namespace awb;
@@ -58,7 +58,7 @@ void TestCifsItem::issueShapesLoadExactly()
     CifsItem *gasket = cifsItem(p, "Gasket");
     QCOMPARE(gasket->spec().redirected, 1);
     QCOMPARE(gasket->spec().state, QString("Sierpinski"));
-    QCOMPARE(gasket->controlPoints()[2], (PlanePoint{0, 8}));
+    QCOMPARE(gasket->controlPoints()[2], (Point{0, 8}));
     for (CifsItem *c : {fern, gasket}) {
         QVERIFY2(c->derivedIfs(), qPrintable(c->derivedError()));
         QVERIFY(c->derivedIfs()->iterate);

@@ -4,7 +4,7 @@
 
 #include "ItemKindTests.h"
 
-#include "core/ComplexBezier.h"
+#include "core/schemes/ComplexBezier.h"
 #include "model/ComplexBezierItem.h"
 
 using namespace awb;
@@ -44,7 +44,7 @@ void TestComplexBezierItem::issueShapesLoadExactly()
     QCOMPARE(item(p, "Lévy")->t(), std::complex<double>(0.5, 0.5));
     QVERIFY(item(p, "Lévy")->controlPoints() == (PointList{{0, 0}, {1, 0}}));
     QCOMPARE(item(p, "Takagi-like")->t(), std::complex<double>(0.5, 0.01));
-    QCOMPARE(item(p, "Takagi-like")->controlPoints()[1], (PlanePoint{0.5, 2}));
+    QCOMPARE(item(p, "Takagi-like")->controlPoints()[1], (Point{0.5, 2}));
     QCOMPARE(item(p, "Lévy")->mapCount(), 2);
 }
 

@@ -4,10 +4,10 @@
 
 #include "TestProjects.h"
 
-#include "core/Attractor.h"
-#include "core/Curves.h"
-#include "core/Geometry.h"
-#include "core/Scheme.h"
+#include "core/ifs/Attractor.h"
+#include "core/schemes/Curves.h"
+#include "core/analysis/Geometry.h"
+#include "core/schemes/Scheme.h"
 
 #include <QSignalSpy>
 #include <QtTest>

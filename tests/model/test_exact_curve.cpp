@@ -5,8 +5,8 @@
 
 #include "ItemKindTests.h"
 
-#include "core/ComplexBezier.h"
-#include "core/Geometry.h"
+#include "core/schemes/ComplexBezier.h"
+#include "core/analysis/Geometry.h"
 #include "model/ExactCurve.h"
 
 using namespace awb;

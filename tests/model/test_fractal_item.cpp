@@ -3,7 +3,7 @@
 
 #include "ItemKindTests.h"
 
-#include "core/ControlPointFractal.h"
+#include "core/schemes/ControlPointFractal.h"
 #include "model/FractalItem.h"
 
 using namespace awb;
@@ -62,11 +62,11 @@ void TestFractalItem::issueShapesLoadExactly()
     QVERIFY(koch);
     QCOMPARE(koch->fractal().preset, FractalSpec::Preset::Koch);
     QCOMPARE(koch->controlPoints().size(), size_t(5));
-    QCOMPARE(koch->controlPoints()[2], (PlanePoint{0.5, 0.28867513459481287}));
+    QCOMPARE(koch->controlPoints()[2], (Point{0.5, 0.28867513459481287}));
     QCOMPARE(koch->mapCount(), 4);
     FractalItem *sierpinski = fractal(p, "Sierpinski");
     QCOMPARE(sierpinski->fractal().preset, FractalSpec::Preset::Sierpinski);
-    QCOMPARE(sierpinski->controlPoints()[3], (PlanePoint{0.75, 0.5}));
+    QCOMPARE(sierpinski->controlPoints()[3], (Point{0.75, 0.5}));
     QCOMPARE(sierpinski->mapCount(), 3);
     FractalItem *own = fractal(p, "Own");
     QCOMPARE(own->fractal().preset, FractalSpec::Preset::Custom);

@@ -183,7 +183,7 @@ private slots:
         QSignalSpy moved(m_c, &AttractorItem::controlPointMoved);
         roundTrip(
             *m_project, [&] { QVERIFY(m_c->moveControlPoint(1, {1.5, -2.25})); },
-            [&] { QCOMPARE(m_c->controlPoints()[1], (PlanePoint{1.5, -2.25})); },
+            [&] { QCOMPARE(m_c->controlPoints()[1], (Point{1.5, -2.25})); },
             [&] { QVERIFY(m_c->controlPoints() == original); });
         QCOMPARE(moved.count(), 5);
         QCOMPARE(moved.first().at(1).toInt(), 1);
@@ -197,11 +197,11 @@ private slots:
         for (int k = 1; k <= 50; ++k)
             QVERIFY(m_c->moveControlPoint(3, {4.0 + k * 0.1, 1.0 - k * 0.05}, drag));
         QCOMPARE(m_project->undoStack()->index(), index + 1);
-        QCOMPARE(m_c->controlPoints()[3], (PlanePoint{4.0 + 50 * 0.1, 1.0 - 50 * 0.05}));
+        QCOMPARE(m_c->controlPoints()[3], (Point{4.0 + 50 * 0.1, 1.0 - 50 * 0.05}));
         m_project->undoStack()->undo();
         QVERIFY(m_c->controlPoints() == original);
         m_project->undoStack()->redo();
-        QCOMPARE(m_c->controlPoints()[3], (PlanePoint{4.0 + 50 * 0.1, 1.0 - 50 * 0.05}));
+        QCOMPARE(m_c->controlPoints()[3], (Point{4.0 + 50 * 0.1, 1.0 - 50 * 0.05}));
 
         // A second drag of the same point is a second step; a drag of another point too.
         const int second = m_project->beginGesture();
@@ -211,7 +211,7 @@ private slots:
         QCOMPARE(m_project->undoStack()->index(), index + 3);
         m_project->undoStack()->undo();
         m_project->undoStack()->undo();
-        QCOMPARE(m_c->controlPoints()[3], (PlanePoint{4.0 + 50 * 0.1, 1.0 - 50 * 0.05}));
+        QCOMPARE(m_c->controlPoints()[3], (Point{4.0 + 50 * 0.1, 1.0 - 50 * 0.05}));
     }
 
     void dragBackToTheStartLeavesNoStep()
@@ -238,8 +238,8 @@ private slots:
                     m_c->moveControlPoints({{0, {k * 0.5, 0}}, {4, {5, k * 0.25}}}, drag);
             },
             [&] {
-                QCOMPARE(m_c->controlPoints()[0], (PlanePoint{5, 0}));
-                QCOMPARE(m_c->controlPoints()[4], (PlanePoint{5, 2.5}));
+                QCOMPARE(m_c->controlPoints()[0], (Point{5, 0}));
+                QCOMPARE(m_c->controlPoints()[4], (Point{5, 2.5}));
                 QCOMPARE(m_c->controlPoints()[2], original[2]);
             },
             [&] { QVERIFY(m_c->controlPoints() == original); });
@@ -253,7 +253,7 @@ private slots:
             *m_project, [&] { QVERIFY(m_c->insertControlPoint(2, {-1, -1})); },
             [&] {
                 QCOMPARE(m_c->controlPoints().size(), original.size() + 1);
-                QCOMPARE(m_c->controlPoints()[2], (PlanePoint{-1, -1}));
+                QCOMPARE(m_c->controlPoints()[2], (Point{-1, -1}));
                 QCOMPARE(m_c->controlPoints()[3], original[2]);
             },
             [&] { QVERIFY(m_c->controlPoints() == original); });

@@ -4,7 +4,7 @@
 
 #include "ItemKindTests.h"
 
-#include "core/NormalVectorScheme.h"
+#include "core/schemes/NormalVectorScheme.h"
 #include "model/NormalVectorItem.h"
 
 using namespace awb;
@@ -53,7 +53,7 @@ void TestNormalVectorItem::issueShapesLoadExactly()
     QCOMPARE(nv(p, "Koch")->spec().steps, 5);
     QVERIFY(!nv(p, "Koch")->spec().closed);
     QVERIFY(nv(p, "Snowflake")->spec().closed);
-    QCOMPARE(nv(p, "Snowflake")->controlPoints()[2], (PlanePoint{0.5, 0.8660254037844386}));
+    QCOMPARE(nv(p, "Snowflake")->controlPoints()[2], (Point{0.5, 0.8660254037844386}));
     QVERIFY(!nv(p, "Dragon")->spec().closed); // the default
     const NormalVectorSpec &own = nv(p, "Own")->spec();
     QVERIFY(own.isCustom());

@@ -203,7 +203,7 @@ private slots:
             << project(R"({"type": "teapot", "name": "t"})")
             << "item 1 (\"t\"): field \"type\": unknown item type \"teapot\"; this version "
                "knows subdivision-curve, eigenvalue-plot, fractal, bezier-union, normal-vector, "
-               "complex-bezier, cifs, bcifs-junction";
+               "complex-bezier, cifs, bcifs-junction, subdivision-surface";
         QTest::newRow("missing field")
             << project(R"({"type": "subdivision-curve", "name": "a",
                            "scheme": {"kind": "chaikin"}})")

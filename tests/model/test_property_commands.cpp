@@ -334,7 +334,7 @@ private slots:
         QVERIFY(item.setName("Free"));
         QCOMPARE(item.name(), QString("Free"));
         QVERIFY(item.moveControlPoint(0, {-3, -3}));
-        QCOMPARE(item.controlPoints()[0], (PlanePoint{-3, -3}));
+        QCOMPARE(item.controlPoints()[0], (Point{-3, -3}));
     }
 
 private:

@@ -32,7 +32,7 @@ private:
     double uniform(double a, double b) { return std::uniform_real_distribution<>(a, b)(m_rng); }
     int index(int n) { return n > 0 ? std::uniform_int_distribution<>(0, n - 1)(m_rng) : 0; }
     bool coin(double p = 0.5) { return uniform(0, 1) < p; }
-    PlanePoint point() { return {uniform(-10, 10), uniform(-10, 10)}; }
+    Point point() { return {uniform(-10, 10), uniform(-10, 10)}; }
 
     Item *anyItem()
     {

@@ -1,9 +1,9 @@
 #include "gui/app/ItemController.h"
 
-#include "core/Attractor.h"
-#include "core/Geometry.h"
-#include "core/Scheme.h"
-#include "core/Spectrum.h"
+#include "core/ifs/Attractor.h"
+#include "core/analysis/Geometry.h"
+#include "core/schemes/Scheme.h"
+#include "core/analysis/Spectrum.h"
 #include "gui/views/AnalysisCharts.h"
 #include "gui/views/AttractorView.h"
 #include "gui/views/MatrixView.h"

@@ -58,10 +58,10 @@ QDoubleSpinBox *realSpin(double lo, double hi)
 PointList startPoints(StartSetSpec::Kind kind, const PointList &control)
 {
     PointList c = control.empty() ? PointList{{0, 0}, {1, 0}, {0.5, 1}} : control;
-    const PlanePoint first = c.front(), last = c.back(), middle = c[c.size() / 2];
+    const Point first = c.front(), last = c.back(), middle = c[c.size() / 2];
     switch (kind) {
     case StartSetSpec::Kind::Point: {
-        PlanePoint m;
+        Point m;
         for (const auto &p : c)
             m = {m.x + p.x / double(c.size()), m.y + p.y / double(c.size())};
         return {m};
@@ -503,7 +503,7 @@ void PropertiesWidget::addAttractorEditors()
             return;
         bool ok = false;
         const double v = table->item(r, c)->text().toDouble(&ok);
-        PlanePoint p = item->controlPoints(0)[std::size_t(r)];
+        Point p = item->controlPoints(0)[std::size_t(r)];
         (c == 0 ? p.x : p.y) = v;
         if (!ok || !std::isfinite(v) || !item->moveControlPoint(r, p)) {
             updateValues();

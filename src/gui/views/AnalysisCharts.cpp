@@ -1,6 +1,6 @@
 #include "gui/views/AnalysisCharts.h"
 
-#include "core/Geometry.h"
+#include "core/analysis/Geometry.h"
 #include "gui/views/AttractorRenderer.h"
 #include "gui/views/NumberFormat.h"
 

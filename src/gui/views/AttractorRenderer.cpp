@@ -1,6 +1,6 @@
 #include "gui/views/AttractorRenderer.h"
 
-#include "core/Spectrum.h"
+#include "core/analysis/Spectrum.h"
 
 #include <QElapsedTimer>
 #include <QMetaObject>

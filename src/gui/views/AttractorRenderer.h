@@ -5,7 +5,7 @@
 // control point never queues up stale renders. The core streams images into per-thread
 // RasterSinks (merged at the end): memory is bounded by the raster size, not by the depth.
 
-#include "core/Attractor.h"
+#include "core/ifs/Attractor.h"
 
 #include <QColor>
 #include <QImage>

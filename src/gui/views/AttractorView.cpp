@@ -7,7 +7,7 @@
 
 #include "gui/views/AttractorViewDetail.h"
 
-#include "core/Spectrum.h"
+#include "core/analysis/Spectrum.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 // for tangents at the fixed points). Cheap to update: it follows a live parameter drag.
 // QCustomPlot stays out of this header.
 
-#include "core/Spectrum.h"
+#include "core/analysis/Spectrum.h"
 
 #include <QList>
 #include <QSize>

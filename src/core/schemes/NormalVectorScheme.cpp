@@ -1,7 +1,7 @@
 // The normal-vector p-ary scheme of 001: subdivision, analysis, equivalent IFS and presets.
-#include "core/NormalVectorScheme.h"
+#include "core/schemes/NormalVectorScheme.h"
 
-#include "core/Geometry.h"
+#include "core/analysis/Geometry.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 // any start set, and random iteration (chaos game). Both stream what they make to a sink, so a
 // deep level never needs all N^k images in memory.
 
-#include "core/Ifs.h"
+#include "core/ifs/Ifs.h"
 
 #include <atomic>
 #include <cstdint>

@@ -1,6 +1,6 @@
-#include "core/Bcifs.h"
+#include "core/ifs/Bcifs.h"
 
-#include "core/Scheme.h"
+#include "core/schemes/Scheme.h"
 
 #include <Eigen/Dense>
 #include <algorithm>

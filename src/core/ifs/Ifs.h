@@ -5,7 +5,7 @@
 // Row convention throughout: a map acts on row vectors, x |-> x A + b (x: 1 x D, A: D x D).
 // This is the papers' convention for M_i = P^-1 S_i P = [[A_i, 0], [b_i, 1]] (004 eq. (3.25)).
 
-#include "core/Scheme.h"
+#include "core/schemes/Scheme.h"
 #include "core/Types.h"
 
 namespace awb {
@@ -42,8 +42,11 @@ struct Ifs {
     Mat effectiveLinearPart(int i) const;
 };
 
-// The lifted control-point matrix of 000 §2: [P | identity columns | ones], m x m.
-// Invertible iff the last d+1 control points are affinely independent (NOTES.md).
+// The lifted control-point matrix of 000 §2: [P | identity columns | ones], m x m. The d+1
+// "free" rows carry no identity entry; the lifted matrix is invertible iff the control points
+// of those rows are affinely independent. 000 places the identity columns so that the free rows
+// are the last d+1 (NOTES.md); a surface net takes the rows affineBasisRows() picks, since the
+// last points of a lattice net often lie in one plane.
 struct Lifting {
     Mat lifted;             // m x m
     Mat inverse;            // m x m when invertible
@@ -51,8 +54,14 @@ struct Lifting {
     double reciprocalCondition = 0.0;  // sigma_min / sigma_max of `lifted`
     std::vector<int> culprits;         // 0-based control points that make it singular
     std::string reason;                // empty when invertible
+    std::vector<int> freeRows;         // the d+1 rows without an identity entry
 };
-Lifting liftControlPoints(const Mat &P);
+// freeRows empty: the last d+1 rows (000 §2).
+Lifting liftControlPoints(const Mat &P, const std::vector<int> &freeRows = {});
+// d+1 rows of P (m x d) spanning the largest simplex found greedily: the point farthest from
+// the centroid, then each next point farthest from the affine hull of those chosen (ties: the
+// lowest index). Returns fewer rows when the points span less than d dimensions.
+std::vector<int> affineBasisRows(const Mat &P);
 
 // M_i = P^-1 S_i P with its blocks: A_i ((m-1) x (m-1)) and b_i (1 x (m-1)).
 struct LiftedMap {
@@ -83,7 +92,8 @@ enum class IfsForm { Automatic, Lifted, Barycentric };
 SubdivisionIfs buildSubdivisionIfs(const CurveScheme &scheme, const Mat &P,
                                    IfsForm form = IfsForm::Automatic);
 SubdivisionIfs buildSubdivisionIfs(const std::vector<Mat> &S, int overlap, const Mat &P,
-                                   IfsForm form = IfsForm::Automatic);
+                                   IfsForm form = IfsForm::Automatic,
+                                   const std::vector<int> &freeRows = {});
 
 // Barycentric form: lambda |-> lambda S_i on R^m, drawn as lambda P.
 Ifs barycentricIfs(const std::vector<Mat> &S, const Mat &P);

@@ -7,7 +7,7 @@
 // x |-> x A + b (A: d x d, b: 1 x d). Control points P: m x d, one point per row.
 // S_i: m x m with rows summing to 1, built so that S_i P = f_i(P) (row j of f_i(P) is f_i(P_j)).
 
-#include "core/Ifs.h"
+#include "core/ifs/Ifs.h"
 #include "core/Types.h"
 
 namespace awb {

@@ -15,7 +15,7 @@
 // lambda |-> lambda S_{t_k} ... S_{t_1}; its address is (t_1, .., t_k), address[0] = t_1 being
 // the outermost map, as for awb::iterate().
 
-#include "core/Attractor.h"
+#include "core/ifs/Attractor.h"
 
 namespace awb {
 

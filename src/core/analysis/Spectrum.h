@@ -3,7 +3,7 @@
 // eigenvalue and what it says about the curve (003 §4, 004 §2.1), contractivity (004 Thm 3.5.1)
 // and fixed points x* = b (I - A)^-1 (004 eq. (3.21), row convention).
 
-#include "core/Ifs.h"
+#include "core/ifs/Ifs.h"
 
 #include <optional>
 

@@ -1,4 +1,4 @@
-#include "core/Attractor.h"
+#include "core/ifs/Attractor.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
-#include "core/ComplexBezier.h"
+#include "core/schemes/ComplexBezier.h"
 
-#include "core/Attractor.h"
-#include "core/Curves.h"
-#include "core/Geometry.h"
+#include "core/ifs/Attractor.h"
+#include "core/schemes/Curves.h"
+#include "core/analysis/Geometry.h"
 
 #include <Eigen/Dense>
 #include <cmath>

@@ -1,6 +1,6 @@
-#include "core/Cifs.h"
+#include "core/ifs/Cifs.h"
 
-#include "core/Spectrum.h"
+#include "core/analysis/Spectrum.h"
 
 #include <Eigen/Dense>
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include "core/Scheme.h"
+#include "core/schemes/Scheme.h"
 
 #include <cmath>
 #include <sstream>

@@ -20,7 +20,7 @@
 // would need p^2 maps), and the approximating curve (α_0 ≠ 0) makes an edge across each old
 // vertex that is no image of the unit edge.
 
-#include "core/Ifs.h"
+#include "core/ifs/Ifs.h"
 #include "core/Types.h"
 
 #include <optional>

@@ -12,8 +12,8 @@
 // paper's equations read as written (T^l ∂^l_1 = T^i ∂^i_0). The core's row-convention
 // matrix is S = T^T; toCifs() converts.
 
-#include "core/Cifs.h"
-#include "core/Spectrum.h"
+#include "core/ifs/Cifs.h"
+#include "core/analysis/Spectrum.h"
 
 namespace awb {
 

@@ -29,8 +29,8 @@
 // collinear that lifting is singular and buildSubdivisionIfs falls back to barycentric
 // coordinates (R^m, drawn as λ P).
 
-#include "core/Ifs.h"
-#include "core/Spectrum.h"
+#include "core/ifs/Ifs.h"
+#include "core/analysis/Spectrum.h"
 
 #include <array>
 

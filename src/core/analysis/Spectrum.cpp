@@ -1,4 +1,4 @@
-#include "core/Spectrum.h"
+#include "core/analysis/Spectrum.h"
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>

@@ -1,4 +1,4 @@
-#include "core/Curves.h"
+#include "core/schemes/Curves.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "core/Geometry.h"
+#include "core/analysis/Geometry.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,7 @@
-#include "core/Ifs.h"
+#include "core/ifs/Ifs.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <sstream>
 
 namespace awb {
@@ -69,7 +70,7 @@ Mat Ifs::effectiveLinearPart(int i) const
     return T * A * Tpinv;
 }
 
-Lifting liftControlPoints(const Mat &P)
+Lifting liftControlPoints(const Mat &P, const std::vector<int> &freeRowsIn)
 {
     const int m = int(P.rows()), d = int(P.cols());
     Lifting L;
@@ -81,10 +82,21 @@ Lifting liftControlPoints(const Mat &P)
             L.culprits.push_back(i);
         return L;
     }
+    std::vector<int> freeRows = freeRowsIn;
+    if (freeRows.empty())
+        for (int i = m - d - 1; i < m; ++i)
+            freeRows.push_back(i);
+    std::sort(freeRows.begin(), freeRows.end());
+    if (int(freeRows.size()) != d + 1 || freeRows.front() < 0 || freeRows.back() >= m
+        || std::adjacent_find(freeRows.begin(), freeRows.end()) != freeRows.end())
+        throw InputError("the lifting needs " + std::to_string(d + 1)
+                         + " distinct free rows of the control points");
+    L.freeRows = freeRows;
     L.lifted = Mat::Zero(m, m);
     L.lifted.leftCols(d) = P;
-    for (int i = 0; i < m - d - 1; ++i)
-        L.lifted(i, d + i) = 1.0;
+    for (int i = 0, col = d; i < m; ++i)
+        if (!std::binary_search(freeRows.begin(), freeRows.end(), i))
+            L.lifted(i, col++) = 1.0;
     L.lifted.col(m - 1).setOnes();
 
     Eigen::JacobiSVD<Mat> svd(L.lifted);
@@ -95,18 +107,55 @@ Lifting liftControlPoints(const Mat &P)
         L.inverse = L.lifted.partialPivLu().inverse();
         return L;
     }
-    // Only the last d+1 rows carry no identity column: they must be affinely independent.
+    // Only the free rows carry no identity column: they must be affinely independent.
     std::ostringstream os;
     os << "control points ";
-    for (int i = m - d - 1; i < m; ++i) {
-        L.culprits.push_back(i);
-        os << i + 1 << (i + 1 < m - 1 ? ", " : (i + 1 == m - 1 ? " and " : ""));
+    for (size_t k = 0; k < freeRows.size(); ++k) {
+        L.culprits.push_back(freeRows[k]);
+        os << freeRows[k] + 1
+           << (k + 2 < freeRows.size() ? ", " : (k + 2 == freeRows.size() ? " and " : ""));
     }
-    os << (d == 2 ? " are collinear" : " are coplanar")
+    os << (d == 2 ? " are collinear" : d == 3 ? " are coplanar" : " are affinely dependent")
        << ", so the lifted matrix P of 000 §2 is singular and M_i = P^-1 S_i P is not defined;"
           " the attractor is computed in barycentric form";
     L.reason = os.str();
     return L;
+}
+
+std::vector<int> affineBasisRows(const Mat &P)
+{
+    const int m = int(P.rows()), d = int(P.cols());
+    std::vector<int> rows;
+    if (m == 0)
+        return rows;
+    const RowVec centroid = P.colwise().mean();
+    const double scale = std::max(1.0, (P.rowwise() - centroid).rowwise().norm().maxCoeff());
+    // Orthonormal basis of the directions spanned so far (from the first chosen point).
+    std::vector<RowVec> basis;
+    const auto distance = [&](int i) {
+        RowVec v = rows.empty() ? RowVec(P.row(i) - centroid) : RowVec(P.row(i) - P.row(rows[0]));
+        if (!rows.empty())
+            for (const RowVec &e : basis)
+                v -= v.dot(e) * e;
+        return v;
+    };
+    while (int(rows.size()) < d + 1) {
+        int best = -1;
+        double far = -1.0;
+        for (int i = 0; i < m; ++i) {
+            if (std::find(rows.begin(), rows.end(), i) != rows.end())
+                continue;
+            const double n = distance(i).norm();
+            if (n > far * (1 + 1e-12) + 1e-300)
+                far = n, best = i;
+        }
+        if (best < 0 || (!rows.empty() && far <= 1e-9 * scale))
+            break;
+        if (!rows.empty())
+            basis.push_back(distance(best) / far);
+        rows.push_back(best);
+    }
+    return rows;
 }
 
 LiftedMap liftMatrix(const Lifting &lifting, const Mat &S)
@@ -134,7 +183,7 @@ Ifs barycentricIfs(const std::vector<Mat> &S, const Mat &P)
 }
 
 SubdivisionIfs buildSubdivisionIfs(const std::vector<Mat> &S, int overlap, const Mat &P,
-                                   IfsForm form)
+                                   IfsForm form, const std::vector<int> &freeRows)
 {
     requireFinite(P, "control points");
     for (size_t i = 0; i < S.size(); ++i) {
@@ -147,7 +196,7 @@ SubdivisionIfs buildSubdivisionIfs(const std::vector<Mat> &S, int overlap, const
     out.controlPoints = P;
     out.matrices.S = S;
     out.matrices.overlap = overlap;
-    out.lifting = liftControlPoints(P);
+    out.lifting = liftControlPoints(P, freeRows);
     if (out.lifting.invertible && form != IfsForm::Barycentric) {
         const int d = int(P.cols());
         const int D = int(P.rows()) - 1;

@@ -23,7 +23,7 @@
 // The eigenvalues of A_1 are t, t^2, .., t^n and of A_2 (1-t), .., (1-t)^n, so every degree is
 // hyperbolic (eventually contractive) exactly when |t| < 1 and |1 - t| < 1 (004 Fig. 3.3).
 
-#include "core/Ifs.h"
+#include "core/ifs/Ifs.h"
 
 #include <array>
 

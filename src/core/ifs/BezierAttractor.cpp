@@ -1,6 +1,6 @@
-#include "core/BezierAttractor.h"
+#include "core/ifs/BezierAttractor.h"
 
-#include "core/Curves.h"
+#include "core/schemes/Curves.h"
 
 #include <Eigen/Dense>
 #include <cmath>

@@ -6,7 +6,7 @@
 // pieces of the limit curve. Consecutive pieces share `overlap` rows (the last rows of S_j equal
 // the first rows of S_{j+1}); this is the overlapping-rows split of 000 §2.
 
-#include "core/Curves.h"
+#include "core/schemes/Curves.h"
 #include "core/Types.h"
 
 #include <climits>

@@ -1,7 +1,7 @@
 // Fractals with control points (000 §4): the general recipe and the Koch / Sierpinski presets.
-#include "core/ControlPointFractal.h"
+#include "core/schemes/ControlPointFractal.h"
 
-#include "core/Scheme.h"
+#include "core/schemes/Scheme.h"
 
 #include <Eigen/Dense>
 #include <algorithm>

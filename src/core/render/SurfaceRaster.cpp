@@ -1,0 +1,230 @@
+#include "core/render/SurfaceRaster.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace awb {
+
+namespace {
+
+constexpr double degree = M_PI / 180.0;
+constexpr float empty = -std::numeric_limits<float>::infinity();
+
+} // namespace
+
+Eigen::Vector3d OrthoCamera::toward() const
+{
+    const double a = azimuth * degree, e = elevation * degree;
+    return {std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e)};
+}
+
+Eigen::Vector3d OrthoCamera::right() const
+{
+    const double a = azimuth * degree;
+    return {-std::sin(a), std::cos(a), 0.0};
+}
+
+Eigen::Vector3d OrthoCamera::up() const { return toward().cross(right()); }
+
+OrthoCamera OrthoCamera::fit(const Mat &points, double azimuth, double elevation, double aspect,
+                             double margin)
+{
+    OrthoCamera c;
+    c.azimuth = azimuth;
+    c.elevation = elevation;
+    if (points.rows() == 0 || points.cols() != 3)
+        return c;
+    const Eigen::Vector3d lo = points.colwise().minCoeff().transpose();
+    const Eigen::Vector3d hi = points.colwise().maxCoeff().transpose();
+    c.centre = 0.5 * (lo + hi);
+    double maxX = 0.0, maxY = 0.0;
+    const Eigen::Vector3d r = c.right(), u = c.up();
+    for (Eigen::Index k = 0; k < points.rows(); ++k) {
+        const Eigen::Vector3d p = points.row(k).transpose() - c.centre;
+        maxX = std::max(maxX, std::abs(p.dot(r)));
+        maxY = std::max(maxY, std::abs(p.dot(u)));
+    }
+    const double half = std::max({maxY, maxX / std::max(aspect, 1e-6), 1e-9});
+    c.halfHeight = half / std::max(1.0 - 2.0 * margin, 0.1);
+    return c;
+}
+
+SurfaceRaster::SurfaceRaster(int width, int height, const OrthoCamera &camera,
+                             std::vector<Projection> views, std::vector<int> labels,
+                             double pointRadius)
+    : m_w(std::max(width, 1)), m_h(std::max(height, 1)), m_camera(camera),
+      m_views(std::move(views)), m_labels(std::move(labels)), m_radius(pointRadius),
+      m_pixelsPerUnit(0.5 * m_h / camera.halfHeight), m_right(camera.right()),
+      m_up(camera.up()), m_toward(camera.toward()),
+      m_depth(std::size_t(m_w) * m_h, empty), m_label(std::size_t(m_w) * m_h, 0)
+{
+}
+
+Eigen::Vector3d SurfaceRaster::toScreen(const Eigen::Vector3d &p) const
+{
+    const Eigen::Vector3d q = p - m_camera.centre;
+    return {0.5 * m_w + q.dot(m_right) * m_pixelsPerUnit,
+            0.5 * m_h - q.dot(m_up) * m_pixelsPerUnit, q.dot(m_toward)};
+}
+
+void SurfaceRaster::plot(int x, int y, float z, std::uint32_t label)
+{
+    if (x < 0 || y < 0 || x >= m_w || y >= m_h)
+        return;
+    const std::size_t i = index(x, y);
+    if (z > m_depth[i]) {
+        m_depth[i] = z;
+        m_label[i] = label;
+    }
+}
+
+void SurfaceRaster::splat(const Eigen::Vector3d &s, std::uint32_t label)
+{
+    const double r = std::max(m_radius, 0.5);
+    const int x0 = int(std::floor(s.x() - r)), x1 = int(std::ceil(s.x() + r));
+    const int y0 = int(std::floor(s.y() - r)), y1 = int(std::ceil(s.y() + r));
+    if (x1 < 0 || y1 < 0 || x0 >= m_w || y0 >= m_h)
+        return;
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+            const double dx = x + 0.5 - s.x(), dy = y + 0.5 - s.y();
+            if (dx * dx + dy * dy <= r * r)
+                plot(x, y, float(s.z()), label);
+        }
+}
+
+void SurfaceRaster::line(const Eigen::Vector3d &a, const Eigen::Vector3d &b, std::uint32_t label)
+{
+    const double len = std::max(std::abs(b.x() - a.x()), std::abs(b.y() - a.y()));
+    const int steps = int(std::min(len, 4.0 * (m_w + m_h))) + 1;
+    for (int k = 0; k <= steps; ++k) {
+        const Eigen::Vector3d p = a + (b - a) * (double(k) / steps);
+        plot(int(std::floor(p.x())), int(std::floor(p.y())), float(p.z()), label);
+    }
+}
+
+void SurfaceRaster::triangle(const Eigen::Vector3d &a, const Eigen::Vector3d &b,
+                             const Eigen::Vector3d &c, std::uint32_t label)
+{
+    const double area = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+    const int x0 = std::max(0, int(std::floor(std::min({a.x(), b.x(), c.x()}))));
+    const int x1 = std::min(m_w - 1, int(std::ceil(std::max({a.x(), b.x(), c.x()}))));
+    const int y0 = std::max(0, int(std::floor(std::min({a.y(), b.y(), c.y()}))));
+    const int y1 = std::min(m_h - 1, int(std::ceil(std::max({a.y(), b.y(), c.y()}))));
+    if (x0 > x1 || y0 > y1)
+        return;
+    // Smaller than a pixel, or seen edge-on: a splat keeps it visible.
+    if (std::abs(area) < 1.0 || (x1 - x0) * (y1 - y0) <= 1) {
+        splat((a + b + c) / 3.0, label);
+        return;
+    }
+    const auto edge = [](const Eigen::Vector3d &p, const Eigen::Vector3d &q, double x, double y) {
+        return (q.x() - p.x()) * (y - p.y()) - (q.y() - p.y()) * (x - p.x());
+    };
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+            const double px = x + 0.5, py = y + 0.5;
+            const double w0 = edge(b, c, px, py) / area, w1 = edge(c, a, px, py) / area;
+            const double w2 = 1.0 - w0 - w1;
+            if (w0 < -1e-9 || w1 < -1e-9 || w2 < -1e-9)
+                continue;
+            plot(x, y, float(w0 * a.z() + w1 * b.z() + w2 * c.z()), label);
+        }
+}
+
+void SurfaceRaster::consume(const Mat &v, StartSet::Kind kind, const std::uint8_t *a, int n)
+{
+    const int symbol = n > 0 ? a[0] : 0;
+    const std::uint32_t label =
+        1u + std::uint32_t(symbol < int(m_labels.size()) ? m_labels[size_t(symbol)] : symbol);
+    for (const Projection &view : m_views) {
+        const Mat p = project(view, v);
+        if (p.cols() != 3)
+            continue;
+        if (!p.allFinite()) {
+            ++m_nonFinite;
+            continue;
+        }
+        std::vector<Eigen::Vector3d> s(size_t(p.rows()));
+        for (Eigen::Index r = 0; r < p.rows(); ++r)
+            s[size_t(r)] = toScreen(p.row(r).transpose());
+        if (kind == StartSet::Kind::Points || s.size() == 1) {
+            for (const auto &q : s)
+                splat(q, label);
+        } else if (kind == StartSet::Kind::Polyline || s.size() == 2) {
+            for (size_t r = 0; r + 1 < s.size(); ++r)
+                line(s[r], s[r + 1], label);
+        } else {
+            for (size_t r = 1; r + 1 < s.size(); ++r)
+                triangle(s[0], s[r], s[r + 1], label);
+        }
+    }
+}
+
+void SurfaceRaster::merge(const SurfaceRaster &other)
+{
+    if (other.m_w != m_w || other.m_h != m_h)
+        return;
+    for (std::size_t i = 0; i < m_depth.size(); ++i)
+        if (other.m_depth[i] > m_depth[i]) {
+            m_depth[i] = other.m_depth[i];
+            m_label[i] = other.m_label[i];
+        }
+    m_nonFinite += other.m_nonFinite;
+}
+
+std::uint64_t SurfaceRaster::coveredPixels() const
+{
+    return std::uint64_t(std::count_if(m_label.begin(), m_label.end(),
+                                       [](std::uint32_t l) { return l != 0; }));
+}
+
+std::vector<std::uint32_t> SurfaceRaster::shade(const std::vector<std::uint32_t> &palette,
+                                                std::uint32_t background) const
+{
+    std::vector<std::uint32_t> out(m_depth.size(), 0xff000000u | background);
+    // World units per pixel, and the largest depth step still taken as the same surface.
+    const double unit = 1.0 / m_pixelsPerUnit;
+    const double jump = 4.0 * unit;
+    const Eigen::Vector3d light = Eigen::Vector3d(-0.45, 0.6, 1.0).normalized();
+    const auto slope = [&](int x, int y, int dx, int dy) {
+        const float z = m_depth[index(x, y)];
+        double sum = 0.0;
+        int count = 0;
+        for (int s : {-1, 1}) {
+            const int nx = x + s * dx, ny = y + s * dy;
+            if (nx < 0 || ny < 0 || nx >= m_w || ny >= m_h)
+                continue;
+            const float zn = m_depth[index(nx, ny)];
+            if (zn == empty || std::abs(zn - z) > jump)
+                continue;
+            sum += s * (zn - z) / unit;
+            ++count;
+        }
+        return count ? sum / count : 0.0;
+    };
+    for (int y = 0; y < m_h; ++y)
+        for (int x = 0; x < m_w; ++x) {
+            const std::uint32_t l = m_label[index(x, y)];
+            if (!l)
+                continue;
+            // dz/dx along screen x (right); screen y grows downward, so up = -dy.
+            const double gx = slope(x, y, 1, 0), gy = -slope(x, y, 0, 1);
+            const Eigen::Vector3d normal = Eigen::Vector3d(-gx, -gy, 1.0).normalized();
+            const double lambert = std::abs(normal.dot(light));
+            const double shadeFactor = 0.38 + 0.62 * lambert;
+            const std::uint32_t base =
+                palette.empty() ? 0x808080u : palette[(l - 1) % palette.size()];
+            const auto channel = [&](int shift) {
+                const double c = double((base >> shift) & 0xffu) * shadeFactor;
+                return std::uint32_t(std::clamp(c + 0.5, 0.0, 255.0)) << shift;
+            };
+            out[index(x, y)] = 0xff000000u | channel(16) | channel(8) | channel(0);
+        }
+    return out;
+}
+
+} // namespace awb
