@@ -14,5 +14,9 @@ mkdir -p "$out"
 for f in examples/*.awb; do
     ./build/bin/attractor-cli render "$f" --out "$out/$(basename "$f" .awb).png" --size 900x700
 done
+# 000 Fig. 9 holds both sides of the figure: the 4-of-6 fractal (first item) and the surface.
+./build/bin/attractor-cli render examples/000-fig09-box-spline-subset.awb \
+    --item "000 Fig. 9 (left): six maps" --out "$out/000-fig09-box-spline-subset-left.png" \
+    --size 900x700
 ./build/bin/attractor-cli examples --out "$out/strips"
 echo "No display: the gallery was rendered to $out"

@@ -1,11 +1,9 @@
 #include "cli/FigureRenderer.h"
 
-#include <QFileInfo>
-#include <QPageSize>
+#include "render/FigureFile.h"
+
 #include <QPainter>
 #include <QPainterPath>
-#include <QPdfWriter>
-#include <QSvgGenerator>
 #include <cmath>
 #include <thread>
 
@@ -278,53 +276,8 @@ QImage renderFigure(const FigureSpec &spec)
 
 bool writeFigure(const FigureSpec &spec, const QString &fileName, QString *error)
 {
-    const QString suffix = QFileInfo(fileName).suffix().toLower();
-    const QSize size = figureSize(spec);
-    if (suffix == "png") {
-        if (!renderFigure(spec).save(fileName, "PNG")) {
-            *error = QString("cannot write %1").arg(fileName);
-            return false;
-        }
-        return true;
-    }
-    if (suffix == "svg") {
-        QSvgGenerator svg;
-        svg.setFileName(fileName);
-        svg.setSize(size);
-        svg.setViewBox(QRect(QPoint(0, 0), size));
-        svg.setTitle(spec.title);
-        svg.setDescription("Attractor Workbench figure");
-        QPainter p;
-        if (!p.begin(&svg)) {
-            *error = QString("cannot write %1").arg(fileName);
-            return false;
-        }
-        paintFigure(p, spec);
-        return true;
-    }
-    if (suffix == "pdf") {
-        QPdfWriter pdf(fileName);
-        pdf.setTitle(spec.title);
-        pdf.setCreator("Attractor Workbench");
-        pdf.setResolution(300);
-        // A page of the figure's own proportions: width 180 mm (a journal column pair).
-        const double mm = 180.0;
-        pdf.setPageSize(QPageSize(QSizeF(mm, mm * size.height() / size.width()),
-                                  QPageSize::Millimeter));
-        pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
-        QPainter p;
-        if (!p.begin(&pdf)) {
-            *error = QString("cannot write %1").arg(fileName);
-            return false;
-        }
-        // Scale figure pixels to the page: fonts given in pixels scale with it.
-        const double s = pdf.width() / double(size.width());
-        p.scale(s, s);
-        paintFigure(p, spec);
-        return true;
-    }
-    *error = QString("unknown output format '.%1' (use .png, .svg or .pdf)").arg(suffix);
-    return false;
+    return writePaintedFigure(fileName, figureSize(spec), spec.title,
+                              [&](QPainter &p) { paintFigure(p, spec); }, error);
 }
 
 } // namespace awb

@@ -7,6 +7,12 @@
 #include "model/ExactCurve.h"
 #include "model/Project.h"
 #include "model/SubdivisionCurveItem.h"
+#include "model/SubdivisionSurfaceItem.h"
+#include "core/ifs/SurfaceIfs.h"
+#include "render/SurfaceFigure.h"
+
+#include <QFile>
+#include <QSaveFile>
 
 #include <QCommandLineParser>
 #include <QFileInfo>
@@ -99,7 +105,7 @@ int intOption(const QCommandLineParser &parser, const QString &name, int lo, int
 }
 
 // "point:x,y", "segment:x1,y1,x2,y2", "triangle:...", "polygon:...", "points:..."
-StartSet::Kind parseStart(const QString &text, Mat *points)
+StartSet::Kind parseStart(const QString &text, Mat *points, int dim = 2)
 {
     const int colon = text.indexOf(':');
     const QString kind = text.left(colon);
@@ -117,21 +123,37 @@ StartSet::Kind parseStart(const QString &text, Mat *points)
                               "triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:..., got '%1'")
                           .arg(text),
                       2};
-    if (v.size() % 2 || v.isEmpty() || (count.contains(kind) && v.size() != 2 * count[kind])
-        || (kind == "polygon" && v.size() < 6))
-        throw Failure{QString("--start %1 needs %2 coordinates, got %3")
+    if (v.size() % dim || v.isEmpty()
+        || (count.contains(kind) && v.size() != dim * count[kind])
+        || (kind == "polygon" && v.size() < 3 * dim))
+        throw Failure{QString("--start %1 needs %2 coordinates (%3 per point), got %4")
                           .arg(kind)
-                          .arg(count.contains(kind) ? QString::number(2 * count[kind])
-                                                    : QString("an even number of"))
+                          .arg(count.contains(kind) ? QString::number(dim * count[kind])
+                                                    : QString("a multiple of %1").arg(dim))
+                          .arg(dim)
                           .arg(v.size())};
-    *points = Mat(v.size() / 2, 2);
-    for (int i = 0; i < v.size() / 2; ++i)
-        (*points)(i, 0) = v[2 * i], (*points)(i, 1) = v[2 * i + 1];
+    *points = Mat(v.size() / dim, dim);
+    for (int i = 0; i < v.size() / dim; ++i)
+        for (int c = 0; c < dim; ++c)
+            (*points)(i, c) = v[dim * i + c];
     if (kind == "segment")
         return StartSet::Kind::Polyline;
     if (kind == "triangle" || kind == "polygon")
         return StartSet::Kind::Polygon;
     return StartSet::Kind::Points;
+}
+
+// The number of points F^depth(start) makes (over every view); refuses more than maxPoints.
+double requirePointBudget(const DerivedIfs &d, const StartSet &start, int depth, double maxPoints)
+{
+    const double n = imageCount(d.ifs, depth) * double(start.vertices.rows())
+                     * double(d.ifs.views.size());
+    if (n > maxPoints)
+        throw Failure{QString("depth %1 gives %2 points, more than --max-points %3")
+                          .arg(depth)
+                          .arg(n, 0, 'g', 4)
+                          .arg(maxPoints, 0, 'g', 4)};
+    return n;
 }
 
 QJsonArray complexJson(Complex z) { return {z.real(), z.imag()}; }
@@ -169,14 +191,24 @@ QJsonObject analyseItem(const AttractorItem *item)
             return a;
         }();
         m["subdominant_kind"] = QString::fromStdString(toString(sub.kind));
-        if (i < d->ifs.size()) {
-            const Contractivity c = contractivity(d->ifs.effectiveLinearPart(i));
+        // The IFS map that is analysis map i (the IFS may use a subset of the maps).
+        int k = -1;
+        for (int j = 0; j < d->ifs.size(); ++j)
+            if (d->analysisIndex(j) == i)
+                k = j;
+        if (d->surface)
+            m["used"] = k >= 0;
+        if (k >= 0) {
+            const Contractivity c = contractivity(d->ifs.effectiveLinearPart(k));
             m["contractive"] = c.eventuallyContractive;
             m["contraction_norm"] = c.normFactor;
-            const auto fp = fixedPoint(d->ifs.maps[i]);
+            const auto fp = fixedPoint(d->ifs.maps[k]);
             if (fp && !d->ifs.views.empty()) {
                 const Mat p = project(d->ifs.views.front(), Mat(*fp));
-                m["fixed_point"] = QJsonArray{p(0, 0), p(0, 1)};
+                QJsonArray xy;
+                for (Eigen::Index c2 = 0; c2 < p.cols(); ++c2)
+                    xy.append(p(0, c2));
+                m["fixed_point"] = xy;
             } else {
                 m["fixed_point"] = QJsonValue::Null;
             }
@@ -191,6 +223,23 @@ QJsonObject analyseItem(const AttractorItem *item)
     }
     o["maps"] = maps;
     o["subdominant"] = subdominants;
+    if (const auto *s = qobject_cast<const SubdivisionSurfaceItem *>(item)) {
+        o["kind"] = item->type();
+        o["scheme"] = SurfaceSchemeSpec::kindNames().at(int(s->scheme().kind));
+        o["layout"] = s->scheme().layout;
+        o["map_count"] = int(d->S.real.size());
+        QJsonArray used, points, lattice;
+        for (int i : s->mapsUsed())
+            used.append(i);
+        o["maps_used"] = used;
+        for (const Point &q : s->controlPoints())
+            points.append(QJsonArray{q.x, q.y, q.z});
+        o["control_points"] = points;
+        for (const LatticePoint &q : s->lattice())
+            lattice.append(QJsonArray{q.i, q.j});
+        o["lattice"] = lattice;
+        o["lifted_dimension"] = d->ifs.dim();
+    }
     if (d->subdivision) {
         o["lifting_invertible"] = d->subdivision->lifting.invertible;
         if (!d->subdivision->lifting.invertible)
@@ -205,7 +254,15 @@ QJsonObject analyseItem(const AttractorItem *item)
             while (imageCount(d->ifs, depth + 1) * start.vertices.rows() <= 300000)
                 ++depth;
             PointCollector c(d->ifs.views.front());
-            iterate(d->ifs, StartSet::points(start.vertices), depth, c);
+            if (d->surface) {
+                // The images of a surface's overlapping pieces coincide at lattice points:
+                // random iteration gives distinct points for the count.
+                ChaosOptions options;
+                options.samples = 300000;
+                chaosGame(d->ifs, start.vertices.row(0), options, c);
+            } else {
+                iterate(d->ifs, StartSet::points(start.vertices), depth, c);
+            }
             const BoxDimension b = boxCountingDimension(c.points());
             if (b.valid) {
                 o["box_dimension"] = b.dimension;
@@ -249,7 +306,10 @@ int render(const QStringList &args)
                            {"out", "Output file: .png, .svg or .pdf.", "file"},
                            {"size", "Image size in pixels (default 900x700).", "WxH", "900x700"},
                            {"depth", "Deterministic iteration depth (default: the item's).", "k"},
-                           {"samples", "Random iteration with this many points.", "n"}});
+                           {"samples", "Random iteration with this many points.", "n"},
+                           {"view", "Surfaces: the camera's azimuth and elevation in degrees "
+                                    "(orthographic; default: the item's camera).",
+                            "az,el"}});
         parseOrFail(parser, args, 1);
         if (!parser.isSet("out"))
             throw Failure{"--out FILE is required", 2};
@@ -289,6 +349,55 @@ int render(const QStringList &args)
         }
         if (d->ifs.size() > 0 || d->iterate)
             spec.start = item->coreStartSet(*d);
+        if (d->surface) {
+            const auto *surface = qobject_cast<const SubdivisionSurfaceItem *>(item);
+            const QStringList view =
+                parser.isSet("view") ? parser.value("view").split(',')
+                                     : QStringList{QString::number(surface->camera().azimuth, 'g', 17),
+                                                   QString::number(surface->camera().elevation, 'g', 17)};
+            bool okA = false, okE = false;
+            const double az = view.value(0).toDouble(&okA), el = view.value(1).toDouble(&okE);
+            if (view.size() != 2 || !okA || !okE || !std::isfinite(az) || std::abs(el) > 90)
+                throw Failure{QString("--view must be AZ,EL in degrees with |EL| <= 90, got '%1'")
+                                  .arg(parser.value("view"))};
+            SurfaceFigureSpec s;
+            s.ifs = &d->ifs;
+            s.start = spec.start;
+            s.depth = depth;
+            s.random = spec.random;
+            s.samples = spec.samples;
+            s.seed = spec.seed;
+            s.mapColors = d->mapIndex;
+            for (int i = 0; i < 18; ++i)
+                s.palette.push_back(mapColor(i));
+            s.pointRadius = std::max(0.5, 0.5 * item->style().pointSize);
+            s.azimuth = az;
+            s.elevation = el;
+            const LatticeMesh net = surface->refinedMesh(0);
+            s.framePoints = net.points;
+            s.netPoints = net.points;
+            s.netFaces = net.faces;
+            s.width = sm.captured(1).toInt();
+            s.height = sm.captured(2).toInt();
+            const QString what = s.random ? QString("%1 random points").arg(s.samples)
+                                          : QString("F^%1(X0)").arg(depth);
+            QString maps;
+            if (!d->mapIndex.empty()) {
+                QStringList on;
+                for (int i : d->mapIndex)
+                    on << QString::number(i + 1);
+                maps = QString(", maps %1 of %2").arg(on.join(' ')).arg(d->S.count());
+            }
+            s.caption = QString("%1: %2%3 — orthographic view from azimuth %4°, elevation %5°")
+                            .arg(item->name(), what, maps)
+                            .arg(az)
+                            .arg(el);
+            QString error;
+            if (!writeSurfaceFigure(s, parser.value("out"), &error))
+                throw Failure{error};
+            out() << parser.value("out") << "\n";
+            return 0;
+        }
         for (int s = 0; s < item->controlPointSetCount(); ++s)
             if (!item->controlPoints(s).empty())
                 spec.controlPolygons.push_back(toMatrix(item->controlPoints(s)));
@@ -348,13 +457,14 @@ int points(const QStringList &args)
     return guarded([&] {
         QCommandLineParser parser;
         parser.setApplicationDescription(
-            "Print the points of F^k(X0) as CSV: x, y, the map applied last, and the view.");
+            "Print the points of F^k(X0) as CSV: x, y (and z for a surface), the map applied "
+            "last (1-based), and the view.");
         parser.addPositionalArgument("project", "The .awb project file.");
         parser.addOptions({{"item", "The item.", "name"},
                            {"depth", "Iteration depth (default: the item's).", "k"},
                            {"start", "Start set: point:x,y | segment:x1,y1,x2,y2 | "
                                      "triangle:... | polygon:... | points:... (plane coordinates;"
-                                     " default: the item's).",
+                                     " x,y,z for a surface; default: the item's).",
                             "set"},
                            {"csv", "Print CSV (the only format so far)."},
                            {"max-points", "Refuse to print more (default 10000000).", "n",
@@ -373,29 +483,28 @@ int points(const QStringList &args)
         StartSet start = item->coreStartSet(*d);
         if (parser.isSet("start")) {
             Mat pts;
-            const StartSet::Kind kind = parseStart(parser.value("start"), &pts);
+            const StartSet::Kind kind =
+                parseStart(parser.value("start"), &pts, item->pointDimension());
             start = {kind, d->toIfsSpace(pts)};
         }
         const double maxPoints = intOption(parser, "max-points", 1, 2000000000);
-        if (!d->iterate) {
-            const double n = imageCount(d->ifs, depth) * double(start.vertices.rows())
-                             * double(d->ifs.views.size());
-            if (n > maxPoints)
-                throw Failure{QString("depth %1 gives %2 points, more than --max-points %3")
-                                  .arg(depth)
-                                  .arg(n, 0, 'g', 4)
-                                  .arg(maxPoints, 0, 'g', 4)};
-        }
+        if (!d->iterate)
+            requirePointBudget(*d, start, depth, maxPoints);
         QTextStream &o = out();
         o.setRealNumberPrecision(17);
-        o << "x,y,map,view\n";
+        const bool space = !d->ifs.views.empty() && d->ifs.views.front().outDim() == 3;
+        o << (space ? "x,y,z,map,view\n" : "x,y,map,view\n");
         std::uint64_t printed = 0;
         CallbackSink sink([&](const Mat &v, StartSet::Kind, const std::uint8_t *a, int n) {
+            // The map applied last, 1-based, numbered as the item numbers its maps.
+            const int map = n > 0 ? d->analysisIndex(a[0]) + 1 : 0;
             for (size_t k = 0; k < d->ifs.views.size(); ++k) {
                 const Mat p = awb::project(d->ifs.views[k], v);
-                for (Eigen::Index r = 0; r < p.rows(); ++r)
-                    o << p(r, 0) << ',' << p(r, 1) << ',' << (n > 0 ? a[0] + 1 : 0) << ','
-                      << k + 1 << '\n';
+                for (Eigen::Index r = 0; r < p.rows(); ++r) {
+                    for (Eigen::Index c = 0; c < p.cols(); ++c)
+                        o << p(r, c) << ',';
+                    o << map << ',' << k + 1 << '\n';
+                }
                 printed += std::uint64_t(p.rows());
             }
         });
@@ -450,6 +559,141 @@ int rewrite(const QStringList &args)
         if (!project.saveAs(target, &error))
             throw Failure{error};
         out() << target << "\n";
+        return 0;
+    });
+}
+
+} // namespace awb::cli
+
+namespace awb::cli {
+
+namespace {
+
+// Binary little-endian PLY of the attractor's points: x, y, z (float), the map's colour and
+// the 0-based index of the map applied last. Readable by MeshLab, Blender and any PLY parser.
+void writePly(QSaveFile &file, const AttractorItem *item, const DerivedIfs &d,
+              const StartSet &start, int depth, double maxPoints)
+{
+    if (d.iterate)
+        throw Failure{QString("item '%1' is drawn by an automaton: PLY export covers items "
+                              "with one IFS").arg(item->name())};
+    const double n = requirePointBudget(d, start, depth, maxPoints);
+    const QByteArray header = QString("ply\nformat binary_little_endian 1.0\n"
+                                      "comment Attractor Workbench: item %1, F^%2(X0)\n"
+                                      "element vertex %3\n"
+                                      "property float x\nproperty float y\nproperty float z\n"
+                                      "property uchar red\nproperty uchar green\n"
+                                      "property uchar blue\nproperty uchar map\nend_header\n")
+                                  .arg(item->name())
+                                  .arg(depth)
+                                  .arg(qint64(n))
+                                  .toUtf8();
+    file.write(header);
+    QByteArray buffer;
+    std::uint64_t written = 0;
+    CallbackSink sink([&](const Mat &v, StartSet::Kind, const std::uint8_t *a, int len) {
+        const int map = len > 0 ? d.analysisIndex(a[0]) : 0;
+        const QColor c = mapColor(map);
+        for (const Projection &view : d.ifs.views) {
+            const Mat p = awb::project(view, v);
+            for (Eigen::Index r = 0; r < p.rows(); ++r) {
+                float xyz[3] = {float(p(r, 0)), float(p(r, 1)),
+                                p.cols() > 2 ? float(p(r, 2)) : 0.0f};
+                buffer.append(reinterpret_cast<const char *>(xyz), sizeof xyz);
+                const char rgbm[4] = {char(c.red()), char(c.green()), char(c.blue()),
+                                      char(std::uint8_t(map))};
+                buffer.append(rgbm, 4);
+                ++written;
+            }
+        }
+        if (buffer.size() > (1 << 20)) {
+            file.write(buffer);
+            buffer.clear();
+        }
+    });
+    iterate(d.ifs, start, depth, sink);
+    file.write(buffer);
+    if (written != std::uint64_t(n))
+        throw Failure{QString("wrote %1 points, expected %2").arg(written).arg(qint64(n))};
+}
+
+// Wavefront OBJ of the control net after `rounds` rounds of classic subdivision.
+void writeObj(QSaveFile &file, const SubdivisionSurfaceItem *item, int rounds)
+{
+    const LatticeMesh mesh = item->refinedMesh(rounds);
+    QByteArray text;
+    text += QString("# Attractor Workbench: item %1, %2 scheme, net after %3 rounds of "
+                    "subdivision\n# %4 vertices, %5 faces\n")
+                .arg(item->name(), SurfaceSchemeSpec::kindNames().at(int(item->scheme().kind)))
+                .arg(rounds)
+                .arg(mesh.points.rows())
+                .arg(mesh.faces.size())
+                .toUtf8();
+    for (Eigen::Index k = 0; k < mesh.points.rows(); ++k)
+        text += QString("v %1 %2 %3\n")
+                    .arg(mesh.points(k, 0), 0, 'g', 17)
+                    .arg(mesh.points(k, 1), 0, 'g', 17)
+                    .arg(mesh.points(k, 2), 0, 'g', 17)
+                    .toUtf8();
+    for (const auto &face : mesh.faces) {
+        text += "f";
+        for (int i : face)
+            text += " " + QByteArray::number(i + 1);
+        text += "\n";
+    }
+    file.write(text);
+}
+
+} // namespace
+
+int exportData(const QStringList &args)
+{
+    return guarded([&] {
+        QCommandLineParser parser;
+        parser.setApplicationDescription(
+            "Export an item's geometry: the attractor F^k(X0) as a PLY point cloud (with the "
+            "map applied last per point), or a surface item's net after k rounds of classic "
+            "subdivision as an OBJ mesh.");
+        parser.addPositionalArgument("project", "The .awb project file.");
+        parser.addOptions({{"item", "The item.", "name"},
+                           {"format", "ply (attractor points) or obj (subdivided mesh).", "fmt"},
+                           {"out", "Output file.", "file"},
+                           {"depth", "PLY: iteration depth (default: the item's).", "k"},
+                           {"rounds", "OBJ: rounds of subdivision (default: the item's).", "r"},
+                           {"max-points", "PLY: refuse to write more (default 50000000).", "n",
+                            "50000000"}});
+        parseOrFail(parser, args, 1);
+        if (!parser.isSet("item") || !parser.isSet("out") || !parser.isSet("format"))
+            throw Failure{"--item NAME, --format ply|obj and --out FILE are required", 2};
+        const QString format = parser.value("format").toLower();
+        if (format != "ply" && format != "obj")
+            throw Failure{QString("--format must be ply or obj, got '%1'").arg(format), 2};
+        Project project;
+        load(project, parser.positionalArguments().first());
+        AttractorItem *item = attractorItem(project, parser.value("item"));
+        auto d = derived(item);
+        QSaveFile file(parser.value("out"));
+        if (!file.open(QIODevice::WriteOnly))
+            throw Failure{QString("cannot write %1: %2").arg(file.fileName(), file.errorString())};
+        if (format == "ply") {
+            const int depth = parser.isSet("depth") ? intOption(parser, "depth", 0, 64)
+                                                    : item->algorithm().depth;
+            writePly(file, item, *d, item->coreStartSet(*d), depth,
+                     intOption(parser, "max-points", 1, 2000000000));
+        } else {
+            const auto *surface = qobject_cast<const SubdivisionSurfaceItem *>(item);
+            if (!surface)
+                throw Failure{QString("OBJ export writes the subdivided net of a surface item; "
+                                      "'%1' is a %2").arg(item->name(), item->typeName())};
+            const int rounds = parser.isSet("rounds")
+                                   ? intOption(parser, "rounds", 0,
+                                               SubdivisionSurfaceItem::maxMeshRounds)
+                                   : surface->meshRounds();
+            writeObj(file, surface, rounds);
+        }
+        if (!file.commit())
+            throw Failure{QString("cannot write %1: %2").arg(file.fileName(), file.errorString())};
+        out() << parser.value("out") << "\n";
         return 0;
     });
 }

@@ -1,5 +1,5 @@
 #pragma once
-// The project commands of attractor-cli: render, analyse, points, check. Each takes the
+// The project commands of attractor-cli: render, analyse, points, check, rewrite, export. Each takes the
 // command's arguments (argv[0] = "attractor-cli <command>") and returns the exit code:
 // 0 success, 1 bad input (file, item, option values), 2 usage error, 3 the project loads but an
 // item cannot be computed (check).
@@ -13,5 +13,6 @@ int analyse(const QStringList &args);
 int points(const QStringList &args);
 int check(const QStringList &args);
 int rewrite(const QStringList &args);
+int exportData(const QStringList &args);
 
 } // namespace awb::cli

@@ -84,6 +84,7 @@ void usage()
              "  points     the points of F^k(X0) as CSV\n"
              "  check      validate a project file\n"
              "  rewrite    load and save a project in canonical form\n"
+             "  export     attractor points as PLY, a surface's subdivided net as OBJ\n"
              "  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG\n\n"
              "Run 'attractor-cli <command> --help' for the options of a command.\n";
 }
@@ -130,6 +131,8 @@ int main(int argc, char **argv)
             return cli::check(args);
         if (command == "rewrite")
             return cli::rewrite(args);
+        if (command == "export")
+            return cli::exportData(args);
     } catch (const InputError &e) {
         err() << "attractor-cli " << command << ": " << e.what() << "\n";
         return 1;

@@ -223,6 +223,21 @@ bool SubdivisionSurfaceItem::setMeshRounds(int rounds)
     return true;
 }
 
+bool SurfaceCamera::valid() const
+{
+    return std::isfinite(azimuth) && std::isfinite(elevation) && std::abs(elevation) <= 90.0;
+}
+
+bool SubdivisionSurfaceItem::setCamera(const SurfaceCamera &camera, int gesture)
+{
+    if (!camera.valid())
+        return false;
+    applyProperty(&SubdivisionSurfaceItem::m_camera, camera,
+                  &SubdivisionSurfaceItem::cameraChanged, tr("Turn the view of %1").arg(name()),
+                  gesture);
+    return true;
+}
+
 std::shared_ptr<const SurfaceIfs> SubdivisionSurfaceItem::surfaceIfs() const
 {
     const auto d = derivedIfs();
@@ -282,6 +297,7 @@ void SubdivisionSurfaceItem::write(QJsonObject &json) const
         json["maps_used"] = maps;
     }
     json["mesh_rounds"] = m_meshRounds;
+    json["camera"] = QJsonObject{{"azimuth", m_camera.azimuth}, {"elevation", m_camera.elevation}};
 }
 
 void SubdivisionSurfaceItem::read(const FieldReader &fields)
@@ -327,6 +343,14 @@ void SubdivisionSurfaceItem::read(const FieldReader &fields)
         net.mapsUsed.clear();
     m_net = net;
     m_meshRounds = int(fields.integer("mesh_rounds", m_meshRounds, 0, maxMeshRounds));
+    if (const auto c = fields.object("camera")) {
+        SurfaceCamera camera;
+        camera.azimuth = c->number("azimuth", camera.azimuth);
+        camera.elevation = c->number("elevation", camera.elevation);
+        if (!camera.valid())
+            c->fail("elevation", tr("the elevation must be from -90 to 90 degrees"));
+        m_camera = camera;
+    }
 }
 
 // ---- generic parameters -----------------------------------------------------------------------
@@ -351,6 +375,16 @@ QList<ParameterInfo> SubdivisionSurfaceItem::parameters() const
         list << P::make(QStringLiteral("maps.%1").arg(i), tr("Map %1").arg(i + 1), P::Type::Bool)
                     .in(maps)
                     .tip(tr("Leave maps out to draw a fractal lying on the surface (000 Fig. 9)"));
+    const QString view = tr("View");
+    list << P::make("camera.azimuth", tr("Azimuth"), P::Type::Real)
+                .slider(-180, 180)
+                .in(view)
+                .tip(tr("Direction of the orthographic camera around the z axis, in degrees"));
+    list << P::make("camera.elevation", tr("Elevation"), P::Type::Real)
+                .range(-90, 90)
+                .slider(-90, 90)
+                .in(view)
+                .tip(tr("Height of the camera above the xy plane, in degrees"));
     list << P::make("mesh_rounds", tr("Subdivision rounds"), P::Type::Integer)
                 .range(0, maxMeshRounds)
                 .in(group)
@@ -366,6 +400,10 @@ QVariant SubdivisionSurfaceItem::parameter(const QString &key) const
         return int(SurfaceSchemeSpec::layoutNames(m_net.scheme.kind).indexOf(m_net.scheme.layout));
     if (key == "mesh_rounds")
         return m_meshRounds;
+    if (key == "camera.azimuth")
+        return m_camera.azimuth;
+    if (key == "camera.elevation")
+        return m_camera.elevation;
     if (key.startsWith("maps.")) {
         bool ok = false;
         const int i = key.mid(5).toInt(&ok);
@@ -401,6 +439,15 @@ bool SubdivisionSurfaceItem::setParameter(const QString &key, const QVariant &va
         const SurfaceNet net = ok ? SurfaceNet::defaultNet(next) : m_net;
         return commitParameter(key, value, ok, checkNet(net),
                                [&] { return next == m_net.scheme || setNet(net); }, error);
+    }
+    if (key == "camera.azimuth" || key == "camera.elevation") {
+        SurfaceCamera next = m_camera;
+        (key == "camera.azimuth" ? next.azimuth : next.elevation) = value.toDouble(&ok);
+        MaybeProblem problem;
+        if (ok && !next.valid())
+            problem = Problem{key, tr("the elevation must be from -90 to 90 degrees")};
+        return commitParameter(key, value, ok, problem,
+                               [&] { return setCamera(next, gesture); }, error);
     }
     if (key == "mesh_rounds") {
         const int r = value.toInt(&ok);

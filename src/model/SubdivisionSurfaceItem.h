@@ -52,6 +52,16 @@ public:
     static SurfaceNet defaultNet(const SurfaceSchemeSpec &scheme);
 };
 
+// Where the surface is looked at from (a view setting, saved with the item like its style):
+// an orthographic camera on the direction (azimuth, elevation), in degrees (core OrthoCamera).
+struct SurfaceCamera {
+    double azimuth = -60.0;
+    double elevation = 30.0;
+    bool operator==(const SurfaceCamera &) const = default;
+    // Finite, elevation within [-90, 90].
+    bool valid() const;
+};
+
 class SubdivisionSurfaceItem : public AttractorItem {
     Q_OBJECT
 public:
@@ -81,7 +91,12 @@ public:
     bool setMeshRounds(int rounds);
     static constexpr int maxMeshRounds = 6;
 
-    // "scheme.kind", "scheme.layout", "maps.<i>" (bool, one per map), "mesh_rounds".
+    const SurfaceCamera &camera() const { return m_camera; }
+    // Undoable; the steps of one drag (same nonzero gesture) merge.
+    bool setCamera(const SurfaceCamera &camera, int gesture = 0);
+
+    // "scheme.kind", "scheme.layout", "maps.<i>" (bool, one per map), "mesh_rounds",
+    // "camera.azimuth", "camera.elevation".
     QList<ParameterInfo> parameters() const override;
     QVariant parameter(const QString &key) const override;
     bool setParameter(const QString &key, const QVariant &value, int gesture = 0,
@@ -104,6 +119,7 @@ public:
 signals:
     void netChanged();
     void meshRoundsChanged();
+    void cameraChanged();
 
 protected:
     DerivedIfs computeIfs() const override;
@@ -112,6 +128,7 @@ protected:
 private:
     SurfaceNet m_net;
     int m_meshRounds = 3;
+    SurfaceCamera m_camera;
 };
 
 } // namespace awb

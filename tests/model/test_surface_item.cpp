@@ -4,6 +4,7 @@
 
 #include "ItemKindTests.h"
 
+#include "core/analysis/Geometry.h"
 #include "core/ifs/SurfaceIfs.h"
 #include "model/SubdivisionSurfaceItem.h"
 
@@ -54,6 +55,8 @@ private slots:
     void mapsOnAndOff();
     void netCountIsFixed();
     void refinedMesh();
+    void examplesLieOnTheirLimitSurface_data();
+    void examplesLieOnTheirLimitSurface();
 };
 
 void TestSurfaceItem::everySchemeLoadsAndDerives()
@@ -308,6 +311,57 @@ void TestSurfaceItem::refinedMesh()
     // Each round keeps the points whose stencil is complete: 4 -> 5 -> 7 per side.
     QCOMPARE(int(fine.points.rows()), 7 * 7);
     QCOMPARE(int(fine.faces.size()), 36);
+}
+
+void TestSurfaceItem::examplesLieOnTheirLimitSurface_data()
+{
+    // Tolerances relative to the net's size: F^k(X0) of the examples' start triangles (not on
+    // the surface) approaches it by the subdominant eigenvalue per level; the limit samples
+    // (5 rounds of refinement, then limit positions) are 1/32 (√3: 1/243) of a lattice step
+    // apart, which bounds the measured distances from below.
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<double>("onSurface");
+    QTest::addColumn<double>("covers");
+    QTest::newRow("fig 6") << "000-fig06-bicubic-patch.awb" << 0.008 << 0.005;
+    QTest::newRow("fig 7") << "000-fig07-box-spline-hexagon.awb" << 0.008 << 0.005;
+    QTest::newRow("fig 8") << "000-fig08-sqrt3-surface.awb" << 0.008 << 0.005;
+    QTest::newRow("fig 9") << "000-fig09-box-spline-subset.awb" << 0.008 << -1.0;
+}
+
+void TestSurfaceItem::examplesLieOnTheirLimitSurface()
+{
+    QFETCH(QString, file);
+    QFETCH(double, onSurface);
+    QFETCH(double, covers);
+    Project p;
+    QString error;
+    const QString path =
+        qEnvironmentVariable("AWB_SOURCE_DIR", QString(AWB_TEST_SOURCE_DIR)) + "/examples/" + file;
+    QVERIFY2(p.open(path, &error), qPrintable(error));
+    for (Item *item : p.items()) {
+        auto *s = dynamic_cast<SubdivisionSurfaceItem *>(item);
+        QVERIFY(s);
+        const auto d = s->derivedIfs();
+        QVERIFY2(d, qPrintable(s->derivedError()));
+        QVERIFY(!d->ifs.views.empty());
+        const Mat P = toMatrix(s->controlPoints(), 3);
+        const double size = (P.colwise().maxCoeff() - P.colwise().minCoeff()).norm();
+        PointCollector c(d->ifs.views.front());
+        iterate(d->ifs, s->coreStartSet(*d), s->algorithm().depth, c);
+        const LatticeScheme scheme = s->scheme().makeScheme();
+        const int rounds = scheme.dilation() == 3 ? 4 : 5;
+        const Mat L = limitSurfaceSamples(scheme, s->scheme().makeLayout(), s->lattice(), P,
+                                          rounds);
+        const double on = directedDistance(c.points(), L) / size;
+        qInfo("%s: %lld points, max distance to the limit surface %.2e of the net's size",
+              qPrintable(s->name()), qint64(c.points().rows()), on);
+        QVERIFY2(on < onSurface, qPrintable(QString::number(on)));
+        if (covers > 0 && int(s->mapsUsed().size()) == s->net().layoutMapCount()) {
+            const double gap = directedDistance(L, c.points()) / size;
+            qInfo("  largest gap: %.2e of the net's size", gap);
+            QVERIFY2(gap < covers, qPrintable(QString::number(gap)));
+        }
+    }
 }
 
 QTEST_MAIN(TestSurfaceItem)

@@ -116,8 +116,11 @@ void SurfaceRaster::triangle(const Eigen::Vector3d &a, const Eigen::Vector3d &b,
     const int y1 = std::min(m_h - 1, int(std::ceil(std::max({a.y(), b.y(), c.y()}))));
     if (x0 > x1 || y0 > y1)
         return;
-    // Smaller than a pixel, or seen edge-on: a splat keeps it visible.
+    // Smaller than a pixel, or seen edge-on: splats at its corners and centre keep it
+    // visible without holes between neighbouring images.
     if (std::abs(area) < 1.0 || (x1 - x0) * (y1 - y0) <= 1) {
+        for (const Eigen::Vector3d *p : {&a, &b, &c})
+            splat(*p, label);
         splat((a + b + c) / 3.0, label);
         return;
     }
@@ -189,22 +192,29 @@ std::vector<std::uint32_t> SurfaceRaster::shade(const std::vector<std::uint32_t>
     // World units per pixel, and the largest depth step still taken as the same surface.
     const double unit = 1.0 / m_pixelsPerUnit;
     const double jump = 4.0 * unit;
-    const Eigen::Vector3d light = Eigen::Vector3d(-0.45, 0.6, 1.0).normalized();
+    // A key light from the upper left, in front of the surface: slopes facing it are bright.
+    const Eigen::Vector3d light = Eigen::Vector3d(-0.6, 0.7, 0.55).normalized();
+    // Central differences over a few pixels: splats are flat discs, so neighbouring pixels
+    // often share one depth; a wider stencil sees the surface's slope across them.
     const auto slope = [&](int x, int y, int dx, int dy) {
         const float z = m_depth[index(x, y)];
-        double sum = 0.0;
-        int count = 0;
-        for (int s : {-1, 1}) {
-            const int nx = x + s * dx, ny = y + s * dy;
-            if (nx < 0 || ny < 0 || nx >= m_w || ny >= m_h)
-                continue;
-            const float zn = m_depth[index(nx, ny)];
-            if (zn == empty || std::abs(zn - z) > jump)
-                continue;
-            sum += s * (zn - z) / unit;
-            ++count;
+        for (int reach : {4, 2, 1}) {
+            double sum = 0.0;
+            int count = 0;
+            for (int s : {-1, 1}) {
+                const int nx = x + s * reach * dx, ny = y + s * reach * dy;
+                if (nx < 0 || ny < 0 || nx >= m_w || ny >= m_h)
+                    continue;
+                const float zn = m_depth[index(nx, ny)];
+                if (zn == empty || std::abs(zn - z) > jump * reach)
+                    continue;
+                sum += s * (zn - z) / (reach * unit);
+                ++count;
+            }
+            if (count == 2 || (count == 1 && reach == 1))
+                return sum / count;
         }
-        return count ? sum / count : 0.0;
+        return 0.0;
     };
     for (int y = 0; y < m_h; ++y)
         for (int x = 0; x < m_w; ++x) {
@@ -215,7 +225,7 @@ std::vector<std::uint32_t> SurfaceRaster::shade(const std::vector<std::uint32_t>
             const double gx = slope(x, y, 1, 0), gy = -slope(x, y, 0, 1);
             const Eigen::Vector3d normal = Eigen::Vector3d(-gx, -gy, 1.0).normalized();
             const double lambert = std::abs(normal.dot(light));
-            const double shadeFactor = 0.38 + 0.62 * lambert;
+            const double shadeFactor = 0.3 + 0.75 * lambert;
             const std::uint32_t base =
                 palette.empty() ? 0x808080u : palette[(l - 1) % palette.size()];
             const auto channel = [&](int shift) {
