@@ -237,19 +237,21 @@ void paintFigure(QPainter &p, const FigureSpec &spec)
             p.setPen(QPen(QColor(60, 60, 60, 110), 4));
             drawPolyline(p, f, o, false);
         }
-        for (const Mat &m : spec.controlPolygons) {
+        for (size_t c = 0; c < spec.controlPolygons.size(); ++c) {
+            const Mat &m = spec.controlPolygons[c];
             p.setPen(QPen(QColor(40, 150, 60), 1.5, Qt::DashLine));
             p.setBrush(Qt::NoBrush);
-            drawPolyline(p, f, m, false);
+            drawPolyline(p, f, m, c < spec.controlClosed.size() && spec.controlClosed[c]);
             p.setPen(QPen(Qt::black, 1));
             p.setBrush(QColor(40, 150, 60));
             for (Eigen::Index r = 0; r < m.rows(); ++r)
                 p.drawRect(QRectF(f.map(m(r, 0), m(r, 1)) - QPointF(3.5, 3.5), QSizeF(7, 7)));
         }
         p.setBrush(Qt::NoBrush);
-        for (const Mat &m : spec.polygons) {
+        for (size_t c = 0; c < spec.polygons.size(); ++c) {
             p.setPen(QPen(mapColor(0), 1.2));
-            drawPolyline(p, f, m, false);
+            drawPolyline(p, f, spec.polygons[c],
+                         c < spec.polygonsClosed.size() && spec.polygonsClosed[c]);
         }
         const int depth = spec.panels[i].depth;
         if (hasAttractor(spec)) {

@@ -36,8 +36,10 @@ struct FigureSpec {
     std::uint64_t samples = 200000;
     std::uint64_t seed = 1;
     std::vector<Mat> controlPolygons;  // m x 2 each, drawn dashed with square handles
+    std::vector<bool> controlClosed;   // per control polygon: closed (missing entries: open)
     std::vector<Mat> overlays;         // e.g. the exact curve (n x 2), a grey band underneath
     std::vector<Mat> polygons;         // figures that are polygons (normal-vector curves)
+    std::vector<bool> polygonsClosed;  // per polygon: closed (missing entries: open)
     std::vector<FigurePanel> panels;
     int panelWidth = 420;
     int panelHeight = 360;

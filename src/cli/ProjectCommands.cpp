@@ -5,8 +5,12 @@
 #include "core/analysis/Spectrum.h"
 #include "model/AttractorItem.h"
 #include "model/ExactCurve.h"
+#include "model/NumberFormat.h"
 #include "model/Project.h"
+#include "model/NormalVectorItem.h"
 #include "model/SubdivisionCurveItem.h"
+#include "core/schemes/NormalVectorScheme.h"
+#include "core/schemes/Scheme.h"
 #include "model/SubdivisionSurfaceItem.h"
 #include "core/ifs/SurfaceIfs.h"
 #include "render/SurfaceFigure.h"
@@ -120,7 +124,8 @@ StartSet::Kind parseStart(const QString &text, Mat *points, int dim = 2)
     const QMap<QString, int> count = {{"point", 1}, {"segment", 2}, {"triangle", 3}};
     if (colon < 0 || !(count.contains(kind) || kind == "polygon" || kind == "points"))
         throw Failure{QString("--start must be point:x,y | segment:x1,y1,x2,y2 | "
-                              "triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:..., got '%1'")
+                              "triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | "
+                              "lifted:x,y,c1,...;..., got '%1'")
                           .arg(text),
                       2};
     if (v.size() % dim || v.isEmpty()
@@ -158,6 +163,92 @@ double requirePointBudget(const DerivedIfs &d, const StartSet &start, int depth,
 
 QJsonArray complexJson(Complex z) { return {z.real(), z.imag()}; }
 
+// A real matrix as numbers and as exact text ("3/8" where rational): {"values", "exact"}.
+QJsonObject matrixJson(const Mat &m)
+{
+    QJsonArray values, exact;
+    for (Eigen::Index r = 0; r < m.rows(); ++r) {
+        QJsonArray v, e;
+        for (Eigen::Index c = 0; c < m.cols(); ++c) {
+            v.append(m(r, c));
+            e.append(exactText(m(r, c)));
+        }
+        values.append(v);
+        exact.append(e);
+    }
+    return {{"values", values}, {"exact", exact}};
+}
+
+// A complex matrix as [re, im] pairs: {"values"}.
+QJsonObject matrixJson(const CMat &m)
+{
+    QJsonArray values;
+    for (Eigen::Index r = 0; r < m.rows(); ++r) {
+        QJsonArray v;
+        for (Eigen::Index c = 0; c < m.cols(); ++c)
+            v.append(complexJson(m(r, c)));
+        values.append(v);
+    }
+    return {{"values", values}};
+}
+
+QJsonArray eigenvaluesJson(const Spectrum &s)
+{
+    QJsonArray ev;
+    for (const Complex &z : s.values)
+        ev.append(complexJson(z));
+    return ev;
+}
+
+// The map matrices of analysis map i, as the Matrices dock shows them: M_i = P^-1 S_i P with
+// its blocks A_i, b_i for a lifted subdivision IFS (000 §2), the complex M_i of a complex
+// Bézier split, or the IFS map itself (A, b) where there is no S_i.
+void addMapMatrices(QJsonObject &m, const DerivedIfs &d, int i, int k)
+{
+    if (i < int(d.S.real.size()))
+        m["S"] = matrixJson(d.S.real[size_t(i)]);
+    else if (i < int(d.S.complex.size()))
+        m["S"] = matrixJson(d.S.complex[size_t(i)]);
+    if (d.subdivision && d.subdivision->lifting.invertible && i < int(d.S.real.size())) {
+        const LiftedMap l = liftMatrix(d.subdivision->lifting, d.S.real[size_t(i)]);
+        m["M"] = matrixJson(l.M);
+        m["A"] = matrixJson(l.A);
+        m["b"] = matrixJson(Mat(l.b));
+        m["eigenvalues_A"] = eigenvaluesJson(spectrum(l.A));
+    } else if (i < int(d.liftedComplex.size())) {
+        const CMat &M = d.liftedComplex[size_t(i)];
+        const Eigen::Index n = M.rows() - 1;
+        m["M"] = matrixJson(M);
+        m["A"] = matrixJson(CMat(M.topLeftCorner(n, n)));
+        m["b"] = matrixJson(CMat(M.bottomLeftCorner(1, n)));
+        m["eigenvalues_A"] = eigenvaluesJson(spectrum(CMat(M.topLeftCorner(n, n))));
+    } else if (k >= 0) {
+        m["A"] = matrixJson(d.ifs.maps[size_t(k)].A);
+        m["b"] = matrixJson(Mat(d.ifs.maps[size_t(k)].b));
+        m["eigenvalues_A"] = eigenvaluesJson(spectrum(d.ifs.effectiveLinearPart(k)));
+    }
+}
+
+// d_H(F^depth(X0), exact curve) at the item's depth (or the deepest depth under 2e6 points),
+// with the one-sided distance from the attractor points to the curve.
+QJsonValue hausdorffToExact(const AttractorItem *item, const DerivedIfs &d)
+{
+    const auto exact = exactCurveOf(item, 4000);
+    if (!exact || d.iterate || d.ifs.views.empty() || d.ifs.size() == 0)
+        return QJsonValue::Null;
+    const StartSet start = item->coreStartSet(d);
+    int depth = item->algorithm().depth;
+    while (depth > 0 && imageCount(d.ifs, depth) * double(start.vertices.rows()) > 2e6)
+        --depth;
+    PointCollector c(d.ifs.views.front());
+    iterate(d.ifs, StartSet::points(start.vertices), depth, c);
+    const Mat pts = c.points();
+    return QJsonObject{{"depth", depth},
+                       {"value", hausdorffToCurve(pts, exact->points)},
+                       {"one_sided", distanceToPolyline(pts, exact->points)},
+                       {"curve", exact->label}};
+}
+
 QJsonObject analyseItem(const AttractorItem *item)
 {
     QJsonObject o;
@@ -174,16 +265,21 @@ QJsonObject analyseItem(const AttractorItem *item)
     // its fixed point in the plane.
     QJsonArray maps, subdominants;
     double worstSub = -1;
-    const int count = d->S.count();
+    // Items without subdivision matrices (an equivalent IFS of a normal-vector scheme) list
+    // the IFS's maps: "eigenvalues" are then those of the linear parts A_i.
+    const bool hasS = d->S.count() > 0;
+    const int count = hasS ? d->S.count() : d->ifs.size();
     for (int i = 0; i < count; ++i) {
-        const Spectrum s = d->S.isComplex() ? spectrum(d->S.complex[i]) : spectrum(d->S.real[i]);
+        const Spectrum s = !hasS            ? spectrum(d->ifs.effectiveLinearPart(i))
+                           : d->S.isComplex() ? spectrum(d->S.complex[i])
+                                              : spectrum(d->S.real[i]);
         QJsonObject m;
         QJsonArray ev;
         for (const Complex &z : s.values)
             ev.append(complexJson(z));
         m["eigenvalues"] = ev;
         m["spectral_radius"] = s.spectralRadius;
-        const Subdominant sub = subdominant(s);
+        const Subdominant sub = subdominant(s, hasS);
         m["subdominant"] = [&] {
             QJsonArray a;
             for (const Complex &z : sub.values)
@@ -198,13 +294,22 @@ QJsonObject analyseItem(const AttractorItem *item)
                 k = j;
         if (d->surface)
             m["used"] = k >= 0;
+        addMapMatrices(m, *d, i, k);
         if (k >= 0) {
             const Contractivity c = contractivity(d->ifs.effectiveLinearPart(k));
             m["contractive"] = c.eventuallyContractive;
             m["contraction_norm"] = c.normFactor;
             const auto fp = fixedPoint(d->ifs.maps[k]);
+            Mat p;
             if (fp && !d->ifs.views.empty()) {
-                const Mat p = project(d->ifs.views.front(), Mat(*fp));
+                p = project(d->ifs.views.front(), Mat(*fp));
+            } else if (d->subdivision && i < int(d->S.real.size())) {
+                // No lifted fixed point (barycentric form of a singular P): the fixed weights
+                // of S_i (eigenvalue 1) applied to the control points give the same point.
+                if (const auto l = fixedWeights(d->S.real[size_t(i)]))
+                    p = *l * d->subdivision->controlPoints;
+            }
+            if (p.size() > 0) {
                 QJsonArray xy;
                 for (Eigen::Index c2 = 0; c2 < p.cols(); ++c2)
                     xy.append(p(0, c2));
@@ -244,6 +349,12 @@ QJsonObject analyseItem(const AttractorItem *item)
         o["lifting_invertible"] = d->subdivision->lifting.invertible;
         if (!d->subdivision->lifting.invertible)
             o["lifting_problem"] = QString::fromStdString(d->subdivision->lifting.reason);
+    }
+    try {
+        o["hausdorff_to_exact"] = hausdorffToExact(item, *d);
+    } catch (const InputError &e) {
+        o["hausdorff_to_exact"] = QJsonValue::Null;
+        o["hausdorff_error"] = QString::fromStdString(e.what());
     }
     // Box-counting dimension of the attractor at a depth giving about 2^18 points.
     o["box_dimension"] = QJsonValue::Null;
@@ -399,10 +510,14 @@ int render(const QStringList &args)
             return 0;
         }
         for (int s = 0; s < item->controlPointSetCount(); ++s)
-            if (!item->controlPoints(s).empty())
+            if (!item->controlPoints(s).empty()) {
                 spec.controlPolygons.push_back(toMatrix(item->controlPoints(s)));
-        if (d->polygon)
+                spec.controlClosed.push_back(item->controlPointSetClosed(s));
+            }
+        if (d->polygon) {
             spec.polygons.push_back(*d->polygon);
+            spec.polygonsClosed.push_back(d->polygonClosed);
+        }
         if (const auto exact = exactCurveOf(item, 800))
             spec.overlays.push_back(exact->points);
         spec.panelWidth = sm.captured(1).toInt();
@@ -464,7 +579,9 @@ int points(const QStringList &args)
                            {"depth", "Iteration depth (default: the item's).", "k"},
                            {"start", "Start set: point:x,y | segment:x1,y1,x2,y2 | "
                                      "triangle:... | polygon:... | points:... (plane coordinates;"
-                                     " x,y,z for a surface; default: the item's).",
+                                     " x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... "
+                                     "(points of the lifted space of 000 §2; default: the "
+                                     "item's).",
                             "set"},
                            {"csv", "Print CSV (the only format so far)."},
                            {"max-points", "Refuse to print more (default 10000000).", "n",
@@ -481,7 +598,24 @@ int points(const QStringList &args)
         const int depth = parser.isSet("depth") ? intOption(parser, "depth", 0, 64)
                                                 : item->algorithm().depth;
         StartSet start = item->coreStartSet(*d);
-        if (parser.isSet("start")) {
+        if (parser.isSet("start") && parser.value("start").startsWith("lifted:")) {
+            // Points of the lifted space, ';' between points: lifted:x,y,c1,..;x,y,c1,..
+            std::vector<std::vector<double>> lifted;
+            for (const QString &point :
+                 parser.value("start").mid(7).split(';', Qt::SkipEmptyParts)) {
+                std::vector<double> p;
+                for (const QString &n : point.split(',', Qt::SkipEmptyParts)) {
+                    bool ok = false;
+                    p.push_back(n.trimmed().toDouble(&ok));
+                    if (!ok || !std::isfinite(p.back()))
+                        throw Failure{QString("--start: '%1' is not a finite number").arg(n)};
+                }
+                lifted.push_back(std::move(p));
+            }
+            if (lifted.empty())
+                throw Failure{"--start lifted: needs at least one point"};
+            start = StartSet::points(liftedStartPoints(*d, lifted));
+        } else if (parser.isSet("start")) {
             Mat pts;
             const StartSet::Kind kind =
                 parseStart(parser.value("start"), &pts, item->pointDimension());
@@ -694,6 +828,61 @@ int exportData(const QStringList &args)
         if (!file.commit())
             throw Failure{QString("cannot write %1: %2").arg(file.fileName(), file.errorString())};
         out() << parser.value("out") << "\n";
+        return 0;
+    });
+}
+
+} // namespace awb::cli
+
+namespace awb::cli {
+
+int polygon(const QStringList &args)
+{
+    return guarded([&] {
+        QCommandLineParser parser;
+        parser.setApplicationDescription(
+            "Print the control polygon after K subdivision steps as JSON {\"closed\", "
+            "\"points\"}: the figures of 001 for a normal-vector item (eq. (1) applied K times), "
+            "classic subdivision S_w P for a subdivision curve.");
+        parser.addPositionalArgument("project", "The .awb project file.");
+        parser.addOptions({{"item", "The item.", "name"},
+                           {"level", "Subdivision steps K (0: the control polygon).", "k", "0"},
+                           {"json", "Print JSON (the only format)."}});
+        parseOrFail(parser, args, 1);
+        if (!parser.isSet("item"))
+            throw Failure{"--item NAME is required", 2};
+        if (!parser.isSet("json"))
+            throw Failure{"--json is required (the only output format)", 2};
+        Project project;
+        load(project, parser.positionalArguments().first());
+        AttractorItem *item = attractorItem(project, parser.value("item"));
+        const int level = intOption(parser, "level", 0, 30);
+        Mat points;
+        bool closed = false;
+        if (const auto *nv = qobject_cast<const NormalVectorItem *>(item)) {
+            const ControlPolygon poly{toMatrix(nv->controlPoints()), nv->spec().closed};
+            points = nv->spec().makeScheme().subdivide(poly, level).points;
+            closed = poly.closed;
+        } else if (const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item)) {
+            if (curve->scheme().isComplex())
+                throw Failure{QString("item '%1' has a complex split parameter: its control "
+                                      "polygon has complex points").arg(item->name())};
+            const Mat P = toMatrix(curve->controlPoints());
+            const auto scheme = curve->scheme().makeScheme();
+            if (std::pow(double(scheme->arity()), level) * double(P.rows()) > 5e7)
+                throw Failure{QString("level %1 gives more than 5e7 points").arg(level)};
+            points = subdivide(*scheme, P, level);
+        } else {
+            throw Failure{QString("item '%1' (%2) is not polygon-based: the polygon command "
+                                  "takes normal-vector items and subdivision curves")
+                              .arg(item->name(), item->typeName())};
+        }
+        QJsonArray list;
+        for (Eigen::Index r = 0; r < points.rows(); ++r)
+            list.append(QJsonArray{points(r, 0), points(r, 1)});
+        out() << QJsonDocument(QJsonObject{{"closed", closed}, {"level", level}, {"points", list}})
+                     .toJson(QJsonDocument::Compact)
+              << "\n";
         return 0;
     });
 }

@@ -14,5 +14,6 @@ int points(const QStringList &args);
 int check(const QStringList &args);
 int rewrite(const QStringList &args);
 int exportData(const QStringList &args);
+int polygon(const QStringList &args);
 
 } // namespace awb::cli

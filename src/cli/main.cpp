@@ -85,6 +85,7 @@ void usage()
              "  check      validate a project file\n"
              "  rewrite    load and save a project in canonical form\n"
              "  export     attractor points as PLY, a surface's subdivided net as OBJ\n"
+             "  polygon    the control polygon after K subdivision steps (JSON)\n"
              "  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG\n\n"
              "Run 'attractor-cli <command> --help' for the options of a command.\n";
 }
@@ -133,6 +134,8 @@ int main(int argc, char **argv)
             return cli::rewrite(args);
         if (command == "export")
             return cli::exportData(args);
+        if (command == "polygon")
+            return cli::polygon(args);
     } catch (const InputError &e) {
         err() << "attractor-cli " << command << ": " << e.what() << "\n";
         return 1;

@@ -149,10 +149,13 @@ void AttractorItem::applyAlgorithm(Ifs &ifs) const
 
 StartSet AttractorItem::coreStartSet(const DerivedIfs &derived) const
 {
+    if (m_startSet.kind == StartSetSpec::Kind::Lifted)
+        return StartSet::points(liftedStartPoints(derived, m_startSet.lifted));
     const Mat vertices = derived.toIfsSpace(toMatrix(m_startSet.points, pointDimension()));
     switch (m_startSet.kind) {
     case StartSetSpec::Kind::Point:
     case StartSetSpec::Kind::Points:
+    case StartSetSpec::Kind::Lifted:  // handled above
         return StartSet::points(vertices);
     case StartSetSpec::Kind::Segment:
         return StartSet::polyline(vertices);
@@ -161,6 +164,34 @@ StartSet AttractorItem::coreStartSet(const DerivedIfs &derived) const
         break;
     }
     return StartSet::polygon(vertices);
+}
+
+Mat liftedStartPoints(const DerivedIfs &derived, const std::vector<std::vector<double>> &points)
+{
+    const int D = derived.ifs.dim();
+    if (derived.ifs.space == "barycentric")
+        throw InputError(QCoreApplication::translate("awb::AttractorItem",
+                                                     "lifted start points need an invertible "
+                                                     "lifting: %1")
+                             .arg(derived.note)
+                             .toStdString());
+    Mat X(Eigen::Index(points.size()), D);
+    for (size_t k = 0; k < points.size(); ++k) {
+        if (int(points[k].size()) != D)
+            throw InputError(QCoreApplication::translate("awb::AttractorItem",
+                                                         "a lifted start point of this item has "
+                                                         "%1 coordinates (x, y and the %2 extra "
+                                                         "coordinates of the lifting, the "
+                                                         "homogeneous 1 implied); point %3 has %4")
+                                 .arg(D)
+                                 .arg(std::max(0, D - 2))
+                                 .arg(k + 1)
+                                 .arg(points[k].size())
+                                 .toStdString());
+        for (int c = 0; c < D; ++c)
+            X(Eigen::Index(k), c) = points[k][size_t(c)];
+    }
+    return X;
 }
 
 // ---- files ------------------------------------------------------------------------------------
@@ -185,6 +216,15 @@ void AttractorItem::checkLoaded(const FieldReader &fields) const
 {
     Item::checkLoaded(fields);
     fields.require(m_algorithm.check(mapCount()), "algorithm");
+    // Lifted start points must have the lifted space's number of coordinates.
+    if (m_startSet.kind == StartSetSpec::Kind::Lifted)
+        if (const auto d = derivedIfs()) {
+            try {
+                liftedStartPoints(*d, m_startSet.lifted);
+            } catch (const InputError &e) {
+                fields.fail("start_set", QString::fromStdString(e.what()));
+            }
+        }
 }
 
 } // namespace awb

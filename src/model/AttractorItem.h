@@ -59,6 +59,10 @@ struct DerivedIfs {
     bool polygonClosed = false;
 };
 
+// Lifted start points (each with the IFS space's dim() coordinates) as rows; throws InputError
+// naming the expected count, or when the IFS is in barycentric form (no lifting).
+Mat liftedStartPoints(const DerivedIfs &derived, const std::vector<std::vector<double>> &points);
+
 class AttractorItem : public Item {
     Q_OBJECT
 public:
@@ -80,6 +84,9 @@ public:
 
     // ---- control points: an item has controlPointSetCount() ordered lists of plane points.
     virtual int controlPointSetCount() const { return 0; }
+    // Whether point set `set` is a closed polygon (its last point joins the first): drawn closed
+    // by every view and figure.
+    virtual bool controlPointSetClosed(int set) const { Q_UNUSED(set); return false; }
     const PointList &controlPoints(int set = 0) const;
     // Undoable; false for a bad set/index or non-finite coordinates. Moves within one drag
     // share a gesture id (Project::beginGesture) and become one undo step.

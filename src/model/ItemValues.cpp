@@ -35,12 +35,28 @@ bool allFinite(const PointList &points)
 
 const QStringList &StartSetSpec::kindNames()
 {
-    static const QStringList names{"point", "segment", "triangle", "polygon", "points"};
+    static const QStringList names{"point", "segment", "triangle", "polygon", "points",
+                                   "lifted"};
     return names;
 }
 
 MaybeProblem StartSetSpec::check() const
 {
+    if (kind == Kind::Lifted) {
+        if (lifted.empty())
+            return Problem{"points", tr("a lifted start set needs at least one point")};
+        for (size_t k = 0; k < lifted.size(); ++k) {
+            if (lifted[k].size() < 2 || lifted[k].size() != lifted.front().size())
+                return Problem{"points", tr("lifted start point %1 has %2 coordinates: every "
+                                            "point needs the same number, at least 2")
+                                             .arg(k + 1)
+                                             .arg(lifted[k].size())};
+            for (double c : lifted[k])
+                if (!std::isfinite(c))
+                    return Problem{"points", tr("every point must have finite coordinates")};
+        }
+        return std::nullopt;
+    }
     if (!allFinite(points))
         return Problem{"points", tr("every point must have finite coordinates")};
     const int n = int(points.size());
@@ -52,6 +68,7 @@ MaybeProblem StartSetSpec::check() const
     case Kind::Triangle: exact = 3; break;
     case Kind::Polygon: least = 3; break;
     case Kind::Points: least = 1; break;
+    case Kind::Lifted: break;
     }
     if (exact > 0 && n != exact)
         return Problem{"points", tr("a start set of kind \"%1\" needs exactly %2 points, got %3")

@@ -42,13 +42,19 @@ struct Problem {
 };
 using MaybeProblem = std::optional<Problem>;
 
-// The set X_0 that deterministic iteration starts from, in plane coordinates.
+// The set X_0 that deterministic iteration starts from, in plane coordinates — or, for kind
+// Lifted, points of the IFS's own (lifted) space: x, y, then the extra coordinates of the
+// lifting of 000 §2 (the homogeneous 1 implied), as 000 Fig. 2 starts "from a random
+// homogeneous point in five dimensions".
 struct StartSetSpec {
     Q_DECLARE_TR_FUNCTIONS(awb::StartSetSpec)
 public:
-    enum class Kind { Point, Segment, Triangle, Polygon, Points };
+    enum class Kind { Point, Segment, Triangle, Polygon, Points, Lifted };
     Kind kind = Kind::Point;
     PointList points{{0.0, 0.0}};
+    // Kind Lifted: the points, each with the lifted space's number of coordinates (the item
+    // checks the count against its IFS when it is computed).
+    std::vector<std::vector<double>> lifted{};
 
     bool operator==(const StartSetSpec &) const = default;
     // Right number of finite points for the kind (1, 2, 3, >= 3, >= 1).

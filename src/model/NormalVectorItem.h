@@ -64,6 +64,7 @@ public:
 
     int mapCount() const override { return m_spec.arity(); }
     int controlPointSetCount() const override { return 1; }
+    bool controlPointSetClosed(int) const override { return m_spec.closed; }
 
     void write(QJsonObject &json) const override;
     void read(const FieldReader &fields) override;

@@ -436,14 +436,42 @@ QJsonArray ProjectIO::pointsToJson(const PointList &points, int dim)
 
 QJsonObject ProjectIO::startSetToJson(const StartSetSpec &s, int dim)
 {
-    return {{"kind", StartSetSpec::kindNames().at(int(s.kind))},
-            {"points", pointsToJson(s.points, dim)}};
+    QJsonArray points = pointsToJson(s.points, dim);
+    if (s.kind == StartSetSpec::Kind::Lifted) {
+        points = QJsonArray();
+        for (const auto &p : s.lifted) {
+            QJsonArray c;
+            for (double v : p)
+                c.append(v);
+            points.append(c);
+        }
+    }
+    return {{"kind", StartSetSpec::kindNames().at(int(s.kind))}, {"points", points}};
 }
 
 StartSetSpec ProjectIO::readStartSet(const FieldReader &r, int dim)
 {
     StartSetSpec s;
     s.kind = StartSetSpec::Kind(r.choice("kind", StartSetSpec::kindNames(), int(s.kind)));
+    if (s.kind == StartSetSpec::Kind::Lifted) {
+        const QJsonValue v = r.value("points");
+        if (!v.isArray())
+            r.fail("points", tr("expected an array of lifted points [x, y, c1, ...]"));
+        const QJsonArray a = v.toArray();
+        s.points.clear();
+        for (qsizetype i = 0; i < a.size(); ++i) {
+            const QString where = r.path("points") + QStringLiteral("[%1]").arg(i + 1);
+            if (!a[i].isArray())
+                throw LoadError{where, tr("expected a lifted point [x, y, c1, ...]")};
+            std::vector<double> p;
+            const QJsonArray c = a[i].toArray();
+            for (qsizetype j = 0; j < c.size(); ++j)
+                p.push_back(FieldReader::toNumber(c[j], where + QStringLiteral("[%1]").arg(j + 1)));
+            s.lifted.push_back(std::move(p));
+        }
+        r.require(s.check());
+        return s;
+    }
     s.points = r.points("points", s.points, dim);
     r.require(s.check());
     return s;

@@ -365,17 +365,34 @@ void TestNormalVector::snowflakeIfsViews()
 
 void TestNormalVector::noEquivalentIfs()
 {
-    for (Id id : {Id::Dragon, Id::SierpinskiArrowhead, Id::HumanLike, Id::Approximating}) {
-        const NormalVectorScheme s = normalVectorPreset(id).scheme;
-        const auto why = whyNoEquivalentIfs(s);
-        QVERIFY(why.has_value());
-        QVERIFY(inputError([&] { equivalentIfs(s); }).contains("no equivalent IFS"));
+    // The sign rules that change with the edge or the level still have an equivalent IFS: an
+    // edge subdivided with the other sign carries a reversed or mirrored copy. The search over
+    // the orientations finds it for every interpolatory preset; only the approximating curve
+    // (alpha_0 != 0) has none.
+    for (Id id : {Id::Dragon, Id::SierpinskiArrowhead, Id::HumanLike}) {
+        const NormalVectorPreset p = normalVectorPreset(id);
+        QVERIFY2(!whyNoEquivalentIfs(p.scheme), p.name.c_str());
+        const Ifs ifs = equivalentIfs(p.scheme, p.polygon);
+        QCOMPARE(ifs.size(), p.scheme.arity());
+        // Drawn over the figure's polygon, F^6 of the edge ends is the polygon after 6 steps.
+        const Mat fromIfs = collectAllViews(ifs, unitSegment().points, 6);
+        const Mat level = p.scheme.subdivide(p.polygon, 6).points;
+        QVERIFY2(hausdorffDistance(fromIfs, level) < 1e-12, p.name.c_str());
     }
-    QVERIFY(whyNoEquivalentIfs(normalVectorPreset(Id::Dragon).scheme)->find("(-1)^i")
-            != std::string::npos);
+    // The dragon: f1(z) = (1 + i) z / 2, f2(z) = 1 - (1 - i) z / 2 (issue 13; row form of
+    // z |-> c z is [[Re c, Im c], [-Im c, Re c]]).
+    const Ifs dragon = equivalentIfs(normalVectorPreset(Id::Dragon).scheme);
+    QVERIFY((dragon.maps[0].A - matrixFromRows({{0.5, 0.5}, {-0.5, 0.5}})).norm() < 1e-15);
+    QVERIFY(dragon.maps[0].b.norm() < 1e-15);
+    QVERIFY((dragon.maps[1].A - matrixFromRows({{-0.5, 0.5}, {-0.5, -0.5}})).norm() < 1e-15);
+    QVERIFY((dragon.maps[1].b - RowVec::Unit(2, 0)).norm() < 1e-15);
+    const NormalVectorScheme approximating = normalVectorPreset(Id::Approximating).scheme;
+    QVERIFY(whyNoEquivalentIfs(approximating).has_value());
+    QVERIFY(inputError([&] { equivalentIfs(approximating); }).contains("no equivalent IFS"));
+    QVERIFY(whyNoEquivalentIfs(approximating)->find("α_0") != std::string::npos);
     // A scheme whose new edge is as long as the old one has no attractor.
     const NormalVectorScheme flat({0, 1}, {0, 0});
-    QVERIFY(inputError([&] { equivalentIfs(flat); }).contains("does not contract"));
+    QVERIFY(inputError([&] { equivalentIfs(flat); }).contains("no map would contract"));
 }
 
 void TestNormalVector::sierpinskiIsGasket()

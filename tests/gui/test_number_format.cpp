@@ -1,7 +1,7 @@
 // Number formatting of the views: exact small fractions, significant digits otherwise,
 // complex values, and parsing what a user types into a matrix cell.
 
-#include "gui/views/NumberFormat.h"
+#include "model/NumberFormat.h"
 
 #include <QtTest>
 

@@ -402,7 +402,7 @@ private slots:
                     QVERIFY2(a->derivedIfs(), qPrintable(a->derivedError()));
             ++examples;
         }
-        QCOMPARE(examples, 11);
+        QCOMPARE(examples, 12);
     }
 };
 

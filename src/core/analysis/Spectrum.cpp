@@ -250,6 +250,27 @@ std::optional<RowVec> fixedPoint(const Mat &A, const RowVec &b)
 
 std::optional<RowVec> fixedPoint(const AffineMap &f) { return fixedPoint(f.A, f.b); }
 
+std::optional<RowVec> fixedWeights(const Mat &S)
+{
+    const Eigen::Index m = S.rows();
+    if (m == 0 || S.cols() != m || !S.allFinite())
+        return std::nullopt;
+    // (S^T - I) l^T = 0 with 1^T l^T = 1: an (m+1) x m system, solved in least squares and
+    // accepted when it holds (a repeated eigenvalue 1 leaves it rank deficient).
+    Mat E(m + 1, m);
+    E.topRows(m) = S.transpose() - Mat::Identity(m, m);
+    E.row(m).setOnes();
+    Vec rhs = Vec::Zero(m + 1);
+    rhs(m) = 1.0;
+    Eigen::ColPivHouseholderQR<Mat> qr(E);
+    if (qr.rank() < m)
+        return std::nullopt;
+    const Vec l = qr.solve(rhs);
+    if ((E * l - rhs).norm() > 1e-9 * std::max(1.0, S.norm()))
+        return std::nullopt;
+    return RowVec(l.transpose());
+}
+
 IfsCheck checkIfs(const Ifs &ifs)
 {
     ifs.validate();

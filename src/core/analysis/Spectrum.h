@@ -56,6 +56,11 @@ Contractivity contractivity(const CMat &A);
 // x* with x* = x* A + b, i.e. x* = b (I - A)^-1; nullopt when 1 is an eigenvalue of A.
 std::optional<RowVec> fixedPoint(const Mat &A, const RowVec &b);
 std::optional<RowVec> fixedPoint(const AffineMap &f);
+// The fixed weights of a subdivision matrix S (m x m, rows summing to 1): the left eigenvector
+// l S = l with sum(l) = 1 of the eigenvalue 1, when that eigenvalue is simple. l P is then the
+// fixed point of the map S_i on the curve, with or without an invertible lifting (the
+// eigenvector of eigenvalue 1 of S_i gives it; NOTES.md, 000 §2).
+std::optional<RowVec> fixedWeights(const Mat &S);
 
 // Per-map analysis of an IFS: the verdict of each map, and whether all are eventually
 // contractive (the IFS then has a unique attractor).

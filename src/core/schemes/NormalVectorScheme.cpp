@@ -2,6 +2,7 @@
 #include "core/schemes/NormalVectorScheme.h"
 
 #include "core/analysis/Geometry.h"
+#include "core/ifs/Attractor.h"
 
 #include <algorithm>
 #include <cmath>
@@ -363,66 +364,151 @@ std::vector<LevelMeasure> measureLevels(const NormalVectorScheme &s, const Contr
 
 // ---- equivalent IFS ---------------------------------------------------------------------------
 
-std::optional<std::string> whyNoEquivalentIfs(const NormalVectorScheme &s)
+namespace {
+
+// The four similarities taking the unit edge onto the segment from a to b = a + c: forward or
+// reversed (0 -> b, 1 -> a), plain or mirrored (z -> conj z first). form: bit 0 reverses, bit 1
+// mirrors. Row form of z |-> c z is [[u, v], [-v, u]], of z |-> c conj(z) is [[u, v], [v, -u]]
+// (c = u + iv).
+AffineMap edgeMap(const Eigen::RowVector2d &a, const Eigen::RowVector2d &b, int form)
 {
-    if (!s.interpolatory())
-        return "α_0 and β_0 are not both 0: the new edge across each old vertex joins two old"
-               " edges and is not the image of one edge, so no IFS of one similarity per new"
-               " edge exists";
-    for (int j = 0; j < s.arity(); ++j) {
-        if (s.beta()[j] == 0)
-            continue;
-        switch (s.signs()[j]) {
-        case BetaSign::Constant:
-            break;
-        case BetaSign::EdgeAlternating:
-            return "the β sign (-1)^i differs between neighbouring edges: every other edge uses"
-                   " the mirrored rule, so the pieces are not images of the unit edge's limit"
-                   " under p fixed similarities";
-        case BetaSign::LevelEdgeAlternating:
-            return "the β sign (-1)^(k+i) changes with the level and the edge: the rules are"
-                   " neither the same at every step nor on every edge";
-        case BetaSign::LevelAlternating:
-            return "the β sign (-1)^(k+1) changes with the level: the rules repeat only every"
-                   " two steps (an IFS would need p^2 maps)";
+    const bool reversed = form & 1, mirrored = form & 2;
+    const Eigen::RowVector2d c = reversed ? Eigen::RowVector2d(a - b) : Eigen::RowVector2d(b - a);
+    AffineMap f{Mat(2, 2), RowVec(reversed ? b : a)};
+    if (mirrored)
+        f.A << c.x(), c.y(), c.y(), -c.x();
+    else
+        f.A << c.x(), c.y(), -c.y(), c.x();
+    return f;
+}
+
+// The vertices of F^n({0, 1}) (the IFS's level-n polygon, as a set).
+Mat levelPoints(const Ifs &ifs, int n)
+{
+    PointCollector c(ifs.views.front());
+    Mat ends(2, 2);
+    ends << 0, 0, 1, 0;
+    iterate(ifs, StartSet::points(ends), n, c);
+    return c.points();
+}
+
+// Levels at which a candidate IFS is compared with the scheme: up to about 4000 vertices.
+int checkLevels(int p)
+{
+    int n = 1;
+    while (std::pow(double(p), n + 1) <= 4000.0)
+        ++n;
+    return std::max(n, 2);
+}
+
+struct Search {
+    std::optional<Ifs> ifs;  // with the identity view (frame of the unit edge)
+    std::string why;
+};
+
+// Tries every orientation pattern (4^p of them, pruned level by level): the IFS whose level-n
+// vertices are those of the scheme's polygon after n steps from the unit edge, for every n up
+// to checkLevels(p), is the equivalent IFS.
+Search searchEquivalentIfs(const NormalVectorScheme &s)
+{
+    Search out;
+    if (!s.interpolatory()) {
+        out.why = "α_0 and β_0 are not both 0: the new edge across each old vertex joins two old"
+                  " edges and is not the image of one edge, so no IFS of one similarity per new"
+                  " edge exists";
+        return out;
+    }
+    const int p = s.arity();
+    const auto a = unitEdgePoints(s, 0, 0);
+    for (int j = 0; j < p; ++j)
+        if (!((a[j + 1] - a[j]).norm() < 1.0)) {
+            out.why = "new edge " + std::to_string(j + 1) + " of the unit edge has length "
+                      + num((a[j + 1] - a[j]).norm()) + " >= 1: no map would contract";
+            return out;
+        }
+    const int levels = checkLevels(p);
+    std::vector<Mat> target;
+    for (int n = 1; n <= levels; ++n)
+        target.push_back(s.subdivide(unitSegment(), n).points);
+    std::vector<int> form(size_t(p), 0);
+    const long long patterns = 1LL << (2 * p);
+    for (long long code = 0; code < patterns; ++code) {
+        Ifs ifs;
+        ifs.space = "plane (frame of the unit edge)";
+        ifs.views.push_back({Mat::Identity(2, 2), RowVec::Zero(2)});
+        for (int j = 0; j < p; ++j) {
+            form[size_t(j)] = int((code >> (2 * j)) & 3);
+            ifs.maps.push_back(edgeMap(a[j], a[j + 1], form[size_t(j)]));
+        }
+        bool same = true;
+        for (int n = 2; n <= levels && same; ++n) {
+            const Mat got = levelPoints(ifs, n);
+            same = hausdorffDistance(got, target[size_t(n - 1)]) < 1e-9;
+        }
+        if (same) {
+            out.ifs = std::move(ifs);
+            return out;
         }
     }
-    return std::nullopt;
+    std::ostringstream os;
+    os << "no IFS of " << p << " similarities (each new edge taken forward or reversed, plain or"
+       << " mirrored: " << patterns << " patterns) reproduces the polygons of the first "
+       << levels << " steps";
+    if (s.levelDependent())
+        os << "; the β sign changes with the level, so the rules repeat only every two steps (an"
+              " IFS would need p^2 maps)";
+    out.why = os.str();
+    return out;
+}
+
+} // namespace
+
+std::optional<std::string> whyNoEquivalentIfs(const NormalVectorScheme &s)
+{
+    Search found = searchEquivalentIfs(s);
+    if (found.ifs)
+        return std::nullopt;
+    return found.why;
 }
 
 Ifs equivalentIfs(const NormalVectorScheme &s)
 {
-    if (const auto why = whyNoEquivalentIfs(s))
-        throw InputError("no equivalent IFS: " + *why);
-    const auto a = unitEdgePoints(s, 0, 0);
-    Ifs ifs;
-    ifs.space = "plane (frame of the unit edge)";
-    for (int j = 0; j < s.arity(); ++j) {
-        const Eigen::RowVector2d delta = a[j + 1] - a[j];
-        if (!(delta.norm() < 1.0))
-            throw InputError("map " + std::to_string(j + 1) + " of the equivalent IFS has ratio "
-                             + num(delta.norm()) + " >= 1: it does not contract, so the IFS"
-                             " has no attractor");
-        AffineMap f{Mat(2, 2), RowVec(a[j])};
-        // Row form of z |-> a_j + Δ_j z: (x, y) [[u, v], [-v, u]] = (xu - yv, xv + yu).
-        f.A << delta.x(), delta.y(), -delta.y(), delta.x();
-        ifs.maps.push_back(f);
-    }
-    ifs.views.push_back({Mat::Identity(2, 2), RowVec::Zero(2)});
-    return ifs;
+    Search found = searchEquivalentIfs(s);
+    if (!found.ifs)
+        throw InputError("no equivalent IFS: " + found.why);
+    return *found.ifs;
 }
 
 Ifs equivalentIfs(const NormalVectorScheme &s, const ControlPolygon &poly)
 {
     s.validate(poly);
     Ifs ifs = equivalentIfs(s);
-    ifs.views.clear();
+    // One view per edge of the polygon: the similarity (forward or reversed, plain or mirrored)
+    // that takes the unit edge's limit onto that edge's part of the subdivided polygon (an edge
+    // subdivided with the other sign carries the mirrored copy).
+    const int n = std::min(checkLevels(s.arity()), 3);
+    const Mat fine = s.subdivide(poly, n).points;
+    const Mat unit = levelPoints(ifs, n);
+    const long long per = std::llround(std::pow(double(s.arity()), n));
     const Mat &P = poly.points;
+    ifs.views.clear();
     for (Eigen::Index i = 0; i < poly.edgeCount(); ++i) {
-        const Eigen::RowVector2d e = P.row((i + 1) % P.rows()) - P.row(i);
-        Projection v{Mat(2, 2), RowVec(P.row(i))};
-        v.V << e.x(), e.y(), -e.y(), e.x();
-        ifs.views.push_back(v);
+        Mat part(per + 1, 2);
+        for (long long k = 0; k <= per; ++k)
+            part.row(Eigen::Index(k)) = fine.row(Eigen::Index((i * per + k) % fine.rows()));
+        const Eigen::RowVector2d from = P.row(i), to = P.row((i + 1) % P.rows());
+        bool found = false;
+        for (int form = 0; form < 4 && !found; ++form) {
+            const AffineMap g = edgeMap(from, to, form);
+            if (hausdorffDistance(applyMap(g, unit), part) < 1e-9 * (1.0 + (to - from).norm())) {
+                ifs.views.push_back({g.A, g.b});
+                found = true;
+            }
+        }
+        if (!found)
+            throw InputError("edge " + std::to_string(i + 1) + " of the control polygon is "
+                             "subdivided with rules no similarity copy of the unit edge's "
+                             "limit reproduces");
     }
     return ifs;
 }

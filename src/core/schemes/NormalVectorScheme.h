@@ -12,13 +12,14 @@
 // Points are rows (m x 2), as everywhere in awb::core.
 //
 // Which presets have an equivalent IFS of p similarities (one per new edge of a unit edge):
-// Lévy, Koch (scheme 5), Koch snowflake, tigerhead, crown and the 7-ary curve. Those keep the
-// old points (α_0 = β_0 = 0) and use one β sign everywhere, so the limit over any edge is a
-// similar copy of the limit over the unit edge. The others have none: the dragon ((-1)^i) and
-// the Sierpiński arrowhead ((-1)^(k+i)) use the mirror rule on every other edge, the human-like
-// curve ((-1)^(k+1)) alternates with the level (it is stationary only over two steps, which
-// would need p^2 maps), and the approximating curve (α_0 ≠ 0) makes an edge across each old
-// vertex that is no image of the unit edge.
+// every interpolatory one (α_0 = β_0 = 0). With one β sign everywhere (Lévy, Koch, snowflake,
+// tigerhead, crown, 7-ary) each new edge carries a plain copy of the unit edge's limit; where
+// the sign changes with the edge or the level (dragon (-1)^i, Sierpiński arrowhead (-1)^(k+i),
+// human-like (-1)^(k+1)) an edge subdivided with the other sign carries a reversed or mirrored
+// copy: the dragon is f1(z) = (1+i) z/2, f2(z) = 1 - (1-i) z/2. equivalentIfs() finds the
+// orientations by search (4^p patterns, each checked against the scheme's own polygons). The
+// approximating curve (α_0 ≠ 0) has none: it makes an edge across each old vertex that is no
+// image of one edge.
 
 #include "core/ifs/Ifs.h"
 #include "core/Types.h"
@@ -125,9 +126,12 @@ std::vector<LevelMeasure> measureLevels(const NormalVectorScheme &scheme,
 
 // Why the scheme has no equivalent IFS of similarities (see the header comment), or nullopt.
 std::optional<std::string> whyNoEquivalentIfs(const NormalVectorScheme &scheme);
-// The p maps z |-> a_j + (a_{j+1} - a_j) z in row form (A = [[u, v], [-v, u]], (u, v) = Δ_j,
-// b = a_j): the limit over the unit edge (0,0) -> (1,0) is their attractor; identity view.
-// Throws InputError with whyNoEquivalentIfs(), or when a map does not contract (|Δ_j| >= 1).
+// The p maps taking the unit edge onto the new edges a_j -> a_{j+1} of the unit edge, each
+// forward (z |-> a_j + Δ_j z) or reversed (a_{j+1} - Δ_j z), plain or mirrored (conj z), the
+// orientations found by search: the first pattern whose level-n vertices equal the scheme's
+// polygon after n steps for every n up to ~4000 vertices. Row form: A = [[u, v], [-v, u]]
+// (plain) or [[u, v], [v, -u]] (mirrored), c = u + iv. Identity view. Throws InputError with
+// whyNoEquivalentIfs(), e.g. when a new edge is not shorter than the old one.
 Ifs equivalentIfs(const NormalVectorScheme &scheme);
 // The same IFS with one view per edge of poly (view = the similarity taking the unit edge onto
 // that edge), so drawing all views gives the limit curve of the whole polygon.

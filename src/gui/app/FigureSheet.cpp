@@ -3,7 +3,7 @@
 #include "gui/app/ItemController.h"
 #include "gui/views/AttractorView.h"
 #include "gui/views/MatrixView.h"
-#include "gui/views/NumberFormat.h"
+#include "model/NumberFormat.h"
 #include "gui/views/SpectrumView.h"
 #include "model/AttractorItem.h"
 

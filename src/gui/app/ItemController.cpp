@@ -7,7 +7,7 @@
 #include "gui/views/AnalysisCharts.h"
 #include "gui/views/AttractorView.h"
 #include "gui/views/MatrixView.h"
-#include "gui/views/NumberFormat.h"
+#include "model/NumberFormat.h"
 #include "gui/views/SpectrumView.h"
 #include "model/AttractorItem.h"
 #include "model/ExactCurve.h"
@@ -249,9 +249,12 @@ void ItemController::refreshNow()
         }
         const Mat P = item->controlPointSetCount() > 0 ? toMatrix(item->controlPoints(0)) : Mat();
         std::vector<Mat> sets;
-        for (int k = 0; k < item->controlPointSetCount(); ++k)
+        std::vector<bool> closedSets;
+        for (int k = 0; k < item->controlPointSetCount(); ++k) {
             sets.push_back(toMatrix(item->controlPoints(k)));
-        m_attractor->setControlPolygons(sets);
+            closedSets.push_back(item->controlPointSetClosed(k));
+        }
+        m_attractor->setControlPolygons(sets, closedSets);
         m_attractor->setControlPointsEditable(item->controlPointSetCount() > 0);
 
         AttractorView::RenderSettings rs = m_attractor->renderSettings();
@@ -281,13 +284,16 @@ void ItemController::refreshNow()
                 // No overlay: the attractor itself shows what the scheme does.
             }
         }
-        if (d->polygon)
+        std::vector<bool> polygonsClosed(polygons.size(), false);
+        if (d->polygon) {
             polygons.push_back(*d->polygon);
+            polygonsClosed.push_back(d->polygonClosed);
+        }
         if (const auto exact = exactCurveOf(item, exactSamples))
             m_attractor->setExactCurve(exact->points, exact->label);
         else
             m_attractor->setExactCurve(Mat());
-        m_attractor->setSubdivisionPolygons(polygons);
+        m_attractor->setSubdivisionPolygons(polygons, polygonsClosed);
 
         const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item);
         const bool ownMatrices = curve && curve->scheme().kind == SchemeSpec::Kind::Matrices;

@@ -76,6 +76,7 @@ PointList startPoints(StartSetSpec::Kind kind, const PointList &control)
             return {{0, 0}, {1, 0}, {0.5, 1}};
         return c;
     case StartSetSpec::Kind::Points: return c;
+    case StartSetSpec::Kind::Lifted: return c;  // not offered by the kind box
     }
     return c;
 }

@@ -2,7 +2,7 @@
 
 #include "core/analysis/Geometry.h"
 #include "gui/views/AttractorRenderer.h"
-#include "gui/views/NumberFormat.h"
+#include "model/NumberFormat.h"
 
 #include <QCategoryAxis>
 #include <QChart>

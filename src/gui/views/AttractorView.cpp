@@ -193,11 +193,15 @@ void AttractorView::setExactCurve(const Mat &curve, const QString &label)
     update();
 }
 
-void AttractorView::setSubdivisionPolygons(const std::vector<Mat> &polygons)
+void AttractorView::setSubdivisionPolygons(const std::vector<Mat> &polygons,
+                                           const std::vector<bool> &closed)
 {
     m_subdivision.clear();
-    for (const Mat &m : polygons)
-        m_subdivision.push_back(toPolygon(m));
+    m_subdivisionClosed.clear();
+    for (size_t k = 0; k < polygons.size(); ++k) {
+        m_subdivision.push_back(toPolygon(polygons[k]));
+        m_subdivisionClosed.push_back(k < closed.size() && closed[k]);
+    }
     update();
 }
 

@@ -68,7 +68,9 @@ public:
     QString exactCurveLabel() const { return m_exactLabel; }
     int exactCurvePointCount() const { return int(m_exact.size()); }
     // Classic subdivision polygons, coarse to fine (k x 2 each).
-    void setSubdivisionPolygons(const std::vector<Mat> &polygons);
+    // closed[k]: polygon k is closed (its last point joins the first); missing entries: open.
+    void setSubdivisionPolygons(const std::vector<Mat> &polygons,
+                                const std::vector<bool> &closed = {});
     // Draw F^k(X0) as vectors (the papers' step-by-step figures); -1 turns it off.
     void setHutchinsonStep(int k);
     int hutchinsonStep() const { return m_hutchStep; }
@@ -233,6 +235,7 @@ private:
     QPolygonF m_exact;
     QString m_exactLabel;
     std::vector<QPolygonF> m_subdivision;
+    std::vector<bool> m_subdivisionClosed;
     int m_hutchStep = -1;
     std::vector<VectorImage> m_hutch;
     bool m_hutchTooMany = false;

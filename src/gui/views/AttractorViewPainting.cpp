@@ -76,7 +76,7 @@ void AttractorView::paintScene(QPainter &p, const Mapping &m, bool forExport)
             QPolygonF s;
             for (const QPointF &w : m_subdivision[k])
                 s << m.map(w);
-            p.drawPath(polylinePath(s, false));
+            p.drawPath(polylinePath(s, m_subdivisionClosed[size_t(k)]));
         }
     }
 

@@ -1,6 +1,6 @@
 #include "gui/views/MatrixView.h"
 
-#include "gui/views/NumberFormat.h"
+#include "model/NumberFormat.h"
 
 #include <QAbstractTableModel>
 #include <QFont>

@@ -1,7 +1,7 @@
 #include "gui/views/SpectrumView.h"
 
 #include "gui/views/AttractorRenderer.h"
-#include "gui/views/NumberFormat.h"
+#include "model/NumberFormat.h"
 
 #include <QFileInfo>
 #include <QHelpEvent>

@@ -1,7 +1,8 @@
 #pragma once
-// Number formatting shared by the views: matrices and eigenvalues of subdivision schemes are
-// often small dyadic fractions (3/8, -1/16), which read far better as fractions than as
-// 0.375 or -0.0625. Anything else gets a fixed number of significant digits.
+// Number formatting shared by the views and the CLI (layer 2, QtCore only): matrices and
+// eigenvalues of subdivision schemes are often small dyadic fractions (3/8, -1/16), which read
+// far better as fractions than as 0.375 or -0.0625. Anything else gets a fixed number of
+// significant digits.
 
 #include <QString>
 
@@ -37,5 +38,9 @@ QString subscriptName(const QString &name);
 
 // Full precision text of v for an editor (round-trips exactly): the fraction when exact.
 QString editableNumber(double v);
+
+// For machine-read output (JSON): "3/8", "-1/16", "2" when v is such a fraction (denominator
+// up to 4096, within 1e-13), otherwise v with 17 significant digits. ASCII minus.
+QString exactText(double v);
 
 } // namespace awb

@@ -1,4 +1,4 @@
-#include "gui/views/NumberFormat.h"
+#include "model/NumberFormat.h"
 
 #include <QLocale>
 
@@ -130,6 +130,16 @@ QString editableNumber(double v)
     if (const auto f = exactFraction(v); f && double(f->numerator) / double(f->denominator) == v)
         return fractionText(*f);
     return QString::number(v, 'g', QLocale::FloatingPointShortest);
+}
+
+QString exactText(double v)
+{
+    if (const auto f = exactFraction(v, 4096, 1e-13)) {
+        if (f->denominator == 1)
+            return QString::number(f->numerator);
+        return QStringLiteral("%1/%2").arg(f->numerator).arg(f->denominator);
+    }
+    return QString::number(v, 'g', 17);
 }
 
 } // namespace awb

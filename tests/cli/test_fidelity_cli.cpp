@@ -1,0 +1,235 @@
+// Mathematical fidelity in attractor-cli's output: the whole per-map analysis in analyse --json
+// (S with exact fractions, M, A, b, eigenvalues of A), the distance to the exact curve, fixed
+// points without an invertible lifting, the dragon's equivalent IFS, start points of the
+// lifted space, closed figures drawn closed, and the polygon command (001's figures).
+
+#include <QFile>
+#include <QFileInfo>
+#include <QRegularExpression>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+
+class TestFidelityCli : public QObject {
+    Q_OBJECT
+private slots:
+    void wholeAnalysisOfFig2();
+    void fixedPointsWithoutLifting();
+    void dragonHasItsIfs();
+    void liftedStartPoints();
+    void polygonCommand();
+    void closedFiguresDrawnClosed();
+
+private:
+    QString cli() const
+    {
+        return qEnvironmentVariable("AWB_BIN_DIR", QCoreApplication::applicationDirPath() + "/../bin")
+               + "/attractor-cli";
+    }
+    QString example(const QString &name) const
+    {
+        return qEnvironmentVariable("AWB_SOURCE_DIR", QString(AWB_TEST_SOURCE_DIR)) + "/examples/"
+               + name;
+    }
+    int run(const QStringList &args, QByteArray *out = nullptr, QByteArray *err = nullptr)
+    {
+        QProcess p;
+        p.start(cli(), args);
+        if (!p.waitForFinished(300000))
+            return -1;
+        if (out)
+            *out = p.readAllStandardOutput();
+        if (err)
+            *err = p.readAllStandardError();
+        return p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    }
+    QJsonObject analyse(const QString &file, const QString &item)
+    {
+        QByteArray out, err;
+        if (run({"analyse", file, "--item", item, "--json"}, &out, &err) != 0)
+            qWarning("%s", err.constData());
+        return QJsonDocument::fromJson(out).object()["items"].toArray().first().toObject();
+    }
+    QTemporaryDir m_dir;
+};
+
+void TestFidelityCli::wholeAnalysisOfFig2()
+{
+    const QJsonObject item = analyse(example("000-fig02-cubic-bspline-from-point.awb"),
+                                     "000 Fig. 2: cubic B-spline from a point");
+    const QJsonObject map1 = item["maps"].toArray()[0].toObject();
+    // S_1 of 000 §2.1, exactly.
+    const QJsonArray S = map1["S"].toObject()["exact"].toArray();
+    const char *rows[5][5] = {{"1/2", "1/2", "0", "0", "0"}, {"1/8", "3/4", "1/8", "0", "0"},
+                              {"0", "1/2", "1/2", "0", "0"}, {"0", "1/8", "3/4", "1/8", "0"},
+                              {"0", "0", "1/2", "1/2", "0"}};
+    QCOMPARE(S.size(), 5);
+    for (int r = 0; r < 5; ++r)
+        for (int c = 0; c < 5; ++c)
+            QCOMPARE(S[r].toArray()[c].toString(), QString(rows[r][c]));
+    QCOMPARE(map1["S"].toObject()["values"].toArray()[1].toArray()[1].toDouble(), 0.75);
+    // M_1 = P^-1 S_1 P = [[A_1, 0], [b_1, 1]]: 5 x 5, A_1 4 x 4, b_1 1 x 4; the spectrum of A_1
+    // is that of S_1 without the eigenvalue 1: 1/2, 1/4, 1/8, 0.
+    const QJsonArray M = map1["M"].toObject()["values"].toArray();
+    QCOMPARE(M.size(), 5);
+    QCOMPARE(M[4].toArray()[4].toDouble(), 1.0);
+    QCOMPARE(map1["A"].toObject()["values"].toArray().size(), 4);
+    QCOMPARE(map1["b"].toObject()["values"].toArray()[0].toArray().size(), 4);
+    const QJsonArray evA = map1["eigenvalues_A"].toArray();
+    const double want[4] = {0.5, 0.25, 0.125, 0.0};
+    for (int k = 0; k < 4; ++k)
+        QVERIFY(std::abs(evA[k].toArray()[0].toDouble() - want[k]) < 1e-9);
+    // The distance to the exact B-spline at the item's depth.
+    const QJsonObject h = item["hausdorff_to_exact"].toObject();
+    QVERIFY(h["depth"].toInt() > 8);
+    QVERIFY(h["value"].toDouble() > 0 && h["value"].toDouble() < 2e-3);
+    QVERIFY(h["one_sided"].toDouble() <= h["value"].toDouble());
+}
+
+void TestFidelityCli::fixedPointsWithoutLifting()
+{
+    // A uniform cubic B-spline whose last three control points are collinear: P is singular
+    // (NOTES.md), the attractor is drawn in barycentric form, and the fixed point of S_1 is
+    // still the curve's start (P0 + 4 P1 + P2)/6, of S_2 its end (P2 + 4 P3 + P4)/6.
+    const QString file = m_dir.filePath("singular.awb");
+    QFile f(file);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(R"({"format": "attractor-workbench", "version": 1, "items": [
+        {"type": "subdivision-curve", "name": "C", "scheme": {"kind": "bspline", "degree": 3},
+         "control_points": [[0, 0], [1, 2], [2, 1], [3, 1], [4, 1]]}]})");
+    f.close();
+    const QJsonObject item = analyse(file, "C");
+    QCOMPARE(item["lifting_invertible"].toBool(), false);
+    const QJsonArray maps = item["maps"].toArray();
+    const QJsonArray p1 = maps[0].toObject()["fixed_point"].toArray();
+    const QJsonArray p2 = maps[1].toObject()["fixed_point"].toArray();
+    QCOMPARE(p1.size(), 2);
+    QVERIFY(std::abs(p1[0].toDouble() - 1.0) < 1e-12);           // (0 + 4 + 2)/6
+    QVERIFY(std::abs(p1[1].toDouble() - 9.0 / 6.0) < 1e-12);     // (0 + 8 + 1)/6
+    QVERIFY(std::abs(p2[0].toDouble() - 3.0) < 1e-12);           // (2 + 12 + 4)/6
+    QVERIFY(std::abs(p2[1].toDouble() - 1.0) < 1e-12);
+    QVERIFY(maps[0].toObject()["contractive"].toBool());
+    QVERIFY(!maps[0].toObject().contains("M"));  // M_i needs P^-1
+}
+
+void TestFidelityCli::dragonHasItsIfs()
+{
+    const QJsonObject item = analyse(example("001-fig03-dragon-curve.awb"),
+                                     "001 Fig. 3(a): dragon curve, 10 steps");
+    const QJsonArray maps = item["maps"].toArray();
+    QCOMPARE(maps.size(), 2);
+    // f1(z) = (1+i) z/2, f2(z) = 1 - (1-i) z/2 in the row form x |-> x A + b.
+    const QJsonArray A1 = maps[0].toObject()["A"].toObject()["exact"].toArray();
+    const QJsonArray A2 = maps[1].toObject()["A"].toObject()["exact"].toArray();
+    const QJsonArray b2 = maps[1].toObject()["b"].toObject()["exact"].toArray()[0].toArray();
+    QCOMPARE(A1[0].toArray()[0].toString(), QString("1/2"));
+    QCOMPARE(A1[0].toArray()[1].toString(), QString("1/2"));
+    QCOMPARE(A1[1].toArray()[0].toString(), QString("-1/2"));
+    QCOMPARE(A2[0].toArray()[0].toString(), QString("-1/2"));
+    QCOMPARE(A2[1].toArray()[1].toString(), QString("-1/2"));
+    QCOMPARE(b2[0].toString(), QString("1"));
+    QCOMPARE(b2[1].toString(), QString("0"));
+    // |eigenvalues| of each A are 1/sqrt(2): the dragon's ratio.
+    for (const QJsonValue &m : maps)
+        for (const QJsonValue &z : m.toObject()["eigenvalues_A"].toArray())
+            QVERIFY(std::abs(std::hypot(z.toArray()[0].toDouble(), z.toArray()[1].toDouble())
+                             - std::sqrt(0.5))
+                    < 1e-12);
+    QVERIFY(!item["note"].toString().contains("No equivalent IFS"));
+}
+
+void TestFidelityCli::liftedStartPoints()
+{
+    // 000 Fig. 2 starts from a point of the lifted space (5 control points: x, y and 2 extra
+    // coordinates, the homogeneous 1 implied).
+    const QString fig2 = example("000-fig02-cubic-bspline-from-point.awb");
+    const QString name = "000 Fig. 2: cubic B-spline from a point";
+    QByteArray out, err;
+    QCOMPARE(run({"points", fig2, "--item", name, "--depth", "1", "--start",
+                  "lifted:0.3,0.2,0.1,0.4;1,1,0,0", "--csv"},
+                 &out, &err),
+             0);
+    QCOMPARE(out.trimmed().split('\n').size(), 1 + 2 * 2);
+    QCOMPARE(run({"points", fig2, "--item", name, "--start", "lifted:0.3,0.2,0.1", "--csv"},
+                 &out, &err),
+             1);
+    QVERIFY2(err.contains("has 4 coordinates") && err.contains("point 1 has 3"), err.constData());
+    // In a file: start_set kind "lifted"; a wrong count is refused when the file is read.
+    const QString file = m_dir.filePath("lifted.awb");
+    const auto write = [&](const QByteArray &points) {
+        QFile f(file);
+        f.open(QIODevice::WriteOnly);
+        f.write(R"({"format": "attractor-workbench", "version": 1, "items": [
+            {"type": "subdivision-curve", "name": "C", "scheme": {"kind": "bspline", "degree": 3},
+             "control_points": [[0, 0], [1, 2], [3, 2], [4, 0], [5, 1]],
+             "start_set": {"kind": "lifted", "points": )" + points + "}}]}");
+    };
+    write("[[0.5, 0.5, 0.25, 0.25]]");
+    QCOMPARE(run({"check", file}, &out, &err), 0);
+    QCOMPARE(run({"rewrite", file}, &out, &err), 0);
+    QFile back(file);
+    QVERIFY(back.open(QIODevice::ReadOnly));
+    QVERIFY(back.readAll().contains("\"lifted\""));
+    write("[[0.5, 0.5, 0.25]]");
+    QCOMPARE(run({"check", file}, &out, &err), 1);
+    QVERIFY2(err.contains("start_set") && err.contains("has 4 coordinates"), err.constData());
+}
+
+void TestFidelityCli::polygonCommand()
+{
+    QByteArray out, err;
+    const QString file = example("001-fig07-koch-snowflake.awb");
+    const QString name = "001 Fig. 7(b): Koch snowflake, negative normals, 5 steps";
+    QCOMPARE(run({"polygon", file, "--item", name, "--level", "1", "--json"}, &out, &err), 0);
+    const QJsonObject o = QJsonDocument::fromJson(out).object();
+    QCOMPARE(o["closed"].toBool(), true);
+    QCOMPARE(o["points"].toArray().size(), 12);  // 3 edges, 4 new edges each, closed
+    QCOMPARE(run({"polygon", file, "--item", name, "--level", "3", "--json"}, &out, &err), 0);
+    QCOMPARE(QJsonDocument::fromJson(out).object()["points"].toArray().size(), 3 * 64);
+    // A subdivision curve: classic subdivision, open.
+    QCOMPARE(run({"polygon", example("000-fig02-cubic-bspline-from-point.awb"), "--item",
+                  "000 Fig. 2: cubic B-spline from a point", "--level", "2", "--json"},
+                 &out, &err),
+             0);
+    QCOMPARE(QJsonDocument::fromJson(out).object()["closed"].toBool(), false);
+    QVERIFY(QJsonDocument::fromJson(out).object()["points"].toArray().size() > 5);
+}
+
+void TestFidelityCli::closedFiguresDrawnClosed()
+{
+    // The snowflake's control triangle and its polygon figure are closed: in the SVG every such
+    // path returns to its first point; an open curve's control polygon does not.
+    const auto paths = [&](const QString &file) {
+        QByteArray out, err;
+        const QString svg = m_dir.filePath(QFileInfo(file).baseName() + ".svg");
+        if (run({"render", example(file), "--out", svg}, &out, &err) != 0)
+            return QList<bool>();
+        QFile f(svg);
+        f.open(QIODevice::ReadOnly);
+        const QString text = QString::fromUtf8(f.readAll());
+        QList<bool> closed;
+        const QRegularExpression re(" d=\"M([-0-9.]+,[-0-9.]+) ([^\"]*)\"");
+        for (auto it = re.globalMatch(text); it.hasNext();) {
+            const auto m = it.next();
+            closed << m.captured(2).trimmed().endsWith("L" + m.captured(1));
+        }
+        return closed;
+    };
+    const QList<bool> snowflake = paths("001-fig07-koch-snowflake.awb");
+    QVERIFY(snowflake.size() >= 2);
+    QVERIFY(snowflake[0]);  // the control triangle
+    QVERIFY(snowflake[1]);  // the polygon after 5 steps
+    // Open figures are written as polylines, never as closed paths.
+    QVERIFY(!paths("001-fig06-koch-curve.awb").contains(true));
+    QFile koch(m_dir.filePath("001-fig06-koch-curve.svg"));
+    QVERIFY(koch.open(QIODevice::ReadOnly));
+    QVERIFY(koch.readAll().contains("<polyline"));
+}
+
+QTEST_MAIN(TestFidelityCli)
+#include "test_fidelity_cli.moc"
