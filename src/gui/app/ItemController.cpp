@@ -218,6 +218,7 @@ void ItemController::setSurfaceView(SurfaceView *view)
                 if (start != end)
                     onControlDragged3D(index, end);
                 m_gesture = 0;
+                scheduleRefresh(); // the docks skipped during the drag
             });
     connect(view, &SurfaceView::startVertexPressed, this, &ItemController::onSurfacePressed);
     connect(view, &SurfaceView::startVertexDragged, this, &ItemController::onStartDragged3D);
@@ -226,6 +227,7 @@ void ItemController::setSurfaceView(SurfaceView *view)
                 if (start != end)
                     onStartDragged3D(index, end);
                 m_gesture = 0;
+                scheduleRefresh();
             });
 }
 
@@ -346,6 +348,11 @@ void ItemController::refreshNow()
     } else if (auto d = item->derivedIfs(); !d) {
         clearViews();
         problem = tr("%1 cannot be drawn: %2").arg(item->name(), item->derivedError());
+    } else if (m_surface && item->pointDimension() == 3 && m_gesture != 0) {
+        // While a point of the net is dragged only the 3D view follows: the S_i and their
+        // spectra do not depend on the points, and the M_i tables (six of 19 x 19 and more)
+        // would cost the drag its frame rate. The docks catch up on release.
+        refreshSurface(item, *d);
     } else if (m_surface && item->pointDimension() == 3) {
         refreshSurface(item, *d);
         m_matrices->setEditable(false);
