@@ -40,6 +40,15 @@ std::unique_ptr<SubdivisionSurfaceItem> loopItem(int depth = 6)
     AlgorithmSpec a = item->algorithm();
     a.depth = depth;
     item->setAlgorithm(a);
+    // As Add > Subdivision surface does: the polygon of the domain's corner limit points,
+    // whose images lie on the surface (the default triangle of net points only converges).
+    const Mat c = item->derivedIfs()->surface->cornerLimitPoints;
+    StartSetSpec start;
+    start.kind = StartSetSpec::Kind::Polygon;
+    start.points.clear();
+    for (Eigen::Index r = 0; r < c.rows(); ++r)
+        start.points.push_back({c(r, 0), c(r, 1), c(r, 2)});
+    item->setStartSet(start);
     return item;
 }
 
@@ -363,7 +372,7 @@ void TestSurfaceView::addMenuMakesSurfaces()
     QVERIFY(item);
     QCOMPARE(item->scheme().kind, SurfaceSchemeSpec::Kind::Loop);
     QCOMPARE(item->mapCount(), 6);
-    // The start triangle lies on the surface: its corners are limit points of the patch.
+    // The start polygon lies on the surface: its corners are limit points of the patch.
     const auto d = item->derivedIfs();
     QVERIFY(d && d->surface);
     const Point p = item->startSet().points.front();

@@ -948,16 +948,15 @@ void MainWindow::addSurface(const SurfaceSchemeSpec &scheme)
     alg.depth = std::min(m_preferences.defaultDepth, 7);
     if (!item->checkAlgorithm(alg))
         item->setAlgorithm(alg);
-    // Start from a triangle of limit points at the domain's corners: its images lie on the
+    // Start from the polygon of limit points at the domain's corners: its images tile the
     // surface from the first level on (a triangle of control points only converges to it).
     if (const auto d = item->derivedIfs(); d && d->surface
                                            && d->surface->cornerLimitPoints.rows() >= 3) {
         const Mat &c = d->surface->cornerLimitPoints;
         StartSetSpec start;
-        start.kind = StartSetSpec::Kind::Triangle;
+        start.kind = c.rows() == 3 ? StartSetSpec::Kind::Triangle : StartSetSpec::Kind::Polygon;
         start.points.clear(); // not the default set's point
-        const Eigen::Index n = c.rows();
-        for (Eigen::Index r : {Eigen::Index(0), n / 3, (2 * n) / 3})
+        for (Eigen::Index r = 0; r < c.rows(); ++r)
             start.points.push_back({c(r, 0), c(r, 1), c(r, 2)});
         item->setStartSet(start);
     }

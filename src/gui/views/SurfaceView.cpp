@@ -673,15 +673,19 @@ void SurfaceView::resetCamera()
 {
     const Mat b = sceneBounds();
     const double aspect = double(std::max(1, width())) / std::max(1, height());
-    // All 8 corners of the box: fit() frames the points it is given.
+    // The net frames the picture (the surface lies in its convex hull); a start set far off
+    // would only shrink it. Without a net: the 8 corners of the scene's box.
     Mat corners(8, 3);
     if (b.rows() == 2)
         for (int k = 0; k < 8; ++k)
             for (int j = 0; j < 3; ++j)
                 corners(k, j) = b((k >> j) & 1, j);
     const bool perspective = m_camera.perspective;
-    m_camera.ortho = OrthoCamera::fit(b.rows() == 2 ? corners : Mat(), -60.0, 30.0, aspect,
-                                      0.04);
+    // From above at 40 degrees: a patch z = f(x, y) and the holes of a subset of maps
+    // (000 Fig. 9) both show.
+    m_camera.ortho = OrthoCamera::fit(m_net.rows() > 0 ? m_net
+                                                       : b.rows() == 2 ? corners : Mat(),
+                                      -60.0, 40.0, aspect, 0.05);
     m_camera.perspective = perspective;
     m_cameraSet = false;
     m_moving = false;
