@@ -31,7 +31,7 @@ void main()
     // Two-sided Lambert as the CPU renderer (SurfaceRaster::shade): a surface patch has no
     // inside; points without a normal are lit as if facing the viewer.
     float lambert = length(normal) > 0.5 ? abs(dot(normalize(normal), light)) : 1.0;
-    shaded = colour.rgb * (0.38 + 0.62 * lambert);
+    shaded = min(colour.rgb * (0.3 + 0.75 * lambert), vec3(1.0));
 }
 )";
 
@@ -159,8 +159,9 @@ void SurfaceGLWidget::paintGL()
             m_program->bind();
             m_program->setUniformValue("mvp", mvp);
             const OrthoCamera &c = m_view->m_camera.ortho;
+            // SurfaceRaster's key light (upper left, in front), from screen to world axes.
             const Eigen::Vector3d light =
-                (-0.45 * c.right() + 0.6 * c.up() + 1.0 * c.toward()).normalized();
+                (-0.6 * c.right() + 0.7 * c.up() + 0.55 * c.toward()).normalized();
             m_program->setUniformValue("light", QVector3D(light.x(), light.y(), light.z()));
             m_program->setUniformValue("pointSize", GLfloat(m_view->splatSize(drawn, dpr)));
             m_buffer.bind();

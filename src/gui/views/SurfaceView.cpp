@@ -152,7 +152,7 @@ private:
 
 } // namespace
 
-QMatrix4x4 SurfaceCamera::matrix(double aspect, double depthRange) const
+QMatrix4x4 SurfaceViewCamera::matrix(double aspect, double depthRange) const
 {
     // lookAt from the core camera's own frame, so that the orthographic matrix maps a world
     // point exactly where SurfaceRaster::toScreen puts it (one camera, two renderers).
@@ -550,7 +550,7 @@ void SurfaceView::renderTo(QPainter *painter, const QRectF &target) const
 {
     // Keep what the screen shows across the width when the figure is narrower than the view.
     SurfaceView *self = const_cast<SurfaceView *>(this);
-    const SurfaceCamera saved = m_camera;
+    const SurfaceViewCamera saved = m_camera;
     const double aspectView = double(std::max(1, width())) / std::max(1, height());
     const double aspect = target.width() / std::max(1.0, target.height());
     if (aspect < aspectView)
@@ -566,7 +566,7 @@ void SurfaceView::renderTo(QPainter *painter, const QRectF &target) const
             painter->drawImage(target, raster);
     }
     // The overlays as vectors, through the same (orthographic) camera.
-    SurfaceCamera ortho = m_camera;
+    SurfaceViewCamera ortho = m_camera;
     ortho.perspective = false;
     self->m_camera = ortho;
     const QMatrix4x4 mvp = viewMatrix(target.size());
@@ -656,7 +656,7 @@ Mat SurfaceView::sceneBounds() const
     return b;
 }
 
-void SurfaceView::setCamera(const SurfaceCamera &camera)
+void SurfaceView::setCamera(const SurfaceViewCamera &camera)
 {
     m_camera = camera;
     m_cameraSet = true;

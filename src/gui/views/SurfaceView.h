@@ -46,7 +46,7 @@ struct SurfaceCloud {
 
 // The camera shared by both paths: the core's orthographic camera (azimuth, elevation, centre,
 // half height) plus an optional perspective with the same framing at the centre's depth.
-struct SurfaceCamera {
+struct SurfaceViewCamera {
     OrthoCamera ortho;
     bool perspective = false;
     double fieldOfView = 30.0;  // degrees, vertical (perspective only)
@@ -98,8 +98,8 @@ public:
     std::size_t pointBudget() const { return m_budget; }
 
     // ---- camera ----
-    SurfaceCamera camera() const { return m_camera; }
-    void setCamera(const SurfaceCamera &camera);
+    SurfaceViewCamera camera() const { return m_camera; }
+    void setCamera(const SurfaceViewCamera &camera);
     void setPerspective(bool on);
     // Orbit by screen pixels (turntable: horizontal turns about z, vertical tilts).
     void orbit(double dxPixels, double dyPixels);
@@ -199,7 +199,7 @@ private:
     bool m_editable = true;
     std::size_t m_budget = 1'200'000, m_movingBudget = 150'000;
 
-    SurfaceCamera m_camera;
+    SurfaceViewCamera m_camera;
     bool m_cameraSet = false;    // the user moved the camera: data changes keep it
     bool m_moving = false;       // camera moving: GL decimates, CPU draws coarse
     QTimer m_settle;             // camera stopped -> full detail
