@@ -22,6 +22,7 @@
 #include <QCheckBox>
 #include <QElapsedTimer>
 #include <QOpenGLWidget>
+#include <QProcess>
 #include <QStackedWidget>
 #include <QStandardPaths>
 #include <QTableWidget>
@@ -129,6 +130,8 @@ private slots:
     void tableEditsXyz();
     void printsTheSurface();
     void heatMapShowsExactEntries();
+    void perspectiveAndLayers();
+    void batchPrintsSurfaces();
     void addMenuMakesSurfaces();
     void glPathUnderXvfb();
     void glDragUnderXvfb();
@@ -360,6 +363,64 @@ void TestSurfaceView::heatMapShowsExactEntries()
     QCOMPARE(heat->cellColour(0.0), QColor(Qt::white));
     heat->resize(heat->sizeHint());
     QCOMPARE(heat->cellAt(QPointF(heat->width() - 6, heat->height() - 6)), QPoint(18, 18));
+}
+
+void TestSurfaceView::perspectiveAndLayers()
+{
+    auto item = loopItem(5);
+    SurfaceView view(nullptr, false);
+    view.resize(400, 300);
+    feed(view, *item);
+    view.resetCamera();
+    // The centre of the picture stays put; points off it move (nearer ones outward).
+    const QPointF ortho = view.controlPointScreen(0);
+    view.setPerspective(true);
+    QVERIFY(view.camera().perspective);
+    QVERIFY((view.controlPointScreen(0) - ortho).manhattanLength() > 1.0);
+    view.setPerspective(false);
+    QVERIFY((view.controlPointScreen(0) - ortho).manhattanLength() < 1e-3);
+    // The attractor layer off: the CPU picture is empty; the overlays stay.
+    const qint64 all = drawnPixels(view.renderImage(QSize(400, 300)));
+    view.setLayerVisible(SurfaceView::Layer::Attractor, false);
+    const qint64 overlays = drawnPixels(view.renderImage(QSize(400, 300)));
+    QVERIFY(overlays > 0 && overlays < all);
+    view.setLayerVisible(SurfaceView::Layer::ControlNet, false);
+    view.setLayerVisible(SurfaceView::Layer::Axes, false);
+    QVERIFY(drawnPixels(view.renderImage(QSize(400, 300))) < overlays);
+}
+
+void TestSurfaceView::batchPrintsSurfaces()
+{
+    // --print-pdf and --screenshot of a surface item with QT_QPA_PLATFORM=offscreen: the CPU
+    // renderer draws both.
+    Project project;
+    project.addItem(loopItem());
+    const QString file = m_dir.path() + QStringLiteral("/batch.awb");
+    QString error;
+    QVERIFY2(project.saveAs(file, &error), qPrintable(error));
+    const QString dir = qEnvironmentVariable("AWB_BIN_DIR",
+                                             QCoreApplication::applicationDirPath() + "/../bin");
+    QProcess p;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    env.insert(QStringLiteral("HOME"), m_dir.path());
+    env.insert(QStringLiteral("XDG_CONFIG_HOME"), m_dir.path() + QStringLiteral("/config"));
+    env.insert(QStringLiteral("XDG_RUNTIME_DIR"), m_dir.path());
+    p.setProcessEnvironment(env);
+    const QString pdf = m_dir.path() + QStringLiteral("/batch.pdf");
+    const QString png = m_dir.path() + QStringLiteral("/batch.png");
+    QElapsedTimer timer;
+    timer.start();
+    p.start(dir + QStringLiteral("/attractor-workbench"),
+            {file, QStringLiteral("--print-pdf"), pdf, QStringLiteral("--screenshot"), png,
+             QStringLiteral("--window-size"), QStringLiteral("1200x800")});
+    QVERIFY(p.waitForFinished(120000));
+    QCOMPARE(p.exitCode(), 0);
+    QVERIFY2(timer.elapsed() < 30000, "the batch waited for a render that never came");
+    QVERIFY(QFileInfo(pdf).size() > 20000);
+    const QImage shot(png);
+    QCOMPARE(shot.size(), QSize(1200, 800));
+    QVERIFY(drawnPixels(shot) > 0);
 }
 
 void TestSurfaceView::addMenuMakesSurfaces()

@@ -826,11 +826,11 @@ void SurfaceView::paintOverlay(QPainter &p, const QMatrix4x4 &mvp, const QRectF 
                                       QColor(40, 70, 200)};
             const QString names[] = {tr("x"), tr("y"), tr("z")};
             // Fonts set in pixels (a printer's) have no point size: scale what is set.
-            QFont font = p.font();
-            if (font.pointSizeF() > 0)
-                font.setPointSizeF(font.pointSizeF() * unit);
-            else if (font.pixelSize() > 0)
-                font.setPixelSize(std::max(1, int(std::lround(font.pixelSize() * unit))));
+            // The widget's text size in screen pixels times `unit`, whatever the painter's
+            // device: a printed figure's labels look as on screen.
+            QFont font = this->font();
+            font.setPixelSize(std::max(1, int(std::lround(0.9 * QFontInfo(this->font())
+                                                                      .pixelSize() * unit))));
             p.setFont(font);
             for (int j = 0; j < 3; ++j) {
                 const QPointF o = at(corners, 0), e = at(corners, 1 << j);
