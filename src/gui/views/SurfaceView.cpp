@@ -126,11 +126,17 @@ public:
                     add(p.row(r).transpose(), Eigen::Vector3d::Zero(), c);
                 continue;
             }
-            const Eigen::Vector3d p0 = p.row(0).transpose(), p1 = p.row(1).transpose(),
-                                  p2 = p.row(2).transpose();
-            Eigen::Vector3d normal = (p1 - p0).cross(p2 - p0);
+            // The fan's summed cross products: twice the (flat) polygon's area along its
+            // normal, for a triangle and for a polygon start set alike.
+            const Eigen::Vector3d p0 = p.row(0).transpose();
+            Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+            for (Eigen::Index r = 1; r + 1 < p.rows(); ++r) {
+                const Eigen::Vector3d a = p.row(r).transpose() - p0;
+                const Eigen::Vector3d b = p.row(r + 1).transpose() - p0;
+                normal += a.cross(b);
+            }
             const double len = normal.norm();
-            cloud.area += 0.5 * len; // a triangle's area (polygons: their first triangle)
+            cloud.area += 0.5 * len;
             normal = len > 0 ? Eigen::Vector3d(normal / len) : Eigen::Vector3d::Zero();
             add(p.colwise().mean().transpose(), normal, c);
         }
