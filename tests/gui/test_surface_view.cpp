@@ -267,6 +267,30 @@ void TestSurfaceView::dragIsOneUndoStep()
     QTest::qWait(50);
     QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering(), 10000);
     QVERIFY(compare(before, view->cpuImage()).coverageMismatch < 0.01);
+
+    // A start-set vertex drags the same way: one undo step. (Pick one apart from the net's
+    // handles: under the mouse the nearer handle wins.)
+    int v = -1;
+    for (int i = 0; i < view->startVertexCount() && v < 0; ++i) {
+        bool free = true;
+        for (int c = 0; c < view->controlPointCount(); ++c)
+            free = free && (view->controlPointScreen(c) - view->startVertexScreen(i))
+                                   .manhattanLength() > 4;
+        if (free)
+            v = i;
+    }
+    QVERIFY2(v >= 0, "every start vertex lies on a control point");
+    const Point vertex = item->startSet().points[std::size_t(v)];
+    const QPoint at = view->startVertexScreen(v).toPoint();
+    const int index = w.project()->undoStack()->index();
+    QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, at);
+    QTest::mouseMove(view, at + QPoint(15, 0));
+    QTest::mouseMove(view, at + QPoint(30, 0));
+    QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, at + QPoint(30, 0));
+    QCOMPARE(w.project()->undoStack()->index(), index + 1);
+    QVERIFY(item->startSet().points[std::size_t(v)] != vertex);
+    w.project()->undoStack()->undo();
+    QCOMPARE(item->startSet().points[std::size_t(v)], vertex);
 }
 
 void TestSurfaceView::mapsOffMakeTheFractal()
@@ -372,13 +396,20 @@ void TestSurfaceView::perspectiveAndLayers()
     view.resize(400, 300);
     feed(view, *item);
     view.resetCamera();
-    // The centre of the picture stays put; points off it move (nearer ones outward).
+    // The CPU path is orthographic: perspective is kept for GL, the net stays on the picture.
     const QPointF ortho = view.controlPointScreen(0);
     view.setPerspective(true);
     QVERIFY(view.camera().perspective);
-    QVERIFY((view.controlPointScreen(0) - ortho).manhattanLength() > 1.0);
-    view.setPerspective(false);
     QVERIFY((view.controlPointScreen(0) - ortho).manhattanLength() < 1e-3);
+    // The perspective matrix itself: the centre stays put, points off it move.
+    const QMatrix4x4 o = SurfaceViewCamera{view.camera().ortho, false}.matrix(4.0 / 3.0, 5.0);
+    const QMatrix4x4 p = view.camera().matrix(4.0 / 3.0, 5.0);
+    const Eigen::Vector3d c = view.camera().ortho.centre;
+    const QVector3D centre(float(c.x()), float(c.y()), float(c.z()));
+    QVERIFY((o.map(centre) - p.map(centre)).toVector2D().length() < 1e-4);
+    const QVector3D off = centre + QVector3D(1, 1, 1);
+    QVERIFY((o.map(off) - p.map(off)).toVector2D().length() > 1e-3);
+    view.setPerspective(false);
     // The attractor layer off: the CPU picture is empty; the overlays stay.
     const qint64 all = drawnPixels(view.renderImage(QSize(400, 300)));
     view.setLayerVisible(SurfaceView::Layer::Attractor, false);

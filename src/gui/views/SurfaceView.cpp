@@ -597,7 +597,11 @@ double SurfaceView::depthRange() const
 
 QMatrix4x4 SurfaceView::viewMatrix(QSizeF size) const
 {
-    return m_camera.matrix(size.width() / std::max(1.0, size.height()), depthRange());
+    // The CPU renderer is orthographic only: without GL the overlays (and picking) follow it,
+    // so that the net stays on the surface it controls.
+    SurfaceViewCamera camera = m_camera;
+    camera.perspective = camera.perspective && m_gl;
+    return camera.matrix(size.width() / std::max(1.0, size.height()), depthRange());
 }
 
 QPointF SurfaceView::project(const QMatrix4x4 &mvp, const QRectF &target,
@@ -622,7 +626,7 @@ QVector3D SurfaceView::screenDelta(const QPointF &delta, const QVector3D &at) co
     // distance to the eye times the field of view for the perspective one.
     const OrthoCamera &c = m_camera.ortho;
     double halfHeight = c.halfHeight;
-    if (m_camera.perspective) {
+    if (m_camera.perspective && m_gl) {
         const double t = std::tan(0.5 * m_camera.fieldOfView * degree);
         const double distance = c.halfHeight / t - (vec(at) - c.centre).dot(c.toward());
         halfHeight = std::max(distance, 1e-9) * t;
@@ -902,8 +906,17 @@ void SurfaceView::mousePressEvent(QMouseEvent *event)
     }
     if (event->button() != Qt::LeftButton)
         return;
-    const int c = m_editable && isLayerVisible(Layer::ControlNet) ? hit(m_net, pos) : -1;
-    const int s = c < 0 && m_editable ? hit(m_start3, pos) : -1;
+    int c = m_editable && isLayerVisible(Layer::ControlNet) ? hit(m_net, pos) : -1;
+    int s = m_editable ? hit(m_start3, pos) : -1;
+    // Start vertices often sit next to net points (limit points at the corners): the handle
+    // nearer to the mouse wins.
+    if (c >= 0 && s >= 0) {
+        const QPointF dc = controlPointScreen(c) - pos, ds = startVertexScreen(s) - pos;
+        if (QPointF::dotProduct(ds, ds) < QPointF::dotProduct(dc, dc))
+            c = -1;
+        else
+            s = -1;
+    }
     if (c >= 0) {
         m_drag.kind = DragKind::ControlPoint;
         m_drag.index = c;

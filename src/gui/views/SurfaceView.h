@@ -100,6 +100,7 @@ public:
     // ---- camera ----
     SurfaceViewCamera camera() const { return m_camera; }
     void setCamera(const SurfaceViewCamera &camera);
+    // Perspective applies to the GL path; the CPU path (and so print) stays orthographic.
     void setPerspective(bool on);
     // Orbit by screen pixels (turntable: horizontal turns about z, vertical tilts).
     void orbit(double dxPixels, double dyPixels);
