@@ -8,6 +8,7 @@
 #include "gui/app/Messages.h"
 #include "gui/views/AttractorRenderer.h"
 #include "gui/views/AttractorView.h"
+#include "gui/views/SurfaceView.h"
 #include "model/Item.h"
 #include "model/Project.h"
 
@@ -126,8 +127,12 @@ int main(int argc, char *argv[])
     QObject::connect(&poll, &QTimer::timeout, &app, [&] {
         waited += 100;
         awb::AttractorView *view = window.attractorView();
-        const bool done = (view->currentImageInfo().final && !view->renderer()->isBusy())
-                          || !view->lastError().isEmpty() || !window.controller()->problem().isEmpty();
+        // A surface item is drawn by the 3D view (its CPU renderer without GL).
+        const bool surface = window.controller()->showsSurface();
+        const bool done = surface ? !window.surfaceView()->isRendering()
+                                  : (view->currentImageInfo().final && !view->renderer()->isBusy())
+                                        || !view->lastError().isEmpty()
+                                        || !window.controller()->problem().isEmpty();
         if ((done && !window.controller()->analysisRunning() && waited >= 500) || waited > 60000) {
             poll.stop();
             finish();

@@ -2,6 +2,7 @@
 
 #include "gui/app/ItemController.h"
 #include "gui/views/AttractorView.h"
+#include "gui/views/SurfaceView.h"
 #include "gui/views/MatrixView.h"
 #include "model/NumberFormat.h"
 #include "gui/views/SpectrumView.h"
@@ -73,8 +74,9 @@ void paintSpectrum(SpectrumView *view, QPainter *painter, const QRectF &target)
     painter->restore();
 }
 
-FigureSheet::FigureSheet(Item *item, AttractorView *attractor, SpectrumView *spectrum)
-    : m_item(item), m_attractor(attractor), m_spectrum(spectrum)
+FigureSheet::FigureSheet(Item *item, AttractorView *attractor, SpectrumView *spectrum,
+                         SurfaceView *surface)
+    : m_item(item), m_attractor(attractor), m_spectrum(spectrum), m_surface(surface)
 {
 }
 
@@ -113,6 +115,12 @@ QStringList FigureSheet::matrixLines() const
     // The matrix view's matrices, as text with right-aligned columns: fractions where exact
     // (3/8 reads better than 0.375), complex entries as a + bi.
     for (const NamedMatrix &m : namedMatrices(*d)) {
+        // A surface's S_i (16 x 16 and up) would shrink the page's text to dust: name them.
+        if (m.rows() > 12) {
+            lines << tr("%1: %2 × %3 (see the Matrices dock)")
+                         .arg(subscriptName(m.name)).arg(m.rows()).arg(m.cols());
+            continue;
+        }
         QList<QStringList> cells;
         int width = 1;
         for (Eigen::Index r = 0; r < m.rows(); ++r) {
@@ -174,7 +182,10 @@ void FigureSheet::paint(QPainter *painter, const QRectF &page) const
     const QRectF figure(page.left(), top, page.width() * 0.6, page.bottom() - top);
     painter->setPen(QPen(Qt::gray, 0));
     painter->drawRect(figure);
-    if (m_attractor)
+    const auto *attractorItem = qobject_cast<const AttractorItem *>(m_item);
+    if (m_surface && attractorItem && attractorItem->pointDimension() == 3)
+        m_surface->renderTo(painter, figure.adjusted(1, 1, -1, -1));
+    else if (m_attractor)
         m_attractor->renderTo(painter, figure.adjusted(1, 1, -1, -1),
                               AttractorView::Framing::FitContents);
     const double rightX = figure.right() + unit * 2;

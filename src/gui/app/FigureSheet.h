@@ -18,11 +18,14 @@ class AttractorView;
 class Item;
 class MatrixView;
 class SpectrumView;
+class SurfaceView;
 
 class FigureSheet {
     Q_DECLARE_TR_FUNCTIONS(awb::FigureSheet)
 public:
-    FigureSheet(Item *item, AttractorView *attractor, SpectrumView *spectrum);
+    // `surface` draws the figure of items with 3D points (at its current camera).
+    FigureSheet(Item *item, AttractorView *attractor, SpectrumView *spectrum,
+                SurfaceView *surface = nullptr);
 
     // The caption's lines: item name and kind, then "label = value" of every parameter.
     QStringList caption() const;
@@ -43,6 +46,7 @@ private:
     Item *m_item;
     AttractorView *m_attractor;
     SpectrumView *m_spectrum;
+    SurfaceView *m_surface;
 };
 
 // Paints the spectrum plot into `target` as vectors (QCustomPlot records into a QPicture).

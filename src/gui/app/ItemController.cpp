@@ -9,10 +9,12 @@
 #include "gui/views/MatrixView.h"
 #include "model/NumberFormat.h"
 #include "gui/views/SpectrumView.h"
+#include "gui/views/SurfaceView.h"
 #include "model/AttractorItem.h"
 #include "model/ExactCurve.h"
 #include "model/Project.h"
 #include "model/SubdivisionCurveItem.h"
+#include "model/SubdivisionSurfaceItem.h"
 
 #include <QColor>
 #include <algorithm>
@@ -194,6 +196,110 @@ void ItemController::setItem(Item *item)
     m_attractor->setAutoFit(true);
     refreshNow();
     m_attractor->fitToContents();
+    if (m_surface && showsSurface())
+        m_surface->resetCamera();
+}
+
+bool ItemController::showsSurface() const
+{
+    const auto *item = qobject_cast<const AttractorItem *>(m_item.data());
+    return m_surface && item && item->pointDimension() == 3;
+}
+
+void ItemController::setSurfaceView(SurfaceView *view)
+{
+    m_surface = view;
+    if (!view)
+        return;
+    connect(view, &SurfaceView::controlPointPressed, this, &ItemController::onSurfacePressed);
+    connect(view, &SurfaceView::controlPointDragged, this, &ItemController::onControlDragged3D);
+    connect(view, &SurfaceView::controlPointReleased, this,
+            [this](int index, const QVector3D &start, const QVector3D &end) {
+                if (start != end)
+                    onControlDragged3D(index, end);
+                m_gesture = 0;
+                scheduleRefresh(); // the docks skipped during the drag
+            });
+    connect(view, &SurfaceView::startVertexPressed, this, &ItemController::onSurfacePressed);
+    connect(view, &SurfaceView::startVertexDragged, this, &ItemController::onStartDragged3D);
+    connect(view, &SurfaceView::startVertexReleased, this,
+            [this](int index, const QVector3D &start, const QVector3D &end) {
+                if (start != end)
+                    onStartDragged3D(index, end);
+                m_gesture = 0;
+                scheduleRefresh();
+            });
+}
+
+void ItemController::onSurfacePressed()
+{
+    if (m_item && m_item->project())
+        m_gesture = m_item->project()->beginGesture();
+}
+
+void ItemController::onControlDragged3D(int index, const QVector3D &world)
+{
+    if (auto *item = qobject_cast<AttractorItem *>(m_item.data()))
+        item->moveControlPoint(index, {world.x(), world.y(), world.z()}, m_gesture);
+}
+
+void ItemController::onStartDragged3D(int index, const QVector3D &world)
+{
+    auto *item = qobject_cast<AttractorItem *>(m_item.data());
+    if (!item)
+        return;
+    StartSetSpec s = item->startSet();
+    if (index < 0 || index >= int(s.points.size()))
+        return;
+    s.points[std::size_t(index)] = {world.x(), world.y(), world.z()};
+    item->setStartSet(s, m_gesture);
+}
+
+void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
+{
+    // The 2D view shows nothing of a surface; the 3D view gets the IFS, the net, the start
+    // set and the classic route (the net after k rounds).
+    m_attractor->setIfs(nullptr, StartSet{});
+    m_attractor->setControlPolygons({});
+    m_attractor->setExactCurve(Mat());
+    m_attractor->setSubdivisionPolygons({});
+    SurfaceView::RenderSettings rs = m_surface->renderSettings();
+    rs.depth = m_maxDepth > 0 ? std::min(item->algorithm().depth, m_maxDepth)
+                              : item->algorithm().depth;
+    rs.colorMode = colorMode(item->style().colorBy);
+    rs.prefixLength = std::clamp(item->style().prefixLength, 1, 3);
+    rs.pointSize = item->style().pointSize;
+    rs.palette.clear();
+    for (const QString &c : item->style().colors)
+        rs.palette.append(QColor(c));
+    if (rs.palette.isEmpty())
+        rs.palette = m_palette;
+    m_surface->setRenderSettings(rs);
+    m_surface->setControlPointsEditable(true);
+    const Mat P = toMatrix(item->controlPoints(0), 3);
+    std::vector<std::vector<int>> faces;
+    Mat mesh;
+    std::vector<std::vector<int>> meshFaces;
+    if (const auto *surface = qobject_cast<const SubdivisionSurfaceItem *>(item)) {
+        try {
+            faces = surface->refinedMesh(0).faces;
+            if (surface->meshRounds() > 0) {
+                const LatticeMesh refined = surface->refinedMesh(surface->meshRounds());
+                mesh = refined.points;
+                meshFaces = refined.faces;
+            }
+        } catch (const std::exception &) {
+            // No net faces: the handles still show (and move) the points.
+        }
+    }
+    m_surface->setControlNet(P, faces);
+    m_surface->setMesh(mesh, meshFaces);
+    m_surface->setStartVertices(toMatrix(item->startSet().points, 3));
+    try {
+        m_surface->setIfs(std::make_shared<const Ifs>(d.ifs), item->coreStartSet(d), d.mapIndex);
+    } catch (const std::exception &) {
+        m_surface->setIfs(nullptr, StartSet{});
+    }
 }
 
 void ItemController::setSubdivisionSteps(int steps)
@@ -223,6 +329,12 @@ void ItemController::clearViews()
     m_charts->setPolygonLengths({});
     m_charts->setBoxCounting(BoxDimension{});
     m_charts->setModuli({});
+    if (m_surface) {
+        m_surface->setIfs(nullptr, StartSet{});
+        m_surface->setControlNet(Mat(), {});
+        m_surface->setMesh(Mat(), {});
+        m_surface->setStartVertices(Mat());
+    }
 }
 
 void ItemController::refreshNow()
@@ -236,6 +348,27 @@ void ItemController::refreshNow()
     } else if (auto d = item->derivedIfs(); !d) {
         clearViews();
         problem = tr("%1 cannot be drawn: %2").arg(item->name(), item->derivedError());
+    } else if (m_surface && item->pointDimension() == 3 && m_gesture != 0) {
+        // While a point of the net is dragged only the 3D view follows: the S_i and their
+        // spectra do not depend on the points, and the M_i tables (six of 19 x 19 and more)
+        // would cost the drag its frame rate. The docks catch up on release.
+        refreshSurface(item, *d);
+    } else if (m_surface && item->pointDimension() == 3) {
+        refreshSurface(item, *d);
+        m_matrices->setEditable(false);
+        m_matrices->setMatrices(namedMatrices(*d, false));
+        const QList<MapSpectrum> spectra = mapSpectra(*d);
+        m_spectrum->setMaps(spectra);
+        QList<AnalysisCharts::MapModuli> moduli;
+        for (const MapSpectrum &m : spectra) {
+            AnalysisCharts::MapModuli mm{m.label, {}};
+            for (const Complex &z : m.spectrum.values)
+                mm.moduli.push_back(std::abs(z));
+            moduli.append(mm);
+        }
+        m_charts->setModuli(moduli);
+        if (!d->note.isEmpty())
+            problem = d->note;
     } else {
         try {
             if (d->ifs.size() > 0 || d->iterate)

@@ -10,6 +10,7 @@
 #include <QObject>
 #include <QPointer>
 #include <QTimer>
+#include <QVector3D>
 #include <atomic>
 #include <functional>
 #include <memory>
@@ -24,6 +25,7 @@ class Item;
 class MatrixView;
 class Messages;
 class SpectrumView;
+class SurfaceView;
 struct AnalysisResult;
 
 struct DerivedIfs;
@@ -43,6 +45,11 @@ public:
 
     void setItem(Item *item);
     Item *item() const { return m_item; }
+    // The 3D view that shows items with 3D points (surfaces) instead of the attractor view.
+    void setSurfaceView(SurfaceView *view);
+    SurfaceView *surfaceView() const { return m_surface; }
+    // Whether the current item is shown by the surface view.
+    bool showsSurface() const;
     // Default render depth when an item asks for more than the preferences allow (0: none).
     void setMaxDepth(int depth) { m_maxDepth = depth; refreshNow(); }
     void setPalette(const QList<QColor> &palette) { m_palette = palette; refreshNow(); }
@@ -88,11 +95,17 @@ private:
     void onStartDragged(int index, const QPointF &world);
     void onStartReleased(int index, const QPointF &start, const QPointF &end);
     void onCellEdited(int matrix, int row, int column, double value);
+    // The surface view's part of refreshNow() (items with 3D points).
+    void refreshSurface(AttractorItem *item, const DerivedIfs &d);
+    void onSurfacePressed();
+    void onControlDragged3D(int index, const QVector3D &world);
+    void onStartDragged3D(int index, const QVector3D &world);
 
     AttractorView *m_attractor;
     MatrixView *m_matrices;
     SpectrumView *m_spectrum;
     AnalysisCharts *m_charts;
+    SurfaceView *m_surface = nullptr;
     QPointer<Item> m_item;
     QList<QMetaObject::Connection> m_connections;
     QTimer m_refreshTimer;

@@ -9,6 +9,7 @@
 #include "gui/views/AttractorView.h"
 #include "gui/views/MatrixView.h"
 #include "gui/views/SpectrumView.h"
+#include "gui/views/SurfaceView.h"
 #include "model/AttractorItem.h"
 #include "model/ItemRegistry.h"
 #include "model/Project.h"
@@ -16,6 +17,8 @@
 #include "model/ProjectTreeModel.h"
 #include "model/Recovery.h"
 #include "model/SubdivisionCurveItem.h"
+#include "model/SubdivisionSurfaceItem.h"
+#include "core/ifs/SurfaceIfs.h"
 
 #include <QAction>
 #include <QApplication>
@@ -41,9 +44,11 @@
 #include <QScreen>
 #include <QSettings>
 #include <QSpinBox>
+#include <QStackedWidget>
 #include <QStatusBar>
 #include <QSvgGenerator>
 #include <QTabWidget>
+#include <QTableWidget>
 #include <QToolBar>
 #include <QToolButton>
 #include <QTreeView>
@@ -146,7 +151,14 @@ void MainWindow::createViews()
 {
     m_attractor = new AttractorView;
     m_attractor->setObjectName(QStringLiteral("attractorView"));
-    setCentralWidget(m_attractor);
+    // The central view follows the current item's dimension: the plane view for curves, the
+    // 3D view for surfaces.
+    m_surface = new SurfaceView;
+    m_surface->setObjectName(QStringLiteral("surfaceView"));
+    m_central = new QStackedWidget;
+    m_central->addWidget(m_attractor);
+    m_central->addWidget(m_surface);
+    setCentralWidget(m_central);
     m_matrices = new MatrixView;
     m_spectrum = new SpectrumView;
     m_charts = new AnalysisCharts;
@@ -168,6 +180,12 @@ void MainWindow::createViews()
     m_undoView = new QUndoView(m_project->undoStack());
     m_undoView->setEmptyLabel(tr("<original>"));
     m_controller = new ItemController(m_attractor, m_matrices, m_spectrum, m_charts, this);
+    m_controller->setSurfaceView(m_surface);
+    // A click on a control point in the 3D view selects its row: x, y, z to edit exactly.
+    connect(m_surface, &SurfaceView::controlPointPressed, this, [this](int index) {
+        if (auto *t = qobject_cast<QTableWidget *>(m_properties->editor(QStringLiteral("points"))))
+            t->selectRow(index);
+    });
 
     // Status bar: cursor position, problems, long-work progress with a cancel button.
     m_cursorLabel = new QLabel;
@@ -327,11 +345,26 @@ void MainWindow::createActions()
     make(QStringLiteral("actionDelete"), tr("&Delete Item"), QStringLiteral("edit-delete"),
          QKeySequence::Delete, &MainWindow::deleteItem);
     make(QStringLiteral("actionZoomIn"), tr("Zoom &In"), QStringLiteral("zoom-in"),
-         QKeySequence::ZoomIn, [this] { m_attractor->zoomIn(); });
+         QKeySequence::ZoomIn, [this] {
+             if (m_controller->showsSurface())
+                 m_surface->zoomBy(1.25);
+             else
+                 m_attractor->zoomIn();
+         });
     make(QStringLiteral("actionZoomOut"), tr("Zoom &Out"), QStringLiteral("zoom-out"),
-         QKeySequence::ZoomOut, [this] { m_attractor->zoomOut(); });
+         QKeySequence::ZoomOut, [this] {
+             if (m_controller->showsSurface())
+                 m_surface->zoomBy(0.8);
+             else
+                 m_attractor->zoomOut();
+         });
     make(QStringLiteral("actionFit"), tr("&Fit"), QStringLiteral("zoom-fit-best"),
-         QKeySequence(tr("Ctrl+0")), [this] { m_attractor->fitToContents(); });
+         QKeySequence(tr("Ctrl+0")), [this] {
+             if (m_controller->showsSurface())
+                 m_surface->resetCamera();
+             else
+                 m_attractor->fitToContents();
+         });
     make(QStringLiteral("actionStopRender"), tr("&Stop Drawing"), QStringLiteral("process-stop"),
          QKeySequence(), [this] { m_attractor->cancelRender(); });
     make(QStringLiteral("actionRenderAgain"), tr("&Draw Again"), QStringLiteral("view-refresh"),
@@ -365,6 +398,31 @@ void MainWindow::createActions()
     };
     layerAction(QStringLiteral("actionShowControl"), tr("&Control Polygon"),
                 AttractorView::Layer::ControlPolygon, true);
+    // The 3D view's layers and camera.
+    const auto surfaceAction = [this](const QString &name, const QString &text,
+                                      SurfaceView::Layer layer, bool on) {
+        auto *a = new QAction(text, this);
+        a->setObjectName(name);
+        a->setCheckable(true);
+        a->setChecked(on);
+        m_surface->setLayerVisible(layer, on);
+        connect(a, &QAction::toggled, this,
+                [this, layer](bool v) { m_surface->setLayerVisible(layer, v); });
+    };
+    surfaceAction(QStringLiteral("actionShowNet"), tr("Control &Net (3D)"),
+                  SurfaceView::Layer::ControlNet, true);
+    surfaceAction(QStringLiteral("actionShowMesh"), tr("Subdivided &Mesh (3D)"),
+                  SurfaceView::Layer::Mesh, true);
+    surfaceAction(QStringLiteral("actionShowSurfaceAttractor"), tr("&Attractor (3D)"),
+                  SurfaceView::Layer::Attractor, true);
+    surfaceAction(QStringLiteral("actionShowAxes"), tr("A&xes (3D)"),
+                  SurfaceView::Layer::Axes, true);
+    surfaceAction(QStringLiteral("actionShowBox"), tr("&Bounding Box (3D)"),
+                  SurfaceView::Layer::Box, false);
+    auto *perspective = new QAction(tr("&Perspective (3D)"), this);
+    perspective->setObjectName(QStringLiteral("actionPerspective"));
+    perspective->setCheckable(true);
+    connect(perspective, &QAction::toggled, m_surface, &SurfaceView::setPerspective);
     layerAction(QStringLiteral("actionShowStart"), tr("&Start Set"),
                 AttractorView::Layer::StartSet, true);
     layerAction(QStringLiteral("actionShowExact"), tr("&Exact Curve"),
@@ -432,6 +490,10 @@ void MainWindow::createMenus()
     QMenu *itemMenu = menuBar()->addMenu(tr("&Item"));
     QMenu *add = itemMenu->addMenu(QIcon::fromTheme(QStringLiteral("list-add")), tr("&Add"));
     for (const ItemRegistry::Kind &kind : ItemRegistry::instance().kinds()) {
+        if (kind.type == SubdivisionSurfaceItem::staticType()) {
+            addSurfaceMenu(add, kind.displayName());
+            continue;
+        }
         QAction *a = add->addAction(kind.displayName());
         a->setObjectName(QStringLiteral("actionAdd_") + kind.type);
         const QString type = kind.type;
@@ -452,6 +514,10 @@ void MainWindow::createMenus()
     m_viewMenu->addAction(action(QStringLiteral("actionShowStart")));
     m_viewMenu->addAction(action(QStringLiteral("actionShowExact")));
     m_viewMenu->addAction(action(QStringLiteral("actionShowGrid")));
+    m_viewMenu->addSeparator();
+    for (const char *name : {"actionShowSurfaceAttractor", "actionShowNet", "actionShowMesh",
+                             "actionShowAxes", "actionShowBox", "actionPerspective"})
+        m_viewMenu->addAction(action(QString::fromLatin1(name)));
     m_viewMenu->addSeparator();
     for (QDockWidget *d : std::as_const(m_docks))
         m_viewMenu->addAction(d->toggleViewAction());
@@ -502,6 +568,8 @@ void MainWindow::setCurrentItem(Item *item)
 {
     m_current = item;
     m_controller->setItem(item);
+    m_central->setCurrentWidget(m_controller->showsSurface() ? static_cast<QWidget *>(m_surface)
+                                                             : m_attractor);
     m_properties->setItem(item);
     const QModelIndex index = item ? m_treeModel->indexOf(item) : QModelIndex();
     if (m_tree->currentIndex() != index)
@@ -660,7 +728,7 @@ void MainWindow::print()
     QPrintDialog dialog(&printer, this);
     if (dialog.exec() != QDialog::Accepted)
         return;
-    FigureSheet sheet(m_current, m_attractor, m_spectrum);
+    FigureSheet sheet(m_current, m_attractor, m_spectrum, m_surface);
     const bool ok = sheet.print(&printer);
     endExportProgress();
     if (sheet.cancelled())
@@ -676,7 +744,7 @@ void MainWindow::printPreview()
     QPrintPreviewDialog preview(&printer, this);
     preview.resize(1100, 800);
     connect(&preview, &QPrintPreviewDialog::paintRequested, this, [this](QPrinter *p) {
-        FigureSheet(m_current, m_attractor, m_spectrum).print(p);
+        FigureSheet(m_current, m_attractor, m_spectrum, m_surface).print(p);
         endExportProgress();
     });
     preview.exec();
@@ -684,7 +752,8 @@ void MainWindow::printPreview()
 
 bool MainWindow::printToPdf(const QString &fileName, QString *error)
 {
-    const bool ok = FigureSheet(m_current, m_attractor, m_spectrum).writePdf(fileName, error);
+    const bool ok = FigureSheet(m_current, m_attractor, m_spectrum, m_surface)
+                        .writePdf(fileName, error);
     endExportProgress();
     return ok;
 }
@@ -696,7 +765,10 @@ bool MainWindow::exportView(const ExportDialog::Options &o, QString *error)
     const auto paint = [this, &o, &target](QPainter &p) {
         switch (o.target) {
         case ExportDialog::Target::Attractor:
-            m_attractor->renderTo(&p, target);
+            if (m_controller->showsSurface())
+                m_surface->renderTo(&p, target);
+            else
+                m_attractor->renderTo(&p, target);
             break;
         case ExportDialog::Target::Spectrum:
             paintSpectrum(m_spectrum, &p, target);
@@ -726,7 +798,7 @@ bool MainWindow::exportView(const ExportDialog::Options &o, QString *error)
             break;
         }
         case ExportDialog::Target::FigureSheet:
-            FigureSheet(m_current, m_attractor, m_spectrum).paint(&p, target);
+            FigureSheet(m_current, m_attractor, m_spectrum, m_surface).paint(&p, target);
             break;
         }
     };
@@ -796,7 +868,7 @@ void MainWindow::exportDialog()
     initial.fileName = m_lastExport.isEmpty()
                            ? QFileInfo(m_project->fileName()).path() + QStringLiteral("/figure.png")
                            : m_lastExport;
-    initial.size = m_attractor->size() * 2;
+    initial.size = m_central->size() * 2;
     ExportDialog dialog(initial, this);
     if (dialog.exec() != QDialog::Accepted)
         return;
@@ -838,6 +910,55 @@ void MainWindow::addItem(const QString &type)
         alg.depth = m_preferences.defaultDepth;
         if (!a->checkAlgorithm(alg))
             a->setAlgorithm(alg);
+    }
+    m_project->addItem(std::move(item), nullptr);
+}
+
+void MainWindow::addSurfaceMenu(QMenu *add, const QString &title)
+{
+    // One entry per scheme and layout: a surface's net is fixed by both, so they are chosen
+    // up front; the user then drags the default net into shape.
+    QMenu *menu = add->addMenu(title);
+    const QStringList schemes{tr("Bicubic B-spline"), tr("Loop (box spline)"),
+                              tr("Kobbelt √3")};
+    const SurfaceSchemeSpec::Kind kinds[] = {SurfaceSchemeSpec::Kind::Bicubic,
+                                             SurfaceSchemeSpec::Kind::Loop,
+                                             SurfaceSchemeSpec::Kind::Sqrt3};
+    for (int k = 0; k < 3; ++k)
+        for (const QString &layout : SurfaceSchemeSpec::layoutNames(kinds[k])) {
+            QAction *a = menu->addAction(tr("%1, %2 layout").arg(schemes[k], layout));
+            const SurfaceSchemeSpec spec{kinds[k], layout};
+            a->setObjectName(QStringLiteral("actionAddSurface_%1_%2")
+                                 .arg(SurfaceSchemeSpec::kindNames().value(k), layout));
+            // The first entry is the kind's plain "add" action, as for the other kinds.
+            if (menu->actions().size() == 1)
+                a->setObjectName(QStringLiteral("actionAdd_")
+                                 + SubdivisionSurfaceItem::staticType());
+            connect(a, &QAction::triggered, this, [this, spec] { addSurface(spec); });
+        }
+}
+
+void MainWindow::addSurface(const SurfaceSchemeSpec &scheme)
+{
+    auto item = std::make_unique<SubdivisionSurfaceItem>();
+    if (!item->setScheme(scheme))
+        return;
+    item->setName(tr("%1 surface").arg(scheme.layout));
+    AlgorithmSpec alg = item->algorithm();
+    alg.depth = std::min(m_preferences.defaultDepth, 7);
+    if (!item->checkAlgorithm(alg))
+        item->setAlgorithm(alg);
+    // Start from the polygon of limit points at the domain's corners: its images tile the
+    // surface from the first level on (a triangle of control points only converges to it).
+    if (const auto d = item->derivedIfs(); d && d->surface
+                                           && d->surface->cornerLimitPoints.rows() >= 3) {
+        const Mat &c = d->surface->cornerLimitPoints;
+        StartSetSpec start;
+        start.kind = c.rows() == 3 ? StartSetSpec::Kind::Triangle : StartSetSpec::Kind::Polygon;
+        start.points.clear(); // not the default set's point
+        for (Eigen::Index r = 0; r < c.rows(); ++r)
+            start.points.push_back({c(r, 0), c(r, 1), c(r, 2)});
+        item->setStartSet(start);
     }
     m_project->addItem(std::move(item), nullptr);
 }

@@ -20,6 +20,7 @@ class QProgressBar;
 class QProgressDialog;
 class QTimer;
 class QSpinBox;
+class QStackedWidget;
 class QToolButton;
 class QTreeView;
 class QUndoView;
@@ -37,6 +38,8 @@ class ProjectTreeModel;
 class PropertiesWidget;
 class Recovery;
 class SpectrumView;
+class SurfaceView;
+struct SurfaceSchemeSpec;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -66,6 +69,8 @@ public:
 
     // The views (for tests and export).
     AttractorView *attractorView() const { return m_attractor; }
+    // The 3D view of surface items (the central widget while such an item is current).
+    SurfaceView *surfaceView() const { return m_surface; }
     MatrixView *matrixView() const { return m_matrices; }
     SpectrumView *spectrumView() const { return m_spectrum; }
     AnalysisCharts *analysisCharts() const { return m_charts; }
@@ -102,6 +107,9 @@ private:
     void preferencesDialog();
     void about();
     void addItem(const QString &type);
+    // Add > Subdivision surface: one entry per scheme and layout.
+    void addSurfaceMenu(QMenu *add, const QString &title);
+    void addSurface(const SurfaceSchemeSpec &scheme);
     void duplicateItem();
     void deleteItem();
     void resetLayout();
@@ -116,6 +124,8 @@ private:
     Preferences m_preferences;
 
     AttractorView *m_attractor = nullptr;
+    SurfaceView *m_surface = nullptr;
+    QStackedWidget *m_central = nullptr;
     MatrixView *m_matrices = nullptr;
     SpectrumView *m_spectrum = nullptr;
     AnalysisCharts *m_charts = nullptr;

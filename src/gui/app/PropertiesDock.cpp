@@ -63,7 +63,8 @@ PointList startPoints(StartSetSpec::Kind kind, const PointList &control)
     case StartSetSpec::Kind::Point: {
         Point m;
         for (const auto &p : c)
-            m = {m.x + p.x / double(c.size()), m.y + p.y / double(c.size())};
+            m = {m.x + p.x / double(c.size()), m.y + p.y / double(c.size()),
+                 m.z + p.z / double(c.size())};
         return {m};
     }
     case StartSetSpec::Kind::Segment: return {first, last};
@@ -492,8 +493,10 @@ void PropertiesWidget::addAttractorEditors()
         return;
     auto *pointsBox = new QGroupBox(tr("Control points"));
     auto *pointsLayout = new QVBoxLayout(pointsBox);
-    m_points = new QTableWidget(0, 2);
-    m_points->setHorizontalHeaderLabels({tr("x"), tr("y")});
+    // A surface's net has z too (pointDimension() == 3): one column per coordinate.
+    const int dim = std::clamp(item->pointDimension(), 2, 3);
+    m_points = new QTableWidget(0, dim);
+    m_points->setHorizontalHeaderLabels(QStringList{tr("x"), tr("y"), tr("z")}.mid(0, dim));
     m_points->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_points->setMinimumHeight(140);
     pointsLayout->addWidget(m_points);
@@ -505,20 +508,21 @@ void PropertiesWidget::addAttractorEditors()
         bool ok = false;
         const double v = table->item(r, c)->text().toDouble(&ok);
         Point p = item->controlPoints(0)[std::size_t(r)];
-        (c == 0 ? p.x : p.y) = v;
+        (c == 0 ? p.x : c == 1 ? p.y : p.z) = v;
         if (!ok || !std::isfinite(v) || !item->moveControlPoint(r, p)) {
             updateValues();
             report(tr("\"%1\" is not a finite number.").arg(table->item(r, c)->text()));
         }
     });
-    m_bindings.append({QStringLiteral("points"), [item, table] {
+    m_bindings.append({QStringLiteral("points"), [item, table, dim] {
         const QSignalBlocker block(table);
         const PointList &pts = item->controlPoints(0);
         table->setRowCount(int(pts.size()));
         for (int i = 0; i < int(pts.size()); ++i) {
             table->setVerticalHeaderItem(i, new QTableWidgetItem(QString::number(i + 1)));
-            table->setItem(i, 0, new QTableWidgetItem(QString::number(pts[std::size_t(i)].x, 'g', 10)));
-            table->setItem(i, 1, new QTableWidgetItem(QString::number(pts[std::size_t(i)].y, 'g', 10)));
+            for (int k = 0; k < dim; ++k)
+                table->setItem(i, k, new QTableWidgetItem(
+                                         QString::number(pts[std::size_t(i)][k], 'g', 10)));
         }
     }});
     content->addWidget(pointsBox);

@@ -1,4 +1,5 @@
 #include "gui/views/MatrixView.h"
+#include "gui/views/MatrixHeatMap.h"
 
 #include "model/NumberFormat.h"
 
@@ -19,6 +20,8 @@ namespace awb {
 namespace {
 
 const QColor kABlock(226, 236, 250);
+// Matrices with more rows than this also get a heat map (a surface's S_i: 16 x 16 and up).
+constexpr int heatMapRows = 12;
 const QColor kBRow(252, 236, 214);
 const QColor kFixed(240, 240, 240);
 const QColor kSum(232, 232, 232);
@@ -256,8 +259,11 @@ void MatrixView::setMatrices(const QList<NamedMatrix> &matrices)
         rebuild(matrices);
         return;
     }
-    for (int i = 0; i < matrices.size(); ++i)
+    for (int i = 0; i < matrices.size(); ++i) {
         m_models[i]->setMatrix(matrices[i]);
+        if (auto *heat = m_boxes[i]->findChild<MatrixHeatMap *>())
+            heat->setMatrix(matrices[i].name, matrices[i].values);
+    }
     for (QTableView *v : m_views)
         fitTable(v);
 }
@@ -310,6 +316,14 @@ void MatrixView::rebuild(const QList<NamedMatrix> &matrices)
         view->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
         view->horizontalHeader()->setMinimumSectionSize(44);
         boxLayout->addWidget(label);
+        // Large real matrices (a surface's S_i) get a heat map above the table: the table is
+        // too wide to read, the pattern of weights is not.
+        if (!nm.isComplex() && nm.rows() > heatMapRows) {
+            auto *heat = new MatrixHeatMap(box);
+            heat->setObjectName(QStringLiteral("heatMap:") + nm.name);
+            heat->setMatrix(nm.name, nm.values);
+            boxLayout->addWidget(heat, 0, Qt::AlignLeft);
+        }
         boxLayout->addWidget(view, 0, Qt::AlignLeft);
         m_tables->insertWidget(m_tables->count() - 1, box); // before the stretch
         m_boxes << box;

@@ -1,0 +1,614 @@
+// The 3D view of surface items: the CPU path (offscreen) draws the Loop patch and matches a
+// reference image within a tolerance; in the main window a surface item gets the 3D view, a
+// mouse drag of a control point is one undo step the surface follows, maps switched off in the
+// Properties dock make 000 Fig. 9's fractal (undoable), the control-point table edits x, y, z,
+// and the figure sheet prints the surface to PDF. Under Xvfb (QT_QPA_PLATFORM=xcb) the GL path
+// draws the same figure and reports its frame times at 100 k and 1 M points.
+//
+// AWB_REGENERATE_REFERENCES=1 writes the reference images anew (tests/gui/data/).
+#include "gui/app/ItemController.h"
+#include "gui/app/MainWindow.h"
+#include "gui/app/Messages.h"
+#include "gui/app/PropertiesDock.h"
+#include "gui/views/AttractorView.h"
+#include "gui/views/MatrixHeatMap.h"
+#include "gui/views/MatrixView.h"
+#include "gui/views/SpectrumView.h"
+#include "gui/views/SurfaceView.h"
+#include "core/ifs/SurfaceIfs.h"
+#include "model/Project.h"
+#include "model/SubdivisionSurfaceItem.h"
+
+#include <QCheckBox>
+#include <QElapsedTimer>
+#include <QOpenGLWidget>
+#include <QProcess>
+#include <QStackedWidget>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace awb;
+
+namespace {
+
+std::unique_ptr<SubdivisionSurfaceItem> loopItem(int depth = 6)
+{
+    auto item = std::make_unique<SubdivisionSurfaceItem>();
+    item->setName(QStringLiteral("Loop"));
+    item->setScheme({SurfaceSchemeSpec::Kind::Loop, QStringLiteral("hexagon")});
+    AlgorithmSpec a = item->algorithm();
+    a.depth = depth;
+    item->setAlgorithm(a);
+    // As Add > Subdivision surface does: the polygon of the domain's corner limit points,
+    // whose images lie on the surface (the default triangle of net points only converges).
+    const Mat c = item->derivedIfs()->surface->cornerLimitPoints;
+    StartSetSpec start;
+    start.kind = StartSetSpec::Kind::Polygon;
+    start.points.clear();
+    for (Eigen::Index r = 0; r < c.rows(); ++r)
+        start.points.push_back({c(r, 0), c(r, 1), c(r, 2)});
+    item->setStartSet(start);
+    return item;
+}
+
+// Feeds a view the item's data as ItemController does (for the view on its own).
+void feed(SurfaceView &view, SubdivisionSurfaceItem &item)
+{
+    const auto d = item.derivedIfs();
+    QVERIFY2(d, qPrintable(item.derivedError()));
+    SurfaceView::RenderSettings rs;
+    rs.depth = item.algorithm().depth;
+    view.setRenderSettings(rs);
+    view.setControlNet(toMatrix(item.controlPoints(0), 3), item.refinedMesh(0).faces);
+    view.setIfs(std::make_shared<const Ifs>(d->ifs), item.coreStartSet(*d), d->mapIndex);
+}
+
+// Fraction of pixels where the two images disagree about being background (white), and the
+// mean colour difference where both are drawn: a tolerant comparison (rasterisation details,
+// thread scheduling and GL drivers differ; the figure must not).
+struct ImageDiff {
+    double coverageMismatch = 1.0;
+    double meanColour = 255.0;
+};
+ImageDiff compare(const QImage &a0, const QImage &b0)
+{
+    const QImage a = a0.convertToFormat(QImage::Format_RGB32);
+    const QImage b = b0.convertToFormat(QImage::Format_RGB32).scaled(a.size());
+    qint64 mismatch = 0, both = 0, drawn = 0;
+    double colour = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) {
+            const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
+            const bool inA = (p & 0xffffff) != 0xffffff, inB = (q & 0xffffff) != 0xffffff;
+            drawn += inA || inB;
+            mismatch += inA != inB;
+            if (inA && inB) {
+                ++both;
+                colour += (std::abs(qRed(p) - qRed(q)) + std::abs(qGreen(p) - qGreen(q))
+                           + std::abs(qBlue(p) - qBlue(q))) / 3.0;
+            }
+        }
+    ImageDiff d;
+    d.coverageMismatch = drawn ? double(mismatch) / double(drawn) : 0.0;
+    d.meanColour = both ? colour / double(both) : 0.0;
+    return d;
+}
+
+QImage reference(const QString &name, const QImage &actual)
+{
+    const QString file = QStringLiteral(AWB_TEST_SOURCE_DIR "/tests/gui/data/") + name;
+    if (qEnvironmentVariableIntValue("AWB_REGENERATE_REFERENCES")) {
+        QDir().mkpath(QFileInfo(file).path());
+        actual.save(file);
+    }
+    return QImage(file);
+}
+
+qint64 drawnPixels(const QImage &image)
+{
+    qint64 n = 0;
+    const QImage im = image.convertToFormat(QImage::Format_RGB32);
+    for (int y = 0; y < im.height(); ++y)
+        for (int x = 0; x < im.width(); ++x)
+            n += (im.pixel(x, y) & 0xffffff) != 0xffffff;
+    return n;
+}
+
+} // namespace
+
+class TestSurfaceView : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void cpuPathMatchesReference();
+    void cameraMovesTheFigure();
+    void mainWindowShowsSurfaces();
+    void dragIsOneUndoStep();
+    void mapsOffMakeTheFractal();
+    void tableEditsXyz();
+    void printsTheSurface();
+    void heatMapShowsExactEntries();
+    void perspectiveAndLayers();
+    void batchPrintsSurfaces();
+    void addMenuMakesSurfaces();
+    void glPathUnderXvfb();
+    void glDragUnderXvfb();
+
+private:
+    QTemporaryDir m_dir;
+};
+
+void TestSurfaceView::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("awb-test"));
+    QCoreApplication::setApplicationName(QStringLiteral("test-surface-view"));
+    QVERIFY(m_dir.isValid());
+    if (qEnvironmentVariableIsSet("AWB_KEEP_TEST_FILES")) {
+        m_dir.setAutoRemove(false);
+        qInfo() << "test files in" << m_dir.path();
+    }
+}
+
+void TestSurfaceView::cpuPathMatchesReference()
+{
+    auto item = loopItem();
+    SurfaceView view(nullptr, false);
+    QCOMPARE(view.path(), SurfaceView::Path::Cpu);
+    view.resize(400, 300);
+    feed(view, *item);
+    view.resetCamera();
+    const QImage image = view.renderImage(QSize(400, 300), false);
+    QVERIFY(drawnPixels(image) > 400 * 300 / 30);
+    const QImage ref = reference(QStringLiteral("surface-loop-hexagon.png"), image);
+    QVERIFY2(!ref.isNull(), "reference image missing: run with AWB_REGENERATE_REFERENCES=1");
+    const ImageDiff d = compare(ref, image);
+    // Loose enough for a change of the CPU renderer's lighting, tight enough for the figure.
+    QVERIFY2(d.coverageMismatch < 0.05 && d.meanColour < 30,
+             qPrintable(QStringLiteral("coverage %1, colour %2")
+                            .arg(d.coverageMismatch).arg(d.meanColour)));
+
+    // The asynchronous CPU frame of the widget is the same figure.
+    view.show();
+    QTRY_VERIFY_WITH_TIMEOUT(!view.cpuImage().isNull() && !view.isRendering(), 10000);
+    QVERIFY(compare(image, view.cpuImage()).coverageMismatch < 0.05);
+}
+
+void TestSurfaceView::cameraMovesTheFigure()
+{
+    auto item = loopItem(5);
+    SurfaceView view(nullptr, false);
+    view.resize(300, 240);
+    feed(view, *item);
+    view.resetCamera();
+    const QImage before = view.renderImage(QSize(300, 240), false);
+    const QPointF handle = view.controlPointScreen(0);
+    view.orbit(60, 0);
+    QVERIFY(view.controlPointScreen(0) != handle);
+    const QImage turned = view.renderImage(QSize(300, 240), false);
+    QVERIFY(compare(before, turned).coverageMismatch > 0.05);
+    view.orbit(-60, 0);
+    QVERIFY(compare(before, view.renderImage(QSize(300, 240), false)).coverageMismatch < 0.01);
+    view.zoomBy(2.0);
+    QVERIFY(drawnPixels(view.renderImage(QSize(300, 240), false)) > drawnPixels(before));
+    view.resetCamera();
+    QVERIFY((view.controlPointScreen(0) - handle).manhattanLength() < 1.0);
+}
+
+void TestSurfaceView::mainWindowShowsSurfaces()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    auto *central = qobject_cast<QStackedWidget *>(w.centralWidget());
+    QVERIFY(central);
+    QCOMPARE(central->currentWidget(), static_cast<QWidget *>(w.attractorView()));
+    w.project()->addItem(loopItem());
+    QCOMPARE(central->currentWidget(), static_cast<QWidget *>(w.surfaceView()));
+    QVERIFY(w.controller()->showsSurface());
+    // Loop on a hexagon: 6 maps, S_i of 19 x 19 (000 §3), and their eigenvalues.
+    QVERIFY(w.matrixView()->matrixCount() >= 6);
+    QCOMPARE(w.spectrumView()->maps().size(), 6);
+    QCOMPARE(w.surfaceView()->controlPointCount(), 19);
+    // A project to look at by hand (AWB_KEEP_TEST_FILES=1): the Loop patch alone.
+    Project project;
+    project.addItem(loopItem());
+    QString error;
+    QVERIFY2(project.saveAs(m_dir.path() + QStringLiteral("/loop-surface.awb"), &error),
+             qPrintable(error));
+    // Add > Subdivision surface makes a new item the 3D view shows.
+    QAction *add = w.action(QStringLiteral("actionAdd_") + SubdivisionSurfaceItem::staticType());
+    QVERIFY(add);
+    add->trigger();
+    QCOMPARE(w.project()->childCount(), 3);
+    QCOMPARE(central->currentWidget(), static_cast<QWidget *>(w.surfaceView()));
+    w.setCurrentItem(w.project()->child(0));
+    QCOMPARE(central->currentWidget(), static_cast<QWidget *>(w.attractorView()));
+}
+
+void TestSurfaceView::dragIsOneUndoStep()
+{
+    // The CPU path's frames are compared here, also under Xvfb (glDragUnderXvfb drags on GL).
+    qputenv("AWB_NO_GL", "1");
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    qunsetenv("AWB_NO_GL");
+    QCOMPARE(w.surfaceView()->path(), SurfaceView::Path::Cpu);
+    w.resize(1200, 800);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.project()->addItem(loopItem());
+    auto *item = qobject_cast<SubdivisionSurfaceItem *>(w.currentItem());
+    QVERIFY(item);
+    SurfaceView *view = w.surfaceView();
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && !view->cpuImage().isNull(), 10000);
+    const QImage before = view->cpuImage();
+    const int steps = w.project()->undoStack()->count();
+    const Point original = item->controlPoints(0)[9];
+    const QPoint grab = view->controlPointScreen(9).toPoint();
+    QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, grab);
+    QTest::mouseMove(view, grab + QPoint(0, -10));
+    QTest::mouseMove(view, grab + QPoint(0, -25));
+    QTest::mouseMove(view, grab + QPoint(0, -40));
+    QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, grab + QPoint(0, -40));
+    // The point moved up on screen (in the view plane: z grows at this elevation).
+    const Point moved = item->controlPoints(0)[9];
+    QVERIFY(moved.z > original.z + 0.1);
+    QCOMPARE(w.project()->undoStack()->count(), steps + 1);
+    // The click selected the point: its row in the Properties table.
+    QCOMPARE(view->selectedControlPoint(), 9);
+    auto *table = qobject_cast<QTableWidget *>(
+        w.propertiesWidget()->editor(QStringLiteral("points")));
+    QVERIFY(table);
+    QCOMPARE(table->currentRow(), 9);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering(), 10000);
+    QTest::qWait(50);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering(), 10000);
+    QVERIFY(compare(before, view->cpuImage()).coverageMismatch > 0.01);
+    w.project()->undoStack()->undo();
+    QCOMPARE(item->controlPoints(0)[9], original);
+    QTest::qWait(50);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering(), 10000);
+    QVERIFY(compare(before, view->cpuImage()).coverageMismatch < 0.01);
+
+    // A start-set vertex drags the same way: one undo step. (Pick one apart from the net's
+    // handles: under the mouse the nearer handle wins.)
+    int v = -1;
+    for (int i = 0; i < view->startVertexCount() && v < 0; ++i) {
+        bool free = true;
+        for (int c = 0; c < view->controlPointCount(); ++c)
+            free = free && (view->controlPointScreen(c) - view->startVertexScreen(i))
+                                   .manhattanLength() > 4;
+        if (free)
+            v = i;
+    }
+    QVERIFY2(v >= 0, "every start vertex lies on a control point");
+    const Point vertex = item->startSet().points[std::size_t(v)];
+    const QPoint at = view->startVertexScreen(v).toPoint();
+    const int index = w.project()->undoStack()->index();
+    QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, at);
+    QTest::mouseMove(view, at + QPoint(15, 0));
+    QTest::mouseMove(view, at + QPoint(30, 0));
+    QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, at + QPoint(30, 0));
+    QCOMPARE(w.project()->undoStack()->index(), index + 1);
+    QVERIFY(item->startSet().points[std::size_t(v)] != vertex);
+    w.project()->undoStack()->undo();
+    QCOMPARE(item->startSet().points[std::size_t(v)], vertex);
+}
+
+void TestSurfaceView::mapsOffMakeTheFractal()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    w.project()->addItem(loopItem());
+    auto *item = qobject_cast<SubdivisionSurfaceItem *>(w.currentItem());
+    QCOMPARE(item->mapCount(), 6);
+    SurfaceView *view = w.surfaceView();
+    view->resize(400, 300);
+    view->resetCamera();
+    const qint64 full = drawnPixels(view->renderImage(QSize(400, 300), false));
+    // Two of the six maps off through the Properties dock's check boxes (000 Fig. 9).
+    for (const char *key : {"maps.1", "maps.4"}) {
+        auto *box = qobject_cast<QCheckBox *>(
+            w.propertiesWidget()->editor(QString::fromLatin1(key)));
+        QVERIFY2(box, key);
+        QVERIFY(box->isChecked());
+        box->setChecked(false);
+    }
+    QCOMPARE(item->mapCount(), 4);
+    w.controller()->refreshNow();
+    const qint64 fractal = drawnPixels(view->renderImage(QSize(400, 300), false));
+    QVERIFY2(fractal < full * 0.8, qPrintable(QStringLiteral("%1 of %2").arg(fractal).arg(full)));
+    QVERIFY(fractal > 0);
+    w.project()->undoStack()->undo();
+    w.project()->undoStack()->undo();
+    QCOMPARE(item->mapCount(), 6);
+}
+
+void TestSurfaceView::tableEditsXyz()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    w.project()->addItem(loopItem());
+    auto *item = qobject_cast<SubdivisionSurfaceItem *>(w.currentItem());
+    auto *table = qobject_cast<QTableWidget *>(
+        w.propertiesWidget()->editor(QStringLiteral("points")));
+    QVERIFY(table);
+    QCOMPARE(table->columnCount(), 3);
+    QCOMPARE(table->rowCount(), 19);
+    table->item(4, 2)->setText(QStringLiteral("1.25"));
+    QCOMPARE(item->controlPoints(0)[4].z, 1.25);
+    QCOMPARE(table->item(4, 2)->text(), QStringLiteral("1.25"));
+    w.project()->undoStack()->undo();
+    QVERIFY(item->controlPoints(0)[4].z != 1.25);
+}
+
+void TestSurfaceView::printsTheSurface()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    w.resize(1200, 800);
+    w.project()->addItem(loopItem());
+    const QString pdf = m_dir.path() + QStringLiteral("/surface.pdf");
+    QString error;
+    QVERIFY2(w.printToPdf(pdf, &error), qPrintable(error));
+    QVERIFY(QFileInfo(pdf).size() > 20000); // the raster of the surface is embedded
+    ExportDialog::Options o;
+    o.fileName = m_dir.path() + QStringLiteral("/surface.png");
+    o.size = QSize(600, 450);
+    o.target = ExportDialog::Target::Attractor;
+    QVERIFY2(w.exportView(o, &error), qPrintable(error));
+    const QImage png(o.fileName);
+    QVERIFY(drawnPixels(png) > 600 * 450 / 30);
+    for (const char *suffix : {"svg", "pdf"}) {
+        o.fileName = m_dir.path() + QStringLiteral("/surface.") + QLatin1String(suffix);
+        QVERIFY2(w.exportView(o, &error), qPrintable(error));
+        QVERIFY(QFileInfo(o.fileName).size() > 10000);
+    }
+}
+
+void TestSurfaceView::heatMapShowsExactEntries()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    w.project()->addItem(loopItem());
+    auto *heat = w.matrixView()->findChild<MatrixHeatMap *>(QStringLiteral("heatMap:S_1"));
+    QVERIFY(heat);
+    const auto d = qobject_cast<SubdivisionSurfaceItem *>(w.currentItem())->derivedIfs();
+    const Mat &S = d->S.real.front();
+    QCOMPARE(S.rows(), 19);
+    // Some entry of S_1 is 3/8 (Loop's edge weight): its tooltip says so exactly.
+    bool found = false;
+    for (int r = 0; r < S.rows() && !found; ++r)
+        for (int c = 0; c < S.cols() && !found; ++c)
+            if (S(r, c) == 0.375) {
+                QVERIFY2(heat->cellText(r, c).endsWith(QStringLiteral("= 3/8")),
+                         qPrintable(heat->cellText(r, c)));
+                found = true;
+            }
+    QVERIFY(found);
+    QCOMPARE(heat->cellColour(0.0), QColor(Qt::white));
+    heat->resize(heat->sizeHint());
+    QCOMPARE(heat->cellAt(QPointF(heat->width() - 6, heat->height() - 6)), QPoint(18, 18));
+}
+
+void TestSurfaceView::perspectiveAndLayers()
+{
+    auto item = loopItem(5);
+    SurfaceView view(nullptr, false);
+    view.resize(400, 300);
+    feed(view, *item);
+    view.resetCamera();
+    // The CPU path is orthographic: perspective is kept for GL, the net stays on the picture.
+    const QPointF ortho = view.controlPointScreen(0);
+    view.setPerspective(true);
+    QVERIFY(view.camera().perspective);
+    QVERIFY((view.controlPointScreen(0) - ortho).manhattanLength() < 1e-3);
+    // The perspective matrix itself: the centre stays put, points off it move.
+    const QMatrix4x4 o = SurfaceViewCamera{view.camera().ortho, false}.matrix(4.0 / 3.0, 5.0);
+    const QMatrix4x4 p = view.camera().matrix(4.0 / 3.0, 5.0);
+    const Eigen::Vector3d c = view.camera().ortho.centre;
+    const QVector3D centre(float(c.x()), float(c.y()), float(c.z()));
+    QVERIFY((o.map(centre) - p.map(centre)).toVector2D().length() < 1e-4);
+    const QVector3D off = centre + QVector3D(1, 1, 1);
+    QVERIFY((o.map(off) - p.map(off)).toVector2D().length() > 1e-3);
+    view.setPerspective(false);
+    // The attractor layer off: the CPU picture is empty; the overlays stay.
+    const qint64 all = drawnPixels(view.renderImage(QSize(400, 300)));
+    view.setLayerVisible(SurfaceView::Layer::Attractor, false);
+    const qint64 overlays = drawnPixels(view.renderImage(QSize(400, 300)));
+    QVERIFY(overlays > 0 && overlays < all);
+    view.setLayerVisible(SurfaceView::Layer::ControlNet, false);
+    view.setLayerVisible(SurfaceView::Layer::Axes, false);
+    QVERIFY(drawnPixels(view.renderImage(QSize(400, 300))) < overlays);
+}
+
+void TestSurfaceView::batchPrintsSurfaces()
+{
+    // --print-pdf and --screenshot of a surface item with QT_QPA_PLATFORM=offscreen: the CPU
+    // renderer draws both.
+    Project project;
+    project.addItem(loopItem());
+    const QString file = m_dir.path() + QStringLiteral("/batch.awb");
+    QString error;
+    QVERIFY2(project.saveAs(file, &error), qPrintable(error));
+    const QString dir = qEnvironmentVariable("AWB_BIN_DIR",
+                                             QCoreApplication::applicationDirPath() + "/../bin");
+    QProcess p;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    env.insert(QStringLiteral("HOME"), m_dir.path());
+    env.insert(QStringLiteral("XDG_CONFIG_HOME"), m_dir.path() + QStringLiteral("/config"));
+    env.insert(QStringLiteral("XDG_RUNTIME_DIR"), m_dir.path());
+    p.setProcessEnvironment(env);
+    const QString pdf = m_dir.path() + QStringLiteral("/batch.pdf");
+    const QString png = m_dir.path() + QStringLiteral("/batch.png");
+    QElapsedTimer timer;
+    timer.start();
+    p.start(dir + QStringLiteral("/attractor-workbench"),
+            {file, QStringLiteral("--print-pdf"), pdf, QStringLiteral("--screenshot"), png,
+             QStringLiteral("--window-size"), QStringLiteral("1200x800")});
+    QVERIFY(p.waitForFinished(120000));
+    QCOMPARE(p.exitCode(), 0);
+    QVERIFY2(timer.elapsed() < 30000, "the batch waited for a render that never came");
+    QVERIFY(QFileInfo(pdf).size() > 20000);
+    const QImage shot(png);
+    QCOMPARE(shot.size(), QSize(1200, 800));
+    QVERIFY(drawnPixels(shot) > 0);
+}
+
+void TestSurfaceView::addMenuMakesSurfaces()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    QAction *loop = w.action(QStringLiteral("actionAddSurface_loop_hexagon"));
+    QVERIFY(loop);
+    loop->trigger();
+    auto *item = qobject_cast<SubdivisionSurfaceItem *>(w.currentItem());
+    QVERIFY(item);
+    QCOMPARE(item->scheme().kind, SurfaceSchemeSpec::Kind::Loop);
+    QCOMPARE(item->mapCount(), 6);
+    // The start polygon lies on the surface: its corners are limit points of the patch.
+    const auto d = item->derivedIfs();
+    QVERIFY(d && d->surface);
+    const Point p = item->startSet().points.front();
+    QCOMPARE(p.x, d->surface->cornerLimitPoints(0, 0));
+    QCOMPARE(p.z, d->surface->cornerLimitPoints(0, 2));
+    QVERIFY(w.controller()->showsSurface());
+    w.project()->undoStack()->undo();
+    QCOMPARE(w.project()->childCount(), 1);
+}
+
+void TestSurfaceView::glPathUnderXvfb()
+{
+    if (QGuiApplication::platformName() != QLatin1String("xcb"))
+        QSKIP("the GL path runs under Xvfb (QT_QPA_PLATFORM=xcb); offscreen uses the CPU path");
+    if (!SurfaceView::glAvailable())
+        QSKIP("no OpenGL context on this display");
+    auto item = loopItem(8);
+    SurfaceView view;
+    QCOMPARE(view.path(), SurfaceView::Path::OpenGL);
+    view.resize(800, 600);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    for (const std::size_t budget : {std::size_t(100'000), std::size_t(2'000'000)}) {
+        QSignalSpy ready(&view, &SurfaceView::frameReady);
+        view.setPointBudget(budget, 150'000);
+        feed(view, *item);
+        view.resetCamera();
+        QVERIFY(ready.wait(60000));
+        QTest::qWait(300);
+        // Frame times: rotating (decimated to the moving budget) and at rest (all points).
+        QList<double> moving, still;
+        int frames = 0;
+        double last = 0;
+        const auto c = connect(&view, &SurfaceView::frameDrawn, this,
+                               [&](double ms) { ++frames; last = ms; });
+        for (int k = 0; k < 12; ++k) {
+            const int before = frames;
+            view.orbit(5, 1);
+            QTRY_VERIFY_WITH_TIMEOUT(frames > before, 5000);
+            moving << last;
+        }
+        QTest::qWait(400); // settles: full detail
+        for (int k = 0; k < 5; ++k) {
+            const int before = frames;
+            view.findChild<QOpenGLWidget *>()->update();
+            QTRY_VERIFY_WITH_TIMEOUT(frames > before, 5000);
+            still << last;
+        }
+        disconnect(c);
+        std::sort(moving.begin(), moving.end());
+        std::sort(still.begin(), still.end());
+        qInfo("GL llvmpipe %zu points (depth %d): rotating median %.1f ms (%zu points drawn), "
+              "still median %.1f ms, cloud built in %.2f s",
+              view.cloud().size(), view.cloud().depth, moving[moving.size() / 2],
+              std::min<std::size_t>(view.cloud().size(), 150'000), still[still.size() / 2],
+              view.cloud().seconds);
+    }
+    // The GL frame is the CPU figure within a tolerance (points vs filled triangles).
+    view.setPointBudget(300'000);
+    feed(view, *item);
+    QSignalSpy ready(&view, &SurfaceView::frameReady);
+    QVERIFY(ready.wait(60000));
+    QTest::qWait(400);
+    view.setLayerVisible(SurfaceView::Layer::ControlNet, false);
+    view.setLayerVisible(SurfaceView::Layer::Axes, false);
+    auto *gl = view.findChild<QOpenGLWidget *>();
+    QVERIFY(gl);
+    const QImage frame = gl->grabFramebuffer();
+    const QImage cpu = view.renderImage(frame.size(), false);
+    const ImageDiff d = compare(cpu, frame);
+    QVERIFY2(d.coverageMismatch < 0.15,
+             qPrintable(QStringLiteral("coverage %1").arg(d.coverageMismatch)));
+}
+
+void TestSurfaceView::glDragUnderXvfb()
+{
+    if (QGuiApplication::platformName() != QLatin1String("xcb"))
+        QSKIP("the GL path runs under Xvfb (QT_QPA_PLATFORM=xcb); offscreen uses the CPU path");
+    if (!SurfaceView::glAvailable())
+        QSKIP("no OpenGL context on this display");
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    w.resize(1400, 900);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.project()->addItem(loopItem(8));
+    auto *item = qobject_cast<SubdivisionSurfaceItem *>(w.currentItem());
+    SurfaceView *view = w.surfaceView();
+    QCOMPARE(view->path(), SurfaceView::Path::OpenGL);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && view->cloud().size() > 0, 60000);
+    QTest::qWait(300);
+    QElapsedTimer refresh;
+    refresh.start();
+    for (int k = 0; k < 5; ++k)
+        w.controller()->refreshNow();
+    qInfo("ItemController::refreshNow of the surface item (docks included): %.0f ms",
+          double(refresh.nsecsElapsed()) / 5e6);
+    // `shown`: the number of clouds made when the last frame was drawn.
+    int clouds = 0, shown = 0;
+    QElapsedTimer timer;
+    double shownAt = 0;
+    connect(view, &SurfaceView::frameReady, this, [&] { ++clouds; });
+    connect(view, &SurfaceView::frameDrawn, this, [&] {
+        if (shown != clouds)
+            shownAt = double(timer.nsecsElapsed()) / 1e6;
+        shown = clouds;
+    });
+    const int steps = w.project()->undoStack()->count();
+    const Point original = item->controlPoints(0)[9];
+    const QPoint grab = view->controlPointScreen(9).toPoint();
+    QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, grab);
+    refresh.start();
+    for (int k = 0; k < 5; ++k)
+        w.controller()->refreshNow();
+    qInfo("... during a drag (the 3D view only): %.0f ms", double(refresh.nsecsElapsed()) / 5e6);
+    // Time from a mouse move to the frame showing the surface it made: edit, derived IFS,
+    // the decimated cloud on the worker, upload and draw.
+    QList<double> latency;
+    for (int k = 1; k <= 8; ++k) {
+        const int c0 = clouds;
+        timer.start();
+        QTest::mouseMove(view, grab + QPoint(0, -5 * k));
+        QTRY_VERIFY_WITH_TIMEOUT(shown > c0, 10000);
+        latency << shownAt;
+        qInfo("  move %d: frame at %.0f ms (cloud %.0f ms on the worker, draw %.0f ms)", k,
+              shownAt, 1000 * view->cloud().seconds, view->lastFrameMs());
+    }
+    const std::size_t dragPoints = view->cloud().size();
+    QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, grab + QPoint(0, -40));
+    QCOMPARE(w.project()->undoStack()->count(), steps + 1);
+    QVERIFY(item->controlPoints(0)[9].z > original.z);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && view->cloud().size() > dragPoints, 60000);
+    std::sort(latency.begin(), latency.end());
+    qInfo("GL llvmpipe drag: move -> new frame median %.0f ms, max %.0f ms (%zu points while "
+          "dragging, %zu after release)", latency[latency.size() / 2], latency.last(),
+          dragPoints, view->cloud().size());
+    w.project()->undoStack()->undo();
+    QCOMPARE(item->controlPoints(0)[9], original);
+}
+
+QTEST_MAIN(TestSurfaceView)
+#include "test_surface_view.moc"
