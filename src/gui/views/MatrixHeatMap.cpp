@@ -1,6 +1,6 @@
 #include "gui/views/MatrixHeatMap.h"
 
-#include "gui/views/NumberFormat.h"
+#include "model/NumberFormat.h"
 
 #include <QHelpEvent>
 #include <QPainter>
