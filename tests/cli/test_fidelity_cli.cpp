@@ -24,6 +24,7 @@ private slots:
     void liftedStartPoints();
     void polygonCommand();
     void closedFiguresDrawnClosed();
+    void normalVectorStartSetInEdgeFrame();
 
 private:
     QString cli() const
@@ -229,6 +230,34 @@ void TestFidelityCli::closedFiguresDrawnClosed()
     QFile koch(m_dir.filePath("001-fig06-koch-curve.svg"));
     QVERIFY(koch.open(QIODevice::ReadOnly));
     QVERIFY(koch.readAll().contains("<polyline"));
+}
+
+// docs/file-format.md: a normal-vector item's start set is read in the unit-edge frame and
+// drawn on every edge: depth 0 of the point (0, 0) is each edge's first point, (1, 0) its last.
+void TestFidelityCli::normalVectorStartSetInEdgeFrame()
+{
+    const QString file = example("001-fig07-koch-snowflake.awb");
+    const QString name = "001 Fig. 7(b): Koch snowflake, negative normals, 5 steps";
+    const auto rows = [&](const QString &start) {
+        QByteArray out, err;
+        run({"points", file, "--item", name, "--depth", "0", "--start", start, "--csv"}, &out,
+            &err);
+        QList<QPointF> points;
+        const QList<QByteArray> lines = out.trimmed().split('\n');
+        for (int i = 1; i < lines.size(); ++i) {
+            const QList<QByteArray> f = lines[i].split(',');
+            points << QPointF(f[0].toDouble(), f[1].toDouble());
+        }
+        return points;
+    };
+    const QList<QPointF> triangle{{0, 0}, {1, 0}, {0.5, std::sqrt(3.0) / 2}};
+    const QList<QPointF> first = rows("point:0,0"), last = rows("point:1,0");
+    QCOMPARE(first.size(), 3);  // one view per edge of the closed triangle
+    QCOMPARE(last.size(), 3);
+    for (int e = 0; e < 3; ++e) {
+        QVERIFY(QLineF(first[e], triangle[e]).length() < 1e-12);
+        QVERIFY(QLineF(last[e], triangle[(e + 1) % 3]).length() < 1e-12);
+    }
 }
 
 QTEST_MAIN(TestFidelityCli)

@@ -281,6 +281,8 @@ void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
     Mat mesh;
     std::vector<std::vector<int>> meshFaces;
     if (const auto *surface = qobject_cast<const SubdivisionSurfaceItem *>(item)) {
+        // The item's saved view (also the CLI's default camera) is where Home looks from.
+        m_surface->setHomeDirection(surface->camera().azimuth, surface->camera().elevation);
         try {
             faces = surface->refinedMesh(0).faces;
             if (surface->meshRounds() > 0) {

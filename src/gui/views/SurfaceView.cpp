@@ -679,6 +679,16 @@ void SurfaceView::setPerspective(bool on)
     cameraMoved();
 }
 
+void SurfaceView::setHomeDirection(double azimuth, double elevation)
+{
+    if (azimuth == m_homeAzimuth && elevation == m_homeElevation)
+        return;
+    m_homeAzimuth = azimuth;
+    m_homeElevation = elevation;
+    if (m_net.rows() > 0)
+        resetCamera();
+}
+
 void SurfaceView::resetCamera()
 {
     const Mat b = sceneBounds();
@@ -695,7 +705,7 @@ void SurfaceView::resetCamera()
     // (000 Fig. 9) both show.
     m_camera.ortho = OrthoCamera::fit(m_net.rows() > 0 ? m_net
                                                        : b.rows() == 2 ? corners : Mat(),
-                                      -60.0, 40.0, aspect, 0.05);
+                                      m_homeAzimuth, m_homeElevation, aspect, 0.05);
     m_camera.perspective = perspective;
     m_cameraSet = false;
     m_moving = false;

@@ -108,6 +108,9 @@ public:
     void zoomBy(double factor);
     // Frames the net, the start set and the cloud from the default direction.
     void resetCamera();
+    // The direction resetCamera() looks from (the item's saved camera, degrees); a new
+    // direction resets the camera to it.
+    void setHomeDirection(double azimuth, double elevation);
     // Screen position (widget pixels) of a world point, and the world vector of a screen move
     // in the view plane through `at`.
     QPointF toScreen(const QVector3D &world) const;
@@ -202,6 +205,7 @@ private:
 
     SurfaceViewCamera m_camera;
     bool m_cameraSet = false;    // the user moved the camera: data changes keep it
+    double m_homeAzimuth = -60.0, m_homeElevation = 40.0;
     bool m_moving = false;       // camera moving: GL decimates, CPU draws coarse
     QTimer m_settle;             // camera stopped -> full detail
     QTimer m_dataTimer;          // coalesces edits into one job
