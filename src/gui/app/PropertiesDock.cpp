@@ -3,6 +3,7 @@
 #include "gui/app/Messages.h"
 #include "gui/views/ComplexPlanePicker.h"
 #include "model/AttractorItem.h"
+#include "model/NumberFormat.h"
 #include "model/Project.h"
 
 #include <QCheckBox>
@@ -375,15 +376,69 @@ void PropertiesWidget::addAttractorEditors()
     auto *startForm = new QFormLayout(startBox);
     auto *startKind = compactCombo();
     startKind->addItems({tr("Point"), tr("Segment"), tr("Triangle"), tr("Polygon"),
-                         tr("Points")});
+                         tr("Points"), tr("Lifted points")});
     startForm->addRow(tr("Kind:"), startKind);
     startForm->addRow(new QLabel(tr("Drag its vertices in the attractor view.")));
+    // Points of the lifted space (000 §2, Fig. 2 "a random homogeneous point"): typed, since
+    // the extra coordinates cannot be dragged in the plane.
+    auto *lifted = new QLineEdit;
+    lifted->setToolTip(tr("Points of the lifted space of 000 §2: x, y, then the extra "
+                          "coordinates of the lifting, the homogeneous 1 implied. Commas "
+                          "between coordinates, ';' between points."));
+    startForm->addRow(tr("Lifted:"), lifted);
+    m_editors.insert(QStringLiteral("start.lifted"), lifted);
+    const auto setLifted = [this, item](const std::vector<std::vector<double>> &points) {
+        StartSetSpec s;
+        s.kind = StartSetSpec::Kind::Lifted;
+        s.points.clear();
+        s.lifted = points;
+        QString why;
+        if (const auto d = item->derivedIfs()) {
+            try {
+                liftedStartPoints(*d, points);
+            } catch (const std::exception &e) {
+                why = QString::fromUtf8(e.what());
+            }
+        } else {
+            why = item->derivedError();
+        }
+        if (why.isEmpty())
+            if (auto p = item->checkStartSet(s))
+                why = p->message;
+        if (!why.isEmpty() || !item->setStartSet(s)) {
+            report(why.isEmpty() ? tr("The start set was refused.") : why);
+            updateValues();
+        }
+    };
     m_editors.insert(QStringLiteral("start.kind"), startKind);
-    connect(startKind, &QComboBox::currentIndexChanged, this, [this, item](int i) {
+    connect(startKind, &QComboBox::currentIndexChanged, this, [this, item, setLifted](int i) {
         if (m_updating)
             return;
         StartSetSpec s;
         s.kind = StartSetSpec::Kind(i);
+        if (s.kind == StartSetSpec::Kind::Lifted) {
+            // The centroid of the control points, lifted with zero extra coordinates.
+            const auto d = item->derivedIfs();
+            const PointList control = item->controlPointSetCount() ? item->controlPoints(0)
+                                                                   : PointList{};
+            if (!d || control.empty()) {
+                report(d ? tr("The item has no control points.") : item->derivedError());
+                updateValues();
+                return;
+            }
+            const int dim = item->pointDimension();
+            const Mat centroid = toMatrix(control, dim).colwise().mean();
+            Mat X;
+            try {
+                X = d->toIfsSpace(centroid);
+            } catch (const std::exception &e) {
+                report(QString::fromUtf8(e.what()));
+                updateValues();
+                return;
+            }
+            setLifted({std::vector<double>(X.data(), X.data() + X.size())});
+            return;
+        }
         s.points = startPoints(s.kind, item->controlPointSetCount() ? item->controlPoints(0)
                                                                     : PointList{});
         if (auto p = item->checkStartSet(s); p || !item->setStartSet(s)) {
@@ -391,9 +446,39 @@ void PropertiesWidget::addAttractorEditors()
             updateValues();
         }
     });
-    m_bindings.append({QStringLiteral("start.kind"), [item, startKind] {
+    connect(lifted, &QLineEdit::editingFinished, this, [this, lifted, setLifted] {
+        if (m_updating)
+            return;
+        std::vector<std::vector<double>> points;
+        for (const QString &point : lifted->text().split(';', Qt::SkipEmptyParts)) {
+            std::vector<double> p;
+            for (const QString &n : point.split(',', Qt::SkipEmptyParts)) {
+                const auto v = parseNumber(n.trimmed());
+                if (!v) {
+                    report(tr("'%1' is not a number.").arg(n.trimmed()));
+                    updateValues();
+                    return;
+                }
+                p.push_back(*v);
+            }
+            points.push_back(std::move(p));
+        }
+        setLifted(points);
+    });
+    m_bindings.append({QStringLiteral("start.kind"), [item, startKind, lifted] {
         const QSignalBlocker block(startKind);
         startKind->setCurrentIndex(int(item->startSet().kind));
+        const QSignalBlocker block2(lifted);
+        const bool isLifted = item->startSet().kind == StartSetSpec::Kind::Lifted;
+        QStringList text;
+        for (const auto &p : item->startSet().lifted) {
+            QStringList c;
+            for (double v : p)
+                c << QString::number(v, 'g', 12);
+            text << c.join(QStringLiteral(", "));
+        }
+        lifted->setText(isLifted ? text.join(QStringLiteral("; ")) : QString());
+        lifted->setEnabled(isLifted);
     }});
     content->addWidget(startBox);
 
