@@ -13,6 +13,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "CliRunner.h"
+
 #include <cmath>
 
 class TestFidelityCli : public QObject {
@@ -27,27 +29,10 @@ private slots:
     void normalVectorStartSetInEdgeFrame();
 
 private:
-    QString cli() const
-    {
-        return qEnvironmentVariable("AWB_BIN_DIR", QCoreApplication::applicationDirPath() + "/../bin")
-               + "/attractor-cli";
-    }
-    QString example(const QString &name) const
-    {
-        return qEnvironmentVariable("AWB_SOURCE_DIR", QString(AWB_TEST_SOURCE_DIR)) + "/examples/"
-               + name;
-    }
+    QString example(const QString &name) const { return awb::test::examplePath(name); }
     int run(const QStringList &args, QByteArray *out = nullptr, QByteArray *err = nullptr)
     {
-        QProcess p;
-        p.start(cli(), args);
-        if (!p.waitForFinished(300000))
-            return -1;
-        if (out)
-            *out = p.readAllStandardOutput();
-        if (err)
-            *err = p.readAllStandardError();
-        return p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+        return awb::test::runProgram(awb::test::cliPath(), args, out, err);
     }
     QJsonObject analyse(const QString &file, const QString &item)
     {

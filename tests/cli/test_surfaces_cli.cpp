@@ -12,6 +12,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "CliRunner.h"
+
 #include <cmath>
 
 class TestSurfacesCli : public QObject {
@@ -27,32 +29,15 @@ private slots:
     void badOptions();
 
 private:
-    QString cli() const
-    {
-        return qEnvironmentVariable("AWB_BIN_DIR", QCoreApplication::applicationDirPath() + "/../bin")
-               + "/attractor-cli";
-    }
-    QString example(const QString &name) const
-    {
-        return qEnvironmentVariable("AWB_SOURCE_DIR", QString(AWB_TEST_SOURCE_DIR)) + "/examples/"
-               + name;
-    }
+    QString example(const QString &name) const { return awb::test::examplePath(name); }
     int run(const QString &program, const QStringList &args, QByteArray *out = nullptr,
             QByteArray *err = nullptr)
     {
-        QProcess p;
-        p.start(program, args);
-        if (!p.waitForFinished(300000))
-            return -1;
-        if (out)
-            *out = p.readAllStandardOutput();
-        if (err)
-            *err = p.readAllStandardError();
-        return p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+        return awb::test::runProgram(program, args, out, err);
     }
     int run(const QStringList &args, QByteArray *out = nullptr, QByteArray *err = nullptr)
     {
-        return run(cli(), args, out, err);
+        return awb::test::runProgram(awb::test::cliPath(), args, out, err);
     }
     // The interpreter of Debian's python3-meshio (another python3 may come first on PATH).
     QString debianPython() const

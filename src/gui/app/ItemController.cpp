@@ -255,6 +255,22 @@ void ItemController::onStartDragged3D(int index, const QVector3D &world)
     item->setStartSet(s, m_gesture);
 }
 
+void ItemController::showAnalysis(const DerivedIfs &d, bool editableMatrices)
+{
+    m_matrices->setEditable(editableMatrices);
+    m_matrices->setMatrices(namedMatrices(d, editableMatrices));
+    const QList<MapSpectrum> spectra = mapSpectra(d);
+    m_spectrum->setMaps(spectra);
+    QList<AnalysisCharts::MapModuli> moduli;
+    for (const MapSpectrum &m : spectra) {
+        AnalysisCharts::MapModuli mm{m.label, {}};
+        for (const Complex &z : m.spectrum.values)
+            mm.moduli.push_back(std::abs(z));
+        moduli.append(mm);
+    }
+    m_charts->setModuli(moduli);
+}
+
 void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
 {
     // The 2D view shows nothing of a surface; the 3D view gets the IFS, the net, the start
@@ -357,18 +373,7 @@ void ItemController::refreshNow()
         refreshSurface(item, *d);
     } else if (m_surface && item->pointDimension() == 3) {
         refreshSurface(item, *d);
-        m_matrices->setEditable(false);
-        m_matrices->setMatrices(namedMatrices(*d, false));
-        const QList<MapSpectrum> spectra = mapSpectra(*d);
-        m_spectrum->setMaps(spectra);
-        QList<AnalysisCharts::MapModuli> moduli;
-        for (const MapSpectrum &m : spectra) {
-            AnalysisCharts::MapModuli mm{m.label, {}};
-            for (const Complex &z : m.spectrum.values)
-                mm.moduli.push_back(std::abs(z));
-            moduli.append(mm);
-        }
-        m_charts->setModuli(moduli);
+        showAnalysis(*d, false);
         if (!d->note.isEmpty())
             problem = d->note;
     } else {
@@ -432,18 +437,7 @@ void ItemController::refreshNow()
 
         const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item);
         const bool ownMatrices = curve && curve->scheme().kind == SchemeSpec::Kind::Matrices;
-        m_matrices->setEditable(ownMatrices);
-        m_matrices->setMatrices(namedMatrices(*d, ownMatrices));
-        const QList<MapSpectrum> spectra = mapSpectra(*d);
-        m_spectrum->setMaps(spectra);
-        QList<AnalysisCharts::MapModuli> moduli;
-        for (const MapSpectrum &m : spectra) {
-            AnalysisCharts::MapModuli mm{m.label, {}};
-            for (const Complex &z : m.spectrum.values)
-                mm.moduli.push_back(std::abs(z));
-            moduli.append(mm);
-        }
-        m_charts->setModuli(moduli);
+        showAnalysis(*d, ownMatrices);
         if (!d->note.isEmpty())
             problem = d->note;
         m_analysisTimer.start();

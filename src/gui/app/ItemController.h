@@ -97,6 +97,8 @@ private:
     void onCellEdited(int matrix, int row, int column, double value);
     // The surface view's part of refreshNow() (items with 3D points).
     void refreshSurface(AttractorItem *item, const DerivedIfs &d);
+    // The Matrices, Spectrum and Analysis docks for the derived data of the current item.
+    void showAnalysis(const DerivedIfs &d, bool editableMatrices);
     void onSurfacePressed();
     void onControlDragged3D(int index, const QVector3D &world);
     void onStartDragged3D(int index, const QVector3D &world);
