@@ -2,6 +2,7 @@
 
 #include "render/FigureFile.h"
 
+#include <QFontMetrics>
 #include <QPainter>
 
 #include <algorithm>
@@ -90,6 +91,7 @@ QImage renderSurfaceFigure(const SurfaceFigureSpec &spec, const std::atomic<bool
             return {};
         for (size_t t = 1; t < rasters.size(); ++t)
             rasters.front()->merge(*rasters[t]);
+        rasters.front()->fillPinholes();
     }
     std::vector<std::uint32_t> palette;
     for (const QColor &c : spec.palette)
@@ -125,6 +127,10 @@ QImage renderSurfaceFigure(const SurfaceFigureSpec &spec, const std::atomic<bool
         p.setPen(Qt::black);
         QFont f = p.font();
         f.setPixelSize(14);
+        // A long caption (name, maps, view) shrinks to fit the width rather than being cut.
+        while (f.pixelSize() > 9
+               && QFontMetrics(f).horizontalAdvance(spec.caption) > spec.width - 16)
+            f.setPixelSize(f.pixelSize() - 1);
         p.setFont(f);
         p.drawText(QRect(8, h, spec.width - 16, spec.height - h), Qt::AlignVCenter | Qt::AlignLeft,
                    spec.caption);

@@ -185,6 +185,31 @@ std::uint64_t SurfaceRaster::coveredPixels() const
                                        [](std::uint32_t l) { return l != 0; }));
 }
 
+void SurfaceRaster::fillPinholes()
+{
+    // Splats of neighbouring images leave single empty pixels: one that has at least three
+    // covered 4-neighbours takes the nearest of them (depth and label), as point renderers do.
+    std::vector<std::size_t> holes;
+    for (int y = 1; y + 1 < m_h; ++y)
+        for (int x = 1; x + 1 < m_w; ++x) {
+            if (m_label[index(x, y)])
+                continue;
+            int covered = 0;
+            for (const auto &[dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}})
+                covered += m_label[index(x + dx, y + dy)] != 0;
+            if (covered >= 3)
+                holes.push_back(index(x, y));
+        }
+    for (const std::size_t i : holes) {
+        std::size_t best = i;
+        for (const std::size_t j : {i + 1, i - 1, i + std::size_t(m_w), i - std::size_t(m_w)})
+            if (m_label[j] && (best == i || m_depth[j] > m_depth[best]))
+                best = j;
+        m_depth[i] = m_depth[best];
+        m_label[i] = m_label[best];
+    }
+}
+
 std::vector<std::uint32_t> SurfaceRaster::shade(const std::vector<std::uint32_t> &palette,
                                                 std::uint32_t background) const
 {

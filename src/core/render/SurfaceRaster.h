@@ -54,6 +54,8 @@ public:
     std::uint64_t coveredPixels() const;
     std::uint64_t nonFinite() const { return m_nonFinite; }
 
+    // Closes single-pixel gaps between splats (call once, after merging, before shade()).
+    void fillPinholes();
     // palette[i]: colour (0xRRGGBB) of colour index i (cycled); lambert shading from a light
     // above left of the viewer on normals taken from the depth buffer.
     std::vector<std::uint32_t> shade(const std::vector<std::uint32_t> &palette,
