@@ -543,9 +543,10 @@ int analyse(const QStringList &args)
     return guarded([&] {
         QCommandLineParser parser;
         parser.setApplicationDescription(
-            "Analyse the items of a project: eigenvalues of each S_i, spectral radius, "
-            "contractivity and fixed point of each map, subdominant eigenvalues, box-counting "
-            "dimension of the attractor.");
+            "Analyse the items of a project: per map S_i (exact fractions), M_i = P^-1 S_i P "
+            "with its blocks A_i, b_i, the eigenvalues of S_i and A_i, spectral radius, "
+            "contractivity and fixed point; per item the subdominant eigenvalues, the "
+            "Hausdorff distance to the exact curve and the box-counting dimension.");
         parser.addPositionalArgument("project", "The .awb project file.");
         parser.addOptions({{"item", "Only this item.", "name"},
                            {"json", "Print JSON (the only format so far)."}});

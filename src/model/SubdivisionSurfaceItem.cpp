@@ -66,17 +66,35 @@ MaybeProblem SurfaceSchemeSpec::check() const
 
 namespace {
 
-// The scheme's canonical net and matrices, computed once per (kind, layout).
-const SurfaceMatrices &canonicalMatrices(const SurfaceSchemeSpec &scheme)
+// The scheme, its layout and canonical net and matrices, computed once per (kind, layout):
+// every check and every rebuild of the IFS (each step of a drag) reads them.
+struct PatchData {
+    LatticeScheme scheme;
+    PatchLayout layout;
+    SurfaceMatrices matrices;
+};
+
+const PatchData &patchData(const SurfaceSchemeSpec &spec)
 {
-    static std::map<std::pair<int, QString>, SurfaceMatrices> cache;
+    static std::map<std::pair<int, QString>, PatchData> cache;
     static QMutex mutex;
     QMutexLocker lock(&mutex);
-    const auto key = std::make_pair(int(scheme.kind), scheme.layout);
+    const auto key = std::make_pair(int(spec.kind), spec.layout);
     auto it = cache.find(key);
-    if (it == cache.end())
-        it = cache.emplace(key, surfaceMatrices(scheme.makeScheme(), scheme.makeLayout())).first;
+    if (it == cache.end()) {
+        LatticeScheme scheme = spec.makeScheme();
+        PatchLayout layout = patchLayout(scheme, spec.layout.toStdString());
+        SurfaceMatrices matrices = surfaceMatrices(scheme, layout);
+        it = cache.emplace(key, PatchData{std::move(scheme), std::move(layout),
+                                          std::move(matrices)})
+                 .first;
+    }
     return it->second;
+}
+
+const SurfaceMatrices &canonicalMatrices(const SurfaceSchemeSpec &spec)
+{
+    return patchData(spec).matrices;
 }
 
 } // namespace
@@ -106,7 +124,7 @@ MaybeProblem SurfaceNet::check() const
                                       .arg(lattice.size())
                                       .arg(points.size())};
     try {
-        matchNet(canonical.net, lattice, scheme.makeScheme().lattice());
+        matchNet(canonical.net, lattice, patchData(scheme).scheme.lattice());
     } catch (const InputError &e) {
         return Problem{"lattice", tr("not the net of a %1 %2 patch: %3")
                                       .arg(scheme.kindNames().at(int(scheme.kind)), scheme.layout,
@@ -133,10 +151,11 @@ SurfaceNet SurfaceNet::defaultNet(const SurfaceSchemeSpec &scheme)
 {
     SurfaceNet net;
     net.scheme = scheme;
-    const LatticeScheme s = scheme.makeScheme();
-    const SurfaceMatrices &canonical = canonicalMatrices(scheme);
+    const PatchData &patch = patchData(scheme);
+    const LatticeScheme &s = patch.scheme;
+    const SurfaceMatrices &canonical = patch.matrices;
     // Centre the net on the patch's domain.
-    const PatchLayout layout = scheme.makeLayout();
+    const PatchLayout &layout = patch.layout;
     Eigen::Vector2d centre = Eigen::Vector2d::Zero();
     for (const auto &c : layout.domain)
         centre += latticePosition(s.lattice(), c);
@@ -246,7 +265,7 @@ std::shared_ptr<const SurfaceIfs> SubdivisionSurfaceItem::surfaceIfs() const
 
 LatticeMesh SubdivisionSurfaceItem::refinedMesh(int rounds) const
 {
-    const LatticeScheme scheme = m_net.scheme.makeScheme();
+    const LatticeScheme &scheme = patchData(m_net.scheme).scheme;
     return refineMesh(scheme, netMesh(scheme.lattice(), m_net.lattice, toMatrix(m_net.points, 3)),
                       rounds);
 }
@@ -255,8 +274,9 @@ DerivedIfs SubdivisionSurfaceItem::computeIfs() const
 {
     if (auto p = m_net.check())
         throw InputError((p->field + ": " + p->message).toStdString());
+    const PatchData &patch = patchData(m_net.scheme);
     const auto s = std::make_shared<const SurfaceIfs>(
-        buildSurfaceIfs(m_net.scheme.makeScheme(), m_net.scheme.makeLayout(), m_net.lattice,
+        buildSurfaceIfs(patch.scheme, patch.layout, patch.matrices, m_net.lattice,
                         toMatrix(m_net.points, 3), m_net.mapsUsed));
     DerivedIfs out;
     out.S.real = s->S;

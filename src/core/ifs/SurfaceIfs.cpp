@@ -9,11 +9,19 @@ SurfaceIfs buildSurfaceIfs(const LatticeScheme &scheme, const PatchLayout &layou
                            const std::vector<LatticePoint> &lattice, const Mat &P,
                            std::vector<int> mapsUsed)
 {
+    return buildSurfaceIfs(scheme, layout, surfaceMatrices(scheme, layout), lattice, P,
+                           std::move(mapsUsed));
+}
+
+SurfaceIfs buildSurfaceIfs(const LatticeScheme &scheme, const PatchLayout &layout,
+                           const SurfaceMatrices &canonical,
+                           const std::vector<LatticePoint> &lattice, const Mat &P,
+                           std::vector<int> mapsUsed)
+{
     requireFinite(P, "control points");
     if (Eigen::Index(lattice.size()) != P.rows())
         throw InputError("the lattice lists " + std::to_string(lattice.size())
                          + " coordinates for " + std::to_string(P.rows()) + " control points");
-    const SurfaceMatrices canonical = surfaceMatrices(scheme, layout);
     const std::vector<int> order = matchNet(canonical.net, lattice, scheme.lattice());
     SurfaceIfs out;
     out.layout = layout;

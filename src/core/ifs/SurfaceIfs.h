@@ -30,5 +30,11 @@ struct SurfaceIfs {
 SurfaceIfs buildSurfaceIfs(const LatticeScheme &scheme, const PatchLayout &layout,
                            const std::vector<LatticePoint> &lattice, const Mat &P,
                            std::vector<int> mapsUsed = {});
+// The same with the layout's canonical matrices already computed (surfaceMatrices(scheme,
+// layout)): callers that rebuild the IFS on every edit keep them.
+SurfaceIfs buildSurfaceIfs(const LatticeScheme &scheme, const PatchLayout &layout,
+                           const SurfaceMatrices &canonical,
+                           const std::vector<LatticePoint> &lattice, const Mat &P,
+                           std::vector<int> mapsUsed = {});
 
 } // namespace awb

@@ -151,7 +151,8 @@ void SurfaceRaster::consume(const Mat &v, StartSet::Kind kind, const std::uint8_
             ++m_nonFinite;
             continue;
         }
-        std::vector<Eigen::Vector3d> s(size_t(p.rows()));
+        std::vector<Eigen::Vector3d> &s = m_screen;  // reused: no allocation per image
+        s.resize(size_t(p.rows()));
         for (Eigen::Index r = 0; r < p.rows(); ++r)
             s[size_t(r)] = toScreen(p.row(r).transpose());
         if (kind == StartSet::Kind::Points || s.size() == 1) {

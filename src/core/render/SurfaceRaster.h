@@ -78,6 +78,7 @@ private:
     Eigen::Vector3d m_right, m_up, m_toward;
     std::vector<float> m_depth;
     std::vector<std::uint32_t> m_label;
+    std::vector<Eigen::Vector3d> m_screen;  // screen positions of the image being drawn
     std::uint64_t m_nonFinite = 0;
 };
 

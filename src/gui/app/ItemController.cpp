@@ -245,14 +245,7 @@ void ItemController::onControlDragged3D(int index, const QVector3D &world)
 
 void ItemController::onStartDragged3D(int index, const QVector3D &world)
 {
-    auto *item = qobject_cast<AttractorItem *>(m_item.data());
-    if (!item)
-        return;
-    StartSetSpec s = item->startSet();
-    if (index < 0 || index >= int(s.points.size()))
-        return;
-    s.points[std::size_t(index)] = {world.x(), world.y(), world.z()};
-    item->setStartSet(s, m_gesture);
+    moveStartVertex(index, {world.x(), world.y(), world.z()});
 }
 
 void ItemController::showAnalysis(const DerivedIfs &d, bool editableMatrices)
@@ -578,13 +571,18 @@ void ItemController::onStartPressed(int)
 
 void ItemController::onStartDragged(int index, const QPointF &world)
 {
+    moveStartVertex(index, {world.x(), world.y()});
+}
+
+void ItemController::moveStartVertex(int index, const Point &to)
+{
     auto *item = qobject_cast<AttractorItem *>(m_item.data());
     if (!item)
         return;
     StartSetSpec s = item->startSet();
     if (index < 0 || index >= int(s.points.size()))
         return;
-    s.points[std::size_t(index)] = {world.x(), world.y()};
+    s.points[std::size_t(index)] = to;
     item->setStartSet(s, m_gesture);
 }
 

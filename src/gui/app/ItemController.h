@@ -99,6 +99,8 @@ private:
     void refreshSurface(AttractorItem *item, const DerivedIfs &d);
     // The Matrices, Spectrum and Analysis docks for the derived data of the current item.
     void showAnalysis(const DerivedIfs &d, bool editableMatrices);
+    // A start-set vertex dragged in either view (one undo step per drag, by gesture).
+    void moveStartVertex(int index, const Point &to);
     void onSurfacePressed();
     void onControlDragged3D(int index, const QVector3D &world);
     void onStartDragged3D(int index, const QVector3D &world);
