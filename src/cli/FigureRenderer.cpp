@@ -9,14 +9,7 @@
 
 namespace awb {
 
-QColor mapColor(int i)
-{
-    static const QColor palette[] = {QColor(31, 119, 180), QColor(214, 39, 40), QColor(44, 160, 44),
-                                     QColor(148, 103, 189), QColor(255, 127, 14),
-                                     QColor(140, 86, 75), QColor(227, 119, 194),
-                                     QColor(23, 190, 207), QColor(188, 189, 34)};
-    return palette[((i % 9) + 9) % 9];
-}
+QColor mapColor(int i) { return attractorMapColor(i); }
 
 namespace {
 
@@ -150,35 +143,33 @@ void drawVector(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
 
 void drawRaster(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
 {
-    // Rasterise at the device resolution of the target (sharp in PDF at 300 dpi too).
+    // Rasterise at the device resolution of the target (sharp in PDF at 300 dpi too), through
+    // the one engine the view uses (render/AttractorImage.h).
     const double scale = std::clamp(p.device()->logicalDpiX() / 96.0, 1.0, 4.0);
-    const int w = std::max(1, int(f.target.width() * scale));
-    const int h = std::max(1, int(f.target.height() * scale));
-    const int threads = std::max(1u, std::min(4u, std::thread::hardware_concurrency()));
-    std::vector<RasterSink> rasters;
-    rasters.reserve(threads);
-    for (int t = 0; t < threads; ++t)
-        rasters.emplace_back(w, h, f.x0, f.y0, f.x1, f.y1, viewsOf(spec));
-    std::vector<AttractorSink *> sinks;
-    for (auto &r : rasters)
-        sinks.push_back(&r);
-    runIterate(spec, depth, sinks);
-    for (int t = 1; t < threads; ++t)
-        rasters[0].merge(rasters[t]);
-    QImage img(w, h, QImage::Format_ARGB32_Premultiplied);
-    img.fill(Qt::transparent);
-    // Thicken single pixels a little so that the curve reads at print size.
-    const int dot = scale > 1.5 ? 1 : 0;
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            if (rasters[0].hits(x, y)) {
-                const QColor c = mapColor(int(rasters[0].label(x, y)) - 1);
-                for (int dy = -dot; dy <= dot; ++dy)
-                    for (int dx = -dot; dx <= dot; ++dx)
-                        if (x + dx >= 0 && y + dy >= 0 && x + dx < w && y + dy < h)
-                            img.setPixelColor(x + dx, y + dy, c);
-            }
+    RenderRequest r;
+    auto ifs = std::make_shared<Ifs>(spec.ifs ? *spec.ifs : Ifs{});
+    ifs->views = viewsOf(spec);
+    r.ifs = ifs;
+    r.iterate = spec.iterate;
+    r.start = spec.start;
+    r.mode = spec.random ? RenderRequest::Mode::Random : RenderRequest::Mode::Deterministic;
+    r.depth = depth;
+    r.samples = spec.samples;
+    r.seed = spec.seed;
+    r.world = QRectF(f.x0, f.y0, f.x1 - f.x0, f.y1 - f.y0);
+    r.size = QSize(std::max(1, int(f.target.width() * scale)),
+                   std::max(1, int(f.target.height() * scale)));
+    r.colorMode = AttractorColorMode::ByMap;
+    r.tone = spec.tone;
+    r.supersample = spec.supersample;
+    r.threads = spec.threads;
+    // Thicken single pixels a little so that a thin curve reads at print size.
+    r.dotRadius = scale > 1.5 && spec.tone.mode == Accumulation::Hits ? 1 : 0;
+    const QImage img = renderAttractorImage(r);
+    p.save();
+    p.setRenderHint(QPainter::SmoothPixmapTransform);
     p.drawImage(f.target, img);
+    p.restore();
 }
 
 void drawPolyline(QPainter &p, const Frame &f, const Mat &m, bool closed)

@@ -6,6 +6,7 @@
 // the CLI; QtGui (+ QtSvg for SVG files) only, no widgets.
 
 #include "core/ifs/Attractor.h"
+#include "render/AttractorImage.h"
 
 #include <QColor>
 #include <QImage>
@@ -41,6 +42,10 @@ struct FigureSpec {
     std::vector<Mat> polygons;         // figures that are polygons (normal-vector curves)
     std::vector<bool> polygonsClosed;  // per polygon: closed (missing entries: open)
     std::vector<FigurePanel> panels;
+    // Raster panels (deep levels, random iteration): hits or log density, anti-aliasing, threads.
+    ToneSettings tone;
+    int supersample = 1;
+    int threads = 0;
     int panelWidth = 420;
     int panelHeight = 360;
 };

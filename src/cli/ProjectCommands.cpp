@@ -108,6 +108,34 @@ int intOption(const QCommandLineParser &parser, const QString &name, int lo, int
     return v;
 }
 
+// A count written as digits or in exponent form ("1e9"), whole, from lo to hi.
+std::uint64_t countOption(const QCommandLineParser &parser, const QString &name, double lo,
+                          double hi)
+{
+    bool ok = false;
+    const double v = parser.value(name).toDouble(&ok);
+    if (!ok || !std::isfinite(v) || v < lo || v > hi || v != std::floor(v))
+        throw Failure{QString("--%1 must be a whole number from %2 to %3, got '%4'")
+                          .arg(name)
+                          .arg(lo, 0, 'g', 12)
+                          .arg(hi, 0, 'g', 12)
+                          .arg(parser.value(name))};
+    return std::uint64_t(v);
+}
+
+double realOption(const QCommandLineParser &parser, const QString &name, double lo, double hi)
+{
+    bool ok = false;
+    const double v = parser.value(name).toDouble(&ok);
+    if (!ok || !std::isfinite(v) || v < lo || v > hi)
+        throw Failure{QString("--%1 must be a number from %2 to %3, got '%4'")
+                          .arg(name)
+                          .arg(lo)
+                          .arg(hi)
+                          .arg(parser.value(name))};
+    return v;
+}
+
 // "point:x,y", "segment:x1,y1,x2,y2", "triangle:...", "polygon:...", "points:..."
 StartSet::Kind parseStart(const QString &text, Mat *points, int dim = 2)
 {
@@ -417,7 +445,21 @@ int render(const QStringList &args)
                            {"out", "Output file: .png, .svg or .pdf.", "file"},
                            {"size", "Image size in pixels (default 900x700).", "WxH", "900x700"},
                            {"depth", "Deterministic iteration depth (default: the item's).", "k"},
-                           {"samples", "Random iteration with this many points.", "n"},
+                           {"samples", "Random iteration with this many points (up to 1e12; "
+                                       "memory stays that of the raster).", "n"},
+                           {"tone", "Raster tone: 'hits' (every lit pixel opaque, the papers' "
+                                    "look) or 'density' (log density of the invariant measure, "
+                                    "gamma and vibrancy as flame renderers). Default: the item's "
+                                    "style (auto: hits for deterministic, density for random "
+                                    "iteration).",
+                            "hits|density"},
+                           {"gamma", "Density tone: display gamma (default: the item's, 2.2).", "g"},
+                           {"vibrancy", "Density tone: 1 saturated colours, 0 per-channel "
+                                        "gamma (default 1).", "v", "1"},
+                           {"supersample", "Histogram cells per pixel side, 1..4 (default 1; "
+                                           "2 or 3 anti-alias edges).", "s", "1"},
+                           {"threads", "Threads of the raster engine (default: all cores).",
+                            "n"},
                            {"view", "Surfaces: the camera's azimuth and elevation in degrees "
                                     "(orthographic; default: the item's camera).",
                             "az,el"}});
@@ -443,9 +485,22 @@ int render(const QStringList &args)
         spec.random = parser.isSet("samples")
                       || (alg.mode == AlgorithmSpec::Mode::Random && !parser.isSet("depth"));
         spec.samples = parser.isSet("samples")
-                           ? std::uint64_t(intOption(parser, "samples", 1, 2000000000))
+                           ? countOption(parser, "samples", 1, double(kMaxChaosSamples))
                            : std::uint64_t(alg.samples);
         spec.seed = std::uint64_t(alg.seed);
+        const QString tone = parser.value("tone");
+        if (!tone.isEmpty() && tone != "hits" && tone != "density")
+            throw Failure{QString("--tone must be 'hits' or 'density', got '%1'").arg(tone), 2};
+        spec.tone.mode =
+            tone == "density" || (tone.isEmpty() && item->style().densityTone(spec.random))
+                ? Accumulation::Density
+                : Accumulation::Hits;
+        spec.tone.gamma = parser.isSet("gamma") ? realOption(parser, "gamma", 0.2, 10)
+                                                : item->style().gamma;
+        spec.tone.vibrancy = realOption(parser, "vibrancy", 0, 1);
+        spec.supersample = intOption(parser, "supersample", 1, 4);
+        if (parser.isSet("threads"))
+            spec.threads = intOption(parser, "threads", 1, 64);
         const int depth = parser.isSet("depth") ? intOption(parser, "depth", 0, 64) : alg.depth;
         if (d->ifs.size() > 0 && !spec.random && !d->iterate) {
             const IfsCheck check = checkIfs(d->ifs);

@@ -126,8 +126,17 @@ const QStringList &StyleSpec::colorByNames()
     return names;
 }
 
+const QStringList &StyleSpec::toneNames()
+{
+    static const QStringList names{"auto", "hits", "density"};
+    return names;
+}
+
 MaybeProblem StyleSpec::check() const
 {
+    if (!std::isfinite(gamma) || gamma < 0.2 || gamma > 10.0)
+        return Problem{"gamma", tr("the density gamma must be between 0.2 and 10, got %1")
+                                    .arg(gamma)};
     if (prefixLength < 1 || prefixLength > maxPrefixLength)
         return Problem{"prefix_length", tr("the address prefix length must be between 1 and %1, "
                                            "got %2").arg(maxPrefixLength).arg(prefixLength)};

@@ -95,14 +95,23 @@ public:
     int prefixLength = 1;     // address symbols that pick the colour (ColorBy::Address)
     double pointSize = 2.0;   // pixels
     QStringList colors;       // "#rrggbb" in lower case; empty: the views' own palette
+    // The raster's tone: hits (every lit pixel opaque, the papers' look), density (log density
+    // of the invariant measure, flame-style) or auto (hits for deterministic iteration,
+    // density for random iteration). Gamma of the density tone.
+    enum class Tone { Auto, Hits, Density };
+    Tone tone = Tone::Auto;
+    double gamma = 2.2;
 
-    // The raster label packs the prefix base 256 into 32 bits (core RasterSink).
+    // Colour labels of the raster engine: at most 3 address symbols.
     static constexpr int maxPrefixLength = 3;
     static constexpr double maxPointSize = 100.0;
 
     bool operator==(const StyleSpec &) const = default;
     MaybeProblem check() const;
     static const QStringList &colorByNames();
+    static const QStringList &toneNames();
+    // Density when tone is Density, or Auto with random iteration.
+    bool densityTone(bool random) const { return tone == Tone::Density || (tone == Tone::Auto && random); }
 };
 
 } // namespace awb

@@ -503,10 +503,17 @@ AlgorithmSpec ProjectIO::readAlgorithm(const FieldReader &r)
 
 QJsonObject ProjectIO::styleToJson(const StyleSpec &s)
 {
-    return {{"color_by", StyleSpec::colorByNames().at(int(s.colorBy))},
-            {"prefix_length", s.prefixLength},
-            {"point_size", s.pointSize},
-            {"colors", QJsonArray::fromStringList(s.colors)}};
+    QJsonObject o{{"color_by", StyleSpec::colorByNames().at(int(s.colorBy))},
+                  {"prefix_length", s.prefixLength},
+                  {"point_size", s.pointSize},
+                  {"colors", QJsonArray::fromStringList(s.colors)}};
+    // Written only when not the default, so files from before the density tone stay canonical.
+    const StyleSpec defaults;
+    if (s.tone != defaults.tone)
+        o.insert("tone", StyleSpec::toneNames().at(int(s.tone)));
+    if (s.gamma != defaults.gamma)
+        o.insert("gamma", s.gamma);
+    return o;
 }
 
 StyleSpec ProjectIO::readStyle(const FieldReader &r)
@@ -516,6 +523,8 @@ StyleSpec ProjectIO::readStyle(const FieldReader &r)
                                             int(s.colorBy)));
     s.prefixLength = int(r.integer("prefix_length", s.prefixLength));
     s.pointSize = r.number("point_size", s.pointSize);
+    s.tone = StyleSpec::Tone(r.choice("tone", StyleSpec::toneNames(), int(s.tone)));
+    s.gamma = r.number("gamma", s.gamma);
     const QJsonValue colors = r.value("colors");
     if (!colors.isUndefined() && !colors.isArray())
         r.fail("colors", tr("expected an array of \"#rrggbb\" strings"));

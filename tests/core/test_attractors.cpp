@@ -2,6 +2,7 @@
 // deterministic and random iteration, unions (000 §2.2), singular control points (NOTES.md).
 
 #include "core/ifs/Attractor.h"
+#include "core/render/Engine.h"
 #include "core/analysis/Geometry.h"
 #include "core/analysis/Spectrum.h"
 
@@ -215,16 +216,21 @@ void TestAttractors::rasterIsFilledAndDeterministic()
                                        pts({{0, 0}, {4, 4}, {2, -1}, {-1, 3}, {5, 0}}));
     // 000 Fig. 3: start with a triangle.
     const StartSet tri = StartSet::polygon(s.toIfsSpace(pts({{0, 5}, {5, 5}, {2, 8}})));
-    RasterSink one(200, 150, -2, -2, 6, 6, s.ifs.views);
+    RasterFrame frame;
+    frame.width = 200, frame.height = 150;
+    frame.x0 = -2, frame.y0 = -2, frame.x1 = 6, frame.y1 = 6;
+    EngineColours colours;
+    colours.labelColours = {Rgb8{1, 2, 3}, Rgb8{4, 5, 6}};
+    DensitySink one(frame, s.ifs.views, Accumulation::Hits, colours, s.ifs.size());
     iterate(s.ifs, tri, 10, one);
-    RasterSink a(200, 150, -2, -2, 6, 6, s.ifs.views), b(200, 150, -2, -2, 6, 6, s.ifs.views);
+    DensitySink a(frame, s.ifs.views, Accumulation::Hits, colours, s.ifs.size());
+    DensitySink b(frame, s.ifs.views, Accumulation::Hits, colours, s.ifs.size());
     iterateParallel(s.ifs, tri, 10, {&a, &b});
-    a.merge(b);
-    QVERIFY(one.litPixels() > 200);
+    a.image().merge(b.image());
+    QVERIFY(one.image().litCells() > 200);
     bool same = true;
-    for (int y = 0; y < 150; ++y)
-        for (int x = 0; x < 200; ++x)
-            same = same && one.hits(x, y) == a.hits(x, y) && one.label(x, y) == a.label(x, y);
+    for (std::size_t i = 0; i < one.image().size(); ++i)
+        same = same && one.image().cell(i) == a.image().cell(i);
     QVERIFY(same);
 }
 

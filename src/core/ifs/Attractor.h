@@ -61,7 +61,12 @@ struct ChaosOptions {
     int skip = 32;            // first iterates not emitted (the orbit is not yet on the attractor)
     int addressLength = 8;    // how many of the latest maps are passed as the address
 };
-// Random iteration from start point x0 (1 x D) with the IFS's probabilities (uniform if none).
+// Random iteration from start point x0 (1 x D) with the IFS's probabilities (uniform if none):
+// kChaosStreams independent streams (Random.h) share the samples, spread over the sinks (one
+// thread each), so the points drawn do not depend on the number of sinks.
+inline constexpr std::uint64_t kMaxChaosSamples = 1'000'000'000'000ULL;  // 1e12
+// Throws InputError for a bad IFS, start point or sample count.
+void checkChaosInputs(const Ifs &ifs, const RowVec &x0, std::uint64_t samples);
 IterationStats chaosGame(const Ifs &ifs, const RowVec &x0, const ChaosOptions &options,
                          AttractorSink &sink, const IterationControl &control = {});
 IterationStats chaosGameParallel(const Ifs &ifs, const RowVec &x0, const ChaosOptions &options,
@@ -117,40 +122,6 @@ private:
     bool m_finite = true;
 };
 
-// A 2D raster of hit counts, with an address-prefix label per pixel. World
-// rectangle [x0, x1] x [y0, y1] maps onto width x height pixels, y up. Segments are drawn as
-// lines, polygons filled.
-class RasterSink : public AttractorSink {
-public:
-    RasterSink(int width, int height, double x0, double y0, double x1, double y1,
-               std::vector<Projection> views, int prefixLength = 1);
-    void consume(const Mat &v, StartSet::Kind k, const std::uint8_t *a, int n) override;
-    void merge(const RasterSink &other);
-    void clear();
-
-    int width() const { return m_w; }
-    int height() const { return m_h; }
-    // Row 0 is the top of the image.
-    std::uint32_t hits(int x, int y) const { return m_hits[std::size_t(y) * m_w + x]; }
-    // 1 + address prefix (base-256 number of the first prefixLength symbols), smallest over all
-    // hits of the pixel; 0 where nothing hit it.
-    std::uint32_t label(int x, int y) const { return m_label[std::size_t(y) * m_w + x]; }
-    std::uint64_t litPixels() const;
-    std::uint64_t offscreen() const { return m_offscreen; }
-    std::uint64_t nonFinite() const { return m_nonFinite; }
-
-private:
-    void plot(int x, int y, std::uint32_t label);
-    void line(double ax, double ay, double bx, double by, std::uint32_t label);
-    void fill(const Mat &screen, std::uint32_t label);
-    Eigen::Vector2d toScreen(double x, double y) const;
-
-    int m_w, m_h;
-    double m_x0, m_y0, m_x1, m_y1;
-    std::vector<Projection> m_views;
-    int m_prefix;
-    std::vector<std::uint32_t> m_hits, m_label;
-    std::uint64_t m_offscreen = 0, m_nonFinite = 0;
-};
+// Rasters of these images: DensitySink and the engine's kernels (core/render/Engine.h).
 
 } // namespace awb

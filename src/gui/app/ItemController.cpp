@@ -400,6 +400,13 @@ void ItemController::refreshNow()
         rs.colorMode = colorMode(item->style().colorBy);
         rs.prefixLength = std::clamp(item->style().prefixLength, 1, 3);
         rs.dotRadius = std::clamp(int(std::lround(item->style().pointSize / 2.0)), 0, 4);
+        rs.tone.mode = item->style().densityTone(alg.mode == AlgorithmSpec::Mode::Random)
+                           ? Accumulation::Density
+                           : Accumulation::Hits;
+        rs.tone.gamma = item->style().gamma;
+        // Density shows the measure itself: no growing of the points.
+        if (rs.tone.mode == Accumulation::Density)
+            rs.dotRadius = 0;
         rs.palette.clear();
         for (const QString &c : item->style().colors)
             rs.palette.append(QColor(c));

@@ -398,6 +398,9 @@ RenderRequest AttractorView::renderRequest(const QRectF &world, QSize size,
     r.prefixLength = m_settings.prefixLength;
     r.palette = m_settings.palette;
     r.dotRadius = int(std::lround(m_settings.dotRadius * pixelsPerScreenPixel));
+    r.tone = m_settings.tone;
+    // Exports and prints drawn at more pixels than the screen: anti-alias the edges.
+    r.supersample = pixelsPerScreenPixel > 1.5 ? 2 : 1;
     return r;
 }
 

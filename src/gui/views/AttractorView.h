@@ -39,6 +39,7 @@ public:
         int prefixLength = 2;
         QList<QColor> palette;   // empty: the renderer's defaults
         int dotRadius = 1;       // in screen pixels: a one-pixel curve is hard to see
+        ToneSettings tone;       // hits (crisp) or log density of the invariant measure
     };
     enum class Layer { Attractor, ControlPolygon, StartSet, ExactCurve, Subdivision, Hutchinson,
                        Grid };

@@ -1,0 +1,281 @@
+#include "core/render/Density.h"
+
+#include "core/Types.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace awb {
+
+void RasterFrame::validate() const
+{
+    if (width < 1 || height < 1 || width > 32768 || height > 32768)
+        throw InputError("raster size must be between 1x1 and 32768x32768, got "
+                         + std::to_string(width) + "x" + std::to_string(height));
+    if (supersample < 1 || supersample > 4)
+        throw InputError("supersampling must be 1 to 4 cells per pixel side, got "
+                         + std::to_string(supersample));
+    if (double(cellsX()) * cellsY() > 1.2e9)
+        throw InputError("the supersampled raster would hold more than 1.2e9 cells");
+    if (!(x1 > x0) || !(y1 > y0) || !std::isfinite(x1 - x0) || !std::isfinite(y1 - y0))
+        throw InputError("raster world rectangle is empty or not finite");
+}
+
+DensityImage::DensityImage(int cellsX, int cellsY, Accumulation mode)
+    : m_w(cellsX), m_h(cellsY), m_mode(mode), m_buckets(std::size_t(cellsX) * cellsY)
+{
+}
+
+void DensityImage::spill(std::size_t i)
+{
+    DensityBucket &b = m_buckets[i];
+    auto &s = m_spilled[i];
+    s[0] += b.n;
+    if (m_mode == Accumulation::Density) {
+        s[1] += b.v;
+        b.v = 0;
+    }
+    b.n = 0;
+}
+
+std::array<double, 2> DensityImage::cell(std::size_t i) const
+{
+    const DensityBucket &b = m_buckets[i];
+    std::array<double, 2> out{double(b.n), double(b.v)};
+    if (!m_spilled.empty()) {
+        const auto it = m_spilled.find(i);
+        if (it != m_spilled.end()) {
+            out[0] += double(it->second[0]);
+            if (m_mode == Accumulation::Density)
+                out[1] += double(it->second[1]);
+        }
+    }
+    return out;
+}
+
+std::uint64_t DensityImage::count(std::size_t i) const
+{
+    std::uint64_t n = m_buckets[i].n;
+    if (!m_spilled.empty()) {
+        const auto it = m_spilled.find(i);
+        if (it != m_spilled.end())
+            n += it->second[0];
+    }
+    return n;
+}
+
+std::uint64_t DensityImage::litCells() const
+{
+    std::uint64_t lit = 0;
+    for (std::size_t i = 0; i < m_buckets.size(); ++i)
+        lit += (m_buckets[i].n != 0 || (m_buckets[i].v != 0 && m_mode == Accumulation::Hits)
+                || m_spilled.count(i));
+    return lit;
+}
+
+void DensityImage::merge(const DensityImage &o)
+{
+    if (o.m_w != m_w || o.m_h != m_h || o.m_mode != m_mode)
+        throw InputError("cannot merge density images of different sizes or modes");
+    for (std::size_t i = 0; i < m_buckets.size(); ++i) {
+        const DensityBucket &src = o.m_buckets[i];
+        if (src.n == 0 && src.v == 0)
+            continue;
+        DensityBucket &dst = m_buckets[i];
+        // Sums of two buckets below 2^24 hits stay below 2^25 hits: spill first if needed.
+        if (std::uint64_t(dst.n) + src.n >= kSpillAt)
+            spill(i);
+        dst.n += src.n;
+        if (m_mode == Accumulation::Density)
+            dst.v += src.v;
+        else if (src.v != 0 && (dst.v == 0 || src.v < dst.v))
+            dst.v = src.v;
+    }
+    for (const auto &[i, s] : o.m_spilled) {
+        auto &d = m_spilled[i];
+        for (int k = 0; k < 2; ++k)
+            d[k] += s[k];
+        if (m_mode == Accumulation::Hits && m_buckets[i].v == 0)
+            m_buckets[i].v = o.m_buckets[i].v;
+    }
+    offscreen += o.offscreen;
+    nonFinite += o.nonFinite;
+}
+
+void DensityImage::clear()
+{
+    std::fill(m_buckets.begin(), m_buckets.end(), DensityBucket{});
+    m_spilled.clear();
+    offscreen = nonFinite = 0;
+}
+
+namespace {
+
+// flam3_calc_alpha: x^g, with a linear blend below linRange so that the curve has a finite
+// slope at 0 (faint pixels neither vanish nor explode).
+double calcAlpha(double density, double g, double linRange)
+{
+    if (density <= 0)
+        return 0;
+    if (density >= linRange)
+        return std::pow(density, g);
+    const double frac = density / linRange;
+    const double funcval = std::pow(linRange, g);
+    return (1.0 - frac) * density * (funcval / linRange) + frac * std::pow(density, g);
+}
+
+std::uint32_t packPremultiplied(double a, double r, double g, double b)
+{
+    auto byte = [](double v) {
+        return std::uint32_t(std::clamp(std::lround(v * 255.0), 0L, 255L));
+    };
+    a = std::clamp(a, 0.0, 1.0);
+    // Premultiplied: no channel may exceed alpha.
+    r = std::min(r, a), g = std::min(g, a), b = std::min(b, a);
+    return (byte(a) << 24) | (byte(r) << 16) | (byte(g) << 8) | byte(b);
+}
+
+} // namespace
+
+std::vector<std::uint8_t> labelCoordinates(std::size_t labels)
+{
+    std::vector<std::uint8_t> c(std::max<std::size_t>(1, labels), 0);
+    if (labels > 1)
+        for (std::size_t l = 0; l < labels; ++l)
+            c[l] = std::uint8_t(std::lround(255.0 * double(l) / double(labels - 1)));
+    return c;
+}
+
+std::vector<Rgb8> colourRamp(const std::vector<Rgb8> &labels)
+{
+    std::vector<Rgb8> ramp(256);
+    if (labels.empty())
+        return ramp;
+    const double last = double(labels.size() - 1);
+    for (int u = 0; u < 256; ++u) {
+        const double x = labels.size() > 1 ? u / 255.0 * last : 0.0;
+        const auto i = std::min(std::size_t(x), labels.size() - 1);
+        const std::size_t j = std::min(i + 1, labels.size() - 1);
+        const double t = x - double(i);
+        auto mix = [t](std::uint8_t a, std::uint8_t b) {
+            return std::uint8_t(std::lround(a + t * (double(b) - double(a))));
+        };
+        ramp[u] = {mix(labels[i].r, labels[j].r), mix(labels[i].g, labels[j].g),
+                   mix(labels[i].b, labels[j].b)};
+    }
+    return ramp;
+}
+
+std::vector<std::uint32_t> toneMap(const DensityImage &image, const RasterFrame &frame,
+                                   const ToneSettings &tone, const std::vector<Rgb8> &labels)
+{
+    const int W = frame.width, H = frame.height, ss = frame.supersample;
+    if (image.cellsX() != W * ss || image.cellsY() != H * ss)
+        throw InputError("density image does not match its frame");
+    std::vector<std::uint32_t> out(std::size_t(W) * H, 0);
+    const double cellsPerPixel = double(ss) * ss;
+    const int cw = image.cellsX();
+    const std::vector<Rgb8> ramp = colourRamp(labels);
+    const bool hitsImage = image.mode() == Accumulation::Hits;
+    // The colour of one lit cell: its label's (hits) or the ramp at its mean coordinate.
+    auto colourOf = [&](const std::array<double, 2> &c) {
+        if (hitsImage) {
+            if (labels.empty())
+                return Rgb8{};
+            const auto label = std::size_t(c[1]) - 1;
+            return labels[std::min(label, labels.size() - 1)];
+        }
+        return ramp[std::size_t(std::clamp(std::lround(c[1] / c[0]), 0L, 255L))];
+    };
+
+    if (tone.mode == Accumulation::Hits || hitsImage) {
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                double lit = 0, r = 0, g = 0, b = 0;
+                for (int sy = 0; sy < ss; ++sy)
+                    for (int sx = 0; sx < ss; ++sx) {
+                        const auto c = image.cell(std::size_t(y * ss + sy) * cw + (x * ss + sx));
+                        if (c[0] <= 0)
+                            continue;
+                        const Rgb8 colour = colourOf(c);
+                        lit += 1;
+                        r += colour.r, g += colour.g, b += colour.b;
+                    }
+                if (lit == 0)
+                    continue;
+                const double a = lit / cellsPerPixel;
+                out[std::size_t(y) * W + x] =
+                    packPremultiplied(a, a * r / lit / 255.0, a * g / lit / 255.0,
+                                      a * b / lit / 255.0);
+            }
+        return out;
+    }
+
+    // Density: box-filter the cells into pixels (counts and colours weighted by count), then
+    // log-scale against the densest pixel.
+    std::vector<std::array<double, 4>> px(std::size_t(W) * H);
+    double maxCount = 0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            std::array<double, 4> s{0, 0, 0, 0};
+            for (int sy = 0; sy < ss; ++sy)
+                for (int sx = 0; sx < ss; ++sx) {
+                    const auto c = image.cell(std::size_t(y * ss + sy) * cw + (x * ss + sx));
+                    if (c[0] <= 0)
+                        continue;
+                    const Rgb8 colour = colourOf(c);
+                    s[0] += c[0];
+                    s[1] += c[0] * colour.r, s[2] += c[0] * colour.g, s[3] += c[0] * colour.b;
+                }
+            px[std::size_t(y) * W + x] = s;
+            maxCount = std::max(maxCount, s[0]);
+        }
+    if (maxCount <= 0)
+        return out;
+    const double g = 1.0 / std::max(0.1, tone.gamma);
+    const double vib = std::clamp(tone.vibrancy, 0.0, 1.0);
+    const double norm = 1.0 / std::log1p(maxCount);
+    for (std::size_t i = 0; i < px.size(); ++i) {
+        const auto &s = px[i];
+        if (s[0] <= 0)
+            continue;
+        // Log density in (0, 1], the densest pixel at 1.
+        const double density = std::min(1.0, tone.brightness * std::log1p(s[0]) * norm);
+        const double alpha = calcAlpha(density, g, tone.linearRange);
+        double rgb[3];
+        for (int k = 0; k < 3; ++k) {
+            const double mean = s[k + 1] / s[0] / 255.0;  // the pixel's mean colour
+            rgb[k] = vib * alpha * mean
+                     + (1.0 - vib) * calcAlpha(density * mean, g, tone.linearRange);
+        }
+        out[i] = packPremultiplied(alpha, rgb[0], rgb[1], rgb[2]);
+    }
+    return out;
+}
+
+void dilate(std::vector<std::uint32_t> &argb, int width, int height, int r)
+{
+    if (r <= 0)
+        return;
+    auto pick = [](std::uint32_t best, std::uint32_t c) { return (c >> 24) > (best >> 24) ? c : best; };
+    std::vector<std::uint32_t> tmp(argb.size());
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            std::uint32_t best = 0;
+            for (int k = std::max(0, x - r); k <= std::min(width - 1, x + r); ++k)
+                best = pick(best, argb[std::size_t(y) * width + k]);
+            tmp[std::size_t(y) * width + x] = best;
+        }
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            std::uint32_t &dst = argb[std::size_t(y) * width + x];
+            if (dst >> 24)
+                continue;  // lit pixels keep their own colour
+            std::uint32_t best = 0;
+            for (int k = std::max(0, y - r); k <= std::min(height - 1, y + r); ++k)
+                best = pick(best, tmp[std::size_t(k) * width + x]);
+            dst = best;
+        }
+}
+
+} // namespace awb

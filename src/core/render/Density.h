@@ -1,0 +1,130 @@
+#pragma once
+// The raster of the one attractor engine: a histogram of where the attractor's points (or the
+// images of a start set) fall, with the colour each hit brings, and the tone mapping that
+// turns it into pixels. Every raster picture of a curve attractor (the view, `render`, print,
+// the figure sheet, the benches) goes through DensityImage and toneMap().
+//
+// Two ways to accumulate, chosen per picture (8 bytes a cell either way: the histogram of a
+// 1024 x 1024 picture stays in the caches where the attractor lives):
+// - Density: each hit adds 1 to the cell's count and its colour coordinate (0..255, the
+//   position of its label's colour on the picture's colour ramp) to the cell's coordinate sum,
+//   so the count is the invariant measure's mass in the cell (random iteration with the IFS's
+//   probabilities, or N^-k per image of deterministic depth k) and the colour is the ramp at
+//   the hit-weighted mean coordinate, as in flame renderers.
+// - Hits: the cell keeps its count and the smallest colour label that hit it; the picture
+//   is crisp (every lit pixel opaque, one label's exact colour), and independent of the order
+//   of the hits, so a parallel render is pixel-identical to a serial one.
+//
+// The tone mapping of density follows the log-density display of the fractal flame algorithm
+// (S. Draves, E. Reckase, "The Fractal Flame Algorithm", 2003/2008, §4: log scaling, gamma,
+// vibrancy) as flam3 implements it (rect.c: flam3_calc_alpha with a linear range near zero,
+// then vibrancy mixing the alpha-gamma and the per-channel gamma), normalised here so that
+// the densest pixel has log density 1. Qt-free: pixels are 0xAARRGGBB premultiplied.
+
+#include <array>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace awb {
+
+struct Rgb8 {
+    std::uint8_t r = 0, g = 0, b = 0;
+};
+
+// Picture rectangle: world [x0, x1] x [y0, y1] (y up) onto width x height output pixels, each
+// made of supersample x supersample histogram cells.
+struct RasterFrame {
+    int width = 1, height = 1;
+    double x0 = 0, y0 = 0, x1 = 1, y1 = 1;
+    int supersample = 1;  // 1..4
+
+    int cellsX() const { return width * supersample; }
+    int cellsY() const { return height * supersample; }
+    // Throws InputError for an empty, non-finite or oversized frame.
+    void validate() const;
+};
+
+enum class Accumulation { Density, Hits };
+
+struct DensityBucket {
+    std::uint32_t n = 0;
+    // Density: the sum of the hits' colour coordinates. Hits: 1 + the smallest label.
+    std::uint32_t v = 0;
+};
+
+class DensityImage {
+public:
+    DensityImage() = default;
+    DensityImage(int cellsX, int cellsY, Accumulation mode);
+
+    int cellsX() const { return m_w; }
+    int cellsY() const { return m_h; }
+    Accumulation mode() const { return m_mode; }
+    std::size_t size() const { return m_buckets.size(); }
+
+    // One hit at cell index i = y * cellsX + x (row 0 at the top).
+    void addDensity(std::size_t i, std::uint8_t coordinate)
+    {
+        DensityBucket &b = m_buckets[i];
+        b.v += coordinate;
+        // 2^24 hits of coordinate <= 255 keep the sum below 2^32: move the bucket aside before.
+        if (++b.n == kSpillAt) [[unlikely]]
+            spill(i);
+    }
+    void addHit(std::size_t i, std::uint32_t label)
+    {
+        DensityBucket &b = m_buckets[i];
+        if (b.v == 0 || label + 1 < b.v)
+            b.v = label + 1;
+        if (++b.n == kSpillAt) [[unlikely]]
+            spill(i);
+    }
+
+    // Exact totals of cell i: count and coordinate sum (hits: 1 + the smallest label).
+    std::array<double, 2> cell(std::size_t i) const;
+    std::uint64_t count(std::size_t i) const;
+    std::uint64_t litCells() const;
+    void merge(const DensityImage &other);
+    void clear();
+
+    std::uint64_t offscreen = 0;   // hits outside the frame
+    std::uint64_t nonFinite = 0;   // images with a NaN or infinite coordinate
+
+    static constexpr std::uint32_t kSpillAt = 1u << 24;
+
+private:
+    void spill(std::size_t i);
+
+    int m_w = 0, m_h = 0;
+    Accumulation m_mode = Accumulation::Density;
+    std::vector<DensityBucket> m_buckets;
+    // Buckets that reached kSpillAt hits, summed exactly (rare: only huge sample counts).
+    std::unordered_map<std::size_t, std::array<std::uint64_t, 2>> m_spilled;
+};
+
+struct ToneSettings {
+    Accumulation mode = Accumulation::Hits;
+    double gamma = 2.2;        // display gamma of the log density (flam3's default is 4)
+    double vibrancy = 1.0;     // 1: gamma on alpha only (saturated colours); 0: per channel
+    double linearRange = 0.01; // below this log density the gamma curve is linear (flam3)
+    double brightness = 1.0;   // multiplies the log density before the gamma
+};
+
+// The colour coordinate (0..255) of each of `labels` labels: evenly spread over the ramp.
+std::vector<std::uint8_t> labelCoordinates(std::size_t labels);
+// The colour ramp of the density tone: the label colours at their coordinates, linear
+// between them (256 entries).
+std::vector<Rgb8> colourRamp(const std::vector<Rgb8> &labels);
+
+// The picture of `image` (cells of frame.supersample^2 per pixel, box filtered) as
+// frame.width x frame.height premultiplied 0xAARRGGBB pixels, unlit pixels transparent.
+// `labels` gives the colour of each label (hits), and the ramp (density).
+std::vector<std::uint32_t> toneMap(const DensityImage &image, const RasterFrame &frame,
+                                   const ToneSettings &tone, const std::vector<Rgb8> &labels);
+
+// Grows lit pixels by r pixels (a square): an unlit pixel takes the most opaque neighbour
+// within r (ties: the first in scan order), so a thin curve reads at print size.
+void dilate(std::vector<std::uint32_t> &argb, int width, int height, int r);
+
+} // namespace awb

@@ -1,0 +1,76 @@
+#pragma once
+// The attractor raster engine: streams F^k(X0) (deterministic iteration) or the orbit of a
+// random iteration straight into a DensityImage, on several threads with one histogram each,
+// merged at the end. Memory is the histograms only, whatever the depth or the sample count.
+//
+// Kernels (Engine.cpp) are templates on the IFS dimension D (1..12): maps and points are
+// fixed-size arrays, no allocation and no virtual call per point.
+// - Random iteration runs the kChaosStreams streams of Random.h, four orbits interleaved per
+//   thread so that the latency of one map application hides behind the others.
+// - Deterministic iteration walks the words depth first with one buffer per level; the last
+//   map is fused with the projection to the raster (x A_i V + b_i V + c: 2D instead of D^2 + 2D
+//   flops per vertex), and the innermost levels are split across threads.
+// - Start sets drawn as segments or polygons plot one cell when an image falls inside one
+//   cell (deep levels), and are rasterised as lines and filled polygons otherwise.
+// Larger dimensions and custom iterations (automata) use the same rasteriser through
+// DensitySink, fed by the sink-based iterate()/chaosGame() of ifs/Attractor.h.
+
+#include "core/ifs/Attractor.h"
+#include "core/render/Density.h"
+
+namespace awb {
+
+// Colour labels: an image's label is its first `prefix` address symbols (address[0] is the
+// outermost map) read as a number in base N (the number of maps); prefix 0 gives every image
+// label 0 (one colour). labelColours holds the colour of each label (N^prefix entries).
+struct EngineColours {
+    int prefix = 1;
+    std::vector<Rgb8> labelColours;
+};
+
+struct EngineJob {
+    const Ifs *ifs = nullptr;
+    std::vector<Projection> views;   // empty: ifs->views
+    StartSet start;
+    bool random = false;
+    int depth = 8;                   // deterministic
+    std::uint64_t samples = 100000;  // random, from the first start vertex
+    std::uint64_t seed = 1;
+    int skip = 32;
+    RasterFrame frame;
+    Accumulation accumulation = Accumulation::Hits;
+    EngineColours colours;
+    int threads = 1;
+};
+
+// Accumulates the job into `out` (sized to the frame's cells, cleared first). Throws
+// InputError for bad input (a non-finite start set, a bad depth or sample count, a frame
+// too large); returns with stats.cancelled when control.cancel was set.
+IterationStats accumulate(const EngineJob &job, DensityImage &out,
+                          const IterationControl &control = {});
+
+// The same histogram from any iteration: rasterises every image it receives (points as
+// cells, polylines as lines, polygons filled), coloured by its address.
+class DensitySink : public AttractorSink {
+public:
+    DensitySink(const RasterFrame &frame, std::vector<Projection> views, Accumulation mode,
+                const EngineColours &colours, int maps);
+    void consume(const Mat &v, StartSet::Kind kind, const std::uint8_t *address,
+                 int length) override;
+    DensityImage &image() { return m_image; }
+    const DensityImage &image() const { return m_image; }
+
+private:
+    RasterFrame m_frame;
+    std::vector<Projection> m_views;
+    const EngineColours &m_colours;
+    int m_maps;
+    DensityImage m_image;
+    std::vector<std::uint8_t> m_coords;
+    std::vector<double> m_screen;
+};
+
+// Label of an address (address[0] outermost) for `prefix` symbols of N maps.
+std::uint32_t addressLabel(const std::uint8_t *address, int length, int prefix, int maps);
+
+} // namespace awb

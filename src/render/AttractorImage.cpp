@@ -1,0 +1,212 @@
+#include "render/AttractorImage.h"
+
+#include "core/analysis/Spectrum.h"
+#include "core/ifs/Random.h"
+#include "core/render/Engine.h"
+
+#include <QElapsedTimer>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <thread>
+
+namespace awb {
+
+namespace {
+
+QColor gradientAt(const QList<QColor> &stops, double t)
+{
+    if (stops.isEmpty())
+        return QColor(Qt::black);
+    if (stops.size() == 1)
+        return stops.front();
+    const double x = std::clamp(t, 0.0, 1.0) * double(stops.size() - 1);
+    const int i = std::min(int(x), int(stops.size()) - 2);
+    const double u = x - i;
+    const QColor &a = stops[i], &b = stops[i + 1];
+    return QColor::fromRgbF(float(a.redF() + u * (b.redF() - a.redF())),
+                            float(a.greenF() + u * (b.greenF() - a.greenF())),
+                            float(a.blueF() + u * (b.blueF() - a.blueF())));
+}
+
+// Address symbols that pick the colour: 0 for one colour, 1 for the map, up to 3 (never more
+// than the depth drawn) along the address.
+int colourPrefix(const RenderRequest &r, int depth, int maps)
+{
+    switch (r.colorMode) {
+    case AttractorColorMode::Single: return 0;
+    case AttractorColorMode::ByMap: return 1;
+    case AttractorColorMode::ByAddress: break;
+    }
+    int L = std::clamp(r.prefixLength, 1, 3);
+    if (r.mode == RenderRequest::Mode::Deterministic)
+        L = std::min(L, std::max(1, depth));
+    // At most 65536 colour labels (three symbols of up to 40 maps).
+    while (L > 1 && std::pow(double(maps), L) > 65536.0)
+        --L;
+    return L;
+}
+
+EngineColours colourTable(const RenderRequest &r, int prefix, int maps)
+{
+    EngineColours c;
+    c.prefix = prefix;
+    std::size_t labels = 1;
+    for (int k = 0; k < prefix; ++k)
+        labels *= std::size_t(maps);
+    c.labelColours.resize(labels);
+    std::uint8_t address[3] = {0, 0, 0};
+    for (std::size_t label = 0; label < labels; ++label) {
+        std::size_t code = label;
+        for (int k = prefix - 1; k >= 0; --k) {
+            address[k] = std::uint8_t(code % std::size_t(maps));
+            code /= std::size_t(maps);
+        }
+        const QColor q = attractorAddressColor(r.colorMode, std::max(1, prefix), r.palette, maps,
+                                               address, std::max(1, prefix));
+        c.labelColours[label] = Rgb8{std::uint8_t(q.red()), std::uint8_t(q.green()),
+                                     std::uint8_t(q.blue())};
+    }
+    return c;
+}
+
+int threadsFor(const RenderRequest &r)
+{
+    if (r.threads > 0)
+        return std::min(r.threads, kChaosStreams);
+    return std::clamp(int(std::thread::hardware_concurrency()), 1, kChaosStreams);
+}
+
+} // namespace
+
+void checkRenderRequest(const RenderRequest &r)
+{
+    if (!r.ifs || (r.ifs->size() == 0 && !r.iterate))
+        throw InputError("there is no IFS to draw");
+    if (r.ifs->views.empty())
+        throw InputError("the IFS has no view to draw it with");
+    if (r.size.width() < 1 || r.size.height() < 1)
+        throw InputError("the image is empty");
+    if (!r.iterate) {
+        const IfsCheck check = checkIfs(*r.ifs);
+        if (!check.contractive)
+            throw InputError(check.message);
+    }
+    if (r.start.vertices.rows() == 0)
+        throw InputError("the start set is empty");
+}
+
+QImage renderAttractorImage(const RenderRequest &r, int depth, std::uint64_t samples,
+                            RenderInfo *info, const IterationControl &control)
+{
+    checkRenderRequest(r);
+    QElapsedTimer timer;
+    timer.start();
+    const QRectF w = r.world.normalized();
+    RasterFrame frame;
+    frame.width = r.size.width();
+    frame.height = r.size.height();
+    frame.x0 = w.left(), frame.x1 = w.right(), frame.y0 = w.top(), frame.y1 = w.bottom();
+    frame.supersample = std::clamp(r.supersample, 1, 4);
+    frame.validate();
+    const int maps = std::max(1, r.ifs->size());
+    const EngineColours colours = colourTable(r, colourPrefix(r, depth, maps), maps);
+
+    DensityImage density;
+    IterationStats stats;
+    if (r.iterate) {
+        // An automaton: its own iteration into the engine's rasteriser, one sink per thread.
+        std::vector<std::unique_ptr<DensitySink>> sinks;
+        std::vector<AttractorSink *> raw;
+        for (int t = 0, n = threadsFor(r); t < n; ++t) {
+            sinks.push_back(std::make_unique<DensitySink>(frame, r.ifs->views, r.tone.mode,
+                                                          colours, maps));
+            raw.push_back(sinks.back().get());
+        }
+        stats = r.iterate(r.start, depth, raw, control);
+        density = std::move(sinks.front()->image());
+        for (std::size_t t = 1; t < sinks.size(); ++t)
+            density.merge(sinks[t]->image());
+    } else {
+        EngineJob job;
+        job.ifs = r.ifs.get();
+        job.start = r.start;
+        job.random = r.mode == RenderRequest::Mode::Random;
+        job.depth = depth;
+        job.samples = samples;
+        job.seed = r.seed;
+        job.frame = frame;
+        job.accumulation = r.tone.mode;
+        job.colours = colours;
+        job.threads = threadsFor(r);
+        stats = accumulate(job, density, control);
+    }
+    if (stats.cancelled || (control.cancel && control.cancel->load()))
+        return {};
+
+    std::vector<std::uint32_t> argb = toneMap(density, frame, r.tone, colours.labelColours);
+    std::uint64_t lit = 0;
+    for (std::uint32_t p : argb)
+        lit += (p >> 24) != 0;
+    dilate(argb, frame.width, frame.height, std::clamp(r.dotRadius, 0, 4));
+    QImage image(frame.width, frame.height, QImage::Format_ARGB32_Premultiplied);
+    for (int y = 0; y < frame.height; ++y)
+        std::memcpy(image.scanLine(y), argb.data() + std::size_t(y) * frame.width,
+                    std::size_t(frame.width) * 4);
+    if (info) {
+        info->depth = r.mode == RenderRequest::Mode::Deterministic ? depth : 0;
+        info->images = double(stats.images);
+        info->seconds = timer.nsecsElapsed() * 1e-9;
+        info->final = depth == r.depth && samples == r.samples;
+        info->world = w;
+        info->litPixels = lit;
+    }
+    return image;
+}
+
+QColor attractorMapColor(int i)
+{
+    // Qualitative colours that read on white and in print (Tableau 10 without grey).
+    static const QColor palette[] = {QColor(31, 119, 180), QColor(214, 39, 40),
+                                     QColor(44, 160, 44),  QColor(148, 103, 189),
+                                     QColor(255, 127, 14), QColor(140, 86, 75),
+                                     QColor(227, 119, 194), QColor(23, 190, 207),
+                                     QColor(188, 189, 34)};
+    return palette[((i % 9) + 9) % 9];
+}
+
+QList<QColor> defaultAddressGradient()
+{
+    // Dark enough everywhere to stay visible on a white background.
+    return {QColor(68, 1, 84), QColor(59, 82, 139), QColor(33, 145, 140), QColor(53, 170, 80),
+            QColor(200, 150, 20), QColor(214, 39, 40)};
+}
+
+QColor attractorAddressColor(AttractorColorMode mode, int prefixLength,
+                             const QList<QColor> &palette, int maps, const std::uint8_t *address,
+                             int length)
+{
+    switch (mode) {
+    case AttractorColorMode::Single:
+        return palette.isEmpty() ? QColor(20, 20, 20) : palette.front();
+    case AttractorColorMode::ByMap: {
+        const int map = length > 0 ? address[0] : 0;
+        return palette.isEmpty() ? attractorMapColor(map) : palette[map % palette.size()];
+    }
+    case AttractorColorMode::ByAddress: {
+        // Dense index of the prefix in base N: neighbouring pieces of the curve get
+        // neighbouring colours of the gradient.
+        const int L = std::min(std::clamp(prefixLength, 1, 3), std::max(length, 1));
+        const double N = std::max(1, maps);
+        double index = 0;
+        for (int k = 0; k < L; ++k)
+            index = index * N + (k < length ? address[k] : 0);
+        return gradientAt(palette.isEmpty() ? defaultAddressGradient() : palette,
+                          (index + 0.5) / std::pow(N, L));
+    }
+    }
+    return QColor(Qt::black);
+}
+
+} // namespace awb

@@ -1,0 +1,93 @@
+#pragma once
+// The picture of a curve attractor as a QImage: the one raster path of the application. The
+// attractor view (asynchronously, through gui/views/AttractorRenderer), `attractor-cli render`,
+// export, print, the figure sheet and the benches all call renderAttractorImage(), which runs
+// the core engine (core/render/Engine.h) into a density histogram and tone-maps it
+// (core/render/Density.h). Layer: render (QtGui, no widgets).
+
+#include "core/ifs/Attractor.h"
+#include "core/render/Density.h"
+
+#include <QColor>
+#include <QImage>
+#include <QList>
+#include <QRectF>
+#include <QSize>
+
+#include <functional>
+#include <memory>
+
+namespace awb {
+
+enum class AttractorColorMode {
+    ByMap,      // colour of the outermost map (which of the N pieces a pixel lies in)
+    ByAddress,  // gradient over the address prefix of length prefixLength (curve order)
+    Single      // one colour
+};
+
+// Streams F^k of an attractor that is not that of one IFS (an automaton's state) to the
+// sinks, like awb::iterateParallel (model/AttractorItem.h, DerivedIfs::iterate).
+using CustomIterate = std::function<IterationStats(const StartSet &, int,
+                                                   const std::vector<AttractorSink *> &,
+                                                   const IterationControl &)>;
+
+struct RenderRequest {
+    enum class Mode { Deterministic, Random };
+
+    std::shared_ptr<const Ifs> ifs;   // with `iterate`: only its views are used
+    CustomIterate iterate;            // set for automata: deterministic depth only
+    StartSet start;                 // in the IFS space (n x D)
+    Mode mode = Mode::Deterministic;
+    int depth = 10;                 // deterministic: F^depth(start)
+    std::uint64_t samples = 200000; // random: chaos-game samples from the first start vertex
+    std::uint64_t seed = 1;
+    QRectF world;                   // shown rectangle of the plane, y up (x0, y0, w, h)
+    QSize size;                     // image size in pixels
+    AttractorColorMode colorMode = AttractorColorMode::ByMap;
+    int prefixLength = 2;           // 1..3, for ByAddress
+    QList<QColor> palette;          // ByMap: one per map; ByAddress: gradient stops; Single: [0]
+    // Lit pixels are grown by this many pixels (0..4) so that a thin curve stays visible.
+    int dotRadius = 0;
+    // Hits (crisp, every lit pixel opaque: the papers' look) or density (log-density tone
+    // mapping: the invariant measure made visible), gamma and vibrancy.
+    ToneSettings tone;
+    int supersample = 1;            // 1..4 histogram cells per pixel side (anti-aliasing)
+    int threads = 0;                // 0: the machine's cores
+    // The coarse pass stops at the depth (or sample count) giving at most this many images.
+    double coarseImages = 30000;
+};
+
+struct RenderInfo {
+    int depth = 0;                  // deterministic depth drawn (0 in random mode)
+    double images = 0;              // start-set images (or samples) drawn
+    double seconds = 0;             // wall time of this pass
+    bool final = false;             // false for the coarse preview
+    QRectF world;                   // the request's world rectangle (the image's extent)
+    std::uint64_t litPixels = 0;    // pixels the attractor hit (before dotRadius growth)
+};
+
+// Throws InputError when the request cannot be drawn (no maps, a non-contractive IFS, an
+// empty start set or image).
+void checkRenderRequest(const RenderRequest &request);
+
+// The picture of `request` at deterministic depth `depth` or with `samples` random samples
+// (the request's own for the final picture). Unlit pixels are transparent. A null image when
+// control.cancel stopped it. Throws InputError.
+QImage renderAttractorImage(const RenderRequest &request, int depth, std::uint64_t samples,
+                            RenderInfo *info = nullptr, const IterationControl &control = {});
+inline QImage renderAttractorImage(const RenderRequest &request, RenderInfo *info = nullptr,
+                                   const IterationControl &control = {})
+{
+    return renderAttractorImage(request, request.depth, request.samples, info, control);
+}
+
+// Default qualitative colours for maps and the default address gradient.
+QColor attractorMapColor(int i);
+QList<QColor> defaultAddressGradient();
+// The colour of an image with this address (address[0] = outermost map), as the raster
+// colours it: vector drawings of shallow levels use it to match the raster.
+QColor attractorAddressColor(AttractorColorMode mode, int prefixLength,
+                             const QList<QColor> &palette, int maps,
+                             const std::uint8_t *address, int length);
+
+} // namespace awb

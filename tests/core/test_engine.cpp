@@ -1,0 +1,393 @@
+// The raster engine (core/render/Engine.h, Density.h): the fixed-dimension kernels agree with
+// the sink-based iteration drawn by the same rasteriser, pictures do not depend on the number
+// of threads, the density histogram is the invariant measure (unequal probabilities give the
+// pieces their masses), counts stay exact past 2^24 hits in a cell, the tone mapping is
+// monotone, supersampling anti-aliases, and bad input is refused with a message.
+
+#include "core/ifs/Random.h"
+#include "core/render/Engine.h"
+#include "core/schemes/ControlPointFractal.h"
+#include "core/schemes/Scheme.h"
+
+#include <QtTest>
+
+using namespace awb;
+
+namespace {
+
+Mat pts(std::initializer_list<std::pair<double, double>> p)
+{
+    Mat m(Eigen::Index(p.size()), 2);
+    int i = 0;
+    for (auto [x, y] : p)
+        m.row(i++) << x, y;
+    return m;
+}
+
+// The Sierpinski gasket in the plane: f_i(z) = z/2 + v_i/2, v = (0,0), (1,0), (0.5,1).
+Ifs sierpinski(std::vector<double> probabilities = {})
+{
+    Ifs ifs;
+    const double v[3][2] = {{0, 0}, {1, 0}, {0.5, 1}};
+    for (auto &p : v) {
+        AffineMap f;
+        f.A = Mat::Identity(2, 2) * 0.5;
+        f.b = RowVec(2);
+        f.b << p[0] / 2, p[1] / 2;
+        ifs.maps.push_back(f);
+    }
+    ifs.views.push_back({Mat::Identity(2, 2), RowVec::Zero(2)});
+    ifs.probabilities = std::move(probabilities);
+    return ifs;
+}
+
+EngineJob job(const Ifs &ifs, const StartSet &start, int size, double x0, double y0, double x1,
+              double y1)
+{
+    EngineJob j;
+    j.ifs = &ifs;
+    j.start = start;
+    j.frame.width = j.frame.height = size;
+    j.frame.x0 = x0, j.frame.y0 = y0, j.frame.x1 = x1, j.frame.y1 = y1;
+    j.colours.prefix = 1;
+    for (int i = 0; i < ifs.size(); ++i)
+        j.colours.labelColours.push_back(Rgb8{std::uint8_t(40 * i), 100, std::uint8_t(200 - 40 * i)});
+    return j;
+}
+
+bool sameBuckets(const DensityImage &a, const DensityImage &b)
+{
+    if (a.size() != b.size())
+        return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a.cell(i) != b.cell(i))
+            return false;
+    return true;
+}
+
+// Fraction of cells lit in exactly one of the two images.
+double litMismatch(const DensityImage &a, const DensityImage &b)
+{
+    std::size_t differ = 0, lit = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const bool la = a.count(i) > 0, lb = b.count(i) > 0;
+        differ += la != lb;
+        lit += la || lb;
+    }
+    return lit ? double(differ) / double(lit) : 0.0;
+}
+
+} // namespace
+
+class TestEngine : public QObject {
+    Q_OBJECT
+private slots:
+    void kernelsAgreeWithTheSinkPath();
+    void threadsDoNotChangeThePicture();
+    void randomIterationMatchesTheSinkStreams();
+    void densityIsTheInvariantMeasure();
+    void aliasTableDrawsTheProbabilities();
+    void countsStayExactPastTheSpillThreshold();
+    void polygonsAndSegmentsAreRasterised();
+    void toneMappingIsMonotone();
+    void supersamplingAntiAliases();
+    void largeDimensionsUseTheSinkPath();
+    void badInputIsRefused();
+};
+
+void TestEngine::kernelsAgreeWithTheSinkPath()
+{
+    // 000 Fig. 2: the cubic B-spline on five points, lifted dimension 4, depth 11.
+    const auto s = buildSubdivisionIfs(bsplineScheme(3),
+                                       pts({{0, 0}, {1, 2}, {3, 2.5}, {4.5, 1}, {6, 2}}));
+    const StartSet start = StartSet::points(s.toIfsSpace(pts({{7, -3}})));
+    for (Accumulation mode : {Accumulation::Hits, Accumulation::Density}) {
+        EngineJob j = job(s.ifs, start, 300, -0.5, -1.5, 6.5, 3.5);
+        j.depth = 11;
+        j.accumulation = mode;
+        DensityImage fast;
+        const IterationStats st = accumulate(j, fast);
+        QCOMPARE(st.images, std::uint64_t(1) << 11);
+        DensitySink sink(j.frame, s.ifs.views, mode, j.colours, s.ifs.size());
+        iterate(s.ifs, start, 11, sink);
+        // The fused last step (x A_i V) rounds differently from (x A_i) V: a point exactly on a
+        // cell border may change cell, nothing more.
+        QVERIFY2(litMismatch(fast, sink.image()) < 0.002,
+                 qPrintable(QString::number(litMismatch(fast, sink.image()))));
+        std::uint64_t total = 0;
+        for (std::size_t i = 0; i < fast.size(); ++i)
+            total += fast.count(i);
+        QCOMPARE(total + fast.offscreen, std::uint64_t(1) << 11);
+    }
+}
+
+void TestEngine::threadsDoNotChangeThePicture()
+{
+    const SubdivisionIfs sier = controlPointFractalIfs(sierpinskiControlPointFractal());
+    const StartSet tri = StartSet::polygon(sier.toIfsSpace(pts({{0, 0}, {1, 0}, {0.5, 0.866}})));
+    for (bool random : {false, true})
+        for (Accumulation mode : {Accumulation::Hits, Accumulation::Density}) {
+            EngineJob j = job(sier.ifs, tri, 257, -0.1, -0.1, 1.1, 1.1);
+            j.random = random;
+            j.depth = 9;
+            j.samples = 300001;  // not a multiple of the streams
+            j.accumulation = mode;
+            DensityImage one, two, three;
+            j.threads = 1;
+            accumulate(j, one);
+            j.threads = 2;
+            accumulate(j, two);
+            j.threads = 3;
+            accumulate(j, three);
+            QVERIFY(one.litCells() > 1000);
+            QVERIFY(sameBuckets(one, two));
+            QVERIFY(sameBuckets(one, three));
+        }
+}
+
+void TestEngine::randomIterationMatchesTheSinkStreams()
+{
+    const Ifs ifs = sierpinski({0.5, 0.3, 0.2});
+    RowVec x0(2);
+    x0 << 0.3, 0.3;
+    EngineJob j = job(ifs, StartSet::points(Mat(x0)), 200, 0, 0, 1, 1);
+    j.random = true;
+    j.samples = 200000;
+    j.accumulation = Accumulation::Hits;
+    DensityImage fast;
+    QCOMPARE(accumulate(j, fast).images, std::uint64_t(200000));
+    DensitySink sink(j.frame, ifs.views, Accumulation::Hits, j.colours, ifs.size());
+    ChaosOptions opt;
+    opt.samples = 200000;
+    opt.seed = j.seed;
+    chaosGame(ifs, x0, opt, sink);
+    // The same xoshiro streams and alias table: the same orbits (up to rounding, which the
+    // contraction damps), so the same cells with the same counts.
+    QVERIFY(litMismatch(fast, sink.image()) < 0.001);
+    std::size_t sameCount = 0, lit = 0;
+    for (std::size_t i = 0; i < fast.size(); ++i)
+        if (fast.count(i)) {
+            ++lit;
+            sameCount += fast.count(i) == sink.image().count(i);
+        }
+    QVERIFY(double(sameCount) / double(lit) > 0.99);
+}
+
+void TestEngine::densityIsTheInvariantMeasure()
+{
+    // Probabilities (0.6, 0.25, 0.15): the invariant measure gives the piece f_i(A) the mass p_i
+    // (the pieces of the gasket meet in single points), and a point lies in f_i(A) exactly when
+    // map i was applied last. Cells of side 1/512 with the lines x = 1/2 and y = 1/2 on cell
+    // borders sort the hits into the pieces exactly: top y > 1/2, lower left x < 1/2, lower
+    // right x > 1/2 (no iterate lies on those lines).
+    const Ifs ifs = sierpinski({0.6, 0.25, 0.15});
+    RowVec x0(2);
+    x0 << 0.3, 0.3;
+    const double m = 4.0 / 512;
+    EngineJob j = job(ifs, StartSet::points(Mat(x0)), 520, -m, -m, 1 + m, 1 + m);
+    j.random = true;
+    j.samples = 4'000'000;
+    j.accumulation = Accumulation::Density;
+    j.threads = 2;
+    DensityImage img;
+    accumulate(j, img);
+    double mass[3] = {0, 0, 0}, total = 0;
+    for (int y = 0; y < 520; ++y)
+        for (int x = 0; x < 520; ++x) {
+            const double n = double(img.count(std::size_t(y) * 520 + x));
+            total += n;
+            mass[y < 260 ? 2 : (x >= 260 ? 1 : 0)] += n;
+        }
+    QCOMPARE(total, 4e6);
+    QCOMPARE(img.offscreen, std::uint64_t(0));
+    // The count of each piece is binomial (the maps are drawn independently): standard error
+    // sqrt(p(1-p)/n) < 2.5e-4; 8 standard errors allowed.
+    const QString masses = QString("masses %1 %2 %3")
+                               .arg(mass[0] / total)
+                               .arg(mass[1] / total)
+                               .arg(mass[2] / total);
+    QVERIFY2(std::abs(mass[0] / total - 0.60) < 0.002, qPrintable(masses));
+    QVERIFY2(std::abs(mass[1] / total - 0.25) < 0.002, qPrintable(masses));
+    QVERIFY2(std::abs(mass[2] / total - 0.15) < 0.002, qPrintable(masses));
+    // The colour coordinate is the hit-weighted mean of the maps' coordinates (0, 128, 255 for
+    // three maps): map 0's in its piece, map 2's in the top piece.
+    for (int y = 0; y < 520; ++y)
+        for (int x = 0; x < 520; ++x) {
+            const auto c = img.cell(std::size_t(y) * 520 + x);
+            // Rounding may put a point within 1e-16 of a line into the next cell.
+            if (c[0] == 0 || y == 259 || y == 260 || x == 259 || x == 260)
+                continue;
+            if (y < 260)
+                QCOMPARE(c[1] / c[0], 255.0);
+            else if (x < 260)
+                QCOMPARE(c[1] / c[0], 0.0);
+            else
+                QCOMPARE(c[1] / c[0], 128.0);
+        }
+}
+
+void TestEngine::aliasTableDrawsTheProbabilities()
+{
+    const std::vector<double> p = {0.1, 0.0, 0.45, 0.3, 0.15};
+    const AliasTable table(p, 5);
+    Xoshiro256 rng(42, 0);
+    std::vector<double> n(5, 0);
+    const int draws = 2'000'000;
+    for (int k = 0; k < draws; ++k)
+        n[table.pick(rng.next())] += 1;
+    for (int i = 0; i < 5; ++i)
+        QVERIFY2(std::abs(n[i] / draws - p[i]) < 0.002, qPrintable(QString::number(i)));
+    QCOMPARE(n[1], 0.0);  // probability 0: never
+    QVERIFY_THROWS_EXCEPTION(InputError, AliasTable({1, -1}, 2));
+    QVERIFY_THROWS_EXCEPTION(InputError, AliasTable({0, 0}, 2));
+    QVERIFY_THROWS_EXCEPTION(InputError, AliasTable({1, 2}, 3));
+}
+
+void TestEngine::countsStayExactPastTheSpillThreshold()
+{
+    // The whole gasket inside one cell: 2^24 + 12345 hits there, counted exactly.
+    Ifs ifs = sierpinski();
+    RowVec x0(2);
+    x0 << 0.3, 0.3;
+    EngineJob j = job(ifs, StartSet::points(Mat(x0)), 4, -1, -1, 7, 7);
+    j.colours.prefix = 0;
+    j.colours.labelColours = {Rgb8{255, 255, 1}};
+    j.random = true;
+    j.samples = (std::uint64_t(1) << 24) + 12345;
+    j.accumulation = Accumulation::Density;
+    // One thread spills while accumulating; two threads (8.4M hits each) spill on merging.
+    for (int threads : {1, 2}) {
+        j.threads = threads;
+        DensityImage img;
+        accumulate(j, img);
+        QCOMPARE(img.litCells(), std::uint64_t(1));
+        const std::size_t where = 3 * 4 + 0;  // x in [-1, 1): column 0; y in [1, 3): row 3
+        QCOMPARE(img.count(where), j.samples);
+        const auto c = img.cell(where);
+        QCOMPARE(c[0], double(j.samples));
+        QCOMPARE(c[1], 0.0);  // one label: coordinate 0
+    }
+}
+
+void TestEngine::polygonsAndSegmentsAreRasterised()
+{
+    // Depth 0 of a big triangle fills it; a segment draws its cells once each.
+    const Ifs ifs = sierpinski();
+    EngineJob j = job(ifs, StartSet::polygon(pts({{0, 0}, {1, 0}, {0, 1}})), 100, 0, 0, 1, 1);
+    j.depth = 0;
+    DensityImage img;
+    accumulate(j, img);
+    // About half the square (the cells whose centres lie in the triangle, and its outline).
+    QVERIFY(img.litCells() > 4900 && img.litCells() < 5300);
+    j.start = StartSet::polyline(pts({{0.005, 0.5}, {0.995, 0.5}}));
+    accumulate(j, img);
+    QCOMPARE(img.litCells(), std::uint64_t(100));
+    // Deep levels: each tiny triangle image is one hit; 3^7 of them.
+    j.start = StartSet::polygon(pts({{0, 0}, {1, 0}, {0.5, 1}}));
+    j.depth = 7;
+    accumulate(j, img);
+    std::uint64_t total = 0;
+    for (std::size_t i = 0; i < img.size(); ++i)
+        total += img.count(i);
+    QVERIFY(total >= 2187);  // at least one per image; larger images cover several cells
+}
+
+void TestEngine::toneMappingIsMonotone()
+{
+    DensityImage img(4, 1, Accumulation::Density);
+    for (int k = 0; k < 1; ++k)
+        img.addDensity(0, 0);
+    for (int k = 0; k < 10; ++k)
+        img.addDensity(1, 0);
+    for (int k = 0; k < 1000; ++k)
+        img.addDensity(2, 0);
+    RasterFrame f;
+    f.width = 4, f.height = 1;
+    ToneSettings tone;
+    tone.mode = Accumulation::Density;
+    const auto px = toneMap(img, f, tone, {Rgb8{255, 0, 0}});
+    const int a0 = int(px[0] >> 24), a1 = int(px[1] >> 24), a2 = int(px[2] >> 24);
+    QVERIFY(a0 > 0 && a0 < a1 && a1 < a2);
+    QCOMPARE(a2, 255);            // the densest pixel is opaque
+    QCOMPARE(px[3], 0u);          // unlit stays transparent
+    QCOMPARE(int((px[2] >> 16) & 255), 255);  // red, premultiplied by alpha 1
+    QCOMPARE(int(px[2] & 0xFFFF), 0);
+    // Hits: every lit pixel opaque whatever its count.
+    tone.mode = Accumulation::Hits;
+    const auto hits = toneMap(img, f, tone, {Rgb8{255, 0, 0}});
+    QCOMPARE(int(hits[0] >> 24), 255);
+    QCOMPARE(int(hits[2] >> 24), 255);
+}
+
+void TestEngine::supersamplingAntiAliases()
+{
+    // A horizontal segment through the middle of a pixel row, 3x3 cells per pixel: the lit
+    // pixels are partly covered (alpha 1/3), not opaque.
+    const Ifs ifs = sierpinski();
+    EngineJob j = job(ifs, StartSet::polyline(pts({{0.01, 0.55}, {0.99, 0.55}})), 10, 0, 0, 1, 1);
+    j.frame.supersample = 3;
+    j.depth = 0;
+    DensityImage img;
+    accumulate(j, img);
+    ToneSettings tone;
+    const auto px = toneMap(img, j.frame, tone, j.colours.labelColours);
+    int partial = 0;
+    for (std::uint32_t p : px)
+        partial += (p >> 24) > 0 && (p >> 24) < 255;
+    QCOMPARE(partial, 10);
+    QCOMPARE(int(px[4 * 10 + 5] >> 24), 85);  // one row of three cells: 255 / 3
+}
+
+void TestEngine::largeDimensionsUseTheSinkPath()
+{
+    // 16 control points of a cubic B-spline: lifted dimension 15 > 12, the sink path.
+    Mat P(16, 2);
+    for (int i = 0; i < 16; ++i)
+        P.row(i) << i, std::sin(i);
+    const auto s = buildSubdivisionIfs(bsplineScheme(3), P);
+    QCOMPARE(s.ifs.dim(), 15);
+    const StartSet start = StartSet::points(s.toIfsSpace(pts({{3, 0}})));
+    EngineJob j = job(s.ifs, start, 200, -1, -2, 16, 2);
+    j.depth = 9;
+    j.threads = 2;
+    DensityImage img;
+    QCOMPARE(accumulate(j, img).images, std::uint64_t(512));
+    QVERIFY(img.litCells() > 100);
+}
+
+void TestEngine::badInputIsRefused()
+{
+    const Ifs ifs = sierpinski();
+    RowVec x0(2);
+    x0 << 0.3, 0.3;
+    EngineJob j = job(ifs, StartSet::points(Mat(x0)), 100, 0, 0, 1, 1);
+    DensityImage img;
+    j.frame.supersample = 5;
+    QVERIFY_THROWS_EXCEPTION(InputError, accumulate(j, img));
+    j.frame.supersample = 1;
+    j.frame.x1 = std::nan("");
+    QVERIFY_THROWS_EXCEPTION(InputError, accumulate(j, img));
+    j.frame.x1 = 1;
+    j.depth = 65;
+    QVERIFY_THROWS_EXCEPTION(InputError, accumulate(j, img));
+    j.depth = 3;
+    j.colours.labelColours.resize(2);  // three maps need three colours
+    QVERIFY_THROWS_EXCEPTION(InputError, accumulate(j, img));
+    j.colours.labelColours.resize(3);
+    j.random = true;
+    j.samples = kMaxChaosSamples + 1;
+    QVERIFY_THROWS_EXCEPTION(InputError, accumulate(j, img));
+    j.samples = 1000;
+    j.start = StartSet::points(Mat::Constant(1, 2, std::nan("")));
+    QVERIFY_THROWS_EXCEPTION(InputError, accumulate(j, img));
+    // A cancelled job reports it and stops early.
+    j.start = StartSet::points(Mat(x0));
+    j.samples = 500'000'000;
+    std::atomic<bool> cancel{true};
+    IterationControl control;
+    control.cancel = &cancel;
+    QVERIFY(accumulate(j, img, control).cancelled);
+}
+
+QTEST_GUILESS_MAIN(TestEngine)
+#include "test_engine.moc"
