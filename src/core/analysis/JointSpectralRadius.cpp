@@ -138,8 +138,10 @@ public:
                     word.push_back(int(i));
                     next.push_back({P * m_A[i], word});
                     offerLower(next.back().first, word);
+                    ++m_out.nodes;
                 }
             level.swap(next);
+            m_out.enumerated = len;
             if (stopRequested())
                 return;
         }

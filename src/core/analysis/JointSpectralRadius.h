@@ -27,6 +27,7 @@ struct JsrBounds {
     double lower = 0.0;                                        // certified: lower <= JSR
     double upper = std::numeric_limits<double>::infinity();    // certified: JSR <= upper
     std::vector<int> product;     // the word w (indices, A_w = A_{w0} A_{w1} ...) giving lower
+    int enumerated = 0;           // every product up to this length was examined
     int depth = 0;                // longest product examined by the branch and bound
     long long nodes = 0;          // products evaluated
     std::string norm;             // the norm the upper bound was proved in

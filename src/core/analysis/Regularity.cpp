@@ -91,9 +91,12 @@ std::string jsrSummary(const JsrBounds &b, int count, Eigen::Index size)
 {
     std::ostringstream os;
     os << "JSR of " << count << " matrices " << size << " x " << size << ": lower bound "
-       << "max rho(product)^(1/k) over products up to length " << std::max(b.depth, 1)
-       << ", upper bound by Gripenberg's branch and bound (1996) in the " << b.norm
-       << (b.converged ? " (closed)" : "") << ", " << b.nodes << " products";
+       << "max rho(product)^(1/k) over all products up to length " << b.enumerated;
+    if (b.depth > b.enumerated)
+        os << " and the branch's products up to length " << b.depth;
+    os << ", upper bound " << (b.depth > 0 ? "by Gripenberg's branch and bound (1996) " : "")
+       << "in the " << b.norm << (b.converged ? " (equal to the lower bound)" : "") << ", "
+       << b.nodes << " products";
     return os.str();
 }
 
@@ -225,7 +228,9 @@ Regularity maskRegularity(const std::vector<double> &mask, int arity,
     const std::string nth = ordinal(d.order);
     std::ostringstream m;
     m << "r = n - log_" << arity << " rho_n with n = " << d.order
-      << " (a(z) has the factor (1 + .. + z^" << arity - 1 << ")^" << d.order
+      << " (a(z) has the factor (" << (arity == 2 ? std::string("1 + z")
+                                    : "1 + .. + z^" + std::to_string(arity - 1))
+      << ")^" << d.order
       << "), rho_n the joint spectral radius of the transition matrices of the " << nth
       << " divided-difference mask (Daubechies & Lagarias 1992, Rioul 1992); "
       << jsrSummary(r.jsr, arity, r.transition.front().rows());
