@@ -58,15 +58,4 @@ QJsonObject regularityJson(const Regularity &r)
     return o;
 }
 
-QString regularitySummary(const Regularity &r)
-{
-    if (!r.applies || r.infinite || (r.divergent && r.transition.empty()))
-        return QString::fromStdString(r.message);
-    return QStringLiteral("%1, r in [%2, %3] (width %4)")
-        .arg(QString::fromStdString(r.smoothnessLabel()))
-        .arg(r.lower, 0, 'g', 8)
-        .arg(r.upper, 0, 'g', 8)
-        .arg(r.width(), 0, 'g', 2);
-}
-
 } // namespace awb

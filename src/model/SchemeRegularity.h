@@ -1,12 +1,11 @@
 #pragma once
 // The certified regularity of a subdivision-curve item's scheme (layer 2): the core's
 // Regularity.h applied to the item's scheme and number of control points, and its JSON form
-// shared by `attractor-cli analyse --json` and the GUI's Analysis dock.
+// used by `attractor-cli analyse --json`.
 
 #include "core/analysis/Regularity.h"
 
 #include <QJsonObject>
-#include <QString>
 
 namespace awb {
 
@@ -20,8 +19,5 @@ Regularity itemRegularity(const SubdivisionCurveItem &item, const RegularityOpti
 // "arity", "seconds", "jsr": {"lower", "upper", "product", "norm", "depth"}}; lower/upper/width
 // only when finite (C^infinity and "does not apply" carry "smoothness" and "message").
 QJsonObject regularityJson(const Regularity &r);
-
-// One line for a dock: "C^1, r in [1.99999, 2] (width 1e-06)" or the message.
-QString regularitySummary(const Regularity &r);
 
 } // namespace awb
