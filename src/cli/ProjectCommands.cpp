@@ -7,6 +7,7 @@
 #include "model/ExactCurve.h"
 #include "model/NumberFormat.h"
 #include "model/Project.h"
+#include "model/SchemeRegularity.h"
 #include "model/NormalVectorItem.h"
 #include "model/SubdivisionCurveItem.h"
 #include "core/schemes/NormalVectorScheme.h"
@@ -356,6 +357,9 @@ QJsonObject analyseItem(const AttractorItem *item)
     }
     o["maps"] = maps;
     o["subdominant"] = subdominants;
+    // The scheme's certified Hölder regularity (issue 16): an interval, its class C^n, how.
+    if (const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item))
+        o["regularity"] = regularityJson(itemRegularity(*curve));
     if (const auto *s = qobject_cast<const SubdivisionSurfaceItem *>(item)) {
         o["kind"] = item->type();
         o["scheme"] = SurfaceSchemeSpec::kindNames().at(int(s->scheme().kind));
@@ -601,7 +605,8 @@ int analyse(const QStringList &args)
             "Analyse the items of a project: per map S_i (exact fractions), M_i = P^-1 S_i P "
             "with its blocks A_i, b_i, the eigenvalues of S_i and A_i, spectral radius, "
             "contractivity and fixed point; per item the subdominant eigenvalues, the "
-            "Hausdorff distance to the exact curve and the box-counting dimension.");
+            "Hausdorff distance to the exact curve and the box-counting dimension; per "
+            "subdivision curve the certified Hölder regularity of its scheme.");
         parser.addPositionalArgument("project", "The .awb project file.");
         parser.addOptions({{"item", "Only this item.", "name"},
                            {"json", "Print JSON (the only format so far)."}});

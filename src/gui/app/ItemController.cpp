@@ -7,6 +7,7 @@
 #include "gui/views/AnalysisCharts.h"
 #include "gui/views/AttractorView.h"
 #include "gui/views/MatrixView.h"
+#include "gui/views/RegularityPanel.h"
 #include "model/NumberFormat.h"
 #include "gui/views/SpectrumView.h"
 #include "gui/views/SurfaceView.h"
@@ -17,6 +18,8 @@
 #include "model/SubdivisionSurfaceItem.h"
 
 #include <QColor>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <algorithm>
 #include <cmath>
 
@@ -442,10 +445,44 @@ void ItemController::refreshNow()
             problem = d->note;
         m_analysisTimer.start();
     }
+    updateRegularity();
     if (problem != m_problem) {
         m_problem = problem;
         emit problemChanged(problem);
     }
+}
+
+void ItemController::setRegularityPanel(RegularityPanel *panel)
+{
+    m_regularity = panel;
+    updateRegularity();
+}
+
+// The regularity depends only on the scheme and the number of control points: a drag of a
+// point does not restart it (the panel skips an unchanged key).
+void ItemController::updateRegularity()
+{
+    if (!m_regularity)
+        return;
+    const auto *curve = qobject_cast<const SubdivisionCurveItem *>(m_item.data());
+    if (!curve) {
+        m_regularity->showMessage(tr("Regularity: only for subdivision curves"));
+        return;
+    }
+    const auto scheme = realScheme(curve);
+    if (!scheme) {
+        m_regularity->showMessage(tr("Regularity: does not apply (%1)")
+                                      .arg(curve->scheme().isComplex()
+                                               ? tr("complex de Casteljau parameter")
+                                               : tr("the scheme's parameters are refused")));
+        return;
+    }
+    QJsonObject json;
+    curve->write(json);
+    const int m = int(curve->controlPoints(0).size());
+    const QString key = QString::fromUtf8(QJsonDocument(json["scheme"].toObject()).toJson())
+                        + QString::number(m);
+    m_regularity->analyse(scheme, std::max(m, scheme->minControlPoints()), key);
 }
 
 void ItemController::cancelAnalysis()

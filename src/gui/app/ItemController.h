@@ -23,6 +23,7 @@ class AttractorItem;
 class AttractorView;
 class Item;
 class MatrixView;
+class RegularityPanel;
 class Messages;
 class SpectrumView;
 class SurfaceView;
@@ -55,6 +56,8 @@ public:
     void setPalette(const QList<QColor> &palette) { m_palette = palette; refreshNow(); }
     // Classic subdivision polygons beside the IFS: how many steps (0 hides them).
     void setSubdivisionSteps(int steps);
+    // The panel that shows the current curve scheme's certified regularity (issue 16).
+    void setRegularityPanel(RegularityPanel *panel);
     int subdivisionSteps() const { return m_subdivisionSteps; }
     // Pushes the item's current data to every view at once (normally deferred to the event
     // loop so that a burst of edits costs one update).
@@ -85,6 +88,7 @@ signals:
 
 private:
     void scheduleRefresh();
+    void updateRegularity();
     void clearViews();
     void startAnalysis();
     void applyAnalysis(const std::shared_ptr<AnalysisResult> &result);
@@ -109,6 +113,7 @@ private:
     MatrixView *m_matrices;
     SpectrumView *m_spectrum;
     AnalysisCharts *m_charts;
+    QPointer<RegularityPanel> m_regularity;
     SurfaceView *m_surface = nullptr;
     QPointer<Item> m_item;
     QList<QMetaObject::Connection> m_connections;

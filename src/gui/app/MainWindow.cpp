@@ -8,6 +8,8 @@
 #include "gui/views/AttractorRenderer.h"
 #include "gui/views/AttractorView.h"
 #include "gui/views/MatrixView.h"
+#include "gui/views/RegularityChart.h"
+#include "gui/views/RegularityPanel.h"
 #include "gui/views/SpectrumView.h"
 #include "gui/views/SurfaceView.h"
 #include "model/AttractorItem.h"
@@ -21,6 +23,7 @@
 #include "core/ifs/SurfaceIfs.h"
 
 #include <QAction>
+#include <QLayout>
 #include <QApplication>
 #include <QChartView>
 #include <QCloseEvent>
@@ -181,6 +184,10 @@ void MainWindow::createViews()
     m_undoView->setEmptyLabel(tr("<original>"));
     m_controller = new ItemController(m_attractor, m_matrices, m_spectrum, m_charts, this);
     m_controller->setSurfaceView(m_surface);
+    // The scheme's certified regularity sits under the Analysis dock's charts (issue 16).
+    auto *regularity = new RegularityPanel;
+    m_charts->layout()->addWidget(regularity);
+    m_controller->setRegularityPanel(regularity);
     // A click on a control point in the 3D view selects its row: x, y, z to edit exactly.
     connect(m_surface, &SurfaceView::controlPointPressed, this, [this](int index) {
         if (auto *t = qobject_cast<QTableWidget *>(m_properties->editor(QStringLiteral("points"))))
@@ -523,6 +530,20 @@ void MainWindow::createMenus()
         m_viewMenu->addAction(d->toggleViewAction());
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(action(QStringLiteral("actionResetLayout")));
+    // Issue 16: regularity of the four-point scheme against omega, in its own window.
+    QAction *regularityChart = m_viewMenu->addAction(tr("Four-point &Regularity Chart…"));
+    regularityChart->setObjectName(QStringLiteral("actionRegularityChart"));
+    connect(regularityChart, &QAction::triggered, this, [this] {
+        auto *chart = findChild<RegularityChart *>();
+        if (!chart) {
+            chart = new RegularityChart(this);
+            chart->setWindowFlag(Qt::Window);
+        }
+        chart->show();
+        chart->raise();
+        if (chart->samples().empty() && !chart->isRunning())
+            chart->compute();
+    });
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(action(QStringLiteral("actionAbout")));

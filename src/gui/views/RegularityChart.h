@@ -1,0 +1,61 @@
+#pragma once
+// A window charting the certified Hölder regularity of the four-point scheme against its
+// tension omega (issue 16): the lower and upper bound curves, and the values known exactly
+// (omega = 0: piecewise linear, 1; omega = 1/16: Dubuc-Deslauriers, 2). The sweep runs on a
+// worker thread, one time budget per omega, with progress and cancel; Qt Charts stays out of
+// this header.
+
+#include "gui/views/CancellableWorker.h"
+
+#include <QWidget>
+
+#include <vector>
+
+class QChart;
+class QChartView;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+
+namespace awb {
+
+class RegularityChart : public QWidget {
+    Q_OBJECT
+public:
+    struct Sample {
+        double omega = 0.0;
+        double lower = 0.0;
+        double upper = 0.0;
+    };
+
+    explicit RegularityChart(QWidget *parent = nullptr);
+    ~RegularityChart() override;
+
+    // Sweeps omega over [omegaMin, omegaMax] in `count` evenly spaced values (restarting a
+    // running sweep), each with `budget` seconds for its joint spectral radius.
+    void compute(double omegaMin = -0.125, double omegaMax = 0.375, int count = 81,
+                 double budget = 0.1);
+    void cancel();
+    bool isRunning() const { return m_running; }
+    const std::vector<Sample> &samples() const { return m_samples; }
+    QChart *chart() const;
+    QChartView *chartView() const { return m_view; }
+
+signals:
+    void progressed(int done, int total);
+    void finished();
+
+private:
+    void addSample(const Sample &s, int total, quint64 generation);
+    void done(quint64 generation);
+
+    QChartView *m_view = nullptr;
+    QLabel *m_status = nullptr;
+    QProgressBar *m_progress = nullptr;
+    QPushButton *m_cancel = nullptr;
+    CancellableWorker m_worker;
+    std::vector<Sample> m_samples;
+    bool m_running = false;
+};
+
+} // namespace awb

@@ -1,0 +1,132 @@
+#include "gui/views/RegularityPanel.h"
+
+#include "core/analysis/Regularity.h"
+#include "core/schemes/Scheme.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+namespace awb {
+
+QString regularityText(const Regularity &r)
+{
+    if (!r.applies || r.infinite || (r.divergent && r.transition.empty()))
+        return QString::fromStdString(r.message);
+    QString text = QObject::tr("%1, Hölder regularity r in [%2, %3] (width %4)")
+                       .arg(QString::fromStdString(r.smoothnessLabel()))
+                       .arg(r.lower, 0, 'g', 8)
+                       .arg(r.upper, 0, 'g', 8)
+                       .arg(r.width(), 0, 'g', 2);
+    if (!r.notes.empty())
+        text += QStringLiteral("; ") + QString::fromStdString(r.notes).trimmed();
+    return text;
+}
+
+RegularityPanel::RegularityPanel(QWidget *parent) : QWidget(parent)
+{
+    setObjectName(QStringLiteral("regularityPanel"));
+    m_summary = new QLabel(tr("Regularity: no curve scheme"));
+    m_summary->setObjectName(QStringLiteral("regularitySummary"));
+    m_summary->setWordWrap(true);
+    m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_method = new QLabel;
+    m_method->setObjectName(QStringLiteral("regularityMethod"));
+    m_method->setWordWrap(true);
+    m_method->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    QFont small = m_method->font();
+    small.setPointSizeF(small.pointSizeF() * 0.85);
+    m_method->setFont(small);
+    m_progress = new QProgressBar;
+    m_progress->setRange(0, 100);
+    m_progress->setMaximumWidth(140);
+    m_progress->setFormat(tr("Regularity %p%"));
+    m_progress->setVisible(false);
+    m_cancel = new QToolButton;
+    m_cancel->setObjectName(QStringLiteral("regularityCancel"));
+    m_cancel->setText(tr("Cancel"));
+    m_cancel->setToolTip(tr("Stop the regularity analysis; the bounds reached so far stay"));
+    m_cancel->setVisible(false);
+    connect(m_cancel, &QToolButton::clicked, this, &RegularityPanel::cancel);
+    auto *row = new QHBoxLayout;
+    row->addWidget(m_summary, 1);
+    row->addWidget(m_progress);
+    row->addWidget(m_cancel);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 2, 4, 2);
+    layout->addLayout(row);
+    layout->addWidget(m_method);
+}
+
+RegularityPanel::~RegularityPanel() { m_worker.stop(); }
+
+void RegularityPanel::cancel() { m_worker.cancel(); }
+
+void RegularityPanel::showMessage(const QString &message)
+{
+    m_worker.bump();
+    m_running = false;
+    m_key.clear();
+    m_summary->setText(message);
+    m_method->clear();
+    m_progress->setVisible(false);
+    m_cancel->setVisible(false);
+}
+
+void RegularityPanel::analyse(std::shared_ptr<const CurveScheme> scheme, int m, const QString &key)
+{
+    if (key == m_key && !key.isEmpty())
+        return;
+    m_worker.stop();
+    m_key = key;
+    m_running = true;
+    m_summary->setText(tr("Regularity of %1: computing…").arg(QString::fromStdString(scheme->name())));
+    m_method->clear();
+    m_progress->setValue(0);
+    m_progress->setVisible(true);
+    m_cancel->setVisible(true);
+    const double budget = m_budget;
+    m_worker.start([this, scheme, m, budget](const std::atomic<bool> *cancel, quint64 generation) {
+        RegularityOptions o;
+        o.timeBudget = budget;
+        o.cancel = cancel;
+        o.progress = [this, generation](double lo, double hi, double fraction) {
+            QMetaObject::invokeMethod(this, [=, this] { showProgress(lo, hi, fraction, generation); },
+                                      Qt::QueuedConnection);
+        };
+        Regularity r;
+        try {
+            r = schemeRegularity(*scheme, m, o);
+        } catch (const std::exception &e) {
+            r.message = std::string("does not apply: ") + e.what();
+        }
+        QMetaObject::invokeMethod(this, [=, this] { showResult(r, generation); }, Qt::QueuedConnection);
+    });
+}
+
+void RegularityPanel::showProgress(double lower, double upper, double fraction, quint64 generation)
+{
+    if (!m_worker.isCurrent(generation) || !m_running)
+        return;
+    m_progress->setValue(int(100 * fraction));
+    m_method->setText(tr("so far: r in [%1, %2]").arg(lower, 0, 'g', 8).arg(upper, 0, 'g', 8));
+}
+
+void RegularityPanel::showResult(const Regularity &r, quint64 generation)
+{
+    if (!m_worker.isCurrent(generation))
+        return;
+    m_running = false;
+    m_progress->setVisible(false);
+    m_cancel->setVisible(false);
+    m_summary->setText(tr("Regularity: %1").arg(regularityText(r)));
+    m_method->setText(QString::fromStdString(r.method));
+    emit finished();
+}
+
+QString RegularityPanel::summary() const { return m_summary->text(); }
+QString RegularityPanel::method() const { return m_method->text(); }
+
+} // namespace awb

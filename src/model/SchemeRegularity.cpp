@@ -1,0 +1,61 @@
+#include "model/SchemeRegularity.h"
+
+#include "core/schemes/Scheme.h"
+#include "model/SubdivisionCurveItem.h"
+
+#include <QJsonArray>
+
+#include <cmath>
+
+namespace awb {
+
+Regularity itemRegularity(const SubdivisionCurveItem &item, const RegularityOptions &options)
+{
+    Regularity r;
+    if (item.scheme().isComplex()) {
+        r.message = "does not apply: a complex de Casteljau parameter is not a real "
+                    "subdivision scheme";
+        return r;
+    }
+    try {
+        const auto scheme = item.scheme().makeScheme();
+        const int m = std::max(int(item.controlPoints(0).size()), scheme->minControlPoints());
+        return schemeRegularity(*scheme, std::min(m, scheme->maxControlPoints()), options);
+    } catch (const std::exception &e) {
+        r.message = std::string("does not apply: ") + e.what();
+        return r;
+    }
+}
+
+QJsonObject regularityJson(const Regularity &r)
+{
+    QJsonObject o;
+    o["smoothness"] = QString::fromStdString(r.smoothnessLabel());
+    o["message"] = QString::fromStdString(r.message);
+    if (!r.method.empty())
+        o["method"] = QString::fromStdString(r.method);
+    if (!r.notes.empty())
+        o["notes"] = QString::fromStdString(r.notes);
+    if (!r.applies || r.infinite)
+        return o;
+    o["arity"] = r.arity;
+    o["sum_rules"] = r.sumRules;
+    o["seconds"] = r.seconds;
+    if (r.divergent && r.transition.empty())
+        return o;   // no JSR was needed (the mask does not reproduce constants)
+    o["lower"] = r.lower;
+    o["upper"] = r.upper;
+    o["width"] = r.width();
+    QJsonArray word;
+    for (int i : r.jsr.product)
+        word.append(i);
+    o["jsr"] = QJsonObject{{"lower", r.jsr.lower},
+                           {"upper", r.jsr.upper},
+                           {"product", word},
+                           {"norm", QString::fromStdString(r.jsr.norm)},
+                           {"depth", r.jsr.depth},
+                           {"converged", r.jsr.converged}};
+    return o;
+}
+
+} // namespace awb

@@ -1,0 +1,111 @@
+// The certified regularity in the GUI (issue 16): the panel under the Analysis dock computes
+// off the GUI thread and shows the class and the interval of the current curve scheme (cubic
+// B-spline: C^2, r = 3), a cancel leaves valid bounds, and the four-point chart sweeps omega
+// with lower <= upper everywhere and hits the known values 1 (omega = 0) and 2 (omega = 1/16).
+
+#include "core/schemes/Scheme.h"
+#include "gui/app/MainWindow.h"
+#include "gui/app/Messages.h"
+#include "gui/views/RegularityChart.h"
+#include "gui/views/RegularityPanel.h"
+
+#include <QAction>
+#include <QChart>
+#include <QLineSeries>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace awb;
+
+class TestRegularityViews : public QObject {
+    Q_OBJECT
+private slots:
+    void panelShowsCubicBSpline();
+    void panelCancel();
+    void mainWindowHasPanelAndChartAction();
+    void chartSweepsOmega();
+
+private:
+    QTemporaryDir m_dir;
+};
+
+void TestRegularityViews::panelShowsCubicBSpline()
+{
+    RegularityPanel panel;
+    QSignalSpy done(&panel, &RegularityPanel::finished);
+    panel.analyse(std::make_shared<UniformScheme>(bsplineScheme(3)), 7, QStringLiteral("cubic"));
+    QVERIFY(panel.isRunning() || done.count() == 1);
+    QVERIFY(done.count() == 1 || done.wait(20000));
+    QVERIFY2(panel.summary().contains("C^2"), qPrintable(panel.summary()));
+    QVERIFY(panel.summary().contains("[3, 3]"));
+    QVERIFY(panel.method().contains("joint spectral radius"));
+    // The same key again does not restart it.
+    panel.analyse(std::make_shared<UniformScheme>(bsplineScheme(3)), 7, QStringLiteral("cubic"));
+    QVERIFY(!panel.isRunning());
+    panel.showMessage(QStringLiteral("none"));
+    QCOMPARE(panel.summary(), QStringLiteral("none"));
+}
+
+void TestRegularityViews::panelCancel()
+{
+    RegularityPanel panel;
+    panel.setTimeBudget(60.0);
+    QSignalSpy done(&panel, &RegularityPanel::finished);
+    QElapsedTimer t;
+    t.start();
+    panel.analyse(std::make_shared<UniformScheme>(fourPointScheme(0.1)), 8, QStringLiteral("w"));
+    QVERIFY(panel.isRunning());
+    QTest::qWait(200);
+    panel.cancel();
+    QVERIFY(done.count() == 1 || done.wait(20000));
+    QVERIFY(t.elapsed() < 20000);
+    QVERIFY2(panel.summary().contains("C^1"), qPrintable(panel.summary()));
+    QVERIFY(panel.summary().contains("cancelled"));
+}
+
+void TestRegularityViews::mainWindowHasPanelAndChartAction()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    auto *panel = w.findChild<RegularityPanel *>();
+    QVERIFY(panel);
+    // The new project's curve is a subdivision curve: its regularity is being computed or done.
+    QSignalSpy done(panel, &RegularityPanel::finished);
+    QVERIFY(!panel->isRunning() || done.wait(20000));
+    QVERIFY2(panel->summary().startsWith("Regularity: C^"), qPrintable(panel->summary()));
+    auto *action = w.findChild<QAction *>(QStringLiteral("actionRegularityChart"));
+    QVERIFY(action);
+}
+
+void TestRegularityViews::chartSweepsOmega()
+{
+    RegularityChart chart;
+    QSignalSpy done(&chart, &RegularityChart::finished);
+    chart.compute(-0.0625, 0.1875, 21, 0.05);   // steps of 1/80: 0 and 1/16 are samples
+    QVERIFY(done.wait(60000));
+    QCOMPARE(int(chart.samples().size()), 21);
+    auto series = chart.chart()->series();
+    QCOMPARE(series.size(), 3);   // lower, upper, known values
+    QCOMPARE(qobject_cast<QLineSeries *>(series[0])->count(), 21);
+    for (const RegularityChart::Sample &s : chart.samples()) {
+        QVERIFY(s.lower <= s.upper);
+        if (std::abs(s.omega) < 1e-12)
+            QVERIFY(std::abs(s.lower - 1.0) < 1e-9 && std::abs(s.upper - 1.0) < 1e-9);
+        if (std::abs(s.omega - 1.0 / 16) < 1e-12)
+            QVERIFY(s.lower > 1.99 && s.upper >= 2.0 - 1e-9);
+        if (s.omega > 0.01 && s.omega < 0.125)
+            QVERIFY(s.lower > 1.0);   // C^1 (Dyn, Gregory & Levin 1987)
+    }
+    // Restart and cancel: the sweep stops early.
+    chart.compute(-0.0625, 0.1875, 400, 0.5);
+    QVERIFY(chart.isRunning());
+    chart.cancel();
+    QVERIFY(done.wait(20000));
+    QVERIFY(chart.samples().size() < 400);
+}
+
+QTEST_MAIN(TestRegularityViews)
+#include "test_regularity_views.moc"
