@@ -74,6 +74,12 @@ public:
 
     int mapCount() const override { return m_scheme.arity(); }
     int controlPointSetCount() const override { return 1; }
+    // The user's own m x m matrices S_i fix m; a Bézier curve takes degree + 1 points (the GUI
+    // raises the degree with an inserted point).
+    bool pointCountEditable(int) const override
+    {
+        return m_scheme.kind != SchemeSpec::Kind::Matrices;
+    }
 
     void write(QJsonObject &json) const override;
     void read(const FieldReader &fields) override;
