@@ -8,16 +8,17 @@
 
 #include <QtTest>
 
+#include "Fig2Example.h"
+
 #include <algorithm>
 
 using namespace awb;
 
 namespace {
 
-const QString fig2 = QStringLiteral(AWB_TEST_SOURCE_DIR
-                                    "/examples/000-fig02-cubic-bspline-from-point.awb");
-const QString plotName = QStringLiteral("000 Fig. 2: spectra of S_i");
-const QString curveName = QStringLiteral("000 Fig. 2: cubic B-spline from a point");
+const QString &fig2 = test::fig2File;
+const QString &plotName = test::fig2Plot;
+const QString &curveName = test::fig2Curve;
 
 // The eigenvalues of one spectrum, real parts sorted downwards (they are all real here).
 std::vector<double> sortedReal(const Spectrum &s)
