@@ -302,8 +302,8 @@ QString SpectrumView::tooltipAt(const QPointF &pixel) const
                 continue;
             const int mult = k < m.spectrum.multiplicity.size() ? m.spectrum.multiplicity[k] : 1;
             const double degrees = std::arg(z) * 180.0 / M_PI;
-            QString line = tr("<b>%1</b> (map %5): λ = %2, |λ| = %3, arg λ = %6°, "
-                              "multiplicity %4")
+            QString line = tr("<b>%1</b>: λ = %2, |λ| = %3, multiplicity %4, arg λ = %6° "
+                              "(map %5)")
                                .arg(richLabel(m.label), formatComplex(z, 10),
                                     formatNumber(std::abs(z), 10))
                                .arg(mult)
