@@ -6,6 +6,7 @@
 #include "model/AttractorItem.h"
 #include "model/ExactCurve.h"
 #include "model/NumberFormat.h"
+#include "model/PointExport.h"
 #include "model/Project.h"
 #include "model/SchemeRegularity.h"
 #include "model/NormalVectorItem.h"
@@ -685,32 +686,15 @@ int points(const QStringList &args)
         const double maxPoints = intOption(parser, "max-points", 1, 2000000000);
         if (!d->iterate)
             requirePointBudget(*d, start, depth, maxPoints);
-        QTextStream &o = out();
-        o.setRealNumberPrecision(17);
-        const bool space = !d->ifs.views.empty() && d->ifs.views.front().outDim() == 3;
-        o << (space ? "x,y,z,map,view\n" : "x,y,map,view\n");
-        std::uint64_t printed = 0;
-        CallbackSink sink([&](const Mat &v, StartSet::Kind, const std::uint8_t *a, int n) {
-            // The map applied last, 1-based, numbered as the item numbers its maps.
-            const int map = n > 0 ? d->analysisIndex(a[0]) + 1 : 0;
-            for (size_t k = 0; k < d->ifs.views.size(); ++k) {
-                const Mat p = awb::project(d->ifs.views[k], v);
-                for (Eigen::Index r = 0; r < p.rows(); ++r) {
-                    for (Eigen::Index c = 0; c < p.cols(); ++c)
-                        o << p(r, c) << ',';
-                    o << map << ',' << k + 1 << '\n';
-                }
-                printed += std::uint64_t(p.rows());
-            }
-        });
+        out().flush();
+        QFile stdoutFile;
+        if (!stdoutFile.open(stdout, QIODevice::WriteOnly))
+            throw Failure{"cannot write to the standard output"};
         std::atomic<bool> cancel{false};
         IterationControl control;
         control.cancel = &cancel;
-        if (d->iterate)
-            d->iterate(start, depth, {&sink}, control);
-        else
-            iterate(d->ifs, start, depth, sink, control);
-        o.flush();
+        writePointsCsv(stdoutFile, *d, start, depth, control);
+        stdoutFile.flush();
         return 0;
     });
 }
@@ -763,54 +747,6 @@ int rewrite(const QStringList &args)
 namespace awb::cli {
 
 namespace {
-
-// Binary little-endian PLY of the attractor's points: x, y, z (float), the map's colour and
-// the 0-based index of the map applied last. Readable by MeshLab, Blender and any PLY parser.
-void writePly(QSaveFile &file, const AttractorItem *item, const DerivedIfs &d,
-              const StartSet &start, int depth, double maxPoints)
-{
-    if (d.iterate)
-        throw Failure{QString("item '%1' is drawn by an automaton: PLY export covers items "
-                              "with one IFS").arg(item->name())};
-    const double n = requirePointBudget(d, start, depth, maxPoints);
-    const QByteArray header = QString("ply\nformat binary_little_endian 1.0\n"
-                                      "comment Attractor Workbench: item %1, F^%2(X0)\n"
-                                      "element vertex %3\n"
-                                      "property float x\nproperty float y\nproperty float z\n"
-                                      "property uchar red\nproperty uchar green\n"
-                                      "property uchar blue\nproperty uchar map\nend_header\n")
-                                  .arg(item->name())
-                                  .arg(depth)
-                                  .arg(qint64(n))
-                                  .toUtf8();
-    file.write(header);
-    QByteArray buffer;
-    std::uint64_t written = 0;
-    CallbackSink sink([&](const Mat &v, StartSet::Kind, const std::uint8_t *a, int len) {
-        const int map = len > 0 ? d.analysisIndex(a[0]) : 0;
-        const QColor c = mapColor(map);
-        for (const Projection &view : d.ifs.views) {
-            const Mat p = awb::project(view, v);
-            for (Eigen::Index r = 0; r < p.rows(); ++r) {
-                float xyz[3] = {float(p(r, 0)), float(p(r, 1)),
-                                p.cols() > 2 ? float(p(r, 2)) : 0.0f};
-                buffer.append(reinterpret_cast<const char *>(xyz), sizeof xyz);
-                const char rgbm[4] = {char(c.red()), char(c.green()), char(c.blue()),
-                                      char(std::uint8_t(map))};
-                buffer.append(rgbm, 4);
-                ++written;
-            }
-        }
-        if (buffer.size() > (1 << 20)) {
-            file.write(buffer);
-            buffer.clear();
-        }
-    });
-    iterate(d.ifs, start, depth, sink);
-    file.write(buffer);
-    if (written != std::uint64_t(n))
-        throw Failure{QString("wrote %1 points, expected %2").arg(written).arg(qint64(n))};
-}
 
 // Wavefront OBJ of the control net after `rounds` rounds of classic subdivision.
 void writeObj(QSaveFile &file, const SubdivisionSurfaceItem *item, int rounds)
@@ -873,8 +809,12 @@ int exportData(const QStringList &args)
         if (format == "ply") {
             const int depth = parser.isSet("depth") ? intOption(parser, "depth", 0, 64)
                                                     : item->algorithm().depth;
-            writePly(file, item, *d, item->coreStartSet(*d), depth,
-                     intOption(parser, "max-points", 1, 2000000000));
+            const StartSet start = item->coreStartSet(*d);
+            if (d->iterate)
+                throw Failure{QString("item '%1' is drawn by an automaton: PLY export covers "
+                                      "items with one IFS").arg(item->name())};
+            requirePointBudget(*d, start, depth, intOption(parser, "max-points", 1, 2000000000));
+            writePointsPly(file, item->name(), *d, start, depth, mapColor);
         } else {
             const auto *surface = qobject_cast<const SubdivisionSurfaceItem *>(item);
             if (!surface)

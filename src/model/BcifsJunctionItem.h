@@ -59,6 +59,8 @@ public:
     // 0: the left cubic (4 points), 1: the right quadratic (3 points), 2 (refined only): the
     // left tangent handle, the interpolated vertex and the right tangent handle.
     int controlPointSetCount() const override;
+    // The cubic (4 points), the quadratic (3) and the handles (3) are fixed by 003 §4-5.
+    bool pointCountEditable(int) const override { return false; }
 
     void write(QJsonObject &json) const override;
     void read(const FieldReader &fields) override;

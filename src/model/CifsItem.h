@@ -47,6 +47,7 @@ public:
     int mapCount() const override { return 4; }
     // The frame triangle (3 points).
     int controlPointSetCount() const override { return 1; }
+    bool pointCountEditable(int) const override { return false; } // the frame triangle
 
     void write(QJsonObject &json) const override;
     void read(const FieldReader &fields) override;

@@ -15,8 +15,14 @@ EigenvaluePlotItem::EigenvaluePlotItem() : Item(tr("Eigenvalues")) {}
 
 const QStringList &EigenvaluePlotItem::matrixKindNames()
 {
-    static const QStringList names{"S", "A"};
+    static const QStringList names{"S", "A", "M"};
     return names;
+}
+
+QStringList EigenvaluePlotItem::matrixKindDescriptions()
+{
+    return {tr("S_i, the subdivision matrices"), tr("A_i, the linear parts of M_i"),
+            tr("M_i = P⁻¹S_iP, the lifted maps")};
 }
 
 bool EigenvaluePlotItem::setSource(const QString &name)
@@ -52,6 +58,25 @@ QString EigenvaluePlotItem::derivedError() const
     return m_eigenvalues.error();
 }
 
+AnalysisMatrices EigenvaluePlotItem::analysedMatrices(const DerivedIfs &derived, MatrixKind kind)
+{
+    switch (kind) {
+    case MatrixKind::S: return derived.S;
+    case MatrixKind::A: return derived.A;
+    case MatrixKind::M: break;
+    }
+    AnalysisMatrices lifted;
+    if (derived.subdivision)
+        for (const auto &map : derived.subdivision->lifted)
+            lifted.real.push_back(map.M);
+    lifted.complex = derived.liftedComplex;
+    if (lifted.count() == 0)
+        lifted.unavailable = derived.A.unavailable.isEmpty()
+                                 ? tr("M_i is defined only for a lifted subdivision IFS")
+                                 : derived.A.unavailable;
+    return lifted;
+}
+
 EigenvalueData EigenvaluePlotItem::compute() const
 {
     if (m_source.isEmpty())
@@ -67,10 +92,10 @@ EigenvalueData EigenvaluePlotItem::compute() const
     if (!derived)
         throw InputError(toStd(tr("\"%1\" cannot be computed: %2")
                                    .arg(m_source, source->derivedError())));
-    const bool isS = m_matrixKind == MatrixKind::S;
-    const AnalysisMatrices &matrices = isS ? derived->S : derived->A;
     EigenvalueData out;
     out.symbol = matrixKindNames().at(int(m_matrixKind));
+    out.matrices = analysedMatrices(*derived, m_matrixKind);
+    const AnalysisMatrices &matrices = out.matrices;
     if (matrices.count() == 0)
         throw InputError(toStd(tr("\"%1\" has no matrices %2: %3")
                                    .arg(m_source, out.symbol, matrices.unavailable)));
@@ -78,8 +103,10 @@ EigenvalueData EigenvaluePlotItem::compute() const
     for (int i = 0; i < matrices.count(); ++i) {
         out.spectra.push_back(matrices.isComplex() ? spectrum(matrices.complex[size_t(i)])
                                                    : spectrum(matrices.real[size_t(i)]));
-        // S_i is row-stochastic: its eigenvalue 1 is affine invariance, not the curve's.
-        out.subdominants.push_back(subdominant(out.spectra.back(), isS));
+        // S_i is row-stochastic and M_i keeps the homogeneous coordinate: their eigenvalue 1
+        // is affine invariance, not the curve's.
+        out.subdominants.push_back(
+            subdominant(out.spectra.back(), m_matrixKind != MatrixKind::A));
     }
     return out;
 }

@@ -1,18 +1,20 @@
 #pragma once
 // Document item "eigenvalue-plot" (layer 2, model): the spectra of another item's matrices,
-// the subdivision matrices S_i or the linear parts A_i of M_i = P^-1 S_i P (003 §4, 004 §2.1).
+// the subdivision matrices S_i, the linear parts A_i of M_i = P^-1 S_i P or the whole lifted
+// maps M_i (003 §4, 004 §2.1).
 // It stores only which item (by name) and which matrices; the spectra are derived from the
 // source's derived IFS and recomputed when the source changes.
 
 #include "core/analysis/Spectrum.h"
-#include "model/Item.h"
+#include "model/AttractorItem.h"
 
 namespace awb {
 
 // What an eigenvalue plot derives: the spectrum of each of the source's matrices. Never saved.
 struct EigenvalueData {
-    QString symbol;                      // "S" or "A"
+    QString symbol;                      // "S", "A" or "M"
     bool complexMatrices = false;        // the source has a complex Bézier parameter
+    AnalysisMatrices matrices;           // the matrices analysed (S_i, A_i or M_i)
     std::vector<Spectrum> spectra;       // one per map, in map order
     // The subdominant eigenvalues (for S: after the eigenvalue 1 of affine invariance).
     std::vector<Subdominant> subdominants;
@@ -21,7 +23,7 @@ struct EigenvalueData {
 class EigenvaluePlotItem : public Item {
     Q_OBJECT
 public:
-    enum class MatrixKind { S, A };
+    enum class MatrixKind { S, A, M };
 
     EigenvaluePlotItem();
 
@@ -35,8 +37,14 @@ public:
     bool setSource(const QString &name);
     MatrixKind matrixKind() const { return m_matrixKind; }
     bool setMatrixKind(MatrixKind kind);
-    // "S", "A" in enum order.
+    // "S", "A", "M" in enum order.
     static const QStringList &matrixKindNames();
+    // What each kind is, for the user, in enum order ("S_i, the subdivision matrices", ...).
+    static QStringList matrixKindDescriptions();
+
+    // The matrices of kind `kind` of a derived IFS (M_i: the lifted maps, real or complex);
+    // none, with the reason in `unavailable`, when the IFS has no such matrices.
+    static AnalysisMatrices analysedMatrices(const DerivedIfs &derived, MatrixKind kind);
 
     // Null when they cannot be computed (no such item, its IFS fails, M_i undefined, ...),
     // with the reason in derivedError().

@@ -54,6 +54,12 @@ public:
 
     int mapCount() const override { return m_fractal.mapCount(); }
     int controlPointSetCount() const override { return 1; }
+    // A preset's S_i fix the number of points, and so do custom reference points; a custom
+    // IFS on its own control points takes any number (>= 3).
+    bool pointCountEditable(int) const override
+    {
+        return m_fractal.preset == FractalSpec::Preset::Custom && m_fractal.reference.empty();
+    }
 
     void write(QJsonObject &json) const override;
     void read(const FieldReader &fields) override;

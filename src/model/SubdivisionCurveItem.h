@@ -74,6 +74,14 @@ public:
 
     int mapCount() const override { return m_scheme.arity(); }
     int controlPointSetCount() const override { return 1; }
+    // The user's own m x m matrices S_i fix m (points can be added or removed only while
+    // their number is not m yet); a Bézier curve takes degree + 1 points (the GUI raises the
+    // degree with an inserted point).
+    bool pointCountEditable(int) const override
+    {
+        return m_scheme.kind != SchemeSpec::Kind::Matrices || m_scheme.matrices.empty()
+               || Eigen::Index(controlPoints(0).size()) != m_scheme.matrices.front().rows();
+    }
 
     void write(QJsonObject &json) const override;
     void read(const FieldReader &fields) override;

@@ -234,7 +234,8 @@ void TestSpectrumView::exportFormats()
     // Vector content: the unit circle and axes as polylines, markers as circles, text as text.
     QVERIFY(content.contains("<svg"));
     QVERIFY(content.count("<polyline") > 20);
-    QVERIFY(content.count("<circle") >= 10);
+    // (one marker shape per map: S_1 circles, S_2 squares, ...)
+    QVERIFY(content.count("<circle") + content.count("<rect") + content.count("<polygon") >= 10);
     QVERIFY(content.contains("<text"));
     QVERIFY(!content.contains("<image"));
     QCOMPARE(QImage(dir.filePath(QStringLiteral("s.png"))).size(), QSize(500, 400));

@@ -19,11 +19,12 @@ inline std::unique_ptr<SubdivisionCurveItem> curve(const QString &name, const Sc
 {
     auto item = std::make_unique<SubdivisionCurveItem>();
     item->setName(name);
-    item->setScheme(scheme);
+    // The points first: the user's own matrices fix their number.
     for (int i = int(item->controlPoints().size()) - 1; i >= 0; --i)
         item->removeControlPoint(i);
     for (size_t i = 0; i < points.size(); ++i)
         item->insertControlPoint(int(i), points[i]);
+    item->setScheme(scheme);
     return item;
 }
 

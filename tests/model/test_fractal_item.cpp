@@ -123,10 +123,20 @@ void TestFractalItem::derivedMatchesCore()
     QVERIFY(sameMatrices(derived->S.real, cpm.S));
     for (size_t i = 0; i < cpm.S.size(); ++i)
         QVERIFY((derived->S.real[i] * P - applyMap(own->fractal().maps[i], P)).norm() < 1e-12);
-    // Wrong number of points for a preset: the core's reason, not a crash.
-    QVERIFY(koch->removeControlPoint(4));
-    QVERIFY(!koch->derivedIfs());
-    QVERIFY2(koch->derivedError().contains("5 control points"), qPrintable(koch->derivedError()));
+    // A preset's S_i fix the number of points: no point is removed or inserted...
+    QVERIFY(!koch->pointCountEditable(0));
+    QVERIFY(!koch->removeControlPoint(4));
+    QVERIFY(!koch->insertControlPoint(1, {0.1, 0}));
+    QCOMPARE(koch->controlPoints().size(), size_t(5));
+    // ...while a custom IFS on its own points takes any number.
+    QVERIFY(own->pointCountEditable(0));
+    // A file with the wrong number of points for a preset: the core's reason, not a crash.
+    Project wrong;
+    QVERIFY(test::load(wrong, R"({"type": "fractal", "name": "Koch", "preset": "koch",
+        "control_points": [[0, 0], [0.3, 0], [0.5, 0.3], [1, 0]]})"));
+    FractalItem *four = fractal(wrong, "Koch");
+    QVERIFY(!four->derivedIfs());
+    QVERIFY2(four->derivedError().contains("5 control points"), qPrintable(four->derivedError()));
 }
 
 void TestFractalItem::parameterEditsUndo()

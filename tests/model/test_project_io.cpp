@@ -280,8 +280,9 @@ private slots:
                "satisfy |t| < 1 and |1 - t| < 1 (004 §3.7)";
         QTest::newRow("plot matrices")
             << project(R"({"type": "eigenvalue-plot", "name": "p", "source": "x",
-                           "matrices": "M"})")
-            << "item 1 (\"p\"): field \"matrices\": expected one of \"S\", \"A\", got \"M\"";
+                           "matrices": "B"})")
+            << "item 1 (\"p\"): field \"matrices\": expected one of \"S\", \"A\", \"M\", "
+               "got \"B\"";
         QTest::newRow("duplicate name")
             << project(curveWith("twin", "", "") + "," + curveWith("twin", "", ""))
             << "item 2 (\"twin\"): field \"name\": another item is already called \"twin\"";

@@ -58,7 +58,7 @@ void paintSpectrum(SpectrumView *view, QPainter *painter, const QRectF &target)
     QPicture picture;
     {
         QCPPainter recorder(&picture);
-        view->plot()->toPainter(&recorder, w, h);
+        view->paintPlot(&recorder, w, h);
     }
     painter->save();
     painter->translate(target.topLeft());

@@ -12,6 +12,7 @@
 #include "gui/views/SpectrumView.h"
 #include "gui/views/SurfaceView.h"
 #include "model/AttractorItem.h"
+#include "model/EigenvaluePlotItem.h"
 #include "model/ExactCurve.h"
 #include "model/Project.h"
 #include "model/SubdivisionCurveItem.h"
@@ -20,6 +21,7 @@
 #include <QColor>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QMenu>
 #include <algorithm>
 #include <cmath>
 
@@ -151,6 +153,29 @@ QList<NamedMatrix> namedMatrices(const DerivedIfs &d, bool sEditable)
     return list;
 }
 
+namespace {
+
+// The matrices an eigenvalue plot analyses, named by its symbol (S_i, A_i or M_i).
+QList<NamedMatrix> plotMatrices(const EigenvalueData &data)
+{
+    QList<NamedMatrix> list;
+    const AnalysisMatrices &m = data.matrices;
+    const bool lifted = data.symbol == QLatin1String("M");
+    for (int i = 0; i < m.count(); ++i) {
+        const QString name = QStringLiteral("%1_%2").arg(data.symbol).arg(i + 1);
+        if (m.isComplex()) {
+            const CMat &M = m.complex[std::size_t(i)];
+            list.append({name, M, lifted ? int(M.rows()) - 1 : -1});
+        } else {
+            const Mat &M = m.real[std::size_t(i)];
+            list.append({name, M, lifted ? int(M.rows()) - 1 : -1, false});
+        }
+    }
+    return list;
+}
+
+} // namespace
+
 ItemController::ItemController(AttractorView *attractor, MatrixView *matrices,
                                SpectrumView *spectrum, AnalysisCharts *charts, QObject *parent)
     : QObject(parent), m_attractor(attractor), m_matrices(matrices), m_spectrum(spectrum),
@@ -177,6 +202,14 @@ ItemController::ItemController(AttractorView *attractor, MatrixView *matrices,
     connect(m_attractor, &AttractorView::startVertexReleased, this,
             &ItemController::onStartReleased);
     connect(m_matrices, &MatrixView::cellEdited, this, &ItemController::onCellEdited);
+    connect(m_attractor, &AttractorView::controlEdgeDoubleClicked, this,
+            &ItemController::onEdgeDoubleClicked);
+    connect(m_attractor, &AttractorView::contextMenuRequested, this,
+            [this](const QPointF &screen, const QPoint &global) {
+                QMenu menu(m_attractor);
+                fillContextMenu(&menu, screen);
+                menu.exec(global);
+            });
 }
 
 ItemController::~ItemController()
@@ -191,10 +224,20 @@ void ItemController::setItem(Item *item)
     m_connections.clear();
     m_item = item;
     m_gesture = 0;
+    m_highlightedMap = -1;
     if (item) {
         m_connections << connect(item, &Item::derivedChanged, this,
                                  &ItemController::scheduleRefresh);
         m_connections << connect(item, &Item::changed, this, &ItemController::scheduleRefresh);
+    }
+    // An eigenvalue plot draws its source: follow that item's edits (and a new source).
+    if (qobject_cast<EigenvaluePlotItem *>(item) && item->project()) {
+        const auto follow = [this](Item *changed) {
+            if (changed && changed == drawnItem())
+                scheduleRefresh();
+        };
+        m_connections << connect(item->project(), &Project::itemChanged, this, follow);
+        m_connections << connect(item->project(), &Project::itemDerivedChanged, this, follow);
     }
     m_attractor->setAutoFit(true);
     refreshNow();
@@ -205,8 +248,17 @@ void ItemController::setItem(Item *item)
 
 bool ItemController::showsSurface() const
 {
-    const auto *item = qobject_cast<const AttractorItem *>(m_item.data());
+    const AttractorItem *item = drawnItem();
     return m_surface && item && item->pointDimension() == 3;
+}
+
+AttractorItem *ItemController::drawnItem() const
+{
+    if (const auto *plot = qobject_cast<const EigenvaluePlotItem *>(m_item.data()))
+        return plot->project() ? qobject_cast<AttractorItem *>(
+                   plot->project()->findItem(plot->source()))
+                               : nullptr;
+    return qobject_cast<AttractorItem *>(m_item.data());
 }
 
 void ItemController::setSurfaceView(SurfaceView *view)
@@ -251,11 +303,28 @@ void ItemController::onStartDragged3D(int index, const QVector3D &world)
     moveStartVertex(index, {world.x(), world.y(), world.z()});
 }
 
-void ItemController::showAnalysis(const DerivedIfs &d, bool editableMatrices)
+void ItemController::showAnalysis(const DerivedIfs &d, bool editableMatrices,
+                                  const EigenvaluePlotItem *plot)
 {
-    m_matrices->setEditable(editableMatrices);
-    m_matrices->setMatrices(namedMatrices(d, editableMatrices));
-    const QList<MapSpectrum> spectra = mapSpectra(d);
+    QList<MapSpectrum> spectra = mapSpectra(d);
+    if (plot) {
+        // The plot's own choice of matrices; the verdicts on contractivity stay the maps'.
+        const auto data = plot->eigenvalues();
+        QList<MapSpectrum> chosen;
+        for (std::size_t i = 0; data && i < data->spectra.size(); ++i) {
+            MapSpectrum m = int(i) < spectra.size() ? spectra[int(i)] : MapSpectrum{};
+            m.label = QStringLiteral("%1_%2").arg(data->symbol).arg(i + 1);
+            m.spectrum = data->spectra[i];
+            m.subdominant = data->subdominants[i];
+            chosen.append(m);
+        }
+        spectra = chosen;
+        m_matrices->setEditable(false);
+        m_matrices->setMatrices(data ? plotMatrices(*data) : QList<NamedMatrix>{});
+    } else {
+        m_matrices->setEditable(editableMatrices);
+        m_matrices->setMatrices(namedMatrices(d, editableMatrices));
+    }
     m_spectrum->setMaps(spectra);
     QList<AnalysisCharts::MapModuli> moduli;
     for (const MapSpectrum &m : spectra) {
@@ -287,7 +356,7 @@ void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
     if (rs.palette.isEmpty())
         rs.palette = m_palette;
     m_surface->setRenderSettings(rs);
-    m_surface->setControlPointsEditable(true);
+    m_surface->setControlPointsEditable(item == m_item.data()); // a plot's source is only shown
     const Mat P = toMatrix(item->controlPoints(0), 3);
     std::vector<std::vector<int>> faces;
     Mat mesh;
@@ -314,6 +383,14 @@ void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
     } catch (const std::exception &) {
         m_surface->setIfs(nullptr, StartSet{});
     }
+}
+
+void ItemController::setHighlightedMap(int map)
+{
+    if (map == m_highlightedMap)
+        return;
+    m_highlightedMap = map;
+    refreshNow();
 }
 
 void ItemController::setSubdivisionSteps(int steps)
@@ -354,11 +431,16 @@ void ItemController::clearViews()
 void ItemController::refreshNow()
 {
     m_refreshTimer.stop();
-    auto *item = qobject_cast<AttractorItem *>(m_item.data());
+    const auto *plot = qobject_cast<const EigenvaluePlotItem *>(m_item.data());
+    AttractorItem *item = drawnItem();
+    // The plot's source is shown, not edited, in the views.
+    m_attractor->setStartSetEditable(!plot);
     QString problem;
     if (!item) {
         clearViews();
-        problem = m_item ? tr("%1 has no attractor to draw.").arg(m_item->name()) : QString();
+        problem = plot    ? tr("%1 shows nothing: %2").arg(plot->name(), plot->derivedError())
+                  : m_item ? tr("%1 has no attractor to draw.").arg(m_item->name())
+                           : QString();
     } else if (auto d = item->derivedIfs(); !d) {
         clearViews();
         problem = tr("%1 cannot be drawn: %2").arg(item->name(), item->derivedError());
@@ -369,7 +451,7 @@ void ItemController::refreshNow()
         refreshSurface(item, *d);
     } else if (m_surface && item->pointDimension() == 3) {
         refreshSurface(item, *d);
-        showAnalysis(*d, false);
+        showAnalysis(*d, false, plot);
         if (!d->note.isEmpty())
             problem = d->note;
     } else {
@@ -391,7 +473,7 @@ void ItemController::refreshNow()
             closedSets.push_back(item->controlPointSetClosed(k));
         }
         m_attractor->setControlPolygons(sets, closedSets);
-        m_attractor->setControlPointsEditable(item->controlPointSetCount() > 0);
+        m_attractor->setControlPointsEditable(!plot && item->controlPointSetCount() > 0);
 
         AttractorView::RenderSettings rs = m_attractor->renderSettings();
         const AlgorithmSpec &alg = item->algorithm();
@@ -415,6 +497,18 @@ void ItemController::refreshNow()
             rs.palette.append(QColor(c));
         if (rs.palette.isEmpty())
             rs.palette = m_palette;
+        if (m_highlightedMap >= 0) {
+            // One map's part of the attractor: its colour, the rest in light grey, by map.
+            QList<QColor> marked;
+            const int maps = std::max(item->mapCount(), m_highlightedMap + 1);
+            for (int i = 0; i < maps; ++i)
+                marked << (i == m_highlightedMap
+                               ? (rs.palette.isEmpty() ? AttractorRenderer::mapColor(i)
+                                                       : rs.palette[i % rs.palette.size()])
+                               : QColor(205, 205, 205));
+            rs.palette = marked;
+            rs.colorMode = AttractorColorMode::ByMap;
+        }
         m_attractor->setRenderSettings(rs);
 
         const auto scheme = realScheme(item);
@@ -440,12 +534,14 @@ void ItemController::refreshNow()
 
         const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item);
         const bool ownMatrices = curve && curve->scheme().kind == SchemeSpec::Kind::Matrices;
-        showAnalysis(*d, ownMatrices);
+        showAnalysis(*d, ownMatrices && !plot, plot);
         if (!d->note.isEmpty())
             problem = d->note;
         m_analysisTimer.start();
     }
     updateRegularity();
+    if (plot && !plot->eigenvalues())
+        problem = tr("%1 shows nothing: %2").arg(plot->name(), plot->derivedError());
     if (problem != m_problem) {
         m_problem = problem;
         emit problemChanged(problem);
@@ -497,7 +593,7 @@ void ItemController::cancelAnalysis()
 void ItemController::startAnalysis()
 {
     cancelAnalysis();
-    auto *item = qobject_cast<AttractorItem *>(m_item.data());
+    AttractorItem *item = drawnItem();
     if (!item)
         return;
     const auto d = item->derivedIfs();

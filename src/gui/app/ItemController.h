@@ -16,11 +16,14 @@
 #include <memory>
 #include <thread>
 
+class QMenu;
+
 namespace awb {
 
 class AnalysisCharts;
 class AttractorItem;
 class AttractorView;
+class EigenvaluePlotItem;
 class Item;
 class MatrixView;
 class RegularityPanel;
@@ -51,6 +54,9 @@ public:
     SurfaceView *surfaceView() const { return m_surface; }
     // Whether the current item is shown by the surface view.
     bool showsSurface() const;
+    // The item whose attractor the views draw: the current item, or for an eigenvalue plot
+    // its source (nullptr when there is none).
+    AttractorItem *drawnItem() const;
     // Default render depth when an item asks for more than the preferences allow (0: none).
     void setMaxDepth(int depth) { m_maxDepth = depth; refreshNow(); }
     void setPalette(const QList<QColor> &palette) { m_palette = palette; refreshNow(); }
@@ -74,6 +80,16 @@ public:
     {
         m_askRebalance = std::move(ask);
     }
+
+    // The attractor view's context menu for a right click at `screen` (widget pixels): insert
+    // a point on the edge or before/after the handle there, delete that point, append one at
+    // the cursor, fit the view. Every point edit is one undo step (ControlPointEdits).
+    void fillContextMenu(QMenu *menu, const QPointF &screen);
+
+    // Draws the points of map `map` (0-based) in their colour and the others in grey, to show
+    // that map's part of the attractor (-1: all in their colours). Reset by a new item.
+    void setHighlightedMap(int map);
+    int highlightedMap() const { return m_highlightedMap; }
 
     // The text shown when the item cannot be drawn (empty when it can).
     QString problem() const { return m_problem; }
@@ -99,10 +115,14 @@ private:
     void onStartDragged(int index, const QPointF &world);
     void onStartReleased(int index, const QPointF &start, const QPointF &end);
     void onCellEdited(int matrix, int row, int column, double value);
+    // Double click on an edge of the control polygon: a new point there (ItemControllerMenu).
+    void onEdgeDoubleClicked(int flatIndex, const QPointF &world);
     // The surface view's part of refreshNow() (items with 3D points).
     void refreshSurface(AttractorItem *item, const DerivedIfs &d);
-    // The Matrices, Spectrum and Analysis docks for the derived data of the current item.
-    void showAnalysis(const DerivedIfs &d, bool editableMatrices);
+    // The Matrices, Spectrum and Analysis docks for the derived data of the current item; for
+    // an eigenvalue plot (`plot`) the matrices it analyses and their spectra.
+    void showAnalysis(const DerivedIfs &d, bool editableMatrices,
+                      const EigenvaluePlotItem *plot = nullptr);
     // A start-set vertex dragged in either view (one undo step per drag, by gesture).
     void moveStartVertex(int index, const Point &to);
     void onSurfacePressed();
@@ -122,6 +142,7 @@ private:
     int m_gesture = 0;
     int m_maxDepth = 0;
     int m_subdivisionSteps = 0;
+    int m_highlightedMap = -1;
     QList<QColor> m_palette;
     QString m_problem;
     std::thread m_worker;

@@ -3,7 +3,11 @@
 #include "gui/app/FigureSheet.h"
 #include "gui/app/ItemController.h"
 #include "gui/app/Messages.h"
+#include "gui/app/PaletteDialog.h"
+#include "gui/app/PointExportDialog.h"
 #include "gui/app/PropertiesDock.h"
+#include "gui/app/UserGuideDialog.h"
+#include "gui/app/WheelGuard.h"
 #include "gui/views/AnalysisCharts.h"
 #include "gui/views/AttractorRenderer.h"
 #include "gui/views/AttractorView.h"
@@ -13,6 +17,7 @@
 #include "gui/views/SpectrumView.h"
 #include "gui/views/SurfaceView.h"
 #include "model/AttractorItem.h"
+#include "model/EigenvaluePlotItem.h"
 #include "model/ItemRegistry.h"
 #include "model/Project.h"
 #include "model/ProjectIO.h"
@@ -31,6 +36,9 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QDir>
+#include <QRegularExpression>
+#include <QResizeEvent>
 #include <QHeaderView>
 #include <QImage>
 #include <QJsonArray>
@@ -88,6 +96,25 @@ MainWindow::MainWindow(Messages *messages, const QString &recoveryDirectory, QWi
         m_messages = m_ownMessages.get();
     }
     initResources();
+    // Without a desktop session (offscreen, a bare X server) Qt may look for icon themes only
+    // in its resources: add the XDG icon folders and take an installed theme.
+    if (!QIcon::hasThemeIcon(QStringLiteral("document-open"))) {
+        QStringList paths = QIcon::themeSearchPaths();
+        const QString dataDirs = qEnvironmentVariable("XDG_DATA_DIRS");
+        for (const QString &dir : (dataDirs.isEmpty() ? QStringLiteral("/usr/local/share:/usr/share")
+                                                      : dataDirs)
+                                      .split(QLatin1Char(':'), Qt::SkipEmptyParts))
+            if (!paths.contains(dir + QStringLiteral("/icons")))
+                paths << dir + QStringLiteral("/icons");
+        QIcon::setThemeSearchPaths(paths);
+        for (const QString &theme : {QStringLiteral("Adwaita"), QStringLiteral("breeze")}) {
+            const QString old = QIcon::themeName();
+            QIcon::setThemeName(theme);
+            if (QIcon::hasThemeIcon(QStringLiteral("document-open")))
+                break;
+            QIcon::setThemeName(old);
+        }
+    }
     setObjectName(QStringLiteral("MainWindow"));
     setWindowIcon(QIcon(QStringLiteral(":/icons/attractor-workbench.svg")));
     setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
@@ -198,6 +225,11 @@ void MainWindow::createViews()
     m_cursorLabel = new QLabel;
     m_cursorLabel->setMinimumWidth(180);
     m_problemLabel = new QLabel;
+    m_problemLabel->setObjectName(QStringLiteral("problemLabel"));
+    // A long explanation must not widen the window: elided here, whole in the tooltip and in
+    // the Analysis panel's note.
+    m_problemLabel->setMinimumWidth(40);
+    m_problemLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     m_progress = new QProgressBar;
     m_progress->setRange(0, 100);
     m_progress->setMaximumWidth(160);
@@ -215,8 +247,7 @@ void MainWindow::createViews()
     m_renderCancel = new QToolButton;
     m_renderCancel->setObjectName(QStringLiteral("renderCancel"));
     m_renderCancel->setText(tr("Stop"));
-    m_renderCancel->setToolTip(tr("Stop drawing the attractor (Esc in the view); F5 draws it "
-                                  "again"));
+    m_renderCancel->setToolTip(tr("Stop drawing the attractor (Esc); F5 draws it again"));
     m_renderCancel->setVisible(false);
     m_renderShowTimer = new QTimer(this);
     m_renderShowTimer->setSingleShot(true);
@@ -246,6 +277,8 @@ void MainWindow::createViews()
         return !m_exportProgress->wasCanceled();
     });
     connect(m_attractor->renderer(), &AttractorRenderer::busyChanged, this, [this](bool busy) {
+        // Esc stops a drawing from anywhere in the window, and only then takes the key.
+        action(QStringLiteral("actionStopRender"))->setEnabled(m_attractor->isRendering());
         if (busy) {
             m_renderProgress->setValue(0);
             if (!m_renderShowTimer->isActive() && !m_renderProgress->isVisible())
@@ -269,6 +302,16 @@ void MainWindow::createViews()
     });
     statusBar()->addPermanentWidget(m_cursorLabel);
     connect(m_cancel, &QToolButton::clicked, m_controller, &ItemController::cancelAnalysis);
+    // An eigenvalue plot's source may change between a curve and a surface.
+    connect(m_project.get(), &Project::itemChanged, this, [this](Item *item) {
+        if (item == m_current)
+            updateCentralView();
+    });
+    // A click on an eigenvalue marker marks that map's matrices and its part of the attractor.
+    connect(m_spectrum, &SpectrumView::mapClicked, this, [this](int map) {
+        m_matrices->setHighlightedMap(map);
+        m_controller->setHighlightedMap(map);
+    });
     connect(m_controller, &ItemController::analysisStarted, this, [this] {
         m_progress->setValue(0);
         m_progress->setFormat(tr("Analysis %p%"));
@@ -283,7 +326,7 @@ void MainWindow::createViews()
         if (cancelled)
             statusBar()->showMessage(tr("Analysis cancelled."), 4000);
     });
-    connect(m_controller, &ItemController::problemChanged, m_problemLabel, &QLabel::setText);
+    connect(m_controller, &ItemController::problemChanged, this, &MainWindow::showProblem);
     m_controller->setRebalanceQuestion([this](const QString &question) {
         return m_messages->question(this, tr("Row sum"), question,
                                     QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes)
@@ -342,6 +385,13 @@ void MainWindow::createActions()
          });
     make(QStringLiteral("actionExport"), tr("&Export Figure…"), QStringLiteral("document-export"),
          QKeySequence(tr("Ctrl+E")), &MainWindow::exportDialog);
+    make(QStringLiteral("actionExportPoints"), tr("Export &Points…"), QStringLiteral("document-export"),
+         QKeySequence(tr("Ctrl+Shift+E")), &MainWindow::exportPointsDialog);
+    // Themes without document-export (Adwaita): a picture for the figure, a page for points.
+    if (QAction *a = action(QStringLiteral("actionExport")); a->icon().isNull())
+        a->setIcon(QIcon::fromTheme(QStringLiteral("image-x-generic")));
+    if (QAction *a = action(QStringLiteral("actionExportPoints")); a->icon().isNull())
+        a->setIcon(QIcon::fromTheme(QStringLiteral("text-x-generic")));
     make(QStringLiteral("actionQuit"), tr("&Quit"), QStringLiteral("application-exit"),
          QKeySequence::Quit, &QWidget::close);
     make(QStringLiteral("actionPreferences"), tr("Pre&ferences…"),
@@ -372,8 +422,13 @@ void MainWindow::createActions()
              else
                  m_attractor->fitToContents();
          });
-    make(QStringLiteral("actionStopRender"), tr("&Stop Drawing"), QStringLiteral("process-stop"),
-         QKeySequence(), [this] { m_attractor->cancelRender(); });
+    // Window-wide (docks included, floating ones too), enabled only while a drawing runs so
+    // that Esc keeps its ordinary meaning (closing a popup, cancelling a cell edit) otherwise.
+    QAction *stop = make(QStringLiteral("actionStopRender"), tr("&Stop Drawing"),
+                         QStringLiteral("process-stop"), QKeySequence(Qt::Key_Escape),
+                         [this] { m_attractor->cancelRender(); });
+    stop->setShortcutContext(Qt::WindowShortcut);
+    stop->setEnabled(false);
     make(QStringLiteral("actionRenderAgain"), tr("&Draw Again"), QStringLiteral("view-refresh"),
          QKeySequence::Refresh, [this] { m_attractor->renderAgain(); });
     make(QStringLiteral("actionResetLayout"), tr("&Reset Layout"), QString(), QKeySequence(),
@@ -382,6 +437,8 @@ void MainWindow::createActions()
          QStringLiteral("help-about"), QKeySequence(), &MainWindow::about);
     make(QStringLiteral("actionAboutQt"), tr("About &Qt"), QString(), QKeySequence(),
          [] { QApplication::aboutQt(); });
+    make(QStringLiteral("actionUserGuide"), tr("&User Guide"), QStringLiteral("help-contents"),
+         QKeySequence::HelpContents, &MainWindow::userGuide);
 
     QAction *undo = m_project->undoStack()->createUndoAction(this, tr("&Undo"));
     undo->setObjectName(QStringLiteral("actionUndo"));
@@ -391,6 +448,22 @@ void MainWindow::createActions()
     redo->setObjectName(QStringLiteral("actionRedo"));
     redo->setShortcut(QKeySequence::Redo);
     redo->setIcon(QIcon::fromTheme(QStringLiteral("edit-redo")));
+    // A toolbar button without an icon shows the icon text: fixed, not the command's.
+    undo->setIconText(tr("Undo"));
+    redo->setIconText(tr("Redo"));
+    // The command's text is in the Edit menu, the Undo History and the tooltip; the toolbar
+    // shows only the icon so that it does not change width with every edit.
+    const auto tip = [](QAction *a, const QString &verb, const QString &text) {
+        const QString key = a->shortcut().toString(QKeySequence::NativeText);
+        a->setToolTip(text.isEmpty() ? tr("Nothing to %1 (%2)").arg(verb.toLower(), key)
+                                     : tr("%1 %2 (%3)").arg(verb, text, key));
+    };
+    connect(m_project->undoStack(), &QUndoStack::undoTextChanged, undo,
+            [undo, tip](const QString &text) { tip(undo, tr("Undo"), text); });
+    connect(m_project->undoStack(), &QUndoStack::redoTextChanged, redo,
+            [redo, tip](const QString &text) { tip(redo, tr("Redo"), text); });
+    tip(undo, tr("Undo"), QString());
+    tip(redo, tr("Redo"), QString());
 
     // Overlays of the attractor view.
     const auto layerAction = [this](const QString &name, const QString &text,
@@ -485,6 +558,7 @@ void MainWindow::createMenus()
     file->addAction(action(QStringLiteral("actionPrintPreview")));
     file->addAction(action(QStringLiteral("actionPrintPdf")));
     file->addAction(action(QStringLiteral("actionExport")));
+    file->addAction(action(QStringLiteral("actionExportPoints")));
     file->addSeparator();
     file->addAction(action(QStringLiteral("actionQuit")));
 
@@ -546,11 +620,14 @@ void MainWindow::createMenus()
     });
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(action(QStringLiteral("actionUserGuide")));
+    help->addSeparator();
     help->addAction(action(QStringLiteral("actionAbout")));
     help->addAction(action(QStringLiteral("actionAboutQt")));
 
     QToolBar *bar = addToolBar(tr("Main"));
     bar->setObjectName(QStringLiteral("toolBarMain"));
+    bar->setToolButtonStyle(Qt::ToolButtonIconOnly);
     for (const char *name : {"actionNew", "actionOpen", "actionSave", "actionPrint",
                              "actionExport", "actionUndo", "actionRedo", "actionZoomIn",
                              "actionZoomOut", "actionFit"})
@@ -575,6 +652,7 @@ void MainWindow::createMenus()
     connect(m_subdivSteps, &QSpinBox::valueChanged, m_controller,
             &ItemController::setSubdivisionSteps);
     bar->addWidget(m_subdivSteps);
+    WheelGuard::guardChildren(bar);
 }
 
 void MainWindow::applyPreferences(const Preferences &preferences)
@@ -582,6 +660,7 @@ void MainWindow::applyPreferences(const Preferences &preferences)
     m_preferences = preferences;
     m_recovery->setInterval(std::max(5, preferences.autosaveSeconds) * 1000);
     m_controller->setPalette(preferences.palette);
+    m_properties->setDefaultPalette(preferences.palette);
     m_controller->setMaxDepth(preferences.maxRenderDepth);
 }
 
@@ -589,8 +668,9 @@ void MainWindow::setCurrentItem(Item *item)
 {
     m_current = item;
     m_controller->setItem(item);
-    m_central->setCurrentWidget(m_controller->showsSurface() ? static_cast<QWidget *>(m_surface)
-                                                             : m_attractor);
+    m_spectrum->setHighlightedMap(-1);
+    m_matrices->setHighlightedMap(-1);
+    updateCentralView();
     m_properties->setItem(item);
     const QModelIndex index = item ? m_treeModel->indexOf(item) : QModelIndex();
     if (m_tree->currentIndex() != index)
@@ -932,6 +1012,15 @@ void MainWindow::addItem(const QString &type)
         if (!a->checkAlgorithm(alg))
             a->setAlgorithm(alg);
     }
+    // A new eigenvalue plot analyses the item drawn now and sits under it in the tree.
+    if (auto *plot = qobject_cast<EigenvaluePlotItem *>(item.get())) {
+        if (AttractorItem *source = m_controller->drawnItem()) {
+            plot->setSource(source->name());
+            plot->setName(tr("Spectra of %1").arg(source->name()));
+            m_project->addItem(std::move(item), source);
+            return;
+        }
+    }
     m_project->addItem(std::move(item), nullptr);
 }
 
@@ -1083,6 +1172,148 @@ void MainWindow::closeEvent(QCloseEvent *event)
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());
     event->accept();
+}
+
+} // namespace awb
+
+namespace awb {
+
+void MainWindow::updateCentralView()
+{
+    QWidget *view = m_controller->showsSurface() ? static_cast<QWidget *>(m_surface)
+                                                 : m_attractor;
+    if (m_central->currentWidget() != view)
+        m_central->setCurrentWidget(view);
+}
+
+void MainWindow::showProblem(const QString &problem)
+{
+    m_problem = problem;
+    const QString first = problem.section(QLatin1Char('\n'), 0, 0);
+    // Before the first layout the label has no width yet: half the status bar's.
+    const int room = m_problemLabel->width() > 40 ? m_problemLabel->width()
+                                                  : statusBar()->width() / 2;
+    m_problemLabel->setText(m_problemLabel->fontMetrics().elidedText(first, Qt::ElideRight,
+                                                                      std::max(40, room)));
+    m_problemLabel->setToolTip(problem.size() > first.size() || m_problemLabel->text() != first
+                                   ? problem
+                                   : QString());
+    m_charts->setNote(problem);
+}
+
+void MainWindow::resizeEvent(QResizeEvent *event)
+{
+    QMainWindow::resizeEvent(event);
+    // The docks keep their widths when the window gets narrower (a dock dragged wider by the
+    // user stays so until then); the layout settles first. The status note is elided anew.
+    const bool widthChanged = event->size().width() != event->oldSize().width();
+    QTimer::singleShot(0, this, [this, widthChanged] {
+        if (widthChanged)
+            shareWidthWithDocks();
+        showProblem(m_problem);
+    });
+}
+
+void MainWindow::shareWidthWithDocks()
+{
+    const int total = width();
+    const int central = m_central->width();
+    if (total <= 0 || central >= total / 2)
+        return;
+    // Shrink the columns of docks on either side (one dock stands for its column) in
+    // proportion, so that the central view gets about 55% of the width; the docks' minimum
+    // sizes still apply.
+    QDockWidget *columns[2] = {nullptr, nullptr};
+    for (QDockWidget *d : std::as_const(m_docks)) {
+        if (!d->isVisible() || d->isFloating())
+            continue;
+        const Qt::DockWidgetArea area = dockWidgetArea(d);
+        const int side = area == Qt::LeftDockWidgetArea ? 0
+                         : area == Qt::RightDockWidgetArea ? 1
+                                                          : -1;
+        if (side >= 0 && !columns[side])
+            columns[side] = d;
+    }
+    int docks = 0;
+    for (QDockWidget *d : columns)
+        docks += d ? d->width() : 0;
+    if (docks <= 0)
+        return;
+    const double scale = 0.42 * total / docks;
+    QList<QDockWidget *> list;
+    QList<int> widths;
+    for (QDockWidget *d : columns)
+        if (d) {
+            list << d;
+            widths << std::max(d->minimumSizeHint().width(), int(d->width() * scale));
+        }
+    resizeDocks(list, widths, Qt::Horizontal);
+}
+
+void MainWindow::exportPointsDialog()
+{
+    AttractorItem *item = m_controller->drawnItem();
+    if (!item) {
+        m_messages->error(this, tr("Export Points"),
+                          tr("The current item has no attractor whose points could be "
+                             "exported."));
+        return;
+    }
+    QString name = m_lastPointExport;
+    const QString suffix = item->pointDimension() == 3 ? QStringLiteral("ply")
+                                                       : QStringLiteral("csv");
+    if (name.isEmpty()) {
+        const QString dir = m_project->fileName().isEmpty()
+                                ? QDir::homePath()
+                                : QFileInfo(m_project->fileName()).path();
+        QString base = item->name();
+        base.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9._-]+")), QStringLiteral("-"));
+        name = dir + QLatin1Char('/') + base + QLatin1Char('.') + suffix;
+    }
+    PointExportDialog dialog(item, name, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    QString error;
+    m_lastPointExport = dialog.fileName();
+    if (!exportPoints(dialog.fileName(), dialog.depth(), &error))
+        m_messages->error(this, tr("Export Points"), error);
+    else
+        statusBar()->showMessage(tr("Exported the points to %1").arg(dialog.fileName()), 5000);
+}
+
+bool MainWindow::exportPoints(const QString &fileName, int depth, QString *error)
+{
+    const AttractorItem *item = m_controller->drawnItem();
+    if (!item) {
+        if (error)
+            *error = tr("The current item has no attractor.");
+        return false;
+    }
+    // The colours the view uses: the item's own, else the preferences', else the defaults.
+    QList<QColor> palette;
+    for (const QString &c : item->style().colors)
+        palette << QColor(c);
+    if (palette.isEmpty())
+        palette = m_preferences.palette;
+    const auto color = [palette](int map) {
+        return paletteColor(palette, map, AttractorRenderer::mapColor(map));
+    };
+    return PointExportDialog::exportPoints(item, fileName,
+                                           depth < 0 ? item->algorithm().depth : depth, color,
+                                           isVisible() ? this : nullptr, error);
+}
+
+void MainWindow::userGuide()
+{
+    QList<QAction *> actions;
+    for (QAction *a : menuBar()->actions())
+        if (a->menu())
+            for (QAction *b : a->menu()->actions())
+                if (!b->isSeparator() && !b->menu())
+                    actions << b;
+    auto *dialog = new UserGuideDialog(actions, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->show(); // not modal: read it beside the window
 }
 
 } // namespace awb

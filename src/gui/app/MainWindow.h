@@ -66,6 +66,9 @@ public:
     bool exportView(const ExportDialog::Options &options, QString *error = nullptr);
     // The figure sheet of the current item as a PDF page.
     bool printToPdf(const QString &fileName, QString *error = nullptr);
+    // The points F^depth(X0) of the item drawn (the current item, or an eigenvalue plot's
+    // source) as .csv or .ply (File > Export Points); depth < 0: the item's own depth.
+    bool exportPoints(const QString &fileName, int depth = -1, QString *error = nullptr);
 
     // The views (for tests and export).
     AttractorView *attractorView() const { return m_attractor; }
@@ -83,6 +86,7 @@ public:
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
 
 private:
     void createViews();
@@ -104,6 +108,15 @@ private:
     void endExportProgress();
     void printPreview();
     void exportDialog();
+    void exportPointsDialog();
+    void userGuide();
+    // The status bar's note on the current item (elided; whole in its tooltip and in the
+    // Analysis panel).
+    void showProblem(const QString &problem);
+    // The plane or the 3D view, for the item drawn.
+    void updateCentralView();
+    // Narrows the docks when they leave the central view less than half of the window.
+    void shareWidthWithDocks();
     void preferencesDialog();
     void about();
     void addItem(const QString &type);
@@ -153,6 +166,8 @@ private:
     // Progress of an export's own attractor raster (created on demand, deleted after).
     QPointer<QProgressDialog> m_exportProgress;
     QString m_lastExport;
+    QString m_lastPointExport;
+    QString m_problem;
 };
 
 } // namespace awb

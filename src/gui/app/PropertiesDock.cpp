@@ -1,8 +1,10 @@
 #include "gui/app/PropertiesDock.h"
 
 #include "gui/app/Messages.h"
+#include "gui/app/WheelGuard.h"
 #include "gui/views/ComplexPlanePicker.h"
 #include "model/AttractorItem.h"
+#include "model/EigenvaluePlotItem.h"
 #include "model/NumberFormat.h"
 #include "model/Project.h"
 
@@ -17,6 +19,7 @@
 #include <QLineEdit>
 #include <QMap>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSlider>
 #include <QSpinBox>
 #include <QTableWidget>
@@ -104,11 +107,20 @@ PropertiesWidget::PropertiesWidget(Messages *messages, QWidget *parent)
 
 void PropertiesWidget::setItem(Item *item)
 {
-    if (m_connection)
-        disconnect(m_connection);
+    for (const auto &c : std::as_const(m_connections))
+        disconnect(c);
+    m_connections.clear();
     m_item = item;
+    m_pointSet = 0;
     if (item)
-        m_connection = connect(item, &Item::changed, this, &PropertiesWidget::onItemChanged);
+        m_connections << connect(item, &Item::changed, this, &PropertiesWidget::onItemChanged);
+    // A plot lists the project's items as sources: follow additions, removals and renames.
+    if (qobject_cast<EigenvaluePlotItem *>(item) && item->project()) {
+        const auto update = [this] { updateValues(); };
+        m_connections << connect(item->project(), &Project::itemInserted, this, update);
+        m_connections << connect(item->project(), &Project::itemRemoved, this, update);
+        m_connections << connect(item->project(), &Project::itemChanged, this, update);
+    }
     rebuild();
 }
 
@@ -223,7 +235,21 @@ void PropertiesWidget::rebuild()
     }
     if (qobject_cast<AttractorItem *>(m_item.data()))
         addAttractorEditors();
+    if (qobject_cast<EigenvaluePlotItem *>(m_item.data()))
+        addEigenvaluePlotEditors();
     content->addStretch();
+    // Scrolling the dock over an editor scrolls; it does not change the value.
+    WheelGuard::guardChildren(m_content);
+    // In a narrow dock a label goes above its editor rather than clipping it; the dock is
+    // never narrower than the editors need (the scroll area has no horizontal scroll bar).
+    for (QFormLayout *form : m_content->findChildren<QFormLayout *>())
+        form->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    if (auto *scroll = findChild<QScrollArea *>()) {
+        scroll->setMinimumWidth(m_content->minimumSizeHint().width()
+                                + m_layout->contentsMargins().left()
+                                + m_layout->contentsMargins().right()
+                                + scroll->verticalScrollBar()->sizeHint().width());
+    }
     --m_updating;
     updateValues();
 }
@@ -378,7 +404,9 @@ void PropertiesWidget::addAttractorEditors()
     startKind->addItems({tr("Point"), tr("Segment"), tr("Triangle"), tr("Polygon"),
                          tr("Points"), tr("Lifted points")});
     startForm->addRow(tr("Kind:"), startKind);
-    startForm->addRow(new QLabel(tr("Drag its vertices in the attractor view.")));
+    auto *dragHint = new QLabel(tr("Drag its vertices in the attractor view."));
+    dragHint->setWordWrap(true);
+    startForm->addRow(dragHint);
     // Points of the lifted space (000 §2, Fig. 2 "a random homogeneous point"): typed, since
     // the extra coordinates cannot be dragged in the plane.
     auto *lifted = new QLineEdit;
@@ -544,6 +572,7 @@ void PropertiesWidget::addAttractorEditors()
     styleForm->addRow(tr("Colour:"), colorBy);
     styleForm->addRow(tr("Prefix length:"), prefix);
     styleForm->addRow(tr("Point size:"), pointSize);
+    addPaletteEditor(styleForm);
     m_editors.insert(QStringLiteral("style.colorBy"), colorBy);
     const auto setStyle = [this, item](const std::function<void(StyleSpec &)> &edit) {
         if (m_updating)
@@ -573,44 +602,7 @@ void PropertiesWidget::addAttractorEditors()
     }});
     content->addWidget(styleBox);
 
-    // ---- control points
-    if (item->controlPointSetCount() < 1)
-        return;
-    auto *pointsBox = new QGroupBox(tr("Control points"));
-    auto *pointsLayout = new QVBoxLayout(pointsBox);
-    // A surface's net has z too (pointDimension() == 3): one column per coordinate.
-    const int dim = std::clamp(item->pointDimension(), 2, 3);
-    m_points = new QTableWidget(0, dim);
-    m_points->setHorizontalHeaderLabels(QStringList{tr("x"), tr("y"), tr("z")}.mid(0, dim));
-    m_points->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
-    m_points->setMinimumHeight(140);
-    pointsLayout->addWidget(m_points);
-    m_editors.insert(QStringLiteral("points"), m_points);
-    auto *table = m_points;
-    connect(table, &QTableWidget::cellChanged, this, [this, item, table](int r, int c) {
-        if (m_updating)
-            return;
-        bool ok = false;
-        const double v = table->item(r, c)->text().toDouble(&ok);
-        Point p = item->controlPoints(0)[std::size_t(r)];
-        (c == 0 ? p.x : c == 1 ? p.y : p.z) = v;
-        if (!ok || !std::isfinite(v) || !item->moveControlPoint(r, p)) {
-            updateValues();
-            report(tr("\"%1\" is not a finite number.").arg(table->item(r, c)->text()));
-        }
-    });
-    m_bindings.append({QStringLiteral("points"), [item, table, dim] {
-        const QSignalBlocker block(table);
-        const PointList &pts = item->controlPoints(0);
-        table->setRowCount(int(pts.size()));
-        for (int i = 0; i < int(pts.size()); ++i) {
-            table->setVerticalHeaderItem(i, new QTableWidgetItem(QString::number(i + 1)));
-            for (int k = 0; k < dim; ++k)
-                table->setItem(i, k, new QTableWidgetItem(
-                                         QString::number(pts[std::size_t(i)][k], 'g', 10)));
-        }
-    }});
-    content->addWidget(pointsBox);
+    addPointEditors();
 }
 
 } // namespace awb

@@ -2,7 +2,8 @@
 // PropertiesDock's content: editors for everything of the current item, built generically from
 // Item::parameters() (spin boxes, a slider where the parameter has a slider range, a combo box
 // for a choice, two spin boxes for a complex number) plus the shared inputs of attractor items
-// (name, start set, algorithm, style, control points). Every edit goes through the item's
+// (name, start set, algorithm, style with the map colours, control points with add / insert /
+// delete) and the source and matrices of an eigenvalue plot. Every edit goes through the item's
 // undoable setters; one slider drag is one gesture and so one undo step. A refused value is
 // reported through Messages and the editor shows the model's value again.
 #include "model/Item.h"
@@ -11,6 +12,7 @@
 #include <QPointer>
 #include <QWidget>
 #include <functional>
+#include <vector>
 
 class QFormLayout;
 class QTableWidget;
@@ -29,9 +31,15 @@ public:
     void setItem(Item *item);
     Item *item() const { return m_item; }
     // The editor of a parameter (QDoubleSpinBox, QSpinBox, QComboBox, QCheckBox, or for a
-    // complex value the real part's spin box); nullptr for an unknown key. For tests.
+    // complex value the real part's spin box); nullptr for an unknown key. For tests. Besides
+    // the parameters' keys: "name", "start.kind", "start.lifted", "algorithm.depth",
+    // "style.colorBy", "style.colors" (the palette button), "points" (the table),
+    // "points.set", "points.add", "points.insert", "points.delete", "plot.source",
+    // "plot.matrices".
     QWidget *editor(const QString &key) const;
     QWidget *slider(const QString &key) const;
+    // The colours an item without its own uses (the preferences' palette; empty: the views').
+    void setDefaultPalette(const QList<QColor> &palette);
 
 private:
     struct Binding {
@@ -44,19 +52,27 @@ private:
     bool apply(const QString &key, const QVariant &value, int gesture = 0);
     void addParameter(QFormLayout *form, const ParameterInfo &info);
     void addAttractorEditors();
+    // PropertiesEditors.cpp: the point table with its buttons, the palette button, the plot.
+    void addPointEditors();
+    void addPaletteEditor(QFormLayout *form);
+    void addEigenvaluePlotEditors();
+    // The selected rows of the point table (sorted), or the current row.
+    std::vector<int> selectedPointRows() const;
     void report(const QString &message);
     int beginGesture();
 
     Messages *m_messages;
     QPointer<Item> m_item;
-    QMetaObject::Connection m_connection;
+    QList<QMetaObject::Connection> m_connections;
     QVBoxLayout *m_layout = nullptr;
     QWidget *m_content = nullptr;
     QStringList m_keys;  // parameter keys the editors were built for
     QList<Binding> m_bindings;
     QHash<QString, QWidget *> m_editors, m_sliders;
     QTableWidget *m_points = nullptr;
+    int m_pointSet = 0;  // the point set the table shows
     int m_updating = 0;
+    QList<QColor> m_defaultPalette;
 };
 
 } // namespace awb

@@ -7,10 +7,14 @@
 #include <QCategoryAxis>
 #include <QChart>
 #include <QChartView>
+#include <QCursor>
+#include <QLineF>
+#include <QLabel>
 #include <QLineSeries>
 #include <QLogValueAxis>
 #include <QScatterSeries>
 #include <QTabWidget>
+#include <QToolTip>
 #include <QVBoxLayout>
 #include <QValueAxis>
 
@@ -80,6 +84,14 @@ AnalysisCharts::AnalysisCharts(QWidget *parent) : QWidget(parent)
 {
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
+    m_note = new QLabel(this);
+    m_note->setObjectName(QStringLiteral("analysisNote"));
+    m_note->setWordWrap(true);
+    m_note->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_note->setContentsMargins(6, 4, 6, 4);
+    m_note->setStyleSheet(QStringLiteral("background: #fff8e0; border: 1px solid #e6d9a8;"));
+    m_note->setVisible(false);
+    layout->addWidget(m_note);
     m_tabs = new QTabWidget(this);
     layout->addWidget(m_tabs);
     m_tabs->addTab(makeView(tr("Distance to the exact curve")), tr("Distance"));
@@ -102,9 +114,71 @@ QChartView *AnalysisCharts::makeView(const QString &title)
     chart->setMargins(QMargins(6, 6, 6, 6));
     auto *view = new QChartView(chart);
     view->setRenderHint(QPainter::Antialiasing);
-    view->setMinimumSize(260, 200);
+    view->setMinimumSize(160, 140); // the dock may be narrow; the chart scales
     m_views << view;
     return view;
+}
+
+void AnalysisCharts::setNote(const QString &text)
+{
+    m_note->setText(text);
+    m_note->setVisible(!text.isEmpty());
+}
+
+QString AnalysisCharts::note() const { return m_note->text(); }
+
+QString AnalysisCharts::pointToolTip(Tab tab, const QString &series, const QPointF &p)
+{
+    // Measured values in decimals; |λ| as the spectrum shows it (exact fractions where simple).
+    const auto number = [](double v) { return QString::number(v, 'g', 6); };
+    const QString name = series.toHtmlEscaped();
+    switch (tab) {
+    case DistanceTab:
+        return tr("<b>%1</b><br>depth k = %2<br>d<sub>H</sub> = %3")
+            .arg(name).arg(int(std::lround(p.x()))).arg(number(p.y()));
+    case LengthTab:
+        return tr("<b>%1</b><br>step k = %2<br>length = %3")
+            .arg(name).arg(int(std::lround(p.x()))).arg(number(p.y()));
+    case BoxCountingTab:
+        // Natural logarithms: ε = e^-x, N = e^y.
+        return tr("<b>%1</b><br>log(1/ε) = %2 (ε = %3)<br>log N(ε) = %4 (N = %5)")
+            .arg(name, number(p.x()), QString::number(std::exp(-p.x()), 'g', 4), number(p.y()))
+            .arg(std::llround(std::exp(p.y())));
+    case ModuliTab:
+        return tr("<b>%1</b><br>|λ| = %2").arg(name, formatNumber(p.y(), 8));
+    }
+    return {};
+}
+
+void AnalysisCharts::addToolTips(Tab tab)
+{
+    QChartView *view = chartView(tab);
+    for (QAbstractSeries *s : view->chart()->series()) {
+        auto *xy = qobject_cast<QXYSeries *>(s);
+        if (!xy)
+            continue;
+        connect(xy, &QXYSeries::hovered, view, [view, xy, tab](const QPointF &p, bool on) {
+            if (!on) {
+                QToolTip::hideText();
+                return;
+            }
+            // The data point nearest to the hovered position (a line series reports points
+            // on its segments too).
+            QPointF best = p;
+            double bestD = INFINITY;
+            const QPointF at = view->chart()->mapToPosition(p, xy);
+            for (const QPointF &q : xy->points()) {
+                const double d = QLineF(view->chart()->mapToPosition(q, xy), at).length();
+                if (d < bestD) {
+                    bestD = d;
+                    best = q;
+                }
+            }
+            if (bestD > 12.0)
+                return;
+            QToolTip::showText(QCursor::pos(), pointToolTip(tab, xy->name(), best), view);
+        });
+    }
 }
 
 QChartView *AnalysisCharts::chartView(Tab tab) const { return m_views.value(int(tab)); }
@@ -170,6 +244,7 @@ void AnalysisCharts::setDistances(const QList<DistanceSeries> &series, double ra
         attach(c, s, x, y);
     if (reference)
         attach(c, reference, x, y);
+    addToolTips(DistanceTab);
 }
 
 void AnalysisCharts::setPolygonLengths(const std::vector<double> &lengths, double exactLength)
@@ -209,6 +284,7 @@ void AnalysisCharts::setPolygonLengths(const std::vector<double> &lengths, doubl
     attach(c, s, x, y);
     if (exact)
         attach(c, exact, x, y);
+    addToolTips(LengthTab);
 }
 
 void AnalysisCharts::setBoxCounting(const BoxDimension &box)
@@ -264,6 +340,7 @@ void AnalysisCharts::setBoxCounting(const BoxDimension &box)
     attach(c, fitted, x, y);
     if (line)
         attach(c, line, x, y);
+    addToolTips(BoxCountingTab);
 }
 
 void AnalysisCharts::setModuli(const QList<MapModuli> &maps)
@@ -308,6 +385,7 @@ void AnalysisCharts::setModuli(const QList<MapModuli> &maps)
     for (QScatterSeries *s : made)
         attach(c, s, x, y);
     attach(c, unit, x, y);
+    addToolTips(ModuliTab);
 }
 
 } // namespace awb

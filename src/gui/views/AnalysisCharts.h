@@ -3,8 +3,11 @@
 // exact curve against the depth (log scale), the control-polygon length against the
 // subdivision step, the box-counting fit with its dimension, and |λ| per map. Inputs are plain
 // vectors computed elsewhere (off the GUI thread when heavy); Qt Charts stays out of this header.
+// Pointing at a data point shows its values in a tooltip. A note above the tabs carries what
+// the status bar has no room for (why an item cannot be drawn, what its IFS is).
 
 #include <QList>
+#include <QPointF>
 #include <QString>
 #include <QWidget>
 
@@ -12,6 +15,7 @@
 
 class QChart;
 class QChartView;
+class QLabel;
 class QTabWidget;
 
 namespace awb {
@@ -48,13 +52,23 @@ public:
     // (d) |λ| of each eigenvalue, one column per map, with the line |λ| = 1.
     void setModuli(const QList<MapModuli> &maps);
 
+    // A note on the current item above the charts (hidden when empty).
+    void setNote(const QString &text);
+    QString note() const;
+
+    // The tooltip of data point `p` of the series named `series` in chart `tab`.
+    static QString pointToolTip(Tab tab, const QString &series, const QPointF &p);
+
     QChart *chart(Tab tab) const;
     QChartView *chartView(Tab tab) const;
     QTabWidget *tabs() const { return m_tabs; }
 
 private:
     QChartView *makeView(const QString &title);
+    // Hover tooltips on every series of chart `tab` (after its series were made).
+    void addToolTips(Tab tab);
 
+    QLabel *m_note = nullptr;
     QTabWidget *m_tabs = nullptr;
     QList<QChartView *> m_views;
 };

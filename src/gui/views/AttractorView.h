@@ -97,6 +97,12 @@ public:
     QPointF controlPointPosition(int i) const;
     QPointF startVertexPosition(int i) const;
     int controlPointCount() const { return int(m_control.size()); }
+    // The editable control point handle under `screen` (flat index), or -1.
+    int controlPointAt(const QPointF &screen) const { return hitControlPoint(screen); }
+    // The edge of an editable control polygon under `screen`: the flat index of its first
+    // point (the last point of a closed set for its closing edge), or -1; *world gets the
+    // nearest point of the edge.
+    int controlEdgeAt(const QPointF &screen, QPointF *world = nullptr) const;
     int startVertexCount() const { return int(m_startPlane.size()); }
 
     // How an export frames the world: as the view shows it (zoom and pan included), or
@@ -145,6 +151,11 @@ signals:
     void startVertexPressed(int index);
     void startVertexDragged(int index, const QPointF &world);
     void startVertexReleased(int index, const QPointF &startWorld, const QPointF &endWorld);
+    // A right click (no drag) at `screen` (widget pixels): the owner shows a context menu.
+    void contextMenuRequested(const QPointF &screen, const QPoint &global);
+    // A double click on an edge of the control polygon: flat index of the edge's first point
+    // and the point of the edge nearest to the click.
+    void controlEdgeDoubleClicked(int flatIndex, const QPointF &world);
     // The world coordinates under the cursor (for a status bar); cursorLeft when it leaves.
     void cursorMoved(const QPointF &world);
     void cursorLeft();
@@ -163,6 +174,7 @@ protected:
     void mousePressEvent(QMouseEvent *event) override;
     void mouseMoveEvent(QMouseEvent *event) override;
     void mouseReleaseEvent(QMouseEvent *event) override;
+    void mouseDoubleClickEvent(QMouseEvent *event) override;
     void wheelEvent(QWheelEvent *event) override;
     void keyPressEvent(QKeyEvent *event) override;
     void leaveEvent(QEvent *event) override;

@@ -21,6 +21,7 @@ namespace awb::attractor_view {
 
 inline constexpr double kHandleRadius = 5.0;      // screen pixels
 inline constexpr double kHitRadius = 9.0;         // a little larger than drawn: easier to grab
+inline constexpr double kClickSlop = 4.0;         // a right press moved less is a click
 inline constexpr double kFitMargin = 24.0;
 inline constexpr double kMinScale = 1e-9, kMaxScale = 1e12;
 // F^k(X0) is drawn as vectors up to this many vertices (it stays interactive).

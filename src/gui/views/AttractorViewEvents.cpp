@@ -1,5 +1,6 @@
 // AttractorView: widget events: resize and show (refit, render), picking and dragging of
-// handles, panning, wheel zoom and the keyboard (fit, zoom, cancel and repeat the render).
+// handles, panning, wheel zoom, the context-menu click and the double click on a polygon edge
+// (the owner inserts a point there), and the keyboard (fit, zoom, cancel and repeat the render).
 
 #include "gui/views/AttractorView.h"
 
@@ -9,6 +10,7 @@
 #include <QMouseEvent>
 #include <QWheelEvent>
 
+#include <algorithm>
 #include <cmath>
 
 namespace awb {
@@ -60,6 +62,40 @@ int AttractorView::hitStartVertex(const QPointF &screen) const
             best = i;
         }
     }
+    return best;
+}
+
+int AttractorView::controlEdgeAt(const QPointF &screen, QPointF *world) const
+{
+    if (!m_editControl || !isLayerVisible(Layer::ControlPolygon))
+        return -1;
+    int best = -1, first = 0;
+    double bestD = kHitRadius;
+    QPointF bestPoint;
+    for (std::size_t k = 0; k < m_controlSets.size(); ++k) {
+        const int n = m_controlSets[k];
+        const bool closed = k < m_controlClosedSets.size() && m_controlClosedSets[k];
+        for (int i = 0; i + 1 < n || (closed && n > 2 && i < n); ++i) {
+            const int a = first + i, b = first + (i + 1) % n;
+            const QPointF pa = worldToScreen(controlPointPosition(a));
+            const QPointF pb = worldToScreen(controlPointPosition(b));
+            const QPointF ab = pb - pa;
+            const double len2 = QPointF::dotProduct(ab, ab);
+            const double t = len2 > 0 ? std::clamp(QPointF::dotProduct(screen - pa, ab) / len2,
+                                                   0.0, 1.0)
+                                      : 0.0;
+            const QPointF q = pa + t * ab;
+            const double d = QLineF(q, screen).length();
+            if (d <= bestD) {
+                bestD = d;
+                best = a;
+                bestPoint = q;
+            }
+        }
+        first += n;
+    }
+    if (best >= 0 && world)
+        *world = screenToWorld(bestPoint);
     return best;
 }
 
@@ -157,12 +193,34 @@ void AttractorView::mouseReleaseEvent(QMouseEvent *event)
     }
     m_drag = Drag();
     setCursor(Qt::ArrowCursor);
+    // A right click that did not pan asks for the context menu.
+    if (d.kind == DragKind::Pan && event->button() == Qt::RightButton
+        && QLineF(d.pressScreen, event->position()).length() < kClickSlop) {
+        emit contextMenuRequested(event->position(), event->globalPosition().toPoint());
+        event->accept();
+        return;
+    }
     if (d.kind == DragKind::ControlPoint)
         emit controlPointReleased(d.index, d.startWorld, d.currentWorld);
     else if (d.kind == DragKind::StartVertex)
         emit startVertexReleased(d.index, d.startWorld, d.currentWorld);
     update();
     event->accept();
+}
+
+void AttractorView::mouseDoubleClickEvent(QMouseEvent *event)
+{
+    QPointF world;
+    const QPointF pos = event->position();
+    if (event->button() == Qt::LeftButton && hitControlPoint(pos) < 0) {
+        if (const int edge = controlEdgeAt(pos, &world); edge >= 0) {
+            emit controlEdgeDoubleClicked(edge, world);
+            event->accept();
+            return;
+        }
+    }
+    // Elsewhere a double click is two clicks (a handle is grabbed again, nothing else).
+    mousePressEvent(event);
 }
 
 void AttractorView::wheelEvent(QWheelEvent *event)

@@ -229,6 +229,7 @@ MatrixView::MatrixView(QWidget *parent) : QWidget(parent)
     auto *outer = new QVBoxLayout(this);
     outer->setContentsMargins(0, 0, 0, 0);
     auto *scroll = new QScrollArea(this);
+    m_scroll = scroll;
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     auto *content = new QWidget(scroll);
@@ -246,6 +247,35 @@ MatrixView::MatrixView(QWidget *parent) : QWidget(parent)
 }
 
 MatrixView::~MatrixView() = default;
+
+bool MatrixView::isHighlighted(int matrix) const
+{
+    if (m_highlighted < 0 || matrix < 0 || matrix >= m_models.size())
+        return false;
+    const QString &name = m_models[matrix]->matrix().name;
+    return name.endsWith(QStringLiteral("_%1").arg(m_highlighted + 1));
+}
+
+void MatrixView::setHighlightedMap(int map)
+{
+    m_highlighted = map;
+    showHighlight();
+    for (int i = 0; i < m_boxes.size(); ++i)
+        if (isHighlighted(i)) {
+            m_scroll->ensureWidgetVisible(m_boxes[i], 0, 0);
+            break;
+        }
+}
+
+void MatrixView::showHighlight()
+{
+    for (int i = 0; i < m_boxes.size(); ++i) {
+        m_boxes[i]->setAutoFillBackground(isHighlighted(i));
+        QPalette p = m_boxes[i]->palette();
+        p.setColor(QPalette::Window, QColor(255, 236, 179));
+        m_boxes[i]->setPalette(p);
+    }
+}
 
 void MatrixView::setMatrices(const QList<NamedMatrix> &matrices)
 {
@@ -331,6 +361,7 @@ void MatrixView::rebuild(const QList<NamedMatrix> &matrices)
         m_models << model;
         fitTable(view);
     }
+    showHighlight();
 }
 
 void MatrixView::fitTable(QTableView *view) const

@@ -13,6 +13,7 @@
 #include <utility>
 
 class QLabel;
+class QScrollArea;
 class QTableView;
 class QVBoxLayout;
 
@@ -68,6 +69,12 @@ public:
     void setDigits(int significantDigits);
 
     QTableView *table(int matrix) const;
+    // Marks the matrices of map `map` (0-based: S_1, M_1, A_1, f_1 for map 0) and scrolls to
+    // the first of them; -1 clears the mark. Kept while the shown matrices keep their names.
+    void setHighlightedMap(int map);
+    int highlightedMap() const { return m_highlighted; }
+    // Whether matrix `matrix` is marked.
+    bool isHighlighted(int matrix) const;
     // The message shown after a refused edit (empty when none).
     QString errorMessage() const;
 
@@ -78,6 +85,7 @@ private:
     void rebuild(const QList<NamedMatrix> &matrices);
     void showError(const QString &message);
     void fitTable(QTableView *view) const;
+    void showHighlight();
 
     QVBoxLayout *m_tables = nullptr;
     QLabel *m_error = nullptr;
@@ -87,6 +95,8 @@ private:
     Sums m_sums = Sums::Rows;
     bool m_editable = false;
     int m_digits = 6;
+    int m_highlighted = -1;
+    QScrollArea *m_scroll = nullptr;
 };
 
 } // namespace awb

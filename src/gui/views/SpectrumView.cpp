@@ -5,6 +5,7 @@
 
 #include <QFileInfo>
 #include <QHelpEvent>
+#include <QMouseEvent>
 #include <QResizeEvent>
 #include <QSplitter>
 #include <QSvgGenerator>
@@ -26,9 +27,18 @@ constexpr double kSamePoint = 1e-9;     // eigenvalues closer than this share a 
 
 bool isOne(Complex z) { return std::abs(z - Complex(1.0, 0.0)) < 1e-9; }
 
-// Points of map i get smaller markers than those of map i-1: coinciding eigenvalues of
-// different maps (common: S_1 and S_2 share most of theirs) show as concentric discs.
-double markerSize(int map) { return std::max(6.0, 14.0 - 3.5 * map); }
+// Points of map i get smaller markers of another shape than those of map i-1: coinciding
+// eigenvalues of different maps (common: S_1 and S_2 share most of theirs) show as nested
+// shapes, each still visible.
+double markerSize(int map) { return std::max(6.0, 16.0 - 6.0 * map); }
+QCPScatterStyle::ScatterShape markerShape(int map)
+{
+    static const QCPScatterStyle::ScatterShape shapes[] = {
+        QCPScatterStyle::ssCircle, QCPScatterStyle::ssSquare, QCPScatterStyle::ssDiamond,
+        QCPScatterStyle::ssTriangle, QCPScatterStyle::ssTriangleInverted,
+        QCPScatterStyle::ssCircle};
+    return shapes[map % 6];
+}
 
 QString richLabel(const QString &name)
 {
@@ -57,7 +67,7 @@ SpectrumView::SpectrumView(QWidget *parent) : QWidget(parent)
     layout->addWidget(m_splitter);
 
     m_plot = new QCustomPlot(m_splitter);
-    m_plot->setMinimumSize(220, 200);
+    m_plot->setMinimumSize(150, 130);
     m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     m_plot->xAxis->setLabel(tr("Re λ"));
     m_plot->yAxis->setLabel(tr("Im λ"));
@@ -91,9 +101,10 @@ SpectrumView::SpectrumView(QWidget *parent) : QWidget(parent)
     });
     connect(m_plot, &QCustomPlot::mouseDoubleClick, this, [this] { fit(); });
     m_plot->installEventFilter(this);
+    installEventFilter(this); // its own resizes: the splitter's orientation
 
     m_text = new QTextBrowser(m_splitter);
-    m_text->setMinimumWidth(180);
+    m_text->setMinimumWidth(110);
     m_text->setOpenLinks(false);
     m_splitter->addWidget(m_plot);
     m_splitter->addWidget(m_text);
@@ -109,6 +120,8 @@ SpectrumView::~SpectrumView() = default;
 
 void SpectrumView::setMaps(const QList<MapSpectrum> &maps)
 {
+    if (maps.size() != m_maps.size())
+        m_highlighted = -1;
     m_maps = maps;
     rebuildPlot();
     updateVerdicts();
@@ -129,7 +142,10 @@ void SpectrumView::rebuildPlot()
         pts << QCPCurveData(k, std::cos(t), std::sin(t));
     }
     circle->data()->set(pts, true);
-    circle->removeFromLegend(); // self-explanatory; the legend has little room
+    // Self-explanatory, and the legend has little room; but an empty legend would collapse
+    // the axis rectangle's column of the layout to the legend's margins.
+    if (!m_maps.isEmpty())
+        circle->removeFromLegend();
 
     std::vector<Complex> dominant, sub;
     for (int i = 0; i < m_maps.size(); ++i) {
@@ -138,9 +154,13 @@ void SpectrumView::rebuildPlot()
         g->setName(subscriptName(m.label));
         g->setLineStyle(QCPGraph::lsNone);
         const QColor c = AttractorRenderer::mapColor(i);
-        // ssCircle takes the brush as fill (ssDisc would fill with the pen's colour).
-        g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::white, 1.0),
-                                           QBrush(c), markerSize(i)));
+        // ssCircle takes the brush as fill (ssDisc would fill with the pen's colour). The
+        // selected map gets a dark outline.
+        const bool selected = i == m_highlighted;
+        g->setScatterStyle(QCPScatterStyle(markerShape(i),
+                                           selected ? QPen(QColor(20, 20, 20), 2.2)
+                                                    : QPen(Qt::white, 1.0),
+                                           QBrush(c), markerSize(i) + (selected ? 2 : 0)));
         g->setPen(QPen(c));
         QVector<double> x, y;
         for (Complex z : m.spectrum.values) {
@@ -281,10 +301,14 @@ QString SpectrumView::tooltipAt(const QPointF &pixel) const
                             [&](Complex w) { return std::abs(w - z) < kSamePoint; }))
                 continue;
             const int mult = k < m.spectrum.multiplicity.size() ? m.spectrum.multiplicity[k] : 1;
-            QString line = tr("<b>%1</b>: λ = %2, |λ| = %3, multiplicity %4")
+            const double degrees = std::arg(z) * 180.0 / M_PI;
+            QString line = tr("<b>%1</b>: λ = %2, |λ| = %3, multiplicity %4, arg λ = %6° "
+                              "(map %5)")
                                .arg(richLabel(m.label), formatComplex(z, 10),
                                     formatNumber(std::abs(z), 10))
-                               .arg(mult);
+                               .arg(mult)
+                               .arg(int(&m - m_maps.data()) + 1)
+                               .arg(formatNumber(std::abs(degrees) < 1e-9 ? 0.0 : degrees, 6));
             if (k == 0 && isOne(z))
                 line += tr(" — dominant");
             for (Complex s : m.subdominant.values)
@@ -298,16 +322,88 @@ QString SpectrumView::tooltipAt(const QPointF &pixel) const
     return lines.join(QStringLiteral("<br>"));
 }
 
+void SpectrumView::placeLegend(const QSize &size)
+{
+    const bool legend = size.width() >= 300 && size.height() >= 260;
+    QCPLayoutGrid *layout = m_plot->plotLayout();
+    if (legend != layout->hasElement(1, 0)) {
+        if (legend) {
+            layout->addElement(1, 0, m_plot->legend);
+            layout->setRowStretchFactor(1, 0.001);
+        } else {
+            layout->take(m_plot->legend);
+            layout->simplify();
+        }
+        m_plot->legend->setVisible(legend);
+    }
+    // Legend columns that fit the width (before QCustomPlot lays out the new size).
+    const int columns = std::max(1, size.width() / 120);
+    if (m_plot->legend->wrap() != columns) {
+        m_plot->legend->setWrap(columns);
+        // setWrap alone keeps the old arrangement until elements are added.
+        m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+    }
+}
+
+void SpectrumView::paintPlot(QCPPainter *painter, int width, int height)
+{
+    // Laid out for the figure's size (legend included), then again for the screen.
+    placeLegend(QSize(width, height));
+    m_plot->toPainter(painter, width, height);
+    placeLegend(m_plot->size());
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+int SpectrumView::mapAt(const QPointF &pixel) const
+{
+    // Later maps are drawn on top: the last hit is what the user sees.
+    int found = -1;
+    for (int i = 0; i < m_maps.size(); ++i)
+        for (Complex z : m_maps[i].spectrum.values)
+            if (QLineF(pixelOf(z), pixel).length() <= std::max(kTooltipRadius, markerSize(i) / 2))
+                found = i;
+    return found;
+}
+
+void SpectrumView::setHighlightedMap(int map)
+{
+    map = map >= 0 && map < m_maps.size() ? map : -1;
+    if (map == m_highlighted)
+        return;
+    m_highlighted = map;
+    rebuildPlot();
+}
+
 bool SpectrumView::eventFilter(QObject *watched, QEvent *event)
 {
-    if (watched == m_plot && event->type() == QEvent::Resize) {
-        // Legend columns that fit the width (before QCustomPlot lays out the new size).
-        const int columns = std::max(1, static_cast<QResizeEvent *>(event)->size().width() / 120);
-        if (m_plot->legend->wrap() != columns) {
-            m_plot->legend->setWrap(columns);
-            // setWrap alone keeps the old arrangement until elements are added.
-            m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+    if (watched == m_plot && event->type() == QEvent::MouseButtonRelease) {
+        auto *e = static_cast<QMouseEvent *>(event);
+        // A click, not the end of a drag of the plot.
+        if (e->button() == Qt::LeftButton
+            && QLineF(e->position(), m_pressPosition).length() < 4.0) {
+            const int map = mapAt(e->position());
+            setHighlightedMap(map);
+            emit mapClicked(map);
         }
+    }
+    if (watched == m_plot && event->type() == QEvent::MouseButtonPress)
+        m_pressPosition = static_cast<QMouseEvent *>(event)->position();
+    if (watched == this && event->type() == QEvent::Resize) {
+        // Narrow (a docked column on a small screen): the verdicts go below the plot.
+        const int w = static_cast<QResizeEvent *>(event)->size().width();
+        const Qt::Orientation o = w < 420 ? Qt::Vertical : Qt::Horizontal;
+        if (m_splitter->orientation() != o) {
+            m_splitter->setOrientation(o);
+            // Most of the room to the plot: the verdicts scroll.
+            const int length = o == Qt::Vertical ? static_cast<QResizeEvent *>(event)->size().height()
+                                                 : w;
+            m_splitter->setSizes({length * 3 / 5, length * 2 / 5});
+        }
+    }
+    if (watched == m_plot && event->type() == QEvent::Resize) {
+        // A small plot has no room for a legend under it (it would squash the axes to a
+        // strip): the verdicts beside or below name the maps in their colours.
+        placeLegend(static_cast<QResizeEvent *>(event)->size());
     }
     if (watched == m_plot && event->type() == QEvent::ToolTip) {
         auto *help = static_cast<QHelpEvent *>(event);
@@ -420,6 +516,7 @@ bool SpectrumView::exportPlot(const QString &fileName, const QSize &size, QStrin
 {
     const QString suffix = QFileInfo(fileName).suffix().toLower();
     const int w = std::max(1, size.width()), h = std::max(1, size.height());
+    placeLegend(QSize(w, h));
     bool ok = false;
     if (suffix == QLatin1String("pdf")) {
         ok = m_plot->savePdf(fileName, w, h, QCP::epNoCosmetic, QString(),
@@ -444,6 +541,7 @@ bool SpectrumView::exportPlot(const QString &fileName, const QSize &size, QStrin
         return false;
     }
     // The export laid the plot out at its own size: lay it out again for the screen.
+    placeLegend(m_plot->size());
     m_plot->replot(QCustomPlot::rpQueuedReplot);
     if (!ok && error)
         *error = tr("Could not write %1.").arg(fileName);

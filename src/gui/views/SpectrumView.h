@@ -3,11 +3,15 @@
 // colour per map) with the unit circle, the dominant eigenvalue 1 and the subdominant ones
 // marked, and beside it the verdicts (contractive or not; subdominant kind and what it means
 // for tangents at the fixed points). Cheap to update: it follows a live parameter drag.
+// Each map has its own marker shape and size (coinciding eigenvalues of several maps show as
+// nested shapes); a tooltip gives λ, |λ|, arg λ, the map and the multiplicity, and a click on a
+// marker selects its map (mapClicked) and outlines that map's markers.
 // QCustomPlot stays out of this header.
 
 #include "core/analysis/Spectrum.h"
 
 #include <QList>
+#include <QPointF>
 #include <QSize>
 #include <QString>
 #include <QWidget>
@@ -16,6 +20,7 @@
 
 class QCustomPlot;
 class QCPGraph;
+class QCPPainter;
 class QSplitter;
 class QTextBrowser;
 
@@ -45,14 +50,26 @@ public:
     std::vector<Complex> subdominantMarkers() const;
     // The tooltip text for a point of the plot widget (empty when no eigenvalue is near).
     QString tooltipAt(const QPointF &plotPixel) const;
+    // The map whose marker is under `plotPixel` (the last drawn, i.e. topmost), or -1.
+    int mapAt(const QPointF &plotPixel) const;
+    // Outlines map `map`'s markers (-1: none).
+    void setHighlightedMap(int map);
+    int highlightedMap() const { return m_highlighted; }
     // Where eigenvalue z is drawn, in plot widget pixels.
     QPointF pixelOf(Complex z) const;
     QString verdictText() const;   // the panel's text as plain text
 
     QCustomPlot *plot() const { return m_plot; }
+    // Paints the plot at width x height (a figure's size: with its legend, which a small dock
+    // leaves out) into `painter`.
+    void paintPlot(QCPPainter *painter, int width, int height);
     // Writes the plot to .pdf, .svg or .png (by suffix) at `size` (in points/pixels).
     // Returns false with a message in *error on failure.
     bool exportPlot(const QString &fileName, const QSize &size, QString *error = nullptr);
+
+signals:
+    // A click on a marker of map `map` (0-based), or on no marker (-1).
+    void mapClicked(int map);
 
 public slots:
     // Ranges to show the unit circle and every eigenvalue, with equal scale on both axes.
@@ -65,6 +82,8 @@ private:
     void rebuildPlot();
     void updateVerdicts();
     void keepAspect();
+    // The legend under the axes when a plot of `size` has room for it.
+    void placeLegend(const QSize &size);
 
     QSplitter *m_splitter = nullptr;
     QCustomPlot *m_plot = nullptr;
@@ -74,6 +93,8 @@ private:
     QCPGraph *m_dominantGraph = nullptr;
     QCPGraph *m_subdominantGraph = nullptr;
     bool m_fitPending = true;
+    int m_highlighted = -1;
+    QPointF m_pressPosition;
     bool m_inKeepAspect = false;
 };
 

@@ -1,0 +1,118 @@
+#include "model/PointExport.h"
+
+#include "model/AttractorItem.h"
+
+#include <QCoreApplication>
+#include <QIODevice>
+
+namespace awb {
+
+namespace {
+
+QString tr(const char *text) { return QCoreApplication::translate("awb::PointExport", text); }
+
+// Writes `bytes` or throws: a full disk must not give a silently short file.
+void put(QIODevice &out, const QByteArray &bytes)
+{
+    if (out.write(bytes) != bytes.size())
+        throw InputError(tr("cannot write the points: %1").arg(out.errorString()).toStdString());
+}
+
+// Streams F^depth(X0) to `visit(point row of one view, view index, 0-based map or -1)`.
+template <class Visit>
+void iteratePoints(const DerivedIfs &d, const StartSet &start, int depth,
+                   const IterationControl &control, Visit &&visit)
+{
+    CallbackSink sink([&](const Mat &v, StartSet::Kind, const std::uint8_t *a, int n) {
+        const int map = n > 0 ? d.analysisIndex(a[0]) : -1;
+        for (std::size_t k = 0; k < d.ifs.views.size(); ++k) {
+            const Mat p = awb::project(d.ifs.views[k], v);
+            for (Eigen::Index r = 0; r < p.rows(); ++r)
+                visit(RowVec(p.row(r)), int(k), map);
+        }
+    });
+    if (d.iterate)
+        d.iterate(start, depth, {&sink}, control);
+    else
+        iterate(d.ifs, start, depth, sink, control);
+}
+
+} // namespace
+
+double exportPointCount(const DerivedIfs &d, const StartSet &start, int depth)
+{
+    if (d.iterate)
+        return -1;
+    return imageCount(d.ifs, depth) * double(start.vertices.rows())
+           * double(d.ifs.views.size());
+}
+
+bool exportsSpacePoints(const DerivedIfs &d)
+{
+    return !d.ifs.views.empty() && d.ifs.views.front().outDim() == 3;
+}
+
+std::uint64_t writePointsCsv(QIODevice &out, const DerivedIfs &d, const StartSet &start,
+                             int depth, const IterationControl &control)
+{
+    put(out, exportsSpacePoints(d) ? "x,y,z,map,view\n" : "x,y,map,view\n");
+    QByteArray buffer;
+    std::uint64_t written = 0;
+    iteratePoints(d, start, depth, control, [&](const RowVec &p, int view, int map) {
+        for (Eigen::Index c = 0; c < p.size(); ++c)
+            buffer += QByteArray::number(p(c), 'g', 17) + ',';
+        buffer += QByteArray::number(map + 1) + ',' + QByteArray::number(view + 1) + '\n';
+        ++written;
+        if (buffer.size() > (1 << 20)) {
+            put(out, buffer);
+            buffer.clear();
+        }
+    });
+    put(out, buffer);
+    return written;
+}
+
+std::uint64_t writePointsPly(QIODevice &out, const QString &title, const DerivedIfs &d,
+                             const StartSet &start, int depth,
+                             const std::function<QColor(int)> &color,
+                             const IterationControl &control)
+{
+    const double n = exportPointCount(d, start, depth);
+    if (n < 0)
+        throw InputError(tr("'%1' is drawn by an automaton: PLY export covers items with one "
+                            "IFS").arg(title).toStdString());
+    put(out, QString("ply\nformat binary_little_endian 1.0\n"
+                     "comment Attractor Workbench: item %1, F^%2(X0)\n"
+                     "element vertex %3\n"
+                     "property float x\nproperty float y\nproperty float z\n"
+                     "property uchar red\nproperty uchar green\n"
+                     "property uchar blue\nproperty uchar map\nend_header\n")
+                 .arg(title)
+                 .arg(depth)
+                 .arg(qint64(n))
+                 .toUtf8());
+    QByteArray buffer;
+    std::uint64_t written = 0;
+    iteratePoints(d, start, depth, control, [&](const RowVec &p, int, int map) {
+        map = std::max(map, 0);
+        const QColor c = color(map);
+        const float xyz[3] = {float(p(0)), float(p(1)), p.size() > 2 ? float(p(2)) : 0.0f};
+        buffer.append(reinterpret_cast<const char *>(xyz), sizeof xyz);
+        const char rgbm[4] = {char(c.red()), char(c.green()), char(c.blue()),
+                              char(std::uint8_t(map))};
+        buffer.append(rgbm, 4);
+        ++written;
+        if (buffer.size() > (1 << 20)) {
+            put(out, buffer);
+            buffer.clear();
+        }
+    });
+    put(out, buffer);
+    const bool cancelled = control.cancel && control.cancel->load();
+    if (!cancelled && written != std::uint64_t(n))
+        throw InputError(tr("wrote %1 points, expected %2").arg(written).arg(qint64(n))
+                             .toStdString());
+    return written;
+}
+
+} // namespace awb

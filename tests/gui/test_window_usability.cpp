@@ -1,0 +1,316 @@
+// The main window as a user meets it (issue 17): the wheel scrolls the Properties dock instead
+// of changing values; Esc stops a drawing from any panel; the toolbar keeps its width while the
+// undo text changes; at 1000 x 650 the attractor view gets most of the width and long notes are
+// readable; points export as CSV and PLY; the map colours are chosen in a dialog (undoable);
+// Help > User Guide shows the bundled guide.
+#include "gui/app/ItemController.h"
+#include "gui/app/MainWindow.h"
+#include "gui/app/Messages.h"
+#include "gui/app/PaletteDialog.h"
+#include "gui/app/PointExportDialog.h"
+#include "gui/app/PropertiesDock.h"
+#include "gui/app/UserGuideDialog.h"
+#include "gui/views/AnalysisCharts.h"
+#include "gui/views/AttractorView.h"
+#include "model/Project.h"
+#include "model/SubdivisionCurveItem.h"
+#include "model/SubdivisionSurfaceItem.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QStackedWidget>
+#include <QTextBrowser>
+#include <QToolBar>
+#include <QToolButton>
+#include <QtTest>
+
+#include "WindowTestSupport.h"
+
+using namespace awb;
+
+namespace {
+
+// A wheel turn of one notch over `w` at its centre, delivered as QApplication delivers the
+// window system's: to the widget under the pointer, then to its parents while they ignore it.
+// (QApplication::sendEvent alone does not propagate: the event is not spontaneous.)
+void wheel(QWidget *w, int notches = -1)
+{
+    QPointF local = QRectF(w->rect()).center();
+    for (QWidget *target = w; target; target = target->parentWidget()) {
+        QWheelEvent e(local, target->mapToGlobal(local), QPoint(), QPoint(0, 120 * notches),
+                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        const bool handled = QApplication::sendEvent(target, &e);
+        if ((handled && e.isAccepted()) || target->isWindow())
+            break;
+        local += target->pos();
+    }
+}
+
+SubdivisionCurveItem *firstCurve(MainWindow &w)
+{
+    return qobject_cast<SubdivisionCurveItem *>(w.project()->child(0));
+}
+
+} // namespace
+
+class TestWindowUsability : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void wheelScrollsInsteadOfEditing();
+    void escapeStopsDrawingFromAnyPanel();
+    void toolbarKeepsItsWidth();
+    void smallWindowGivesTheViewMostOfTheWidth();
+    void exportPointsCsvAndPly();
+    void paletteIsUndoable();
+    void userGuideShowsShortcutsAndExamples();
+
+private:
+    QTemporaryDir m_dir;
+    QString m_recovery;
+};
+
+void TestWindowUsability::initTestCase()
+{
+    test::useTestSettings("test-window-usability");
+    m_recovery = m_dir.path() + QStringLiteral("/recovery");
+}
+
+void TestWindowUsability::wheelScrollsInsteadOfEditing()
+{
+    test::ShownWindow shown(m_recovery, {1000, 650});
+    QVERIFY(shown.exposed);
+    MainWindow &w = shown.window;
+    w.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&w));
+    auto *combo = qobject_cast<QComboBox *>(w.propertiesWidget()->editor("scheme.kind"));
+    auto *depth = qobject_cast<QAbstractSpinBox *>(w.propertiesWidget()->editor("algorithm.depth"));
+    QVERIFY(combo && depth);
+    QCOMPARE(combo->focusPolicy(), Qt::StrongFocus);
+    const int index = combo->currentIndex();
+    const int steps = w.project()->undoStack()->count();
+    auto *scroll = w.propertiesWidget()->findChild<QScrollArea *>();
+    QVERIFY(scroll && scroll->verticalScrollBar()->maximum() > 0);
+    const int scrolled = scroll->verticalScrollBar()->value();
+    QVERIFY(!combo->hasFocus());
+    wheel(combo);
+    wheel(depth);
+    QCOMPARE(combo->currentIndex(), index);
+    QCOMPARE(w.project()->undoStack()->count(), steps);
+    QVERIFY2(scroll->verticalScrollBar()->value() > scrolled, "the dock did not scroll");
+    // A focused editor takes the wheel: that is an edit, with its undo step.
+    combo->setFocus();
+    QTRY_VERIFY(combo->hasFocus());
+    wheel(combo, -1);
+    QVERIFY(combo->currentIndex() != index);
+    QCOMPARE(w.project()->undoStack()->count(), steps + 1);
+}
+
+void TestWindowUsability::escapeStopsDrawingFromAnyPanel()
+{
+    test::ShownWindow shown(m_recovery, {1300, 850});
+    QVERIFY(shown.exposed);
+    MainWindow &w = shown.window;
+    w.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&w));
+    SubdivisionCurveItem *item = firstCurve(w);
+    QVERIFY(test::waitForFinalImage(w.attractorView()));
+    QAction *stop = w.action(QStringLiteral("actionStopRender"));
+    QCOMPARE(stop->shortcut(), QKeySequence(Qt::Key_Escape));
+    QVERIFY(!stop->isEnabled()); // Esc is free while nothing is drawn
+    // 2^26 images: seconds of work.
+    AlgorithmSpec a = item->algorithm();
+    a.depth = 26;
+    QVERIFY(item->setAlgorithm(a));
+    QTRY_VERIFY_WITH_TIMEOUT(w.attractorView()->isRendering(), 5000);
+    QTRY_VERIFY(stop->isEnabled());
+    // Esc from the Properties dock, where the focus is on an editor.
+    auto *depth = w.propertiesWidget()->editor("algorithm.depth");
+    depth->setFocus();
+    QTRY_VERIFY(depth->hasFocus());
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Escape);
+    QTRY_VERIFY_WITH_TIMEOUT(!w.attractorView()->isRendering(), 5000);
+    QVERIFY(!stop->isEnabled());
+    // The View menu lists it with its key.
+    bool listed = false;
+    for (QAction *m : w.menuBar()->actions())
+        if (m->menu() && m->menu()->actions().contains(stop))
+            listed = true;
+    QVERIFY(listed);
+    a.depth = 8;
+    QVERIFY(item->setAlgorithm(a));
+    QVERIFY(test::waitForFinalImage(w.attractorView()));
+}
+
+void TestWindowUsability::toolbarKeepsItsWidth()
+{
+    test::ShownWindow shown(m_recovery, {1000, 650});
+    QVERIFY(shown.exposed);
+    MainWindow &w = shown.window;
+    auto *bar = w.findChild<QToolBar *>(QStringLiteral("toolBarMain"));
+    QAction *undo = w.action(QStringLiteral("actionUndo"));
+    auto *button = qobject_cast<QToolButton *>(bar->widgetForAction(undo));
+    QVERIFY(button);
+    QCOMPARE(button->toolButtonStyle(), Qt::ToolButtonIconOnly);
+    QVERIFY(!undo->icon().isNull());
+    QVERIFY(bar->widgetForAction(w.action(QStringLiteral("actionFit")))->isVisible());
+    const int width = button->sizeHint().width();
+    const QRect fitBefore = bar->widgetForAction(w.action(QStringLiteral("actionFit")))->geometry();
+    // An edit with a long text: the menu and the tooltip say what undo undoes, the toolbar
+    // does not move.
+    SubdivisionCurveItem *item = firstCurve(w);
+    QVERIFY(item->moveControlPoint(2, {3.5, 2.75}));
+    QVERIFY(undo->text().contains(item->name()));
+    QVERIFY2(undo->toolTip().contains(w.project()->undoStack()->undoText()),
+             qPrintable(undo->toolTip()));
+    QCoreApplication::processEvents();
+    QCOMPARE(button->sizeHint().width(), width);
+    QCOMPARE(bar->widgetForAction(w.action(QStringLiteral("actionFit")))->geometry(), fitBefore);
+    QVERIFY(bar->widgetForAction(w.action(QStringLiteral("actionFit")))->isVisible());
+}
+
+void TestWindowUsability::smallWindowGivesTheViewMostOfTheWidth()
+{
+    test::ShownWindow shown(m_recovery, {1000, 650});
+    QVERIFY(shown.exposed);
+    MainWindow &w = shown.window;
+    QTRY_VERIFY2(w.centralWidget()->width() >= 500,
+                 qPrintable(QStringLiteral("central view %1 px of %2")
+                                .arg(w.centralWidget()->width()).arg(w.width())));
+    QCOMPARE(w.width(), 1000);
+    // A long note does not widen the window: elided in the status bar, whole in its tooltip
+    // and in the Analysis panel.
+    SubdivisionCurveItem *item = firstCurve(w);
+    SchemeSpec s = item->scheme();
+    s.kind = SchemeSpec::Kind::Bezier;
+    s.degree = 7; // needs 8 points, the item has 5: a long reason
+    QVERIFY(item->setScheme(s));
+    w.controller()->refreshNow();
+    QCoreApplication::processEvents();
+    const QString problem = w.controller()->problem();
+    QVERIFY(!problem.isEmpty());
+    auto *label = w.findChild<QLabel *>(QStringLiteral("problemLabel"));
+    QVERIFY(label);
+    QCOMPARE(w.width(), 1000);
+    QVERIFY(label->toolTip() == problem || label->text() == problem);
+    QCOMPARE(w.analysisCharts()->note(), problem);
+    QVERIFY(w.centralWidget()->width() >= 500);
+}
+
+void TestWindowUsability::exportPointsCsvAndPly()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_recovery);
+    SubdivisionCurveItem *item = firstCurve(w);
+    QVERIFY(item->derivedIfs());
+    // CSV: x, y, map, view; F^3 of a triangle with 2 maps = 8 images x 3 vertices.
+    const QString csv = m_dir.path() + QStringLiteral("/points.csv");
+    QString error;
+    QVERIFY2(w.exportPoints(csv, 3, &error), qPrintable(error));
+    QFile f(csv);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QList<QByteArray> lines = f.readAll().trimmed().split('\n');
+    QCOMPARE(lines.front(), QByteArray("x,y,map,view"));
+    QCOMPARE(lines.size(), 1 + 8 * 3);
+    QCOMPARE(lines[1].split(',').size(), 4);
+    // PLY of the same points: header and 8 * 3 binary vertices of 16 bytes.
+    const QString ply = m_dir.path() + QStringLiteral("/points.ply");
+    QVERIFY2(w.exportPoints(ply, 3, &error), qPrintable(error));
+    QFile g(ply);
+    QVERIFY(g.open(QIODevice::ReadOnly));
+    const QByteArray bytes = g.readAll();
+    QVERIFY(bytes.startsWith("ply\nformat binary_little_endian 1.0\n"));
+    QVERIFY(bytes.contains("element vertex 24\n"));
+    const qsizetype body = bytes.indexOf("end_header\n") + qsizetype(strlen("end_header\n"));
+    QCOMPARE(bytes.size() - body, qsizetype(24 * 16));
+    // Too many points are refused with a reason, and nothing is written.
+    const QString big = m_dir.path() + QStringLiteral("/big.csv");
+    QVERIFY(!w.exportPoints(big, 40, &error));
+    QVERIFY2(error.contains(QStringLiteral("smaller depth")), qPrintable(error));
+    QVERIFY(!QFile::exists(big));
+    // The dialog counts the points of the chosen depth and follows the suffix.
+    PointExportDialog dialog(item, csv);
+    dialog.setDepth(3);
+    QCOMPARE(dialog.pointCount(), 24.0);
+    QCOMPARE(dialog.findChild<QComboBox *>()->currentIndex(), 0);
+    dialog.setFileName(ply);
+    QCOMPARE(dialog.findChild<QComboBox *>()->currentIndex(), 1);
+    // A surface exports 3D points (x, y, z).
+    auto surface = std::make_unique<SubdivisionSurfaceItem>();
+    auto *raw = surface.get();
+    w.project()->addItem(std::move(surface));
+    w.setCurrentItem(raw);
+    const QString csv3 = m_dir.path() + QStringLiteral("/surface.csv");
+    QVERIFY2(w.exportPoints(csv3, 1, &error), qPrintable(error));
+    QFile h(csv3);
+    QVERIFY(h.open(QIODevice::ReadOnly));
+    QCOMPARE(h.readLine(), QByteArray("x,y,z,map,view\n"));
+    QVERIFY(w.action(QStringLiteral("actionExportPoints")));
+}
+
+void TestWindowUsability::paletteIsUndoable()
+{
+    test::ShownWindow shown(m_recovery);
+    QVERIFY(shown.exposed);
+    MainWindow &w = shown.window;
+    SubdivisionCurveItem *item = firstCurve(w);
+    QVERIFY(item->style().colors.isEmpty());
+    auto *button = qobject_cast<QPushButton *>(w.propertiesWidget()->editor("style.colors"));
+    QVERIFY(button);
+    const int steps = w.project()->undoStack()->count();
+    // The dialog is modal: answer it from the event loop.
+    QTimer::singleShot(0, [] {
+        auto *dialog = qobject_cast<PaletteDialog *>(QApplication::activeModalWidget());
+        QVERIFY(dialog);
+        QCOMPARE(dialog->mapCount(), 2);
+        dialog->setColor(1, QColor(10, 200, 30));
+        dialog->accept();
+    });
+    button->click();
+    QCOMPARE(w.project()->undoStack()->count(), steps + 1);
+    QCOMPARE(item->style().colors.size(), 2);
+    QCOMPARE(item->style().colors[1], QStringLiteral("#0ac81e"));
+    w.controller()->refreshNow();
+    QCOMPARE(w.attractorView()->renderSettings().palette.value(1), QColor(10, 200, 30));
+    w.project()->undoStack()->undo();
+    QVERIFY(item->style().colors.isEmpty());
+    // "Use the default colours" clears the item's own colours again.
+    w.project()->undoStack()->redo();
+    QTimer::singleShot(0, [] {
+        auto *dialog = qobject_cast<PaletteDialog *>(QApplication::activeModalWidget());
+        QVERIFY(dialog);
+        dialog->useDefaults();
+        dialog->accept();
+    });
+    button->click();
+    QVERIFY(item->style().colors.isEmpty());
+}
+
+void TestWindowUsability::userGuideShowsShortcutsAndExamples()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_recovery);
+    QAction *guide = w.action(QStringLiteral("actionUserGuide"));
+    QVERIFY(guide);
+    QCOMPARE(guide->shortcut(), QKeySequence(QKeySequence::HelpContents));
+    guide->trigger();
+    auto *dialog = w.findChild<UserGuideDialog *>();
+    QVERIFY(dialog);
+    const QString text = dialog->browser()->toPlainText();
+    QVERIFY2(text.contains(QStringLiteral("Keyboard shortcuts")), qPrintable(text.left(200)));
+    QVERIFY(text.contains(QStringLiteral("Stop Drawing")));
+    QVERIFY(text.contains(QKeySequence(Qt::Key_Escape).toString(QKeySequence::NativeText)));
+    QVERIFY(text.contains(QStringLiteral("Export Points")));
+    QVERIFY(text.contains(QStringLiteral("000-fig02")));
+    QVERIFY(text.contains(QStringLiteral("004-fig3.9")));
+    dialog->close();
+}
+
+QTEST_MAIN(TestWindowUsability)
+#include "test_window_usability.moc"
