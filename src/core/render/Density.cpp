@@ -26,6 +26,20 @@ DensityImage::DensityImage(int cellsX, int cellsY, Accumulation mode)
 {
 }
 
+void DensityImage::reset(int cellsX, int cellsY, Accumulation mode)
+{
+    m_w = cellsX;
+    m_h = cellsY;
+    m_mode = mode;
+    const std::size_t n = std::size_t(cellsX) * cellsY;
+    if (m_buckets.size() == n)
+        std::fill(m_buckets.begin(), m_buckets.end(), DensityBucket{});
+    else
+        m_buckets.assign(n, DensityBucket{});
+    m_spilled.clear();
+    offscreen = nonFinite = 0;
+}
+
 void DensityImage::spill(std::size_t i)
 {
     DensityBucket &b = m_buckets[i];

@@ -739,14 +739,25 @@ IterationStats accumulate(const EngineJob &job, DensityImage &out, const Iterati
     const double bytes = 16.0 * job.frame.cellsX() * job.frame.cellsY();
     int threads = std::clamp(job.threads, 1, kChaosStreams);
     threads = std::max(1, std::min(threads, int(kHistogramBudget / std::max(1.0, bytes))));
-    out = DensityImage(job.frame.cellsX(), job.frame.cellsY(), job.accumulation);
-    std::vector<std::unique_ptr<DensityImage>> extra;
+    out.reset(job.frame.cellsX(), job.frame.cellsY(), job.accumulation);
+    // The other threads' histograms are kept per calling thread and reused by the next
+    // picture of the same size (live drags render one picture after another).
+    static thread_local std::vector<std::unique_ptr<DensityImage>> spare;
+    if (spare.size() < std::size_t(threads))
+        spare.resize(std::size_t(threads));
     std::vector<DensityImage *> images{&out};
     for (int t = 1; t < threads; ++t) {
-        extra.push_back(std::make_unique<DensityImage>(job.frame.cellsX(), job.frame.cellsY(),
-                                                       job.accumulation));
-        images.push_back(extra.back().get());
+        if (!spare[t])
+            spare[t] = std::make_unique<DensityImage>();
+        spare[t]->reset(job.frame.cellsX(), job.frame.cellsY(), job.accumulation);
+        images.push_back(spare[t].get());
     }
+    // A much larger earlier picture's memory is not kept.
+    auto release = [&] {
+        for (auto &img : spare)
+            if (img && img->size() > 4 * std::size_t(job.frame.cellsX()) * job.frame.cellsY())
+                img.reset();
+    };
 
     IterationStats stats;
     if (ifs.dim() <= kMaxFixedDim && ifs.size() > 0) {
@@ -779,6 +790,7 @@ IterationStats accumulate(const EngineJob &job, DensityImage &out, const Iterati
         return stats;
     for (std::size_t t = 1; t < images.size(); ++t)
         out.merge(*images[t]);
+    release();
     if (control.progress)
         control.progress(1.0);
     return stats;
