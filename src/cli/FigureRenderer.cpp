@@ -2,6 +2,7 @@
 
 #include "render/FigureFile.h"
 
+#include <QFontMetricsF>
 #include <QPainter>
 #include <QPainterPath>
 #include <cmath>
@@ -253,9 +254,19 @@ void paintFigure(QPainter &p, const FigureSpec &spec)
         }
         p.restore();
         p.setPen(Qt::black);
+        // A long caption shrinks to the panel's width (down to 9 px, then it is elided).
+        QFont captionFont = font;
+        while (captionFont.pixelSize() > 9
+               && QFontMetricsF(captionFont).horizontalAdvance(spec.panels[i].caption)
+                      > spec.panelWidth - 8)
+            captionFont.setPixelSize(captionFont.pixelSize() - 1);
+        p.setFont(captionFont);
         p.drawText(QRectF(i * spec.panelWidth, titleH + spec.panelHeight - 2, spec.panelWidth,
                           captionH),
-                   Qt::AlignCenter, spec.panels[i].caption);
+                   Qt::AlignCenter,
+                   QFontMetricsF(captionFont).elidedText(spec.panels[i].caption, Qt::ElideRight,
+                                                         spec.panelWidth - 8));
+        p.setFont(font);
     }
 }
 

@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <thread>
 
 namespace awb {
@@ -146,15 +145,17 @@ QImage renderAttractorImage(const RenderRequest &r, int depth, std::uint64_t sam
     if (stats.cancelled || (control.cancel && control.cancel->load()))
         return {};
 
-    std::vector<std::uint32_t> argb = toneMap(density, frame, r.tone, colours.labelColours);
-    std::uint64_t lit = 0;
-    for (std::uint32_t p : argb)
-        lit += (p >> 24) != 0;
-    dilate(argb, frame.width, frame.height, std::clamp(r.dotRadius, 0, 4));
     QImage image(frame.width, frame.height, QImage::Format_ARGB32_Premultiplied);
-    for (int y = 0; y < frame.height; ++y)
-        std::memcpy(image.scanLine(y), argb.data() + std::size_t(y) * frame.width,
-                    std::size_t(frame.width) * 4);
+    if (image.isNull())
+        throw InputError("not enough memory for a " + std::to_string(frame.width) + "x"
+                         + std::to_string(frame.height) + " picture");
+    // 32-bit rows are contiguous: the tone mapping writes straight into the image.
+    auto *argb = reinterpret_cast<std::uint32_t *>(image.bits());
+    toneMapInto(density, frame, r.tone, colours.labelColours, argb);
+    std::uint64_t lit = 0;
+    for (std::size_t i = 0, n = std::size_t(frame.width) * frame.height; i < n; ++i)
+        lit += (argb[i] >> 24) != 0;
+    dilate(argb, frame.width, frame.height, std::clamp(r.dotRadius, 0, 4));
     if (info) {
         info->depth = r.mode == RenderRequest::Mode::Deterministic ? depth : 0;
         info->images = double(stats.images);

@@ -129,7 +129,7 @@ void TestEngine::threadsDoNotChangeThePicture()
         for (Accumulation mode : {Accumulation::Hits, Accumulation::Density}) {
             EngineJob j = job(sier.ifs, tri, 257, -0.1, -0.1, 1.1, 1.1);
             j.random = random;
-            j.depth = 9;
+            j.depth = 11;         // 3^11 triangles: enough work for several threads
             j.samples = 300001;  // not a multiple of the streams
             j.accumulation = mode;
             DensityImage one, two, three;

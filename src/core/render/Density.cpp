@@ -183,10 +183,18 @@ std::vector<Rgb8> colourRamp(const std::vector<Rgb8> &labels)
 std::vector<std::uint32_t> toneMap(const DensityImage &image, const RasterFrame &frame,
                                    const ToneSettings &tone, const std::vector<Rgb8> &labels)
 {
+    std::vector<std::uint32_t> out(std::size_t(frame.width) * frame.height);
+    toneMapInto(image, frame, tone, labels, out.data());
+    return out;
+}
+
+void toneMapInto(const DensityImage &image, const RasterFrame &frame, const ToneSettings &tone,
+                 const std::vector<Rgb8> &labels, std::uint32_t *out)
+{
     const int W = frame.width, H = frame.height, ss = frame.supersample;
     if (image.cellsX() != W * ss || image.cellsY() != H * ss)
         throw InputError("density image does not match its frame");
-    std::vector<std::uint32_t> out(std::size_t(W) * H, 0);
+    std::fill(out, out + std::size_t(W) * H, 0u);
     const double cellsPerPixel = double(ss) * ss;
     const int cw = image.cellsX();
     const std::vector<Rgb8> ramp = colourRamp(labels);
@@ -222,7 +230,7 @@ std::vector<std::uint32_t> toneMap(const DensityImage &image, const RasterFrame 
                     packPremultiplied(a, a * r / lit / 255.0, a * g / lit / 255.0,
                                       a * b / lit / 255.0);
             }
-        return out;
+        return;
     }
 
     // Density: box-filter the cells into pixels (counts and colours weighted by count), then
@@ -245,7 +253,7 @@ std::vector<std::uint32_t> toneMap(const DensityImage &image, const RasterFrame 
             maxCount = std::max(maxCount, s[0]);
         }
     if (maxCount <= 0)
-        return out;
+        return;
     const double g = 1.0 / std::max(0.1, tone.gamma);
     const double vib = std::clamp(tone.vibrancy, 0.0, 1.0);
     const double norm = 1.0 / std::log1p(maxCount);
@@ -264,15 +272,14 @@ std::vector<std::uint32_t> toneMap(const DensityImage &image, const RasterFrame 
         }
         out[i] = packPremultiplied(alpha, rgb[0], rgb[1], rgb[2]);
     }
-    return out;
 }
 
-void dilate(std::vector<std::uint32_t> &argb, int width, int height, int r)
+void dilate(std::uint32_t *argb, int width, int height, int r)
 {
     if (r <= 0)
         return;
     auto pick = [](std::uint32_t best, std::uint32_t c) { return (c >> 24) > (best >> 24) ? c : best; };
-    std::vector<std::uint32_t> tmp(argb.size());
+    std::vector<std::uint32_t> tmp(std::size_t(width) * height);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             std::uint32_t best = 0;

@@ -125,9 +125,13 @@ std::vector<Rgb8> colourRamp(const std::vector<Rgb8> &labels);
 // `labels` gives the colour of each label (hits), and the ramp (density).
 std::vector<std::uint32_t> toneMap(const DensityImage &image, const RasterFrame &frame,
                                    const ToneSettings &tone, const std::vector<Rgb8> &labels);
+// The same into `out` (frame.width * frame.height pixels, rows contiguous), every pixel
+// written: a caller's image buffer, no copy.
+void toneMapInto(const DensityImage &image, const RasterFrame &frame, const ToneSettings &tone,
+                 const std::vector<Rgb8> &labels, std::uint32_t *out);
 
 // Grows lit pixels by r pixels (a square): an unlit pixel takes the most opaque neighbour
 // within r (ties: the first in scan order), so a thin curve reads at print size.
-void dilate(std::vector<std::uint32_t> &argb, int width, int height, int r);
+void dilate(std::uint32_t *argb, int width, int height, int r);
 
 } // namespace awb

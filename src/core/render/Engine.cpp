@@ -546,6 +546,8 @@ private:
                         plotCell<M>(m_img, w, h, sx, sy, lab, colours);
                     }
                 } else {
+                    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+                    bool nan = false;
                     for (int r = 0; r < m_n; ++r) {
                         double sx = L[2 * D], sy = L[2 * D + 1];
                         for (int j = 0; j < D; ++j) {
@@ -554,8 +556,17 @@ private:
                         }
                         m_screen[2 * r] = sx;
                         m_screen[2 * r + 1] = sy;
+                        x0 = std::min(x0, sx), x1 = std::max(x1, sx);
+                        y0 = std::min(y0, sy), y1 = std::max(y1, sy);
+                        nan = nan || sx != sx || sy != sy;
                     }
-                    m_plotter.image(m_screen.data(), m_n, m_kind, lab, m_xs);
+                    // Deep levels: the image inside one cell is one hit there (NaN fails the
+                    // test and goes to the rasteriser, which counts it).
+                    if (!nan && std::floor(x0) == std::floor(x1)
+                        && std::floor(y0) == std::floor(y1) && x0 >= 0.0 && y0 >= 0.0)
+                        plotCell<M>(m_img, w, h, x0, y0, lab, colours);
+                    else
+                        m_plotter.image(m_screen.data(), m_n, m_kind, lab, m_xs);
                 }
             }
         }
@@ -738,6 +749,11 @@ IterationStats accumulate(const EngineJob &job, DensityImage &out, const Iterati
     // One histogram per thread, within the memory budget; thread 0 fills `out` itself.
     const double bytes = 16.0 * job.frame.cellsX() * job.frame.cellsY();
     int threads = std::clamp(job.threads, 1, kChaosStreams);
+    // A small picture's work is less than starting threads and merging their histograms.
+    const double work = job.random ? double(job.samples)
+                                   : imageCount(ifs, job.depth) * double(job.start.vertices.rows());
+    if (work < 2e5)
+        threads = 1;
     threads = std::max(1, std::min(threads, int(kHistogramBudget / std::max(1.0, bytes))));
     out.reset(job.frame.cellsX(), job.frame.cellsY(), job.accumulation);
     // The other threads' histograms are kept per calling thread and reused by the next
