@@ -25,21 +25,6 @@ namespace {
 
 constexpr int kMaxDepth = 64;
 
-void checkInputs(const Ifs &ifs, const StartSet &start, int depth)
-{
-    ifs.validate();
-    if (depth < 0 || depth > kMaxDepth)
-        throw InputError("iteration depth must be between 0 and " + std::to_string(kMaxDepth)
-                         + ", got " + std::to_string(depth));
-    if (start.vertices.rows() == 0)
-        throw InputError("the start set is empty");
-    if (start.vertices.cols() != ifs.dim())
-        throw InputError("start set has " + std::to_string(start.vertices.cols())
-                         + " coordinates, the IFS space has " + std::to_string(ifs.dim()));
-    requireFinite(start.vertices, "start set");
-    if (ifs.size() > 255)
-        throw InputError("at most 255 maps are supported, got " + std::to_string(ifs.size()));
-}
 
 // Depth-first walk over the words of one subtree. Buffers are allocated once per walker.
 class Walker {
@@ -129,6 +114,22 @@ private:
 
 } // namespace
 
+void checkIterateInputs(const Ifs &ifs, const StartSet &start, int depth)
+{
+    ifs.validate();
+    if (depth < 0 || depth > kMaxDepth)
+        throw InputError("iteration depth must be between 0 and " + std::to_string(kMaxDepth)
+                         + ", got " + std::to_string(depth));
+    if (start.vertices.rows() == 0)
+        throw InputError("the start set is empty");
+    if (start.vertices.cols() != ifs.dim())
+        throw InputError("start set has " + std::to_string(start.vertices.cols())
+                         + " coordinates, the IFS space has " + std::to_string(ifs.dim()));
+    requireFinite(start.vertices, "start set");
+    if (ifs.size() > 255)
+        throw InputError("at most 255 maps are supported, got " + std::to_string(ifs.size()));
+}
+
 IterationStats iterate(const Ifs &ifs, const StartSet &start, int depth, AttractorSink &sink,
                        const IterationControl &control)
 {
@@ -139,7 +140,7 @@ IterationStats iterateParallel(const Ifs &ifs, const StartSet &start, int depth,
                                const std::vector<AttractorSink *> &sinks,
                                const IterationControl &control)
 {
-    checkInputs(ifs, start, depth);
+    checkIterateInputs(ifs, start, depth);
     if (sinks.empty())
         throw InputError("no sink to receive the attractor");
     const int N = ifs.size();

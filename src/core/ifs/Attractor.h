@@ -46,6 +46,8 @@ struct IterationStats {
 // Number of images F^depth makes: N^depth (as a double, it may be huge).
 double imageCount(const Ifs &ifs, int depth);
 
+// Throws InputError for a bad IFS, start set (empty, non-finite, wrong dimension) or depth.
+void checkIterateInputs(const Ifs &ifs, const StartSet &start, int depth);
 // F^depth(X_0), every image sent to sink. depth 0 emits X_0 itself. Throws InputError for
 // depth < 0 or > 64, or an invalid IFS.
 IterationStats iterate(const Ifs &ifs, const StartSet &start, int depth, AttractorSink &sink,

@@ -730,19 +730,7 @@ IterationStats accumulate(const EngineJob &job, DensityImage &out, const Iterati
     if (job.random) {
         checkChaosInputs(ifs, job.start.vertices.row(0), job.samples);
     } else {
-        // iterate()'s checks: depth, start set, dimensions.
-        if (job.depth < 0 || job.depth > 64)
-            throw InputError("iteration depth must be between 0 and 64, got "
-                             + std::to_string(job.depth));
-        ifs.validate();
-        if (job.start.vertices.rows() == 0)
-            throw InputError("the start set is empty");
-        if (job.start.vertices.cols() != ifs.dim())
-            throw InputError("start set has " + std::to_string(job.start.vertices.cols())
-                             + " coordinates, the IFS space has " + std::to_string(ifs.dim()));
-        requireFinite(job.start.vertices, "start set");
-        if (ifs.size() > 255)
-            throw InputError("at most 255 maps are supported, got " + std::to_string(ifs.size()));
+        checkIterateInputs(ifs, job.start, job.depth);
     }
     const std::vector<CellView> cv = cellViews(views, job.frame, ifs.dim());
 
