@@ -108,6 +108,9 @@ QImage renderAttractorImage(const RenderRequest &r, int depth, std::uint64_t sam
     frame.height = r.size.height();
     frame.x0 = w.left(), frame.x1 = w.right(), frame.y0 = w.top(), frame.y1 = w.bottom();
     frame.supersample = std::clamp(r.supersample, 1, 4);
+    // Large exports: fewer cells per pixel rather than a histogram beyond 256 MB.
+    while (frame.supersample > 1 && 8.0 * frame.cellsX() * frame.cellsY() > 256.0 * (1 << 20))
+        --frame.supersample;
     frame.validate();
     const int maps = std::max(1, r.ifs->size());
     const EngineColours colours = colourTable(r, colourPrefix(r, depth, maps), maps);

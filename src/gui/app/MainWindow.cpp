@@ -28,6 +28,7 @@
 #include "core/ifs/SurfaceIfs.h"
 
 #include <QAction>
+#include <QStyle>
 #include <QLayout>
 #include <QApplication>
 #include <QChartView>
@@ -443,11 +444,14 @@ void MainWindow::createActions()
     QAction *undo = m_project->undoStack()->createUndoAction(this, tr("&Undo"));
     undo->setObjectName(QStringLiteral("actionUndo"));
     undo->setShortcut(QKeySequence::Undo);
-    undo->setIcon(QIcon::fromTheme(QStringLiteral("edit-undo")));
+    // Without an icon theme (a bare machine) Qt's own arrows stand in.
+    undo->setIcon(QIcon::fromTheme(QStringLiteral("edit-undo"),
+                                   style()->standardIcon(QStyle::SP_ArrowBack)));
     QAction *redo = m_project->undoStack()->createRedoAction(this, tr("&Redo"));
     redo->setObjectName(QStringLiteral("actionRedo"));
     redo->setShortcut(QKeySequence::Redo);
-    redo->setIcon(QIcon::fromTheme(QStringLiteral("edit-redo")));
+    redo->setIcon(QIcon::fromTheme(QStringLiteral("edit-redo"),
+                                   style()->standardIcon(QStyle::SP_ArrowForward)));
     // A toolbar button without an icon shows the icon text: fixed, not the command's.
     undo->setIconText(tr("Undo"));
     redo->setIconText(tr("Redo"));
