@@ -1,10 +1,13 @@
 #include "cli/FigureRenderer.h"
 
+#include "render/CurvePaths.h"
 #include "render/FigureFile.h"
 
 #include <QFontMetricsF>
+#include <QPaintEngine>
 #include <QPainter>
 #include <QPainterPath>
+#include <atomic>
 #include <cmath>
 #include <thread>
 
@@ -142,11 +145,37 @@ void drawVector(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
     runIterate(spec, depth, {&sink});
 }
 
+// A curve (polyline start set, deterministic, one IFS) on a vector device: joined paths.
+bool drawCurvePaths(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
+{
+    if (!isVectorDevice(p) || spec.random || spec.iterate || !spec.ifs || spec.ifs->size() == 0
+        || spec.start.kind != StartSet::Kind::Polyline || imageCount(*spec.ifs, depth) > 2e7)
+        return false;
+    const double sx = f.target.width() / (f.x1 - f.x0), sy = f.target.height() / (f.y1 - f.y0);
+    const QTransform toLogical(sx, 0, 0, -sy, f.target.left() - f.x0 * sx,
+                               f.target.top() + f.y1 * sy);
+    CurvePathSink sink(viewsOf(spec), toLogical, devicePixelsPerLogical(p),
+                       [](const std::uint8_t *a, int n) { return mapColor(n > 0 ? a[0] : 0); });
+    std::atomic<bool> stop{false};
+    IterationControl control;
+    control.cancel = &stop;
+    sink.setOverflowFlag(&stop);
+    iterateAlong(*spec.ifs, spec.start, depth, sink, control);
+    if (sink.overflowed())
+        return false;
+    drawCurvePaths(p, sink.finish(), 1.6);
+    return true;
+}
+
 void drawRaster(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
 {
-    // Rasterise at the device resolution of the target (sharp in PDF at 300 dpi too), through
-    // the one engine the view uses (render/AttractorImage.h).
-    const double scale = std::clamp(p.device()->logicalDpiX() / 96.0, 1.0, 4.0);
+    // Rasterise at the device resolution of the target (a PDF's 300 dpi, a PNG's pixels;
+    // an SVG, which has none, gets twice its user units), through the one engine the view
+    // uses (render/AttractorImage.h).
+    const double scale = std::clamp(p.paintEngine() && p.paintEngine()->type() == QPaintEngine::SVG
+                                        ? 2.0
+                                        : devicePixelsPerLogical(p),
+                                    1.0, 8.0);
     RenderRequest r;
     auto ifs = std::make_shared<Ifs>(spec.ifs ? *spec.ifs : Ifs{});
     ifs->views = viewsOf(spec);
@@ -169,6 +198,7 @@ void drawRaster(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
     const QImage img = renderAttractorImage(r);
     p.save();
     p.setRenderHint(QPainter::SmoothPixmapTransform);
+    p.setRenderHint(QPainter::LosslessImageRendering); // PDF: no JPEG halos
     p.drawImage(f.target, img);
     p.restore();
 }
@@ -249,7 +279,7 @@ void paintFigure(QPainter &p, const FigureSpec &spec)
         if (hasAttractor(spec)) {
             if (imagesAt(spec, depth) <= kVectorLimit)
                 drawVector(p, spec, f, depth);
-            else
+            else if (!drawCurvePaths(p, spec, f, depth))
                 drawRaster(p, spec, f, depth);
         }
         p.restore();

@@ -2,7 +2,9 @@
 // otherwise offers the recovery copies of crashed sessions, otherwise starts with a new project
 // holding one cubic B-spline so that the window is never empty. For scripted figures it can
 // also select an item, print its figure sheet to PDF and/or save a screenshot of the window,
-// then quit (--print-pdf, --screenshot; with QT_QPA_PLATFORM=offscreen no display is needed).
+// then quit (--print-pdf, --screenshot, --export-figure with its --dpi, --view, --figure-size,
+// --no-grid, --no-handles, --crop, --font; with QT_QPA_PLATFORM=offscreen no display is needed).
+#include "gui/app/Dialogs.h"
 #include "gui/app/ItemController.h"
 #include "gui/app/MainWindow.h"
 #include "gui/app/Messages.h"
@@ -66,10 +68,87 @@ int main(int argc, char *argv[])
         QStringLiteral("window-size"),
         QApplication::translate("main", "Window size for --screenshot, WIDTHxHEIGHT."),
         QStringLiteral("size"), QStringLiteral("1400x900"));
-    parser.addOptions({itemOption, pdfOption, shotOption, sizeOption});
+    const QCommandLineOption figureOption(
+        QStringLiteral("export-figure"),
+        QApplication::translate("main", "Export a figure of the current item to this file "
+                                        "(.png, .svg, .pdf; .tex for the matrices), then quit."),
+        QStringLiteral("file"));
+    const QCommandLineOption dpiOption(
+        QStringLiteral("dpi"),
+        QApplication::translate("main", "Resolution of --export-figure in dpi (36..2400)."),
+        QStringLiteral("n"), QStringLiteral("300"));
+    const QCommandLineOption viewOption(
+        QStringLiteral("view"),
+        QApplication::translate("main", "What --export-figure shows: attractor, spectrum, "
+                                        "matrices, analysis or sheet."),
+        QStringLiteral("view"), QStringLiteral("attractor"));
+    const QCommandLineOption figureSizeOption(
+        QStringLiteral("figure-size"),
+        QApplication::translate("main", "Size of --export-figure in pixels at its resolution, "
+                                        "WIDTHxHEIGHT (16..20000)."),
+        QStringLiteral("size"), QStringLiteral("1800x1350"));
+    const QCommandLineOption noGridOption(
+        QStringLiteral("no-grid"),
+        QApplication::translate("main", "--export-figure without the grid."));
+    const QCommandLineOption noHandlesOption(
+        QStringLiteral("no-handles"),
+        QApplication::translate("main", "--export-figure without control polygons and start "
+                                        "set."));
+    const QCommandLineOption cropOption(
+        QStringLiteral("crop"),
+        QApplication::translate("main", "--export-figure framed tightly around the content "
+                                        "(the height follows its proportions)."));
+    const QCommandLineOption fontOption(
+        QStringLiteral("font"),
+        QApplication::translate("main", "Font of --export-figure's labels: FAMILY or "
+                                        "FAMILY,POINTS."),
+        QStringLiteral("font"));
+    parser.addOptions({itemOption, pdfOption, shotOption, sizeOption, figureOption, dpiOption,
+                       viewOption, figureSizeOption, noGridOption, noHandlesOption, cropOption,
+                       fontOption});
     parser.process(app);
 
-    const bool batch = parser.isSet(pdfOption) || parser.isSet(shotOption);
+    // --export-figure's options, checked before any window appears.
+    awb::ExportDialog::Options figure;
+    if (parser.isSet(figureOption)) {
+        figure.fileName = parser.value(figureOption);
+        const QStringList views{QStringLiteral("attractor"), QStringLiteral("spectrum"),
+                                QStringLiteral("matrices"), QStringLiteral("analysis"),
+                                QStringLiteral("sheet")};
+        const int view = int(views.indexOf(parser.value(viewOption)));
+        bool dpiOk = false;
+        figure.dpi = parser.value(dpiOption).toInt(&dpiOk);
+        const QStringList wh = parser.value(figureSizeOption).split(QLatin1Char('x'));
+        const int w = wh.value(0).toInt(), h = wh.value(1).toInt();
+        QString problem;
+        if (view < 0)
+            problem = QStringLiteral("--view %1: expected attractor, spectrum, matrices, "
+                                     "analysis or sheet").arg(parser.value(viewOption));
+        else if (!dpiOk || figure.dpi < 36 || figure.dpi > 2400)
+            problem = QStringLiteral("--dpi %1: expected a whole number 36..2400")
+                          .arg(parser.value(dpiOption));
+        else if (wh.size() != 2 || w < 16 || h < 16 || w > 20000 || h > 20000)
+            problem = QStringLiteral("--figure-size %1: expected WIDTHxHEIGHT (16..20000)")
+                          .arg(parser.value(figureSizeOption));
+        if (!problem.isEmpty()) {
+            std::fprintf(stderr, "attractor-workbench: %s\n", qPrintable(problem));
+            return 2;
+        }
+        figure.target = awb::ExportDialog::Target(view);
+        figure.size = QSize(w, h);
+        figure.grid = !parser.isSet(noGridOption);
+        figure.handles = !parser.isSet(noHandlesOption);
+        figure.crop = parser.isSet(cropOption);
+        if (parser.isSet(fontOption)) {
+            const QStringList font = parser.value(fontOption).split(QLatin1Char(','));
+            figure.fontFamily = font.value(0).trimmed();
+            if (font.size() > 1)
+                figure.fontPoints = font.value(1).toDouble();
+        }
+    }
+
+    const bool batch = parser.isSet(pdfOption) || parser.isSet(shotOption)
+                       || parser.isSet(figureOption);
     // Without a user, messages go to standard error (a modal box would wait forever).
     awb::ConsoleMessages console;
     awb::MainWindow window(batch ? &console : nullptr);
@@ -114,6 +193,18 @@ int main(int argc, char *argv[])
         if (parser.isSet(pdfOption) && !window.printToPdf(parser.value(pdfOption), &error)) {
             std::fprintf(stderr, "attractor-workbench: %s\n", qPrintable(error));
             status = 1;
+        }
+        if (parser.isSet(figureOption)) {
+            if (!window.exportView(figure, &error)) {
+                std::fprintf(stderr, "attractor-workbench: %s\n", qPrintable(error));
+                status = 1;
+            } else if (figure.target == awb::ExportDialog::Target::Attractor) {
+                // What the attractor became (vector paths, a raster of which size): scripts
+                // and tests read it.
+                std::fprintf(stderr, "attractor-workbench: %s: attractor drawn as %s\n",
+                             qPrintable(figure.fileName),
+                             qPrintable(window.attractorView()->lastExportKind()));
+            }
         }
         if (parser.isSet(shotOption) && !window.grab().save(parser.value(shotOption))) {
             std::fprintf(stderr, "attractor-workbench: cannot write %s\n",

@@ -51,9 +51,11 @@ bool writePaintedFigure(const QString &fileName, QSize size, const QString &titl
         pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
         if (!p.begin(&pdf))
             return cannot();
-        // Scale figure pixels to the page: fonts given in pixels scale with it.
+        // Scale figure pixels to the page: fonts given in pixels scale with it. Rasters stay
+        // lossless (Qt's PDF engine would store them as JPEG).
         const double s = pdf.width() / double(size.width());
         p.scale(s, s);
+        p.setRenderHint(QPainter::LosslessImageRendering);
         paint(p);
         return p.end() || cannot();
     }

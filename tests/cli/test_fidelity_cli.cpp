@@ -26,6 +26,7 @@ private slots:
     void liftedStartPoints();
     void polygonCommand();
     void closedFiguresDrawnClosed();
+    void deepCurveIsVectorPathsInSvgAndPdf();
     void normalVectorStartSetInEdgeFrame();
 
 private:
@@ -215,6 +216,28 @@ void TestFidelityCli::closedFiguresDrawnClosed()
     QFile koch(m_dir.filePath("001-fig06-koch-curve.svg"));
     QVERIFY(koch.open(QIODevice::ReadOnly));
     QVERIFY(koch.readAll().contains("<polyline"));
+}
+
+// 000 Fig. 5: the four-point curve from a segment at depth 12 (4 096 images, more than the
+// per-image vector limit) goes to SVG and PDF as joined paths in address order, not as an
+// embedded picture.
+void TestFidelityCli::deepCurveIsVectorPathsInSvgAndPdf()
+{
+    QByteArray out, err;
+    const QString svg = m_dir.filePath("four-point.svg"), pdf = m_dir.filePath("four-point.pdf");
+    QCOMPARE(run({"render", example("000-fig05-four-point-from-segment.awb"), "--out", svg},
+                 &out, &err),
+             0);
+    QCOMPARE(run({"render", example("000-fig05-four-point-from-segment.awb"), "--out", pdf},
+                 &out, &err),
+             0);
+    QFile s(svg), p(pdf);
+    QVERIFY(s.open(QIODevice::ReadOnly) && p.open(QIODevice::ReadOnly));
+    const QByteArray svgBytes = s.readAll(), pdfBytes = p.readAll();
+    QVERIFY(!svgBytes.contains("<image"));
+    QVERIFY(svgBytes.contains("stroke-linecap=\"round\""));
+    QVERIFY2(svgBytes.count("<path") < 50, QByteArray::number(svgBytes.count("<path")).constData());
+    QVERIFY(!pdfBytes.contains("/Subtype /Image"));
 }
 
 // docs/file-format.md: a normal-vector item's start set is read in the unit-edge frame and

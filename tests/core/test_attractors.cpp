@@ -8,6 +8,7 @@
 
 #include <QtTest>
 #include <algorithm>
+#include <map>
 
 using namespace awb;
 
@@ -39,6 +40,7 @@ private slots:
     void liftedStartPoint();
     void chaosGameLiesOnCurveWithAddresses();
     void parallelEqualsSerial();
+    void iterateAlongFollowsTheCurve();
     void rasterIsFilledAndDeterministic();
     void unionOfTwoBeziers();
     void singularControlPointsUseBarycentricForm();
@@ -208,6 +210,60 @@ void TestAttractors::parallelEqualsSerial()
     Mat both(a.points().rows() + b.points().rows(), 2);
     both << a.points(), b.points();
     QVERIFY(sorted(serial.points()) == sorted(both));
+}
+
+// iterateAlong (vector export of curves): the same images as iterate, address by address, but
+// in the order of the addresses read outermost first. For the IFS of a cubic Bézier curve
+// (de Casteljau halves) from the segment between its lifted end points, every image is the
+// chord of one piece, so consecutive images share their end points: f_w(P_3) = f_{w+1}(P_0).
+void TestAttractors::iterateAlongFollowsTheCurve()
+{
+    const auto s = buildSubdivisionIfs(BezierScheme(3), pts({{0, 0}, {1, 3}, {4, 3}, {5, 0}}));
+    // The chord between the lifted end points P_0 and P_3: rows of the lifted control points
+    // without their last (homogeneous, all ones) column.
+    QCOMPARE(s.ifs.dim(), 3);
+    Mat ends(2, 3);
+    ends << s.lifting.lifted.row(0).head(3), s.lifting.lifted.row(3).head(3);
+    const StartSet chord = StartSet::polyline(ends);
+    const int depth = 7;
+    std::map<std::vector<std::uint8_t>, Mat> byIterate;
+    CallbackSink collect([&](const Mat &v, StartSet::Kind, const std::uint8_t *a, int n) {
+        byIterate[std::vector<std::uint8_t>(a, a + n)] = v;
+    });
+    iterate(s.ifs, chord, depth, collect);
+    std::vector<std::vector<std::uint8_t>> order;
+    std::vector<Mat> images;
+    CallbackSink along([&](const Mat &v, StartSet::Kind k, const std::uint8_t *a, int n) {
+        QVERIFY(k == StartSet::Kind::Polyline);
+        order.emplace_back(a, a + n);
+        images.push_back(v);
+    });
+    const IterationStats stats = iterateAlong(s.ifs, chord, depth, along);
+    QCOMPARE(stats.images, std::uint64_t(1) << depth);
+    QCOMPARE(order.size(), byIterate.size());
+    QVERIFY(std::is_sorted(order.begin(), order.end()));
+    double worst = 0, gap = 0;
+    for (size_t k = 0; k < order.size(); ++k) {
+        worst = std::max(worst, (images[k] - byIterate.at(order[k])).cwiseAbs().maxCoeff());
+        if (k > 0) {
+            const Mat a = project(s.ifs.views.front(), images[k - 1]);
+            const Mat b = project(s.ifs.views.front(), images[k]);
+            gap = std::max(gap, (a.row(a.rows() - 1) - b.row(0)).norm());
+        }
+    }
+    QVERIFY2(worst < 1e-12, qPrintable(QString::number(worst)));
+    QVERIFY2(gap < 1e-12, qPrintable(QString::number(gap)));
+    // The first image starts at P_0 and the last ends at P_3.
+    const Mat first = project(s.ifs.views.front(), images.front());
+    const Mat last = project(s.ifs.views.front(), images.back());
+    QVERIFY(first.row(0).norm() < 1e-12);
+    QVERIFY((last.row(last.rows() - 1) - RowVec(Eigen::RowVector2d(5, 0))).norm() < 1e-12);
+    // Depth 0 is the start set itself; a bad depth is refused like iterate's.
+    int n0 = 0;
+    CallbackSink count([&](const Mat &, StartSet::Kind, const std::uint8_t *, int) { ++n0; });
+    iterateAlong(s.ifs, chord, 0, count);
+    QCOMPARE(n0, 1);
+    QVERIFY_THROWS_EXCEPTION(InputError, iterateAlong(s.ifs, chord, 65, count));
 }
 
 void TestAttractors::rasterIsFilledAndDeterministic()

@@ -2,11 +2,15 @@
 // chosen example item is printed to a one-page PDF and the window saved as a PNG without a
 // display; bad options name the problem and exit non-zero.
 
+#include "BatchRunner.h"
+
 #include <QFile>
 #include <QImage>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
+
+using namespace awb;
 
 class TestBatch : public QObject {
     Q_OBJECT
@@ -15,34 +19,9 @@ private slots:
     void badOptions();
 
 private:
-    QTemporaryDir m_home;
-    int run(const QStringList &args, QString *err = nullptr)
-    {
-        const QString dir = qEnvironmentVariable("AWB_BIN_DIR",
-                                                 QCoreApplication::applicationDirPath() + "/../bin");
-        QProcess p;
-        // Settings and autosave copies go to a scratch home, not the user's.
-        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        env.insert("QT_QPA_PLATFORM", "offscreen");
-        env.insert("HOME", m_home.path());
-        env.insert("XDG_CONFIG_HOME", m_home.path() + "/config");
-        env.insert("XDG_DATA_HOME", m_home.path() + "/data");
-        env.insert("XDG_RUNTIME_DIR", m_home.path());
-        p.setProcessEnvironment(env);
-        p.start(dir + "/attractor-workbench", args);
-        if (!p.waitForFinished(120000)) {
-            p.kill();
-            p.waitForFinished();
-            return -1;
-        }
-        if (err)
-            *err = QString::fromUtf8(p.readAllStandardError());
-        return p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    }
-    QString example(const QString &name) const
-    {
-        return qEnvironmentVariable("AWB_SOURCE_DIR", AWB_TEST_SOURCE_DIR) + "/examples/" + name;
-    }
+    test::BatchRunner m_runner;
+    int run(const QStringList &args, QString *err = nullptr) { return m_runner.run(args, err); }
+    static QString example(const QString &name) { return test::BatchRunner::example(name); }
 };
 
 void TestBatch::printsSheetAndScreenshot()

@@ -136,6 +136,63 @@ IterationStats iterate(const Ifs &ifs, const StartSet &start, int depth, Attract
     return iterateParallel(ifs, start, depth, {&sink}, control);
 }
 
+IterationStats iterateAlong(const Ifs &ifs, const StartSet &start, int depth, AttractorSink &sink,
+                            const IterationControl &control)
+{
+    checkIterateInputs(ifs, start, depth);
+    const int N = ifs.size();
+    const Eigen::Index D = ifs.dim();
+    // T_w = f_{w1} o ... o f_{wk}, x -> x A_w + b_w; T_{wj} = T_w o f_j: A = A_j A_w,
+    // b = b_j A_w + b_w. One composed map per level, allocated once.
+    std::vector<Mat> A(size_t(depth) + 1);
+    std::vector<RowVec> b(size_t(depth) + 1);
+    A[0] = Mat::Identity(D, D);
+    b[0] = RowVec::Zero(D);
+    for (int l = 1; l <= depth; ++l) {
+        A[size_t(l)].resize(D, D);
+        b[size_t(l)].resize(D);
+    }
+    std::vector<std::uint8_t> address(size_t(std::max(depth, 1)), 0);
+    std::vector<int> choice(size_t(depth) + 1, 0);
+    Mat Y(start.vertices.rows(), D);
+    IterationStats stats;
+    const double total = std::max(1.0, imageCount(ifs, depth));
+    // Iterative depth-first walk: choice[l] is the map tried at level l.
+    int level = 0;
+    for (;;) {
+        if (level == depth) {
+            Y.noalias() = start.vertices * A[size_t(depth)];
+            Y.rowwise() += b[size_t(depth)];
+            sink.consume(Y, start.kind, address.data(), depth);
+            ++stats.images;
+            if ((stats.images & 4095) == 0) {
+                if (control.progress)
+                    control.progress(std::min(1.0, double(stats.images) / total));
+                if (control.cancel && control.cancel->load(std::memory_order_relaxed)) {
+                    stats.cancelled = true;
+                    return stats;
+                }
+            }
+            // Back up to the deepest level with a map left to try.
+            do {
+                --level;
+            } while (level >= 0 && choice[size_t(level)] == N - 1);
+            if (level < 0)
+                return stats;
+            ++choice[size_t(level)];
+        }
+        const int j = choice[size_t(level)];
+        const AffineMap &f = ifs.maps[size_t(j)];
+        A[size_t(level) + 1].noalias() = f.A * A[size_t(level)];
+        b[size_t(level) + 1].noalias() = f.b * A[size_t(level)];
+        b[size_t(level) + 1] += b[size_t(level)];
+        address[size_t(level)] = std::uint8_t(j);
+        ++level;
+        if (level < depth)
+            choice[size_t(level)] = 0;
+    }
+}
+
 IterationStats iterateParallel(const Ifs &ifs, const StartSet &start, int depth,
                                const std::vector<AttractorSink *> &sinks,
                                const IterationControl &control)

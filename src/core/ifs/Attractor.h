@@ -53,6 +53,13 @@ void checkIterateInputs(const Ifs &ifs, const StartSet &start, int depth);
 IterationStats iterate(const Ifs &ifs, const StartSet &start, int depth, AttractorSink &sink,
                        const IterationControl &control = {});
 // The same on sinks.size() threads; each thread feeds its own sink (merge them afterwards).
+// F^depth(X_0) like iterate(), but the images come in the order of their addresses read
+// outermost map first (f_{w1} o ... o f_{wk}(X_0) for w in lexicographic order): for the IFS of
+// a curve this is the order along the curve, so neighbouring images touch (vector export joins
+// them into one path). iterate() instead varies the innermost map fastest, which is cheaper.
+// Each step composes two affine maps (D^3 flops); single-threaded.
+IterationStats iterateAlong(const Ifs &ifs, const StartSet &start, int depth, AttractorSink &sink,
+                            const IterationControl &control = {});
 IterationStats iterateParallel(const Ifs &ifs, const StartSet &start, int depth,
                                const std::vector<AttractorSink *> &sinks,
                                const IterationControl &control = {});

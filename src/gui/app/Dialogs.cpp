@@ -44,6 +44,12 @@ ExportDialog::ExportDialog(const Options &initial, QWidget *parent)
     m_ui->widthSpin->setValue(initial.size.width());
     m_ui->heightSpin->setValue(initial.size.height());
     m_ui->dpiSpin->setValue(initial.dpi);
+    m_ui->gridCheck->setChecked(initial.grid);
+    m_ui->handlesCheck->setChecked(initial.handles);
+    m_ui->cropCheck->setChecked(initial.crop);
+    m_ui->fontCombo->setCurrentFont(initial.fontFamily.isEmpty() ? font()
+                                                                 : QFont(initial.fontFamily));
+    m_ui->fontSizeSpin->setValue(initial.fontPoints);
     connect(m_ui->browseButton, &QPushButton::clicked, this, &ExportDialog::browse);
 }
 
@@ -53,7 +59,7 @@ void ExportDialog::browse()
 {
     const QString name = QFileDialog::getSaveFileName(
         this, tr("Export Figure"), m_ui->fileEdit->text(),
-        tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"));
+        tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf);;LaTeX matrices (*.tex)"));
     if (!name.isEmpty())
         m_ui->fileEdit->setText(name);
 }
@@ -65,6 +71,13 @@ ExportDialog::Options ExportDialog::options() const
     o.fileName = m_ui->fileEdit->text();
     o.size = QSize(m_ui->widthSpin->value(), m_ui->heightSpin->value());
     o.dpi = m_ui->dpiSpin->value();
+    o.grid = m_ui->gridCheck->isChecked();
+    o.handles = m_ui->handlesCheck->isChecked();
+    o.crop = m_ui->cropCheck->isChecked();
+    // The application's own font stays "as on screen" (it follows the desktop's).
+    if (m_ui->fontCombo->currentFont().family() != font().family())
+        o.fontFamily = m_ui->fontCombo->currentFont().family();
+    o.fontPoints = m_ui->fontSizeSpin->value();
     return o;
 }
 

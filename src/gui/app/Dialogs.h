@@ -38,6 +38,11 @@ public:
         QString fileName;            // suffix .png, .svg or .pdf picks the format
         QSize size{1600, 1200};      // pixels (PNG) or pixel units at `dpi` (SVG, PDF)
         int dpi = 300;
+        bool grid = true;            // attractor view: grid and labels
+        bool handles = true;         // attractor view: control polygons, start set, labels
+        bool crop = false;           // attractor view: frame the content, height to fit
+        QString fontFamily;          // empty: the view's font
+        double fontPoints = 0;       // 0: as on screen
     };
     explicit ExportDialog(const Options &initial, QWidget *parent = nullptr);
     ~ExportDialog() override;

@@ -105,20 +105,20 @@ QStringList FigureSheet::caption() const
     return lines;
 }
 
-QStringList FigureSheet::matrixLines() const
+QList<QStringList> FigureSheet::matrixBlocks() const
 {
-    QStringList lines;
+    QList<QStringList> blocks;
     const auto *a = qobject_cast<const AttractorItem *>(m_item);
     const auto d = a ? a->derivedIfs() : nullptr;
     if (!d)
-        return lines;
+        return blocks;
     // The matrix view's matrices, as text with right-aligned columns: fractions where exact
-    // (3/8 reads better than 0.375), complex entries as a + bi.
+    // (3/8 reads better than 0.375), complex entries as a + bi. One block per matrix.
     for (const NamedMatrix &m : namedMatrices(*d)) {
         // A surface's S_i (16 x 16 and up) would shrink the page's text to dust: name them.
         if (m.rows() > 12) {
-            lines << tr("%1: %2 × %3 (see the Matrices dock)")
-                         .arg(subscriptName(m.name)).arg(m.rows()).arg(m.cols());
+            blocks << QStringList{tr("%1: %2 × %3 (see the Matrices dock)")
+                                      .arg(subscriptName(m.name)).arg(m.rows()).arg(m.cols())};
             continue;
         }
         QList<QStringList> cells;
@@ -133,16 +133,16 @@ QStringList FigureSheet::matrixLines() const
             }
             cells << row;
         }
-        lines << subscriptName(m.name) + QLatin1Char(':');
+        QStringList block{subscriptName(m.name) + QLatin1Char(':')};
         for (const QStringList &row : std::as_const(cells)) {
             QString line;
             for (const QString &t : row)
                 line += t.rightJustified(width + 2);
-            lines << line;
+            block << line;
         }
-        lines << QString();
+        blocks << block;
     }
-    return lines;
+    return blocks;
 }
 
 void FigureSheet::paint(QPainter *painter, const QRectF &page) const
@@ -189,29 +189,96 @@ void FigureSheet::paint(QPainter *painter, const QRectF &page) const
         m_attractor->renderTo(painter, figure.adjusted(1, 1, -1, -1),
                               AttractorView::Framing::FitContents);
     const double rightX = figure.right() + unit * 2;
-    const QRectF spec(rightX, top, page.right() - rightX, (page.bottom() - top) * 0.5);
-    paintSpectrum(m_spectrum, painter, spec);
-
     QFont mono = body;
     mono.setFamily(QStringLiteral("monospace"));
     mono.setStyleHint(QFont::TypeWriter);
-    const QStringList lines = matrixLines();
-    QRectF text(rightX, spec.bottom() + unit, spec.width(), page.bottom() - spec.bottom() - unit);
-    // Shrink the text until the matrices fit their box.
-    int px = body.pixelSize();
-    for (; px > 3; --px) {
-        mono.setPixelSize(px);
-        const QFontMetricsF fm(mono, painter->device());
-        double widest = 0;
-        for (const QString &l : lines)
-            widest = std::max(widest, fm.horizontalAdvance(l));
-        if (widest <= text.width() && fm.lineSpacing() * lines.size() <= text.height())
+    // The spectrum takes half the column, less when the matrices need the room to stay at
+    // 8 pt or more.
+    const double column = page.bottom() - top;
+    MatrixLayout layout;
+    double share = 0.5;
+    for (const double s : {0.5, 0.42, 0.35}) {
+        share = s;
+        const QRectF text(rightX, top + column * s + unit, page.right() - rightX,
+                          column * (1 - s) - unit);
+        layout = layoutMatrices(painter, text, mono);
+        if (layout.shown == layout.blocks.size())
             break;
     }
-    painter->setFont(mono);
-    painter->setPen(Qt::black);
-    painter->drawText(text, Qt::AlignLeft | Qt::AlignTop, lines.join(QLatin1Char('\n')));
+    const QRectF spec(rightX, top, page.right() - rightX, column * share);
+    paintSpectrum(m_spectrum, painter, spec);
+    paintMatrices(painter, layout);
     painter->restore();
+}
+
+FigureSheet::MatrixLayout FigureSheet::layoutMatrices(QPainter *painter, const QRectF &box,
+                                                      QFont mono) const
+{
+    // The matrices flow into columns, each matrix kept whole, at the largest size from the
+    // body text's down to 8 pt (a journal's smallest legible size). What does not fit at 8 pt
+    // is named in a last line instead of shrinking everything into dust.
+    MatrixLayout layout;
+    layout.box = box;
+    layout.blocks = matrixBlocks();
+    if (layout.blocks.isEmpty())
+        return layout;
+    const double dpi = std::max(1, painter->device()->logicalDpiY());
+    const int minPx = std::max(1, int(std::ceil(8.0 / 72.0 * dpi)));
+    for (int px = std::max(minPx, mono.pixelSize());; --px) {
+        mono.setPixelSize(px);
+        const QFontMetricsF fm(mono, painter->device());
+        const double line = fm.lineSpacing(), gap = fm.horizontalAdvance(QStringLiteral("MM"));
+        layout.font = mono;
+        layout.at.clear();
+        double x = box.left(), y = box.top(), columnWidth = 0;
+        for (const QStringList &block : std::as_const(layout.blocks)) {
+            double w = 0;
+            for (const QString &l : block)
+                w = std::max(w, fm.horizontalAdvance(l));
+            const double h = line * block.size();
+            // A line stays free at the bottom for the note on matrices left out.
+            if (y > box.top() && y + h > box.bottom() - line) {
+                x += columnWidth + gap;   // next column
+                y = box.top();
+                columnWidth = 0;
+            }
+            if (x + w > box.right() + 0.5 || y + h > box.bottom() - line + 0.5)
+                break;
+            layout.at.append(QPointF(x, y));
+            columnWidth = std::max(columnWidth, w);
+            y += h + 0.6 * line;
+        }
+        layout.shown = int(layout.at.size());
+        if (layout.shown == layout.blocks.size() || px <= minPx)
+            break;
+    }
+    return layout;
+}
+
+void FigureSheet::paintMatrices(QPainter *painter, const MatrixLayout &layout) const
+{
+    if (layout.blocks.isEmpty())
+        return;
+    painter->setFont(layout.font);
+    painter->setPen(Qt::black);
+    const QFontMetricsF fm(layout.font, painter->device());
+    const QRectF &box = layout.box;
+    for (int i = 0; i < layout.shown; ++i) {
+        const QStringList &lines = layout.blocks[i];
+        const QPointF at = layout.at[i];
+        painter->drawText(QRectF(at, QSizeF(box.right() - at.x(), fm.lineSpacing() * lines.size())),
+                          Qt::AlignLeft | Qt::AlignTop, lines.join(QLatin1Char('\n')));
+    }
+    if (layout.shown < layout.blocks.size()) {
+        const QString note = tr("… and %n more: see the Matrices dock, or copy them as LaTeX.",
+                                nullptr, int(layout.blocks.size()) - layout.shown);
+        painter->drawText(QRectF(box.left(), box.bottom() - fm.lineSpacing(), box.width(),
+                                 fm.lineSpacing()),
+                          Qt::AlignLeft | Qt::AlignVCenter,
+                          fm.elidedText(note, Qt::ElideRight, box.width()));
+    }
+    m_matrixFontPixels = layout.font.pixelSize();
+    m_matricesShown = layout.shown;
 }
 
 bool FigureSheet::print(QPagedPaintDevice *device) const
@@ -219,6 +286,7 @@ bool FigureSheet::print(QPagedPaintDevice *device) const
     QPainter painter;
     if (!painter.begin(device))
         return false;
+    painter.setRenderHint(QPainter::LosslessImageRendering); // rasters not as JPEG
     // The printable area in device pixels: the printer's resolution applies.
     const QRectF page = device->pageLayout().paintRectPixels(device->logicalDpiX());
     paint(&painter, QRectF(QPointF(0, 0), page.size()));

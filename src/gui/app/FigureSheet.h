@@ -5,6 +5,9 @@
 // vector: the attractor's overlays come from AttractorView::renderTo, the spectrum plot is
 // recorded as a QPicture of QCustomPlot's own drawing, and the matrices are text.
 #include <QCoreApplication>
+#include <QFont>
+#include <QList>
+#include <QPointF>
 #include <QRectF>
 #include <QString>
 #include <QStringList>
@@ -40,13 +43,30 @@ public:
     // Writes the sheet as a one-page A4 landscape PDF. False with a message on failure.
     bool writePdf(const QString &fileName, QString *error = nullptr) const;
 
+    // The matrices' font size in device pixels and how many were shown, at the last paint.
+    int matrixFontPixels() const { return m_matrixFontPixels; }
+    int matricesShown() const { return m_matricesShown; }
+
 private:
-    QStringList matrixLines() const;
+    QList<QStringList> matrixBlocks() const;   // one block of text lines per matrix
+    // Where the matrices go in `box`: blocks placed in columns at the largest font that fits,
+    // not below 8 pt; `shown` of them fit.
+    struct MatrixLayout {
+        QRectF box;
+        QFont font;
+        QList<QStringList> blocks;
+        QList<QPointF> at;
+        int shown = 0;
+    };
+    MatrixLayout layoutMatrices(QPainter *painter, const QRectF &box, QFont mono) const;
+    void paintMatrices(QPainter *painter, const MatrixLayout &layout) const;
 
     Item *m_item;
     AttractorView *m_attractor;
     SpectrumView *m_spectrum;
     SurfaceView *m_surface;
+    mutable int m_matrixFontPixels = 0;
+    mutable int m_matricesShown = 0;
 };
 
 // Paints the spectrum plot into `target` as vectors (QCustomPlot records into a QPicture).

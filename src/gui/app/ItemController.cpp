@@ -120,39 +120,6 @@ AttractorColorMode colorMode(StyleSpec::ColorBy by)
 
 } // namespace
 
-QList<NamedMatrix> namedMatrices(const DerivedIfs &d, bool sEditable)
-{
-    QList<NamedMatrix> list;
-    for (std::size_t i = 0; i < d.S.real.size(); ++i)
-        list.append({QStringLiteral("S_%1").arg(i + 1), d.S.real[i], -1, sEditable});
-    if (d.subdivision) {
-        const auto &lifted = d.subdivision->lifted;
-        for (std::size_t i = 0; i < lifted.size(); ++i)
-            list.append({QStringLiteral("M_%1").arg(i + 1), lifted[i].M, int(lifted[i].A.rows()),
-                         false});
-    } else if (d.S.isComplex()) {
-        // Complex de Casteljau L(t), R(t) and their complex lifted maps (004 §3.7).
-        for (std::size_t i = 0; i < d.S.complex.size(); ++i) {
-            list.append({QStringLiteral("S_%1").arg(i + 1), d.S.complex[i]});
-        }
-        for (std::size_t i = 0; i < d.liftedComplex.size(); ++i) {
-            const CMat &M = d.liftedComplex[i];
-            list.append({QStringLiteral("M_%1").arg(i + 1), M, int(M.rows()) - 1});
-        }
-    } else if (d.S.real.empty()) {
-        // Items without subdivision matrices (fractals, automata): their affine maps.
-        for (int i = 0; i < d.ifs.size(); ++i) {
-            const AffineMap &f = d.ifs.maps[std::size_t(i)];
-            Mat M = Mat::Zero(f.dim() + 1, f.dim() + 1);
-            M.topLeftCorner(f.dim(), f.dim()) = f.A;
-            M.block(f.dim(), 0, 1, f.dim()) = f.b;
-            M(f.dim(), f.dim()) = 1.0;
-            list.append({QStringLiteral("f_%1").arg(i + 1), M, f.dim(), false});
-        }
-    }
-    return list;
-}
-
 namespace {
 
 // The matrices an eigenvalue plot analyses, named by its symbol (S_i, A_i or M_i).

@@ -7,6 +7,7 @@
 // worker thread that a newer edit cancels.
 #include "core/Types.h"
 #include "model/Item.h"
+#include "model/NamedMatrix.h"
 #include <QObject>
 #include <QPointer>
 #include <QTimer>
@@ -33,12 +34,7 @@ class SurfaceView;
 struct AnalysisResult;
 
 struct DerivedIfs;
-struct NamedMatrix;
 
-// The matrices of an item as the matrix view and the figure sheet show them: S_1..S_p (real or
-// complex) and the lifted M_i = P^-1 S_i P, or the affine maps f_i as [[A, 0], [b, 1]] for
-// items without subdivision matrices. `sEditable` marks the S_i as the user's own.
-QList<NamedMatrix> namedMatrices(const DerivedIfs &d, bool sEditable = false);
 
 class ItemController : public QObject {
     Q_OBJECT

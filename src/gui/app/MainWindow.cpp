@@ -27,6 +27,10 @@
 #include "model/SubdivisionSurfaceItem.h"
 #include "core/ifs/SurfaceIfs.h"
 
+#include "model/NamedMatrix.h"
+#include <QGuiApplication>
+#include <QClipboard>
+#include <QSaveFile>
 #include <QAction>
 #include <QStyle>
 #include <QLayout>
@@ -398,6 +402,19 @@ void MainWindow::createActions()
     make(QStringLiteral("actionPreferences"), tr("Pre&ferences…"),
          QStringLiteral("preferences-system"), QKeySequence::Preferences,
          &MainWindow::preferencesDialog);
+    make(QStringLiteral("actionCopyLatex"), tr("Copy Matrices as &LaTeX"),
+         QStringLiteral("edit-copy"), QKeySequence(tr("Ctrl+Shift+L")), [this] {
+             const QString text = matricesLatex();
+             if (text.isEmpty()) {
+                 statusBar()->showMessage(tr("The current item has no matrices."), 4000);
+                 return;
+             }
+             QGuiApplication::clipboard()->setText(text);
+             statusBar()->showMessage(
+                 tr("Copied %n matrices as LaTeX (amsmath bmatrix).", nullptr,
+                    int(m_matrices->matrices().size())),
+                 4000);
+         });
     make(QStringLiteral("actionDuplicate"), tr("D&uplicate Item"), QStringLiteral("edit-copy"),
          QKeySequence(tr("Ctrl+D")), &MainWindow::duplicateItem);
     make(QStringLiteral("actionDelete"), tr("&Delete Item"), QStringLiteral("edit-delete"),
@@ -569,6 +586,8 @@ void MainWindow::createMenus()
     QMenu *edit = menuBar()->addMenu(tr("&Edit"));
     edit->addAction(action(QStringLiteral("actionUndo")));
     edit->addAction(action(QStringLiteral("actionRedo")));
+    edit->addSeparator();
+    edit->addAction(action(QStringLiteral("actionCopyLatex")));
     edit->addSeparator();
     edit->addAction(action(QStringLiteral("actionPreferences")));
 
@@ -863,17 +882,60 @@ bool MainWindow::printToPdf(const QString &fileName, QString *error)
     return ok;
 }
 
-bool MainWindow::exportView(const ExportDialog::Options &o, QString *error)
+bool MainWindow::exportView(const ExportDialog::Options &options, QString *error)
 {
+    ExportDialog::Options o = options;
     const QString suffix = QFileInfo(o.fileName).suffix().toLower();
+    AttractorView::ExportStyle style;
+    style.grid = o.grid;
+    style.handles = o.handles;
+    style.fontFamily = o.fontFamily;
+    style.fontPoints = o.fontPoints;
+    const bool planar = o.target == ExportDialog::Target::Attractor
+                        && !m_controller->showsSurface();
+    if (o.crop && planar) {
+        // Tight framing: the content fills the width, the height follows its proportions,
+        // with a margin of a few screen pixels at the figure's scale.
+        style.framing = AttractorView::Framing::FitContents;
+        style.margin = 6;
+        if (const auto bounds = m_attractor->exportBounds()) {
+            const double margin = 6.0 * o.size.width() / std::max(1, m_attractor->width());
+            const double inner = std::max(1.0, o.size.width() - 2 * margin);
+            const double h = inner * bounds->height() / bounds->width() + 2 * margin;
+            o.size.setHeight(std::clamp(int(std::lround(h)), 16, 20000));
+        }
+    }
+    if (suffix == QLatin1String("tex")) {
+        // The matrices as LaTeX (the other views are pictures).
+        if (o.target != ExportDialog::Target::Matrices) {
+            if (error)
+                *error = tr("A .tex file holds the matrices only: choose the Matrices view, or "
+                            ".png, .svg or .pdf for a picture.");
+            return false;
+        }
+        const QString text = matricesLatex();
+        if (text.isEmpty()) {
+            if (error)
+                *error = tr("The current item has no matrices to export.");
+            return false;
+        }
+        QSaveFile file(o.fileName);
+        if (!file.open(QIODevice::WriteOnly | QIODevice::Text)
+            || file.write(text.toUtf8()) < 0 || !file.commit()) {
+            if (error)
+                *error = tr("Cannot write %1: %2.").arg(o.fileName, file.errorString());
+            return false;
+        }
+        return true;
+    }
     const QRectF target(0, 0, o.size.width(), o.size.height());
-    const auto paint = [this, &o, &target](QPainter &p) {
+    const auto paint = [this, &o, &target, &style](QPainter &p) {
         switch (o.target) {
         case ExportDialog::Target::Attractor:
             if (m_controller->showsSurface())
                 m_surface->renderTo(&p, target);
             else
-                m_attractor->renderTo(&p, target);
+                m_attractor->renderTo(&p, target, style);
             break;
         case ExportDialog::Target::Spectrum:
             paintSpectrum(m_spectrum, &p, target);
@@ -943,12 +1005,13 @@ bool MainWindow::exportView(const ExportDialog::Options &o, QString *error)
         QPainter p;
         ok = p.begin(&pdf);
         if (ok) {
+            p.setRenderHint(QPainter::LosslessImageRendering); // rasters not as JPEG
             paint(p);
             ok = p.end();
         }
     } else {
         if (error)
-            *error = tr("Unknown format \"%1\": use .png, .svg or .pdf.").arg(suffix);
+            *error = tr("Unknown format \"%1\": use .png, .svg or .pdf (.tex for the matrices).").arg(suffix);
         return false;
     }
     endExportProgress();
@@ -965,6 +1028,14 @@ bool MainWindow::exportView(const ExportDialog::Options &o, QString *error)
     if (!ok && error)
         *error = tr("Cannot write %1.").arg(o.fileName);
     return ok;
+}
+
+QString MainWindow::matricesLatex() const
+{
+    const QList<NamedMatrix> list = m_matrices->matrices();
+    if (list.isEmpty())
+        return {};
+    return latexMatrices(list, m_current ? m_current->name() : QString());
 }
 
 void MainWindow::exportDialog()

@@ -64,6 +64,8 @@ public:
 
     // Export of one view (format from the suffix). False with a message on failure.
     bool exportView(const ExportDialog::Options &options, QString *error = nullptr);
+    // The current item's matrices as LaTeX (Edit > Copy Matrices as LaTeX, .tex export).
+    QString matricesLatex() const;
     // The figure sheet of the current item as a PDF page.
     bool printToPdf(const QString &fileName, QString *error = nullptr);
     // The points F^depth(X0) of the item drawn (the current item, or an eigenvalue plot's

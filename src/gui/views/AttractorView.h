@@ -113,6 +113,24 @@ public:
     // vector paths, the attractor as a raster made for the target's framing (the view's own
     // raster when it covers it), or as vector dots when the drawing has few points.
     void renderTo(QPainter *painter, const QRectF &target, Framing framing = Framing::AsShown);
+    // What an exported figure shows, beyond the view's own layers.
+    struct ExportStyle {
+        Framing framing = Framing::AsShown;
+        bool grid = true;           // the grid and its labels (when the view shows them)
+        bool handles = true;        // control polygons, start set, their handles and labels
+        QString fontFamily;         // empty: the view's font
+        double fontPoints = 0;      // 0: the view's size; else points at the screen's 96 dpi
+        double margin = -1;         // FitContents margin in screen pixels (< 0: the view's)
+    };
+    // Curves (polyline start sets, deterministic iteration) go to SVG, PDF and printers as
+    // joined vector paths (render/CurvePaths.h); other content and PNG get a raster made at
+    // the device resolution of the target, never a stretched screen raster.
+    void renderTo(QPainter *painter, const QRectF &target, const ExportStyle &style);
+    // The world rectangle a FitContents export frames (content bounds), if there is content.
+    std::optional<QRectF> exportBounds() const { return fittedWorld(); }
+    // What the last renderTo drew the attractor as: "vector" (dots or shapes), "curve paths",
+    // "raster WxH" (the raster's pixel size), or "none". For tests and the batch mode's log.
+    QString lastExportKind() const { return m_lastExportKind; }
     // An export that needs its own raster computes it on a worker thread and, while it runs,
     // calls `progress` on the calling thread every ~50 ms with the fraction done; returning
     // false cancels it (the export then lacks the attractor and exportCancelled() is true
@@ -206,9 +224,15 @@ private:
 
     Mapping screenMapping() const;
     void paintScene(QPainter &p, const Mapping &m, bool forExport);
+    // The attractor as the view's raster, an export's own raster, or vector dots or shapes.
+    void paintAttractorImages(QPainter &p, const Mapping &m, bool forExport);
     void paintGrid(QPainter &p, const Mapping &m) const;
     QFont sceneFont(double factor, double u) const;
-    QImage exportRaster(const Mapping &m, RenderInfo *info) const;
+    // The attractor raster of an export, `pixels` device pixels for m.target.
+    QImage exportRaster(const Mapping &m, QSize pixels, RenderInfo *info) const;
+    // Draws a curve's images as joined vector paths; false when it is no curve or too many
+    // vertices would remain (the caller draws a raster).
+    bool paintCurvePaths(QPainter &p, const Mapping &m) const;
     void paintVectorImages(QPainter &p, const Mapping &m, const std::vector<VectorImage> &images,
                            StartSet::Kind kind) const;
     void paintHandles(QPainter &p, const Mapping &m) const;
@@ -273,6 +297,8 @@ private:
     double m_cancelledAt = 0.0;    // its progress then
 
     ExportProgress m_exportProgress;
+    ExportStyle m_exportStyle;              // of the renderTo in progress
+    mutable QString m_lastExportKind;
     mutable bool m_exportCancelled = false;
 
     Drag m_drag;

@@ -28,8 +28,13 @@ inline constexpr double kMinScale = 1e-9, kMaxScale = 1e12;
 inline constexpr std::size_t kMaxHutchinsonVertices = 50000;
 // A render faster than this shows no progress text (it would only flicker).
 inline constexpr int kQuietRenderMs = 250;
-// A hidden view that never rendered draws its export raster synchronously, at most this big.
-inline constexpr int kMaxExportRaster = 2048;
+// An export's raster is made at the target's device resolution, at most this many pixels a
+// side (a 300 dpi A4 page is 3508 x 2480; a QImage this big takes 256 MB).
+inline constexpr int kMaxExportRaster = 8192;
+// Curves go to vector devices as paths when the iteration has at most this many images and at
+// most this many vertices remain after joining and simplifying (else a raster).
+inline constexpr double kMaxExportCurveImages = 2e7;
+inline constexpr std::size_t kMaxExportCurveVertices = 1000000;
 // An export draws the attractor as vector dots up to this many points.
 inline constexpr std::size_t kMaxExportVectorVertices = 20000;
 // The export's vector dots come from the renderer's streams, so they are the raster's points.

@@ -3,6 +3,7 @@
 // the status overlay (errors, render progress, a cancelled render).
 
 #include "gui/views/AttractorView.h"
+#include "render/CurvePaths.h"
 
 #include "gui/views/AttractorViewDetail.h"
 
@@ -31,7 +32,15 @@ void AttractorView::paintEvent(QPaintEvent *)
 
 void AttractorView::renderTo(QPainter *painter, const QRectF &target, Framing framing)
 {
+    ExportStyle style;
+    style.framing = framing;
+    renderTo(painter, target, style);
+}
+
+void AttractorView::renderTo(QPainter *painter, const QRectF &target, const ExportStyle &style)
+{
     m_exportCancelled = false;
+    m_lastExportKind = QStringLiteral("none");
     if (!painter || target.isEmpty())
         return;
     // The same world rectangle as on screen, fitted into the target with equal scale.
@@ -40,21 +49,26 @@ void AttractorView::renderTo(QPainter *painter, const QRectF &target, Framing fr
               target};
     m.unit = std::min(target.width() / std::max(1, width()),
                       target.height() / std::max(1, height()));
-    if (framing == Framing::FitContents) {
+    if (style.framing == Framing::FitContents) {
         if (const auto r = fittedWorld()) {
-            // The view's fit margin, in the target's units.
-            const double margin = kFitMargin * m.unit;
+            // The view's fit margin (or the style's), in the target's units.
+            const double margin = (style.margin >= 0 ? style.margin : kFitMargin) * m.unit;
             const double w = std::max(1.0, target.width() - 2 * margin);
             const double h = std::max(1.0, target.height() - 2 * margin);
             m.center = r->center();
             m.scale = std::min(w / r->width(), h / r->height());
         }
     }
+    m_exportStyle = style;
     painter->save();
     painter->setClipRect(target);
     painter->setRenderHint(QPainter::Antialiasing);
+    // PDF writers and printers store images as JPEG unless told otherwise: keep the raster's
+    // pixels exact (a one-pixel curve in JPEG grows grey halos).
+    painter->setRenderHint(QPainter::LosslessImageRendering);
     paintScene(*painter, m, true);
     painter->restore();
+    m_exportStyle = ExportStyle();
 }
 
 void AttractorView::paintScene(QPainter &p, const Mapping &m, bool forExport)
@@ -63,7 +77,7 @@ void AttractorView::paintScene(QPainter &p, const Mapping &m, bool forExport)
     // resolution looks like the screen.
     const double u = m.unit;
     p.fillRect(m.target, Qt::white);
-    if (isLayerVisible(Layer::Grid))
+    if (isLayerVisible(Layer::Grid) && (!forExport || m_exportStyle.grid))
         paintGrid(p, m);
 
     if (isLayerVisible(Layer::Subdivision) && !m_subdivision.empty()) {
@@ -94,48 +108,107 @@ void AttractorView::paintScene(QPainter &p, const Mapping &m, bool forExport)
     }
 
     if (isLayerVisible(Layer::Attractor)) {
-        std::vector<VectorImage> dots;
-        bool vector = false;
-        if (forExport && m_ifs) {
-            vector = m_settings.mode == RenderRequest::Mode::Deterministic
-                         ? vectorImages(m_settings.depth, kMaxExportVectorVertices, &dots)
-                         : randomVectorImages(kMaxExportVectorVertices, &dots);
-            vector = vector && !dots.empty();
-        }
-        QImage image = m_image;
-        RenderInfo info = m_imageInfo;
-        // An export renders its own raster when the view's does not cover its framing (a
-        // figure fitted to the page, a target of another aspect ratio) or there is none yet.
-        const QRectF needed = QRectF(m.unmap(m.target.bottomLeft()),
-                                     m.unmap(m.target.topRight())).normalized();
-        const double slack = 1e-6 * std::max(needed.width(), needed.height());
-        const bool current = info.final && m_imageVersion == m_contentVersion;
-        const bool covers = current && !image.isNull() && info.world.isValid()
-                            && info.world.adjusted(-slack, -slack, slack, slack).contains(needed);
-        if (forExport && !vector && !covers && m_ifs && m_error.isEmpty())
-            image = exportRaster(m, &info);
-        if (vector) {
-            paintVectorImages(p, m, dots, m_settings.mode == RenderRequest::Mode::Random
-                                              ? StartSet::Kind::Points
-                                              : m_start.kind);
-        } else if (!image.isNull() && info.world.isValid()) {
-            const QRectF w = info.world;
-            const QRectF target(m.map(QPointF(w.left(), w.bottom())),
-                                m.map(QPointF(w.right(), w.top())));
-            // Nearest-neighbour scaling keeps a one-pixel curve crisp while zooming; the
-            // next render replaces the stretched pixels anyway.
-            p.save();
-            p.setRenderHint(QPainter::SmoothPixmapTransform, false);
-            p.drawImage(target, image);
-            p.restore();
+        // An export to a vector device draws a curve as paths; other content as vector dots
+        // or shapes when there are few, else as a raster of the target's device resolution.
+        if (forExport && isVectorDevice(p) && paintCurvePaths(p, m)) {
+            m_lastExportKind = QStringLiteral("curve paths");
+        } else {
+            paintAttractorImages(p, m, forExport);
         }
     }
 
     if (isLayerVisible(Layer::Hutchinson) && !m_hutch.empty())
         paintVectorImages(p, m, m_hutch, m_start.kind);
 
-    paintHandles(p, m);
+    if (!forExport || m_exportStyle.handles)
+        paintHandles(p, m);
     paintLegend(p, m);
+}
+
+void AttractorView::paintAttractorImages(QPainter &p, const Mapping &m, bool forExport)
+{
+    std::vector<VectorImage> dots;
+    bool vector = false;
+    if (forExport && m_ifs) {
+        vector = m_settings.mode == RenderRequest::Mode::Deterministic
+                     ? vectorImages(m_settings.depth, kMaxExportVectorVertices, &dots)
+                     : randomVectorImages(kMaxExportVectorVertices, &dots);
+        vector = vector && !dots.empty();
+    }
+    QImage image = m_image;
+    RenderInfo info = m_imageInfo;
+    // The raster an export needs: the target's framing at the device's resolution (a PNG's
+    // pixels, a PDF's dpi). The view's own raster serves only when it covers that framing at
+    // that resolution or finer; otherwise the export renders its own.
+    const double device = forExport ? devicePixelsPerLogical(p) : 1.0;
+    const QSize pixels(std::max(1, int(std::lround(m.target.width() * device))),
+                       std::max(1, int(std::lround(m.target.height() * device))));
+    const QRectF needed = QRectF(m.unmap(m.target.bottomLeft()), m.unmap(m.target.topRight()))
+                              .normalized();
+    const double slack = 1e-6 * std::max(needed.width(), needed.height());
+    const bool current = info.final && m_imageVersion == m_contentVersion;
+    const bool covers = current && !image.isNull() && info.world.isValid()
+                        && info.world.adjusted(-slack, -slack, slack, slack).contains(needed)
+                        && image.width() / info.world.width()
+                               >= 0.999 * m.scale * device;
+    if (forExport && !vector && !covers && m_ifs && m_error.isEmpty())
+        image = exportRaster(m, pixels, &info);
+    if (vector) {
+        paintVectorImages(p, m, dots, m_settings.mode == RenderRequest::Mode::Random
+                                          ? StartSet::Kind::Points
+                                          : m_start.kind);
+        m_lastExportKind = QStringLiteral("vector");
+    } else if (!image.isNull() && info.world.isValid()) {
+        const QRectF w = info.world;
+        const QRectF target(m.map(QPointF(w.left(), w.bottom())),
+                            m.map(QPointF(w.right(), w.top())));
+        // Nearest-neighbour scaling keeps a one-pixel curve crisp while zooming; the next
+        // render replaces the stretched pixels anyway. An export's raster is made at the
+        // device's resolution, so it is drawn 1:1.
+        p.save();
+        p.setRenderHint(QPainter::SmoothPixmapTransform, false);
+        p.drawImage(target, image);
+        p.restore();
+        m_lastExportKind = QStringLiteral("raster %1x%2").arg(image.width()).arg(image.height());
+    }
+}
+
+bool AttractorView::paintCurvePaths(QPainter &p, const Mapping &m) const
+{
+    // Automata (m_iterate) emit their images in no useful order: they get a raster.
+    if (m_settings.mode != RenderRequest::Mode::Deterministic
+        || m_start.kind != StartSet::Kind::Polyline || m_iterate || !m_ifs
+        || m_ifs->size() == 0 || m_ifs->views.empty() || !m_error.isEmpty())
+        return false;
+    // Past this many images the iteration itself takes seconds; a raster is as good on paper.
+    if (imageCount(*m_ifs, m_settings.depth) > kMaxExportCurveImages)
+        return false;
+    const QTransform toLogical(m.scale, 0, 0, -m.scale,
+                               m.target.center().x() - m.center.x() * m.scale,
+                               m.target.center().y() + m.center.y() * m.scale);
+    const RenderSettings &s = m_settings;
+    const int maps = m_ifs->size();
+    CurvePathSink sink(m_ifs->views, toLogical, devicePixelsPerLogical(p),
+                       [&s, maps](const std::uint8_t *a, int n) {
+                           return AttractorRenderer::addressColor(s.colorMode, s.prefixLength,
+                                                                  s.palette, maps, a, n);
+                       },
+                       kMaxExportCurveVertices);
+    // In address order, so that neighbouring pieces of the curve come one after the other;
+    // stopped as soon as the paths would be too big.
+    std::atomic<bool> stop{false};
+    IterationControl control;
+    control.cancel = &stop;
+    sink.setOverflowFlag(&stop);
+    try {
+        iterateAlong(*m_ifs, m_start, m_settings.depth, sink, control);
+    } catch (const std::exception &) {
+        return false;
+    }
+    if (sink.overflowed())
+        return false;
+    drawCurvePaths(p, sink.finish(), 1.3 * m.unit);
+    return true;
 }
 
 void AttractorView::paintLegend(QPainter &p, const Mapping &m) const
@@ -166,16 +239,15 @@ void AttractorView::paintLegend(QPainter &p, const Mapping &m) const
     p.restore();
 }
 
-QImage AttractorView::exportRaster(const Mapping &m, RenderInfo *info) const
+QImage AttractorView::exportRaster(const Mapping &m, QSize pixels, RenderInfo *info) const
 {
-    // Only for a view that never rendered on screen (hidden, or exported right after the
-    // data arrived): the export must not silently lack the attractor.
-    const double k = std::min(1.0, kMaxExportRaster / std::max(m.target.width(),
-                                                               m.target.height()));
+    // At the device's resolution, within the engine's bounds on the picture's size.
+    const double k = std::min(1.0, kMaxExportRaster / double(std::max(pixels.width(),
+                                                                       pixels.height())));
+    const QSize size(std::max(1, int(pixels.width() * k)), std::max(1, int(pixels.height() * k)));
     const RenderRequest r = renderRequest(
-        QRectF(m.unmap(m.target.bottomLeft()), m.unmap(m.target.topRight())).normalized(),
-        QSize(std::max(1, int(m.target.width() * k)), std::max(1, int(m.target.height() * k))),
-        1.0);
+        QRectF(m.unmap(m.target.bottomLeft()), m.unmap(m.target.topRight())).normalized(), size,
+        size.width() / std::max(1.0, m.target.width() / std::max(1e-9, m.unit)));
     if (!m_exportProgress) {
         try {
             return AttractorRenderer::renderNow(r, info);
@@ -216,8 +288,14 @@ QFont AttractorView::sceneFont(double factor, double u) const
 {
     // Sized in device pixels, not points: a point size would grow once more with the
     // resolution of a printer or PDF on top of the figure's scale u.
+    // An export may ask for its own font: a size in points is read at the screen's 96 dpi,
+    // as the figure's scale u maps screen pixels to the target's.
     QFont f = font();
-    f.setPixelSize(std::max(1, int(std::lround(QFontInfo(font()).pixelSize() * factor * u))));
+    if (!m_exportStyle.fontFamily.isEmpty())
+        f.setFamily(m_exportStyle.fontFamily);
+    const double px = m_exportStyle.fontPoints > 0 ? m_exportStyle.fontPoints * 96.0 / 72.0
+                                                   : QFontInfo(font()).pixelSize();
+    f.setPixelSize(std::max(1, int(std::lround(px * factor * u))));
     return f;
 }
 

@@ -277,6 +277,14 @@ void MatrixView::showHighlight()
     }
 }
 
+QList<NamedMatrix> MatrixView::matrices() const
+{
+    QList<NamedMatrix> list;
+    for (const MatrixTableModel *m : m_models)
+        list.append(m->matrix());
+    return list;
+}
+
 void MatrixView::setMatrices(const QList<NamedMatrix> &matrices)
 {
     bool same = matrices.size() == m_models.size();

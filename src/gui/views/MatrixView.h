@@ -5,6 +5,7 @@
 // owner applies the edit (one undo step) and sets the matrices again.
 
 #include "core/Types.h"
+#include "model/NamedMatrix.h"
 
 #include <QList>
 #include <QString>
@@ -21,34 +22,6 @@ namespace awb {
 
 class MatrixTableModel;
 
-struct NamedMatrix {
-    NamedMatrix() = default;
-    NamedMatrix(QString name, Mat values, int affineBlock = -1, bool editable = false)
-        : name(std::move(name)), values(std::move(values)), affineBlock(affineBlock),
-          editable(editable)
-    {
-    }
-    NamedMatrix(QString name, CMat complexValues, int affineBlock = -1)
-        : name(std::move(name)), affineBlock(affineBlock),
-          complexValues(std::move(complexValues))
-    {
-    }
-
-    QString name;            // "S_1", "M_2", ...
-    Mat values;
-    // Size of the A block of a lifted map M = [[A, 0], [b, 1]] (A top-left, b the row below
-    // it); -1 for a plain matrix. Shades the blocks differently.
-    int affineBlock = -1;
-    bool editable = false;   // the user's own matrix (only then can cells be edited)
-    // A complex matrix (complex de Casteljau L(t), R(t) of 004 §3.7 and their lifted maps):
-    // shown instead of `values` when non-empty, never editable.
-    CMat complexValues;
-
-    bool isComplex() const { return complexValues.size() > 0; }
-    Eigen::Index rows() const { return isComplex() ? complexValues.rows() : values.rows(); }
-    Eigen::Index cols() const { return isComplex() ? complexValues.cols() : values.cols(); }
-};
-
 class MatrixView : public QWidget {
     Q_OBJECT
 public:
@@ -60,6 +33,8 @@ public:
     // Replaces the shown matrices. When names and shapes are unchanged the tables are updated
     // in place (no flicker, the scroll position and an open editor survive a live drag).
     void setMatrices(const QList<NamedMatrix> &matrices);
+    // The matrices shown (for LaTeX export and the figure sheet).
+    QList<NamedMatrix> matrices() const;
     int matrixCount() const { return int(m_models.size()); }
     void setSums(Sums sums);
     Sums sums() const { return m_sums; }

@@ -1,0 +1,264 @@
+// Figures fit for a paper (issue 17, part 6): an export draws the attractor at the resolution
+// asked for (a raster of the target's device pixels, stored losslessly in a PDF), a curve as
+// joined vector paths in SVG and PDF, the figure sheet's matrices at 8 pt or more, the
+// matrices as LaTeX with exact fractions, options to hide the grid and the control points and
+// to crop; and the batch mode's --export-figure that makes all of it testable offscreen.
+
+#include "BatchRunner.h"
+#include "WindowTestSupport.h"
+#include "../model/Fig2Example.h"
+
+#include "gui/app/FigureSheet.h"
+#include "model/AttractorItem.h"
+#include "model/NamedMatrix.h"
+#include "model/Project.h"
+
+#include <QFile>
+#include <QImage>
+#include <QImageReader>
+#include <QPdfWriter>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace awb;
+
+class TestFigureExport : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { test::useTestSettings("awb-test-figure-export"); }
+    void latexNumbersAreExact();
+    void latexOfFig2Matrices();
+    void batchSvgOfACurveIsPaths();
+    void batchPdfOfACurveIsPathsAndLossless();
+    void batchPngIsFullResolution();
+    void batchDeepSierpinskiPdfRasterAtDpi();
+    void batchOptionsHideAndCrop();
+    void batchMatricesAsLatex();
+    void batchBadOptions();
+    void sheetMatricesAreAtLeast8pt();
+
+private:
+    test::BatchRunner m_runner;
+    int run(const QStringList &args, QString *err = nullptr) { return m_runner.run(args, err); }
+    static QString example(const QString &name) { return test::BatchRunner::example(name); }
+    static QByteArray readAll(const QString &file)
+    {
+        QFile f(file);
+        return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    }
+    // "attractor drawn as ..." of the batch mode's log.
+    static QString drawnAs(const QString &err)
+    {
+        const auto m = QRegularExpression("attractor drawn as ([^\n]+)").match(err);
+        return m.hasMatch() ? m.captured(1).trimmed() : QString();
+    }
+};
+
+void TestFigureExport::latexNumbersAreExact()
+{
+    QCOMPARE(latexNumber(0.375), QStringLiteral("\\frac{3}{8}"));
+    QCOMPARE(latexNumber(-0.0625), QStringLiteral("-\\frac{1}{16}"));
+    QCOMPARE(latexNumber(2.0), QStringLiteral("2"));
+    QCOMPARE(latexNumber(0.0), QStringLiteral("0"));
+    QCOMPARE(latexNumber(1.0 / 3.0), QStringLiteral("\\frac{1}{3}"));
+    QCOMPARE(latexNumber(0.1123456789, 4), QStringLiteral("0.1123"));
+    QCOMPARE(latexNumber(std::sqrt(2.0) * 1e-7, 3), QStringLiteral("1.41 \\cdot 10^{-7}"));
+    QCOMPARE(latexComplex({0.5, -0.125}), QStringLiteral("\\frac{1}{2} - \\left(\\frac{1}{8}\\right)i"));
+    QCOMPARE(latexComplex({0, 1}), QStringLiteral("i"));
+    QCOMPARE(latexComplex({0.25, 0}), QStringLiteral("\\frac{1}{4}"));
+}
+
+// 000 Fig. 2: the cubic B-spline's S_1 on 5 points has the rows (1/2 1/2 0 0 0),
+// (1/8 3/4 1/8 0 0), ... in exact fractions.
+void TestFigureExport::latexOfFig2Matrices()
+{
+    Project project;
+    QVERIFY(project.open(test::fig2File));
+    auto *curve = qobject_cast<AttractorItem *>(project.findItem(test::fig2Curve));
+    QVERIFY(curve);
+    const auto d = curve->derivedIfs();
+    QVERIFY(d);
+    const QList<NamedMatrix> list = namedMatrices(*d);
+    QVERIFY(list.size() >= 2);
+    QCOMPARE(list[0].name, QStringLiteral("S_1"));
+    const QString tex = latexMatrices(list, curve->name());
+    QVERIFY(tex.startsWith(QStringLiteral("% ") + curve->name()));
+    QVERIFY2(tex.contains(QStringLiteral("S_{1} = \\begin{bmatrix}\n"
+                                         "  \\frac{1}{2} & \\frac{1}{2} & 0 & 0 & 0 \\\\\n"
+                                         "  \\frac{1}{8} & \\frac{3}{4} & \\frac{1}{8} & 0 & 0 \\\\\n")),
+             qPrintable(tex.left(400)));
+    QCOMPARE(tex.count(QStringLiteral("\\begin{bmatrix}")), list.size());
+    QCOMPARE(tex.count(QStringLiteral("\\[")), list.size());
+}
+
+// Four-point scheme from a segment at depth 12 (000 Fig. 5): 4 096 images become joined paths,
+// no embedded picture.
+void TestFigureExport::batchSvgOfACurveIsPaths()
+{
+    QTemporaryDir out;
+    const QString svg = out.filePath("four-point.svg");
+    QString err;
+    const int code = run({example("000-fig05-four-point-from-segment.awb"), "--export-figure", svg,
+                          "--figure-size", "1196x1646", "--dpi", "300"},
+                         &err);
+    QVERIFY2(code == 0, qPrintable(err));
+    QCOMPARE(drawnAs(err), QStringLiteral("curve paths"));
+    const QByteArray bytes = readAll(svg);
+    QVERIFY(bytes.contains("<svg"));
+    QVERIFY(!bytes.contains("<image"));
+    // The curve's stroke: a handful of paths (one per colour run), not one per image.
+    const int strokes = int(bytes.count("stroke-linecap=\"round\""));
+    QVERIFY2(strokes >= 1, bytes.left(300).constData());
+    QVERIFY2(bytes.count("<path") < 200, QByteArray::number(bytes.count("<path")).constData());
+    QVERIFY2(bytes.size() < 600 * 1024, QByteArray::number(bytes.size()).constData());
+}
+
+void TestFigureExport::batchPdfOfACurveIsPathsAndLossless()
+{
+    QTemporaryDir out;
+    const QString pdf = out.filePath("four-point.pdf");
+    QString err;
+    QVERIFY2(run({example("000-fig05-four-point-from-segment.awb"), "--export-figure", pdf,
+                  "--figure-size", "1196x1646", "--dpi", "300"},
+                 &err) == 0,
+             qPrintable(err));
+    QCOMPARE(drawnAs(err), QStringLiteral("curve paths"));
+    const QByteArray bytes = readAll(pdf);
+    QVERIFY(bytes.startsWith("%PDF"));
+    QVERIFY(!bytes.contains("/DCTDecode"));
+    QVERIFY(!bytes.contains("/Subtype /Image"));
+}
+
+// A random-iteration picture (002 Fig. 3, a union of two quadratic Bézier IFS, 400 000
+// samples) exported at 1196 x 1646: the raster has exactly those pixels
+// (before: the screen's half-size raster scaled up).
+void TestFigureExport::batchPngIsFullResolution()
+{
+    QTemporaryDir out;
+    const QString png = out.filePath("gasket.png");
+    QString err;
+    QVERIFY2(run({example("002-fig03-union-p3.awb"), "--export-figure", png,
+                  "--figure-size", "1196x1646", "--dpi", "300", "--window-size", "900x700"},
+                 &err) == 0,
+             qPrintable(err));
+    QCOMPARE(drawnAs(err), QStringLiteral("raster 1196x1646"));
+    const QImage image(png);
+    QCOMPARE(image.size(), QSize(1196, 1646));
+    QCOMPARE(qRound(image.dotsPerMeterX() * 0.0254), 300);
+}
+
+// A Sierpinski gasket of 3^10 triangles to PDF at 300 dpi: a raster of the page's device
+// pixels, stored losslessly.
+void TestFigureExport::batchDeepSierpinskiPdfRasterAtDpi()
+{
+    QTemporaryDir out;
+    QFile src(example("000-fig11-sierpinski-with-control-points.awb"));
+    QVERIFY(src.open(QIODevice::ReadOnly));
+    QByteArray project = src.readAll();
+    project.replace("\"depth\": 8", "\"depth\": 10");
+    const QString deep = out.filePath("deep.awb");
+    QFile dst(deep);
+    QVERIFY(dst.open(QIODevice::WriteOnly));
+    dst.write(project);
+    dst.close();
+    const QString pdf = out.filePath("gasket.pdf");
+    QString err;
+    QVERIFY2(run({deep, "--item", "000 Fig. 11 (top): Sierpinski gasket from its control points",
+                  "--export-figure", pdf, "--figure-size", "1200x900", "--dpi", "300"},
+                 &err) == 0,
+             qPrintable(err));
+    QCOMPARE(drawnAs(err), QStringLiteral("raster 1200x900"));
+    const QByteArray bytes = readAll(pdf);
+    QVERIFY(bytes.contains("/Subtype /Image"));
+    QVERIFY(!bytes.contains("/DCTDecode"));
+    QVERIFY(bytes.contains("/Width 1200"));
+    QVERIFY(bytes.contains("/Height 900"));
+}
+
+// --no-grid --no-handles leave no text and no control points; --crop makes the height follow
+// the content (the four-point curve is wider than high).
+void TestFigureExport::batchOptionsHideAndCrop()
+{
+    QTemporaryDir out;
+    const QString full = out.filePath("full.svg"), bare = out.filePath("bare.svg"),
+                  crop = out.filePath("crop.png");
+    QString err;
+    const QString file = example("000-fig05-four-point-from-segment.awb");
+    QVERIFY2(run({file, "--export-figure", full, "--figure-size", "1200x1200"}, &err) == 0,
+             qPrintable(err));
+    QVERIFY2(run({file, "--export-figure", bare, "--figure-size", "1200x1200", "--no-grid",
+                  "--no-handles"},
+                 &err) == 0,
+             qPrintable(err));
+    const QByteArray withAll = readAll(full), without = readAll(bare);
+    QVERIFY(withAll.count("<text") > 0);
+    QCOMPARE(without.count("<text"), 0);
+    QVERIFY(without.size() < withAll.size());
+    QVERIFY2(run({file, "--export-figure", crop, "--figure-size", "1200x1200", "--crop",
+                  "--font", "DejaVu Serif,10"},
+                 &err) == 0,
+             qPrintable(err));
+    const QSize s = QImageReader(crop).size();
+    QCOMPARE(s.width(), 1200);
+    QVERIFY2(s.height() < 1000 && s.height() >= 16, qPrintable(QString::number(s.height())));
+}
+
+void TestFigureExport::batchMatricesAsLatex()
+{
+    QTemporaryDir out;
+    const QString tex = out.filePath("fig2.tex");
+    QString err;
+    QVERIFY2(run({test::fig2File, "--item", test::fig2Curve, "--export-figure", tex, "--view",
+                  "matrices"},
+                 &err) == 0,
+             qPrintable(err));
+    const QString text = QString::fromUtf8(readAll(tex));
+    QVERIFY(text.contains(QStringLiteral("\\frac{3}{4}")));
+    QVERIFY(text.contains(QStringLiteral("S_{2} = \\begin{bmatrix}")));
+    // A picture view to .tex is refused with a message, and nothing is written.
+    const QString wrong = out.filePath("wrong.tex");
+    QCOMPARE(run({test::fig2File, "--export-figure", wrong, "--view", "attractor"}, &err), 1);
+    QVERIFY2(err.contains("matrices only"), qPrintable(err));
+    QVERIFY(!QFile::exists(wrong));
+}
+
+void TestFigureExport::batchBadOptions()
+{
+    QString err;
+    const QString file = example("000-fig05-four-point-from-segment.awb");
+    QCOMPARE(run({file, "--export-figure", "/tmp/x.png", "--view", "poster"}, &err), 2);
+    QVERIFY2(err.contains("--view poster"), qPrintable(err));
+    QCOMPARE(run({file, "--export-figure", "/tmp/x.png", "--dpi", "9000"}, &err), 2);
+    QVERIFY2(err.contains("--dpi 9000"), qPrintable(err));
+    QCOMPARE(run({file, "--export-figure", "/tmp/x.png", "--figure-size", "10x10"}, &err), 2);
+    QVERIFY2(err.contains("--figure-size"), qPrintable(err));
+    QCOMPARE(run({file, "--export-figure", "/nonexistent-dir/x.png"}, &err), 1);
+    QVERIFY2(err.contains("/nonexistent-dir/x.png"), qPrintable(err));
+}
+
+// The printed sheet (A4 landscape, 300 dpi) of 000 Fig. 2: its four 5 x 5 matrices (S_1, S_2,
+// M_1, M_2) all shown, at 8 pt or more (before: shrunk until they fit, down to 4 pt).
+void TestFigureExport::sheetMatricesAreAtLeast8pt()
+{
+    QTemporaryDir dir;
+    test::ShownWindow shown(dir.path(), QSize(1200, 800));
+    QVERIFY(shown.window.openFile(test::fig2File));
+    Item *curve = nullptr;
+    for (Item *i : shown.window.project()->items())
+        if (i->name() == test::fig2Curve)
+            curve = i;
+    QVERIFY(curve);
+    shown.window.setCurrentItem(curve);
+    QVERIFY(test::waitForFinalImage(shown.window.attractorView()));
+    FigureSheet sheet(curve, shown.window.attractorView(), shown.window.spectrumView());
+    QString error;
+    QVERIFY2(sheet.writePdf(dir.filePath("sheet.pdf"), &error), qPrintable(error));
+    QCOMPARE(sheet.matricesShown(), 4);
+    const double points = sheet.matrixFontPixels() * 72.0 / 300.0;
+    QVERIFY2(points >= 8.0, qPrintable(QString::number(points)));
+}
+
+QTEST_MAIN(TestFigureExport)
+#include "test_figure_export.moc"
