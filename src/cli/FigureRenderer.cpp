@@ -311,7 +311,7 @@ QImage renderFigure(const FigureSpec &spec)
 bool writeFigure(const FigureSpec &spec, const QString &fileName, QString *error)
 {
     return writePaintedFigure(fileName, figureSize(spec), spec.title,
-                              [&](QPainter &p) { paintFigure(p, spec); }, error);
+                              [&](QPainter &p) { paintFigure(p, spec); }, error, spec.metadata);
 }
 
 } // namespace awb

@@ -7,6 +7,7 @@
 
 #include "core/ifs/Attractor.h"
 #include "render/AttractorImage.h"
+#include "render/FigureFile.h"
 
 #include <QColor>
 #include <QImage>
@@ -48,6 +49,7 @@ struct FigureSpec {
     int threads = 0;
     int panelWidth = 420;
     int panelHeight = 360;
+    FigureMetadata metadata;           // written into PNG and SVG files (the item's project)
 };
 
 // Colour of map i (by address): a qualitative palette that reads on white and in print.

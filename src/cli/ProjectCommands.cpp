@@ -3,6 +3,7 @@
 #include "cli/FigureRenderer.h"
 #include "core/analysis/Geometry.h"
 #include "core/analysis/Spectrum.h"
+#include "model/FigureMetadata.h"
 #include "model/AttractorItem.h"
 #include "model/ExactCurve.h"
 #include "model/NumberFormat.h"
@@ -65,6 +66,13 @@ void parseOrFail(QCommandLineParser &parser, const QStringList &args, int positi
                       2};
 }
 
+// The item's project in the figure file (PNG text chunk, SVG metadata): it reopens as is.
+FigureMetadata figureMetadata(const Project &project, const Item &item)
+{
+    const QByteArray bytes = figureProjectBytes(project, item);
+    return {figurePngTexts(bytes), svgMetadataElement(bytes)};
+}
+
 void load(Project &project, const QString &file)
 {
     QString error;
@@ -77,7 +85,9 @@ AttractorItem *attractorItem(const Project &project, const QString &name)
     if (!name.isEmpty()) {
         Item *item = project.findItem(name);
         if (!item)
-            throw Failure{QString("no item named '%1' in %2").arg(name, project.fileName())};
+            throw Failure{QString("no item named '%1' in %2")
+                              .arg(name, project.fileName().isEmpty() ? QString("the figure's project")
+                                                                      : project.fileName())};
         auto *a = qobject_cast<AttractorItem *>(item);
         if (!a)
             throw Failure{QString("item '%1' (%2) has no attractor").arg(name, item->typeName())};
@@ -563,6 +573,7 @@ int render(const QStringList &args)
                             .arg(item->name(), what, maps)
                             .arg(az)
                             .arg(el);
+            s.metadata = figureMetadata(project, *item);
             QString error;
             if (!writeSurfaceFigure(s, parser.value("out"), &error))
                 throw Failure{error};
@@ -590,6 +601,7 @@ int render(const QStringList &args)
                           .arg(item->name())
                           .arg(item->parameter("steps").toInt());
         spec.panels = {{caption, depth}};
+        spec.metadata = figureMetadata(project, *item);
         QString error;
         if (!writeFigure(spec, parser.value("out"), &error))
             throw Failure{error};

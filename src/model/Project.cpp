@@ -1,3 +1,4 @@
+#include "model/FigureMetadata.h"
 #include "model/Project.h"
 
 #include "model/Commands.h"
@@ -313,6 +314,16 @@ void Project::invalidateAllReaders()
 bool Project::open(const QString &fileName, QString *error)
 {
     ProjectData data;
+    if (isPngFile(fileName)) {
+        // A figure exported with its parameters (model/FigureMetadata.h): its project goes
+        // through the same loader, and opens untitled and unsaved, so that saving never
+        // writes over the picture.
+        const QByteArray bytes = embeddedProject(fileName, error);
+        if (bytes.isEmpty() || !ProjectIO::parse(bytes, fileName, &data, error))
+            return false;
+        adopt(std::move(data), QString(), true);
+        return true;
+    }
     if (!ProjectIO::readFile(fileName, &data, error))
         return false;
     adopt(std::move(data), fileName, false);

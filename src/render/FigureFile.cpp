@@ -1,16 +1,51 @@
 #include "render/FigureFile.h"
 
+#include <QFile>
 #include <QFileInfo>
 #include <QImage>
 #include <QPageSize>
 #include <QPainter>
 #include <QPdfWriter>
+#include <QSaveFile>
 #include <QSvgGenerator>
 
 namespace awb {
 
+void addPngText(QImage &image, const FigureMetadata &metadata)
+{
+    for (const auto &[key, text] : metadata.pngText)
+        image.setText(key, text);
+}
+
+bool addSvgMetadata(const QString &svgFile, const FigureMetadata &metadata, QString *error)
+{
+    if (metadata.svgElement.isEmpty())
+        return true;
+    QFile in(svgFile);
+    if (!in.open(QIODevice::ReadOnly)) {
+        *error = QString("cannot read %1: %2").arg(svgFile, in.errorString());
+        return false;
+    }
+    QByteArray svg = in.readAll();
+    in.close();
+    const qsizetype open = svg.indexOf("<svg");
+    const qsizetype end = open < 0 ? -1 : svg.indexOf('>', open);
+    if (end < 0) {
+        *error = QString("%1 is not an SVG file").arg(svgFile);
+        return false;
+    }
+    svg.insert(end + 1, "\n" + metadata.svgElement);
+    QSaveFile out(svgFile);
+    if (!out.open(QIODevice::WriteOnly) || out.write(svg) != svg.size() || !out.commit()) {
+        *error = QString("cannot write %1: %2").arg(svgFile, out.errorString());
+        return false;
+    }
+    return true;
+}
+
 bool writePaintedFigure(const QString &fileName, QSize size, const QString &title,
-                        const std::function<void(QPainter &)> &paint, QString *error)
+                        const std::function<void(QPainter &)> &paint, QString *error,
+                        const FigureMetadata &metadata)
 {
     const QString suffix = QFileInfo(fileName).suffix().toLower();
     const auto cannot = [&] {
@@ -25,6 +60,7 @@ bool writePaintedFigure(const QString &fileName, QSize size, const QString &titl
             return cannot();
         paint(p);
         p.end();
+        addPngText(image, metadata);
         return image.save(fileName, "PNG") || cannot();
     }
     if (suffix == "svg") {
@@ -37,7 +73,9 @@ bool writePaintedFigure(const QString &fileName, QSize size, const QString &titl
         if (!p.begin(&svg))
             return cannot();
         paint(p);
-        return p.end() || cannot();
+        if (!p.end())
+            return cannot();
+        return addSvgMetadata(fileName, metadata, error);
     }
     if (suffix == "pdf") {
         QPdfWriter pdf(fileName);

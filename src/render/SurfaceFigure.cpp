@@ -142,7 +142,8 @@ bool writeSurfaceFigure(const SurfaceFigureSpec &spec, const QString &fileName, 
 {
     const QImage image = renderSurfaceFigure(spec);
     return writePaintedFigure(fileName, image.size(), spec.caption,
-                              [&](QPainter &p) { p.drawImage(0, 0, image); }, error);
+                              [&](QPainter &p) { p.drawImage(0, 0, image); }, error,
+                              spec.metadata);
 }
 
 } // namespace awb

@@ -5,6 +5,7 @@
 // widgets), shared by the CLI and the desktop application's print and export, so that every
 // route draws the same figure from the same camera.
 
+#include "render/FigureFile.h"
 #include "core/ifs/Attractor.h"
 #include "core/render/SurfaceRaster.h"
 
@@ -36,6 +37,7 @@ struct SurfaceFigureSpec {
     int width = 900;
     int height = 700;
     int threads = 0;                 // 0: the machine's cores
+    FigureMetadata metadata;         // written into PNG and SVG files (the item's project)
 };
 
 // The camera SurfaceFigureSpec's picture uses: fitted to framePoints and a coarse iterate.

@@ -10,8 +10,10 @@
 
 #include "gui/app/FigureSheet.h"
 #include "model/AttractorItem.h"
+#include "model/FigureMetadata.h"
 #include "model/NamedMatrix.h"
 #include "model/Project.h"
+#include "model/ProjectIO.h"
 
 #include <QFile>
 #include <QImage>
@@ -38,6 +40,7 @@ private slots:
     void batchMatricesAsLatex();
     void batchBadOptions();
     void sheetMatricesAreAtLeast8pt();
+    void pngCarriesItsItemAndReopens();
 
 private:
     test::BatchRunner m_runner;
@@ -258,6 +261,62 @@ void TestFigureExport::sheetMatricesAreAtLeast8pt()
     QCOMPARE(sheet.matricesShown(), 4);
     const double points = sheet.matrixFontPixels() * 72.0 / 300.0;
     QVERIFY2(points >= 8.0, qPrintable(QString::number(points)));
+}
+
+// A PNG export carries the item's project (and the version) in PNG text chunks, as flam3 keeps
+// its flames; opening the PNG gives back the same item, byte for byte in its JSON, untitled
+// (saving never writes over the picture); attractor-cli reads it too; an SVG carries it in its
+// <metadata>; a PNG from elsewhere is refused with a message.
+void TestFigureExport::pngCarriesItsItemAndReopens()
+{
+    QTemporaryDir out;
+    const QString png = out.filePath("fig2.png"), svg = out.filePath("fig2.svg");
+    QString err;
+    QVERIFY2(run({test::fig2File, "--item", test::fig2Curve, "--export-figure", png,
+                  "--figure-size", "800x600"},
+                 &err) == 0,
+             qPrintable(err));
+    QVERIFY2(run({test::fig2File, "--item", test::fig2Curve, "--export-figure", svg,
+                  "--figure-size", "800x600"},
+                 &err) == 0,
+             qPrintable(err));
+    QImageReader reader(png);
+    QVERIFY(reader.text("Software").startsWith("Attractor Workbench "));
+    QString error;
+    QVERIFY(embeddedProject(png, &error).contains(test::fig2Curve.toUtf8()));
+
+    Project original, reopened;
+    QVERIFY(original.open(test::fig2File));
+    QVERIFY2(reopened.open(png, &error), qPrintable(error));
+    // The item (with the eigenvalue plot under it), nothing else of the project.
+    QCOMPARE(reopened.items().size(), 2);
+    QVERIFY(reopened.findItem(test::fig2Curve));
+    QVERIFY(reopened.fileName().isEmpty());
+    QVERIFY(reopened.isModified());
+    QCOMPARE(ProjectIO::itemToJson(*reopened.findItem(test::fig2Curve)),
+             ProjectIO::itemToJson(*original.findItem(test::fig2Curve)));
+
+    // The CLI renders the item straight from the picture.
+    QProcess cli;
+    cli.start(qEnvironmentVariable("AWB_BIN_DIR", QCoreApplication::applicationDirPath() + "/../bin")
+                  + "/attractor-cli",
+              {"analyse", png, "--json"});
+    QVERIFY(cli.waitForFinished(60000));
+    QCOMPARE(cli.exitCode(), 0);
+    QVERIFY(cli.readAllStandardOutput().contains(test::fig2Curve.toUtf8()));
+
+    const QByteArray svgBytes = readAll(svg);
+    QVERIFY(svgBytes.contains("<metadata id=\"attractor-workbench-project\">"));
+    QVERIFY(svgBytes.contains(test::fig2Curve.toUtf8()));
+
+    // A PNG without an item.
+    QImage plain(8, 8, QImage::Format_RGB32);
+    plain.fill(Qt::white);
+    const QString other = out.filePath("other.png");
+    QVERIFY(plain.save(other));
+    Project none;
+    QVERIFY(!none.open(other, &error));
+    QVERIFY2(error.contains("holds no Attractor Workbench item"), qPrintable(error));
 }
 
 QTEST_MAIN(TestFigureExport)

@@ -16,6 +16,8 @@
 #include "gui/views/RegularityPanel.h"
 #include "gui/views/SpectrumView.h"
 #include "gui/views/SurfaceView.h"
+#include "render/FigureFile.h"
+#include "model/FigureMetadata.h"
 #include "model/AttractorItem.h"
 #include "model/EigenvaluePlotItem.h"
 #include "model/ItemRegistry.h"
@@ -796,9 +798,10 @@ void MainWindow::openDialog()
 {
     if (!maybeSave())
         return;
-    const QString name = QFileDialog::getOpenFileName(this, tr("Open Project"),
-                                                      QFileInfo(m_project->fileName()).path(),
-                                                      fileFilter());
+    const QString name = QFileDialog::getOpenFileName(
+        this, tr("Open Project"), QFileInfo(m_project->fileName()).path(),
+        tr("Projects and figures with their item (*.awb *.png);;Attractor Workbench projects "
+           "(*.awb);;Exported figures (*.png);;All files (*)"));
     if (!name.isEmpty())
         openFile(name);
 }
@@ -981,6 +984,7 @@ bool MainWindow::exportView(const ExportDialog::Options &options, QString *error
             p.setRenderHint(QPainter::Antialiasing);
             paint(p);
         }
+        addPngText(image, figureMetadata());
         ok = image.save(o.fileName);
     } else if (suffix == QLatin1String("svg")) {
         QSvgGenerator svg;
@@ -994,6 +998,12 @@ bool MainWindow::exportView(const ExportDialog::Options &options, QString *error
         if (ok) {
             paint(p);
             ok = p.end();
+        }
+        QString metadataError;
+        if (ok && !addSvgMetadata(o.fileName, figureMetadata(), &metadataError)) {
+            if (error)
+                *error = metadataError;
+            return false;
         }
     } else if (suffix == QLatin1String("pdf")) {
         QPdfWriter pdf(o.fileName);
@@ -1028,6 +1038,15 @@ bool MainWindow::exportView(const ExportDialog::Options &options, QString *error
     if (!ok && error)
         *error = tr("Cannot write %1.").arg(o.fileName);
     return ok;
+}
+
+FigureMetadata MainWindow::figureMetadata() const
+{
+    // The current item's project: the PNG or SVG reopens as this item (File > Open).
+    if (!m_current)
+        return {};
+    const QByteArray bytes = figureProjectBytes(*m_project, *m_current);
+    return {figurePngTexts(bytes), svgMetadataElement(bytes)};
 }
 
 QString MainWindow::matricesLatex() const

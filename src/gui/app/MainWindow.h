@@ -7,6 +7,7 @@
 // tests can drive the window without modal boxes.
 #include "gui/app/Dialogs.h"
 #include "model/Item.h"
+#include "render/FigureFile.h"
 #include <QMainWindow>
 #include <QPointer>
 #include <memory>
@@ -66,6 +67,8 @@ public:
     bool exportView(const ExportDialog::Options &options, QString *error = nullptr);
     // The current item's matrices as LaTeX (Edit > Copy Matrices as LaTeX, .tex export).
     QString matricesLatex() const;
+    // What exported PNG and SVG files carry: the current item's project (it reopens).
+    FigureMetadata figureMetadata() const;
     // The figure sheet of the current item as a PDF page.
     bool printToPdf(const QString &fileName, QString *error = nullptr);
     // The points F^depth(X0) of the item drawn (the current item, or an eigenvalue plot's
