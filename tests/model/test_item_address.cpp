@@ -2,6 +2,7 @@
 // control points S_w P of a sub-copy, and the point export limited to a sub-copy (`attractor-cli
 // points --address`), which must be f_w applied to the points written without it.
 
+#include "PointCsv.h"
 #include "TestProjects.h"
 
 #include "model/ItemAddress.h"
@@ -14,22 +15,6 @@ using namespace awb;
 using namespace awb::test;
 
 namespace {
-
-// The rows x, y of the CSV text (header skipped) and the map column.
-Mat csvPoints(const QByteArray &csv, std::vector<int> *maps = nullptr)
-{
-    QList<QByteArray> lines = csv.trimmed().split('\n');
-    lines.removeFirst();
-    Mat out(lines.size(), 2);
-    for (int i = 0; i < lines.size(); ++i) {
-        const QList<QByteArray> f = lines[i].split(',');
-        out(i, 0) = f[0].toDouble();
-        out(i, 1) = f[1].toDouble();
-        if (maps)
-            maps->push_back(f[2].toInt());
-    }
-    return out;
-}
 
 QByteArray writeCsv(const DerivedIfs &d, const StartSet &start, int depth, const Address &w)
 {

@@ -546,6 +546,7 @@ void ItemController::refreshNow()
         m_problem = problem;
         emit problemChanged(problem);
     }
+    emit refreshed();
 }
 
 void ItemController::setRegularityPanel(RegularityPanel *panel)

@@ -134,6 +134,7 @@ void AttractorView::paintScene(QPainter &p, const Mapping &m, bool forExport)
     if (isLayerVisible(Layer::Hutchinson) && !m_hutch.empty())
         paintVectorImages(p, m, m_hutch, m_start.kind);
 
+    paintHighlight(p, m);
     paintHandles(p, m);
     paintLegend(p, m);
 }
