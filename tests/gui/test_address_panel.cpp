@@ -143,6 +143,15 @@ void TestAddressPanel::typedAddressHighlightsSubCopy()
         QVERIFY((h.points.row(i).array() >= lo.array()).all()
                 && (h.points.row(i).array() <= hi.array()).all());
     QVERIFY(w.addressPanel()->details().contains(QStringLiteral("S_2 S_2 S_1 P")));
+    // The whole piece is drawn: points near both of its ends, t = 0.375 and t = 0.5.
+    const StartSet start = item->coreStartSet(*d);
+    const double extent = (expected.colwise().maxCoeff() - expected.colwise().minCoeff()).norm();
+    for (const Address &end : {Address{0, 1, 1}, Address{1}}) {
+        const QPointF q = pointOf(*d, start, end);
+        const RowVec e = (RowVec(2) << q.x(), q.y()).finished();
+        const double nearest = (h.points.rowwise() - e).rowwise().norm().minCoeff();
+        QVERIFY2(nearest < 0.01 * extent, qPrintable(QString::number(nearest / extent)));
+    }
     // The view draws it: highlight pixels appear.
     const QImage image = view->grab().toImage().convertToFormat(QImage::Format_RGB32);
     int magenta = 0;   // (200, 0, 120), antialiased
@@ -211,6 +220,14 @@ void TestAddressPanel::intervalSelectsPiece()
     QVERIFY((h.controlPolygons[0] - expected).cwiseAbs().maxCoeff() < 1e-12);
     QVERIFY(h.points.rows() > 100);
     QVERIFY(w.addressPanel()->details().contains(QStringLiteral("0,1")));
+    // From t = 0.25 to t = 0.5.
+    const auto d = item->derivedIfs();
+    const double extent = (expected.colwise().maxCoeff() - expected.colwise().minCoeff()).norm();
+    for (const Address &end : {Address{0, 1}, Address{1}}) {
+        const QPointF q = pointOf(*d, item->coreStartSet(*d), end);
+        const RowVec e = (RowVec(2) << q.x(), q.y()).finished();
+        QVERIFY((h.points.rowwise() - e).rowwise().norm().minCoeff() < 0.01 * extent);
+    }
     QVERIFY(w.addressPanel()->select(QStringLiteral("[0.25, 0.625]")));
     QCOMPARE(w.attractorView()->highlight().controlPolygons.size(), std::size_t(2));
     QString error;

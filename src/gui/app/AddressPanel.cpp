@@ -41,6 +41,27 @@ Mat stackViews(const std::vector<Mat> &views)
     return out;
 }
 
+// The samples f_u(x*) of a shorter length, at most maxPoints of them, spread over the whole
+// attractor: those whose last symbols are 0 (f_0(x*) = x*). Every k-th row would not do: the
+// iteration emits the words in an order where the first symbol alternates fastest.
+std::vector<Eigen::Index> coarserSamples(const AddressedPoints &a, Eigen::Index maxPoints)
+{
+    int zeros = 0;
+    Eigen::Index count = a.size();
+    while (count > maxPoints && zeros < a.length) {
+        count /= a.maps;
+        ++zeros;
+    }
+    std::vector<Eigen::Index> rows;
+    rows.reserve(std::size_t(count));
+    for (Eigen::Index i = 0; i < a.size(); ++i) {
+        const std::uint8_t *end = a.symbols.data() + std::size_t(i + 1) * std::size_t(a.length);
+        if (std::all_of(end - zeros, end, [](std::uint8_t s) { return s == 0; }))
+            rows.push_back(i);
+    }
+    return rows;
+}
+
 // "S_2 S_2 S_1 P" for w = 0,1,1: the matrices as the Matrices dock names them (1-based).
 QString productName(const Address &w)
 {
@@ -242,7 +263,7 @@ bool AddressPanel::apply(const QString &text, QString *error)
     }
     const DerivedIfs &d = *m_derived;
     const AddressedPoints &samples = *m_samples;
-    const Eigen::Index stride = std::max<Eigen::Index>(1, samples.size() / kHighlightPoints);
+    const std::vector<Eigen::Index> coarse = coarserSamples(samples, kHighlightPoints);
     AttractorView::Highlight h;
     QString html;
     try {
@@ -252,17 +273,16 @@ bool AddressPanel::apply(const QString &text, QString *error)
                                     "a real parameter; this item has none").toStdString());
             // The sampled points whose t lies in [t0, t1], and the largest pieces inside it.
             std::vector<Eigen::Index> rows;
-            for (Eigen::Index i = 0; i < samples.size(); ++i) {
+            for (Eigen::Index i : coarse) {
                 const double t = addressInterval(m_pieces, samples.address(i)).t0;
                 if (t >= interval->t0 && t <= interval->t1)
                     rows.push_back(i);
             }
-            const std::size_t step = std::max<std::size_t>(1, rows.size() / kHighlightPoints);
             std::vector<Mat> views;
             for (const Mat &shown : samples.shown) {
-                Mat v(Eigen::Index((rows.size() + step - 1) / step), shown.cols());
-                for (std::size_t k = 0; k < rows.size(); k += step)
-                    v.row(Eigen::Index(k / step)) = shown.row(rows[k]);
+                Mat v(Eigen::Index(rows.size()), shown.cols());
+                for (std::size_t k = 0; k < rows.size(); ++k)
+                    v.row(Eigen::Index(k)) = shown.row(rows[k]);
                 views.push_back(v);
             }
             h.points = stackViews(views);
@@ -287,9 +307,9 @@ bool AddressPanel::apply(const QString &text, QString *error)
         } else {
             const Address w = parseItemAddress(text, d);
             const AffineMap f = composeAddress(d.ifs, w);
-            Mat space(Eigen::Index((samples.size() + stride - 1) / stride), samples.space.cols());
-            for (Eigen::Index i = 0, r = 0; i < samples.size(); i += stride, ++r)
-                space.row(r) = samples.space.row(i);
+            Mat space(Eigen::Index(coarse.size()), samples.space.cols());
+            for (std::size_t r = 0; r < coarse.size(); ++r)
+                space.row(Eigen::Index(r)) = samples.space.row(coarse[r]);
             const Mat image = applyMap(f, space);
             std::vector<Mat> views;
             for (const Projection &v : d.ifs.views)
