@@ -61,6 +61,17 @@ QPointF pointOf(const DerivedIfs &d, const StartSet &start, const Address &w)
     return {x(0, 0), x(0, 1)};
 }
 
+// Whether `points` (n x 2) has a point within 1% of the extent of `polygon` from the curve
+// point of address `end`.
+bool drawsNear(const Mat &points, const Mat &polygon, const DerivedIfs &d, const StartSet &start,
+               const Address &end)
+{
+    const double extent = (polygon.colwise().maxCoeff() - polygon.colwise().minCoeff()).norm();
+    const QPointF q = pointOf(d, start, end);
+    const RowVec e = (RowVec(2) << q.x(), q.y()).finished();
+    return (points.rowwise() - e).rowwise().norm().minCoeff() < 0.01 * extent;
+}
+
 } // namespace
 
 class TestAddressPanel : public QObject {
@@ -73,9 +84,19 @@ private slots:
     void intervalSelectsPiece();
 
 private:
+    // A shown window on a new project (one cubic B-spline) with its views filled.
+    std::unique_ptr<test::ShownWindow> openWindow();
+
     QTemporaryDir m_dir;
     QString m_recovery;
 };
+
+std::unique_ptr<test::ShownWindow> TestAddressPanel::openWindow()
+{
+    auto shown = std::make_unique<test::ShownWindow>(m_recovery, QSize(1300, 850));
+    shown->window.controller()->refreshNow();
+    return shown;
+}
 
 void TestAddressPanel::initTestCase()
 {
@@ -85,12 +106,11 @@ void TestAddressPanel::initTestCase()
 
 void TestAddressPanel::hoverShowsAddressAndT()
 {
-    test::ShownWindow shown(m_recovery, {1300, 850});
-    QVERIFY(shown.exposed);
-    MainWindow &w = shown.window;
+    const auto shown = openWindow();
+    QVERIFY(shown->exposed);
+    MainWindow &w = shown->window;
     auto *item = qobject_cast<SubdivisionCurveItem *>(w.currentItem());
     QVERIFY(item && item->scheme().kind == SchemeSpec::Kind::BSpline);
-    w.controller()->refreshNow();
     AttractorView *view = w.attractorView();
     const auto d = item->derivedIfs();
     // t = 0.34375 + 1/64: the middle of the piece 0,1,0,1,1 (far from coarser boundaries).
@@ -117,11 +137,10 @@ void TestAddressPanel::hoverShowsAddressAndT()
 
 void TestAddressPanel::typedAddressHighlightsSubCopy()
 {
-    test::ShownWindow shown(m_recovery, {1300, 850});
-    QVERIFY(shown.exposed);
-    MainWindow &w = shown.window;
+    const auto shown = openWindow();
+    QVERIFY(shown->exposed);
+    MainWindow &w = shown->window;
     auto *item = qobject_cast<AttractorItem *>(w.currentItem());
-    w.controller()->refreshNow();
     const int undoBefore = w.project()->undoStack()->count();
     auto *edit = w.findChild<QLineEdit *>(QStringLiteral("addressEdit"));
     QVERIFY(edit);
@@ -144,14 +163,8 @@ void TestAddressPanel::typedAddressHighlightsSubCopy()
                 && (h.points.row(i).array() <= hi.array()).all());
     QVERIFY(w.addressPanel()->details().contains(QStringLiteral("S_2 S_2 S_1 P")));
     // The whole piece is drawn: points near both of its ends, t = 0.375 and t = 0.5.
-    const StartSet start = item->coreStartSet(*d);
-    const double extent = (expected.colwise().maxCoeff() - expected.colwise().minCoeff()).norm();
-    for (const Address &end : {Address{0, 1, 1}, Address{1}}) {
-        const QPointF q = pointOf(*d, start, end);
-        const RowVec e = (RowVec(2) << q.x(), q.y()).finished();
-        const double nearest = (h.points.rowwise() - e).rowwise().norm().minCoeff();
-        QVERIFY2(nearest < 0.01 * extent, qPrintable(QString::number(nearest / extent)));
-    }
+    for (const Address &end : {Address{0, 1, 1}, Address{1}})
+        QVERIFY(drawsNear(h.points, expected, *d, item->coreStartSet(*d), end));
     // The view draws it: highlight pixels appear.
     const QImage image = view->grab().toImage().convertToFormat(QImage::Format_RGB32);
     int magenta = 0;   // (200, 0, 120), antialiased
@@ -180,11 +193,10 @@ void TestAddressPanel::typedAddressHighlightsSubCopy()
 
 void TestAddressPanel::clickPinsAddressAndSelectsPrefix()
 {
-    test::ShownWindow shown(m_recovery, {1300, 850});
-    QVERIFY(shown.exposed);
-    MainWindow &w = shown.window;
+    const auto shown = openWindow();
+    QVERIFY(shown->exposed);
+    MainWindow &w = shown->window;
     auto *item = qobject_cast<AttractorItem *>(w.currentItem());
-    w.controller()->refreshNow();
     AttractorView *view = w.attractorView();
     const auto d = item->derivedIfs();
     const Address w0{1, 0, 1, 1, 0, 1};
@@ -208,11 +220,10 @@ void TestAddressPanel::clickPinsAddressAndSelectsPrefix()
 
 void TestAddressPanel::intervalSelectsPiece()
 {
-    test::ShownWindow shown(m_recovery, {1300, 850});
-    QVERIFY(shown.exposed);
-    MainWindow &w = shown.window;
+    const auto shown = openWindow();
+    QVERIFY(shown->exposed);
+    MainWindow &w = shown->window;
     auto *item = qobject_cast<AttractorItem *>(w.currentItem());
-    w.controller()->refreshNow();
     QVERIFY(w.addressPanel()->select(QStringLiteral("[0.25, 0.5]")));
     const AttractorView::Highlight &h = w.attractorView()->highlight();
     QCOMPARE(h.controlPolygons.size(), std::size_t(1));   // exactly the piece 0,1
@@ -222,12 +233,8 @@ void TestAddressPanel::intervalSelectsPiece()
     QVERIFY(w.addressPanel()->details().contains(QStringLiteral("0,1")));
     // From t = 0.25 to t = 0.5.
     const auto d = item->derivedIfs();
-    const double extent = (expected.colwise().maxCoeff() - expected.colwise().minCoeff()).norm();
-    for (const Address &end : {Address{0, 1}, Address{1}}) {
-        const QPointF q = pointOf(*d, item->coreStartSet(*d), end);
-        const RowVec e = (RowVec(2) << q.x(), q.y()).finished();
-        QVERIFY((h.points.rowwise() - e).rowwise().norm().minCoeff() < 0.01 * extent);
-    }
+    for (const Address &end : {Address{0, 1}, Address{1}})
+        QVERIFY(drawsNear(h.points, expected, *d, item->coreStartSet(*d), end));
     QVERIFY(w.addressPanel()->select(QStringLiteral("[0.25, 0.625]")));
     QCOMPARE(w.attractorView()->highlight().controlPolygons.size(), std::size_t(2));
     QString error;
