@@ -66,9 +66,31 @@ void AttractorView::paintHighlight(QPainter &p, const Mapping &m) const
         const QFontMetricsF fm(f, p.device());
         const double pad = 5.0 * u;
         const QRectF text = fm.boundingRect(m_highlight.caption);
-        const QRectF box(m.target.left() + pad,
-                         m.target.bottom() - pad - text.height() - 2 * pad,
-                         text.width() + 3 * pad, text.height() + 2 * pad);
+        const QSizeF size(text.width() + 3 * pad, text.height() + 2 * pad);
+        // A bottom corner above the grid's axis labels (left first), or a top one: the one
+        // that covers the fewest control points and points of the sub-copy.
+        const double above = isLayerVisible(Layer::Grid) ? fm.height() + 2 * pad : pad;
+        const double left = m.target.left() + 4 * pad;
+        const double right = m.target.right() - 2 * pad - size.width();
+        const double bottom = m.target.bottom() - above - size.height();
+        const double top = m.target.top() + 6 * pad + fm.height();   // under a legend
+        QRectF box;
+        int fewest = -1;
+        for (const QPointF corner : {QPointF(left, bottom), QPointF(right, bottom),
+                                     QPointF(right, top), QPointF(left, top)}) {
+            const QRectF candidate(corner, size);
+            const QRectF grown = candidate.adjusted(-2 * r, -2 * r, 2 * r, 2 * r);
+            int covered = 0;
+            for (int i = 0; i < int(m_control.size()); ++i)
+                covered += 100 * grown.contains(m.map(controlPointPosition(i)));
+            for (Eigen::Index i = 0; i < m_highlight.points.rows(); i += 16)
+                covered += grown.contains(
+                    m.map(QPointF(m_highlight.points(i, 0), m_highlight.points(i, 1))));
+            if (fewest < 0 || covered < fewest) {
+                fewest = covered;
+                box = candidate;
+            }
+        }
         p.setPen(QPen(kHighlightColour, 1.0 * u));
         p.setBrush(QColor(255, 255, 255, 230));
         p.drawRect(box);
