@@ -6,6 +6,7 @@
 #include "model/FigureMetadata.h"
 #include "model/AttractorItem.h"
 #include "model/ExactCurve.h"
+#include "model/ItemAddress.h"
 #include "model/NumberFormat.h"
 #include "model/PointExport.h"
 #include "model/Project.h"
@@ -647,7 +648,8 @@ int points(const QStringList &args)
         QCommandLineParser parser;
         parser.setApplicationDescription(
             "Print the points of F^k(X0) as CSV: x, y (and z for a surface), the map applied "
-            "last (1-based), and the view.");
+            "last (1-based), and the view. --address w limits them to the sub-copy f_w(A): "
+            "the points f_w(F^k(X0)).");
         parser.addPositionalArgument("project", "The .awb project file.");
         parser.addOptions({{"item", "The item.", "name"},
                            {"depth", "Iteration depth (default: the item's).", "k"},
@@ -658,6 +660,9 @@ int points(const QStringList &args)
                                      "item's).",
                             "set"},
                            {"csv", "Print CSV (the only format so far)."},
+                           {"address", "Only the sub-copy f_w(A) of this address: 0-based map "
+                                       "numbers, w_1 (the outermost map) first, e.g. 0,1,1.",
+                            "w"},
                            {"max-points", "Refuse to print more (default 10000000).", "n",
                             "10000000"}});
         parseOrFail(parser, args, 1);
@@ -671,6 +676,16 @@ int points(const QStringList &args)
         auto d = derived(item);
         const int depth = parser.isSet("depth") ? intOption(parser, "depth", 0, 64)
                                                 : item->algorithm().depth;
+        Address address;
+        if (parser.isSet("address")) {
+            try {
+                address = parseItemAddress(parser.value("address"), *d);
+            } catch (const InputError &e) {
+                throw Failure{QString("--address %1: %2")
+                                  .arg(parser.value("address"), QString::fromStdString(e.what())),
+                              2};
+            }
+        }
         StartSet start = item->coreStartSet(*d);
         if (parser.isSet("start") && parser.value("start").startsWith("lifted:")) {
             // Points of the lifted space, ';' between points: lifted:x,y,c1,..;x,y,c1,..
@@ -705,7 +720,7 @@ int points(const QStringList &args)
         std::atomic<bool> cancel{false};
         IterationControl control;
         control.cancel = &cancel;
-        writePointsCsv(stdoutFile, *d, start, depth, control);
+        writePointsCsv(stdoutFile, *d, start, depth, control, address);
         stdoutFile.flush();
         return 0;
     });

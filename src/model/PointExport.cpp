@@ -18,15 +18,24 @@ void put(QIODevice &out, const QByteArray &bytes)
         throw InputError(tr("cannot write the points: %1").arg(out.errorString()).toStdString());
 }
 
-// Streams F^depth(X0) to `visit(point row of one view, view index, 0-based map or -1)`.
+// Streams f_w(F^depth(X0)) (w = `address`, empty: the identity) to `visit(point row of one
+// view, view index, 0-based map or -1)`.
 template <class Visit>
-void iteratePoints(const DerivedIfs &d, const StartSet &start, int depth,
+void iteratePoints(const DerivedIfs &d, const StartSet &start, int depth, const Address &address,
                    const IterationControl &control, Visit &&visit)
 {
+    if (!address.empty() && d.iterate)
+        throw InputError(tr("--address needs an item drawn by one IFS; this one is drawn by "
+                            "an automaton").toStdString());
+    const AffineMap prefix = composeAddress(d.ifs, address);
     CallbackSink sink([&](const Mat &v, StartSet::Kind, const std::uint8_t *a, int n) {
-        const int map = n > 0 ? d.analysisIndex(a[0]) : -1;
+        // The map applied last is the address's first symbol when there is one.
+        const int map = !address.empty() ? d.analysisIndex(address.front())
+                        : n > 0          ? d.analysisIndex(a[0])
+                                         : -1;
+        const Mat x = address.empty() ? v : applyMap(prefix, v);
         for (std::size_t k = 0; k < d.ifs.views.size(); ++k) {
-            const Mat p = awb::project(d.ifs.views[k], v);
+            const Mat p = awb::project(d.ifs.views[k], x);
             for (Eigen::Index r = 0; r < p.rows(); ++r)
                 visit(RowVec(p.row(r)), int(k), map);
         }
@@ -53,12 +62,12 @@ bool exportsSpacePoints(const DerivedIfs &d)
 }
 
 std::uint64_t writePointsCsv(QIODevice &out, const DerivedIfs &d, const StartSet &start,
-                             int depth, const IterationControl &control)
+                             int depth, const IterationControl &control, const Address &address)
 {
     put(out, exportsSpacePoints(d) ? "x,y,z,map,view\n" : "x,y,map,view\n");
     QByteArray buffer;
     std::uint64_t written = 0;
-    iteratePoints(d, start, depth, control, [&](const RowVec &p, int view, int map) {
+    iteratePoints(d, start, depth, address, control, [&](const RowVec &p, int view, int map) {
         for (Eigen::Index c = 0; c < p.size(); ++c)
             buffer += QByteArray::number(p(c), 'g', 17) + ',';
         buffer += QByteArray::number(map + 1) + ',' + QByteArray::number(view + 1) + '\n';
@@ -93,7 +102,7 @@ std::uint64_t writePointsPly(QIODevice &out, const QString &title, const Derived
                  .toUtf8());
     QByteArray buffer;
     std::uint64_t written = 0;
-    iteratePoints(d, start, depth, control, [&](const RowVec &p, int, int map) {
+    iteratePoints(d, start, depth, {}, control, [&](const RowVec &p, int, int map) {
         map = std::max(map, 0);
         const QColor c = color(map);
         const float xyz[3] = {float(p(0)), float(p(1)), p.size() > 2 ? float(p(2)) : 0.0f};

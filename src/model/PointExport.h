@@ -5,6 +5,7 @@
 // File > Export Points. The iteration runs on the calling thread and can be cancelled through
 // the IterationControl.
 
+#include "core/ifs/Address.h"
 #include "core/ifs/Attractor.h"
 
 #include <QColor>
@@ -27,9 +28,12 @@ bool exportsSpacePoints(const DerivedIfs &d);
 
 // CSV: the header "x,y,map,view" (or "x,y,z,map,view"), then one line per point with 17
 // significant digits, the map 1-based (0 for X0 itself) and the view 1-based. Returns the
-// number of points; throws InputError when the device refuses to write.
+// number of points; throws InputError when the device refuses to write. A non-empty `address`
+// w (ifs/Address.h) writes the sub-copy f_w(F^depth(X0)) instead: the same number of points,
+// each the image under f_w of the point written without it, its map that of w's first symbol.
 std::uint64_t writePointsCsv(QIODevice &out, const DerivedIfs &d, const StartSet &start,
-                             int depth, const IterationControl &control = {});
+                             int depth, const IterationControl &control = {},
+                             const Address &address = {});
 
 // Binary little-endian PLY: x, y, z as float (z = 0 for plane points), red, green, blue of
 // `color(map)` and the 0-based map as uchar; `title` goes into a comment. Readable by MeshLab,

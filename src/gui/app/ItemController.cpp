@@ -513,6 +513,7 @@ void ItemController::refreshNow()
         m_problem = problem;
         emit problemChanged(problem);
     }
+    emit refreshed();
 }
 
 void ItemController::setRegularityPanel(RegularityPanel *panel)

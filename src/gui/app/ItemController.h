@@ -97,6 +97,8 @@ signals:
     void analysisStarted();
     void analysisProgress(double fraction);
     void analysisFinished(bool cancelled);
+    // The views got the drawn item's current data (after refreshNow()).
+    void refreshed();
 
 private:
     void scheduleRefresh();

@@ -1,5 +1,6 @@
 #include "gui/app/MainWindow.h"
 
+#include "gui/app/AddressPanel.h"
 #include "gui/app/FigureSheet.h"
 #include "gui/app/ItemController.h"
 #include "gui/app/Messages.h"
@@ -222,6 +223,10 @@ void MainWindow::createViews()
     auto *regularity = new RegularityPanel;
     m_charts->layout()->addWidget(regularity);
     m_controller->setRegularityPanel(regularity);
+    // Addresses of the attractor (issue 16): the status bar shows the hovered one, the
+    // Address dock selects a sub-copy.
+    m_address = new AddressPanel(m_controller, m_attractor);
+    m_address->setObjectName(QStringLiteral("addressPanel"));
     // A click on a control point in the 3D view selects its row: x, y, z to edit exactly.
     connect(m_surface, &SurfaceView::controlPointPressed, this, [this](int index) {
         if (auto *t = qobject_cast<QTableWidget *>(m_properties->editor(QStringLiteral("points"))))
@@ -343,7 +348,9 @@ void MainWindow::createViews()
         m_messages->error(this, tr("Edit refused"), message);
     });
     connect(m_attractor, &AttractorView::cursorMoved, this, [this](const QPointF &w) {
-        m_cursorLabel->setText(tr("x = %1, y = %2").arg(w.x(), 0, 'g', 5).arg(w.y(), 0, 'g', 5));
+        const QString address = m_address->hoverText(w);
+        const QString at = tr("x = %1, y = %2").arg(w.x(), 0, 'g', 5).arg(w.y(), 0, 'g', 5);
+        m_cursorLabel->setText(address.isEmpty() ? at : at + QStringLiteral("   ") + address);
     });
     connect(m_attractor, &AttractorView::cursorLeft, m_cursorLabel, &QLabel::clear);
     connect(m_attractor, &AttractorView::renderFailed, this, [this](const QString &message) {
@@ -558,7 +565,10 @@ void MainWindow::createDocks()
                                Qt::RightDockWidgetArea);
     tabifyDockWidget(props, undo);
     props->raise();
+    QDockWidget *address = dock(QStringLiteral("dockAddress"), tr("Address"), m_address,
+                                Qt::RightDockWidgetArea);
     tabifyDockWidget(mats, charts);
+    tabifyDockWidget(charts, address);
     mats->raise();
     // A sensible first layout: side columns wide enough for their tables and plots.
     resizeDocks({tree, props}, {200, 560}, Qt::Vertical);

@@ -28,6 +28,7 @@ class QUndoView;
 
 namespace awb {
 
+class AddressPanel;
 class AnalysisCharts;
 class AttractorView;
 class Item;
@@ -82,6 +83,7 @@ public:
     MatrixView *matrixView() const { return m_matrices; }
     SpectrumView *spectrumView() const { return m_spectrum; }
     AnalysisCharts *analysisCharts() const { return m_charts; }
+    AddressPanel *addressPanel() const { return m_address; }
     PropertiesWidget *propertiesWidget() const { return m_properties; }
     ItemController *controller() const { return m_controller; }
     QTreeView *projectTree() const { return m_tree; }
@@ -147,6 +149,7 @@ private:
     MatrixView *m_matrices = nullptr;
     SpectrumView *m_spectrum = nullptr;
     AnalysisCharts *m_charts = nullptr;
+    AddressPanel *m_address = nullptr;
     PropertiesWidget *m_properties = nullptr;
     QTreeView *m_tree = nullptr;
     QUndoView *m_undoView = nullptr;

@@ -6,7 +6,8 @@
 // the owner's job); it never changes the data itself. The plane is shown with equal axis scale.
 // A running render can be cancelled (Esc, cancelRender()) and started again (F5, renderAgain()).
 // The class is defined across AttractorView.cpp, AttractorViewPainting.cpp,
-// AttractorViewEvents.cpp and AttractorViewImages.cpp (helpers: AttractorViewDetail.h).
+// AttractorViewEvents.cpp, AttractorViewImages.cpp and AttractorViewHighlight.cpp (helpers:
+// AttractorViewDetail.h).
 
 #include "gui/views/AttractorRenderer.h"
 
@@ -85,6 +86,18 @@ public:
     void setStartSetEditable(bool editable) { m_editStart = editable; }
     // Fit the view to the content whenever data arrives, until the user zooms or pans.
     void setAutoFit(bool on) { m_autoFit = on; }
+
+    // ---- a selected sub-copy (view state, not a document edit): points of f_w(A) drawn over
+    // the attractor, the control polygons S_w P of its pieces, and a caption. Drawn in
+    // exports too. An empty highlight (no points, no polygons) clears it.
+    struct Highlight {
+        Mat points;                         // n x 2, plane coordinates
+        std::vector<Mat> controlPolygons;   // m x 2 each
+        QString caption;                    // e.g. "w = 0,1,1   t in [0.375, 0.5]"
+        bool empty() const { return points.rows() == 0 && controlPolygons.empty(); }
+    };
+    void setHighlight(const Highlight &highlight);
+    const Highlight &highlight() const { return m_highlight; }
 
     // ---- world <-> screen (widget pixels), equal scale on both axes, y up ----
     QPointF worldToScreen(const QPointF &world) const;
@@ -177,6 +190,9 @@ signals:
     // The world coordinates under the cursor (for a status bar); cursorLeft when it leaves.
     void cursorMoved(const QPointF &world);
     void cursorLeft();
+    // A left click (no drag) away from the handles, e.g. on the attractor: the owner may
+    // select the sub-copy there.
+    void attractorClicked(const QPointF &world);
     void viewChanged();
     // Rendering state, forwarded from the renderer.
     void renderProgress(double fraction);
@@ -237,6 +253,7 @@ private:
                            StartSet::Kind kind) const;
     void paintHandles(QPainter &p, const Mapping &m) const;
     void paintLegend(QPainter &p, const Mapping &m) const;
+    void paintHighlight(QPainter &p, const Mapping &m) const;
     void paintStatus(QPainter &p) const;
 
     // The render of `world` into `size` pixels with the current data and settings; dots are
@@ -303,6 +320,8 @@ private:
 
     Drag m_drag;
     int m_hoverControl = -1, m_hoverStart = -1;
+    std::optional<QPointF> m_clickPress;   // a left press on empty space: maybe a click
+    Highlight m_highlight;
 };
 
 } // namespace awb

@@ -107,6 +107,7 @@ void AttractorView::mousePressEvent(QMouseEvent *event)
     }
     const QPointF pos = event->position();
     m_drag = Drag();
+    m_clickPress.reset();
     m_drag.pressScreen = m_drag.lastScreen = pos;
     m_drag.pressWorld = screenToWorld(pos);
     if (event->button() == Qt::LeftButton) {
@@ -128,6 +129,8 @@ void AttractorView::mousePressEvent(QMouseEvent *event)
             else
                 emit startVertexPressed(m_drag.index);
             update();
+        } else {
+            m_clickPress = pos;
         }
     } else if (event->button() == Qt::MiddleButton || event->button() == Qt::RightButton) {
         m_drag.kind = DragKind::Pan;
@@ -188,6 +191,10 @@ void AttractorView::mouseReleaseEvent(QMouseEvent *event)
                       || ((d.kind == DragKind::ControlPoint || d.kind == DragKind::StartVertex)
                           && event->button() == Qt::LeftButton);
     if (!ends) {
+        if (d.kind == DragKind::None && event->button() == Qt::LeftButton && m_clickPress
+            && QLineF(*m_clickPress, event->position()).length() < kClickSlop)
+            emit attractorClicked(screenToWorld(event->position()));
+        m_clickPress.reset();
         event->accept();
         return;
     }

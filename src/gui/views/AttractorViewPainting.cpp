@@ -120,6 +120,7 @@ void AttractorView::paintScene(QPainter &p, const Mapping &m, bool forExport)
     if (isLayerVisible(Layer::Hutchinson) && !m_hutch.empty())
         paintVectorImages(p, m, m_hutch, m_start.kind);
 
+    paintHighlight(p, m);
     if (!forExport || m_exportStyle.handles)
         paintHandles(p, m);
     paintLegend(p, m);
