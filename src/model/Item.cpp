@@ -50,6 +50,22 @@ bool Item::setStyle(const StyleSpec &style, int gesture)
     return true;
 }
 
+bool Item::setAnimation(const AnimationSpec &animation, QString *error)
+{
+    AnimationSpec spec = animation;
+    if (spec.isEmpty())
+        spec = AnimationSpec{0.0, 25.0, {}};
+    else if (const MaybeProblem p = animationProblem(*this, spec)) {
+        if (error)
+            *error = p->field.isEmpty() ? p->message
+                                        : QStringLiteral("%1: %2").arg(p->field, p->message);
+        return false;
+    }
+    applyProperty(&Item::m_animation, spec, &Item::animationChanged,
+                  tr("Edit animation of %1").arg(m_name));
+    return true;
+}
+
 void Item::execute(QUndoCommand *command)
 {
     if (m_project) {
@@ -75,6 +91,8 @@ void Item::write(QJsonObject &json) const
         json.insert(it.key(), it.value());
     json["name"] = m_name;
     json["style"] = ProjectIO::styleToJson(m_style);
+    if (!m_animation.isEmpty())
+        json["animation"] = animationToJson(m_animation);
 }
 
 void Item::read(const FieldReader &fields)
@@ -84,6 +102,11 @@ void Item::read(const FieldReader &fields)
         fields.fail("name", tr("the name cannot be empty"));
     if (auto style = fields.object("style"))
         m_style = ProjectIO::readStyle(*style);
+    if (auto animation = fields.object("animation")) {
+        m_animation = readAnimation(*animation);
+        if (m_animation.isEmpty())
+            m_animation = AnimationSpec{0.0, 25.0, {}};
+    }
 }
 
 void Item::checkLoaded(const FieldReader &) const {}

@@ -6,6 +6,7 @@
 // through an undo command on the project's stack (STYLE.md §5-6). An item that is not in a
 // project (being built, or loaded) applies its setters directly.
 
+#include "model/Animation.h"
 #include "model/ItemValues.h"
 #include "model/Parameters.h"
 
@@ -92,6 +93,11 @@ public:
     // (Project::beginGesture) merge into one undo step.
     bool setStyle(const StyleSpec &style, int gesture = 0);
 
+    // Keyframed parameters (Animation.h). Undoable, one step; refused (false, *error says why)
+    // when animationProblem() objects. An empty spec removes the animation.
+    const AnimationSpec &animation() const { return m_animation; }
+    bool setAnimation(const AnimationSpec &animation, QString *error = nullptr);
+
     // Position in the tree. Top-level items have no parent item.
     Project *project() const { return m_project; }
     Item *parentItem() const { return m_parent; }
@@ -139,6 +145,7 @@ public:
 signals:
     void nameChanged();
     void styleChanged();
+    void animationChanged();
     // Any input of this item changed (after the property's own signal).
     void changed();
     // Cached derived data was dropped: views showing it should ask again.
@@ -171,6 +178,7 @@ private:
 
     QString m_name;
     StyleSpec m_style;
+    AnimationSpec m_animation{0.0, 25.0, {}};
     QJsonObject m_unknownFields;
     Project *m_project = nullptr;
     Item *m_parent = nullptr;

@@ -388,8 +388,24 @@ bool ProjectIO::parseRoot(const QJsonObject &root, const QString &source, Projec
     return true;
 }
 
+std::unique_ptr<Item> ProjectIO::copyItem(const Item &item, QString *error)
+{
+    QJsonObject json = itemToJson(item);
+    json.remove(QStringLiteral("children"));
+    QSet<QString> names;
+    try {
+        return readItem(json, QStringLiteral("1"), names, false);
+    } catch (const ItemError &e) {
+        if (error)
+            *error = e.error.field.isEmpty()
+                         ? e.error.message
+                         : tr("field \"%1\": %2").arg(e.error.field, e.error.message);
+    }
+    return nullptr;
+}
+
 std::unique_ptr<Item> ProjectIO::readItem(const QJsonValue &value, const QString &label,
-                                          QSet<QString> &names)
+                                          QSet<QString> &names, bool checkAnimation)
 {
     if (!value.isObject())
         throw ItemError{label, {}, {{}, tr("expected an object")}};
@@ -404,6 +420,11 @@ std::unique_ptr<Item> ProjectIO::readItem(const QJsonValue &value, const QString
                                .arg(quoted(type), ItemRegistry::instance().types().join(", ")));
         item->read(r);
         item->checkLoaded(r);
+        if (checkAnimation)
+            if (const MaybeProblem p = animationProblem(*item, item->animation()))
+                r.fail(p->field.isEmpty() ? QStringLiteral("animation")
+                                          : QStringLiteral("animation.") + p->field,
+                       p->message);
         if (names.contains(name))
             r.fail("name", tr("another item is already called %1").arg(quoted(name)));
         names.insert(name);

@@ -94,6 +94,10 @@ public:
     // Atomic write (QSaveFile). The message starts with the file name.
     static bool writeFile(const QString &fileName, const QByteArray &bytes, QString *error);
 
+    // A copy of `item` without its children, in no project (through its JSON, so every field
+    // is copied); nullptr with *error when the item does not read back.
+    static std::unique_ptr<Item> copyItem(const Item &item, QString *error);
+
     // ---- reading. On failure: false, and *error starts with `source` (the file name).
     static bool readFile(const QString &fileName, ProjectData *out, QString *error);
     static bool parse(const QByteArray &bytes, const QString &source, ProjectData *out,
@@ -116,8 +120,10 @@ public:
     static StyleSpec readStyle(const FieldReader &r);
 
 private:
+    // `checkAnimation`: also check that the item accepts its animation's values (which reads
+    // a copy of the item, read without that check).
     static std::unique_ptr<Item> readItem(const QJsonValue &value, const QString &label,
-                                          QSet<QString> &names);
+                                          QSet<QString> &names, bool checkAnimation = true);
 };
 
 } // namespace awb
