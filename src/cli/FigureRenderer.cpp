@@ -62,8 +62,9 @@ struct Frame {
     }
 };
 
-// Bounds of everything drawn in all panels, padded, with equal scale on both axes.
-Frame frameFor(const FigureSpec &spec, const QRectF &target)
+} // namespace
+
+QRectF contentBounds(const FigureSpec &spec)
 {
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
     auto grow = [&](const Mat &m) {
@@ -103,6 +104,19 @@ Frame frameFor(const FigureSpec &spec, const QRectF &target)
     for (const Mat &m : spec.polygons)
         grow(m);
     if (lo[0] > hi[0])
+        return QRectF(0, 0, -1, -1); // nothing: a negative size (a point has size 0)
+    return QRectF(QPointF(lo[0], lo[1]), QPointF(hi[0], hi[1]));
+}
+
+namespace {
+
+// Bounds of everything drawn in all panels (or the spec's own), padded, with equal scale on
+// both axes.
+Frame frameFor(const FigureSpec &spec, const QRectF &target)
+{
+    const QRectF content = spec.bounds.isValid() ? spec.bounds : contentBounds(spec);
+    double lo[2] = {content.left(), content.top()}, hi[2] = {content.right(), content.bottom()};
+    if (content.width() < 0)
         lo[0] = lo[1] = -1, hi[0] = hi[1] = 1;
     double w = hi[0] - lo[0], h = hi[1] - lo[1];
     const double pad = 0.06 * std::max({w, h, 1e-9});

@@ -11,6 +11,7 @@
 
 #include <QColor>
 #include <QImage>
+#include <QRectF>
 #include <QString>
 #include <functional>
 #include <vector>
@@ -49,12 +50,18 @@ struct FigureSpec {
     int threads = 0;
     int panelWidth = 420;
     int panelHeight = 360;
+    // The world rectangle to frame (padded like the content); invalid: fit the content. Frames
+    // of an animation share one, so that the attractor moves and the frame stays.
+    QRectF bounds;
     FigureMetadata metadata;           // written into PNG and SVG files (the item's project)
 };
 
 // Colour of map i (by address): a qualitative palette that reads on white and in print.
 QColor mapColor(int i);
 
+// The world rectangle of what the figure draws (attractor at a shallow level, start set,
+// polygons), unpadded; a negative size when there is nothing.
+QRectF contentBounds(const FigureSpec &spec);
 // Size of the whole figure in pixels (panels side by side, title, captions).
 QSize figureSize(const FigureSpec &spec);
 // Paints the figure into the rectangle (0, 0, figureSize) of the painter's device.

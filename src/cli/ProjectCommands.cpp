@@ -3,6 +3,7 @@
 #include "cli/FigureRenderer.h"
 #include "core/analysis/Geometry.h"
 #include "core/analysis/Spectrum.h"
+#include "model/Animation.h"
 #include "model/FigureMetadata.h"
 #include "model/AttractorItem.h"
 #include "model/ExactCurve.h"
@@ -19,7 +20,12 @@
 #include "core/ifs/SurfaceIfs.h"
 #include "render/SurfaceFigure.h"
 
+#include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QSaveFile>
 
 #include <QCommandLineParser>
@@ -447,6 +453,208 @@ int guarded(F &&body)
     }
 }
 
+// The options of `render` that `animate` shares: how a figure of an item is drawn.
+QList<QCommandLineOption> figureOptionList()
+{
+    return {{"size", "Image size in pixels (default 900x700).", "WxH", "900x700"},
+            {"depth", "Deterministic iteration depth (default: the item's).", "k"},
+            {"samples", "Random iteration with this many points (up to 1e12; "
+                        "memory stays that of the raster).", "n"},
+            {"tone", "Raster tone: 'hits' (every lit pixel opaque, the papers' "
+                     "look) or 'density' (log density of the invariant measure, "
+                     "gamma and vibrancy as flame renderers). Default: the item's "
+                     "style (auto: hits for deterministic, density for random "
+                     "iteration).",
+             "hits|density"},
+            {"gamma", "Density tone: display gamma (default: the item's, 2.2).", "g"},
+            {"vibrancy", "Density tone: 1 saturated colours, 0 per-channel "
+                         "gamma (default 1).", "v", "1"},
+            {"supersample", "Histogram cells per pixel side, 1..4 (default 1; "
+                            "2 or 3 anti-alias edges).", "s", "1"},
+            {"threads", "Threads of the raster engine (default: all cores).", "n"},
+            {"view", "Surfaces: the camera's azimuth and elevation in degrees "
+                     "(orthographic; default: the item's camera).",
+             "az,el"},
+            {"bounds", "Plane figures: the world rectangle to frame (padded by 6%), e.g. to "
+                       "compare figures at one scale (default: fit the content).",
+             "x0,y0,x1,y1"}};
+}
+
+struct FigureOptions {
+    int width = 900, height = 700;
+    std::optional<int> depth;
+    std::optional<std::uint64_t> samples;
+    QString tone;  // "", "hits" or "density"
+    std::optional<double> gamma;
+    double vibrancy = 1.0;
+    int supersample = 1;
+    int threads = 0;
+    QString view;  // "az,el" or empty
+    QRectF bounds;  // the world rectangle to frame; invalid: fit the content
+    QString captionSuffix;  // e.g. an animation frame's time and values
+};
+
+FigureOptions figureOptions(const QCommandLineParser &parser)
+{
+    FigureOptions o;
+    if (parser.isSet("depth") && parser.isSet("samples"))
+        throw Failure{"--depth and --samples exclude each other", 2};
+    const QRegularExpression sizeRe("^(\\d+)x(\\d+)$");
+    const auto sm = sizeRe.match(parser.value("size"));
+    if (!sm.hasMatch() || sm.captured(1).toInt() < 64 || sm.captured(2).toInt() < 64
+        || sm.captured(1).toInt() > 16384 || sm.captured(2).toInt() > 16384)
+        throw Failure{QString("--size must be WxH with 64..16384 pixels each, got '%1'")
+                          .arg(parser.value("size"))};
+    o.width = sm.captured(1).toInt();
+    o.height = sm.captured(2).toInt();
+    if (parser.isSet("depth"))
+        o.depth = intOption(parser, "depth", 0, 64);
+    if (parser.isSet("samples"))
+        o.samples = countOption(parser, "samples", 1, double(kMaxChaosSamples));
+    o.tone = parser.value("tone");
+    if (!o.tone.isEmpty() && o.tone != "hits" && o.tone != "density")
+        throw Failure{QString("--tone must be 'hits' or 'density', got '%1'").arg(o.tone), 2};
+    if (parser.isSet("gamma"))
+        o.gamma = realOption(parser, "gamma", 0.2, 10);
+    o.vibrancy = realOption(parser, "vibrancy", 0, 1);
+    o.supersample = intOption(parser, "supersample", 1, 4);
+    if (parser.isSet("threads"))
+        o.threads = intOption(parser, "threads", 1, 64);
+    if (parser.isSet("view"))
+        o.view = parser.value("view");
+    if (parser.isSet("bounds")) {
+        const QStringList parts = parser.value("bounds").split(',');
+        double v[4] = {};
+        bool ok = parts.size() == 4;
+        for (int i = 0; ok && i < 4; ++i)
+            v[i] = parts[i].trimmed().toDouble(&ok), ok = ok && std::isfinite(v[i]);
+        if (!ok || !(v[2] > v[0]) || !(v[3] > v[1]))
+            throw Failure{QString("--bounds must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, got '%1'")
+                              .arg(parser.value("bounds"))};
+        o.bounds = QRectF(QPointF(v[0], v[1]), QPointF(v[2], v[3]));
+    }
+    return o;
+}
+
+// Draws `item` (of `project`, or a copy of one of its items: an animation frame) as
+// `render` does and writes the figure to `outFile`; or, with `measure`, only measures the
+// world rectangle the figure would fit (invalid for surfaces). Throws Failure.
+void renderFigure(const Project &project, AttractorItem *item, const FigureOptions &o,
+                  const QString &outFile, QRectF *measure = nullptr)
+{
+    auto d = derived(item);
+    const AlgorithmSpec &alg = item->algorithm();
+    FigureSpec spec;
+    spec.ifs = &d->ifs;
+    spec.iterate = d->iterate;
+    spec.random = o.samples || (alg.mode == AlgorithmSpec::Mode::Random && !o.depth);
+    spec.samples = o.samples ? *o.samples : std::uint64_t(alg.samples);
+    spec.seed = std::uint64_t(alg.seed);
+    spec.tone.mode =
+        o.tone == "density" || (o.tone.isEmpty() && item->style().densityTone(spec.random))
+            ? Accumulation::Density
+            : Accumulation::Hits;
+    spec.tone.gamma = o.gamma ? *o.gamma : item->style().gamma;
+    spec.tone.vibrancy = o.vibrancy;
+    spec.supersample = o.supersample;
+    if (o.threads > 0)
+        spec.threads = o.threads;
+    const int depth = o.depth ? *o.depth : alg.depth;
+    if (d->ifs.size() > 0 && !spec.random && !d->iterate) {
+        const IfsCheck check = checkIfs(d->ifs);
+        if (!check.contractive)
+            throw Failure{QString("item '%1': %2").arg(item->name(),
+                                                       QString::fromStdString(check.message))};
+        const double images = imageCount(d->ifs, depth);
+        if (images > 4e9)
+            throw Failure{QString("depth %1 makes %2 images; at most 4e9 are rendered")
+                              .arg(depth)
+                              .arg(images, 0, 'g', 3)};
+    }
+    if (d->ifs.size() > 0 || d->iterate)
+        spec.start = item->coreStartSet(*d);
+    if (d->surface) {
+        const auto *surface = qobject_cast<const SubdivisionSurfaceItem *>(item);
+        const QStringList view =
+            !o.view.isEmpty() ? o.view.split(',')
+                                 : QStringList{QString::number(surface->camera().azimuth, 'g', 17),
+                                               QString::number(surface->camera().elevation, 'g', 17)};
+        bool okA = false, okE = false;
+        const double az = view.value(0).toDouble(&okA), el = view.value(1).toDouble(&okE);
+        if (view.size() != 2 || !okA || !okE || !std::isfinite(az) || std::abs(el) > 90)
+            throw Failure{QString("--view must be AZ,EL in degrees with |EL| <= 90, got '%1'")
+                              .arg(o.view)};
+        SurfaceFigureSpec s;
+        s.ifs = &d->ifs;
+        s.start = spec.start;
+        s.depth = depth;
+        s.random = spec.random;
+        s.samples = spec.samples;
+        s.seed = spec.seed;
+        s.mapColors = d->mapIndex;
+        for (int i = 0; i < 18; ++i)
+            s.palette.push_back(mapColor(i));
+        s.pointRadius = std::max(0.5, 0.5 * item->style().pointSize);
+        s.azimuth = az;
+        s.elevation = el;
+        const LatticeMesh net = surface->refinedMesh(0);
+        s.framePoints = net.points;
+        s.netPoints = net.points;
+        s.netFaces = net.faces;
+        s.width = o.width;
+        s.height = o.height;
+        const QString what = s.random ? QString("%1 random points").arg(s.samples)
+                                      : QString("F^%1(X0)").arg(depth);
+        QString maps;
+        if (!d->mapIndex.empty()) {
+            QStringList on;
+            for (int i : d->mapIndex)
+                on << QString::number(i + 1);
+            maps = QString(", maps %1 of %2").arg(on.join(' ')).arg(d->S.count());
+        }
+        s.caption = QString("%1: %2%3 — orthographic view from azimuth %4°, elevation %5°")
+                        .arg(item->name(), what, maps)
+                        .arg(az)
+                        .arg(el);
+        s.metadata = figureMetadata(project, *item);
+        QString error;
+        if (!writeSurfaceFigure(s, outFile, &error))
+            throw Failure{error};
+        return;
+    }
+    for (int s = 0; s < item->controlPointSetCount(); ++s)
+        if (!item->controlPoints(s).empty()) {
+            spec.controlPolygons.push_back(toMatrix(item->controlPoints(s)));
+            spec.controlClosed.push_back(item->controlPointSetClosed(s));
+        }
+    if (d->polygon) {
+        spec.polygons.push_back(*d->polygon);
+        spec.polygonsClosed.push_back(d->polygonClosed);
+    }
+    if (const auto exact = exactCurveOf(item, 800))
+        spec.overlays.push_back(exact->points);
+    spec.panelWidth = o.width;
+    spec.panelHeight = o.height - 26;
+    QString caption = spec.random
+                          ? QString("%1: %2 random points").arg(item->name()).arg(spec.samples)
+                          : QString("%1: F^%2(X0)").arg(item->name()).arg(depth);
+    if (d->polygon) // a normal-vector curve: the polygon after `steps` is the figure
+        caption = QString("%1: polygon after %2 steps")
+                      .arg(item->name())
+                      .arg(item->parameter("steps").toInt());
+    spec.panels = {{caption + o.captionSuffix, depth}};
+    spec.bounds = o.bounds;
+    if (measure) {
+        *measure = contentBounds(spec);
+        return;
+    }
+    spec.metadata = figureMetadata(project, *item);
+    QString error;
+    if (!writeFigure(spec, outFile, &error))
+        throw Failure{error};
+}
+
+
 } // namespace
 
 int render(const QStringList &args)
@@ -458,155 +666,183 @@ int render(const QStringList &args)
         parser.addPositionalArgument("project", "The .awb project file.");
         parser.addOptions({{"item", "The item to render (default: the first with an attractor).",
                             "name"},
-                           {"out", "Output file: .png, .svg or .pdf.", "file"},
-                           {"size", "Image size in pixels (default 900x700).", "WxH", "900x700"},
-                           {"depth", "Deterministic iteration depth (default: the item's).", "k"},
-                           {"samples", "Random iteration with this many points (up to 1e12; "
-                                       "memory stays that of the raster).", "n"},
-                           {"tone", "Raster tone: 'hits' (every lit pixel opaque, the papers' "
-                                    "look) or 'density' (log density of the invariant measure, "
-                                    "gamma and vibrancy as flame renderers). Default: the item's "
-                                    "style (auto: hits for deterministic, density for random "
-                                    "iteration).",
-                            "hits|density"},
-                           {"gamma", "Density tone: display gamma (default: the item's, 2.2).", "g"},
-                           {"vibrancy", "Density tone: 1 saturated colours, 0 per-channel "
-                                        "gamma (default 1).", "v", "1"},
-                           {"supersample", "Histogram cells per pixel side, 1..4 (default 1; "
-                                           "2 or 3 anti-alias edges).", "s", "1"},
-                           {"threads", "Threads of the raster engine (default: all cores).",
-                            "n"},
-                           {"view", "Surfaces: the camera's azimuth and elevation in degrees "
-                                    "(orthographic; default: the item's camera).",
-                            "az,el"}});
+                           {"out", "Output file: .png, .svg or .pdf.", "file"}});
+        parser.addOptions(figureOptionList());
         parseOrFail(parser, args, 1);
         if (!parser.isSet("out"))
             throw Failure{"--out FILE is required", 2};
-        if (parser.isSet("depth") && parser.isSet("samples"))
-            throw Failure{"--depth and --samples exclude each other", 2};
-        const QRegularExpression sizeRe("^(\\d+)x(\\d+)$");
-        const auto sm = sizeRe.match(parser.value("size"));
-        if (!sm.hasMatch() || sm.captured(1).toInt() < 64 || sm.captured(2).toInt() < 64
-            || sm.captured(1).toInt() > 16384 || sm.captured(2).toInt() > 16384)
-            throw Failure{QString("--size must be WxH with 64..16384 pixels each, got '%1'")
-                              .arg(parser.value("size"))};
+        const FigureOptions options = figureOptions(parser);
         Project project;
         load(project, parser.positionalArguments().first());
-        AttractorItem *item = attractorItem(project, parser.value("item"));
-        auto d = derived(item);
-        const AlgorithmSpec &alg = item->algorithm();
-        FigureSpec spec;
-        spec.ifs = &d->ifs;
-        spec.iterate = d->iterate;
-        spec.random = parser.isSet("samples")
-                      || (alg.mode == AlgorithmSpec::Mode::Random && !parser.isSet("depth"));
-        spec.samples = parser.isSet("samples")
-                           ? countOption(parser, "samples", 1, double(kMaxChaosSamples))
-                           : std::uint64_t(alg.samples);
-        spec.seed = std::uint64_t(alg.seed);
-        const QString tone = parser.value("tone");
-        if (!tone.isEmpty() && tone != "hits" && tone != "density")
-            throw Failure{QString("--tone must be 'hits' or 'density', got '%1'").arg(tone), 2};
-        spec.tone.mode =
-            tone == "density" || (tone.isEmpty() && item->style().densityTone(spec.random))
-                ? Accumulation::Density
-                : Accumulation::Hits;
-        spec.tone.gamma = parser.isSet("gamma") ? realOption(parser, "gamma", 0.2, 10)
-                                                : item->style().gamma;
-        spec.tone.vibrancy = realOption(parser, "vibrancy", 0, 1);
-        spec.supersample = intOption(parser, "supersample", 1, 4);
-        if (parser.isSet("threads"))
-            spec.threads = intOption(parser, "threads", 1, 64);
-        const int depth = parser.isSet("depth") ? intOption(parser, "depth", 0, 64) : alg.depth;
-        if (d->ifs.size() > 0 && !spec.random && !d->iterate) {
-            const IfsCheck check = checkIfs(d->ifs);
-            if (!check.contractive)
-                throw Failure{QString("item '%1': %2").arg(item->name(),
-                                                           QString::fromStdString(check.message))};
-            const double images = imageCount(d->ifs, depth);
-            if (images > 4e9)
-                throw Failure{QString("depth %1 makes %2 images; at most 4e9 are rendered")
-                                  .arg(depth)
-                                  .arg(images, 0, 'g', 3)};
+        renderFigure(project, attractorItem(project, parser.value("item")), options,
+                     parser.value("out"));
+        out() << parser.value("out") << "\n";
+        return 0;
+    });
+}
+
+int animate(const QStringList &args)
+{
+    return guarded([&] {
+        QCommandLineParser parser;
+        parser.setApplicationDescription(
+            "Render the frames of an item's animation (its keyframed parameters): numbered PNG "
+            "files in a folder, or an MP4 or GIF movie through ffmpeg. Frame k is the item with "
+            "its parameters at time k / fps, drawn exactly as `render` draws it.");
+        parser.addPositionalArgument("project", "The .awb project file.");
+        parser.addOptions(
+            {{"item", "The animated item (default: the first item with an animation).", "name"},
+             {"out", "A folder for frame-0000.png, frame-0001.png, ... (made if missing), a "
+                     "movie .mp4 or .gif (made by ffmpeg), or with --frame one .png/.svg/.pdf.",
+              "dir|file"},
+             {"fps", "Frames per second (default: the animation's).", "n"},
+             {"frame", "Render only frame K (0 = the start) to the file --out.", "k"},
+             {"no-caption-values", "Captions without the frame's time and values."}});
+        parser.addOptions(figureOptionList());
+        parseOrFail(parser, args, 1);
+        if (!parser.isSet("out"))
+            throw Failure{"--out DIR|FILE is required", 2};
+        const FigureOptions options = figureOptions(parser);
+        Project project;
+        load(project, parser.positionalArguments().first());
+        AttractorItem *item = nullptr;
+        if (parser.isSet("item")) {
+            item = attractorItem(project, parser.value("item"));
+        } else {
+            for (Item *i : project.items())
+                if (auto *a = qobject_cast<AttractorItem *>(i); a && !a->animation().isEmpty()) {
+                    item = a;
+                    break;
+                }
+            if (!item)
+                throw Failure{QString("%1 has no animated item").arg(project.fileName())};
         }
-        if (d->ifs.size() > 0 || d->iterate)
-            spec.start = item->coreStartSet(*d);
-        if (d->surface) {
-            const auto *surface = qobject_cast<const SubdivisionSurfaceItem *>(item);
-            const QStringList view =
-                parser.isSet("view") ? parser.value("view").split(',')
-                                     : QStringList{QString::number(surface->camera().azimuth, 'g', 17),
-                                                   QString::number(surface->camera().elevation, 'g', 17)};
-            bool okA = false, okE = false;
-            const double az = view.value(0).toDouble(&okA), el = view.value(1).toDouble(&okE);
-            if (view.size() != 2 || !okA || !okE || !std::isfinite(az) || std::abs(el) > 90)
-                throw Failure{QString("--view must be AZ,EL in degrees with |EL| <= 90, got '%1'")
-                                  .arg(parser.value("view"))};
-            SurfaceFigureSpec s;
-            s.ifs = &d->ifs;
-            s.start = spec.start;
-            s.depth = depth;
-            s.random = spec.random;
-            s.samples = spec.samples;
-            s.seed = spec.seed;
-            s.mapColors = d->mapIndex;
-            for (int i = 0; i < 18; ++i)
-                s.palette.push_back(mapColor(i));
-            s.pointRadius = std::max(0.5, 0.5 * item->style().pointSize);
-            s.azimuth = az;
-            s.elevation = el;
-            const LatticeMesh net = surface->refinedMesh(0);
-            s.framePoints = net.points;
-            s.netPoints = net.points;
-            s.netFaces = net.faces;
-            s.width = sm.captured(1).toInt();
-            s.height = sm.captured(2).toInt();
-            const QString what = s.random ? QString("%1 random points").arg(s.samples)
-                                          : QString("F^%1(X0)").arg(depth);
-            QString maps;
-            if (!d->mapIndex.empty()) {
-                QStringList on;
-                for (int i : d->mapIndex)
-                    on << QString::number(i + 1);
-                maps = QString(", maps %1 of %2").arg(on.join(' ')).arg(d->S.count());
+        if (item->animation().isEmpty())
+            throw Failure{QString("item '%1' has no animation: key its parameters in the "
+                                  "Animation dock, or give it an \"animation\" field "
+                                  "(docs/file-format.md)")
+                              .arg(item->name())};
+        AnimationSpec timing = item->animation();
+        if (parser.isSet("fps"))
+            timing.fps = realOption(parser, "fps", 1, AnimationSpec::maxFps);
+        const int frames = timing.frameCount();
+        FigureOptions frameOptions = options;
+        // One framing for every frame (the union of their contents): the attractor moves, the
+        // frame stays. --bounds sets it.
+        if (!frameOptions.bounds.isValid()) {
+            QRectF all(0, 0, -1, -1);
+            for (int k = 0; k < frames; ++k) {
+                QString error;
+                std::unique_ptr<Item> copy = animatedCopy(*item, timing.frameTime(k), &error);
+                QRectF r(0, 0, -1, -1);
+                if (copy)
+                    try {
+                        renderFigure(project, static_cast<AttractorItem *>(copy.get()), options,
+                                     {}, &r);
+                    } catch (const Failure &) {
+                        // reported when the frame is drawn
+                    }
+                if (r.width() >= 0)
+                    all = all.width() < 0 ? r : all.united(r);
             }
-            s.caption = QString("%1: %2%3 — orthographic view from azimuth %4°, elevation %5°")
-                            .arg(item->name(), what, maps)
-                            .arg(az)
-                            .arg(el);
-            s.metadata = figureMetadata(project, *item);
+            if (all.width() > 0 && all.height() > 0)
+                frameOptions.bounds = all;
+        }
+        const auto boundsText = [&] {
+            const QRectF &b = frameOptions.bounds;
+            return b.isValid() ? QString("%1,%2,%3,%4")
+                                     .arg(b.left(), 0, 'g', 17)
+                                     .arg(b.top(), 0, 'g', 17)
+                                     .arg(b.right(), 0, 'g', 17)
+                                     .arg(b.bottom(), 0, 'g', 17)
+                               : QString("fitted per frame");
+        };
+        const auto renderFrame = [&](int k, const QString &file) {
             QString error;
-            if (!writeSurfaceFigure(s, parser.value("out"), &error))
-                throw Failure{error};
-            out() << parser.value("out") << "\n";
+            std::unique_ptr<Item> copy = animatedCopy(*item, timing.frameTime(k), &error);
+            if (!copy)
+                throw Failure{QString("frame %1 (t = %2 s): %3")
+                                  .arg(k)
+                                  .arg(timing.frameTime(k))
+                                  .arg(error)};
+            FigureOptions o = frameOptions;
+            if (!parser.isSet("no-caption-values"))
+                o.captionSuffix = " — " + animationCaption(*item, timing.frameTime(k));
+            try {
+                renderFigure(project, static_cast<AttractorItem *>(copy.get()), o, file);
+            } catch (const Failure &f) {
+                throw Failure{QString("frame %1 (t = %2 s): %3")
+                                  .arg(k)
+                                  .arg(timing.frameTime(k))
+                                  .arg(f.message),
+                              f.code};
+            }
+        };
+        const QString outPath = parser.value("out");
+        if (parser.isSet("frame")) {
+            renderFrame(intOption(parser, "frame", 0, frames - 1), outPath);
+            out() << outPath << "\nbounds: " << boundsText() << "\n";
             return 0;
         }
-        for (int s = 0; s < item->controlPointSetCount(); ++s)
-            if (!item->controlPoints(s).empty()) {
-                spec.controlPolygons.push_back(toMatrix(item->controlPoints(s)));
-                spec.controlClosed.push_back(item->controlPointSetClosed(s));
-            }
-        if (d->polygon) {
-            spec.polygons.push_back(*d->polygon);
-            spec.polygonsClosed.push_back(d->polygonClosed);
+        const QString suffix = QFileInfo(outPath).suffix().toLower();
+        const bool movie = suffix == "mp4" || suffix == "gif";
+        QString ffmpeg;
+        if (movie) {
+            ffmpeg = qEnvironmentVariableIsSet("AWB_FFMPEG")
+                         ? qEnvironmentVariable("AWB_FFMPEG")
+                         : QStandardPaths::findExecutable("ffmpeg");
+            if (ffmpeg.isEmpty() || !QFileInfo(ffmpeg).isExecutable())
+                throw Failure{QString("writing %1 needs ffmpeg, which is not installed (Debian: "
+                                      "apt-get install ffmpeg); give --out a folder to get the "
+                                      "frames as PNG files")
+                                  .arg(outPath)};
         }
-        if (const auto exact = exactCurveOf(item, 800))
-            spec.overlays.push_back(exact->points);
-        spec.panelWidth = sm.captured(1).toInt();
-        spec.panelHeight = sm.captured(2).toInt() - 26;
-        QString caption = spec.random
-                              ? QString("%1: %2 random points").arg(item->name()).arg(spec.samples)
-                              : QString("%1: F^%2(X0)").arg(item->name()).arg(depth);
-        if (d->polygon) // a normal-vector curve: the polygon after `steps` is the figure
-            caption = QString("%1: polygon after %2 steps")
-                          .arg(item->name())
-                          .arg(item->parameter("steps").toInt());
-        spec.panels = {{caption, depth}};
-        spec.metadata = figureMetadata(project, *item);
-        QString error;
-        if (!writeFigure(spec, parser.value("out"), &error))
-            throw Failure{error};
-        out() << parser.value("out") << "\n";
+        QTemporaryDir scratch;
+        const QString dir = movie ? scratch.path() : outPath;
+        if (movie && !scratch.isValid())
+            throw Failure{QString("cannot make a temporary folder for the frames: %1")
+                              .arg(scratch.errorString())};
+        if (!movie && QFileInfo(dir).exists() && !QFileInfo(dir).isDir())
+            throw Failure{QString("%1 is a file, not a folder (a movie needs .mp4 or .gif)")
+                              .arg(dir)};
+        if (!QDir().mkpath(dir))
+            throw Failure{QString("cannot make the folder %1").arg(dir)};
+        const int digits = std::max(4, int(QString::number(frames - 1).size()));
+        const QString pattern = "frame-%0" + QString::number(digits) + "d.png"; // ffmpeg's
+        QElapsedTimer clock;
+        clock.start();
+        for (int k = 0; k < frames; ++k)
+            renderFrame(k, QDir(dir).filePath(
+                               QString("frame-%1.png").arg(k, digits, 10, QLatin1Char('0'))));
+        const double seconds = clock.elapsed() / 1000.0;
+        if (movie) {
+            QStringList ffArgs{"-y", "-loglevel", "error", "-framerate",
+                               QString::number(timing.fps), "-i", QDir(dir).filePath(pattern)};
+            if (suffix == "gif")
+                ffArgs << "-vf" << "split[a][b];[a]palettegen[p];[b][p]paletteuse";
+            else
+                ffArgs << "-c:v" << "libx264" << "-pix_fmt" << "yuv420p" << "-vf"
+                       << "pad=ceil(iw/2)*2:ceil(ih/2)*2";
+            ffArgs << outPath;
+            QProcess process;
+            process.start(ffmpeg, ffArgs);
+            if (!process.waitForFinished(-1) || process.exitStatus() != QProcess::NormalExit
+                || process.exitCode() != 0)
+                throw Failure{QString("ffmpeg could not write %1: %2")
+                                  .arg(outPath, QString::fromLocal8Bit(process.readAllStandardError())
+                                                    .trimmed())};
+        }
+        out() << QString("%1: %2 frames of %3x%4 at %5 frames/s (%6 s); rendered in %7 s, "
+                         "%8 frames/s\nbounds: %9\n")
+                     .arg(outPath)
+                     .arg(frames)
+                     .arg(options.width)
+                     .arg(options.height)
+                     .arg(timing.fps)
+                     .arg(timing.duration)
+                     .arg(seconds, 0, 'f', 2)
+                     .arg(frames / std::max(seconds, 1e-9), 0, 'f', 1)
+                     .arg(boundsText());
         return 0;
     });
 }

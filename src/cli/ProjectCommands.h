@@ -1,5 +1,5 @@
 #pragma once
-// The project commands of attractor-cli: render, analyse, points, check, rewrite, export. Each takes the
+// The project commands of attractor-cli: render, animate, analyse, points, check, rewrite, export. Each takes the
 // command's arguments (argv[0] = "attractor-cli <command>") and returns the exit code:
 // 0 success, 1 bad input (file, item, option values), 2 usage error, 3 the project loads but an
 // item cannot be computed (check).
@@ -9,6 +9,8 @@
 namespace awb::cli {
 
 int render(const QStringList &args);
+// The frames of an item's animation: PNG files, or an MP4/GIF through ffmpeg.
+int animate(const QStringList &args);
 int analyse(const QStringList &args);
 int points(const QStringList &args);
 int check(const QStringList &args);

@@ -80,6 +80,7 @@ void usage()
     out() << "Usage: attractor-cli <command> [options]\n\n"
              "Commands:\n"
              "  render     render an item of a project to PNG, SVG or PDF\n"
+             "  animate    render the frames of an item's animation (PNG files, MP4/GIF)\n"
              "  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)\n"
              "  points     the points of F^k(X0) as CSV\n"
              "  check      validate a project file\n"
@@ -124,6 +125,8 @@ int main(int argc, char **argv)
             return runExamples(args);
         if (command == "render")
             return cli::render(args);
+        if (command == "animate")
+            return cli::animate(args);
         if (command == "analyse" || command == "analyze")
             return cli::analyse(args);
         if (command == "points")

@@ -366,6 +366,42 @@ MaybeProblem animationProblem(const Item &item, const AnimationSpec &spec)
     return std::nullopt;
 }
 
+QString animationCaption(const Item &item, double time)
+{
+    const AnimationSpec &spec = item.animation();
+    QStringList values;
+    for (const AnimationTrack &track : spec.tracks) {
+        const std::vector<double> v = track.valueAt(time, spec.duration);
+        const auto num = [](double x) { return QString::number(x, 'g', 4); };
+        int set = 0, index = 0;
+        QString text;
+        if (track.target == probabilitiesTarget) {
+            QStringList p;
+            for (double x : v)
+                p << num(x);
+            text = tr("p = (%1)").arg(p.join(QStringLiteral(", ")));
+        } else if (parsePointTarget(track.target, &set, &index)) {
+            QStringList p;
+            for (double x : v)
+                p << num(x);
+            text = QStringLiteral("P%1 = (%2)").arg(index + 1).arg(p.join(QStringLiteral(", ")));
+        } else {
+            const auto info = findParameter(item, track.target);
+            const QString label = info ? info->label : track.target;
+            if (v.size() == 2)
+                text = QStringLiteral("%1 = %2 %3 %4i")
+                           .arg(label, num(v[0]), v[1] < 0 ? QStringLiteral("−") : QStringLiteral("+"),
+                                num(std::abs(v[1])));
+            else if (info && info->type == ParameterInfo::Type::Integer)
+                text = QStringLiteral("%1 = %2").arg(label).arg(std::lround(v.at(0)));
+            else
+                text = QStringLiteral("%1 = %2").arg(label, num(v.at(0)));
+        }
+        values << text;
+    }
+    return tr("t = %1 s: %2").arg(time, 0, 'f', 2).arg(values.join(QStringLiteral(", ")));
+}
+
 // ---- JSON ---------------------------------------------------------------------------------------
 
 QJsonObject animationToJson(const AnimationSpec &spec)

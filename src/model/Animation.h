@@ -100,6 +100,10 @@ std::unique_ptr<Item> animatedCopy(const Item &item, double time, QString *error
 // values at every key time (and, for circles, a quarter of a turn apart).
 MaybeProblem animationProblem(const Item &item, const AnimationSpec &spec);
 
+// The values of the animated inputs at `time`, for a caption or the status bar:
+// "t = 1.20 s: ω = 0.0625, P3 = (1.5, 2)".
+QString animationCaption(const Item &item, double time);
+
 QJsonObject animationToJson(const AnimationSpec &spec);
 AnimationSpec readAnimation(const FieldReader &fields);
 

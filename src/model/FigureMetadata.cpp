@@ -24,6 +24,8 @@ QByteArray figureProjectBytes(const Project &project, const Item &item)
     for (const Item *i : project.items())
         if (i == &item || (!source.isEmpty() && i->name() == source))
             kept.append(ProjectIO::itemToJson(*i));
+    if (item.project() != &project) // a copy (an animation frame): itself
+        kept.prepend(ProjectIO::itemToJson(item));
     root.insert(QStringLiteral("items"), kept);
     return ProjectIO::toBytes(root);
 }

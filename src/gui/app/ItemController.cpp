@@ -190,6 +190,7 @@ void ItemController::setItem(Item *item)
         disconnect(c);
     m_connections.clear();
     m_item = item;
+    m_frame.reset();
     m_gesture = 0;
     m_highlightedMap = -1;
     if (item) {
@@ -219,8 +220,19 @@ bool ItemController::showsSurface() const
     return m_surface && item && item->pointDimension() == 3;
 }
 
+void ItemController::showFrame(std::shared_ptr<Item> frame)
+{
+    if (frame && !m_frame)
+        m_attractor->setAutoFit(false); // a moving attractor in a steady frame
+    m_frame = std::move(frame);
+    m_gesture = 0;
+    refreshNow();
+}
+
 AttractorItem *ItemController::drawnItem() const
 {
+    if (m_frame)
+        return qobject_cast<AttractorItem *>(m_frame.get());
     if (const auto *plot = qobject_cast<const EigenvaluePlotItem *>(m_item.data()))
         return plot->project() ? qobject_cast<AttractorItem *>(
                    plot->project()->findItem(plot->source()))
@@ -401,7 +413,7 @@ void ItemController::refreshNow()
     const auto *plot = qobject_cast<const EigenvaluePlotItem *>(m_item.data());
     AttractorItem *item = drawnItem();
     // The plot's source is shown, not edited, in the views.
-    m_attractor->setStartSetEditable(!plot);
+    m_attractor->setStartSetEditable(!plot && !m_frame);
     QString problem;
     if (!item) {
         clearViews();
@@ -440,7 +452,8 @@ void ItemController::refreshNow()
             closedSets.push_back(item->controlPointSetClosed(k));
         }
         m_attractor->setControlPolygons(sets, closedSets);
-        m_attractor->setControlPointsEditable(!plot && item->controlPointSetCount() > 0);
+        m_attractor->setControlPointsEditable(!plot && !m_frame
+                                              && item->controlPointSetCount() > 0);
 
         AttractorView::RenderSettings rs = m_attractor->renderSettings();
         const AlgorithmSpec &alg = item->algorithm();
@@ -501,7 +514,7 @@ void ItemController::refreshNow()
 
         const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item);
         const bool ownMatrices = curve && curve->scheme().kind == SchemeSpec::Kind::Matrices;
-        showAnalysis(*d, ownMatrices && !plot, plot);
+        showAnalysis(*d, ownMatrices && !plot && !m_frame, plot);
         if (!d->note.isEmpty())
             problem = d->note;
         m_analysisTimer.start();

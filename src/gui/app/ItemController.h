@@ -45,6 +45,11 @@ public:
 
     void setItem(Item *item);
     Item *item() const { return m_item; }
+    // Shows `frame` -- a copy of the current item at a time of its animation, in no project
+    // (AnimationPanel) -- in the views instead of the item, keeping the view's framing; the
+    // views refuse edits meanwhile. nullptr returns to the item.
+    void showFrame(std::shared_ptr<Item> frame);
+    const Item *frame() const { return m_frame.get(); }
     // The 3D view that shows items with 3D points (surfaces) instead of the attractor view.
     void setSurfaceView(SurfaceView *view);
     SurfaceView *surfaceView() const { return m_surface; }
@@ -134,6 +139,7 @@ private:
     QPointer<RegularityPanel> m_regularity;
     SurfaceView *m_surface = nullptr;
     QPointer<Item> m_item;
+    std::shared_ptr<Item> m_frame;  // an animation frame shown instead of m_item
     QList<QMetaObject::Connection> m_connections;
     QTimer m_refreshTimer;
     QTimer m_analysisTimer;

@@ -1,6 +1,7 @@
 #include "gui/app/MainWindow.h"
 
 #include "gui/app/AddressPanel.h"
+#include "gui/app/AnimationPanel.h"
 #include "gui/app/FigureSheet.h"
 #include "gui/app/ItemController.h"
 #include "gui/app/Messages.h"
@@ -169,6 +170,7 @@ MainWindow::MainWindow(Messages *messages, const QString &recoveryDirectory, QWi
 MainWindow::~MainWindow()
 {
     // The controller and the properties read the items: unbind before the project goes.
+    m_animation->setItem(nullptr);
     m_controller->setItem(nullptr);
     m_properties->setItem(nullptr);
     // The project (a member) dies before the child widgets: detach the views that read it.
@@ -227,6 +229,12 @@ void MainWindow::createViews()
     // Address dock selects a sub-copy.
     m_address = new AddressPanel(m_controller, m_attractor);
     m_address->setObjectName(QStringLiteral("addressPanel"));
+    // Parameter animation (issue 16): keys of the current item, and its frames in the views.
+    m_animation = new AnimationPanel;
+    m_animation->setObjectName(QStringLiteral("animationPanel"));
+    connect(m_animation, &AnimationPanel::frameChanged, m_controller, &ItemController::showFrame);
+    connect(m_animation, &AnimationPanel::problem, this,
+            [this](const QString &message) { statusBar()->showMessage(message, 8000); });
     // A click on a control point in the 3D view selects its row: x, y, z to edit exactly.
     connect(m_surface, &SurfaceView::controlPointPressed, this, [this](int index) {
         if (auto *t = qobject_cast<QTableWidget *>(m_properties->editor(QStringLiteral("points"))))
@@ -458,6 +466,14 @@ void MainWindow::createActions()
     stop->setEnabled(false);
     make(QStringLiteral("actionRenderAgain"), tr("&Draw Again"), QStringLiteral("view-refresh"),
          QKeySequence::Refresh, [this] { m_attractor->renderAgain(); });
+    QAction *play = make(QStringLiteral("actionPlayAnimation"), tr("&Play/Pause Animation"),
+                         QStringLiteral("media-playback-start"),
+                         QKeySequence(Qt::CTRL | Qt::Key_Space), [this] {
+                             m_animation->togglePlay();
+                         });
+    play->setShortcutContext(Qt::WindowShortcut);
+    make(QStringLiteral("actionStopAnimation"), tr("S&top Animation"),
+         QStringLiteral("media-playback-stop"), QKeySequence(), [this] { m_animation->stop(); });
     make(QStringLiteral("actionResetLayout"), tr("&Reset Layout"), QString(), QKeySequence(),
          &MainWindow::resetLayout);
     make(QStringLiteral("actionAbout"), tr("&About Attractor Workbench"),
@@ -569,6 +585,9 @@ void MainWindow::createDocks()
                                 Qt::RightDockWidgetArea);
     tabifyDockWidget(mats, charts);
     tabifyDockWidget(charts, address);
+    QDockWidget *animation = dock(QStringLiteral("dockAnimation"), tr("Animation"), m_animation,
+                                  Qt::RightDockWidgetArea);
+    tabifyDockWidget(address, animation);
     mats->raise();
     // A sensible first layout: side columns wide enough for their tables and plots.
     resizeDocks({tree, props}, {200, 560}, Qt::Vertical);
@@ -625,6 +644,8 @@ void MainWindow::createMenus()
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(action(QStringLiteral("actionStopRender")));
     m_viewMenu->addAction(action(QStringLiteral("actionRenderAgain")));
+    m_viewMenu->addAction(action(QStringLiteral("actionPlayAnimation")));
+    m_viewMenu->addAction(action(QStringLiteral("actionStopAnimation")));
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(action(QStringLiteral("actionShowControl")));
     m_viewMenu->addAction(action(QStringLiteral("actionShowStart")));
@@ -703,6 +724,7 @@ void MainWindow::setCurrentItem(Item *item)
 {
     m_current = item;
     m_controller->setItem(item);
+    m_animation->setItem(item);
     m_spectrum->setHighlightedMap(-1);
     m_matrices->setHighlightedMap(-1);
     updateCentralView();

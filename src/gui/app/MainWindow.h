@@ -29,6 +29,7 @@ class QUndoView;
 namespace awb {
 
 class AddressPanel;
+class AnimationPanel;
 class AnalysisCharts;
 class AttractorView;
 class Item;
@@ -84,6 +85,7 @@ public:
     SpectrumView *spectrumView() const { return m_spectrum; }
     AnalysisCharts *analysisCharts() const { return m_charts; }
     AddressPanel *addressPanel() const { return m_address; }
+    AnimationPanel *animationPanel() const { return m_animation; }
     PropertiesWidget *propertiesWidget() const { return m_properties; }
     ItemController *controller() const { return m_controller; }
     QTreeView *projectTree() const { return m_tree; }
@@ -150,6 +152,7 @@ private:
     SpectrumView *m_spectrum = nullptr;
     AnalysisCharts *m_charts = nullptr;
     AddressPanel *m_address = nullptr;
+    AnimationPanel *m_animation = nullptr;
     PropertiesWidget *m_properties = nullptr;
     QTreeView *m_tree = nullptr;
     QUndoView *m_undoView = nullptr;

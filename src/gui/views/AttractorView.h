@@ -83,6 +83,7 @@ public:
     void setLayerVisible(Layer layer, bool visible);
     bool isLayerVisible(Layer layer) const;
     void setControlPointsEditable(bool editable) { m_editControl = editable; }
+    bool controlPointsEditable() const { return m_editControl; }
     void setStartSetEditable(bool editable) { m_editStart = editable; }
     // Fit the view to the content whenever data arrives, until the user zooms or pans.
     void setAutoFit(bool on) { m_autoFit = on; }
