@@ -28,6 +28,23 @@ struct ItemError {
 
 QString quoted(const QString &s) { return QLatin1Char('"') + s + QLatin1Char('"'); }
 
+// Throws LoadError for the first number the JSON parser refused anywhere in `v` (a field no
+// reader asked for, kept as unknown or ignored, must not carry NaN or 1e999 back out).
+void rejectNotFinite(const QJsonValue &v, const QString &path)
+{
+    if (v.isString() && v.toString().startsWith(notFiniteMarker)) {
+        FieldReader::toNumber(v, path); // throws with the number's own message
+    } else if (v.isArray()) {
+        const QJsonArray a = v.toArray();
+        for (qsizetype i = 0; i < a.size(); ++i)
+            rejectNotFinite(a[i], path + QStringLiteral("[%1]").arg(i + 1));
+    } else if (v.isObject()) {
+        const QJsonObject o = v.toObject();
+        for (auto it = o.begin(); it != o.end(); ++it)
+            rejectNotFinite(it.value(), path.isEmpty() ? it.key() : path + '.' + it.key());
+    }
+}
+
 } // namespace
 
 // ---- FieldReader ------------------------------------------------------------------------------
@@ -370,6 +387,9 @@ bool ProjectIO::parseRoot(const QJsonObject &root, const QString &source, Projec
         for (qsizetype i = 0; i < list.size(); ++i)
             data.items.push_back(readItem(list[i], QString::number(i + 1), names));
         data.unknownFields = r.unread();
+        // Every field the readers took is checked; the rest (unknown fields, kept or not)
+        // here, with its path from the root ("items[2].extra").
+        rejectNotFinite(root, {});
     } catch (const LoadError &e) {
         *error = tr("%1: field \"%2\": %3").arg(source, e.field, e.message);
         return false;

@@ -237,6 +237,21 @@ private slots:
                                  R"({"kind": "point", "points": [[-Infinity, 0]]})"))
             << "item 1 (\"a\"): field \"start_set.points[1][1]\": -Infinity is not a finite "
                "number";
+        // Unknown fields are kept and written back: an invalid number there is refused too
+        // (it used to come back as the string "\u001fawb-not-finite:NaN").
+        QTest::newRow("NaN in an unknown item field")
+            << project(curveWith("a", "future_field", "NaN"))
+            << "field \"items[1].future_field\": NaN is not a finite number";
+        QTest::newRow("1e999 deep in an unknown field")
+            << project(curveWith("a", "future", R"({"x": [1, {"y": 1e999}]})"))
+            << "field \"items[1].future.x[2].y\": 1e999 is not a finite number";
+        QTest::newRow("Infinity in an unknown root field")
+            << QByteArray(R"({"format": "attractor-workbench", "version": 1, "items": [],
+                              "extra": -Infinity})")
+            << "field \"extra\": -Infinity is not a finite number";
+        QTest::newRow("NaN in an ignored field of a known object")
+            << project(curveWith("a", "scheme", R"({"kind": "chaikin", "unused": NaN})"))
+            << "field \"items[1].scheme.unused\": NaN is not a finite number";
         QTest::newRow("point of one number")
             << project(curveWith("a", "control_points", "[[0, 0], [1]]"))
             << "item 1 (\"a\"): field \"control_points[2]\": expected a point [x, y]";
@@ -403,7 +418,7 @@ private slots:
                     QVERIFY2(a->derivedIfs(), qPrintable(a->derivedError()));
             ++examples;
         }
-        QCOMPARE(examples, 12);
+        QCOMPARE(examples, 13);
     }
 };
 
