@@ -722,6 +722,9 @@ int animate(const QStringList &args)
                                   "Animation dock, or give it an \"animation\" field "
                                   "(docs/file-format.md)")
                               .arg(item->name())};
+        for (const QString &target : inactiveAnimationTargets(*item))
+            err() << "attractor-cli: note: the track of " << target << " is skipped: item '"
+                  << item->name() << "' has no such input now\n";
         AnimationSpec timing = item->animation();
         if (parser.isSet("fps"))
             timing.fps = realOption(parser, "fps", 1, AnimationSpec::maxFps);

@@ -308,6 +308,8 @@ bool applyAnimation(Item &item, const AnimationSpec &spec, double time, QString 
     Q_ASSERT(!item.project());
     for (const AnimationTrack &track : spec.tracks) {
         QString why;
+        if (animationValue(item, track.target).empty())
+            continue; // inactive: the item has no such input now
         if (!applyTrack(item, track, track.valueAt(time, spec.duration), &why)) {
             if (error)
                 *error = tr("%1 at %2 s: %3")
@@ -327,7 +329,17 @@ std::unique_ptr<Item> animatedCopy(const Item &item, double time, QString *error
     return copy;
 }
 
-MaybeProblem animationProblem(const Item &item, const AnimationSpec &spec)
+QStringList inactiveAnimationTargets(const Item &item)
+{
+    QStringList list;
+    for (const AnimationTrack &track : item.animation().tracks)
+        if (animationValue(item, track.target).empty())
+            list << track.target;
+    return list;
+}
+
+MaybeProblem animationProblem(const Item &item, const AnimationSpec &spec,
+                              const AnimationSpec *previous)
 {
     if (spec.isEmpty())
         return std::nullopt;
@@ -338,6 +350,8 @@ MaybeProblem animationProblem(const Item &item, const AnimationSpec &spec)
         QString why;
         const std::vector<double> now = animationValue(item, track.target, &why);
         const QString at = QStringLiteral("tracks[%1]").arg(t + 1);
+        if (now.empty() && previous && previous->trackIndex(track.target) >= 0)
+            continue; // inactive already
         if (now.empty())
             return Problem{at + QStringLiteral(".target"), why};
         if (int(now.size()) != track.size())

@@ -91,14 +91,22 @@ QList<AnimationTarget> animationTargets(const Item &item);
 std::vector<double> animationValue(const Item &item, const QString &target,
                                    QString *error = nullptr);
 // Sets the inputs of `item` — which must not be in a project: a copy — to the values of `spec`
-// at `time`. False with *error naming the track and the time when the item refuses a value.
+// at `time` (inactive tracks skipped). False with *error naming the track and the time when the
+// item refuses a value.
 bool applyAnimation(Item &item, const AnimationSpec &spec, double time, QString *error);
 // A copy of `item` (without children, in no project) whose inputs are those at `time` of the
 // item's own animation; nullptr with *error when a value is refused.
 std::unique_ptr<Item> animatedCopy(const Item &item, double time, QString *error);
 // Whether `spec` fits `item`: every target exists with the right size and the item accepts the
-// values at every key time (and, for circles, a quarter of a turn apart).
-MaybeProblem animationProblem(const Item &item, const AnimationSpec &spec);
+// values at every key time (and, for circles, a quarter of a turn apart). A target the item
+// does not have now (ω after the scheme became a B-spline, a removed control point) makes the
+// track inactive, not wrong, when `previous` has a track on it already: an edit may not key
+// what does not exist, but an edit elsewhere never makes the document refuse itself, and such
+// a file loads (the loader passes the spec itself as `previous`).
+MaybeProblem animationProblem(const Item &item, const AnimationSpec &spec,
+                              const AnimationSpec *previous = nullptr);
+// The targets of the item's tracks that it does not have now (their tracks are skipped).
+QStringList inactiveAnimationTargets(const Item &item);
 
 // The values of the animated inputs at `time`, for a caption or the status bar:
 // "t = 1.20 s: ω = 0.0625, P3 = (1.5, 2)".

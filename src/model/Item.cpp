@@ -55,7 +55,7 @@ bool Item::setAnimation(const AnimationSpec &animation, QString *error)
     AnimationSpec spec = animation;
     if (spec.isEmpty())
         spec = AnimationSpec{0.0, 25.0, {}};
-    else if (const MaybeProblem p = animationProblem(*this, spec)) {
+    else if (const MaybeProblem p = animationProblem(*this, spec, &m_animation)) {
         if (error)
             *error = p->field.isEmpty() ? p->message
                                         : QStringLiteral("%1: %2").arg(p->field, p->message);

@@ -441,7 +441,8 @@ std::unique_ptr<Item> ProjectIO::readItem(const QJsonValue &value, const QString
         item->read(r);
         item->checkLoaded(r);
         if (checkAnimation)
-            if (const MaybeProblem p = animationProblem(*item, item->animation()))
+            if (const MaybeProblem p =
+                    animationProblem(*item, item->animation(), &item->animation()))
                 r.fail(p->field.isEmpty() ? QStringLiteral("animation")
                                           : QStringLiteral("animation.") + p->field,
                        p->message);

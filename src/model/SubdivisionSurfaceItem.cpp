@@ -232,13 +232,13 @@ bool SubdivisionSurfaceItem::setMapsUsed(std::vector<int> maps)
     return setNet(next);
 }
 
-bool SubdivisionSurfaceItem::setMeshRounds(int rounds)
+bool SubdivisionSurfaceItem::setMeshRounds(int rounds, int gesture)
 {
     if (rounds < 0 || rounds > maxMeshRounds)
         return false;
     applyProperty(&SubdivisionSurfaceItem::m_meshRounds, rounds,
                   &SubdivisionSurfaceItem::meshRoundsChanged,
-                  tr("Change subdivision rounds of %1").arg(name()));
+                  tr("Change subdivision rounds of %1").arg(name()), gesture);
     return true;
 }
 
@@ -458,7 +458,7 @@ bool SubdivisionSurfaceItem::setParameter(const QString &key, const QVariant &va
         }
         const SurfaceNet net = ok ? SurfaceNet::defaultNet(next) : m_net;
         return commitParameter(key, value, ok, checkNet(net),
-                               [&] { return next == m_net.scheme || setNet(net); }, error);
+                               [&] { return next == m_net.scheme || setNet(net, gesture); }, error);
     }
     if (key == "camera.azimuth" || key == "camera.elevation") {
         SurfaceCamera next = m_camera;
@@ -474,7 +474,7 @@ bool SubdivisionSurfaceItem::setParameter(const QString &key, const QVariant &va
         MaybeProblem problem;
         if (ok && (r < 0 || r > maxMeshRounds))
             problem = Problem{"mesh_rounds", tr("from 0 to %1 rounds").arg(maxMeshRounds)};
-        return commitParameter(key, value, ok, problem, [&] { return setMeshRounds(r); }, error);
+        return commitParameter(key, value, ok, problem, [&] { return setMeshRounds(r, gesture); }, error);
     }
     if (key.startsWith("maps.")) {
         const int i = key.mid(5).toInt(&ok);

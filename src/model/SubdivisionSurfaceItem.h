@@ -88,7 +88,7 @@ public:
 
     // Rounds of classic subdivision for the mesh route (0..6).
     int meshRounds() const { return m_meshRounds; }
-    bool setMeshRounds(int rounds);
+    bool setMeshRounds(int rounds, int gesture = 0);
     static constexpr int maxMeshRounds = 6;
 
     const SurfaceCamera &camera() const { return m_camera; }

@@ -178,13 +178,52 @@ private slots:
             QVERIFY2(error.contains(expected), qPrintable(error));
         };
         QByteArray bad = good;
-        refused(bad.replace("\"scheme.omega\"", "\"scheme.degree\""), "animation.tracks[1].target");
+        refused(bad.replace("\"fps\": 25", "\"fps\": 0.5"), "animation.fps");
         bad = good;
         refused(bad.replace("\"fps\": 25", "\"fps\": 1000"), "animation.fps");
         bad = good;
         refused(bad.replace("\"time\": 1", "\"time\": 5"), "animation.tracks[1].keys[2].time");
         bad = good;
         refused(bad.replace("\"time\": 1", "\"tme\": 1"), "animation.tracks[1].keys[2]");
+    }
+
+    // A track whose input the item does not have now (omega once the scheme is no longer the
+    // four-point scheme) is inactive: the edit that removed omega is not refused, the file still
+    // saves and loads, frames skip the track, and keying omega again needs the four-point scheme.
+    void tracksOfVanishedInputsAreInactive()
+    {
+        Project project;
+        auto *item = static_cast<SubdivisionCurveItem *>(project.addItem(fourPoint(0.0)));
+        QVERIFY(item->setAnimation(spec(1.0, 25.0, {track("scheme.omega", {{0.0, {0.0}}, {1.0, {0.1}}}),
+                                                    track("points.0.5", {{0.0, {6.0, 1.0}}, {1.0, {6.0, 2.0}}})})));
+        SchemeSpec s = item->scheme();
+        s.kind = SchemeSpec::Kind::BSpline;
+        QVERIFY(item->setScheme(s));
+        QVERIFY(item->removeControlPoint(5));
+        QCOMPARE(inactiveAnimationTargets(*item), (QStringList{"scheme.omega", "points.0.5"}));
+        // Saved and loaded with the inactive tracks kept.
+        ProjectData data;
+        QString error;
+        QVERIFY2(ProjectIO::parse(project.serialize(), "saved.awb", &data, &error), qPrintable(error));
+        QCOMPARE(data.items.front()->animation(), item->animation());
+        // Frames skip them; another key can still be set.
+        const auto frame = animatedCopy(*item, 0.5, &error);
+        QVERIFY2(frame, qPrintable(error));
+        AnimationSpec more = item->animation();
+        more.tracks.push_back(track("points.0.0", {{0.0, {0.0, 0.0}}, {1.0, {0.5, 0.0}}}));
+        QVERIFY2(item->setAnimation(more, &error), qPrintable(error));
+        // A new track on an input that does not exist is refused.
+        more.tracks.push_back(track("scheme.a", {{0.0, {0.2}}}));
+        QVERIFY(!item->setAnimation(more, &error));
+        QVERIFY2(error.contains("scheme.a"), qPrintable(error));
+        // Back to the four-point scheme with six points: the tracks drive again.
+        QVERIFY(item->insertControlPoint(5, {6, 1}));
+        s.kind = SchemeSpec::Kind::FourPoint;
+        QVERIFY(item->setScheme(s));
+        QVERIFY(inactiveAnimationTargets(*item).isEmpty());
+        const auto again = animatedCopy(*item, 0.5, &error);
+        QVERIFY2(again, qPrintable(error));
+        QCOMPARE(again->parameter("scheme.omega").toDouble(), 0.05);
     }
 
     void probabilitiesKeepTheirSum()

@@ -502,11 +502,19 @@ void AnimationPanel::rebuild()
         auto *top = new QTreeWidgetItem(m_tree);
         top->setText(0, targetLabel(*m_item, tk.target));
         top->setToolTip(0, tk.target);
-        top->setText(1, tk.path == AnimationTrack::Path::Circle
-                            ? AnimationPanel::tr("circle about (%1), %2 turns")
+        const bool inactive = animationValue(*m_item, tk.target).empty();
+        top->setText(1, inactive ? tr("inactive: %1 has no such input now").arg(m_item->name())
+                      : tk.path == AnimationTrack::Path::Circle
+                            ? tr("circle about (%1), %2 turns")
                                   .arg(valueText(tk.center))
                                   .arg(tk.turns)
                             : QString());
+        if (inactive) {
+            top->setForeground(0, palette().brush(QPalette::Disabled, QPalette::Text));
+            top->setToolTip(1, tr("The item does not have %1 in its present state (another "
+                                  "scheme, fewer points): the track is kept and skipped.")
+                                   .arg(tk.target));
+        }
         top->setData(0, trackRole, int(t));
         for (std::size_t k = 0; k < tk.keys.size(); ++k) {
             auto *row = new QTreeWidgetItem(top);
