@@ -9,7 +9,7 @@ PACKAGES=(
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-charts-dev qt6-svg-dev
   qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools libqcustomplot-dev libeigen3-dev
   libxkbcommon-dev xvfb xauth libgl1-mesa-dev x11-apps imagemagick fonts-dejavu-core poppler-utils
-  assimp-utils python3-meshio adwaita-icon-theme ffmpeg
+  assimp-utils python3-meshio adwaita-icon-theme ffmpeg clang libclang-rt-14-dev
 )
 
 missing=()
@@ -25,6 +25,12 @@ if [ ${#missing[@]} -gt 0 ]; then
   $SUDO apt-get update
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y --no-install-recommends \
     -o DPkg::Lock::Timeout=300 "${missing[@]}"
+fi
+
+# `setup.sh --packages-only`: the packages, no build (the sanitizer and fuzzing scripts build
+# in their own folders).
+if [ "${1:-}" = "--packages-only" ]; then
+  exit 0
 fi
 
 BUILD_TYPE="${AWB_BUILD_TYPE:-RelWithDebInfo}"

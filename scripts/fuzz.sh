@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Fuzzing (issue 14): builds the libFuzzer targets of tests/fuzz with clang, AddressSanitizer and
+# UndefinedBehaviorSanitizer in build-asan/ (the build of scripts/sanitize.sh), and runs each for
+# SECONDS (default 60):
+#   fuzz_project_loader  any bytes as a project file: refused with a message, or saved, loaded
+#                        and saved again to the same bytes; every item's IFS built or refused
+#   fuzz_cli_arguments   the command line of `attractor-cli points` (start sets, addresses,
+#                        depths, names) on a real example
+# Seeds: the examples, the bad files of the tests (tests/fuzz/seeds/) and the crashes found so
+# far (tests/fuzz/regressions/, also loaded by the normal test suite). One input may take at
+# most 1 s, 2 GB; leaks are reported. A crash, a hang or a leak fails the run and leaves its
+# input in build-asan/artifacts/<target>/.
+#   scripts/fuzz.sh [SECONDS] [TARGET...]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+SECS="${1:-60}"
+shift || true
+TARGETS=("$@")
+[ ${#TARGETS[@]} -gt 0 ] || TARGETS=(fuzz_project_loader fuzz_cli_arguments)
+bash scripts/setup.sh --packages-only
+bash scripts/configure-asan.sh
+cmake --build build-asan --parallel "$(nproc)" --target "${TARGETS[@]}"
+source scripts/sanitizer-env.sh
+export QT_QPA_PLATFORM=offscreen
+status=0
+for t in "${TARGETS[@]}"; do
+  corpus="build-asan/corpus/$t"
+  artifacts="build-asan/artifacts/$t/"
+  mkdir -p "$corpus" "$artifacts"
+  seeds=()
+  case "$t" in
+    fuzz_project_loader) seeds=(examples tests/fuzz/seeds/loader tests/fuzz/regressions/loader) ;;
+    fuzz_cli_arguments) seeds=(tests/fuzz/seeds/cli tests/fuzz/regressions/cli) ;;
+  esac
+  existing=()
+  for s in "${seeds[@]}"; do [ -d "$s" ] && existing+=("$s"); done
+  log="build-asan/$t.log"
+  echo "fuzz: $t for $SECS s"
+  if ! "build-asan/bin/$t" -max_total_time="$SECS" -timeout=1 -rss_limit_mb=2048 \
+       -max_len=65536 -print_final_stats=1 -artifact_prefix="$artifacts" \
+       "$corpus" "${existing[@]}" > "$log" 2>&1; then
+    status=1
+    echo "fuzz: $t FAILED; the input is in $artifacts, the log in $log"
+    grep -E "ERROR|SUMMARY|Test unit written" "$log" | head -5 || true
+  fi
+  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')
+  echo "fuzz: $t: $runs executions in $SECS s, corpus $(ls "$corpus" | wc -l) inputs"
+done
+exit $status

@@ -1,0 +1,5 @@
+# Sourced by scripts/sanitize.sh and scripts/fuzz.sh: the sanitizers' run-time options.
+# halt_on_error: the first report ends the process with a failure status.
+export ASAN_OPTIONS="halt_on_error=1:abort_on_error=0:detect_leaks=1:detect_stack_use_after_return=0:strict_string_checks=1:check_initialization_order=1:allocator_may_return_null=1"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
+export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
