@@ -322,10 +322,12 @@ QImage renderFigure(const FigureSpec &spec)
     return image;
 }
 
-bool writeFigure(const FigureSpec &spec, const QString &fileName, QString *error)
+bool writeFigure(const FigureSpec &spec, const QString &fileName, QString *error,
+                 const QString &format)
 {
     return writePaintedFigure(fileName, figureSize(spec), spec.title,
-                              [&](QPainter &p) { paintFigure(p, spec); }, error, spec.metadata);
+                              [&](QPainter &p) { paintFigure(p, spec); }, error, spec.metadata,
+                              format);
 }
 
 } // namespace awb

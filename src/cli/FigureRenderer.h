@@ -68,6 +68,8 @@ QSize figureSize(const FigureSpec &spec);
 void paintFigure(QPainter &painter, const FigureSpec &spec);
 QImage renderFigure(const FigureSpec &spec);
 // Writes PNG, SVG or PDF by the file's suffix; false with *error set on failure.
-bool writeFigure(const FigureSpec &spec, const QString &fileName, QString *error);
+// `format` (png, svg, pdf) defaults to the file's suffix.
+bool writeFigure(const FigureSpec &spec, const QString &fileName, QString *error,
+                 const QString &format = {});
 
 } // namespace awb

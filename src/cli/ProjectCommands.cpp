@@ -7,6 +7,7 @@
 #include "model/FigureMetadata.h"
 #include "model/AttractorItem.h"
 #include "model/ExactCurve.h"
+#include "model/FileWriting.h"
 #include "model/ItemAddress.h"
 #include "model/NumberFormat.h"
 #include "model/PointExport.h"
@@ -26,7 +27,6 @@
 #include <QProcess>
 #include <QStandardPaths>
 #include <QTemporaryDir>
-#include <QSaveFile>
 
 #include <QCommandLineParser>
 #include <QFileInfo>
@@ -477,7 +477,10 @@ QList<QCommandLineOption> figureOptionList()
              "az,el"},
             {"bounds", "Plane figures: the world rectangle to frame (padded by 6%), e.g. to "
                        "compare figures at one scale (default: fit the content).",
-             "x0,y0,x1,y1"}};
+             "x0,y0,x1,y1"},
+            {"format", "The output's format when its name has no suffix (e.g. /dev/stdout): "
+                       "png, svg or pdf (default: the suffix).",
+             "png|svg|pdf"}};
 }
 
 struct FigureOptions {
@@ -492,6 +495,7 @@ struct FigureOptions {
     QString view;  // "az,el" or empty
     QRectF bounds;  // the world rectangle to frame; invalid: fit the content
     QString captionSuffix;  // e.g. an animation frame's time and values
+    QString format;  // "", "png", "svg" or "pdf"
 };
 
 FigureOptions figureOptions(const QCommandLineParser &parser)
@@ -532,6 +536,12 @@ FigureOptions figureOptions(const QCommandLineParser &parser)
             throw Failure{QString("--bounds must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, got '%1'")
                               .arg(parser.value("bounds"))};
         o.bounds = QRectF(QPointF(v[0], v[1]), QPointF(v[2], v[3]));
+    }
+    if (parser.isSet("format")) {
+        o.format = parser.value("format").toLower();
+        if (o.format != "png" && o.format != "svg" && o.format != "pdf")
+            throw Failure{QString("--format must be png, svg or pdf, got '%1'")
+                              .arg(parser.value("format")), 2};
     }
     return o;
 }
@@ -618,7 +628,7 @@ void renderFigure(const Project &project, AttractorItem *item, const FigureOptio
                         .arg(el);
         s.metadata = figureMetadata(project, *item);
         QString error;
-        if (!writeSurfaceFigure(s, outFile, &error))
+        if (!writeSurfaceFigure(s, outFile, &error, o.format))
             throw Failure{error};
         return;
     }
@@ -650,7 +660,7 @@ void renderFigure(const Project &project, AttractorItem *item, const FigureOptio
     }
     spec.metadata = figureMetadata(project, *item);
     QString error;
-    if (!writeFigure(spec, outFile, &error))
+    if (!writeFigure(spec, outFile, &error, o.format))
         throw Failure{error};
 }
 
@@ -1015,7 +1025,7 @@ namespace awb::cli {
 namespace {
 
 // Wavefront OBJ of the control net after `rounds` rounds of classic subdivision.
-void writeObj(QSaveFile &file, const SubdivisionSurfaceItem *item, int rounds)
+void writeObj(QIODevice &file, const SubdivisionSurfaceItem *item, int rounds)
 {
     const LatticeMesh mesh = item->refinedMesh(rounds);
     QByteArray text;
@@ -1069,9 +1079,12 @@ int exportData(const QStringList &args)
         load(project, parser.positionalArguments().first());
         AttractorItem *item = attractorItem(project, parser.value("item"));
         auto d = derived(item);
-        QSaveFile file(parser.value("out"));
-        if (!file.open(QIODevice::WriteOnly))
-            throw Failure{QString("cannot write %1: %2").arg(file.fileName(), file.errorString())};
+        const QString outFile = parser.value("out");
+        WholeFileWriter writer;
+        QString reason;
+        if (!writer.open(outFile, &reason))
+            throw Failure{QString("cannot write %1: %2").arg(outFile, reason)};
+        QIODevice &file = *writer.device();
         if (format == "ply") {
             const int depth = parser.isSet("depth") ? intOption(parser, "depth", 0, 64)
                                                     : item->algorithm().depth;
@@ -1092,8 +1105,8 @@ int exportData(const QStringList &args)
                                    : surface->meshRounds();
             writeObj(file, surface, rounds);
         }
-        if (!file.commit())
-            throw Failure{QString("cannot write %1: %2").arg(file.fileName(), file.errorString())};
+        if (!writer.commit(&reason))
+            throw Failure{QString("cannot write %1: %2").arg(outFile, reason)};
         out() << parser.value("out") << "\n";
         return 0;
     });

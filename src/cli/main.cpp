@@ -4,11 +4,14 @@
 #include "cli/Gallery.h"
 #include "cli/ProjectCommands.h"
 #include "core/analysis/Spectrum.h"
+#include "render/FigureFile.h"
 
 #include <QCommandLineParser>
 #include <QDir>
 #include <QGuiApplication>
 #include <QTextStream>
+
+#include <csignal>
 
 using namespace awb;
 
@@ -66,8 +69,11 @@ int runExamples(const QStringList &args)
                        {QString("F^%1(X0)").arg(ex.depth), ex.depth}};
         const QImage img = renderFigure(spec);
         const QString file = dir.filePath(ex.id + ".png");
-        if (!img.save(file)) {
-            err() << "attractor-cli: cannot write " << file << "\n";
+        QString error;
+        if (!writeFigureFile(
+                file, [&](QIODevice &png, QString *) { return writePng(img, png); },
+                &error)) {
+            err() << "attractor-cli: " << error << "\n";
             return 1;
         }
         out() << file << "\n";
@@ -95,6 +101,9 @@ void usage()
 
 int main(int argc, char **argv)
 {
+    // A file size limit (ulimit -f) makes a too-large write fail with EFBIG, reported as a
+    // message, instead of killing the process.
+    std::signal(SIGXFSZ, SIG_IGN);
     // Text in images needs a QGuiApplication; without a display, render off screen.
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") && qEnvironmentVariableIsEmpty("DISPLAY"))
         qputenv("QT_QPA_PLATFORM", "offscreen");

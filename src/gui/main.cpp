@@ -24,8 +24,12 @@
 
 #include <cstdio>
 
+#include <csignal>
+
 int main(int argc, char *argv[])
 {
+    // A file size limit makes a too-large save fail with a message, not kill the window.
+    std::signal(SIGXFSZ, SIG_IGN);
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("attractor-workbench"));
     QApplication::setApplicationDisplayName(QStringLiteral("Attractor Workbench"));

@@ -62,7 +62,8 @@ bool AttractorItem::moveControlPoints(const std::map<int, Point> &to, int gestur
 bool AttractorItem::insertControlPoint(int index, const Point &point, int set)
 {
     if (!validSet(set) || !pointCountEditable(set) || index < 0
-        || index > int(pointStorage(set).size()) || !allFinite({point}))
+        || index > int(pointStorage(set).size()) || !allFinite({point})
+        || int(pointStorage(set).size()) >= maxControlPoints)
         return false;
     execute(new InsertControlPointCommand(this, set, index, point));
     return true;
@@ -126,7 +127,29 @@ void AttractorItem::storeRemovedPoint(int set, int index)
 
 std::shared_ptr<const DerivedIfs> AttractorItem::derivedIfs() const
 {
-    return m_derived.get([this] { return computeIfs(); });
+    return m_derived.get([this] {
+        DerivedIfs d = computeIfs();
+        // Finite inputs can still overflow (coordinates near 1e308 in P^-1 S_i P): say so
+        // here rather than as a non-finite start set or an empty picture later.
+        for (std::size_t i = 0; i < d.ifs.maps.size(); ++i)
+            if (!d.ifs.maps[i].A.allFinite() || !d.ifs.maps[i].b.allFinite())
+                throw InputError(
+                    tr("map %1 is not finite: the control points' coordinates overflow in the "
+                       "lifted map P⁻¹ S_i P (the largest is %2)")
+                        .arg(i + 1)
+                        .arg(largestCoordinate(), 0, 'g', 3)
+                        .toStdString());
+        return d;
+    });
+}
+
+double AttractorItem::largestCoordinate() const
+{
+    double m = 0;
+    for (int set = 0; set < controlPointSetCount(); ++set)
+        for (const Point &p : controlPoints(set))
+            m = std::max({m, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    return m;
 }
 
 QString AttractorItem::derivedError() const
@@ -152,6 +175,11 @@ StartSet AttractorItem::coreStartSet(const DerivedIfs &derived) const
     if (m_startSet.kind == StartSetSpec::Kind::Lifted)
         return StartSet::points(liftedStartPoints(derived, m_startSet.lifted));
     const Mat vertices = derived.toIfsSpace(toMatrix(m_startSet.points, pointDimension()));
+    if (!vertices.allFinite())
+        throw InputError(tr("the start set is not finite in the IFS space: the lifting "
+                            "overflows (the largest control point coordinate is %1)")
+                             .arg(largestCoordinate(), 0, 'g', 3)
+                             .toStdString());
     switch (m_startSet.kind) {
     case StartSetSpec::Kind::Point:
     case StartSetSpec::Kind::Points:
@@ -215,6 +243,17 @@ void AttractorItem::read(const FieldReader &fields)
 void AttractorItem::checkLoaded(const FieldReader &fields) const
 {
     Item::checkLoaded(fields);
+    for (int set = 0; set < controlPointSetCount(); ++set) {
+        const qsizetype n = qsizetype(controlPoints(set).size());
+        if (n > maxControlPoints)
+            fields.fail(QStringLiteral("control_points"),
+                        controlPointSetCount() == 1
+                            ? tr("%1 points; an item takes at most %2 (its subdivision "
+                                 "matrices would be %1 x %1)")
+                                  .arg(n).arg(maxControlPoints)
+                            : tr("point set %1 has %2 points; an item takes at most %3 per set")
+                                  .arg(set + 1).arg(n).arg(maxControlPoints));
+    }
     fields.require(m_algorithm.check(mapCount()), "algorithm");
     // Lifted start points must have the lifted space's number of coordinates.
     if (m_startSet.kind == StartSetSpec::Kind::Lifted)

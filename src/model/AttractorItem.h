@@ -81,6 +81,10 @@ public:
     // Whether points may be inserted into or removed from point set `set` (a surface's net is
     // fixed by its scheme).
     virtual bool pointCountEditable(int set) const { Q_UNUSED(set); return true; }
+    // The most points a point set may have: an n-point set makes n x n subdivision matrices
+    // (lifting, spectra, fixed points cost n^3), so a file or an edit beyond this is refused
+    // with a message rather than left to exhaust the time or the memory.
+    static constexpr int maxControlPoints = 256;
 
     // ---- control points: an item has controlPointSetCount() ordered lists of plane points.
     virtual int controlPointSetCount() const { return 0; }
@@ -102,6 +106,8 @@ public:
     // with the reason in derivedError().
     std::shared_ptr<const DerivedIfs> derivedIfs() const;
     QString derivedError() const override;
+    // The largest absolute coordinate of any control point (0 without points).
+    double largestCoordinate() const;
     // The start set mapped into the IFS space of `derived`, ready for core::iterate().
     // Throws InputError.
     StartSet coreStartSet(const DerivedIfs &derived) const;

@@ -41,6 +41,10 @@ public:
         try {
             m_value = std::make_shared<const T>(compute());
             m_error.clear();
+        } catch (const std::bad_alloc &) {
+            m_value.reset();
+            m_error = QCoreApplication::translate(
+                "awb::Item", "there is not enough memory to compute it");
         } catch (const std::exception &e) {
             m_value.reset();
             m_error = QString::fromStdString(e.what());

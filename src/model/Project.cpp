@@ -1,6 +1,8 @@
 #include "model/FigureMetadata.h"
 #include "model/Project.h"
 
+#include "model/AttractorItem.h"
+
 #include "model/Commands.h"
 #include "model/ProjectIO.h"
 
@@ -401,8 +403,18 @@ QStringList Project::problems() const
     QStringList out;
     for (const Item *item : items()) {
         const QString error = item->derivedError();
-        if (!error.isEmpty())
+        if (!error.isEmpty()) {
             out << tr("%1: %2").arg(item->name(), error);
+            continue;
+        }
+        // The start set too: it is drawn in the IFS's own space.
+        if (const auto *a = qobject_cast<const AttractorItem *>(item))
+            if (const auto d = a->derivedIfs(); d && !d->iterate)
+                try {
+                    a->coreStartSet(*d);
+                } catch (const std::exception &e) {
+                    out << tr("%1: %2").arg(item->name(), QString::fromStdString(e.what()));
+                }
     }
     return out;
 }

@@ -1,11 +1,11 @@
 #include "model/ProjectIO.h"
 
+#include "model/FileWriting.h"
 #include "model/ItemRegistry.h"
 #include "model/Project.h"
 
 #include <QFile>
 #include <QJsonDocument>
-#include <QSaveFile>
 
 #include <cmath>
 #include <cstdlib>
@@ -284,12 +284,10 @@ QByteArray ProjectIO::toBytes(const QJsonObject &root)
 
 bool ProjectIO::writeFile(const QString &fileName, const QByteArray &bytes, QString *error)
 {
-    QSaveFile file(fileName);
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size()
-        || !file.commit()) {
+    QString reason;
+    if (!writeWholeFile(fileName, bytes, &reason)) {
         if (error)
-            *error = tr("%1: cannot save: %2").arg(fileName, file.errorString());
-        file.cancelWriting();
+            *error = tr("%1: cannot save: %2").arg(fileName, reason);
         return false;
     }
     return true;
@@ -305,7 +303,24 @@ bool ProjectIO::readFile(const QString &fileName, ProjectData *out, QString *err
             *error = tr("%1: cannot open: %2").arg(fileName, file.errorString());
         return false;
     }
-    return parse(file.readAll(), fileName, out, error);
+    // A project of the largest nets and point sets the items accept is a few MB: a file many
+    // times that size is not one, and reading it would only exhaust the memory.
+    if (file.size() > maxFileBytes) {
+        if (error)
+            *error = tr("%1: the file is %2 MB; project files larger than %3 MB are refused "
+                        "(a project is at most a few MB)")
+                         .arg(fileName)
+                         .arg(double(file.size()) / (1024.0 * 1024.0), 0, 'f', 1)
+                         .arg(maxFileBytes / (1024 * 1024));
+        return false;
+    }
+    const QByteArray bytes = file.readAll();
+    if (file.error() != QFileDevice::NoError) {
+        if (error)
+            *error = tr("%1: cannot read: %2").arg(fileName, file.errorString());
+        return false;
+    }
+    return parse(bytes, fileName, out, error);
 }
 
 bool ProjectIO::parse(const QByteArray &bytes, const QString &source, ProjectData *out,
@@ -324,6 +339,25 @@ bool ProjectIO::parseJson(const QByteArray &bytes, const QString &source, QJsonO
     QString ignored;
     if (!error)
         error = &ignored;
+    if (bytes.trimmed().isEmpty()) {
+        *error = bytes.isEmpty() ? tr("%1: the file is empty").arg(source)
+                                 : tr("%1: the file holds only white space").arg(source);
+        return false;
+    }
+    // UTF-16 and UTF-32 text: a byte order mark, or JSON's first character ('{' or white
+    // space) next to zero bytes.
+    const QByteArray head = bytes.left(4);
+    auto opening = [](char c) { return c == '{' || c == ' ' || c == '\n' || c == '\r' || c == '\t'; };
+    const bool wide = head.startsWith("\xff\xfe") || head.startsWith("\xfe\xff")
+                      || (head.size() >= 2 && head[0] == 0 && opening(head[1]))
+                      || (head.size() >= 2 && head[1] == 0 && opening(head[0]))
+                      || (head.size() == 4 && head[0] == 0 && head[1] == 0 && head[2] == 0);
+    if (wide) {
+        *error = tr("%1: the file is UTF-16 or UTF-32 text; project files are UTF-8 (save it "
+                    "again as UTF-8)")
+                     .arg(source);
+        return false;
+    }
     QByteArray text = bytes;
     for (int attempt = 0;; ++attempt) {
         QJsonParseError pe;

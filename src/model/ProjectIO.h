@@ -83,6 +83,8 @@ class ProjectIO {
     Q_DECLARE_TR_FUNCTIONS(awb::ProjectIO)
 public:
     static constexpr int formatVersion = 1;
+    // Larger files are refused before they are read.
+    static constexpr qint64 maxFileBytes = 64ll * 1024 * 1024;
     static QString formatName() { return QStringLiteral("attractor-workbench"); }
     static QString fileSuffix() { return QStringLiteral("awb"); }
 

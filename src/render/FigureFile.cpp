@@ -1,15 +1,27 @@
 #include "render/FigureFile.h"
 
-#include <QFile>
+#include "model/FileWriting.h"
+
+#include <QBuffer>
+#include <QCoreApplication>
 #include <QFileInfo>
 #include <QImage>
+#include <QImageWriter>
 #include <QPageSize>
 #include <QPainter>
 #include <QPdfWriter>
-#include <QSaveFile>
 #include <QSvgGenerator>
 
 namespace awb {
+
+namespace {
+
+// The translation context of the messages below.
+struct FigureFile {
+    Q_DECLARE_TR_FUNCTIONS(awb::FigureFile)
+};
+
+} // namespace
 
 void addPngText(QImage &image, const FigureMetadata &metadata)
 {
@@ -17,68 +29,107 @@ void addPngText(QImage &image, const FigureMetadata &metadata)
         image.setText(key, text);
 }
 
-bool addSvgMetadata(const QString &svgFile, const FigureMetadata &metadata, QString *error)
+bool addSvgMetadata(QByteArray &svg, const FigureMetadata &metadata)
 {
-    if (metadata.svgElement.isEmpty())
-        return true;
-    QFile in(svgFile);
-    if (!in.open(QIODevice::ReadOnly)) {
-        *error = QString("cannot read %1: %2").arg(svgFile, in.errorString());
-        return false;
-    }
-    QByteArray svg = in.readAll();
-    in.close();
     const qsizetype open = svg.indexOf("<svg");
     const qsizetype end = open < 0 ? -1 : svg.indexOf('>', open);
-    if (end < 0) {
-        *error = QString("%1 is not an SVG file").arg(svgFile);
+    if (end < 0)
         return false;
-    }
-    svg.insert(end + 1, "\n" + metadata.svgElement);
-    QSaveFile out(svgFile);
-    if (!out.open(QIODevice::WriteOnly) || out.write(svg) != svg.size() || !out.commit()) {
-        *error = QString("cannot write %1: %2").arg(svgFile, out.errorString());
+    if (!metadata.svgElement.isEmpty())
+        svg.insert(end + 1, "\n" + metadata.svgElement);
+    return true;
+}
+
+bool writePng(const QImage &image, QIODevice &out)
+{
+    QImageWriter writer(&out, "png");
+    return writer.write(image);
+}
+
+bool writeFigureFile(const QString &fileName,
+                     const std::function<bool(QIODevice &out, QString *error)> &write,
+                     QString *error)
+{
+    QString ignored;
+    if (!error)
+        error = &ignored;
+    const auto fail = [&](const QString &reason) {
+        *error = reason.isEmpty() ? FigureFile::tr("cannot write %1").arg(fileName)
+                                  : FigureFile::tr("cannot write %1: %2").arg(fileName, reason);
         return false;
+    };
+    // Refused before any work: a missing folder, a folder, a read-only file.
+    const QFileInfo info(fileName);
+    if (!QFileInfo(info.absolutePath()).isDir())
+        return fail(FigureFile::tr("the folder %1 does not exist").arg(info.absolutePath()));
+    if (info.isDir())
+        return fail(FigureFile::tr("it is a folder"));
+    if (info.isFile() && !info.isWritable())
+        return fail(FigureFile::tr("the file is read-only"));
+    QByteArray bytes;
+    QString reason;
+    {
+        QBuffer buffer(&bytes);
+        buffer.open(QIODevice::WriteOnly);
+        if (!write(buffer, &reason))
+            return fail(reason);
     }
+    if (!writeWholeFile(fileName, bytes, &reason))
+        return fail(reason);
     return true;
 }
 
 bool writePaintedFigure(const QString &fileName, QSize size, const QString &title,
                         const std::function<void(QPainter &)> &paint, QString *error,
-                        const FigureMetadata &metadata)
+                        const FigureMetadata &metadata, const QString &format)
 {
-    const QString suffix = QFileInfo(fileName).suffix().toLower();
-    const auto cannot = [&] {
-        *error = QString("cannot write %1").arg(fileName);
+    if (QFileInfo(fileName).isDir()) {
+        *error = FigureFile::tr("cannot write %1: it is a folder").arg(fileName);
         return false;
-    };
-    QPainter p;
-    if (suffix == "png") {
-        QImage image(size, QImage::Format_ARGB32_Premultiplied);
-        image.fill(Qt::white);
-        if (!p.begin(&image))
-            return cannot();
-        paint(p);
-        p.end();
-        addPngText(image, metadata);
-        return image.save(fileName, "PNG") || cannot();
     }
-    if (suffix == "svg") {
-        QSvgGenerator svg;
-        svg.setFileName(fileName);
-        svg.setSize(size);
-        svg.setViewBox(QRect(QPoint(0, 0), size));
-        svg.setTitle(title);
-        svg.setDescription("Attractor Workbench figure");
-        if (!p.begin(&svg))
-            return cannot();
-        paint(p);
-        if (!p.end())
-            return cannot();
-        return addSvgMetadata(fileName, metadata, error);
+    const QString kind = format.isEmpty() ? QFileInfo(fileName).suffix().toLower() : format;
+    if (kind != "png" && kind != "svg" && kind != "pdf") {
+        *error = kind.isEmpty()
+                     ? FigureFile::tr("%1 has no suffix: name the format (.png, .svg or .pdf)")
+                           .arg(fileName)
+                     : FigureFile::tr("unknown output format '.%1' (use .png, .svg or .pdf)")
+                           .arg(kind);
+        return false;
     }
-    if (suffix == "pdf") {
-        QPdfWriter pdf(fileName);
+    // Each painter is declared after its device: a paint() that throws ends the painter
+    // before the device goes.
+    return writeFigureFile(fileName, [&](QIODevice &out, QString *) {
+        if (kind == "png") {
+            QImage image(size, QImage::Format_ARGB32_Premultiplied);
+            image.fill(Qt::white);
+            QPainter p;
+            if (!p.begin(&image))
+                return false;
+            paint(p);
+            p.end();
+            addPngText(image, metadata);
+            return writePng(image, out);
+        }
+        if (kind == "svg") {
+            QByteArray svgBytes;
+            {
+                QBuffer svgBuffer(&svgBytes);
+                QSvgGenerator svg;
+                svg.setOutputDevice(&svgBuffer);
+                svg.setSize(size);
+                svg.setViewBox(QRect(QPoint(0, 0), size));
+                svg.setTitle(title);
+                svg.setDescription("Attractor Workbench figure");
+                QPainter p;
+                if (!p.begin(&svg))
+                    return false;
+                paint(p);
+                if (!p.end())
+                    return false;
+            }
+            return addSvgMetadata(svgBytes, metadata) && out.write(svgBytes) == svgBytes.size();
+        }
+        QPdfWriter pdf(&out);
         pdf.setTitle(title);
         pdf.setCreator("Attractor Workbench");
         pdf.setResolution(300);
@@ -87,18 +138,17 @@ bool writePaintedFigure(const QString &fileName, QSize size, const QString &titl
         pdf.setPageSize(QPageSize(QSizeF(mm, mm * size.height() / size.width()),
                                   QPageSize::Millimeter));
         pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
+        QPainter p;
         if (!p.begin(&pdf))
-            return cannot();
+            return false;
         // Scale figure pixels to the page: fonts given in pixels scale with it. Rasters stay
         // lossless (Qt's PDF engine would store them as JPEG).
         const double s = pdf.width() / double(size.width());
         p.scale(s, s);
         p.setRenderHint(QPainter::LosslessImageRendering);
         paint(p);
-        return p.end() || cannot();
-    }
-    *error = QString("unknown output format '.%1' (use .png, .svg or .pdf)").arg(suffix);
-    return false;
+        return p.end();
+    }, error);
 }
 
 } // namespace awb

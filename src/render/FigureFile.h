@@ -12,6 +12,7 @@
 
 #include <functional>
 
+class QIODevice;
 class QImage;
 class QPainter;
 
@@ -25,13 +26,28 @@ struct FigureMetadata {
 };
 
 // `paint` draws the figure into the rectangle (0, 0, size) of the painter. False with *error
-// set when the suffix is unknown or the file cannot be written.
+// set when the format is unknown or the file cannot be written. `format` ("png", "svg",
+// "pdf") defaults to the file's suffix (give it for a name without one, such as /dev/full).
 bool writePaintedFigure(const QString &fileName, QSize size, const QString &title,
                         const std::function<void(QPainter &)> &paint, QString *error,
-                        const FigureMetadata &metadata = {});
-// The two halves, for writers of their own: text chunks into an image about to be saved as
-// PNG; the element inserted after <svg ...> of a written SVG file (false with *error).
+                        const FigureMetadata &metadata = {}, const QString &format = {});
+
+// Every figure file is written through this: `write` writes the figure into `out` (a buffer
+// in memory, open for writing: Qt's image, SVG and PDF writers do not all report a failed
+// write to a file), and the bytes then replace `fileName` whole (model/FileWriting.h): a
+// failed or cancelled export leaves an existing file as it was. `write` returns false, with
+// *error set or left empty ("cannot write"). On failure *error reads "cannot write FILE: …".
+// A missing folder or a read-only file is refused before `write` runs.
+bool writeFigureFile(const QString &fileName,
+                     const std::function<bool(QIODevice &out, QString *error)> &write,
+                     QString *error);
+
+// PNG bytes of `image` (its text chunks included) into `out`.
+bool writePng(const QImage &image, QIODevice &out);
+
+// The writers' halves: text chunks into an image about to be written as PNG; the metadata
+// element inserted after <svg ...> of SVG bytes (false when they hold no <svg> element).
 void addPngText(QImage &image, const FigureMetadata &metadata);
-bool addSvgMetadata(const QString &svgFile, const FigureMetadata &metadata, QString *error);
+bool addSvgMetadata(QByteArray &svg, const FigureMetadata &metadata);
 
 } // namespace awb

@@ -138,12 +138,13 @@ QImage renderSurfaceFigure(const SurfaceFigureSpec &spec, const std::atomic<bool
     return image;
 }
 
-bool writeSurfaceFigure(const SurfaceFigureSpec &spec, const QString &fileName, QString *error)
+bool writeSurfaceFigure(const SurfaceFigureSpec &spec, const QString &fileName, QString *error,
+                        const QString &format)
 {
     const QImage image = renderSurfaceFigure(spec);
     return writePaintedFigure(fileName, image.size(), spec.caption,
                               [&](QPainter &p) { p.drawImage(0, 0, image); }, error,
-                              spec.metadata);
+                              spec.metadata, format);
 }
 
 } // namespace awb

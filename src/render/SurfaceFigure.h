@@ -46,6 +46,8 @@ OrthoCamera surfaceCamera(const SurfaceFigureSpec &spec, int pictureHeight);
 QImage renderSurfaceFigure(const SurfaceFigureSpec &spec, const std::atomic<bool> *cancel = nullptr,
                            IterationStats *stats = nullptr);
 // PNG, or SVG/PDF with the picture embedded as a lossless raster, by the file's suffix.
-bool writeSurfaceFigure(const SurfaceFigureSpec &spec, const QString &fileName, QString *error);
+// `format` (png, svg, pdf) defaults to the file's suffix.
+bool writeSurfaceFigure(const SurfaceFigureSpec &spec, const QString &fileName, QString *error,
+                        const QString &format = {});
 
 } // namespace awb

@@ -368,7 +368,8 @@ private slots:
     {
         QRandomGenerator rng(7);
         PointList points;
-        for (int i = 0; i < 500; ++i) {
+        // As many points as an item takes (AttractorItem::maxControlPoints).
+        for (int i = 0; i < AttractorItem::maxControlPoints; ++i) {
             // Random bit patterns: every exponent and all 53 bits of mantissa.
             double x, y;
             do {

@@ -29,9 +29,9 @@ namespace {
 // A project of about 2 MB, different for each variant.
 void fillLargeProject(Project &p, int variant)
 {
-    for (int k = 0; k < 40; ++k) {
-        PointList points;
-        for (int i = 0; i < 1000; ++i)
+    for (int k = 0; k < 160; ++k) {
+        PointList points; // at most AttractorItem::maxControlPoints
+        for (int i = 0; i < 250; ++i)
             points.push_back({std::sin(i * 0.37 + k + variant) * 1.0e3 / 7.0,
                               std::cos(i * 0.11 * (variant + 1) + k) / 3.0});
         p.addItem(test::curve(QString("c%1").arg(k), test::scheme(SchemeSpec::Kind::Chaikin),

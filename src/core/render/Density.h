@@ -21,6 +21,7 @@
 // then vibrancy mixing the alpha-gamma and the per-channel gamma), normalised here so that
 // the densest pixel has log density 1. Qt-free: pixels are 0xAARRGGBB premultiplied.
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <unordered_map>
@@ -78,8 +79,9 @@ public:
     void addHit(std::size_t i, std::uint32_t label)
     {
         DensityBucket &b = m_buckets[i];
-        if (b.v == 0 || label + 1 < b.v)
-            b.v = label + 1;
+        // v = 1 + min(label, v - 1), v = 0 (no hit yet) wrapping to the largest label: no branch
+        // on the bucket's content (a mispredicted one per hit costs more than the hit).
+        b.v = std::min(b.v - 1u, label) + 1u;
         if (++b.n == kSpillAt) [[unlikely]]
             spill(i);
     }

@@ -1,5 +1,7 @@
 #include "gui/app/FigureSheet.h"
 
+#include "render/FigureFile.h"
+
 #include "gui/app/ItemController.h"
 #include "gui/views/AttractorView.h"
 #include "gui/views/SurfaceView.h"
@@ -307,23 +309,22 @@ bool FigureSheet::cancelled() const
 
 bool FigureSheet::writePdf(const QString &fileName, QString *error) const
 {
-    QPdfWriter pdf(fileName);
-    pdf.setResolution(300);
-    pdf.setPageLayout(QPageLayout(QPageSize(QPageSize::A4), QPageLayout::Landscape,
-                                  QMarginsF(12, 12, 12, 12), QPageLayout::Millimeter));
-    pdf.setTitle(caption().value(0));
-    pdf.setCreator(QCoreApplication::applicationName());
-    if (!print(&pdf)) {
-        if (error)
-            *error = cancelled()
-                         ? tr("Printing %1 was cancelled while the attractor was drawn.")
-                               .arg(QFileInfo(fileName).fileName())
-                         : tr("Cannot write %1.").arg(QFileInfo(fileName).fileName());
-        if (cancelled())
-            QFile::remove(fileName);
-        return false;
-    }
-    return true;
+    // Written whole or not at all: a cancelled print leaves an existing file as it was.
+    QString writeError;
+    const bool ok = writeFigureFile(fileName, [&](QIODevice &out, QString *) {
+        QPdfWriter pdf(&out);
+        pdf.setResolution(300);
+        pdf.setPageLayout(QPageLayout(QPageSize(QPageSize::A4), QPageLayout::Landscape,
+                                      QMarginsF(12, 12, 12, 12), QPageLayout::Millimeter));
+        pdf.setTitle(caption().value(0));
+        pdf.setCreator(QCoreApplication::applicationName());
+        return print(&pdf) && !cancelled();
+    }, &writeError);
+    if (!ok && error)
+        *error = cancelled() ? tr("Printing %1 was cancelled while the attractor was drawn.")
+                                   .arg(QFileInfo(fileName).fileName())
+                             : writeError;
+    return ok;
 }
 
 } // namespace awb

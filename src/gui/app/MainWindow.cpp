@@ -20,6 +20,7 @@
 #include "gui/views/SurfaceView.h"
 #include "render/FigureFile.h"
 #include "model/FigureMetadata.h"
+#include "model/FileWriting.h"
 #include "model/AttractorItem.h"
 #include "model/EigenvaluePlotItem.h"
 #include "model/ItemRegistry.h"
@@ -34,11 +35,11 @@
 #include "model/NamedMatrix.h"
 #include <QGuiApplication>
 #include <QClipboard>
-#include <QSaveFile>
 #include <QAction>
 #include <QStyle>
 #include <QLayout>
 #include <QApplication>
+#include <QBuffer>
 #include <QChartView>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -954,11 +955,10 @@ bool MainWindow::exportView(const ExportDialog::Options &options, QString *error
                 *error = tr("The current item has no matrices to export.");
             return false;
         }
-        QSaveFile file(o.fileName);
-        if (!file.open(QIODevice::WriteOnly | QIODevice::Text)
-            || file.write(text.toUtf8()) < 0 || !file.commit()) {
+        QString reason;
+        if (!writeWholeFile(o.fileName, text.toUtf8(), &reason)) {
             if (error)
-                *error = tr("Cannot write %1: %2.").arg(o.fileName, file.errorString());
+                *error = tr("Cannot write %1: %2.").arg(o.fileName, reason);
             return false;
         }
         return true;
@@ -1004,71 +1004,76 @@ bool MainWindow::exportView(const ExportDialog::Options &options, QString *error
             break;
         }
     };
-    bool ok = false;
-    if (suffix == QLatin1String("png")) {
-        QImage image(o.size, QImage::Format_ARGB32_Premultiplied);
-        image.fill(Qt::white);
-        const int dpm = int(std::lround(o.dpi / 0.0254));
-        image.setDotsPerMeterX(dpm);
-        image.setDotsPerMeterY(dpm);
-        {
-            QPainter p(&image);
-            p.setRenderHint(QPainter::Antialiasing);
-            paint(p);
+    if (suffix != QLatin1String("png") && suffix != QLatin1String("svg")
+        && suffix != QLatin1String("pdf")) {
+        if (error)
+            *error = tr("Unknown format \"%1\": use .png, .svg or .pdf (.tex for the matrices).").arg(suffix);
+        return false;
+    }
+    const bool attractorShown = o.target == ExportDialog::Target::Attractor
+                                || o.target == ExportDialog::Target::FigureSheet;
+    const auto cancelled = [&] { return attractorShown && m_attractor->exportCancelled(); };
+    // Written whole or not at all (render/FigureFile.h): a cancelled or failed export leaves
+    // an existing file as it was.
+    QString writeError;
+    const bool ok = writeFigureFile(o.fileName, [&](QIODevice &out, QString *) {
+        if (suffix == QLatin1String("png")) {
+            QImage image(o.size, QImage::Format_ARGB32_Premultiplied);
+            image.fill(Qt::white);
+            const int dpm = int(std::lround(o.dpi / 0.0254));
+            image.setDotsPerMeterX(dpm);
+            image.setDotsPerMeterY(dpm);
+            {
+                QPainter p(&image);
+                p.setRenderHint(QPainter::Antialiasing);
+                paint(p);
+            }
+            addPngText(image, figureMetadata());
+            return !cancelled() && writePng(image, out);
         }
-        addPngText(image, figureMetadata());
-        ok = image.save(o.fileName);
-    } else if (suffix == QLatin1String("svg")) {
-        QSvgGenerator svg;
-        svg.setFileName(o.fileName);
-        svg.setSize(o.size);
-        svg.setViewBox(target);
-        svg.setResolution(o.dpi);
-        svg.setTitle(m_current ? m_current->name() : QString());
-        QPainter p;
-        ok = p.begin(&svg);
-        if (ok) {
-            paint(p);
-            ok = p.end();
+        if (suffix == QLatin1String("svg")) {
+            QByteArray bytes;
+            {
+                QBuffer buffer(&bytes);
+                QSvgGenerator svg;
+                svg.setOutputDevice(&buffer);
+                svg.setSize(o.size);
+                svg.setViewBox(target);
+                svg.setResolution(o.dpi);
+                svg.setTitle(m_current ? m_current->name() : QString());
+                QPainter p;
+                if (!p.begin(&svg))
+                    return false;
+                paint(p);
+                if (!p.end())
+                    return false;
+            }
+            return !cancelled() && addSvgMetadata(bytes, figureMetadata())
+                   && out.write(bytes) == bytes.size();
         }
-        QString metadataError;
-        if (ok && !addSvgMetadata(o.fileName, figureMetadata(), &metadataError)) {
-            if (error)
-                *error = metadataError;
-            return false;
-        }
-    } else if (suffix == QLatin1String("pdf")) {
-        QPdfWriter pdf(o.fileName);
+        QPdfWriter pdf(&out);
         pdf.setResolution(o.dpi);
         pdf.setPageLayout(QPageLayout(
             QPageSize(QSizeF(o.size.width() * 72.0 / o.dpi, o.size.height() * 72.0 / o.dpi),
                       QPageSize::Point),
             QPageLayout::Portrait, QMarginsF()));
         QPainter p;
-        ok = p.begin(&pdf);
-        if (ok) {
-            p.setRenderHint(QPainter::LosslessImageRendering); // rasters not as JPEG
-            paint(p);
-            ok = p.end();
-        }
-    } else {
-        if (error)
-            *error = tr("Unknown format \"%1\": use .png, .svg or .pdf (.tex for the matrices).").arg(suffix);
-        return false;
-    }
+        if (!p.begin(&pdf))
+            return false;
+        p.setRenderHint(QPainter::LosslessImageRendering); // rasters not as JPEG
+        paint(p);
+        return p.end() && !cancelled();
+    }, &writeError);
     endExportProgress();
-    const bool attractorShown = o.target == ExportDialog::Target::Attractor
-                                || o.target == ExportDialog::Target::FigureSheet;
-    if (attractorShown && m_attractor->exportCancelled()) {
-        // No figure without its attractor.
-        QFile::remove(o.fileName);
+    if (cancelled()) {
+        // No figure without its attractor (nothing was written).
         if (error)
             *error = tr("Exporting %1 was cancelled while the attractor was drawn.")
                          .arg(QFileInfo(o.fileName).fileName());
         return false;
     }
     if (!ok && error)
-        *error = tr("Cannot write %1.").arg(o.fileName);
+        *error = writeError;
     return ok;
 }
 

@@ -1,5 +1,7 @@
 #include "gui/app/PointExportDialog.h"
 
+#include "model/FileWriting.h"
+
 #include "model/AttractorItem.h"
 #include "model/PointExport.h"
 
@@ -15,7 +17,6 @@
 #include <QLineEdit>
 #include <QProgressDialog>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QSpinBox>
 #include <QThread>
 
@@ -142,9 +143,12 @@ bool PointExportDialog::exportPoints(const AttractorItem *item, const QString &f
         return fail(tr("Depth %1 gives %2 points, more than %3: choose a smaller depth.")
                         .arg(depth)
                         .arg(QLocale().toString(n, 'g', 4), QLocale().toString(maxPoints, 'g', 3)));
-    QSaveFile file(fileName);
-    if (!file.open(QIODevice::WriteOnly))
-        return fail(tr("Cannot write %1: %2").arg(fileName, file.errorString()));
+    // Written whole or not at all: a cancelled export leaves an existing file as it was.
+    WholeFileWriter writer;
+    QString reason;
+    if (!writer.open(fileName, &reason))
+        return fail(tr("Cannot write %1: %2").arg(fileName, reason));
+    QIODevice &file = *writer.device();
 
     // The iteration writes on a worker thread; this thread shows the progress.
     std::atomic<bool> cancel{false}, done{false};
@@ -188,16 +192,12 @@ bool PointExportDialog::exportPoints(const AttractorItem *item, const QString &f
     }
     worker.join();
     delete progress;
-    if (cancel) {
-        file.cancelWriting();
+    if (cancel)
         return fail(tr("Exporting the points was cancelled; nothing was written."));
-    }
-    if (!failure.isEmpty()) {
-        file.cancelWriting();
+    if (!failure.isEmpty())
         return fail(failure);
-    }
-    if (!file.commit())
-        return fail(tr("Cannot write %1: %2").arg(fileName, file.errorString()));
+    if (!writer.commit(&reason))
+        return fail(tr("Cannot write %1: %2").arg(fileName, reason));
     return true;
 }
 

@@ -2,8 +2,11 @@
 
 #include "gui/views/AttractorRenderer.h"
 #include "model/NumberFormat.h"
+#include "render/FigureFile.h"
 
+#include <QBuffer>
 #include <QFileInfo>
+#include <QPdfWriter>
 #include <QHelpEvent>
 #include <QMouseEvent>
 #include <QResizeEvent>
@@ -517,34 +520,57 @@ bool SpectrumView::exportPlot(const QString &fileName, const QSize &size, QStrin
     const QString suffix = QFileInfo(fileName).suffix().toLower();
     const int w = std::max(1, size.width()), h = std::max(1, size.height());
     placeLegend(QSize(w, h));
-    bool ok = false;
-    if (suffix == QLatin1String("pdf")) {
-        ok = m_plot->savePdf(fileName, w, h, QCP::epNoCosmetic, QString(),
-                             tr("Eigenvalues"));
-    } else if (suffix == QLatin1String("png")) {
-        ok = m_plot->savePng(fileName, w, h);
-    } else if (suffix == QLatin1String("svg")) {
-        QSvgGenerator gen;
-        gen.setFileName(fileName);
-        gen.setSize(QSize(w, h));
-        gen.setViewBox(QRect(0, 0, w, h));
-        gen.setTitle(tr("Eigenvalues"));
-        QCPPainter painter;
-        ok = painter.begin(&gen);
-        if (ok) {
-            m_plot->toPainter(&painter, w, h);
-            ok = painter.end();
-        }
-    } else {
+    if (suffix != QLatin1String("pdf") && suffix != QLatin1String("png")
+        && suffix != QLatin1String("svg")) {
         if (error)
             *error = tr("Unknown file type “%1”: use .pdf, .svg or .png.").arg(suffix);
         return false;
     }
+    // Written whole or not at all (render/FigureFile.h).
+    QString writeError;
+    const bool ok = writeFigureFile(fileName, [&](QIODevice &out, QString *) {
+        if (suffix == QLatin1String("png"))
+            return writePng(m_plot->toPixmap(w, h).toImage(), out);
+        const auto draw = [&](QPaintDevice *device, bool vector) {
+            QCPPainter painter;
+            if (!painter.begin(device))
+                return false;
+            painter.setMode(QCPPainter::pmNoCaching);
+            if (vector) {
+                painter.setMode(QCPPainter::pmVectorized);
+                painter.setMode(QCPPainter::pmNonCosmetic);
+            }
+            m_plot->toPainter(&painter, w, h);
+            return painter.end();
+        };
+        if (suffix == QLatin1String("pdf")) {
+            // As QCustomPlot::savePdf: a page of the plot's size in points, vector pens.
+            QPdfWriter pdf(&out);
+            pdf.setResolution(72);
+            pdf.setPageLayout(QPageLayout(QPageSize(QSizeF(w, h), QPageSize::Point, QString(),
+                                                    QPageSize::ExactMatch),
+                                          QPageLayout::Portrait, QMarginsF()));
+            pdf.setTitle(tr("Eigenvalues"));
+            return draw(&pdf, true);
+        }
+        QByteArray bytes;
+        {
+            QBuffer buffer(&bytes);
+            QSvgGenerator svg;
+            svg.setOutputDevice(&buffer);
+            svg.setSize(QSize(w, h));
+            svg.setViewBox(QRect(0, 0, w, h));
+            svg.setTitle(tr("Eigenvalues"));
+            if (!draw(&svg, false))
+                return false;
+        }
+        return out.write(bytes) == bytes.size();
+    }, &writeError);
+    if (!ok && error)
+        *error = writeError;
     // The export laid the plot out at its own size: lay it out again for the screen.
     placeLegend(m_plot->size());
     m_plot->replot(QCustomPlot::rpQueuedReplot);
-    if (!ok && error)
-        *error = tr("Could not write %1.").arg(fileName);
     return ok;
 }
 
