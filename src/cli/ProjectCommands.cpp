@@ -991,6 +991,20 @@ int check(const QStringList &args)
             err() << project.fileName() << ": " << p << "\n";
         if (!problems.isEmpty())
             return 3;
+        // What the items say about themselves: a singular lifting drawn in barycentric form,
+        // a nearly singular one, maps that are not (eventually) contractive.
+        for (Item *item : project.items()) {
+            auto *a = qobject_cast<AttractorItem *>(item);
+            const auto d = a ? a->derivedIfs() : nullptr;
+            if (!d)
+                continue;
+            if (!d->note.isEmpty())
+                err() << project.fileName() << ": " << a->name() << ": note: " << d->note << "\n";
+            if (!d->iterate && d->ifs.size() > 0)
+                if (const IfsCheck c = checkIfs(d->ifs); !c.contractive)
+                    err() << project.fileName() << ": " << a->name() << ": note: "
+                          << QString::fromStdString(c.message) << "\n";
+        }
         const auto n = project.items().size();
         out() << project.fileName() << ": OK, " << n << (n == 1 ? " item\n" : " items\n");
         return 0;

@@ -20,7 +20,9 @@ struct FileWriting {
 } // namespace
 
 // The device writers write into: every byte reaches the file, or the first failure is kept
-// (with the system's reason) and every later write fails.
+// (with the system's reason) and every later write fails. The file is unbuffered: a buffered
+// QFileDevice reports a write as done and may lose its short tail at commit() without a word.
+// Writers bring their own buffering (QBuffer, the writers' chunks).
 class WholeFileWriter::Guard : public QIODevice {
 public:
     explicit Guard(QFileDevice *file) : m_file(file) { open(QIODevice::WriteOnly); }
@@ -76,7 +78,7 @@ bool WholeFileWriter::open(const QString &fileName, QString *reason)
     const QFileInfo info(fileName);
     const QFileInfo folder(info.absolutePath());
     if (!folder.exists()) {
-        *reason = FileWriting::tr("the folder %1 does not exist").arg(folder.filePath());
+        *reason = FileWriting::tr("the folder %1 does not exist").arg(info.path());
         return false;
     }
     if (!folder.isDir()) {
@@ -90,7 +92,7 @@ bool WholeFileWriter::open(const QString &fileName, QString *reason)
     if (info.exists() && !info.isFile()) {
         // A device or a FIFO: in place (replacing it would put a file where /dev/full was).
         auto file = std::make_unique<QFile>(fileName);
-        if (!file->open(QIODevice::WriteOnly)) {
+        if (!file->open(QIODevice::WriteOnly | QIODevice::Unbuffered)) {
             *reason = file->errorString();
             return false;
         }
@@ -103,7 +105,7 @@ bool WholeFileWriter::open(const QString &fileName, QString *reason)
         return false;
     }
     auto file = std::make_unique<QSaveFile>(fileName);
-    if (!file->open(QIODevice::WriteOnly)) {
+    if (!file->open(QIODevice::WriteOnly | QIODevice::Unbuffered)) {
         *reason = folder.isWritable()
                       ? FileWriting::tr("cannot create a file in the folder %1: %2")
                             .arg(folder.filePath(), file->errorString())

@@ -189,8 +189,7 @@ DerivedIfs FractalItem::computeIfs() const
         out.A.real.push_back(l.A);
     if (s->lifted.empty())
         out.A.unavailable = QString::fromStdString(s->lifting.reason);
-    if (s->barycentric())
-        out.note = QString::fromStdString(s->lifting.reason);
+    out.note = QString::fromStdString(s->lifting.note());
     out.ifs = s->ifs;
     out.toIfsSpace = [s](const Mat &X) { return s->toIfsSpace(X); };
     out.subdivision = s;

@@ -6,6 +6,7 @@
 
 #include <QFile>
 #include <QJsonDocument>
+#include <QRegularExpression>
 
 #include <cmath>
 #include <cstdlib>
@@ -379,7 +380,14 @@ bool ProjectIO::parseJson(const QByteArray &bytes, const QString &source, QJsonO
             --begin;
         while (end < text.size() && isTokenChar(text[end]))
             ++end;
-        if (pe.error != QJsonParseError::IllegalNumber || end == begin || attempt >= 100) {
+        // Qt calls 1e999 and NaN illegal numbers, but nan or inf illegal values: a spelling of
+        // a non-finite number is refused as one wherever it stands.
+        static const QRegularExpression spelledNonFinite(
+            QStringLiteral("^[+-]?(nan|inf|infinity)$"), QRegularExpression::CaseInsensitiveOption);
+        const bool nonFinite =
+            pe.error == QJsonParseError::IllegalNumber
+            || spelledNonFinite.match(QString::fromLatin1(text.mid(begin, end - begin))).hasMatch();
+        if (!nonFinite || end == begin || attempt >= 100) {
             const QByteArray before = text.left(pe.offset);
             const qsizetype line = before.count('\n') + 1;
             const qsizetype column = pe.offset - (before.lastIndexOf('\n') + 1) + 1;

@@ -163,8 +163,7 @@ DerivedIfs SubdivisionCurveItem::computeIfs() const
             out.A.real.push_back(l.A);
         if (s->lifted.empty())
             out.A.unavailable = fromStd(s->lifting.reason);
-        if (s->barycentric())
-            out.note = fromStd(s->lifting.reason);
+        out.note = fromStd(s->lifting.note());
         out.ifs = s->ifs;
         out.toIfsSpace = [s](const Mat &X) { return s->toIfsSpace(X); };
         out.subdivision = s;

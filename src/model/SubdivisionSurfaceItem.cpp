@@ -285,8 +285,8 @@ DerivedIfs SubdivisionSurfaceItem::computeIfs() const
             out.A.real.push_back(liftMatrix(s->ifs.lifting, S).A);
     } else {
         out.A.unavailable = fromStd(s->ifs.lifting.reason);
-        out.note = fromStd(s->ifs.lifting.reason);
     }
+    out.note = fromStd(s->ifs.lifting.note());
     out.ifs = s->ifs.ifs;
     if (int(s->mapsUsed.size()) != int(s->S.size()))
         out.mapIndex = s->mapsUsed;

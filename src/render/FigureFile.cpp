@@ -61,7 +61,7 @@ bool writeFigureFile(const QString &fileName,
     // Refused before any work: a missing folder, a folder, a read-only file.
     const QFileInfo info(fileName);
     if (!QFileInfo(info.absolutePath()).isDir())
-        return fail(FigureFile::tr("the folder %1 does not exist").arg(info.absolutePath()));
+        return fail(FigureFile::tr("the folder %1 does not exist").arg(info.path()));
     if (info.isDir())
         return fail(FigureFile::tr("it is a folder"));
     if (info.isFile() && !info.isWritable())

@@ -412,7 +412,8 @@ void TestBcifs::badInputIsNamed()
         {{0.7, std::nan("")}, "parameter r is not a finite number"},
     };
     for (const auto &[p, expected] : outside) {
-        m = message([&] { refinedMatrices(p); });
+        const RefinedParameters params = p; // clang 14 cannot capture a structured binding
+        m = message([&] { refinedMatrices(params); });
         QVERIFY2(contains(m, expected), m.c_str());
     }
 

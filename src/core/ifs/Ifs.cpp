@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace awb {
@@ -102,19 +103,30 @@ Lifting liftControlPoints(const Mat &P, const std::vector<int> &freeRowsIn)
     Eigen::JacobiSVD<Mat> svd(L.lifted);
     const auto &sv = svd.singularValues();
     L.reciprocalCondition = sv(0) > 0 ? sv(sv.size() - 1) / sv(0) : 0.0;
+    // Only the free rows carry no identity column: they must be affinely independent.
+    std::ostringstream names;
+    for (size_t k = 0; k < freeRows.size(); ++k)
+        names << freeRows[k] + 1
+              << (k + 2 < freeRows.size() ? ", " : (k + 2 == freeRows.size() ? " and " : ""));
     if (L.reciprocalCondition > 1e-12) {
         L.invertible = true;
         L.inverse = L.lifted.partialPivLu().inverse();
+        if (L.reciprocalCondition < 1e-8) {
+            std::ostringstream os;
+            os.precision(2);
+            os << "the lifted matrix P is nearly singular (reciprocal condition number "
+               << L.reciprocalCondition << "): M_i = P^-1 S_i P lose about "
+               << int(std::lround(-std::log10(L.reciprocalCondition)))
+               << " of 16 significant digits; control points " << names.str()
+               << (d == 2 ? " are almost collinear" : " are almost coplanar");
+            L.warning = os.str();
+        }
         return L;
     }
-    // Only the free rows carry no identity column: they must be affinely independent.
     std::ostringstream os;
-    os << "control points ";
-    for (size_t k = 0; k < freeRows.size(); ++k) {
-        L.culprits.push_back(freeRows[k]);
-        os << freeRows[k] + 1
-           << (k + 2 < freeRows.size() ? ", " : (k + 2 == freeRows.size() ? " and " : ""));
-    }
+    os << "control points " << names.str();
+    for (int row : freeRows)
+        L.culprits.push_back(row);
     os << (d == 2 ? " are collinear" : d == 3 ? " are coplanar" : " are affinely dependent")
        << ", so the lifted matrix P of 000 §2 is singular and M_i = P^-1 S_i P is not defined;"
           " the attractor is computed in barycentric form";

@@ -54,7 +54,12 @@ struct Lifting {
     double reciprocalCondition = 0.0;  // sigma_min / sigma_max of `lifted`
     std::vector<int> culprits;         // 0-based control points that make it singular
     std::string reason;                // empty when invertible
+    // Invertible but ill-conditioned (reciprocal condition below 1e-8): how many digits the
+    // lifted maps lose, and which points to move apart. Empty otherwise.
+    std::string warning;
     std::vector<int> freeRows;         // the d+1 rows without an identity entry
+    // What a user should read about the lifting: the reason when singular, else the warning.
+    const std::string &note() const { return invertible ? warning : reason; }
 };
 // freeRows empty: the last d+1 rows (000 §2).
 Lifting liftControlPoints(const Mat &P, const std::vector<int> &freeRows = {});
