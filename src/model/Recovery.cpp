@@ -5,6 +5,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QStandardPaths>
 #include <QUuid>
@@ -159,6 +160,21 @@ bool Recovery::recover(const RecoveryFile &file, Project *project, QString *erro
         return false;
     project->adopt(std::move(data), wrapper.value("original_file").toString(), true);
     return true;
+}
+
+QString Recovery::setAside(const RecoveryFile &file)
+{
+    const QFileInfo info(file.path);
+    QDir damaged(info.dir().filePath(QStringLiteral("damaged")));
+    if (!damaged.mkpath(QStringLiteral(".")))
+        return {};
+    // A unique name: the file's own, stamped with the moment it was set aside.
+    const QString stamp = QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyyMMdd-HHmmsszzz"));
+    const QString target = damaged.filePath(info.completeBaseName() + "-" + stamp + recoverySuffix);
+    if (!QFile::rename(file.path, target))
+        return {};
+    QFile::remove(lockPathFor(file.path));
+    return target;
 }
 
 bool Recovery::discard(const RecoveryFile &file)

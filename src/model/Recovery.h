@@ -53,6 +53,10 @@ public:
     static bool recover(const RecoveryFile &file, Project *project, QString *error = nullptr);
     // Deletes a recovery file (after recovering it, or when the user declines).
     static bool discard(const RecoveryFile &file);
+    // A recovery file that cannot be read is never deleted: it moves to the folder "damaged"
+    // beside it (out of orphans(), kept for the user or a bug report). The new path, or empty
+    // when even the move failed (the file then stays where it was).
+    static QString setAside(const RecoveryFile &file);
 
 signals:
     void autosaved(const QString &path);

@@ -70,6 +70,7 @@ private slots:
     void exportPointsCsvAndPly();
     void paletteIsUndoable();
     void userGuideShowsShortcutsAndExamples();
+    void damagedRecoveryCopyIsKeptAside();
 
 private:
     QTemporaryDir m_dir;
@@ -310,6 +311,38 @@ void TestWindowUsability::userGuideShowsShortcutsAndExamples()
     QVERIFY(text.contains(QStringLiteral("000-fig02")));
     QVERIFY(text.contains(QStringLiteral("004-fig3.9")));
     dialog->close();
+}
+
+// A crashed session left a recovery copy that is itself damaged: the next start offers it,
+// cannot read it, says so, and keeps it in recovery/damaged (never deleted, not offered again).
+void TestWindowUsability::damagedRecoveryCopyIsKeptAside()
+{
+    QTemporaryDir recovery;
+    const QString damaged = recovery.filePath("1234-cut-off.awb-recovery");
+    {
+        QFile f(damaged);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        // Not a raw string: moc miscounts the braces of an unbalanced one.
+        f.write("{\"format\": \"attractor-workbench-recovery\", \"version\": 1, \"project\": {\"form");
+    }
+    {
+        test::ShownWindow shown(recovery.path());
+        shown.messages.answer = QMessageBox::Yes;
+        QVERIFY(!shown.window.offerRecovery());
+        QCOMPARE(shown.messages.questions.size(), 1);
+        QCOMPARE(shown.messages.errors.size(), 1);
+        const QString error = shown.messages.errors.first();
+        QVERIFY2(error.contains("cannot be read") && error.contains("not valid JSON")
+                     && error.contains("It was kept as") && error.contains("damaged"),
+                 qPrintable(error));
+    }
+    QVERIFY(!QFile::exists(damaged));
+    const QStringList kept = QDir(recovery.filePath("damaged")).entryList(QDir::Files);
+    QCOMPARE(kept.size(), 1);
+    test::ShownWindow again(recovery.path());
+    again.messages.answer = QMessageBox::Yes;
+    QVERIFY(!again.window.offerRecovery());
+    QVERIFY(again.messages.questions.isEmpty());
 }
 
 QTEST_MAIN(TestWindowUsability)

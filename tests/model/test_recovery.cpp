@@ -13,6 +13,7 @@
 #include "model/Recovery.h"
 
 #include <QDeadlineTimer>
+#include <QDir>
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -249,6 +250,34 @@ private slots:
         QCOMPARE(q.serialize(), p.serialize());
         QVERIFY(q.fileName().isEmpty());
         QVERIFY(q.isModified());
+    }
+
+    void damagedRecoveryFileIsKeptAside()
+    {
+        // A crashed session left a recovery file that is itself damaged (cut off mid-write
+        // by a full disk, say): it is refused, moved to recovery/damaged, never deleted, and
+        // not offered again.
+        QTemporaryDir dir;
+        const QString recoveryDir = dir.filePath("recovery");
+        QVERIFY(QDir().mkpath(recoveryDir));
+        const QString path = QDir(recoveryDir).filePath("0f0e-dead.awb-recovery");
+        // Not a raw string: moc miscounts the braces of an unbalanced one.
+        const QByteArray damaged = "{\"format\": \"attractor-workbench-recovery\", \"version\": 1, "
+                                   "\"original_file\": \"/home/u/work.awb\", \"project\": "
+                                   "{\"format\": \"attract";
+        QVERIFY(test::writeBytes(path, damaged));
+        const QList<RecoveryFile> orphans = Recovery::orphans(recoveryDir);
+        QCOMPARE(orphans.size(), 1);
+        Project p;
+        QString error;
+        QVERIFY(!Recovery::recover(orphans[0], &p, &error));
+        QVERIFY2(error.contains("not valid JSON"), qPrintable(error));
+        const QString kept = Recovery::setAside(orphans[0]);
+        QVERIFY(!kept.isEmpty());
+        QVERIFY(!QFile::exists(path));
+        QCOMPARE(QFileInfo(kept).dir().dirName(), QString("damaged"));
+        QCOMPARE(readAll(kept), damaged);                  // kept byte for byte
+        QVERIFY(Recovery::orphans(recoveryDir).isEmpty()); // not offered again
     }
 
     void badRecoveryFileLeavesTheProjectAlone()

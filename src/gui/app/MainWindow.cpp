@@ -1281,7 +1281,14 @@ bool MainWindow::offerRecovery()
         } else if (answer == QMessageBox::Yes) {
             QString error;
             if (!Recovery::recover(f, m_project.get(), &error)) {
-                m_messages->error(this, tr("Recover Project"), error);
+                // Never deleted: set aside, out of the next start's way.
+                const QString kept = Recovery::setAside(f);
+                m_messages->error(
+                    this, tr("Recover Project"),
+                    kept.isEmpty()
+                        ? tr("The recovery copy cannot be read: %1").arg(error)
+                        : tr("The recovery copy cannot be read: %1\n\nIt was kept as %2.")
+                              .arg(error, QDir::toNativeSeparators(kept)));
                 continue;
             }
             Recovery::discard(f);
