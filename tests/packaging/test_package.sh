@@ -103,7 +103,9 @@ log=$(desktop-file-validate "$root/usr/share/applications/attractor-workbench.de
 log=$(appstreamcli validate --no-net \
       "$root/usr/share/metainfo/io.github.attractor_workbench.AttractorWorkbench.metainfo.xml" 2>&1) \
     || fail "appstreamcli validate: $log"
-note "desktop-file-validate and appstreamcli validate --no-net passed"
+# validate-tree also resolves the metainfo's launchable to the packaged desktop entry.
+log=$(appstreamcli validate-tree --no-net "$root" 2>&1) || fail "appstreamcli validate-tree: $log"
+note "desktop-file-validate, appstreamcli validate and validate-tree --no-net passed"
 mkdir -p "$tmp/mime/packages"
 cp "$root/usr/share/mime/packages/attractor-workbench.xml" "$tmp/mime/packages/"
 mime_log=$(XDG_DATA_DIRS=$tmp update-mime-database "$tmp/mime" 2>&1) \
