@@ -10,6 +10,8 @@ PACKAGES=(
   qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools libqcustomplot-dev libeigen3-dev
   libxkbcommon-dev xvfb xauth libgl1-mesa-dev x11-apps imagemagick fonts-dejavu-core poppler-utils
   assimp-utils python3-meshio adwaita-icon-theme ffmpeg clang libclang-rt-14-dev
+  # the Debian package (packaging/, scripts/package.sh, tests/packaging): icons, dpkg-shlibdeps, checks
+  librsvg2-bin dpkg-dev lintian desktop-file-utils appstream shared-mime-info man-db
 )
 
 missing=()
