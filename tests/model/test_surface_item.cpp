@@ -120,11 +120,15 @@ void TestSurfaceItem::fileFormat()
 void TestSurfaceItem::saveLoadSaveIsByteIdentical()
 {
     QByteArray all;
-    for (const auto &[kind, layout, points, maps] : kSchemes)
+    for (const auto &[kind, layout, points, maps] : kSchemes) {
+        // Named copies: clang 14 cannot capture a structured binding.
+        const auto k = kind;
+        const auto l = layout;
         all += (all.isEmpty() ? "" : ",")
                + surfaceJson(kind, layout, [&](QJsonObject &o) {
-                     o["name"] = QString("%1 %2").arg(int(kind)).arg(layout);
+                     o["name"] = QString("%1 %2").arg(int(k)).arg(l);
                  });
+    }
     Project p;
     QString error;
     QVERIFY2(test::load(p, all, &error), qPrintable(error));
