@@ -23,6 +23,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstddef>
+#include <cstring>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -70,10 +73,14 @@ public:
     // One hit at cell index i = y * cellsX + x (row 0 at the top).
     void addDensity(std::size_t i, std::uint8_t coordinate)
     {
-        DensityBucket &b = m_buckets[i];
-        b.v += coordinate;
-        // 2^24 hits of coordinate <= 255 keep the sum below 2^32: move the bucket aside before.
-        if (++b.n == kSpillAt) [[unlikely]]
+        // Both halves in one 64-bit add (n + 1, v + coordinate): n < 2^24 never carries into
+        // v, and 2^24 hits of coordinate <= 255 keep v below 2^32: the bucket moves aside
+        // before that.
+        std::uint64_t word;
+        std::memcpy(&word, static_cast<const void *>(&m_buckets[i]), sizeof word);
+        word += kOneHit + (std::uint64_t(coordinate) << kValueShift);
+        std::memcpy(static_cast<void *>(&m_buckets[i]), &word, sizeof word);
+        if (std::uint32_t(word >> kCountShift) == kSpillAt) [[unlikely]]
             spill(i);
     }
     void addHit(std::size_t i, std::uint32_t label)
@@ -97,6 +104,15 @@ public:
     std::uint64_t nonFinite = 0;   // images with a NaN or infinite coordinate
 
     static constexpr std::uint32_t kSpillAt = 1u << 24;
+
+private:
+    // Where n and v sit in a bucket read as one 64-bit word.
+    static constexpr int kCountShift = std::endian::native == std::endian::little ? 0 : 32;
+    static constexpr int kValueShift = 32 - kCountShift;
+    static constexpr std::uint64_t kOneHit = std::uint64_t(1) << kCountShift;
+    static_assert(sizeof(DensityBucket) == 8 && offsetof(DensityBucket, v) == 4);
+
+public:
 
 private:
     void spill(std::size_t i);

@@ -2,12 +2,19 @@
 
 #include "core/ifs/Random.h"
 
+#include <Eigen/LU>
+#include <Eigen/QR>
+
 #include <algorithm>
 #include <atomic>
 #include <climits>
 #include <cmath>
 #include <memory>
 #include <thread>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace awb {
 
@@ -173,11 +180,11 @@ std::vector<CellView> cellViews(const std::vector<Projection> &views, const Rast
 // ---- fixed-dimension kernels ------------------------------------------------------------------
 
 // The maps and views of one job in flat arrays: a[i][k][j] (y_j = b_j + sum_k x_k a_kj),
-// view[v][k][0..1], and the fused last step leaf[i][v]: x (A_i V) + (b_i V + c), D x 2 + 2.
+// view[v][k][0..1].
 template <int D>
 struct Flat {
     int n = 0, views = 0;
-    std::vector<double> a, b, v, c, leaf;
+    std::vector<double> a, b, v, c;
 
     Flat(const Ifs &ifs, const std::vector<CellView> &cv) : n(ifs.size()), views(int(cv.size()))
     {
@@ -198,19 +205,84 @@ struct Flat {
             c[q * 2] = cv[q].c[0];
             c[q * 2 + 1] = cv[q].c[1];
         }
-        leaf.resize(std::size_t(n) * views * (2 * D + 2));
-        for (int i = 0; i < n; ++i)
-            for (int q = 0; q < views; ++q) {
-                double *L = &leaf[(std::size_t(i) * views + q) * (2 * D + 2)];
-                const Mat W = ifs.maps[i].A * cv[q].V;
-                const RowVec bw = ifs.maps[i].b * cv[q].V;
-                for (int k = 0; k < D; ++k)
-                    L[2 * k] = W(k, 0), L[2 * k + 1] = W(k, 1);
-                L[2 * D] = bw(0) + cv[q].c[0];
-                L[2 * D + 1] = bw(1) + cv[q].c[1];
-            }
     }
 };
+
+// Random iteration with one view runs in coordinates whose first two are the view's raster
+// cells, x' = x W + t with W = [V | an orthonormal complement of V] and t = (c, 0, ..., 0):
+// the maps become x' -> x' W^-1 A W + (b W + t - t W^-1 A W), and a point's cell is read off
+// its first two coordinates instead of being projected (2D multiply-adds fewer per point).
+// False (the state stays as it was) when the view has not rank 2.
+template <int D>
+bool toScreenSpace(const Flat<D> &F, Flat<D> &out, double x0[D])
+{
+    if (D < 2 || F.views != 1)
+        return false;
+    Mat V(D, 2);
+    for (int k = 0; k < D; ++k)
+        for (int j = 0; j < 2; ++j)
+            V(k, j) = F.v[k * 2 + j];
+    Eigen::HouseholderQR<Mat> qr(V);
+    const Mat Q = qr.householderQ();
+    Mat W(D, D);
+    W.leftCols(2) = V;
+    if (D > 2)
+        W.rightCols(D - 2) = Q.rightCols(D - 2);
+    Eigen::FullPivLU<Mat> lu(W);
+    // The cells' scale is in W: judge the rank relative to it.
+    lu.setThreshold(1e-10);
+    if (!lu.isInvertible())
+        return false;
+    const Mat Wi = lu.inverse();
+    RowVec t = RowVec::Zero(D);
+    t(0) = F.c[0];
+    t(1) = F.c[1];
+    out = F;
+    for (int i = 0; i < F.n; ++i) {
+        Mat A(D, D);
+        RowVec b(D);
+        for (int k = 0; k < D; ++k) {
+            b(k) = F.b[i * D + k];
+            for (int j = 0; j < D; ++j)
+                A(k, j) = F.a[(i * D + k) * D + j];
+        }
+        const Mat A2 = Wi * A * W;
+        const RowVec b2 = b * W + t - t * A2;
+        for (int k = 0; k < D; ++k) {
+            out.b[i * D + k] = b2(k);
+            for (int j = 0; j < D; ++j)
+                out.a[(i * D + k) * D + j] = A2(k, j);
+        }
+    }
+    std::fill(out.v.begin(), out.v.end(), 0.0);
+    out.v[0] = 1.0;  // row 0, column 0
+    out.v[3] = 1.0;  // row 1, column 1
+    out.c[0] = out.c[1] = 0.0;
+    RowVec x(D);
+    for (int k = 0; k < D; ++k)
+        x(k) = x0[k];
+    const RowVec y = x * W + t;
+    for (int k = 0; k < D; ++k)
+        x0[k] = y(k);
+    return true;
+}
+
+// The cell index of (sx, sy) in a w x h raster, or -1 off it. NaN, infinities and numbers
+// beyond the int range count as off: the conversion is SSE2's cvttsd2si (defined for every
+// input, 0x80000000 when out of range), and the bounds are tested on the integers. Cell k
+// covers [k, k+1): the conversion truncates sx + 1 so that (-1, 0) lands at -1, not 0.
+inline std::int32_t cellIndex(double sx, double sy, int w, int h)
+{
+#if defined(__SSE2__)
+    const unsigned ux = unsigned(_mm_cvttsd_si32(_mm_set_sd(sx + 1.0))) - 1u;
+    const unsigned uy = unsigned(_mm_cvttsd_si32(_mm_set_sd(sy + 1.0))) - 1u;
+    const bool in = (ux < unsigned(w)) & (uy < unsigned(h));
+    return in ? std::int32_t(uy * unsigned(w) + ux) : -1;
+#else
+    const bool in = (sx >= 0.0) & (sy >= 0.0) & (sx < double(w)) & (sy < double(h));
+    return in ? int(sy) * w + int(sx) : -1;
+#endif
+}
 
 template <Accumulation M>
 inline void plotCell(DensityImage &img, int w, int h, double sx, double sy, std::uint32_t label,
@@ -262,10 +334,17 @@ void chaosBlock(const Flat<D> &F, const AliasTable &pick, Orbits<D, K> &o, int s
 {
     std::uint8_t maps[kBlock][K];
     if (pick.uniform()) {
+        // Two choices from each 64-bit draw (multiply-shift on each half: a bias below 2^-32).
         const std::uint64_t n = std::uint64_t(pick.size());
         for (int k = 0; k < K; ++k) {
             Xoshiro256 rng = o.rng[k];
-            for (int s = 0; s < steps; ++s)
+            int s = 0;
+            for (; s + 1 < steps; s += 2) {
+                const std::uint64_t r = rng.next();
+                maps[s][k] = std::uint8_t(((r >> 32) * n) >> 32);
+                maps[s + 1][k] = std::uint8_t(((r & 0xffffffffu) * n) >> 32);
+            }
+            if (s < steps)
                 maps[s][k] = std::uint8_t(((rng.next() >> 32) * n) >> 32);
             o.rng[k] = rng;
         }
@@ -279,7 +358,6 @@ void chaosBlock(const Flat<D> &F, const AliasTable &pick, Orbits<D, K> &o, int s
     }
 
     const int w = img.cellsX(), h = img.cellsY();
-    const double fw = double(w), fh = double(h);
     double x[K][D];
     std::uint32_t label[K];
     for (int k = 0; k < K; ++k) {
@@ -287,15 +365,15 @@ void chaosBlock(const Flat<D> &F, const AliasTable &pick, Orbits<D, K> &o, int s
         for (int j = 0; j < D; ++j)
             x[k][j] = o.x[k][j];
     }
-    const double *v = F.v.data();
-    const double c0 = F.c[0], c1 = F.c[1];
     std::int32_t cells[kBlock][K];
     std::uint32_t labels[kBlock][K];
+    const double *const allA = F.a.data();
+    const double *const allB = F.b.data();
     for (int s = 0; s < steps; ++s) {
         for (int k = 0; k < K; ++k) {
             const int i = maps[s][k];
-            const double *A = &F.a[std::size_t(i) * D * D];
-            const double *B = &F.b[std::size_t(i) * D];
+            const double *A = allA + std::size_t(i) * D * D;
+            const double *B = allB + std::size_t(i) * D;
             double y[D];
             for (int j = 0; j < D; ++j)
                 y[j] = B[j];
@@ -308,16 +386,9 @@ void chaosBlock(const Flat<D> &F, const AliasTable &pick, Orbits<D, K> &o, int s
                 label[k] = (label[k] * std::uint32_t(F.n) + std::uint32_t(i)) % labelMod;
                 labels[s][k] = label[k];
             }
-            if constexpr (oneView) {
-                double sx = c0, sy = c1;
-                for (int j = 0; j < D; ++j) {
-                    sx += y[j] * v[2 * j];
-                    sy += y[j] * v[2 * j + 1];
-                }
-                // NaN fails the comparisons and counts as off screen. Bitwise: no branches.
-                const bool in = (sx >= 0.0) & (sy >= 0.0) & (sx < fw) & (sy < fh);
-                const int cell = int(in ? sy : 0.0) * w + int(in ? sx : 0.0);
-                cells[s][k] = in ? cell : -1;
+            if constexpr (oneView && D >= 2) {
+                // Screen space (toScreenSpace): the first two coordinates are the cell.
+                cells[s][k] = cellIndex(y[0], y[1], w, h);
             }
         }
         if (!oneView && plot)
@@ -451,16 +522,106 @@ IterationStats chaosKernel(const Flat<D> &F, const AliasTable &pick, const RowVe
     return stats;
 }
 
+// The last `m` levels of a deterministic iteration fused into one table per view: for each
+// word w of m maps (the first of them applied first), the composite map from the IFS space
+// straight to raster cells, x -> x L_w + c_w (D x 2 and 2 numbers). A node m levels above the
+// leaves then draws its N^m leaves with 2D multiply-adds each, in loops over the words that
+// the compiler vectorises, and the D x D products of those m levels are never done.
+//
+// Words are indexed by their address read as a number: address[0] (the outermost map, the
+// last applied) is the most significant digit, so the colour label of a prefix p <= m is the
+// index divided by N^(m - p).
+template <int D>
+struct FusedLeaves {
+    int m = 0;       // fused levels
+    int words = 1;   // N^m
+    int views = 0;
+    // Cell x and y of every word side by side (one loop over 2 N^m numbers does both):
+    // l[((q * D + j) * words + w) * 2 + k] is row j, column k of L_w; c[(q * words + w) * 2 + k].
+    std::vector<double> l, c;
+
+    // The most fused levels with N^m <= maxWords (and m <= levels).
+    static int levelsFor(int N, int levels, int maxWords = 256)
+    {
+        int m = 0;
+        std::int64_t w = 1;
+        while (m < levels && m < 16 && w * N <= maxWords) {
+            w *= N;
+            ++m;
+        }
+        return m;
+    }
+
+    FusedLeaves(const Flat<D> &F, int levels) : m(levels), views(F.views)
+    {
+        for (int t = 0; t < m; ++t)
+            words *= F.n;
+        // Table of t maps (t = 0: the views), grown by prepending the innermost map.
+        std::vector<double> L(std::size_t(views) * D * 2), C(std::size_t(views) * 2);
+        for (int q = 0; q < views; ++q) {
+            for (int j = 0; j < D; ++j)
+                for (int k = 0; k < 2; ++k)
+                    L[(std::size_t(q) * D + j) * 2 + k] = F.v[(std::size_t(q) * D + j) * 2 + k];
+            C[q * 2] = F.c[q * 2];
+            C[q * 2 + 1] = F.c[q * 2 + 1];
+        }
+        int size = 1;
+        for (int t = 0; t < m; ++t) {
+            std::vector<double> L2(std::size_t(views) * size * F.n * D * 2);
+            std::vector<double> C2(std::size_t(views) * size * F.n * 2);
+            for (int q = 0; q < views; ++q)
+                for (int e = 0; e < size; ++e)
+                    for (int i = 0; i < F.n; ++i) {
+                        const std::size_t from = std::size_t(q) * size + e;
+                        const std::size_t to = std::size_t(q) * size * F.n + std::size_t(e) * F.n + i;
+                        const double *A = &F.a[std::size_t(i) * D * D];
+                        const double *B = &F.b[std::size_t(i) * D];
+                        const double *Le = &L[from * D * 2];
+                        double *Lt = &L2[to * D * 2];
+                        // L' = A_i L_e, c' = b_i L_e + c_e.
+                        for (int r = 0; r < D; ++r)
+                            for (int k = 0; k < 2; ++k) {
+                                double acc = 0;
+                                for (int j = 0; j < D; ++j)
+                                    acc += A[r * D + j] * Le[j * 2 + k];
+                                Lt[r * 2 + k] = acc;
+                            }
+                        for (int k = 0; k < 2; ++k) {
+                            double acc = C[from * 2 + k];
+                            for (int j = 0; j < D; ++j)
+                                acc += B[j] * Le[j * 2 + k];
+                            C2[to * 2 + k] = acc;
+                        }
+                    }
+            L.swap(L2);
+            C.swap(C2);
+            size *= F.n;
+        }
+        l.resize(std::size_t(views) * D * words * 2);
+        c = C;
+        for (int q = 0; q < views; ++q)
+            for (int w = 0; w < words; ++w) {
+                const std::size_t e = std::size_t(q) * words + w;
+                for (int j = 0; j < D; ++j)
+                    for (int k = 0; k < 2; ++k)
+                        l[((std::size_t(q) * D + j) * words + w) * 2 + k] = L[(e * D + j) * 2 + k];
+            }
+    }
+};
+
 // Depth-first deterministic iteration of one thread: buf[level] holds the images of the start
-// set after `level` maps (the innermost first); the last map is fused with the view.
+// set after `level` maps (the innermost first); the last T.m levels go through the fused
+// table T.
 template <int D, Accumulation M>
 class DfsKernel {
 public:
-    DfsKernel(const Flat<D> &F, const EngineJob &job, const std::uint8_t *coords, DensityImage &img,
-              const Progress &progress)
-        : m_F(F), m_job(job), m_coords(coords), m_img(img), m_progress(progress), m_depth(job.depth),
-          m_n(int(job.start.vertices.rows())), m_kind(job.start.kind),
+    DfsKernel(const Flat<D> &F, const FusedLeaves<D> &T, const EngineJob &job,
+              const std::uint8_t *coords, DensityImage &img, const Progress &progress)
+        : m_F(F), m_T(T), m_job(job), m_coords(coords), m_img(img), m_progress(progress),
+          m_depth(job.depth), m_n(int(job.start.vertices.rows())), m_kind(job.start.kind),
           m_buf(std::size_t(job.depth + 1) * m_n * D), m_screen(std::size_t(m_n) * 2),
+          m_s(std::size_t(m_n) * T.words * 2), m_cells(std::size_t(T.words)),
+          m_labels(std::size_t(T.words)),
           m_plotter{img, img.cellsX(), img.cellsY(), coords}
     {
         for (int r = 0; r < m_n; ++r)
@@ -468,6 +629,14 @@ public:
                 m_buf[std::size_t(r) * D + j] = job.start.vertices(r, j);
         m_points = m_kind == StartSet::Kind::Points || m_n == 1;
         m_maps = std::uint32_t(F.n);
+        // Labels of the fused words when the colour prefix lies within them.
+        const int prefix = job.colours.prefix;
+        std::uint32_t div = 1;
+        for (int t = prefix; t < T.m; ++t)
+            div *= m_maps;
+        m_labelsFixed = prefix <= T.m;
+        for (int w = 0; w < T.words; ++w)
+            m_labels[std::size_t(w)] = prefix == 0 ? 0u : std::uint32_t(w) / div;
     }
 
     // The fixed innermost choices `prefix`, then every word of the remaining levels.
@@ -502,19 +671,11 @@ private:
         m_address[m_depth - l - 1] = std::uint8_t(i);
     }
 
-    std::uint32_t label() const
-    {
-        const int prefix = m_job.colours.prefix;
-        if (prefix == 1)
-            return m_address[0];
-        return addressLabel(m_address, m_depth, prefix, int(m_maps));
-    }
-
     bool walk(int l)
     {
         if (m_depth == 0)
             return leaves0();
-        if (l == m_depth - 1)
+        if (l == m_depth - m_T.m)
             return leaves(l);
         for (int i = 0; i < m_F.n; ++i) {
             step(l, i);
@@ -524,53 +685,85 @@ private:
         return true;
     }
 
-    // The last level: every map's image of buf[l], fused with the views, into the raster.
+    // The N^m leaves below buf[l] through the fused table, into the raster.
     bool leaves(int l)
     {
         const double *X = level(l);
-        const std::uint8_t *colours = m_coords;
+        const int W = m_T.words;
         const int w = m_img.cellsX(), h = m_img.cellsY();
-        const std::size_t stride = 2 * D + 2;
-        for (int i = 0; i < m_F.n; ++i) {
-            m_address[0] = std::uint8_t(i);
-            const std::uint32_t lab = label();
-            for (int q = 0; q < m_F.views; ++q) {
-                const double *L = &m_F.leaf[(std::size_t(i) * m_F.views + q) * stride];
-                if (m_points) {
-                    for (int r = 0; r < m_n; ++r) {
-                        double sx = L[2 * D], sy = L[2 * D + 1];
-                        for (int j = 0; j < D; ++j) {
-                            sx += X[r * D + j] * L[2 * j];
-                            sy += X[r * D + j] * L[2 * j + 1];
+        if (!m_labelsFixed) {
+            // A colour prefix longer than the fused levels: the parent's part of the address
+            // (address[m..prefix-1]) is the low digits of every word's label.
+            const int prefix = m_job.colours.prefix;
+            std::uint32_t low = 0, scale = 1;
+            for (int k = m_T.m; k < prefix; ++k) {
+                low = low * m_maps + (k < m_depth ? m_address[k] : 0u);
+                scale *= m_maps;
+            }
+            for (int v = 0; v < W; ++v)
+                m_labels[std::size_t(v)] = std::uint32_t(v) * scale + low;
+        }
+        for (int q = 0; q < m_T.views; ++q) {
+            const double *L = &m_T.l[std::size_t(q) * D * W * 2];
+            const double *C = &m_T.c[std::size_t(q) * W * 2];
+            // Every vertex's cell coordinates for every word: s = x L + c, as 2W-long
+            // multiply-adds (vectorised).
+            for (int r = 0; r < m_n; ++r) {
+                double *__restrict sr = &m_s[std::size_t(r) * W * 2];
+                for (int k = 0; k < 2 * W; ++k)
+                    sr[k] = C[k];
+                for (int j = 0; j < D; ++j) {
+                    const double xj = X[r * D + j];
+                    const double *__restrict lj = L + std::size_t(j) * W * 2;
+                    for (int k = 0; k < 2 * W; ++k)
+                        sr[k] += xj * lj[k];
+                }
+            }
+            if (m_points) {
+                for (int r = 0; r < m_n; ++r) {
+                    const double *sr = &m_s[std::size_t(r) * W * 2];
+                    // Cells first (NaN fails the comparisons: off screen), then the hits.
+                    for (int v = 0; v < W; ++v)
+                        m_cells[std::size_t(v)] = cellIndex(sr[2 * v], sr[2 * v + 1], w, h);
+                    for (int v = 0; v < W; ++v) {
+                        const std::int32_t cell = m_cells[std::size_t(v)];
+                        if (cell < 0) {
+                            ++m_img.offscreen;
+                            continue;
                         }
-                        plotCell<M>(m_img, w, h, sx, sy, lab, colours);
+                        if constexpr (M == Accumulation::Hits)
+                            m_img.addHit(std::size_t(cell), m_labels[std::size_t(v)]);
+                        else
+                            m_img.addDensity(std::size_t(cell), m_coords[m_labels[std::size_t(v)]]);
                     }
+                }
+                continue;
+            }
+            for (int v = 0; v < W; ++v) {
+                double x0 = m_s[2 * std::size_t(v)], x1 = x0, y0 = m_s[2 * std::size_t(v) + 1], y1 = y0;
+                bool nan = x0 != x0 || y0 != y0;
+                for (int r = 1; r < m_n; ++r) {
+                    const double sx = m_s[(std::size_t(r) * W + v) * 2];
+                    const double sy = m_s[(std::size_t(r) * W + v) * 2 + 1];
+                    x0 = std::min(x0, sx), x1 = std::max(x1, sx);
+                    y0 = std::min(y0, sy), y1 = std::max(y1, sy);
+                    nan = nan || sx != sx || sy != sy;
+                }
+                // Deep levels: the image inside one cell is one hit there (NaN fails the test
+                // and goes to the rasteriser, which counts it).
+                if (!nan && std::floor(x0) == std::floor(x1) && std::floor(y0) == std::floor(y1)
+                    && x0 >= 0.0 && y0 >= 0.0) {
+                    plotCell<M>(m_img, w, h, x0, y0, m_labels[std::size_t(v)], m_coords);
                 } else {
-                    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-                    bool nan = false;
                     for (int r = 0; r < m_n; ++r) {
-                        double sx = L[2 * D], sy = L[2 * D + 1];
-                        for (int j = 0; j < D; ++j) {
-                            sx += X[r * D + j] * L[2 * j];
-                            sy += X[r * D + j] * L[2 * j + 1];
-                        }
-                        m_screen[2 * r] = sx;
-                        m_screen[2 * r + 1] = sy;
-                        x0 = std::min(x0, sx), x1 = std::max(x1, sx);
-                        y0 = std::min(y0, sy), y1 = std::max(y1, sy);
-                        nan = nan || sx != sx || sy != sy;
+                        m_screen[2 * r] = m_s[(std::size_t(r) * W + v) * 2];
+                        m_screen[2 * r + 1] = m_s[(std::size_t(r) * W + v) * 2 + 1];
                     }
-                    // Deep levels: the image inside one cell is one hit there (NaN fails the
-                    // test and goes to the rasteriser, which counts it).
-                    if (!nan && std::floor(x0) == std::floor(x1)
-                        && std::floor(y0) == std::floor(y1) && x0 >= 0.0 && y0 >= 0.0)
-                        plotCell<M>(m_img, w, h, x0, y0, lab, colours);
-                    else
-                        m_plotter.image(m_screen.data(), m_n, m_kind, lab, m_xs);
+                    m_plotter.image(m_screen.data(), m_n, m_kind, m_labels[std::size_t(v)], m_xs);
                 }
             }
         }
-        m_emitted += std::uint64_t(m_F.n);
+        m_emitted += std::uint64_t(W);
         if (m_emitted - m_ticked >= 16384) {
             const std::uint64_t n = m_emitted - m_ticked;
             m_ticked = m_emitted;
@@ -601,6 +794,7 @@ private:
     }
 
     const Flat<D> &m_F;
+    const FusedLeaves<D> &m_T;
     const EngineJob &m_job;
     const std::uint8_t *m_coords;
     DensityImage &m_img;
@@ -608,8 +802,11 @@ private:
     int m_depth, m_n;
     StartSet::Kind m_kind;
     bool m_points = true;
+    bool m_labelsFixed = true;
     std::uint32_t m_maps = 1;
-    std::vector<double> m_buf, m_screen, m_xs;
+    std::vector<double> m_buf, m_screen, m_xs, m_s;
+    std::vector<std::int32_t> m_cells;
+    std::vector<std::uint32_t> m_labels;
     Plotter m_plotter;
     std::uint8_t m_address[65] = {};
     std::uint64_t m_emitted = 0, m_ticked = 0;
@@ -659,23 +856,34 @@ IterationStats runFixed(const EngineJob &job, const std::vector<CellView> &cv,
     if (job.random) {
         const AliasTable pick(job.ifs->probabilities, job.ifs->size());
         const Progress progress{control, done, std::max(1.0, double(job.samples))};
-        const RowVec x0 = job.start.vertices.row(0);
+        RowVec x0 = job.start.vertices.row(0);
+        // One view: the orbit runs in screen space (toScreenSpace).
+        Flat<D> screen = F;
+        double start[D];
+        for (int k = 0; k < D; ++k)
+            start[k] = x0(k);
+        const bool inScreen = toScreenSpace(F, screen, start);
+        RowVec x0Screen = x0;
+        for (int k = 0; k < D; ++k)
+            x0Screen(k) = start[k];
         // Thread t runs a contiguous block of streams.
         onThreads(threads, [&](int t) {
             const int first = kChaosStreams * t / threads, last = kChaosStreams * (t + 1) / threads;
-            results[t] = F.views == 1
-                             ? chaosKernel<D, M, true>(F, pick, x0, job, coords.data(), first,
-                                                       last, *images[t], progress)
+            results[t] = inScreen
+                             ? chaosKernel<D, M, true>(screen, pick, x0Screen, job, coords.data(),
+                                                       first, last, *images[t], progress)
                              : chaosKernel<D, M, false>(F, pick, x0, job, coords.data(), first,
                                                         last, *images[t], progress);
         });
     } else {
         const auto tasks = splitTasks(F.n, job.depth, threads);
+        const int split = tasks.empty() ? 0 : int(tasks.front().size());
+        const FusedLeaves<D> fused(F, FusedLeaves<D>::levelsFor(F.n, job.depth - split));
         const Progress progress{control, done, std::max(1.0, imageCount(*job.ifs, job.depth))};
         std::atomic<std::size_t> next{0};
         std::atomic<bool> stopped{false};
         onThreads(threads, [&](int t) {
-            DfsKernel<D, M> walker(F, job, coords.data(), *images[t], progress);
+            DfsKernel<D, M> walker(F, fused, job, coords.data(), *images[t], progress);
             for (;;) {
                 const std::size_t k = next.fetch_add(1);
                 if (k >= tasks.size() || stopped.load())
