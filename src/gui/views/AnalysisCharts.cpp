@@ -115,8 +115,42 @@ QChartView *AnalysisCharts::makeView(const QString &title)
     auto *view = new QChartView(chart);
     view->setRenderHint(QPainter::Antialiasing);
     view->setMinimumSize(160, 140); // the dock may be narrow; the chart scales
+    view->installEventFilter(this);
     m_views << view;
     return view;
+}
+
+bool AnalysisCharts::eventFilter(QObject *watched, QEvent *event)
+{
+    if (event->type() == QEvent::Resize)
+        if (auto *view = qobject_cast<QChartView *>(watched))
+            fitToView(view);
+    return QWidget::eventFilter(watched, event);
+}
+
+void AnalysisCharts::fitToView(QChartView *view)
+{
+    // A chart in a small dock spends its height on titles and labels until the plot area is
+    // gone and the axis labels are elided to "...": below these sizes it drops the axis titles
+    // (the tab and the tooltips name the quantities), then the legend, and uses smaller labels.
+    QChart *c = view->chart();
+    const bool compact = view->height() < 260 || view->width() < 320;
+    const bool tiny = view->height() < 190;
+    QFont title = font();
+    title.setBold(true);
+    if (!compact)
+        title.setPointSizeF(title.pointSizeF() * 1.15);
+    c->setTitleFont(title);
+    QFont labels = font();
+    if (compact)
+        labels.setPointSizeF(std::max(7.0, labels.pointSizeF() * 0.85));
+    for (QAbstractAxis *axis : c->axes()) {
+        axis->setTitleVisible(!compact);
+        axis->setLabelsFont(labels);
+    }
+    c->legend()->setVisible(!tiny && c->series().size() > 1);
+    c->legend()->setFont(labels);
+    c->setMargins(compact ? QMargins(2, 2, 2, 2) : QMargins(6, 6, 6, 6));
 }
 
 void AnalysisCharts::setNote(const QString &text)
@@ -153,6 +187,7 @@ QString AnalysisCharts::pointToolTip(Tab tab, const QString &series, const QPoin
 void AnalysisCharts::addToolTips(Tab tab)
 {
     QChartView *view = chartView(tab);
+    fitToView(view); // the axes are new
     for (QAbstractSeries *s : view->chart()->series()) {
         auto *xy = qobject_cast<QXYSeries *>(s);
         if (!xy)
@@ -227,6 +262,14 @@ void AnalysisCharts::setDistances(const QList<DistanceSeries> &series, double ra
             yhi = std::max(yhi, y);
         }
     }
+    // An empty chart says why rather than showing bare axes.
+    const bool empty = !std::isfinite(xlo);
+    c->setTitle(empty ? tr("No exact curve known for this item")
+                      : tr("Distance to the exact curve"));
+    chartView(DistanceTab)->setToolTip(
+        empty ? tr("The Hausdorff distance is measured against an exact curve: B-spline, Bézier "
+                   "and complex de Casteljau curves have one.")
+              : QString());
     if (!std::isfinite(xlo)) {
         xlo = 0, xhi = 1, ylo = 0.1, yhi = 1;
     }

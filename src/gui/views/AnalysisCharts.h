@@ -67,6 +67,8 @@ private:
     QChartView *makeView(const QString &title);
     // Hover tooltips on every series of chart `tab` (after its series were made).
     void addToolTips(Tab tab);
+    void fitToView(QChartView *view);
+    bool eventFilter(QObject *watched, QEvent *event) override;
 
     QLabel *m_note = nullptr;
     QTabWidget *m_tabs = nullptr;

@@ -52,10 +52,18 @@ RegularityChart::RegularityChart(QWidget *parent) : QWidget(parent)
         chart->addSeries(s);
     auto *x = new QValueAxis;
     x->setTitleText(tr("tension ω"));
-    x->setLabelFormat(QStringLiteral("%.3g"));
+    // Ticks at multiples of 1/16, the tension of the C^1 scheme whose regularity is 2.
+    x->setLabelFormat(QStringLiteral("%.4g"));
+    x->setTickType(QValueAxis::TicksDynamic);
+    x->setTickAnchor(0.0);
+    x->setTickInterval(0.0625);
     auto *y = new QValueAxis;
-    y->setTitleText(tr("regularity r (C^n for n < r)"));
-    y->setRange(0.0, 2.2);
+    y->setTitleText(tr("regularity r"));
+    y->setRange(0.0, 2.5);
+    y->setTickType(QValueAxis::TicksDynamic);
+    y->setTickAnchor(0.0);
+    y->setTickInterval(0.5);
+    y->setLabelFormat(QStringLiteral("%.1f"));
     chart->addAxis(x, Qt::AlignBottom);
     chart->addAxis(y, Qt::AlignLeft);
     for (QAbstractSeries *s : chart->series()) {

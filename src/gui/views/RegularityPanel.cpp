@@ -11,12 +11,34 @@
 
 namespace awb {
 
+namespace {
+// "C^2" as a reader writes it: C², C^infinity as C^∞.
+QString superscripted(const std::string &label)
+{
+    static const QString digits = QStringLiteral("⁰¹²³⁴⁵⁶⁷⁸⁹");
+    const QString s = QString::fromStdString(label);
+    const qsizetype caret = s.indexOf(QLatin1Char('^'));
+    if (caret < 0)
+        return s;
+    const QString exponent = s.mid(caret + 1);
+    if (exponent == QLatin1String("infinity"))
+        return s.left(caret) + QStringLiteral("∞");
+    QString out = s.left(caret);
+    for (QChar c : exponent) {
+        if (!c.isDigit())
+            return s;
+        out += digits.at(c.digitValue());
+    }
+    return out;
+}
+} // namespace
+
 QString regularityText(const Regularity &r)
 {
     if (!r.applies || r.infinite || (r.divergent && r.transition.empty()))
         return QString::fromStdString(r.message);
     QString text = QObject::tr("%1, Hölder regularity r in [%2, %3] (width %4)")
-                       .arg(QString::fromStdString(r.smoothnessLabel()))
+                       .arg(superscripted(r.smoothnessLabel()))
                        .arg(r.lower, 0, 'g', 8)
                        .arg(r.upper, 0, 'g', 8)
                        .arg(r.width(), 0, 'g', 2);
