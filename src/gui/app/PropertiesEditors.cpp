@@ -6,6 +6,7 @@
 #include "gui/app/ControlPointEdits.h"
 #include "gui/app/PaletteDialog.h"
 #include "gui/views/AttractorRenderer.h"
+#include "gui/views/ThemeColours.h"
 #include "model/AttractorItem.h"
 #include "model/EigenvaluePlotItem.h"
 #include "model/Project.h"
@@ -273,7 +274,8 @@ void PropertiesWidget::addEigenvaluePlotEditors()
             status->setStyleSheet(QString());
         } else {
             status->setText(plot->derivedError());
-            status->setStyleSheet(QStringLiteral("color: #b01e1e"));
+            status->setStyleSheet(
+                QStringLiteral("color: %1").arg(errorTextColour(status->palette()).name()));
         }
     }});
     content->addWidget(box);

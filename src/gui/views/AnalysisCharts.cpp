@@ -2,6 +2,7 @@
 
 #include "core/analysis/Geometry.h"
 #include "gui/views/AttractorRenderer.h"
+#include "gui/views/ThemeColours.h"
 #include "model/NumberFormat.h"
 
 #include <QCategoryAxis>
@@ -89,7 +90,7 @@ AnalysisCharts::AnalysisCharts(QWidget *parent) : QWidget(parent)
     m_note->setWordWrap(true);
     m_note->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_note->setContentsMargins(6, 4, 6, 4);
-    m_note->setStyleSheet(QStringLiteral("background: #fff8e0; border: 1px solid #e6d9a8;"));
+    m_note->setStyleSheet(noteStyleSheet(palette()));
     m_note->setVisible(false);
     layout->addWidget(m_note);
     m_tabs = new QTabWidget(this);
@@ -155,6 +156,7 @@ void AnalysisCharts::fitToView(QChartView *view)
 
 void AnalysisCharts::setNote(const QString &text)
 {
+    m_note->setStyleSheet(noteStyleSheet(palette())); // the theme may have changed
     m_note->setText(text);
     m_note->setVisible(!text.isEmpty());
 }

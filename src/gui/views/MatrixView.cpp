@@ -1,4 +1,6 @@
 #include "gui/views/MatrixView.h"
+
+#include "gui/views/ThemeColours.h"
 #include "gui/views/MatrixHeatMap.h"
 
 #include "model/NumberFormat.h"
@@ -120,6 +122,11 @@ public:
         }
         case Qt::TextAlignmentRole:
             return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
+        case Qt::ForegroundRole:
+            // The tinted cells are light in any theme: their text stays dark.
+            if (sum || m_m.affineBlock >= 0)
+                return QColor(20, 20, 20);
+            return {};
         case Qt::BackgroundRole:
             if (sum)
                 return kSum;
@@ -241,7 +248,8 @@ MatrixView::MatrixView(QWidget *parent) : QWidget(parent)
     // The refusal message sits outside the scroll area: it stays visible whatever is scrolled.
     m_error = new QLabel(this);
     m_error->setWordWrap(true);
-    m_error->setStyleSheet(QStringLiteral("QLabel { color: #b01e1e; padding: 4px; }"));
+    m_error->setStyleSheet(QStringLiteral("QLabel { color: %1; padding: 4px; }")
+                               .arg(errorTextColour(palette()).name()));
     m_error->hide();
     outer->addWidget(m_error);
 }
@@ -271,8 +279,13 @@ void MatrixView::showHighlight()
 {
     for (int i = 0; i < m_boxes.size(); ++i) {
         m_boxes[i]->setAutoFillBackground(isHighlighted(i));
-        QPalette p = m_boxes[i]->palette();
-        p.setColor(QPalette::Window, QColor(255, 236, 179));
+        // The box's own colours follow the theme: its title must stay legible on the
+        // highlight, whose colour does not.
+        QPalette p = palette();
+        if (isHighlighted(i)) {
+            p.setColor(QPalette::Window, highlightBackground(palette()));
+            p.setColor(QPalette::WindowText, highlightText(palette()));
+        }
         m_boxes[i]->setPalette(p);
     }
 }
