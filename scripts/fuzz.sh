@@ -3,7 +3,9 @@
 # UndefinedBehaviorSanitizer in build-asan/ (the build of scripts/sanitize.sh), and runs each for
 # SECONDS (default 60):
 #   fuzz_project_loader  any bytes as a project file: refused with a message, or saved, loaded
-#                        and saved again to the same bytes; every item's IFS built or refused
+#                        and saved again to the same bytes
+#   fuzz_item_ifs        the same, and every attractor item's IFS built or refused with a reason
+#                        (the item readers and the schemes on the loaded fields)
 #   fuzz_cli_arguments   the command line of `attractor-cli points` (start sets, addresses,
 #                        depths, names) on a real example
 # Seeds: the examples, the bad files of the tests (tests/fuzz/seeds/) and the crashes found so
@@ -16,7 +18,7 @@ cd "$(dirname "$0")/.."
 SECS="${1:-60}"
 shift || true
 TARGETS=("$@")
-[ ${#TARGETS[@]} -gt 0 ] || TARGETS=(fuzz_project_loader fuzz_cli_arguments)
+[ ${#TARGETS[@]} -gt 0 ] || TARGETS=(fuzz_project_loader fuzz_item_ifs fuzz_cli_arguments)
 bash scripts/setup.sh --packages-only
 bash scripts/configure-asan.sh
 cmake --build build-asan --parallel "$(nproc)" --target "${TARGETS[@]}"
@@ -29,7 +31,8 @@ for t in "${TARGETS[@]}"; do
   mkdir -p "$corpus" "$artifacts"
   seeds=()
   case "$t" in
-    fuzz_project_loader) seeds=(examples tests/fuzz/seeds/loader tests/fuzz/regressions/loader) ;;
+    fuzz_project_loader|fuzz_item_ifs)
+      seeds=(examples tests/fuzz/seeds/loader tests/fuzz/regressions/loader) ;;
     fuzz_cli_arguments) seeds=(tests/fuzz/seeds/cli tests/fuzz/regressions/cli) ;;
   esac
   existing=()

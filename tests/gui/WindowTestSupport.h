@@ -10,6 +10,8 @@
 #include <QStandardPaths>
 #include <QtTest>
 
+#include "TestTime.h"
+
 namespace awb::test {
 
 // QSettings and the standard paths of the test, apart from the user's.
@@ -42,7 +44,7 @@ inline bool waitForFinalImage(AttractorView *view)
     return QTest::qWaitFor([view] {
         return view->currentImageInfo().final && view->currentImageInfo().litPixels > 0
                && !view->renderer()->isBusy();
-    }, 30000);
+    }, awb::test::ms(30000));
 }
 
 } // namespace awb::test

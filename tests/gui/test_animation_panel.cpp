@@ -17,6 +17,8 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include "TestTime.h"
+
 #include <numbers>
 
 #include "WindowTestSupport.h"
@@ -109,7 +111,7 @@ private slots:
         // Play advances the frames; Stop returns to the item.
         panel->play();
         QVERIFY(panel->isPlaying());
-        QTRY_VERIFY_WITH_TIMEOUT(panel->frame() > 26, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(panel->frame() > 26, awb::test::ms(5000));
         panel->stop();
         QVERIFY(!panel->isPlaying());
         QVERIFY(!panel->isPreviewing());

@@ -11,6 +11,8 @@
 #include <QSignalSpy>
 #include <QtTest>
 
+#include "TestTime.h"
+
 using namespace awb;
 
 namespace {
@@ -149,7 +151,7 @@ void TestAttractorRenderer::newerRequestCancelsTheRunningOne()
     quick.world = QRectF(0, 0, 6, 3);
     renderer.request(quick);
     ready.clear();
-    const QList<RenderInfo> infos = waitFinal(ready, 20000);
+    const QList<RenderInfo> infos = waitFinal(ready, awb::test::ms(20000));
     QVERIFY(!infos.isEmpty());
     for (const RenderInfo &info : infos) {
         QCOMPARE(info.world, quick.world); // nothing more of the slow request
@@ -210,7 +212,7 @@ void TestAttractorRenderer::cancelStopsTheRunningRender()
     quick.world = QRectF(0, 0, 6, 3);
     renderer.request(quick);
     QVERIFY(renderer.isBusy());
-    const QList<RenderInfo> infos = waitFinal(ready, 20000);
+    const QList<RenderInfo> infos = waitFinal(ready, awb::test::ms(20000));
     QVERIFY(!infos.isEmpty());
     for (const RenderInfo &info : infos)
         QCOMPARE(info.world, quick.world);
@@ -228,7 +230,7 @@ void TestAttractorRenderer::newerRequestBeforeAnyResult()
     renderer.request(cubicRequest(27));
     RenderRequest last = cubicRequest(8);
     renderer.request(last);
-    const QList<RenderInfo> infos = waitFinal(ready, 20000);
+    const QList<RenderInfo> infos = waitFinal(ready, awb::test::ms(20000));
     QCOMPARE(infos.size(), 1); // depth 8 needs no coarse pass
     QCOMPARE(infos.first().depth, 8);
     QVERIFY(infos.first().final);

@@ -12,6 +12,8 @@
 #include <QSvgGenerator>
 #include <QtTest>
 
+#include "TestTime.h"
+
 using namespace awb;
 
 namespace {
@@ -283,8 +285,7 @@ void TestAttractorView::cancelAndRenderAgain()
     QVERIFY(QTest::qWaitForWindowExposed(&f.view));
     // The coarse preview (2^14 images) arrives first; the full pass is then running.
     QTRY_VERIFY_WITH_TIMEOUT(!f.view.currentImage().isNull()
-                                 && f.view.currentImageInfo().depth == 14,
-                             30000);
+                                 && f.view.currentImageInfo().depth == 14, awb::test::ms(30000));
     QVERIFY(!f.view.currentImageInfo().final);
     QVERIFY(f.view.isRendering());
     QVERIFY(!screenSvg(f.view).contains(QLatin1String("cancelled")));
@@ -293,7 +294,7 @@ void TestAttractorView::cancelAndRenderAgain()
     // Esc stops it; the coarse picture stays on screen and the overlay says what happened.
     QTest::keyClick(&f.view, Qt::Key_Escape);
     QCOMPARE(cancelled.size(), 1);
-    QTRY_VERIFY_WITH_TIMEOUT(!f.view.isRendering(), 2000);
+    QTRY_VERIFY_WITH_TIMEOUT(!f.view.isRendering(), awb::test::ms(2000));
     QVERIFY(!f.view.renderer()->isBusy());
     QCOMPARE(f.view.currentImage().cacheKey(), coarseKey);
     const QString svg = screenSvg(f.view);
@@ -317,7 +318,7 @@ void TestAttractorView::cancelAndRenderAgain()
     f.view.renderAgain();
     QVERIFY(f.view.isRendering());
     QVERIFY(!screenSvg(f.view).contains(QLatin1String("cancelled")));
-    QTRY_VERIFY_WITH_TIMEOUT(f.view.currentImage().cacheKey() != coarseKey, 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(f.view.currentImage().cacheKey() != coarseKey, awb::test::ms(30000));
     QCOMPARE(f.view.currentImageInfo().depth, 14);
     QVERIFY(f.view.isRendering());
     f.view.cancelRender();
@@ -446,7 +447,7 @@ void TestAttractorView::fittedExportIgnoresZoom()
     rs.depth = 14; // a raster, not vector dots
     f.view.setRenderSettings(rs);
     f.view.setView(QPointF(0.2, 0.2), f.view.pixelsPerUnit() * 12);
-    QTRY_VERIFY_WITH_TIMEOUT(f.view.currentImageInfo().final, 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(f.view.currentImageInfo().final, awb::test::ms(20000));
     const auto colouredColumns = [](const QImage &img, int *left, int *right) {
         int count = 0;
         *left = img.width();

@@ -21,6 +21,8 @@
 #include <QXYSeries>
 #include <QtTest>
 
+#include "TestTime.h"
+
 #include "model/Fig2Example.h"
 
 #include "WindowTestSupport.h"
@@ -224,8 +226,7 @@ void TestEigenvaluePlotView::chartPointTooltips()
     QVERIFY(w.openFile(fig2));
     w.setCurrentItem(w.project()->findItem(curveName));
     w.controller()->refreshNow();
-    QTRY_VERIFY_WITH_TIMEOUT(!w.analysisCharts()->chart(T::DistanceTab)->series().isEmpty(),
-                             20000);
+    QTRY_VERIFY_WITH_TIMEOUT(!w.analysisCharts()->chart(T::DistanceTab)->series().isEmpty(), awb::test::ms(20000));
     auto *series = qobject_cast<QXYSeries *>(w.analysisCharts()->chart(T::DistanceTab)->series().front());
     QVERIFY(series && series->count() > 0);
     const QPointF p = series->at(series->count() - 1);

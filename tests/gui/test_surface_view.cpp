@@ -29,6 +29,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "TestTime.h"
+
 using namespace awb;
 
 namespace {
@@ -172,7 +174,7 @@ void TestSurfaceView::cpuPathMatchesReference()
 
     // The asynchronous CPU frame of the widget is the same figure.
     view.show();
-    QTRY_VERIFY_WITH_TIMEOUT(!view.cpuImage().isNull() && !view.isRendering(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(!view.cpuImage().isNull() && !view.isRendering(), awb::test::ms(10000));
     QVERIFY(compare(image, view.cpuImage()).coverageMismatch < 0.05);
 }
 
@@ -242,7 +244,7 @@ void TestSurfaceView::dragIsOneUndoStep()
     auto *item = qobject_cast<SubdivisionSurfaceItem *>(w.currentItem());
     QVERIFY(item);
     SurfaceView *view = w.surfaceView();
-    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && !view->cpuImage().isNull(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && !view->cpuImage().isNull(), awb::test::ms(10000));
     const QImage before = view->cpuImage();
     const int steps = w.project()->undoStack()->count();
     const Point original = item->controlPoints(0)[9];
@@ -262,14 +264,14 @@ void TestSurfaceView::dragIsOneUndoStep()
         w.propertiesWidget()->editor(QStringLiteral("points")));
     QVERIFY(table);
     QCOMPARE(table->currentRow(), 9);
-    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering(), awb::test::ms(10000));
     QTest::qWait(50);
-    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering(), awb::test::ms(10000));
     QVERIFY(compare(before, view->cpuImage()).coverageMismatch > 0.01);
     w.project()->undoStack()->undo();
     QCOMPARE(item->controlPoints(0)[9], original);
     QTest::qWait(50);
-    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering(), awb::test::ms(10000));
     QVERIFY(compare(before, view->cpuImage()).coverageMismatch < 0.01);
 
     // A start-set vertex drags the same way: one undo step. (Pick one apart from the net's
@@ -508,14 +510,14 @@ void TestSurfaceView::glPathUnderXvfb()
         for (int k = 0; k < 12; ++k) {
             const int before = frames;
             view.orbit(5, 1);
-            QTRY_VERIFY_WITH_TIMEOUT(frames > before, 5000);
+            QTRY_VERIFY_WITH_TIMEOUT(frames > before, awb::test::ms(5000));
             moving << last;
         }
         QTest::qWait(400); // settles: full detail
         for (int k = 0; k < 5; ++k) {
             const int before = frames;
             view.findChild<QOpenGLWidget *>()->update();
-            QTRY_VERIFY_WITH_TIMEOUT(frames > before, 5000);
+            QTRY_VERIFY_WITH_TIMEOUT(frames > before, awb::test::ms(5000));
             still << last;
         }
         disconnect(c);
@@ -559,7 +561,7 @@ void TestSurfaceView::glDragUnderXvfb()
     auto *item = qobject_cast<SubdivisionSurfaceItem *>(w.currentItem());
     SurfaceView *view = w.surfaceView();
     QCOMPARE(view->path(), SurfaceView::Path::OpenGL);
-    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && view->cloud().size() > 0, 60000);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && view->cloud().size() > 0, awb::test::ms(60000));
     QTest::qWait(300);
     QElapsedTimer refresh;
     refresh.start();
@@ -592,7 +594,7 @@ void TestSurfaceView::glDragUnderXvfb()
         const int c0 = clouds;
         timer.start();
         QTest::mouseMove(view, grab + QPoint(0, -5 * k));
-        QTRY_VERIFY_WITH_TIMEOUT(shown > c0, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(shown > c0, awb::test::ms(10000));
         latency << shownAt;
         qInfo("  move %d: frame at %.0f ms (cloud %.0f ms on the worker, draw %.0f ms)", k,
               shownAt, 1000 * view->cloud().seconds, view->lastFrameMs());
@@ -601,7 +603,7 @@ void TestSurfaceView::glDragUnderXvfb()
     QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, grab + QPoint(0, -40));
     QCOMPARE(w.project()->undoStack()->count(), steps + 1);
     QVERIFY(item->controlPoints(0)[9].z > original.z);
-    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && view->cloud().size() > dragPoints, 60000);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && view->cloud().size() > dragPoints, awb::test::ms(60000));
     std::sort(latency.begin(), latency.end());
     qInfo("GL llvmpipe drag: move -> new frame median %.0f ms, max %.0f ms (%zu points while "
           "dragging, %zu after release)", latency[latency.size() / 2], latency.last(),

@@ -30,6 +30,8 @@
 #include <QToolButton>
 #include <QtTest>
 
+#include "TestTime.h"
+
 #include "WindowTestSupport.h"
 
 using namespace awb;
@@ -129,14 +131,14 @@ void TestWindowUsability::escapeStopsDrawingFromAnyPanel()
     AlgorithmSpec a = item->algorithm();
     a.depth = 26;
     QVERIFY(item->setAlgorithm(a));
-    QTRY_VERIFY_WITH_TIMEOUT(w.attractorView()->isRendering(), 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(w.attractorView()->isRendering(), awb::test::ms(5000));
     QTRY_VERIFY(stop->isEnabled());
     // Esc from the Properties dock, where the focus is on an editor.
     auto *depth = w.propertiesWidget()->editor("algorithm.depth");
     depth->setFocus();
     QTRY_VERIFY(depth->hasFocus());
     QTest::keyClick(QApplication::focusWidget(), Qt::Key_Escape);
-    QTRY_VERIFY_WITH_TIMEOUT(!w.attractorView()->isRendering(), 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(!w.attractorView()->isRendering(), awb::test::ms(5000));
     QVERIFY(!stop->isEnabled());
     // The View menu lists it with its key.
     bool listed = false;
