@@ -749,11 +749,16 @@ private:
                     y0 = std::min(y0, sy), y1 = std::max(y1, sy);
                     nan = nan || sx != sx || sy != sy;
                 }
-                // Deep levels: the image inside one cell is one hit there (NaN fails the test
-                // and goes to the rasteriser, which counts it).
-                if (!nan && std::floor(x0) == std::floor(x1) && std::floor(y0) == std::floor(y1)
-                    && x0 >= 0.0 && y0 >= 0.0) {
-                    plotCell<M>(m_img, w, h, x0, y0, m_labels[std::size_t(v)], m_coords);
+                // Deep levels: an image whose bounding box has both corners in one cell on the
+                // raster is one hit there (cellIndex truncates without a libm floor). NaN, and
+                // images off the raster or over several cells, go to the rasteriser, which
+                // clips and counts them.
+                const std::int32_t c0 = nan ? -1 : cellIndex(x0, y0, w, h);
+                if (c0 >= 0 && c0 == cellIndex(x1, y1, w, h)) {
+                    if constexpr (M == Accumulation::Hits)
+                        m_img.addHit(std::size_t(c0), m_labels[std::size_t(v)]);
+                    else
+                        m_img.addDensity(std::size_t(c0), m_coords[m_labels[std::size_t(v)]]);
                 } else {
                     for (int r = 0; r < m_n; ++r) {
                         m_screen[2 * r] = m_s[(std::size_t(r) * W + v) * 2];
