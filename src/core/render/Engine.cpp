@@ -1,5 +1,6 @@
 #include "core/render/Engine.h"
 
+#include "core/Messages.h"
 #include "core/ifs/Random.h"
 
 #include <algorithm>
@@ -158,7 +159,7 @@ std::vector<CellView> cellViews(const std::vector<Projection> &views, const Rast
     std::vector<CellView> out;
     for (const Projection &v : views) {
         if (v.V.rows() != dim || v.V.cols() < 2 || v.c.size() != v.V.cols())
-            throw InputError("a view does not fit the IFS space");
+            throw InputError(coreTranslate("awb::render", "a view does not fit the IFS space"));
         CellView cv;
         cv.V.resize(dim, 2);
         cv.V.col(0) = v.V.col(0) * sx;
@@ -715,18 +716,19 @@ IterationStats dispatch(int dim, const EngineJob &job, const std::vector<CellVie
 IterationStats accumulate(const EngineJob &job, DensityImage &out, const IterationControl &control)
 {
     if (!job.ifs)
-        throw InputError("there is no IFS to draw");
+        throw InputError(coreTranslate("awb::render", "there is no IFS to draw"));
     job.frame.validate();
     const Ifs &ifs = *job.ifs;
     const std::vector<Projection> &views = job.views.empty() ? ifs.views : job.views;
     if (views.empty())
-        throw InputError("the IFS has no view to draw it with");
+        throw InputError(coreTranslate("awb::render", "the IFS has no view to draw it with"));
     std::uint64_t labels = 1;
     for (int k = 0; k < job.colours.prefix; ++k)
         labels *= std::uint64_t(std::max(1, ifs.size()));
     if (job.colours.prefix < 0 || job.colours.prefix > 3
         || job.colours.labelColours.size() < labels)
-        throw InputError("the colour table does not cover the address labels");
+        throw InputError(coreTranslate("awb::render", "the colour table does not cover the address "
+                                                      "labels"));
     if (job.random) {
         checkChaosInputs(ifs, job.start.vertices.row(0), job.samples);
     } else {
