@@ -4221,6 +4221,10 @@ bounds: %9
         <source>item &apos;%1&apos; (%2) is not polygon-based: the polygon command takes normal-vector items and subdivision curves</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>nothing to draw</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>
