@@ -3,6 +3,7 @@
 #include "render/CurvePaths.h"
 #include "render/FigureFile.h"
 
+#include <QCoreApplication>
 #include <QFontMetricsF>
 #include <QPaintEngine>
 #include <QPainter>
@@ -240,7 +241,8 @@ QSize figureSize(const FigureSpec &spec)
 void paintFigure(QPainter &p, const FigureSpec &spec)
 {
     if (!spec.ifs && !spec.iterate && spec.polygons.empty())
-        throw InputError("nothing to draw");
+        throw InputError(
+            QCoreApplication::translate("awb::cli", "nothing to draw").toStdString());
     const int n = int(spec.panels.size());
     const int titleH = spec.title.isEmpty() ? 0 : 34;
     const int captionH = 26;

@@ -3,10 +3,13 @@
 #include "cli/FigureRenderer.h"
 #include "cli/Gallery.h"
 #include "cli/ProjectCommands.h"
+#include "core/Messages.h"
 #include "core/analysis/Spectrum.h"
+#include "i18n/Translations.h"
 #include "render/FigureFile.h"
 
 #include <QCommandLineParser>
+#include <QCoreApplication>
 #include <QDir>
 #include <QGuiApplication>
 #include <QTextStream>
@@ -16,6 +19,11 @@
 using namespace awb;
 
 namespace {
+
+// lupdate takes the context of Tr::tr() from the macro.
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(awb::cli)
+};
 
 QTextStream &out()
 {
@@ -32,13 +40,13 @@ int runExamples(const QStringList &args)
 {
     QCommandLineParser parser;
     parser.setApplicationDescription(
-        "Render the bundled paper figures to PNG files (one row of panels per figure: the start "
-        "set, a few iterates of the Hutchinson operator, and the attractor, over the control "
-        "polygon).");
+        Tr::tr("Render the bundled paper figures to PNG files (one row of panels per figure: the "
+               "start set, a few iterates of the Hutchinson operator, and the attractor, over the "
+               "control polygon)."));
     parser.addHelpOption();
-    parser.addOption({"out", "Directory for the PNG files (created if missing).", "dir",
+    parser.addOption({"out", Tr::tr("Directory for the PNG files (created if missing)."), "dir",
                       "gallery"});
-    parser.addOption({"list", "List the examples and exit."});
+    parser.addOption({"list", Tr::tr("List the examples and exit.")});
     parser.process(args);
     const auto gallery = builtinGallery();
     if (parser.isSet("list")) {
@@ -48,7 +56,7 @@ int runExamples(const QStringList &args)
     }
     QDir dir(parser.value("out"));
     if (!dir.mkpath(".")) {
-        err() << "attractor-cli: cannot create directory " << dir.path() << "\n";
+        err() << Tr::tr("attractor-cli: cannot create directory %1").arg(dir.path()) << "\n";
         return 1;
     }
     for (const auto &ex : gallery) {
@@ -83,18 +91,18 @@ int runExamples(const QStringList &args)
 
 void usage()
 {
-    out() << "Usage: attractor-cli <command> [options]\n\n"
-             "Commands:\n"
-             "  render     render an item of a project to PNG, SVG or PDF\n"
-             "  animate    render the frames of an item's animation (PNG files, MP4/GIF)\n"
-             "  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)\n"
-             "  points     the points of F^k(X0) as CSV\n"
-             "  check      validate a project file\n"
-             "  rewrite    load and save a project in canonical form\n"
-             "  export     attractor points as PLY, a surface's subdivided net as OBJ\n"
-             "  polygon    the control polygon after K subdivision steps (JSON)\n"
-             "  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG\n\n"
-             "Run 'attractor-cli <command> --help' for the options of a command.\n";
+    out() << Tr::tr("Usage: attractor-cli <command> [options]\n\n"
+                    "Commands:\n"
+                    "  render     render an item of a project to PNG, SVG or PDF\n"
+                    "  animate    render the frames of an item's animation (PNG files, MP4/GIF)\n"
+                    "  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)\n"
+                    "  points     the points of F^k(X0) as CSV\n"
+                    "  check      validate a project file\n"
+                    "  rewrite    load and save a project in canonical form\n"
+                    "  export     attractor points as PLY, a surface's subdivided net as OBJ\n"
+                    "  polygon    the control polygon after K subdivision steps (JSON)\n"
+                    "  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG\n\n"
+                    "Run 'attractor-cli <command> --help' for the options of a command.\n");
 }
 
 } // namespace
@@ -117,6 +125,9 @@ int main(int argc, char **argv)
     QGuiApplication app(argc, argv);
     QGuiApplication::setApplicationName("attractor-cli");
     QGuiApplication::setApplicationVersion(PROJECT_VERSION);
+    // The GUI's settings hold the chosen language (View > Language): read them.
+    QGuiApplication::setOrganizationName(QStringLiteral("attractor-workbench"));
+    i18n::installTranslations(app);
     QStringList args = app.arguments();
     if (args.size() < 2 || args[1] == "--help" || args[1] == "-h" || args[1] == "help") {
         usage();
@@ -127,6 +138,9 @@ int main(int argc, char **argv)
         return 0;
     }
     const QString command = args[1];
+    // JSON output is for programs: the core's notes, verdicts and errors in it stay in English.
+    if (command == "analyse" || command == "analyze" || command == "polygon")
+        setMessageTranslator(nullptr);
     args.removeAt(1);
     args[0] = "attractor-cli " + command;
     try {
@@ -152,7 +166,7 @@ int main(int argc, char **argv)
         err() << "attractor-cli " << command << ": " << e.what() << "\n";
         return 1;
     }
-    err() << "attractor-cli: unknown command '" << command << "'\n";
+    err() << Tr::tr("attractor-cli: unknown command '%1'").arg(command) << "\n";
     usage();
     return 2;
 }

@@ -1,6 +1,8 @@
 #include "core/Types.h"
 
-#include <sstream>
+#include "core/Messages.h"
+
+#include <cmath>
 
 namespace awb {
 
@@ -10,12 +12,11 @@ void requireFiniteImpl(const M &m, const std::string &what)
 {
     for (Eigen::Index r = 0; r < m.rows(); ++r) {
         for (Eigen::Index c = 0; c < m.cols(); ++c) {
-            if (!std::isfinite(std::abs(m(r, c)))) {
-                std::ostringstream os;
-                os << what << ": entry (row " << r + 1 << ", column " << c + 1
-                   << ") is not a finite number";
-                throw InputError(os.str());
-            }
+            if (!std::isfinite(std::abs(m(r, c))))
+                throw InputError(formatMessage(
+                    coreTranslate("awb::core", "%1: entry (row %2, column %3) is not a finite "
+                                               "number"),
+                    what, r + 1, c + 1));
         }
     }
 }
@@ -28,7 +29,7 @@ Mat matrixFromRows(std::initializer_list<std::initializer_list<double>> rows)
     Eigen::Index i = 0;
     for (auto row : rows) {
         if (Eigen::Index(row.size()) != cols)
-            throw InputError("matrix rows of different lengths");
+            throw InputError(coreTranslate("awb::core", "matrix rows of different lengths"));
         Eigen::Index j = 0;
         for (double v : row)
             M(i, j++) = v;

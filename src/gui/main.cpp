@@ -11,16 +11,14 @@
 #include "gui/views/AttractorRenderer.h"
 #include "gui/views/AttractorView.h"
 #include "gui/views/SurfaceView.h"
+#include "i18n/Translations.h"
 #include "model/Item.h"
 #include "model/Project.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QIcon>
-#include <QLibraryInfo>
-#include <QLocale>
 #include <QTimer>
-#include <QTranslator>
 
 #include <cstdio>
 
@@ -37,14 +35,9 @@ int main(int argc, char *argv[])
     QApplication::setApplicationVersion(QStringLiteral(AWB_VERSION));
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/attractor-workbench.svg")));
 
-    // Translations: Qt's own, then ours from the resources when they are there.
-    QTranslator qtTranslator, appTranslator;
-    if (qtTranslator.load(QLocale(), QStringLiteral("qtbase"), QStringLiteral("_"),
-                          QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        QApplication::installTranslator(&qtTranslator);
-    if (appTranslator.load(QLocale(), QStringLiteral("attractor-workbench"), QStringLiteral("_"),
-                           QStringLiteral(":/i18n")))
-        QApplication::installTranslator(&appTranslator);
+    // Translations: the language of the settings (View > Language) or of the system; Qt's own
+    // strings, ours and the core's messages.
+    awb::i18n::installTranslations(app);
 
     QCommandLineParser parser;
     parser.setApplicationDescription(

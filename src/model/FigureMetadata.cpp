@@ -121,9 +121,12 @@ QByteArray embeddedProject(const QString &pngFile, QString *error)
     QFile file(pngFile);
     if (!file.open(QIODevice::ReadOnly) || file.size() > kMaxFigureFile) {
         if (error)
-            *error = QCoreApplication::translate("awb::FigureMetadata", "%1: cannot read the PNG: %2")
-                         .arg(pngFile, file.isOpen() ? QStringLiteral("larger than 512 MB")
-                                                     : file.errorString());
+            *error = QCoreApplication::translate("awb::FigureMetadata",
+                                                 "%1: cannot read the PNG: %2")
+                         .arg(pngFile, file.isOpen()
+                                           ? QCoreApplication::translate("awb::FigureMetadata",
+                                                                         "larger than 512 MB")
+                                           : file.errorString());
         return {};
     }
     const QByteArray text = pngText(file.readAll(), QByteArray(kFigureProjectKey));

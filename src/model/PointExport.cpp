@@ -9,13 +9,18 @@ namespace awb {
 
 namespace {
 
-QString tr(const char *text) { return QCoreApplication::translate("awb::PointExport", text); }
+// lupdate takes the context of Tr::tr() from the macro (a free tr() would get the
+// enclosing namespace as its context).
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(awb::PointExport)
+};
 
 // Writes `bytes` or throws: a full disk must not give a silently short file.
 void put(QIODevice &out, const QByteArray &bytes)
 {
     if (out.write(bytes) != bytes.size())
-        throw InputError(tr("cannot write the points: %1").arg(out.errorString()).toStdString());
+        throw InputError(
+            Tr::tr("cannot write the points: %1").arg(out.errorString()).toStdString());
 }
 
 // Streams f_w(F^depth(X0)) (w = `address`, empty: the identity) to `visit(point row of one
@@ -25,7 +30,7 @@ void iteratePoints(const DerivedIfs &d, const StartSet &start, int depth, const 
                    const IterationControl &control, Visit &&visit)
 {
     if (!address.empty() && d.iterate)
-        throw InputError(tr("--address needs an item drawn by one IFS; this one is drawn by "
+        throw InputError(Tr::tr("--address needs an item drawn by one IFS; this one is drawn by "
                             "an automaton").toStdString());
     const AffineMap prefix = composeAddress(d.ifs, address);
     CallbackSink sink([&](const Mat &v, StartSet::Kind, const std::uint8_t *a, int n) {
@@ -88,8 +93,11 @@ std::uint64_t writePointsPly(QIODevice &out, const QString &title, const Derived
 {
     const double n = exportPointCount(d, start, depth);
     if (n < 0)
-        throw InputError(tr("'%1' is drawn by an automaton: PLY export covers items with one "
-                            "IFS").arg(title).toStdString());
+        throw InputError(QCoreApplication::translate("awb::PointExport",
+                                                     "'%1' is drawn by an automaton: PLY export "
+                                                     "covers items with one IFS")
+                             .arg(title)
+                             .toStdString());
     put(out, QString("ply\nformat binary_little_endian 1.0\n"
                      "comment Attractor Workbench: item %1, F^%2(X0)\n"
                      "element vertex %3\n"
@@ -119,7 +127,10 @@ std::uint64_t writePointsPly(QIODevice &out, const QString &title, const Derived
     put(out, buffer);
     const bool cancelled = control.cancel && control.cancel->load();
     if (!cancelled && written != std::uint64_t(n))
-        throw InputError(tr("wrote %1 points, expected %2").arg(written).arg(qint64(n))
+        throw InputError(QCoreApplication::translate("awb::PointExport",
+                                                     "wrote %1 points, expected %2")
+                             .arg(written)
+                             .arg(qint64(n))
                              .toStdString());
     return written;
 }

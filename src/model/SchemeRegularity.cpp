@@ -3,6 +3,7 @@
 #include "core/schemes/Scheme.h"
 #include "model/SubdivisionCurveItem.h"
 
+#include <QCoreApplication>
 #include <QJsonArray>
 
 #include <cmath>
@@ -13,8 +14,10 @@ Regularity itemRegularity(const SubdivisionCurveItem &item, const RegularityOpti
 {
     Regularity r;
     if (item.scheme().isComplex()) {
-        r.message = "does not apply: a complex de Casteljau parameter is not a real "
-                    "subdivision scheme";
+        r.message = QCoreApplication::translate("awb::SchemeRegularity",
+                                                "does not apply: a complex de Casteljau "
+                                                "parameter is not a real subdivision scheme")
+                        .toStdString();
         return r;
     }
     try {
@@ -22,7 +25,9 @@ Regularity itemRegularity(const SubdivisionCurveItem &item, const RegularityOpti
         const int m = std::max(int(item.controlPoints(0).size()), scheme->minControlPoints());
         return schemeRegularity(*scheme, std::min(m, scheme->maxControlPoints()), options);
     } catch (const std::exception &e) {
-        r.message = std::string("does not apply: ") + e.what();
+        r.message = QCoreApplication::translate("awb::SchemeRegularity", "does not apply: %1")
+                        .arg(QString::fromStdString(e.what()))
+                        .toStdString();
         return r;
     }
 }

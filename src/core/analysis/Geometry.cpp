@@ -1,5 +1,7 @@
 #include "core/analysis/Geometry.h"
 
+#include "core/Messages.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -55,10 +57,10 @@ struct PointIndex::Impl {
 PointIndex::PointIndex(const Mat &pts) : d(std::make_unique<Impl>())
 {
     if (pts.rows() == 0)
-        throw InputError("cannot index an empty point set");
+        throw InputError(coreTranslate("awb::analysis", "cannot index an empty point set"));
     if (pts.cols() < 1 || pts.cols() > 3)
-        throw InputError("point sets must have 1 to 3 coordinates");
-    requireFinite(pts, "point set");
+        throw InputError(coreTranslate("awb::analysis", "point sets must have 1 to 3 coordinates"));
+    requireFinite(pts, coreTranslate("awb::analysis", "point set"));
     d->pts = pts;
     d->d = int(pts.cols());
     const RowVec lo = pts.colwise().minCoeff(), hi = pts.colwise().maxCoeff();
@@ -149,7 +151,7 @@ double PointIndex::nearest(const double *q, Eigen::Index *index) const
 double directedDistance(const Mat &A, const Mat &B)
 {
     if (A.cols() != B.cols())
-        throw InputError("point sets of different dimensions");
+        throw InputError(coreTranslate("awb::analysis", "point sets of different dimensions"));
     const PointIndex index(B);
     double worst = 0;
     double q[3] = {0, 0, 0};
@@ -179,7 +181,7 @@ double pointSegment(const RowVec &p, const RowVec &a, const RowVec &b)
 double distanceToPolyline(const Mat &A, const Mat &curve)
 {
     if (A.cols() != curve.cols())
-        throw InputError("point sets of different dimensions");
+        throw InputError(coreTranslate("awb::analysis", "point sets of different dimensions"));
     if (curve.rows() < 2)
         return directedDistance(A, curve);
     const PointIndex index(curve);
@@ -212,14 +214,14 @@ BoxDimension boxCountingDimension(const Mat &pts, int minLevel, int maxLevel,
 {
     BoxDimension out;
     if (pts.rows() < 16) {
-        out.note = "too few points for box counting";
+        out.note = coreTranslate("awb::analysis", "too few points for box counting");
         return out;
     }
-    requireFinite(pts, "point set");
+    requireFinite(pts, coreTranslate("awb::analysis", "point set"));
     const RowVec lo = pts.colwise().minCoeff(), hi = pts.colwise().maxCoeff();
     const double size = (hi - lo).maxCoeff();
     if (!(size > 0)) {
-        out.note = "all points coincide";
+        out.note = coreTranslate("awb::analysis", "all points coincide");
         return out;
     }
     const int d = int(pts.cols());
@@ -253,8 +255,10 @@ BoxDimension boxCountingDimension(const Mat &pts, int minLevel, int maxLevel,
             break;
     }
     if (last - minLevel < 2) {
-        out.note = "not enough points for three box sizes with at least "
-                   + std::to_string(int(minPointsPerBox)) + " points per box";
+        out.note = formatMessage(coreTranslate("awb::analysis", "not enough points for three "
+                                                                "box sizes with at least %1 "
+                                                                "points per box"),
+                                 int(minPointsPerBox));
         return out;
     }
     out.levelFrom = minLevel;

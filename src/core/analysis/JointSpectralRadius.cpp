@@ -1,5 +1,7 @@
 #include "core/analysis/JointSpectralRadius.h"
 
+#include "core/Messages.h"
+
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
@@ -310,13 +312,16 @@ double spectralRadiusOf(const Mat &M, double *margin)
 JsrBounds jointSpectralRadius(const std::vector<Mat> &A, const JsrOptions &options)
 {
     if (A.empty())
-        throw InputError("the joint spectral radius needs at least one matrix");
+        throw InputError(coreTranslate("awb::analysis", "the joint spectral radius needs at least "
+                                                        "one matrix"));
     const Eigen::Index L = A.front().rows();
     for (size_t i = 0; i < A.size(); ++i) {
         if (A[i].rows() != L || A[i].cols() != L)
-            throw InputError("the joint spectral radius needs square matrices of one size; matrix "
-                             + std::to_string(i + 1) + " differs");
-        requireFinite(A[i], "matrix " + std::to_string(i + 1));
+            throw InputError(formatMessage(
+                coreTranslate("awb::analysis", "the joint spectral radius needs square matrices "
+                                               "of one size; matrix %1 differs"),
+                i + 1));
+        requireFinite(A[i], formatMessage(coreTranslate("awb::analysis", "matrix %1"), i + 1));
     }
     if (L == 0) {
         JsrBounds b;

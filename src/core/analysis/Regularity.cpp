@@ -1,5 +1,6 @@
 #include "core/analysis/Regularity.h"
 
+#include "core/Messages.h"
 #include "core/analysis/Spectrum.h"
 #include "core/schemes/Scheme.h"
 
@@ -70,20 +71,22 @@ void fillBounds(Regularity &r, double shift, double cap)
     r.divergent = r.upper <= 0;
     r.smoothness = r.convergent ? int(std::ceil(r.lower)) - 1 : -1;
     r.seconds = r.jsr.seconds;
-    std::ostringstream msg;
     if (r.divergent)
-        msg << "not convergent: the first difference scheme does not contract (JSR >= 1)";
+        r.message = coreTranslate("awb::analysis", "not convergent: the first difference scheme "
+                                                   "does not contract (JSR >= 1)");
     else if (!r.convergent)
-        msg << "convergence not certified within the time budget";
+        r.message = coreTranslate("awb::analysis", "convergence not certified within the time "
+                                                   "budget");
     else
-        msg << "C^" << r.smoothness << ", Hölder regularity in [" << r.lower << ", " << r.upper
-            << "]";
-    r.message = msg.str();
+        r.message = formatMessage(
+            coreTranslate("awb::analysis", "C^%1, Hölder regularity in [%2, %3]"), r.smoothness,
+            streamedNumber(r.lower), streamedNumber(r.upper));
     std::string notes;
     if (r.jsr.cancelled)
-        notes += "cancelled; the bounds are those reached. ";
+        notes += coreTranslate("awb::analysis", "cancelled; the bounds are those reached. ");
     else if (r.jsr.timedOut)
-        notes += "time budget spent; the bounds are those reached. ";
+        notes += coreTranslate("awb::analysis", "time budget spent; the bounds are those "
+                                                "reached. ");
     r.notes = notes + r.notes;
 }
 
@@ -109,9 +112,9 @@ std::string Regularity::smoothnessLabel() const
     if (infinite)
         return "C^infinity";
     if (divergent)
-        return "not convergent";
+        return coreTranslate("awb::analysis", "not convergent");
     if (smoothness < 0)
-        return "C^0 not certified";
+        return coreTranslate("awb::analysis", "C^0 not certified");
     return "C^" + std::to_string(smoothness);
 }
 
@@ -171,10 +174,13 @@ Regularity maskRegularity(const std::vector<double> &mask, int arity,
                           const RegularityOptions &options)
 {
     if (arity < 2)
-        throw InputError("the arity of a scheme must be at least 2, got " + std::to_string(arity));
+        throw InputError(formatMessage(
+            coreTranslate("awb::analysis", "the arity of a scheme must be at least 2, got %1"),
+            arity));
     for (double v : mask)
         if (!std::isfinite(v))
-            throw InputError("the mask has a coefficient that is not a finite number");
+            throw InputError(coreTranslate("awb::analysis", "the mask has a coefficient that is "
+                                                            "not a finite number"));
     Regularity r;
     r.arity = arity;
     const std::vector<double> a = trimmed(mask);
@@ -184,23 +190,25 @@ Regularity maskRegularity(const std::vector<double> &mask, int arity,
         abssum += std::abs(v);
     }
     if (a.empty()) {
-        r.message = "no difference scheme: the mask is zero";
+        r.message = coreTranslate("awb::analysis", "no difference scheme: the mask is zero");
         return r;
     }
     const DifferenceMask d = dividedDifferenceMask(a, arity);
     r.sumRules = d.order;
     if (d.order == 0) {
-        r.message = "no difference scheme: the symbol a(z) has no factor 1 + z"
-                    + std::string(arity > 2 ? " + .. + z^" + std::to_string(arity - 1) : "")
-                    + " (the rules' weights do not each sum to 1), so the scheme does not "
-                      "reproduce constants and is not convergent";
+        r.message = formatMessage(
+            coreTranslate("awb::analysis", "no difference scheme: the symbol a(z) has no factor "
+                                           "1 + z%1 (the rules' weights do not each sum to 1), "
+                                           "so the scheme does not reproduce constants and is "
+                                           "not convergent"),
+            arity > 2 ? " + .. + z^" + std::to_string(arity - 1) : std::string());
         return r;
     }
     if (std::abs(sum - arity) > 1e-12 * std::max(1.0, abssum)) {
-        std::ostringstream os;
-        os << "not convergent: the mask sums to " << sum << ", not the arity " << arity
-           << " (the scheme does not reproduce constants)";
-        r.message = os.str();
+        r.message = formatMessage(
+            coreTranslate("awb::analysis", "not convergent: the mask sums to %1, not the arity "
+                                           "%2 (the scheme does not reproduce constants)"),
+            streamedNumber(sum), arity);
         r.applies = true;
         r.divergent = true;
         return r;
@@ -222,8 +230,10 @@ Regularity maskRegularity(const std::vector<double> &mask, int arity,
         interpolatory = ones == 1 && others == 0;
     }
     if (!interpolatory && d.mask.size() > 1)
-        r.notes = "the upper bound is the exact Hölder exponent only if the integer shifts of "
-                  "the basic limit function are stable (not checked for this mask). ";
+        r.notes = coreTranslate("awb::analysis", "the upper bound is the exact Hölder exponent "
+                                                 "only if the integer shifts of the basic limit "
+                                                 "function are stable (not checked for this "
+                                                 "mask). ");
     fillBounds(r, double(d.order), double(d.order));
     const std::string nth = ordinal(d.order);
     std::ostringstream m;
@@ -241,12 +251,14 @@ Regularity maskRegularity(const std::vector<double> &mask, int arity,
 Regularity matrixRegularity(const std::vector<Mat> &S, const RegularityOptions &options)
 {
     if (S.size() < 2)
-        throw InputError("regularity needs at least two subdivision matrices");
+        throw InputError(coreTranslate("awb::analysis", "regularity needs at least two subdivision "
+                                                        "matrices"));
     const Eigen::Index m = S.front().rows();
     for (size_t i = 0; i < S.size(); ++i) {
         if (S[i].rows() != m || S[i].cols() != m)
-            throw InputError("the subdivision matrices must all be square and of one size");
-        requireFinite(S[i], "matrix S_" + std::to_string(i + 1));
+            throw InputError(coreTranslate("awb::analysis", "the subdivision matrices must all be "
+                                                            "square and of one size"));
+        requireFinite(S[i], formatMessage(coreTranslate("awb::analysis", "matrix S_%1"), i + 1));
     }
     Regularity r;
     const int N = int(S.size());
@@ -254,23 +266,28 @@ Regularity matrixRegularity(const std::vector<Mat> &S, const RegularityOptions &
     const Vec ones = Vec::Ones(m);
     for (size_t i = 0; i < S.size(); ++i)
         if ((S[i] * ones - ones).cwiseAbs().maxCoeff() > 1e-9) {
-            r.message = "no difference scheme: the rows of S_" + std::to_string(i + 1)
-                        + " do not all sum to 1";
+            r.message = formatMessage(coreTranslate("awb::analysis", "no difference scheme: the "
+                                                                     "rows of S_%1 do not all "
+                                                                     "sum to 1"),
+                                      i + 1);
             return r;
         }
     // The curve is continuous only if piece i ends where piece i+1 starts.
     const auto first = fixedWeights(S.front());
     const auto last = fixedWeights(S.back());
     if (!first || !last) {
-        r.message = "no regularity: S_1 or S_p has no simple eigenvalue 1, so the curve's end "
-                    "points are not defined";
+        r.message = coreTranslate("awb::analysis", "no regularity: S_1 or S_p has no simple "
+                                                   "eigenvalue 1, so the curve's end points are "
+                                                   "not defined");
         return r;
     }
     for (size_t i = 0; i + 1 < S.size(); ++i)
         if ((*last * S[i] - *first * S[i + 1]).cwiseAbs().maxCoeff() > 1e-9) {
-            r.message = "no regularity: the pieces S_" + std::to_string(i + 1) + " and S_"
-                        + std::to_string(i + 2) + " do not join (the attractor is not a "
-                        "continuous curve in its " + std::to_string(N) + "-adic parameter)";
+            r.message = formatMessage(
+                coreTranslate("awb::analysis", "no regularity: the pieces S_%1 and S_%2 do not "
+                                               "join (the attractor is not a continuous curve in "
+                                               "its %3-adic parameter)"),
+                i + 1, i + 2, N);
             return r;
         }
     // Control vectors v_k of t^k: S_i v_k = N^-k sum_j C(k, j) i^(k-j) v_j (piece i is
@@ -337,18 +354,25 @@ Regularity matrixRegularity(const std::vector<Mat> &S, const RegularityOptions &
         r.infinite = true;
         r.convergent = true;
         r.lower = r.upper = kInf;
-        r.message = "C^infinity: the curve is one polynomial piece of degree " + std::to_string(n - 1);
-        r.method = "the matrices reproduce every polynomial of degree < " + std::to_string(n)
-                   + " in the " + std::to_string(N) + "-adic parameter and leave no complement";
+        r.message = formatMessage(coreTranslate("awb::analysis", "C^infinity: the curve is one "
+                                                                 "polynomial piece of degree %1"),
+                                  n - 1);
+        r.method = formatMessage(
+            coreTranslate("awb::analysis", "the matrices reproduce every polynomial of degree < "
+                                           "%1 in the %2-adic parameter and leave no complement"),
+            n, N);
         return r;
     }
     for (const Mat &Si : S)
         r.transition.push_back(U.transpose() * Si * U);
     r.jsr = jointSpectralRadius(r.transition, jsrOptions(options, N, n, true));
-    r.notes = "the upper bound assumes the curve's basis functions are stable. ";
+    r.notes = coreTranslate("awb::analysis", "the upper bound assumes the curve's basis "
+                                             "functions are stable. ");
     if (joined < generated)
-        r.notes += "the pieces join only C^" + std::to_string(joined - 1) + " (derivative "
-                   + std::to_string(joined) + " differs across a join). ";
+        r.notes += formatMessage(coreTranslate("awb::analysis", "the pieces join only C^%1 "
+                                                                "(derivative %2 differs across a "
+                                                                "join). "),
+                                 joined - 1, joined);
     fillBounds(r, 0.0, double(joined));
     std::ostringstream os;
     os << "r = -log_" << N << " rho with rho the joint spectral radius of S_1..S_" << N
@@ -371,9 +395,11 @@ Regularity schemeRegularity(const CurveScheme &scheme, int controlPoints,
         r.convergent = true;
         r.lower = r.upper = kInf;
         r.sumRules = b->degree() + 1;
-        r.message = "C^infinity: a Bézier curve is a polynomial of degree "
-                    + std::to_string(b->degree());
-        r.method = "de Casteljau subdivision reproduces the Bézier polynomial exactly";
+        r.message = formatMessage(coreTranslate("awb::analysis", "C^infinity: a Bézier curve is "
+                                                                 "a polynomial of degree %1"),
+                                  b->degree());
+        r.method = coreTranslate("awb::analysis", "de Casteljau subdivision reproduces the Bézier "
+                                                  "polynomial exactly");
         return r;
     }
     return matrixRegularity(scheme.matrices(controlPoints).S, options);

@@ -1,5 +1,7 @@
 #include "core/analysis/Spectrum.h"
 
+#include "core/Messages.h"
+
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -74,26 +76,28 @@ Spectrum fromSolver(const CVec &vals, const CMat &vecs, double tol)
 Spectrum spectrum(const Mat &M, double tol)
 {
     if (M.rows() != M.cols())
-        throw InputError("eigenvalues need a square matrix");
-    requireFinite(M, "matrix");
+        throw InputError(coreTranslate("awb::analysis", "eigenvalues need a square matrix"));
+    requireFinite(M, coreTranslate("awb::analysis", "matrix"));
     if (M.rows() == 0)
         return {};
     Eigen::EigenSolver<Mat> es(M, true);
     if (es.info() != Eigen::Success)
-        throw InputError("the eigenvalue computation did not converge");
+        throw InputError(coreTranslate("awb::analysis", "the eigenvalue computation did not "
+                                                        "converge"));
     return fromSolver(es.eigenvalues(), es.eigenvectors(), tol);
 }
 
 Spectrum spectrum(const CMat &M, double tol)
 {
     if (M.rows() != M.cols())
-        throw InputError("eigenvalues need a square matrix");
-    requireFinite(M, "matrix");
+        throw InputError(coreTranslate("awb::analysis", "eigenvalues need a square matrix"));
+    requireFinite(M, coreTranslate("awb::analysis", "matrix"));
     if (M.rows() == 0)
         return {};
     Eigen::ComplexEigenSolver<CMat> es(M, true);
     if (es.info() != Eigen::Success)
-        throw InputError("the eigenvalue computation did not converge");
+        throw InputError(coreTranslate("awb::analysis", "the eigenvalue computation did not "
+                                                        "converge"));
     return fromSolver(es.eigenvalues(), es.eigenvectors(), tol);
 }
 
@@ -114,23 +118,30 @@ std::string Subdominant::meaning() const
 {
     switch (kind) {
     case SubdominantKind::None:
-        return "no subdominant eigenvalue (the map is constant)";
+        return coreTranslate("awb::analysis", "no subdominant eigenvalue (the map is constant)");
     case SubdominantKind::RealPositive:
         return multiplicity == 1
-                   ? "real positive: the curve has a half-tangent at the fixed point, along the "
-                     "eigenvector (G1 where the two sides' eigenvectors align)"
-                   : "real positive but repeated: the tangent direction at the fixed point "
-                     "depends on the control points";
+                   ? coreTranslate("awb::analysis", "real positive: the curve has a half-tangent "
+                                                    "at the fixed point, along the eigenvector "
+                                                    "(G1 where the two sides' eigenvectors "
+                                                    "align)")
+                   : coreTranslate("awb::analysis", "real positive but repeated: the tangent "
+                                                    "direction at the fixed point depends on the "
+                                                    "control points");
     case SubdominantKind::RealNegative:
-        return "real negative: the curve oscillates at the fixed point and has no tangent there";
+        return coreTranslate("awb::analysis", "real negative: the curve oscillates at the fixed "
+                                              "point and has no tangent there");
     case SubdominantKind::ComplexPair:
-        return "complex pair: the curve spirals around the fixed point (no tangent)";
+        return coreTranslate("awb::analysis", "complex pair: the curve spirals around the fixed "
+                                              "point (no tangent)");
     case SubdominantKind::Complex:
-        return "complex: near the fixed point the map acts as the spiral similarity z -> lambda z, "
-               "so the curve spirals around the fixed point (no tangent)";
+        return coreTranslate("awb::analysis", "complex: near the fixed point the map acts as the "
+                                              "spiral similarity z -> lambda z, so the curve "
+                                              "spirals around the fixed point (no tangent)");
     case SubdominantKind::Mixed:
-        return "several eigenvalues of the same modulus with different signs or phases: no "
-               "single tangent behaviour";
+        return coreTranslate("awb::analysis", "several eigenvalues of the same modulus with "
+                                              "different signs or phases: no single tangent "
+                                              "behaviour");
     }
     return {};
 }
@@ -217,20 +228,20 @@ Contractivity contractivity(const CMat &A) { return contractivityT(A); }
 
 std::string Contractivity::verdict() const
 {
-    std::ostringstream os;
-    os.precision(6);
-    if (!eventuallyContractive) {
-        os << "not contractive: spectral radius " << spectralRadius << " >= 1";
-        return os.str();
-    }
+    if (!eventuallyContractive)
+        return formatMessage(
+            coreTranslate("awb::analysis", "not contractive: spectral radius %1 >= 1"),
+            streamedNumber(spectralRadius));
     if (normFactor < 1.0)
-        os << "contractive (factor ||A||_2 = " << normFactor << ")";
-    else if (exponent > 0)
-        os << "eventually contractive (spectral radius " << spectralRadius << " < 1; ||A^"
-           << exponent << "||_2 < 1)";
-    else
-        os << "eventually contractive (spectral radius " << spectralRadius << " < 1)";
-    return os.str();
+        return formatMessage(coreTranslate("awb::analysis", "contractive (factor ||A||_2 = %1)"),
+                             streamedNumber(normFactor));
+    if (exponent > 0)
+        return formatMessage(coreTranslate("awb::analysis", "eventually contractive (spectral "
+                                                            "radius %1 < 1; ||A^%2||_2 < 1)"),
+                             streamedNumber(spectralRadius), exponent);
+    return formatMessage(
+        coreTranslate("awb::analysis", "eventually contractive (spectral radius %1 < 1)"),
+        streamedNumber(spectralRadius));
 }
 
 std::optional<RowVec> fixedPoint(const Mat &A, const RowVec &b)
@@ -279,12 +290,11 @@ IfsCheck checkIfs(const Ifs &ifs)
         out.maps.push_back(contractivity(ifs.effectiveLinearPart(i)));
         if (out.contractive && !out.maps.back().eventuallyContractive) {
             out.contractive = false;
-            std::ostringstream os;
-            os.precision(6);
-            os << "map " << i + 1 << " is not contractive: the spectral radius of its linear part"
-               << " is " << out.maps.back().spectralRadius
-               << " >= 1, so the IFS has no attractor (the iteration does not converge)";
-            out.message = os.str();
+            out.message = formatMessage(
+                coreTranslate("awb::analysis", "map %1 is not contractive: the spectral radius "
+                                               "of its linear part is %2 >= 1, so the IFS has no "
+                                               "attractor (the iteration does not converge)"),
+                i + 1, streamedNumber(out.maps.back().spectralRadius));
         }
     }
     return out;

@@ -1,5 +1,7 @@
 #include "core/ifs/Address.h"
 
+#include "core/Messages.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -13,18 +15,18 @@ namespace {
 
 std::string mapRange(int maps)
 {
-    return maps == 1 ? std::string("the IFS has 1 map (0)")
-                     : "the IFS has " + std::to_string(maps) + " maps (0.."
-                           + std::to_string(maps - 1) + ")";
+    return maps == 1 ? coreTranslate("awb::ifs", "the IFS has 1 map (0)")
+                     : formatMessage(coreTranslate("awb::ifs", "the IFS has %1 maps (0..%2)"),
+                                     maps, maps - 1);
 }
 
 void checkPieces(const std::vector<ParameterInterval> &pieces)
 {
     if (pieces.empty())
-        fail("no parameter intervals");
+        fail(coreTranslate("awb::ifs", "no parameter intervals"));
     for (const ParameterInterval &p : pieces)
         if (!(std::isfinite(p.t0) && std::isfinite(p.t1) && p.t0 < p.t1))
-            fail("a parameter interval is empty or not finite");
+            fail(coreTranslate("awb::ifs", "a parameter interval is empty or not finite"));
 }
 
 } // namespace
@@ -32,18 +34,20 @@ void checkPieces(const std::vector<ParameterInterval> &pieces)
 void checkAddress(const Address &w, int maps)
 {
     if (int(w.size()) > kMaxAddressLength)
-        fail("the address has " + std::to_string(w.size()) + " symbols, more than "
-             + std::to_string(kMaxAddressLength));
+        fail(formatMessage(
+            coreTranslate("awb::ifs", "the address has %1 symbols, more than %2"), w.size(),
+            kMaxAddressLength));
     for (std::size_t k = 0; k < w.size(); ++k)
         if (w[k] < 0 || w[k] >= maps)
-            fail("symbol " + std::to_string(k + 1) + " of the address is map "
-                 + std::to_string(w[k]) + ", but " + mapRange(maps));
+            fail(formatMessage(
+                coreTranslate("awb::ifs", "symbol %1 of the address is map %2, but %3"), k + 1,
+                w[k], mapRange(maps)));
 }
 
 Address parseAddress(const std::string &text, int maps)
 {
     if (maps < 1)
-        fail("the IFS has no maps");
+        fail(coreTranslate("awb::ifs", "the IFS has no maps"));
     std::vector<std::string> tokens;
     std::string token;
     const bool separated = text.find_first_of(", \t") != std::string::npos;
@@ -60,14 +64,17 @@ Address parseAddress(const std::string &text, int maps)
         }
         if (c == ',') {
             if (tokens.empty() || comma)
-                fail("the address '" + text + "' has an empty symbol (a comma too many)");
+                fail(formatMessage(coreTranslate("awb::ifs", "the address '%1' has an empty "
+                                                             "symbol (a comma too many)"),
+                                   text));
             comma = true;
         }
     }
     if (comma)
-        fail("the address '" + text + "' ends with a comma");
+        fail(formatMessage(coreTranslate("awb::ifs", "the address '%1' ends with a comma"),
+                           text));
     if (tokens.empty())
-        fail("the address is empty: give map numbers such as 0,1,1");
+        fail(coreTranslate("awb::ifs", "the address is empty: give map numbers such as 0,1,1"));
     // "011" with at most ten maps: one digit per symbol.
     if (!separated && maps <= 10 && tokens.size() == 1 && tokens[0].size() > 1) {
         const std::string digits = tokens[0];
@@ -76,8 +83,9 @@ Address parseAddress(const std::string &text, int maps)
             tokens.emplace_back(1, c);
     }
     if (int(tokens.size()) > kMaxAddressLength)
-        fail("the address has " + std::to_string(tokens.size()) + " symbols, more than "
-             + std::to_string(kMaxAddressLength));
+        fail(formatMessage(
+            coreTranslate("awb::ifs", "the address has %1 symbols, more than %2"), tokens.size(),
+            kMaxAddressLength));
     Address w;
     w.reserve(tokens.size());
     for (std::size_t k = 0; k < tokens.size(); ++k) {
@@ -86,11 +94,14 @@ Address parseAddress(const std::string &text, int maps)
             return std::isdigit(static_cast<unsigned char>(c)) != 0;
         });
         if (!digits)
-            fail("symbol " + std::to_string(k + 1) + " of the address, '" + s
-                 + "', is not a map number (0-based whole number)");
+            fail(formatMessage(coreTranslate("awb::ifs", "symbol %1 of the address, '%2', is "
+                                                         "not a map number (0-based whole "
+                                                         "number)"),
+                               k + 1, s));
         if (s.size() > 9 || std::stoi(s) >= maps)
-            fail("symbol " + std::to_string(k + 1) + " of the address is map " + s + ", but "
-                 + mapRange(maps));
+            fail(formatMessage(
+                coreTranslate("awb::ifs", "symbol %1 of the address is map %2, but %3"), k + 1,
+                s, mapRange(maps)));
         w.push_back(std::stoi(s));
     }
     return w;
@@ -125,11 +136,11 @@ Mat addressMatrix(const std::vector<Mat> &S, const Address &w)
 {
     checkAddress(w, int(S.size()));
     if (S.empty())
-        fail("no subdivision matrices");
+        fail(coreTranslate("awb::ifs", "no subdivision matrices"));
     const Eigen::Index m = S.front().rows();
     for (const Mat &s : S)
         if (s.rows() != m || s.cols() != m)
-            fail("the subdivision matrices differ in size");
+            fail(coreTranslate("awb::ifs", "the subdivision matrices differ in size"));
     Mat product = Mat::Identity(m, m);
     // S_{w_k} .. S_{w_1}: the coarse piece w_1 acts on P first.
     for (int symbol : w)
@@ -163,9 +174,11 @@ Address addressOfParameter(const std::vector<ParameterInterval> &pieces, double 
 {
     checkPieces(pieces);
     if (!(t >= 0.0 && t <= 1.0))
-        fail("the parameter " + std::to_string(t) + " is outside [0, 1]");
+        fail(formatMessage(coreTranslate("awb::ifs", "the parameter %1 is outside [0, 1]"),
+                           std::to_string(t)));
     if (length < 0 || length > kMaxAddressLength)
-        fail("an address has 0.." + std::to_string(kMaxAddressLength) + " symbols");
+        fail(formatMessage(coreTranslate("awb::ifs", "an address has 0..%1 symbols"),
+                           kMaxAddressLength));
     Address w;
     for (int k = 0; k < length; ++k) {
         int i = int(pieces.size()) - 1;
@@ -186,9 +199,10 @@ std::vector<Address> coverInterval(const std::vector<ParameterInterval> &pieces,
 {
     checkPieces(pieces);
     if (!(t0 >= 0.0 && t0 < t1 && t1 <= 1.0))
-        fail("the parameter interval must satisfy 0 <= t0 < t1 <= 1");
+        fail(coreTranslate("awb::ifs", "the parameter interval must satisfy 0 <= t0 < t1 <= 1"));
     if (maxLength < 0 || maxLength > kMaxAddressLength)
-        fail("an address has 0.." + std::to_string(kMaxAddressLength) + " symbols");
+        fail(formatMessage(coreTranslate("awb::ifs", "an address has 0..%1 symbols"),
+                           kMaxAddressLength));
     std::vector<Address> cover;
     // Depth first in parameter order: a piece inside [t0, t1] is taken whole, one that only
     // overlaps it is split until maxLength.
@@ -234,17 +248,18 @@ AddressedPoints sampleAddresses(const Ifs &ifs, const RowVec &seed, int maxPoint
 {
     ifs.validate();
     if (ifs.size() < 1)
-        fail("the IFS has no maps");
+        fail(coreTranslate("awb::ifs", "the IFS has no maps"));
     if (seed.size() != ifs.dim())
-        fail("the seed point has " + std::to_string(seed.size()) + " coordinates, the IFS "
-             + std::to_string(ifs.dim()));
+        fail(formatMessage(
+            coreTranslate("awb::ifs", "the seed point has %1 coordinates, the IFS %2"),
+            seed.size(), ifs.dim()));
     // x* = f_0(x*): iterate (the barycentric form has no b to solve with, and a map that
     // contracts slowly still gets within rounding in a few hundred steps).
     RowVec x = seed;
     for (int k = 0; k < 400; ++k)
         x = x * ifs.maps[0].A + ifs.maps[0].b;
     if (!x.allFinite())
-        fail("map 0 does not converge to a fixed point");
+        fail(coreTranslate("awb::ifs", "map 0 does not converge to a fixed point"));
     const int N = ifs.size();
     int length = 0;
     double count = 1;

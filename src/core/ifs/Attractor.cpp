@@ -1,5 +1,6 @@
 #include "core/ifs/Attractor.h"
 
+#include "core/Messages.h"
 #include "core/ifs/Random.h"
 
 #include <algorithm>
@@ -118,16 +119,19 @@ void checkIterateInputs(const Ifs &ifs, const StartSet &start, int depth)
 {
     ifs.validate();
     if (depth < 0 || depth > kMaxDepth)
-        throw InputError("iteration depth must be between 0 and " + std::to_string(kMaxDepth)
-                         + ", got " + std::to_string(depth));
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "iteration depth must be between 0 and %1, got %2"),
+            kMaxDepth, depth));
     if (start.vertices.rows() == 0)
-        throw InputError("the start set is empty");
+        throw InputError(coreTranslate("awb::ifs", "the start set is empty"));
     if (start.vertices.cols() != ifs.dim())
-        throw InputError("start set has " + std::to_string(start.vertices.cols())
-                         + " coordinates, the IFS space has " + std::to_string(ifs.dim()));
-    requireFinite(start.vertices, "start set");
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "start set has %1 coordinates, the IFS space has %2"),
+            start.vertices.cols(), ifs.dim()));
+    requireFinite(start.vertices, coreTranslate("awb::ifs", "start set"));
     if (ifs.size() > 255)
-        throw InputError("at most 255 maps are supported, got " + std::to_string(ifs.size()));
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "at most 255 maps are supported, got %1"), ifs.size()));
 }
 
 IterationStats iterate(const Ifs &ifs, const StartSet &start, int depth, AttractorSink &sink,
@@ -199,7 +203,7 @@ IterationStats iterateParallel(const Ifs &ifs, const StartSet &start, int depth,
 {
     checkIterateInputs(ifs, start, depth);
     if (sinks.empty())
-        throw InputError("no sink to receive the attractor");
+        throw InputError(coreTranslate("awb::ifs", "no sink to receive the attractor"));
     const int N = ifs.size();
     const int threads = int(sinks.size());
     // Split into tasks: all words of the innermost `split` levels, at least 4 per thread.
@@ -303,14 +307,17 @@ void checkChaosInputs(const Ifs &ifs, const RowVec &x0, std::uint64_t samples)
 {
     ifs.validate();
     if (x0.size() != ifs.dim())
-        throw InputError("start point has " + std::to_string(x0.size())
-                         + " coordinates, the IFS space has " + std::to_string(ifs.dim()));
-    requireFinite(Mat(x0), "start point");
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "start point has %1 coordinates, the IFS space has %2"),
+            x0.size(), ifs.dim()));
+    requireFinite(Mat(x0), coreTranslate("awb::ifs", "start point"));
     if (samples > kMaxChaosSamples)
-        throw InputError("at most " + std::to_string(kMaxChaosSamples)
-                         + " random-iteration samples, got " + std::to_string(samples));
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "at most %1 random-iteration samples, got %2"),
+            kMaxChaosSamples, samples));
     if (ifs.size() > 255)
-        throw InputError("at most 255 maps are supported, got " + std::to_string(ifs.size()));
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "at most 255 maps are supported, got %1"), ifs.size()));
 }
 
 IterationStats chaosGame(const Ifs &ifs, const RowVec &x0, const ChaosOptions &options,
@@ -325,7 +332,7 @@ IterationStats chaosGameParallel(const Ifs &ifs, const RowVec &x0, const ChaosOp
 {
     checkChaosInputs(ifs, x0, options.samples);
     if (sinks.empty())
-        throw InputError("no sink to receive the attractor");
+        throw InputError(coreTranslate("awb::ifs", "no sink to receive the attractor"));
     const AliasTable pick(ifs.probabilities, ifs.size());
     const int threads = std::min(int(sinks.size()), kChaosStreams);
     std::atomic<std::uint64_t> done{0};

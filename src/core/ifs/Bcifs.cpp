@@ -1,5 +1,6 @@
 #include "core/ifs/Bcifs.h"
 
+#include "core/Messages.h"
 #include "core/schemes/Scheme.h"
 
 #include <Eigen/Dense>
@@ -42,9 +43,10 @@ void requireColumnSums(const Mat &T, const std::string &label)
     for (Eigen::Index c = 0; c < T.cols(); ++c) {
         const double sum = T.col(c).sum();
         if (std::abs(sum - 1.0) > 1e-9 * std::max(1.0, T.col(c).cwiseAbs().sum()))
-            throw InputError("column " + std::to_string(c + 1) + " of " + label + " sums to "
-                             + fmt(sum) + ", not 1: it does not map barycentric points to "
-                                          "barycentric points");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "column %1 of %2 sums to %3, not 1: it does not map "
+                                          "barycentric points to barycentric points"),
+                c + 1, label, fmt(sum)));
     }
 }
 
@@ -90,7 +92,7 @@ int Bcifs::cellIndex(const std::string &name) const
     for (size_t i = 0; i < cells.size(); ++i)
         if (cells[i].name == name)
             return int(i);
-    throw InputError("the BCIFS has no cell '" + name + "'");
+    throw InputError(formatMessage(coreTranslate("awb::ifs", "the BCIFS has no cell '%1'"), name));
 }
 
 int Bcifs::operatorIndex(const std::string &name) const
@@ -98,7 +100,8 @@ int Bcifs::operatorIndex(const std::string &name) const
     for (size_t i = 0; i < operators.size(); ++i)
         if (operators[i].name == name)
             return int(i);
-    throw InputError("the BCIFS has no operator '" + name + "'");
+    throw InputError(
+        formatMessage(coreTranslate("awb::ifs", "the BCIFS has no operator '%1'"), name));
 }
 
 const Mat &Bcifs::matrix(const std::string &op) const { return operators[operatorIndex(op)].T; }
@@ -119,17 +122,22 @@ std::string Bcifs::equation(const BcifsConstraint &c) const
 void Bcifs::validate() const
 {
     if (cells.empty())
-        throw InputError("the BCIFS has no cells");
+        throw InputError(coreTranslate("awb::ifs", "the BCIFS has no cells"));
     const int N = int(cells.size());
     for (const BcifsCell &c : cells)
         if (c.dim < 1)
-            throw InputError("cell '" + c.name + "' has dimension " + std::to_string(c.dim)
-                             + "; it needs at least one control point");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "cell '%1' has dimension %2; it needs at least one "
+                                          "control point"),
+                c.name, c.dim));
     for (const BcifsOperator &o : operators) {
         if (o.from < 0 || o.from >= N || o.to < 0 || o.to >= N)
-            throw InputError("operator '" + o.name + "' joins a cell that does not exist");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "operator '%1' joins a cell that does not exist"),
+                o.name));
         const BcifsCell &a = cells[o.from], &b = cells[o.to];
-        const std::string label = "operator '" + o.name + "' (" + a.name + " -> " + b.name + ")";
+        const std::string label = formatMessage(
+            coreTranslate("awb::ifs", "operator '%1' (%2 -> %3)"), o.name, a.name, b.name);
         const bool kindsOk =
             (o.kind == OperatorKind::Subdivision && a.kind == b.kind && a.kind != CellKind::Model)
             || (o.kind == OperatorKind::Boundary && a.kind == CellKind::Edge
@@ -137,14 +145,16 @@ void Bcifs::validate() const
             || (o.kind == OperatorKind::Placement && a.kind == CellKind::Model
                 && b.kind != CellKind::Model);
         if (!kindsOk)
-            throw InputError(label + " joins cells of the wrong kinds: subdivisions join edges "
-                             "or vertices, boundary operators go from an edge to a vertex, "
-                             "placements from the model");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "%1 joins cells of the wrong kinds: subdivisions join "
+                                          "edges or vertices, boundary operators go from an edge "
+                                          "to a vertex, placements from the model"),
+                label));
         if (o.T.rows() != a.dim || o.T.cols() != b.dim)
-            throw InputError(label + " is " + size(o.T) + "; it must be "
-                             + std::to_string(a.dim) + " x " + std::to_string(b.dim)
-                             + " (column convention: rows = dimension of '" + a.name
-                             + "', columns = dimension of '" + b.name + "')");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "%1 is %2; it must be %3 x %4 (column convention: rows "
+                                          "= dimension of '%5', columns = dimension of '%6')"),
+                label, size(o.T), a.dim, b.dim, a.name, b.name));
         requireFinite(o.T, label);
         if (o.kind != OperatorKind::Placement)
             requireColumnSums(o.T, label);
@@ -156,28 +166,34 @@ void Bcifs::validate() const
             return o.kind == OperatorKind::Subdivision && o.from == c;
         });
         if (!subdivided)
-            throw InputError("edge cell '" + cells[c].name
-                             + "' has no subdivision operator: its attractor would be empty");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "edge cell '%1' has no subdivision operator: its "
+                                          "attractor would be empty"),
+                cells[c].name));
     }
     for (const BcifsConstraint &c : constraints) {
-        const std::string label = "constraint " + c.name;
+        const std::string label =
+            formatMessage(coreTranslate("awb::ifs", "constraint %1"), c.name);
         for (const std::vector<int> *p : {&c.lhs, &c.rhs}) {
             if (p->empty() || std::any_of(p->begin(), p->end(), [this](int o) {
                     return o < 0 || o >= int(operators.size());
                 }))
-                throw InputError(label + " has an empty side or an unknown operator");
+                throw InputError(formatMessage(
+                    coreTranslate("awb::ifs", "%1 has an empty side or an unknown operator"),
+                    label));
             for (size_t k = 1; k < p->size(); ++k) {
                 const BcifsOperator &x = operators[(*p)[k - 1]], &y = operators[(*p)[k]];
                 if (x.to != y.from)
-                    throw InputError(label + ": " + x.name + " ends at '" + cells[x.to].name
-                                     + "' but " + y.name + " starts at '" + cells[y.from].name
-                                     + "'");
+                    throw InputError(formatMessage(
+                        coreTranslate("awb::ifs", "%1: %2 ends at '%3' but %4 starts at '%5'"),
+                        label, x.name, cells[x.to].name, y.name, cells[y.from].name));
             }
         }
         if (operators[c.lhs.front()].from != operators[c.rhs.front()].from
             || operators[c.lhs.back()].to != operators[c.rhs.back()].to)
-            throw InputError(label + " (" + equation(c) + ") compares paths between different "
-                                                          "cells");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "%1 (%2) compares paths between different cells"),
+                label, equation(c)));
     }
 }
 
@@ -213,12 +229,12 @@ ConstraintReport checkConstraints(const Bcifs &bcifs, double tol)
               [](auto *a, auto *b) { return a->residual > b->residual; });
     report.satisfied = false;
     const ConstraintResidual &w = *violated.front();
-    report.message = toString(w.kind) + " constraint " + w.name + " " + w.equation
-                     + " is violated by " + fmt(w.residual) + " (entry row "
-                     + std::to_string(w.row + 1) + ", column " + std::to_string(w.column + 1)
-                     + ")";
+    report.message = formatMessage(
+        coreTranslate("awb::ifs", "%1 constraint %2 %3 is violated by %4 (entry row %5, column "
+                                  "%6)"),
+        toString(w.kind), w.name, w.equation, fmt(w.residual), w.row + 1, w.column + 1);
     if (violated.size() > 1) {
-        report.message += "; also violated:";
+        report.message += coreTranslate("awb::ifs", "; also violated:");
         for (size_t i = 1; i < violated.size(); ++i)
             report.message += " " + violated[i]->name + " (" + fmt(violated[i]->residual) + ")";
     }
@@ -239,8 +255,10 @@ Cifs toCifs(const Bcifs &bcifs)
                                                 && o.to == int(c);
                                      });
         if (it == bcifs.operators.end())
-            throw InputError("edge cell '" + bcifs.cells[c].name
-                             + "' has no placement (control points): it cannot be drawn");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "edge cell '%1' has no placement (control points): it "
+                                          "cannot be drawn"),
+                bcifs.cells[c].name));
         state[c] = cifs.addState(bcifs.cells[c].name, it->T.transpose());
     }
     for (const BcifsOperator &o : bcifs.operators)
@@ -255,17 +273,23 @@ HalfTangent halfTangent(const Mat &T, const Mat &C, const Mat &P)
 {
     const Eigen::Index n = T.rows();
     if (T.cols() != n || n < 2)
-        throw InputError("the junction matrix must be square and at least 2 x 2, got " + size(T));
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "the junction matrix must be square and at least 2 x 2, "
+                                      "got %1"),
+            size(T)));
     if (C.rows() != n || C.cols() == 0)
-        throw InputError("the copy's placement must have " + std::to_string(n)
-                         + " rows (one per control point of the junction), got " + size(C));
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "the copy's placement must have %1 rows (one per control "
+                                      "point of the junction), got %2"),
+            n, size(C)));
     if (P.size() && P.rows() != n)
-        throw InputError("the junction has " + std::to_string(n) + " control points, got "
-                         + std::to_string(P.rows()));
-    requireFinite(T, "junction matrix");
-    requireFinite(C, "copy placement");
-    requireColumnSums(T, "the junction matrix");
-    requireColumnSums(C, "the copy placement");
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "the junction has %1 control points, got %2"), n,
+            P.rows()));
+    requireFinite(T, coreTranslate("awb::ifs", "junction matrix"));
+    requireFinite(C, coreTranslate("awb::ifs", "copy placement"));
+    requireColumnSums(T, coreTranslate("awb::ifs", "the junction matrix"));
+    requireColumnSums(C, coreTranslate("awb::ifs", "the copy placement"));
 
     const Spectrum s = spectrum(T);
     size_t one = 0;
@@ -308,17 +332,23 @@ HalfTangent halfTangent(const Mat &T, const Mat &C, const Mat &P)
     std::ostringstream os;
     os.precision(4);
     if (governing.values.empty()) {
-        os << "the copies collapse onto the fixed point: no tangent information";
+        os << coreTranslate("awb::ifs", "the copies collapse onto the fixed point: no tangent "
+                                        "information");
     } else {
-        os << "lambda = " << fmt(governing.values.front()) << ": " << governing.meaning();
+        os << formatMessage(coreTranslate("awb::ifs", "lambda = %1: %2"),
+                            fmt(governing.values.front()), governing.meaning());
         if (governing.modulus >= 1.0 - 1e-12)
-            os << "; |lambda| >= 1, so the junction matrix does not contract";
+            os << coreTranslate("awb::ifs", "; |lambda| >= 1, so the junction matrix does not "
+                                            "contract");
     }
     if (h.skippedSubdominant)
-        os << " (the copy has no component along the subdominant eigenvector, lambda = "
-           << fmt(global.values.front()) << ", so the next eigenvalue governs)";
+        os << formatMessage(coreTranslate("awb::ifs", " (the copy has no component along the "
+                                                      "subdominant eigenvector, lambda = %1, so "
+                                                      "the next eigenvalue governs)"),
+                            fmt(global.values.front()));
     if (!h.eigenbasisComplete)
-        os << " (the eigenvectors are not complete; the copy's components were not examined)";
+        os << coreTranslate("awb::ifs", " (the eigenvectors are not complete; the copy's "
+                                        "components were not examined)");
     if (h.kind == SubdominantKind::RealPositive && governing.multiplicity == 1) {
         const Vec v = h.vectors.front().real();
         // The side of the fixed point the copy lies on: the sign of its summed component.
@@ -355,16 +385,20 @@ bool isG1(const HalfTangent &left, const HalfTangent &right, double angleTol)
 JunctionMatrices junctionMatrices(const Mat &Vl, const Mat &Vr, const Mat &X, const Mat &Y)
 {
     if (Vl.rows() != Vl.cols() || Vr.rows() != Vr.cols() || Vl.rows() == 0 || Vr.rows() == 0)
-        throw InputError("vertex subdivisions must be square and non-empty, got "
-                         + size(Vl) + " and " + size(Vr));
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "vertex subdivisions must be square and non-empty, got %1 "
+                                      "and %2"),
+            size(Vl), size(Vr)));
     const Eigen::Index nl = Vl.rows(), nr = Vr.rows(), n = nl + nr;
     if (X.rows() != n || Y.rows() != n)
-        throw InputError("the free columns must have " + std::to_string(n) + " rows (n_l + n_r)"
-                         ", got X " + size(X) + " and Y " + size(Y));
-    requireFinite(X, "free columns X of T^l");
-    requireFinite(Y, "free columns Y of T^r");
-    requireColumnSums(X, "the free columns X of T^l");
-    requireColumnSums(Y, "the free columns Y of T^r");
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "the free columns must have %1 rows (n_l + n_r), got X %2 "
+                                      "and Y %3"),
+            n, size(X), size(Y)));
+    requireFinite(X, coreTranslate("awb::ifs", "free columns X of T^l"));
+    requireFinite(Y, coreTranslate("awb::ifs", "free columns Y of T^r"));
+    requireColumnSums(X, coreTranslate("awb::ifs", "the free columns X of T^l"));
+    requireColumnSums(Y, coreTranslate("awb::ifs", "the free columns Y of T^r"));
     JunctionMatrices m;
     m.Tl = Mat::Zero(n, nl + X.cols());
     m.Tl.topLeftCorner(nl, nl) = Vl;
@@ -412,15 +446,20 @@ void requireCurve(const JunctionCurve &c, const std::string &which)
 {
     const Eigen::Index m = c.T0.rows();
     if (c.T0.cols() != m || c.T1.rows() != m || c.T1.cols() != m || m == 0)
-        throw InputError("the " + which + " curve's subdivision operators must both be m x m, "
-                         "got " + size(c.T0) + " and " + size(c.T1));
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "the %1 curve's subdivision operators must both be m x m, "
+                                      "got %2 and %3"),
+            which, size(c.T0), size(c.T1)));
     if (c.vertexDim < 1 || c.vertexDim > m)
-        throw InputError("the " + which + " curve's vertex dimension must be in 1.."
-                         + std::to_string(m) + ", got " + std::to_string(c.vertexDim));
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "the %1 curve's vertex dimension must be in 1..%2, got %3"),
+            which, m, c.vertexDim));
     if (c.P.rows() != m)
-        throw InputError("the " + which + " curve needs " + std::to_string(m)
-                         + " control points, got " + std::to_string(c.P.rows()));
-    requireFinite(c.P, "control points of the " + which + " curve");
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "the %1 curve needs %2 control points, got %3"), which, m,
+            c.P.rows()));
+    requireFinite(c.P, formatMessage(coreTranslate("awb::ifs", "control points of the %1 curve"),
+                                     which));
 }
 
 // The core's row-stochastic S_i (Scheme.h) in 003's column convention: T_i = S_i^T. The end
@@ -439,12 +478,14 @@ Bcifs junctionBcifs(const JunctionCurve &left, const JunctionCurve &right, const
     requireCurve(left, "left");
     requireCurve(right, "right");
     if (left.P.cols() != right.P.cols())
-        throw InputError("both curves' control points must have the same dimension");
+        throw InputError(coreTranslate("awb::ifs", "both curves' control points must have the same "
+                                                   "dimension"));
     const int nl = left.vertexDim, nr = right.vertexDim;
     const Mat Vl = left.T1.bottomRightCorner(nl, nl), Vr = right.T0.topLeftCorner(nr, nr);
     const JunctionMatrices jm = junctionMatrices(Vl, Vr, X, Y);
     if (jm.Tl.cols() != left.T0.rows() || jm.Tr.cols() != right.T0.rows())
-        throw InputError("X must have m_l - n_l columns and Y m_r - n_r");
+        throw InputError(coreTranslate("awb::ifs", "X must have m_l - n_l columns and Y m_r - "
+                                                   "n_r"));
     Bcifs b;
     b.addCell("model", CellKind::Model, int(left.P.cols()));
     addCurve(b, "l", left, Vl, "(l, left end)", "(3)");
@@ -480,8 +521,9 @@ std::pair<Vec, Vec> freeColumns(const JunctionParameters &p)
     const double v[] = {p.a, p.b, p.c, p.d, p.k, p.l, p.m, p.n};
     for (int i = 0; i < 8; ++i)
         if (!std::isfinite(v[i]))
-            throw InputError(std::string("junction parameter ") + "abcdklmn"[i]
-                             + " is not a finite number");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "junction parameter %1 is not a finite number"),
+                std::string(1, "abcdklmn"[i])));
     return {column({p.a, p.b, p.c, p.d, p.e()}), column({p.k, p.l, p.m, p.n, p.p()})};
 }
 } // namespace
@@ -510,18 +552,21 @@ JunctionAnalysis analyseJunction(const JunctionMatrices &m, const Mat &Pi)
     std::ostringstream os;
     os.precision(4);
     if (a.subdominant.values.empty())
-        os << "T^i has no subdominant eigenvalue";
+        os << coreTranslate("awb::ifs", "T^i has no subdominant eigenvalue");
     else
-        os << "lambda_2 = " << fmt(a.subdominant.values.front()) << " ("
-           << toString(a.subdominant.kind) << ")";
+        os << formatMessage(coreTranslate("awb::ifs", "lambda_2 = %1 (%2)"),
+                            fmt(a.subdominant.values.front()), toString(a.subdominant.kind));
     if (a.subdominant.modulus >= 1.0 - 1e-12)
-        os << ": |lambda_2| >= 1, T^i does not contract and the junction does not converge";
+        os << coreTranslate("awb::ifs", ": |lambda_2| >= 1, T^i does not contract and the "
+                                        "junction does not converge");
     else if (a.g1)
-        os << ": both sides have half-tangents along the same eigenvector, from opposite "
-              "sides: G1 at the junction point";
+        os << coreTranslate("awb::ifs", ": both sides have half-tangents along the same "
+                                        "eigenvector, from opposite sides: G1 at the junction "
+                                        "point");
     else if (a.left.kind == SubdominantKind::RealPositive
              && a.right.kind == SubdominantKind::RealPositive)
-        os << ": both sides have half-tangents, but they are not opposite (a corner or cusp)";
+        os << coreTranslate("awb::ifs", ": both sides have half-tangents, but they are not "
+                                        "opposite (a corner or cusp)");
     else
         os << ": " << a.subdominant.meaning();
     a.verdict = os.str();
@@ -535,8 +580,10 @@ JunctionAnalysis analyseCubicQuadratic(const JunctionParameters &p, const Mat &P
     if (Pl.size() == 0 && Pr.size() == 0)
         return analyseJunction(m);
     if (Pl.rows() != 4 || Pr.rows() != 3 || Pl.cols() != Pr.cols())
-        throw InputError("the cubic needs 4 and the quadratic 3 control points of one "
-                         "dimension, got " + size(Pl) + " and " + size(Pr));
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "the cubic needs 4 and the quadratic 3 control points of "
+                                      "one dimension, got %1 and %2"),
+            size(Pl), size(Pr)));
     Mat Pi(5, Pl.cols());
     Pi << Pl.bottomRows(3), Pr.topRows(2);
     return analyseJunction(m, Pi);
@@ -571,9 +618,11 @@ RefinedMatrices buildRefined(double j, double r)
 ParameterRange rangeAbove(const Mat &fixedBlock, const std::string &name, const char *matrix)
 {
     const double lo = spectrum(fixedBlock).spectralRadius;
-    return {lo, 1.0, name + " must exceed the other eigenvalues of " + matrix
-                         + " (largest modulus " + fmt(lo) + ") to be subdominant, and be below "
-                         "1 for " + matrix + " to contract"};
+    return {lo, 1.0,
+            formatMessage(coreTranslate("awb::ifs", "%1 must exceed the other eigenvalues of %2 "
+                                                    "(largest modulus %3) to be subdominant, and "
+                                                    "be below 1 for %2 to contract"),
+                          name, matrix, fmt(lo))};
 }
 } // namespace
 
@@ -595,12 +644,14 @@ void checkRefinedParameters(const RefinedParameters &p)
     for (const auto &[name, v] : params) {
         const ParameterRange range = name[0] == 'j' ? refinedRangeJ() : refinedRangeR();
         if (!std::isfinite(v))
-            throw InputError(std::string("refined junction parameter ") + name
-                             + " is not a finite number");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "refined junction parameter %1 is not a finite number"),
+                name));
         if (!(v > range.lo && v < range.hi))
-            throw InputError(std::string("refined junction parameter ") + name + " = " + fmt(v)
-                             + " is outside its admissible range (" + fmt(range.lo) + ", "
-                             + fmt(range.hi) + "): " + range.why);
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "refined junction parameter %1 = %2 is outside its "
+                                          "admissible range (%3, %4): %5"),
+                name, fmt(v), fmt(range.lo), fmt(range.hi), range.why));
     }
 }
 
@@ -617,10 +668,12 @@ std::pair<Mat, Mat> refinedControlPoints(const Mat &Pl, const Mat &Pr, const Mat
 {
     if (Pl.rows() != 4 || Pr.rows() != 3 || H.rows() != 3 || Pl.cols() != Pr.cols()
         || Pl.cols() != H.cols())
-        throw InputError("the refined junction needs 4 cubic, 3 quadratic and 3 handle control "
-                         "points of one dimension, got " + size(Pl) + ", " + size(Pr) + " and "
-                         + size(H));
-    requireFinite(H, "handles of the refined junction");
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "the refined junction needs 4 cubic, 3 quadratic and 3 "
+                                      "handle control points of one dimension, got %1, %2 and "
+                                      "%3"),
+            size(Pl), size(Pr), size(H)));
+    requireFinite(H, coreTranslate("awb::ifs", "handles of the refined junction"));
     Mat il(5, Pl.cols()), ir(4, Pl.cols());
     il << Pl.bottomRows(3), H.topRows(2);
     ir << H.bottomRows(2), Pr.topRows(2);

@@ -1,5 +1,6 @@
 #include "core/ifs/BezierAttractor.h"
 
+#include "core/Messages.h"
 #include "core/schemes/Curves.h"
 
 #include <Eigen/Dense>
@@ -23,10 +24,13 @@ std::string num(double v)
 void requireSplitParameter(double u)
 {
     if (!std::isfinite(u))
-        throw InputError("the split parameter u is not a finite number");
+        throw InputError(
+            coreTranslate("awb::ifs", "the split parameter u is not a finite number"));
     if (!(u > 0.0 && u < 1.0))
-        throw InputError("the split parameter u = " + num(u)
-                         + " must lie strictly between 0 and 1 (002 §4: 0 < u < 1)");
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "the split parameter u = %1 must lie strictly between 0 "
+                                      "and 1 (002 §4: 0 < u < 1)"),
+            num(u)));
 }
 
 // Reciprocal condition of a matrix (sigma_min / sigma_max; 0 for a zero matrix).
@@ -44,9 +48,20 @@ Mat homogeneousRows(const Mat &P)
     return H;
 }
 
-const char *spanWord(int d)
+std::string spanWord(int d)
 {
-    return d == 1 ? "coincide" : (d == 2 ? "are collinear" : "are coplanar");
+    return d == 1 ? coreTranslate("awb::ifs", "coincide", "points")
+                  : (d == 2 ? coreTranslate("awb::ifs", "are collinear", "points")
+                            : coreTranslate("awb::ifs", "are coplanar", "points"));
+}
+
+// `os << v` with 4 significant digits, as the contraction note streams its numbers.
+std::string num4(double v)
+{
+    std::ostringstream os;
+    os.precision(4);
+    os << v;
+    return os.str();
 }
 
 } // namespace
@@ -70,7 +85,8 @@ AffineMap inverse(const AffineMap &f)
 {
     Eigen::FullPivLU<Mat> lu(f.A);
     if (!lu.isInvertible() || reciprocalCondition(f.A) < 1e-13)
-        throw InputError("the affine map is not invertible (its linear part is singular)");
+        throw InputError(coreTranslate("awb::ifs", "the affine map is not invertible (its linear "
+                                                   "part is singular)"));
     const Mat Ainv = lu.inverse();
     // y = x A + b  <=>  x = y A^-1 - b A^-1
     return {Ainv, -f.b * Ainv};
@@ -85,14 +101,17 @@ AffineMap affineMapThrough(const Mat &from, const Mat &to)
 {
     const Eigen::Index d = from.cols();
     if (from.rows() != d + 1 || to.rows() != d + 1 || to.cols() != d)
-        throw InputError("an affine map of R^" + std::to_string(d) + " is fixed by "
-                         + std::to_string(d + 1) + " point pairs");
-    requireFinite(from, "source points");
-    requireFinite(to, "target points");
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "an affine map of R^%1 is fixed by %2 point pairs"), d,
+            d + 1));
+    requireFinite(from, coreTranslate("awb::ifs", "source points"));
+    requireFinite(to, coreTranslate("awb::ifs", "target points"));
     const Mat H = homogeneousRows(from);
     if (reciprocalCondition(H) < 1e-12)
-        throw InputError(std::string("the source points ") + spanWord(int(d))
-                         + ": no unique affine map takes them to the targets");
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "the source points %1: no unique affine map takes them to "
+                                      "the targets"),
+            spanWord(int(d))));
     // [from | 1] [A; b] = to
     const Mat X = H.fullPivLu().solve(to);
     return {X.topRows(d), X.row(d)};
@@ -120,22 +139,26 @@ std::array<AffineMap, 2> parabolaMaps(double u)
 std::vector<AffineMap> fractalInterpolationMaps(const Mat &data, const std::vector<double> &d)
 {
     if (data.cols() != 2 || data.rows() < 3)
-        throw InputError("fractal interpolation needs N + 1 >= 3 data points (x, y)");
-    requireFinite(data, "interpolation data");
+        throw InputError(coreTranslate("awb::ifs", "fractal interpolation needs N + 1 >= 3 "
+                                                   "data points (x, y)"));
+    requireFinite(data, coreTranslate("awb::ifs", "interpolation data"));
     const Eigen::Index N = data.rows() - 1;
     if (Eigen::Index(d.size()) != N)
-        throw InputError("fractal interpolation through " + std::to_string(N + 1)
-                         + " points needs " + std::to_string(N) + " vertical scalings d_n, got "
-                         + std::to_string(d.size()));
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "fractal interpolation through %1 points needs %2 vertical "
+                                      "scalings d_n, got %3"),
+            N + 1, N, d.size()));
     for (Eigen::Index n = 1; n <= N; ++n)
         if (!(data(n, 0) > data(n - 1, 0)))
-            throw InputError("interpolation abscissae must increase (x_" + std::to_string(n)
-                             + " <= x_" + std::to_string(n - 1) + ")");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "interpolation abscissae must increase (x_%1 <= x_%2)"),
+                n, n - 1));
     for (Eigen::Index n = 0; n < N; ++n)
         // The paper asks 0 <= d_n < 1; Barnsley's theorem only needs |d_n| < 1.
         if (!std::isfinite(d[n]) || !(std::abs(d[n]) < 1.0))
-            throw InputError("vertical scaling d_" + std::to_string(n + 1) + " = " + num(d[n])
-                             + " must satisfy |d_n| < 1");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "vertical scaling d_%1 = %2 must satisfy |d_n| < 1"),
+                n + 1, num(d[n])));
     const double x0 = data(0, 0), xN = data(N, 0), y0 = data(0, 1), yN = data(N, 1);
     const double L = xN - x0;
     std::vector<AffineMap> maps;
@@ -166,11 +189,13 @@ std::vector<AffineMap> barnsleyParabolaMaps(double u)
 std::array<AffineMap, 2> conjugatedQuadraticMaps(const Mat &Q, double u)
 {
     if (Q.rows() != 3 || Q.cols() != 2)
-        throw InputError("002 §5 needs three control points in the plane (3 x 2)");
-    requireFinite(Q, "control points");
+        throw InputError(coreTranslate("awb::ifs", "002 §5 needs three control points in the plane "
+                                                   "(3 x 2)"));
+    requireFinite(Q, coreTranslate("awb::ifs", "control points"));
     if (reciprocalCondition(homogeneousRows(Q)) < 1e-12)
-        throw InputError("control points Q0, Q1, Q2 are collinear: the map omega of 002 §5 "
-                         "is not invertible");
+        throw InputError(coreTranslate("awb::ifs", "control points Q0, Q1, Q2 are collinear: the "
+                                                   "map omega of 002 §5 "
+                         "is not invertible"));
     const AffineMap omega = affineMapThrough(parabolaControlPoints(), Q);
     const auto w = parabolaMaps(u);
     return {conjugate(w[0], omega), conjugate(w[1], omega)};
@@ -189,11 +214,14 @@ BezierSplit bezierSplit(const Mat &P, double u)
 {
     requireSplitParameter(u);
     if (P.rows() < 2)
-        throw InputError("a Bézier curve needs at least 2 control points (degree >= 1), got "
-                         + std::to_string(P.rows()));
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "a Bézier curve needs at least 2 control points (degree >= "
+                                      "1), got %1"),
+            P.rows()));
     if (P.cols() < 1 || P.cols() > 3)
-        throw InputError("control points must have 1 to 3 coordinates");
-    requireFinite(P, "control points");
+        throw InputError(
+            coreTranslate("awb::ifs", "control points must have 1 to 3 coordinates"));
+    requireFinite(P, coreTranslate("awb::ifs", "control points"));
     const int m = int(P.rows()), d = int(P.cols()), n = m - 1;
 
     BezierSplit s;
@@ -207,8 +235,10 @@ BezierSplit bezierSplit(const Mat &P, double u)
     const Mat H = homogeneousRows(P);
     const double scale = 1.0 + (P.colwise().maxCoeff() - P.colwise().minCoeff()).norm();
     if (m < d + 1 || reciprocalCondition(H) < 1e-10) {
-        s.planarReason = "the " + std::to_string(m) + " control points " + spanWord(d)
-                         + ", so the affine maps of eqs. (9)-(10) are not unique";
+        s.planarReason = formatMessage(
+            coreTranslate("awb::ifs", "the %1 control points %2, so the affine maps of eqs. "
+                                      "(9)-(10) are not unique"),
+            m, spanWord(d));
     } else {
         const auto solver = H.colPivHouseholderQr();
         double residual = 0.0;
@@ -226,11 +256,12 @@ BezierSplit bezierSplit(const Mat &P, double u)
             s.planar = true;
             s.planeMaps = maps;
         } else {
-            s.planarReason = "no affine map of R^" + std::to_string(d)
-                             + " takes the control polygon of this degree-" + std::to_string(n)
-                             + " curve to its de Casteljau pieces (mismatch " + num(residual)
-                             + "): the pieces are not affine images of the curve in its own "
-                               "space";
+            s.planarReason = formatMessage(
+                coreTranslate("awb::ifs", "no affine map of R^%1 takes the control polygon of "
+                                          "this degree-%2 curve to its de Casteljau pieces "
+                                          "(mismatch %3): the pieces are not affine images of "
+                                          "the curve in its own space"),
+                d, n, num(residual));
         }
     }
 
@@ -243,22 +274,23 @@ BezierSplit bezierSplit(const Mat &P, double u)
     } else {
         s.ifs = s.lifted.ifs;
         if (s.lifted.barycentric()) {
-            s.planarReason += "; the maps act on barycentric coordinates R^" + std::to_string(m)
-                              + " (" + s.lifted.lifting.reason + ")";
+            s.planarReason += formatMessage(
+                coreTranslate("awb::ifs", "; the maps act on barycentric coordinates R^%1 (%2)"),
+                m, s.lifted.lifting.reason);
             s.start = RowVec::Zero(m);
             s.start(0) = 1.0;
         } else {
-            s.planarReason += "; the maps act on the lifted space R^" + std::to_string(m - 1)
-                              + " of 000 §2, drawn through its first " + std::to_string(d)
-                              + " coordinates";
+            s.planarReason += formatMessage(
+                coreTranslate("awb::ifs", "; the maps act on the lifted space R^%1 of 000 §2, "
+                                          "drawn through its first %2 coordinates"),
+                m - 1, d);
             // Row 0 of the lifted control-point matrix, without its homogeneous 1: e_0 P.
             s.start = s.lifted.lifting.lifted.row(0).head(m - 1);
         }
     }
 
     s.check = checkIfs(s.ifs);
-    std::ostringstream note;
-    note.precision(4);
+    std::string note;
     int slowest = 0;
     for (size_t i = 0; i < s.check.maps.size(); ++i) {
         if (s.check.maps[i].spectralRadius > s.slowestRadius) {
@@ -267,19 +299,24 @@ BezierSplit bezierSplit(const Mat &P, double u)
         }
     }
     s.nearlyNonContractive = s.slowestRadius >= 0.9;
-    note << "map 1 has spectral radius " << s.check.maps[0].spectralRadius << ", map 2 "
-         << s.check.maps[1].spectralRadius << "; " << s.levelsFor(1e-3)
-         << " levels shrink every piece to 1/1000 of the curve";
+    note = formatMessage(coreTranslate("awb::ifs", "map 1 has spectral radius %1, map 2 %2; %3 "
+                                                   "levels shrink every piece to 1/1000 of the "
+                                                   "curve"),
+                         num4(s.check.maps[0].spectralRadius),
+                         num4(s.check.maps[1].spectralRadius), s.levelsFor(1e-3));
     if (s.nearlyNonContractive)
-        note << ". u = " << u << " is close to " << (u < 0.5 ? "0" : "1") << ": map "
-             << slowest + 1 << " is nearly non-contractive and the pieces are very unequal "
-             << "(random iteration, or u nearer 1/2, converges faster)";
+        note += formatMessage(
+            coreTranslate("awb::ifs", ". u = %1 is close to %2: map %3 is nearly non-contractive "
+                                      "and the pieces are very unequal (random iteration, or u "
+                                      "nearer 1/2, converges faster)"),
+            num4(u), u < 0.5 ? "0" : "1", slowest + 1);
     for (size_t i = 0; i < s.check.maps.size(); ++i)
         if (s.check.maps[i].normFactor >= 1.0)
-            note << ". Map " << i + 1 << " is not a Euclidean contraction (||A||_2 = "
-                 << s.check.maps[i].normFactor
-                 << ") but is eventually contractive, as 002 §5 allows";
-    s.contractionNote = note.str();
+            note += formatMessage(
+                coreTranslate("awb::ifs", ". Map %1 is not a Euclidean contraction (||A||_2 = "
+                                          "%2) but is eventually contractive, as 002 §5 allows"),
+                i + 1, num4(s.check.maps[i].normFactor));
+    s.contractionNote = note;
     return s;
 }
 
@@ -341,14 +378,16 @@ JointContraction jointContraction(const Ifs &ifs, int maxLength, double maxWords
 CombinedBezierIfs combinedBezierIfs(const std::vector<BezierCurveSpec> &curves)
 {
     if (curves.empty())
-        throw InputError("a combined IFS needs at least one curve");
+        throw InputError(coreTranslate("awb::ifs", "a combined IFS needs at least one curve"));
     CombinedBezierIfs out;
     out.ifs.space = "plane";
     for (size_t k = 0; k < curves.size(); ++k) {
-        const std::string label = "curve " + std::to_string(k + 1);
+        const std::string label = formatMessage(coreTranslate("awb::ifs", "curve %1"), k + 1);
         if (curves[k].controlPoints.cols() != 2)
-            throw InputError(label + ": the combined IFS of 002 §6 acts on the plane, "
-                                     "control points need 2 coordinates");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "%1: the combined IFS of 002 §6 acts on the plane, "
+                                          "control points need 2 coordinates"),
+                label));
         BezierSplit s;
         try {
             s = bezierSplit(curves[k].controlPoints, curves[k].u);
@@ -356,8 +395,10 @@ CombinedBezierIfs combinedBezierIfs(const std::vector<BezierCurveSpec> &curves)
             throw InputError(label + ": " + e.what());
         }
         if (!s.planar)
-            throw InputError(label + ": its maps do not act on the plane (" + s.planarReason
-                             + "), so they cannot be combined with the other curves' maps");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "%1: its maps do not act on the plane (%2), so they "
+                                          "cannot be combined with the other curves' maps"),
+                label, s.planarReason));
         for (const PlaneMap &pm : s.planeMaps)
             out.ifs.maps.push_back(pm.map);
         out.curves.push_back(std::move(s));
@@ -371,7 +412,7 @@ CombinedBezierIfs combinedBezierIfs(const std::vector<BezierCurveSpec> &curves)
 BezierUnion bezierUnion(const std::vector<BezierCurveSpec> &curves)
 {
     if (curves.empty())
-        throw InputError("a union needs at least one curve");
+        throw InputError(coreTranslate("awb::ifs", "a union needs at least one curve"));
     BezierUnion out;
     std::vector<Ifs> parts;
     std::vector<double> start;
@@ -379,7 +420,8 @@ BezierUnion bezierUnion(const std::vector<BezierCurveSpec> &curves)
         try {
             out.curves.push_back(bezierSplit(curves[k].controlPoints, curves[k].u));
         } catch (const InputError &e) {
-            throw InputError("curve " + std::to_string(k + 1) + ": " + e.what());
+            throw InputError(formatMessage(coreTranslate("awb::ifs", "curve %1"), k + 1) + ": "
+                             + e.what());
         }
         parts.push_back(out.curves.back().ifs);
         const RowVec &s = out.curves.back().start;

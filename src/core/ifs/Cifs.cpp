@@ -1,5 +1,6 @@
 #include "core/ifs/Cifs.h"
 
+#include "core/Messages.h"
 #include "core/analysis/Spectrum.h"
 
 #include <Eigen/Dense>
@@ -33,7 +34,8 @@ std::string indexed(const char *prefix, int i)
 
 std::string arcLabel(const Cifs &c, const CifsTransition &t)
 {
-    return "arc '" + t.name + "' (" + c.states[t.from].name + " -> " + c.states[t.to].name + ")";
+    return formatMessage(coreTranslate("awb::ifs", "arc '%1' (%2 -> %3)"), t.name,
+                         c.states[t.from].name, c.states[t.to].name);
 }
 
 } // namespace
@@ -89,55 +91,68 @@ Projection Cifs::view(int state) const
 void Cifs::validate() const
 {
     if (states.empty())
-        throw InputError("the automaton has no states");
+        throw InputError(coreTranslate("awb::ifs", "the automaton has no states"));
     for (const CifsState &s : states) {
-        const std::string label = "state '" + s.name + "'";
         if (s.dim() == 0)
-            throw InputError(label + " has no control points");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "state '%1' has no control points"), s.name));
         if (s.controlPoints.cols() != 2 && s.controlPoints.cols() != 3)
-            throw InputError(label + ": control points must be 2D or 3D, got "
-                             + std::to_string(s.controlPoints.cols()) + " coordinates");
-        requireFinite(s.controlPoints, "control points of " + label);
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "state '%1': control points must be 2D or 3D, got %2 "
+                                          "coordinates"),
+                s.name, s.controlPoints.cols()));
+        requireFinite(s.controlPoints,
+                      formatMessage(coreTranslate("awb::ifs", "control points of state '%1'"),
+                                    s.name));
     }
     if (transitions.size() > 255)
-        throw InputError("at most 255 arcs are supported (addresses are bytes), got "
-                         + std::to_string(transitions.size()));
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "at most 255 arcs are supported (addresses are bytes), got "
+                                      "%1"),
+            transitions.size()));
     const int N = int(states.size());
     for (const CifsTransition &t : transitions) {
         if (t.from < 0 || t.from >= N || t.to < 0 || t.to >= N)
-            throw InputError("arc '" + t.name + "' connects states " + std::to_string(t.from)
-                             + " -> " + std::to_string(t.to) + ", but the automaton has "
-                             + std::to_string(N) + " states");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "arc '%1' connects states %2 -> %3, but the automaton "
+                                          "has %4 states"),
+                t.name, t.from, t.to, N));
         const std::string label = arcLabel(*this, t);
         const int nFrom = states[t.from].dim(), nTo = states[t.to].dim();
         if (t.S.rows() != nTo || t.S.cols() != nFrom)
-            throw InputError(label + " has a " + std::to_string(t.S.rows()) + " x "
-                             + std::to_string(t.S.cols()) + " matrix; it must be "
-                             + std::to_string(nTo) + " x " + std::to_string(nFrom)
-                             + " (row convention: rows = dimension of '" + states[t.to].name
-                             + "', columns = dimension of '" + states[t.from].name + "')");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "%1 has a %2 x %3 matrix; it must be %4 x %5 (row "
+                                          "convention: rows = dimension of '%6', columns = "
+                                          "dimension of '%7')"),
+                label, t.S.rows(), t.S.cols(), nTo, nFrom, states[t.to].name,
+                states[t.from].name));
         requireFinite(t.S, label);
         for (Eigen::Index r = 0; r < t.S.rows(); ++r) {
             const double sum = t.S.row(r).sum();
             if (std::abs(sum - 1.0) > 1e-9 * std::max(1.0, t.S.row(r).cwiseAbs().sum()))
-                throw InputError("row " + std::to_string(r + 1) + " of " + label + " sums to "
-                                 + fmt(sum) + ", not 1: the map does not keep barycentric "
-                                 "coordinates summing to 1");
+                throw InputError(formatMessage(
+                    coreTranslate("awb::ifs", "row %1 of %2 sums to %3, not 1: the map does not "
+                                              "keep barycentric coordinates summing to 1"),
+                    r + 1, label, fmt(sum)));
         }
         if (!std::isfinite(t.weight) || t.weight <= 0)
-            throw InputError("the weight of " + label + " must be a finite number > 0, got "
-                             + fmt(t.weight));
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "the weight of %1 must be a finite number > 0, got %2"),
+                label, fmt(t.weight)));
     }
     for (int s = 0; s < N; ++s)
         if (outgoing(s).empty())
-            throw InputError("state '" + states[s].name
-                             + "' has no outgoing arc: its attractor would be empty");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "state '%1' has no outgoing arc: its attractor would "
+                                          "be empty"),
+                states[s].name));
 }
 
 Mat barycentricPart(const Mat &S)
 {
     if (S.rows() != S.cols() || S.rows() == 0)
-        throw InputError("the barycentric part needs a non-empty square matrix");
+        throw InputError(coreTranslate("awb::ifs", "the barycentric part needs a non-empty square "
+                                                   "matrix"));
     const Eigen::Index n = S.rows() - 1;
     // Basis e_k - e_{n}: w S has coordinates w_k, so R(k, j) = S(k, j) - S(n, j).
     return S.topLeftCorner(n, n) - S.row(n).head(n).replicate(n, 1);
@@ -217,10 +232,11 @@ CifsCheck checkCifs(const Cifs &cifs, int maxCycles)
         c.spectralRadius = M.rows() > 1 ? spectrum(barycentricPart(M)).spectralRadius : 0.0;
         if (check.contractive && !(c.spectralRadius < 1.0 - 1e-12)) {
             check.contractive = false;
-            check.message = "cycle " + describePath(cifs, s, c.transitions)
-                            + " has spectral radius " + fmt(c.spectralRadius)
-                            + " >= 1 on the barycentric directions: repeating it does not "
-                              "contract, so the automaton has no attractor";
+            check.message = formatMessage(
+                coreTranslate("awb::ifs", "cycle %1 has spectral radius %2 >= 1 on the "
+                                          "barycentric directions: repeating it does not "
+                                          "contract, so the automaton has no attractor"),
+                describePath(cifs, s, c.transitions), fmt(c.spectralRadius));
         }
     }
     return check;
@@ -229,7 +245,8 @@ CifsCheck checkCifs(const Cifs &cifs, int maxCycles)
 RowVec barycentricFixedPoint(const Mat &S)
 {
     if (S.rows() != S.cols() || S.rows() == 0)
-        throw InputError("a fixed point needs a non-empty square matrix");
+        throw InputError(coreTranslate("awb::ifs", "a fixed point needs a non-empty square "
+                                                   "matrix"));
     const Eigen::Index n = S.rows();
     // lambda (S - I) = 0 and lambda 1 = 1, as one (n+1) x n system on lambda^T.
     Mat A(n + 1, n);
@@ -240,7 +257,8 @@ RowVec barycentricFixedPoint(const Mat &S)
     Eigen::FullPivLU<Mat> lu(A);
     lu.setThreshold(1e-10);
     if (lu.rank() < n)
-        throw InputError("the fixed point is not unique: 1 is a repeated eigenvalue");
+        throw InputError(coreTranslate("awb::ifs", "the fixed point is not unique: 1 is a repeated "
+                                                   "eigenvalue"));
     return lu.solve(rhs).transpose();
 }
 
@@ -346,8 +364,9 @@ namespace {
 void checkState(const Cifs &cifs, int state)
 {
     if (state < 0 || state >= int(cifs.states.size()))
-        throw InputError("state " + std::to_string(state) + " does not exist: the automaton has "
-                         + std::to_string(cifs.states.size()) + " states");
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "state %1 does not exist: the automaton has %2 states"),
+            state, cifs.states.size()));
 }
 
 // Depth-first over the paths; composite[k] maps level k's state space into the root's.
@@ -412,20 +431,23 @@ IterationStats iterate(const Cifs &cifs, int state, const std::vector<StartSet> 
     cifs.validate();
     checkState(cifs, state);
     if (depth < 0 || depth > kMaxDepth)
-        throw InputError("iteration depth must be between 0 and " + std::to_string(kMaxDepth)
-                         + ", got " + std::to_string(depth));
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "iteration depth must be between 0 and %1, got %2"),
+            kMaxDepth, depth));
     if (starts.size() != cifs.states.size())
-        throw InputError("one start set per state is needed: the automaton has "
-                         + std::to_string(cifs.states.size()) + " states, got "
-                         + std::to_string(starts.size()) + " start sets");
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "one start set per state is needed: the automaton has %1 "
+                                      "states, got %2 start sets"),
+            cifs.states.size(), starts.size()));
     for (size_t q = 0; q < starts.size(); ++q) {
-        const std::string label = "start set of state '" + cifs.states[q].name + "'";
+        const std::string label = formatMessage(
+            coreTranslate("awb::ifs", "start set of state '%1'"), cifs.states[q].name);
         if (starts[q].vertices.rows() == 0)
-            throw InputError(label + " is empty");
+            throw InputError(formatMessage(coreTranslate("awb::ifs", "%1 is empty"), label));
         if (starts[q].vertices.cols() != cifs.states[q].dim())
-            throw InputError(label + " has " + std::to_string(starts[q].vertices.cols())
-                             + " coordinates, the state's space has "
-                             + std::to_string(cifs.states[q].dim()));
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "%1 has %2 coordinates, the state's space has %3"),
+                label, starts[q].vertices.cols(), cifs.states[q].dim()));
         requireFinite(starts[q].vertices, label);
     }
     PathWalker walker(cifs, starts, depth, sink, control,
@@ -445,8 +467,9 @@ IterationStats chaosGame(const Cifs &cifs, int state, const ChaosOptions &option
     cifs.validate();
     checkState(cifs, state);
     if (options.samples > 4'000'000'000ULL)
-        throw InputError("at most 4e9 random-iteration samples, got "
-                         + std::to_string(options.samples));
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "at most 4e9 random-iteration samples, got %1"),
+            options.samples));
     const auto out = outgoingLists(cifs);
     const int N = int(cifs.states.size());
     // Only the states reachable from `state` feed its point.
@@ -547,16 +570,17 @@ Mat barycentricMatrix(const AffineMap &f, const Mat &domain, const Mat &image)
 {
     const int d = f.dim();
     if (f.b.size() != d)
-        throw InputError("the affine map's translation does not match its linear part");
+        throw InputError(coreTranslate("awb::ifs", "the affine map's translation does not "
+                                                   "match its linear part"));
     for (const Mat *frame : {&domain, &image})
         if (frame->rows() != d + 1 || frame->cols() != d)
-            throw InputError("a barycentric frame in " + std::to_string(d) + "D needs "
-                             + std::to_string(d + 1) + " points, got a "
-                             + std::to_string(frame->rows()) + " x "
-                             + std::to_string(frame->cols()) + " matrix");
-    requireFinite(domain, "domain frame");
-    requireFinite(image, "image frame");
-    requireFinite(f.A, "affine map");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "a barycentric frame in %1D needs %2 points, got a %3 "
+                                          "x %4 matrix"),
+                d, d + 1, frame->rows(), frame->cols()));
+    requireFinite(domain, coreTranslate("awb::ifs", "domain frame"));
+    requireFinite(image, coreTranslate("awb::ifs", "image frame"));
+    requireFinite(f.A, coreTranslate("awb::ifs", "affine map"));
     // [x 1] = lambda [P | 1], and f acts on [x 1] by H = [[A, 0], [b, 1]].
     auto homogeneous = [d](const Mat &P) {
         Mat H(d + 1, d + 1);
@@ -571,7 +595,8 @@ Mat barycentricMatrix(const AffineMap &f, const Mat &domain, const Mat &image)
     Eigen::FullPivLU<Mat> lu(Ih);
     lu.setThreshold(1e-12);
     if (!lu.isInvertible())
-        throw InputError("the image frame's points are affinely dependent (collinear in 2D)");
+        throw InputError(coreTranslate("awb::ifs", "the image frame's points are affinely "
+                                                   "dependent (collinear in 2D)"));
     return homogeneous(domain) * H * lu.inverse();
 }
 

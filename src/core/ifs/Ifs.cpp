@@ -1,5 +1,7 @@
 #include "core/ifs/Ifs.h"
 
+#include "core/Messages.h"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -10,32 +12,37 @@ namespace awb {
 void Ifs::validate() const
 {
     if (maps.empty())
-        throw InputError("the IFS has no maps");
+        throw InputError(coreTranslate("awb::ifs", "the IFS has no maps"));
     const int D = dim();
     for (size_t i = 0; i < maps.size(); ++i) {
         const auto &f = maps[i];
-        const std::string label = "map " + std::to_string(i + 1);
         if (f.A.rows() != D || f.A.cols() != D || f.b.size() != D)
-            throw InputError(label + " does not act on the same space as map 1");
-        requireFinite(f.A, label + " (linear part)");
-        requireFinite(Mat(f.b), label + " (translation)");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "map %1 does not act on the same space as map 1"),
+                i + 1));
+        requireFinite(f.A, formatMessage(coreTranslate("awb::ifs", "map %1 (linear part)"), i + 1));
+        requireFinite(Mat(f.b),
+                      formatMessage(coreTranslate("awb::ifs", "map %1 (translation)"), i + 1));
     }
     for (size_t v = 0; v < views.size(); ++v)
         if (views[v].V.rows() != D || views[v].c.size() != views[v].V.cols())
-            throw InputError("view " + std::to_string(v + 1) + " does not fit the IFS space");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "view %1 does not fit the IFS space"), v + 1));
     if (!probabilities.empty()) {
         if (probabilities.size() != maps.size())
-            throw InputError("the IFS has " + std::to_string(maps.size()) + " maps but "
-                             + std::to_string(probabilities.size()) + " probabilities");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "the IFS has %1 maps but %2 probabilities"),
+                maps.size(), probabilities.size()));
         double sum = 0;
         for (size_t i = 0; i < probabilities.size(); ++i) {
             if (!std::isfinite(probabilities[i]) || probabilities[i] < 0)
-                throw InputError("probability of map " + std::to_string(i + 1)
-                                 + " must be a finite number >= 0");
+                throw InputError(formatMessage(
+                    coreTranslate("awb::ifs", "probability of map %1 must be a finite number >= 0"),
+                    i + 1));
             sum += probabilities[i];
         }
         if (!(sum > 0))
-            throw InputError("the map probabilities sum to 0");
+            throw InputError(coreTranslate("awb::ifs", "the map probabilities sum to 0"));
     }
 }
 
@@ -90,8 +97,10 @@ Lifting liftControlPoints(const Mat &P, const std::vector<int> &freeRowsIn)
     std::sort(freeRows.begin(), freeRows.end());
     if (int(freeRows.size()) != d + 1 || freeRows.front() < 0 || freeRows.back() >= m
         || std::adjacent_find(freeRows.begin(), freeRows.end()) != freeRows.end())
-        throw InputError("the lifting needs " + std::to_string(d + 1)
-                         + " distinct free rows of the control points");
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "the lifting needs %1 distinct free rows of the control "
+                                      "points"),
+            d + 1));
     L.freeRows = freeRows;
     L.lifted = Mat::Zero(m, m);
     L.lifted.leftCols(d) = P;
@@ -107,30 +116,46 @@ Lifting liftControlPoints(const Mat &P, const std::vector<int> &freeRowsIn)
     std::ostringstream names;
     for (size_t k = 0; k < freeRows.size(); ++k)
         names << freeRows[k] + 1
-              << (k + 2 < freeRows.size() ? ", " : (k + 2 == freeRows.size() ? " and " : ""));
+              << (k + 2 < freeRows.size()
+                      ? ", "
+                      : (k + 2 == freeRows.size() ? coreTranslate("awb::ifs", " and ") : ""));
     if (L.reciprocalCondition > 1e-12) {
         L.invertible = true;
         L.inverse = L.lifted.partialPivLu().inverse();
         if (L.reciprocalCondition < 1e-8) {
-            std::ostringstream os;
-            os.precision(2);
-            os << "the lifted matrix P is nearly singular (reciprocal condition number "
-               << L.reciprocalCondition << "): M_i = P^-1 S_i P lose about "
-               << int(std::lround(-std::log10(L.reciprocalCondition)))
-               << " of 16 significant digits; control points " << names.str()
-               << (d == 2 ? " are almost collinear" : " are almost coplanar");
-            L.warning = os.str();
+            std::ostringstream condition;
+            condition.precision(2);
+            condition << L.reciprocalCondition;
+            L.warning = formatMessage(
+                d == 2 ? coreTranslate("awb::ifs", "the lifted matrix P is nearly singular "
+                                                   "(reciprocal condition number %1): M_i = P^-1 "
+                                                   "S_i P lose about %2 of 16 significant digits; "
+                                                   "control points %3 are almost collinear")
+                       : coreTranslate("awb::ifs", "the lifted matrix P is nearly singular "
+                                                   "(reciprocal condition number %1): M_i = P^-1 "
+                                                   "S_i P lose about %2 of 16 significant digits; "
+                                                   "control points %3 are almost coplanar"),
+                condition.str(), int(std::lround(-std::log10(L.reciprocalCondition))),
+                names.str());
         }
         return L;
     }
-    std::ostringstream os;
-    os << "control points " << names.str();
     for (int row : freeRows)
         L.culprits.push_back(row);
-    os << (d == 2 ? " are collinear" : d == 3 ? " are coplanar" : " are affinely dependent")
-       << ", so the lifted matrix P of 000 §2 is singular and M_i = P^-1 S_i P is not defined;"
-          " the attractor is computed in barycentric form";
-    L.reason = os.str();
+    L.reason = formatMessage(
+        d == 2   ? coreTranslate("awb::ifs", "control points %1 are collinear, so the lifted "
+                                             "matrix P of 000 §2 is singular and M_i = P^-1 S_i P "
+                                             "is not defined; the attractor is computed in "
+                                             "barycentric form")
+        : d == 3 ? coreTranslate("awb::ifs", "control points %1 are coplanar, so the lifted "
+                                             "matrix P of 000 §2 is singular and M_i = P^-1 S_i P "
+                                             "is not defined; the attractor is computed in "
+                                             "barycentric form")
+                 : coreTranslate("awb::ifs", "control points %1 are affinely dependent, so the "
+                                             "lifted matrix P of 000 §2 is singular and M_i = "
+                                             "P^-1 S_i P is not defined; the attractor is "
+                                             "computed in barycentric form"),
+        names.str());
     return L;
 }
 
@@ -197,12 +222,13 @@ Ifs barycentricIfs(const std::vector<Mat> &S, const Mat &P)
 SubdivisionIfs buildSubdivisionIfs(const std::vector<Mat> &S, int overlap, const Mat &P,
                                    IfsForm form, const std::vector<int> &freeRows)
 {
-    requireFinite(P, "control points");
+    requireFinite(P, coreTranslate("awb::ifs", "control points"));
     for (size_t i = 0; i < S.size(); ++i) {
         if (S[i].rows() != P.rows() || S[i].cols() != P.rows())
-            throw InputError("matrix S_" + std::to_string(i + 1) + " does not match "
-                             + std::to_string(P.rows()) + " control points");
-        requireFinite(S[i], "matrix S_" + std::to_string(i + 1));
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "matrix S_%1 does not match %2 control points"), i + 1,
+                P.rows()));
+        requireFinite(S[i], formatMessage(coreTranslate("awb::ifs", "matrix S_%1"), i + 1));
     }
     SubdivisionIfs out;
     out.controlPoints = P;
@@ -233,22 +259,24 @@ SubdivisionIfs buildSubdivisionIfs(const std::vector<Mat> &S, int overlap, const
 
 SubdivisionIfs buildSubdivisionIfs(const CurveScheme &scheme, const Mat &P, IfsForm form)
 {
-    requireFinite(P, "control points");
+    requireFinite(P, coreTranslate("awb::ifs", "control points"));
     const SubdivisionMatrices sm = scheme.matrices(int(P.rows()));
     return buildSubdivisionIfs(sm.S, sm.overlap, P, form);
 }
 
 Mat SubdivisionIfs::toIfsSpace(const Mat &points) const
 {
-    requireFinite(points, "start set");
+    requireFinite(points, coreTranslate("awb::ifs", "start set"));
     const int d = int(controlPoints.cols());
     const int D = ifs.dim();
     if (points.cols() == D)
         return points;
     if (barycentric()) {
         if (points.cols() != d)
-            throw InputError("start points must have " + std::to_string(d) + " (plane) or "
-                             + std::to_string(D) + " (barycentric) coordinates");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "start points must have %1 (plane) or %2 (barycentric) "
+                                          "coordinates"),
+                d, D));
         // Least-norm lambda with lambda P = y and sum(lambda) = 1.
         const int m = int(controlPoints.rows());
         Mat E(d + 1, m);
@@ -269,8 +297,10 @@ Mat SubdivisionIfs::toIfsSpace(const Mat &points) const
     if (points.cols() == D + 1) // homogeneous lifted point: drop the trailing 1
         return points.leftCols(D);
     if (points.cols() != d)
-        throw InputError("start points must have " + std::to_string(d) + " (plane) or "
-                         + std::to_string(D) + " (lifted) coordinates");
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "start points must have %1 (plane) or %2 (lifted) "
+                                      "coordinates"),
+            d, D));
     Mat out = Mat::Zero(points.rows(), D);
     out.leftCols(d) = points;
     return out;
@@ -279,15 +309,16 @@ Mat SubdivisionIfs::toIfsSpace(const Mat &points) const
 Ifs blockUnion(const std::vector<Ifs> &components)
 {
     if (components.empty())
-        throw InputError("a union needs at least one component");
+        throw InputError(coreTranslate("awb::ifs", "a union needs at least one component"));
     const int N = components.front().size();
     int D = 0;
     for (size_t k = 0; k < components.size(); ++k) {
         components[k].validate();
         if (components[k].size() != N)
-            throw InputError("component " + std::to_string(k + 1) + " has "
-                             + std::to_string(components[k].size()) + " maps, component 1 has "
-                             + std::to_string(N) + ": a block union needs equally many");
+            throw InputError(formatMessage(
+                coreTranslate("awb::ifs", "component %1 has %2 maps, component 1 has %3: a block "
+                                          "union needs equally many"),
+                k + 1, components[k].size(), N));
         D += components[k].dim();
     }
     Ifs out;

@@ -1,5 +1,6 @@
 #include "core/ifs/Random.h"
 
+#include "core/Messages.h"
 #include "core/Types.h"
 
 #include <cmath>
@@ -21,11 +22,12 @@ AliasTable::AliasTable(const std::vector<double> &weights, int n)
     double sum = 0;
     for (double w : weights) {
         if (!std::isfinite(w) || w < 0)
-            throw InputError("probabilities must be finite and non-negative");
+            throw InputError(coreTranslate("awb::ifs", "probabilities must be finite and "
+                                                       "non-negative"));
         sum += w;
     }
     if (!(sum > 0))
-        throw InputError("the probabilities sum to zero");
+        throw InputError(coreTranslate("awb::ifs", "the probabilities sum to zero"));
     // Vose's method: scaled weights n p_i, small ones topped up by a large one's alias.
     std::vector<double> q(static_cast<std::size_t>(m_n));
     std::vector<int> small, large;

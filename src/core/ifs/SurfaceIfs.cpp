@@ -1,5 +1,7 @@
 #include "core/ifs/SurfaceIfs.h"
 
+#include "core/Messages.h"
+
 #include <algorithm>
 #include <map>
 
@@ -18,10 +20,11 @@ SurfaceIfs buildSurfaceIfs(const LatticeScheme &scheme, const PatchLayout &layou
                            const std::vector<LatticePoint> &lattice, const Mat &P,
                            std::vector<int> mapsUsed)
 {
-    requireFinite(P, "control points");
+    requireFinite(P, coreTranslate("awb::ifs", "control points"));
     if (Eigen::Index(lattice.size()) != P.rows())
-        throw InputError("the lattice lists " + std::to_string(lattice.size())
-                         + " coordinates for " + std::to_string(P.rows()) + " control points");
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "the lattice lists %1 coordinates for %2 control points"),
+            lattice.size(), P.rows()));
     const std::vector<int> order = matchNet(canonical.net, lattice, scheme.lattice());
     SurfaceIfs out;
     out.layout = layout;
@@ -34,12 +37,12 @@ SurfaceIfs buildSurfaceIfs(const LatticeScheme &scheme, const PatchLayout &layou
             mapsUsed.push_back(i);
     std::sort(mapsUsed.begin(), mapsUsed.end());
     if (std::adjacent_find(mapsUsed.begin(), mapsUsed.end()) != mapsUsed.end())
-        throw InputError("a map is listed twice among the maps used");
+        throw InputError(coreTranslate("awb::ifs", "a map is listed twice among the maps used"));
     if (mapsUsed.front() < 0 || mapsUsed.back() >= n)
-        throw InputError("map index " + std::to_string(mapsUsed.front() < 0 ? mapsUsed.front()
-                                                                            : mapsUsed.back())
-                         + " is out of range: the " + layout.name + " layout has maps 0 to "
-                         + std::to_string(n - 1));
+        throw InputError(formatMessage(
+            coreTranslate("awb::ifs", "map index %1 is out of range: the %2 layout has maps 0 "
+                                      "to %3"),
+            mapsUsed.front() < 0 ? mapsUsed.front() : mapsUsed.back(), layout.name, n - 1));
     out.mapsUsed = mapsUsed;
     std::vector<Mat> used;
     for (int i : mapsUsed)

@@ -1,5 +1,6 @@
 #include "core/render/Density.h"
 
+#include "core/Messages.h"
 #include "core/Types.h"
 
 #include <algorithm>
@@ -10,15 +11,21 @@ namespace awb {
 void RasterFrame::validate() const
 {
     if (width < 1 || height < 1 || width > 32768 || height > 32768)
-        throw InputError("raster size must be between 1x1 and 32768x32768, got "
-                         + std::to_string(width) + "x" + std::to_string(height));
+        throw InputError(formatMessage(
+            coreTranslate("awb::render", "raster size must be between 1x1 and 32768x32768, got "
+                                         "%1x%2"),
+            width, height));
     if (supersample < 1 || supersample > 4)
-        throw InputError("supersampling must be 1 to 4 cells per pixel side, got "
-                         + std::to_string(supersample));
+        throw InputError(formatMessage(
+            coreTranslate("awb::render", "supersampling must be 1 to 4 cells per pixel side, got "
+                                         "%1"),
+            supersample));
     if (double(cellsX()) * cellsY() > 1.2e9)
-        throw InputError("the supersampled raster would hold more than 1.2e9 cells");
+        throw InputError(coreTranslate("awb::render", "the supersampled raster would hold more "
+                                                      "than 1.2e9 cells"));
     if (!(x1 > x0) || !(y1 > y0) || !std::isfinite(x1 - x0) || !std::isfinite(y1 - y0))
-        throw InputError("raster world rectangle is empty or not finite");
+        throw InputError(coreTranslate("awb::render", "raster world rectangle is empty or not "
+                                                      "finite"));
 }
 
 DensityImage::DensityImage(int cellsX, int cellsY, Accumulation mode)
@@ -90,7 +97,8 @@ std::uint64_t DensityImage::litCells() const
 void DensityImage::merge(const DensityImage &o)
 {
     if (o.m_w != m_w || o.m_h != m_h || o.m_mode != m_mode)
-        throw InputError("cannot merge density images of different sizes or modes");
+        throw InputError(coreTranslate("awb::render", "cannot merge density images of different "
+                                                      "sizes or modes"));
     for (std::size_t i = 0; i < m_buckets.size(); ++i) {
         const DensityBucket &src = o.m_buckets[i];
         if (src.n == 0 && src.v == 0)
@@ -193,7 +201,7 @@ void toneMapInto(const DensityImage &image, const RasterFrame &frame, const Tone
 {
     const int W = frame.width, H = frame.height, ss = frame.supersample;
     if (image.cellsX() != W * ss || image.cellsY() != H * ss)
-        throw InputError("density image does not match its frame");
+        throw InputError(coreTranslate("awb::render", "density image does not match its frame"));
     std::fill(out, out + std::size_t(W) * H, 0u);
     const double cellsPerPixel = double(ss) * ss;
     const int cw = image.cellsX();

@@ -1,5 +1,6 @@
 #include "core/render/Engine.h"
 
+#include "core/Messages.h"
 #include "core/ifs/Random.h"
 
 #include <Eigen/LU>
@@ -165,7 +166,7 @@ std::vector<CellView> cellViews(const std::vector<Projection> &views, const Rast
     std::vector<CellView> out;
     for (const Projection &v : views) {
         if (v.V.rows() != dim || v.V.cols() < 2 || v.c.size() != v.V.cols())
-            throw InputError("a view does not fit the IFS space");
+            throw InputError(coreTranslate("awb::render", "a view does not fit the IFS space"));
         CellView cv;
         cv.V.resize(dim, 2);
         cv.V.col(0) = v.V.col(0) * sx;
@@ -409,21 +410,24 @@ void chaosBlock(const Flat<D> &F, const AliasTable &pick, Orbits<D, K> &o, int s
         for (int j = 0; j < D; ++j)
             o.x[k][j] = x[k][j];
     }
-    if (!plot || !oneView)
-        return;
-    for (int s = 0; s < steps; ++s)
-        for (int k = 0; k < K; ++k) {
-            const std::int32_t c = cells[s][k];
-            if (c < 0) {
-                ++img.offscreen;
-                continue;
+    // The cells were found in screen space only with one view in 2D or more.
+    if constexpr (oneView && D >= 2) {
+        if (!plot)
+            return;
+        for (int s = 0; s < steps; ++s)
+            for (int k = 0; k < K; ++k) {
+                const std::int32_t c = cells[s][k];
+                if (c < 0) {
+                    ++img.offscreen;
+                    continue;
+                }
+                const std::uint32_t l = prefix == 1 ? maps[s][k] : prefix == 0 ? 0u : labels[s][k];
+                if constexpr (M == Accumulation::Hits)
+                    img.addHit(std::size_t(c), l);
+                else
+                    img.addDensity(std::size_t(c), coords[l]);
             }
-            const std::uint32_t l = prefix == 1 ? maps[s][k] : prefix == 0 ? 0u : labels[s][k];
-            if constexpr (M == Accumulation::Hits)
-                img.addHit(std::size_t(c), l);
-            else
-                img.addDensity(std::size_t(c), coords[l]);
-        }
+    }
 }
 
 // Random iteration of streams [first, last) (Random.h), kInterleave orbits at a time.
@@ -928,18 +932,19 @@ IterationStats dispatch(int dim, const EngineJob &job, const std::vector<CellVie
 IterationStats accumulate(const EngineJob &job, DensityImage &out, const IterationControl &control)
 {
     if (!job.ifs)
-        throw InputError("there is no IFS to draw");
+        throw InputError(coreTranslate("awb::render", "there is no IFS to draw"));
     job.frame.validate();
     const Ifs &ifs = *job.ifs;
     const std::vector<Projection> &views = job.views.empty() ? ifs.views : job.views;
     if (views.empty())
-        throw InputError("the IFS has no view to draw it with");
+        throw InputError(coreTranslate("awb::render", "the IFS has no view to draw it with"));
     std::uint64_t labels = 1;
     for (int k = 0; k < job.colours.prefix; ++k)
         labels *= std::uint64_t(std::max(1, ifs.size()));
     if (job.colours.prefix < 0 || job.colours.prefix > 3
         || job.colours.labelColours.size() < labels)
-        throw InputError("the colour table does not cover the address labels");
+        throw InputError(coreTranslate("awb::render", "the colour table does not cover the address "
+                                                      "labels"));
     if (job.random) {
         checkChaosInputs(ifs, job.start.vertices.row(0), job.samples);
     } else {

@@ -1,5 +1,6 @@
 #include "core/schemes/ComplexBezier.h"
 
+#include "core/Messages.h"
 #include "core/ifs/Attractor.h"
 #include "core/schemes/Curves.h"
 #include "core/analysis/Geometry.h"
@@ -17,7 +18,8 @@ constexpr double kCircleTol = 1e-12;
 void requireFiniteComplex(Complex z, const std::string &what)
 {
     if (!std::isfinite(z.real()) || !std::isfinite(z.imag()))
-        throw InputError(what + " is not a finite number");
+        throw InputError(
+            formatMessage(coreTranslate("awb::schemes", "%1 is not a finite number"), what));
 }
 
 std::string str(Complex z)
@@ -31,17 +33,15 @@ std::string str(Complex z)
 // One condition |z| < 1 in words: "|t| = 0.7 < 1" / "|t| = 1 (on the circle ...)".
 std::string discWords(const char *name, double mod, const char *map)
 {
-    std::ostringstream os;
-    os.precision(6);
-    os << name << " = " << mod;
     if (mod < 1.0 - kCircleTol)
-        os << " < 1";
-    else if (mod <= 1.0 + kCircleTol)
-        os << ": on the circle " << name << " = 1, so " << map
-           << " is an isometry, not a contraction";
-    else
-        os << " > 1, so " << map << " expands";
-    return os.str();
+        return formatMessage(coreTranslate("awb::schemes", "%1 = %2 < 1"), name,
+                             streamedNumber(mod));
+    if (mod <= 1.0 + kCircleTol)
+        return formatMessage(coreTranslate("awb::schemes", "%1 = %2: on the circle %1 = 1, so %3 "
+                                                           "is an isometry, not a contraction"),
+                             name, streamedNumber(mod), map);
+    return formatMessage(coreTranslate("awb::schemes", "%1 = %2 > 1, so %3 expands"), name,
+                         streamedNumber(mod), map);
 }
 
 Mat toPlane(const std::vector<Complex> &z)
@@ -55,12 +55,16 @@ Mat toPlane(const std::vector<Complex> &z)
 void requireTakagiY(double y, int depth)
 {
     if (!std::isfinite(y) || y == 0.0)
-        throw InputError("y must be a finite nonzero number (t = 1/2 + i y)");
+        throw InputError(coreTranslate("awb::schemes", "y must be a finite nonzero number (t = "
+                                                       "1/2 + i y)"));
     const ParameterReport r = classifyParameter(Complex(0.5, y));
     if (!r.hyperbolic)
-        throw InputError("t = 1/2 + i y with y = " + std::to_string(y) + ": " + r.message);
+        throw InputError(formatMessage(coreTranslate("awb::schemes", "t = 1/2 + i y with y = "
+                                                                     "%1: %2"),
+                                       std::to_string(y), r.message));
     if (depth < 1 || depth > 24)
-        throw InputError("depth must be between 1 and 24, got " + std::to_string(depth));
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "depth must be between 1 and 24, got %1"), depth));
 }
 
 } // namespace
@@ -76,7 +80,7 @@ int ParameterReport::levelsFor(double factor) const
 
 ParameterReport classifyParameter(Complex t)
 {
-    requireFiniteComplex(t, "the subdivision parameter t");
+    requireFiniteComplex(t, coreTranslate("awb::schemes", "the subdivision parameter t"));
     ParameterReport r;
     r.t = t;
     r.modT = std::abs(t);
@@ -85,26 +89,32 @@ ParameterReport classifyParameter(Complex t)
     r.insideOneMinusT = r.modOneMinusT < 1.0 - kCircleTol;
     r.hyperbolic = r.insideT && r.insideOneMinusT;
     r.slowestFactor = std::max(r.modT, r.modOneMinusT);
-    std::ostringstream os;
-    os.precision(6);
-    os << "t = " << str(t) << ": " << discWords("|t|", r.modT, "f1(z) = t z") << ", "
-       << discWords("|1 - t|", r.modOneMinusT, "f2(z) = (1 - t) z + t");
+    const std::string discT = discWords("|t|", r.modT, "f1(z) = t z");
+    const std::string discOneMinusT =
+        discWords("|1 - t|", r.modOneMinusT, "f2(z) = (1 - t) z + t");
     if (r.hyperbolic)
-        os << ". t lies inside both discs: the IFS is hyperbolic (contraction factor "
-           << r.slowestFactor << ") and its attractor is a connected curve (Theorem 3.7.2)";
+        r.message = formatMessage(
+            coreTranslate("awb::schemes", "t = %1: %2, %3. t lies inside both discs: the IFS is "
+                                          "hyperbolic (contraction factor %4) and its attractor "
+                                          "is a connected curve (Theorem 3.7.2)"),
+            str(t), discT, discOneMinusT, streamedNumber(r.slowestFactor));
     else if (!r.insideT && !r.insideOneMinusT)
-        os << ". t lies outside both discs |t| < 1 and |1 - t| < 1: the IFS is not hyperbolic"
-              " and has no attractor";
+        r.message = formatMessage(
+            coreTranslate("awb::schemes", "t = %1: %2, %3. t lies outside both discs |t| < 1 and "
+                                          "|1 - t| < 1: the IFS is not hyperbolic and has no "
+                                          "attractor"),
+            str(t), discT, discOneMinusT);
     else
-        os << ". t lies outside the disc " << (r.insideT ? "|1 - t| < 1" : "|t| < 1")
-           << ": the IFS is not hyperbolic and has no attractor";
-    r.message = os.str();
+        r.message = formatMessage(
+            coreTranslate("awb::schemes", "t = %1: %2, %3. t lies outside the disc %4: the IFS "
+                                          "is not hyperbolic and has no attractor"),
+            str(t), discT, discOneMinusT, r.insideT ? "|1 - t| < 1" : "|t| < 1");
     return r;
 }
 
 Ifs deCasteljauSegmentIfs(Complex t)
 {
-    requireFiniteComplex(t, "the subdivision parameter t");
+    requireFiniteComplex(t, coreTranslate("awb::schemes", "the subdivision parameter t"));
     Ifs ifs;
     ifs.space = "complex plane";
     CMat a(1, 1);
@@ -122,9 +132,11 @@ Ifs deCasteljauSegmentIfs(Complex t)
 ComplexBezierIfs complexBezierIfs(const CVec &P, Complex t)
 {
     if (P.size() < 2)
-        throw InputError("a Bézier curve needs at least 2 control points (degree >= 1), got "
-                         + std::to_string(P.size()));
-    requireFinite(CMat(P), "control points");
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "a Bézier curve needs at least 2 control points "
+                                          "(degree >= 1), got %1"),
+            P.size()));
+    requireFinite(CMat(P), coreTranslate("awb::schemes", "control points"));
     ComplexBezierIfs out;
     out.controlPoints = P;
     out.t = t;
@@ -142,8 +154,9 @@ ComplexBezierIfs complexBezierIfs(const CVec &P, Complex t)
                 fb = j;
             }
     if (diameter == 0.0)
-        throw InputError("all control points coincide: the curve is a single point and the "
-                         "lifted matrix of 000 §2 is singular");
+        throw InputError(coreTranslate("awb::schemes", "all control points coincide: the curve "
+                                                       "is a single point and the lifted matrix "
+                                                       "of 000 §2 is singular"));
     if (std::abs(P(n - 1) - P(n)) > 1e-8 * diameter) {
         fa = n - 1;
         fb = n;
@@ -183,7 +196,8 @@ std::vector<Complex> attractorPoints(const ComplexBezierIfs &cb, int depth)
     if (!cb.parameter.hyperbolic)
         throw InputError(cb.parameter.message);
     if (depth < 0 || depth > 24)
-        throw InputError("depth must be between 0 and 24, got " + std::to_string(depth));
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "depth must be between 0 and 24, got %1"), depth));
     std::vector<Complex> out(std::size_t(1) << depth);
     const Projection &view = cb.ifs.views.front();
     CallbackSink sink([&](const Mat &v, StartSet::Kind, const std::uint8_t *a, int len) {
@@ -202,9 +216,10 @@ double takagiTruncationBound(int terms) { return std::ldexp(1.0, -terms); }
 double takagi(double x, int terms)
 {
     if (!std::isfinite(x))
-        throw InputError("the Takagi function needs a finite x");
+        throw InputError(coreTranslate("awb::schemes", "the Takagi function needs a finite x"));
     if (terms < 0)
-        throw InputError("the number of Takagi terms must be >= 0");
+        throw InputError(
+            coreTranslate("awb::schemes", "the number of Takagi terms must be >= 0"));
     double sum = 0.0, weight = 1.0, v = x;  // v = 2^n x, exact in binary
     for (int n = 0; n < terms; ++n) {
         const double frac = v - std::floor(v);
@@ -222,12 +237,15 @@ Complex takagiScaling(Complex z, double s) { return Complex(z.real(), s * z.imag
 double dyadicValue(const std::vector<int> &d)
 {
     if (d.size() > 60)
-        throw InputError("binary codes longer than 60 digits are not supported");
+        throw InputError(
+            coreTranslate("awb::schemes", "binary codes longer than 60 digits are not supported"));
     double r = 0.0;
     for (std::size_t k = 0; k < d.size(); ++k) {
         if (d[k] != 0 && d[k] != 1)
-            throw InputError("a binary code has digits 0 and 1 only (digit "
-                             + std::to_string(k + 1) + " is " + std::to_string(d[k]) + ")");
+            throw InputError(formatMessage(
+                coreTranslate("awb::schemes", "a binary code has digits 0 and 1 only (digit %1 "
+                                              "is %2)"),
+                k + 1, d[k]));
         r += d[k] * std::ldexp(1.0, -int(k + 1));
     }
     return r;
@@ -244,7 +262,7 @@ int onesCount(const std::vector<int> &d)
 
 Complex lemmaPoint(const std::vector<int> &d, Complex t)
 {
-    requireFiniteComplex(t, "the subdivision parameter t");
+    requireFiniteComplex(t, coreTranslate("awb::schemes", "the subdivision parameter t"));
     dyadicValue(d);  // validates the digits
     Eigen::Matrix2cd L, R, M = Eigen::Matrix2cd::Identity();
     L << t, 0.0, 0.0, 1.0;
@@ -318,13 +336,15 @@ ConjectureComparison compareConjecture(const CVec &P, double y, int depth)
 std::vector<Complex> takagiImage(const CVec &P, double y, int depth)
 {
     if (P.size() < 2)
-        throw InputError("Takagi image: needs at least 2 control points, got "
-                         + std::to_string(P.size()));
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "Takagi image: needs at least 2 control points, got %1"),
+            P.size()));
     if (!P.allFinite() || !std::isfinite(y))
-        throw InputError("Takagi image: control points and y must be finite");
+        throw InputError(
+            coreTranslate("awb::schemes", "Takagi image: control points and y must be finite"));
     if (depth < 1 || depth > 20)
-        throw InputError("Takagi image: depth " + std::to_string(depth)
-                         + " is outside 1..20");
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "Takagi image: depth %1 is outside 1..20"), depth));
     const std::size_t n = (std::size_t(1) << depth) + 1;
     std::vector<Complex> params(n);
     for (std::size_t j = 0; j < n; ++j) {

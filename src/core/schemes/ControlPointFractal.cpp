@@ -1,6 +1,7 @@
 // Fractals with control points (000 §4): the general recipe and the Koch / Sierpinski presets.
 #include "core/schemes/ControlPointFractal.h"
 
+#include "core/Messages.h"
 #include "core/schemes/Scheme.h"
 
 #include <Eigen/Dense>
@@ -46,33 +47,42 @@ void requireControlPoints(const Mat &P)
 {
     const Eigen::Index d = P.cols();
     if (d != 2 && d != 3)
-        throw InputError("control points must have 2 or 3 coordinates, got "
-                         + std::to_string(d));
-    requireFinite(P, "control points");
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "control points must have 2 or 3 coordinates, got %1"),
+            d));
+    requireFinite(P, coreTranslate("awb::schemes", "control points"));
     if (P.rows() < d + 1)
-        throw InputError(std::to_string(P.rows()) + " control points are too few: affine"
-                         " combinations in " + std::to_string(d) + "D need at least "
-                         + std::to_string(d + 1) + (d == 2 ? " that are not collinear"
-                                                           : " that are not coplanar"));
+        throw InputError(formatMessage(
+            d == 2 ? coreTranslate("awb::schemes", "%1 control points are too few: affine "
+                                                   "combinations in %2D need at least %3 that "
+                                                   "are not collinear")
+                   : coreTranslate("awb::schemes", "%1 control points are too few: affine "
+                                                   "combinations in %2D need at least %3 that "
+                                                   "are not coplanar"),
+            P.rows(), d, d + 1));
     // The points span the space affinely iff the centred points (m x d) have rank d; comparing
     // singular values with each other keeps the test independent of scale and position.
     const Mat centred = P.rowwise() - P.colwise().mean();
     const Vec sv = Eigen::JacobiSVD<Mat>(centred).singularValues();
     if (!(sv(0) > 0) || sv(d - 1) <= kRelTol * sv(0))
-        throw InputError(d == 2 ? "the control points are all collinear: they must span the"
-                                  " plane to write every image point as their affine"
-                                  " combination (000 eq. (5))"
-                                : "the control points are all coplanar: they must span"
-                                  " space to write every image point as their affine"
-                                  " combination (000 eq. (5))");
+        throw InputError(d == 2 ? coreTranslate("awb::schemes", "the control points are all "
+                                                "collinear: they must span the plane to write "
+                                                "every image point as their affine combination "
+                                                "(000 eq. (5))")
+                                : coreTranslate("awb::schemes", "the control points are all "
+                                                "coplanar: they must span space to write every "
+                                                "image point as their affine combination (000 "
+                                                "eq. (5))"));
 }
 
 void requirePoint(const Mat &P, const RowVec &y)
 {
     if (y.size() != P.cols())
-        throw InputError("the point has " + std::to_string(y.size())
-                         + " coordinates, the control points have " + std::to_string(P.cols()));
-    requireFinite(Mat(y), "point");
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "the point has %1 coordinates, the control points have "
+                                          "%2"),
+            y.size(), P.cols()));
+    requireFinite(Mat(y), coreTranslate("awb::schemes", "point"));
 }
 
 bool affinelyIndependent(const Mat &P, const std::vector<int> &idx, double scale)
@@ -232,16 +242,21 @@ ControlPointMatrices controlPointMatrices(const std::vector<AffineMap> &maps, co
                                           AffineWeights mode)
 {
     if (maps.empty())
-        throw InputError("the IFS has no maps");
+        throw InputError(coreTranslate("awb::schemes", "the IFS has no maps"));
     requireControlPoints(P);
     const Eigen::Index d = P.cols();
     for (size_t i = 0; i < maps.size(); ++i) {
-        const std::string label = "map f_" + std::to_string(i + 1);
         if (maps[i].A.rows() != d || maps[i].A.cols() != d || maps[i].b.size() != d)
-            throw InputError(label + " is not a map of " + std::to_string(d)
-                             + "D points like the control points");
-        requireFinite(maps[i].A, label + " (linear part)");
-        requireFinite(Mat(maps[i].b), label + " (translation)");
+            throw InputError(formatMessage(
+                coreTranslate("awb::schemes", "map f_%1 is not a map of %2D points like the "
+                                              "control points"),
+                i + 1, d));
+        requireFinite(maps[i].A,
+                      formatMessage(coreTranslate("awb::schemes", "map f_%1 (linear part)"),
+                                    i + 1));
+        requireFinite(Mat(maps[i].b),
+                      formatMessage(coreTranslate("awb::schemes", "map f_%1 (translation)"),
+                                    i + 1));
     }
     ControlPointMatrices out;
     out.mode = mode;
@@ -265,7 +280,7 @@ ControlPointFractal kochControlPointFractal()
 {
     const double r3 = std::sqrt(3.0);
     ControlPointFractal f;
-    f.name = "Koch curve with control points";
+    f.name = coreTranslate("awb::schemes", "Koch curve with control points");
     f.source = "000 §4.1, Fig. 10";
     f.controlPoints.resize(5, 2);
     f.controlPoints << 0, 0, 1.0 / 3, 0, 0.5, r3 / 6, 2.0 / 3, 0, 1, 0;
@@ -308,7 +323,7 @@ ControlPointFractal sierpinskiControlPointFractal()
 {
     const double r3 = std::sqrt(3.0);
     ControlPointFractal f;
-    f.name = "Sierpinski gasket with control points";
+    f.name = coreTranslate("awb::schemes", "Sierpinski gasket with control points");
     f.source = "000 §4.2, Fig. 11";
     // Corner, edge midpoint, corner, ... counter-clockwise (NOTES.md).
     f.controlPoints.resize(6, 2);
@@ -356,9 +371,10 @@ SubdivisionIfs controlPointFractalIfs(const ControlPointFractal &fractal, const 
 {
     const Eigen::Index m = fractal.controlPoints.rows();
     if (P.rows() != m || P.cols() != 2)
-        throw InputError(fractal.name + " needs " + std::to_string(m)
-                         + " control points in the plane, got " + std::to_string(P.rows())
-                         + " with " + std::to_string(P.cols()) + " coordinates");
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "%1 needs %2 control points in the plane, got %3 with "
+                                          "%4 coordinates"),
+            fractal.name, m, P.rows(), P.cols()));
     return buildSubdivisionIfs(fractal.S, fractal.overlap, P, form);
 }
 

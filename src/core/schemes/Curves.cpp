@@ -1,8 +1,9 @@
 #include "core/schemes/Curves.h"
 
+#include "core/Messages.h"
+
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace awb {
 
@@ -29,7 +30,7 @@ template<class M, class T>
 M deCasteljauLT(int n, T t)
 {
     if (n < 1)
-        throw InputError("Bézier degree must be at least 1");
+        throw InputError(coreTranslate("awb::schemes", "Bézier degree must be at least 1"));
     M L = M::Zero(n + 1, n + 1);
     for (int k = 0; k <= n; ++k)
         for (int j = 0; j <= k; ++j)
@@ -41,7 +42,7 @@ template<class M, class T>
 M deCasteljauRT(int n, T t)
 {
     if (n < 1)
-        throw InputError("Bézier degree must be at least 1");
+        throw InputError(coreTranslate("awb::schemes", "Bézier degree must be at least 1"));
     // r_k = sum_{j=k}^{n} B_{j-k}^{n-k}(t) p_j : the points on the right edge of the triangle.
     M R = M::Zero(n + 1, n + 1);
     for (int k = 0; k <= n; ++k)
@@ -96,21 +97,24 @@ BSplineBasis::BSplineBasis(int degree, std::vector<double> knots)
     : m_degree(degree), m_knots(std::move(knots))
 {
     if (degree < 1)
-        throw InputError("B-spline degree must be at least 1");
-    if (controlPointCount() < degree + 1) {
-        std::ostringstream os;
-        os << "a B-spline of degree " << degree << " needs at least " << degree + 1
-           << " control points (" << 2 * degree << " knots), got " << m_knots.size() << " knots";
-        throw InputError(os.str());
-    }
+        throw InputError(coreTranslate("awb::schemes", "B-spline degree must be at least 1"));
+    if (controlPointCount() < degree + 1)
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "a B-spline of degree %1 needs at least %2 control "
+                                          "points (%3 knots), got %4 knots"),
+            degree, degree + 1, 2 * degree, m_knots.size()));
     for (size_t i = 0; i < m_knots.size(); ++i) {
         if (!std::isfinite(m_knots[i]))
-            throw InputError("B-spline knot " + std::to_string(i) + " is not a finite number");
+            throw InputError(formatMessage(
+                coreTranslate("awb::schemes", "B-spline knot %1 is not a finite number"), i));
         if (i > 0 && m_knots[i] < m_knots[i - 1])
-            throw InputError("B-spline knots must be nondecreasing (knot " + std::to_string(i) + ")");
+            throw InputError(formatMessage(
+                coreTranslate("awb::schemes", "B-spline knots must be nondecreasing (knot %1)"),
+                i));
     }
     if (!(domainEnd() > domainStart()))
-        throw InputError("B-spline knot vector has an empty domain");
+        throw InputError(
+            coreTranslate("awb::schemes", "B-spline knot vector has an empty domain"));
 }
 
 BSplineBasis BSplineBasis::uniform(int degree, int m)
@@ -125,8 +129,10 @@ BSplineBasis BSplineBasis::endInterpolating(int degree, int m)
 {
     const int N = m - degree;
     if (N < 1)
-        throw InputError("an end-interpolating B-spline of degree " + std::to_string(degree)
-                         + " needs at least " + std::to_string(degree + 1) + " control points");
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "an end-interpolating B-spline of degree %1 needs at "
+                                          "least %2 control points"),
+            degree, degree + 1));
     std::vector<double> t;
     for (int i = 0; i < degree; ++i)
         t.push_back(0.0);
@@ -206,8 +212,9 @@ Mat BSplineBasis::insertionMatrix(const std::vector<double> &finer) const
 Mat BSplineBasis::curve(const Mat &P, int samples) const
 {
     if (P.rows() != controlPointCount())
-        throw InputError("B-spline needs " + std::to_string(controlPointCount())
-                         + " control points, got " + std::to_string(P.rows()));
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "B-spline needs %1 control points, got %2"),
+            controlPointCount(), P.rows()));
     Mat out(samples, P.cols());
     for (int s = 0; s < samples; ++s) {
         const double x = domainStart()

@@ -1,11 +1,12 @@
 #include "core/schemes/LatticeScheme.h"
 
+#include "core/Messages.h"
+
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
 #include <cstdlib>
 #include <functional>
-#include <sstream>
 
 namespace awb {
 
@@ -45,15 +46,19 @@ LatticeScheme::LatticeScheme(std::string name, Lattice lattice, int dilation,
     : m_name(std::move(name)), m_lattice(lattice), m_dilation(dilation)
 {
     if (dilation < 2)
-        throw InputError("scheme " + m_name + ": the dilation must be at least 2");
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "scheme %1: the dilation must be at least 2"), m_name));
     for (const auto &[x, w] : mask) {
         if (!std::isfinite(w))
-            throw InputError("scheme " + m_name + ": the mask holds a non-finite weight");
+            throw InputError(formatMessage(
+                coreTranslate("awb::schemes", "scheme %1: the mask holds a non-finite weight"),
+                m_name));
         if (w != 0.0)
             m_mask.emplace(x, w);
     }
     if (m_mask.empty())
-        throw InputError("scheme " + m_name + ": the mask is empty");
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "scheme %1: the mask is empty"), m_name));
     // Each refined point must be an affine combination of old points.
     const int N = dilation;
     for (int r = 0; r < N; ++r)
@@ -62,12 +67,11 @@ LatticeScheme::LatticeScheme(std::string name, Lattice lattice, int dilation,
             for (const auto &[x, w] : m_mask)
                 if (floorMod(x.i, N) == r && floorMod(x.j, N) == s)
                     sum += w;
-            if (std::abs(sum - 1.0) > 1e-12) {
-                std::ostringstream os;
-                os << "scheme " << m_name << ": the mask entries of class (" << r << ", " << s
-                   << ") mod " << N << " sum to " << sum << ", not 1";
-                throw InputError(os.str());
-            }
+            if (std::abs(sum - 1.0) > 1e-12)
+                throw InputError(formatMessage(
+                    coreTranslate("awb::schemes", "scheme %1: the mask entries of class (%2, %3) "
+                                                  "mod %4 sum to %5, not 1"),
+                    m_name, r, s, N, streamedNumber(sum)));
         }
     for (const auto &[x, w] : m_mask)
         m_radius = std::max(m_radius, latticeDistance(lattice, x));
@@ -118,7 +122,10 @@ void LatticeScheme::computeLimitStencil()
         for (const auto &[beta, w] : stencil(ball[size_t(k)])) {
             const auto it = index.find(beta);
             if (it == index.end())
-                throw InputError("scheme " + m_name + ": local subdivision matrix not closed");
+                throw InputError(formatMessage(
+                    coreTranslate("awb::schemes", "scheme %1: local subdivision matrix not "
+                                                  "closed"),
+                    m_name));
             L(k, it->second) = w;
         }
     // Left eigenvector for eigenvalue 1: l L = l, i.e. L^T l^T = l^T.
@@ -131,11 +138,15 @@ void LatticeScheme::computeLimitStencil()
             gap = g, best = k;
     }
     if (best < 0 || gap > 1e-8)
-        throw InputError("scheme " + m_name + ": the local subdivision matrix has no eigenvalue 1");
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "scheme %1: the local subdivision matrix has no "
+                                          "eigenvalue 1"),
+            m_name));
     Vec l = es.eigenvectors().col(best).real();
     const double sum = l.sum();
     if (std::abs(sum) < 1e-12)
-        throw InputError("scheme " + m_name + ": the limit eigenvector sums to 0");
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "scheme %1: the limit eigenvector sums to 0"), m_name));
     l /= sum;
     for (int k = 0; k < n; ++k)
         if (std::abs(l(k)) > 1e-13)
@@ -160,8 +171,10 @@ LatticeScheme boxSplineScheme(std::string name, Lattice lattice,
         sum = sum + xi;
     }
     if (sum.i % 2 || sum.j % 2)
-        throw InputError("box spline " + name + ": its directions sum to an odd vector, so the "
-                         "mask has no lattice-point centre");
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "box spline %1: its directions sum to an odd vector, so "
+                                          "the mask has no lattice-point centre"),
+            name));
     const LatticePoint centre{sum.i / 2, sum.j / 2};
     std::map<LatticePoint, double> mask;
     for (const auto &[e, c] : poly)
@@ -172,13 +185,16 @@ LatticeScheme boxSplineScheme(std::string name, Lattice lattice,
 LatticeScheme bicubicScheme()
 {
     const LatticePoint e1{1, 0}, e2{0, 1};
-    return boxSplineScheme("bicubic B-spline", Lattice::Square, {e1, e1, e1, e1, e2, e2, e2, e2});
+    return boxSplineScheme(coreTranslate("awb::schemes", "bicubic B-spline"), Lattice::Square,
+                           {e1, e1, e1, e1, e2, e2, e2, e2});
 }
 
 LatticeScheme loopScheme()
 {
     const LatticePoint e1{1, 0}, e2{0, 1}, e3{-1, 1};
-    return boxSplineScheme("Loop (three-direction quartic box spline)", Lattice::Triangular,
+    return boxSplineScheme(coreTranslate("awb::schemes", "Loop (three-direction quartic box "
+                                                         "spline)"),
+                           Lattice::Triangular,
                            {e1, e1, e2, e2, e3, e3});
 }
 
@@ -225,7 +241,8 @@ LatticeScheme sqrt3Scheme()
             if (std::abs(s) > 1e-15)
                 mask[{x, y}] = s;
         }
-    return LatticeScheme("Kobbelt √3 (two rounds)", Lattice::Triangular, 3, std::move(mask));
+    return LatticeScheme(coreTranslate("awb::schemes", "Kobbelt √3 (two rounds)"),
+                         Lattice::Triangular, 3, std::move(mask));
 }
 
 } // namespace awb

@@ -1,6 +1,7 @@
 // The normal-vector p-ary scheme of 001: subdivision, analysis, equivalent IFS and presets.
 #include "core/schemes/NormalVectorScheme.h"
 
+#include "core/Messages.h"
 #include "core/analysis/Geometry.h"
 #include "core/ifs/Attractor.h"
 
@@ -63,14 +64,15 @@ std::vector<Eigen::RowVector2d> unitEdgePoints(const NormalVectorScheme &s, int 
 
 std::string toString(NormalDirection normal)
 {
-    return normal == NormalDirection::Positive ? "positive (edge rotated 90° counter-clockwise)"
-                                               : "negative (edge rotated 90° clockwise)";
+    return normal == NormalDirection::Positive
+               ? coreTranslate("awb::schemes", "positive (edge rotated 90° counter-clockwise)")
+               : coreTranslate("awb::schemes", "negative (edge rotated 90° clockwise)");
 }
 
 std::string toString(BetaSign sign)
 {
     switch (sign) {
-    case BetaSign::Constant: return "constant";
+    case BetaSign::Constant: return coreTranslate("awb::schemes", "constant", "β sign");
     case BetaSign::EdgeAlternating: return "(-1)^i";
     case BetaSign::LevelEdgeAlternating: return "(-1)^(k+i)";
     case BetaSign::LevelAlternating: return "(-1)^(k+1)";
@@ -91,10 +93,12 @@ int betaSignValue(BetaSign sign, int level, long long edge)
 
 std::string normalVectorConventions()
 {
-    return "Positive normal: the edge vector P_i P_{i+1} rotated 90° counter-clockwise; negative:"
-           " rotated clockwise. d_i = |P_i P_{i+1}| n_i. In the β signs (-1)^i, (-1)^(k+i),"
-           " (-1)^(k+1), k is the level of the polygon being subdivided (the first step has"
-           " k = 0) and i the 0-based index of the edge.";
+    return coreTranslate("awb::schemes",
+                         "Positive normal: the edge vector P_i P_{i+1} rotated 90° "
+                         "counter-clockwise; negative: rotated clockwise. d_i = |P_i P_{i+1}| "
+                         "n_i. In the β signs (-1)^i, (-1)^(k+i), (-1)^(k+1), k is the level of "
+                         "the polygon being subdivided (the first step has k = 0) and i the "
+                         "0-based index of the edge.");
 }
 
 ControlPolygon unitSegment()
@@ -132,26 +136,32 @@ NormalVectorScheme::NormalVectorScheme(std::vector<double> alpha, std::vector<do
 {
     const size_t p = m_alpha.size();
     if (p < 2)
-        throw InputError("p = " + std::to_string(p) + ": the normal-vector scheme needs p >= 2"
-                         " rules, one (α_j, β_j) pair each");
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "p = %1: the normal-vector scheme needs p >= 2 rules, "
+                                          "one (α_j, β_j) pair each"),
+            p));
     if (m_beta.size() != p)
-        throw InputError("β has " + std::to_string(m_beta.size()) + " values but α has "
-                         + std::to_string(p) + ": eq. (1) needs one (α_j, β_j) pair per rule"
-                         " j = 0..p-1");
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "β has %1 values but α has %2: eq. (1) needs one (α_j, "
+                                          "β_j) pair per rule j = 0..p-1"),
+            m_beta.size(), p));
     for (size_t j = 0; j < p; ++j) {
         if (!std::isfinite(m_alpha[j]))
-            throw InputError("α_" + std::to_string(j) + " is not a finite number");
+            throw InputError(formatMessage(
+                coreTranslate("awb::schemes", "α_%1 is not a finite number"), j));
         if (!std::isfinite(m_beta[j]))
-            throw InputError("β_" + std::to_string(j) + " is not a finite number");
+            throw InputError(formatMessage(
+                coreTranslate("awb::schemes", "β_%1 is not a finite number"), j));
     }
     if (m_signs.empty())
         m_signs.assign(p, BetaSign::Constant);
     else if (m_signs.size() == 1)
         m_signs.assign(p, m_signs.front());
     else if (m_signs.size() != p)
-        throw InputError(std::to_string(m_signs.size()) + " β signs given for p = "
-                         + std::to_string(p) + " rules: give none, one for all rules, or one"
-                         " per rule");
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "%1 β signs given for p = %2 rules: give none, one for "
+                                          "all rules, or one per rule"),
+            m_signs.size(), p));
 }
 
 bool NormalVectorScheme::interpolatory() const { return m_alpha[0] == 0 && m_beta[0] == 0; }
@@ -182,25 +192,32 @@ std::string NormalVectorScheme::describe() const
     std::string signs;
     for (int j = 0; j < arity(); ++j)
         signs += (j ? ", " : "") + toString(m_signs[j]);
-    return "p = " + std::to_string(arity()) + ", α = " + list(m_alpha) + ", β = "
-           + list(m_beta) + ", β signs (" + signs + "), normals " + toString(m_normal);
+    return formatMessage(
+        coreTranslate("awb::schemes", "p = %1, α = %2, β = %3, β signs (%4), normals %5"),
+        arity(), list(m_alpha), list(m_beta), signs, toString(m_normal));
 }
 
 void NormalVectorScheme::validate(const ControlPolygon &poly) const
 {
     if (poly.points.cols() != 2)
-        throw InputError("the normal-vector scheme works in the plane: control points need 2"
-                         " coordinates, got " + std::to_string(poly.points.cols()));
-    requireFinite(poly.points, "control polygon");
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "the normal-vector scheme works in the plane: control "
+                                          "points need 2 coordinates, got %1"),
+            poly.points.cols()));
+    requireFinite(poly.points, coreTranslate("awb::schemes", "control polygon"));
     const Eigen::Index need = poly.closed ? 3 : 2;
     if (poly.points.rows() < need)
-        throw InputError(std::string(poly.closed ? "a closed" : "an open")
-                         + " control polygon needs at least " + std::to_string(need)
-                         + " points, got " + std::to_string(poly.points.rows()));
+        throw InputError(formatMessage(
+            poly.closed ? coreTranslate("awb::schemes", "a closed control polygon needs at least "
+                                                        "%1 points, got %2")
+                        : coreTranslate("awb::schemes", "an open control polygon needs at least "
+                                                        "%1 points, got %2"),
+            need, poly.points.rows()));
     if (!poly.closed && !interpolatory())
-        throw InputError("open control polygons need α_0 = β_0 = 0: rule 0 at the last point"
-                         " (i = p^k n in eq. (1)) would use a point after the end; close the"
-                         " polygon instead");
+        throw InputError(coreTranslate("awb::schemes", "open control polygons need α_0 = β_0 = "
+                                                       "0: rule 0 at the last point (i = p^k n "
+                                                       "in eq. (1)) would use a point after the "
+                                                       "end; close the polygon instead"));
 }
 
 double NormalVectorScheme::pointCount(const ControlPolygon &poly, int steps) const
@@ -240,17 +257,20 @@ void requireSteps(const NormalVectorScheme &s, const ControlPolygon &poly, int s
 {
     s.validate(poly);
     if (steps < 0)
-        throw InputError("the number of subdivision steps cannot be negative, got "
-                         + std::to_string(steps));
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "the number of subdivision steps cannot be negative, "
+                                          "got %1"),
+            steps));
     if (firstLevel < 0)
-        throw InputError("the subdivision level cannot be negative, got "
-                         + std::to_string(firstLevel));
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "the subdivision level cannot be negative, got %1"),
+            firstLevel));
     const double count = s.pointCount(poly, steps);
     if (count > NormalVectorScheme::maxPoints())
-        throw InputError(std::to_string(steps) + " subdivision steps of a polygon with "
-                         + std::to_string(poly.edgeCount()) + " edges would make "
-                         + num(count) + " points (at most " + num(NormalVectorScheme::maxPoints())
-                         + "); use fewer steps");
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "%1 subdivision steps of a polygon with %2 edges would "
+                                          "make %3 points (at most %4); use fewer steps"),
+            steps, poly.edgeCount(), num(count), num(NormalVectorScheme::maxPoints())));
 }
 
 } // namespace
@@ -321,20 +341,29 @@ NormalVectorAnalysis analyse(const NormalVectorScheme &s)
 
     const double gamma = interp ? out.edgeContraction : out.paperContractionBound;
     out.convergent = gamma < 1.0;
-    if (out.convergent) {
-        out.verdict = "convergent: every edge shrinks by a factor of at most " + num(gamma)
-                      + " per step, so ||F^{k+1} - F^k|| <= " + num(out.displacementFactor)
-                      + " * " + num(gamma) + "^k * (longest initial edge) and F^k is a Cauchy"
-                      " sequence (the argument of 001 Theorem 1)";
-    } else {
-        out.verdict = "not decided: the one-step edge bound is " + num(gamma)
-                      + " >= 1, so the argument of 001 Theorem 1 does not apply (see the"
-                      " measured edge lengths per level)";
-    }
     out.nonRectifiable = interp && out.convergent && lenMin > 1.0;
     if (out.nonRectifiable)
-        out.verdict += "; non-rectifiable: the polygon length grows by a factor of at least "
-                       + num(lenMin) + " per step (001 Theorem 2)";
+        out.verdict = formatMessage(
+            coreTranslate("awb::schemes", "convergent: every edge shrinks by a factor of at most "
+                                          "%1 per step, so ||F^{k+1} - F^k|| <= %2 * %1^k * "
+                                          "(longest initial edge) and F^k is a Cauchy sequence "
+                                          "(the argument of 001 Theorem 1); non-rectifiable: the "
+                                          "polygon length grows by a factor of at least %3 per "
+                                          "step (001 Theorem 2)"),
+            num(gamma), num(out.displacementFactor), num(lenMin));
+    else if (out.convergent)
+        out.verdict = formatMessage(
+            coreTranslate("awb::schemes", "convergent: every edge shrinks by a factor of at most "
+                                          "%1 per step, so ||F^{k+1} - F^k|| <= %2 * %1^k * "
+                                          "(longest initial edge) and F^k is a Cauchy sequence "
+                                          "(the argument of 001 Theorem 1)"),
+            num(gamma), num(out.displacementFactor));
+    else
+        out.verdict = formatMessage(
+            coreTranslate("awb::schemes", "not decided: the one-step edge bound is %1 >= 1, so "
+                                          "the argument of 001 Theorem 1 does not apply (see the "
+                                          "measured edge lengths per level)"),
+            num(gamma));
     return out;
 }
 
@@ -415,17 +444,20 @@ Search searchEquivalentIfs(const NormalVectorScheme &s)
 {
     Search out;
     if (!s.interpolatory()) {
-        out.why = "α_0 and β_0 are not both 0: the new edge across each old vertex joins two old"
-                  " edges and is not the image of one edge, so no IFS of one similarity per new"
-                  " edge exists";
+        out.why = coreTranslate("awb::schemes", "α_0 and β_0 are not both 0: the new edge across "
+                                                "each old vertex joins two old edges and is not "
+                                                "the image of one edge, so no IFS of one "
+                                                "similarity per new edge exists");
         return out;
     }
     const int p = s.arity();
     const auto a = unitEdgePoints(s, 0, 0);
     for (int j = 0; j < p; ++j)
         if (!((a[j + 1] - a[j]).norm() < 1.0)) {
-            out.why = "new edge " + std::to_string(j + 1) + " of the unit edge has length "
-                      + num((a[j + 1] - a[j]).norm()) + " >= 1: no map would contract";
+            out.why = formatMessage(
+                coreTranslate("awb::schemes", "new edge %1 of the unit edge has length %2 >= 1: "
+                                              "no map would contract"),
+                j + 1, num((a[j + 1] - a[j]).norm()));
             return out;
         }
     const int levels = checkLevels(p);
@@ -470,14 +502,17 @@ Search searchEquivalentIfs(const NormalVectorScheme &s)
         return out;
     }
     const long long patterns = 1LL << (2 * p);
-    std::ostringstream os;
-    os << "no IFS of " << p << " similarities (each new edge taken forward or reversed, plain or"
-       << " mirrored: " << patterns << " patterns) reproduces the polygons of the first "
-       << levels << " steps";
-    if (s.levelDependent())
-        os << "; the β sign changes with the level, so the rules repeat only every two steps (an"
-              " IFS would need p^2 maps)";
-    out.why = os.str();
+    out.why = formatMessage(
+        s.levelDependent()
+            ? coreTranslate("awb::schemes", "no IFS of %1 similarities (each new edge taken "
+                                            "forward or reversed, plain or mirrored: %2 patterns) "
+                                            "reproduces the polygons of the first %3 steps; the β "
+                                            "sign changes with the level, so the rules repeat only "
+                                            "every two steps (an IFS would need p^2 maps)")
+            : coreTranslate("awb::schemes", "no IFS of %1 similarities (each new edge taken "
+                                            "forward or reversed, plain or mirrored: %2 patterns) "
+                                            "reproduces the polygons of the first %3 steps"),
+        p, patterns, levels);
     return out;
 }
 
@@ -495,7 +530,8 @@ Ifs equivalentIfs(const NormalVectorScheme &s)
 {
     Search found = searchEquivalentIfs(s);
     if (!found.ifs)
-        throw InputError("no equivalent IFS: " + found.why);
+        throw InputError(
+            formatMessage(coreTranslate("awb::schemes", "no equivalent IFS: %1"), found.why));
     return *found.ifs;
 }
 
@@ -526,9 +562,11 @@ Ifs equivalentIfs(const NormalVectorScheme &s, const ControlPolygon &poly)
             }
         }
         if (!found)
-            throw InputError("edge " + std::to_string(i + 1) + " of the control polygon is "
-                             "subdivided with rules no similarity copy of the unit edge's "
-                             "limit reproduces");
+            throw InputError(formatMessage(
+                coreTranslate("awb::schemes", "edge %1 of the control polygon is subdivided with "
+                                              "rules no similarity copy of the unit edge's limit "
+                                              "reproduces"),
+                i + 1));
     }
     return ifs;
 }
@@ -541,56 +579,74 @@ std::vector<NormalVectorPreset> normalVectorPresets()
     const auto pos = NormalDirection::Positive, neg = NormalDirection::Negative;
     const double r3 = std::sqrt(3.0);
     std::vector<NormalVectorPreset> v;
-    v.push_back({Id::Levy, "levy", "Lévy C curve", "001 §3.1, scheme (2), Fig. 2(b)",
-                 "binary interpolatory; new point at the apex of a right isosceles triangle",
+    v.push_back({Id::Levy, "levy", coreTranslate("awb::schemes", "Lévy C curve"),
+                 "001 §3.1, scheme (2), Fig. 2(b)",
+                 coreTranslate("awb::schemes", "binary interpolatory; new point at the apex of a "
+                                               "right isosceles triangle"),
                  NormalVectorScheme({0, 0.5}, {0, 0.5}, pos), unitSegment(), 11});
-    v.push_back({Id::Dragon, "dragon", "Dragon curve", "001 §3.1, Fig. 3(a)",
-                 "scheme (2) with β_1 = (-1)^i / 2: the bump alternates sides along the curve",
+    v.push_back({Id::Dragon, "dragon", coreTranslate("awb::schemes", "Dragon curve"),
+                 "001 §3.1, Fig. 3(a)",
+                 coreTranslate("awb::schemes", "scheme (2) with β_1 = (-1)^i / 2: the bump "
+                                               "alternates sides along the curve"),
                  NormalVectorScheme({0, 0.5}, {0, 0.5}, pos, {BetaSign::EdgeAlternating}),
                  unitSegment(), 10});
-    v.push_back({Id::SierpinskiArrowhead, "sierpinski", "Sierpiński gasket (arrowhead curve)",
+    v.push_back({Id::SierpinskiArrowhead, "sierpinski",
+                 coreTranslate("awb::schemes", "Sierpiński gasket (arrowhead curve)"),
                  "001 §3.2, scheme (3), Fig. 4(d)",
-                 "non-stationary and non-uniform, as in the paper: β_1 = β_2 = (-1)^(k+i) √3/4"
-                 " flips with the level k and the edge i; the polygons tend to the gasket",
+                 coreTranslate("awb::schemes", "non-stationary and non-uniform, as in the paper: "
+                                               "β_1 = β_2 = (-1)^(k+i) √3/4 flips with the level "
+                                               "k and the edge i; the polygons tend to the "
+                                               "gasket"),
                  NormalVectorScheme({0, 0.25, 0.75}, {0, r3 / 4, r3 / 4}, pos,
                                     {BetaSign::LevelEdgeAlternating}),
                  unitSegment(), 7});
     const std::vector<double> kochA{0, 1.0 / 3, 0.5, 2.0 / 3}, kochB{0, 0, r3 / 6, 0};
-    v.push_back({Id::Koch, "koch", "Koch curve", "001 §3.3, scheme (5), Fig. 6(a)",
-                 "quaternary interpolatory; the limit is the classic Koch curve",
+    v.push_back({Id::Koch, "koch", coreTranslate("awb::schemes", "Koch curve"),
+                 "001 §3.3, scheme (5), Fig. 6(a)",
+                 coreTranslate("awb::schemes", "quaternary interpolatory; the limit is the "
+                                               "classic Koch curve"),
                  NormalVectorScheme(kochA, kochB, pos), unitSegment(), 5});
-    v.push_back({Id::KochSnowflake, "snowflake", "Koch snowflake",
+    v.push_back({Id::KochSnowflake, "snowflake", coreTranslate("awb::schemes", "Koch snowflake"),
                  "001 §3.3, scheme (5), Fig. 7(b)",
-                 "the triangle traversed counter-clockwise with negative normals, so every"
-                 " bump points outwards (NOTES.md)",
+                 coreTranslate("awb::schemes", "the triangle traversed counter-clockwise with "
+                                               "negative normals, so every bump points outwards "
+                                               "(NOTES.md)"),
                  NormalVectorScheme(kochA, kochB, neg), equilateralTriangle(), 5});
-    v.push_back({Id::Tigerhead, "tigerhead", "Tigerhead-like curve", "001 §3.3, Fig. 8(a)",
-                 "α = (0, -1/4, 1/2, 5/4), β = (0, 1/3, 1/2, 1/3): rules 1 and 3 lie outside"
-                 " the edge, so the curve overlaps itself",
+    v.push_back({Id::Tigerhead, "tigerhead", coreTranslate("awb::schemes", "Tigerhead-like curve"),
+                 "001 §3.3, Fig. 8(a)",
+                 coreTranslate("awb::schemes", "α = (0, -1/4, 1/2, 5/4), β = (0, 1/3, 1/2, 1/3): "
+                                               "rules 1 and 3 lie outside the edge, so the curve "
+                                               "overlaps itself"),
                  NormalVectorScheme({0, -0.25, 0.5, 1.25}, {0, 1.0 / 3, 0.5, 1.0 / 3}, pos),
                  unitSegment(), 6});
-    v.push_back({Id::HumanLike, "human", "Human-like curve", "001 §3.3, Fig. 8(b)",
-                 "β = (-1)^(k+1) (0, 1/3, 1/2, 1/3): the bumps point down at the first step"
-                 " (k = 0) and flip at every level",
+    v.push_back({Id::HumanLike, "human", coreTranslate("awb::schemes", "Human-like curve"),
+                 "001 §3.3, Fig. 8(b)",
+                 coreTranslate("awb::schemes", "β = (-1)^(k+1) (0, 1/3, 1/2, 1/3): the bumps "
+                                               "point down at the first step (k = 0) and flip at "
+                                               "every level"),
                  NormalVectorScheme({0, 5.0 / 9, 0.5, 4.0 / 9}, {0, 1.0 / 3, 0.5, 1.0 / 3}, pos,
                                     {BetaSign::LevelAlternating}),
                  unitSegment(), 7});
-    v.push_back({Id::Approximating, "approximating", "Approximating curve",
-                 "001 §3.3, Fig. 8(c)",
-                 "α_0 = -1/2 moves the old points, so the polygon must be closed; the text does"
-                 " not give the quadrilateral of Fig. 3(c): a unit square traversed"
-                 " counter-clockwise is assumed",
+    v.push_back({Id::Approximating, "approximating",
+                 coreTranslate("awb::schemes", "Approximating curve"), "001 §3.3, Fig. 8(c)",
+                 coreTranslate("awb::schemes", "α_0 = -1/2 moves the old points, so the polygon "
+                                               "must be closed; the text does not give the "
+                                               "quadrilateral of Fig. 3(c): a unit square "
+                                               "traversed counter-clockwise is assumed"),
                  NormalVectorScheme({-0.5, -0.25, 0.25, 0.5}, {0, 0.2, 0.2, 0}, neg),
                  unitSquare(), 5});
-    v.push_back({Id::Crown, "crown", "Crown-like curve", "001 §3.4, Fig. 9(a)",
-                 "6-ary interpolatory",
+    v.push_back({Id::Crown, "crown", coreTranslate("awb::schemes", "Crown-like curve"),
+                 "001 §3.4, Fig. 9(a)", coreTranslate("awb::schemes", "6-ary interpolatory"),
                  NormalVectorScheme({0, 1.0 / 3, 1.0 / 3, 0.5, 2.0 / 3, 2.0 / 3},
                                     {0, -r3 / 9, r3 / 9, -r3 / 18, r3 / 9, -r3 / 9}, pos),
                  unitSegment(), 4});
-    v.push_back({Id::SevenAry, "sevenary", "7-ary square-wave curve", "001 §3.4, Fig. 9(b)",
-                 "the paper calls it the Minkowski curve; it equals the Minkowski sausage only"
-                 " at level 1 (its middle edge has length 1/2 and is replaced by a half-size"
-                 " copy), so it is a different curve of similarity dimension log_2 3, not 1.5",
+    v.push_back({Id::SevenAry, "sevenary",
+                 coreTranslate("awb::schemes", "7-ary square-wave curve"), "001 §3.4, Fig. 9(b)",
+                 coreTranslate("awb::schemes", "the paper calls it the Minkowski curve; it equals "
+                                               "the Minkowski sausage only at level 1 (its middle "
+                                               "edge has length 1/2 and is replaced by a "
+                                               "half-size copy), so it is a different curve of "
+                                               "similarity dimension log_2 3, not 1.5"),
                  NormalVectorScheme({0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75},
                                     {0, 0, 0.25, 0.25, -0.25, -0.25, 0}, pos),
                  unitSegment(), 5});
@@ -602,7 +658,8 @@ NormalVectorPreset normalVectorPreset(NormalVectorPresetId id)
     for (NormalVectorPreset &p : normalVectorPresets())
         if (p.id == id)
             return p;
-    throw InputError("unknown normal-vector preset " + std::to_string(int(id)));
+    throw InputError(formatMessage(
+        coreTranslate("awb::schemes", "unknown normal-vector preset %1"), int(id)));
 }
 
 ControlPolygon subdividePreset(NormalVectorPresetId id, int steps)

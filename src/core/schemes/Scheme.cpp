@@ -1,5 +1,7 @@
 #include "core/schemes/Scheme.h"
 
+#include "core/Messages.h"
+
 #include <cmath>
 #include <sstream>
 
@@ -38,16 +40,12 @@ std::optional<Mat> CurveScheme::exactCurve(const Mat &, int) const { return std:
 
 void CurveScheme::requireControlPointCount(int m) const
 {
-    if (m < minControlPoints() || m > maxControlPoints()) {
-        std::ostringstream os;
-        os << name() << " needs ";
-        if (minControlPoints() == maxControlPoints())
-            os << "exactly " << minControlPoints();
-        else
-            os << "at least " << minControlPoints();
-        os << " control points, got " << m;
-        throw InputError(os.str());
-    }
+    if (m < minControlPoints() || m > maxControlPoints())
+        throw InputError(formatMessage(
+            minControlPoints() == maxControlPoints()
+                ? coreTranslate("awb::schemes", "%1 needs exactly %2 control points, got %3")
+                : coreTranslate("awb::schemes", "%1 needs at least %2 control points, got %3"),
+            name(), minControlPoints(), m));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -56,29 +54,35 @@ UniformScheme::UniformScheme(std::string name, int arity, std::vector<SchemeRule
     : m_name(std::move(name)), m_arity(arity), m_rules(std::move(rules))
 {
     if (arity < 2)
-        throw InputError(m_name + ": the arity of a scheme must be at least 2, got "
-                         + std::to_string(arity));
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "%1: the arity of a scheme must be at least 2, got %2"),
+            m_name, arity));
     if (int(m_rules.size()) != arity)
-        throw InputError(m_name + ": a scheme of arity " + std::to_string(arity) + " needs "
-                         + std::to_string(arity) + " rules, got " + std::to_string(m_rules.size()));
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "%1: a scheme of arity %2 needs %2 rules, got %3"),
+            m_name, arity, m_rules.size()));
     int kmin = INT_MAX, kmax = INT_MIN;
     for (int r = 0; r < arity; ++r) {
         const auto &rule = m_rules[r];
         if (rule.weights.empty())
-            throw InputError(m_name + ": rule " + std::to_string(r + 1) + " has no weights");
+            throw InputError(formatMessage(
+                coreTranslate("awb::schemes", "%1: rule %2 has no weights"), m_name, r + 1));
         double sum = 0.0, abssum = 0.0;
         for (size_t j = 0; j < rule.weights.size(); ++j) {
             const double w = rule.weights[j];
             if (!std::isfinite(w))
-                throw InputError(m_name + ": weight " + std::to_string(j + 1) + " of rule "
-                                 + std::to_string(r + 1) + " is not a finite number");
+                throw InputError(formatMessage(
+                    coreTranslate("awb::schemes", "%1: weight %2 of rule %3 is not a finite "
+                                                  "number"),
+                    m_name, j + 1, r + 1));
             sum += w;
             abssum += std::abs(w);
         }
         if (std::abs(sum - 1.0) > 1e-9 * std::max(1.0, abssum))
-            throw InputError(m_name + ": the weights of rule " + std::to_string(r + 1)
-                             + " sum to " + fmt(sum)
-                             + ", not 1 (an affine rule must reproduce constants)");
+            throw InputError(formatMessage(
+                coreTranslate("awb::schemes", "%1: the weights of rule %2 sum to %3, not 1 (an "
+                                              "affine rule must reproduce constants)"),
+                m_name, r + 1, fmt(sum)));
         for (size_t j = 0; j < rule.weights.size(); ++j) {
             const int k = r - arity * (rule.offset + int(j));
             kmin = std::min(kmin, k);
@@ -154,7 +158,9 @@ std::optional<Mat> UniformScheme::exactCurve(const Mat &P, int samples) const
 UniformScheme bsplineScheme(int degree)
 {
     if (degree < 1 || degree > 15)
-        throw InputError("B-spline degree must be between 1 and 15, got " + std::to_string(degree));
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "B-spline degree must be between 1 and 15, got %1"),
+            degree));
     // 004 (2.7): p_{2i} = 2^-n sum_j C(n+1, 2j) p_{i-1+j}, p_{2i+1} = 2^-n sum_j C(n+1, 2j+1) p_{i+j}
     auto binom = [](int n, int k) {
         double r = 1;
@@ -168,7 +174,9 @@ UniformScheme bsplineScheme(int degree)
         even.weights.push_back(binom(degree + 1, 2 * j) * scale);
     for (int j = 0; 2 * j + 1 <= degree + 1; ++j)
         odd.weights.push_back(binom(degree + 1, 2 * j + 1) * scale);
-    UniformScheme s("uniform B-spline of degree " + std::to_string(degree), 2, {even, odd});
+    UniformScheme s(formatMessage(coreTranslate("awb::schemes", "uniform B-spline of degree %1"),
+                                  degree),
+                    2, {even, odd});
     s.setBSplineDegree(degree);
     return s;
 }
@@ -176,9 +184,13 @@ UniformScheme bsplineScheme(int degree)
 UniformScheme cornerCuttingScheme(double a, double b)
 {
     if (!std::isfinite(a) || !std::isfinite(b) || !(0.0 < a && a < b && b < 1.0))
-        throw InputError("corner cutting needs 0 < a < b < 1, got a = " + fmt(a) + ", b = " + fmt(b));
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "corner cutting needs 0 < a < b < 1, got a = %1, b = %2"),
+            fmt(a), fmt(b)));
     // Even point 2i: parameter b on edge (p_{i-1}, p_i); odd point 2i+1: parameter a on (p_i, p_{i+1}).
-    return UniformScheme("corner cutting (" + fmt(a) + ", " + fmt(b) + ")", 2,
+    return UniformScheme(formatMessage(coreTranslate("awb::schemes", "corner cutting (%1, %2)"),
+                                       fmt(a), fmt(b)),
+                         2,
                          {SchemeRule{-1, {1.0 - b, b}}, SchemeRule{0, {1.0 - a, a}}});
 }
 
@@ -192,8 +204,11 @@ UniformScheme chaikinScheme()
 UniformScheme fourPointScheme(double omega)
 {
     if (!std::isfinite(omega))
-        throw InputError("four-point tension omega is not a finite number");
-    return UniformScheme("four-point (omega = " + fmt(omega) + ")", 2,
+        throw InputError(
+            coreTranslate("awb::schemes", "four-point tension omega is not a finite number"));
+    return UniformScheme(formatMessage(coreTranslate("awb::schemes", "four-point (omega = %1)"),
+                                       fmt(omega)),
+                         2,
                          {SchemeRule{0, {1.0}},
                           SchemeRule{-1, {-omega, 0.5 + omega, 0.5 + omega, -omega}}});
 }
@@ -203,15 +218,21 @@ UniformScheme fourPointScheme(double omega)
 BezierScheme::BezierScheme(int degree, double t) : m_degree(degree), m_t(t)
 {
     if (degree < 1 || degree > 30)
-        throw InputError("Bézier degree must be between 1 and 30, got " + std::to_string(degree));
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "Bézier degree must be between 1 and 30, got %1"),
+            degree));
     if (!std::isfinite(t) || !(t > 0.0 && t < 1.0))
-        throw InputError("the de Casteljau split parameter t must lie strictly between 0 and 1, got "
-                         + fmt(t));
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "the de Casteljau split parameter t must lie strictly "
+                                          "between 0 and 1, got %1"),
+            fmt(t)));
 }
 
 std::string BezierScheme::name() const
 {
-    return "Bézier of degree " + std::to_string(m_degree) + " (de Casteljau at t = " + fmt(m_t) + ")";
+    return formatMessage(
+        coreTranslate("awb::schemes", "Bézier of degree %1 (de Casteljau at t = %2)"), m_degree,
+        fmt(m_t));
 }
 
 SubdivisionMatrices BezierScheme::matrices(int m) const
@@ -231,12 +252,15 @@ std::optional<Mat> BezierScheme::exactCurve(const Mat &P, int samples) const
 EndInterpolatingBSplineScheme::EndInterpolatingBSplineScheme(int degree) : m_degree(degree)
 {
     if (degree < 1 || degree > 15)
-        throw InputError("B-spline degree must be between 1 and 15, got " + std::to_string(degree));
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "B-spline degree must be between 1 and 15, got %1"),
+            degree));
 }
 
 std::string EndInterpolatingBSplineScheme::name() const
 {
-    return "end-interpolating B-spline of degree " + std::to_string(m_degree);
+    return formatMessage(
+        coreTranslate("awb::schemes", "end-interpolating B-spline of degree %1"), m_degree);
 }
 
 SubdivisionMatrices EndInterpolatingBSplineScheme::matrices(int m) const
@@ -269,25 +293,28 @@ MatrixScheme::MatrixScheme(std::vector<Mat> S, std::string name)
     : m_S(std::move(S)), m_name(std::move(name))
 {
     if (m_S.size() < 2)
-        throw InputError(m_name + ": an IFS needs at least two matrices, got "
-                         + std::to_string(m_S.size()));
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "%1: an IFS needs at least two matrices, got %2"),
+            m_name, m_S.size()));
     const Eigen::Index m = m_S.front().rows();
     if (m < 1)
-        throw InputError(m_name + ": matrix S_1 is empty");
+        throw InputError(
+            formatMessage(coreTranslate("awb::schemes", "%1: matrix S_1 is empty"), m_name));
     for (size_t i = 0; i < m_S.size(); ++i) {
-        const std::string label = m_name + ": matrix S_" + std::to_string(i + 1);
-        if (m_S[i].rows() != m || m_S[i].cols() != m) {
-            std::ostringstream os;
-            os << label << " is " << m_S[i].rows() << " x " << m_S[i].cols() << ", expected "
-               << m << " x " << m << " like S_1";
-            throw InputError(os.str());
-        }
-        requireFinite(m_S[i], label);
+        if (m_S[i].rows() != m || m_S[i].cols() != m)
+            throw InputError(formatMessage(
+                coreTranslate("awb::schemes", "%1: matrix S_%2 is %3 x %4, expected %5 x %5 like "
+                                              "S_1"),
+                m_name, i + 1, m_S[i].rows(), m_S[i].cols(), m));
+        requireFinite(m_S[i], formatMessage(coreTranslate("awb::schemes", "%1: matrix S_%2"),
+                                            m_name, i + 1));
         for (Eigen::Index r = 0; r < m; ++r) {
             const double sum = m_S[i].row(r).sum();
             if (std::abs(sum - 1.0) > 1e-9 * std::max(1.0, m_S[i].row(r).cwiseAbs().sum()))
-                throw InputError(label + ", row " + std::to_string(r + 1) + " sums to " + fmt(sum)
-                                 + ", not 1 (subdivision rows are affine combinations)");
+                throw InputError(formatMessage(
+                    coreTranslate("awb::schemes", "%1: matrix S_%2, row %3 sums to %4, not 1 "
+                                                  "(subdivision rows are affine combinations)"),
+                    m_name, i + 1, r + 1, fmt(sum)));
         }
     }
     m_overlap = int(m);
@@ -315,14 +342,17 @@ int sharedRows(const Mat &prev, const Mat &next)
 
 Mat subdivide(const CurveScheme &scheme, const Mat &P, int steps)
 {
-    requireFinite(P, "control points");
+    requireFinite(P, coreTranslate("awb::schemes", "control points"));
     if (steps < 0)
-        throw InputError("the number of subdivision steps cannot be negative");
+        throw InputError(
+            coreTranslate("awb::schemes", "the number of subdivision steps cannot be negative"));
     const SubdivisionMatrices sm = scheme.matrices(int(P.rows()));
     const double rows = double(P.rows()) * std::pow(double(sm.S.size()), steps);
     if (rows > 5e7)
-        throw InputError("classic subdivision with " + std::to_string(steps) + " steps would make "
-                         + fmt(rows) + " points; use fewer steps");
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "classic subdivision with %1 steps would make %2 "
+                                          "points; use fewer steps"),
+            steps, fmt(rows)));
     std::vector<Mat> pieces{P};
     for (int k = 0; k < steps; ++k) {
         std::vector<Mat> next;

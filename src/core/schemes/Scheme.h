@@ -6,6 +6,7 @@
 // pieces of the limit curve. Consecutive pieces share `overlap` rows (the last rows of S_j equal
 // the first rows of S_{j+1}); this is the overlapping-rows split of 000 §2.
 
+#include "core/Messages.h"
 #include "core/schemes/Curves.h"
 #include "core/Types.h"
 
@@ -130,7 +131,8 @@ private:
 // The user's own S_1..S_p (all m x m, rows summing to 1): any arity.
 class MatrixScheme : public CurveScheme {
 public:
-    explicit MatrixScheme(std::vector<Mat> S, std::string name = "user matrices");
+    explicit MatrixScheme(std::vector<Mat> S,
+                          std::string name = coreTranslate("awb::schemes", "user matrices"));
     std::string name() const override { return m_name; }
     int arity() const override { return int(m_S.size()); }
     int minControlPoints() const override { return int(m_S.front().rows()); }

@@ -1,9 +1,10 @@
 #include "core/schemes/SurfacePatch.h"
 
+#include "core/Messages.h"
+
 #include <algorithm>
 #include <cmath>
 #include <set>
-#include <sstream>
 
 namespace awb {
 
@@ -47,8 +48,13 @@ PatchLayout patchLayout(const LatticeScheme &scheme, const std::string &name)
         std::string list;
         for (const auto &n : names)
             list += (list.empty() ? "" : ", ") + n;
-        throw InputError("the " + toString(lattice) + " lattice of " + scheme.name()
-                         + " has no layout '" + name + "' (it has: " + list + ")");
+        throw InputError(formatMessage(
+            lattice == Lattice::Square
+                ? coreTranslate("awb::schemes", "the square lattice of %1 has no layout '%2' (it "
+                                                "has: %3)")
+                : coreTranslate("awb::schemes", "the triangular lattice of %1 has no layout '%2' "
+                                                "(it has: %3)"),
+            scheme.name(), name, list));
     }
     if (name == "square") {
         out.domain = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
@@ -105,8 +111,10 @@ SurfaceMatrices surfaceMatrices(const LatticeScheme &scheme, const PatchLayout &
 {
     for (size_t i = 0; i < layout.maps.size(); ++i)
         if (!scheme.symmetricUnder(layout.maps[i].R))
-            throw InputError(scheme.name() + ": the mask is not symmetric under the turn of map "
-                             + std::to_string(i + 1) + " of the " + layout.name + " layout");
+            throw InputError(formatMessage(
+                coreTranslate("awb::schemes", "%1: the mask is not symmetric under the turn of "
+                                              "map %2 of the %3 layout"),
+                scheme.name(), i + 1, layout.name));
     // Start from the lattice points of the closed domain; close under the sub-nets' stencils.
     std::set<LatticePoint> net;
     for (int j = -2; j <= 2; ++j)
@@ -121,8 +129,10 @@ SurfaceMatrices surfaceMatrices(const LatticeScheme &scheme, const PatchLayout &
                 for (const auto &[beta, w] : scheme.stencil(f.R.apply(g) + f.t))
                     grew |= net.insert(beta).second;
         if (net.size() > 4096)
-            throw InputError(scheme.name() + ": the pieces of the " + layout.name
-                             + " layout are not determined by a finite net");
+            throw InputError(formatMessage(
+                coreTranslate("awb::schemes", "%1: the pieces of the %2 layout are not determined "
+                                              "by a finite net"),
+                scheme.name(), layout.name));
     }
     SurfaceMatrices out;
     out.net.assign(net.begin(), net.end());
@@ -145,15 +155,17 @@ std::vector<int> matchNet(const std::vector<LatticePoint> &net,
                           const std::vector<LatticePoint> &user, Lattice lattice)
 {
     if (user.size() != net.size())
-        throw InputError("the patch needs " + std::to_string(net.size())
-                         + " control points on its net, got " + std::to_string(user.size()));
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "the patch needs %1 control points on its net, got %2"),
+            net.size(), user.size()));
     std::map<LatticePoint, int> seen;
     for (size_t k = 0; k < user.size(); ++k) {
         const auto [it, fresh] = seen.emplace(user[k], int(k));
         if (!fresh)
-            throw InputError("lattice point " + str(user[k]) + " is given twice (points "
-                             + std::to_string(it->second + 1) + " and " + std::to_string(k + 1)
-                             + ")");
+            throw InputError(formatMessage(
+                coreTranslate("awb::schemes", "lattice point %1 is given twice (points %2 and "
+                                              "%3)"),
+                str(user[k]), it->second + 1, k + 1));
     }
     const LatticePoint offset = *std::min_element(user.begin(), user.end(), byRow)
                                 - *std::min_element(net.begin(), net.end(), byRow);
@@ -169,9 +181,13 @@ std::vector<int> matchNet(const std::vector<LatticePoint> &net,
             for (const LatticePoint &p : net)
                 if (!seen.count(p + offset))
                     missing += (missing.empty() ? "" : ", ") + str(p + offset);
-            throw InputError("lattice point " + str(user[k]) + " (point " + std::to_string(k + 1)
-                             + ") is not on the " + toString(lattice)
-                             + " net of the patch; missing: " + missing);
+            throw InputError(formatMessage(
+                lattice == Lattice::Square
+                    ? coreTranslate("awb::schemes", "lattice point %1 (point %2) is not on the "
+                                                    "square net of the patch; missing: %3")
+                    : coreTranslate("awb::schemes", "lattice point %1 (point %2) is not on the "
+                                                    "triangular net of the patch; missing: %3"),
+                str(user[k]), k + 1, missing));
         }
         order[k] = it->second;
     }
@@ -231,8 +247,9 @@ void buildFaces(LatticeMesh &mesh)
 LatticeMesh netMesh(Lattice lattice, const std::vector<LatticePoint> &at, const Mat &P)
 {
     if (Eigen::Index(at.size()) != P.rows())
-        throw InputError("the net has " + std::to_string(at.size()) + " lattice points but "
-                         + std::to_string(P.rows()) + " control points");
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "the net has %1 lattice points but %2 control points"),
+            at.size(), P.rows()));
     LatticeMesh mesh;
     mesh.lattice = lattice;
     mesh.at = at;
@@ -244,9 +261,11 @@ LatticeMesh netMesh(Lattice lattice, const std::vector<LatticePoint> &at, const 
 LatticeMesh refineMesh(const LatticeScheme &scheme, const LatticeMesh &mesh, int rounds)
 {
     if (rounds < 0 || rounds > 12)
-        throw InputError("refinement rounds must be from 0 to 12, got " + std::to_string(rounds));
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "refinement rounds must be from 0 to 12, got %1"),
+            rounds));
     if (mesh.level > 0 && mesh.scale != scheme.dilation())
-        throw InputError("the mesh was refined by another scheme");
+        throw InputError(coreTranslate("awb::schemes", "the mesh was refined by another scheme"));
     LatticeMesh cur = mesh;
     const int N = scheme.dilation();
     for (int r = 0; r < rounds; ++r) {

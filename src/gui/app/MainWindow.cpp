@@ -17,6 +17,7 @@
 #include "gui/views/RegularityChart.h"
 #include "gui/views/RegularityPanel.h"
 #include "gui/views/SpectrumView.h"
+#include "i18n/Translations.h"
 #include "gui/views/SurfaceView.h"
 #include "render/FigureFile.h"
 #include "model/FigureMetadata.h"
@@ -36,6 +37,7 @@
 #include <QGuiApplication>
 #include <QClipboard>
 #include <QAction>
+#include <QActionGroup>
 #include <QStyle>
 #include <QLayout>
 #include <QApplication>
@@ -74,6 +76,10 @@
 #include <QToolButton>
 #include <QTreeView>
 #include <QUndoView>
+
+#include <Eigen/Core>
+
+#include <algorithm>
 #include <cmath>
 
 // Resources of a static library are only registered when asked for (outside any namespace).
@@ -622,6 +628,7 @@ void MainWindow::createMenus()
     edit->addAction(action(QStringLiteral("actionCopyLatex")));
     edit->addSeparator();
     edit->addAction(action(QStringLiteral("actionPreferences")));
+    addLanguageMenu(edit);
 
     QMenu *itemMenu = menuBar()->addMenu(tr("&Item"));
     QMenu *add = itemMenu->addMenu(QIcon::fromTheme(QStringLiteral("list-add")), tr("&Add"));
@@ -1123,13 +1130,55 @@ void MainWindow::preferencesDialog()
     applyPreferences(p);
 }
 
+void MainWindow::addLanguageMenu(QMenu *edit)
+{
+    QMenu *menu = edit->addMenu(tr("&Language"));
+    menu->setObjectName(QStringLiteral("menuLanguage"));
+    auto *group = new QActionGroup(menu);
+    group->setExclusive(true);
+    QList<i18n::Language> entries{{QString(), tr("System Default")}};
+    entries += i18n::availableLanguages();
+    const QString saved = i18n::savedLanguage();
+    const bool known = std::any_of(entries.begin(), entries.end(),
+                                   [&](const i18n::Language &l) { return l.code == saved; });
+    for (const i18n::Language &language : entries) {
+        // Each language under its own name, so that anyone can find theirs.
+        QAction *a = menu->addAction(language.nativeName);
+        a->setObjectName(QStringLiteral("actionLanguage_")
+                         + (language.code.isEmpty() ? QStringLiteral("system") : language.code));
+        a->setCheckable(true);
+        a->setData(language.code);
+        a->setChecked(known ? language.code == saved : language.code.isEmpty());
+        group->addAction(a);
+        if (language.code.isEmpty())
+            menu->addSeparator();
+    }
+    connect(group, &QActionGroup::triggered, this, [this](QAction *a) {
+        const QString code = a->data().toString();
+        if (code == i18n::savedLanguage())
+            return;
+        i18n::saveLanguage(code);
+        m_messages->information(
+            this, tr("Language"),
+            tr("The language changes when Attractor Workbench is started again."));
+    });
+}
+
 void MainWindow::about()
 {
     m_messages->information(
         this, tr("About Attractor Workbench"),
         tr("Attractor Workbench %1\n\nSubdivision curves as attractors of iterated function "
            "systems: control points, subdivision matrices, spectra and figures.")
-            .arg(QStringLiteral(AWB_VERSION)));
+                .arg(QStringLiteral(AWB_VERSION))
+            + QStringLiteral("\n\n")
+            + tr("Built with Qt %1 (running on Qt %2), Eigen %3 and QCustomPlot %4.")
+                  .arg(QStringLiteral(QT_VERSION_STR), QString::fromLatin1(qVersion()),
+                       QStringLiteral("%1.%2.%3")
+                           .arg(EIGEN_WORLD_VERSION)
+                           .arg(EIGEN_MAJOR_VERSION)
+                           .arg(EIGEN_MINOR_VERSION),
+                       qcustomplotVersion()));
 }
 
 void MainWindow::addItem(const QString &type)

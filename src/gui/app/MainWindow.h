@@ -127,6 +127,9 @@ private:
     // Narrows the docks when they leave the central view less than half of the window.
     void shareWidthWithDocks();
     void preferencesDialog();
+    // Edit > Language: System Default, English and the translations, saved in the settings and
+    // applied at the next start.
+    void addLanguageMenu(QMenu *edit);
     void about();
     void addItem(const QString &type);
     // Add > Subdivision surface: one entry per scheme and layout.

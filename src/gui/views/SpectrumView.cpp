@@ -574,4 +574,6 @@ bool SpectrumView::exportPlot(const QString &fileName, const QSize &size, QStrin
     return ok;
 }
 
+QString qcustomplotVersion() { return QStringLiteral(QCUSTOMPLOT_VERSION_STR); }
+
 } // namespace awb

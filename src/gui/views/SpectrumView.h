@@ -98,4 +98,8 @@ private:
     bool m_inKeepAspect = false;
 };
 
+// The version of QCustomPlot the spectrum view was built with ("2.1.0"), for the About box
+// (keeps qcustomplot.h out of the other sources).
+QString qcustomplotVersion();
+
 } // namespace awb

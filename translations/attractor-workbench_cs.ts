@@ -1,0 +1,5595 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="cs_CZ" sourcelanguage="en">
+<context>
+    <name>ExportDialog</name>
+    <message>
+        <source>Export Figure</source>
+        <translation>Exportovat obrázek</translation>
+    </message>
+    <message>
+        <source>&amp;View:</source>
+        <translation>Pohle&amp;d:</translation>
+    </message>
+    <message>
+        <source>The view or figure to export.</source>
+        <translation>Pohled nebo obrázek, který se má exportovat.</translation>
+    </message>
+    <message>
+        <source>Attractor view</source>
+        <translation>Pohled atraktoru</translation>
+    </message>
+    <message>
+        <source>Spectrum plot</source>
+        <translation>Graf spektra</translation>
+    </message>
+    <message>
+        <source>Matrices</source>
+        <translation>Matice</translation>
+    </message>
+    <message>
+        <source>Analysis chart (current tab)</source>
+        <translation>Graf analýzy (aktuální karta)</translation>
+    </message>
+    <message>
+        <source>Figure sheet</source>
+        <translation>List s obrázkem</translation>
+    </message>
+    <message>
+        <source>&amp;File:</source>
+        <translation>&amp;Soubor:</translation>
+    </message>
+    <message>
+        <source>File to write; its suffix (.png, .svg or .pdf; .tex for the matrices as LaTeX) picks the format.</source>
+        <translation>Soubor k zápisu; jeho přípona (.png, .svg nebo .pdf; .tex pro matice v LaTeXu) určuje formát.</translation>
+    </message>
+    <message>
+        <source>Choose the file to write.</source>
+        <translation>Vyberte soubor k zápisu.</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Procházet…</translation>
+    </message>
+    <message>
+        <source>The suffix picks the format: .png, .svg or .pdf (the Matrices view also .tex: LaTeX bmatrix).</source>
+        <translation>Formát určuje přípona: .png, .svg nebo .pdf (u pohledu Matice také .tex: LaTeX bmatrix).</translation>
+    </message>
+    <message>
+        <source>&amp;Width:</source>
+        <translation>Šíř&amp;ka:</translation>
+    </message>
+    <message>
+        <source>Width of the figure in pixels (for SVG and PDF: pixel units at the resolution below).</source>
+        <translation>Šířka obrázku v pixelech (u SVG a PDF: pixelové jednotky při níže uvedeném rozlišení).</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>&amp;Height:</source>
+        <translation>&amp;Výška:</translation>
+    </message>
+    <message>
+        <source>Height of the figure in pixels (for SVG and PDF: pixel units at the resolution below).</source>
+        <translation>Výška obrázku v pixelech (u SVG a PDF: pixelové jednotky při níže uvedeném rozlišení).</translation>
+    </message>
+    <message>
+        <source>&amp;Resolution:</source>
+        <translation>&amp;Rozlišení:</translation>
+    </message>
+    <message>
+        <source>Resolution in dots per inch (dpi).</source>
+        <translation>Rozlišení v bodech na palec (dpi).</translation>
+    </message>
+    <message>
+        <source> dpi</source>
+        <translation> dpi</translation>
+    </message>
+    <message>
+        <source>Show:</source>
+        <translation>Zobrazit:</translation>
+    </message>
+    <message>
+        <source>Draw the coordinate grid and its labels (when the view shows them).</source>
+        <translation>Vykreslit souřadnicovou mřížku a její popisky (pokud je pohled zobrazuje).</translation>
+    </message>
+    <message>
+        <source>&amp;Grid</source>
+        <translation>&amp;Mřížka</translation>
+    </message>
+    <message>
+        <source>Draw the control polygons, the start set and their points and labels.</source>
+        <translation>Vykreslit řídicí polygony, počáteční množinu a jejich body a popisky.</translation>
+    </message>
+    <message>
+        <source>&amp;Control points</source>
+        <translation>Řídi&amp;cí body</translation>
+    </message>
+    <message>
+        <source>Frame the attractor view&apos;s content tightly: the height follows the content&apos;s proportions (the width is kept).</source>
+        <translation>Těsně ohraničit obsah pohledu atraktoru: výška se řídí proporcemi obsahu (šířka zůstane zachována).</translation>
+    </message>
+    <message>
+        <source>C&amp;rop to contents</source>
+        <translation>Oříz&amp;nout na obsah</translation>
+    </message>
+    <message>
+        <source>F&amp;ont:</source>
+        <translation>Písm&amp;o:</translation>
+    </message>
+    <message>
+        <source>Font of the labels and of the figure sheet&apos;s text.</source>
+        <translation>Písmo popisků a textu listu s obrázkem.</translation>
+    </message>
+    <message>
+        <source>Label size in points as the figure is shown at its resolution (0: as on screen).</source>
+        <translation>Velikost popisků v bodech při zobrazení obrázku v jeho rozlišení (0: jako na obrazovce).</translation>
+    </message>
+    <message>
+        <source>as on screen</source>
+        <translation>jako na obrazovce</translation>
+    </message>
+    <message>
+        <source> pt</source>
+        <translation> pt</translation>
+    </message>
+</context>
+<context>
+    <name>PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>Předvolby</translation>
+    </message>
+    <message>
+        <source>Default &amp;depth of new items:</source>
+        <translation>Výchozí &amp;hloubka nových položek:</translation>
+    </message>
+    <message>
+        <source>Deterministic depth given to new items.</source>
+        <translation>Deterministická hloubka, kterou dostanou nové položky.</translation>
+    </message>
+    <message>
+        <source>&amp;Maximum drawn depth:</source>
+        <translation>&amp;Maximální vykreslovaná hloubka:</translation>
+    </message>
+    <message>
+        <source>Draw at most this depth, whatever the item asks for.</source>
+        <translation>Vykreslovat nejvýše do této hloubky bez ohledu na to, co požaduje položka.</translation>
+    </message>
+    <message>
+        <source>no limit</source>
+        <translation>bez omezení</translation>
+    </message>
+    <message>
+        <source>Map &amp;colours:</source>
+        <translation>&amp;Barvy zobrazení:</translation>
+    </message>
+    <message>
+        <source>Colour of map 1</source>
+        <translation>Barva zobrazení 1</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>automaticky</translation>
+    </message>
+    <message>
+        <source>Colour of map 2</source>
+        <translation>Barva zobrazení 2</translation>
+    </message>
+    <message>
+        <source>Colour of map 3</source>
+        <translation>Barva zobrazení 3</translation>
+    </message>
+    <message>
+        <source>Colour of map 4</source>
+        <translation>Barva zobrazení 4</translation>
+    </message>
+    <message>
+        <source>Colour of map 5</source>
+        <translation>Barva zobrazení 5</translation>
+    </message>
+    <message>
+        <source>Colour of map 6</source>
+        <translation>Barva zobrazení 6</translation>
+    </message>
+    <message>
+        <source>Use the views&apos; default colours for all maps.</source>
+        <translation>Použít pro všechna zobrazení výchozí barvy pohledů.</translation>
+    </message>
+    <message>
+        <source>Defaults</source>
+        <translation>Výchozí</translation>
+    </message>
+    <message>
+        <source>&amp;Autosave interval:</source>
+        <translation>Interval &amp;automatického ukládání:</translation>
+    </message>
+    <message>
+        <source>Time between automatic saves of a recovery copy of the project, in seconds.</source>
+        <translation>Doba mezi automatickými uloženími záložní kopie projektu, v sekundách.</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>%1, Hölder regularity r in [%2, %3] (width %4)</source>
+        <translation>%1, Hölderovská regularita r v [%2, %3] (šířka %4)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AddressPanel</name>
+    <message>
+        <source>Address 0,1,1 or interval [0.25, 0.5]</source>
+        <translation>Adresa 0,1,1 nebo interval [0.25, 0.5]</translation>
+    </message>
+    <message>
+        <source>An address selects the sub-copy f_w(A) = f_w1(f_w2(…(A))): map numbers from 0, the outermost map first. A subdivision curve also takes a parameter interval [t0, t1]. Enter selects, an empty field clears.</source>
+        <translation>Adresa vybírá dílčí kopii f_w(A) = f_w1(f_w2(…(A))): zobrazení se číslují od 0, jako první se uvádí vnější zobrazení. Subdivizní křivka přijímá také interval parametru [t0, t1]. Enter výběr provede, prázdné pole výběr zruší.</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Vymazat</translation>
+    </message>
+    <message>
+        <source>Click the attractor to pick an address; click a symbol of it to select that prefix.</source>
+        <translation>Kliknutím na atraktor vyberete adresu; kliknutím na některý její symbol vyberete příslušný prefix.</translation>
+    </message>
+    <message>
+        <source>address %1</source>
+        <translation>adresa %1</translation>
+    </message>
+    <message>
+        <source>, t ≈ %1</source>
+        <translation>, t ≈ %1</translation>
+    </message>
+    <message>
+        <source>Clicked: %1&lt;br&gt;&lt;small&gt;click a symbol to select the prefix up to it&lt;/small&gt;</source>
+        <translation>Kliknuto: %1&lt;br&gt;&lt;small&gt;kliknutím na symbol vyberete prefix až po něj&lt;/small&gt;</translation>
+    </message>
+    <message>
+        <source>The item drawn has no addresses to select (only items drawn by one IFS in the plane have).</source>
+        <translation>Vykreslená položka nemá žádné adresy k výběru (mají je jen položky kreslené jedním IFS v rovině).</translation>
+    </message>
+    <message>
+        <source>a parameter interval selects on a subdivision curve with a real parameter; this item has none</source>
+        <translation>interval parametru vybírá úsek subdivizní křivky s reálným parametrem; tato položka takový parametr nemá</translation>
+    </message>
+    <message>
+        <source>t in %1</source>
+        <translation>t v %1</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;t in %1&lt;/b&gt; (%2)&lt;br&gt;Pieces inside it (addresses up to 8 symbols): %3</source>
+        <translation>&lt;b&gt;t v %1&lt;/b&gt; (%2)&lt;br&gt;Části uvnitř (adresy do 8 symbolů): %3</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>žádné</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;The control polygons of the first %1 pieces are drawn.</source>
+        <translation>&lt;br&gt;Jsou vykresleny řídicí polygony prvních %1 částí.</translation>
+    </message>
+    <message>
+        <source>w = %1</source>
+        <translation>w = %1</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;w = %1&lt;/b&gt;: the sub-copy f_w(A) = %2(A)</source>
+        <translation>&lt;b&gt;w = %1&lt;/b&gt;: dílčí kopie f_w(A) = %2(A)</translation>
+    </message>
+    <message>
+        <source>   t in [%1, %2]</source>
+        <translation>   t v [%1, %2]</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;t in [%1, %2] (%3)</source>
+        <translation>&lt;br&gt;t v [%1, %2] (%3)</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Control points S_w P = %1 (symbol i is S_(i+1)):&lt;br&gt;%2</source>
+        <translation>&lt;br&gt;Řídicí body S_w P = %1 (symbolu i odpovídá S_(i+1)):&lt;br&gt;%2</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AlgorithmSpec</name>
+    <message>
+        <source>the depth cannot be negative, got %1</source>
+        <translation>hloubka nemůže být záporná, zadáno %1</translation>
+    </message>
+    <message>
+        <source>depth %1 is absurd: at most %2 is allowed</source>
+        <translation>hloubka %1 je nesmyslná: povoleno je nejvýše %2</translation>
+    </message>
+    <message>
+        <source>depth %1 with %2 maps makes %3 images of the start set, more than 2^31; use a smaller depth</source>
+        <translation>hloubka %1 s %2 zobrazeními dává %3 obrazů počáteční množiny, více než 2^31; použijte menší hloubku</translation>
+    </message>
+    <message>
+        <source>the sample count must be between 1 and 2^31, got %1</source>
+        <translation>počet vzorků musí být mezi 1 a 2^31, zadáno %1</translation>
+    </message>
+    <message>
+        <source>the seed must be between 0 and 2^53 - 1, got %1</source>
+        <translation>semínko generátoru musí být mezi 0 a 2^53 - 1, zadáno %1</translation>
+    </message>
+    <message>
+        <source>probability %1 must be a finite number &gt;= 0</source>
+        <translation>pravděpodobnost %1 musí být konečné číslo &gt;= 0</translation>
+    </message>
+    <message>
+        <source>the probabilities sum to 0</source>
+        <translation>součet pravděpodobností je 0</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AnalysisCharts</name>
+    <message>
+        <source>Distance to the exact curve</source>
+        <translation>Vzdálenost od přesné křivky</translation>
+    </message>
+    <message>
+        <source>Distance</source>
+        <translation>Vzdálenost</translation>
+    </message>
+    <message>
+        <source>Control polygon length</source>
+        <translation>Délka řídicího polygonu</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Délka</translation>
+    </message>
+    <message>
+        <source>Box counting</source>
+        <translation>Počítání krabic</translation>
+    </message>
+    <message>
+        <source>Eigenvalue moduli</source>
+        <translation>Moduly vlastních čísel</translation>
+    </message>
+    <message>
+        <source>|λ| per map</source>
+        <translation>|λ| pro jednotlivá zobrazení</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;depth k = %2&lt;br&gt;d&lt;sub&gt;H&lt;/sub&gt; = %3</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;hloubka k = %2&lt;br&gt;d&lt;sub&gt;H&lt;/sub&gt; = %3</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;step k = %2&lt;br&gt;length = %3</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;krok k = %2&lt;br&gt;délka = %3</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;log(1/ε) = %2 (ε = %3)&lt;br&gt;log N(ε) = %4 (N = %5)</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;log(1/ε) = %2 (ε = %3)&lt;br&gt;log N(ε) = %4 (N = %5)</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;|λ| = %2</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;|λ| = %2</translation>
+    </message>
+    <message>
+        <source>∝ %1^k</source>
+        <translation>∝ %1^k</translation>
+    </message>
+    <message>
+        <source>depth k</source>
+        <translation>hloubka k</translation>
+    </message>
+    <message>
+        <source>Hausdorff distance</source>
+        <translation>Hausdorffova vzdálenost</translation>
+    </message>
+    <message>
+        <source>control polygon</source>
+        <translation>řídicí polygon</translation>
+    </message>
+    <message>
+        <source>exact curve</source>
+        <translation>přesná křivka</translation>
+    </message>
+    <message>
+        <source>subdivision step k</source>
+        <translation>krok subdivize k</translation>
+    </message>
+    <message>
+        <source>length</source>
+        <translation>délka</translation>
+    </message>
+    <message>
+        <source>Box counting: dimension D = %1, R² = %2</source>
+        <translation>Počítání krabic: dimenze D = %1, R² = %2</translation>
+    </message>
+    <message>
+        <source>Box counting: no fit (%1)</source>
+        <translation>Počítání krabic: bez proložení (%1)</translation>
+    </message>
+    <message>
+        <source>not fitted</source>
+        <translation>neproloženo</translation>
+    </message>
+    <message>
+        <source>fitted levels</source>
+        <translation>proložené úrovně</translation>
+    </message>
+    <message>
+        <source>fit: log N = %1 log(1/ε) + %2</source>
+        <translation>proložení: log N = %1 log(1/ε) + %2</translation>
+    </message>
+    <message>
+        <source>log(1/ε)</source>
+        <translation>log(1/ε)</translation>
+    </message>
+    <message>
+        <source>log N(ε)</source>
+        <translation>log N(ε)</translation>
+    </message>
+    <message>
+        <source>map</source>
+        <translation>zobrazení</translation>
+    </message>
+    <message>
+        <source>|λ| = 1</source>
+        <translation>|λ| = 1</translation>
+    </message>
+    <message>
+        <source>|λ|</source>
+        <translation>|λ|</translation>
+    </message>
+    <message>
+        <source>No exact curve known for this item</source>
+        <translation>Pro tuto položku není známa přesná křivka</translation>
+    </message>
+    <message>
+        <source>The Hausdorff distance is measured against an exact curve: B-spline, Bézier and complex de Casteljau curves have one.</source>
+        <translation>Hausdorffova vzdálenost se měří vůči přesné křivce: mají ji B-spline křivky, Bézierovy křivky a komplexní de Casteljauovy křivky.</translation>
+    </message>
+</context>
+<context>
+    <name>awb::Animation</name>
+    <message>
+        <source>expected a duration in seconds above 0 and at most %1</source>
+        <translation>očekávána délka v sekundách větší než 0 a nejvýše %1</translation>
+    </message>
+    <message>
+        <source>expected between 1 and %1 frames per second</source>
+        <translation>očekáváno 1 až %1 snímků za sekundu</translation>
+    </message>
+    <message>
+        <source>%1 s at %2 frames per second makes more than %3 frames</source>
+        <translation>%1 s při %2 snímcích za sekundu dává více než %3 snímků</translation>
+    </message>
+    <message>
+        <source>names no parameter</source>
+        <translation>neurčuje žádný parametr</translation>
+    </message>
+    <message>
+        <source>%1 is driven by an earlier track already</source>
+        <translation>%1 už je řízen dřívější stopou</translation>
+    </message>
+    <message>
+        <source>needs at least one key</source>
+        <translation>vyžaduje alespoň jeden klíč</translation>
+    </message>
+    <message>
+        <source>expected a time between 0 and the duration, %1 s</source>
+        <translation>očekáván čas mezi 0 a délkou animace, %1 s</translation>
+    </message>
+    <message>
+        <source>key times must increase (%1 s follows %2 s)</source>
+        <translation>časy klíčů musí narůstat (%1 s následuje po %2 s)</translation>
+    </message>
+    <message>
+        <source>expected %1 numbers, as the first key</source>
+        <translation>očekávaný počet čísel je %1, stejně jako u prvního klíče</translation>
+    </message>
+    <message>
+        <source>not a finite number</source>
+        <translation>není konečné číslo</translation>
+    </message>
+    <message>
+        <source>a circle turns a point or a complex value, not one number</source>
+        <translation>kružnice otáčí bodem nebo komplexní hodnotou, ne jedním číslem</translation>
+    </message>
+    <message>
+        <source>expected [x, y]</source>
+        <translation>očekáváno [x, y]</translation>
+    </message>
+    <message>
+        <source>expected a number of turns between -1000 and 1000</source>
+        <translation>očekáván počet otáček mezi -1000 a 1000</translation>
+    </message>
+    <message>
+        <source>Probabilities</source>
+        <translation>Pravděpodobnosti</translation>
+    </message>
+    <message>
+        <source>Points %1, point %2</source>
+        <translation>Sada bodů %1, bod %2</translation>
+    </message>
+    <message>
+        <source>Control point %1</source>
+        <translation>Řídicí bod %1</translation>
+    </message>
+    <message>
+        <source>%1 has no probabilities</source>
+        <translation>%1 nemá pravděpodobnosti</translation>
+    </message>
+    <message>
+        <source>%1 has no control point %2 in point set %3</source>
+        <translation>%1 nemá řídicí bod %2 v sadě bodů %3</translation>
+    </message>
+    <message>
+        <source>%1 is not a number that can be animated</source>
+        <translation>%1 není číslo, které lze animovat</translation>
+    </message>
+    <message>
+        <source>%1 has no parameter %2 (now)</source>
+        <translation>%1 (nyní) nemá parametr %2</translation>
+    </message>
+    <message>
+        <source>no such control point</source>
+        <translation>takový řídicí bod neexistuje</translation>
+    </message>
+    <message>
+        <source>the point was refused</source>
+        <translation>bod byl odmítnut</translation>
+    </message>
+    <message>
+        <source>no such parameter now</source>
+        <translation>takový parametr nyní neexistuje</translation>
+    </message>
+    <message>
+        <source>a complex value needs 2 numbers</source>
+        <translation>komplexní hodnota vyžaduje 2 čísla</translation>
+    </message>
+    <message>
+        <source>%1 at %2 s: %3</source>
+        <translation>%1 v čase %2 s: %3</translation>
+    </message>
+    <message>
+        <source>the value was refused</source>
+        <translation>hodnota byla odmítnuta</translation>
+    </message>
+    <message>
+        <source>%1 has %2 coordinates, the keys %3</source>
+        <translation>%1 má souřadnic: %2, klíče: %3</translation>
+    </message>
+    <message>
+        <source>p = (%1)</source>
+        <translation>p = (%1)</translation>
+    </message>
+    <message>
+        <source>t = %1 s: %2</source>
+        <translation>t = %1 s: %2</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>chybí</translation>
+    </message>
+    <message>
+        <source>expected an array of tracks</source>
+        <translation>očekáváno pole stop</translation>
+    </message>
+    <message>
+        <source>expected an object</source>
+        <translation>očekáván objekt</translation>
+    </message>
+    <message>
+        <source>expected an array of keys</source>
+        <translation>očekáváno pole klíčů</translation>
+    </message>
+    <message>
+        <source>expected an object {&quot;time&quot;, &quot;value&quot;}</source>
+        <translation>očekáván objekt {&quot;time&quot;, &quot;value&quot;}</translation>
+    </message>
+    <message>
+        <source>unknown field of a key</source>
+        <translation>neznámé pole klíče</translation>
+    </message>
+    <message>
+        <source>unknown field of a track</source>
+        <translation>neznámé pole stopy</translation>
+    </message>
+    <message>
+        <source>unknown field of an animation</source>
+        <translation>neznámé pole animace</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AnimationPanel</name>
+    <message>
+        <source>Play / pause the animation (Ctrl+Space)</source>
+        <translation>Přehrát / pozastavit animaci (Ctrl+Space)</translation>
+    </message>
+    <message>
+        <source>Stop: the views show the item itself again</source>
+        <translation>Zastavit: pohledy opět zobrazí samotnou položku</translation>
+    </message>
+    <message>
+        <source>Time: drag to see the frames (the views follow)</source>
+        <translation>Čas: tažením procházíte snímky (pohledy je sledují)</translation>
+    </message>
+    <message>
+        <source>Time and frame number</source>
+        <translation>Čas a číslo snímku</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>Opakovat</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Přehrát</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Zastavit</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Duration of the animation</source>
+        <translation>Délka animace</translation>
+    </message>
+    <message>
+        <source>Frames per second</source>
+        <translation>Snímky za sekundu</translation>
+    </message>
+    <message>
+        <source> fps</source>
+        <translation> fps</translation>
+    </message>
+    <message>
+        <source>Parameter / key time (s)</source>
+        <translation>Parametr / čas klíče (s)</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Hodnota</translation>
+    </message>
+    <message>
+        <source>Double-click a key&apos;s time or value to edit it</source>
+        <translation>Čas nebo hodnotu klíče upravíte dvojitým kliknutím</translation>
+    </message>
+    <message>
+        <source>The parameter, probabilities or control point to key</source>
+        <translation>Parametr, pravděpodobnosti nebo řídicí bod, pro který se nastaví klíč</translation>
+    </message>
+    <message>
+        <source>Set Key</source>
+        <translation>Nastavit klíč</translation>
+    </message>
+    <message>
+        <source>Store the item&apos;s present value of the parameter at the time shown (replaces a key at that time)</source>
+        <translation>Uloží současnou hodnotu parametru položky v zobrazeném čase (nahradí klíč v tomto čase)</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Odstranit</translation>
+    </message>
+    <message>
+        <source>Remove the selected key, or the selected track with its keys</source>
+        <translation>Odstraní vybraný klíč nebo vybranou stopu i s jejími klíči</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>Lineární</translation>
+    </message>
+    <message>
+        <source>Smooth (ease in and out)</source>
+        <translation>Hladká (plynulý náběh a doběh)</translation>
+    </message>
+    <message>
+        <source>Through the keys</source>
+        <translation>Přes klíče</translation>
+    </message>
+    <message>
+        <source>Circle about a centre</source>
+        <translation>Kružnice kolem středu</translation>
+    </message>
+    <message>
+        <source>x, y</source>
+        <translation>x, y</translation>
+    </message>
+    <message>
+        <source>Interpolation</source>
+        <translation>Interpolace</translation>
+    </message>
+    <message>
+        <source>Path</source>
+        <translation>Dráha</translation>
+    </message>
+    <message>
+        <source>Centre</source>
+        <translation>Střed</translation>
+    </message>
+    <message>
+        <source>Turns</source>
+        <translation>Otáčky</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pozastavit</translation>
+    </message>
+    <message>
+        <source>The views show the item itself.</source>
+        <translation>Pohledy zobrazují samotnou položku.</translation>
+    </message>
+    <message>
+        <source>%1 s · %2/%3</source>
+        <translation>%1 s · %2/%3</translation>
+    </message>
+    <message>
+        <source>Frame at %1 s: %2</source>
+        <translation>Snímek v čase %1 s: %2</translation>
+    </message>
+    <message>
+        <source>The views show the frame at %1 s (not editable); Stop returns to the item.</source>
+        <translation>Pohledy zobrazují snímek v čase %1 s (nelze upravovat); tlačítko Zastavit vrátí zobrazení položky.</translation>
+    </message>
+    <message>
+        <source>No item is selected.</source>
+        <translation>Není vybrána žádná položka.</translation>
+    </message>
+    <message>
+        <source>Select a key or a track to remove.</source>
+        <translation>Vyberte klíč nebo stopu, které chcete odstranit.</translation>
+    </message>
+    <message>
+        <source>inactive: %1 has no such input now</source>
+        <translation>neaktivní: %1 nyní takový vstup nemá</translation>
+    </message>
+    <message>
+        <source>circle about (%1), %2 turns</source>
+        <translation>kružnice kolem (%1), otáček: %2</translation>
+    </message>
+    <message>
+        <source>The item does not have %1 in its present state (another scheme, fewer points): the track is kept and skipped.</source>
+        <translation>Položka ve svém současném stavu nemá %1 (jiné schéma, méně bodů): stopa se zachová, ale přeskočí se.</translation>
+    </message>
+    <message>
+        <source>Select an item to animate its parameters.</source>
+        <translation>Vyberte položku, jejíž parametry chcete animovat.</translation>
+    </message>
+    <message>
+        <source>No keys yet: set a value in Properties, choose it here and press Set Key; then move the slider, change the value and key it again.</source>
+        <translation>Zatím žádné klíče: nastavte hodnotu ve Vlastnostech, vyberte ji zde a stiskněte Nastavit klíč; pak posuňte posuvník, změňte hodnotu a nastavte další klíč.</translation>
+    </message>
+    <message>
+        <source>%1 has no numeric parameters to animate.</source>
+        <translation>%1 nemá žádné číselné parametry k animaci.</translation>
+    </message>
+    <message>
+        <source>%1 tracks, %2 frames. Play or drag the slider to preview.</source>
+        <translation>Stopy: %1, snímky: %2. Náhled zobrazíte přehráním nebo tažením posuvníku.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a time in seconds</source>
+        <translation>„%1“ není čas v sekundách</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: expected %2 numbers</source>
+        <translation>„%1“: očekávaný počet čísel je %2</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AttractorItem</name>
+    <message>
+        <source>Change start set of %1</source>
+        <translation>Změnit počáteční množinu položky %1</translation>
+    </message>
+    <message>
+        <source>Change algorithm of %1</source>
+        <translation>Změnit algoritmus položky %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n control points of %1</source>
+        <translation>
+            <numerusform>Odstranit %n řídicí bod položky %1</numerusform>
+            <numerusform>Odstranit %n řídicí body položky %1</numerusform>
+            <numerusform>Odstranit %n řídicích bodů položky %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>map %1 is not finite: the control points&apos; coordinates overflow in the lifted map P⁻¹ S_i P (the largest is %2)</source>
+        <translation>zobrazení %1 není konečné: souřadnice řídicích bodů přetékají ve zdviženém zobrazení P⁻¹ S_i P (největší je %2)</translation>
+    </message>
+    <message>
+        <source>the start set is not finite in the IFS space: the lifting overflows (the largest control point coordinate is %1)</source>
+        <translation>počáteční množina není v prostoru IFS konečná: zdvižení přetéká (největší souřadnice řídicího bodu je %1)</translation>
+    </message>
+    <message>
+        <source>lifted start points need an invertible lifting: %1</source>
+        <translation>zdvižené počáteční body vyžadují invertibilní zdvižení: %1</translation>
+    </message>
+    <message>
+        <source>a lifted start point of this item has %1 coordinates (x, y and the %2 extra coordinates of the lifting, the homogeneous 1 implied); point %3 has %4</source>
+        <translation>zdvižený počáteční bod této položky má mít počet souřadnic %1 (x, y a dodatečné souřadnice zdvižení v počtu %2, homogenní 1 se doplní); bod %3 jich má %4</translation>
+    </message>
+    <message>
+        <source>%1 points; an item takes at most %2 (its subdivision matrices would be %1 x %1)</source>
+        <translation>počet bodů %1; položka jich připouští nejvýše %2 (její subdivizní matice by měly rozměr %1 x %1)</translation>
+    </message>
+    <message>
+        <source>point set %1 has %2 points; an item takes at most %3 per set</source>
+        <translation>sada bodů %1 má %2 bodů; položka připouští nejvýše %3 bodů v jedné sadě</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AttractorRenderer</name>
+    <message>
+        <source>Cannot draw the attractor: %1</source>
+        <translation>Atraktor nelze vykreslit: %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AttractorView</name>
+    <message>
+        <source>Rendering… %1 %</source>
+        <translation>Vykreslování… %1 %</translation>
+    </message>
+    <message>
+        <source>Rendering cancelled at %1 % — press F5 to render again</source>
+        <translation>Vykreslování zrušeno na %1 % — klávesou F5 spustíte vykreslení znovu</translation>
+    </message>
+    <message>
+        <source>F^%1(X₀) has too many images to draw as vectors</source>
+        <translation>F^%1(X₀) má příliš mnoho obrazů na vykreslení ve vektorové podobě</translation>
+    </message>
+</context>
+<context>
+    <name>awb::BcifsJunctionItem</name>
+    <message>
+        <source>Junction</source>
+        <translation>Napojení</translation>
+    </message>
+    <message>
+        <source>Change junction of %1</source>
+        <translation>Změnit napojení položky %1</translation>
+    </message>
+    <message>
+        <source>e = %1, p = %2 (column sums). %3</source>
+        <translation>e = %1, p = %2 (součty sloupců). %3</translation>
+    </message>
+    <message>
+        <source>a junction is drawn by an automaton, not by one lifted IFS</source>
+        <translation>napojení je kresleno automatem, ne jedním zdviženým IFS</translation>
+    </message>
+    <message>
+        <source>Cubic–quadratic (003 §4.1)</source>
+        <translation>Kubicko-kvadratické (003 §4.1)</translation>
+    </message>
+    <message>
+        <source>Refined, with handles (003 §5)</source>
+        <translation>Zjemněné, s úchyty (003 §5)</translation>
+    </message>
+    <message>
+        <source>Last column (a, b, c, d, e) of T^l; e = 1 − a − b − c − d (003 §4.1)</source>
+        <translation>Poslední sloupec (a, b, c, d, e) matice T^l; e = 1 − a − b − c − d (003 §4.1)</translation>
+    </message>
+    <message>
+        <source>First column (k, l, m, n, p) of T^r; p = 1 − k − l − m − n (003 §4.1)</source>
+        <translation>První sloupec (k, l, m, n, p) matice T^r; p = 1 − k − l − m − n (003 §4.1)</translation>
+    </message>
+    <message>
+        <source>Left eigenvalue j</source>
+        <translation>Levé vlastní číslo j</translation>
+    </message>
+    <message>
+        <source>Tangent eigenvalue of T^il (003 §5)</source>
+        <translation>Tečné vlastní číslo matice T^il (003 §5)</translation>
+    </message>
+    <message>
+        <source>Right eigenvalue r</source>
+        <translation>Pravé vlastní číslo r</translation>
+    </message>
+    <message>
+        <source>Tangent eigenvalue of T^ir (003 §5)</source>
+        <translation>Tečné vlastní číslo matice T^ir (003 §5)</translation>
+    </message>
+    <message>
+        <source>BCIFS junction curve</source>
+        <translation>Křivka napojení BCIFS</translation>
+    </message>
+</context>
+<context>
+    <name>awb::BezierUnionItem</name>
+    <message>
+        <source>Bézier union</source>
+        <translation>Sjednocení Bézierových křivek</translation>
+    </message>
+    <message>
+        <source>%1 split parameters for %2 curves</source>
+        <translation>počet parametrů dělení (%1) neodpovídá počtu křivek (%2)</translation>
+    </message>
+    <message>
+        <source>Change Bézier union %1</source>
+        <translation>Změnit sjednocení Bézierových křivek %1</translation>
+    </message>
+    <message>
+        <source>curve %1: %2</source>
+        <translation>křivka %1: %2</translation>
+    </message>
+    <message>
+        <source>curves drawn in the lifted space of 000 §2: %1</source>
+        <translation>křivky kreslené ve zdviženém prostoru podle 000 §2: %1</translation>
+    </message>
+    <message>
+        <source>every composition of %1 maps contracts (factor %2): the dusty fractal of 002 §6 is the unique attractor</source>
+        <translation>každé složení %1 zobrazení je kontrakce (koeficient %2): prachový fraktál z 002 §6 je jediný atraktor</translation>
+    </message>
+    <message>
+        <source>no contraction was proven (best bound %1 at length %2): the picture may not be an attractor</source>
+        <translation>kontraktivita nebyla prokázána (nejlepší odhad %1 pro délku %2): obrázek nemusí být atraktorem</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>chybí</translation>
+    </message>
+    <message>
+        <source>expected a non-empty array of curves {&quot;control_points&quot;: [...], &quot;u&quot;: number}</source>
+        <translation>očekáváno neprázdné pole křivek {&quot;control_points&quot;: [...], &quot;u&quot;: číslo}</translation>
+    </message>
+    <message>
+        <source>expected an object with &quot;control_points&quot; and &quot;u&quot;</source>
+        <translation>očekáván objekt s &quot;control_points&quot; a &quot;u&quot;</translation>
+    </message>
+    <message>
+        <source>Union</source>
+        <translation>Sjednocení</translation>
+    </message>
+    <message>
+        <source>Exact union (block IFS, 000 §2.2)</source>
+        <translation>Přesné sjednocení (blokový IFS, 000 §2.2)</translation>
+    </message>
+    <message>
+        <source>All maps together (dusty fractal, 002 §6)</source>
+        <translation>Všechna zobrazení dohromady (prachový fraktál, 002 §6)</translation>
+    </message>
+    <message>
+        <source>Split parameter u</source>
+        <translation>Parametr dělení u</translation>
+    </message>
+    <message>
+        <source>Curve %1</source>
+        <translation>Křivka %1</translation>
+    </message>
+    <message>
+        <source>de Casteljau split at u, 0 &lt; u &lt; 1 (002 eqs. (9)-(10)); the curve is the same for every u, the IFS is not</source>
+        <translation>de Casteljauovo dělení v bodě u, 0 &lt; u &lt; 1 (002 eqs. (9)-(10)); křivka je pro každé u stejná, IFS nikoli</translation>
+    </message>
+    <message>
+        <source>Union of Bézier curves</source>
+        <translation>Sjednocení Bézierových křivek</translation>
+    </message>
+</context>
+<context>
+    <name>awb::BezierUnionSpec</name>
+    <message>
+        <source>a union needs at least one curve</source>
+        <translation>sjednocení vyžaduje alespoň jednu křivku</translation>
+    </message>
+    <message>
+        <source>the split parameter u = %1 must satisfy 0 &lt; u &lt; 1 (002 §3)</source>
+        <translation>parametr dělení u = %1 musí splňovat 0 &lt; u &lt; 1 (002 §3)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::CifsItem</name>
+    <message>
+        <source>Fern of gaskets</source>
+        <translation>Kapradina ze Sierpińského trojúhelníků</translation>
+    </message>
+    <message>
+        <source>Change automaton of %1</source>
+        <translation>Změnit automat položky %1</translation>
+    </message>
+    <message>
+        <source>the frame needs exactly 3 points, got %1</source>
+        <translation>rámec vyžaduje přesně 3 body, zadáno %1</translation>
+    </message>
+    <message>
+        <source>a controlled IFS has no single lifted IFS</source>
+        <translation>řízený IFS nemá jediný zdvižený IFS</translation>
+    </message>
+    <message>
+        <source>Arc T%1 of the fern leads into the Sierpiński state (003 §2.2, Fig. 4).</source>
+        <translation>Hrana T%1 kapradiny vede do Sierpińského stavu (003 §2.2, Fig. 4).</translation>
+    </message>
+    <message>
+        <source>Automaton</source>
+        <translation>Automat</translation>
+    </message>
+    <message>
+        <source>Redirected arc</source>
+        <translation>Přesměrovaná hrana</translation>
+    </message>
+    <message>
+        <source>The fern map (0 stem, 1 main frond, 2 left, 3 right leaflet) whose arc leads into the Sierpiński state (003 Fig. 4)</source>
+        <translation>Zobrazení kapradiny (0 stonek, 1 hlavní list, 2 levý, 3 pravý lístek), jehož hrana vede do Sierpińského stavu (003 Fig. 4)</translation>
+    </message>
+    <message>
+        <source>Drawn state</source>
+        <translation>Kreslený stav</translation>
+    </message>
+    <message>
+        <source>The state whose attractor is drawn</source>
+        <translation>Stav, jehož atraktor se kreslí</translation>
+    </message>
+    <message>
+        <source>Controlled IFS</source>
+        <translation>Řízený IFS</translation>
+    </message>
+</context>
+<context>
+    <name>awb::CifsSpec</name>
+    <message>
+        <source>the redirected fern arc must be 0 … 3 (T0 … T3), got %1</source>
+        <translation>přesměrovaná hrana kapradiny musí být 0 … 3 (T0 … T3), zadáno %1</translation>
+    </message>
+    <message>
+        <source>no state &quot;%1&quot;; the states are &quot;%2&quot;</source>
+        <translation>stav „%1“ neexistuje; stavy jsou „%2“</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ComplexBezierItem</name>
+    <message>
+        <source>Complex Bézier</source>
+        <translation>Komplexní Bézierova křivka</translation>
+    </message>
+    <message>
+        <source>the parameter t must be a finite complex number</source>
+        <translation>parametr t musí být konečné komplexní číslo</translation>
+    </message>
+    <message>
+        <source>Change t of %1</source>
+        <translation>Změnit t položky %1</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>chybí</translation>
+    </message>
+    <message>
+        <source>expected [re, im]</source>
+        <translation>očekáváno [re, im]</translation>
+    </message>
+    <message>
+        <source>Split parameter t</source>
+        <translation>Parametr dělení t</translation>
+    </message>
+    <message>
+        <source>Curve</source>
+        <translation>Křivka</translation>
+    </message>
+    <message>
+        <source>de Casteljau split at a complex t; inside both discs |t| &lt; 1 and |1 − t| &lt; 1 the curve is a fractal (004 §3.7, Fig. 3.3)</source>
+        <translation>de Casteljauovo dělení v komplexním t; uvnitř obou kruhů |t| &lt; 1 a |1 − t| &lt; 1 je křivka fraktál (004 §3.7, Fig. 3.3)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a valid value for %2</source>
+        <translation>„%1“ není platná hodnota pro %2</translation>
+    </message>
+    <message>
+        <source>Complex Bézier curve</source>
+        <translation>Komplexní Bézierova křivka</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ComplexPlanePicker</name>
+    <message>
+        <source>Drag t in the complex plane. The attractor exists inside the lens where |t| &lt; 1 and |1 − t| &lt; 1 (both maps contract, 004 Fig. 3.3).</source>
+        <translation>Táhněte t v komplexní rovině. Atraktor existuje uvnitř čočky, kde |t| &lt; 1 a |1 − t| &lt; 1 (obě zobrazení jsou kontrakce, 004 Fig. 3.3).</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ControlPointEdits</name>
+    <message>
+        <source>There is no such point set.</source>
+        <translation>Taková sada bodů neexistuje.</translation>
+    </message>
+    <message>
+        <source>%1 (%2) has a fixed number of control points.</source>
+        <translation>%1 (%2) má pevný počet řídicích bodů.</translation>
+    </message>
+    <message>
+        <source>A Bézier curve of degree %1 is refused: %2</source>
+        <translation>Bézierova křivka stupně %1 byla odmítnuta: %2</translation>
+    </message>
+    <message>
+        <source>There is no point %1.</source>
+        <translation>Bod %1 neexistuje.</translation>
+    </message>
+    <message>
+        <source>Insert control point %1 into %2</source>
+        <translation>Vložit řídicí bod %1 do položky %2</translation>
+    </message>
+    <message>
+        <source>No control point is selected.</source>
+        <translation>Není vybrán žádný řídicí bod.</translation>
+    </message>
+    <message>
+        <source>%1 needs at least %2 control points.</source>
+        <translation>%1: počet řídicích bodů musí být alespoň %2.</translation>
+    </message>
+    <message>
+        <source>Delete control point %1 of %2</source>
+        <translation>Odstranit řídicí bod %1 položky %2</translation>
+    </message>
+    <message>
+        <source>Delete %1 control points of %2</source>
+        <translation>Odstranit řídicí body (%1) položky %2</translation>
+    </message>
+</context>
+<context>
+    <name>awb::EigenvaluePlotItem</name>
+    <message>
+        <source>Eigenvalues</source>
+        <translation>Vlastní čísla</translation>
+    </message>
+    <message>
+        <source>S_i, the subdivision matrices</source>
+        <translation>S_i, subdivizní matice</translation>
+    </message>
+    <message>
+        <source>A_i, the linear parts of M_i</source>
+        <translation>A_i, lineární části M_i</translation>
+    </message>
+    <message>
+        <source>M_i = P⁻¹S_iP, the lifted maps</source>
+        <translation>M_i = P⁻¹S_iP, zdvižená zobrazení</translation>
+    </message>
+    <message>
+        <source>Change the source of %1</source>
+        <translation>Změnit zdroj položky %1</translation>
+    </message>
+    <message>
+        <source>Analyse the matrices %1 in %2</source>
+        <translation>Analyzovat matice %1 v položce %2</translation>
+    </message>
+    <message>
+        <source>M_i is defined only for a lifted subdivision IFS</source>
+        <translation>M_i je definováno jen pro zdvižený subdivizní IFS</translation>
+    </message>
+    <message>
+        <source>no item is chosen to analyse</source>
+        <translation>není vybrána žádná položka k analýze</translation>
+    </message>
+    <message>
+        <source>there is no item called &quot;%1&quot;</source>
+        <translation>položka „%1“ neexistuje</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; (%2) has no matrices to analyse</source>
+        <translation>„%1“ (%2) nemá žádné matice k analýze</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; cannot be computed: %2</source>
+        <translation>„%1“ nelze vypočítat: %2</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; has no matrices %2: %3</source>
+        <translation>„%1“ nemá matice %2: %3</translation>
+    </message>
+    <message>
+        <source>Eigenvalue plot</source>
+        <translation>Graf vlastních čísel</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ExactCurve</name>
+    <message>
+        <source>Bézier curve c([0, 1])</source>
+        <translation>Bézierova křivka c([0, 1])</translation>
+    </message>
+    <message>
+        <source>Takagi image c(x + 2iy·T(x)), y = %1 (Conj. 3.7.1)</source>
+        <translation>Takagiho obraz c(x + 2iy·T(x)), y = %1 (Conj. 3.7.1)</translation>
+    </message>
+    <message>
+        <source>exact curve: %1</source>
+        <translation>přesná křivka: %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ExportDialog</name>
+    <message>
+        <source>Export Figure</source>
+        <translation>Exportovat obrázek</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf);;LaTeX matrices (*.tex)</source>
+        <translation>Obrázek PNG (*.png);;Kresba SVG (*.svg);;Dokument PDF (*.pdf);;Matice v LaTeXu (*.tex)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FieldReader</name>
+    <message>
+        <source>missing</source>
+        <translation>chybí</translation>
+    </message>
+    <message>
+        <source>expected a string</source>
+        <translation>očekáván řetězec</translation>
+    </message>
+    <message>
+        <source>expected one of %1, got %2</source>
+        <translation>očekávána jedna z hodnot %1, zadáno %2</translation>
+    </message>
+    <message>
+        <source>expected an integer</source>
+        <translation>očekáváno celé číslo</translation>
+    </message>
+    <message>
+        <source>expected an integer between %1 and %2</source>
+        <translation>očekáváno celé číslo mezi %1 a %2</translation>
+    </message>
+    <message>
+        <source>expected an array of numbers</source>
+        <translation>očekáváno pole čísel</translation>
+    </message>
+    <message>
+        <source>expected an array of points [x, y, z]</source>
+        <translation>očekáváno pole bodů [x, y, z]</translation>
+    </message>
+    <message>
+        <source>expected an array of points [x, y]</source>
+        <translation>očekáváno pole bodů [x, y]</translation>
+    </message>
+    <message>
+        <source>expected an array of matrices</source>
+        <translation>očekáváno pole matic</translation>
+    </message>
+    <message>
+        <source>expected a matrix: a non-empty array of rows</source>
+        <translation>očekávána matice: neprázdné pole řádků</translation>
+    </message>
+    <message>
+        <source>expected a row: a non-empty array of numbers</source>
+        <translation>očekáván řádek: neprázdné pole čísel</translation>
+    </message>
+    <message>
+        <source>row %1 has %2 numbers, row 1 has %3</source>
+        <translation>řádek %1 má počet čísel %2, řádek 1 má %3</translation>
+    </message>
+    <message>
+        <source>expected an object</source>
+        <translation>očekáván objekt</translation>
+    </message>
+    <message>
+        <source>%1 is not a finite number</source>
+        <translation>%1 není konečné číslo</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read as a double-precision number</source>
+        <translation>%1 nelze přečíst jako číslo s dvojitou přesností</translation>
+    </message>
+    <message>
+        <source>expected a number</source>
+        <translation>očekáváno číslo</translation>
+    </message>
+    <message>
+        <source>expected a finite number</source>
+        <translation>očekáváno konečné číslo</translation>
+    </message>
+    <message>
+        <source>expected a point [x, y, z]</source>
+        <translation>očekáván bod [x, y, z]</translation>
+    </message>
+    <message>
+        <source>expected a point [x, y]</source>
+        <translation>očekáván bod [x, y]</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FigureFile</name>
+    <message>
+        <source>cannot write %1</source>
+        <translation>%1 nelze zapsat</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>%1 nelze zapsat: %2</translation>
+    </message>
+    <message>
+        <source>the folder %1 does not exist</source>
+        <translation>složka %1 neexistuje</translation>
+    </message>
+    <message>
+        <source>it is a folder</source>
+        <translation>je to složka</translation>
+    </message>
+    <message>
+        <source>the file is read-only</source>
+        <translation>soubor je jen pro čtení</translation>
+    </message>
+    <message>
+        <source>cannot write %1: it is a folder</source>
+        <translation>%1 nelze zapsat: je to složka</translation>
+    </message>
+    <message>
+        <source>%1 has no suffix: name the format (.png, .svg or .pdf)</source>
+        <translation>%1 nemá příponu: uveďte formát (.png, .svg nebo .pdf)</translation>
+    </message>
+    <message>
+        <source>unknown output format &apos;.%1&apos; (use .png, .svg or .pdf)</source>
+        <translation>neznámý výstupní formát „.%1“ (použijte .png, .svg nebo .pdf)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FigureMetadata</name>
+    <message>
+        <source>%1: cannot read the PNG: %2</source>
+        <translation>%1: PNG nelze přečíst: %2</translation>
+    </message>
+    <message>
+        <source>larger than 512 MB</source>
+        <translation>větší než 512 MB</translation>
+    </message>
+    <message>
+        <source>%1: this PNG holds no Attractor Workbench item (only figures exported by Attractor Workbench carry their parameters)</source>
+        <translation>%1: tento PNG neobsahuje žádnou položku Attractor Workbench (parametry nesou jen obrázky exportované z Attractor Workbench)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FigureSheet</name>
+    <message>
+        <source>yes</source>
+        <translation>ano</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>ne</translation>
+    </message>
+    <message>
+        <source>No item</source>
+        <translation>Žádná položka</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>maps = %1</source>
+        <translation>zobrazení = %1</translation>
+    </message>
+    <message>
+        <source>control points = %1</source>
+        <translation>řídicí body = %1</translation>
+    </message>
+    <message>
+        <source>depth = %1</source>
+        <translation>hloubka = %1</translation>
+    </message>
+    <message>
+        <source>samples = %1</source>
+        <translation>vzorky = %1</translation>
+    </message>
+    <message>
+        <source>%1: %2 × %3 (see the Matrices dock)</source>
+        <translation>%1: %2 × %3 (viz panel Matice)</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more: see the Matrices dock, or copy them as LaTeX.</source>
+        <translation>
+            <numerusform>… a %n další: viz panel Matice, nebo je zkopírujte jako LaTeX.</numerusform>
+            <numerusform>… a %n další: viz panel Matice, nebo je zkopírujte jako LaTeX.</numerusform>
+            <numerusform>… a %n dalších: viz panel Matice, nebo je zkopírujte jako LaTeX.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Printing %1 was cancelled while the attractor was drawn.</source>
+        <translation>Tisk %1 byl zrušen během kreslení atraktoru.</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FileWriting</name>
+    <message>
+        <source>the folder %1 does not exist</source>
+        <translation>složka %1 neexistuje</translation>
+    </message>
+    <message>
+        <source>%1 is not a folder</source>
+        <translation>%1 není složka</translation>
+    </message>
+    <message>
+        <source>it is a folder</source>
+        <translation>je to složka</translation>
+    </message>
+    <message>
+        <source>the file is read-only</source>
+        <translation>soubor je jen pro čtení</translation>
+    </message>
+    <message>
+        <source>cannot create a file in the folder %1: %2</source>
+        <translation>ve složce %1 nelze vytvořit soubor: %2</translation>
+    </message>
+    <message>
+        <source>the folder %1 is read-only</source>
+        <translation>složka %1 je jen pro čtení</translation>
+    </message>
+    <message>
+        <source>the file is not open</source>
+        <translation>soubor není otevřen</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FractalItem</name>
+    <message>
+        <source>expected an array of %1 numbers</source>
+        <translation>očekáváno pole čísel o délce %1</translation>
+    </message>
+    <message>
+        <source>missing (the custom form needs its maps)</source>
+        <translation>chybí (vlastní tvar potřebuje svá zobrazení)</translation>
+    </message>
+    <message>
+        <source>expected a non-empty array of maps {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]}</source>
+        <translation>očekáváno neprázdné pole zobrazení {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]}</translation>
+    </message>
+    <message>
+        <source>expected an object with &quot;A&quot; and &quot;b&quot;</source>
+        <translation>očekáván objekt s &quot;A&quot; a &quot;b&quot;</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>chybí</translation>
+    </message>
+    <message>
+        <source>expected a 2 x 2 matrix [[a11, a12], [a21, a22]]</source>
+        <translation>očekávána matice 2 x 2 [[a11, a12], [a21, a22]]</translation>
+    </message>
+    <message>
+        <source>the custom form needs at least one map</source>
+        <translation>vlastní tvar vyžaduje alespoň jedno zobrazení</translation>
+    </message>
+    <message>
+        <source>map %1 is not a map of the plane</source>
+        <translation>zobrazení %1 není zobrazení roviny</translation>
+    </message>
+    <message>
+        <source>map %1 has a non-finite entry</source>
+        <translation>zobrazení %1 má nekonečný prvek</translation>
+    </message>
+    <message>
+        <source>a reference point is not finite</source>
+        <translation>referenční bod není konečný</translation>
+    </message>
+    <message>
+        <source>need at least 3 reference points (000 §4), got %1</source>
+        <translation>jsou potřeba alespoň 3 referenční body (000 §4), zadáno %1</translation>
+    </message>
+    <message>
+        <source>Fractal</source>
+        <translation>Fraktál</translation>
+    </message>
+    <message>
+        <source>Change fractal of %1</source>
+        <translation>Změnit fraktál položky %1</translation>
+    </message>
+    <message>
+        <source>the %1 reference points and the %2 control points must be equally many</source>
+        <translation>počet referenčních bodů (%1) a řídicích bodů (%2) musí být stejný</translation>
+    </message>
+    <message>
+        <source>the reference points are ill-conditioned: S_i R differs from f_i(R) by up to %1</source>
+        <translation>referenční body jsou špatně podmíněné: S_i R se od f_i(R) liší až o %1</translation>
+    </message>
+    <message>
+        <source>Koch curve (000 §4.1)</source>
+        <translation>Kochova křivka (000 §4.1)</translation>
+    </message>
+    <message>
+        <source>Sierpinski triangle (000 §4.2)</source>
+        <translation>Sierpinského trojúhelník (000 §4.2)</translation>
+    </message>
+    <message>
+        <source>Own maps</source>
+        <translation>Vlastní zobrazení</translation>
+    </message>
+    <message>
+        <source>The presets use the paper&apos;s printed matrices S_i</source>
+        <translation>Předvolby používají matice S_i vytištěné v článku</translation>
+    </message>
+    <message>
+        <source>Affine weights</source>
+        <translation>Afinní váhy</translation>
+    </message>
+    <message>
+        <source>Nearest control points</source>
+        <translation>Nejbližší řídicí body</translation>
+    </message>
+    <message>
+        <source>Least norm (all points)</source>
+        <translation>Nejmenší norma (všechny body)</translation>
+    </message>
+    <message>
+        <source>How f_i(P_j) is written as an affine combination of the control points (000 eq. (5)): nearest points keep edits local, least norm lets every point move the whole fractal</source>
+        <translation>Jak se f_i(P_j) zapíše jako afinní kombinace řídicích bodů (000 eq. (5)): nejbližší body udrží úpravy lokální, nejmenší norma dovolí každému bodu pohnout celým fraktálem</translation>
+    </message>
+    <message>
+        <source>Fractal with control points</source>
+        <translation>Fraktál s řídicími body</translation>
+    </message>
+</context>
+<context>
+    <name>awb::InsertControlPointCommand</name>
+    <message>
+        <source>Add a control point to %1</source>
+        <translation>Přidat řídicí bod do položky %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::InsertItemCommand</name>
+    <message>
+        <source>Add %1</source>
+        <translation>Přidat %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::Item</name>
+    <message>
+        <source>Rename</source>
+        <translation>Přejmenovat</translation>
+    </message>
+    <message>
+        <source>Change style of %1</source>
+        <translation>Změnit styl položky %1</translation>
+    </message>
+    <message>
+        <source>Edit animation of %1</source>
+        <translation>Upravit animaci položky %1</translation>
+    </message>
+    <message>
+        <source>the name cannot be empty</source>
+        <translation>název nemůže být prázdný</translation>
+    </message>
+    <message>
+        <source>%1 has no parameter &quot;%2&quot;</source>
+        <translation>%1 nemá parametr „%2“</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a valid value for %2</source>
+        <translation>„%1“ není platná hodnota pro %2</translation>
+    </message>
+    <message>
+        <source>circular reference</source>
+        <translation>cyklický odkaz</translation>
+    </message>
+    <message>
+        <source>there is not enough memory to compute it</source>
+        <translation>k výpočtu není dostatek paměti</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ItemAddress</name>
+    <message>
+        <source>t: the B-spline&apos;s knot parameter scaled to [0, 1] (the address in base 2)</source>
+        <translation>t: uzlový parametr B-spline přeškálovaný na [0, 1] (adresa ve dvojkové soustavě)</translation>
+    </message>
+    <message>
+        <source>t: the knot parameter scaled to [0, 1] (the address in base 2)</source>
+        <translation>t: uzlový parametr přeškálovaný na [0, 1] (adresa ve dvojkové soustavě)</translation>
+    </message>
+    <message>
+        <source>t: the Bernstein parameter (the address in base 2)</source>
+        <translation>t: Bernsteinův parametr (adresa ve dvojkové soustavě)</translation>
+    </message>
+    <message>
+        <source>t: the Bernstein parameter (pieces [0, t], [t, 1] of the split)</source>
+        <translation>t: Bernsteinův parametr (části [0, t], [t, 1] dělení)</translation>
+    </message>
+    <message>
+        <source>t: the scheme&apos;s own parameter, the address read in base %1</source>
+        <translation>t: vlastní parametr schématu, adresa čtená v soustavě o základu %1</translation>
+    </message>
+    <message>
+        <source>this item is drawn by an automaton: its words are not addresses of one IFS</source>
+        <translation>tato položka je kreslena automatem: její slova nejsou adresami jednoho IFS</translation>
+    </message>
+    <message>
+        <source>a parameter interval is [t0, t1] with two numbers, e.g. [0.25, 0.5]</source>
+        <translation>interval parametru je [t0, t1] se dvěma čísly, např. [0.25, 0.5]</translation>
+    </message>
+    <message>
+        <source>the parameter interval [%1, %2] must satisfy 0 &lt;= t0 &lt; t1 &lt;= 1</source>
+        <translation>interval parametru [%1, %2] musí splňovat 0 &lt;= t0 &lt; t1 &lt;= 1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ItemController</name>
+    <message>
+        <source>%1 shows nothing: %2</source>
+        <translation>%1 nic nezobrazuje: %2</translation>
+    </message>
+    <message>
+        <source>%1 has no attractor to draw.</source>
+        <translation>%1 nemá žádný atraktor ke kreslení.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be drawn: %2</source>
+        <translation>%1 nelze vykreslit: %2</translation>
+    </message>
+    <message>
+        <source>Start set: %1</source>
+        <translation>Počáteční množina: %1</translation>
+    </message>
+    <message>
+        <source>Regularity: only for subdivision curves</source>
+        <translation>Regularita: jen pro subdivizní křivky</translation>
+    </message>
+    <message>
+        <source>Regularity: does not apply (%1)</source>
+        <translation>Regularita: nelze použít (%1)</translation>
+    </message>
+    <message>
+        <source>complex de Casteljau parameter</source>
+        <translation>komplexní de Casteljauův parametr</translation>
+    </message>
+    <message>
+        <source>the scheme&apos;s parameters are refused</source>
+        <translation>parametry schématu byly odmítnuty</translation>
+    </message>
+    <message>
+        <source>F^k(X0) to the %1</source>
+        <translation>F^k(X0) vůči: %1</translation>
+    </message>
+    <message>
+        <source>F^k(X0)</source>
+        <translation>F^k(X0)</translation>
+    </message>
+    <message>
+        <source>Changing %1 (%2, %3) from %4 to %5 makes row %2 sum to %6, not 1: the rows of a subdivision matrix are affine combinations.
+
+Take the difference %7 from the entry in column %8 (%9 → %10) so that the row sums to 1?</source>
+        <translation>Změna %1 (%2, %3) z %4 na %5 způsobí, že součet řádku %2 bude %6, a ne 1: řádky subdivizní matice jsou afinní kombinace.
+
+Odečíst rozdíl %7 od prvku ve sloupci %8 (%9 → %10), aby byl součet řádku 1?</translation>
+    </message>
+    <message>
+        <source>%1 (%2, %3) = %4 was refused: %5</source>
+        <translation>%1 (%2, %3) = %4 bylo odmítnuto: %5</translation>
+    </message>
+    <message>
+        <source>Insert Point &amp;Before %1</source>
+        <translation>Vložit bod &amp;před %1</translation>
+    </message>
+    <message>
+        <source>Insert Point &amp;After %1</source>
+        <translation>Vložit bod &amp;za %1</translation>
+    </message>
+    <message>
+        <source>&amp;Delete Point %1</source>
+        <translation>&amp;Odstranit bod %1</translation>
+    </message>
+    <message>
+        <source>&amp;Insert Point Here</source>
+        <translation>&amp;Vložit bod sem</translation>
+    </message>
+    <message>
+        <source>&amp;Append Point Here</source>
+        <translation>Přid&amp;at bod sem</translation>
+    </message>
+    <message>
+        <source>&amp;Fit View</source>
+        <translation>Přizpůsobit po&amp;hled</translation>
+    </message>
+</context>
+<context>
+    <name>awb::JunctionSpec</name>
+    <message>
+        <source>the junction parameter %1 must be a finite number</source>
+        <translation>parametr napojení %1 musí být konečné číslo</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside (%3, %4): %5</source>
+        <translation>%1 = %2 leží mimo (%3, %4): %5</translation>
+    </message>
+</context>
+<context>
+    <name>awb::MainWindow</name>
+    <message>
+        <source>Attractor Workbench projects (*.awb);;All files (*)</source>
+        <translation>Projekty Attractor Workbench (*.awb);;Všechny soubory (*)</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Automatické ukládání selhalo: %1</translation>
+    </message>
+    <message>
+        <source>&lt;original&gt;</source>
+        <translation>&lt;původní stav&gt;</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušit</translation>
+    </message>
+    <message>
+        <source>Cancel the analysis</source>
+        <translation>Zrušit analýzu</translation>
+    </message>
+    <message>
+        <source>Drawing %p%</source>
+        <translation>Kreslení %p%</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Zastavit</translation>
+    </message>
+    <message>
+        <source>Stop drawing the attractor (Esc); F5 draws it again</source>
+        <translation>Zastavit kreslení atraktoru (Esc); klávesou F5 jej vykreslíte znovu</translation>
+    </message>
+    <message>
+        <source>Drawing the attractor for the figure…</source>
+        <translation>Kreslení atraktoru pro obrázek…</translation>
+    </message>
+    <message>
+        <source>Figure</source>
+        <translation>Obrázek</translation>
+    </message>
+    <message>
+        <source>Drawing stopped; press F5 to draw again.</source>
+        <translation>Kreslení zastaveno; klávesou F5 jej spustíte znovu.</translation>
+    </message>
+    <message>
+        <source>Analysis %p%</source>
+        <translation>Analýza %p%</translation>
+    </message>
+    <message>
+        <source>Analysis cancelled.</source>
+        <translation>Analýza zrušena.</translation>
+    </message>
+    <message>
+        <source>Row sum</source>
+        <translation>Součet řádku</translation>
+    </message>
+    <message>
+        <source>Edit refused</source>
+        <translation>Úprava odmítnuta</translation>
+    </message>
+    <message>
+        <source>x = %1, y = %2</source>
+        <translation>x = %1, y = %2</translation>
+    </message>
+    <message>
+        <source>Drawing failed: %1</source>
+        <translation>Kreslení selhalo: %1</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Nový</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Otevřít…</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Uložit</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Uložit j&amp;ako…</translation>
+    </message>
+    <message>
+        <source>Re&amp;vert</source>
+        <translation>&amp;Vrátit k uloženému</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Zavřít</translation>
+    </message>
+    <message>
+        <source>&amp;Print…</source>
+        <translation>&amp;Tisk…</translation>
+    </message>
+    <message>
+        <source>Print Pre&amp;view…</source>
+        <translation>Ná&amp;hled tisku…</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+P</source>
+        <translation>Ctrl+Shift+P</translation>
+    </message>
+    <message>
+        <source>Print to P&amp;DF…</source>
+        <translation>Tisk do &amp;PDF…</translation>
+    </message>
+    <message>
+        <source>Print to PDF</source>
+        <translation>Tisk do PDF</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>Dokument PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>&amp;Export Figure…</source>
+        <translation>&amp;Exportovat obrázek…</translation>
+    </message>
+    <message>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <source>Export &amp;Points…</source>
+        <translation>Exportovat &amp;body…</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+E</source>
+        <translation>Ctrl+Shift+E</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Konec</translation>
+    </message>
+    <message>
+        <source>Pre&amp;ferences…</source>
+        <translation>&amp;Předvolby…</translation>
+    </message>
+    <message>
+        <source>Copy Matrices as &amp;LaTeX</source>
+        <translation>Kopírovat matice jako &amp;LaTeX</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+L</source>
+        <translation>Ctrl+Shift+L</translation>
+    </message>
+    <message>
+        <source>The current item has no matrices.</source>
+        <translation>Aktuální položka nemá žádné matice.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Copied %n matrices as LaTeX (amsmath bmatrix).</source>
+        <translation>
+            <numerusform>Zkopírována %n matice jako LaTeX (amsmath bmatrix).</numerusform>
+            <numerusform>Zkopírovány %n matice jako LaTeX (amsmath bmatrix).</numerusform>
+            <numerusform>Zkopírováno %n matic jako LaTeX (amsmath bmatrix).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate Item</source>
+        <translation>&amp;Duplikovat položku</translation>
+    </message>
+    <message>
+        <source>Ctrl+D</source>
+        <translation>Ctrl+D</translation>
+    </message>
+    <message>
+        <source>&amp;Delete Item</source>
+        <translation>&amp;Odstranit položku</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;In</source>
+        <translation>Př&amp;iblížit</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;Out</source>
+        <translation>O&amp;ddálit</translation>
+    </message>
+    <message>
+        <source>&amp;Fit</source>
+        <translation>Přizpůsobit &amp;oknu</translation>
+    </message>
+    <message>
+        <source>Ctrl+0</source>
+        <translation>Ctrl+0</translation>
+    </message>
+    <message>
+        <source>&amp;Stop Drawing</source>
+        <translation>Zastavit &amp;kreslení</translation>
+    </message>
+    <message>
+        <source>&amp;Draw Again</source>
+        <translation>&amp;Překreslit</translation>
+    </message>
+    <message>
+        <source>&amp;Play/Pause Animation</source>
+        <translation>Pře&amp;hrát/pozastavit animaci</translation>
+    </message>
+    <message>
+        <source>S&amp;top Animation</source>
+        <translation>Zastavit a&amp;nimaci</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Layout</source>
+        <translation>Obnovit rozlož&amp;ení</translation>
+    </message>
+    <message>
+        <source>&amp;About Attractor Workbench</source>
+        <translation>&amp;O aplikaci Attractor Workbench</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>O &amp;Qt</translation>
+    </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Uživatelská příručka</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Zpět</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>Z&amp;novu</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Zpět</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Znovu</translation>
+    </message>
+    <message>
+        <source>Nothing to %1 (%2)</source>
+        <translation>Žádná akce pro „%1“ (%2)</translation>
+    </message>
+    <message>
+        <source>%1 %2 (%3)</source>
+        <translation>%1 %2 (%3)</translation>
+    </message>
+    <message>
+        <source>&amp;Control Polygon</source>
+        <translation>Řídi&amp;cí polygon</translation>
+    </message>
+    <message>
+        <source>Control &amp;Net (3D)</source>
+        <translation>Řídicí &amp;síť (3D)</translation>
+    </message>
+    <message>
+        <source>Subdivided &amp;Mesh (3D)</source>
+        <translation>&amp;Zjemněná síť (3D)</translation>
+    </message>
+    <message>
+        <source>&amp;Attractor (3D)</source>
+        <translation>&amp;Atraktor (3D)</translation>
+    </message>
+    <message>
+        <source>A&amp;xes (3D)</source>
+        <translation>Os&amp;y (3D)</translation>
+    </message>
+    <message>
+        <source>&amp;Bounding Box (3D)</source>
+        <translation>Ohraniču&amp;jící kvádr (3D)</translation>
+    </message>
+    <message>
+        <source>&amp;Perspective (3D)</source>
+        <translation>Pe&amp;rspektiva (3D)</translation>
+    </message>
+    <message>
+        <source>&amp;Start Set</source>
+        <translation>Počáteční mno&amp;žina</translation>
+    </message>
+    <message>
+        <source>&amp;Exact Curve</source>
+        <translation>Přesná kři&amp;vka</translation>
+    </message>
+    <message>
+        <source>&amp;Grid</source>
+        <translation>&amp;Mřížka</translation>
+    </message>
+    <message>
+        <source>Project</source>
+        <translation>Projekt</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>Vlastnosti</translation>
+    </message>
+    <message>
+        <source>Undo History</source>
+        <translation>Historie úprav</translation>
+    </message>
+    <message>
+        <source>Spectrum</source>
+        <translation>Spektrum</translation>
+    </message>
+    <message>
+        <source>Matrices</source>
+        <translation>Matice</translation>
+    </message>
+    <message>
+        <source>Analysis</source>
+        <translation>Analýza</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresa</translation>
+    </message>
+    <message>
+        <source>Animation</source>
+        <translation>Animace</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Soubor</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Otevřít ne&amp;dávné</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>Úpr&amp;avy</translation>
+    </message>
+    <message>
+        <source>&amp;Item</source>
+        <translation>&amp;Položka</translation>
+    </message>
+    <message>
+        <source>&amp;Add</source>
+        <translation>&amp;Přidat</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Zobrazit</translation>
+    </message>
+    <message>
+        <source>Four-point &amp;Regularity Chart…</source>
+        <translation>&amp;Graf regularity čtyřbodového schématu…</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Nápověda</translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation>Hlavní</translation>
+    </message>
+    <message>
+        <source> Hutchinson step: </source>
+        <translation> Hutchinsonův krok: </translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>vyp.</translation>
+    </message>
+    <message>
+        <source>Draw F^k(X0) of the start set X0 as vectors</source>
+        <translation>Kreslit F^k(X0) počáteční množiny X0 jako vektory</translation>
+    </message>
+    <message>
+        <source>  Subdivision steps: </source>
+        <translation>  Kroky subdivize: </translation>
+    </message>
+    <message>
+        <source>Classic subdivision polygons beside the IFS attractor</source>
+        <translation>Klasické subdivizní polygony vedle atraktoru IFS</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Bez názvu</translation>
+    </message>
+    <message>
+        <source>%1[*] — Attractor Workbench</source>
+        <translation>%1[*] — Attractor Workbench</translation>
+    </message>
+    <message>
+        <source>Cubic B-spline</source>
+        <translation>Kubický B-spline</translation>
+    </message>
+    <message>
+        <source>Open Project</source>
+        <translation>Otevřít projekt</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>Otevřeno: %1</translation>
+    </message>
+    <message>
+        <source>Save Project</source>
+        <translation>Uložit projekt</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Uloženo: %1</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Neuložené změny</translation>
+    </message>
+    <message>
+        <source>The project &quot;%1&quot; has unsaved changes. Save them?</source>
+        <translation>Projekt „%1“ obsahuje neuložené změny. Chcete je uložit?</translation>
+    </message>
+    <message>
+        <source>Projects and figures with their item (*.awb *.png);;Attractor Workbench projects (*.awb);;Exported figures (*.png);;All files (*)</source>
+        <translation>Projekty a obrázky s položkou (*.awb *.png);;Projekty Attractor Workbench (*.awb);;Exportované obrázky (*.png);;Všechny soubory (*)</translation>
+    </message>
+    <message>
+        <source>Save Project As</source>
+        <translation>Uložit projekt jako</translation>
+    </message>
+    <message>
+        <source>Revert</source>
+        <translation>Vrátit k uloženému</translation>
+    </message>
+    <message>
+        <source>Discard all changes and reload %1?</source>
+        <translation>Zahodit všechny změny a znovu načíst %1?</translation>
+    </message>
+    <message>
+        <source>Printing cancelled.</source>
+        <translation>Tisk zrušen.</translation>
+    </message>
+    <message>
+        <source>Print</source>
+        <translation>Tisk</translation>
+    </message>
+    <message>
+        <source>The printer could not be started.</source>
+        <translation>Tiskárnu nelze spustit.</translation>
+    </message>
+    <message>
+        <source>A .tex file holds the matrices only: choose the Matrices view, or .png, .svg or .pdf for a picture.</source>
+        <translation>Soubor .tex obsahuje pouze matice: zvolte pohled Matice, nebo pro obrázek .png, .svg či .pdf.</translation>
+    </message>
+    <message>
+        <source>The current item has no matrices to export.</source>
+        <translation>Aktuální položka nemá žádné matice k exportu.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2.</source>
+        <translation>%1 nelze zapsat: %2.</translation>
+    </message>
+    <message>
+        <source>Unknown format &quot;%1&quot;: use .png, .svg or .pdf (.tex for the matrices).</source>
+        <translation>Neznámý formát „%1“: použijte .png, .svg nebo .pdf (.tex pro matice).</translation>
+    </message>
+    <message>
+        <source>Exporting %1 was cancelled while the attractor was drawn.</source>
+        <translation>Export %1 byl zrušen během kreslení atraktoru.</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Export</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>Exportováno: %1</translation>
+    </message>
+    <message>
+        <source>About Attractor Workbench</source>
+        <translation>O aplikaci Attractor Workbench</translation>
+    </message>
+    <message>
+        <source>Attractor Workbench %1
+
+Subdivision curves as attractors of iterated function systems: control points, subdivision matrices, spectra and figures.</source>
+        <translation>Attractor Workbench %1
+
+Subdivizní křivky jako atraktory iterovaných funkčních systémů: řídicí body, subdivizní matice, spektra a obrázky.</translation>
+    </message>
+    <message>
+        <source>Spectra of %1</source>
+        <translation>Spektra položky %1</translation>
+    </message>
+    <message>
+        <source>Bicubic B-spline</source>
+        <translation>Bikubický B-spline</translation>
+    </message>
+    <message>
+        <source>Loop (box spline)</source>
+        <translation>Loop (box spline)</translation>
+    </message>
+    <message>
+        <source>Kobbelt √3</source>
+        <translation>Kobbelt √3</translation>
+    </message>
+    <message>
+        <source>%1, %2 layout</source>
+        <translation>%1, rozložení %2</translation>
+    </message>
+    <message>
+        <source>%1 surface</source>
+        <translation>Plocha %1</translation>
+    </message>
+    <message>
+        <source>duplicate</source>
+        <translation>duplikát</translation>
+    </message>
+    <message>
+        <source>Duplicate Item</source>
+        <translation>Duplikovat položku</translation>
+    </message>
+    <message>
+        <source>&amp;%1 %2</source>
+        <translation>&amp;%1 %2</translation>
+    </message>
+    <message>
+        <source>an unsaved project</source>
+        <translation>neuloženého projektu</translation>
+    </message>
+    <message>
+        <source>Recover Project</source>
+        <translation>Obnovit projekt</translation>
+    </message>
+    <message>
+        <source>Attractor Workbench did not shut down properly. A recovery copy of %1 from %2 exists. Recover it? (Discard deletes the copy.)</source>
+        <translation>Attractor Workbench nebyl řádně ukončen. Existuje záložní kopie %1 z %2. Chcete ji obnovit? (Zahodit kopii smaže.)</translation>
+    </message>
+    <message>
+        <source>The recovery copy cannot be read: %1</source>
+        <translation>Záložní kopii nelze přečíst: %1</translation>
+    </message>
+    <message>
+        <source>The recovery copy cannot be read: %1
+
+It was kept as %2.</source>
+        <translation>Záložní kopii nelze přečíst: %1
+
+Byla ponechána jako %2.</translation>
+    </message>
+    <message>
+        <source>Export Points</source>
+        <translation>Exportovat body</translation>
+    </message>
+    <message>
+        <source>The current item has no attractor whose points could be exported.</source>
+        <translation>Aktuální položka nemá atraktor, jehož body by bylo možné exportovat.</translation>
+    </message>
+    <message>
+        <source>Exported the points to %1</source>
+        <translation>Body exportovány do %1</translation>
+    </message>
+    <message>
+        <source>The current item has no attractor.</source>
+        <translation>Aktuální položka nemá atraktor.</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Jazyk</translation>
+    </message>
+    <message>
+        <source>System Default</source>
+        <translation>Podle systému</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Jazyk</translation>
+    </message>
+    <message>
+        <source>The language changes when Attractor Workbench is started again.</source>
+        <translation>Jazyk se změní po dalším spuštění Attractor Workbench.</translation>
+    </message>
+    <message>
+        <source>Built with Qt %1 (running on Qt %2), Eigen %3 and QCustomPlot %4.</source>
+        <translation>Sestaveno s Qt %1 (spuštěno na Qt %2), Eigen %3 a QCustomPlot %4.</translation>
+    </message>
+</context>
+<context>
+    <name>awb::MatrixHeatMap</name>
+    <message>
+        <source>%1 (%2, %3) = %4</source>
+        <translation>%1 (%2, %3) = %4</translation>
+    </message>
+</context>
+<context>
+    <name>awb::MatrixView</name>
+    <message>
+        <source>%1 %2 %3i (modulus %4)</source>
+        <translation>%1 %2 %3i (modul %4)</translation>
+    </message>
+    <message>
+        <source>Sum of row %1: %2</source>
+        <translation>Součet řádku %1: %2</translation>
+    </message>
+    <message>
+        <source>Sum of column %1: %2</source>
+        <translation>Součet sloupce %1: %2</translation>
+    </message>
+    <message>
+        <source>“%1” is not a finite number: %2, row %3, column %4 was not changed.</source>
+        <translation>„%1“ není konečné číslo: %2, řádek %3, sloupec %4 nebyl změněn.</translation>
+    </message>
+    <message>
+        <source>A block</source>
+        <translation>blok A</translation>
+    </message>
+    <message>
+        <source>b row</source>
+        <translation>řádek b</translation>
+    </message>
+    <message>
+        <source>fixed part of the lifted map</source>
+        <translation>pevná část zdviženého zobrazení</translation>
+    </message>
+    <message>
+        <source>— &lt;span style=&apos;background:#e2ecfa&apos;&gt;&amp;nbsp;A&amp;nbsp;&lt;/span&gt; block, &lt;span style=&apos;background:#fcecd6&apos;&gt;&amp;nbsp;b&amp;nbsp;&lt;/span&gt; row</source>
+        <translation>— blok &lt;span style=&apos;background:#e2ecfa&apos;&gt;&amp;nbsp;A&amp;nbsp;&lt;/span&gt;, řádek &lt;span style=&apos;background:#fcecd6&apos;&gt;&amp;nbsp;b&amp;nbsp;&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>(complex entries)</source>
+        <translation>(komplexní prvky)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::MoveControlPointsCommand</name>
+    <message numerus="yes">
+        <source>Move %n control points of %1</source>
+        <translation>
+            <numerusform>Přesunout %n řídicí bod položky %1</numerusform>
+            <numerusform>Přesunout %n řídicí body položky %1</numerusform>
+            <numerusform>Přesunout %n řídicích bodů položky %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>awb::MoveItemCommand</name>
+    <message>
+        <source>Move %1</source>
+        <translation>Přesunout %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::NormalVectorItem</name>
+    <message>
+        <source>Normal-vector curve</source>
+        <translation>Křivka normálových vektorů</translation>
+    </message>
+    <message>
+        <source>Change normal-vector scheme of %1</source>
+        <translation>Změnit schéma normálových vektorů položky %1</translation>
+    </message>
+    <message>
+        <source>the normal-vector scheme is not linear: it has no subdivision matrices (001 eq. (1))</source>
+        <translation>schéma normálových vektorů není lineární: nemá subdivizní matice (001 eq. (1))</translation>
+    </message>
+    <message>
+        <source>No equivalent IFS: %1</source>
+        <translation>Žádný ekvivalentní IFS: %1</translation>
+    </message>
+    <message>
+        <source>expected true or false</source>
+        <translation>očekáváno true nebo false</translation>
+    </message>
+    <message>
+        <source>expected an array of sign rules</source>
+        <translation>očekáváno pole pravidel pro znaménka</translation>
+    </message>
+    <message>
+        <source>expected one of &quot;%1&quot;</source>
+        <translation>očekávána jedna z hodnot „%1“</translation>
+    </message>
+    <message>
+        <source>Scheme</source>
+        <translation>Schéma</translation>
+    </message>
+    <message>
+        <source>Own rules</source>
+        <translation>Vlastní pravidla</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>Kroky</translation>
+    </message>
+    <message>
+        <source>Subdivision steps of the polygon shown</source>
+        <translation>Kroky subdivize zobrazeného polygonu</translation>
+    </message>
+    <message>
+        <source>Normal direction</source>
+        <translation>Směr normály</translation>
+    </message>
+    <message>
+        <source>Counter-clockwise (positive)</source>
+        <translation>Proti směru hodinových ručiček (kladný)</translation>
+    </message>
+    <message>
+        <source>Clockwise (negative)</source>
+        <translation>Po směru hodinových ručiček (záporný)</translation>
+    </message>
+    <message>
+        <source>Closed polygon</source>
+        <translation>Uzavřený polygon</translation>
+    </message>
+    <message>
+        <source>α%1</source>
+        <translation>α%1</translation>
+    </message>
+    <message>
+        <source>Rules</source>
+        <translation>Pravidla</translation>
+    </message>
+    <message>
+        <source>Position of new point %1 along the edge (001 eq. (1))</source>
+        <translation>Poloha nového bodu %1 podél hrany (001 eq. (1))</translation>
+    </message>
+    <message>
+        <source>β%1</source>
+        <translation>β%1</translation>
+    </message>
+    <message>
+        <source>Displacement of new point %1 along the normal</source>
+        <translation>Posunutí nového bodu %1 ve směru normály</translation>
+    </message>
+</context>
+<context>
+    <name>awb::NormalVectorSpec</name>
+    <message>
+        <source>unknown preset &quot;%1&quot;</source>
+        <translation>neznámá předvolba „%1“</translation>
+    </message>
+    <message>
+        <source>%1 steps: at least 0 and at most %2 are allowed</source>
+        <translation>počet kroků %1: povoleno je 0 až %2</translation>
+    </message>
+    <message>
+        <source>need at least 2 rules (p &gt;= 2), got %1</source>
+        <translation>jsou potřeba alespoň 2 pravidla (p &gt;= 2), zadáno %1</translation>
+    </message>
+    <message>
+        <source>%1 values of beta for %2 of alpha: need one per rule</source>
+        <translation>počet hodnot beta (%1) neodpovídá počtu hodnot alfa (%2): pro každé pravidlo je potřeba jedna</translation>
+    </message>
+    <message>
+        <source>%1 signs for %2 rules: give none, one, or one per rule</source>
+        <translation>počet znamének (%1) neodpovídá počtu pravidel (%2): zadejte žádné, jedno, nebo jedno pro každé pravidlo</translation>
+    </message>
+    <message>
+        <source>%1_%2 is not a finite number</source>
+        <translation>%1_%2 není konečné číslo</translation>
+    </message>
+</context>
+<context>
+    <name>awb::PaletteDialog</name>
+    <message>
+        <source>Map Colours</source>
+        <translation>Barvy zobrazení</translation>
+    </message>
+    <message>
+        <source>The colour of the points each map f&lt;sub&gt;i&lt;/sub&gt; makes (Style: colour by map or by address).</source>
+        <translation>Barva bodů, které vytváří jednotlivá zobrazení f&lt;sub&gt;i&lt;/sub&gt; (Styl: barva podle zobrazení nebo podle adresy).</translation>
+    </message>
+    <message>
+        <source>Colour of map %1</source>
+        <translation>Barva zobrazení %1</translation>
+    </message>
+    <message>
+        <source>Map %1:</source>
+        <translation>Zobrazení %1:</translation>
+    </message>
+    <message>
+        <source>Use the &amp;Default Colours</source>
+        <translation>Použít &amp;výchozí barvy</translation>
+    </message>
+</context>
+<context>
+    <name>awb::PointExport</name>
+    <message>
+        <source>cannot write the points: %1</source>
+        <translation>body nelze zapsat: %1</translation>
+    </message>
+    <message>
+        <source>--address needs an item drawn by one IFS; this one is drawn by an automaton</source>
+        <translation>--address vyžaduje položku kreslenou jedním IFS; tato je kreslena automatem</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is drawn by an automaton: PLY export covers items with one IFS</source>
+        <translation>„%1“ je kreslena automatem: export do PLY podporuje jen položky s jedním IFS</translation>
+    </message>
+    <message>
+        <source>wrote %1 points, expected %2</source>
+        <translation>zapsáno %1 bodů, očekáváno %2</translation>
+    </message>
+</context>
+<context>
+    <name>awb::PointExportDialog</name>
+    <message>
+        <source>Export Points of %1</source>
+        <translation>Exportovat body položky %1</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Procházet…</translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation>Soubor:</translation>
+    </message>
+    <message>
+        <source>CSV text: x, y[, z], map, view</source>
+        <translation>Text CSV: x, y[, z], zobrazení, pohled</translation>
+    </message>
+    <message>
+        <source>PLY point cloud: x, y, z, map colour, map</source>
+        <translation>Mračno bodů PLY: x, y, z, barva zobrazení, zobrazení</translation>
+    </message>
+    <message>
+        <source>F&amp;ormat:</source>
+        <translation>F&amp;ormát:</translation>
+    </message>
+    <message>
+        <source>The points of F^k(X0): every image of the start set&apos;s vertices after k steps of the Hutchinson operator</source>
+        <translation>Body F^k(X0): všechny obrazy vrcholů počáteční množiny po k krocích Hutchinsonova operátoru</translation>
+    </message>
+    <message>
+        <source>&amp;Depth k:</source>
+        <translation>&amp;Hloubka k:</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Exportovat</translation>
+    </message>
+    <message>
+        <source>Export Points</source>
+        <translation>Exportovat body</translation>
+    </message>
+    <message>
+        <source>CSV text (*.csv);;PLY point cloud (*.ply)</source>
+        <translation>Text CSV (*.csv);;Mračno bodů PLY (*.ply)</translation>
+    </message>
+    <message>
+        <source>The number of points depends on the automaton.</source>
+        <translation>Počet bodů závisí na automatu.</translation>
+    </message>
+    <message>
+        <source>%1 points</source>
+        <translation>Počet bodů: %1</translation>
+    </message>
+    <message>
+        <source> — too many (at most %1): choose a smaller depth.</source>
+        <translation> — příliš mnoho (nejvýše %1): zvolte menší hloubku.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be computed: %2</source>
+        <translation>%1 nelze vypočítat: %2</translation>
+    </message>
+    <message>
+        <source>Start set: %1</source>
+        <translation>Počáteční množina: %1</translation>
+    </message>
+    <message>
+        <source>Depth %1 gives %2 points, more than %3: choose a smaller depth.</source>
+        <translation>Hloubka %1 dává %2 bodů, více než %3: zvolte menší hloubku.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 nelze zapsat: %2</translation>
+    </message>
+    <message>
+        <source>Writing the points of %1…</source>
+        <translation>Zapisování bodů položky %1…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušit</translation>
+    </message>
+    <message>
+        <source>Exporting the points was cancelled; nothing was written.</source>
+        <translation>Export bodů byl zrušen; nic nebylo zapsáno.</translation>
+    </message>
+</context>
+<context>
+    <name>awb::PreferencesDialog</name>
+    <message>
+        <source>auto</source>
+        <translation>automaticky</translation>
+    </message>
+</context>
+<context>
+    <name>awb::Project</name>
+    <message>
+        <source>Item</source>
+        <translation>Položka</translation>
+    </message>
+    <message>
+        <source>the name cannot be empty</source>
+        <translation>název nemůže být prázdný</translation>
+    </message>
+    <message>
+        <source>another item is already called &quot;%1&quot;</source>
+        <translation>jiná položka se již jmenuje „%1“</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n items</source>
+        <translation>
+            <numerusform>Odstranit %n položku</numerusform>
+            <numerusform>Odstranit %n položky</numerusform>
+            <numerusform>Odstranit %n položek</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Rename %1 to %2</source>
+        <translation>Přejmenovat %1 na %2</translation>
+    </message>
+    <message>
+        <source>the project has no file name yet: use &quot;Save As&quot;</source>
+        <translation>projekt zatím nemá název souboru: použijte „Uložit jako“</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ProjectIO</name>
+    <message>
+        <source>%1: cannot save: %2</source>
+        <translation>%1: nelze uložit: %2</translation>
+    </message>
+    <message>
+        <source>%1: cannot open: %2</source>
+        <translation>%1: nelze otevřít: %2</translation>
+    </message>
+    <message>
+        <source>%1: the file is %2 MB; project files larger than %3 MB are refused (a project is at most a few MB)</source>
+        <translation>%1: soubor má %2 MB; projektové soubory větší než %3 MB jsou odmítnuty (projekt má nejvýše několik MB)</translation>
+    </message>
+    <message>
+        <source>%1: cannot read: %2</source>
+        <translation>%1: nelze číst: %2</translation>
+    </message>
+    <message>
+        <source>%1: the file is empty</source>
+        <translation>%1: soubor je prázdný</translation>
+    </message>
+    <message>
+        <source>%1: the file holds only white space</source>
+        <translation>%1: soubor obsahuje pouze bílé znaky</translation>
+    </message>
+    <message>
+        <source>%1: the file is UTF-16 or UTF-32 text; project files are UTF-8 (save it again as UTF-8)</source>
+        <translation>%1: soubor je text v kódování UTF-16 nebo UTF-32; projektové soubory jsou v UTF-8 (uložte jej znovu jako UTF-8)</translation>
+    </message>
+    <message>
+        <source>%1: expected a JSON object at the top level</source>
+        <translation>%1: na nejvyšší úrovni je očekáván objekt JSON</translation>
+    </message>
+    <message>
+        <source>%1: not valid JSON: %2 at line %3, column %4</source>
+        <translation>%1: neplatný JSON: %2 na řádku %3, sloupci %4</translation>
+    </message>
+    <message>
+        <source>expected &quot;%1&quot;: this is not an Attractor Workbench project</source>
+        <translation>očekáváno &quot;%1&quot;: toto není projekt Attractor Workbench</translation>
+    </message>
+    <message>
+        <source>%1: the file has format version %2, written by a newer version of Attractor Workbench; this version reads format version %3 only. Please update the application.</source>
+        <translation>%1: soubor má verzi formátu %2, zapsanou novější verzí Attractor Workbench; tato verze čte pouze verzi formátu %3. Aktualizujte prosím aplikaci.</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>chybí</translation>
+    </message>
+    <message>
+        <source>expected an array</source>
+        <translation>očekáváno pole</translation>
+    </message>
+    <message>
+        <source>%1: field &quot;%2&quot;: %3</source>
+        <translation>%1: pole &quot;%2&quot;: %3</translation>
+    </message>
+    <message>
+        <source>item %1</source>
+        <translation>položka %1</translation>
+    </message>
+    <message>
+        <source>%1: %2: field &quot;%3&quot;: %4</source>
+        <translation>%1: %2: pole &quot;%3&quot;: %4</translation>
+    </message>
+    <message>
+        <source>field &quot;%1&quot;: %2</source>
+        <translation>pole &quot;%1&quot;: %2</translation>
+    </message>
+    <message>
+        <source>expected an object</source>
+        <translation>očekáván objekt</translation>
+    </message>
+    <message>
+        <source>unknown item type %1; this version knows %2</source>
+        <translation>neznámý typ položky %1; tato verze zná %2</translation>
+    </message>
+    <message>
+        <source>another item is already called %1</source>
+        <translation>jiná položka se již jmenuje %1</translation>
+    </message>
+    <message>
+        <source>expected an array of items</source>
+        <translation>očekáváno pole položek</translation>
+    </message>
+    <message>
+        <source>expected an array of lifted points [x, y, c1, ...]</source>
+        <translation>očekáváno pole zdvižených bodů [x, y, c1, ...]</translation>
+    </message>
+    <message>
+        <source>expected a lifted point [x, y, c1, ...]</source>
+        <translation>očekáván zdvižený bod [x, y, c1, ...]</translation>
+    </message>
+    <message>
+        <source>expected an array of &quot;#rrggbb&quot; strings</source>
+        <translation>očekáváno pole řetězců &quot;#rrggbb&quot;</translation>
+    </message>
+    <message>
+        <source>expected a string &quot;#rrggbb&quot;</source>
+        <translation>očekáván řetězec &quot;#rrggbb&quot;</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ProjectTreeModel</name>
+    <message>
+        <source>Name</source>
+        <translation>Název</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Druh</translation>
+    </message>
+    <message numerus="yes">
+        <source>Move %n items</source>
+        <translation>
+            <numerusform>Přesunout %n položku</numerusform>
+            <numerusform>Přesunout %n položky</numerusform>
+            <numerusform>Přesunout %n položek</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>awb::PropertiesWidget</name>
+    <message>
+        <source>Value refused</source>
+        <translation>Hodnota odmítnuta</translation>
+    </message>
+    <message>
+        <source>%1 cannot be set to %2.</source>
+        <translation>%1 nelze nastavit na %2.</translation>
+    </message>
+    <message>
+        <source>No item selected.</source>
+        <translation>Není vybrána žádná položka.</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Název:</translation>
+    </message>
+    <message>
+        <source>The name is empty or already taken.</source>
+        <translation>Název je prázdný nebo již použitý.</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Parametry</translation>
+    </message>
+    <message>
+        <source>Re </source>
+        <translation>Re </translation>
+    </message>
+    <message>
+        <source>Im </source>
+        <translation>Im </translation>
+    </message>
+    <message>
+        <source>Start set X0</source>
+        <translation>Počáteční množina X0</translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation>Bod</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>Úsečka</translation>
+    </message>
+    <message>
+        <source>Triangle</source>
+        <translation>Trojúhelník</translation>
+    </message>
+    <message>
+        <source>Polygon</source>
+        <translation>Mnohoúhelník</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Body</translation>
+    </message>
+    <message>
+        <source>Lifted points</source>
+        <translation>Zdvižené body</translation>
+    </message>
+    <message>
+        <source>Kind:</source>
+        <translation>Druh:</translation>
+    </message>
+    <message>
+        <source>Drag its vertices in the attractor view.</source>
+        <translation>Její vrcholy přetáhněte v pohledu atraktoru.</translation>
+    </message>
+    <message>
+        <source>Points of the lifted space of 000 §2: x, y, then the extra coordinates of the lifting, the homogeneous 1 implied. Commas between coordinates, &apos;;&apos; between points.</source>
+        <translation>Body zdviženého prostoru podle 000 §2: x, y a poté dodatečné souřadnice zdvižení, homogenní 1 se doplní. Souřadnice oddělujte čárkami, body znakem &apos;;&apos;.</translation>
+    </message>
+    <message>
+        <source>Lifted:</source>
+        <translation>Zdvižené:</translation>
+    </message>
+    <message>
+        <source>The start set was refused.</source>
+        <translation>Počáteční množina byla odmítnuta.</translation>
+    </message>
+    <message>
+        <source>The item has no control points.</source>
+        <translation>Položka nemá žádné řídicí body.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a number.</source>
+        <translation>„%1“ není číslo.</translation>
+    </message>
+    <message>
+        <source>Algorithm</source>
+        <translation>Algoritmus</translation>
+    </message>
+    <message>
+        <source>Deterministic</source>
+        <translation>Deterministický</translation>
+    </message>
+    <message>
+        <source>Random (chaos game)</source>
+        <translation>Náhodný (hra chaosu)</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>Režim:</translation>
+    </message>
+    <message>
+        <source>Depth:</source>
+        <translation>Hloubka:</translation>
+    </message>
+    <message>
+        <source>Samples:</source>
+        <translation>Vzorky:</translation>
+    </message>
+    <message>
+        <source>Style</source>
+        <translation>Styl</translation>
+    </message>
+    <message>
+        <source>By map</source>
+        <translation>Podle zobrazení</translation>
+    </message>
+    <message>
+        <source>By address prefix</source>
+        <translation>Podle prefixu adresy</translation>
+    </message>
+    <message>
+        <source>Single colour</source>
+        <translation>Jedna barva</translation>
+    </message>
+    <message>
+        <source>Colour:</source>
+        <translation>Barva:</translation>
+    </message>
+    <message>
+        <source>Prefix length:</source>
+        <translation>Délka prefixu:</translation>
+    </message>
+    <message>
+        <source>Point size:</source>
+        <translation>Velikost bodu:</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>Řídicí body</translation>
+    </message>
+    <message>
+        <source>Set %1 (%2)</source>
+        <translation>Sada %1 (%2)</translation>
+    </message>
+    <message>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <source>z</source>
+        <translation>z</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a finite number.</source>
+        <translation>„%1“ není konečné číslo.</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Přidat</translation>
+    </message>
+    <message>
+        <source>Append a point after the last one</source>
+        <translation>Přidá bod za poslední bod</translation>
+    </message>
+    <message>
+        <source>Insert</source>
+        <translation>Vložit</translation>
+    </message>
+    <message>
+        <source>Insert a point before the selected one (halfway to its predecessor)</source>
+        <translation>Vloží bod před vybraný bod (v polovině cesty k předchozímu)</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Odstranit</translation>
+    </message>
+    <message>
+        <source>Delete the selected points (one undo step)</source>
+        <translation>Odstraní vybrané body (jedním krokem zpět)</translation>
+    </message>
+    <message>
+        <source>The colour of each map&apos;s points: click to choose</source>
+        <translation>Barva bodů jednotlivých zobrazení: kliknutím ji zvolíte</translation>
+    </message>
+    <message>
+        <source>Default…</source>
+        <translation>Výchozí…</translation>
+    </message>
+    <message>
+        <source>Own…</source>
+        <translation>Vlastní…</translation>
+    </message>
+    <message>
+        <source>Map colours:</source>
+        <translation>Barvy zobrazení:</translation>
+    </message>
+    <message>
+        <source>Eigenvalues</source>
+        <translation>Vlastní čísla</translation>
+    </message>
+    <message>
+        <source>The item whose matrices are analysed</source>
+        <translation>Položka, jejíž matice se analyzují</translation>
+    </message>
+    <message>
+        <source>S_i: the subdivision matrices (their eigenvalue 1 is affine invariance); A_i: the linear parts of the lifted maps, whose subdominant eigenvalue decides the tangents; M_i: the lifted maps themselves (003 §4, 004 §2.1)</source>
+        <translation>S_i: subdivizní matice (jejich vlastní číslo 1 vyjadřuje afinní invarianci); A_i: lineární části zdvižených zobrazení, jejichž subdominantní vlastní číslo určuje tečny; M_i: samotná zdvižená zobrazení (003 §4, 004 §2.1)</translation>
+    </message>
+    <message>
+        <source>Source:</source>
+        <translation>Zdroj:</translation>
+    </message>
+    <message>
+        <source>Matrices:</source>
+        <translation>Matice:</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(žádná)</translation>
+    </message>
+    <message>
+        <source>%1 (missing)</source>
+        <translation>%1 (chybí)</translation>
+    </message>
+    <message>
+        <source>%1 matrices %2_i, %3 eigenvalues: see the Spectrum and Matrices panels.</source>
+        <translation>Matice %2_i: %1, vlastní čísla: %3; viz panely Spektrum a Matice.</translation>
+    </message>
+</context>
+<context>
+    <name>awb::Recovery</name>
+    <message>
+        <source>%1: cannot open: %2</source>
+        <translation>%1: nelze otevřít: %2</translation>
+    </message>
+    <message>
+        <source>%1: not an Attractor Workbench recovery file</source>
+        <translation>%1: není záložní soubor Attractor Workbench</translation>
+    </message>
+    <message>
+        <source>%1: written by a newer version of Attractor Workbench</source>
+        <translation>%1: zapsáno novější verzí Attractor Workbench</translation>
+    </message>
+    <message>
+        <source>%1: field &quot;project&quot;: expected an object</source>
+        <translation>%1: pole &quot;project&quot;: očekáván objekt</translation>
+    </message>
+</context>
+<context>
+    <name>awb::RegularityChart</name>
+    <message>
+        <source>Regularity of the four-point scheme</source>
+        <translation>Regularita čtyřbodového schématu</translation>
+    </message>
+    <message>
+        <source>Certified Hölder regularity r(ω) of the four-point scheme</source>
+        <translation>Ověřená Hölderovská regularita r(ω) čtyřbodového schématu</translation>
+    </message>
+    <message>
+        <source>lower bound</source>
+        <translation>dolní mez</translation>
+    </message>
+    <message>
+        <source>upper bound</source>
+        <translation>horní mez</translation>
+    </message>
+    <message>
+        <source>known: ω = 0 → 1, ω = 1/16 → 2</source>
+        <translation>známé hodnoty: ω = 0 → 1, ω = 1/16 → 2</translation>
+    </message>
+    <message>
+        <source>tension ω</source>
+        <translation>napětí ω</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušit</translation>
+    </message>
+    <message>
+        <source>Computing %1 values of ω…</source>
+        <translation>Výpočet hodnot ω (%1)…</translation>
+    </message>
+    <message>
+        <source>%1 values of ω; widest interval %2 (bounds certified; the upper bound is exact for this interpolatory scheme)</source>
+        <translation>Hodnoty ω: %1; nejširší interval %2 (meze jsou ověřené; horní mez je pro toto interpolační schéma přesná)</translation>
+    </message>
+    <message>
+        <source>regularity r</source>
+        <translation>regularita r</translation>
+    </message>
+</context>
+<context>
+    <name>awb::RegularityPanel</name>
+    <message>
+        <source>Regularity: no curve scheme</source>
+        <translation>Regularita: žádné schéma křivky</translation>
+    </message>
+    <message>
+        <source>Regularity %p%</source>
+        <translation>Regularita %p%</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušit</translation>
+    </message>
+    <message>
+        <source>Stop the regularity analysis; the bounds reached so far stay</source>
+        <translation>Zastaví analýzu regularity; dosud dosažené meze zůstanou</translation>
+    </message>
+    <message>
+        <source>Regularity of %1: computing…</source>
+        <translation>Regularita položky %1: probíhá výpočet…</translation>
+    </message>
+    <message>
+        <source>so far: r in [%1, %2]</source>
+        <translation>zatím: r v [%1, %2]</translation>
+    </message>
+    <message>
+        <source>Regularity: %1</source>
+        <translation>Regularita: %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::RemoveControlPointCommand</name>
+    <message>
+        <source>Remove a control point of %1</source>
+        <translation>Odstranit řídicí bod položky %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::RemoveItemCommand</name>
+    <message>
+        <source>Remove %1</source>
+        <translation>Odstranit %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SchemeRegularity</name>
+    <message>
+        <source>does not apply: a complex de Casteljau parameter is not a real subdivision scheme</source>
+        <translation>nelze použít: komplexní de Casteljauův parametr nedává reálné subdivizní schéma</translation>
+    </message>
+    <message>
+        <source>does not apply: %1</source>
+        <translation>nelze použít: %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SpectrumView</name>
+    <message>
+        <source>Re λ</source>
+        <translation>Re λ</translation>
+    </message>
+    <message>
+        <source>Im λ</source>
+        <translation>Im λ</translation>
+    </message>
+    <message>
+        <source>unit circle</source>
+        <translation>jednotková kružnice</translation>
+    </message>
+    <message>
+        <source>dominant 1</source>
+        <translation>dominantní 1</translation>
+    </message>
+    <message>
+        <source>subdominant</source>
+        <translation>subdominantní</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;: λ = %2, |λ| = %3, multiplicity %4, arg λ = %6° (map %5)</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;: λ = %2, |λ| = %3, násobnost %4, arg λ = %6° (zobrazení %5)</translation>
+    </message>
+    <message>
+        <source> — dominant</source>
+        <translation> — dominantní</translation>
+    </message>
+    <message>
+        <source> — subdominant</source>
+        <translation> — subdominantní</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;No maps.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Žádná zobrazení.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;All maps are (eventually) contractive&lt;/b&gt;: the IFS has a unique attractor.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Všechna zobrazení jsou (eventuálně) kontraktivní&lt;/b&gt;: IFS má jediný atraktor.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p style=&apos;color:#b01e1e&apos;&gt;&lt;b&gt;%1 is not contractive&lt;/b&gt;: the IFS has no attractor and its iteration does not converge.&lt;/p&gt;</source>
+        <translation>&lt;p style=&apos;color:#b01e1e&apos;&gt;&lt;b&gt;%1 není kontraktivní&lt;/b&gt;: IFS nemá atraktor a jeho iterace nekonverguje.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Not contractive: spectral radius %1 ≥ 1.</source>
+        <translation>Není kontraktivní: spektrální poloměr %1 ≥ 1.</translation>
+    </message>
+    <message>
+        <source>Contractive: ‖A‖&lt;sub&gt;2&lt;/sub&gt; = %1 &amp;lt; 1.</source>
+        <translation>Kontraktivní: ‖A‖&lt;sub&gt;2&lt;/sub&gt; = %1 &amp;lt; 1.</translation>
+    </message>
+    <message>
+        <source>Eventually contractive: spectral radius %1 &amp;lt; 1, ‖A&lt;sup&gt;%2&lt;/sup&gt;‖&lt;sub&gt;2&lt;/sub&gt; &amp;lt; 1.</source>
+        <translation>Eventuálně kontraktivní: spektrální poloměr %1 &amp;lt; 1, ‖A&lt;sup&gt;%2&lt;/sup&gt;‖&lt;sub&gt;2&lt;/sub&gt; &amp;lt; 1.</translation>
+    </message>
+    <message>
+        <source>Eventually contractive: spectral radius %1 &amp;lt; 1.</source>
+        <translation>Eventuálně kontraktivní: spektrální poloměr %1 &amp;lt; 1.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>žádné</translation>
+    </message>
+    <message>
+        <source>No subdominant eigenvalue: the map is constant.</source>
+        <translation>Žádné subdominantní vlastní číslo: zobrazení je konstantní.</translation>
+    </message>
+    <message>
+        <source>real positive</source>
+        <translation>reálné kladné</translation>
+    </message>
+    <message>
+        <source>The curve has a half-tangent at the fixed point, along the eigenvector (G¹ where the two sides&apos; eigenvectors align).</source>
+        <translation>Křivka má v pevném bodě polotečnu ve směru vlastního vektoru (G¹ tam, kde jsou vlastní vektory obou stran souhlasně rovnoběžné).</translation>
+    </message>
+    <message>
+        <source>Repeated: the tangent direction at the fixed point depends on the control points.</source>
+        <translation>Násobné: směr tečny v pevném bodě závisí na řídicích bodech.</translation>
+    </message>
+    <message>
+        <source>real negative</source>
+        <translation>reálné záporné</translation>
+    </message>
+    <message>
+        <source>The curve oscillates at the fixed point and has no tangent there.</source>
+        <translation>Křivka v pevném bodě osciluje a nemá v něm tečnu.</translation>
+    </message>
+    <message>
+        <source>complex pair</source>
+        <translation>komplexně sdružená dvojice</translation>
+    </message>
+    <message>
+        <source>The curve spirals around the fixed point (no tangent).</source>
+        <translation>Křivka se kolem pevného bodu stáčí do spirály (bez tečny).</translation>
+    </message>
+    <message>
+        <source>complex</source>
+        <translation>komplexní</translation>
+    </message>
+    <message>
+        <source>Near the fixed point the map acts as the spiral similarity z ↦ λz: the curve spirals around the fixed point (no tangent).</source>
+        <translation>V blízkosti pevného bodu působí zobrazení jako spirální podobnost z ↦ λz: křivka se kolem pevného bodu stáčí do spirály (bez tečny).</translation>
+    </message>
+    <message>
+        <source>mixed</source>
+        <translation>smíšené</translation>
+    </message>
+    <message>
+        <source>Several eigenvalues of the same modulus with different signs or phases: no single tangent behaviour.</source>
+        <translation>Několik vlastních čísel se stejným modulem, ale různými znaménky nebo fázemi: žádné jednotné chování tečny.</translation>
+    </message>
+    <message>
+        <source>Subdominant: none.</source>
+        <translation>Subdominantní: žádné.</translation>
+    </message>
+    <message>
+        <source>Subdominant: %1 (%2, |λ| = %3, multiplicity %4).</source>
+        <translation>Subdominantní: %1 (%2, |λ| = %3, násobnost %4).</translation>
+    </message>
+    <message>
+        <source>Unknown file type “%1”: use .pdf, .svg or .png.</source>
+        <translation>Neznámý typ souboru „%1“: použijte .pdf, .svg nebo .png.</translation>
+    </message>
+    <message>
+        <source>Eigenvalues</source>
+        <translation>Vlastní čísla</translation>
+    </message>
+</context>
+<context>
+    <name>awb::StartSetSpec</name>
+    <message>
+        <source>a lifted start set needs at least one point</source>
+        <translation>zdvižená počáteční množina vyžaduje alespoň jeden bod</translation>
+    </message>
+    <message>
+        <source>lifted start point %1 has %2 coordinates: every point needs the same number, at least 2</source>
+        <translation>zdvižený počáteční bod %1 má počet souřadnic %2: všechny body musí mít stejný počet, alespoň 2</translation>
+    </message>
+    <message>
+        <source>every point must have finite coordinates</source>
+        <translation>všechny body musí mít konečné souřadnice</translation>
+    </message>
+    <message>
+        <source>a start set of kind &quot;%1&quot; needs exactly %2 points, got %3</source>
+        <translation>počáteční množina druhu „%1“: počet bodů musí být přesně %2, zadáno %3</translation>
+    </message>
+    <message>
+        <source>a start set of kind &quot;%1&quot; needs at least %2 points, got %3</source>
+        <translation>počáteční množina druhu „%1“: počet bodů musí být alespoň %2, zadáno %3</translation>
+    </message>
+</context>
+<context>
+    <name>awb::StyleSpec</name>
+    <message>
+        <source>the density gamma must be between 0.2 and 10, got %1</source>
+        <translation>gama hustoty musí být mezi 0.2 a 10, zadáno %1</translation>
+    </message>
+    <message>
+        <source>the address prefix length must be between 1 and %1, got %2</source>
+        <translation>délka prefixu adresy musí být mezi 1 a %1, zadáno %2</translation>
+    </message>
+    <message>
+        <source>the point size must be more than 0 and at most %1 pixels</source>
+        <translation>velikost bodu musí být větší než 0 a nejvýše %1 pixelů</translation>
+    </message>
+    <message>
+        <source>colour %1 is &quot;%2&quot;, expected &quot;#rrggbb&quot; (lower-case hexadecimal)</source>
+        <translation>barva %1 je „%2“, očekáváno &quot;#rrggbb&quot; (šestnáctkově, malými písmeny)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SubdivisionCurveItem</name>
+    <message>
+        <source>Bézier of degree %1 needs exactly %2 control points, got %3</source>
+        <translation>Bézierova křivka stupně %1: počet řídicích bodů musí být přesně %2, zadáno %3</translation>
+    </message>
+    <message>
+        <source>a complex Bézier parameter has no real scheme</source>
+        <translation>komplexní Bézierův parametr nemá reálné schéma</translation>
+    </message>
+    <message>
+        <source>unknown scheme kind</source>
+        <translation>neznámý druh schématu</translation>
+    </message>
+    <message>
+        <source>the complex parameter t = %1 %2 %3i must satisfy |t| &lt; 1 and |1 - t| &lt; 1 (004 §3.7)</source>
+        <translation>komplexní parametr t = %1 %2 %3i musí splňovat |t| &lt; 1 a |1 - t| &lt; 1 (004 §3.7)</translation>
+    </message>
+    <message>
+        <source>Curve</source>
+        <translation>Křivka</translation>
+    </message>
+    <message>
+        <source>Change scheme of %1</source>
+        <translation>Změnit schéma položky %1</translation>
+    </message>
+    <message>
+        <source>expected [re, im] or a number</source>
+        <translation>očekáváno [re, im] nebo číslo</translation>
+    </message>
+    <message>
+        <source>Scheme</source>
+        <translation>Schéma</translation>
+    </message>
+    <message>
+        <source>Uniform B-spline</source>
+        <translation>Uniformní B-spline</translation>
+    </message>
+    <message>
+        <source>End-interpolating B-spline</source>
+        <translation>B-spline interpolující koncové body</translation>
+    </message>
+    <message>
+        <source>Chaikin</source>
+        <translation>Chaikin</translation>
+    </message>
+    <message>
+        <source>Corner cutting</source>
+        <translation>Ořezávání rohů</translation>
+    </message>
+    <message>
+        <source>Four-point</source>
+        <translation>Čtyřbodové</translation>
+    </message>
+    <message>
+        <source>Bézier (de Casteljau)</source>
+        <translation>Bézierovo (de Casteljau)</translation>
+    </message>
+    <message>
+        <source>Own matrices</source>
+        <translation>Vlastní matice</translation>
+    </message>
+    <message>
+        <source>Degree</source>
+        <translation>Stupeň</translation>
+    </message>
+    <message>
+        <source>Degree n: the curve has n + 1 control points</source>
+        <translation>Stupeň n: křivka má n + 1 řídicích bodů</translation>
+    </message>
+    <message>
+        <source>Degree of the B-spline (Lane–Riesenfeld, 004 eq. 2.7)</source>
+        <translation>Stupeň B-spline (Lane–Riesenfeld, 004 eq. 2.7)</translation>
+    </message>
+    <message>
+        <source>Split parameter t</source>
+        <translation>Parametr dělení t</translation>
+    </message>
+    <message>
+        <source>de Casteljau split at t (004 eq. 2.5). A complex t inside both discs |t| &lt; 1, |1 − t| &lt; 1 gives a fractal curve (004 §3.7).</source>
+        <translation>de Casteljauovo dělení v bodě t (004 eq. 2.5). Komplexní t uvnitř obou kruhů |t| &lt; 1, |1 − t| &lt; 1 dává fraktální křivku (004 §3.7).</translation>
+    </message>
+    <message>
+        <source>Tension ω</source>
+        <translation>Napětí ω</translation>
+    </message>
+    <message>
+        <source>1/16 gives C1 curves reproducing cubics; −1/2 &lt; ω &lt; 0 or 1/4 ≤ ω &lt; 1/2 gives fractal curves (004 Thm. 2.4.1)</source>
+        <translation>1/16 dává C1 křivky reprodukující kubiky; −1/2 &lt; ω &lt; 0 nebo 1/4 ≤ ω &lt; 1/2 dává fraktální křivky (004 Thm. 2.4.1)</translation>
+    </message>
+    <message>
+        <source>New points at parameters a &lt; b on every edge (Chaikin: 1/4, 3/4)</source>
+        <translation>Nové body v parametrech a &lt; b na každé hraně (Chaikin: 1/4, 3/4)</translation>
+    </message>
+    <message>
+        <source>First cut a</source>
+        <translation>První řez a</translation>
+    </message>
+    <message>
+        <source>Second cut b</source>
+        <translation>Druhý řez b</translation>
+    </message>
+    <message>
+        <source>Subdivision curve</source>
+        <translation>Subdivizní křivka</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SubdivisionSurfaceItem</name>
+    <message>
+        <source>Surface</source>
+        <translation>Plocha</translation>
+    </message>
+    <message>
+        <source>Change net of %1</source>
+        <translation>Změnit síť položky %1</translation>
+    </message>
+    <message>
+        <source>Change subdivision rounds of %1</source>
+        <translation>Změnit kola subdivize položky %1</translation>
+    </message>
+    <message>
+        <source>Turn the view of %1</source>
+        <translation>Otočit pohled položky %1</translation>
+    </message>
+    <message>
+        <source>expected an array of lattice coordinates [i, j]</source>
+        <translation>očekáváno pole mřížových souřadnic [i, j]</translation>
+    </message>
+    <message>
+        <source>expected lattice coordinates [i, j]</source>
+        <translation>očekávány mřížové souřadnice [i, j]</translation>
+    </message>
+    <message>
+        <source>lattice coordinates are whole numbers</source>
+        <translation>mřížové souřadnice jsou celá čísla</translation>
+    </message>
+    <message>
+        <source>at least one map must be used (leave the field out to use all)</source>
+        <translation>musí být použito alespoň jedno zobrazení (pro použití všech pole vynechte)</translation>
+    </message>
+    <message>
+        <source>map indices are whole numbers (0-based)</source>
+        <translation>indexy zobrazení jsou celá čísla (číslovaná od 0)</translation>
+    </message>
+    <message>
+        <source>the elevation must be from -90 to 90 degrees</source>
+        <translation>elevace musí být od -90 do 90 stupňů</translation>
+    </message>
+    <message>
+        <source>Scheme</source>
+        <translation>Schéma</translation>
+    </message>
+    <message>
+        <source>Bicubic B-spline (Catmull–Clark)</source>
+        <translation>Bikubický B-spline (Catmull–Clark)</translation>
+    </message>
+    <message>
+        <source>Loop (three-direction box spline)</source>
+        <translation>Loop (třísměrový box spline)</translation>
+    </message>
+    <message>
+        <source>Kobbelt √3</source>
+        <translation>Kobbelt √3</translation>
+    </message>
+    <message>
+        <source>A new scheme starts from its own default net (000 §3)</source>
+        <translation>Nové schéma začíná z vlastní výchozí sítě (000 §3)</translation>
+    </message>
+    <message>
+        <source>Layout</source>
+        <translation>Rozložení</translation>
+    </message>
+    <message>
+        <source>The patch&apos;s domain and the maps covering it</source>
+        <translation>Definiční obor plátu a zobrazení, která jej pokrývají</translation>
+    </message>
+    <message>
+        <source>Maps</source>
+        <translation>Zobrazení</translation>
+    </message>
+    <message>
+        <source>Map %1</source>
+        <translation>Zobrazení %1</translation>
+    </message>
+    <message>
+        <source>Leave maps out to draw a fractal lying on the surface (000 Fig. 9)</source>
+        <translation>Vynecháním zobrazení nakreslíte fraktál ležící na ploše (000 Fig. 9)</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>Pohled</translation>
+    </message>
+    <message>
+        <source>Azimuth</source>
+        <translation>Azimut</translation>
+    </message>
+    <message>
+        <source>Direction of the orthographic camera around the z axis, in degrees</source>
+        <translation>Směr ortografické kamery kolem osy z, ve stupních</translation>
+    </message>
+    <message>
+        <source>Elevation</source>
+        <translation>Elevace</translation>
+    </message>
+    <message>
+        <source>Height of the camera above the xy plane, in degrees</source>
+        <translation>Výška kamery nad rovinou xy, ve stupních</translation>
+    </message>
+    <message>
+        <source>Subdivision rounds</source>
+        <translation>Kola subdivize</translation>
+    </message>
+    <message>
+        <source>Rounds of classic subdivision of the net (000 Figs. 6–8, top)</source>
+        <translation>Kola klasické subdivize sítě (000 Figs. 6–8, nahoře)</translation>
+    </message>
+    <message>
+        <source>from 0 to %1 rounds</source>
+        <translation>od 0 do %1 kol</translation>
+    </message>
+    <message>
+        <source>at least one map must stay on</source>
+        <translation>alespoň jedno zobrazení musí zůstat zapnuté</translation>
+    </message>
+    <message>
+        <source>Subdivision surface</source>
+        <translation>Subdivizní plocha</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SurfaceNet</name>
+    <message>
+        <source>every control point must have finite coordinates</source>
+        <translation>každý řídicí bod musí mít konečné souřadnice</translation>
+    </message>
+    <message>
+        <source>%1 lattice coordinates for %2 control points: give one [i, j] per control point</source>
+        <translation>počet mřížových souřadnic (%1) neodpovídá počtu řídicích bodů (%2): zadejte jednu dvojici [i, j] pro každý řídicí bod</translation>
+    </message>
+    <message>
+        <source>not the net of a %1 %2 patch: %3</source>
+        <translation>není síť plátu %1 s rozložením %2: %3</translation>
+    </message>
+    <message>
+        <source>map %1 does not exist: the %2 layout has maps 0 to %3</source>
+        <translation>zobrazení %1 neexistuje: rozložení %2 má zobrazení 0 až %3</translation>
+    </message>
+    <message>
+        <source>list each map once, in increasing order (0-based)</source>
+        <translation>uveďte každé zobrazení jednou, ve vzestupném pořadí (číslováno od 0)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SurfaceSchemeSpec</name>
+    <message>
+        <source>the %1 scheme has the layouts %2, not &apos;%3&apos;</source>
+        <translation>schéma %1 má rozložení %2, ne „%3“</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SurfaceView</name>
+    <message>
+        <source>Drawing… (CPU renderer)</source>
+        <translation>Kreslení… (vykreslování na CPU)</translation>
+    </message>
+    <message>
+        <source>CPU renderer</source>
+        <translation>Vykreslování na CPU</translation>
+    </message>
+    <message>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <source>z</source>
+        <translation>z</translation>
+    </message>
+</context>
+<context>
+    <name>awb::UserGuideDialog</name>
+    <message>
+        <source>Attractor Workbench — User Guide</source>
+        <translation>Attractor Workbench — Uživatelská příručka</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;The guide is missing.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Příručka chybí.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Home or F</source>
+        <translation>Home nebo F</translation>
+    </message>
+    <message>
+        <source>Fit the attractor view to its content</source>
+        <translation>Přizpůsobit pohled atraktoru jeho obsahu</translation>
+    </message>
+    <message>
+        <source>+ / −</source>
+        <translation>+ / −</translation>
+    </message>
+    <message>
+        <source>Zoom the attractor view in / out</source>
+        <translation>Přiblížit / oddálit pohled atraktoru</translation>
+    </message>
+    <message>
+        <source>Mouse wheel</source>
+        <translation>Kolečko myši</translation>
+    </message>
+    <message>
+        <source>Zoom at the cursor (view); scroll (panels)</source>
+        <translation>Přiblížení v místě kurzoru (pohled); posouvání (panely)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::analysis</name>
+    <message>
+        <source>cannot index an empty point set</source>
+        <translation>prázdnou množinu bodů nelze indexovat</translation>
+    </message>
+    <message>
+        <source>point sets must have 1 to 3 coordinates</source>
+        <translation>množiny bodů musí mít 1 až 3 souřadnice</translation>
+    </message>
+    <message>
+        <source>point set</source>
+        <translation>množina bodů</translation>
+    </message>
+    <message>
+        <source>point sets of different dimensions</source>
+        <translation>množiny bodů různých dimenzí</translation>
+    </message>
+    <message>
+        <source>too few points for box counting</source>
+        <translation>příliš málo bodů pro počítání krabic</translation>
+    </message>
+    <message>
+        <source>all points coincide</source>
+        <translation>všechny body splývají</translation>
+    </message>
+    <message>
+        <source>not enough points for three box sizes with at least %1 points per box</source>
+        <translation>nedostatek bodů pro tři velikosti krabic s alespoň %1 body na krabici</translation>
+    </message>
+    <message>
+        <source>the joint spectral radius needs at least one matrix</source>
+        <translation>společný spektrální poloměr vyžaduje alespoň jednu matici</translation>
+    </message>
+    <message>
+        <source>the joint spectral radius needs square matrices of one size; matrix %1 differs</source>
+        <translation>společný spektrální poloměr vyžaduje čtvercové matice stejného rozměru; matice %1 se liší</translation>
+    </message>
+    <message>
+        <source>matrix %1</source>
+        <translation>matice %1</translation>
+    </message>
+    <message>
+        <source>not convergent: the first difference scheme does not contract (JSR &gt;= 1)</source>
+        <translation>nekonverguje: první diferenční schéma není kontraktivní (JSR &gt;= 1)</translation>
+    </message>
+    <message>
+        <source>convergence not certified within the time budget</source>
+        <translation>konvergenci se v rámci časového limitu nepodařilo ověřit</translation>
+    </message>
+    <message>
+        <source>C^%1, Hölder regularity in [%2, %3]</source>
+        <translation>C^%1, Hölderovská regularita v [%2, %3]</translation>
+    </message>
+    <message>
+        <source>cancelled; the bounds are those reached. </source>
+        <translation>zrušeno; uvedené meze jsou ty dosud dosažené. </translation>
+    </message>
+    <message>
+        <source>time budget spent; the bounds are those reached. </source>
+        <translation>časový limit vyčerpán; uvedené meze jsou ty dosud dosažené. </translation>
+    </message>
+    <message>
+        <source>not convergent</source>
+        <translation>nekonverguje</translation>
+    </message>
+    <message>
+        <source>C^0 not certified</source>
+        <translation>C^0 neověřeno</translation>
+    </message>
+    <message>
+        <source>the arity of a scheme must be at least 2, got %1</source>
+        <translation>arita schématu musí být alespoň 2, zadáno %1</translation>
+    </message>
+    <message>
+        <source>the mask has a coefficient that is not a finite number</source>
+        <translation>maska obsahuje koeficient, který není konečné číslo</translation>
+    </message>
+    <message>
+        <source>no difference scheme: the mask is zero</source>
+        <translation>diferenční schéma neexistuje: maska je nulová</translation>
+    </message>
+    <message>
+        <source>no difference scheme: the symbol a(z) has no factor 1 + z%1 (the rules&apos; weights do not each sum to 1), so the scheme does not reproduce constants and is not convergent</source>
+        <translation>diferenční schéma neexistuje: symbol a(z) nemá faktor 1 + z%1 (součet vah každého pravidla není 1), takže schéma nereprodukuje konstanty a nekonverguje</translation>
+    </message>
+    <message>
+        <source>not convergent: the mask sums to %1, not the arity %2 (the scheme does not reproduce constants)</source>
+        <translation>nekonverguje: součet masky je %1, nikoli arita %2 (schéma nereprodukuje konstanty)</translation>
+    </message>
+    <message>
+        <source>the upper bound is the exact Hölder exponent only if the integer shifts of the basic limit function are stable (not checked for this mask). </source>
+        <translation>horní mez je přesným Hölderovým exponentem jen tehdy, jsou-li celočíselné posuny základní limitní funkce stabilní (pro tuto masku neověřeno). </translation>
+    </message>
+    <message>
+        <source>regularity needs at least two subdivision matrices</source>
+        <translation>regularita vyžaduje alespoň dvě subdivizní matice</translation>
+    </message>
+    <message>
+        <source>the subdivision matrices must all be square and of one size</source>
+        <translation>subdivizní matice musí být všechny čtvercové a stejného rozměru</translation>
+    </message>
+    <message>
+        <source>matrix S_%1</source>
+        <translation>matice S_%1</translation>
+    </message>
+    <message>
+        <source>no difference scheme: the rows of S_%1 do not all sum to 1</source>
+        <translation>diferenční schéma neexistuje: součty řádků S_%1 nejsou všechny rovny 1</translation>
+    </message>
+    <message>
+        <source>no regularity: S_1 or S_p has no simple eigenvalue 1, so the curve&apos;s end points are not defined</source>
+        <translation>bez regularity: S_1 nebo S_p nemá jednoduché vlastní číslo 1, takže koncové body křivky nejsou definovány</translation>
+    </message>
+    <message>
+        <source>no regularity: the pieces S_%1 and S_%2 do not join (the attractor is not a continuous curve in its %3-adic parameter)</source>
+        <translation>bez regularity: části S_%1 a S_%2 na sebe nenavazují (atraktor není spojitá křivka ve svém %3-adickém parametru)</translation>
+    </message>
+    <message>
+        <source>C^infinity: the curve is one polynomial piece of degree %1</source>
+        <translation>C^infinity: křivka je jediný polynomiální úsek stupně %1</translation>
+    </message>
+    <message>
+        <source>the matrices reproduce every polynomial of degree &lt; %1 in the %2-adic parameter and leave no complement</source>
+        <translation>matice reprodukují každý polynom stupně &lt; %1 v %2-adickém parametru a nezbývá žádný doplněk</translation>
+    </message>
+    <message>
+        <source>the upper bound assumes the curve&apos;s basis functions are stable. </source>
+        <translation>horní mez předpokládá, že bázové funkce křivky jsou stabilní. </translation>
+    </message>
+    <message>
+        <source>the pieces join only C^%1 (derivative %2 differs across a join). </source>
+        <translation>části na sebe navazují jen se spojitostí C^%1 (derivace %2 se na spoji liší). </translation>
+    </message>
+    <message>
+        <source>C^infinity: a Bézier curve is a polynomial of degree %1</source>
+        <translation>C^infinity: Bézierova křivka je polynom stupně %1</translation>
+    </message>
+    <message>
+        <source>de Casteljau subdivision reproduces the Bézier polynomial exactly</source>
+        <translation>de Casteljauova subdivize reprodukuje Bézierův polynom přesně</translation>
+    </message>
+    <message>
+        <source>eigenvalues need a square matrix</source>
+        <translation>vlastní čísla vyžadují čtvercovou matici</translation>
+    </message>
+    <message>
+        <source>matrix</source>
+        <translation>matice</translation>
+    </message>
+    <message>
+        <source>the eigenvalue computation did not converge</source>
+        <translation>výpočet vlastních čísel nekonvergoval</translation>
+    </message>
+    <message>
+        <source>no subdominant eigenvalue (the map is constant)</source>
+        <translation>žádné subdominantní vlastní číslo (zobrazení je konstantní)</translation>
+    </message>
+    <message>
+        <source>real positive: the curve has a half-tangent at the fixed point, along the eigenvector (G1 where the two sides&apos; eigenvectors align)</source>
+        <translation>reálné kladné: křivka má v pevném bodě polotečnu ve směru vlastního vektoru (G1 tam, kde jsou vlastní vektory obou stran souhlasně rovnoběžné)</translation>
+    </message>
+    <message>
+        <source>real positive but repeated: the tangent direction at the fixed point depends on the control points</source>
+        <translation>reálné kladné, ale násobné: směr tečny v pevném bodě závisí na řídicích bodech</translation>
+    </message>
+    <message>
+        <source>real negative: the curve oscillates at the fixed point and has no tangent there</source>
+        <translation>reálné záporné: křivka v pevném bodě osciluje a nemá v něm tečnu</translation>
+    </message>
+    <message>
+        <source>complex pair: the curve spirals around the fixed point (no tangent)</source>
+        <translation>komplexně sdružená dvojice: křivka se kolem pevného bodu stáčí do spirály (bez tečny)</translation>
+    </message>
+    <message>
+        <source>complex: near the fixed point the map acts as the spiral similarity z -&gt; lambda z, so the curve spirals around the fixed point (no tangent)</source>
+        <translation>komplexní: v blízkosti pevného bodu působí zobrazení jako spirální podobnost z -&gt; lambda z, takže se křivka kolem pevného bodu stáčí do spirály (bez tečny)</translation>
+    </message>
+    <message>
+        <source>several eigenvalues of the same modulus with different signs or phases: no single tangent behaviour</source>
+        <translation>několik vlastních čísel se stejnou absolutní hodnotou a různými znaménky či fázemi: žádné jednotné chování tečny</translation>
+    </message>
+    <message>
+        <source>not contractive: spectral radius %1 &gt;= 1</source>
+        <translation>není kontraktivní: spektrální poloměr %1 &gt;= 1</translation>
+    </message>
+    <message>
+        <source>contractive (factor ||A||_2 = %1)</source>
+        <translation>kontraktivní (koeficient ||A||_2 = %1)</translation>
+    </message>
+    <message>
+        <source>eventually contractive (spectral radius %1 &lt; 1; ||A^%2||_2 &lt; 1)</source>
+        <translation>eventuálně kontraktivní (spektrální poloměr %1 &lt; 1; ||A^%2||_2 &lt; 1)</translation>
+    </message>
+    <message>
+        <source>eventually contractive (spectral radius %1 &lt; 1)</source>
+        <translation>eventuálně kontraktivní (spektrální poloměr %1 &lt; 1)</translation>
+    </message>
+    <message>
+        <source>map %1 is not contractive: the spectral radius of its linear part is %2 &gt;= 1, so the IFS has no attractor (the iteration does not converge)</source>
+        <translation>zobrazení %1 není kontraktivní: spektrální poloměr jeho lineární části je %2 &gt;= 1, takže IFS nemá atraktor (iterace nekonverguje)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::cli</name>
+    <message>
+        <source>Render the bundled paper figures to PNG files (one row of panels per figure: the start set, a few iterates of the Hutchinson operator, and the attractor, over the control polygon).</source>
+        <translation>Vykreslí přiložené obrázky z článků do souborů PNG (na každý obrázek jeden řádek panelů: počáteční množina, několik iterací Hutchinsonova operátoru a atraktor, vše nad řídicím polygonem).</translation>
+    </message>
+    <message>
+        <source>Directory for the PNG files (created if missing).</source>
+        <translation>Složka pro soubory PNG (vytvoří se, pokud neexistuje).</translation>
+    </message>
+    <message>
+        <source>List the examples and exit.</source>
+        <translation>Vypíše seznam příkladů a skončí.</translation>
+    </message>
+    <message>
+        <source>attractor-cli: cannot create directory %1</source>
+        <translation>attractor-cli: nelze vytvořit složku %1</translation>
+    </message>
+    <message>
+        <source>Usage: attractor-cli &lt;command&gt; [options]
+
+Commands:
+  render     render an item of a project to PNG, SVG or PDF
+  animate    render the frames of an item&apos;s animation (PNG files, MP4/GIF)
+  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)
+  points     the points of F^k(X0) as CSV
+  check      validate a project file
+  rewrite    load and save a project in canonical form
+  export     attractor points as PLY, a surface&apos;s subdivided net as OBJ
+  polygon    the control polygon after K subdivision steps (JSON)
+  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG
+
+Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
+</source>
+        <translation>Použití: attractor-cli &lt;command&gt; [options]
+
+Příkazy:
+  render     vykreslí položku projektu do PNG, SVG nebo PDF
+  animate    vykreslí snímky animace položky (soubory PNG, MP4/GIF)
+  analyse    vlastní čísla, kontraktivita, pevné body, dimenze (JSON)
+  points     body F^k(X0) jako CSV
+  check      ověří projektový soubor
+  rewrite    načte a uloží projekt v kanonickém tvaru
+  export     body atraktoru jako PLY, zjemněná síť plochy jako OBJ
+  polygon    řídicí polygon po K krocích subdivize (JSON)
+  examples   vykreslí vestavěné obrázky z článků (000 Figs. 2, 3, 5) do PNG
+
+Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --help&apos;.
+</translation>
+    </message>
+    <message>
+        <source>attractor-cli: unknown command &apos;%1&apos;</source>
+        <translation>attractor-cli: neznámý příkaz „%1“</translation>
+    </message>
+    <message>
+        <source>expected %1 project file, got %2 arguments (see --help)</source>
+        <translation>očekávaný počet projektových souborů: %1, zadáno argumentů: %2 (viz --help)</translation>
+    </message>
+    <message>
+        <source>no item named &apos;%1&apos; in %2</source>
+        <translation>v %2 není žádná položka s názvem „%1“</translation>
+    </message>
+    <message>
+        <source>the figure&apos;s project</source>
+        <translation>projektu obrázku</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; (%2) has no attractor</source>
+        <translation>položka „%1“ (%2) nemá atraktor</translation>
+    </message>
+    <message>
+        <source>%1 has no item with an attractor</source>
+        <translation>%1 neobsahuje žádnou položku s atraktorem</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos;: %2</source>
+        <translation>položka „%1“: %2</translation>
+    </message>
+    <message>
+        <source>--%1 must be a whole number from %2 to %3, got &apos;%4&apos;</source>
+        <translation>--%1 musí být celé číslo od %2 do %3, zadáno „%4“</translation>
+    </message>
+    <message>
+        <source>--%1 must be a number from %2 to %3, got &apos;%4&apos;</source>
+        <translation>--%1 musí být číslo od %2 do %3, zadáno „%4“</translation>
+    </message>
+    <message>
+        <source>--start: &apos;%1&apos; is not a finite number</source>
+        <translation>--start: „%1“ není konečné číslo</translation>
+    </message>
+    <message>
+        <source>--start must be point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;..., got &apos;%1&apos;</source>
+        <translation>--start musí mít tvar point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;..., zadáno „%1“</translation>
+    </message>
+    <message>
+        <source>--start %1 needs %2 coordinates (%3 per point), got %4</source>
+        <translation>--start %1: počet souřadnic musí být %2 (%3 na bod), zadáno %4</translation>
+    </message>
+    <message>
+        <source>a multiple of %1</source>
+        <translation>násobek %1</translation>
+    </message>
+    <message>
+        <source>depth %1 gives %2 points, more than --max-points %3</source>
+        <translation>hloubka %1 dává %2 bodů, více než --max-points %3</translation>
+    </message>
+    <message>
+        <source>Image size in pixels (default 900x700).</source>
+        <translation>Velikost obrázku v pixelech (výchozí 900x700).</translation>
+    </message>
+    <message>
+        <source>Deterministic iteration depth (default: the item&apos;s).</source>
+        <translation>Deterministická hloubka iterace (výchozí: podle položky).</translation>
+    </message>
+    <message>
+        <source>Random iteration with this many points (up to 1e12; memory stays that of the raster).</source>
+        <translation>Náhodná iterace s tímto počtem bodů (až 1e12; paměťová náročnost zůstává na úrovni rastru).</translation>
+    </message>
+    <message>
+        <source>Raster tone: &apos;hits&apos; (every lit pixel opaque, the papers&apos; look) or &apos;density&apos; (log density of the invariant measure, gamma and vibrancy as flame renderers). Default: the item&apos;s style (auto: hits for deterministic, density for random iteration).</source>
+        <translation>Tón rastru: &apos;hits&apos; (každý zasažený pixel je neprůhledný, vzhled jako v článcích) nebo &apos;density&apos; (logaritmická hustota invariantní míry, gama a sytost jako ve flame rendererech). Výchozí: styl položky (auto: hits pro deterministickou, density pro náhodnou iteraci).</translation>
+    </message>
+    <message>
+        <source>Density tone: display gamma (default: the item&apos;s, 2.2).</source>
+        <translation>Tón density: gama zobrazení (výchozí: podle položky, 2.2).</translation>
+    </message>
+    <message>
+        <source>Density tone: 1 saturated colours, 0 per-channel gamma (default 1).</source>
+        <translation>Tón density: 1 syté barvy, 0 gama po jednotlivých kanálech (výchozí 1).</translation>
+    </message>
+    <message>
+        <source>Histogram cells per pixel side, 1..4 (default 1; 2 or 3 anti-alias edges).</source>
+        <translation>Počet buněk histogramu na stranu pixelu, 1..4 (výchozí 1; 2 nebo 3 vyhlazují hrany).</translation>
+    </message>
+    <message>
+        <source>Threads of the raster engine (default: all cores).</source>
+        <translation>Počet vláken rastrovacího modulu (výchozí: všechna jádra).</translation>
+    </message>
+    <message>
+        <source>Surfaces: the camera&apos;s azimuth and elevation in degrees (orthographic; default: the item&apos;s camera).</source>
+        <translation>Plochy: azimut a elevace kamery ve stupních (ortografická projekce; výchozí: kamera položky).</translation>
+    </message>
+    <message>
+        <source>Plane figures: the world rectangle to frame (padded by 6%), e.g. to compare figures at one scale (default: fit the content).</source>
+        <translation>Rovinné obrázky: obdélník ve světových souřadnicích, který se má zobrazit (s okrajem 6 %), např. pro porovnání obrázků ve stejném měřítku (výchozí: přizpůsobit obsahu).</translation>
+    </message>
+    <message>
+        <source>The output&apos;s format when its name has no suffix (e.g. /dev/stdout): png, svg or pdf (default: the suffix).</source>
+        <translation>Formát výstupu, pokud jeho název nemá příponu (např. /dev/stdout): png, svg nebo pdf (výchozí: podle přípony).</translation>
+    </message>
+    <message>
+        <source>--depth and --samples exclude each other</source>
+        <translation>--depth a --samples se navzájem vylučují</translation>
+    </message>
+    <message>
+        <source>--size must be WxH with 64..16384 pixels each, got &apos;%1&apos;</source>
+        <translation>--size musí mít tvar ŠxV s 64..16384 pixely v každém rozměru, zadáno „%1“</translation>
+    </message>
+    <message>
+        <source>--tone must be &apos;hits&apos; or &apos;density&apos;, got &apos;%1&apos;</source>
+        <translation>--tone musí být &apos;hits&apos; nebo &apos;density&apos;, zadáno „%1“</translation>
+    </message>
+    <message>
+        <source>--bounds must be x0,y0,x1,y1 with x0 &lt; x1 and y0 &lt; y1, got &apos;%1&apos;</source>
+        <translation>--bounds musí mít tvar x0,y0,x1,y1 s x0 &lt; x1 a y0 &lt; y1, zadáno „%1“</translation>
+    </message>
+    <message>
+        <source>--format must be png, svg or pdf, got &apos;%1&apos;</source>
+        <translation>--format musí být png, svg nebo pdf, zadáno „%1“</translation>
+    </message>
+    <message>
+        <source>depth %1 makes %2 images; at most 4e9 are rendered</source>
+        <translation>hloubka %1 dává %2 obrazů; vykresluje se nejvýše 4e9</translation>
+    </message>
+    <message>
+        <source>--view must be AZ,EL in degrees with |EL| &lt;= 90, got &apos;%1&apos;</source>
+        <translation>--view musí mít tvar AZ,EL ve stupních s |EL| &lt;= 90, zadáno „%1“</translation>
+    </message>
+    <message>
+        <source>%1 random points</source>
+        <translation>%1 náhodných bodů</translation>
+    </message>
+    <message>
+        <source>F^%1(X0)</source>
+        <translation>F^%1(X0)</translation>
+    </message>
+    <message>
+        <source>, maps %1 of %2</source>
+        <translation>, zobrazení %1 z %2</translation>
+    </message>
+    <message>
+        <source>%1: %2%3 — orthographic view from azimuth %4°, elevation %5°</source>
+        <translation>%1: %2%3 — ortografický pohled z azimutu %4°, elevace %5°</translation>
+    </message>
+    <message>
+        <source>%1: %2 random points</source>
+        <translation>%1: %2 náhodných bodů</translation>
+    </message>
+    <message>
+        <source>%1: F^%2(X0)</source>
+        <translation>%1: F^%2(X0)</translation>
+    </message>
+    <message>
+        <source>%1: polygon after %2 steps</source>
+        <translation>%1: polygon po kroku %2</translation>
+    </message>
+    <message>
+        <source>Render an item&apos;s attractor (with its control polygons) to PNG, SVG or PDF.</source>
+        <translation>Vykreslí atraktor položky (s jejími řídicími polygony) do PNG, SVG nebo PDF.</translation>
+    </message>
+    <message>
+        <source>The .awb project file.</source>
+        <translation>Projektový soubor .awb.</translation>
+    </message>
+    <message>
+        <source>The item to render (default: the first with an attractor).</source>
+        <translation>Položka, která se má vykreslit (výchozí: první položka s atraktorem).</translation>
+    </message>
+    <message>
+        <source>Output file: .png, .svg or .pdf.</source>
+        <translation>Výstupní soubor: .png, .svg nebo .pdf.</translation>
+    </message>
+    <message>
+        <source>--out FILE is required</source>
+        <translation>--out FILE je povinné</translation>
+    </message>
+    <message>
+        <source>Render the frames of an item&apos;s animation (its keyframed parameters): numbered PNG files in a folder, or an MP4 or GIF movie through ffmpeg. Frame k is the item with its parameters at time k / fps, drawn exactly as `render` draws it.</source>
+        <translation>Vykreslí snímky animace položky (jejích parametrů s klíčovými snímky): číslované soubory PNG ve složce, nebo film MP4 či GIF pomocí ffmpeg. Snímek k je položka s parametry v čase k / fps, vykreslená přesně tak, jak ji vykresluje `render`.</translation>
+    </message>
+    <message>
+        <source>The animated item (default: the first item with an animation).</source>
+        <translation>Animovaná položka (výchozí: první položka s animací).</translation>
+    </message>
+    <message>
+        <source>A folder for frame-0000.png, frame-0001.png, ... (made if missing), a movie .mp4 or .gif (made by ffmpeg), or with --frame one .png/.svg/.pdf.</source>
+        <translation>Složka pro frame-0000.png, frame-0001.png, ... (vytvoří se, pokud neexistuje), film .mp4 nebo .gif (vytvoří ho ffmpeg), nebo s --frame jeden soubor .png/.svg/.pdf.</translation>
+    </message>
+    <message>
+        <source>Frames per second (default: the animation&apos;s).</source>
+        <translation>Počet snímků za sekundu (výchozí: podle animace).</translation>
+    </message>
+    <message>
+        <source>Render only frame K (0 = the start) to the file --out.</source>
+        <translation>Vykreslí jen snímek K (0 = začátek) do souboru --out.</translation>
+    </message>
+    <message>
+        <source>Captions without the frame&apos;s time and values.</source>
+        <translation>Popisky bez času a hodnot snímku.</translation>
+    </message>
+    <message>
+        <source>--out DIR|FILE is required</source>
+        <translation>--out DIR|FILE je povinné</translation>
+    </message>
+    <message>
+        <source>%1 has no animated item</source>
+        <translation>%1 neobsahuje žádnou animovanou položku</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; has no animation: key its parameters in the Animation dock, or give it an &quot;animation&quot; field (docs/file-format.md)</source>
+        <translation>položka „%1“ nemá animaci: nastavte klíče jejích parametrů v panelu Animace, nebo jí přidejte pole &quot;animation&quot; (docs/file-format.md)</translation>
+    </message>
+    <message>
+        <source>attractor-cli: note: the track of %1 is skipped: item &apos;%2&apos; has no such input now</source>
+        <translation>attractor-cli: poznámka: stopa %1 se přeskakuje: položka „%2“ nyní takový vstup nemá</translation>
+    </message>
+    <message>
+        <source>%1,%2,%3,%4</source>
+        <translation>%1,%2,%3,%4</translation>
+    </message>
+    <message>
+        <source>fitted per frame</source>
+        <translation>přizpůsobeno každému snímku</translation>
+    </message>
+    <message>
+        <source>frame %1 (t = %2 s): %3</source>
+        <translation>snímek %1 (t = %2 s): %3</translation>
+    </message>
+    <message>
+        <source>writing %1 needs ffmpeg, which is not installed (Debian: apt-get install ffmpeg); give --out a folder to get the frames as PNG files</source>
+        <translation>zápis %1 vyžaduje ffmpeg, který není nainstalován (Debian: apt-get install ffmpeg); chcete-li snímky jako soubory PNG, zadejte v --out složku</translation>
+    </message>
+    <message>
+        <source>cannot make a temporary folder for the frames: %1</source>
+        <translation>nelze vytvořit dočasnou složku pro snímky: %1</translation>
+    </message>
+    <message>
+        <source>%1 is a file, not a folder (a movie needs .mp4 or .gif)</source>
+        <translation>%1 je soubor, ne složka (film vyžaduje .mp4 nebo .gif)</translation>
+    </message>
+    <message>
+        <source>cannot make the folder %1</source>
+        <translation>nelze vytvořit složku %1</translation>
+    </message>
+    <message>
+        <source>frame-%1.png</source>
+        <translation>frame-%1.png</translation>
+    </message>
+    <message>
+        <source>ffmpeg could not write %1: %2</source>
+        <translation>ffmpeg nemohl zapsat %1: %2</translation>
+    </message>
+    <message>
+        <source>%1: %2 frames of %3x%4 at %5 frames/s (%6 s); rendered in %7 s, %8 frames/s
+bounds: %9
+</source>
+        <translation>%1: snímků: %2, %3x%4 při %5 snímcích/s (%6 s); vykresleno za %7 s, %8 snímků/s
+meze: %9
+</translation>
+    </message>
+    <message>
+        <source>Analyse the items of a project: per map S_i (exact fractions), M_i = P^-1 S_i P with its blocks A_i, b_i, the eigenvalues of S_i and A_i, spectral radius, contractivity and fixed point; per item the subdominant eigenvalues, the Hausdorff distance to the exact curve and the box-counting dimension; per subdivision curve the certified Hölder regularity of its scheme.</source>
+        <translation>Analyzuje položky projektu: pro každé zobrazení S_i (přesné zlomky), M_i = P^-1 S_i P s bloky A_i, b_i, vlastní čísla S_i a A_i, spektrální poloměr, kontraktivitu a pevný bod; pro každou položku subdominantní vlastní čísla, Hausdorffovu vzdálenost od přesné křivky a dimenzi určenou počítáním krabic; pro každou subdivizní křivku ověřenou Hölderovskou regularitu jejího schématu.</translation>
+    </message>
+    <message>
+        <source>Only this item.</source>
+        <translation>Jen tato položka.</translation>
+    </message>
+    <message>
+        <source>Print JSON (the only format so far).</source>
+        <translation>Vypsat JSON (zatím jediný formát).</translation>
+    </message>
+    <message>
+        <source>--json is required (the only output format)</source>
+        <translation>--json je povinné (jediný výstupní formát)</translation>
+    </message>
+    <message>
+        <source>Print the points of F^k(X0) as CSV: x, y (and z for a surface), the map applied last (1-based), and the view. --address w limits them to the sub-copy f_w(A): the points f_w(F^k(X0)).</source>
+        <translation>Vypíše body F^k(X0) jako CSV: x, y (u plochy i z), naposledy použité zobrazení (číslováno od 1) a pohled. --address w je omezí na dílčí kopii f_w(A): body f_w(F^k(X0)).</translation>
+    </message>
+    <message>
+        <source>The item.</source>
+        <translation>Položka.</translation>
+    </message>
+    <message>
+        <source>Iteration depth (default: the item&apos;s).</source>
+        <translation>Hloubka iterace (výchozí: podle položky).</translation>
+    </message>
+    <message>
+        <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2; default: the item&apos;s).</source>
+        <translation>Počáteční množina: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (rovinné souřadnice; u plochy x,y,z) | lifted:x,y,c1,...;x,y,c1,... (body zdviženého prostoru z 000 §2; výchozí: podle položky).</translation>
+    </message>
+    <message>
+        <source>Print CSV (the only format so far).</source>
+        <translation>Vypsat CSV (zatím jediný formát).</translation>
+    </message>
+    <message>
+        <source>Only the sub-copy f_w(A) of this address: 0-based map numbers, w_1 (the outermost map) first, e.g. 0,1,1.</source>
+        <translation>Jen dílčí kopie f_w(A) této adresy: čísla zobrazení od 0, jako první w_1 (vnější zobrazení), např. 0,1,1.</translation>
+    </message>
+    <message>
+        <source>Refuse to print more (default 10000000).</source>
+        <translation>Nevypisovat více bodů než tento počet (výchozí 10000000).</translation>
+    </message>
+    <message>
+        <source>--item NAME is required</source>
+        <translation>--item NAME je povinné</translation>
+    </message>
+    <message>
+        <source>--csv is required (the only output format)</source>
+        <translation>--csv je povinné (jediný výstupní formát)</translation>
+    </message>
+    <message>
+        <source>--address %1: %2</source>
+        <translation>--address %1: %2</translation>
+    </message>
+    <message>
+        <source>--start lifted: needs at least one point</source>
+        <translation>--start lifted: vyžaduje alespoň jeden bod</translation>
+    </message>
+    <message>
+        <source>cannot write to the standard output</source>
+        <translation>nelze zapisovat na standardní výstup</translation>
+    </message>
+    <message>
+        <source>Validate a project file: it must load, and every item&apos;s IFS must be computable (exit 1: the file is refused; exit 3: it loads but items cannot be computed).</source>
+        <translation>Ověří projektový soubor: musí se načíst a IFS každé položky musí být vypočitatelný (návratový kód 1: soubor je odmítnut; návratový kód 3: načte se, ale položky nelze vypočítat).</translation>
+    </message>
+    <message>
+        <source>%1: %2: note: %3</source>
+        <translation>%1: %2: poznámka: %3</translation>
+    </message>
+    <message>
+        <source>Load a project and save it again in the canonical form of this version (sorted keys, every field written): to upgrade or normalise a hand-written file.</source>
+        <translation>Načte projekt a znovu ho uloží v kanonickém tvaru této verze (seřazené klíče, zapsána všechna pole): slouží k aktualizaci nebo normalizaci ručně psaného souboru.</translation>
+    </message>
+    <message>
+        <source>Write here instead of over the input.</source>
+        <translation>Zapsat sem místo přepsání vstupu.</translation>
+    </message>
+    <message>
+        <source>v %1 %2 %3
+</source>
+        <translation>v %1 %2 %3
+</translation>
+    </message>
+    <message>
+        <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), or a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh.</source>
+        <translation>Exportuje geometrii položky: atraktor F^k(X0) jako mračno bodů PLY (u každého bodu s naposledy použitým zobrazením), nebo síť plošné položky po k kolech klasické subdivize jako polygonovou síť OBJ.</translation>
+    </message>
+    <message>
+        <source>ply (attractor points) or obj (subdivided mesh).</source>
+        <translation>ply (body atraktoru) nebo obj (zjemněná síť).</translation>
+    </message>
+    <message>
+        <source>Output file.</source>
+        <translation>Výstupní soubor.</translation>
+    </message>
+    <message>
+        <source>PLY: iteration depth (default: the item&apos;s).</source>
+        <translation>PLY: hloubka iterace (výchozí: podle položky).</translation>
+    </message>
+    <message>
+        <source>OBJ: rounds of subdivision (default: the item&apos;s).</source>
+        <translation>OBJ: počet kol subdivize (výchozí: podle položky).</translation>
+    </message>
+    <message>
+        <source>PLY: refuse to write more (default 50000000).</source>
+        <translation>PLY: nezapisovat více bodů než tento počet (výchozí 50000000).</translation>
+    </message>
+    <message>
+        <source>--item NAME, --format ply|obj and --out FILE are required</source>
+        <translation>--item NAME, --format ply|obj a --out FILE jsou povinné</translation>
+    </message>
+    <message>
+        <source>--format must be ply or obj, got &apos;%1&apos;</source>
+        <translation>--format musí být ply nebo obj, zadáno „%1“</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>%1 nelze zapsat: %2</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; is drawn by an automaton: PLY export covers items with one IFS</source>
+        <translation>položka „%1“ je kreslena automatem: export do PLY podporuje jen položky s jedním IFS</translation>
+    </message>
+    <message>
+        <source>OBJ export writes the subdivided net of a surface item; &apos;%1&apos; is a %2</source>
+        <translation>export do OBJ zapisuje zjemněnou síť plošné položky; „%1“ je typu %2</translation>
+    </message>
+    <message>
+        <source>Print the control polygon after K subdivision steps as JSON {&quot;closed&quot;, &quot;points&quot;}: the figures of 001 for a normal-vector item (eq. (1) applied K times), classic subdivision S_w P for a subdivision curve.</source>
+        <translation>Vypíše řídicí polygon po K krocích subdivize jako JSON {&quot;closed&quot;, &quot;points&quot;}: obrázky z 001 pro položku s normálovými vektory (eq. (1) použitá K-krát), klasickou subdivizi S_w P pro subdivizní křivku.</translation>
+    </message>
+    <message>
+        <source>Subdivision steps K (0: the control polygon).</source>
+        <translation>Počet kroků subdivize K (0: řídicí polygon).</translation>
+    </message>
+    <message>
+        <source>Print JSON (the only format).</source>
+        <translation>Vypsat JSON (jediný formát).</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; has a complex split parameter: its control polygon has complex points</source>
+        <translation>položka „%1“ má komplexní parametr dělení: její řídicí polygon má komplexní body</translation>
+    </message>
+    <message>
+        <source>level %1 gives more than 5e7 points</source>
+        <translation>úroveň %1 dává více než 5e7 bodů</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; (%2) is not polygon-based: the polygon command takes normal-vector items and subdivision curves</source>
+        <translation>položka „%1“ (%2) není založena na polygonu: příkaz polygon přijímá položky s normálovými vektory a subdivizní křivky</translation>
+    </message>
+    <message>
+        <source>nothing to draw</source>
+        <translation>není co kreslit</translation>
+    </message>
+</context>
+<context>
+    <name>awb::core</name>
+    <message>
+        <source>%1: entry (row %2, column %3) is not a finite number</source>
+        <translation>%1: prvek (řádek %2, sloupec %3) není konečné číslo</translation>
+    </message>
+    <message>
+        <source>matrix rows of different lengths</source>
+        <translation>řádky matice mají různé délky</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ifs</name>
+    <message>
+        <source>the IFS has 1 map (0)</source>
+        <translation>IFS má 1 zobrazení (0)</translation>
+    </message>
+    <message>
+        <source>the IFS has %1 maps (0..%2)</source>
+        <translation>IFS má %1 zobrazení (0..%2)</translation>
+    </message>
+    <message>
+        <source>no parameter intervals</source>
+        <translation>žádné intervaly parametru</translation>
+    </message>
+    <message>
+        <source>a parameter interval is empty or not finite</source>
+        <translation>interval parametru je prázdný nebo není konečný</translation>
+    </message>
+    <message>
+        <source>the address has %1 symbols, more than %2</source>
+        <translation>počet symbolů adresy (%1) je větší než %2</translation>
+    </message>
+    <message>
+        <source>symbol %1 of the address is map %2, but %3</source>
+        <translation>symbol %1 adresy je zobrazení %2, ale %3</translation>
+    </message>
+    <message>
+        <source>the IFS has no maps</source>
+        <translation>IFS nemá žádná zobrazení</translation>
+    </message>
+    <message>
+        <source>the address &apos;%1&apos; has an empty symbol (a comma too many)</source>
+        <translation>adresa „%1“ obsahuje prázdný symbol (čárka navíc)</translation>
+    </message>
+    <message>
+        <source>the address &apos;%1&apos; ends with a comma</source>
+        <translation>adresa „%1“ končí čárkou</translation>
+    </message>
+    <message>
+        <source>the address is empty: give map numbers such as 0,1,1</source>
+        <translation>adresa je prázdná: zadejte čísla zobrazení, např. 0,1,1</translation>
+    </message>
+    <message>
+        <source>symbol %1 of the address, &apos;%2&apos;, is not a map number (0-based whole number)</source>
+        <translation>symbol %1 adresy, „%2“, není číslo zobrazení (celé číslo od 0)</translation>
+    </message>
+    <message>
+        <source>no subdivision matrices</source>
+        <translation>žádné subdivizní matice</translation>
+    </message>
+    <message>
+        <source>the subdivision matrices differ in size</source>
+        <translation>subdivizní matice mají různé rozměry</translation>
+    </message>
+    <message>
+        <source>the parameter %1 is outside [0, 1]</source>
+        <translation>parametr %1 leží mimo [0, 1]</translation>
+    </message>
+    <message>
+        <source>an address has 0..%1 symbols</source>
+        <translation>adresa má 0..%1 symbolů</translation>
+    </message>
+    <message>
+        <source>the parameter interval must satisfy 0 &lt;= t0 &lt; t1 &lt;= 1</source>
+        <translation>interval parametru musí splňovat 0 &lt;= t0 &lt; t1 &lt;= 1</translation>
+    </message>
+    <message>
+        <source>the seed point has %1 coordinates, the IFS %2</source>
+        <translation>zárodečný bod má počet souřadnic %1, IFS %2</translation>
+    </message>
+    <message>
+        <source>map 0 does not converge to a fixed point</source>
+        <translation>zobrazení 0 nekonverguje k pevnému bodu</translation>
+    </message>
+    <message>
+        <source>iteration depth must be between 0 and %1, got %2</source>
+        <translation>hloubka iterace musí být mezi 0 a %1, zadáno %2</translation>
+    </message>
+    <message>
+        <source>the start set is empty</source>
+        <translation>počáteční množina je prázdná</translation>
+    </message>
+    <message>
+        <source>start set has %1 coordinates, the IFS space has %2</source>
+        <translation>počáteční množina má počet souřadnic %1, prostor IFS má %2</translation>
+    </message>
+    <message>
+        <source>start set</source>
+        <translation>počáteční množina</translation>
+    </message>
+    <message>
+        <source>at most 255 maps are supported, got %1</source>
+        <translation>podporováno je nejvýše 255 zobrazení, zadáno %1</translation>
+    </message>
+    <message>
+        <source>no sink to receive the attractor</source>
+        <translation>chybí cíl, který by přijal atraktor</translation>
+    </message>
+    <message>
+        <source>start point has %1 coordinates, the IFS space has %2</source>
+        <translation>počáteční bod má počet souřadnic %1, prostor IFS má %2</translation>
+    </message>
+    <message>
+        <source>start point</source>
+        <translation>počáteční bod</translation>
+    </message>
+    <message>
+        <source>at most %1 random-iteration samples, got %2</source>
+        <translation>nejvýše %1 vzorků náhodné iterace, zadáno %2</translation>
+    </message>
+    <message>
+        <source>column %1 of %2 sums to %3, not 1: it does not map barycentric points to barycentric points</source>
+        <translation>součet sloupce %1 matice %2 je %3, nikoli 1: nezobrazuje barycentrické body na barycentrické body</translation>
+    </message>
+    <message>
+        <source>the BCIFS has no cell &apos;%1&apos;</source>
+        <translation>BCIFS nemá buňku „%1“</translation>
+    </message>
+    <message>
+        <source>the BCIFS has no operator &apos;%1&apos;</source>
+        <translation>BCIFS nemá operátor „%1“</translation>
+    </message>
+    <message>
+        <source>the BCIFS has no cells</source>
+        <translation>BCIFS nemá žádné buňky</translation>
+    </message>
+    <message>
+        <source>cell &apos;%1&apos; has dimension %2; it needs at least one control point</source>
+        <translation>buňka „%1“ má dimenzi %2; potřebuje alespoň jeden řídicí bod</translation>
+    </message>
+    <message>
+        <source>operator &apos;%1&apos; joins a cell that does not exist</source>
+        <translation>operátor „%1“ spojuje buňku, která neexistuje</translation>
+    </message>
+    <message>
+        <source>operator &apos;%1&apos; (%2 -&gt; %3)</source>
+        <translation>operátor „%1“ (%2 -&gt; %3)</translation>
+    </message>
+    <message>
+        <source>%1 joins cells of the wrong kinds: subdivisions join edges or vertices, boundary operators go from an edge to a vertex, placements from the model</source>
+        <translation>%1 spojuje buňky nesprávných druhů: subdivize spojují hrany nebo vrcholy, hraniční operátory vedou z hrany do vrcholu, umístění z modelu</translation>
+    </message>
+    <message>
+        <source>%1 is %2; it must be %3 x %4 (column convention: rows = dimension of &apos;%5&apos;, columns = dimension of &apos;%6&apos;)</source>
+        <translation>%1 má rozměr %2; musí mít rozměr %3 x %4 (sloupcová konvence: řádky = dimenze „%5“, sloupce = dimenze „%6“)</translation>
+    </message>
+    <message>
+        <source>edge cell &apos;%1&apos; has no subdivision operator: its attractor would be empty</source>
+        <translation>hranová buňka „%1“ nemá subdivizní operátor: její atraktor by byl prázdný</translation>
+    </message>
+    <message>
+        <source>constraint %1</source>
+        <translation>podmínka %1</translation>
+    </message>
+    <message>
+        <source>%1 has an empty side or an unknown operator</source>
+        <translation>%1 má prázdnou stranu nebo neznámý operátor</translation>
+    </message>
+    <message>
+        <source>%1: %2 ends at &apos;%3&apos; but %4 starts at &apos;%5&apos;</source>
+        <translation>%1: %2 končí v „%3“, ale %4 začíná v „%5“</translation>
+    </message>
+    <message>
+        <source>%1 (%2) compares paths between different cells</source>
+        <translation>%1 (%2) porovnává cesty mezi různými buňkami</translation>
+    </message>
+    <message>
+        <source>%1 constraint %2 %3 is violated by %4 (entry row %5, column %6)</source>
+        <translation>podmínka %2 typu %1 %3 je porušena o %4 (prvek v řádku %5, sloupci %6)</translation>
+    </message>
+    <message>
+        <source>; also violated:</source>
+        <translation>; porušeny jsou také:</translation>
+    </message>
+    <message>
+        <source>edge cell &apos;%1&apos; has no placement (control points): it cannot be drawn</source>
+        <translation>hranová buňka „%1“ nemá umístění (řídicí body): nelze ji vykreslit</translation>
+    </message>
+    <message>
+        <source>the junction matrix must be square and at least 2 x 2, got %1</source>
+        <translation>matice napojení musí být čtvercová a alespoň 2 x 2, zadáno %1</translation>
+    </message>
+    <message>
+        <source>the copy&apos;s placement must have %1 rows (one per control point of the junction), got %2</source>
+        <translation>umístění kopie musí mít počet řádků %1 (jeden na každý řídicí bod napojení), zadáno %2</translation>
+    </message>
+    <message>
+        <source>the junction has %1 control points, got %2</source>
+        <translation>napojení má počet řídicích bodů %1, zadáno %2</translation>
+    </message>
+    <message>
+        <source>junction matrix</source>
+        <translation>matice napojení</translation>
+    </message>
+    <message>
+        <source>copy placement</source>
+        <translation>umístění kopie</translation>
+    </message>
+    <message>
+        <source>the junction matrix</source>
+        <translation>matice napojení</translation>
+    </message>
+    <message>
+        <source>the copy placement</source>
+        <translation>umístění kopie</translation>
+    </message>
+    <message>
+        <source>the copies collapse onto the fixed point: no tangent information</source>
+        <translation>kopie se smršťují do pevného bodu: žádná informace o tečně</translation>
+    </message>
+    <message>
+        <source>lambda = %1: %2</source>
+        <translation>lambda = %1: %2</translation>
+    </message>
+    <message>
+        <source>; |lambda| &gt;= 1, so the junction matrix does not contract</source>
+        <translation>; |lambda| &gt;= 1, takže matice napojení není kontrakce</translation>
+    </message>
+    <message>
+        <source> (the copy has no component along the subdominant eigenvector, lambda = %1, so the next eigenvalue governs)</source>
+        <translation> (kopie nemá žádnou složku ve směru subdominantního vlastního vektoru, lambda = %1, takže rozhoduje další vlastní číslo)</translation>
+    </message>
+    <message>
+        <source> (the eigenvectors are not complete; the copy&apos;s components were not examined)</source>
+        <translation> (vlastní vektory netvoří úplný systém; složky kopie nebyly zkoumány)</translation>
+    </message>
+    <message>
+        <source>vertex subdivisions must be square and non-empty, got %1 and %2</source>
+        <translation>subdivize vrcholů musí být čtvercové a neprázdné, zadáno %1 a %2</translation>
+    </message>
+    <message>
+        <source>the free columns must have %1 rows (n_l + n_r), got X %2 and Y %3</source>
+        <translation>volné sloupce musí mít počet řádků %1 (n_l + n_r), zadáno X %2 a Y %3</translation>
+    </message>
+    <message>
+        <source>free columns X of T^l</source>
+        <translation>volné sloupce X matice T^l</translation>
+    </message>
+    <message>
+        <source>free columns Y of T^r</source>
+        <translation>volné sloupce Y matice T^r</translation>
+    </message>
+    <message>
+        <source>the free columns X of T^l</source>
+        <translation>volné sloupce X matice T^l</translation>
+    </message>
+    <message>
+        <source>the free columns Y of T^r</source>
+        <translation>volné sloupce Y matice T^r</translation>
+    </message>
+    <message>
+        <source>the %1 curve&apos;s subdivision operators must both be m x m, got %2 and %3</source>
+        <translation>subdivizní operátory křivky %1 musí být oba m x m, zadáno %2 a %3</translation>
+    </message>
+    <message>
+        <source>the %1 curve&apos;s vertex dimension must be in 1..%2, got %3</source>
+        <translation>dimenze vrcholů křivky %1 musí být v rozmezí 1..%2, zadáno %3</translation>
+    </message>
+    <message>
+        <source>the %1 curve needs %2 control points, got %3</source>
+        <translation>počet řídicích bodů křivky %1 musí být %2, zadáno %3</translation>
+    </message>
+    <message>
+        <source>control points of the %1 curve</source>
+        <translation>řídicí body křivky %1</translation>
+    </message>
+    <message>
+        <source>both curves&apos; control points must have the same dimension</source>
+        <translation>řídicí body obou křivek musí mít stejnou dimenzi</translation>
+    </message>
+    <message>
+        <source>X must have m_l - n_l columns and Y m_r - n_r</source>
+        <translation>X musí mít m_l - n_l sloupců a Y m_r - n_r</translation>
+    </message>
+    <message>
+        <source>junction parameter %1 is not a finite number</source>
+        <translation>parametr napojení %1 není konečné číslo</translation>
+    </message>
+    <message>
+        <source>T^i has no subdominant eigenvalue</source>
+        <translation>T^i nemá subdominantní vlastní číslo</translation>
+    </message>
+    <message>
+        <source>lambda_2 = %1 (%2)</source>
+        <translation>lambda_2 = %1 (%2)</translation>
+    </message>
+    <message>
+        <source>: |lambda_2| &gt;= 1, T^i does not contract and the junction does not converge</source>
+        <translation>: |lambda_2| &gt;= 1, T^i není kontrakce a napojení nekonverguje</translation>
+    </message>
+    <message>
+        <source>: both sides have half-tangents along the same eigenvector, from opposite sides: G1 at the junction point</source>
+        <translation>: obě strany mají poloteče podél stejného vlastního vektoru, z opačných stran: v bodě napojení je G1</translation>
+    </message>
+    <message>
+        <source>: both sides have half-tangents, but they are not opposite (a corner or cusp)</source>
+        <translation>: obě strany mají poloteče, ale nejsou opačné (roh nebo hrot)</translation>
+    </message>
+    <message>
+        <source>the cubic needs 4 and the quadratic 3 control points of one dimension, got %1 and %2</source>
+        <translation>kubika vyžaduje 4 a kvadratika 3 řídicí body stejné dimenze, zadáno %1 a %2</translation>
+    </message>
+    <message>
+        <source>%1 must exceed the other eigenvalues of %2 (largest modulus %3) to be subdominant, and be below 1 for %2 to contract</source>
+        <translation>%1 musí převyšovat ostatní vlastní čísla matice %2 (největší absolutní hodnota %3), aby bylo subdominantní, a být menší než 1, aby %2 byla kontrakce</translation>
+    </message>
+    <message>
+        <source>refined junction parameter %1 is not a finite number</source>
+        <translation>parametr zjemněného napojení %1 není konečné číslo</translation>
+    </message>
+    <message>
+        <source>refined junction parameter %1 = %2 is outside its admissible range (%3, %4): %5</source>
+        <translation>parametr zjemněného napojení %1 = %2 leží mimo svůj přípustný rozsah (%3, %4): %5</translation>
+    </message>
+    <message>
+        <source>the refined junction needs 4 cubic, 3 quadratic and 3 handle control points of one dimension, got %1, %2 and %3</source>
+        <translation>zjemněné napojení vyžaduje 4 kubické, 3 kvadratické a 3 úchytové řídicí body stejné dimenze, zadáno %1, %2 a %3</translation>
+    </message>
+    <message>
+        <source>handles of the refined junction</source>
+        <translation>úchyty zjemněného napojení</translation>
+    </message>
+    <message>
+        <source>the split parameter u is not a finite number</source>
+        <translation>parametr dělení u není konečné číslo</translation>
+    </message>
+    <message>
+        <source>the split parameter u = %1 must lie strictly between 0 and 1 (002 §4: 0 &lt; u &lt; 1)</source>
+        <translation>parametr dělení u = %1 musí ležet ostře mezi 0 a 1 (002 §4: 0 &lt; u &lt; 1)</translation>
+    </message>
+    <message>
+        <source>coincide</source>
+        <comment>points</comment>
+        <translation>splývají</translation>
+    </message>
+    <message>
+        <source>are collinear</source>
+        <comment>points</comment>
+        <translation>leží na jedné přímce</translation>
+    </message>
+    <message>
+        <source>are coplanar</source>
+        <comment>points</comment>
+        <translation>leží v jedné rovině</translation>
+    </message>
+    <message>
+        <source>the affine map is not invertible (its linear part is singular)</source>
+        <translation>afinní zobrazení není invertibilní (jeho lineární část je singulární)</translation>
+    </message>
+    <message>
+        <source>an affine map of R^%1 is fixed by %2 point pairs</source>
+        <translation>afinní zobrazení R^%1 je určeno %2 dvojicemi bodů</translation>
+    </message>
+    <message>
+        <source>source points</source>
+        <translation>zdrojové body</translation>
+    </message>
+    <message>
+        <source>target points</source>
+        <translation>cílové body</translation>
+    </message>
+    <message>
+        <source>the source points %1: no unique affine map takes them to the targets</source>
+        <translation>zdrojové body %1: žádné jednoznačné afinní zobrazení je nepřevádí na cílové body</translation>
+    </message>
+    <message>
+        <source>fractal interpolation needs N + 1 &gt;= 3 data points (x, y)</source>
+        <translation>fraktální interpolace vyžaduje N + 1 &gt;= 3 datových bodů (x, y)</translation>
+    </message>
+    <message>
+        <source>interpolation data</source>
+        <translation>interpolační data</translation>
+    </message>
+    <message>
+        <source>fractal interpolation through %1 points needs %2 vertical scalings d_n, got %3</source>
+        <translation>fraktální interpolace procházející %1 body vyžaduje počet svislých škálovacích faktorů d_n %2, zadáno %3</translation>
+    </message>
+    <message>
+        <source>interpolation abscissae must increase (x_%1 &lt;= x_%2)</source>
+        <translation>x-ové souřadnice interpolačních bodů musí být rostoucí (x_%1 &lt;= x_%2)</translation>
+    </message>
+    <message>
+        <source>vertical scaling d_%1 = %2 must satisfy |d_n| &lt; 1</source>
+        <translation>svislý škálovací faktor d_%1 = %2 musí splňovat |d_n| &lt; 1</translation>
+    </message>
+    <message>
+        <source>002 §5 needs three control points in the plane (3 x 2)</source>
+        <translation>002 §5 vyžaduje tři řídicí body v rovině (3 x 2)</translation>
+    </message>
+    <message>
+        <source>control points</source>
+        <translation>řídicí body</translation>
+    </message>
+    <message>
+        <source>control points Q0, Q1, Q2 are collinear: the map omega of 002 §5 is not invertible</source>
+        <translation>řídicí body Q0, Q1, Q2 leží na jedné přímce: zobrazení omega z 002 §5 není invertibilní</translation>
+    </message>
+    <message>
+        <source>a Bézier curve needs at least 2 control points (degree &gt;= 1), got %1</source>
+        <translation>Bézierova křivka vyžaduje alespoň 2 řídicí body (stupeň &gt;= 1), zadáno %1</translation>
+    </message>
+    <message>
+        <source>control points must have 1 to 3 coordinates</source>
+        <translation>řídicí body musí mít 1 až 3 souřadnice</translation>
+    </message>
+    <message>
+        <source>the %1 control points %2, so the affine maps of eqs. (9)-(10) are not unique</source>
+        <translation>řídicí body (%1) %2, takže afinní zobrazení z eqs. (9)-(10) nejsou jednoznačná</translation>
+    </message>
+    <message>
+        <source>no affine map of R^%1 takes the control polygon of this degree-%2 curve to its de Casteljau pieces (mismatch %3): the pieces are not affine images of the curve in its own space</source>
+        <translation>žádné afinní zobrazení R^%1 nepřevádí řídicí polygon této křivky stupně %2 na její de Casteljauovy části (odchylka %3): části nejsou afinními obrazy křivky v jejím vlastním prostoru</translation>
+    </message>
+    <message>
+        <source>; the maps act on barycentric coordinates R^%1 (%2)</source>
+        <translation>; zobrazení působí na barycentrických souřadnicích R^%1 (%2)</translation>
+    </message>
+    <message>
+        <source>; the maps act on the lifted space R^%1 of 000 §2, drawn through its first %2 coordinates</source>
+        <translation>; zobrazení působí na zdviženém prostoru R^%1 z 000 §2, který se kreslí pomocí jeho prvních %2 souřadnic</translation>
+    </message>
+    <message>
+        <source>map 1 has spectral radius %1, map 2 %2; %3 levels shrink every piece to 1/1000 of the curve</source>
+        <translation>zobrazení 1 má spektrální poloměr %1, zobrazení 2 %2; po %3 úrovních se každá část zmenší na 1/1000 křivky</translation>
+    </message>
+    <message>
+        <source>. u = %1 is close to %2: map %3 is nearly non-contractive and the pieces are very unequal (random iteration, or u nearer 1/2, converges faster)</source>
+        <translation>. u = %1 je blízko %2: zobrazení %3 je téměř nekontraktivní a části jsou velmi nestejné (náhodná iterace nebo u blíže 1/2 konverguje rychleji)</translation>
+    </message>
+    <message>
+        <source>. Map %1 is not a Euclidean contraction (||A||_2 = %2) but is eventually contractive, as 002 §5 allows</source>
+        <translation>. Zobrazení %1 není eukleidovská kontrakce (||A||_2 = %2), ale je eventuálně kontraktivní, jak 002 §5 připouští</translation>
+    </message>
+    <message>
+        <source>a combined IFS needs at least one curve</source>
+        <translation>kombinovaný IFS vyžaduje alespoň jednu křivku</translation>
+    </message>
+    <message>
+        <source>curve %1</source>
+        <translation>křivka %1</translation>
+    </message>
+    <message>
+        <source>%1: the combined IFS of 002 §6 acts on the plane, control points need 2 coordinates</source>
+        <translation>%1: kombinovaný IFS z 002 §6 působí v rovině, řídicí body musí mít 2 souřadnice</translation>
+    </message>
+    <message>
+        <source>%1: its maps do not act on the plane (%2), so they cannot be combined with the other curves&apos; maps</source>
+        <translation>%1: její zobrazení nepůsobí v rovině (%2), takže je nelze kombinovat se zobrazeními ostatních křivek</translation>
+    </message>
+    <message>
+        <source>a union needs at least one curve</source>
+        <translation>sjednocení vyžaduje alespoň jednu křivku</translation>
+    </message>
+    <message>
+        <source>arc &apos;%1&apos; (%2 -&gt; %3)</source>
+        <translation>hrana „%1“ (%2 -&gt; %3)</translation>
+    </message>
+    <message>
+        <source>the automaton has no states</source>
+        <translation>automat nemá žádné stavy</translation>
+    </message>
+    <message>
+        <source>state &apos;%1&apos; has no control points</source>
+        <translation>stav „%1“ nemá žádné řídicí body</translation>
+    </message>
+    <message>
+        <source>state &apos;%1&apos;: control points must be 2D or 3D, got %2 coordinates</source>
+        <translation>stav „%1“: řídicí body musí být 2D nebo 3D, zadaný počet souřadnic je %2</translation>
+    </message>
+    <message>
+        <source>control points of state &apos;%1&apos;</source>
+        <translation>řídicí body stavu „%1“</translation>
+    </message>
+    <message>
+        <source>at most 255 arcs are supported (addresses are bytes), got %1</source>
+        <translation>podporováno je nejvýše 255 hran (adresy jsou bajty), zadáno %1</translation>
+    </message>
+    <message>
+        <source>arc &apos;%1&apos; connects states %2 -&gt; %3, but the automaton has %4 states</source>
+        <translation>hrana „%1“ spojuje stavy %2 -&gt; %3, ale automat má počet stavů %4</translation>
+    </message>
+    <message>
+        <source>%1 has a %2 x %3 matrix; it must be %4 x %5 (row convention: rows = dimension of &apos;%6&apos;, columns = dimension of &apos;%7&apos;)</source>
+        <translation>%1 má matici %2 x %3; musí být %4 x %5 (řádková konvence: řádky = dimenze „%6“, sloupce = dimenze „%7“)</translation>
+    </message>
+    <message>
+        <source>row %1 of %2 sums to %3, not 1: the map does not keep barycentric coordinates summing to 1</source>
+        <translation>součet řádku %1 matice %2 je %3, nikoli 1: zobrazení nezachovává součet barycentrických souřadnic rovný 1</translation>
+    </message>
+    <message>
+        <source>the weight of %1 must be a finite number &gt; 0, got %2</source>
+        <translation>%1: váha musí být konečné číslo &gt; 0, zadáno %2</translation>
+    </message>
+    <message>
+        <source>state &apos;%1&apos; has no outgoing arc: its attractor would be empty</source>
+        <translation>stav „%1“ nemá žádnou výstupní hranu: jeho atraktor by byl prázdný</translation>
+    </message>
+    <message>
+        <source>the barycentric part needs a non-empty square matrix</source>
+        <translation>barycentrická část vyžaduje neprázdnou čtvercovou matici</translation>
+    </message>
+    <message>
+        <source>cycle %1 has spectral radius %2 &gt;= 1 on the barycentric directions: repeating it does not contract, so the automaton has no attractor</source>
+        <translation>cyklus %1 má v barycentrických směrech spektrální poloměr %2 &gt;= 1: jeho opakování není kontrakce, takže automat nemá atraktor</translation>
+    </message>
+    <message>
+        <source>a fixed point needs a non-empty square matrix</source>
+        <translation>pevný bod vyžaduje neprázdnou čtvercovou matici</translation>
+    </message>
+    <message>
+        <source>the fixed point is not unique: 1 is a repeated eigenvalue</source>
+        <translation>pevný bod není jednoznačný: 1 je násobné vlastní číslo</translation>
+    </message>
+    <message>
+        <source>state %1 does not exist: the automaton has %2 states</source>
+        <translation>stav %1 neexistuje: automat má počet stavů %2</translation>
+    </message>
+    <message>
+        <source>one start set per state is needed: the automaton has %1 states, got %2 start sets</source>
+        <translation>pro každý stav je potřeba jedna počáteční množina: automat má počet stavů %1, zadaný počet počátečních množin je %2</translation>
+    </message>
+    <message>
+        <source>start set of state &apos;%1&apos;</source>
+        <translation>počáteční množina stavu „%1“</translation>
+    </message>
+    <message>
+        <source>%1 is empty</source>
+        <translation>%1 je prázdná</translation>
+    </message>
+    <message>
+        <source>%1 has %2 coordinates, the state&apos;s space has %3</source>
+        <translation>%1 má počet souřadnic %2, prostor stavu má %3</translation>
+    </message>
+    <message>
+        <source>at most 4e9 random-iteration samples, got %1</source>
+        <translation>nejvýše 4e9 vzorků náhodné iterace, zadáno %1</translation>
+    </message>
+    <message>
+        <source>the affine map&apos;s translation does not match its linear part</source>
+        <translation>posunutí afinního zobrazení neodpovídá jeho lineární části</translation>
+    </message>
+    <message>
+        <source>a barycentric frame in %1D needs %2 points, got a %3 x %4 matrix</source>
+        <translation>barycentrický rámec v %1D vyžaduje %2 body, zadána matice %3 x %4</translation>
+    </message>
+    <message>
+        <source>domain frame</source>
+        <translation>rámec definičního oboru</translation>
+    </message>
+    <message>
+        <source>image frame</source>
+        <translation>rámec obrazu</translation>
+    </message>
+    <message>
+        <source>affine map</source>
+        <translation>afinní zobrazení</translation>
+    </message>
+    <message>
+        <source>the image frame&apos;s points are affinely dependent (collinear in 2D)</source>
+        <translation>body rámce obrazu jsou afinně závislé (ve 2D leží na jedné přímce)</translation>
+    </message>
+    <message>
+        <source>map %1 does not act on the same space as map 1</source>
+        <translation>zobrazení %1 nepůsobí na stejném prostoru jako zobrazení 1</translation>
+    </message>
+    <message>
+        <source>map %1 (linear part)</source>
+        <translation>zobrazení %1 (lineární část)</translation>
+    </message>
+    <message>
+        <source>map %1 (translation)</source>
+        <translation>zobrazení %1 (posunutí)</translation>
+    </message>
+    <message>
+        <source>view %1 does not fit the IFS space</source>
+        <translation>pohled %1 neodpovídá prostoru IFS</translation>
+    </message>
+    <message>
+        <source>the IFS has %1 maps but %2 probabilities</source>
+        <translation>IFS má %1 zobrazení, ale počet pravděpodobností je %2</translation>
+    </message>
+    <message>
+        <source>probability of map %1 must be a finite number &gt;= 0</source>
+        <translation>pravděpodobnost zobrazení %1 musí být konečné číslo &gt;= 0</translation>
+    </message>
+    <message>
+        <source>the map probabilities sum to 0</source>
+        <translation>součet pravděpodobností zobrazení je 0</translation>
+    </message>
+    <message>
+        <source>the lifting needs %1 distinct free rows of the control points</source>
+        <translation>zdvižení vyžaduje počet různých volných řádků řídicích bodů %1</translation>
+    </message>
+    <message>
+        <source> and </source>
+        <translation> a </translation>
+    </message>
+    <message>
+        <source>the lifted matrix P is nearly singular (reciprocal condition number %1): M_i = P^-1 S_i P lose about %2 of 16 significant digits; control points %3 are almost collinear</source>
+        <translation>zdvižená matice P je téměř singulární (převrácené číslo podmíněnosti %1): M_i = P^-1 S_i P ztrácí asi %2 z 16 platných číslic; řídicí body %3 leží téměř na jedné přímce</translation>
+    </message>
+    <message>
+        <source>the lifted matrix P is nearly singular (reciprocal condition number %1): M_i = P^-1 S_i P lose about %2 of 16 significant digits; control points %3 are almost coplanar</source>
+        <translation>zdvižená matice P je téměř singulární (převrácené číslo podmíněnosti %1): M_i = P^-1 S_i P ztrácí asi %2 z 16 platných číslic; řídicí body %3 leží téměř v jedné rovině</translation>
+    </message>
+    <message>
+        <source>control points %1 are collinear, so the lifted matrix P of 000 §2 is singular and M_i = P^-1 S_i P is not defined; the attractor is computed in barycentric form</source>
+        <translation>řídicí body %1 leží na jedné přímce, takže zdvižená matice P z 000 §2 je singulární a M_i = P^-1 S_i P není definováno; atraktor se počítá v barycentrickém tvaru</translation>
+    </message>
+    <message>
+        <source>control points %1 are coplanar, so the lifted matrix P of 000 §2 is singular and M_i = P^-1 S_i P is not defined; the attractor is computed in barycentric form</source>
+        <translation>řídicí body %1 leží v jedné rovině, takže zdvižená matice P z 000 §2 je singulární a M_i = P^-1 S_i P není definováno; atraktor se počítá v barycentrickém tvaru</translation>
+    </message>
+    <message>
+        <source>control points %1 are affinely dependent, so the lifted matrix P of 000 §2 is singular and M_i = P^-1 S_i P is not defined; the attractor is computed in barycentric form</source>
+        <translation>řídicí body %1 jsou afinně závislé, takže zdvižená matice P z 000 §2 je singulární a M_i = P^-1 S_i P není definováno; atraktor se počítá v barycentrickém tvaru</translation>
+    </message>
+    <message>
+        <source>matrix S_%1 does not match %2 control points</source>
+        <translation>matice S_%1 neodpovídá počtu řídicích bodů %2</translation>
+    </message>
+    <message>
+        <source>matrix S_%1</source>
+        <translation>matice S_%1</translation>
+    </message>
+    <message>
+        <source>start points must have %1 (plane) or %2 (barycentric) coordinates</source>
+        <translation>počet souřadnic počátečních bodů musí být %1 (v rovině) nebo %2 (barycentrické)</translation>
+    </message>
+    <message>
+        <source>start points must have %1 (plane) or %2 (lifted) coordinates</source>
+        <translation>počet souřadnic počátečních bodů musí být %1 (v rovině) nebo %2 (zdvižené)</translation>
+    </message>
+    <message>
+        <source>a union needs at least one component</source>
+        <translation>sjednocení vyžaduje alespoň jednu komponentu</translation>
+    </message>
+    <message>
+        <source>component %1 has %2 maps, component 1 has %3: a block union needs equally many</source>
+        <translation>komponenta %1 má %2 zobrazení, komponenta 1 má %3: blokové sjednocení vyžaduje stejný počet</translation>
+    </message>
+    <message>
+        <source>probabilities must be finite and non-negative</source>
+        <translation>pravděpodobnosti musí být konečné a nezáporné</translation>
+    </message>
+    <message>
+        <source>the probabilities sum to zero</source>
+        <translation>součet pravděpodobností je nula</translation>
+    </message>
+    <message>
+        <source>the lattice lists %1 coordinates for %2 control points</source>
+        <translation>počet mřížových souřadnic (%1) neodpovídá počtu řídicích bodů (%2)</translation>
+    </message>
+    <message>
+        <source>a map is listed twice among the maps used</source>
+        <translation>zobrazení je mezi použitými zobrazeními uvedeno dvakrát</translation>
+    </message>
+    <message>
+        <source>map index %1 is out of range: the %2 layout has maps 0 to %3</source>
+        <translation>index zobrazení %1 je mimo rozsah: rozložení %2 má zobrazení 0 až %3</translation>
+    </message>
+</context>
+<context>
+    <name>awb::render</name>
+    <message>
+        <source>raster size must be between 1x1 and 32768x32768, got %1x%2</source>
+        <translation>velikost rastru musí být mezi 1x1 a 32768x32768, zadáno %1x%2</translation>
+    </message>
+    <message>
+        <source>supersampling must be 1 to 4 cells per pixel side, got %1</source>
+        <translation>nadvzorkování musí být 1 až 4 buňky na stranu pixelu, zadáno %1</translation>
+    </message>
+    <message>
+        <source>the supersampled raster would hold more than 1.2e9 cells</source>
+        <translation>nadvzorkovaný rastr by měl více než 1.2e9 buněk</translation>
+    </message>
+    <message>
+        <source>raster world rectangle is empty or not finite</source>
+        <translation>obdélník rastru ve světových souřadnicích je prázdný nebo není konečný</translation>
+    </message>
+    <message>
+        <source>cannot merge density images of different sizes or modes</source>
+        <translation>obrazy hustoty různých velikostí nebo režimů nelze sloučit</translation>
+    </message>
+    <message>
+        <source>density image does not match its frame</source>
+        <translation>obraz hustoty neodpovídá svému rámci</translation>
+    </message>
+    <message>
+        <source>a view does not fit the IFS space</source>
+        <translation>pohled neodpovídá prostoru IFS</translation>
+    </message>
+    <message>
+        <source>there is no IFS to draw</source>
+        <translation>není žádný IFS k vykreslení</translation>
+    </message>
+    <message>
+        <source>the IFS has no view to draw it with</source>
+        <translation>IFS nemá žádný pohled, pomocí něhož by jej bylo možné vykreslit</translation>
+    </message>
+    <message>
+        <source>the colour table does not cover the address labels</source>
+        <translation>tabulka barev nepokrývá popisky adres</translation>
+    </message>
+</context>
+<context>
+    <name>awb::schemes</name>
+    <message>
+        <source>%1 is not a finite number</source>
+        <translation>%1 není konečné číslo</translation>
+    </message>
+    <message>
+        <source>%1 = %2 &lt; 1</source>
+        <translation>%1 = %2 &lt; 1</translation>
+    </message>
+    <message>
+        <source>%1 = %2: on the circle %1 = 1, so %3 is an isometry, not a contraction</source>
+        <translation>%1 = %2: na kružnici %1 = 1, takže %3 je izometrie, nikoli kontrakce</translation>
+    </message>
+    <message>
+        <source>%1 = %2 &gt; 1, so %3 expands</source>
+        <translation>%1 = %2 &gt; 1, takže %3 expanduje</translation>
+    </message>
+    <message>
+        <source>y must be a finite nonzero number (t = 1/2 + i y)</source>
+        <translation>y musí být konečné nenulové číslo (t = 1/2 + i y)</translation>
+    </message>
+    <message>
+        <source>t = 1/2 + i y with y = %1: %2</source>
+        <translation>t = 1/2 + i y pro y = %1: %2</translation>
+    </message>
+    <message>
+        <source>depth must be between 1 and 24, got %1</source>
+        <translation>hloubka musí být mezi 1 a 24, zadáno %1</translation>
+    </message>
+    <message>
+        <source>the subdivision parameter t</source>
+        <translation>parametr subdivize t</translation>
+    </message>
+    <message>
+        <source>t = %1: %2, %3. t lies inside both discs: the IFS is hyperbolic (contraction factor %4) and its attractor is a connected curve (Theorem 3.7.2)</source>
+        <translation>t = %1: %2, %3. t leží uvnitř obou kruhů: IFS je hyperbolický (koeficient kontrakce %4) a jeho atraktor je souvislá křivka (Theorem 3.7.2)</translation>
+    </message>
+    <message>
+        <source>t = %1: %2, %3. t lies outside both discs |t| &lt; 1 and |1 - t| &lt; 1: the IFS is not hyperbolic and has no attractor</source>
+        <translation>t = %1: %2, %3. t leží vně obou kruhů |t| &lt; 1 a |1 - t| &lt; 1: IFS není hyperbolický a nemá atraktor</translation>
+    </message>
+    <message>
+        <source>t = %1: %2, %3. t lies outside the disc %4: the IFS is not hyperbolic and has no attractor</source>
+        <translation>t = %1: %2, %3. t leží vně kruhu %4: IFS není hyperbolický a nemá atraktor</translation>
+    </message>
+    <message>
+        <source>a Bézier curve needs at least 2 control points (degree &gt;= 1), got %1</source>
+        <translation>Bézierova křivka vyžaduje alespoň 2 řídicí body (stupeň &gt;= 1), zadáno %1</translation>
+    </message>
+    <message>
+        <source>control points</source>
+        <translation>řídicí body</translation>
+    </message>
+    <message>
+        <source>all control points coincide: the curve is a single point and the lifted matrix of 000 §2 is singular</source>
+        <translation>všechny řídicí body splývají: křivka je jediný bod a zdvižená matice podle 000 §2 je singulární</translation>
+    </message>
+    <message>
+        <source>depth must be between 0 and 24, got %1</source>
+        <translation>hloubka musí být mezi 0 a 24, zadáno %1</translation>
+    </message>
+    <message>
+        <source>the Takagi function needs a finite x</source>
+        <translation>Takagiho funkce vyžaduje konečné x</translation>
+    </message>
+    <message>
+        <source>the number of Takagi terms must be &gt;= 0</source>
+        <translation>počet členů Takagiho funkce musí být &gt;= 0</translation>
+    </message>
+    <message>
+        <source>binary codes longer than 60 digits are not supported</source>
+        <translation>binární kódy delší než 60 číslic nejsou podporovány</translation>
+    </message>
+    <message>
+        <source>a binary code has digits 0 and 1 only (digit %1 is %2)</source>
+        <translation>binární kód obsahuje pouze číslice 0 a 1 (číslice %1 je %2)</translation>
+    </message>
+    <message>
+        <source>Takagi image: needs at least 2 control points, got %1</source>
+        <translation>Takagiho obraz: jsou potřeba alespoň 2 řídicí body, zadáno %1</translation>
+    </message>
+    <message>
+        <source>Takagi image: control points and y must be finite</source>
+        <translation>Takagiho obraz: řídicí body a y musí být konečné</translation>
+    </message>
+    <message>
+        <source>Takagi image: depth %1 is outside 1..20</source>
+        <translation>Takagiho obraz: hloubka %1 je mimo rozsah 1..20</translation>
+    </message>
+    <message>
+        <source>control points must have 2 or 3 coordinates, got %1</source>
+        <translation>řídicí body musí mít 2 nebo 3 souřadnice, zadáno %1</translation>
+    </message>
+    <message>
+        <source>%1 control points are too few: affine combinations in %2D need at least %3 that are not collinear</source>
+        <translation>počet řídicích bodů %1 je příliš malý: afinní kombinace ve %2D vyžadují alespoň %3 body, které neleží na jedné přímce</translation>
+    </message>
+    <message>
+        <source>%1 control points are too few: affine combinations in %2D need at least %3 that are not coplanar</source>
+        <translation>počet řídicích bodů %1 je příliš malý: afinní kombinace ve %2D vyžadují alespoň %3 body, které neleží v jedné rovině</translation>
+    </message>
+    <message>
+        <source>the control points are all collinear: they must span the plane to write every image point as their affine combination (000 eq. (5))</source>
+        <translation>všechny řídicí body leží na jedné přímce: musí generovat rovinu, aby bylo možné každý obrazový bod zapsat jako jejich afinní kombinaci (000 eq. (5))</translation>
+    </message>
+    <message>
+        <source>the control points are all coplanar: they must span space to write every image point as their affine combination (000 eq. (5))</source>
+        <translation>všechny řídicí body leží v jedné rovině: musí generovat prostor, aby bylo možné každý obrazový bod zapsat jako jejich afinní kombinaci (000 eq. (5))</translation>
+    </message>
+    <message>
+        <source>the point has %1 coordinates, the control points have %2</source>
+        <translation>bod má počet souřadnic %1, řídicí body %2</translation>
+    </message>
+    <message>
+        <source>point</source>
+        <translation>bod</translation>
+    </message>
+    <message>
+        <source>the IFS has no maps</source>
+        <translation>IFS nemá žádná zobrazení</translation>
+    </message>
+    <message>
+        <source>map f_%1 is not a map of %2D points like the control points</source>
+        <translation>zobrazení f_%1 není zobrazením %2D bodů jako řídicí body</translation>
+    </message>
+    <message>
+        <source>map f_%1 (linear part)</source>
+        <translation>zobrazení f_%1 (lineární část)</translation>
+    </message>
+    <message>
+        <source>map f_%1 (translation)</source>
+        <translation>zobrazení f_%1 (posunutí)</translation>
+    </message>
+    <message>
+        <source>Koch curve with control points</source>
+        <translation>Kochova křivka s řídicími body</translation>
+    </message>
+    <message>
+        <source>Sierpinski gasket with control points</source>
+        <translation>Sierpinského trojúhelník s řídicími body</translation>
+    </message>
+    <message>
+        <source>%1 needs %2 control points in the plane, got %3 with %4 coordinates</source>
+        <translation>%1: počet řídicích bodů v rovině musí být %2, zadáno %3 (počet souřadnic: %4)</translation>
+    </message>
+    <message>
+        <source>Bézier degree must be at least 1</source>
+        <translation>stupeň Bézierovy křivky musí být alespoň 1</translation>
+    </message>
+    <message>
+        <source>B-spline degree must be at least 1</source>
+        <translation>stupeň B-spline musí být alespoň 1</translation>
+    </message>
+    <message>
+        <source>a B-spline of degree %1 needs at least %2 control points (%3 knots), got %4 knots</source>
+        <translation>B-spline stupně %1: počet řídicích bodů musí být alespoň %2 (počet uzlů %3), zadáno uzlů: %4</translation>
+    </message>
+    <message>
+        <source>B-spline knot %1 is not a finite number</source>
+        <translation>uzel B-spline %1 není konečné číslo</translation>
+    </message>
+    <message>
+        <source>B-spline knots must be nondecreasing (knot %1)</source>
+        <translation>uzly B-spline musí tvořit neklesající posloupnost (uzel %1)</translation>
+    </message>
+    <message>
+        <source>B-spline knot vector has an empty domain</source>
+        <translation>uzlový vektor B-spline má prázdný definiční obor</translation>
+    </message>
+    <message>
+        <source>an end-interpolating B-spline of degree %1 needs at least %2 control points</source>
+        <translation>B-spline stupně %1 interpolující koncové body: počet řídicích bodů musí být alespoň %2</translation>
+    </message>
+    <message>
+        <source>B-spline needs %1 control points, got %2</source>
+        <translation>B-spline: počet řídicích bodů musí být %1, zadáno %2</translation>
+    </message>
+    <message>
+        <source>scheme %1: the dilation must be at least 2</source>
+        <translation>schéma %1: dilatace musí být alespoň 2</translation>
+    </message>
+    <message>
+        <source>scheme %1: the mask holds a non-finite weight</source>
+        <translation>schéma %1: maska obsahuje nekonečnou váhu</translation>
+    </message>
+    <message>
+        <source>scheme %1: the mask is empty</source>
+        <translation>schéma %1: maska je prázdná</translation>
+    </message>
+    <message>
+        <source>scheme %1: the mask entries of class (%2, %3) mod %4 sum to %5, not 1</source>
+        <translation>schéma %1: součet prvků masky třídy (%2, %3) mod %4 je %5, nikoli 1</translation>
+    </message>
+    <message>
+        <source>scheme %1: local subdivision matrix not closed</source>
+        <translation>schéma %1: lokální subdivizní matice není uzavřená</translation>
+    </message>
+    <message>
+        <source>scheme %1: the local subdivision matrix has no eigenvalue 1</source>
+        <translation>schéma %1: lokální subdivizní matice nemá vlastní číslo 1</translation>
+    </message>
+    <message>
+        <source>scheme %1: the limit eigenvector sums to 0</source>
+        <translation>schéma %1: součet limitního vlastního vektoru je 0</translation>
+    </message>
+    <message>
+        <source>box spline %1: its directions sum to an odd vector, so the mask has no lattice-point centre</source>
+        <translation>box spline %1: součet jeho směrů je lichý vektor, takže maska nemá střed v mřížovém bodě</translation>
+    </message>
+    <message>
+        <source>bicubic B-spline</source>
+        <translation>bikubický B-spline</translation>
+    </message>
+    <message>
+        <source>Loop (three-direction quartic box spline)</source>
+        <translation>Loop (třísměrový box spline čtvrtého stupně)</translation>
+    </message>
+    <message>
+        <source>Kobbelt √3 (two rounds)</source>
+        <translation>Kobbelt √3 (dvě kola)</translation>
+    </message>
+    <message>
+        <source>positive (edge rotated 90° counter-clockwise)</source>
+        <translation>kladné (hrana otočená o 90° proti směru hodinových ručiček)</translation>
+    </message>
+    <message>
+        <source>negative (edge rotated 90° clockwise)</source>
+        <translation>záporné (hrana otočená o 90° po směru hodinových ručiček)</translation>
+    </message>
+    <message>
+        <source>constant</source>
+        <comment>β sign</comment>
+        <translation>konstantní</translation>
+    </message>
+    <message>
+        <source>Positive normal: the edge vector P_i P_{i+1} rotated 90° counter-clockwise; negative: rotated clockwise. d_i = |P_i P_{i+1}| n_i. In the β signs (-1)^i, (-1)^(k+i), (-1)^(k+1), k is the level of the polygon being subdivided (the first step has k = 0) and i the 0-based index of the edge.</source>
+        <translation>Kladná normála: vektor hrany P_i P_{i+1} otočený o 90° proti směru hodinových ručiček; záporná: otočený po směru hodinových ručiček. d_i = |P_i P_{i+1}| n_i. Ve znaménkách β (-1)^i, (-1)^(k+i), (-1)^(k+1) je k úroveň dělené polygonu (první krok má k = 0) a i index hrany číslovaný od 0.</translation>
+    </message>
+    <message>
+        <source>p = %1: the normal-vector scheme needs p &gt;= 2 rules, one (α_j, β_j) pair each</source>
+        <translation>p = %1: schéma normálových vektorů vyžaduje p &gt;= 2 pravidel, každé s jednou dvojicí (α_j, β_j)</translation>
+    </message>
+    <message>
+        <source>β has %1 values but α has %2: eq. (1) needs one (α_j, β_j) pair per rule j = 0..p-1</source>
+        <translation>počet hodnot β (%1) se liší od počtu hodnot α (%2): eq. (1) vyžaduje jednu dvojici (α_j, β_j) pro každé pravidlo j = 0..p-1</translation>
+    </message>
+    <message>
+        <source>α_%1 is not a finite number</source>
+        <translation>α_%1 není konečné číslo</translation>
+    </message>
+    <message>
+        <source>β_%1 is not a finite number</source>
+        <translation>β_%1 není konečné číslo</translation>
+    </message>
+    <message>
+        <source>%1 β signs given for p = %2 rules: give none, one for all rules, or one per rule</source>
+        <translation>počet znamének β (%1) neodpovídá počtu pravidel p = %2: zadejte žádné, jedno pro všechna pravidla, nebo jedno pro každé pravidlo</translation>
+    </message>
+    <message>
+        <source>p = %1, α = %2, β = %3, β signs (%4), normals %5</source>
+        <translation>p = %1, α = %2, β = %3, znaménka β (%4), normály: %5</translation>
+    </message>
+    <message>
+        <source>the normal-vector scheme works in the plane: control points need 2 coordinates, got %1</source>
+        <translation>schéma normálových vektorů pracuje v rovině: řídicí body potřebují 2 souřadnice, zadáno %1</translation>
+    </message>
+    <message>
+        <source>control polygon</source>
+        <translation>řídicí polygon</translation>
+    </message>
+    <message>
+        <source>a closed control polygon needs at least %1 points, got %2</source>
+        <translation>uzavřený řídicí polygon: počet bodů musí být alespoň %1, zadáno %2</translation>
+    </message>
+    <message>
+        <source>an open control polygon needs at least %1 points, got %2</source>
+        <translation>otevřený řídicí polygon: počet bodů musí být alespoň %1, zadáno %2</translation>
+    </message>
+    <message>
+        <source>open control polygons need α_0 = β_0 = 0: rule 0 at the last point (i = p^k n in eq. (1)) would use a point after the end; close the polygon instead</source>
+        <translation>otevřené řídicí polygony vyžadují α_0 = β_0 = 0: pravidlo 0 v posledním bodě (i = p^k n v eq. (1)) by použilo bod za koncem; polygon raději uzavřete</translation>
+    </message>
+    <message>
+        <source>the number of subdivision steps cannot be negative, got %1</source>
+        <translation>počet kroků subdivize nemůže být záporný, zadáno %1</translation>
+    </message>
+    <message>
+        <source>the subdivision level cannot be negative, got %1</source>
+        <translation>úroveň subdivize nemůže být záporná, zadáno %1</translation>
+    </message>
+    <message>
+        <source>%1 subdivision steps of a polygon with %2 edges would make %3 points (at most %4); use fewer steps</source>
+        <translation>subdivize polygonu (počet hran: %2) v %1 krocích by dala %3 bodů (nejvýše %4); použijte méně kroků</translation>
+    </message>
+    <message>
+        <source>convergent: every edge shrinks by a factor of at most %1 per step, so ||F^{k+1} - F^k|| &lt;= %2 * %1^k * (longest initial edge) and F^k is a Cauchy sequence (the argument of 001 Theorem 1); non-rectifiable: the polygon length grows by a factor of at least %3 per step (001 Theorem 2)</source>
+        <translation>konvergentní: každá hrana se v každém kroku zkrátí nejvýše koeficientem %1, takže ||F^{k+1} - F^k|| &lt;= %2 * %1^k * (nejdelší počáteční hrana) a F^k je cauchyovská posloupnost (argument z 001 Theorem 1); nerektifikovatelná: délka polygonu roste v každém kroku alespoň koeficientem %3 (001 Theorem 2)</translation>
+    </message>
+    <message>
+        <source>convergent: every edge shrinks by a factor of at most %1 per step, so ||F^{k+1} - F^k|| &lt;= %2 * %1^k * (longest initial edge) and F^k is a Cauchy sequence (the argument of 001 Theorem 1)</source>
+        <translation>konvergentní: každá hrana se v každém kroku zkrátí nejvýše koeficientem %1, takže ||F^{k+1} - F^k|| &lt;= %2 * %1^k * (nejdelší počáteční hrana) a F^k je cauchyovská posloupnost (argument z 001 Theorem 1)</translation>
+    </message>
+    <message>
+        <source>not decided: the one-step edge bound is %1 &gt;= 1, so the argument of 001 Theorem 1 does not apply (see the measured edge lengths per level)</source>
+        <translation>nerozhodnuto: jednokrokový odhad hran je %1 &gt;= 1, takže argument z 001 Theorem 1 nelze použít (viz naměřené délky hran na jednotlivých úrovních)</translation>
+    </message>
+    <message>
+        <source>α_0 and β_0 are not both 0: the new edge across each old vertex joins two old edges and is not the image of one edge, so no IFS of one similarity per new edge exists</source>
+        <translation>α_0 a β_0 nejsou obě 0: nová hrana přes každý starý vrchol spojuje dvě staré hrany a není obrazem jedné hrany, takže IFS s jednou podobností pro každou novou hranu neexistuje</translation>
+    </message>
+    <message>
+        <source>new edge %1 of the unit edge has length %2 &gt;= 1: no map would contract</source>
+        <translation>nová hrana %1 jednotkové hrany má délku %2 &gt;= 1: žádné zobrazení by nebylo kontrakcí</translation>
+    </message>
+    <message>
+        <source>no IFS of %1 similarities (each new edge taken forward or reversed, plain or mirrored: %2 patterns) reproduces the polygons of the first %3 steps; the β sign changes with the level, so the rules repeat only every two steps (an IFS would need p^2 maps)</source>
+        <translation>žádný IFS z %1 podobností (každá nová hrana vzatá dopředu nebo obráceně, přímo nebo zrcadleně: %2 vzorů) nereprodukuje polygony prvních %3 kroků; znaménko β se mění s úrovní, takže pravidla se opakují jen každé dva kroky (IFS by potřeboval p^2 zobrazení)</translation>
+    </message>
+    <message>
+        <source>no IFS of %1 similarities (each new edge taken forward or reversed, plain or mirrored: %2 patterns) reproduces the polygons of the first %3 steps</source>
+        <translation>žádný IFS z %1 podobností (každá nová hrana vzatá dopředu nebo obráceně, přímo nebo zrcadleně: %2 vzorů) nereprodukuje polygony prvních %3 kroků</translation>
+    </message>
+    <message>
+        <source>no equivalent IFS: %1</source>
+        <translation>žádný ekvivalentní IFS: %1</translation>
+    </message>
+    <message>
+        <source>edge %1 of the control polygon is subdivided with rules no similarity copy of the unit edge&apos;s limit reproduces</source>
+        <translation>hrana %1 řídicího polygonu se dělí pravidly, která nereprodukuje žádná podobná kopie limity jednotkové hrany</translation>
+    </message>
+    <message>
+        <source>Lévy C curve</source>
+        <translation>Lévyho C křivka</translation>
+    </message>
+    <message>
+        <source>binary interpolatory; new point at the apex of a right isosceles triangle</source>
+        <translation>binární interpolační; nový bod ve vrcholu pravoúhlého rovnoramenného trojúhelníku</translation>
+    </message>
+    <message>
+        <source>Dragon curve</source>
+        <translation>Dračí křivka</translation>
+    </message>
+    <message>
+        <source>scheme (2) with β_1 = (-1)^i / 2: the bump alternates sides along the curve</source>
+        <translation>schéma (2) s β_1 = (-1)^i / 2: výstupek se podél křivky střídá na obě strany</translation>
+    </message>
+    <message>
+        <source>Sierpiński gasket (arrowhead curve)</source>
+        <translation>Sierpińského trojúhelník (šipková křivka)</translation>
+    </message>
+    <message>
+        <source>non-stationary and non-uniform, as in the paper: β_1 = β_2 = (-1)^(k+i) √3/4 flips with the level k and the edge i; the polygons tend to the gasket</source>
+        <translation>nestacionární a neuniformní, jako v článku: β_1 = β_2 = (-1)^(k+i) √3/4 mění znaménko s úrovní k a hranou i; polygony konvergují k trojúhelníku</translation>
+    </message>
+    <message>
+        <source>Koch curve</source>
+        <translation>Kochova křivka</translation>
+    </message>
+    <message>
+        <source>quaternary interpolatory; the limit is the classic Koch curve</source>
+        <translation>kvaternární interpolační; limitou je klasická Kochova křivka</translation>
+    </message>
+    <message>
+        <source>Koch snowflake</source>
+        <translation>Kochova vločka</translation>
+    </message>
+    <message>
+        <source>the triangle traversed counter-clockwise with negative normals, so every bump points outwards (NOTES.md)</source>
+        <translation>trojúhelník procházený proti směru hodinových ručiček se zápornými normálami, takže každý výstupek míří ven (NOTES.md)</translation>
+    </message>
+    <message>
+        <source>Tigerhead-like curve</source>
+        <translation>Křivka podobná tygří hlavě</translation>
+    </message>
+    <message>
+        <source>α = (0, -1/4, 1/2, 5/4), β = (0, 1/3, 1/2, 1/3): rules 1 and 3 lie outside the edge, so the curve overlaps itself</source>
+        <translation>α = (0, -1/4, 1/2, 5/4), β = (0, 1/3, 1/2, 1/3): pravidla 1 a 3 leží mimo hranu, takže křivka sama sebe překrývá</translation>
+    </message>
+    <message>
+        <source>Human-like curve</source>
+        <translation>Křivka podobná lidské postavě</translation>
+    </message>
+    <message>
+        <source>β = (-1)^(k+1) (0, 1/3, 1/2, 1/3): the bumps point down at the first step (k = 0) and flip at every level</source>
+        <translation>β = (-1)^(k+1) (0, 1/3, 1/2, 1/3): výstupky v prvním kroku (k = 0) míří dolů a na každé úrovni se překlopí</translation>
+    </message>
+    <message>
+        <source>Approximating curve</source>
+        <translation>Aproximační křivka</translation>
+    </message>
+    <message>
+        <source>α_0 = -1/2 moves the old points, so the polygon must be closed; the text does not give the quadrilateral of Fig. 3(c): a unit square traversed counter-clockwise is assumed</source>
+        <translation>α_0 = -1/2 posouvá staré body, takže polygon musí být uzavřený; text neuvádí čtyřúhelník z Fig. 3(c): předpokládá se jednotkový čtverec procházený proti směru hodinových ručiček</translation>
+    </message>
+    <message>
+        <source>Crown-like curve</source>
+        <translation>Křivka podobná koruně</translation>
+    </message>
+    <message>
+        <source>6-ary interpolatory</source>
+        <translation>6-ární interpolační</translation>
+    </message>
+    <message>
+        <source>7-ary square-wave curve</source>
+        <translation>7-ární křivka obdélníkové vlny</translation>
+    </message>
+    <message>
+        <source>the paper calls it the Minkowski curve; it equals the Minkowski sausage only at level 1 (its middle edge has length 1/2 and is replaced by a half-size copy), so it is a different curve of similarity dimension log_2 3, not 1.5</source>
+        <translation>článek ji nazývá Minkowského křivkou; s Minkowského klobásou se shoduje jen na úrovni 1 (její prostřední hrana má délku 1/2 a nahrazuje ji kopie poloviční velikosti), jde tedy o jinou křivku s dimenzí podobnosti log_2 3, nikoli 1.5</translation>
+    </message>
+    <message>
+        <source>unknown normal-vector preset %1</source>
+        <translation>neznámá předvolba schématu normálových vektorů %1</translation>
+    </message>
+    <message>
+        <source>%1 needs exactly %2 control points, got %3</source>
+        <translation>%1: počet řídicích bodů musí být přesně %2, zadáno %3</translation>
+    </message>
+    <message>
+        <source>%1 needs at least %2 control points, got %3</source>
+        <translation>%1: počet řídicích bodů musí být alespoň %2, zadáno %3</translation>
+    </message>
+    <message>
+        <source>%1: the arity of a scheme must be at least 2, got %2</source>
+        <translation>%1: arita schématu musí být alespoň 2, zadáno %2</translation>
+    </message>
+    <message>
+        <source>%1: a scheme of arity %2 needs %2 rules, got %3</source>
+        <translation>%1: schéma arity %2 vyžaduje počet pravidel %2, zadáno %3</translation>
+    </message>
+    <message>
+        <source>%1: rule %2 has no weights</source>
+        <translation>%1: pravidlo %2 nemá žádné váhy</translation>
+    </message>
+    <message>
+        <source>%1: weight %2 of rule %3 is not a finite number</source>
+        <translation>%1: váha %2 pravidla %3 není konečné číslo</translation>
+    </message>
+    <message>
+        <source>%1: the weights of rule %2 sum to %3, not 1 (an affine rule must reproduce constants)</source>
+        <translation>%1: součet vah pravidla %2 je %3, nikoli 1 (afinní pravidlo musí reprodukovat konstanty)</translation>
+    </message>
+    <message>
+        <source>B-spline degree must be between 1 and 15, got %1</source>
+        <translation>stupeň B-spline musí být mezi 1 a 15, zadáno %1</translation>
+    </message>
+    <message>
+        <source>uniform B-spline of degree %1</source>
+        <translation>uniformní B-spline stupně %1</translation>
+    </message>
+    <message>
+        <source>corner cutting needs 0 &lt; a &lt; b &lt; 1, got a = %1, b = %2</source>
+        <translation>ořezávání rohů vyžaduje 0 &lt; a &lt; b &lt; 1, zadáno a = %1, b = %2</translation>
+    </message>
+    <message>
+        <source>corner cutting (%1, %2)</source>
+        <translation>ořezávání rohů (%1, %2)</translation>
+    </message>
+    <message>
+        <source>four-point tension omega is not a finite number</source>
+        <translation>napětí omega čtyřbodového schématu není konečné číslo</translation>
+    </message>
+    <message>
+        <source>four-point (omega = %1)</source>
+        <translation>čtyřbodové (omega = %1)</translation>
+    </message>
+    <message>
+        <source>Bézier degree must be between 1 and 30, got %1</source>
+        <translation>stupeň Bézierovy křivky musí být mezi 1 a 30, zadáno %1</translation>
+    </message>
+    <message>
+        <source>the de Casteljau split parameter t must lie strictly between 0 and 1, got %1</source>
+        <translation>parametr de Casteljauova dělení t musí ležet ostře mezi 0 a 1, zadáno %1</translation>
+    </message>
+    <message>
+        <source>Bézier of degree %1 (de Casteljau at t = %2)</source>
+        <translation>Bézierova křivka stupně %1 (de Casteljau v t = %2)</translation>
+    </message>
+    <message>
+        <source>end-interpolating B-spline of degree %1</source>
+        <translation>B-spline stupně %1 interpolující koncové body</translation>
+    </message>
+    <message>
+        <source>%1: an IFS needs at least two matrices, got %2</source>
+        <translation>%1: IFS vyžaduje alespoň dvě matice, zadáno %2</translation>
+    </message>
+    <message>
+        <source>%1: matrix S_1 is empty</source>
+        <translation>%1: matice S_1 je prázdná</translation>
+    </message>
+    <message>
+        <source>%1: matrix S_%2 is %3 x %4, expected %5 x %5 like S_1</source>
+        <translation>%1: matice S_%2 má rozměr %3 x %4, očekáváno %5 x %5 jako S_1</translation>
+    </message>
+    <message>
+        <source>%1: matrix S_%2</source>
+        <translation>%1: matice S_%2</translation>
+    </message>
+    <message>
+        <source>%1: matrix S_%2, row %3 sums to %4, not 1 (subdivision rows are affine combinations)</source>
+        <translation>%1: matice S_%2, součet řádku %3 je %4, nikoli 1 (řádky subdivize jsou afinní kombinace)</translation>
+    </message>
+    <message>
+        <source>the number of subdivision steps cannot be negative</source>
+        <translation>počet kroků subdivize nemůže být záporný</translation>
+    </message>
+    <message>
+        <source>classic subdivision with %1 steps would make %2 points; use fewer steps</source>
+        <translation>klasická subdivize s %1 kroky by dala %2 bodů; použijte méně kroků</translation>
+    </message>
+    <message>
+        <source>user matrices</source>
+        <translation>uživatelské matice</translation>
+    </message>
+    <message>
+        <source>the square lattice of %1 has no layout &apos;%2&apos; (it has: %3)</source>
+        <translation>čtvercová mříž schématu %1 nemá rozložení „%2“ (má: %3)</translation>
+    </message>
+    <message>
+        <source>the triangular lattice of %1 has no layout &apos;%2&apos; (it has: %3)</source>
+        <translation>trojúhelníková mříž schématu %1 nemá rozložení „%2“ (má: %3)</translation>
+    </message>
+    <message>
+        <source>%1: the mask is not symmetric under the turn of map %2 of the %3 layout</source>
+        <translation>%1: maska není symetrická vůči otočení zobrazení %2 rozložení %3</translation>
+    </message>
+    <message>
+        <source>%1: the pieces of the %2 layout are not determined by a finite net</source>
+        <translation>%1: části rozložení %2 nejsou určeny konečnou sítí</translation>
+    </message>
+    <message>
+        <source>the patch needs %1 control points on its net, got %2</source>
+        <translation>plát: počet řídicích bodů na síti musí být %1, zadáno %2</translation>
+    </message>
+    <message>
+        <source>lattice point %1 is given twice (points %2 and %3)</source>
+        <translation>mřížový bod %1 je zadán dvakrát (body %2 a %3)</translation>
+    </message>
+    <message>
+        <source>lattice point %1 (point %2) is not on the square net of the patch; missing: %3</source>
+        <translation>mřížový bod %1 (bod %2) neleží na čtvercové síti plátu; chybí: %3</translation>
+    </message>
+    <message>
+        <source>lattice point %1 (point %2) is not on the triangular net of the patch; missing: %3</source>
+        <translation>mřížový bod %1 (bod %2) neleží na trojúhelníkové síti plátu; chybí: %3</translation>
+    </message>
+    <message>
+        <source>the net has %1 lattice points but %2 control points</source>
+        <translation>síť má mřížových bodů %1, ale řídicích bodů %2</translation>
+    </message>
+    <message>
+        <source>refinement rounds must be from 0 to 12, got %1</source>
+        <translation>počet kol zjemnění musí být od 0 do 12, zadáno %1</translation>
+    </message>
+    <message>
+        <source>the mesh was refined by another scheme</source>
+        <translation>síť byla zjemněna jiným schématem</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Subdivision curves as attractors of IFS.</source>
+        <translation>Subdivizní křivky jako atraktory IFS.</translation>
+    </message>
+    <message>
+        <source>Project file to open.</source>
+        <translation>Soubor projektu, který se má otevřít.</translation>
+    </message>
+    <message>
+        <source>Select the item with this name after opening.</source>
+        <translation>Po otevření vybrat položku s tímto názvem.</translation>
+    </message>
+    <message>
+        <source>Print the current item&apos;s figure sheet to this PDF file, then quit.</source>
+        <translation>Vytisknout list s obrázkem aktuální položky do tohoto souboru PDF a skončit.</translation>
+    </message>
+    <message>
+        <source>Save a picture of the main window to this PNG file once the attractor is drawn, then quit.</source>
+        <translation>Po vykreslení atraktoru uložit snímek hlavního okna do tohoto souboru PNG a skončit.</translation>
+    </message>
+    <message>
+        <source>Window size for --screenshot, WIDTHxHEIGHT.</source>
+        <translation>Velikost okna pro --screenshot, ŠÍŘKAxVÝŠKA.</translation>
+    </message>
+    <message>
+        <source>Export a figure of the current item to this file (.png, .svg, .pdf; .tex for the matrices), then quit.</source>
+        <translation>Exportovat obrázek aktuální položky do tohoto souboru (.png, .svg, .pdf; .tex pro matice) a skončit.</translation>
+    </message>
+    <message>
+        <source>Resolution of --export-figure in dpi (36..2400).</source>
+        <translation>Rozlišení pro --export-figure v dpi (36..2400).</translation>
+    </message>
+    <message>
+        <source>What --export-figure shows: attractor, spectrum, matrices, analysis or sheet.</source>
+        <translation>Co zobrazí --export-figure: attractor, spectrum, matrices, analysis nebo sheet.</translation>
+    </message>
+    <message>
+        <source>Size of --export-figure in pixels at its resolution, WIDTHxHEIGHT (16..20000).</source>
+        <translation>Velikost pro --export-figure v pixelech při daném rozlišení, ŠÍŘKAxVÝŠKA (16..20000).</translation>
+    </message>
+    <message>
+        <source>--export-figure without the grid.</source>
+        <translation>--export-figure bez mřížky.</translation>
+    </message>
+    <message>
+        <source>--export-figure without control polygons and start set.</source>
+        <translation>--export-figure bez řídicích polygonů a počáteční množiny.</translation>
+    </message>
+    <message>
+        <source>--export-figure framed tightly around the content (the height follows its proportions).</source>
+        <translation>--export-figure těsně ohraničený kolem obsahu (výška se řídí jeho proporcemi).</translation>
+    </message>
+    <message>
+        <source>Font of --export-figure&apos;s labels: FAMILY or FAMILY,POINTS.</source>
+        <translation>Písmo popisků pro --export-figure: RODINA nebo RODINA,BODY.</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,5589 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="fr_FR" sourcelanguage="en">
+<context>
+    <name>ExportDialog</name>
+    <message>
+        <source>Export Figure</source>
+        <translation>Exporter la figure</translation>
+    </message>
+    <message>
+        <source>&amp;View:</source>
+        <translation>&amp;Vue&#xa0;:</translation>
+    </message>
+    <message>
+        <source>The view or figure to export.</source>
+        <translation>La vue ou la figure à exporter.</translation>
+    </message>
+    <message>
+        <source>Attractor view</source>
+        <translation>Vue de l’attracteur</translation>
+    </message>
+    <message>
+        <source>Spectrum plot</source>
+        <translation>Graphique du spectre</translation>
+    </message>
+    <message>
+        <source>Matrices</source>
+        <translation>Matrices</translation>
+    </message>
+    <message>
+        <source>Analysis chart (current tab)</source>
+        <translation>Graphique d’analyse (onglet courant)</translation>
+    </message>
+    <message>
+        <source>Figure sheet</source>
+        <translation>Fiche de figure</translation>
+    </message>
+    <message>
+        <source>&amp;File:</source>
+        <translation>&amp;Fichier&#xa0;:</translation>
+    </message>
+    <message>
+        <source>File to write; its suffix (.png, .svg or .pdf; .tex for the matrices as LaTeX) picks the format.</source>
+        <translation>Fichier à écrire&#x202f;; son suffixe (.png, .svg ou .pdf&#x202f;; .tex pour les matrices en LaTeX) détermine le format.</translation>
+    </message>
+    <message>
+        <source>Choose the file to write.</source>
+        <translation>Choisir le fichier à écrire.</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Parcourir…</translation>
+    </message>
+    <message>
+        <source>The suffix picks the format: .png, .svg or .pdf (the Matrices view also .tex: LaTeX bmatrix).</source>
+        <translation>Le suffixe détermine le format&#xa0;: .png, .svg ou .pdf (la vue Matrices accepte aussi .tex&#xa0;: bmatrix LaTeX).</translation>
+    </message>
+    <message>
+        <source>&amp;Width:</source>
+        <translation>&amp;Largeur&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Width of the figure in pixels (for SVG and PDF: pixel units at the resolution below).</source>
+        <translation>Largeur de la figure en pixels (pour SVG et PDF&#xa0;: unités de pixel à la résolution ci-dessous).</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>&amp;Height:</source>
+        <translation>&amp;Hauteur&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Height of the figure in pixels (for SVG and PDF: pixel units at the resolution below).</source>
+        <translation>Hauteur de la figure en pixels (pour SVG et PDF&#xa0;: unités de pixel à la résolution ci-dessous).</translation>
+    </message>
+    <message>
+        <source>&amp;Resolution:</source>
+        <translation>&amp;Résolution&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Resolution in dots per inch (dpi).</source>
+        <translation>Résolution en points par pouce (ppp).</translation>
+    </message>
+    <message>
+        <source> dpi</source>
+        <translation> ppp</translation>
+    </message>
+    <message>
+        <source>Show:</source>
+        <translation>Afficher&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Draw the coordinate grid and its labels (when the view shows them).</source>
+        <translation>Tracer la grille de coordonnées et ses étiquettes (lorsque la vue les affiche).</translation>
+    </message>
+    <message>
+        <source>&amp;Grid</source>
+        <translation>&amp;Grille</translation>
+    </message>
+    <message>
+        <source>Draw the control polygons, the start set and their points and labels.</source>
+        <translation>Tracer les polygones de contrôle, l’ensemble initial, ainsi que leurs points et leurs étiquettes.</translation>
+    </message>
+    <message>
+        <source>&amp;Control points</source>
+        <translation>&amp;Points de contrôle</translation>
+    </message>
+    <message>
+        <source>Frame the attractor view&apos;s content tightly: the height follows the content&apos;s proportions (the width is kept).</source>
+        <translation>Cadrer au plus près le contenu de la vue de l’attracteur&#xa0;: la hauteur suit les proportions du contenu (la largeur est conservée).</translation>
+    </message>
+    <message>
+        <source>C&amp;rop to contents</source>
+        <translation>Rogner au &amp;contenu</translation>
+    </message>
+    <message>
+        <source>F&amp;ont:</source>
+        <translation>P&amp;olice&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Font of the labels and of the figure sheet&apos;s text.</source>
+        <translation>Police des étiquettes et du texte de la fiche de figure.</translation>
+    </message>
+    <message>
+        <source>Label size in points as the figure is shown at its resolution (0: as on screen).</source>
+        <translation>Taille des étiquettes en points, la figure étant affichée à sa résolution (0&#xa0;: comme à l’écran).</translation>
+    </message>
+    <message>
+        <source>as on screen</source>
+        <translation>comme à l’écran</translation>
+    </message>
+    <message>
+        <source> pt</source>
+        <translation> pt</translation>
+    </message>
+</context>
+<context>
+    <name>PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>Préférences</translation>
+    </message>
+    <message>
+        <source>Default &amp;depth of new items:</source>
+        <translation>&amp;Profondeur par défaut des nouveaux éléments&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Deterministic depth given to new items.</source>
+        <translation>Profondeur déterministe attribuée aux nouveaux éléments.</translation>
+    </message>
+    <message>
+        <source>&amp;Maximum drawn depth:</source>
+        <translation>Profondeur &amp;maximale tracée&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Draw at most this depth, whatever the item asks for.</source>
+        <translation>Ne jamais tracer au-delà de cette profondeur, quelle que soit celle demandée par l’élément.</translation>
+    </message>
+    <message>
+        <source>no limit</source>
+        <translation>aucune limite</translation>
+    </message>
+    <message>
+        <source>Map &amp;colours:</source>
+        <translation>&amp;Couleurs des applications&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Colour of map 1</source>
+        <translation>Couleur de l’application 1</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>auto</translation>
+    </message>
+    <message>
+        <source>Colour of map 2</source>
+        <translation>Couleur de l’application 2</translation>
+    </message>
+    <message>
+        <source>Colour of map 3</source>
+        <translation>Couleur de l’application 3</translation>
+    </message>
+    <message>
+        <source>Colour of map 4</source>
+        <translation>Couleur de l’application 4</translation>
+    </message>
+    <message>
+        <source>Colour of map 5</source>
+        <translation>Couleur de l’application 5</translation>
+    </message>
+    <message>
+        <source>Colour of map 6</source>
+        <translation>Couleur de l’application 6</translation>
+    </message>
+    <message>
+        <source>Use the views&apos; default colours for all maps.</source>
+        <translation>Utiliser les couleurs par défaut des vues pour toutes les applications.</translation>
+    </message>
+    <message>
+        <source>Defaults</source>
+        <translation>Valeurs par défaut</translation>
+    </message>
+    <message>
+        <source>&amp;Autosave interval:</source>
+        <translation>Intervalle d’enregistrement &amp;automatique&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Time between automatic saves of a recovery copy of the project, in seconds.</source>
+        <translation>Durée entre deux enregistrements automatiques d’une copie de récupération du projet, en secondes.</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>%1, Hölder regularity r in [%2, %3] (width %4)</source>
+        <translation>%1, régularité höldérienne r dans [%2, %3] (largeur %4)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AddressPanel</name>
+    <message>
+        <source>Address 0,1,1 or interval [0.25, 0.5]</source>
+        <translation>Adresse 0,1,1 ou intervalle [0.25, 0.5]</translation>
+    </message>
+    <message>
+        <source>An address selects the sub-copy f_w(A) = f_w1(f_w2(…(A))): map numbers from 0, the outermost map first. A subdivision curve also takes a parameter interval [t0, t1]. Enter selects, an empty field clears.</source>
+        <translation>Une adresse sélectionne la sous-copie f_w(A) = f_w1(f_w2(…(A)))&#xa0;: les applications sont numérotées à partir de 0, la plus extérieure en premier. Une courbe de subdivision accepte aussi un intervalle de paramètre [t0, t1]. Entrée valide la sélection, un champ vide l’efface.</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Effacer</translation>
+    </message>
+    <message>
+        <source>Click the attractor to pick an address; click a symbol of it to select that prefix.</source>
+        <translation>Cliquez sur l’attracteur pour choisir une adresse&#x202f;; cliquez sur l’un de ses symboles pour sélectionner le préfixe correspondant.</translation>
+    </message>
+    <message>
+        <source>address %1</source>
+        <translation>adresse %1</translation>
+    </message>
+    <message>
+        <source>, t ≈ %1</source>
+        <translation>, t ≈ %1</translation>
+    </message>
+    <message>
+        <source>Clicked: %1&lt;br&gt;&lt;small&gt;click a symbol to select the prefix up to it&lt;/small&gt;</source>
+        <translation>Clic&#xa0;: %1&lt;br&gt;&lt;small&gt;cliquez sur un symbole pour sélectionner le préfixe qui s’arrête à lui&lt;/small&gt;</translation>
+    </message>
+    <message>
+        <source>The item drawn has no addresses to select (only items drawn by one IFS in the plane have).</source>
+        <translation>L’élément tracé n’a pas d’adresses à sélectionner (seuls les éléments tracés par un seul IFS du plan en ont).</translation>
+    </message>
+    <message>
+        <source>a parameter interval selects on a subdivision curve with a real parameter; this item has none</source>
+        <translation>un intervalle de paramètre ne sélectionne que sur une courbe de subdivision à paramètre réel&#x202f;; cet élément n’en a pas</translation>
+    </message>
+    <message>
+        <source>t in %1</source>
+        <translation>t dans %1</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;t in %1&lt;/b&gt; (%2)&lt;br&gt;Pieces inside it (addresses up to 8 symbols): %3</source>
+        <translation>&lt;b&gt;t dans %1&lt;/b&gt; (%2)&lt;br&gt;Morceaux contenus dans l’intervalle (adresses d’au plus 8 symboles)&#xa0;: %3</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>aucun</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;The control polygons of the first %1 pieces are drawn.</source>
+        <translation>&lt;br&gt;Les polygones de contrôle des %1 premiers morceaux sont tracés.</translation>
+    </message>
+    <message>
+        <source>w = %1</source>
+        <translation>w = %1</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;w = %1&lt;/b&gt;: the sub-copy f_w(A) = %2(A)</source>
+        <translation>&lt;b&gt;w = %1&lt;/b&gt;&#xa0;: la sous-copie f_w(A) = %2(A)</translation>
+    </message>
+    <message>
+        <source>   t in [%1, %2]</source>
+        <translation>   t dans [%1, %2]</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;t in [%1, %2] (%3)</source>
+        <translation>&lt;br&gt;t dans [%1, %2] (%3)</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Control points S_w P = %1 (symbol i is S_(i+1)):&lt;br&gt;%2</source>
+        <translation>&lt;br&gt;Points de contrôle S_w P = %1 (le symbole i désigne S_(i+1))&#xa0;:&lt;br&gt;%2</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AlgorithmSpec</name>
+    <message>
+        <source>the depth cannot be negative, got %1</source>
+        <translation>la profondeur ne peut pas être négative (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>depth %1 is absurd: at most %2 is allowed</source>
+        <translation>une profondeur de %1 est absurde&#xa0;: %2 au maximum</translation>
+    </message>
+    <message>
+        <source>depth %1 with %2 maps makes %3 images of the start set, more than 2^31; use a smaller depth</source>
+        <translation>une profondeur de %1 avec %2 applications produit %3 images de l’ensemble initial, soit plus de 2^31&#x202f;; choisissez une profondeur plus petite</translation>
+    </message>
+    <message>
+        <source>the sample count must be between 1 and 2^31, got %1</source>
+        <translation>le nombre d’échantillons doit être compris entre 1 et 2^31 (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>the seed must be between 0 and 2^53 - 1, got %1</source>
+        <translation>la graine doit être comprise entre 0 et 2^53 - 1 (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>probability %1 must be a finite number &gt;= 0</source>
+        <translation>la probabilité %1 doit être un nombre fini &gt;= 0</translation>
+    </message>
+    <message>
+        <source>the probabilities sum to 0</source>
+        <translation>la somme des probabilités est nulle</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AnalysisCharts</name>
+    <message>
+        <source>Distance to the exact curve</source>
+        <translation>Distance à la courbe exacte</translation>
+    </message>
+    <message>
+        <source>Distance</source>
+        <translation>Distance</translation>
+    </message>
+    <message>
+        <source>Control polygon length</source>
+        <translation>Longueur du polygone de contrôle</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Longueur</translation>
+    </message>
+    <message>
+        <source>Box counting</source>
+        <translation>Comptage de boîtes</translation>
+    </message>
+    <message>
+        <source>Eigenvalue moduli</source>
+        <translation>Modules des valeurs propres</translation>
+    </message>
+    <message>
+        <source>|λ| per map</source>
+        <translation>|λ| par application</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;depth k = %2&lt;br&gt;d&lt;sub&gt;H&lt;/sub&gt; = %3</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;profondeur k = %2&lt;br&gt;d&lt;sub&gt;H&lt;/sub&gt; = %3</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;step k = %2&lt;br&gt;length = %3</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;étape k = %2&lt;br&gt;longueur = %3</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;log(1/ε) = %2 (ε = %3)&lt;br&gt;log N(ε) = %4 (N = %5)</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;log(1/ε) = %2 (ε = %3)&lt;br&gt;log N(ε) = %4 (N = %5)</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;|λ| = %2</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;|λ| = %2</translation>
+    </message>
+    <message>
+        <source>∝ %1^k</source>
+        <translation>∝ %1^k</translation>
+    </message>
+    <message>
+        <source>depth k</source>
+        <translation>profondeur k</translation>
+    </message>
+    <message>
+        <source>Hausdorff distance</source>
+        <translation>distance de Hausdorff</translation>
+    </message>
+    <message>
+        <source>control polygon</source>
+        <translation>polygone de contrôle</translation>
+    </message>
+    <message>
+        <source>exact curve</source>
+        <translation>courbe exacte</translation>
+    </message>
+    <message>
+        <source>subdivision step k</source>
+        <translation>étape de subdivision k</translation>
+    </message>
+    <message>
+        <source>length</source>
+        <translation>longueur</translation>
+    </message>
+    <message>
+        <source>Box counting: dimension D = %1, R² = %2</source>
+        <translation>Comptage de boîtes&#xa0;: dimension D = %1, R² = %2</translation>
+    </message>
+    <message>
+        <source>Box counting: no fit (%1)</source>
+        <translation>Comptage de boîtes&#xa0;: pas d’ajustement (%1)</translation>
+    </message>
+    <message>
+        <source>not fitted</source>
+        <translation>non ajusté</translation>
+    </message>
+    <message>
+        <source>fitted levels</source>
+        <translation>niveaux ajustés</translation>
+    </message>
+    <message>
+        <source>fit: log N = %1 log(1/ε) + %2</source>
+        <translation>ajustement&#xa0;: log N = %1 log(1/ε) + %2</translation>
+    </message>
+    <message>
+        <source>log(1/ε)</source>
+        <translation>log(1/ε)</translation>
+    </message>
+    <message>
+        <source>log N(ε)</source>
+        <translation>log N(ε)</translation>
+    </message>
+    <message>
+        <source>map</source>
+        <translation>application</translation>
+    </message>
+    <message>
+        <source>|λ| = 1</source>
+        <translation>|λ| = 1</translation>
+    </message>
+    <message>
+        <source>|λ|</source>
+        <translation>|λ|</translation>
+    </message>
+    <message>
+        <source>No exact curve known for this item</source>
+        <translation>Aucune courbe exacte connue pour cet élément</translation>
+    </message>
+    <message>
+        <source>The Hausdorff distance is measured against an exact curve: B-spline, Bézier and complex de Casteljau curves have one.</source>
+        <translation>La distance de Hausdorff est mesurée par rapport à une courbe exacte&#xa0;: les B-splines, les courbes de Bézier et les courbes de de Casteljau complexes en ont une.</translation>
+    </message>
+</context>
+<context>
+    <name>awb::Animation</name>
+    <message>
+        <source>expected a duration in seconds above 0 and at most %1</source>
+        <translation>durée en secondes attendue, strictement positive et d’au plus %1</translation>
+    </message>
+    <message>
+        <source>expected between 1 and %1 frames per second</source>
+        <translation>entre 1 et %1 images par seconde attendues</translation>
+    </message>
+    <message>
+        <source>%1 s at %2 frames per second makes more than %3 frames</source>
+        <translation>%1 s à %2 images par seconde donnent plus de %3 images</translation>
+    </message>
+    <message>
+        <source>names no parameter</source>
+        <translation>ne désigne aucun paramètre</translation>
+    </message>
+    <message>
+        <source>%1 is driven by an earlier track already</source>
+        <translation>%1 est déjà piloté par une piste précédente</translation>
+    </message>
+    <message>
+        <source>needs at least one key</source>
+        <translation>il faut au moins une clé</translation>
+    </message>
+    <message>
+        <source>expected a time between 0 and the duration, %1 s</source>
+        <translation>instant attendu entre 0 et la durée, %1 s</translation>
+    </message>
+    <message>
+        <source>key times must increase (%1 s follows %2 s)</source>
+        <translation>les instants des clés doivent être croissants (%1 s suit %2 s)</translation>
+    </message>
+    <message>
+        <source>expected %1 numbers, as the first key</source>
+        <translation>%1 nombres attendus, comme pour la première clé</translation>
+    </message>
+    <message>
+        <source>not a finite number</source>
+        <translation>n’est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>a circle turns a point or a complex value, not one number</source>
+        <translation>un cercle fait tourner un point ou une valeur complexe, pas un nombre seul</translation>
+    </message>
+    <message>
+        <source>expected [x, y]</source>
+        <translation>[x, y] attendu</translation>
+    </message>
+    <message>
+        <source>expected a number of turns between -1000 and 1000</source>
+        <translation>nombre de tours attendu entre -1000 et 1000</translation>
+    </message>
+    <message>
+        <source>Probabilities</source>
+        <translation>Probabilités</translation>
+    </message>
+    <message>
+        <source>Points %1, point %2</source>
+        <translation>Ensemble de points %1, point %2</translation>
+    </message>
+    <message>
+        <source>Control point %1</source>
+        <translation>Point de contrôle %1</translation>
+    </message>
+    <message>
+        <source>%1 has no probabilities</source>
+        <translation>%1 n’a pas de probabilités</translation>
+    </message>
+    <message>
+        <source>%1 has no control point %2 in point set %3</source>
+        <translation>%1 n’a pas de point de contrôle %2 dans l’ensemble de points %3</translation>
+    </message>
+    <message>
+        <source>%1 is not a number that can be animated</source>
+        <translation>%1 n’est pas un nombre animable</translation>
+    </message>
+    <message>
+        <source>%1 has no parameter %2 (now)</source>
+        <translation>%1 n’a pas de paramètre %2 (dans son état actuel)</translation>
+    </message>
+    <message>
+        <source>no such control point</source>
+        <translation>point de contrôle inexistant</translation>
+    </message>
+    <message>
+        <source>the point was refused</source>
+        <translation>le point a été refusé</translation>
+    </message>
+    <message>
+        <source>no such parameter now</source>
+        <translation>ce paramètre n’existe pas actuellement</translation>
+    </message>
+    <message>
+        <source>a complex value needs 2 numbers</source>
+        <translation>une valeur complexe demande 2 nombres</translation>
+    </message>
+    <message>
+        <source>%1 at %2 s: %3</source>
+        <translation>%1 à %2 s&#xa0;: %3</translation>
+    </message>
+    <message>
+        <source>the value was refused</source>
+        <translation>la valeur a été refusée</translation>
+    </message>
+    <message>
+        <source>%1 has %2 coordinates, the keys %3</source>
+        <translation>%1 a %2 coordonnées, les clés en ont %3</translation>
+    </message>
+    <message>
+        <source>p = (%1)</source>
+        <translation>p = (%1)</translation>
+    </message>
+    <message>
+        <source>t = %1 s: %2</source>
+        <translation>t = %1 s&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>manquant</translation>
+    </message>
+    <message>
+        <source>expected an array of tracks</source>
+        <translation>tableau de pistes attendu</translation>
+    </message>
+    <message>
+        <source>expected an object</source>
+        <translation>objet attendu</translation>
+    </message>
+    <message>
+        <source>expected an array of keys</source>
+        <translation>tableau de clés attendu</translation>
+    </message>
+    <message>
+        <source>expected an object {&quot;time&quot;, &quot;value&quot;}</source>
+        <translation>objet {&quot;time&quot;, &quot;value&quot;} attendu</translation>
+    </message>
+    <message>
+        <source>unknown field of a key</source>
+        <translation>champ inconnu dans une clé</translation>
+    </message>
+    <message>
+        <source>unknown field of a track</source>
+        <translation>champ inconnu dans une piste</translation>
+    </message>
+    <message>
+        <source>unknown field of an animation</source>
+        <translation>champ inconnu dans une animation</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AnimationPanel</name>
+    <message>
+        <source>Play / pause the animation (Ctrl+Space)</source>
+        <translation>Lire / mettre en pause l’animation (Ctrl+Space)</translation>
+    </message>
+    <message>
+        <source>Stop: the views show the item itself again</source>
+        <translation>Arrêter&#xa0;: les vues montrent de nouveau l’élément lui-même</translation>
+    </message>
+    <message>
+        <source>Time: drag to see the frames (the views follow)</source>
+        <translation>Temps&#xa0;: faites glisser pour parcourir les images (les vues suivent)</translation>
+    </message>
+    <message>
+        <source>Time and frame number</source>
+        <translation>Temps et numéro d’image</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>En boucle</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Lecture</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Arrêter</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Duration of the animation</source>
+        <translation>Durée de l’animation</translation>
+    </message>
+    <message>
+        <source>Frames per second</source>
+        <translation>Images par seconde</translation>
+    </message>
+    <message>
+        <source> fps</source>
+        <translation> i/s</translation>
+    </message>
+    <message>
+        <source>Parameter / key time (s)</source>
+        <translation>Paramètre / instant de la clé (s)</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Valeur</translation>
+    </message>
+    <message>
+        <source>Double-click a key&apos;s time or value to edit it</source>
+        <translation>Double-cliquez sur l’instant ou la valeur d’une clé pour la modifier</translation>
+    </message>
+    <message>
+        <source>The parameter, probabilities or control point to key</source>
+        <translation>Le paramètre, les probabilités ou le point de contrôle sur lequel poser une clé</translation>
+    </message>
+    <message>
+        <source>Set Key</source>
+        <translation>Poser une clé</translation>
+    </message>
+    <message>
+        <source>Store the item&apos;s present value of the parameter at the time shown (replaces a key at that time)</source>
+        <translation>Enregistrer la valeur actuelle du paramètre de l’élément à l’instant affiché (remplace la clé existant à cet instant)</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Supprimer</translation>
+    </message>
+    <message>
+        <source>Remove the selected key, or the selected track with its keys</source>
+        <translation>Supprimer la clé sélectionnée, ou la piste sélectionnée avec ses clés</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>Linéaire</translation>
+    </message>
+    <message>
+        <source>Smooth (ease in and out)</source>
+        <translation>Adoucie (départ et arrivée progressifs)</translation>
+    </message>
+    <message>
+        <source>Through the keys</source>
+        <translation>Passant par les clés</translation>
+    </message>
+    <message>
+        <source>Circle about a centre</source>
+        <translation>Cercle autour d’un centre</translation>
+    </message>
+    <message>
+        <source>x, y</source>
+        <translation>x, y</translation>
+    </message>
+    <message>
+        <source>Interpolation</source>
+        <translation>Interpolation</translation>
+    </message>
+    <message>
+        <source>Path</source>
+        <translation>Trajectoire</translation>
+    </message>
+    <message>
+        <source>Centre</source>
+        <translation>Centre</translation>
+    </message>
+    <message>
+        <source>Turns</source>
+        <translation>Tours</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>The views show the item itself.</source>
+        <translation>Les vues montrent l’élément lui-même.</translation>
+    </message>
+    <message>
+        <source>%1 s · %2/%3</source>
+        <translation>%1 s · %2/%3</translation>
+    </message>
+    <message>
+        <source>Frame at %1 s: %2</source>
+        <translation>Image à %1 s&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>The views show the frame at %1 s (not editable); Stop returns to the item.</source>
+        <translation>Les vues montrent l’image à %1 s (non modifiable)&#x202f;; Arrêter revient à l’élément.</translation>
+    </message>
+    <message>
+        <source>No item is selected.</source>
+        <translation>Aucun élément n’est sélectionné.</translation>
+    </message>
+    <message>
+        <source>Select a key or a track to remove.</source>
+        <translation>Sélectionnez une clé ou une piste à supprimer.</translation>
+    </message>
+    <message>
+        <source>inactive: %1 has no such input now</source>
+        <translation>inactive&#xa0;: %1 n’a pas cette entrée actuellement</translation>
+    </message>
+    <message>
+        <source>circle about (%1), %2 turns</source>
+        <translation>cercle autour de (%1), %2 tours</translation>
+    </message>
+    <message>
+        <source>The item does not have %1 in its present state (another scheme, fewer points): the track is kept and skipped.</source>
+        <translation>L’élément n’a pas %1 dans son état actuel (autre schéma, moins de points)&#xa0;: la piste est conservée mais ignorée.</translation>
+    </message>
+    <message>
+        <source>Select an item to animate its parameters.</source>
+        <translation>Sélectionnez un élément pour animer ses paramètres.</translation>
+    </message>
+    <message>
+        <source>No keys yet: set a value in Properties, choose it here and press Set Key; then move the slider, change the value and key it again.</source>
+        <translation>Pas encore de clés&#xa0;: réglez une valeur dans Propriétés, choisissez-la ici et cliquez sur Poser une clé&#x202f;; déplacez ensuite le curseur, modifiez la valeur et posez une nouvelle clé.</translation>
+    </message>
+    <message>
+        <source>%1 has no numeric parameters to animate.</source>
+        <translation>%1 n’a pas de paramètres numériques à animer.</translation>
+    </message>
+    <message>
+        <source>%1 tracks, %2 frames. Play or drag the slider to preview.</source>
+        <translation>%1 pistes, %2 images. Lancez la lecture ou faites glisser le curseur pour prévisualiser.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a time in seconds</source>
+        <translation>«&#xa0;%1&#xa0;» n’est pas un temps en secondes</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: expected %2 numbers</source>
+        <translation>«&#xa0;%1&#xa0;»&#xa0;: %2 nombres attendus</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AttractorItem</name>
+    <message>
+        <source>Change start set of %1</source>
+        <translation>Modifier l’ensemble initial de %1</translation>
+    </message>
+    <message>
+        <source>Change algorithm of %1</source>
+        <translation>Modifier l’algorithme de %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n control points of %1</source>
+        <translation>
+            <numerusform>Supprimer %n point de contrôle de %1</numerusform>
+            <numerusform>Supprimer %n points de contrôle de %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>map %1 is not finite: the control points&apos; coordinates overflow in the lifted map P⁻¹ S_i P (the largest is %2)</source>
+        <translation>l’application %1 n’est pas finie&#xa0;: les coordonnées des points de contrôle provoquent un dépassement de capacité dans l’application relevée P⁻¹ S_i P (la plus grande vaut %2)</translation>
+    </message>
+    <message>
+        <source>the start set is not finite in the IFS space: the lifting overflows (the largest control point coordinate is %1)</source>
+        <translation>l’ensemble initial n’est pas fini dans l’espace de l’IFS&#xa0;: le relèvement provoque un dépassement de capacité (la plus grande coordonnée de point de contrôle vaut %1)</translation>
+    </message>
+    <message>
+        <source>lifted start points need an invertible lifting: %1</source>
+        <translation>des points initiaux relevés exigent un relèvement inversible&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>a lifted start point of this item has %1 coordinates (x, y and the %2 extra coordinates of the lifting, the homogeneous 1 implied); point %3 has %4</source>
+        <translation>un point initial relevé de cet élément a %1 coordonnées (x, y et les %2 coordonnées supplémentaires du relèvement, le 1 homogène étant implicite)&#x202f;; le point %3 en a %4</translation>
+    </message>
+    <message>
+        <source>%1 points; an item takes at most %2 (its subdivision matrices would be %1 x %1)</source>
+        <translation>%1 points&#x202f;; un élément en accepte au plus %2 (ses matrices de subdivision seraient de taille %1 x %1)</translation>
+    </message>
+    <message>
+        <source>point set %1 has %2 points; an item takes at most %3 per set</source>
+        <translation>l’ensemble de points %1 a %2 points&#x202f;; un élément en accepte au plus %3 par ensemble</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AttractorRenderer</name>
+    <message>
+        <source>Cannot draw the attractor: %1</source>
+        <translation>Impossible de tracer l’attracteur&#xa0;: %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AttractorView</name>
+    <message>
+        <source>Rendering… %1 %</source>
+        <translation>Rendu… %1&#xa0;%</translation>
+    </message>
+    <message>
+        <source>Rendering cancelled at %1 % — press F5 to render again</source>
+        <translation>Rendu annulé à %1&#xa0;% — appuyez sur F5 pour relancer le rendu</translation>
+    </message>
+    <message>
+        <source>F^%1(X₀) has too many images to draw as vectors</source>
+        <translation>F^%1(X₀) a trop d’images pour être tracé sous forme vectorielle</translation>
+    </message>
+</context>
+<context>
+    <name>awb::BcifsJunctionItem</name>
+    <message>
+        <source>Junction</source>
+        <translation>Jonction</translation>
+    </message>
+    <message>
+        <source>Change junction of %1</source>
+        <translation>Modifier la jonction de %1</translation>
+    </message>
+    <message>
+        <source>e = %1, p = %2 (column sums). %3</source>
+        <translation>e = %1, p = %2 (sommes des colonnes). %3</translation>
+    </message>
+    <message>
+        <source>a junction is drawn by an automaton, not by one lifted IFS</source>
+        <translation>une jonction est tracée par un automate, pas par un seul IFS relevé</translation>
+    </message>
+    <message>
+        <source>Cubic–quadratic (003 §4.1)</source>
+        <translation>Cubique–quadratique (003 §4.1)</translation>
+    </message>
+    <message>
+        <source>Refined, with handles (003 §5)</source>
+        <translation>Raffinée, avec poignées (003 §5)</translation>
+    </message>
+    <message>
+        <source>Last column (a, b, c, d, e) of T^l; e = 1 − a − b − c − d (003 §4.1)</source>
+        <translation>Dernière colonne (a, b, c, d, e) de T^l&#x202f;; e = 1 − a − b − c − d (003 §4.1)</translation>
+    </message>
+    <message>
+        <source>First column (k, l, m, n, p) of T^r; p = 1 − k − l − m − n (003 §4.1)</source>
+        <translation>Première colonne (k, l, m, n, p) de T^r&#x202f;; p = 1 − k − l − m − n (003 §4.1)</translation>
+    </message>
+    <message>
+        <source>Left eigenvalue j</source>
+        <translation>Valeur propre j (côté gauche)</translation>
+    </message>
+    <message>
+        <source>Tangent eigenvalue of T^il (003 §5)</source>
+        <translation>Valeur propre tangente de T^il (003 §5)</translation>
+    </message>
+    <message>
+        <source>Right eigenvalue r</source>
+        <translation>Valeur propre r (côté droit)</translation>
+    </message>
+    <message>
+        <source>Tangent eigenvalue of T^ir (003 §5)</source>
+        <translation>Valeur propre tangente de T^ir (003 §5)</translation>
+    </message>
+    <message>
+        <source>BCIFS junction curve</source>
+        <translation>Courbe de jonction BCIFS</translation>
+    </message>
+</context>
+<context>
+    <name>awb::BezierUnionItem</name>
+    <message>
+        <source>Bézier union</source>
+        <translation>Union de Bézier</translation>
+    </message>
+    <message>
+        <source>%1 split parameters for %2 curves</source>
+        <translation>%1 paramètres de découpe pour %2 courbes</translation>
+    </message>
+    <message>
+        <source>Change Bézier union %1</source>
+        <translation>Modifier l’union de Bézier %1</translation>
+    </message>
+    <message>
+        <source>curve %1: %2</source>
+        <translation>courbe %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>curves drawn in the lifted space of 000 §2: %1</source>
+        <translation>courbes tracées dans l’espace relevé de 000 §2&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>every composition of %1 maps contracts (factor %2): the dusty fractal of 002 §6 is the unique attractor</source>
+        <translation>toute composée de %1 applications est contractante (facteur %2)&#xa0;: la fractale poussiéreuse de 002 §6 est l’unique attracteur</translation>
+    </message>
+    <message>
+        <source>no contraction was proven (best bound %1 at length %2): the picture may not be an attractor</source>
+        <translation>aucune contraction n’a pu être démontrée (meilleure borne %1 pour la longueur %2)&#xa0;: l’image n’est peut-être pas un attracteur</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>manquant</translation>
+    </message>
+    <message>
+        <source>expected a non-empty array of curves {&quot;control_points&quot;: [...], &quot;u&quot;: number}</source>
+        <translation>tableau non vide de courbes {&quot;control_points&quot;: [...], &quot;u&quot;: nombre} attendu</translation>
+    </message>
+    <message>
+        <source>expected an object with &quot;control_points&quot; and &quot;u&quot;</source>
+        <translation>objet avec &quot;control_points&quot; et &quot;u&quot; attendu</translation>
+    </message>
+    <message>
+        <source>Union</source>
+        <translation>Union</translation>
+    </message>
+    <message>
+        <source>Exact union (block IFS, 000 §2.2)</source>
+        <translation>Union exacte (IFS par blocs, 000 §2.2)</translation>
+    </message>
+    <message>
+        <source>All maps together (dusty fractal, 002 §6)</source>
+        <translation>Toutes les applications ensemble (fractale poussiéreuse, 002 §6)</translation>
+    </message>
+    <message>
+        <source>Split parameter u</source>
+        <translation>Paramètre de découpe u</translation>
+    </message>
+    <message>
+        <source>Curve %1</source>
+        <translation>Courbe %1</translation>
+    </message>
+    <message>
+        <source>de Casteljau split at u, 0 &lt; u &lt; 1 (002 eqs. (9)-(10)); the curve is the same for every u, the IFS is not</source>
+        <translation>découpe de de Casteljau en u, 0 &lt; u &lt; 1 (002 éq. (9)-(10))&#x202f;; la courbe est la même pour tout u, l’IFS ne l’est pas</translation>
+    </message>
+    <message>
+        <source>Union of Bézier curves</source>
+        <translation>Union de courbes de Bézier</translation>
+    </message>
+</context>
+<context>
+    <name>awb::BezierUnionSpec</name>
+    <message>
+        <source>a union needs at least one curve</source>
+        <translation>une union demande au moins une courbe</translation>
+    </message>
+    <message>
+        <source>the split parameter u = %1 must satisfy 0 &lt; u &lt; 1 (002 §3)</source>
+        <translation>le paramètre de découpe u = %1 doit vérifier 0 &lt; u &lt; 1 (002 §3)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::CifsItem</name>
+    <message>
+        <source>Fern of gaskets</source>
+        <translation>Fougère de triangles de Sierpiński</translation>
+    </message>
+    <message>
+        <source>Change automaton of %1</source>
+        <translation>Modifier l’automate de %1</translation>
+    </message>
+    <message>
+        <source>the frame needs exactly 3 points, got %1</source>
+        <translation>le repère demande exactement 3 points (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>a controlled IFS has no single lifted IFS</source>
+        <translation>un IFS contrôlé n’a pas d’IFS relevé unique</translation>
+    </message>
+    <message>
+        <source>Arc T%1 of the fern leads into the Sierpiński state (003 §2.2, Fig. 4).</source>
+        <translation>L’arc T%1 de la fougère mène à l’état de Sierpiński (003 §2.2, fig. 4).</translation>
+    </message>
+    <message>
+        <source>Automaton</source>
+        <translation>Automate</translation>
+    </message>
+    <message>
+        <source>Redirected arc</source>
+        <translation>Arc redirigé</translation>
+    </message>
+    <message>
+        <source>The fern map (0 stem, 1 main frond, 2 left, 3 right leaflet) whose arc leads into the Sierpiński state (003 Fig. 4)</source>
+        <translation>L’application de la fougère (0 tige, 1 fronde principale, 2 foliole gauche, 3 foliole droite) dont l’arc mène à l’état de Sierpiński (003 fig. 4)</translation>
+    </message>
+    <message>
+        <source>Drawn state</source>
+        <translation>État tracé</translation>
+    </message>
+    <message>
+        <source>The state whose attractor is drawn</source>
+        <translation>L’état dont l’attracteur est tracé</translation>
+    </message>
+    <message>
+        <source>Controlled IFS</source>
+        <translation>IFS contrôlé</translation>
+    </message>
+</context>
+<context>
+    <name>awb::CifsSpec</name>
+    <message>
+        <source>the redirected fern arc must be 0 … 3 (T0 … T3), got %1</source>
+        <translation>l’arc redirigé de la fougère doit être 0 … 3 (T0 … T3) (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>no state &quot;%1&quot;; the states are &quot;%2&quot;</source>
+        <translation>aucun état &quot;%1&quot;&#x202f;; les états sont &quot;%2&quot;</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ComplexBezierItem</name>
+    <message>
+        <source>Complex Bézier</source>
+        <translation>Bézier complexe</translation>
+    </message>
+    <message>
+        <source>the parameter t must be a finite complex number</source>
+        <translation>le paramètre t doit être un nombre complexe fini</translation>
+    </message>
+    <message>
+        <source>Change t of %1</source>
+        <translation>Modifier t de %1</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>manquant</translation>
+    </message>
+    <message>
+        <source>expected [re, im]</source>
+        <translation>[re, im] attendu</translation>
+    </message>
+    <message>
+        <source>Split parameter t</source>
+        <translation>Paramètre de découpe t</translation>
+    </message>
+    <message>
+        <source>Curve</source>
+        <translation>Courbe</translation>
+    </message>
+    <message>
+        <source>de Casteljau split at a complex t; inside both discs |t| &lt; 1 and |1 − t| &lt; 1 the curve is a fractal (004 §3.7, Fig. 3.3)</source>
+        <translation>découpe de de Casteljau en un t complexe&#x202f;; à l’intérieur des deux disques |t| &lt; 1 et |1 − t| &lt; 1, la courbe est une fractale (004 §3.7, fig. 3.3)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a valid value for %2</source>
+        <translation>«&#xa0;%1&#xa0;» n’est pas une valeur valide pour %2</translation>
+    </message>
+    <message>
+        <source>Complex Bézier curve</source>
+        <translation>Courbe de Bézier complexe</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ComplexPlanePicker</name>
+    <message>
+        <source>Drag t in the complex plane. The attractor exists inside the lens where |t| &lt; 1 and |1 − t| &lt; 1 (both maps contract, 004 Fig. 3.3).</source>
+        <translation>Faites glisser t dans le plan complexe. L’attracteur existe à l’intérieur de la lentille où |t| &lt; 1 et |1 − t| &lt; 1 (les deux applications sont contractantes, 004 fig. 3.3).</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ControlPointEdits</name>
+    <message>
+        <source>There is no such point set.</source>
+        <translation>Cet ensemble de points n’existe pas.</translation>
+    </message>
+    <message>
+        <source>%1 (%2) has a fixed number of control points.</source>
+        <translation>%1 (%2) a un nombre fixe de points de contrôle.</translation>
+    </message>
+    <message>
+        <source>A Bézier curve of degree %1 is refused: %2</source>
+        <translation>Une courbe de Bézier de degré %1 est refusée&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>There is no point %1.</source>
+        <translation>Le point %1 n’existe pas.</translation>
+    </message>
+    <message>
+        <source>Insert control point %1 into %2</source>
+        <translation>Insérer le point de contrôle %1 dans %2</translation>
+    </message>
+    <message>
+        <source>No control point is selected.</source>
+        <translation>Aucun point de contrôle n’est sélectionné.</translation>
+    </message>
+    <message>
+        <source>%1 needs at least %2 control points.</source>
+        <translation>%1 demande au moins %2 points de contrôle.</translation>
+    </message>
+    <message>
+        <source>Delete control point %1 of %2</source>
+        <translation>Supprimer le point de contrôle %1 de %2</translation>
+    </message>
+    <message>
+        <source>Delete %1 control points of %2</source>
+        <translation>Supprimer %1 points de contrôle de %2</translation>
+    </message>
+</context>
+<context>
+    <name>awb::EigenvaluePlotItem</name>
+    <message>
+        <source>Eigenvalues</source>
+        <translation>Valeurs propres</translation>
+    </message>
+    <message>
+        <source>S_i, the subdivision matrices</source>
+        <translation>S_i, les matrices de subdivision</translation>
+    </message>
+    <message>
+        <source>A_i, the linear parts of M_i</source>
+        <translation>A_i, les parties linéaires des M_i</translation>
+    </message>
+    <message>
+        <source>M_i = P⁻¹S_iP, the lifted maps</source>
+        <translation>M_i = P⁻¹S_iP, les applications relevées</translation>
+    </message>
+    <message>
+        <source>Change the source of %1</source>
+        <translation>Modifier la source de %1</translation>
+    </message>
+    <message>
+        <source>Analyse the matrices %1 in %2</source>
+        <translation>Analyser les matrices %1 de %2</translation>
+    </message>
+    <message>
+        <source>M_i is defined only for a lifted subdivision IFS</source>
+        <translation>M_i n’est défini que pour un IFS de subdivision relevé</translation>
+    </message>
+    <message>
+        <source>no item is chosen to analyse</source>
+        <translation>aucun élément n’est choisi pour l’analyse</translation>
+    </message>
+    <message>
+        <source>there is no item called &quot;%1&quot;</source>
+        <translation>aucun élément ne s’appelle «&#xa0;%1&#xa0;»</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; (%2) has no matrices to analyse</source>
+        <translation>«&#xa0;%1&#xa0;» (%2) n’a pas de matrices à analyser</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; cannot be computed: %2</source>
+        <translation>«&#xa0;%1&#xa0;» ne peut pas être calculé&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; has no matrices %2: %3</source>
+        <translation>«&#xa0;%1&#xa0;» n’a pas de matrices %2&#xa0;: %3</translation>
+    </message>
+    <message>
+        <source>Eigenvalue plot</source>
+        <translation>Diagramme des valeurs propres</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ExactCurve</name>
+    <message>
+        <source>Bézier curve c([0, 1])</source>
+        <translation>courbe de Bézier c([0, 1])</translation>
+    </message>
+    <message>
+        <source>Takagi image c(x + 2iy·T(x)), y = %1 (Conj. 3.7.1)</source>
+        <translation>image de Takagi c(x + 2iy·T(x)), y = %1 (conj. 3.7.1)</translation>
+    </message>
+    <message>
+        <source>exact curve: %1</source>
+        <translation>courbe exacte&#xa0;: %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ExportDialog</name>
+    <message>
+        <source>Export Figure</source>
+        <translation>Exporter la figure</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf);;LaTeX matrices (*.tex)</source>
+        <translation>Image PNG (*.png);;Dessin SVG (*.svg);;Document PDF (*.pdf);;Matrices LaTeX (*.tex)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FieldReader</name>
+    <message>
+        <source>missing</source>
+        <translation>manquant</translation>
+    </message>
+    <message>
+        <source>expected a string</source>
+        <translation>chaîne attendue</translation>
+    </message>
+    <message>
+        <source>expected one of %1, got %2</source>
+        <translation>une valeur parmi %1 attendue (reçu&#xa0;: %2)</translation>
+    </message>
+    <message>
+        <source>expected an integer</source>
+        <translation>entier attendu</translation>
+    </message>
+    <message>
+        <source>expected an integer between %1 and %2</source>
+        <translation>entier attendu entre %1 et %2</translation>
+    </message>
+    <message>
+        <source>expected an array of numbers</source>
+        <translation>tableau de nombres attendu</translation>
+    </message>
+    <message>
+        <source>expected an array of points [x, y, z]</source>
+        <translation>tableau de points [x, y, z] attendu</translation>
+    </message>
+    <message>
+        <source>expected an array of points [x, y]</source>
+        <translation>tableau de points [x, y] attendu</translation>
+    </message>
+    <message>
+        <source>expected an array of matrices</source>
+        <translation>tableau de matrices attendu</translation>
+    </message>
+    <message>
+        <source>expected a matrix: a non-empty array of rows</source>
+        <translation>matrice attendue&#xa0;: un tableau non vide de lignes</translation>
+    </message>
+    <message>
+        <source>expected a row: a non-empty array of numbers</source>
+        <translation>ligne attendue&#xa0;: un tableau non vide de nombres</translation>
+    </message>
+    <message>
+        <source>row %1 has %2 numbers, row 1 has %3</source>
+        <translation>la ligne %1 a %2 nombres, la ligne 1 en a %3</translation>
+    </message>
+    <message>
+        <source>expected an object</source>
+        <translation>objet attendu</translation>
+    </message>
+    <message>
+        <source>%1 is not a finite number</source>
+        <translation>%1 n’est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read as a double-precision number</source>
+        <translation>%1 ne peut pas être lu comme un nombre en double précision</translation>
+    </message>
+    <message>
+        <source>expected a number</source>
+        <translation>nombre attendu</translation>
+    </message>
+    <message>
+        <source>expected a finite number</source>
+        <translation>nombre fini attendu</translation>
+    </message>
+    <message>
+        <source>expected a point [x, y, z]</source>
+        <translation>point [x, y, z] attendu</translation>
+    </message>
+    <message>
+        <source>expected a point [x, y]</source>
+        <translation>point [x, y] attendu</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FigureFile</name>
+    <message>
+        <source>cannot write %1</source>
+        <translation>impossible d’écrire %1</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>impossible d’écrire %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>the folder %1 does not exist</source>
+        <translation>le dossier %1 n’existe pas</translation>
+    </message>
+    <message>
+        <source>it is a folder</source>
+        <translation>c’est un dossier</translation>
+    </message>
+    <message>
+        <source>the file is read-only</source>
+        <translation>le fichier est en lecture seule</translation>
+    </message>
+    <message>
+        <source>cannot write %1: it is a folder</source>
+        <translation>impossible d’écrire %1&#xa0;: c’est un dossier</translation>
+    </message>
+    <message>
+        <source>%1 has no suffix: name the format (.png, .svg or .pdf)</source>
+        <translation>%1 n’a pas d’extension&#xa0;: indiquez le format (.png, .svg ou .pdf)</translation>
+    </message>
+    <message>
+        <source>unknown output format &apos;.%1&apos; (use .png, .svg or .pdf)</source>
+        <translation>format de sortie «&#xa0;.%1&#xa0;» inconnu (utilisez .png, .svg ou .pdf)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FigureMetadata</name>
+    <message>
+        <source>%1: cannot read the PNG: %2</source>
+        <translation>%1&#xa0;: impossible de lire le PNG&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>larger than 512 MB</source>
+        <translation>plus de 512 Mo</translation>
+    </message>
+    <message>
+        <source>%1: this PNG holds no Attractor Workbench item (only figures exported by Attractor Workbench carry their parameters)</source>
+        <translation>%1&#xa0;: ce PNG ne contient aucun élément Attractor Workbench (seules les figures exportées par Attractor Workbench portent leurs paramètres)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FigureSheet</name>
+    <message>
+        <source>yes</source>
+        <translation>oui</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>non</translation>
+    </message>
+    <message>
+        <source>No item</source>
+        <translation>Aucun élément</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>maps = %1</source>
+        <translation>applications = %1</translation>
+    </message>
+    <message>
+        <source>control points = %1</source>
+        <translation>points de contrôle = %1</translation>
+    </message>
+    <message>
+        <source>depth = %1</source>
+        <translation>profondeur = %1</translation>
+    </message>
+    <message>
+        <source>samples = %1</source>
+        <translation>échantillons = %1</translation>
+    </message>
+    <message>
+        <source>%1: %2 × %3 (see the Matrices dock)</source>
+        <translation>%1&#xa0;: %2 × %3 (voir le panneau Matrices)</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more: see the Matrices dock, or copy them as LaTeX.</source>
+        <translation>
+            <numerusform>… et %n autre&#xa0;: voir le panneau Matrices, ou copier les matrices en LaTeX.</numerusform>
+            <numerusform>… et %n autres&#xa0;: voir le panneau Matrices, ou copier les matrices en LaTeX.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Printing %1 was cancelled while the attractor was drawn.</source>
+        <translation>L’impression de %1 a été annulée pendant le tracé de l’attracteur.</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FileWriting</name>
+    <message>
+        <source>the folder %1 does not exist</source>
+        <translation>le dossier %1 n’existe pas</translation>
+    </message>
+    <message>
+        <source>%1 is not a folder</source>
+        <translation>%1 n’est pas un dossier</translation>
+    </message>
+    <message>
+        <source>it is a folder</source>
+        <translation>c’est un dossier</translation>
+    </message>
+    <message>
+        <source>the file is read-only</source>
+        <translation>le fichier est en lecture seule</translation>
+    </message>
+    <message>
+        <source>cannot create a file in the folder %1: %2</source>
+        <translation>impossible de créer un fichier dans le dossier %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>the folder %1 is read-only</source>
+        <translation>le dossier %1 est en lecture seule</translation>
+    </message>
+    <message>
+        <source>the file is not open</source>
+        <translation>le fichier n’est pas ouvert</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FractalItem</name>
+    <message>
+        <source>expected an array of %1 numbers</source>
+        <translation>tableau de %1 nombres attendu</translation>
+    </message>
+    <message>
+        <source>missing (the custom form needs its maps)</source>
+        <translation>manquant (la forme personnalisée a besoin de ses applications)</translation>
+    </message>
+    <message>
+        <source>expected a non-empty array of maps {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]}</source>
+        <translation>tableau non vide d’applications {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]} attendu</translation>
+    </message>
+    <message>
+        <source>expected an object with &quot;A&quot; and &quot;b&quot;</source>
+        <translation>objet avec &quot;A&quot; et &quot;b&quot; attendu</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>manquant</translation>
+    </message>
+    <message>
+        <source>expected a 2 x 2 matrix [[a11, a12], [a21, a22]]</source>
+        <translation>matrice 2 x 2 [[a11, a12], [a21, a22]] attendue</translation>
+    </message>
+    <message>
+        <source>the custom form needs at least one map</source>
+        <translation>la forme personnalisée demande au moins une application</translation>
+    </message>
+    <message>
+        <source>map %1 is not a map of the plane</source>
+        <translation>l’application %1 n’est pas une application du plan</translation>
+    </message>
+    <message>
+        <source>map %1 has a non-finite entry</source>
+        <translation>l’application %1 a un coefficient non fini</translation>
+    </message>
+    <message>
+        <source>a reference point is not finite</source>
+        <translation>un point de référence n’est pas fini</translation>
+    </message>
+    <message>
+        <source>need at least 3 reference points (000 §4), got %1</source>
+        <translation>il faut au moins 3 points de référence (000 §4) (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>Fractal</source>
+        <translation>Fractale</translation>
+    </message>
+    <message>
+        <source>Change fractal of %1</source>
+        <translation>Modifier la fractale de %1</translation>
+    </message>
+    <message>
+        <source>the %1 reference points and the %2 control points must be equally many</source>
+        <translation>les %1 points de référence et les %2 points de contrôle doivent être en même nombre</translation>
+    </message>
+    <message>
+        <source>the reference points are ill-conditioned: S_i R differs from f_i(R) by up to %1</source>
+        <translation>les points de référence sont mal conditionnés&#xa0;: S_i R diffère de f_i(R) d’au plus %1</translation>
+    </message>
+    <message>
+        <source>Koch curve (000 §4.1)</source>
+        <translation>Courbe de Koch (000 §4.1)</translation>
+    </message>
+    <message>
+        <source>Sierpinski triangle (000 §4.2)</source>
+        <translation>Triangle de Sierpinski (000 §4.2)</translation>
+    </message>
+    <message>
+        <source>Own maps</source>
+        <translation>Applications personnalisées</translation>
+    </message>
+    <message>
+        <source>The presets use the paper&apos;s printed matrices S_i</source>
+        <translation>Les préréglages utilisent les matrices S_i imprimées dans l’article</translation>
+    </message>
+    <message>
+        <source>Affine weights</source>
+        <translation>Poids affines</translation>
+    </message>
+    <message>
+        <source>Nearest control points</source>
+        <translation>Points de contrôle les plus proches</translation>
+    </message>
+    <message>
+        <source>Least norm (all points)</source>
+        <translation>Norme minimale (tous les points)</translation>
+    </message>
+    <message>
+        <source>How f_i(P_j) is written as an affine combination of the control points (000 eq. (5)): nearest points keep edits local, least norm lets every point move the whole fractal</source>
+        <translation>Manière d’écrire f_i(P_j) comme combinaison affine des points de contrôle (000 éq. (5))&#xa0;: les points les plus proches gardent les modifications locales, la norme minimale laisse chaque point déplacer toute la fractale</translation>
+    </message>
+    <message>
+        <source>Fractal with control points</source>
+        <translation>Fractale à points de contrôle</translation>
+    </message>
+</context>
+<context>
+    <name>awb::InsertControlPointCommand</name>
+    <message>
+        <source>Add a control point to %1</source>
+        <translation>Ajouter un point de contrôle à %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::InsertItemCommand</name>
+    <message>
+        <source>Add %1</source>
+        <translation>Ajouter %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::Item</name>
+    <message>
+        <source>Rename</source>
+        <translation>Renommer</translation>
+    </message>
+    <message>
+        <source>Change style of %1</source>
+        <translation>Modifier le style de %1</translation>
+    </message>
+    <message>
+        <source>Edit animation of %1</source>
+        <translation>Modifier l’animation de %1</translation>
+    </message>
+    <message>
+        <source>the name cannot be empty</source>
+        <translation>le nom ne peut pas être vide</translation>
+    </message>
+    <message>
+        <source>%1 has no parameter &quot;%2&quot;</source>
+        <translation>%1 n’a pas de paramètre «&#xa0;%2&#xa0;»</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a valid value for %2</source>
+        <translation>«&#xa0;%1&#xa0;» n’est pas une valeur valide pour %2</translation>
+    </message>
+    <message>
+        <source>circular reference</source>
+        <translation>référence circulaire</translation>
+    </message>
+    <message>
+        <source>there is not enough memory to compute it</source>
+        <translation>la mémoire est insuffisante pour le calculer</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ItemAddress</name>
+    <message>
+        <source>t: the B-spline&apos;s knot parameter scaled to [0, 1] (the address in base 2)</source>
+        <translation>t&#xa0;: paramètre nodal de la B-spline ramené à [0, 1] (l’adresse en base 2)</translation>
+    </message>
+    <message>
+        <source>t: the knot parameter scaled to [0, 1] (the address in base 2)</source>
+        <translation>t&#xa0;: paramètre nodal ramené à [0, 1] (l’adresse en base 2)</translation>
+    </message>
+    <message>
+        <source>t: the Bernstein parameter (the address in base 2)</source>
+        <translation>t&#xa0;: paramètre de Bernstein (l’adresse en base 2)</translation>
+    </message>
+    <message>
+        <source>t: the Bernstein parameter (pieces [0, t], [t, 1] of the split)</source>
+        <translation>t&#xa0;: paramètre de Bernstein (morceaux [0, t] et [t, 1] de la découpe)</translation>
+    </message>
+    <message>
+        <source>t: the scheme&apos;s own parameter, the address read in base %1</source>
+        <translation>t&#xa0;: paramètre propre au schéma, l’adresse lue en base %1</translation>
+    </message>
+    <message>
+        <source>this item is drawn by an automaton: its words are not addresses of one IFS</source>
+        <translation>cet élément est tracé par un automate&#xa0;: ses mots ne sont pas des adresses d’un seul IFS</translation>
+    </message>
+    <message>
+        <source>a parameter interval is [t0, t1] with two numbers, e.g. [0.25, 0.5]</source>
+        <translation>un intervalle de paramètre [t0, t1] comporte deux nombres, p. ex. [0.25, 0.5]</translation>
+    </message>
+    <message>
+        <source>the parameter interval [%1, %2] must satisfy 0 &lt;= t0 &lt; t1 &lt;= 1</source>
+        <translation>l’intervalle de paramètre [%1, %2] doit vérifier 0 &lt;= t0 &lt; t1 &lt;= 1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ItemController</name>
+    <message>
+        <source>%1 shows nothing: %2</source>
+        <translation>%1 n’affiche rien&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>%1 has no attractor to draw.</source>
+        <translation>%1 n’a pas d’attracteur à tracer.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be drawn: %2</source>
+        <translation>%1 ne peut pas être tracé&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>Start set: %1</source>
+        <translation>Ensemble initial&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>Regularity: only for subdivision curves</source>
+        <translation>Régularité&#xa0;: uniquement pour les courbes de subdivision</translation>
+    </message>
+    <message>
+        <source>Regularity: does not apply (%1)</source>
+        <translation>Régularité&#xa0;: sans objet (%1)</translation>
+    </message>
+    <message>
+        <source>complex de Casteljau parameter</source>
+        <translation>paramètre de de Casteljau complexe</translation>
+    </message>
+    <message>
+        <source>the scheme&apos;s parameters are refused</source>
+        <translation>les paramètres du schéma sont refusés</translation>
+    </message>
+    <message>
+        <source>F^k(X0) to the %1</source>
+        <translation>F^k(X0) à la %1</translation>
+    </message>
+    <message>
+        <source>F^k(X0)</source>
+        <translation>F^k(X0)</translation>
+    </message>
+    <message>
+        <source>Changing %1 (%2, %3) from %4 to %5 makes row %2 sum to %6, not 1: the rows of a subdivision matrix are affine combinations.
+
+Take the difference %7 from the entry in column %8 (%9 → %10) so that the row sums to 1?</source>
+        <translation>Changer %1 (%2, %3) de %4 à %5 donne à la ligne %2 la somme %6, et non 1&#xa0;: les lignes d’une matrice de subdivision sont des combinaisons affines.
+
+Retrancher la différence %7 du coefficient de la colonne %8 (%9 → %10) pour que la somme de la ligne vaille 1&#x202f;?</translation>
+    </message>
+    <message>
+        <source>%1 (%2, %3) = %4 was refused: %5</source>
+        <translation>%1 (%2, %3) = %4 a été refusé&#xa0;: %5</translation>
+    </message>
+    <message>
+        <source>Insert Point &amp;Before %1</source>
+        <translation>Insérer un point &amp;avant %1</translation>
+    </message>
+    <message>
+        <source>Insert Point &amp;After %1</source>
+        <translation>Insérer un point a&amp;près %1</translation>
+    </message>
+    <message>
+        <source>&amp;Delete Point %1</source>
+        <translation>&amp;Supprimer le point %1</translation>
+    </message>
+    <message>
+        <source>&amp;Insert Point Here</source>
+        <translation>&amp;Insérer un point ici</translation>
+    </message>
+    <message>
+        <source>&amp;Append Point Here</source>
+        <translation>&amp;Ajouter un point ici</translation>
+    </message>
+    <message>
+        <source>&amp;Fit View</source>
+        <translation>A&amp;juster la vue</translation>
+    </message>
+</context>
+<context>
+    <name>awb::JunctionSpec</name>
+    <message>
+        <source>the junction parameter %1 must be a finite number</source>
+        <translation>le paramètre de jonction %1 doit être un nombre fini</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside (%3, %4): %5</source>
+        <translation>%1 = %2 est hors de (%3, %4)&#xa0;: %5</translation>
+    </message>
+</context>
+<context>
+    <name>awb::MainWindow</name>
+    <message>
+        <source>Attractor Workbench projects (*.awb);;All files (*)</source>
+        <translation>Projets Attractor Workbench (*.awb);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Échec de l’enregistrement automatique&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>&lt;original&gt;</source>
+        <translation>&lt;version d’origine&gt;</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Cancel the analysis</source>
+        <translation>Annuler l’analyse</translation>
+    </message>
+    <message>
+        <source>Drawing %p%</source>
+        <translation>Tracé %p&#xa0;%</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Arrêter</translation>
+    </message>
+    <message>
+        <source>Stop drawing the attractor (Esc); F5 draws it again</source>
+        <translation>Arrêter le tracé de l’attracteur (Échap)&#x202f;; F5 le relance</translation>
+    </message>
+    <message>
+        <source>Drawing the attractor for the figure…</source>
+        <translation>Tracé de l’attracteur pour la figure…</translation>
+    </message>
+    <message>
+        <source>Figure</source>
+        <translation>Figure</translation>
+    </message>
+    <message>
+        <source>Drawing stopped; press F5 to draw again.</source>
+        <translation>Tracé interrompu&#x202f;; appuyez sur F5 pour le relancer.</translation>
+    </message>
+    <message>
+        <source>Analysis %p%</source>
+        <translation>Analyse %p&#xa0;%</translation>
+    </message>
+    <message>
+        <source>Analysis cancelled.</source>
+        <translation>Analyse annulée.</translation>
+    </message>
+    <message>
+        <source>Row sum</source>
+        <translation>Somme de ligne</translation>
+    </message>
+    <message>
+        <source>Edit refused</source>
+        <translation>Modification refusée</translation>
+    </message>
+    <message>
+        <source>x = %1, y = %2</source>
+        <translation>x = %1, y = %2</translation>
+    </message>
+    <message>
+        <source>Drawing failed: %1</source>
+        <translation>Échec du tracé&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Nouveau</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Ouvrir…</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Enregistrer</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Enregistrer &amp;sous…</translation>
+    </message>
+    <message>
+        <source>Re&amp;vert</source>
+        <translation>Re&amp;venir à la version enregistrée</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Fermer</translation>
+    </message>
+    <message>
+        <source>&amp;Print…</source>
+        <translation>&amp;Imprimer…</translation>
+    </message>
+    <message>
+        <source>Print Pre&amp;view…</source>
+        <translation>&amp;Aperçu avant impression…</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+P</source>
+        <translation>Ctrl+Shift+P</translation>
+    </message>
+    <message>
+        <source>Print to P&amp;DF…</source>
+        <translation>Imprimer en P&amp;DF…</translation>
+    </message>
+    <message>
+        <source>Print to PDF</source>
+        <translation>Imprimer en PDF</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>Document PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>&amp;Export Figure…</source>
+        <translation>E&amp;xporter la figure…</translation>
+    </message>
+    <message>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <source>Export &amp;Points…</source>
+        <translation>Exporter les &amp;points…</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+E</source>
+        <translation>Ctrl+Shift+E</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Quitter</translation>
+    </message>
+    <message>
+        <source>Pre&amp;ferences…</source>
+        <translation>&amp;Préférences…</translation>
+    </message>
+    <message>
+        <source>Copy Matrices as &amp;LaTeX</source>
+        <translation>Copier les matrices en &amp;LaTeX</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+L</source>
+        <translation>Ctrl+Shift+L</translation>
+    </message>
+    <message>
+        <source>The current item has no matrices.</source>
+        <translation>L’élément courant n’a pas de matrices.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Copied %n matrices as LaTeX (amsmath bmatrix).</source>
+        <translation>
+            <numerusform>%n matrice copiée en LaTeX (amsmath bmatrix).</numerusform>
+            <numerusform>%n matrices copiées en LaTeX (amsmath bmatrix).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate Item</source>
+        <translation>D&amp;upliquer l’élément</translation>
+    </message>
+    <message>
+        <source>Ctrl+D</source>
+        <translation>Ctrl+D</translation>
+    </message>
+    <message>
+        <source>&amp;Delete Item</source>
+        <translation>&amp;Supprimer l’élément</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;In</source>
+        <translation>Zoom a&amp;vant</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;Out</source>
+        <translation>Zoom a&amp;rrière</translation>
+    </message>
+    <message>
+        <source>&amp;Fit</source>
+        <translation>A&amp;juster</translation>
+    </message>
+    <message>
+        <source>Ctrl+0</source>
+        <translation>Ctrl+0</translation>
+    </message>
+    <message>
+        <source>&amp;Stop Drawing</source>
+        <translation>&amp;Interrompre le tracé</translation>
+    </message>
+    <message>
+        <source>&amp;Draw Again</source>
+        <translation>Re&amp;dessiner</translation>
+    </message>
+    <message>
+        <source>&amp;Play/Pause Animation</source>
+        <translation>&amp;Lecture/pause de l’animation</translation>
+    </message>
+    <message>
+        <source>S&amp;top Animation</source>
+        <translation>Arrê&amp;ter l’animation</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Layout</source>
+        <translation>Réinitialiser la dispositi&amp;on</translation>
+    </message>
+    <message>
+        <source>&amp;About Attractor Workbench</source>
+        <translation>À &amp;propos d’Attractor Workbench</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>À propos de &amp;Qt</translation>
+    </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Guide de l’utilisateur</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Annuler</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Rétablir</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Rétablir</translation>
+    </message>
+    <message>
+        <source>Nothing to %1 (%2)</source>
+        <translation>Rien à %1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1 %2 (%3)</source>
+        <translation>%1 %2 (%3)</translation>
+    </message>
+    <message>
+        <source>&amp;Control Polygon</source>
+        <translation>Polygone de &amp;contrôle</translation>
+    </message>
+    <message>
+        <source>Control &amp;Net (3D)</source>
+        <translation>Ré&amp;seau de contrôle (3D)</translation>
+    </message>
+    <message>
+        <source>Subdivided &amp;Mesh (3D)</source>
+        <translation>&amp;Maillage subdivisé (3D)</translation>
+    </message>
+    <message>
+        <source>&amp;Attractor (3D)</source>
+        <translation>&amp;Attracteur (3D)</translation>
+    </message>
+    <message>
+        <source>A&amp;xes (3D)</source>
+        <translation>A&amp;xes (3D)</translation>
+    </message>
+    <message>
+        <source>&amp;Bounding Box (3D)</source>
+        <translation>&amp;Boîte englobante (3D)</translation>
+    </message>
+    <message>
+        <source>&amp;Perspective (3D)</source>
+        <translation>&amp;Perspective (3D)</translation>
+    </message>
+    <message>
+        <source>&amp;Start Set</source>
+        <translation>Ensemble i&amp;nitial</translation>
+    </message>
+    <message>
+        <source>&amp;Exact Curve</source>
+        <translation>Courbe &amp;exacte</translation>
+    </message>
+    <message>
+        <source>&amp;Grid</source>
+        <translation>&amp;Grille</translation>
+    </message>
+    <message>
+        <source>Project</source>
+        <translation>Projet</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>Propriétés</translation>
+    </message>
+    <message>
+        <source>Undo History</source>
+        <translation>Historique des modifications</translation>
+    </message>
+    <message>
+        <source>Spectrum</source>
+        <translation>Spectre</translation>
+    </message>
+    <message>
+        <source>Matrices</source>
+        <translation>Matrices</translation>
+    </message>
+    <message>
+        <source>Analysis</source>
+        <translation>Analyse</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>Animation</source>
+        <translation>Animation</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Fichier</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Ouvrir un fichier &amp;récent</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>É&amp;dition</translation>
+    </message>
+    <message>
+        <source>&amp;Item</source>
+        <translation>É&amp;lément</translation>
+    </message>
+    <message>
+        <source>&amp;Add</source>
+        <translation>&amp;Ajouter</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Affichage</translation>
+    </message>
+    <message>
+        <source>Four-point &amp;Regularity Chart…</source>
+        <translation>Graphique de régularité du schéma à &amp;quatre points…</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>Aid&amp;e</translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation>Principale</translation>
+    </message>
+    <message>
+        <source> Hutchinson step: </source>
+        <translation> Étape de Hutchinson&#xa0;: </translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>désactivé</translation>
+    </message>
+    <message>
+        <source>Draw F^k(X0) of the start set X0 as vectors</source>
+        <translation>Tracer F^k(X0) de l’ensemble initial X0 sous forme vectorielle</translation>
+    </message>
+    <message>
+        <source>  Subdivision steps: </source>
+        <translation>  Étapes de subdivision&#xa0;: </translation>
+    </message>
+    <message>
+        <source>Classic subdivision polygons beside the IFS attractor</source>
+        <translation>Polygones de subdivision classique à côté de l’attracteur de l’IFS</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Sans titre</translation>
+    </message>
+    <message>
+        <source>%1[*] — Attractor Workbench</source>
+        <translation>%1[*] — Attractor Workbench</translation>
+    </message>
+    <message>
+        <source>Cubic B-spline</source>
+        <translation>B-spline cubique</translation>
+    </message>
+    <message>
+        <source>Open Project</source>
+        <translation>Ouvrir un projet</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>Ouvert&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>Save Project</source>
+        <translation>Enregistrer le projet</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Enregistré&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Modifications non enregistrées</translation>
+    </message>
+    <message>
+        <source>The project &quot;%1&quot; has unsaved changes. Save them?</source>
+        <translation>Le projet «&#xa0;%1&#xa0;» contient des modifications non enregistrées. Voulez-vous les enregistrer&#x202f;?</translation>
+    </message>
+    <message>
+        <source>Projects and figures with their item (*.awb *.png);;Attractor Workbench projects (*.awb);;Exported figures (*.png);;All files (*)</source>
+        <translation>Projets et figures avec leur élément (*.awb *.png);;Projets Attractor Workbench (*.awb);;Figures exportées (*.png);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Save Project As</source>
+        <translation>Enregistrer le projet sous</translation>
+    </message>
+    <message>
+        <source>Revert</source>
+        <translation>Revenir à la version enregistrée</translation>
+    </message>
+    <message>
+        <source>Discard all changes and reload %1?</source>
+        <translation>Abandonner toutes les modifications et recharger %1&#x202f;?</translation>
+    </message>
+    <message>
+        <source>Printing cancelled.</source>
+        <translation>Impression annulée.</translation>
+    </message>
+    <message>
+        <source>Print</source>
+        <translation>Imprimer</translation>
+    </message>
+    <message>
+        <source>The printer could not be started.</source>
+        <translation>L’imprimante n’a pas pu être démarrée.</translation>
+    </message>
+    <message>
+        <source>A .tex file holds the matrices only: choose the Matrices view, or .png, .svg or .pdf for a picture.</source>
+        <translation>Un fichier .tex ne contient que les matrices&#xa0;: choisissez la vue Matrices, ou bien .png, .svg ou .pdf pour une image.</translation>
+    </message>
+    <message>
+        <source>The current item has no matrices to export.</source>
+        <translation>L’élément courant n’a pas de matrices à exporter.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2.</source>
+        <translation>Impossible d’écrire %1&#xa0;: %2.</translation>
+    </message>
+    <message>
+        <source>Unknown format &quot;%1&quot;: use .png, .svg or .pdf (.tex for the matrices).</source>
+        <translation>Format «&#xa0;%1&#xa0;» inconnu&#xa0;: utilisez .png, .svg ou .pdf (.tex pour les matrices).</translation>
+    </message>
+    <message>
+        <source>Exporting %1 was cancelled while the attractor was drawn.</source>
+        <translation>L’exportation de %1 a été annulée pendant le tracé de l’attracteur.</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exporter</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>Exporté&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>About Attractor Workbench</source>
+        <translation>À propos d’Attractor Workbench</translation>
+    </message>
+    <message>
+        <source>Attractor Workbench %1
+
+Subdivision curves as attractors of iterated function systems: control points, subdivision matrices, spectra and figures.</source>
+        <translation>Attractor Workbench %1
+
+Les courbes de subdivision comme attracteurs de systèmes de fonctions itérées&#xa0;: points de contrôle, matrices de subdivision, spectres et figures.</translation>
+    </message>
+    <message>
+        <source>Spectra of %1</source>
+        <translation>Spectres de %1</translation>
+    </message>
+    <message>
+        <source>Bicubic B-spline</source>
+        <translation>B-spline bicubique</translation>
+    </message>
+    <message>
+        <source>Loop (box spline)</source>
+        <translation>Loop (box-spline)</translation>
+    </message>
+    <message>
+        <source>Kobbelt √3</source>
+        <translation>Kobbelt √3</translation>
+    </message>
+    <message>
+        <source>%1, %2 layout</source>
+        <translation>%1, disposition %2</translation>
+    </message>
+    <message>
+        <source>%1 surface</source>
+        <translation>Surface %1</translation>
+    </message>
+    <message>
+        <source>duplicate</source>
+        <translation>duplication</translation>
+    </message>
+    <message>
+        <source>Duplicate Item</source>
+        <translation>Dupliquer l’élément</translation>
+    </message>
+    <message>
+        <source>&amp;%1 %2</source>
+        <translation>&amp;%1 %2</translation>
+    </message>
+    <message>
+        <source>an unsaved project</source>
+        <translation>un projet non enregistré</translation>
+    </message>
+    <message>
+        <source>Recover Project</source>
+        <translation>Récupérer le projet</translation>
+    </message>
+    <message>
+        <source>Attractor Workbench did not shut down properly. A recovery copy of %1 from %2 exists. Recover it? (Discard deletes the copy.)</source>
+        <translation>Attractor Workbench ne s’est pas fermé correctement. Il existe une copie de récupération de %1 datant du %2. Voulez-vous la récupérer&#x202f;? (Si vous l’abandonnez, la copie est supprimée.)</translation>
+    </message>
+    <message>
+        <source>The recovery copy cannot be read: %1</source>
+        <translation>La copie de récupération est illisible&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>The recovery copy cannot be read: %1
+
+It was kept as %2.</source>
+        <translation>La copie de récupération est illisible&#xa0;: %1
+
+Elle a été conservée sous le nom %2.</translation>
+    </message>
+    <message>
+        <source>Export Points</source>
+        <translation>Exporter les points</translation>
+    </message>
+    <message>
+        <source>The current item has no attractor whose points could be exported.</source>
+        <translation>L’élément courant n’a pas d’attracteur dont les points pourraient être exportés.</translation>
+    </message>
+    <message>
+        <source>Exported the points to %1</source>
+        <translation>Points exportés vers %1</translation>
+    </message>
+    <message>
+        <source>The current item has no attractor.</source>
+        <translation>L’élément courant n’a pas d’attracteur.</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Langue</translation>
+    </message>
+    <message>
+        <source>System Default</source>
+        <translation>Langue du système</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Langue</translation>
+    </message>
+    <message>
+        <source>The language changes when Attractor Workbench is started again.</source>
+        <translation>Le changement de langue prendra effet au prochain démarrage d’Attractor Workbench.</translation>
+    </message>
+    <message>
+        <source>Built with Qt %1 (running on Qt %2), Eigen %3 and QCustomPlot %4.</source>
+        <translation>Compilé avec Qt %1 (exécuté avec Qt %2), Eigen %3 et QCustomPlot %4.</translation>
+    </message>
+</context>
+<context>
+    <name>awb::MatrixHeatMap</name>
+    <message>
+        <source>%1 (%2, %3) = %4</source>
+        <translation>%1 (%2, %3) = %4</translation>
+    </message>
+</context>
+<context>
+    <name>awb::MatrixView</name>
+    <message>
+        <source>%1 %2 %3i (modulus %4)</source>
+        <translation>%1 %2 %3i (module %4)</translation>
+    </message>
+    <message>
+        <source>Sum of row %1: %2</source>
+        <translation>Somme de la ligne %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>Sum of column %1: %2</source>
+        <translation>Somme de la colonne %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>“%1” is not a finite number: %2, row %3, column %4 was not changed.</source>
+        <translation>«&#xa0;%1&#xa0;» n’est pas un nombre fini&#xa0;: le coefficient de %2 en ligne %3, colonne %4 n’a pas été modifié.</translation>
+    </message>
+    <message>
+        <source>A block</source>
+        <translation>bloc A</translation>
+    </message>
+    <message>
+        <source>b row</source>
+        <translation>ligne b</translation>
+    </message>
+    <message>
+        <source>fixed part of the lifted map</source>
+        <translation>partie fixe de l’application relevée</translation>
+    </message>
+    <message>
+        <source>— &lt;span style=&apos;background:#e2ecfa&apos;&gt;&amp;nbsp;A&amp;nbsp;&lt;/span&gt; block, &lt;span style=&apos;background:#fcecd6&apos;&gt;&amp;nbsp;b&amp;nbsp;&lt;/span&gt; row</source>
+        <translation>— bloc &lt;span style=&apos;background:#e2ecfa&apos;&gt;&amp;nbsp;A&amp;nbsp;&lt;/span&gt;, ligne &lt;span style=&apos;background:#fcecd6&apos;&gt;&amp;nbsp;b&amp;nbsp;&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>(complex entries)</source>
+        <translation>(coefficients complexes)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::MoveControlPointsCommand</name>
+    <message numerus="yes">
+        <source>Move %n control points of %1</source>
+        <translation>
+            <numerusform>Déplacer %n point de contrôle de %1</numerusform>
+            <numerusform>Déplacer %n points de contrôle de %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>awb::MoveItemCommand</name>
+    <message>
+        <source>Move %1</source>
+        <translation>Déplacer %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::NormalVectorItem</name>
+    <message>
+        <source>Normal-vector curve</source>
+        <translation>Courbe à vecteurs normaux</translation>
+    </message>
+    <message>
+        <source>Change normal-vector scheme of %1</source>
+        <translation>Modifier le schéma à vecteurs normaux de %1</translation>
+    </message>
+    <message>
+        <source>the normal-vector scheme is not linear: it has no subdivision matrices (001 eq. (1))</source>
+        <translation>le schéma à vecteurs normaux n’est pas linéaire&#xa0;: il n’a pas de matrices de subdivision (001 éq. (1))</translation>
+    </message>
+    <message>
+        <source>No equivalent IFS: %1</source>
+        <translation>Pas d’IFS équivalent&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>expected true or false</source>
+        <translation>true ou false attendu</translation>
+    </message>
+    <message>
+        <source>expected an array of sign rules</source>
+        <translation>tableau de règles de signe attendu</translation>
+    </message>
+    <message>
+        <source>expected one of &quot;%1&quot;</source>
+        <translation>une valeur parmi &quot;%1&quot; attendue</translation>
+    </message>
+    <message>
+        <source>Scheme</source>
+        <translation>Schéma</translation>
+    </message>
+    <message>
+        <source>Own rules</source>
+        <translation>Règles personnalisées</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>Étapes</translation>
+    </message>
+    <message>
+        <source>Subdivision steps of the polygon shown</source>
+        <translation>Étapes de subdivision du polygone affiché</translation>
+    </message>
+    <message>
+        <source>Normal direction</source>
+        <translation>Sens de la normale</translation>
+    </message>
+    <message>
+        <source>Counter-clockwise (positive)</source>
+        <translation>Sens trigonométrique (positif)</translation>
+    </message>
+    <message>
+        <source>Clockwise (negative)</source>
+        <translation>Sens horaire (négatif)</translation>
+    </message>
+    <message>
+        <source>Closed polygon</source>
+        <translation>Polygone fermé</translation>
+    </message>
+    <message>
+        <source>α%1</source>
+        <translation>α%1</translation>
+    </message>
+    <message>
+        <source>Rules</source>
+        <translation>Règles</translation>
+    </message>
+    <message>
+        <source>Position of new point %1 along the edge (001 eq. (1))</source>
+        <translation>Position du nouveau point %1 le long de l’arête (001 éq. (1))</translation>
+    </message>
+    <message>
+        <source>β%1</source>
+        <translation>β%1</translation>
+    </message>
+    <message>
+        <source>Displacement of new point %1 along the normal</source>
+        <translation>Déplacement du nouveau point %1 le long de la normale</translation>
+    </message>
+</context>
+<context>
+    <name>awb::NormalVectorSpec</name>
+    <message>
+        <source>unknown preset &quot;%1&quot;</source>
+        <translation>préréglage «&#xa0;%1&#xa0;» inconnu</translation>
+    </message>
+    <message>
+        <source>%1 steps: at least 0 and at most %2 are allowed</source>
+        <translation>%1 étapes&#xa0;: le nombre doit être compris entre 0 et %2</translation>
+    </message>
+    <message>
+        <source>need at least 2 rules (p &gt;= 2), got %1</source>
+        <translation>il faut au moins 2 règles (p &gt;= 2) (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>%1 values of beta for %2 of alpha: need one per rule</source>
+        <translation>%1 valeurs de bêta pour %2 valeurs d’alpha&#xa0;: il en faut une par règle</translation>
+    </message>
+    <message>
+        <source>%1 signs for %2 rules: give none, one, or one per rule</source>
+        <translation>%1 signes pour %2 règles&#xa0;: n’en donnez aucun, un seul, ou un par règle</translation>
+    </message>
+    <message>
+        <source>%1_%2 is not a finite number</source>
+        <translation>%1_%2 n’est pas un nombre fini</translation>
+    </message>
+</context>
+<context>
+    <name>awb::PaletteDialog</name>
+    <message>
+        <source>Map Colours</source>
+        <translation>Couleurs des applications</translation>
+    </message>
+    <message>
+        <source>The colour of the points each map f&lt;sub&gt;i&lt;/sub&gt; makes (Style: colour by map or by address).</source>
+        <translation>La couleur des points produits par chaque application f&lt;sub&gt;i&lt;/sub&gt; (Style&#xa0;: couleur par application ou par adresse).</translation>
+    </message>
+    <message>
+        <source>Colour of map %1</source>
+        <translation>Couleur de l’application %1</translation>
+    </message>
+    <message>
+        <source>Map %1:</source>
+        <translation>Application %1&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Use the &amp;Default Colours</source>
+        <translation>Utiliser les couleurs par &amp;défaut</translation>
+    </message>
+</context>
+<context>
+    <name>awb::PointExport</name>
+    <message>
+        <source>cannot write the points: %1</source>
+        <translation>impossible d’écrire les points&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>--address needs an item drawn by one IFS; this one is drawn by an automaton</source>
+        <translation>--address demande un élément tracé par un seul IFS&#x202f;; celui-ci est tracé par un automate</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is drawn by an automaton: PLY export covers items with one IFS</source>
+        <translation>«&#xa0;%1&#xa0;» est tracé par un automate&#xa0;: l’export PLY ne concerne que les éléments à un seul IFS</translation>
+    </message>
+    <message>
+        <source>wrote %1 points, expected %2</source>
+        <translation>%1 points écrits, %2 attendus</translation>
+    </message>
+</context>
+<context>
+    <name>awb::PointExportDialog</name>
+    <message>
+        <source>Export Points of %1</source>
+        <translation>Exporter les points de %1</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Parcourir…</translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation>Fichier&#xa0;:</translation>
+    </message>
+    <message>
+        <source>CSV text: x, y[, z], map, view</source>
+        <translation>Texte CSV&#xa0;: x, y[, z], application, vue</translation>
+    </message>
+    <message>
+        <source>PLY point cloud: x, y, z, map colour, map</source>
+        <translation>Nuage de points PLY&#xa0;: x, y, z, couleur de l’application, application</translation>
+    </message>
+    <message>
+        <source>F&amp;ormat:</source>
+        <translation>F&amp;ormat&#xa0;:</translation>
+    </message>
+    <message>
+        <source>The points of F^k(X0): every image of the start set&apos;s vertices after k steps of the Hutchinson operator</source>
+        <translation>Les points de F^k(X0)&#xa0;: toutes les images des sommets de l’ensemble initial après k itérations de l’opérateur de Hutchinson</translation>
+    </message>
+    <message>
+        <source>&amp;Depth k:</source>
+        <translation>Pro&amp;fondeur k&#xa0;:</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Exporter</translation>
+    </message>
+    <message>
+        <source>Export Points</source>
+        <translation>Exporter les points</translation>
+    </message>
+    <message>
+        <source>CSV text (*.csv);;PLY point cloud (*.ply)</source>
+        <translation>Texte CSV (*.csv);;Nuage de points PLY (*.ply)</translation>
+    </message>
+    <message>
+        <source>The number of points depends on the automaton.</source>
+        <translation>Le nombre de points dépend de l’automate.</translation>
+    </message>
+    <message>
+        <source>%1 points</source>
+        <translation>%1 points</translation>
+    </message>
+    <message>
+        <source> — too many (at most %1): choose a smaller depth.</source>
+        <translation> — trop nombreux (au plus %1)&#xa0;: choisissez une profondeur plus petite.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be computed: %2</source>
+        <translation>%1 ne peut pas être calculé&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>Start set: %1</source>
+        <translation>Ensemble initial&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>Depth %1 gives %2 points, more than %3: choose a smaller depth.</source>
+        <translation>La profondeur %1 donne %2 points, soit plus de %3&#xa0;: choisissez une profondeur plus petite.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Impossible d’écrire %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>Writing the points of %1…</source>
+        <translation>Écriture des points de %1…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Exporting the points was cancelled; nothing was written.</source>
+        <translation>L’exportation des points a été annulée&#x202f;; rien n’a été écrit.</translation>
+    </message>
+</context>
+<context>
+    <name>awb::PreferencesDialog</name>
+    <message>
+        <source>auto</source>
+        <translation>auto</translation>
+    </message>
+</context>
+<context>
+    <name>awb::Project</name>
+    <message>
+        <source>Item</source>
+        <translation>Élément</translation>
+    </message>
+    <message>
+        <source>the name cannot be empty</source>
+        <translation>le nom ne peut pas être vide</translation>
+    </message>
+    <message>
+        <source>another item is already called &quot;%1&quot;</source>
+        <translation>un autre élément s’appelle déjà «&#xa0;%1&#xa0;»</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n items</source>
+        <translation>
+            <numerusform>Supprimer %n élément</numerusform>
+            <numerusform>Supprimer %n éléments</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Rename %1 to %2</source>
+        <translation>Renommer %1 en %2</translation>
+    </message>
+    <message>
+        <source>the project has no file name yet: use &quot;Save As&quot;</source>
+        <translation>le projet n’a pas encore de nom de fichier&#xa0;: utilisez «&#xa0;Enregistrer sous&#xa0;»</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1&#xa0;: %2</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ProjectIO</name>
+    <message>
+        <source>%1: cannot save: %2</source>
+        <translation>%1&#xa0;: impossible d’enregistrer&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>%1: cannot open: %2</source>
+        <translation>%1&#xa0;: impossible d’ouvrir&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>%1: the file is %2 MB; project files larger than %3 MB are refused (a project is at most a few MB)</source>
+        <translation>%1&#xa0;: le fichier fait %2 Mo&#x202f;; les fichiers de projet de plus de %3 Mo sont refusés (un projet fait au plus quelques Mo)</translation>
+    </message>
+    <message>
+        <source>%1: cannot read: %2</source>
+        <translation>%1&#xa0;: impossible de lire&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>%1: the file is empty</source>
+        <translation>%1&#xa0;: le fichier est vide</translation>
+    </message>
+    <message>
+        <source>%1: the file holds only white space</source>
+        <translation>%1&#xa0;: le fichier ne contient que des blancs</translation>
+    </message>
+    <message>
+        <source>%1: the file is UTF-16 or UTF-32 text; project files are UTF-8 (save it again as UTF-8)</source>
+        <translation>%1&#xa0;: le fichier est un texte UTF-16 ou UTF-32&#x202f;; les fichiers de projet sont en UTF-8 (enregistrez-le de nouveau en UTF-8)</translation>
+    </message>
+    <message>
+        <source>%1: expected a JSON object at the top level</source>
+        <translation>%1&#xa0;: objet JSON attendu au premier niveau</translation>
+    </message>
+    <message>
+        <source>%1: not valid JSON: %2 at line %3, column %4</source>
+        <translation>%1&#xa0;: JSON non valide&#xa0;: %2 à la ligne %3, colonne %4</translation>
+    </message>
+    <message>
+        <source>expected &quot;%1&quot;: this is not an Attractor Workbench project</source>
+        <translation>&quot;%1&quot; attendu&#xa0;: ce n’est pas un projet Attractor Workbench</translation>
+    </message>
+    <message>
+        <source>%1: the file has format version %2, written by a newer version of Attractor Workbench; this version reads format version %3 only. Please update the application.</source>
+        <translation>%1&#xa0;: le fichier est au format version %2, écrit par une version plus récente d’Attractor Workbench&#x202f;; cette version ne lit que le format version %3. Veuillez mettre à jour l’application.</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>manquant</translation>
+    </message>
+    <message>
+        <source>expected an array</source>
+        <translation>tableau attendu</translation>
+    </message>
+    <message>
+        <source>%1: field &quot;%2&quot;: %3</source>
+        <translation>%1&#xa0;: champ &quot;%2&quot;&#xa0;: %3</translation>
+    </message>
+    <message>
+        <source>item %1</source>
+        <translation>élément %1</translation>
+    </message>
+    <message>
+        <source>%1: %2: field &quot;%3&quot;: %4</source>
+        <translation>%1&#xa0;: %2&#xa0;: champ &quot;%3&quot;&#xa0;: %4</translation>
+    </message>
+    <message>
+        <source>field &quot;%1&quot;: %2</source>
+        <translation>champ &quot;%1&quot;&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>expected an object</source>
+        <translation>objet attendu</translation>
+    </message>
+    <message>
+        <source>unknown item type %1; this version knows %2</source>
+        <translation>type d’élément %1 inconnu&#x202f;; cette version connaît %2</translation>
+    </message>
+    <message>
+        <source>another item is already called %1</source>
+        <translation>un autre élément s’appelle déjà %1</translation>
+    </message>
+    <message>
+        <source>expected an array of items</source>
+        <translation>tableau d’éléments attendu</translation>
+    </message>
+    <message>
+        <source>expected an array of lifted points [x, y, c1, ...]</source>
+        <translation>tableau de points relevés [x, y, c1, ...] attendu</translation>
+    </message>
+    <message>
+        <source>expected a lifted point [x, y, c1, ...]</source>
+        <translation>point relevé [x, y, c1, ...] attendu</translation>
+    </message>
+    <message>
+        <source>expected an array of &quot;#rrggbb&quot; strings</source>
+        <translation>tableau de chaînes &quot;#rrggbb&quot; attendu</translation>
+    </message>
+    <message>
+        <source>expected a string &quot;#rrggbb&quot;</source>
+        <translation>chaîne &quot;#rrggbb&quot; attendue</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ProjectTreeModel</name>
+    <message>
+        <source>Name</source>
+        <translation>Nom</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Type</translation>
+    </message>
+    <message numerus="yes">
+        <source>Move %n items</source>
+        <translation>
+            <numerusform>Déplacer %n élément</numerusform>
+            <numerusform>Déplacer %n éléments</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>awb::PropertiesWidget</name>
+    <message>
+        <source>Value refused</source>
+        <translation>Valeur refusée</translation>
+    </message>
+    <message>
+        <source>%1 cannot be set to %2.</source>
+        <translation>%1 ne peut pas prendre la valeur %2.</translation>
+    </message>
+    <message>
+        <source>No item selected.</source>
+        <translation>Aucun élément sélectionné.</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Nom&#xa0;:</translation>
+    </message>
+    <message>
+        <source>The name is empty or already taken.</source>
+        <translation>Le nom est vide ou déjà utilisé.</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Paramètres</translation>
+    </message>
+    <message>
+        <source>Re </source>
+        <translation>Re </translation>
+    </message>
+    <message>
+        <source>Im </source>
+        <translation>Im </translation>
+    </message>
+    <message>
+        <source>Start set X0</source>
+        <translation>Ensemble initial X0</translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation>Point</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>Segment</translation>
+    </message>
+    <message>
+        <source>Triangle</source>
+        <translation>Triangle</translation>
+    </message>
+    <message>
+        <source>Polygon</source>
+        <translation>Polygone</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Points</translation>
+    </message>
+    <message>
+        <source>Lifted points</source>
+        <translation>Points relevés</translation>
+    </message>
+    <message>
+        <source>Kind:</source>
+        <translation>Type&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Drag its vertices in the attractor view.</source>
+        <translation>Faites glisser ses sommets dans la vue de l’attracteur.</translation>
+    </message>
+    <message>
+        <source>Points of the lifted space of 000 §2: x, y, then the extra coordinates of the lifting, the homogeneous 1 implied. Commas between coordinates, &apos;;&apos; between points.</source>
+        <translation>Points de l’espace relevé de 000 §2&#xa0;: x, y, puis les coordonnées supplémentaires du relèvement, le 1 homogène étant implicite. Des virgules entre les coordonnées, «&#x202f;;&#xa0;» entre les points.</translation>
+    </message>
+    <message>
+        <source>Lifted:</source>
+        <translation>Relevés&#xa0;:</translation>
+    </message>
+    <message>
+        <source>The start set was refused.</source>
+        <translation>L’ensemble initial a été refusé.</translation>
+    </message>
+    <message>
+        <source>The item has no control points.</source>
+        <translation>L’élément n’a pas de points de contrôle.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a number.</source>
+        <translation>«&#xa0;%1&#xa0;» n’est pas un nombre.</translation>
+    </message>
+    <message>
+        <source>Algorithm</source>
+        <translation>Algorithme</translation>
+    </message>
+    <message>
+        <source>Deterministic</source>
+        <translation>Déterministe</translation>
+    </message>
+    <message>
+        <source>Random (chaos game)</source>
+        <translation>Aléatoire (jeu du chaos)</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>Mode&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Depth:</source>
+        <translation>Profondeur&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Samples:</source>
+        <translation>Échantillons&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Style</source>
+        <translation>Style</translation>
+    </message>
+    <message>
+        <source>By map</source>
+        <translation>Par application</translation>
+    </message>
+    <message>
+        <source>By address prefix</source>
+        <translation>Par préfixe d’adresse</translation>
+    </message>
+    <message>
+        <source>Single colour</source>
+        <translation>Couleur unique</translation>
+    </message>
+    <message>
+        <source>Colour:</source>
+        <translation>Couleur&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Prefix length:</source>
+        <translation>Longueur du préfixe&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Point size:</source>
+        <translation>Taille des points&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>Points de contrôle</translation>
+    </message>
+    <message>
+        <source>Set %1 (%2)</source>
+        <translation>Ensemble %1 (%2)</translation>
+    </message>
+    <message>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <source>z</source>
+        <translation>z</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a finite number.</source>
+        <translation>«&#xa0;%1&#xa0;» n’est pas un nombre fini.</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Ajouter</translation>
+    </message>
+    <message>
+        <source>Append a point after the last one</source>
+        <translation>Ajouter un point après le dernier</translation>
+    </message>
+    <message>
+        <source>Insert</source>
+        <translation>Insérer</translation>
+    </message>
+    <message>
+        <source>Insert a point before the selected one (halfway to its predecessor)</source>
+        <translation>Insérer un point avant le point sélectionné (à mi-chemin de son prédécesseur)</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Supprimer</translation>
+    </message>
+    <message>
+        <source>Delete the selected points (one undo step)</source>
+        <translation>Supprimer les points sélectionnés (en une seule étape d’annulation)</translation>
+    </message>
+    <message>
+        <source>The colour of each map&apos;s points: click to choose</source>
+        <translation>La couleur des points de chaque application&#xa0;: cliquez pour la choisir</translation>
+    </message>
+    <message>
+        <source>Default…</source>
+        <translation>Par défaut…</translation>
+    </message>
+    <message>
+        <source>Own…</source>
+        <translation>Personnalisées…</translation>
+    </message>
+    <message>
+        <source>Map colours:</source>
+        <translation>Couleurs des applications&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Eigenvalues</source>
+        <translation>Valeurs propres</translation>
+    </message>
+    <message>
+        <source>The item whose matrices are analysed</source>
+        <translation>L’élément dont les matrices sont analysées</translation>
+    </message>
+    <message>
+        <source>S_i: the subdivision matrices (their eigenvalue 1 is affine invariance); A_i: the linear parts of the lifted maps, whose subdominant eigenvalue decides the tangents; M_i: the lifted maps themselves (003 §4, 004 §2.1)</source>
+        <translation>S_i&#xa0;: les matrices de subdivision (leur valeur propre 1 traduit l’invariance affine)&#x202f;; A_i&#xa0;: les parties linéaires des applications relevées, dont la valeur propre sous-dominante détermine les tangentes&#x202f;; M_i&#xa0;: les applications relevées elles-mêmes (003 §4, 004 §2.1)</translation>
+    </message>
+    <message>
+        <source>Source:</source>
+        <translation>Source&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Matrices:</source>
+        <translation>Matrices&#xa0;:</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(aucun)</translation>
+    </message>
+    <message>
+        <source>%1 (missing)</source>
+        <translation>%1 (manquant)</translation>
+    </message>
+    <message>
+        <source>%1 matrices %2_i, %3 eigenvalues: see the Spectrum and Matrices panels.</source>
+        <translation>%1 matrices %2_i, %3 valeurs propres&#xa0;: voir les panneaux Spectre et Matrices.</translation>
+    </message>
+</context>
+<context>
+    <name>awb::Recovery</name>
+    <message>
+        <source>%1: cannot open: %2</source>
+        <translation>%1&#xa0;: impossible d’ouvrir&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>%1: not an Attractor Workbench recovery file</source>
+        <translation>%1&#xa0;: ce n’est pas un fichier de récupération d’Attractor Workbench</translation>
+    </message>
+    <message>
+        <source>%1: written by a newer version of Attractor Workbench</source>
+        <translation>%1&#xa0;: écrit par une version plus récente d’Attractor Workbench</translation>
+    </message>
+    <message>
+        <source>%1: field &quot;project&quot;: expected an object</source>
+        <translation>%1&#xa0;: champ &quot;project&quot;&#xa0;: objet attendu</translation>
+    </message>
+</context>
+<context>
+    <name>awb::RegularityChart</name>
+    <message>
+        <source>Regularity of the four-point scheme</source>
+        <translation>Régularité du schéma à quatre points</translation>
+    </message>
+    <message>
+        <source>Certified Hölder regularity r(ω) of the four-point scheme</source>
+        <translation>Régularité höldérienne certifiée r(ω) du schéma à quatre points</translation>
+    </message>
+    <message>
+        <source>lower bound</source>
+        <translation>borne inférieure</translation>
+    </message>
+    <message>
+        <source>upper bound</source>
+        <translation>borne supérieure</translation>
+    </message>
+    <message>
+        <source>known: ω = 0 → 1, ω = 1/16 → 2</source>
+        <translation>connu&#xa0;: ω = 0 → 1, ω = 1/16 → 2</translation>
+    </message>
+    <message>
+        <source>tension ω</source>
+        <translation>tension ω</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Computing %1 values of ω…</source>
+        <translation>Calcul pour %1 valeurs de ω…</translation>
+    </message>
+    <message>
+        <source>%1 values of ω; widest interval %2 (bounds certified; the upper bound is exact for this interpolatory scheme)</source>
+        <translation>%1 valeurs de ω&#x202f;; intervalle le plus large&#xa0;: %2 (bornes certifiées&#x202f;; la borne supérieure est exacte pour ce schéma interpolant)</translation>
+    </message>
+    <message>
+        <source>regularity r</source>
+        <translation>régularité r</translation>
+    </message>
+</context>
+<context>
+    <name>awb::RegularityPanel</name>
+    <message>
+        <source>Regularity: no curve scheme</source>
+        <translation>Régularité&#xa0;: aucun schéma de courbe</translation>
+    </message>
+    <message>
+        <source>Regularity %p%</source>
+        <translation>Régularité %p&#xa0;%</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Stop the regularity analysis; the bounds reached so far stay</source>
+        <translation>Arrêter l’analyse de régularité&#x202f;; les bornes déjà atteintes sont conservées</translation>
+    </message>
+    <message>
+        <source>Regularity of %1: computing…</source>
+        <translation>Régularité de %1&#xa0;: calcul en cours…</translation>
+    </message>
+    <message>
+        <source>so far: r in [%1, %2]</source>
+        <translation>pour l’instant&#xa0;: r dans [%1, %2]</translation>
+    </message>
+    <message>
+        <source>Regularity: %1</source>
+        <translation>Régularité&#xa0;: %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::RemoveControlPointCommand</name>
+    <message>
+        <source>Remove a control point of %1</source>
+        <translation>Supprimer un point de contrôle de %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::RemoveItemCommand</name>
+    <message>
+        <source>Remove %1</source>
+        <translation>Supprimer %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SchemeRegularity</name>
+    <message>
+        <source>does not apply: a complex de Casteljau parameter is not a real subdivision scheme</source>
+        <translation>sans objet&#xa0;: un paramètre de de Casteljau complexe ne définit pas un schéma de subdivision réel</translation>
+    </message>
+    <message>
+        <source>does not apply: %1</source>
+        <translation>sans objet&#xa0;: %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SpectrumView</name>
+    <message>
+        <source>Re λ</source>
+        <translation>Re λ</translation>
+    </message>
+    <message>
+        <source>Im λ</source>
+        <translation>Im λ</translation>
+    </message>
+    <message>
+        <source>unit circle</source>
+        <translation>cercle unité</translation>
+    </message>
+    <message>
+        <source>dominant 1</source>
+        <translation>1 dominante</translation>
+    </message>
+    <message>
+        <source>subdominant</source>
+        <translation>sous-dominante</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;: λ = %2, |λ| = %3, multiplicity %4, arg λ = %6° (map %5)</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&#xa0;: λ = %2, |λ| = %3, multiplicité %4, arg λ = %6° (application %5)</translation>
+    </message>
+    <message>
+        <source> — dominant</source>
+        <translation> — dominante</translation>
+    </message>
+    <message>
+        <source> — subdominant</source>
+        <translation> — sous-dominante</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;No maps.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Aucune application.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;All maps are (eventually) contractive&lt;/b&gt;: the IFS has a unique attractor.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Toutes les applications sont contractantes (à terme)&lt;/b&gt;&#xa0;: l’IFS a un unique attracteur.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p style=&apos;color:#b01e1e&apos;&gt;&lt;b&gt;%1 is not contractive&lt;/b&gt;: the IFS has no attractor and its iteration does not converge.&lt;/p&gt;</source>
+        <translation>&lt;p style=&apos;color:#b01e1e&apos;&gt;&lt;b&gt;%1 n’est pas contractante&lt;/b&gt;&#xa0;: l’IFS n’a pas d’attracteur et son itération ne converge pas.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Not contractive: spectral radius %1 ≥ 1.</source>
+        <translation>Non contractante&#xa0;: rayon spectral %1 ≥ 1.</translation>
+    </message>
+    <message>
+        <source>Contractive: ‖A‖&lt;sub&gt;2&lt;/sub&gt; = %1 &amp;lt; 1.</source>
+        <translation>Contractante&#xa0;: ‖A‖&lt;sub&gt;2&lt;/sub&gt; = %1 &amp;lt; 1.</translation>
+    </message>
+    <message>
+        <source>Eventually contractive: spectral radius %1 &amp;lt; 1, ‖A&lt;sup&gt;%2&lt;/sup&gt;‖&lt;sub&gt;2&lt;/sub&gt; &amp;lt; 1.</source>
+        <translation>Contractante à terme&#xa0;: rayon spectral %1 &amp;lt; 1, ‖A&lt;sup&gt;%2&lt;/sup&gt;‖&lt;sub&gt;2&lt;/sub&gt; &amp;lt; 1.</translation>
+    </message>
+    <message>
+        <source>Eventually contractive: spectral radius %1 &amp;lt; 1.</source>
+        <translation>Contractante à terme&#xa0;: rayon spectral %1 &amp;lt; 1.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>aucune</translation>
+    </message>
+    <message>
+        <source>No subdominant eigenvalue: the map is constant.</source>
+        <translation>Pas de valeur propre sous-dominante&#xa0;: l’application est constante.</translation>
+    </message>
+    <message>
+        <source>real positive</source>
+        <translation>réelle positive</translation>
+    </message>
+    <message>
+        <source>The curve has a half-tangent at the fixed point, along the eigenvector (G¹ where the two sides&apos; eigenvectors align).</source>
+        <translation>La courbe a une demi-tangente au point fixe, dirigée par le vecteur propre (G¹ là où les vecteurs propres des deux côtés sont alignés).</translation>
+    </message>
+    <message>
+        <source>Repeated: the tangent direction at the fixed point depends on the control points.</source>
+        <translation>Valeur propre multiple&#xa0;: la direction de la tangente au point fixe dépend des points de contrôle.</translation>
+    </message>
+    <message>
+        <source>real negative</source>
+        <translation>réelle négative</translation>
+    </message>
+    <message>
+        <source>The curve oscillates at the fixed point and has no tangent there.</source>
+        <translation>La courbe oscille au point fixe et n’y a pas de tangente.</translation>
+    </message>
+    <message>
+        <source>complex pair</source>
+        <translation>paire complexe</translation>
+    </message>
+    <message>
+        <source>The curve spirals around the fixed point (no tangent).</source>
+        <translation>La courbe s’enroule en spirale autour du point fixe (pas de tangente).</translation>
+    </message>
+    <message>
+        <source>complex</source>
+        <translation>complexe</translation>
+    </message>
+    <message>
+        <source>Near the fixed point the map acts as the spiral similarity z ↦ λz: the curve spirals around the fixed point (no tangent).</source>
+        <translation>Près du point fixe, l’application agit comme la similitude directe z ↦ λz&#xa0;: la courbe s’enroule en spirale autour du point fixe (pas de tangente).</translation>
+    </message>
+    <message>
+        <source>mixed</source>
+        <translation>mixte</translation>
+    </message>
+    <message>
+        <source>Several eigenvalues of the same modulus with different signs or phases: no single tangent behaviour.</source>
+        <translation>Plusieurs valeurs propres de même module avec des signes ou des phases différents&#xa0;: pas de comportement tangent unique.</translation>
+    </message>
+    <message>
+        <source>Subdominant: none.</source>
+        <translation>Sous-dominante&#xa0;: aucune.</translation>
+    </message>
+    <message>
+        <source>Subdominant: %1 (%2, |λ| = %3, multiplicity %4).</source>
+        <translation>Sous-dominante&#xa0;: %1 (%2, |λ| = %3, multiplicité %4).</translation>
+    </message>
+    <message>
+        <source>Unknown file type “%1”: use .pdf, .svg or .png.</source>
+        <translation>Type de fichier «&#xa0;%1&#xa0;» inconnu&#xa0;: utilisez .pdf, .svg ou .png.</translation>
+    </message>
+    <message>
+        <source>Eigenvalues</source>
+        <translation>Valeurs propres</translation>
+    </message>
+</context>
+<context>
+    <name>awb::StartSetSpec</name>
+    <message>
+        <source>a lifted start set needs at least one point</source>
+        <translation>un ensemble initial relevé demande au moins un point</translation>
+    </message>
+    <message>
+        <source>lifted start point %1 has %2 coordinates: every point needs the same number, at least 2</source>
+        <translation>le point initial relevé %1 a %2 coordonnées&#xa0;: tous les points doivent en avoir le même nombre, au moins 2</translation>
+    </message>
+    <message>
+        <source>every point must have finite coordinates</source>
+        <translation>tous les points doivent avoir des coordonnées finies</translation>
+    </message>
+    <message>
+        <source>a start set of kind &quot;%1&quot; needs exactly %2 points, got %3</source>
+        <translation>un ensemble initial de type &quot;%1&quot; demande exactement %2 points (reçu&#xa0;: %3)</translation>
+    </message>
+    <message>
+        <source>a start set of kind &quot;%1&quot; needs at least %2 points, got %3</source>
+        <translation>un ensemble initial de type &quot;%1&quot; demande au moins %2 points (reçu&#xa0;: %3)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::StyleSpec</name>
+    <message>
+        <source>the density gamma must be between 0.2 and 10, got %1</source>
+        <translation>le gamma de densité doit être compris entre 0,2 et 10 (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>the address prefix length must be between 1 and %1, got %2</source>
+        <translation>la longueur du préfixe d’adresse doit être comprise entre 1 et %1 (reçu&#xa0;: %2)</translation>
+    </message>
+    <message>
+        <source>the point size must be more than 0 and at most %1 pixels</source>
+        <translation>la taille des points doit être strictement positive et d’au plus %1 pixels</translation>
+    </message>
+    <message>
+        <source>colour %1 is &quot;%2&quot;, expected &quot;#rrggbb&quot; (lower-case hexadecimal)</source>
+        <translation>la couleur %1 vaut &quot;%2&quot;, &quot;#rrggbb&quot; attendu (hexadécimal en minuscules)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SubdivisionCurveItem</name>
+    <message>
+        <source>Bézier of degree %1 needs exactly %2 control points, got %3</source>
+        <translation>une courbe de Bézier de degré %1 demande exactement %2 points de contrôle (reçu&#xa0;: %3)</translation>
+    </message>
+    <message>
+        <source>a complex Bézier parameter has no real scheme</source>
+        <translation>un paramètre de Bézier complexe n’a pas de schéma réel</translation>
+    </message>
+    <message>
+        <source>unknown scheme kind</source>
+        <translation>type de schéma inconnu</translation>
+    </message>
+    <message>
+        <source>the complex parameter t = %1 %2 %3i must satisfy |t| &lt; 1 and |1 - t| &lt; 1 (004 §3.7)</source>
+        <translation>le paramètre complexe t = %1 %2 %3i doit vérifier |t| &lt; 1 et |1 - t| &lt; 1 (004 §3.7)</translation>
+    </message>
+    <message>
+        <source>Curve</source>
+        <translation>Courbe</translation>
+    </message>
+    <message>
+        <source>Change scheme of %1</source>
+        <translation>Modifier le schéma de %1</translation>
+    </message>
+    <message>
+        <source>expected [re, im] or a number</source>
+        <translation>[re, im] ou nombre attendu</translation>
+    </message>
+    <message>
+        <source>Scheme</source>
+        <translation>Schéma</translation>
+    </message>
+    <message>
+        <source>Uniform B-spline</source>
+        <translation>B-spline uniforme</translation>
+    </message>
+    <message>
+        <source>End-interpolating B-spline</source>
+        <translation>B-spline interpolant les extrémités</translation>
+    </message>
+    <message>
+        <source>Chaikin</source>
+        <translation>Chaikin</translation>
+    </message>
+    <message>
+        <source>Corner cutting</source>
+        <translation>Découpe de coins</translation>
+    </message>
+    <message>
+        <source>Four-point</source>
+        <translation>Quatre points</translation>
+    </message>
+    <message>
+        <source>Bézier (de Casteljau)</source>
+        <translation>Bézier (de Casteljau)</translation>
+    </message>
+    <message>
+        <source>Own matrices</source>
+        <translation>Matrices personnalisées</translation>
+    </message>
+    <message>
+        <source>Degree</source>
+        <translation>Degré</translation>
+    </message>
+    <message>
+        <source>Degree n: the curve has n + 1 control points</source>
+        <translation>Degré n&#xa0;: la courbe a n + 1 points de contrôle</translation>
+    </message>
+    <message>
+        <source>Degree of the B-spline (Lane–Riesenfeld, 004 eq. 2.7)</source>
+        <translation>Degré de la B-spline (Lane–Riesenfeld, 004 éq. 2.7)</translation>
+    </message>
+    <message>
+        <source>Split parameter t</source>
+        <translation>Paramètre de découpe t</translation>
+    </message>
+    <message>
+        <source>de Casteljau split at t (004 eq. 2.5). A complex t inside both discs |t| &lt; 1, |1 − t| &lt; 1 gives a fractal curve (004 §3.7).</source>
+        <translation>Découpe de de Casteljau en t (004 éq. 2.5). Un t complexe à l’intérieur des deux disques |t| &lt; 1, |1 − t| &lt; 1 donne une courbe fractale (004 §3.7).</translation>
+    </message>
+    <message>
+        <source>Tension ω</source>
+        <translation>Tension ω</translation>
+    </message>
+    <message>
+        <source>1/16 gives C1 curves reproducing cubics; −1/2 &lt; ω &lt; 0 or 1/4 ≤ ω &lt; 1/2 gives fractal curves (004 Thm. 2.4.1)</source>
+        <translation>1/16 donne des courbes C1 qui reproduisent les cubiques&#x202f;; −1/2 &lt; ω &lt; 0 ou 1/4 ≤ ω &lt; 1/2 donne des courbes fractales (004 th. 2.4.1)</translation>
+    </message>
+    <message>
+        <source>New points at parameters a &lt; b on every edge (Chaikin: 1/4, 3/4)</source>
+        <translation>Nouveaux points aux paramètres a &lt; b sur chaque arête (Chaikin&#xa0;: 1/4, 3/4)</translation>
+    </message>
+    <message>
+        <source>First cut a</source>
+        <translation>Première coupe a</translation>
+    </message>
+    <message>
+        <source>Second cut b</source>
+        <translation>Seconde coupe b</translation>
+    </message>
+    <message>
+        <source>Subdivision curve</source>
+        <translation>Courbe de subdivision</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SubdivisionSurfaceItem</name>
+    <message>
+        <source>Surface</source>
+        <translation>Surface</translation>
+    </message>
+    <message>
+        <source>Change net of %1</source>
+        <translation>Modifier le réseau de %1</translation>
+    </message>
+    <message>
+        <source>Change subdivision rounds of %1</source>
+        <translation>Modifier le nombre de passes de subdivision de %1</translation>
+    </message>
+    <message>
+        <source>Turn the view of %1</source>
+        <translation>Faire pivoter la vue de %1</translation>
+    </message>
+    <message>
+        <source>expected an array of lattice coordinates [i, j]</source>
+        <translation>tableau de coordonnées de grille [i, j] attendu</translation>
+    </message>
+    <message>
+        <source>expected lattice coordinates [i, j]</source>
+        <translation>coordonnées de grille [i, j] attendues</translation>
+    </message>
+    <message>
+        <source>lattice coordinates are whole numbers</source>
+        <translation>les coordonnées de grille sont des entiers</translation>
+    </message>
+    <message>
+        <source>at least one map must be used (leave the field out to use all)</source>
+        <translation>au moins une application doit être utilisée (omettez le champ pour les utiliser toutes)</translation>
+    </message>
+    <message>
+        <source>map indices are whole numbers (0-based)</source>
+        <translation>les indices d’application sont des entiers (numérotés à partir de 0)</translation>
+    </message>
+    <message>
+        <source>the elevation must be from -90 to 90 degrees</source>
+        <translation>l’élévation doit être comprise entre -90 et 90 degrés</translation>
+    </message>
+    <message>
+        <source>Scheme</source>
+        <translation>Schéma</translation>
+    </message>
+    <message>
+        <source>Bicubic B-spline (Catmull–Clark)</source>
+        <translation>B-spline bicubique (Catmull–Clark)</translation>
+    </message>
+    <message>
+        <source>Loop (three-direction box spline)</source>
+        <translation>Loop (box-spline à trois directions)</translation>
+    </message>
+    <message>
+        <source>Kobbelt √3</source>
+        <translation>Kobbelt √3</translation>
+    </message>
+    <message>
+        <source>A new scheme starts from its own default net (000 §3)</source>
+        <translation>Un nouveau schéma part de son propre réseau par défaut (000 §3)</translation>
+    </message>
+    <message>
+        <source>Layout</source>
+        <translation>Disposition</translation>
+    </message>
+    <message>
+        <source>The patch&apos;s domain and the maps covering it</source>
+        <translation>Le domaine du carreau et les applications qui le recouvrent</translation>
+    </message>
+    <message>
+        <source>Maps</source>
+        <translation>Applications</translation>
+    </message>
+    <message>
+        <source>Map %1</source>
+        <translation>Application %1</translation>
+    </message>
+    <message>
+        <source>Leave maps out to draw a fractal lying on the surface (000 Fig. 9)</source>
+        <translation>Omettez des applications pour tracer une fractale posée sur la surface (000 fig. 9)</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>Vue</translation>
+    </message>
+    <message>
+        <source>Azimuth</source>
+        <translation>Azimut</translation>
+    </message>
+    <message>
+        <source>Direction of the orthographic camera around the z axis, in degrees</source>
+        <translation>Direction de la caméra orthographique autour de l’axe z, en degrés</translation>
+    </message>
+    <message>
+        <source>Elevation</source>
+        <translation>Élévation</translation>
+    </message>
+    <message>
+        <source>Height of the camera above the xy plane, in degrees</source>
+        <translation>Hauteur de la caméra au-dessus du plan xy, en degrés</translation>
+    </message>
+    <message>
+        <source>Subdivision rounds</source>
+        <translation>Passes de subdivision</translation>
+    </message>
+    <message>
+        <source>Rounds of classic subdivision of the net (000 Figs. 6–8, top)</source>
+        <translation>Passes de subdivision classique du réseau (000 fig. 6–8, en haut)</translation>
+    </message>
+    <message>
+        <source>from 0 to %1 rounds</source>
+        <translation>de 0 à %1 passes</translation>
+    </message>
+    <message>
+        <source>at least one map must stay on</source>
+        <translation>au moins une application doit rester active</translation>
+    </message>
+    <message>
+        <source>Subdivision surface</source>
+        <translation>Surface de subdivision</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SurfaceNet</name>
+    <message>
+        <source>every control point must have finite coordinates</source>
+        <translation>chaque point de contrôle doit avoir des coordonnées finies</translation>
+    </message>
+    <message>
+        <source>%1 lattice coordinates for %2 control points: give one [i, j] per control point</source>
+        <translation>%1 coordonnées de grille pour %2 points de contrôle&#xa0;: donnez un [i, j] par point de contrôle</translation>
+    </message>
+    <message>
+        <source>not the net of a %1 %2 patch: %3</source>
+        <translation>ce n’est pas le réseau d’un carreau %1 %2&#xa0;: %3</translation>
+    </message>
+    <message>
+        <source>map %1 does not exist: the %2 layout has maps 0 to %3</source>
+        <translation>l’application %1 n’existe pas&#xa0;: la disposition %2 a les applications 0 à %3</translation>
+    </message>
+    <message>
+        <source>list each map once, in increasing order (0-based)</source>
+        <translation>listez chaque application une seule fois, par ordre croissant (à partir de 0)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SurfaceSchemeSpec</name>
+    <message>
+        <source>the %1 scheme has the layouts %2, not &apos;%3&apos;</source>
+        <translation>le schéma %1 a les dispositions %2, pas «&#xa0;%3&#xa0;»</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SurfaceView</name>
+    <message>
+        <source>Drawing… (CPU renderer)</source>
+        <translation>Tracé… (rendu CPU)</translation>
+    </message>
+    <message>
+        <source>CPU renderer</source>
+        <translation>Rendu CPU</translation>
+    </message>
+    <message>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <source>z</source>
+        <translation>z</translation>
+    </message>
+</context>
+<context>
+    <name>awb::UserGuideDialog</name>
+    <message>
+        <source>Attractor Workbench — User Guide</source>
+        <translation>Attractor Workbench — Guide de l’utilisateur</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;The guide is missing.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Le guide est introuvable.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Home or F</source>
+        <translation>Home ou F</translation>
+    </message>
+    <message>
+        <source>Fit the attractor view to its content</source>
+        <translation>Ajuster la vue de l’attracteur à son contenu</translation>
+    </message>
+    <message>
+        <source>+ / −</source>
+        <translation>+ / −</translation>
+    </message>
+    <message>
+        <source>Zoom the attractor view in / out</source>
+        <translation>Zoom avant / arrière dans la vue de l’attracteur</translation>
+    </message>
+    <message>
+        <source>Mouse wheel</source>
+        <translation>Molette de la souris</translation>
+    </message>
+    <message>
+        <source>Zoom at the cursor (view); scroll (panels)</source>
+        <translation>Zoomer autour du curseur (vue)&#x202f;; faire défiler (panneaux)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::analysis</name>
+    <message>
+        <source>cannot index an empty point set</source>
+        <translation>impossible d’indexer un ensemble de points vide</translation>
+    </message>
+    <message>
+        <source>point sets must have 1 to 3 coordinates</source>
+        <translation>les ensembles de points doivent avoir de 1 à 3 coordonnées</translation>
+    </message>
+    <message>
+        <source>point set</source>
+        <translation>ensemble de points</translation>
+    </message>
+    <message>
+        <source>point sets of different dimensions</source>
+        <translation>ensembles de points de dimensions différentes</translation>
+    </message>
+    <message>
+        <source>too few points for box counting</source>
+        <translation>trop peu de points pour le comptage de boîtes</translation>
+    </message>
+    <message>
+        <source>all points coincide</source>
+        <translation>tous les points sont confondus</translation>
+    </message>
+    <message>
+        <source>not enough points for three box sizes with at least %1 points per box</source>
+        <translation>pas assez de points pour trois tailles de boîtes avec au moins %1 points par boîte</translation>
+    </message>
+    <message>
+        <source>the joint spectral radius needs at least one matrix</source>
+        <translation>le rayon spectral joint demande au moins une matrice</translation>
+    </message>
+    <message>
+        <source>the joint spectral radius needs square matrices of one size; matrix %1 differs</source>
+        <translation>le rayon spectral joint demande des matrices carrées d’une même taille&#x202f;; la matrice %1 diffère</translation>
+    </message>
+    <message>
+        <source>matrix %1</source>
+        <translation>matrice %1</translation>
+    </message>
+    <message>
+        <source>not convergent: the first difference scheme does not contract (JSR &gt;= 1)</source>
+        <translation>non convergent&#xa0;: le premier schéma aux différences n’est pas contractant (JSR &gt;= 1)</translation>
+    </message>
+    <message>
+        <source>convergence not certified within the time budget</source>
+        <translation>convergence non certifiée dans le budget de temps imparti</translation>
+    </message>
+    <message>
+        <source>C^%1, Hölder regularity in [%2, %3]</source>
+        <translation>C^%1, régularité höldérienne dans [%2, %3]</translation>
+    </message>
+    <message>
+        <source>cancelled; the bounds are those reached. </source>
+        <translation>annulé&#x202f;; les bornes sont celles atteintes. </translation>
+    </message>
+    <message>
+        <source>time budget spent; the bounds are those reached. </source>
+        <translation>budget de temps épuisé&#x202f;; les bornes sont celles atteintes. </translation>
+    </message>
+    <message>
+        <source>not convergent</source>
+        <translation>non convergent</translation>
+    </message>
+    <message>
+        <source>C^0 not certified</source>
+        <translation>C^0 non certifiée</translation>
+    </message>
+    <message>
+        <source>the arity of a scheme must be at least 2, got %1</source>
+        <translation>l’arité d’un schéma doit être au moins 2 (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>the mask has a coefficient that is not a finite number</source>
+        <translation>le masque a un coefficient qui n’est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>no difference scheme: the mask is zero</source>
+        <translation>pas de schéma aux différences&#xa0;: le masque est nul</translation>
+    </message>
+    <message>
+        <source>no difference scheme: the symbol a(z) has no factor 1 + z%1 (the rules&apos; weights do not each sum to 1), so the scheme does not reproduce constants and is not convergent</source>
+        <translation>pas de schéma aux différences&#xa0;: le symbole a(z) n’a pas de facteur 1 + z%1 (la somme des poids de chaque règle ne vaut pas toujours 1), donc le schéma ne reproduit pas les constantes et n’est pas convergent</translation>
+    </message>
+    <message>
+        <source>not convergent: the mask sums to %1, not the arity %2 (the scheme does not reproduce constants)</source>
+        <translation>non convergent&#xa0;: la somme du masque vaut %1, et non l’arité %2 (le schéma ne reproduit pas les constantes)</translation>
+    </message>
+    <message>
+        <source>the upper bound is the exact Hölder exponent only if the integer shifts of the basic limit function are stable (not checked for this mask). </source>
+        <translation>la borne supérieure n’est l’exposant de Hölder exact que si les translatés entiers de la fonction limite fondamentale sont stables (non vérifié pour ce masque). </translation>
+    </message>
+    <message>
+        <source>regularity needs at least two subdivision matrices</source>
+        <translation>la régularité demande au moins deux matrices de subdivision</translation>
+    </message>
+    <message>
+        <source>the subdivision matrices must all be square and of one size</source>
+        <translation>les matrices de subdivision doivent toutes être carrées et de même taille</translation>
+    </message>
+    <message>
+        <source>matrix S_%1</source>
+        <translation>matrice S_%1</translation>
+    </message>
+    <message>
+        <source>no difference scheme: the rows of S_%1 do not all sum to 1</source>
+        <translation>pas de schéma aux différences&#xa0;: les lignes de S_%1 n’ont pas toutes pour somme 1</translation>
+    </message>
+    <message>
+        <source>no regularity: S_1 or S_p has no simple eigenvalue 1, so the curve&apos;s end points are not defined</source>
+        <translation>pas de régularité&#xa0;: S_1 ou S_p n’a pas de valeur propre 1 simple, donc les extrémités de la courbe ne sont pas définies</translation>
+    </message>
+    <message>
+        <source>no regularity: the pieces S_%1 and S_%2 do not join (the attractor is not a continuous curve in its %3-adic parameter)</source>
+        <translation>pas de régularité&#xa0;: les morceaux S_%1 et S_%2 ne se raccordent pas (l’attracteur n’est pas une courbe continue de son paramètre %3-adique)</translation>
+    </message>
+    <message>
+        <source>C^infinity: the curve is one polynomial piece of degree %1</source>
+        <translation>C^infinity&#xa0;: la courbe est un seul morceau polynomial de degré %1</translation>
+    </message>
+    <message>
+        <source>the matrices reproduce every polynomial of degree &lt; %1 in the %2-adic parameter and leave no complement</source>
+        <translation>les matrices reproduisent tout polynôme de degré &lt; %1 du paramètre %2-adique et ne laissent aucun complément</translation>
+    </message>
+    <message>
+        <source>the upper bound assumes the curve&apos;s basis functions are stable. </source>
+        <translation>la borne supérieure suppose que les fonctions de base de la courbe sont stables. </translation>
+    </message>
+    <message>
+        <source>the pieces join only C^%1 (derivative %2 differs across a join). </source>
+        <translation>les morceaux ne se raccordent qu’en C^%1 (la dérivée %2 diffère de part et d’autre d’un raccord). </translation>
+    </message>
+    <message>
+        <source>C^infinity: a Bézier curve is a polynomial of degree %1</source>
+        <translation>C^infinity&#xa0;: une courbe de Bézier est un polynôme de degré %1</translation>
+    </message>
+    <message>
+        <source>de Casteljau subdivision reproduces the Bézier polynomial exactly</source>
+        <translation>la subdivision de de Casteljau reproduit exactement le polynôme de Bézier</translation>
+    </message>
+    <message>
+        <source>eigenvalues need a square matrix</source>
+        <translation>les valeurs propres demandent une matrice carrée</translation>
+    </message>
+    <message>
+        <source>matrix</source>
+        <translation>matrice</translation>
+    </message>
+    <message>
+        <source>the eigenvalue computation did not converge</source>
+        <translation>le calcul des valeurs propres n’a pas convergé</translation>
+    </message>
+    <message>
+        <source>no subdominant eigenvalue (the map is constant)</source>
+        <translation>pas de valeur propre sous-dominante (l’application est constante)</translation>
+    </message>
+    <message>
+        <source>real positive: the curve has a half-tangent at the fixed point, along the eigenvector (G1 where the two sides&apos; eigenvectors align)</source>
+        <translation>réelle positive&#xa0;: la courbe a une demi-tangente au point fixe, dirigée par le vecteur propre (G1 là où les vecteurs propres des deux côtés sont alignés)</translation>
+    </message>
+    <message>
+        <source>real positive but repeated: the tangent direction at the fixed point depends on the control points</source>
+        <translation>réelle positive mais multiple&#xa0;: la direction de la tangente au point fixe dépend des points de contrôle</translation>
+    </message>
+    <message>
+        <source>real negative: the curve oscillates at the fixed point and has no tangent there</source>
+        <translation>réelle négative&#xa0;: la courbe oscille au point fixe et n’y a pas de tangente</translation>
+    </message>
+    <message>
+        <source>complex pair: the curve spirals around the fixed point (no tangent)</source>
+        <translation>paire complexe&#xa0;: la courbe s’enroule en spirale autour du point fixe (pas de tangente)</translation>
+    </message>
+    <message>
+        <source>complex: near the fixed point the map acts as the spiral similarity z -&gt; lambda z, so the curve spirals around the fixed point (no tangent)</source>
+        <translation>complexe&#xa0;: près du point fixe, l’application agit comme la similitude directe z -&gt; lambda z, donc la courbe s’enroule en spirale autour du point fixe (pas de tangente)</translation>
+    </message>
+    <message>
+        <source>several eigenvalues of the same modulus with different signs or phases: no single tangent behaviour</source>
+        <translation>plusieurs valeurs propres de même module avec des signes ou des phases différents&#xa0;: pas de comportement tangent unique</translation>
+    </message>
+    <message>
+        <source>not contractive: spectral radius %1 &gt;= 1</source>
+        <translation>non contractante&#xa0;: rayon spectral %1 &gt;= 1</translation>
+    </message>
+    <message>
+        <source>contractive (factor ||A||_2 = %1)</source>
+        <translation>contractante (facteur ||A||_2 = %1)</translation>
+    </message>
+    <message>
+        <source>eventually contractive (spectral radius %1 &lt; 1; ||A^%2||_2 &lt; 1)</source>
+        <translation>contractante à terme (rayon spectral %1 &lt; 1&#x202f;; ||A^%2||_2 &lt; 1)</translation>
+    </message>
+    <message>
+        <source>eventually contractive (spectral radius %1 &lt; 1)</source>
+        <translation>contractante à terme (rayon spectral %1 &lt; 1)</translation>
+    </message>
+    <message>
+        <source>map %1 is not contractive: the spectral radius of its linear part is %2 &gt;= 1, so the IFS has no attractor (the iteration does not converge)</source>
+        <translation>l’application %1 n’est pas contractante&#xa0;: le rayon spectral de sa partie linéaire vaut %2 &gt;= 1, donc l’IFS n’a pas d’attracteur (l’itération ne converge pas)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::cli</name>
+    <message>
+        <source>Render the bundled paper figures to PNG files (one row of panels per figure: the start set, a few iterates of the Hutchinson operator, and the attractor, over the control polygon).</source>
+        <translation>Rendre les figures des articles fournies dans des fichiers PNG (une rangée de panneaux par figure&#xa0;: l’ensemble initial, quelques itérés de l’opérateur de Hutchinson et l’attracteur, sur le polygone de contrôle).</translation>
+    </message>
+    <message>
+        <source>Directory for the PNG files (created if missing).</source>
+        <translation>Répertoire des fichiers PNG (créé s’il n’existe pas).</translation>
+    </message>
+    <message>
+        <source>List the examples and exit.</source>
+        <translation>Lister les exemples et quitter.</translation>
+    </message>
+    <message>
+        <source>attractor-cli: cannot create directory %1</source>
+        <translation>attractor-cli&#xa0;: impossible de créer le répertoire %1</translation>
+    </message>
+    <message>
+        <source>Usage: attractor-cli &lt;command&gt; [options]
+
+Commands:
+  render     render an item of a project to PNG, SVG or PDF
+  animate    render the frames of an item&apos;s animation (PNG files, MP4/GIF)
+  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)
+  points     the points of F^k(X0) as CSV
+  check      validate a project file
+  rewrite    load and save a project in canonical form
+  export     attractor points as PLY, a surface&apos;s subdivided net as OBJ
+  polygon    the control polygon after K subdivision steps (JSON)
+  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG
+
+Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
+</source>
+        <translation>Utilisation&#xa0;: attractor-cli &lt;commande&gt; [options]
+
+Commandes&#xa0;:
+  render     rendre un élément d’un projet en PNG, SVG ou PDF
+  animate    rendre les images de l’animation d’un élément (fichiers PNG, MP4/GIF)
+  analyse    valeurs propres, contractivité, points fixes, dimension (JSON)
+  points     les points de F^k(X0) en CSV
+  check      valider un fichier de projet
+  rewrite    charger et réenregistrer un projet sous forme canonique
+  export     points de l’attracteur en PLY, réseau subdivisé d’une surface en OBJ
+  polygon    le polygone de contrôle après K étapes de subdivision (JSON)
+  examples   rendre les figures des articles intégrées (000 fig. 2, 3, 5) en PNG
+
+Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les options d’une commande.
+</translation>
+    </message>
+    <message>
+        <source>attractor-cli: unknown command &apos;%1&apos;</source>
+        <translation>attractor-cli&#xa0;: commande inconnue «&#xa0;%1&#xa0;»</translation>
+    </message>
+    <message>
+        <source>expected %1 project file, got %2 arguments (see --help)</source>
+        <translation>%1 fichier de projet attendu, %2 arguments reçus (voir --help)</translation>
+    </message>
+    <message>
+        <source>no item named &apos;%1&apos; in %2</source>
+        <translation>aucun élément nommé «&#xa0;%1&#xa0;» dans %2</translation>
+    </message>
+    <message>
+        <source>the figure&apos;s project</source>
+        <translation>le projet de la figure</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; (%2) has no attractor</source>
+        <translation>l’élément «&#xa0;%1&#xa0;» (%2) n’a pas d’attracteur</translation>
+    </message>
+    <message>
+        <source>%1 has no item with an attractor</source>
+        <translation>%1 n’a aucun élément avec un attracteur</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos;: %2</source>
+        <translation>élément «&#xa0;%1&#xa0;»&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>--%1 must be a whole number from %2 to %3, got &apos;%4&apos;</source>
+        <translation>--%1 doit être un entier de %2 à %3 (reçu&#xa0;: «&#xa0;%4&#xa0;»)</translation>
+    </message>
+    <message>
+        <source>--%1 must be a number from %2 to %3, got &apos;%4&apos;</source>
+        <translation>--%1 doit être un nombre de %2 à %3 (reçu&#xa0;: «&#xa0;%4&#xa0;»)</translation>
+    </message>
+    <message>
+        <source>--start: &apos;%1&apos; is not a finite number</source>
+        <translation>--start&#xa0;: «&#xa0;%1&#xa0;» n’est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>--start must be point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;..., got &apos;%1&apos;</source>
+        <translation>--start doit être de la forme point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... (reçu&#xa0;: «&#xa0;%1&#xa0;»)</translation>
+    </message>
+    <message>
+        <source>--start %1 needs %2 coordinates (%3 per point), got %4</source>
+        <translation>--start %1 demande %2 coordonnées (%3 par point) (reçu&#xa0;: %4)</translation>
+    </message>
+    <message>
+        <source>a multiple of %1</source>
+        <translation>un multiple de %1</translation>
+    </message>
+    <message>
+        <source>depth %1 gives %2 points, more than --max-points %3</source>
+        <translation>la profondeur %1 donne %2 points, soit plus que --max-points %3</translation>
+    </message>
+    <message>
+        <source>Image size in pixels (default 900x700).</source>
+        <translation>Taille de l’image en pixels (par défaut 900x700).</translation>
+    </message>
+    <message>
+        <source>Deterministic iteration depth (default: the item&apos;s).</source>
+        <translation>Profondeur d’itération déterministe (par défaut&#xa0;: celle de l’élément).</translation>
+    </message>
+    <message>
+        <source>Random iteration with this many points (up to 1e12; memory stays that of the raster).</source>
+        <translation>Itération aléatoire avec ce nombre de points (jusqu’à 1e12&#x202f;; la mémoire reste celle de la trame).</translation>
+    </message>
+    <message>
+        <source>Raster tone: &apos;hits&apos; (every lit pixel opaque, the papers&apos; look) or &apos;density&apos; (log density of the invariant measure, gamma and vibrancy as flame renderers). Default: the item&apos;s style (auto: hits for deterministic, density for random iteration).</source>
+        <translation>Rendu tonal de la trame&#xa0;: «&#xa0;hits&#xa0;» (tout pixel touché est opaque, l’aspect des articles) ou «&#xa0;density&#xa0;» (densité logarithmique de la mesure invariante, gamma et vibrance comme dans les moteurs de rendu de flammes fractales). Par défaut&#xa0;: le style de l’élément (auto&#xa0;: hits pour l’itération déterministe, density pour l’itération aléatoire).</translation>
+    </message>
+    <message>
+        <source>Density tone: display gamma (default: the item&apos;s, 2.2).</source>
+        <translation>Rendu «&#xa0;density&#xa0;»&#xa0;: gamma d’affichage (par défaut&#xa0;: celui de l’élément, 2.2).</translation>
+    </message>
+    <message>
+        <source>Density tone: 1 saturated colours, 0 per-channel gamma (default 1).</source>
+        <translation>Rendu «&#xa0;density&#xa0;»&#xa0;: 1 pour des couleurs saturées, 0 pour un gamma par canal (par défaut 1).</translation>
+    </message>
+    <message>
+        <source>Histogram cells per pixel side, 1..4 (default 1; 2 or 3 anti-alias edges).</source>
+        <translation>Cellules d’histogramme par côté de pixel, 1..4 (par défaut 1&#x202f;; 2 ou 3 lissent les bords).</translation>
+    </message>
+    <message>
+        <source>Threads of the raster engine (default: all cores).</source>
+        <translation>Threads du moteur de rastérisation (par défaut&#xa0;: tous les cœurs).</translation>
+    </message>
+    <message>
+        <source>Surfaces: the camera&apos;s azimuth and elevation in degrees (orthographic; default: the item&apos;s camera).</source>
+        <translation>Surfaces&#xa0;: azimut et élévation de la caméra en degrés (orthographique&#x202f;; par défaut&#xa0;: la caméra de l’élément).</translation>
+    </message>
+    <message>
+        <source>Plane figures: the world rectangle to frame (padded by 6%), e.g. to compare figures at one scale (default: fit the content).</source>
+        <translation>Figures planes&#xa0;: le rectangle du monde à cadrer (avec une marge de 6&#xa0;%), par exemple pour comparer des figures à la même échelle (par défaut&#xa0;: ajuster au contenu).</translation>
+    </message>
+    <message>
+        <source>The output&apos;s format when its name has no suffix (e.g. /dev/stdout): png, svg or pdf (default: the suffix).</source>
+        <translation>Format de la sortie lorsque son nom n’a pas de suffixe (p. ex. /dev/stdout)&#xa0;: png, svg ou pdf (par défaut&#xa0;: le suffixe).</translation>
+    </message>
+    <message>
+        <source>--depth and --samples exclude each other</source>
+        <translation>--depth et --samples s’excluent mutuellement</translation>
+    </message>
+    <message>
+        <source>--size must be WxH with 64..16384 pixels each, got &apos;%1&apos;</source>
+        <translation>--size doit être de la forme LxH avec 64..16384 pixels chacun (reçu&#xa0;: «&#xa0;%1&#xa0;»)</translation>
+    </message>
+    <message>
+        <source>--tone must be &apos;hits&apos; or &apos;density&apos;, got &apos;%1&apos;</source>
+        <translation>--tone doit valoir «&#xa0;hits&#xa0;» ou «&#xa0;density&#xa0;» (reçu&#xa0;: «&#xa0;%1&#xa0;»)</translation>
+    </message>
+    <message>
+        <source>--bounds must be x0,y0,x1,y1 with x0 &lt; x1 and y0 &lt; y1, got &apos;%1&apos;</source>
+        <translation>--bounds doit être de la forme x0,y0,x1,y1 avec x0 &lt; x1 et y0 &lt; y1 (reçu&#xa0;: «&#xa0;%1&#xa0;»)</translation>
+    </message>
+    <message>
+        <source>--format must be png, svg or pdf, got &apos;%1&apos;</source>
+        <translation>--format doit valoir png, svg ou pdf (reçu&#xa0;: «&#xa0;%1&#xa0;»)</translation>
+    </message>
+    <message>
+        <source>depth %1 makes %2 images; at most 4e9 are rendered</source>
+        <translation>la profondeur %1 produit %2 images&#x202f;; 4e9 au plus sont rendues</translation>
+    </message>
+    <message>
+        <source>--view must be AZ,EL in degrees with |EL| &lt;= 90, got &apos;%1&apos;</source>
+        <translation>--view doit être de la forme AZ,EL en degrés avec |EL| &lt;= 90 (reçu&#xa0;: «&#xa0;%1&#xa0;»)</translation>
+    </message>
+    <message>
+        <source>%1 random points</source>
+        <translation>%1 points aléatoires</translation>
+    </message>
+    <message>
+        <source>F^%1(X0)</source>
+        <translation>F^%1(X0)</translation>
+    </message>
+    <message>
+        <source>, maps %1 of %2</source>
+        <translation>, applications %1 sur %2</translation>
+    </message>
+    <message>
+        <source>%1: %2%3 — orthographic view from azimuth %4°, elevation %5°</source>
+        <translation>%1&#xa0;: %2%3 — vue orthographique depuis l’azimut %4°, élévation %5°</translation>
+    </message>
+    <message>
+        <source>%1: %2 random points</source>
+        <translation>%1&#xa0;: %2 points aléatoires</translation>
+    </message>
+    <message>
+        <source>%1: F^%2(X0)</source>
+        <translation>%1&#xa0;: F^%2(X0)</translation>
+    </message>
+    <message>
+        <source>%1: polygon after %2 steps</source>
+        <translation>%1&#xa0;: polygone après %2 étapes</translation>
+    </message>
+    <message>
+        <source>Render an item&apos;s attractor (with its control polygons) to PNG, SVG or PDF.</source>
+        <translation>Rendre l’attracteur d’un élément (avec ses polygones de contrôle) en PNG, SVG ou PDF.</translation>
+    </message>
+    <message>
+        <source>The .awb project file.</source>
+        <translation>Le fichier de projet .awb.</translation>
+    </message>
+    <message>
+        <source>The item to render (default: the first with an attractor).</source>
+        <translation>L’élément à rendre (par défaut&#xa0;: le premier qui a un attracteur).</translation>
+    </message>
+    <message>
+        <source>Output file: .png, .svg or .pdf.</source>
+        <translation>Fichier de sortie&#xa0;: .png, .svg ou .pdf.</translation>
+    </message>
+    <message>
+        <source>--out FILE is required</source>
+        <translation>--out FICHIER est obligatoire</translation>
+    </message>
+    <message>
+        <source>Render the frames of an item&apos;s animation (its keyframed parameters): numbered PNG files in a folder, or an MP4 or GIF movie through ffmpeg. Frame k is the item with its parameters at time k / fps, drawn exactly as `render` draws it.</source>
+        <translation>Rendre les images de l’animation d’un élément (ses paramètres à clés)&#xa0;: des fichiers PNG numérotés dans un dossier, ou un film MP4 ou GIF via ffmpeg. L’image k est l’élément avec ses paramètres au temps k / fps, tracé exactement comme `render` le trace.</translation>
+    </message>
+    <message>
+        <source>The animated item (default: the first item with an animation).</source>
+        <translation>L’élément animé (par défaut&#xa0;: le premier élément qui a une animation).</translation>
+    </message>
+    <message>
+        <source>A folder for frame-0000.png, frame-0001.png, ... (made if missing), a movie .mp4 or .gif (made by ffmpeg), or with --frame one .png/.svg/.pdf.</source>
+        <translation>Un dossier pour frame-0000.png, frame-0001.png, ... (créé s’il n’existe pas), un film .mp4 ou .gif (produit par ffmpeg), ou, avec --frame, un seul fichier .png/.svg/.pdf.</translation>
+    </message>
+    <message>
+        <source>Frames per second (default: the animation&apos;s).</source>
+        <translation>Images par seconde (par défaut&#xa0;: celles de l’animation).</translation>
+    </message>
+    <message>
+        <source>Render only frame K (0 = the start) to the file --out.</source>
+        <translation>Rendre seulement l’image K (0 = le début) dans le fichier --out.</translation>
+    </message>
+    <message>
+        <source>Captions without the frame&apos;s time and values.</source>
+        <translation>Légendes sans le temps ni les valeurs de l’image.</translation>
+    </message>
+    <message>
+        <source>--out DIR|FILE is required</source>
+        <translation>--out DOSSIER|FICHIER est obligatoire</translation>
+    </message>
+    <message>
+        <source>%1 has no animated item</source>
+        <translation>%1 n’a aucun élément animé</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; has no animation: key its parameters in the Animation dock, or give it an &quot;animation&quot; field (docs/file-format.md)</source>
+        <translation>l’élément «&#xa0;%1&#xa0;» n’a pas d’animation&#xa0;: posez des clés sur ses paramètres dans le panneau Animation, ou donnez-lui un champ &quot;animation&quot; (docs/file-format.md)</translation>
+    </message>
+    <message>
+        <source>attractor-cli: note: the track of %1 is skipped: item &apos;%2&apos; has no such input now</source>
+        <translation>attractor-cli&#xa0;: note&#xa0;: la piste de %1 est ignorée&#xa0;: l’élément «&#xa0;%2&#xa0;» n’a plus cette entrée</translation>
+    </message>
+    <message>
+        <source>%1,%2,%3,%4</source>
+        <translation>%1,%2,%3,%4</translation>
+    </message>
+    <message>
+        <source>fitted per frame</source>
+        <translation>ajusté à chaque image</translation>
+    </message>
+    <message>
+        <source>frame %1 (t = %2 s): %3</source>
+        <translation>image %1 (t = %2 s)&#xa0;: %3</translation>
+    </message>
+    <message>
+        <source>writing %1 needs ffmpeg, which is not installed (Debian: apt-get install ffmpeg); give --out a folder to get the frames as PNG files</source>
+        <translation>l’écriture de %1 demande ffmpeg, qui n’est pas installé (Debian&#xa0;: apt-get install ffmpeg)&#x202f;; donnez un dossier à --out pour obtenir les images en fichiers PNG</translation>
+    </message>
+    <message>
+        <source>cannot make a temporary folder for the frames: %1</source>
+        <translation>impossible de créer un dossier temporaire pour les images&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>%1 is a file, not a folder (a movie needs .mp4 or .gif)</source>
+        <translation>%1 est un fichier, pas un dossier (un film demande .mp4 ou .gif)</translation>
+    </message>
+    <message>
+        <source>cannot make the folder %1</source>
+        <translation>impossible de créer le dossier %1</translation>
+    </message>
+    <message>
+        <source>frame-%1.png</source>
+        <translation>frame-%1.png</translation>
+    </message>
+    <message>
+        <source>ffmpeg could not write %1: %2</source>
+        <translation>ffmpeg n’a pas pu écrire %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>%1: %2 frames of %3x%4 at %5 frames/s (%6 s); rendered in %7 s, %8 frames/s
+bounds: %9
+</source>
+        <translation>%1&#xa0;: %2 images de %3x%4 à %5 images/s (%6 s)&#x202f;; rendu en %7 s, %8 images/s
+limites&#xa0;: %9
+</translation>
+    </message>
+    <message>
+        <source>Analyse the items of a project: per map S_i (exact fractions), M_i = P^-1 S_i P with its blocks A_i, b_i, the eigenvalues of S_i and A_i, spectral radius, contractivity and fixed point; per item the subdominant eigenvalues, the Hausdorff distance to the exact curve and the box-counting dimension; per subdivision curve the certified Hölder regularity of its scheme.</source>
+        <translation>Analyser les éléments d’un projet&#xa0;: pour chaque application, S_i (fractions exactes), M_i = P^-1 S_i P avec ses blocs A_i, b_i, les valeurs propres de S_i et de A_i, le rayon spectral, la contractivité et le point fixe&#x202f;; pour chaque élément, les valeurs propres sous-dominantes, la distance de Hausdorff à la courbe exacte et la dimension de comptage de boîtes&#x202f;; pour chaque courbe de subdivision, la régularité höldérienne certifiée de son schéma.</translation>
+    </message>
+    <message>
+        <source>Only this item.</source>
+        <translation>Seulement cet élément.</translation>
+    </message>
+    <message>
+        <source>Print JSON (the only format so far).</source>
+        <translation>Produire du JSON (le seul format pour l’instant).</translation>
+    </message>
+    <message>
+        <source>--json is required (the only output format)</source>
+        <translation>--json est obligatoire (le seul format de sortie)</translation>
+    </message>
+    <message>
+        <source>Print the points of F^k(X0) as CSV: x, y (and z for a surface), the map applied last (1-based), and the view. --address w limits them to the sub-copy f_w(A): the points f_w(F^k(X0)).</source>
+        <translation>Afficher les points de F^k(X0) en CSV&#xa0;: x, y (et z pour une surface), l’application appliquée en dernier (numérotée à partir de 1) et la vue. --address w les restreint à la sous-copie f_w(A)&#xa0;: les points f_w(F^k(X0)).</translation>
+    </message>
+    <message>
+        <source>The item.</source>
+        <translation>L’élément.</translation>
+    </message>
+    <message>
+        <source>Iteration depth (default: the item&apos;s).</source>
+        <translation>Profondeur d’itération (par défaut&#xa0;: celle de l’élément).</translation>
+    </message>
+    <message>
+        <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2; default: the item&apos;s).</source>
+        <translation>Ensemble initial&#xa0;: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (coordonnées du plan&#x202f;; x,y,z pour une surface) | lifted:x,y,c1,...;x,y,c1,... (points de l’espace relevé de 000 §2&#x202f;; par défaut&#xa0;: celui de l’élément).</translation>
+    </message>
+    <message>
+        <source>Print CSV (the only format so far).</source>
+        <translation>Produire du CSV (le seul format pour l’instant).</translation>
+    </message>
+    <message>
+        <source>Only the sub-copy f_w(A) of this address: 0-based map numbers, w_1 (the outermost map) first, e.g. 0,1,1.</source>
+        <translation>Seulement la sous-copie f_w(A) de cette adresse&#xa0;: numéros d’application à partir de 0, w_1 (l’application la plus extérieure) en premier, p. ex. 0,1,1.</translation>
+    </message>
+    <message>
+        <source>Refuse to print more (default 10000000).</source>
+        <translation>Refuser d’en afficher davantage (par défaut 10000000).</translation>
+    </message>
+    <message>
+        <source>--item NAME is required</source>
+        <translation>--item NOM est obligatoire</translation>
+    </message>
+    <message>
+        <source>--csv is required (the only output format)</source>
+        <translation>--csv est obligatoire (le seul format de sortie)</translation>
+    </message>
+    <message>
+        <source>--address %1: %2</source>
+        <translation>--address %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>--start lifted: needs at least one point</source>
+        <translation>--start lifted&#xa0;: il faut au moins un point</translation>
+    </message>
+    <message>
+        <source>cannot write to the standard output</source>
+        <translation>impossible d’écrire sur la sortie standard</translation>
+    </message>
+    <message>
+        <source>Validate a project file: it must load, and every item&apos;s IFS must be computable (exit 1: the file is refused; exit 3: it loads but items cannot be computed).</source>
+        <translation>Valider un fichier de projet&#xa0;: il doit se charger, et l’IFS de chaque élément doit être calculable (code de sortie 1&#xa0;: le fichier est refusé&#x202f;; code de sortie 3&#xa0;: il se charge mais des éléments ne peuvent pas être calculés).</translation>
+    </message>
+    <message>
+        <source>%1: %2: note: %3</source>
+        <translation>%1&#xa0;: %2&#xa0;: note&#xa0;: %3</translation>
+    </message>
+    <message>
+        <source>Load a project and save it again in the canonical form of this version (sorted keys, every field written): to upgrade or normalise a hand-written file.</source>
+        <translation>Charger un projet et le réenregistrer sous la forme canonique de cette version (clés triées, tous les champs écrits)&#xa0;: pour mettre à niveau ou normaliser un fichier écrit à la main.</translation>
+    </message>
+    <message>
+        <source>Write here instead of over the input.</source>
+        <translation>Écrire ici au lieu d’écraser le fichier d’entrée.</translation>
+    </message>
+    <message>
+        <source>v %1 %2 %3
+</source>
+        <translation>v %1 %2 %3
+</translation>
+    </message>
+    <message>
+        <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), or a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh.</source>
+        <translation>Exporter la géométrie d’un élément&#xa0;: l’attracteur F^k(X0) en nuage de points PLY (avec l’application appliquée en dernier pour chaque point), ou le réseau d’un élément surface après k passes de subdivision classique en maillage OBJ.</translation>
+    </message>
+    <message>
+        <source>ply (attractor points) or obj (subdivided mesh).</source>
+        <translation>ply (points de l’attracteur) ou obj (maillage subdivisé).</translation>
+    </message>
+    <message>
+        <source>Output file.</source>
+        <translation>Fichier de sortie.</translation>
+    </message>
+    <message>
+        <source>PLY: iteration depth (default: the item&apos;s).</source>
+        <translation>PLY&#xa0;: profondeur d’itération (par défaut&#xa0;: celle de l’élément).</translation>
+    </message>
+    <message>
+        <source>OBJ: rounds of subdivision (default: the item&apos;s).</source>
+        <translation>OBJ&#xa0;: passes de subdivision (par défaut&#xa0;: celles de l’élément).</translation>
+    </message>
+    <message>
+        <source>PLY: refuse to write more (default 50000000).</source>
+        <translation>PLY&#xa0;: refuser d’en écrire davantage (par défaut 50000000).</translation>
+    </message>
+    <message>
+        <source>--item NAME, --format ply|obj and --out FILE are required</source>
+        <translation>--item NOM, --format ply|obj et --out FICHIER sont obligatoires</translation>
+    </message>
+    <message>
+        <source>--format must be ply or obj, got &apos;%1&apos;</source>
+        <translation>--format doit valoir ply ou obj (reçu&#xa0;: «&#xa0;%1&#xa0;»)</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>impossible d’écrire %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; is drawn by an automaton: PLY export covers items with one IFS</source>
+        <translation>l’élément «&#xa0;%1&#xa0;» est tracé par un automate&#xa0;: l’export PLY ne couvre que les éléments à un seul IFS</translation>
+    </message>
+    <message>
+        <source>OBJ export writes the subdivided net of a surface item; &apos;%1&apos; is a %2</source>
+        <translation>l’export OBJ écrit le réseau subdivisé d’un élément surface&#x202f;; «&#xa0;%1&#xa0;» est de type %2</translation>
+    </message>
+    <message>
+        <source>Print the control polygon after K subdivision steps as JSON {&quot;closed&quot;, &quot;points&quot;}: the figures of 001 for a normal-vector item (eq. (1) applied K times), classic subdivision S_w P for a subdivision curve.</source>
+        <translation>Afficher le polygone de contrôle après K étapes de subdivision en JSON {&quot;closed&quot;, &quot;points&quot;}&#xa0;: les figures de 001 pour un élément à vecteurs normaux (éq. (1) appliquée K fois), la subdivision classique S_w P pour une courbe de subdivision.</translation>
+    </message>
+    <message>
+        <source>Subdivision steps K (0: the control polygon).</source>
+        <translation>Étapes de subdivision K (0&#xa0;: le polygone de contrôle).</translation>
+    </message>
+    <message>
+        <source>Print JSON (the only format).</source>
+        <translation>Produire du JSON (le seul format).</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; has a complex split parameter: its control polygon has complex points</source>
+        <translation>l’élément «&#xa0;%1&#xa0;» a un paramètre de découpe complexe&#xa0;: son polygone de contrôle a des points complexes</translation>
+    </message>
+    <message>
+        <source>level %1 gives more than 5e7 points</source>
+        <translation>le niveau %1 donne plus de 5e7 points</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; (%2) is not polygon-based: the polygon command takes normal-vector items and subdivision curves</source>
+        <translation>l’élément «&#xa0;%1&#xa0;» (%2) n’est pas fondé sur un polygone&#xa0;: la commande polygon accepte les éléments à vecteurs normaux et les courbes de subdivision</translation>
+    </message>
+    <message>
+        <source>nothing to draw</source>
+        <translation>rien à dessiner</translation>
+    </message>
+</context>
+<context>
+    <name>awb::core</name>
+    <message>
+        <source>%1: entry (row %2, column %3) is not a finite number</source>
+        <translation>%1&#xa0;: le coefficient (ligne %2, colonne %3) n’est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>matrix rows of different lengths</source>
+        <translation>lignes de matrice de longueurs différentes</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ifs</name>
+    <message>
+        <source>the IFS has 1 map (0)</source>
+        <translation>l’IFS a 1 application (0)</translation>
+    </message>
+    <message>
+        <source>the IFS has %1 maps (0..%2)</source>
+        <translation>l’IFS a %1 applications (0..%2)</translation>
+    </message>
+    <message>
+        <source>no parameter intervals</source>
+        <translation>aucun intervalle de paramètre</translation>
+    </message>
+    <message>
+        <source>a parameter interval is empty or not finite</source>
+        <translation>un intervalle de paramètre est vide ou non fini</translation>
+    </message>
+    <message>
+        <source>the address has %1 symbols, more than %2</source>
+        <translation>l’adresse a %1 symboles, soit plus de %2</translation>
+    </message>
+    <message>
+        <source>symbol %1 of the address is map %2, but %3</source>
+        <translation>le symbole %1 de l’adresse est l’application %2, mais %3</translation>
+    </message>
+    <message>
+        <source>the IFS has no maps</source>
+        <translation>l’IFS n’a aucune application</translation>
+    </message>
+    <message>
+        <source>the address &apos;%1&apos; has an empty symbol (a comma too many)</source>
+        <translation>l’adresse «&#xa0;%1&#xa0;» a un symbole vide (une virgule de trop)</translation>
+    </message>
+    <message>
+        <source>the address &apos;%1&apos; ends with a comma</source>
+        <translation>l’adresse «&#xa0;%1&#xa0;» se termine par une virgule</translation>
+    </message>
+    <message>
+        <source>the address is empty: give map numbers such as 0,1,1</source>
+        <translation>l’adresse est vide&#xa0;: donnez des numéros d’application tels que 0,1,1</translation>
+    </message>
+    <message>
+        <source>symbol %1 of the address, &apos;%2&apos;, is not a map number (0-based whole number)</source>
+        <translation>le symbole %1 de l’adresse, «&#xa0;%2&#xa0;», n’est pas un numéro d’application (entier à partir de 0)</translation>
+    </message>
+    <message>
+        <source>no subdivision matrices</source>
+        <translation>aucune matrice de subdivision</translation>
+    </message>
+    <message>
+        <source>the subdivision matrices differ in size</source>
+        <translation>les matrices de subdivision n’ont pas toutes la même taille</translation>
+    </message>
+    <message>
+        <source>the parameter %1 is outside [0, 1]</source>
+        <translation>le paramètre %1 est en dehors de [0, 1]</translation>
+    </message>
+    <message>
+        <source>an address has 0..%1 symbols</source>
+        <translation>une adresse a de 0 à %1 symboles</translation>
+    </message>
+    <message>
+        <source>the parameter interval must satisfy 0 &lt;= t0 &lt; t1 &lt;= 1</source>
+        <translation>l’intervalle de paramètre doit vérifier 0 &lt;= t0 &lt; t1 &lt;= 1</translation>
+    </message>
+    <message>
+        <source>the seed point has %1 coordinates, the IFS %2</source>
+        <translation>le point de départ a %1 coordonnées, l’IFS en a %2</translation>
+    </message>
+    <message>
+        <source>map 0 does not converge to a fixed point</source>
+        <translation>l’application 0 ne converge pas vers un point fixe</translation>
+    </message>
+    <message>
+        <source>iteration depth must be between 0 and %1, got %2</source>
+        <translation>la profondeur d’itération doit être comprise entre 0 et %1 (reçu&#xa0;: %2)</translation>
+    </message>
+    <message>
+        <source>the start set is empty</source>
+        <translation>l’ensemble initial est vide</translation>
+    </message>
+    <message>
+        <source>start set has %1 coordinates, the IFS space has %2</source>
+        <translation>l’ensemble initial a %1 coordonnées, l’espace de l’IFS en a %2</translation>
+    </message>
+    <message>
+        <source>start set</source>
+        <translation>ensemble initial</translation>
+    </message>
+    <message>
+        <source>at most 255 maps are supported, got %1</source>
+        <translation>255 applications au plus sont prises en charge (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>no sink to receive the attractor</source>
+        <translation>aucune destination pour recevoir l’attracteur</translation>
+    </message>
+    <message>
+        <source>start point has %1 coordinates, the IFS space has %2</source>
+        <translation>le point initial a %1 coordonnées, l’espace de l’IFS en a %2</translation>
+    </message>
+    <message>
+        <source>start point</source>
+        <translation>point initial</translation>
+    </message>
+    <message>
+        <source>at most %1 random-iteration samples, got %2</source>
+        <translation>%1 échantillons d’itération aléatoire au plus (reçu&#xa0;: %2)</translation>
+    </message>
+    <message>
+        <source>column %1 of %2 sums to %3, not 1: it does not map barycentric points to barycentric points</source>
+        <translation>%2, colonne %1&#xa0;: la somme vaut %3, et non 1&#xa0;: les points barycentriques ne sont pas envoyés sur des points barycentriques</translation>
+    </message>
+    <message>
+        <source>the BCIFS has no cell &apos;%1&apos;</source>
+        <translation>le BCIFS n’a pas de cellule «&#xa0;%1&#xa0;»</translation>
+    </message>
+    <message>
+        <source>the BCIFS has no operator &apos;%1&apos;</source>
+        <translation>le BCIFS n’a pas d’opérateur «&#xa0;%1&#xa0;»</translation>
+    </message>
+    <message>
+        <source>the BCIFS has no cells</source>
+        <translation>le BCIFS n’a aucune cellule</translation>
+    </message>
+    <message>
+        <source>cell &apos;%1&apos; has dimension %2; it needs at least one control point</source>
+        <translation>la cellule «&#xa0;%1&#xa0;» est de dimension %2&#x202f;; il lui faut au moins un point de contrôle</translation>
+    </message>
+    <message>
+        <source>operator &apos;%1&apos; joins a cell that does not exist</source>
+        <translation>l’opérateur «&#xa0;%1&#xa0;» relie une cellule qui n’existe pas</translation>
+    </message>
+    <message>
+        <source>operator &apos;%1&apos; (%2 -&gt; %3)</source>
+        <translation>opérateur «&#xa0;%1&#xa0;» (%2 -&gt; %3)</translation>
+    </message>
+    <message>
+        <source>%1 joins cells of the wrong kinds: subdivisions join edges or vertices, boundary operators go from an edge to a vertex, placements from the model</source>
+        <translation>%1 relie des cellules de types incorrects&#xa0;: les subdivisions relient des arêtes ou des sommets, les opérateurs de bord vont d’une arête à un sommet, les placements partent du modèle</translation>
+    </message>
+    <message>
+        <source>%1 is %2; it must be %3 x %4 (column convention: rows = dimension of &apos;%5&apos;, columns = dimension of &apos;%6&apos;)</source>
+        <translation>%1 est de taille %2 au lieu de %3 x %4 (convention par colonnes&#xa0;: lignes = dimension de «&#xa0;%5&#xa0;», colonnes = dimension de «&#xa0;%6&#xa0;»)</translation>
+    </message>
+    <message>
+        <source>edge cell &apos;%1&apos; has no subdivision operator: its attractor would be empty</source>
+        <translation>la cellule d’arête «&#xa0;%1&#xa0;» n’a pas d’opérateur de subdivision&#xa0;: son attracteur serait vide</translation>
+    </message>
+    <message>
+        <source>constraint %1</source>
+        <translation>contrainte %1</translation>
+    </message>
+    <message>
+        <source>%1 has an empty side or an unknown operator</source>
+        <translation>%1 a un membre vide ou un opérateur inconnu</translation>
+    </message>
+    <message>
+        <source>%1: %2 ends at &apos;%3&apos; but %4 starts at &apos;%5&apos;</source>
+        <translation>%1&#xa0;: %2 se termine en «&#xa0;%3&#xa0;» mais %4 commence en «&#xa0;%5&#xa0;»</translation>
+    </message>
+    <message>
+        <source>%1 (%2) compares paths between different cells</source>
+        <translation>%1 (%2) compare des chemins entre des cellules différentes</translation>
+    </message>
+    <message>
+        <source>%1 constraint %2 %3 is violated by %4 (entry row %5, column %6)</source>
+        <translation>la contrainte %1 %2 %3 est violée avec un écart de %4 (coefficient en ligne %5, colonne %6)</translation>
+    </message>
+    <message>
+        <source>; also violated:</source>
+        <translation>&#x202f;; également violées&#xa0;:</translation>
+    </message>
+    <message>
+        <source>edge cell &apos;%1&apos; has no placement (control points): it cannot be drawn</source>
+        <translation>la cellule d’arête «&#xa0;%1&#xa0;» n’a pas de placement (points de contrôle)&#xa0;: elle ne peut pas être tracée</translation>
+    </message>
+    <message>
+        <source>the junction matrix must be square and at least 2 x 2, got %1</source>
+        <translation>la matrice de jonction doit être carrée et au moins de taille 2 x 2 (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>the copy&apos;s placement must have %1 rows (one per control point of the junction), got %2</source>
+        <translation>le placement de la copie doit avoir %1 lignes (une par point de contrôle de la jonction) (reçu&#xa0;: %2)</translation>
+    </message>
+    <message>
+        <source>the junction has %1 control points, got %2</source>
+        <translation>la jonction a %1 points de contrôle (reçu&#xa0;: %2)</translation>
+    </message>
+    <message>
+        <source>junction matrix</source>
+        <translation>matrice de jonction</translation>
+    </message>
+    <message>
+        <source>copy placement</source>
+        <translation>placement de la copie</translation>
+    </message>
+    <message>
+        <source>the junction matrix</source>
+        <translation>la matrice de jonction</translation>
+    </message>
+    <message>
+        <source>the copy placement</source>
+        <translation>le placement de la copie</translation>
+    </message>
+    <message>
+        <source>the copies collapse onto the fixed point: no tangent information</source>
+        <translation>les copies se réduisent au point fixe&#xa0;: aucune information de tangente</translation>
+    </message>
+    <message>
+        <source>lambda = %1: %2</source>
+        <translation>lambda = %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>; |lambda| &gt;= 1, so the junction matrix does not contract</source>
+        <translation>&#x202f;; |lambda| &gt;= 1, donc la matrice de jonction n’est pas contractante</translation>
+    </message>
+    <message>
+        <source> (the copy has no component along the subdominant eigenvector, lambda = %1, so the next eigenvalue governs)</source>
+        <translation> (la copie n’a pas de composante selon le vecteur propre sous-dominant, lambda = %1, donc c’est la valeur propre suivante qui détermine le comportement)</translation>
+    </message>
+    <message>
+        <source> (the eigenvectors are not complete; the copy&apos;s components were not examined)</source>
+        <translation> (les vecteurs propres ne forment pas une base&#x202f;; les composantes de la copie n’ont pas été examinées)</translation>
+    </message>
+    <message>
+        <source>vertex subdivisions must be square and non-empty, got %1 and %2</source>
+        <translation>les subdivisions de sommet doivent être carrées et non vides (reçu&#xa0;: %1 et %2)</translation>
+    </message>
+    <message>
+        <source>the free columns must have %1 rows (n_l + n_r), got X %2 and Y %3</source>
+        <translation>les colonnes libres doivent avoir %1 lignes (n_l + n_r) (reçu&#xa0;: X %2 et Y %3)</translation>
+    </message>
+    <message>
+        <source>free columns X of T^l</source>
+        <translation>colonnes libres X de T^l</translation>
+    </message>
+    <message>
+        <source>free columns Y of T^r</source>
+        <translation>colonnes libres Y de T^r</translation>
+    </message>
+    <message>
+        <source>the free columns X of T^l</source>
+        <translation>les colonnes libres X de T^l</translation>
+    </message>
+    <message>
+        <source>the free columns Y of T^r</source>
+        <translation>les colonnes libres Y de T^r</translation>
+    </message>
+    <message>
+        <source>the %1 curve&apos;s subdivision operators must both be m x m, got %2 and %3</source>
+        <translation>les opérateurs de subdivision de la courbe %1 doivent être tous deux de taille m x m (reçu&#xa0;: %2 et %3)</translation>
+    </message>
+    <message>
+        <source>the %1 curve&apos;s vertex dimension must be in 1..%2, got %3</source>
+        <translation>la dimension de sommet de la courbe %1 doit être dans 1..%2 (reçu&#xa0;: %3)</translation>
+    </message>
+    <message>
+        <source>the %1 curve needs %2 control points, got %3</source>
+        <translation>la courbe %1 demande %2 points de contrôle (reçu&#xa0;: %3)</translation>
+    </message>
+    <message>
+        <source>control points of the %1 curve</source>
+        <translation>points de contrôle de la courbe %1</translation>
+    </message>
+    <message>
+        <source>both curves&apos; control points must have the same dimension</source>
+        <translation>les points de contrôle des deux courbes doivent avoir la même dimension</translation>
+    </message>
+    <message>
+        <source>X must have m_l - n_l columns and Y m_r - n_r</source>
+        <translation>X doit avoir m_l - n_l colonnes et Y m_r - n_r</translation>
+    </message>
+    <message>
+        <source>junction parameter %1 is not a finite number</source>
+        <translation>le paramètre de jonction %1 n’est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>T^i has no subdominant eigenvalue</source>
+        <translation>T^i n’a pas de valeur propre sous-dominante</translation>
+    </message>
+    <message>
+        <source>lambda_2 = %1 (%2)</source>
+        <translation>lambda_2 = %1 (%2)</translation>
+    </message>
+    <message>
+        <source>: |lambda_2| &gt;= 1, T^i does not contract and the junction does not converge</source>
+        <translation>&#xa0;: |lambda_2| &gt;= 1, T^i n’est pas contractante et la jonction ne converge pas</translation>
+    </message>
+    <message>
+        <source>: both sides have half-tangents along the same eigenvector, from opposite sides: G1 at the junction point</source>
+        <translation>&#xa0;: les deux côtés ont des demi-tangentes selon le même vecteur propre, de sens opposés&#xa0;: G1 au point de jonction</translation>
+    </message>
+    <message>
+        <source>: both sides have half-tangents, but they are not opposite (a corner or cusp)</source>
+        <translation>&#xa0;: les deux côtés ont des demi-tangentes, mais elles ne sont pas opposées (un coin ou un point de rebroussement)</translation>
+    </message>
+    <message>
+        <source>the cubic needs 4 and the quadratic 3 control points of one dimension, got %1 and %2</source>
+        <translation>la cubique demande 4 points de contrôle et la quadratique 3, tous de même dimension (reçu&#xa0;: %1 et %2)</translation>
+    </message>
+    <message>
+        <source>%1 must exceed the other eigenvalues of %2 (largest modulus %3) to be subdominant, and be below 1 for %2 to contract</source>
+        <translation>%1 doit dépasser les autres valeurs propres de %2 (module maximal %3) pour être sous-dominante, et être inférieure à 1 pour que %2 soit contractante</translation>
+    </message>
+    <message>
+        <source>refined junction parameter %1 is not a finite number</source>
+        <translation>le paramètre de jonction raffinée %1 n’est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>refined junction parameter %1 = %2 is outside its admissible range (%3, %4): %5</source>
+        <translation>le paramètre de jonction raffinée %1 = %2 est en dehors de son intervalle admissible (%3, %4)&#xa0;: %5</translation>
+    </message>
+    <message>
+        <source>the refined junction needs 4 cubic, 3 quadratic and 3 handle control points of one dimension, got %1, %2 and %3</source>
+        <translation>la jonction raffinée demande 4 points de contrôle cubiques, 3 quadratiques et 3 poignées, tous de même dimension (reçu&#xa0;: %1, %2 et %3)</translation>
+    </message>
+    <message>
+        <source>handles of the refined junction</source>
+        <translation>poignées de la jonction raffinée</translation>
+    </message>
+    <message>
+        <source>the split parameter u is not a finite number</source>
+        <translation>le paramètre de découpe u n’est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>the split parameter u = %1 must lie strictly between 0 and 1 (002 §4: 0 &lt; u &lt; 1)</source>
+        <translation>le paramètre de découpe u = %1 doit être strictement compris entre 0 et 1 (002 §4&#xa0;: 0 &lt; u &lt; 1)</translation>
+    </message>
+    <message>
+        <source>coincide</source>
+        <comment>points</comment>
+        <translation>sont confondus</translation>
+    </message>
+    <message>
+        <source>are collinear</source>
+        <comment>points</comment>
+        <translation>sont alignés</translation>
+    </message>
+    <message>
+        <source>are coplanar</source>
+        <comment>points</comment>
+        <translation>sont coplanaires</translation>
+    </message>
+    <message>
+        <source>the affine map is not invertible (its linear part is singular)</source>
+        <translation>l’application affine n’est pas inversible (sa partie linéaire est singulière)</translation>
+    </message>
+    <message>
+        <source>an affine map of R^%1 is fixed by %2 point pairs</source>
+        <translation>une application affine de R^%1 est déterminée par %2 paires de points</translation>
+    </message>
+    <message>
+        <source>source points</source>
+        <translation>points sources</translation>
+    </message>
+    <message>
+        <source>target points</source>
+        <translation>points cibles</translation>
+    </message>
+    <message>
+        <source>the source points %1: no unique affine map takes them to the targets</source>
+        <translation>les points sources %1&#xa0;: aucune application affine unique ne les envoie sur les cibles</translation>
+    </message>
+    <message>
+        <source>fractal interpolation needs N + 1 &gt;= 3 data points (x, y)</source>
+        <translation>l’interpolation fractale demande N + 1 &gt;= 3 points de données (x, y)</translation>
+    </message>
+    <message>
+        <source>interpolation data</source>
+        <translation>données d’interpolation</translation>
+    </message>
+    <message>
+        <source>fractal interpolation through %1 points needs %2 vertical scalings d_n, got %3</source>
+        <translation>l’interpolation fractale par %1 points demande %2 facteurs d’échelle verticaux d_n (reçu&#xa0;: %3)</translation>
+    </message>
+    <message>
+        <source>interpolation abscissae must increase (x_%1 &lt;= x_%2)</source>
+        <translation>les abscisses d’interpolation doivent être croissantes (x_%1 &lt;= x_%2)</translation>
+    </message>
+    <message>
+        <source>vertical scaling d_%1 = %2 must satisfy |d_n| &lt; 1</source>
+        <translation>le facteur d’échelle vertical d_%1 = %2 doit vérifier |d_n| &lt; 1</translation>
+    </message>
+    <message>
+        <source>002 §5 needs three control points in the plane (3 x 2)</source>
+        <translation>002 §5 demande trois points de contrôle dans le plan (3 x 2)</translation>
+    </message>
+    <message>
+        <source>control points</source>
+        <translation>points de contrôle</translation>
+    </message>
+    <message>
+        <source>control points Q0, Q1, Q2 are collinear: the map omega of 002 §5 is not invertible</source>
+        <translation>les points de contrôle Q0, Q1, Q2 sont alignés&#xa0;: l’application oméga de 002 §5 n’est pas inversible</translation>
+    </message>
+    <message>
+        <source>a Bézier curve needs at least 2 control points (degree &gt;= 1), got %1</source>
+        <translation>une courbe de Bézier demande au moins 2 points de contrôle (degré &gt;= 1) (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>control points must have 1 to 3 coordinates</source>
+        <translation>les points de contrôle doivent avoir de 1 à 3 coordonnées</translation>
+    </message>
+    <message>
+        <source>the %1 control points %2, so the affine maps of eqs. (9)-(10) are not unique</source>
+        <translation>les %1 points de contrôle %2, donc les applications affines des éq. (9)-(10) ne sont pas uniques</translation>
+    </message>
+    <message>
+        <source>no affine map of R^%1 takes the control polygon of this degree-%2 curve to its de Casteljau pieces (mismatch %3): the pieces are not affine images of the curve in its own space</source>
+        <translation>aucune application affine de R^%1 n’envoie le polygone de contrôle de cette courbe de degré %2 sur ses morceaux de de Casteljau (écart %3)&#xa0;: les morceaux ne sont pas des images affines de la courbe dans son propre espace</translation>
+    </message>
+    <message>
+        <source>; the maps act on barycentric coordinates R^%1 (%2)</source>
+        <translation>&#x202f;; les applications agissent sur les coordonnées barycentriques R^%1 (%2)</translation>
+    </message>
+    <message>
+        <source>; the maps act on the lifted space R^%1 of 000 §2, drawn through its first %2 coordinates</source>
+        <translation>&#x202f;; les applications agissent sur l’espace relevé R^%1 de 000 §2, tracé par ses %2 premières coordonnées</translation>
+    </message>
+    <message>
+        <source>map 1 has spectral radius %1, map 2 %2; %3 levels shrink every piece to 1/1000 of the curve</source>
+        <translation>l’application 1 a pour rayon spectral %1, l’application 2 %2&#x202f;; %3 niveaux réduisent chaque morceau à 1/1000 de la courbe</translation>
+    </message>
+    <message>
+        <source>. u = %1 is close to %2: map %3 is nearly non-contractive and the pieces are very unequal (random iteration, or u nearer 1/2, converges faster)</source>
+        <translation>. u = %1 est proche de %2&#xa0;: l’application %3 est presque non contractante et les morceaux sont très inégaux (l’itération aléatoire, ou un u plus proche de 1/2, converge plus vite)</translation>
+    </message>
+    <message>
+        <source>. Map %1 is not a Euclidean contraction (||A||_2 = %2) but is eventually contractive, as 002 §5 allows</source>
+        <translation>. L’application %1 n’est pas une contraction euclidienne (||A||_2 = %2) mais elle est contractante à terme, ce que 002 §5 autorise</translation>
+    </message>
+    <message>
+        <source>a combined IFS needs at least one curve</source>
+        <translation>un IFS combiné demande au moins une courbe</translation>
+    </message>
+    <message>
+        <source>curve %1</source>
+        <translation>courbe %1</translation>
+    </message>
+    <message>
+        <source>%1: the combined IFS of 002 §6 acts on the plane, control points need 2 coordinates</source>
+        <translation>%1&#xa0;: l’IFS combiné de 002 §6 agit sur le plan, les points de contrôle doivent avoir 2 coordonnées</translation>
+    </message>
+    <message>
+        <source>%1: its maps do not act on the plane (%2), so they cannot be combined with the other curves&apos; maps</source>
+        <translation>%1&#xa0;: ses applications n’agissent pas sur le plan (%2), elles ne peuvent donc pas être combinées avec celles des autres courbes</translation>
+    </message>
+    <message>
+        <source>a union needs at least one curve</source>
+        <translation>une union demande au moins une courbe</translation>
+    </message>
+    <message>
+        <source>arc &apos;%1&apos; (%2 -&gt; %3)</source>
+        <translation>arc «&#xa0;%1&#xa0;» (%2 -&gt; %3)</translation>
+    </message>
+    <message>
+        <source>the automaton has no states</source>
+        <translation>l’automate n’a aucun état</translation>
+    </message>
+    <message>
+        <source>state &apos;%1&apos; has no control points</source>
+        <translation>l’état «&#xa0;%1&#xa0;» n’a pas de points de contrôle</translation>
+    </message>
+    <message>
+        <source>state &apos;%1&apos;: control points must be 2D or 3D, got %2 coordinates</source>
+        <translation>état «&#xa0;%1&#xa0;»&#xa0;: les points de contrôle doivent être en 2D ou en 3D (reçu&#xa0;: %2 coordonnées)</translation>
+    </message>
+    <message>
+        <source>control points of state &apos;%1&apos;</source>
+        <translation>points de contrôle de l’état «&#xa0;%1&#xa0;»</translation>
+    </message>
+    <message>
+        <source>at most 255 arcs are supported (addresses are bytes), got %1</source>
+        <translation>255 arcs au plus sont pris en charge (les adresses sont des octets) (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>arc &apos;%1&apos; connects states %2 -&gt; %3, but the automaton has %4 states</source>
+        <translation>l’arc «&#xa0;%1&#xa0;» relie les états %2 -&gt; %3, mais l’automate a %4 états</translation>
+    </message>
+    <message>
+        <source>%1 has a %2 x %3 matrix; it must be %4 x %5 (row convention: rows = dimension of &apos;%6&apos;, columns = dimension of &apos;%7&apos;)</source>
+        <translation>%1 a une matrice %2 x %3 au lieu de %4 x %5 (convention par lignes&#xa0;: lignes = dimension de «&#xa0;%6&#xa0;», colonnes = dimension de «&#xa0;%7&#xa0;»)</translation>
+    </message>
+    <message>
+        <source>row %1 of %2 sums to %3, not 1: the map does not keep barycentric coordinates summing to 1</source>
+        <translation>%2, ligne %1&#xa0;: la somme vaut %3, et non 1&#xa0;: l’application ne conserve pas la somme 1 des coordonnées barycentriques</translation>
+    </message>
+    <message>
+        <source>the weight of %1 must be a finite number &gt; 0, got %2</source>
+        <translation>le poids de %1 doit être un nombre fini &gt; 0 (reçu&#xa0;: %2)</translation>
+    </message>
+    <message>
+        <source>state &apos;%1&apos; has no outgoing arc: its attractor would be empty</source>
+        <translation>l’état «&#xa0;%1&#xa0;» n’a pas d’arc sortant&#xa0;: son attracteur serait vide</translation>
+    </message>
+    <message>
+        <source>the barycentric part needs a non-empty square matrix</source>
+        <translation>la partie barycentrique demande une matrice carrée non vide</translation>
+    </message>
+    <message>
+        <source>cycle %1 has spectral radius %2 &gt;= 1 on the barycentric directions: repeating it does not contract, so the automaton has no attractor</source>
+        <translation>le cycle %1 a un rayon spectral %2 &gt;= 1 sur les directions barycentriques&#xa0;: sa répétition n’est pas contractante, donc l’automate n’a pas d’attracteur</translation>
+    </message>
+    <message>
+        <source>a fixed point needs a non-empty square matrix</source>
+        <translation>un point fixe demande une matrice carrée non vide</translation>
+    </message>
+    <message>
+        <source>the fixed point is not unique: 1 is a repeated eigenvalue</source>
+        <translation>le point fixe n’est pas unique&#xa0;: 1 est une valeur propre multiple</translation>
+    </message>
+    <message>
+        <source>state %1 does not exist: the automaton has %2 states</source>
+        <translation>l’état %1 n’existe pas&#xa0;: l’automate a %2 états</translation>
+    </message>
+    <message>
+        <source>one start set per state is needed: the automaton has %1 states, got %2 start sets</source>
+        <translation>il faut un ensemble initial par état&#xa0;: l’automate a %1 états (reçu&#xa0;: %2 ensembles initiaux)</translation>
+    </message>
+    <message>
+        <source>start set of state &apos;%1&apos;</source>
+        <translation>ensemble initial de l’état «&#xa0;%1&#xa0;»</translation>
+    </message>
+    <message>
+        <source>%1 is empty</source>
+        <translation>%1 est vide</translation>
+    </message>
+    <message>
+        <source>%1 has %2 coordinates, the state&apos;s space has %3</source>
+        <translation>%1 a %2 coordonnées, l’espace de l’état en a %3</translation>
+    </message>
+    <message>
+        <source>at most 4e9 random-iteration samples, got %1</source>
+        <translation>4e9 échantillons d’itération aléatoire au plus (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>the affine map&apos;s translation does not match its linear part</source>
+        <translation>la translation de l’application affine ne correspond pas à sa partie linéaire</translation>
+    </message>
+    <message>
+        <source>a barycentric frame in %1D needs %2 points, got a %3 x %4 matrix</source>
+        <translation>un repère barycentrique en %1D demande %2 points (reçu&#xa0;: une matrice %3 x %4)</translation>
+    </message>
+    <message>
+        <source>domain frame</source>
+        <translation>repère de départ</translation>
+    </message>
+    <message>
+        <source>image frame</source>
+        <translation>repère d’arrivée</translation>
+    </message>
+    <message>
+        <source>affine map</source>
+        <translation>application affine</translation>
+    </message>
+    <message>
+        <source>the image frame&apos;s points are affinely dependent (collinear in 2D)</source>
+        <translation>les points du repère d’arrivée sont affinement dépendants (alignés en 2D)</translation>
+    </message>
+    <message>
+        <source>map %1 does not act on the same space as map 1</source>
+        <translation>l’application %1 n’agit pas sur le même espace que l’application 1</translation>
+    </message>
+    <message>
+        <source>map %1 (linear part)</source>
+        <translation>application %1 (partie linéaire)</translation>
+    </message>
+    <message>
+        <source>map %1 (translation)</source>
+        <translation>application %1 (translation)</translation>
+    </message>
+    <message>
+        <source>view %1 does not fit the IFS space</source>
+        <translation>la vue %1 ne correspond pas à l’espace de l’IFS</translation>
+    </message>
+    <message>
+        <source>the IFS has %1 maps but %2 probabilities</source>
+        <translation>l’IFS a %1 applications mais %2 probabilités</translation>
+    </message>
+    <message>
+        <source>probability of map %1 must be a finite number &gt;= 0</source>
+        <translation>la probabilité de l’application %1 doit être un nombre fini &gt;= 0</translation>
+    </message>
+    <message>
+        <source>the map probabilities sum to 0</source>
+        <translation>la somme des probabilités des applications est nulle</translation>
+    </message>
+    <message>
+        <source>the lifting needs %1 distinct free rows of the control points</source>
+        <translation>le relèvement demande %1 lignes libres distinctes des points de contrôle</translation>
+    </message>
+    <message>
+        <source> and </source>
+        <translation> et </translation>
+    </message>
+    <message>
+        <source>the lifted matrix P is nearly singular (reciprocal condition number %1): M_i = P^-1 S_i P lose about %2 of 16 significant digits; control points %3 are almost collinear</source>
+        <translation>la matrice relevée P est presque singulière (inverse du conditionnement %1)&#xa0;: M_i = P^-1 S_i P perd environ %2 des 16 chiffres significatifs&#x202f;; les points de contrôle %3 sont presque alignés</translation>
+    </message>
+    <message>
+        <source>the lifted matrix P is nearly singular (reciprocal condition number %1): M_i = P^-1 S_i P lose about %2 of 16 significant digits; control points %3 are almost coplanar</source>
+        <translation>la matrice relevée P est presque singulière (inverse du conditionnement %1)&#xa0;: M_i = P^-1 S_i P perd environ %2 des 16 chiffres significatifs&#x202f;; les points de contrôle %3 sont presque coplanaires</translation>
+    </message>
+    <message>
+        <source>control points %1 are collinear, so the lifted matrix P of 000 §2 is singular and M_i = P^-1 S_i P is not defined; the attractor is computed in barycentric form</source>
+        <translation>les points de contrôle %1 sont alignés, donc la matrice relevée P de 000 §2 est singulière et M_i = P^-1 S_i P n’est pas définie&#x202f;; l’attracteur est calculé sous forme barycentrique</translation>
+    </message>
+    <message>
+        <source>control points %1 are coplanar, so the lifted matrix P of 000 §2 is singular and M_i = P^-1 S_i P is not defined; the attractor is computed in barycentric form</source>
+        <translation>les points de contrôle %1 sont coplanaires, donc la matrice relevée P de 000 §2 est singulière et M_i = P^-1 S_i P n’est pas définie&#x202f;; l’attracteur est calculé sous forme barycentrique</translation>
+    </message>
+    <message>
+        <source>control points %1 are affinely dependent, so the lifted matrix P of 000 §2 is singular and M_i = P^-1 S_i P is not defined; the attractor is computed in barycentric form</source>
+        <translation>les points de contrôle %1 sont affinement dépendants, donc la matrice relevée P de 000 §2 est singulière et M_i = P^-1 S_i P n’est pas définie&#x202f;; l’attracteur est calculé sous forme barycentrique</translation>
+    </message>
+    <message>
+        <source>matrix S_%1 does not match %2 control points</source>
+        <translation>la matrice S_%1 ne correspond pas à %2 points de contrôle</translation>
+    </message>
+    <message>
+        <source>matrix S_%1</source>
+        <translation>matrice S_%1</translation>
+    </message>
+    <message>
+        <source>start points must have %1 (plane) or %2 (barycentric) coordinates</source>
+        <translation>les points initiaux doivent avoir %1 coordonnées (plan) ou %2 coordonnées (barycentriques)</translation>
+    </message>
+    <message>
+        <source>start points must have %1 (plane) or %2 (lifted) coordinates</source>
+        <translation>les points initiaux doivent avoir %1 coordonnées (plan) ou %2 coordonnées (espace relevé)</translation>
+    </message>
+    <message>
+        <source>a union needs at least one component</source>
+        <translation>une union demande au moins une composante</translation>
+    </message>
+    <message>
+        <source>component %1 has %2 maps, component 1 has %3: a block union needs equally many</source>
+        <translation>la composante %1 a %2 applications, la composante 1 en a %3&#xa0;: une union par blocs en demande autant pour chacune</translation>
+    </message>
+    <message>
+        <source>probabilities must be finite and non-negative</source>
+        <translation>les probabilités doivent être finies et positives ou nulles</translation>
+    </message>
+    <message>
+        <source>the probabilities sum to zero</source>
+        <translation>la somme des probabilités est nulle</translation>
+    </message>
+    <message>
+        <source>the lattice lists %1 coordinates for %2 control points</source>
+        <translation>la grille donne %1 coordonnées pour %2 points de contrôle</translation>
+    </message>
+    <message>
+        <source>a map is listed twice among the maps used</source>
+        <translation>une application figure deux fois parmi les applications utilisées</translation>
+    </message>
+    <message>
+        <source>map index %1 is out of range: the %2 layout has maps 0 to %3</source>
+        <translation>l’indice d’application %1 est hors limites&#xa0;: la disposition %2 a les applications 0 à %3</translation>
+    </message>
+</context>
+<context>
+    <name>awb::render</name>
+    <message>
+        <source>raster size must be between 1x1 and 32768x32768, got %1x%2</source>
+        <translation>la taille de la trame doit être comprise entre 1x1 et 32768x32768 (reçu&#xa0;: %1x%2)</translation>
+    </message>
+    <message>
+        <source>supersampling must be 1 to 4 cells per pixel side, got %1</source>
+        <translation>le suréchantillonnage doit être de 1 à 4 cellules par côté de pixel (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>the supersampled raster would hold more than 1.2e9 cells</source>
+        <translation>la trame suréchantillonnée contiendrait plus de 1,2e9 cellules</translation>
+    </message>
+    <message>
+        <source>raster world rectangle is empty or not finite</source>
+        <translation>le rectangle du monde de la trame est vide ou non fini</translation>
+    </message>
+    <message>
+        <source>cannot merge density images of different sizes or modes</source>
+        <translation>impossible de fusionner des images de densité de tailles ou de modes différents</translation>
+    </message>
+    <message>
+        <source>density image does not match its frame</source>
+        <translation>l’image de densité ne correspond pas à son cadre</translation>
+    </message>
+    <message>
+        <source>a view does not fit the IFS space</source>
+        <translation>une vue ne correspond pas à l’espace de l’IFS</translation>
+    </message>
+    <message>
+        <source>there is no IFS to draw</source>
+        <translation>il n’y a aucun IFS à tracer</translation>
+    </message>
+    <message>
+        <source>the IFS has no view to draw it with</source>
+        <translation>l’IFS n’a aucune vue avec laquelle le tracer</translation>
+    </message>
+    <message>
+        <source>the colour table does not cover the address labels</source>
+        <translation>la table des couleurs ne couvre pas les étiquettes d’adresse</translation>
+    </message>
+</context>
+<context>
+    <name>awb::schemes</name>
+    <message>
+        <source>%1 is not a finite number</source>
+        <translation>%1 n’est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>%1 = %2 &lt; 1</source>
+        <translation>%1 = %2 &lt; 1</translation>
+    </message>
+    <message>
+        <source>%1 = %2: on the circle %1 = 1, so %3 is an isometry, not a contraction</source>
+        <translation>%1 = %2&#xa0;: sur le cercle %1 = 1, donc %3 est une isométrie, pas une contraction</translation>
+    </message>
+    <message>
+        <source>%1 = %2 &gt; 1, so %3 expands</source>
+        <translation>%1 = %2 &gt; 1, donc %3 est dilatante</translation>
+    </message>
+    <message>
+        <source>y must be a finite nonzero number (t = 1/2 + i y)</source>
+        <translation>y doit être un nombre fini non nul (t = 1/2 + i y)</translation>
+    </message>
+    <message>
+        <source>t = 1/2 + i y with y = %1: %2</source>
+        <translation>t = 1/2 + i y avec y = %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>depth must be between 1 and 24, got %1</source>
+        <translation>la profondeur doit être comprise entre 1 et 24 (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>the subdivision parameter t</source>
+        <translation>le paramètre de subdivision t</translation>
+    </message>
+    <message>
+        <source>t = %1: %2, %3. t lies inside both discs: the IFS is hyperbolic (contraction factor %4) and its attractor is a connected curve (Theorem 3.7.2)</source>
+        <translation>t = %1&#xa0;: %2, %3. t est à l’intérieur des deux disques&#xa0;: l’IFS est hyperbolique (facteur de contraction %4) et son attracteur est une courbe connexe (théorème 3.7.2)</translation>
+    </message>
+    <message>
+        <source>t = %1: %2, %3. t lies outside both discs |t| &lt; 1 and |1 - t| &lt; 1: the IFS is not hyperbolic and has no attractor</source>
+        <translation>t = %1&#xa0;: %2, %3. t est à l’extérieur des deux disques |t| &lt; 1 et |1 - t| &lt; 1&#xa0;: l’IFS n’est pas hyperbolique et n’a pas d’attracteur</translation>
+    </message>
+    <message>
+        <source>t = %1: %2, %3. t lies outside the disc %4: the IFS is not hyperbolic and has no attractor</source>
+        <translation>t = %1&#xa0;: %2, %3. t est à l’extérieur du disque %4&#xa0;: l’IFS n’est pas hyperbolique et n’a pas d’attracteur</translation>
+    </message>
+    <message>
+        <source>a Bézier curve needs at least 2 control points (degree &gt;= 1), got %1</source>
+        <translation>une courbe de Bézier demande au moins 2 points de contrôle (degré &gt;= 1) (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>control points</source>
+        <translation>points de contrôle</translation>
+    </message>
+    <message>
+        <source>all control points coincide: the curve is a single point and the lifted matrix of 000 §2 is singular</source>
+        <translation>tous les points de contrôle sont confondus&#xa0;: la courbe est réduite à un point et la matrice relevée de 000 §2 est singulière</translation>
+    </message>
+    <message>
+        <source>depth must be between 0 and 24, got %1</source>
+        <translation>la profondeur doit être comprise entre 0 et 24 (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>the Takagi function needs a finite x</source>
+        <translation>la fonction de Takagi demande un x fini</translation>
+    </message>
+    <message>
+        <source>the number of Takagi terms must be &gt;= 0</source>
+        <translation>le nombre de termes de Takagi doit être &gt;= 0</translation>
+    </message>
+    <message>
+        <source>binary codes longer than 60 digits are not supported</source>
+        <translation>les codes binaires de plus de 60 chiffres ne sont pas pris en charge</translation>
+    </message>
+    <message>
+        <source>a binary code has digits 0 and 1 only (digit %1 is %2)</source>
+        <translation>un code binaire ne contient que les chiffres 0 et 1 (le chiffre %1 vaut %2)</translation>
+    </message>
+    <message>
+        <source>Takagi image: needs at least 2 control points, got %1</source>
+        <translation>image de Takagi&#xa0;: il faut au moins 2 points de contrôle (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>Takagi image: control points and y must be finite</source>
+        <translation>image de Takagi&#xa0;: les points de contrôle et y doivent être finis</translation>
+    </message>
+    <message>
+        <source>Takagi image: depth %1 is outside 1..20</source>
+        <translation>image de Takagi&#xa0;: la profondeur %1 est hors de 1..20</translation>
+    </message>
+    <message>
+        <source>control points must have 2 or 3 coordinates, got %1</source>
+        <translation>les points de contrôle doivent avoir 2 ou 3 coordonnées (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>%1 control points are too few: affine combinations in %2D need at least %3 that are not collinear</source>
+        <translation>%1 points de contrôle, c’est trop peu&#xa0;: les combinaisons affines en %2D demandent au moins %3 points non alignés</translation>
+    </message>
+    <message>
+        <source>%1 control points are too few: affine combinations in %2D need at least %3 that are not coplanar</source>
+        <translation>%1 points de contrôle, c’est trop peu&#xa0;: les combinaisons affines en %2D demandent au moins %3 points non coplanaires</translation>
+    </message>
+    <message>
+        <source>the control points are all collinear: they must span the plane to write every image point as their affine combination (000 eq. (5))</source>
+        <translation>les points de contrôle sont tous alignés&#xa0;: ils doivent engendrer le plan pour que tout point image s’écrive comme leur combinaison affine (000 éq. (5))</translation>
+    </message>
+    <message>
+        <source>the control points are all coplanar: they must span space to write every image point as their affine combination (000 eq. (5))</source>
+        <translation>les points de contrôle sont tous coplanaires&#xa0;: ils doivent engendrer l’espace pour que tout point image s’écrive comme leur combinaison affine (000 éq. (5))</translation>
+    </message>
+    <message>
+        <source>the point has %1 coordinates, the control points have %2</source>
+        <translation>le point a %1 coordonnées, les points de contrôle en ont %2</translation>
+    </message>
+    <message>
+        <source>point</source>
+        <translation>point</translation>
+    </message>
+    <message>
+        <source>the IFS has no maps</source>
+        <translation>l’IFS n’a aucune application</translation>
+    </message>
+    <message>
+        <source>map f_%1 is not a map of %2D points like the control points</source>
+        <translation>l’application f_%1 n’est pas une application de points %2D comme les points de contrôle</translation>
+    </message>
+    <message>
+        <source>map f_%1 (linear part)</source>
+        <translation>application f_%1 (partie linéaire)</translation>
+    </message>
+    <message>
+        <source>map f_%1 (translation)</source>
+        <translation>application f_%1 (translation)</translation>
+    </message>
+    <message>
+        <source>Koch curve with control points</source>
+        <translation>Courbe de Koch à points de contrôle</translation>
+    </message>
+    <message>
+        <source>Sierpinski gasket with control points</source>
+        <translation>Triangle de Sierpinski à points de contrôle</translation>
+    </message>
+    <message>
+        <source>%1 needs %2 control points in the plane, got %3 with %4 coordinates</source>
+        <translation>%1 demande %2 points de contrôle dans le plan (reçu&#xa0;: %3 points à %4 coordonnées)</translation>
+    </message>
+    <message>
+        <source>Bézier degree must be at least 1</source>
+        <translation>le degré d’une courbe de Bézier doit être au moins 1</translation>
+    </message>
+    <message>
+        <source>B-spline degree must be at least 1</source>
+        <translation>le degré d’une B-spline doit être au moins 1</translation>
+    </message>
+    <message>
+        <source>a B-spline of degree %1 needs at least %2 control points (%3 knots), got %4 knots</source>
+        <translation>une B-spline de degré %1 demande au moins %2 points de contrôle (%3 nœuds) (reçu&#xa0;: %4 nœuds)</translation>
+    </message>
+    <message>
+        <source>B-spline knot %1 is not a finite number</source>
+        <translation>le nœud %1 de la B-spline n’est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>B-spline knots must be nondecreasing (knot %1)</source>
+        <translation>les nœuds de la B-spline doivent être croissants au sens large (nœud %1)</translation>
+    </message>
+    <message>
+        <source>B-spline knot vector has an empty domain</source>
+        <translation>le vecteur nodal de la B-spline a un domaine vide</translation>
+    </message>
+    <message>
+        <source>an end-interpolating B-spline of degree %1 needs at least %2 control points</source>
+        <translation>une B-spline interpolant les extrémités de degré %1 demande au moins %2 points de contrôle</translation>
+    </message>
+    <message>
+        <source>B-spline needs %1 control points, got %2</source>
+        <translation>la B-spline demande %1 points de contrôle (reçu&#xa0;: %2)</translation>
+    </message>
+    <message>
+        <source>scheme %1: the dilation must be at least 2</source>
+        <translation>schéma %1&#xa0;: la dilatation doit être au moins 2</translation>
+    </message>
+    <message>
+        <source>scheme %1: the mask holds a non-finite weight</source>
+        <translation>schéma %1&#xa0;: le masque contient un poids non fini</translation>
+    </message>
+    <message>
+        <source>scheme %1: the mask is empty</source>
+        <translation>schéma %1&#xa0;: le masque est vide</translation>
+    </message>
+    <message>
+        <source>scheme %1: the mask entries of class (%2, %3) mod %4 sum to %5, not 1</source>
+        <translation>schéma %1&#xa0;: les coefficients du masque de la classe (%2, %3) mod %4 ont pour somme %5, et non 1</translation>
+    </message>
+    <message>
+        <source>scheme %1: local subdivision matrix not closed</source>
+        <translation>schéma %1&#xa0;: matrice de subdivision locale non fermée</translation>
+    </message>
+    <message>
+        <source>scheme %1: the local subdivision matrix has no eigenvalue 1</source>
+        <translation>schéma %1&#xa0;: la matrice de subdivision locale n’a pas la valeur propre 1</translation>
+    </message>
+    <message>
+        <source>scheme %1: the limit eigenvector sums to 0</source>
+        <translation>schéma %1&#xa0;: la somme des composantes du vecteur propre limite est nulle</translation>
+    </message>
+    <message>
+        <source>box spline %1: its directions sum to an odd vector, so the mask has no lattice-point centre</source>
+        <translation>box-spline %1&#xa0;: la somme de ses directions est un vecteur impair, donc le masque n’a pas de centre sur un point de la grille</translation>
+    </message>
+    <message>
+        <source>bicubic B-spline</source>
+        <translation>B-spline bicubique</translation>
+    </message>
+    <message>
+        <source>Loop (three-direction quartic box spline)</source>
+        <translation>Loop (box-spline quartique à trois directions)</translation>
+    </message>
+    <message>
+        <source>Kobbelt √3 (two rounds)</source>
+        <translation>Kobbelt √3 (deux passes)</translation>
+    </message>
+    <message>
+        <source>positive (edge rotated 90° counter-clockwise)</source>
+        <translation>positive (arête tournée de 90° dans le sens trigonométrique)</translation>
+    </message>
+    <message>
+        <source>negative (edge rotated 90° clockwise)</source>
+        <translation>négative (arête tournée de 90° dans le sens horaire)</translation>
+    </message>
+    <message>
+        <source>constant</source>
+        <comment>β sign</comment>
+        <translation>constant</translation>
+    </message>
+    <message>
+        <source>Positive normal: the edge vector P_i P_{i+1} rotated 90° counter-clockwise; negative: rotated clockwise. d_i = |P_i P_{i+1}| n_i. In the β signs (-1)^i, (-1)^(k+i), (-1)^(k+1), k is the level of the polygon being subdivided (the first step has k = 0) and i the 0-based index of the edge.</source>
+        <translation>Normale positive&#xa0;: le vecteur d’arête P_i P_{i+1} tourné de 90° dans le sens trigonométrique&#x202f;; négative&#xa0;: tourné dans le sens horaire. d_i = |P_i P_{i+1}| n_i. Dans les signes de β (-1)^i, (-1)^(k+i), (-1)^(k+1), k est le niveau du polygone en cours de subdivision (la première étape a k = 0) et i l’indice de l’arête, numérotée à partir de 0.</translation>
+    </message>
+    <message>
+        <source>p = %1: the normal-vector scheme needs p &gt;= 2 rules, one (α_j, β_j) pair each</source>
+        <translation>p = %1&#xa0;: le schéma à vecteurs normaux demande p &gt;= 2 règles, chacune avec une paire (α_j, β_j)</translation>
+    </message>
+    <message>
+        <source>β has %1 values but α has %2: eq. (1) needs one (α_j, β_j) pair per rule j = 0..p-1</source>
+        <translation>β a %1 valeurs mais α en a %2&#xa0;: l’éq. (1) demande une paire (α_j, β_j) par règle j = 0..p-1</translation>
+    </message>
+    <message>
+        <source>α_%1 is not a finite number</source>
+        <translation>α_%1 n’est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>β_%1 is not a finite number</source>
+        <translation>β_%1 n’est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>%1 β signs given for p = %2 rules: give none, one for all rules, or one per rule</source>
+        <translation>%1 signes de β donnés pour p = %2 règles&#xa0;: n’en donnez aucun, un pour toutes les règles, ou un par règle</translation>
+    </message>
+    <message>
+        <source>p = %1, α = %2, β = %3, β signs (%4), normals %5</source>
+        <translation>p = %1, α = %2, β = %3, signes de β (%4), normales %5</translation>
+    </message>
+    <message>
+        <source>the normal-vector scheme works in the plane: control points need 2 coordinates, got %1</source>
+        <translation>le schéma à vecteurs normaux travaille dans le plan&#xa0;: les points de contrôle doivent avoir 2 coordonnées (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>control polygon</source>
+        <translation>polygone de contrôle</translation>
+    </message>
+    <message>
+        <source>a closed control polygon needs at least %1 points, got %2</source>
+        <translation>un polygone de contrôle fermé demande au moins %1 points (reçu&#xa0;: %2)</translation>
+    </message>
+    <message>
+        <source>an open control polygon needs at least %1 points, got %2</source>
+        <translation>un polygone de contrôle ouvert demande au moins %1 points (reçu&#xa0;: %2)</translation>
+    </message>
+    <message>
+        <source>open control polygons need α_0 = β_0 = 0: rule 0 at the last point (i = p^k n in eq. (1)) would use a point after the end; close the polygon instead</source>
+        <translation>les polygones de contrôle ouverts exigent α_0 = β_0 = 0&#xa0;: la règle 0 au dernier point (i = p^k n dans l’éq. (1)) utiliserait un point situé après la fin&#x202f;; fermez plutôt le polygone</translation>
+    </message>
+    <message>
+        <source>the number of subdivision steps cannot be negative, got %1</source>
+        <translation>le nombre d’étapes de subdivision ne peut pas être négatif (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>the subdivision level cannot be negative, got %1</source>
+        <translation>le niveau de subdivision ne peut pas être négatif (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>%1 subdivision steps of a polygon with %2 edges would make %3 points (at most %4); use fewer steps</source>
+        <translation>%1 étapes de subdivision d’un polygone à %2 arêtes produiraient %3 points (au plus %4)&#x202f;; utilisez moins d’étapes</translation>
+    </message>
+    <message>
+        <source>convergent: every edge shrinks by a factor of at most %1 per step, so ||F^{k+1} - F^k|| &lt;= %2 * %1^k * (longest initial edge) and F^k is a Cauchy sequence (the argument of 001 Theorem 1); non-rectifiable: the polygon length grows by a factor of at least %3 per step (001 Theorem 2)</source>
+        <translation>convergent&#xa0;: chaque arête rétrécit d’un facteur d’au plus %1 par étape, donc ||F^{k+1} - F^k|| &lt;= %2 * %1^k * (plus longue arête initiale) et F^k est une suite de Cauchy (l’argument du théorème 1 de 001)&#x202f;; non rectifiable&#xa0;: la longueur du polygone croît d’un facteur d’au moins %3 par étape (théorème 2 de 001)</translation>
+    </message>
+    <message>
+        <source>convergent: every edge shrinks by a factor of at most %1 per step, so ||F^{k+1} - F^k|| &lt;= %2 * %1^k * (longest initial edge) and F^k is a Cauchy sequence (the argument of 001 Theorem 1)</source>
+        <translation>convergent&#xa0;: chaque arête rétrécit d’un facteur d’au plus %1 par étape, donc ||F^{k+1} - F^k|| &lt;= %2 * %1^k * (plus longue arête initiale) et F^k est une suite de Cauchy (l’argument du théorème 1 de 001)</translation>
+    </message>
+    <message>
+        <source>not decided: the one-step edge bound is %1 &gt;= 1, so the argument of 001 Theorem 1 does not apply (see the measured edge lengths per level)</source>
+        <translation>non décidé&#xa0;: la borne sur les arêtes en une étape vaut %1 &gt;= 1, donc l’argument du théorème 1 de 001 ne s’applique pas (voir les longueurs d’arêtes mesurées par niveau)</translation>
+    </message>
+    <message>
+        <source>α_0 and β_0 are not both 0: the new edge across each old vertex joins two old edges and is not the image of one edge, so no IFS of one similarity per new edge exists</source>
+        <translation>α_0 et β_0 ne sont pas tous deux nuls&#xa0;: la nouvelle arête qui traverse chaque ancien sommet relie deux anciennes arêtes et n’est pas l’image d’une seule arête, donc il n’existe pas d’IFS à une similitude par nouvelle arête</translation>
+    </message>
+    <message>
+        <source>new edge %1 of the unit edge has length %2 &gt;= 1: no map would contract</source>
+        <translation>la nouvelle arête %1 de l’arête unité a pour longueur %2 &gt;= 1&#xa0;: aucune application ne serait contractante</translation>
+    </message>
+    <message>
+        <source>no IFS of %1 similarities (each new edge taken forward or reversed, plain or mirrored: %2 patterns) reproduces the polygons of the first %3 steps; the β sign changes with the level, so the rules repeat only every two steps (an IFS would need p^2 maps)</source>
+        <translation>aucun IFS de %1 similitudes (chaque nouvelle arête parcourue dans un sens ou dans l’autre, telle quelle ou en miroir&#xa0;: %2 combinaisons) ne reproduit les polygones des %3 premières étapes&#x202f;; le signe de β change avec le niveau, donc les règles ne se répètent que toutes les deux étapes (un IFS demanderait p^2 applications)</translation>
+    </message>
+    <message>
+        <source>no IFS of %1 similarities (each new edge taken forward or reversed, plain or mirrored: %2 patterns) reproduces the polygons of the first %3 steps</source>
+        <translation>aucun IFS de %1 similitudes (chaque nouvelle arête parcourue dans un sens ou dans l’autre, telle quelle ou en miroir&#xa0;: %2 combinaisons) ne reproduit les polygones des %3 premières étapes</translation>
+    </message>
+    <message>
+        <source>no equivalent IFS: %1</source>
+        <translation>pas d’IFS équivalent&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>edge %1 of the control polygon is subdivided with rules no similarity copy of the unit edge&apos;s limit reproduces</source>
+        <translation>l’arête %1 du polygone de contrôle est subdivisée avec des règles qu’aucune copie semblable de la limite de l’arête unité ne reproduit</translation>
+    </message>
+    <message>
+        <source>Lévy C curve</source>
+        <translation>Courbe C de Lévy</translation>
+    </message>
+    <message>
+        <source>binary interpolatory; new point at the apex of a right isosceles triangle</source>
+        <translation>binaire interpolant&#x202f;; nouveau point au sommet d’un triangle rectangle isocèle</translation>
+    </message>
+    <message>
+        <source>Dragon curve</source>
+        <translation>Courbe du dragon</translation>
+    </message>
+    <message>
+        <source>scheme (2) with β_1 = (-1)^i / 2: the bump alternates sides along the curve</source>
+        <translation>schéma (2) avec β_1 = (-1)^i / 2&#xa0;: la bosse change de côté le long de la courbe</translation>
+    </message>
+    <message>
+        <source>Sierpiński gasket (arrowhead curve)</source>
+        <translation>Triangle de Sierpiński (courbe en pointe de flèche)</translation>
+    </message>
+    <message>
+        <source>non-stationary and non-uniform, as in the paper: β_1 = β_2 = (-1)^(k+i) √3/4 flips with the level k and the edge i; the polygons tend to the gasket</source>
+        <translation>non stationnaire et non uniforme, comme dans l’article&#xa0;: β_1 = β_2 = (-1)^(k+i) √3/4 change de signe avec le niveau k et l’arête i&#x202f;; les polygones tendent vers le triangle de Sierpiński</translation>
+    </message>
+    <message>
+        <source>Koch curve</source>
+        <translation>Courbe de Koch</translation>
+    </message>
+    <message>
+        <source>quaternary interpolatory; the limit is the classic Koch curve</source>
+        <translation>quaternaire interpolant&#x202f;; la limite est la courbe de Koch classique</translation>
+    </message>
+    <message>
+        <source>Koch snowflake</source>
+        <translation>Flocon de Koch</translation>
+    </message>
+    <message>
+        <source>the triangle traversed counter-clockwise with negative normals, so every bump points outwards (NOTES.md)</source>
+        <translation>le triangle parcouru dans le sens trigonométrique avec des normales négatives, de sorte que chaque bosse pointe vers l’extérieur (NOTES.md)</translation>
+    </message>
+    <message>
+        <source>Tigerhead-like curve</source>
+        <translation>Courbe en tête de tigre</translation>
+    </message>
+    <message>
+        <source>α = (0, -1/4, 1/2, 5/4), β = (0, 1/3, 1/2, 1/3): rules 1 and 3 lie outside the edge, so the curve overlaps itself</source>
+        <translation>α = (0, -1/4, 1/2, 5/4), β = (0, 1/3, 1/2, 1/3)&#xa0;: les règles 1 et 3 tombent hors de l’arête, donc la courbe se recouvre elle-même</translation>
+    </message>
+    <message>
+        <source>Human-like curve</source>
+        <translation>Courbe humanoïde</translation>
+    </message>
+    <message>
+        <source>β = (-1)^(k+1) (0, 1/3, 1/2, 1/3): the bumps point down at the first step (k = 0) and flip at every level</source>
+        <translation>β = (-1)^(k+1) (0, 1/3, 1/2, 1/3)&#xa0;: les bosses pointent vers le bas à la première étape (k = 0) et s’inversent à chaque niveau</translation>
+    </message>
+    <message>
+        <source>Approximating curve</source>
+        <translation>Courbe approximante</translation>
+    </message>
+    <message>
+        <source>α_0 = -1/2 moves the old points, so the polygon must be closed; the text does not give the quadrilateral of Fig. 3(c): a unit square traversed counter-clockwise is assumed</source>
+        <translation>α_0 = -1/2 déplace les anciens points, donc le polygone doit être fermé&#x202f;; le texte ne donne pas le quadrilatère de la fig. 3(c)&#xa0;: on suppose un carré unité parcouru dans le sens trigonométrique</translation>
+    </message>
+    <message>
+        <source>Crown-like curve</source>
+        <translation>Courbe en couronne</translation>
+    </message>
+    <message>
+        <source>6-ary interpolatory</source>
+        <translation>6-aire interpolant</translation>
+    </message>
+    <message>
+        <source>7-ary square-wave curve</source>
+        <translation>Courbe en créneaux 7-aire</translation>
+    </message>
+    <message>
+        <source>the paper calls it the Minkowski curve; it equals the Minkowski sausage only at level 1 (its middle edge has length 1/2 and is replaced by a half-size copy), so it is a different curve of similarity dimension log_2 3, not 1.5</source>
+        <translation>l’article l’appelle courbe de Minkowski&#x202f;; elle ne coïncide avec la saucisse de Minkowski qu’au niveau 1 (son arête centrale a pour longueur 1/2 et est remplacée par une copie de taille moitié)&#xa0;: c’est donc une autre courbe, de dimension de similitude log_2 3, et non 1,5</translation>
+    </message>
+    <message>
+        <source>unknown normal-vector preset %1</source>
+        <translation>préréglage à vecteurs normaux %1 inconnu</translation>
+    </message>
+    <message>
+        <source>%1 needs exactly %2 control points, got %3</source>
+        <translation>%1 demande exactement %2 points de contrôle (reçu&#xa0;: %3)</translation>
+    </message>
+    <message>
+        <source>%1 needs at least %2 control points, got %3</source>
+        <translation>%1 demande au moins %2 points de contrôle (reçu&#xa0;: %3)</translation>
+    </message>
+    <message>
+        <source>%1: the arity of a scheme must be at least 2, got %2</source>
+        <translation>%1&#xa0;: l’arité d’un schéma doit être au moins 2 (reçu&#xa0;: %2)</translation>
+    </message>
+    <message>
+        <source>%1: a scheme of arity %2 needs %2 rules, got %3</source>
+        <translation>%1&#xa0;: un schéma d’arité %2 demande %2 règles (reçu&#xa0;: %3)</translation>
+    </message>
+    <message>
+        <source>%1: rule %2 has no weights</source>
+        <translation>%1&#xa0;: la règle %2 n’a pas de poids</translation>
+    </message>
+    <message>
+        <source>%1: weight %2 of rule %3 is not a finite number</source>
+        <translation>%1&#xa0;: le poids %2 de la règle %3 n’est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>%1: the weights of rule %2 sum to %3, not 1 (an affine rule must reproduce constants)</source>
+        <translation>%1&#xa0;: la somme des poids de la règle %2 vaut %3, et non 1 (une règle affine doit reproduire les constantes)</translation>
+    </message>
+    <message>
+        <source>B-spline degree must be between 1 and 15, got %1</source>
+        <translation>le degré de la B-spline doit être compris entre 1 et 15 (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>uniform B-spline of degree %1</source>
+        <translation>B-spline uniforme de degré %1</translation>
+    </message>
+    <message>
+        <source>corner cutting needs 0 &lt; a &lt; b &lt; 1, got a = %1, b = %2</source>
+        <translation>la découpe de coins demande 0 &lt; a &lt; b &lt; 1 (reçu&#xa0;: a = %1, b = %2)</translation>
+    </message>
+    <message>
+        <source>corner cutting (%1, %2)</source>
+        <translation>découpe de coins (%1, %2)</translation>
+    </message>
+    <message>
+        <source>four-point tension omega is not a finite number</source>
+        <translation>la tension oméga du schéma à quatre points n’est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>four-point (omega = %1)</source>
+        <translation>schéma à quatre points (oméga = %1)</translation>
+    </message>
+    <message>
+        <source>Bézier degree must be between 1 and 30, got %1</source>
+        <translation>le degré de Bézier doit être compris entre 1 et 30 (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>the de Casteljau split parameter t must lie strictly between 0 and 1, got %1</source>
+        <translation>le paramètre de découpe de de Casteljau t doit être strictement compris entre 0 et 1 (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>Bézier of degree %1 (de Casteljau at t = %2)</source>
+        <translation>Bézier de degré %1 (de Casteljau en t = %2)</translation>
+    </message>
+    <message>
+        <source>end-interpolating B-spline of degree %1</source>
+        <translation>B-spline interpolant les extrémités de degré %1</translation>
+    </message>
+    <message>
+        <source>%1: an IFS needs at least two matrices, got %2</source>
+        <translation>%1&#xa0;: un IFS demande au moins deux matrices (reçu&#xa0;: %2)</translation>
+    </message>
+    <message>
+        <source>%1: matrix S_1 is empty</source>
+        <translation>%1&#xa0;: la matrice S_1 est vide</translation>
+    </message>
+    <message>
+        <source>%1: matrix S_%2 is %3 x %4, expected %5 x %5 like S_1</source>
+        <translation>%1&#xa0;: la matrice S_%2 est de taille %3 x %4, %5 x %5 attendu comme pour S_1</translation>
+    </message>
+    <message>
+        <source>%1: matrix S_%2</source>
+        <translation>%1&#xa0;: matrice S_%2</translation>
+    </message>
+    <message>
+        <source>%1: matrix S_%2, row %3 sums to %4, not 1 (subdivision rows are affine combinations)</source>
+        <translation>%1&#xa0;: matrice S_%2, la somme de la ligne %3 vaut %4, et non 1 (les lignes de subdivision sont des combinaisons affines)</translation>
+    </message>
+    <message>
+        <source>the number of subdivision steps cannot be negative</source>
+        <translation>le nombre d’étapes de subdivision ne peut pas être négatif</translation>
+    </message>
+    <message>
+        <source>classic subdivision with %1 steps would make %2 points; use fewer steps</source>
+        <translation>une subdivision classique de %1 étapes produirait %2 points&#x202f;; utilisez moins d’étapes</translation>
+    </message>
+    <message>
+        <source>user matrices</source>
+        <translation>matrices utilisateur</translation>
+    </message>
+    <message>
+        <source>the square lattice of %1 has no layout &apos;%2&apos; (it has: %3)</source>
+        <translation>la grille carrée de %1 n’a pas de disposition «&#xa0;%2&#xa0;» (dispositions disponibles&#xa0;: %3)</translation>
+    </message>
+    <message>
+        <source>the triangular lattice of %1 has no layout &apos;%2&apos; (it has: %3)</source>
+        <translation>la grille triangulaire de %1 n’a pas de disposition «&#xa0;%2&#xa0;» (dispositions disponibles&#xa0;: %3)</translation>
+    </message>
+    <message>
+        <source>%1: the mask is not symmetric under the turn of map %2 of the %3 layout</source>
+        <translation>%1&#xa0;: le masque n’est pas symétrique pour la rotation de l’application %2 de la disposition %3</translation>
+    </message>
+    <message>
+        <source>%1: the pieces of the %2 layout are not determined by a finite net</source>
+        <translation>%1&#xa0;: les morceaux de la disposition %2 ne sont pas déterminés par un réseau fini</translation>
+    </message>
+    <message>
+        <source>the patch needs %1 control points on its net, got %2</source>
+        <translation>le carreau demande %1 points de contrôle sur son réseau (reçu&#xa0;: %2)</translation>
+    </message>
+    <message>
+        <source>lattice point %1 is given twice (points %2 and %3)</source>
+        <translation>le point de grille %1 est donné deux fois (points %2 et %3)</translation>
+    </message>
+    <message>
+        <source>lattice point %1 (point %2) is not on the square net of the patch; missing: %3</source>
+        <translation>le point de grille %1 (point %2) n’est pas sur le réseau carré du carreau&#x202f;; manquants&#xa0;: %3</translation>
+    </message>
+    <message>
+        <source>lattice point %1 (point %2) is not on the triangular net of the patch; missing: %3</source>
+        <translation>le point de grille %1 (point %2) n’est pas sur le réseau triangulaire du carreau&#x202f;; manquants&#xa0;: %3</translation>
+    </message>
+    <message>
+        <source>the net has %1 lattice points but %2 control points</source>
+        <translation>le réseau a %1 points de grille mais %2 points de contrôle</translation>
+    </message>
+    <message>
+        <source>refinement rounds must be from 0 to 12, got %1</source>
+        <translation>le nombre de passes de raffinement doit être compris entre 0 et 12 (reçu&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>the mesh was refined by another scheme</source>
+        <translation>le maillage a été raffiné par un autre schéma</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Subdivision curves as attractors of IFS.</source>
+        <translation>Les courbes de subdivision comme attracteurs d’IFS.</translation>
+    </message>
+    <message>
+        <source>Project file to open.</source>
+        <translation>Fichier de projet à ouvrir.</translation>
+    </message>
+    <message>
+        <source>Select the item with this name after opening.</source>
+        <translation>Sélectionner l’élément portant ce nom après l’ouverture.</translation>
+    </message>
+    <message>
+        <source>Print the current item&apos;s figure sheet to this PDF file, then quit.</source>
+        <translation>Imprimer la fiche de figure de l’élément courant dans ce fichier PDF, puis quitter.</translation>
+    </message>
+    <message>
+        <source>Save a picture of the main window to this PNG file once the attractor is drawn, then quit.</source>
+        <translation>Enregistrer une image de la fenêtre principale dans ce fichier PNG une fois l’attracteur tracé, puis quitter.</translation>
+    </message>
+    <message>
+        <source>Window size for --screenshot, WIDTHxHEIGHT.</source>
+        <translation>Taille de la fenêtre pour --screenshot, LARGEURxHAUTEUR.</translation>
+    </message>
+    <message>
+        <source>Export a figure of the current item to this file (.png, .svg, .pdf; .tex for the matrices), then quit.</source>
+        <translation>Exporter une figure de l’élément courant dans ce fichier (.png, .svg, .pdf&#x202f;; .tex pour les matrices), puis quitter.</translation>
+    </message>
+    <message>
+        <source>Resolution of --export-figure in dpi (36..2400).</source>
+        <translation>Résolution de --export-figure en ppp (36..2400).</translation>
+    </message>
+    <message>
+        <source>What --export-figure shows: attractor, spectrum, matrices, analysis or sheet.</source>
+        <translation>Contenu de --export-figure&#xa0;: attractor, spectrum, matrices, analysis ou sheet.</translation>
+    </message>
+    <message>
+        <source>Size of --export-figure in pixels at its resolution, WIDTHxHEIGHT (16..20000).</source>
+        <translation>Taille de --export-figure en pixels à sa résolution, LARGEURxHAUTEUR (16..20000).</translation>
+    </message>
+    <message>
+        <source>--export-figure without the grid.</source>
+        <translation>--export-figure sans la grille.</translation>
+    </message>
+    <message>
+        <source>--export-figure without control polygons and start set.</source>
+        <translation>--export-figure sans les polygones de contrôle ni l’ensemble initial.</translation>
+    </message>
+    <message>
+        <source>--export-figure framed tightly around the content (the height follows its proportions).</source>
+        <translation>--export-figure cadré au plus près du contenu (la hauteur suit ses proportions).</translation>
+    </message>
+    <message>
+        <source>Font of --export-figure&apos;s labels: FAMILY or FAMILY,POINTS.</source>
+        <translation>Police des étiquettes de --export-figure&#xa0;: FAMILLE ou FAMILLE,POINTS.</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,5583 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_CN" sourcelanguage="en">
+<context>
+    <name>ExportDialog</name>
+    <message>
+        <source>Export Figure</source>
+        <translation>导出图形</translation>
+    </message>
+    <message>
+        <source>&amp;View:</source>
+        <translation>视图(&amp;V)：</translation>
+    </message>
+    <message>
+        <source>The view or figure to export.</source>
+        <translation>要导出的视图或图形。</translation>
+    </message>
+    <message>
+        <source>Attractor view</source>
+        <translation>吸引子视图</translation>
+    </message>
+    <message>
+        <source>Spectrum plot</source>
+        <translation>谱图</translation>
+    </message>
+    <message>
+        <source>Matrices</source>
+        <translation>矩阵</translation>
+    </message>
+    <message>
+        <source>Analysis chart (current tab)</source>
+        <translation>分析图表（当前标签页）</translation>
+    </message>
+    <message>
+        <source>Figure sheet</source>
+        <translation>图形页</translation>
+    </message>
+    <message>
+        <source>&amp;File:</source>
+        <translation>文件(&amp;F)：</translation>
+    </message>
+    <message>
+        <source>File to write; its suffix (.png, .svg or .pdf; .tex for the matrices as LaTeX) picks the format.</source>
+        <translation>要写入的文件；其后缀（.png、.svg 或 .pdf；.tex 表示以 LaTeX 形式导出矩阵）决定格式。</translation>
+    </message>
+    <message>
+        <source>Choose the file to write.</source>
+        <translation>选择要写入的文件。</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>浏览(&amp;B)…</translation>
+    </message>
+    <message>
+        <source>The suffix picks the format: .png, .svg or .pdf (the Matrices view also .tex: LaTeX bmatrix).</source>
+        <translation>后缀决定格式：.png、.svg 或 .pdf（“矩阵”视图还支持 .tex：LaTeX bmatrix）。</translation>
+    </message>
+    <message>
+        <source>&amp;Width:</source>
+        <translation>宽度(&amp;W)：</translation>
+    </message>
+    <message>
+        <source>Width of the figure in pixels (for SVG and PDF: pixel units at the resolution below).</source>
+        <translation>图形宽度，单位为像素（对于 SVG 和 PDF：按下方分辨率换算的像素单位）。</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>&amp;Height:</source>
+        <translation>高度(&amp;H)：</translation>
+    </message>
+    <message>
+        <source>Height of the figure in pixels (for SVG and PDF: pixel units at the resolution below).</source>
+        <translation>图形高度，单位为像素（对于 SVG 和 PDF：按下方分辨率换算的像素单位）。</translation>
+    </message>
+    <message>
+        <source>&amp;Resolution:</source>
+        <translation>分辨率(&amp;R)：</translation>
+    </message>
+    <message>
+        <source>Resolution in dots per inch (dpi).</source>
+        <translation>分辨率，单位为每英寸点数（dpi）。</translation>
+    </message>
+    <message>
+        <source> dpi</source>
+        <translation> dpi</translation>
+    </message>
+    <message>
+        <source>Show:</source>
+        <translation>显示：</translation>
+    </message>
+    <message>
+        <source>Draw the coordinate grid and its labels (when the view shows them).</source>
+        <translation>绘制坐标网格线及其标签（当视图显示它们时）。</translation>
+    </message>
+    <message>
+        <source>&amp;Grid</source>
+        <translation>网格线(&amp;G)</translation>
+    </message>
+    <message>
+        <source>Draw the control polygons, the start set and their points and labels.</source>
+        <translation>绘制控制多边形、初始集及其点和标签。</translation>
+    </message>
+    <message>
+        <source>&amp;Control points</source>
+        <translation>控制点(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Frame the attractor view&apos;s content tightly: the height follows the content&apos;s proportions (the width is kept).</source>
+        <translation>紧贴吸引子视图的内容裁剪边框：高度按内容比例确定（宽度保持不变）。</translation>
+    </message>
+    <message>
+        <source>C&amp;rop to contents</source>
+        <translation>裁剪到内容(&amp;R)</translation>
+    </message>
+    <message>
+        <source>F&amp;ont:</source>
+        <translation>字体(&amp;O)：</translation>
+    </message>
+    <message>
+        <source>Font of the labels and of the figure sheet&apos;s text.</source>
+        <translation>标签和图形页文字所用的字体。</translation>
+    </message>
+    <message>
+        <source>Label size in points as the figure is shown at its resolution (0: as on screen).</source>
+        <translation>图形按其分辨率显示时的标签字号，单位为磅（0：与屏幕上相同）。</translation>
+    </message>
+    <message>
+        <source>as on screen</source>
+        <translation>与屏幕上相同</translation>
+    </message>
+    <message>
+        <source> pt</source>
+        <translation> pt</translation>
+    </message>
+</context>
+<context>
+    <name>PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>首选项</translation>
+    </message>
+    <message>
+        <source>Default &amp;depth of new items:</source>
+        <translation>新对象的默认深度(&amp;D)：</translation>
+    </message>
+    <message>
+        <source>Deterministic depth given to new items.</source>
+        <translation>赋予新对象的确定性迭代深度。</translation>
+    </message>
+    <message>
+        <source>&amp;Maximum drawn depth:</source>
+        <translation>最大绘制深度(&amp;M)：</translation>
+    </message>
+    <message>
+        <source>Draw at most this depth, whatever the item asks for.</source>
+        <translation>无论对象要求多大深度，最多只绘制到此深度。</translation>
+    </message>
+    <message>
+        <source>no limit</source>
+        <translation>无限制</translation>
+    </message>
+    <message>
+        <source>Map &amp;colours:</source>
+        <translation>映射颜色(&amp;C)：</translation>
+    </message>
+    <message>
+        <source>Colour of map 1</source>
+        <translation>映射 1 的颜色</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>自动</translation>
+    </message>
+    <message>
+        <source>Colour of map 2</source>
+        <translation>映射 2 的颜色</translation>
+    </message>
+    <message>
+        <source>Colour of map 3</source>
+        <translation>映射 3 的颜色</translation>
+    </message>
+    <message>
+        <source>Colour of map 4</source>
+        <translation>映射 4 的颜色</translation>
+    </message>
+    <message>
+        <source>Colour of map 5</source>
+        <translation>映射 5 的颜色</translation>
+    </message>
+    <message>
+        <source>Colour of map 6</source>
+        <translation>映射 6 的颜色</translation>
+    </message>
+    <message>
+        <source>Use the views&apos; default colours for all maps.</source>
+        <translation>所有映射均使用视图的默认颜色。</translation>
+    </message>
+    <message>
+        <source>Defaults</source>
+        <translation>默认值</translation>
+    </message>
+    <message>
+        <source>&amp;Autosave interval:</source>
+        <translation>自动保存间隔(&amp;A)：</translation>
+    </message>
+    <message>
+        <source>Time between automatic saves of a recovery copy of the project, in seconds.</source>
+        <translation>两次自动保存项目恢复副本之间的时间间隔，单位为秒。</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>%1, Hölder regularity r in [%2, %3] (width %4)</source>
+        <translation>%1，Hölder 正则性 r ∈ [%2, %3]（区间宽度 %4）</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AddressPanel</name>
+    <message>
+        <source>Address 0,1,1 or interval [0.25, 0.5]</source>
+        <translation>地址 0,1,1 或区间 [0.25, 0.5]</translation>
+    </message>
+    <message>
+        <source>An address selects the sub-copy f_w(A) = f_w1(f_w2(…(A))): map numbers from 0, the outermost map first. A subdivision curve also takes a parameter interval [t0, t1]. Enter selects, an empty field clears.</source>
+        <translation>地址用于选择子副本 f_w(A) = f_w1(f_w2(…(A)))：映射从 0 开始编号，最外层的映射在前。细分曲线也接受参数区间 [t0, t1]。按 Enter 选择，清空输入框则取消选择。</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>清除</translation>
+    </message>
+    <message>
+        <source>Click the attractor to pick an address; click a symbol of it to select that prefix.</source>
+        <translation>单击吸引子以拾取地址；单击地址中的某个符号以选择到该符号为止的前缀。</translation>
+    </message>
+    <message>
+        <source>address %1</source>
+        <translation>地址 %1</translation>
+    </message>
+    <message>
+        <source>, t ≈ %1</source>
+        <translation>，t ≈ %1</translation>
+    </message>
+    <message>
+        <source>Clicked: %1&lt;br&gt;&lt;small&gt;click a symbol to select the prefix up to it&lt;/small&gt;</source>
+        <translation>已单击：%1&lt;br&gt;&lt;small&gt;单击某个符号以选择到该符号为止的前缀&lt;/small&gt;</translation>
+    </message>
+    <message>
+        <source>The item drawn has no addresses to select (only items drawn by one IFS in the plane have).</source>
+        <translation>所绘制的对象没有可选择的地址（只有由平面上单个 IFS 绘制的对象才有地址）。</translation>
+    </message>
+    <message>
+        <source>a parameter interval selects on a subdivision curve with a real parameter; this item has none</source>
+        <translation>参数区间只能在具有实参数的细分曲线上进行选择；此对象没有实参数</translation>
+    </message>
+    <message>
+        <source>t in %1</source>
+        <translation>t ∈ %1</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;t in %1&lt;/b&gt; (%2)&lt;br&gt;Pieces inside it (addresses up to 8 symbols): %3</source>
+        <translation>&lt;b&gt;t ∈ %1&lt;/b&gt;（%2）&lt;br&gt;其中的片段（地址最多 8 个符号）：%3</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;The control polygons of the first %1 pieces are drawn.</source>
+        <translation>&lt;br&gt;已绘制前 %1 个片段的控制多边形。</translation>
+    </message>
+    <message>
+        <source>w = %1</source>
+        <translation>w = %1</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;w = %1&lt;/b&gt;: the sub-copy f_w(A) = %2(A)</source>
+        <translation>&lt;b&gt;w = %1&lt;/b&gt;：子副本 f_w(A) = %2(A)</translation>
+    </message>
+    <message>
+        <source>   t in [%1, %2]</source>
+        <translation>   t ∈ [%1, %2]</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;t in [%1, %2] (%3)</source>
+        <translation>&lt;br&gt;t ∈ [%1, %2]（%3）</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Control points S_w P = %1 (symbol i is S_(i+1)):&lt;br&gt;%2</source>
+        <translation>&lt;br&gt;控制点 S_w P = %1（符号 i 对应 S_(i+1)）：&lt;br&gt;%2</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AlgorithmSpec</name>
+    <message>
+        <source>the depth cannot be negative, got %1</source>
+        <translation>深度不能为负数，实际为 %1</translation>
+    </message>
+    <message>
+        <source>depth %1 is absurd: at most %2 is allowed</source>
+        <translation>深度 %1 过大：最多允许 %2</translation>
+    </message>
+    <message>
+        <source>depth %1 with %2 maps makes %3 images of the start set, more than 2^31; use a smaller depth</source>
+        <translation>深度 %1、%2 个映射将产生初始集的 %3 个像，超过 2^31；请使用较小的深度</translation>
+    </message>
+    <message>
+        <source>the sample count must be between 1 and 2^31, got %1</source>
+        <translation>样本数必须介于 1 和 2^31 之间，实际为 %1</translation>
+    </message>
+    <message>
+        <source>the seed must be between 0 and 2^53 - 1, got %1</source>
+        <translation>随机种子必须介于 0 和 2^53 - 1 之间，实际为 %1</translation>
+    </message>
+    <message>
+        <source>probability %1 must be a finite number &gt;= 0</source>
+        <translation>概率 %1 必须是 &gt;= 0 的有限数</translation>
+    </message>
+    <message>
+        <source>the probabilities sum to 0</source>
+        <translation>概率之和为 0</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AnalysisCharts</name>
+    <message>
+        <source>Distance to the exact curve</source>
+        <translation>到精确曲线的距离</translation>
+    </message>
+    <message>
+        <source>Distance</source>
+        <translation>距离</translation>
+    </message>
+    <message>
+        <source>Control polygon length</source>
+        <translation>控制多边形长度</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>长度</translation>
+    </message>
+    <message>
+        <source>Box counting</source>
+        <translation>盒计数</translation>
+    </message>
+    <message>
+        <source>Eigenvalue moduli</source>
+        <translation>特征值的模</translation>
+    </message>
+    <message>
+        <source>|λ| per map</source>
+        <translation>各映射的 |λ|</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;depth k = %2&lt;br&gt;d&lt;sub&gt;H&lt;/sub&gt; = %3</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;深度 k = %2&lt;br&gt;d&lt;sub&gt;H&lt;/sub&gt; = %3</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;step k = %2&lt;br&gt;length = %3</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;步数 k = %2&lt;br&gt;长度 = %3</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;log(1/ε) = %2 (ε = %3)&lt;br&gt;log N(ε) = %4 (N = %5)</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;log(1/ε) = %2（ε = %3）&lt;br&gt;log N(ε) = %4（N = %5）</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;|λ| = %2</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;|λ| = %2</translation>
+    </message>
+    <message>
+        <source>∝ %1^k</source>
+        <translation>∝ %1^k</translation>
+    </message>
+    <message>
+        <source>depth k</source>
+        <translation>深度 k</translation>
+    </message>
+    <message>
+        <source>Hausdorff distance</source>
+        <translation>Hausdorff 距离</translation>
+    </message>
+    <message>
+        <source>control polygon</source>
+        <translation>控制多边形</translation>
+    </message>
+    <message>
+        <source>exact curve</source>
+        <translation>精确曲线</translation>
+    </message>
+    <message>
+        <source>subdivision step k</source>
+        <translation>细分步数 k</translation>
+    </message>
+    <message>
+        <source>length</source>
+        <translation>长度</translation>
+    </message>
+    <message>
+        <source>Box counting: dimension D = %1, R² = %2</source>
+        <translation>盒计数：维数 D = %1，R² = %2</translation>
+    </message>
+    <message>
+        <source>Box counting: no fit (%1)</source>
+        <translation>盒计数：无法拟合（%1）</translation>
+    </message>
+    <message>
+        <source>not fitted</source>
+        <translation>未拟合</translation>
+    </message>
+    <message>
+        <source>fitted levels</source>
+        <translation>拟合所用层级</translation>
+    </message>
+    <message>
+        <source>fit: log N = %1 log(1/ε) + %2</source>
+        <translation>拟合：log N = %1 log(1/ε) + %2</translation>
+    </message>
+    <message>
+        <source>log(1/ε)</source>
+        <translation>log(1/ε)</translation>
+    </message>
+    <message>
+        <source>log N(ε)</source>
+        <translation>log N(ε)</translation>
+    </message>
+    <message>
+        <source>map</source>
+        <translation>映射</translation>
+    </message>
+    <message>
+        <source>|λ| = 1</source>
+        <translation>|λ| = 1</translation>
+    </message>
+    <message>
+        <source>|λ|</source>
+        <translation>|λ|</translation>
+    </message>
+    <message>
+        <source>No exact curve known for this item</source>
+        <translation>该对象没有已知的精确曲线</translation>
+    </message>
+    <message>
+        <source>The Hausdorff distance is measured against an exact curve: B-spline, Bézier and complex de Casteljau curves have one.</source>
+        <translation>Hausdorff 距离是相对于精确曲线测量的：B 样条、Bézier 曲线和复 de Casteljau 曲线都有精确曲线。</translation>
+    </message>
+</context>
+<context>
+    <name>awb::Animation</name>
+    <message>
+        <source>expected a duration in seconds above 0 and at most %1</source>
+        <translation>时长应大于 0 秒且不超过 %1 秒</translation>
+    </message>
+    <message>
+        <source>expected between 1 and %1 frames per second</source>
+        <translation>每秒帧数应介于 1 和 %1 之间</translation>
+    </message>
+    <message>
+        <source>%1 s at %2 frames per second makes more than %3 frames</source>
+        <translation>%1 s、每秒 %2 帧将产生超过 %3 帧</translation>
+    </message>
+    <message>
+        <source>names no parameter</source>
+        <translation>未指定任何参数</translation>
+    </message>
+    <message>
+        <source>%1 is driven by an earlier track already</source>
+        <translation>%1 已由前面的轨道驱动</translation>
+    </message>
+    <message>
+        <source>needs at least one key</source>
+        <translation>至少需要一个关键帧</translation>
+    </message>
+    <message>
+        <source>expected a time between 0 and the duration, %1 s</source>
+        <translation>时间应介于 0 和动画时长 %1 s 之间</translation>
+    </message>
+    <message>
+        <source>key times must increase (%1 s follows %2 s)</source>
+        <translation>关键帧时间必须递增（%1 s 在 %2 s 之后）</translation>
+    </message>
+    <message>
+        <source>expected %1 numbers, as the first key</source>
+        <translation>应为 %1 个数，与第一个关键帧相同</translation>
+    </message>
+    <message>
+        <source>not a finite number</source>
+        <translation>不是有限数</translation>
+    </message>
+    <message>
+        <source>a circle turns a point or a complex value, not one number</source>
+        <translation>圆周路径只能旋转点或复数值，不能旋转单个数</translation>
+    </message>
+    <message>
+        <source>expected [x, y]</source>
+        <translation>应为 [x, y]</translation>
+    </message>
+    <message>
+        <source>expected a number of turns between -1000 and 1000</source>
+        <translation>圈数应介于 -1000 和 1000 之间</translation>
+    </message>
+    <message>
+        <source>Probabilities</source>
+        <translation>概率</translation>
+    </message>
+    <message>
+        <source>Points %1, point %2</source>
+        <translation>点集 %1，第 %2 个点</translation>
+    </message>
+    <message>
+        <source>Control point %1</source>
+        <translation>控制点 %1</translation>
+    </message>
+    <message>
+        <source>%1 has no probabilities</source>
+        <translation>%1 没有概率</translation>
+    </message>
+    <message>
+        <source>%1 has no control point %2 in point set %3</source>
+        <translation>%1 在点集 %3 中没有控制点 %2</translation>
+    </message>
+    <message>
+        <source>%1 is not a number that can be animated</source>
+        <translation>%1 不是可以设置动画的数值</translation>
+    </message>
+    <message>
+        <source>%1 has no parameter %2 (now)</source>
+        <translation>%1（当前）没有参数 %2</translation>
+    </message>
+    <message>
+        <source>no such control point</source>
+        <translation>没有这个控制点</translation>
+    </message>
+    <message>
+        <source>the point was refused</source>
+        <translation>该点被拒绝</translation>
+    </message>
+    <message>
+        <source>no such parameter now</source>
+        <translation>当前没有这个参数</translation>
+    </message>
+    <message>
+        <source>a complex value needs 2 numbers</source>
+        <translation>复数值需要 2 个数</translation>
+    </message>
+    <message>
+        <source>%1 at %2 s: %3</source>
+        <translation>%1 在 %2 s 处：%3</translation>
+    </message>
+    <message>
+        <source>the value was refused</source>
+        <translation>该值被拒绝</translation>
+    </message>
+    <message>
+        <source>%1 has %2 coordinates, the keys %3</source>
+        <translation>%1 有 %2 个坐标，而关键帧有 %3 个</translation>
+    </message>
+    <message>
+        <source>p = (%1)</source>
+        <translation>p = (%1)</translation>
+    </message>
+    <message>
+        <source>t = %1 s: %2</source>
+        <translation>t = %1 s：%2</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>缺失</translation>
+    </message>
+    <message>
+        <source>expected an array of tracks</source>
+        <translation>应为轨道数组</translation>
+    </message>
+    <message>
+        <source>expected an object</source>
+        <translation>应为对象</translation>
+    </message>
+    <message>
+        <source>expected an array of keys</source>
+        <translation>应为关键帧数组</translation>
+    </message>
+    <message>
+        <source>expected an object {&quot;time&quot;, &quot;value&quot;}</source>
+        <translation>应为对象 {&quot;time&quot;, &quot;value&quot;}</translation>
+    </message>
+    <message>
+        <source>unknown field of a key</source>
+        <translation>关键帧的未知字段</translation>
+    </message>
+    <message>
+        <source>unknown field of a track</source>
+        <translation>轨道的未知字段</translation>
+    </message>
+    <message>
+        <source>unknown field of an animation</source>
+        <translation>动画的未知字段</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AnimationPanel</name>
+    <message>
+        <source>Play / pause the animation (Ctrl+Space)</source>
+        <translation>播放/暂停动画（Ctrl+Space）</translation>
+    </message>
+    <message>
+        <source>Stop: the views show the item itself again</source>
+        <translation>停止：视图重新显示对象本身</translation>
+    </message>
+    <message>
+        <source>Time: drag to see the frames (the views follow)</source>
+        <translation>时间：拖动以查看各帧（视图随之更新）</translation>
+    </message>
+    <message>
+        <source>Time and frame number</source>
+        <translation>时间和帧号</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>循环</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>播放</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Duration of the animation</source>
+        <translation>动画时长</translation>
+    </message>
+    <message>
+        <source>Frames per second</source>
+        <translation>每秒帧数</translation>
+    </message>
+    <message>
+        <source> fps</source>
+        <translation> fps</translation>
+    </message>
+    <message>
+        <source>Parameter / key time (s)</source>
+        <translation>参数/关键帧时间 (s)</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>Double-click a key&apos;s time or value to edit it</source>
+        <translation>双击关键帧的时间或值以进行编辑</translation>
+    </message>
+    <message>
+        <source>The parameter, probabilities or control point to key</source>
+        <translation>要设置关键帧的参数、概率或控制点</translation>
+    </message>
+    <message>
+        <source>Set Key</source>
+        <translation>设置关键帧</translation>
+    </message>
+    <message>
+        <source>Store the item&apos;s present value of the parameter at the time shown (replaces a key at that time)</source>
+        <translation>在所示时间处保存对象该参数的当前值（替换该时间处已有的关键帧）</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>移除</translation>
+    </message>
+    <message>
+        <source>Remove the selected key, or the selected track with its keys</source>
+        <translation>移除所选关键帧，或所选轨道及其全部关键帧</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>线性</translation>
+    </message>
+    <message>
+        <source>Smooth (ease in and out)</source>
+        <translation>平滑（缓入缓出）</translation>
+    </message>
+    <message>
+        <source>Through the keys</source>
+        <translation>经过各关键帧</translation>
+    </message>
+    <message>
+        <source>Circle about a centre</source>
+        <translation>绕中心做圆周运动</translation>
+    </message>
+    <message>
+        <source>x, y</source>
+        <translation>x, y</translation>
+    </message>
+    <message>
+        <source>Interpolation</source>
+        <translation>插值</translation>
+    </message>
+    <message>
+        <source>Path</source>
+        <translation>路径</translation>
+    </message>
+    <message>
+        <source>Centre</source>
+        <translation>中心</translation>
+    </message>
+    <message>
+        <source>Turns</source>
+        <translation>圈数</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>The views show the item itself.</source>
+        <translation>视图显示对象本身。</translation>
+    </message>
+    <message>
+        <source>%1 s · %2/%3</source>
+        <translation>%1 s · %2/%3</translation>
+    </message>
+    <message>
+        <source>Frame at %1 s: %2</source>
+        <translation>%1 s 处的帧：%2</translation>
+    </message>
+    <message>
+        <source>The views show the frame at %1 s (not editable); Stop returns to the item.</source>
+        <translation>视图显示 %1 s 处的帧（不可编辑）；按“停止”返回对象本身。</translation>
+    </message>
+    <message>
+        <source>No item is selected.</source>
+        <translation>未选择对象。</translation>
+    </message>
+    <message>
+        <source>Select a key or a track to remove.</source>
+        <translation>请选择要移除的关键帧或轨道。</translation>
+    </message>
+    <message>
+        <source>inactive: %1 has no such input now</source>
+        <translation>未生效：%1 当前没有此输入</translation>
+    </message>
+    <message>
+        <source>circle about (%1), %2 turns</source>
+        <translation>绕 (%1) 旋转，%2 圈</translation>
+    </message>
+    <message>
+        <source>The item does not have %1 in its present state (another scheme, fewer points): the track is kept and skipped.</source>
+        <translation>对象在当前状态下没有 %1（换了细分格式或点数变少）：该轨道被保留但会被跳过。</translation>
+    </message>
+    <message>
+        <source>Select an item to animate its parameters.</source>
+        <translation>选择一个对象以为其参数设置动画。</translation>
+    </message>
+    <message>
+        <source>No keys yet: set a value in Properties, choose it here and press Set Key; then move the slider, change the value and key it again.</source>
+        <translation>尚无关键帧：先在“属性”中设置一个值，在此处选中它并按“设置关键帧”；然后移动滑块、更改该值，再次设置关键帧。</translation>
+    </message>
+    <message>
+        <source>%1 has no numeric parameters to animate.</source>
+        <translation>%1 没有可设置动画的数值参数。</translation>
+    </message>
+    <message>
+        <source>%1 tracks, %2 frames. Play or drag the slider to preview.</source>
+        <translation>%1 条轨道，%2 帧。播放或拖动滑块以预览。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a time in seconds</source>
+        <translation>“%1”不是以秒为单位的时间</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: expected %2 numbers</source>
+        <translation>“%1”：应为 %2 个数</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AttractorItem</name>
+    <message>
+        <source>Change start set of %1</source>
+        <translation>更改 %1 的初始集</translation>
+    </message>
+    <message>
+        <source>Change algorithm of %1</source>
+        <translation>更改 %1 的算法</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n control points of %1</source>
+        <translation>
+            <numerusform>移除 %1 的 %n 个控制点</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>map %1 is not finite: the control points&apos; coordinates overflow in the lifted map P⁻¹ S_i P (the largest is %2)</source>
+        <translation>映射 %1 不是有限的：控制点坐标在提升映射 P⁻¹ S_i P 中溢出（最大值为 %2）</translation>
+    </message>
+    <message>
+        <source>the start set is not finite in the IFS space: the lifting overflows (the largest control point coordinate is %1)</source>
+        <translation>初始集在 IFS 空间中不是有限的：提升时溢出（最大的控制点坐标为 %1）</translation>
+    </message>
+    <message>
+        <source>lifted start points need an invertible lifting: %1</source>
+        <translation>提升后的初始点需要可逆的提升：%1</translation>
+    </message>
+    <message>
+        <source>a lifted start point of this item has %1 coordinates (x, y and the %2 extra coordinates of the lifting, the homogeneous 1 implied); point %3 has %4</source>
+        <translation>此对象提升后的初始点有 %1 个坐标（x、y 以及提升的 %2 个附加坐标，齐次坐标 1 隐含）；点 %3 有 %4 个</translation>
+    </message>
+    <message>
+        <source>%1 points; an item takes at most %2 (its subdivision matrices would be %1 x %1)</source>
+        <translation>%1 个点；一个对象最多接受 %2 个（其细分矩阵将为 %1 × %1）</translation>
+    </message>
+    <message>
+        <source>point set %1 has %2 points; an item takes at most %3 per set</source>
+        <translation>点集 %1 有 %2 个点；一个对象每个点集最多接受 %3 个点</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AttractorRenderer</name>
+    <message>
+        <source>Cannot draw the attractor: %1</source>
+        <translation>无法绘制吸引子：%1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AttractorView</name>
+    <message>
+        <source>Rendering… %1 %</source>
+        <translation>正在渲染… %1 %</translation>
+    </message>
+    <message>
+        <source>Rendering cancelled at %1 % — press F5 to render again</source>
+        <translation>渲染已在 %1 % 处取消——按 F5 重新渲染</translation>
+    </message>
+    <message>
+        <source>F^%1(X₀) has too many images to draw as vectors</source>
+        <translation>F^%1(X₀) 的像太多，无法以矢量形式绘制</translation>
+    </message>
+</context>
+<context>
+    <name>awb::BcifsJunctionItem</name>
+    <message>
+        <source>Junction</source>
+        <translation>拼接</translation>
+    </message>
+    <message>
+        <source>Change junction of %1</source>
+        <translation>更改 %1 的拼接</translation>
+    </message>
+    <message>
+        <source>e = %1, p = %2 (column sums). %3</source>
+        <translation>e = %1，p = %2（列和）。%3</translation>
+    </message>
+    <message>
+        <source>a junction is drawn by an automaton, not by one lifted IFS</source>
+        <translation>拼接由自动机绘制，而不是由单个提升 IFS 绘制</translation>
+    </message>
+    <message>
+        <source>Cubic–quadratic (003 §4.1)</source>
+        <translation>三次–二次（003 §4.1）</translation>
+    </message>
+    <message>
+        <source>Refined, with handles (003 §5)</source>
+        <translation>细化，带控制柄（003 §5）</translation>
+    </message>
+    <message>
+        <source>Last column (a, b, c, d, e) of T^l; e = 1 − a − b − c − d (003 §4.1)</source>
+        <translation>T^l 的最后一列 (a, b, c, d, e)；e = 1 − a − b − c − d（003 §4.1）</translation>
+    </message>
+    <message>
+        <source>First column (k, l, m, n, p) of T^r; p = 1 − k − l − m − n (003 §4.1)</source>
+        <translation>T^r 的第一列 (k, l, m, n, p)；p = 1 − k − l − m − n（003 §4.1）</translation>
+    </message>
+    <message>
+        <source>Left eigenvalue j</source>
+        <translation>左特征值 j</translation>
+    </message>
+    <message>
+        <source>Tangent eigenvalue of T^il (003 §5)</source>
+        <translation>T^il 的切向特征值（003 §5）</translation>
+    </message>
+    <message>
+        <source>Right eigenvalue r</source>
+        <translation>右特征值 r</translation>
+    </message>
+    <message>
+        <source>Tangent eigenvalue of T^ir (003 §5)</source>
+        <translation>T^ir 的切向特征值（003 §5）</translation>
+    </message>
+    <message>
+        <source>BCIFS junction curve</source>
+        <translation>BCIFS 拼接曲线</translation>
+    </message>
+</context>
+<context>
+    <name>awb::BezierUnionItem</name>
+    <message>
+        <source>Bézier union</source>
+        <translation>Bézier 并集</translation>
+    </message>
+    <message>
+        <source>%1 split parameters for %2 curves</source>
+        <translation>%2 条曲线却有 %1 个分割参数</translation>
+    </message>
+    <message>
+        <source>Change Bézier union %1</source>
+        <translation>更改 Bézier 并集 %1</translation>
+    </message>
+    <message>
+        <source>curve %1: %2</source>
+        <translation>曲线 %1：%2</translation>
+    </message>
+    <message>
+        <source>curves drawn in the lifted space of 000 §2: %1</source>
+        <translation>在 000 §2 的提升空间中绘制的曲线：%1</translation>
+    </message>
+    <message>
+        <source>every composition of %1 maps contracts (factor %2): the dusty fractal of 002 §6 is the unique attractor</source>
+        <translation>%1 个映射的每个复合都是压缩的（压缩因子 %2）：002 §6 中的尘状分形是唯一的吸引子</translation>
+    </message>
+    <message>
+        <source>no contraction was proven (best bound %1 at length %2): the picture may not be an attractor</source>
+        <translation>未能证明压缩性（长度 %2 处的最佳界为 %1）：图形可能不是吸引子</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>缺失</translation>
+    </message>
+    <message>
+        <source>expected a non-empty array of curves {&quot;control_points&quot;: [...], &quot;u&quot;: number}</source>
+        <translation>应为由曲线 {&quot;control_points&quot;: [...], &quot;u&quot;: number} 组成的非空数组</translation>
+    </message>
+    <message>
+        <source>expected an object with &quot;control_points&quot; and &quot;u&quot;</source>
+        <translation>应为包含 &quot;control_points&quot; 和 &quot;u&quot; 的对象</translation>
+    </message>
+    <message>
+        <source>Union</source>
+        <translation>并集</translation>
+    </message>
+    <message>
+        <source>Exact union (block IFS, 000 §2.2)</source>
+        <translation>精确并集（块 IFS，000 §2.2）</translation>
+    </message>
+    <message>
+        <source>All maps together (dusty fractal, 002 §6)</source>
+        <translation>所有映射合在一起（尘状分形，002 §6）</translation>
+    </message>
+    <message>
+        <source>Split parameter u</source>
+        <translation>分割参数 u</translation>
+    </message>
+    <message>
+        <source>Curve %1</source>
+        <translation>曲线 %1</translation>
+    </message>
+    <message>
+        <source>de Casteljau split at u, 0 &lt; u &lt; 1 (002 eqs. (9)-(10)); the curve is the same for every u, the IFS is not</source>
+        <translation>在 u 处做 de Casteljau 分割，0 &lt; u &lt; 1（002 eqs. (9)-(10)）；对每个 u 曲线都相同，但 IFS 不同</translation>
+    </message>
+    <message>
+        <source>Union of Bézier curves</source>
+        <translation>Bézier 曲线的并集</translation>
+    </message>
+</context>
+<context>
+    <name>awb::BezierUnionSpec</name>
+    <message>
+        <source>a union needs at least one curve</source>
+        <translation>并集至少需要一条曲线</translation>
+    </message>
+    <message>
+        <source>the split parameter u = %1 must satisfy 0 &lt; u &lt; 1 (002 §3)</source>
+        <translation>分割参数 u = %1 必须满足 0 &lt; u &lt; 1（002 §3）</translation>
+    </message>
+</context>
+<context>
+    <name>awb::CifsItem</name>
+    <message>
+        <source>Fern of gaskets</source>
+        <translation>垫片蕨</translation>
+    </message>
+    <message>
+        <source>Change automaton of %1</source>
+        <translation>更改 %1 的自动机</translation>
+    </message>
+    <message>
+        <source>the frame needs exactly 3 points, got %1</source>
+        <translation>框架恰好需要 3 个点，实际为 %1 个</translation>
+    </message>
+    <message>
+        <source>a controlled IFS has no single lifted IFS</source>
+        <translation>受控 IFS 没有单个提升 IFS</translation>
+    </message>
+    <message>
+        <source>Arc T%1 of the fern leads into the Sierpiński state (003 §2.2, Fig. 4).</source>
+        <translation>蕨的弧 T%1 通向 Sierpiński 状态（003 §2.2，Fig. 4）。</translation>
+    </message>
+    <message>
+        <source>Automaton</source>
+        <translation>自动机</translation>
+    </message>
+    <message>
+        <source>Redirected arc</source>
+        <translation>重定向的弧</translation>
+    </message>
+    <message>
+        <source>The fern map (0 stem, 1 main frond, 2 left, 3 right leaflet) whose arc leads into the Sierpiński state (003 Fig. 4)</source>
+        <translation>其弧通向 Sierpiński 状态的蕨映射（0 茎，1 主叶，2 左小叶，3 右小叶）（003 Fig. 4）</translation>
+    </message>
+    <message>
+        <source>Drawn state</source>
+        <translation>绘制的状态</translation>
+    </message>
+    <message>
+        <source>The state whose attractor is drawn</source>
+        <translation>绘制其吸引子的状态</translation>
+    </message>
+    <message>
+        <source>Controlled IFS</source>
+        <translation>受控 IFS</translation>
+    </message>
+</context>
+<context>
+    <name>awb::CifsSpec</name>
+    <message>
+        <source>the redirected fern arc must be 0 … 3 (T0 … T3), got %1</source>
+        <translation>重定向的蕨弧必须为 0 … 3（T0 … T3），实际为 %1</translation>
+    </message>
+    <message>
+        <source>no state &quot;%1&quot;; the states are &quot;%2&quot;</source>
+        <translation>没有状态 &quot;%1&quot;；现有状态为 &quot;%2&quot;</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ComplexBezierItem</name>
+    <message>
+        <source>Complex Bézier</source>
+        <translation>复 Bézier</translation>
+    </message>
+    <message>
+        <source>the parameter t must be a finite complex number</source>
+        <translation>参数 t 必须是有限复数</translation>
+    </message>
+    <message>
+        <source>Change t of %1</source>
+        <translation>更改 %1 的 t</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>缺失</translation>
+    </message>
+    <message>
+        <source>expected [re, im]</source>
+        <translation>应为 [re, im]</translation>
+    </message>
+    <message>
+        <source>Split parameter t</source>
+        <translation>分割参数 t</translation>
+    </message>
+    <message>
+        <source>Curve</source>
+        <translation>曲线</translation>
+    </message>
+    <message>
+        <source>de Casteljau split at a complex t; inside both discs |t| &lt; 1 and |1 − t| &lt; 1 the curve is a fractal (004 §3.7, Fig. 3.3)</source>
+        <translation>在复数 t 处做 de Casteljau 分割；在两个圆盘 |t| &lt; 1 与 |1 − t| &lt; 1 的内部，曲线为分形（004 §3.7，Fig. 3.3）</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a valid value for %2</source>
+        <translation>“%1”不是 %2 的有效值</translation>
+    </message>
+    <message>
+        <source>Complex Bézier curve</source>
+        <translation>复 Bézier 曲线</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ComplexPlanePicker</name>
+    <message>
+        <source>Drag t in the complex plane. The attractor exists inside the lens where |t| &lt; 1 and |1 − t| &lt; 1 (both maps contract, 004 Fig. 3.3).</source>
+        <translation>在复平面中拖动 t。吸引子存在于满足 |t| &lt; 1 且 |1 − t| &lt; 1 的透镜形区域内（两个映射均为压缩映射，004 Fig. 3.3）。</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ControlPointEdits</name>
+    <message>
+        <source>There is no such point set.</source>
+        <translation>没有这个点集。</translation>
+    </message>
+    <message>
+        <source>%1 (%2) has a fixed number of control points.</source>
+        <translation>%1（%2）的控制点数目是固定的。</translation>
+    </message>
+    <message>
+        <source>A Bézier curve of degree %1 is refused: %2</source>
+        <translation>%1 次 Bézier 曲线被拒绝：%2</translation>
+    </message>
+    <message>
+        <source>There is no point %1.</source>
+        <translation>没有点 %1。</translation>
+    </message>
+    <message>
+        <source>Insert control point %1 into %2</source>
+        <translation>将控制点 %1 插入 %2</translation>
+    </message>
+    <message>
+        <source>No control point is selected.</source>
+        <translation>未选择控制点。</translation>
+    </message>
+    <message>
+        <source>%1 needs at least %2 control points.</source>
+        <translation>%1 至少需要 %2 个控制点。</translation>
+    </message>
+    <message>
+        <source>Delete control point %1 of %2</source>
+        <translation>删除 %2 的控制点 %1</translation>
+    </message>
+    <message>
+        <source>Delete %1 control points of %2</source>
+        <translation>删除 %2 的 %1 个控制点</translation>
+    </message>
+</context>
+<context>
+    <name>awb::EigenvaluePlotItem</name>
+    <message>
+        <source>Eigenvalues</source>
+        <translation>特征值</translation>
+    </message>
+    <message>
+        <source>S_i, the subdivision matrices</source>
+        <translation>S_i，细分矩阵</translation>
+    </message>
+    <message>
+        <source>A_i, the linear parts of M_i</source>
+        <translation>A_i，M_i 的线性部分</translation>
+    </message>
+    <message>
+        <source>M_i = P⁻¹S_iP, the lifted maps</source>
+        <translation>M_i = P⁻¹S_iP，提升映射</translation>
+    </message>
+    <message>
+        <source>Change the source of %1</source>
+        <translation>更改 %1 的来源</translation>
+    </message>
+    <message>
+        <source>Analyse the matrices %1 in %2</source>
+        <translation>分析 %2 中的矩阵 %1</translation>
+    </message>
+    <message>
+        <source>M_i is defined only for a lifted subdivision IFS</source>
+        <translation>M_i 仅对提升的细分 IFS 有定义</translation>
+    </message>
+    <message>
+        <source>no item is chosen to analyse</source>
+        <translation>未选择要分析的对象</translation>
+    </message>
+    <message>
+        <source>there is no item called &quot;%1&quot;</source>
+        <translation>没有名为“%1”的对象</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; (%2) has no matrices to analyse</source>
+        <translation>“%1”（%2）没有可分析的矩阵</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; cannot be computed: %2</source>
+        <translation>无法计算“%1”：%2</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; has no matrices %2: %3</source>
+        <translation>“%1”没有矩阵 %2：%3</translation>
+    </message>
+    <message>
+        <source>Eigenvalue plot</source>
+        <translation>特征值图</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ExactCurve</name>
+    <message>
+        <source>Bézier curve c([0, 1])</source>
+        <translation>Bézier 曲线 c([0, 1])</translation>
+    </message>
+    <message>
+        <source>Takagi image c(x + 2iy·T(x)), y = %1 (Conj. 3.7.1)</source>
+        <translation>Takagi 像 c(x + 2iy·T(x))，y = %1（Conj. 3.7.1）</translation>
+    </message>
+    <message>
+        <source>exact curve: %1</source>
+        <translation>精确曲线：%1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ExportDialog</name>
+    <message>
+        <source>Export Figure</source>
+        <translation>导出图形</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf);;LaTeX matrices (*.tex)</source>
+        <translation>PNG 图像 (*.png);;SVG 绘图 (*.svg);;PDF 文档 (*.pdf);;LaTeX 矩阵 (*.tex)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FieldReader</name>
+    <message>
+        <source>missing</source>
+        <translation>缺失</translation>
+    </message>
+    <message>
+        <source>expected a string</source>
+        <translation>应为字符串</translation>
+    </message>
+    <message>
+        <source>expected one of %1, got %2</source>
+        <translation>应为 %1 之一，实际为 %2</translation>
+    </message>
+    <message>
+        <source>expected an integer</source>
+        <translation>应为整数</translation>
+    </message>
+    <message>
+        <source>expected an integer between %1 and %2</source>
+        <translation>应为介于 %1 和 %2 之间的整数</translation>
+    </message>
+    <message>
+        <source>expected an array of numbers</source>
+        <translation>应为数的数组</translation>
+    </message>
+    <message>
+        <source>expected an array of points [x, y, z]</source>
+        <translation>应为点 [x, y, z] 的数组</translation>
+    </message>
+    <message>
+        <source>expected an array of points [x, y]</source>
+        <translation>应为点 [x, y] 的数组</translation>
+    </message>
+    <message>
+        <source>expected an array of matrices</source>
+        <translation>应为矩阵的数组</translation>
+    </message>
+    <message>
+        <source>expected a matrix: a non-empty array of rows</source>
+        <translation>应为矩阵：由行组成的非空数组</translation>
+    </message>
+    <message>
+        <source>expected a row: a non-empty array of numbers</source>
+        <translation>应为行：由数组成的非空数组</translation>
+    </message>
+    <message>
+        <source>row %1 has %2 numbers, row 1 has %3</source>
+        <translation>第 %1 行有 %2 个数，第 1 行有 %3 个</translation>
+    </message>
+    <message>
+        <source>expected an object</source>
+        <translation>应为对象</translation>
+    </message>
+    <message>
+        <source>%1 is not a finite number</source>
+        <translation>%1 不是有限数</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read as a double-precision number</source>
+        <translation>%1 无法读取为双精度数</translation>
+    </message>
+    <message>
+        <source>expected a number</source>
+        <translation>应为数</translation>
+    </message>
+    <message>
+        <source>expected a finite number</source>
+        <translation>应为有限数</translation>
+    </message>
+    <message>
+        <source>expected a point [x, y, z]</source>
+        <translation>应为点 [x, y, z]</translation>
+    </message>
+    <message>
+        <source>expected a point [x, y]</source>
+        <translation>应为点 [x, y]</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FigureFile</name>
+    <message>
+        <source>cannot write %1</source>
+        <translation>无法写入 %1</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>the folder %1 does not exist</source>
+        <translation>文件夹 %1 不存在</translation>
+    </message>
+    <message>
+        <source>it is a folder</source>
+        <translation>它是一个文件夹</translation>
+    </message>
+    <message>
+        <source>the file is read-only</source>
+        <translation>该文件是只读的</translation>
+    </message>
+    <message>
+        <source>cannot write %1: it is a folder</source>
+        <translation>无法写入 %1：它是一个文件夹</translation>
+    </message>
+    <message>
+        <source>%1 has no suffix: name the format (.png, .svg or .pdf)</source>
+        <translation>%1 没有后缀：请指明格式（.png、.svg 或 .pdf）</translation>
+    </message>
+    <message>
+        <source>unknown output format &apos;.%1&apos; (use .png, .svg or .pdf)</source>
+        <translation>未知的输出格式“.%1”（请使用 .png、.svg 或 .pdf）</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FigureMetadata</name>
+    <message>
+        <source>%1: cannot read the PNG: %2</source>
+        <translation>%1：无法读取该 PNG：%2</translation>
+    </message>
+    <message>
+        <source>larger than 512 MB</source>
+        <translation>大于 512 MB</translation>
+    </message>
+    <message>
+        <source>%1: this PNG holds no Attractor Workbench item (only figures exported by Attractor Workbench carry their parameters)</source>
+        <translation>%1：此 PNG 不包含 Attractor Workbench 对象（只有由 Attractor Workbench 导出的图形才带有其参数）</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FigureSheet</name>
+    <message>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>否</translation>
+    </message>
+    <message>
+        <source>No item</source>
+        <translation>无对象</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <source>maps = %1</source>
+        <translation>映射数 = %1</translation>
+    </message>
+    <message>
+        <source>control points = %1</source>
+        <translation>控制点数 = %1</translation>
+    </message>
+    <message>
+        <source>depth = %1</source>
+        <translation>深度 = %1</translation>
+    </message>
+    <message>
+        <source>samples = %1</source>
+        <translation>样本数 = %1</translation>
+    </message>
+    <message>
+        <source>%1: %2 × %3 (see the Matrices dock)</source>
+        <translation>%1：%2 × %3（见“矩阵”面板）</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more: see the Matrices dock, or copy them as LaTeX.</source>
+        <translation>
+            <numerusform>… 另有 %n 个：请查看“矩阵”面板，或将其复制为 LaTeX。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Printing %1 was cancelled while the attractor was drawn.</source>
+        <translation>绘制吸引子时，%1 的打印已取消。</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FileWriting</name>
+    <message>
+        <source>the folder %1 does not exist</source>
+        <translation>文件夹 %1 不存在</translation>
+    </message>
+    <message>
+        <source>%1 is not a folder</source>
+        <translation>%1 不是文件夹</translation>
+    </message>
+    <message>
+        <source>it is a folder</source>
+        <translation>它是一个文件夹</translation>
+    </message>
+    <message>
+        <source>the file is read-only</source>
+        <translation>该文件是只读的</translation>
+    </message>
+    <message>
+        <source>cannot create a file in the folder %1: %2</source>
+        <translation>无法在文件夹 %1 中创建文件：%2</translation>
+    </message>
+    <message>
+        <source>the folder %1 is read-only</source>
+        <translation>文件夹 %1 是只读的</translation>
+    </message>
+    <message>
+        <source>the file is not open</source>
+        <translation>文件未打开</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FractalItem</name>
+    <message>
+        <source>expected an array of %1 numbers</source>
+        <translation>应为包含 %1 个数的数组</translation>
+    </message>
+    <message>
+        <source>missing (the custom form needs its maps)</source>
+        <translation>缺失（自定义形式需要给出其映射）</translation>
+    </message>
+    <message>
+        <source>expected a non-empty array of maps {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]}</source>
+        <translation>应为由映射 {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]} 组成的非空数组</translation>
+    </message>
+    <message>
+        <source>expected an object with &quot;A&quot; and &quot;b&quot;</source>
+        <translation>应为包含 &quot;A&quot; 和 &quot;b&quot; 的对象</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>缺失</translation>
+    </message>
+    <message>
+        <source>expected a 2 x 2 matrix [[a11, a12], [a21, a22]]</source>
+        <translation>应为 2 × 2 矩阵 [[a11, a12], [a21, a22]]</translation>
+    </message>
+    <message>
+        <source>the custom form needs at least one map</source>
+        <translation>自定义形式至少需要一个映射</translation>
+    </message>
+    <message>
+        <source>map %1 is not a map of the plane</source>
+        <translation>映射 %1 不是平面上的映射</translation>
+    </message>
+    <message>
+        <source>map %1 has a non-finite entry</source>
+        <translation>映射 %1 含有非有限元素</translation>
+    </message>
+    <message>
+        <source>a reference point is not finite</source>
+        <translation>某个参考点不是有限的</translation>
+    </message>
+    <message>
+        <source>need at least 3 reference points (000 §4), got %1</source>
+        <translation>至少需要 3 个参考点（000 §4），实际为 %1 个</translation>
+    </message>
+    <message>
+        <source>Fractal</source>
+        <translation>分形</translation>
+    </message>
+    <message>
+        <source>Change fractal of %1</source>
+        <translation>更改 %1 的分形</translation>
+    </message>
+    <message>
+        <source>the %1 reference points and the %2 control points must be equally many</source>
+        <translation>%1 个参考点与 %2 个控制点的数目必须相等</translation>
+    </message>
+    <message>
+        <source>the reference points are ill-conditioned: S_i R differs from f_i(R) by up to %1</source>
+        <translation>参考点是病态的：S_i R 与 f_i(R) 之差最大可达 %1</translation>
+    </message>
+    <message>
+        <source>Koch curve (000 §4.1)</source>
+        <translation>Koch 曲线（000 §4.1）</translation>
+    </message>
+    <message>
+        <source>Sierpinski triangle (000 §4.2)</source>
+        <translation>Sierpinski 三角形（000 §4.2）</translation>
+    </message>
+    <message>
+        <source>Own maps</source>
+        <translation>自定义映射</translation>
+    </message>
+    <message>
+        <source>The presets use the paper&apos;s printed matrices S_i</source>
+        <translation>预设使用论文中给出的矩阵 S_i</translation>
+    </message>
+    <message>
+        <source>Affine weights</source>
+        <translation>仿射权重</translation>
+    </message>
+    <message>
+        <source>Nearest control points</source>
+        <translation>最近的控制点</translation>
+    </message>
+    <message>
+        <source>Least norm (all points)</source>
+        <translation>最小范数（所有点）</translation>
+    </message>
+    <message>
+        <source>How f_i(P_j) is written as an affine combination of the control points (000 eq. (5)): nearest points keep edits local, least norm lets every point move the whole fractal</source>
+        <translation>如何将 f_i(P_j) 写成控制点的仿射组合（000 eq. (5)）：“最近的控制点”使编辑保持局部，“最小范数”则让每个点都能移动整个分形</translation>
+    </message>
+    <message>
+        <source>Fractal with control points</source>
+        <translation>带控制点的分形</translation>
+    </message>
+</context>
+<context>
+    <name>awb::InsertControlPointCommand</name>
+    <message>
+        <source>Add a control point to %1</source>
+        <translation>向 %1 添加控制点</translation>
+    </message>
+</context>
+<context>
+    <name>awb::InsertItemCommand</name>
+    <message>
+        <source>Add %1</source>
+        <translation>添加 %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::Item</name>
+    <message>
+        <source>Rename</source>
+        <translation>重命名</translation>
+    </message>
+    <message>
+        <source>Change style of %1</source>
+        <translation>更改 %1 的样式</translation>
+    </message>
+    <message>
+        <source>Edit animation of %1</source>
+        <translation>编辑 %1 的动画</translation>
+    </message>
+    <message>
+        <source>the name cannot be empty</source>
+        <translation>名称不能为空</translation>
+    </message>
+    <message>
+        <source>%1 has no parameter &quot;%2&quot;</source>
+        <translation>%1 没有参数“%2”</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a valid value for %2</source>
+        <translation>“%1”不是 %2 的有效值</translation>
+    </message>
+    <message>
+        <source>circular reference</source>
+        <translation>循环引用</translation>
+    </message>
+    <message>
+        <source>there is not enough memory to compute it</source>
+        <translation>内存不足，无法计算</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ItemAddress</name>
+    <message>
+        <source>t: the B-spline&apos;s knot parameter scaled to [0, 1] (the address in base 2)</source>
+        <translation>t：B 样条的节点参数缩放到 [0, 1]（即以 2 为基数的地址）</translation>
+    </message>
+    <message>
+        <source>t: the knot parameter scaled to [0, 1] (the address in base 2)</source>
+        <translation>t：节点参数缩放到 [0, 1]（即以 2 为基数的地址）</translation>
+    </message>
+    <message>
+        <source>t: the Bernstein parameter (the address in base 2)</source>
+        <translation>t：Bernstein 参数（即以 2 为基数的地址）</translation>
+    </message>
+    <message>
+        <source>t: the Bernstein parameter (pieces [0, t], [t, 1] of the split)</source>
+        <translation>t：Bernstein 参数（分割所得的片段 [0, t]、[t, 1]）</translation>
+    </message>
+    <message>
+        <source>t: the scheme&apos;s own parameter, the address read in base %1</source>
+        <translation>t：细分格式自身的参数，即以 %1 为基数读取的地址</translation>
+    </message>
+    <message>
+        <source>this item is drawn by an automaton: its words are not addresses of one IFS</source>
+        <translation>此对象由自动机绘制：其字不是单个 IFS 的地址</translation>
+    </message>
+    <message>
+        <source>a parameter interval is [t0, t1] with two numbers, e.g. [0.25, 0.5]</source>
+        <translation>参数区间 [t0, t1] 由两个数组成，例如 [0.25, 0.5]</translation>
+    </message>
+    <message>
+        <source>the parameter interval [%1, %2] must satisfy 0 &lt;= t0 &lt; t1 &lt;= 1</source>
+        <translation>参数区间 [%1, %2] 必须满足 0 &lt;= t0 &lt; t1 &lt;= 1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ItemController</name>
+    <message>
+        <source>%1 shows nothing: %2</source>
+        <translation>%1 未显示任何内容：%2</translation>
+    </message>
+    <message>
+        <source>%1 has no attractor to draw.</source>
+        <translation>%1 没有可绘制的吸引子。</translation>
+    </message>
+    <message>
+        <source>%1 cannot be drawn: %2</source>
+        <translation>无法绘制 %1：%2</translation>
+    </message>
+    <message>
+        <source>Start set: %1</source>
+        <translation>初始集：%1</translation>
+    </message>
+    <message>
+        <source>Regularity: only for subdivision curves</source>
+        <translation>正则性：仅适用于细分曲线</translation>
+    </message>
+    <message>
+        <source>Regularity: does not apply (%1)</source>
+        <translation>正则性：不适用（%1）</translation>
+    </message>
+    <message>
+        <source>complex de Casteljau parameter</source>
+        <translation>复 de Casteljau 参数</translation>
+    </message>
+    <message>
+        <source>the scheme&apos;s parameters are refused</source>
+        <translation>细分格式的参数被拒绝</translation>
+    </message>
+    <message>
+        <source>F^k(X0) to the %1</source>
+        <translation>F^k(X0) 到 %1</translation>
+    </message>
+    <message>
+        <source>F^k(X0)</source>
+        <translation>F^k(X0)</translation>
+    </message>
+    <message>
+        <source>Changing %1 (%2, %3) from %4 to %5 makes row %2 sum to %6, not 1: the rows of a subdivision matrix are affine combinations.
+
+Take the difference %7 from the entry in column %8 (%9 → %10) so that the row sums to 1?</source>
+        <translation>将 %1 (%2, %3) 从 %4 改为 %5 会使第 %2 行之和为 %6，而不是 1：细分矩阵的各行是仿射组合。
+
+是否从第 %8 列的元素中减去差值 %7（%9 → %10），使该行之和为 1？</translation>
+    </message>
+    <message>
+        <source>%1 (%2, %3) = %4 was refused: %5</source>
+        <translation>%1 (%2, %3) = %4 被拒绝：%5</translation>
+    </message>
+    <message>
+        <source>Insert Point &amp;Before %1</source>
+        <translation>在 %1 之前插入点(&amp;B)</translation>
+    </message>
+    <message>
+        <source>Insert Point &amp;After %1</source>
+        <translation>在 %1 之后插入点(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Delete Point %1</source>
+        <translation>删除点 %1(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;Insert Point Here</source>
+        <translation>在此处插入点(&amp;I)</translation>
+    </message>
+    <message>
+        <source>&amp;Append Point Here</source>
+        <translation>在此处追加点(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Fit View</source>
+        <translation>适应视图(&amp;F)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::JunctionSpec</name>
+    <message>
+        <source>the junction parameter %1 must be a finite number</source>
+        <translation>拼接参数 %1 必须是有限数</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside (%3, %4): %5</source>
+        <translation>%1 = %2 不在 (%3, %4) 内：%5</translation>
+    </message>
+</context>
+<context>
+    <name>awb::MainWindow</name>
+    <message>
+        <source>Attractor Workbench projects (*.awb);;All files (*)</source>
+        <translation>Attractor Workbench 项目 (*.awb);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>自动保存失败：%1</translation>
+    </message>
+    <message>
+        <source>&lt;original&gt;</source>
+        <translation>&lt;原始状态&gt;</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Cancel the analysis</source>
+        <translation>取消分析</translation>
+    </message>
+    <message>
+        <source>Drawing %p%</source>
+        <translation>正在绘制 %p%</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Stop drawing the attractor (Esc); F5 draws it again</source>
+        <translation>停止绘制吸引子（Esc）；按 F5 重新绘制</translation>
+    </message>
+    <message>
+        <source>Drawing the attractor for the figure…</source>
+        <translation>正在为图形绘制吸引子…</translation>
+    </message>
+    <message>
+        <source>Figure</source>
+        <translation>图形</translation>
+    </message>
+    <message>
+        <source>Drawing stopped; press F5 to draw again.</source>
+        <translation>绘制已停止；按 F5 重新绘制。</translation>
+    </message>
+    <message>
+        <source>Analysis %p%</source>
+        <translation>分析 %p%</translation>
+    </message>
+    <message>
+        <source>Analysis cancelled.</source>
+        <translation>分析已取消。</translation>
+    </message>
+    <message>
+        <source>Row sum</source>
+        <translation>行和</translation>
+    </message>
+    <message>
+        <source>Edit refused</source>
+        <translation>编辑被拒绝</translation>
+    </message>
+    <message>
+        <source>x = %1, y = %2</source>
+        <translation>x = %1，y = %2</translation>
+    </message>
+    <message>
+        <source>Drawing failed: %1</source>
+        <translation>绘制失败：%1</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>新建(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>打开(&amp;O)…</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>保存(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>另存为(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Re&amp;vert</source>
+        <translation>还原(&amp;V)</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>关闭(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Print…</source>
+        <translation>打印(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>Print Pre&amp;view…</source>
+        <translation>打印预览(&amp;V)…</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+P</source>
+        <translation>Ctrl+Shift+P</translation>
+    </message>
+    <message>
+        <source>Print to P&amp;DF…</source>
+        <translation>打印为 PDF(&amp;D)…</translation>
+    </message>
+    <message>
+        <source>Print to PDF</source>
+        <translation>打印为 PDF</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>PDF 文档 (*.pdf)</translation>
+    </message>
+    <message>
+        <source>&amp;Export Figure…</source>
+        <translation>导出图形(&amp;E)…</translation>
+    </message>
+    <message>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <source>Export &amp;Points…</source>
+        <translation>导出点(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+E</source>
+        <translation>Ctrl+Shift+E</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>Pre&amp;ferences…</source>
+        <translation>首选项(&amp;F)…</translation>
+    </message>
+    <message>
+        <source>Copy Matrices as &amp;LaTeX</source>
+        <translation>将矩阵复制为 LaTeX(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+L</source>
+        <translation>Ctrl+Shift+L</translation>
+    </message>
+    <message>
+        <source>The current item has no matrices.</source>
+        <translation>当前对象没有矩阵。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Copied %n matrices as LaTeX (amsmath bmatrix).</source>
+        <translation>
+            <numerusform>已将 %n 个矩阵复制为 LaTeX（amsmath bmatrix）。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate Item</source>
+        <translation>复制对象(&amp;U)</translation>
+    </message>
+    <message>
+        <source>Ctrl+D</source>
+        <translation>Ctrl+D</translation>
+    </message>
+    <message>
+        <source>&amp;Delete Item</source>
+        <translation>删除对象(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;In</source>
+        <translation>放大(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;Out</source>
+        <translation>缩小(&amp;O)</translation>
+    </message>
+    <message>
+        <source>&amp;Fit</source>
+        <translation>适应窗口(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Ctrl+0</source>
+        <translation>Ctrl+0</translation>
+    </message>
+    <message>
+        <source>&amp;Stop Drawing</source>
+        <translation>停止绘制(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Draw Again</source>
+        <translation>重新绘制(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;Play/Pause Animation</source>
+        <translation>播放/暂停动画(&amp;P)</translation>
+    </message>
+    <message>
+        <source>S&amp;top Animation</source>
+        <translation>停止动画(&amp;T)</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Layout</source>
+        <translation>重置布局(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;About Attractor Workbench</source>
+        <translation>关于 Attractor Workbench(&amp;A)</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>关于 Qt(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>用户指南(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>撤销(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>重做(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>撤销</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>重做</translation>
+    </message>
+    <message>
+        <source>Nothing to %1 (%2)</source>
+        <translation>没有可%1的操作（%2）</translation>
+    </message>
+    <message>
+        <source>%1 %2 (%3)</source>
+        <translation>%1 %2（%3）</translation>
+    </message>
+    <message>
+        <source>&amp;Control Polygon</source>
+        <translation>控制多边形(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Control &amp;Net (3D)</source>
+        <translation>控制网格（3D）(&amp;N)</translation>
+    </message>
+    <message>
+        <source>Subdivided &amp;Mesh (3D)</source>
+        <translation>细分网格（3D）(&amp;M)</translation>
+    </message>
+    <message>
+        <source>&amp;Attractor (3D)</source>
+        <translation>吸引子（3D）(&amp;A)</translation>
+    </message>
+    <message>
+        <source>A&amp;xes (3D)</source>
+        <translation>坐标轴（3D）(&amp;X)</translation>
+    </message>
+    <message>
+        <source>&amp;Bounding Box (3D)</source>
+        <translation>包围盒（3D）(&amp;B)</translation>
+    </message>
+    <message>
+        <source>&amp;Perspective (3D)</source>
+        <translation>透视投影（3D）(&amp;P)</translation>
+    </message>
+    <message>
+        <source>&amp;Start Set</source>
+        <translation>初始集(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Exact Curve</source>
+        <translation>精确曲线(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;Grid</source>
+        <translation>网格线(&amp;G)</translation>
+    </message>
+    <message>
+        <source>Project</source>
+        <translation>项目</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>属性</translation>
+    </message>
+    <message>
+        <source>Undo History</source>
+        <translation>撤销历史</translation>
+    </message>
+    <message>
+        <source>Spectrum</source>
+        <translation>谱</translation>
+    </message>
+    <message>
+        <source>Matrices</source>
+        <translation>矩阵</translation>
+    </message>
+    <message>
+        <source>Analysis</source>
+        <translation>分析</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>地址</translation>
+    </message>
+    <message>
+        <source>Animation</source>
+        <translation>动画</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>最近打开(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>编辑(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;Item</source>
+        <translation>对象(&amp;I)</translation>
+    </message>
+    <message>
+        <source>&amp;Add</source>
+        <translation>添加(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <source>Four-point &amp;Regularity Chart…</source>
+        <translation>四点格式正则性图表(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation>主工具栏</translation>
+    </message>
+    <message>
+        <source> Hutchinson step: </source>
+        <translation> Hutchinson 步数：</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>关</translation>
+    </message>
+    <message>
+        <source>Draw F^k(X0) of the start set X0 as vectors</source>
+        <translation>将初始集 X0 的 F^k(X0) 以矢量形式绘制</translation>
+    </message>
+    <message>
+        <source>  Subdivision steps: </source>
+        <translation>  细分步数：</translation>
+    </message>
+    <message>
+        <source>Classic subdivision polygons beside the IFS attractor</source>
+        <translation>在 IFS 吸引子旁显示经典细分多边形</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>未命名</translation>
+    </message>
+    <message>
+        <source>%1[*] — Attractor Workbench</source>
+        <translation>%1[*] — Attractor Workbench</translation>
+    </message>
+    <message>
+        <source>Cubic B-spline</source>
+        <translation>三次 B 样条</translation>
+    </message>
+    <message>
+        <source>Open Project</source>
+        <translation>打开项目</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>已打开 %1</translation>
+    </message>
+    <message>
+        <source>Save Project</source>
+        <translation>保存项目</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>已保存 %1</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>未保存的更改</translation>
+    </message>
+    <message>
+        <source>The project &quot;%1&quot; has unsaved changes. Save them?</source>
+        <translation>项目“%1”有未保存的更改。是否保存？</translation>
+    </message>
+    <message>
+        <source>Projects and figures with their item (*.awb *.png);;Attractor Workbench projects (*.awb);;Exported figures (*.png);;All files (*)</source>
+        <translation>项目及带有对象的图形 (*.awb *.png);;Attractor Workbench 项目 (*.awb);;导出的图形 (*.png);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Save Project As</source>
+        <translation>项目另存为</translation>
+    </message>
+    <message>
+        <source>Revert</source>
+        <translation>还原</translation>
+    </message>
+    <message>
+        <source>Discard all changes and reload %1?</source>
+        <translation>放弃所有更改并重新加载 %1？</translation>
+    </message>
+    <message>
+        <source>Printing cancelled.</source>
+        <translation>打印已取消。</translation>
+    </message>
+    <message>
+        <source>Print</source>
+        <translation>打印</translation>
+    </message>
+    <message>
+        <source>The printer could not be started.</source>
+        <translation>无法启动打印机。</translation>
+    </message>
+    <message>
+        <source>A .tex file holds the matrices only: choose the Matrices view, or .png, .svg or .pdf for a picture.</source>
+        <translation>.tex 文件只包含矩阵：请选择“矩阵”视图；若要导出图片，请选择 .png、.svg 或 .pdf。</translation>
+    </message>
+    <message>
+        <source>The current item has no matrices to export.</source>
+        <translation>当前对象没有可导出的矩阵。</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2.</source>
+        <translation>无法写入 %1：%2。</translation>
+    </message>
+    <message>
+        <source>Unknown format &quot;%1&quot;: use .png, .svg or .pdf (.tex for the matrices).</source>
+        <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf（矩阵使用 .tex）。</translation>
+    </message>
+    <message>
+        <source>Exporting %1 was cancelled while the attractor was drawn.</source>
+        <translation>绘制吸引子时，%1 的导出已取消。</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>导出</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>已导出 %1</translation>
+    </message>
+    <message>
+        <source>About Attractor Workbench</source>
+        <translation>关于 Attractor Workbench</translation>
+    </message>
+    <message>
+        <source>Attractor Workbench %1
+
+Subdivision curves as attractors of iterated function systems: control points, subdivision matrices, spectra and figures.</source>
+        <translation>Attractor Workbench %1
+
+作为迭代函数系统吸引子的细分曲线：控制点、细分矩阵、谱与图形。</translation>
+    </message>
+    <message>
+        <source>Spectra of %1</source>
+        <translation>%1 的谱</translation>
+    </message>
+    <message>
+        <source>Bicubic B-spline</source>
+        <translation>双三次 B 样条</translation>
+    </message>
+    <message>
+        <source>Loop (box spline)</source>
+        <translation>Loop（箱样条）</translation>
+    </message>
+    <message>
+        <source>Kobbelt √3</source>
+        <translation>Kobbelt √3</translation>
+    </message>
+    <message>
+        <source>%1, %2 layout</source>
+        <translation>%1，%2 布局</translation>
+    </message>
+    <message>
+        <source>%1 surface</source>
+        <translation>%1 曲面</translation>
+    </message>
+    <message>
+        <source>duplicate</source>
+        <translation>副本</translation>
+    </message>
+    <message>
+        <source>Duplicate Item</source>
+        <translation>复制对象</translation>
+    </message>
+    <message>
+        <source>&amp;%1 %2</source>
+        <translation>&amp;%1 %2</translation>
+    </message>
+    <message>
+        <source>an unsaved project</source>
+        <translation>未保存的项目</translation>
+    </message>
+    <message>
+        <source>Recover Project</source>
+        <translation>恢复项目</translation>
+    </message>
+    <message>
+        <source>Attractor Workbench did not shut down properly. A recovery copy of %1 from %2 exists. Recover it? (Discard deletes the copy.)</source>
+        <translation>Attractor Workbench 未正常关闭。存在 %1 的恢复副本（保存于 %2）。是否恢复？（“放弃”将删除该副本。）</translation>
+    </message>
+    <message>
+        <source>The recovery copy cannot be read: %1</source>
+        <translation>无法读取恢复副本：%1</translation>
+    </message>
+    <message>
+        <source>The recovery copy cannot be read: %1
+
+It was kept as %2.</source>
+        <translation>无法读取恢复副本：%1
+
+已将其保留为 %2。</translation>
+    </message>
+    <message>
+        <source>Export Points</source>
+        <translation>导出点</translation>
+    </message>
+    <message>
+        <source>The current item has no attractor whose points could be exported.</source>
+        <translation>当前对象没有可导出点的吸引子。</translation>
+    </message>
+    <message>
+        <source>Exported the points to %1</source>
+        <translation>已将点导出到 %1</translation>
+    </message>
+    <message>
+        <source>The current item has no attractor.</source>
+        <translation>当前对象没有吸引子。</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>语言(&amp;L)</translation>
+    </message>
+    <message>
+        <source>System Default</source>
+        <translation>系统默认</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>语言</translation>
+    </message>
+    <message>
+        <source>The language changes when Attractor Workbench is started again.</source>
+        <translation>重新启动 Attractor Workbench 后，语言更改才会生效。</translation>
+    </message>
+    <message>
+        <source>Built with Qt %1 (running on Qt %2), Eigen %3 and QCustomPlot %4.</source>
+        <translation>基于 Qt %1（运行于 Qt %2）、Eigen %3 和 QCustomPlot %4 构建。</translation>
+    </message>
+</context>
+<context>
+    <name>awb::MatrixHeatMap</name>
+    <message>
+        <source>%1 (%2, %3) = %4</source>
+        <translation>%1 (%2, %3) = %4</translation>
+    </message>
+</context>
+<context>
+    <name>awb::MatrixView</name>
+    <message>
+        <source>%1 %2 %3i (modulus %4)</source>
+        <translation>%1 %2 %3i（模为 %4）</translation>
+    </message>
+    <message>
+        <source>Sum of row %1: %2</source>
+        <translation>第 %1 行之和：%2</translation>
+    </message>
+    <message>
+        <source>Sum of column %1: %2</source>
+        <translation>第 %1 列之和：%2</translation>
+    </message>
+    <message>
+        <source>“%1” is not a finite number: %2, row %3, column %4 was not changed.</source>
+        <translation>“%1”不是有限数：%2 第 %3 行第 %4 列未更改。</translation>
+    </message>
+    <message>
+        <source>A block</source>
+        <translation>A 块</translation>
+    </message>
+    <message>
+        <source>b row</source>
+        <translation>b 行</translation>
+    </message>
+    <message>
+        <source>fixed part of the lifted map</source>
+        <translation>提升映射的固定部分</translation>
+    </message>
+    <message>
+        <source>— &lt;span style=&apos;background:#e2ecfa&apos;&gt;&amp;nbsp;A&amp;nbsp;&lt;/span&gt; block, &lt;span style=&apos;background:#fcecd6&apos;&gt;&amp;nbsp;b&amp;nbsp;&lt;/span&gt; row</source>
+        <translation>— &lt;span style=&apos;background:#e2ecfa&apos;&gt;&amp;nbsp;A&amp;nbsp;&lt;/span&gt; 块，&lt;span style=&apos;background:#fcecd6&apos;&gt;&amp;nbsp;b&amp;nbsp;&lt;/span&gt; 行</translation>
+    </message>
+    <message>
+        <source>(complex entries)</source>
+        <translation>（复数元素）</translation>
+    </message>
+</context>
+<context>
+    <name>awb::MoveControlPointsCommand</name>
+    <message numerus="yes">
+        <source>Move %n control points of %1</source>
+        <translation>
+            <numerusform>移动 %1 的 %n 个控制点</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>awb::MoveItemCommand</name>
+    <message>
+        <source>Move %1</source>
+        <translation>移动 %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::NormalVectorItem</name>
+    <message>
+        <source>Normal-vector curve</source>
+        <translation>法向量曲线</translation>
+    </message>
+    <message>
+        <source>Change normal-vector scheme of %1</source>
+        <translation>更改 %1 的法向量格式</translation>
+    </message>
+    <message>
+        <source>the normal-vector scheme is not linear: it has no subdivision matrices (001 eq. (1))</source>
+        <translation>法向量格式不是线性的：它没有细分矩阵（001 eq. (1)）</translation>
+    </message>
+    <message>
+        <source>No equivalent IFS: %1</source>
+        <translation>没有等价的 IFS：%1</translation>
+    </message>
+    <message>
+        <source>expected true or false</source>
+        <translation>应为 true 或 false</translation>
+    </message>
+    <message>
+        <source>expected an array of sign rules</source>
+        <translation>应为符号规则的数组</translation>
+    </message>
+    <message>
+        <source>expected one of &quot;%1&quot;</source>
+        <translation>应为 &quot;%1&quot; 之一</translation>
+    </message>
+    <message>
+        <source>Scheme</source>
+        <translation>细分格式</translation>
+    </message>
+    <message>
+        <source>Own rules</source>
+        <translation>自定义规则</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>步数</translation>
+    </message>
+    <message>
+        <source>Subdivision steps of the polygon shown</source>
+        <translation>所显示多边形的细分步数</translation>
+    </message>
+    <message>
+        <source>Normal direction</source>
+        <translation>法向</translation>
+    </message>
+    <message>
+        <source>Counter-clockwise (positive)</source>
+        <translation>逆时针（正向）</translation>
+    </message>
+    <message>
+        <source>Clockwise (negative)</source>
+        <translation>顺时针（负向）</translation>
+    </message>
+    <message>
+        <source>Closed polygon</source>
+        <translation>闭合多边形</translation>
+    </message>
+    <message>
+        <source>α%1</source>
+        <translation>α%1</translation>
+    </message>
+    <message>
+        <source>Rules</source>
+        <translation>规则</translation>
+    </message>
+    <message>
+        <source>Position of new point %1 along the edge (001 eq. (1))</source>
+        <translation>新点 %1 沿边的位置（001 eq. (1)）</translation>
+    </message>
+    <message>
+        <source>β%1</source>
+        <translation>β%1</translation>
+    </message>
+    <message>
+        <source>Displacement of new point %1 along the normal</source>
+        <translation>新点 %1 沿法向的位移</translation>
+    </message>
+</context>
+<context>
+    <name>awb::NormalVectorSpec</name>
+    <message>
+        <source>unknown preset &quot;%1&quot;</source>
+        <translation>未知预设“%1”</translation>
+    </message>
+    <message>
+        <source>%1 steps: at least 0 and at most %2 are allowed</source>
+        <translation>步数 %1：允许的范围为 0 到 %2</translation>
+    </message>
+    <message>
+        <source>need at least 2 rules (p &gt;= 2), got %1</source>
+        <translation>至少需要 2 条规则（p &gt;= 2），实际为 %1 条</translation>
+    </message>
+    <message>
+        <source>%1 values of beta for %2 of alpha: need one per rule</source>
+        <translation>beta 有 %1 个值而 alpha 有 %2 个：每条规则需要一个</translation>
+    </message>
+    <message>
+        <source>%1 signs for %2 rules: give none, one, or one per rule</source>
+        <translation>%2 条规则有 %1 个符号：请不给出、给出一个，或每条规则给出一个</translation>
+    </message>
+    <message>
+        <source>%1_%2 is not a finite number</source>
+        <translation>%1_%2 不是有限数</translation>
+    </message>
+</context>
+<context>
+    <name>awb::PaletteDialog</name>
+    <message>
+        <source>Map Colours</source>
+        <translation>映射颜色</translation>
+    </message>
+    <message>
+        <source>The colour of the points each map f&lt;sub&gt;i&lt;/sub&gt; makes (Style: colour by map or by address).</source>
+        <translation>每个映射 f&lt;sub&gt;i&lt;/sub&gt; 所生成的点的颜色（样式：按映射或按地址着色）。</translation>
+    </message>
+    <message>
+        <source>Colour of map %1</source>
+        <translation>映射 %1 的颜色</translation>
+    </message>
+    <message>
+        <source>Map %1:</source>
+        <translation>映射 %1：</translation>
+    </message>
+    <message>
+        <source>Use the &amp;Default Colours</source>
+        <translation>使用默认颜色(&amp;D)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::PointExport</name>
+    <message>
+        <source>cannot write the points: %1</source>
+        <translation>无法写入这些点：%1</translation>
+    </message>
+    <message>
+        <source>--address needs an item drawn by one IFS; this one is drawn by an automaton</source>
+        <translation>--address 需要由单个 IFS 绘制的对象；此对象由自动机绘制</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is drawn by an automaton: PLY export covers items with one IFS</source>
+        <translation>“%1”由自动机绘制：PLY 导出仅支持由单个 IFS 绘制的对象</translation>
+    </message>
+    <message>
+        <source>wrote %1 points, expected %2</source>
+        <translation>写入了 %1 个点，应为 %2 个</translation>
+    </message>
+</context>
+<context>
+    <name>awb::PointExportDialog</name>
+    <message>
+        <source>Export Points of %1</source>
+        <translation>导出 %1 的点</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>浏览(&amp;B)…</translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation>文件：</translation>
+    </message>
+    <message>
+        <source>CSV text: x, y[, z], map, view</source>
+        <translation>CSV 文本：x, y[, z], map, view</translation>
+    </message>
+    <message>
+        <source>PLY point cloud: x, y, z, map colour, map</source>
+        <translation>PLY 点云：x, y, z, 映射颜色, map</translation>
+    </message>
+    <message>
+        <source>F&amp;ormat:</source>
+        <translation>格式(&amp;O)：</translation>
+    </message>
+    <message>
+        <source>The points of F^k(X0): every image of the start set&apos;s vertices after k steps of the Hutchinson operator</source>
+        <translation>F^k(X0) 的点：初始集顶点经过 Hutchinson 算子 k 步迭代后的所有像</translation>
+    </message>
+    <message>
+        <source>&amp;Depth k:</source>
+        <translation>深度 k(&amp;D)：</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>导出(&amp;E)</translation>
+    </message>
+    <message>
+        <source>Export Points</source>
+        <translation>导出点</translation>
+    </message>
+    <message>
+        <source>CSV text (*.csv);;PLY point cloud (*.ply)</source>
+        <translation>CSV 文本 (*.csv);;PLY 点云 (*.ply)</translation>
+    </message>
+    <message>
+        <source>The number of points depends on the automaton.</source>
+        <translation>点的数目取决于自动机。</translation>
+    </message>
+    <message>
+        <source>%1 points</source>
+        <translation>%1 个点</translation>
+    </message>
+    <message>
+        <source> — too many (at most %1): choose a smaller depth.</source>
+        <translation> — 过多（最多 %1 个）：请选择较小的深度。</translation>
+    </message>
+    <message>
+        <source>%1 cannot be computed: %2</source>
+        <translation>无法计算 %1：%2</translation>
+    </message>
+    <message>
+        <source>Start set: %1</source>
+        <translation>初始集：%1</translation>
+    </message>
+    <message>
+        <source>Depth %1 gives %2 points, more than %3: choose a smaller depth.</source>
+        <translation>深度 %1 产生 %2 个点，超过 %3 个：请选择较小的深度。</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>Writing the points of %1…</source>
+        <translation>正在写入 %1 的点…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Exporting the points was cancelled; nothing was written.</source>
+        <translation>导出点已取消；未写入任何内容。</translation>
+    </message>
+</context>
+<context>
+    <name>awb::PreferencesDialog</name>
+    <message>
+        <source>auto</source>
+        <translation>自动</translation>
+    </message>
+</context>
+<context>
+    <name>awb::Project</name>
+    <message>
+        <source>Item</source>
+        <translation>对象</translation>
+    </message>
+    <message>
+        <source>the name cannot be empty</source>
+        <translation>名称不能为空</translation>
+    </message>
+    <message>
+        <source>another item is already called &quot;%1&quot;</source>
+        <translation>已有另一个对象名为“%1”</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n items</source>
+        <translation>
+            <numerusform>移除 %n 个对象</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Rename %1 to %2</source>
+        <translation>将 %1 重命名为 %2</translation>
+    </message>
+    <message>
+        <source>the project has no file name yet: use &quot;Save As&quot;</source>
+        <translation>项目还没有文件名：请使用“另存为”</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ProjectIO</name>
+    <message>
+        <source>%1: cannot save: %2</source>
+        <translation>%1：无法保存：%2</translation>
+    </message>
+    <message>
+        <source>%1: cannot open: %2</source>
+        <translation>%1：无法打开：%2</translation>
+    </message>
+    <message>
+        <source>%1: the file is %2 MB; project files larger than %3 MB are refused (a project is at most a few MB)</source>
+        <translation>%1：文件大小为 %2 MB；大于 %3 MB 的项目文件将被拒绝（一个项目最多只有几 MB）</translation>
+    </message>
+    <message>
+        <source>%1: cannot read: %2</source>
+        <translation>%1：无法读取：%2</translation>
+    </message>
+    <message>
+        <source>%1: the file is empty</source>
+        <translation>%1：文件为空</translation>
+    </message>
+    <message>
+        <source>%1: the file holds only white space</source>
+        <translation>%1：文件只包含空白字符</translation>
+    </message>
+    <message>
+        <source>%1: the file is UTF-16 or UTF-32 text; project files are UTF-8 (save it again as UTF-8)</source>
+        <translation>%1：文件是 UTF-16 或 UTF-32 文本；项目文件应为 UTF-8（请将其重新保存为 UTF-8）</translation>
+    </message>
+    <message>
+        <source>%1: expected a JSON object at the top level</source>
+        <translation>%1：顶层应为 JSON 对象</translation>
+    </message>
+    <message>
+        <source>%1: not valid JSON: %2 at line %3, column %4</source>
+        <translation>%1：不是有效的 JSON：%2，位于第 %3 行第 %4 列</translation>
+    </message>
+    <message>
+        <source>expected &quot;%1&quot;: this is not an Attractor Workbench project</source>
+        <translation>应为 &quot;%1&quot;：这不是 Attractor Workbench 项目</translation>
+    </message>
+    <message>
+        <source>%1: the file has format version %2, written by a newer version of Attractor Workbench; this version reads format version %3 only. Please update the application.</source>
+        <translation>%1：该文件的格式版本为 %2，由较新版本的 Attractor Workbench 写入；此版本只能读取格式版本 %3。请更新本程序。</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>缺失</translation>
+    </message>
+    <message>
+        <source>expected an array</source>
+        <translation>应为数组</translation>
+    </message>
+    <message>
+        <source>%1: field &quot;%2&quot;: %3</source>
+        <translation>%1：字段 &quot;%2&quot;：%3</translation>
+    </message>
+    <message>
+        <source>item %1</source>
+        <translation>第 %1 个对象</translation>
+    </message>
+    <message>
+        <source>%1: %2: field &quot;%3&quot;: %4</source>
+        <translation>%1：%2：字段 &quot;%3&quot;：%4</translation>
+    </message>
+    <message>
+        <source>field &quot;%1&quot;: %2</source>
+        <translation>字段 &quot;%1&quot;：%2</translation>
+    </message>
+    <message>
+        <source>expected an object</source>
+        <translation>应为对象</translation>
+    </message>
+    <message>
+        <source>unknown item type %1; this version knows %2</source>
+        <translation>未知的对象类型 %1；此版本支持的类型为 %2</translation>
+    </message>
+    <message>
+        <source>another item is already called %1</source>
+        <translation>已有另一个对象名为 %1</translation>
+    </message>
+    <message>
+        <source>expected an array of items</source>
+        <translation>应为对象的数组</translation>
+    </message>
+    <message>
+        <source>expected an array of lifted points [x, y, c1, ...]</source>
+        <translation>应为提升点 [x, y, c1, ...] 的数组</translation>
+    </message>
+    <message>
+        <source>expected a lifted point [x, y, c1, ...]</source>
+        <translation>应为提升点 [x, y, c1, ...]</translation>
+    </message>
+    <message>
+        <source>expected an array of &quot;#rrggbb&quot; strings</source>
+        <translation>应为 &quot;#rrggbb&quot; 字符串的数组</translation>
+    </message>
+    <message>
+        <source>expected a string &quot;#rrggbb&quot;</source>
+        <translation>应为字符串 &quot;#rrggbb&quot;</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ProjectTreeModel</name>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>类型</translation>
+    </message>
+    <message numerus="yes">
+        <source>Move %n items</source>
+        <translation>
+            <numerusform>移动 %n 个对象</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>awb::PropertiesWidget</name>
+    <message>
+        <source>Value refused</source>
+        <translation>值被拒绝</translation>
+    </message>
+    <message>
+        <source>%1 cannot be set to %2.</source>
+        <translation>无法将 %1 设为 %2。</translation>
+    </message>
+    <message>
+        <source>No item selected.</source>
+        <translation>未选择对象。</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>名称(&amp;N)：</translation>
+    </message>
+    <message>
+        <source>The name is empty or already taken.</source>
+        <translation>名称为空或已被占用。</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>Re </source>
+        <translation>Re </translation>
+    </message>
+    <message>
+        <source>Im </source>
+        <translation>Im </translation>
+    </message>
+    <message>
+        <source>Start set X0</source>
+        <translation>初始集 X0</translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation>点</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>线段</translation>
+    </message>
+    <message>
+        <source>Triangle</source>
+        <translation>三角形</translation>
+    </message>
+    <message>
+        <source>Polygon</source>
+        <translation>多边形</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>点集</translation>
+    </message>
+    <message>
+        <source>Lifted points</source>
+        <translation>提升点</translation>
+    </message>
+    <message>
+        <source>Kind:</source>
+        <translation>类型：</translation>
+    </message>
+    <message>
+        <source>Drag its vertices in the attractor view.</source>
+        <translation>在吸引子视图中拖动其顶点。</translation>
+    </message>
+    <message>
+        <source>Points of the lifted space of 000 §2: x, y, then the extra coordinates of the lifting, the homogeneous 1 implied. Commas between coordinates, &apos;;&apos; between points.</source>
+        <translation>000 §2 提升空间中的点：先是 x、y，然后是提升的附加坐标，齐次坐标 1 隐含。坐标之间用逗号分隔，点之间用“;”分隔。</translation>
+    </message>
+    <message>
+        <source>Lifted:</source>
+        <translation>提升点：</translation>
+    </message>
+    <message>
+        <source>The start set was refused.</source>
+        <translation>初始集被拒绝。</translation>
+    </message>
+    <message>
+        <source>The item has no control points.</source>
+        <translation>该对象没有控制点。</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a number.</source>
+        <translation>“%1”不是数。</translation>
+    </message>
+    <message>
+        <source>Algorithm</source>
+        <translation>算法</translation>
+    </message>
+    <message>
+        <source>Deterministic</source>
+        <translation>确定性</translation>
+    </message>
+    <message>
+        <source>Random (chaos game)</source>
+        <translation>随机（混沌游戏）</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>模式：</translation>
+    </message>
+    <message>
+        <source>Depth:</source>
+        <translation>深度：</translation>
+    </message>
+    <message>
+        <source>Samples:</source>
+        <translation>样本数：</translation>
+    </message>
+    <message>
+        <source>Style</source>
+        <translation>样式</translation>
+    </message>
+    <message>
+        <source>By map</source>
+        <translation>按映射</translation>
+    </message>
+    <message>
+        <source>By address prefix</source>
+        <translation>按地址前缀</translation>
+    </message>
+    <message>
+        <source>Single colour</source>
+        <translation>单一颜色</translation>
+    </message>
+    <message>
+        <source>Colour:</source>
+        <translation>颜色：</translation>
+    </message>
+    <message>
+        <source>Prefix length:</source>
+        <translation>前缀长度：</translation>
+    </message>
+    <message>
+        <source>Point size:</source>
+        <translation>点大小：</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>控制点</translation>
+    </message>
+    <message>
+        <source>Set %1 (%2)</source>
+        <translation>点集 %1（%2）</translation>
+    </message>
+    <message>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <source>z</source>
+        <translation>z</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a finite number.</source>
+        <translation>“%1”不是有限数。</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>添加</translation>
+    </message>
+    <message>
+        <source>Append a point after the last one</source>
+        <translation>在最后一个点之后追加一个点</translation>
+    </message>
+    <message>
+        <source>Insert</source>
+        <translation>插入</translation>
+    </message>
+    <message>
+        <source>Insert a point before the selected one (halfway to its predecessor)</source>
+        <translation>在所选点之前插入一个点（位于它与前一个点的中点）</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>删除</translation>
+    </message>
+    <message>
+        <source>Delete the selected points (one undo step)</source>
+        <translation>删除所选的点（一次撤销即可恢复）</translation>
+    </message>
+    <message>
+        <source>The colour of each map&apos;s points: click to choose</source>
+        <translation>每个映射所生成点的颜色：单击以选择</translation>
+    </message>
+    <message>
+        <source>Default…</source>
+        <translation>默认…</translation>
+    </message>
+    <message>
+        <source>Own…</source>
+        <translation>自定义…</translation>
+    </message>
+    <message>
+        <source>Map colours:</source>
+        <translation>映射颜色：</translation>
+    </message>
+    <message>
+        <source>Eigenvalues</source>
+        <translation>特征值</translation>
+    </message>
+    <message>
+        <source>The item whose matrices are analysed</source>
+        <translation>要分析其矩阵的对象</translation>
+    </message>
+    <message>
+        <source>S_i: the subdivision matrices (their eigenvalue 1 is affine invariance); A_i: the linear parts of the lifted maps, whose subdominant eigenvalue decides the tangents; M_i: the lifted maps themselves (003 §4, 004 §2.1)</source>
+        <translation>S_i：细分矩阵（其特征值 1 对应仿射不变性）；A_i：提升映射的线性部分，其次占优特征值决定切线；M_i：提升映射本身（003 §4，004 §2.1）</translation>
+    </message>
+    <message>
+        <source>Source:</source>
+        <translation>来源：</translation>
+    </message>
+    <message>
+        <source>Matrices:</source>
+        <translation>矩阵：</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>（无）</translation>
+    </message>
+    <message>
+        <source>%1 (missing)</source>
+        <translation>%1（缺失）</translation>
+    </message>
+    <message>
+        <source>%1 matrices %2_i, %3 eigenvalues: see the Spectrum and Matrices panels.</source>
+        <translation>%1 个矩阵 %2_i，%3 个特征值：请查看“谱”和“矩阵”面板。</translation>
+    </message>
+</context>
+<context>
+    <name>awb::Recovery</name>
+    <message>
+        <source>%1: cannot open: %2</source>
+        <translation>%1：无法打开：%2</translation>
+    </message>
+    <message>
+        <source>%1: not an Attractor Workbench recovery file</source>
+        <translation>%1：不是 Attractor Workbench 恢复文件</translation>
+    </message>
+    <message>
+        <source>%1: written by a newer version of Attractor Workbench</source>
+        <translation>%1：由较新版本的 Attractor Workbench 写入</translation>
+    </message>
+    <message>
+        <source>%1: field &quot;project&quot;: expected an object</source>
+        <translation>%1：字段 &quot;project&quot;：应为对象</translation>
+    </message>
+</context>
+<context>
+    <name>awb::RegularityChart</name>
+    <message>
+        <source>Regularity of the four-point scheme</source>
+        <translation>四点格式的正则性</translation>
+    </message>
+    <message>
+        <source>Certified Hölder regularity r(ω) of the four-point scheme</source>
+        <translation>四点格式经验证的 Hölder 正则性 r(ω)</translation>
+    </message>
+    <message>
+        <source>lower bound</source>
+        <translation>下界</translation>
+    </message>
+    <message>
+        <source>upper bound</source>
+        <translation>上界</translation>
+    </message>
+    <message>
+        <source>known: ω = 0 → 1, ω = 1/16 → 2</source>
+        <translation>已知：ω = 0 → 1，ω = 1/16 → 2</translation>
+    </message>
+    <message>
+        <source>tension ω</source>
+        <translation>张力参数 ω</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Computing %1 values of ω…</source>
+        <translation>正在计算 ω 的 %1 个值…</translation>
+    </message>
+    <message>
+        <source>%1 values of ω; widest interval %2 (bounds certified; the upper bound is exact for this interpolatory scheme)</source>
+        <translation>ω 的 %1 个值；最宽区间为 %2（界经过验证；对于此插值格式，上界是精确的）</translation>
+    </message>
+    <message>
+        <source>regularity r</source>
+        <translation>正则性 r</translation>
+    </message>
+</context>
+<context>
+    <name>awb::RegularityPanel</name>
+    <message>
+        <source>Regularity: no curve scheme</source>
+        <translation>正则性：无曲线细分格式</translation>
+    </message>
+    <message>
+        <source>Regularity %p%</source>
+        <translation>正则性 %p%</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Stop the regularity analysis; the bounds reached so far stay</source>
+        <translation>停止正则性分析；保留目前已得到的界</translation>
+    </message>
+    <message>
+        <source>Regularity of %1: computing…</source>
+        <translation>%1 的正则性：正在计算…</translation>
+    </message>
+    <message>
+        <source>so far: r in [%1, %2]</source>
+        <translation>目前：r ∈ [%1, %2]</translation>
+    </message>
+    <message>
+        <source>Regularity: %1</source>
+        <translation>正则性：%1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::RemoveControlPointCommand</name>
+    <message>
+        <source>Remove a control point of %1</source>
+        <translation>移除 %1 的一个控制点</translation>
+    </message>
+</context>
+<context>
+    <name>awb::RemoveItemCommand</name>
+    <message>
+        <source>Remove %1</source>
+        <translation>移除 %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SchemeRegularity</name>
+    <message>
+        <source>does not apply: a complex de Casteljau parameter is not a real subdivision scheme</source>
+        <translation>不适用：复 de Casteljau 参数不是实细分格式</translation>
+    </message>
+    <message>
+        <source>does not apply: %1</source>
+        <translation>不适用：%1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SpectrumView</name>
+    <message>
+        <source>Re λ</source>
+        <translation>Re λ</translation>
+    </message>
+    <message>
+        <source>Im λ</source>
+        <translation>Im λ</translation>
+    </message>
+    <message>
+        <source>unit circle</source>
+        <translation>单位圆</translation>
+    </message>
+    <message>
+        <source>dominant 1</source>
+        <translation>占优特征值 1</translation>
+    </message>
+    <message>
+        <source>subdominant</source>
+        <translation>次占优特征值</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;: λ = %2, |λ| = %3, multiplicity %4, arg λ = %6° (map %5)</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;：λ = %2，|λ| = %3，重数 %4，arg λ = %6°（映射 %5）</translation>
+    </message>
+    <message>
+        <source> — dominant</source>
+        <translation> — 占优</translation>
+    </message>
+    <message>
+        <source> — subdominant</source>
+        <translation> — 次占优</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;No maps.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;没有映射。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;All maps are (eventually) contractive&lt;/b&gt;: the IFS has a unique attractor.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;所有映射都是（最终）压缩的&lt;/b&gt;：该 IFS 有唯一的吸引子。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p style=&apos;color:#b01e1e&apos;&gt;&lt;b&gt;%1 is not contractive&lt;/b&gt;: the IFS has no attractor and its iteration does not converge.&lt;/p&gt;</source>
+        <translation>&lt;p style=&apos;color:#b01e1e&apos;&gt;&lt;b&gt;%1 不是压缩的&lt;/b&gt;：该 IFS 没有吸引子，其迭代不收敛。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Not contractive: spectral radius %1 ≥ 1.</source>
+        <translation>非压缩：谱半径 %1 ≥ 1。</translation>
+    </message>
+    <message>
+        <source>Contractive: ‖A‖&lt;sub&gt;2&lt;/sub&gt; = %1 &amp;lt; 1.</source>
+        <translation>压缩：‖A‖&lt;sub&gt;2&lt;/sub&gt; = %1 &amp;lt; 1。</translation>
+    </message>
+    <message>
+        <source>Eventually contractive: spectral radius %1 &amp;lt; 1, ‖A&lt;sup&gt;%2&lt;/sup&gt;‖&lt;sub&gt;2&lt;/sub&gt; &amp;lt; 1.</source>
+        <translation>最终压缩：谱半径 %1 &amp;lt; 1，‖A&lt;sup&gt;%2&lt;/sup&gt;‖&lt;sub&gt;2&lt;/sub&gt; &amp;lt; 1。</translation>
+    </message>
+    <message>
+        <source>Eventually contractive: spectral radius %1 &amp;lt; 1.</source>
+        <translation>最终压缩：谱半径 %1 &amp;lt; 1。</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>No subdominant eigenvalue: the map is constant.</source>
+        <translation>没有次占优特征值：该映射是常值映射。</translation>
+    </message>
+    <message>
+        <source>real positive</source>
+        <translation>正实数</translation>
+    </message>
+    <message>
+        <source>The curve has a half-tangent at the fixed point, along the eigenvector (G¹ where the two sides&apos; eigenvectors align).</source>
+        <translation>曲线在不动点处沿特征向量方向有单侧切线（两侧特征向量方向一致时为 G¹）。</translation>
+    </message>
+    <message>
+        <source>Repeated: the tangent direction at the fixed point depends on the control points.</source>
+        <translation>重特征值：不动点处的切线方向取决于控制点。</translation>
+    </message>
+    <message>
+        <source>real negative</source>
+        <translation>负实数</translation>
+    </message>
+    <message>
+        <source>The curve oscillates at the fixed point and has no tangent there.</source>
+        <translation>曲线在不动点处振荡，该处没有切线。</translation>
+    </message>
+    <message>
+        <source>complex pair</source>
+        <translation>共轭复数对</translation>
+    </message>
+    <message>
+        <source>The curve spirals around the fixed point (no tangent).</source>
+        <translation>曲线绕不动点螺旋（没有切线）。</translation>
+    </message>
+    <message>
+        <source>complex</source>
+        <translation>复数</translation>
+    </message>
+    <message>
+        <source>Near the fixed point the map acts as the spiral similarity z ↦ λz: the curve spirals around the fixed point (no tangent).</source>
+        <translation>在不动点附近，该映射作用为螺旋相似变换 z ↦ λz：曲线绕不动点螺旋（没有切线）。</translation>
+    </message>
+    <message>
+        <source>mixed</source>
+        <translation>混合</translation>
+    </message>
+    <message>
+        <source>Several eigenvalues of the same modulus with different signs or phases: no single tangent behaviour.</source>
+        <translation>存在若干模相同但符号或相位不同的特征值：没有单一的切线行为。</translation>
+    </message>
+    <message>
+        <source>Subdominant: none.</source>
+        <translation>次占优：无。</translation>
+    </message>
+    <message>
+        <source>Subdominant: %1 (%2, |λ| = %3, multiplicity %4).</source>
+        <translation>次占优：%1（%2，|λ| = %3，重数 %4）。</translation>
+    </message>
+    <message>
+        <source>Unknown file type “%1”: use .pdf, .svg or .png.</source>
+        <translation>未知的文件类型“%1”：请使用 .pdf、.svg 或 .png。</translation>
+    </message>
+    <message>
+        <source>Eigenvalues</source>
+        <translation>特征值</translation>
+    </message>
+</context>
+<context>
+    <name>awb::StartSetSpec</name>
+    <message>
+        <source>a lifted start set needs at least one point</source>
+        <translation>提升初始集至少需要一个点</translation>
+    </message>
+    <message>
+        <source>lifted start point %1 has %2 coordinates: every point needs the same number, at least 2</source>
+        <translation>提升初始点 %1 有 %2 个坐标：每个点的坐标数必须相同，且至少为 2</translation>
+    </message>
+    <message>
+        <source>every point must have finite coordinates</source>
+        <translation>每个点的坐标都必须是有限数</translation>
+    </message>
+    <message>
+        <source>a start set of kind &quot;%1&quot; needs exactly %2 points, got %3</source>
+        <translation>类型为 &quot;%1&quot; 的初始集恰好需要 %2 个点，实际为 %3 个</translation>
+    </message>
+    <message>
+        <source>a start set of kind &quot;%1&quot; needs at least %2 points, got %3</source>
+        <translation>类型为 &quot;%1&quot; 的初始集至少需要 %2 个点，实际为 %3 个</translation>
+    </message>
+</context>
+<context>
+    <name>awb::StyleSpec</name>
+    <message>
+        <source>the density gamma must be between 0.2 and 10, got %1</source>
+        <translation>密度 gamma 必须介于 0.2 和 10 之间，实际为 %1</translation>
+    </message>
+    <message>
+        <source>the address prefix length must be between 1 and %1, got %2</source>
+        <translation>地址前缀长度必须介于 1 和 %1 之间，实际为 %2</translation>
+    </message>
+    <message>
+        <source>the point size must be more than 0 and at most %1 pixels</source>
+        <translation>点大小必须大于 0 且不超过 %1 像素</translation>
+    </message>
+    <message>
+        <source>colour %1 is &quot;%2&quot;, expected &quot;#rrggbb&quot; (lower-case hexadecimal)</source>
+        <translation>颜色 %1 为 &quot;%2&quot;，应为 &quot;#rrggbb&quot;（小写十六进制）</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SubdivisionCurveItem</name>
+    <message>
+        <source>Bézier of degree %1 needs exactly %2 control points, got %3</source>
+        <translation>%1 次 Bézier 曲线恰好需要 %2 个控制点，实际为 %3 个</translation>
+    </message>
+    <message>
+        <source>a complex Bézier parameter has no real scheme</source>
+        <translation>复 Bézier 参数没有对应的实细分格式</translation>
+    </message>
+    <message>
+        <source>unknown scheme kind</source>
+        <translation>未知的细分格式类型</translation>
+    </message>
+    <message>
+        <source>the complex parameter t = %1 %2 %3i must satisfy |t| &lt; 1 and |1 - t| &lt; 1 (004 §3.7)</source>
+        <translation>复参数 t = %1 %2 %3i 必须满足 |t| &lt; 1 且 |1 - t| &lt; 1（004 §3.7）</translation>
+    </message>
+    <message>
+        <source>Curve</source>
+        <translation>曲线</translation>
+    </message>
+    <message>
+        <source>Change scheme of %1</source>
+        <translation>更改 %1 的细分格式</translation>
+    </message>
+    <message>
+        <source>expected [re, im] or a number</source>
+        <translation>应为 [re, im] 或一个数</translation>
+    </message>
+    <message>
+        <source>Scheme</source>
+        <translation>细分格式</translation>
+    </message>
+    <message>
+        <source>Uniform B-spline</source>
+        <translation>均匀 B 样条</translation>
+    </message>
+    <message>
+        <source>End-interpolating B-spline</source>
+        <translation>端点插值 B 样条</translation>
+    </message>
+    <message>
+        <source>Chaikin</source>
+        <translation>Chaikin</translation>
+    </message>
+    <message>
+        <source>Corner cutting</source>
+        <translation>割角</translation>
+    </message>
+    <message>
+        <source>Four-point</source>
+        <translation>四点</translation>
+    </message>
+    <message>
+        <source>Bézier (de Casteljau)</source>
+        <translation>Bézier（de Casteljau）</translation>
+    </message>
+    <message>
+        <source>Own matrices</source>
+        <translation>自定义矩阵</translation>
+    </message>
+    <message>
+        <source>Degree</source>
+        <translation>次数</translation>
+    </message>
+    <message>
+        <source>Degree n: the curve has n + 1 control points</source>
+        <translation>次数 n：曲线有 n + 1 个控制点</translation>
+    </message>
+    <message>
+        <source>Degree of the B-spline (Lane–Riesenfeld, 004 eq. 2.7)</source>
+        <translation>B 样条的次数（Lane–Riesenfeld，004 eq. 2.7）</translation>
+    </message>
+    <message>
+        <source>Split parameter t</source>
+        <translation>分割参数 t</translation>
+    </message>
+    <message>
+        <source>de Casteljau split at t (004 eq. 2.5). A complex t inside both discs |t| &lt; 1, |1 − t| &lt; 1 gives a fractal curve (004 §3.7).</source>
+        <translation>在 t 处做 de Casteljau 分割（004 eq. 2.5）。若复数 t 位于两个圆盘 |t| &lt; 1、|1 − t| &lt; 1 的内部，则得到分形曲线（004 §3.7）。</translation>
+    </message>
+    <message>
+        <source>Tension ω</source>
+        <translation>张力参数 ω</translation>
+    </message>
+    <message>
+        <source>1/16 gives C1 curves reproducing cubics; −1/2 &lt; ω &lt; 0 or 1/4 ≤ ω &lt; 1/2 gives fractal curves (004 Thm. 2.4.1)</source>
+        <translation>ω = 1/16 给出再生三次多项式的 C1 曲线；−1/2 &lt; ω &lt; 0 或 1/4 ≤ ω &lt; 1/2 给出分形曲线（004 Thm. 2.4.1）</translation>
+    </message>
+    <message>
+        <source>New points at parameters a &lt; b on every edge (Chaikin: 1/4, 3/4)</source>
+        <translation>在每条边的参数 a &lt; b 处生成新点（Chaikin：1/4, 3/4）</translation>
+    </message>
+    <message>
+        <source>First cut a</source>
+        <translation>第一个割点 a</translation>
+    </message>
+    <message>
+        <source>Second cut b</source>
+        <translation>第二个割点 b</translation>
+    </message>
+    <message>
+        <source>Subdivision curve</source>
+        <translation>细分曲线</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SubdivisionSurfaceItem</name>
+    <message>
+        <source>Surface</source>
+        <translation>曲面</translation>
+    </message>
+    <message>
+        <source>Change net of %1</source>
+        <translation>更改 %1 的控制网格</translation>
+    </message>
+    <message>
+        <source>Change subdivision rounds of %1</source>
+        <translation>更改 %1 的细分轮数</translation>
+    </message>
+    <message>
+        <source>Turn the view of %1</source>
+        <translation>旋转 %1 的视图</translation>
+    </message>
+    <message>
+        <source>expected an array of lattice coordinates [i, j]</source>
+        <translation>应为格点坐标 [i, j] 的数组</translation>
+    </message>
+    <message>
+        <source>expected lattice coordinates [i, j]</source>
+        <translation>应为格点坐标 [i, j]</translation>
+    </message>
+    <message>
+        <source>lattice coordinates are whole numbers</source>
+        <translation>格点坐标必须是整数</translation>
+    </message>
+    <message>
+        <source>at least one map must be used (leave the field out to use all)</source>
+        <translation>至少必须使用一个映射（省略该字段则使用全部映射）</translation>
+    </message>
+    <message>
+        <source>map indices are whole numbers (0-based)</source>
+        <translation>映射索引必须是整数（从 0 开始）</translation>
+    </message>
+    <message>
+        <source>the elevation must be from -90 to 90 degrees</source>
+        <translation>仰角必须在 -90 到 90 度之间</translation>
+    </message>
+    <message>
+        <source>Scheme</source>
+        <translation>细分格式</translation>
+    </message>
+    <message>
+        <source>Bicubic B-spline (Catmull–Clark)</source>
+        <translation>双三次 B 样条（Catmull–Clark）</translation>
+    </message>
+    <message>
+        <source>Loop (three-direction box spline)</source>
+        <translation>Loop（三向箱样条）</translation>
+    </message>
+    <message>
+        <source>Kobbelt √3</source>
+        <translation>Kobbelt √3</translation>
+    </message>
+    <message>
+        <source>A new scheme starts from its own default net (000 §3)</source>
+        <translation>新的细分格式从其自身的默认控制网格开始（000 §3）</translation>
+    </message>
+    <message>
+        <source>Layout</source>
+        <translation>布局</translation>
+    </message>
+    <message>
+        <source>The patch&apos;s domain and the maps covering it</source>
+        <translation>曲面片的定义域以及覆盖它的映射</translation>
+    </message>
+    <message>
+        <source>Maps</source>
+        <translation>映射</translation>
+    </message>
+    <message>
+        <source>Map %1</source>
+        <translation>映射 %1</translation>
+    </message>
+    <message>
+        <source>Leave maps out to draw a fractal lying on the surface (000 Fig. 9)</source>
+        <translation>省略部分映射可绘制位于曲面上的分形（000 Fig. 9）</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>视图</translation>
+    </message>
+    <message>
+        <source>Azimuth</source>
+        <translation>方位角</translation>
+    </message>
+    <message>
+        <source>Direction of the orthographic camera around the z axis, in degrees</source>
+        <translation>正交相机绕 z 轴的方向，单位为度</translation>
+    </message>
+    <message>
+        <source>Elevation</source>
+        <translation>仰角</translation>
+    </message>
+    <message>
+        <source>Height of the camera above the xy plane, in degrees</source>
+        <translation>相机相对 xy 平面的高度角，单位为度</translation>
+    </message>
+    <message>
+        <source>Subdivision rounds</source>
+        <translation>细分轮数</translation>
+    </message>
+    <message>
+        <source>Rounds of classic subdivision of the net (000 Figs. 6–8, top)</source>
+        <translation>对控制网格进行经典细分的轮数（000 Figs. 6–8，上排）</translation>
+    </message>
+    <message>
+        <source>from 0 to %1 rounds</source>
+        <translation>0 到 %1 轮</translation>
+    </message>
+    <message>
+        <source>at least one map must stay on</source>
+        <translation>至少必须保留一个映射</translation>
+    </message>
+    <message>
+        <source>Subdivision surface</source>
+        <translation>细分曲面</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SurfaceNet</name>
+    <message>
+        <source>every control point must have finite coordinates</source>
+        <translation>每个控制点的坐标都必须是有限数</translation>
+    </message>
+    <message>
+        <source>%1 lattice coordinates for %2 control points: give one [i, j] per control point</source>
+        <translation>%2 个控制点对应 %1 个格点坐标：请为每个控制点给出一个 [i, j]</translation>
+    </message>
+    <message>
+        <source>not the net of a %1 %2 patch: %3</source>
+        <translation>不是 %1 %2 曲面片的控制网格：%3</translation>
+    </message>
+    <message>
+        <source>map %1 does not exist: the %2 layout has maps 0 to %3</source>
+        <translation>映射 %1 不存在：%2 布局的映射编号为 0 到 %3</translation>
+    </message>
+    <message>
+        <source>list each map once, in increasing order (0-based)</source>
+        <translation>每个映射只列出一次，按递增顺序（从 0 开始）</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SurfaceSchemeSpec</name>
+    <message>
+        <source>the %1 scheme has the layouts %2, not &apos;%3&apos;</source>
+        <translation>%1 细分格式的布局为 %2，而不是“%3”</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SurfaceView</name>
+    <message>
+        <source>Drawing… (CPU renderer)</source>
+        <translation>正在绘制…（CPU 渲染器）</translation>
+    </message>
+    <message>
+        <source>CPU renderer</source>
+        <translation>CPU 渲染器</translation>
+    </message>
+    <message>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <source>z</source>
+        <translation>z</translation>
+    </message>
+</context>
+<context>
+    <name>awb::UserGuideDialog</name>
+    <message>
+        <source>Attractor Workbench — User Guide</source>
+        <translation>Attractor Workbench — 用户指南</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;The guide is missing.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;缺少用户指南。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Home or F</source>
+        <translation>Home 或 F</translation>
+    </message>
+    <message>
+        <source>Fit the attractor view to its content</source>
+        <translation>使吸引子视图适应其内容</translation>
+    </message>
+    <message>
+        <source>+ / −</source>
+        <translation>+ / −</translation>
+    </message>
+    <message>
+        <source>Zoom the attractor view in / out</source>
+        <translation>放大/缩小吸引子视图</translation>
+    </message>
+    <message>
+        <source>Mouse wheel</source>
+        <translation>鼠标滚轮</translation>
+    </message>
+    <message>
+        <source>Zoom at the cursor (view); scroll (panels)</source>
+        <translation>在光标处缩放（视图）；滚动（面板）</translation>
+    </message>
+</context>
+<context>
+    <name>awb::analysis</name>
+    <message>
+        <source>cannot index an empty point set</source>
+        <translation>无法为空点集建立索引</translation>
+    </message>
+    <message>
+        <source>point sets must have 1 to 3 coordinates</source>
+        <translation>点集必须有 1 到 3 个坐标</translation>
+    </message>
+    <message>
+        <source>point set</source>
+        <translation>点集</translation>
+    </message>
+    <message>
+        <source>point sets of different dimensions</source>
+        <translation>点集的维数不同</translation>
+    </message>
+    <message>
+        <source>too few points for box counting</source>
+        <translation>点太少，无法进行盒计数</translation>
+    </message>
+    <message>
+        <source>all points coincide</source>
+        <translation>所有点都重合</translation>
+    </message>
+    <message>
+        <source>not enough points for three box sizes with at least %1 points per box</source>
+        <translation>点数不足，无法得到三种每盒至少含 %1 个点的盒尺寸</translation>
+    </message>
+    <message>
+        <source>the joint spectral radius needs at least one matrix</source>
+        <translation>联合谱半径至少需要一个矩阵</translation>
+    </message>
+    <message>
+        <source>the joint spectral radius needs square matrices of one size; matrix %1 differs</source>
+        <translation>联合谱半径需要尺寸相同的方阵；矩阵 %1 与其他矩阵不同</translation>
+    </message>
+    <message>
+        <source>matrix %1</source>
+        <translation>矩阵 %1</translation>
+    </message>
+    <message>
+        <source>not convergent: the first difference scheme does not contract (JSR &gt;= 1)</source>
+        <translation>不收敛：一阶差分格式不压缩（JSR &gt;= 1）</translation>
+    </message>
+    <message>
+        <source>convergence not certified within the time budget</source>
+        <translation>在时间预算内未能验证收敛性</translation>
+    </message>
+    <message>
+        <source>C^%1, Hölder regularity in [%2, %3]</source>
+        <translation>C^%1，Hölder 正则性位于 [%2, %3] 内</translation>
+    </message>
+    <message>
+        <source>cancelled; the bounds are those reached. </source>
+        <translation>已取消；所给的界为目前已达到的界。 </translation>
+    </message>
+    <message>
+        <source>time budget spent; the bounds are those reached. </source>
+        <translation>时间预算已用完；所给的界为目前已达到的界。 </translation>
+    </message>
+    <message>
+        <source>not convergent</source>
+        <translation>不收敛</translation>
+    </message>
+    <message>
+        <source>C^0 not certified</source>
+        <translation>未能验证 C^0</translation>
+    </message>
+    <message>
+        <source>the arity of a scheme must be at least 2, got %1</source>
+        <translation>细分格式的元数必须至少为 2，实际为 %1</translation>
+    </message>
+    <message>
+        <source>the mask has a coefficient that is not a finite number</source>
+        <translation>掩模中有一个系数不是有限数</translation>
+    </message>
+    <message>
+        <source>no difference scheme: the mask is zero</source>
+        <translation>不存在差分格式：掩模为零</translation>
+    </message>
+    <message>
+        <source>no difference scheme: the symbol a(z) has no factor 1 + z%1 (the rules&apos; weights do not each sum to 1), so the scheme does not reproduce constants and is not convergent</source>
+        <translation>不存在差分格式：符号 a(z) 没有因子 1 + z%1（各规则的权值之和并非都为 1），因此该格式不能再生常数，也不收敛</translation>
+    </message>
+    <message>
+        <source>not convergent: the mask sums to %1, not the arity %2 (the scheme does not reproduce constants)</source>
+        <translation>不收敛：掩模之和为 %1，而不是元数 %2（该格式不能再生常数）</translation>
+    </message>
+    <message>
+        <source>the upper bound is the exact Hölder exponent only if the integer shifts of the basic limit function are stable (not checked for this mask). </source>
+        <translation>仅当基本极限函数的整数平移稳定时，上界才是精确的 Hölder 指数（未对此掩模检查该条件）。 </translation>
+    </message>
+    <message>
+        <source>regularity needs at least two subdivision matrices</source>
+        <translation>正则性分析至少需要两个细分矩阵</translation>
+    </message>
+    <message>
+        <source>the subdivision matrices must all be square and of one size</source>
+        <translation>细分矩阵必须都是尺寸相同的方阵</translation>
+    </message>
+    <message>
+        <source>matrix S_%1</source>
+        <translation>矩阵 S_%1</translation>
+    </message>
+    <message>
+        <source>no difference scheme: the rows of S_%1 do not all sum to 1</source>
+        <translation>不存在差分格式：S_%1 的各行之和并非都为 1</translation>
+    </message>
+    <message>
+        <source>no regularity: S_1 or S_p has no simple eigenvalue 1, so the curve&apos;s end points are not defined</source>
+        <translation>无正则性：S_1 或 S_p 没有单重特征值 1，因此曲线的端点没有定义</translation>
+    </message>
+    <message>
+        <source>no regularity: the pieces S_%1 and S_%2 do not join (the attractor is not a continuous curve in its %3-adic parameter)</source>
+        <translation>无正则性：片段 S_%1 与 S_%2 不相接（吸引子关于其 %3 进参数不是连续曲线）</translation>
+    </message>
+    <message>
+        <source>C^infinity: the curve is one polynomial piece of degree %1</source>
+        <translation>C^infinity：该曲线是单个 %1 次多项式片段</translation>
+    </message>
+    <message>
+        <source>the matrices reproduce every polynomial of degree &lt; %1 in the %2-adic parameter and leave no complement</source>
+        <translation>这些矩阵再生关于 %2 进参数的所有次数 &lt; %1 的多项式，且不留补空间</translation>
+    </message>
+    <message>
+        <source>the upper bound assumes the curve&apos;s basis functions are stable. </source>
+        <translation>上界假定曲线的基函数是稳定的。 </translation>
+    </message>
+    <message>
+        <source>the pieces join only C^%1 (derivative %2 differs across a join). </source>
+        <translation>各片段仅以 C^%1 相接（%2 阶导数在接合处不同）。 </translation>
+    </message>
+    <message>
+        <source>C^infinity: a Bézier curve is a polynomial of degree %1</source>
+        <translation>C^infinity：Bézier 曲线是 %1 次多项式</translation>
+    </message>
+    <message>
+        <source>de Casteljau subdivision reproduces the Bézier polynomial exactly</source>
+        <translation>de Casteljau 细分精确地再生 Bézier 多项式</translation>
+    </message>
+    <message>
+        <source>eigenvalues need a square matrix</source>
+        <translation>特征值计算需要方阵</translation>
+    </message>
+    <message>
+        <source>matrix</source>
+        <translation>矩阵</translation>
+    </message>
+    <message>
+        <source>the eigenvalue computation did not converge</source>
+        <translation>特征值计算未收敛</translation>
+    </message>
+    <message>
+        <source>no subdominant eigenvalue (the map is constant)</source>
+        <translation>没有次占优特征值（该映射是常值映射）</translation>
+    </message>
+    <message>
+        <source>real positive: the curve has a half-tangent at the fixed point, along the eigenvector (G1 where the two sides&apos; eigenvectors align)</source>
+        <translation>正实数：曲线在不动点处沿特征向量方向有单侧切线（两侧特征向量方向一致时为 G1）</translation>
+    </message>
+    <message>
+        <source>real positive but repeated: the tangent direction at the fixed point depends on the control points</source>
+        <translation>正实数但为重特征值：不动点处的切线方向取决于控制点</translation>
+    </message>
+    <message>
+        <source>real negative: the curve oscillates at the fixed point and has no tangent there</source>
+        <translation>负实数：曲线在不动点处振荡，该处没有切线</translation>
+    </message>
+    <message>
+        <source>complex pair: the curve spirals around the fixed point (no tangent)</source>
+        <translation>共轭复数对：曲线绕不动点螺旋（没有切线）</translation>
+    </message>
+    <message>
+        <source>complex: near the fixed point the map acts as the spiral similarity z -&gt; lambda z, so the curve spirals around the fixed point (no tangent)</source>
+        <translation>复数：在不动点附近，该映射作用为螺旋相似变换 z -&gt; lambda z，因此曲线绕不动点螺旋（没有切线）</translation>
+    </message>
+    <message>
+        <source>several eigenvalues of the same modulus with different signs or phases: no single tangent behaviour</source>
+        <translation>存在多个模相同但符号或相位不同的特征值：没有单一的切线行为</translation>
+    </message>
+    <message>
+        <source>not contractive: spectral radius %1 &gt;= 1</source>
+        <translation>非压缩：谱半径 %1 &gt;= 1</translation>
+    </message>
+    <message>
+        <source>contractive (factor ||A||_2 = %1)</source>
+        <translation>压缩（压缩因子 ||A||_2 = %1）</translation>
+    </message>
+    <message>
+        <source>eventually contractive (spectral radius %1 &lt; 1; ||A^%2||_2 &lt; 1)</source>
+        <translation>最终压缩（谱半径 %1 &lt; 1；||A^%2||_2 &lt; 1）</translation>
+    </message>
+    <message>
+        <source>eventually contractive (spectral radius %1 &lt; 1)</source>
+        <translation>最终压缩（谱半径 %1 &lt; 1）</translation>
+    </message>
+    <message>
+        <source>map %1 is not contractive: the spectral radius of its linear part is %2 &gt;= 1, so the IFS has no attractor (the iteration does not converge)</source>
+        <translation>映射 %1 不是压缩的：其线性部分的谱半径为 %2 &gt;= 1，因此该 IFS 没有吸引子（迭代不收敛）</translation>
+    </message>
+</context>
+<context>
+    <name>awb::cli</name>
+    <message>
+        <source>Render the bundled paper figures to PNG files (one row of panels per figure: the start set, a few iterates of the Hutchinson operator, and the attractor, over the control polygon).</source>
+        <translation>将内置的论文图形渲染为 PNG 文件（每个图形一行面板：初始集、Hutchinson 算子的若干次迭代结果以及吸引子，叠加在控制多边形上）。</translation>
+    </message>
+    <message>
+        <source>Directory for the PNG files (created if missing).</source>
+        <translation>PNG 文件的输出目录（不存在时自动创建）。</translation>
+    </message>
+    <message>
+        <source>List the examples and exit.</source>
+        <translation>列出示例并退出。</translation>
+    </message>
+    <message>
+        <source>attractor-cli: cannot create directory %1</source>
+        <translation>attractor-cli：无法创建目录 %1</translation>
+    </message>
+    <message>
+        <source>Usage: attractor-cli &lt;command&gt; [options]
+
+Commands:
+  render     render an item of a project to PNG, SVG or PDF
+  animate    render the frames of an item&apos;s animation (PNG files, MP4/GIF)
+  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)
+  points     the points of F^k(X0) as CSV
+  check      validate a project file
+  rewrite    load and save a project in canonical form
+  export     attractor points as PLY, a surface&apos;s subdivided net as OBJ
+  polygon    the control polygon after K subdivision steps (JSON)
+  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG
+
+Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
+</source>
+        <translation>用法：attractor-cli &lt;command&gt; [options]
+
+命令：
+  render     将项目中的某个对象渲染为 PNG、SVG 或 PDF
+  animate    渲染对象动画的各帧（PNG 文件，MP4/GIF）
+  analyse    特征值、压缩性、不动点、维数（JSON）
+  points     以 CSV 格式输出 F^k(X0) 的点
+  check      验证项目文件
+  rewrite    加载项目并以规范形式重新保存
+  export     将吸引子的点导出为 PLY，将曲面细分后的控制网格导出为 OBJ
+  polygon    K 步细分后的控制多边形（JSON）
+  examples   将内置的论文图形（000 Figs. 2, 3, 5）渲染为 PNG
+
+运行“attractor-cli &lt;command&gt; --help”查看某个命令的选项。
+</translation>
+    </message>
+    <message>
+        <source>attractor-cli: unknown command &apos;%1&apos;</source>
+        <translation>attractor-cli：未知命令“%1”</translation>
+    </message>
+    <message>
+        <source>expected %1 project file, got %2 arguments (see --help)</source>
+        <translation>应为 %1 个项目文件，实际给出 %2 个参数（参见 --help）</translation>
+    </message>
+    <message>
+        <source>no item named &apos;%1&apos; in %2</source>
+        <translation>%2 中没有名为“%1”的对象</translation>
+    </message>
+    <message>
+        <source>the figure&apos;s project</source>
+        <translation>该图形所属的项目</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; (%2) has no attractor</source>
+        <translation>对象“%1”（%2）没有吸引子</translation>
+    </message>
+    <message>
+        <source>%1 has no item with an attractor</source>
+        <translation>%1 中没有带吸引子的对象</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos;: %2</source>
+        <translation>对象“%1”：%2</translation>
+    </message>
+    <message>
+        <source>--%1 must be a whole number from %2 to %3, got &apos;%4&apos;</source>
+        <translation>--%1 必须是 %2 到 %3 之间的整数，实际为“%4”</translation>
+    </message>
+    <message>
+        <source>--%1 must be a number from %2 to %3, got &apos;%4&apos;</source>
+        <translation>--%1 必须是 %2 到 %3 之间的数，实际为“%4”</translation>
+    </message>
+    <message>
+        <source>--start: &apos;%1&apos; is not a finite number</source>
+        <translation>--start：“%1”不是有限数</translation>
+    </message>
+    <message>
+        <source>--start must be point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;..., got &apos;%1&apos;</source>
+        <translation>--start 的格式必须为 point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;...，实际为“%1”</translation>
+    </message>
+    <message>
+        <source>--start %1 needs %2 coordinates (%3 per point), got %4</source>
+        <translation>--start %1 需要 %2 个坐标（每个点 %3 个），实际为 %4 个</translation>
+    </message>
+    <message>
+        <source>a multiple of %1</source>
+        <translation>%1 的倍数</translation>
+    </message>
+    <message>
+        <source>depth %1 gives %2 points, more than --max-points %3</source>
+        <translation>深度 %1 将产生 %2 个点，超过 --max-points %3</translation>
+    </message>
+    <message>
+        <source>Image size in pixels (default 900x700).</source>
+        <translation>图像尺寸，单位为像素（默认 900x700）。</translation>
+    </message>
+    <message>
+        <source>Deterministic iteration depth (default: the item&apos;s).</source>
+        <translation>确定性迭代深度（默认：对象自身的深度）。</translation>
+    </message>
+    <message>
+        <source>Random iteration with this many points (up to 1e12; memory stays that of the raster).</source>
+        <translation>使用指定数目的点进行随机迭代（最多 1e12；内存占用只取决于栅格大小）。</translation>
+    </message>
+    <message>
+        <source>Raster tone: &apos;hits&apos; (every lit pixel opaque, the papers&apos; look) or &apos;density&apos; (log density of the invariant measure, gamma and vibrancy as flame renderers). Default: the item&apos;s style (auto: hits for deterministic, density for random iteration).</source>
+        <translation>栅格色调：&apos;hits&apos;（每个被击中的像素都不透明，即论文中的效果）或 &apos;density&apos;（不变测度的对数密度，gamma 和 vibrancy 的含义与分形火焰渲染器相同）。默认：对象自身的样式（auto：确定性迭代用 hits，随机迭代用 density）。</translation>
+    </message>
+    <message>
+        <source>Density tone: display gamma (default: the item&apos;s, 2.2).</source>
+        <translation>密度色调：显示 gamma（默认：对象自身的值，2.2）。</translation>
+    </message>
+    <message>
+        <source>Density tone: 1 saturated colours, 0 per-channel gamma (default 1).</source>
+        <translation>密度色调：1 表示饱和色，0 表示逐通道 gamma（默认 1）。</translation>
+    </message>
+    <message>
+        <source>Histogram cells per pixel side, 1..4 (default 1; 2 or 3 anti-alias edges).</source>
+        <translation>每个像素每边的直方图单元数，1..4（默认 1；取 2 或 3 可对边缘抗锯齿）。</translation>
+    </message>
+    <message>
+        <source>Threads of the raster engine (default: all cores).</source>
+        <translation>栅格引擎的线程数（默认：全部核心）。</translation>
+    </message>
+    <message>
+        <source>Surfaces: the camera&apos;s azimuth and elevation in degrees (orthographic; default: the item&apos;s camera).</source>
+        <translation>曲面：相机的方位角和仰角，单位为度（正交投影；默认：对象自身的相机）。</translation>
+    </message>
+    <message>
+        <source>Plane figures: the world rectangle to frame (padded by 6%), e.g. to compare figures at one scale (default: fit the content).</source>
+        <translation>平面图形：要框选的世界坐标矩形（四周留出 6% 边距），例如用于以同一比例比较多个图形（默认：适应内容）。</translation>
+    </message>
+    <message>
+        <source>The output&apos;s format when its name has no suffix (e.g. /dev/stdout): png, svg or pdf (default: the suffix).</source>
+        <translation>输出文件名没有后缀时（例如 /dev/stdout）所用的格式：png、svg 或 pdf（默认：由后缀决定）。</translation>
+    </message>
+    <message>
+        <source>--depth and --samples exclude each other</source>
+        <translation>--depth 与 --samples 不能同时使用</translation>
+    </message>
+    <message>
+        <source>--size must be WxH with 64..16384 pixels each, got &apos;%1&apos;</source>
+        <translation>--size 的格式必须为 WxH，每边 64..16384 像素，实际为“%1”</translation>
+    </message>
+    <message>
+        <source>--tone must be &apos;hits&apos; or &apos;density&apos;, got &apos;%1&apos;</source>
+        <translation>--tone 必须为 &apos;hits&apos; 或 &apos;density&apos;，实际为“%1”</translation>
+    </message>
+    <message>
+        <source>--bounds must be x0,y0,x1,y1 with x0 &lt; x1 and y0 &lt; y1, got &apos;%1&apos;</source>
+        <translation>--bounds 的格式必须为 x0,y0,x1,y1，且 x0 &lt; x1、y0 &lt; y1，实际为“%1”</translation>
+    </message>
+    <message>
+        <source>--format must be png, svg or pdf, got &apos;%1&apos;</source>
+        <translation>--format 必须为 png、svg 或 pdf，实际为“%1”</translation>
+    </message>
+    <message>
+        <source>depth %1 makes %2 images; at most 4e9 are rendered</source>
+        <translation>深度 %1 将产生 %2 个像；最多渲染 4e9 个</translation>
+    </message>
+    <message>
+        <source>--view must be AZ,EL in degrees with |EL| &lt;= 90, got &apos;%1&apos;</source>
+        <translation>--view 的格式必须为 AZ,EL（单位为度），且 |EL| &lt;= 90，实际为“%1”</translation>
+    </message>
+    <message>
+        <source>%1 random points</source>
+        <translation>%1 个随机点</translation>
+    </message>
+    <message>
+        <source>F^%1(X0)</source>
+        <translation>F^%1(X0)</translation>
+    </message>
+    <message>
+        <source>, maps %1 of %2</source>
+        <translation>，使用映射 %1（共 %2 个）</translation>
+    </message>
+    <message>
+        <source>%1: %2%3 — orthographic view from azimuth %4°, elevation %5°</source>
+        <translation>%1：%2%3 — 从方位角 %4°、仰角 %5° 观察的正交视图</translation>
+    </message>
+    <message>
+        <source>%1: %2 random points</source>
+        <translation>%1：%2 个随机点</translation>
+    </message>
+    <message>
+        <source>%1: F^%2(X0)</source>
+        <translation>%1：F^%2(X0)</translation>
+    </message>
+    <message>
+        <source>%1: polygon after %2 steps</source>
+        <translation>%1：%2 步之后的多边形</translation>
+    </message>
+    <message>
+        <source>Render an item&apos;s attractor (with its control polygons) to PNG, SVG or PDF.</source>
+        <translation>将对象的吸引子（连同其控制多边形）渲染为 PNG、SVG 或 PDF。</translation>
+    </message>
+    <message>
+        <source>The .awb project file.</source>
+        <translation>.awb 项目文件。</translation>
+    </message>
+    <message>
+        <source>The item to render (default: the first with an attractor).</source>
+        <translation>要渲染的对象（默认：第一个带吸引子的对象）。</translation>
+    </message>
+    <message>
+        <source>Output file: .png, .svg or .pdf.</source>
+        <translation>输出文件：.png、.svg 或 .pdf。</translation>
+    </message>
+    <message>
+        <source>--out FILE is required</source>
+        <translation>必须提供 --out FILE</translation>
+    </message>
+    <message>
+        <source>Render the frames of an item&apos;s animation (its keyframed parameters): numbered PNG files in a folder, or an MP4 or GIF movie through ffmpeg. Frame k is the item with its parameters at time k / fps, drawn exactly as `render` draws it.</source>
+        <translation>渲染对象动画（其设置了关键帧的参数）的各帧：输出为文件夹中带编号的 PNG 文件，或通过 ffmpeg 生成 MP4 或 GIF 影片。第 k 帧是参数取时间 k / fps 处取值时的对象，绘制方式与 `render` 完全相同。</translation>
+    </message>
+    <message>
+        <source>The animated item (default: the first item with an animation).</source>
+        <translation>要制作动画的对象（默认：第一个带动画的对象）。</translation>
+    </message>
+    <message>
+        <source>A folder for frame-0000.png, frame-0001.png, ... (made if missing), a movie .mp4 or .gif (made by ffmpeg), or with --frame one .png/.svg/.pdf.</source>
+        <translation>用于存放 frame-0000.png、frame-0001.png、... 的文件夹（不存在时自动创建），或一个 .mp4 或 .gif 影片（由 ffmpeg 生成），或配合 --frame 使用时为单个 .png/.svg/.pdf 文件。</translation>
+    </message>
+    <message>
+        <source>Frames per second (default: the animation&apos;s).</source>
+        <translation>每秒帧数（默认：动画自身的设置）。</translation>
+    </message>
+    <message>
+        <source>Render only frame K (0 = the start) to the file --out.</source>
+        <translation>只将第 K 帧（0 = 起始帧）渲染到 --out 指定的文件。</translation>
+    </message>
+    <message>
+        <source>Captions without the frame&apos;s time and values.</source>
+        <translation>标题中不含该帧的时间和参数值。</translation>
+    </message>
+    <message>
+        <source>--out DIR|FILE is required</source>
+        <translation>必须提供 --out DIR|FILE</translation>
+    </message>
+    <message>
+        <source>%1 has no animated item</source>
+        <translation>%1 中没有带动画的对象</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; has no animation: key its parameters in the Animation dock, or give it an &quot;animation&quot; field (docs/file-format.md)</source>
+        <translation>对象“%1”没有动画：请在“动画”面板中为其参数设置关键帧，或为其添加 &quot;animation&quot; 字段（docs/file-format.md）</translation>
+    </message>
+    <message>
+        <source>attractor-cli: note: the track of %1 is skipped: item &apos;%2&apos; has no such input now</source>
+        <translation>attractor-cli：注意：已跳过 %1 的轨道：对象“%2”当前没有该输入</translation>
+    </message>
+    <message>
+        <source>%1,%2,%3,%4</source>
+        <translation>%1,%2,%3,%4</translation>
+    </message>
+    <message>
+        <source>fitted per frame</source>
+        <translation>逐帧适应</translation>
+    </message>
+    <message>
+        <source>frame %1 (t = %2 s): %3</source>
+        <translation>第 %1 帧（t = %2 s）：%3</translation>
+    </message>
+    <message>
+        <source>writing %1 needs ffmpeg, which is not installed (Debian: apt-get install ffmpeg); give --out a folder to get the frames as PNG files</source>
+        <translation>写入 %1 需要 ffmpeg，但它尚未安装（Debian：apt-get install ffmpeg）；若为 --out 指定一个文件夹，则可得到各帧的 PNG 文件</translation>
+    </message>
+    <message>
+        <source>cannot make a temporary folder for the frames: %1</source>
+        <translation>无法为各帧创建临时文件夹：%1</translation>
+    </message>
+    <message>
+        <source>%1 is a file, not a folder (a movie needs .mp4 or .gif)</source>
+        <translation>%1 是文件而不是文件夹（影片需要 .mp4 或 .gif 后缀）</translation>
+    </message>
+    <message>
+        <source>cannot make the folder %1</source>
+        <translation>无法创建文件夹 %1</translation>
+    </message>
+    <message>
+        <source>frame-%1.png</source>
+        <translation>frame-%1.png</translation>
+    </message>
+    <message>
+        <source>ffmpeg could not write %1: %2</source>
+        <translation>ffmpeg 无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1: %2 frames of %3x%4 at %5 frames/s (%6 s); rendered in %7 s, %8 frames/s
+bounds: %9
+</source>
+        <translation>%1：%2 帧，%3x%4，%5 帧/s（%6 s）；渲染耗时 %7 s，%8 帧/s
+范围：%9
+</translation>
+    </message>
+    <message>
+        <source>Analyse the items of a project: per map S_i (exact fractions), M_i = P^-1 S_i P with its blocks A_i, b_i, the eigenvalues of S_i and A_i, spectral radius, contractivity and fixed point; per item the subdominant eigenvalues, the Hausdorff distance to the exact curve and the box-counting dimension; per subdivision curve the certified Hölder regularity of its scheme.</source>
+        <translation>分析项目中的对象：对每个映射给出 S_i（精确分数）、M_i = P^-1 S_i P 及其分块 A_i、b_i，S_i 与 A_i 的特征值，谱半径、压缩性和不动点；对每个对象给出次占优特征值、到精确曲线的 Hausdorff 距离以及盒计数维数；对每条细分曲线给出其细分格式经验证的 Hölder 正则性。</translation>
+    </message>
+    <message>
+        <source>Only this item.</source>
+        <translation>仅此对象。</translation>
+    </message>
+    <message>
+        <source>Print JSON (the only format so far).</source>
+        <translation>输出 JSON（目前唯一的格式）。</translation>
+    </message>
+    <message>
+        <source>--json is required (the only output format)</source>
+        <translation>必须提供 --json（唯一的输出格式）</translation>
+    </message>
+    <message>
+        <source>Print the points of F^k(X0) as CSV: x, y (and z for a surface), the map applied last (1-based), and the view. --address w limits them to the sub-copy f_w(A): the points f_w(F^k(X0)).</source>
+        <translation>以 CSV 格式输出 F^k(X0) 的点：x、y（曲面还有 z）、最后作用的映射（从 1 开始编号）以及视图。--address w 将其限制在子副本 f_w(A) 内：即点 f_w(F^k(X0))。</translation>
+    </message>
+    <message>
+        <source>The item.</source>
+        <translation>对象。</translation>
+    </message>
+    <message>
+        <source>Iteration depth (default: the item&apos;s).</source>
+        <translation>迭代深度（默认：对象自身的深度）。</translation>
+    </message>
+    <message>
+        <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2; default: the item&apos;s).</source>
+        <translation>初始集：point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:...（平面坐标；曲面为 x,y,z）| lifted:x,y,c1,...;x,y,c1,...（000 §2 提升空间中的点；默认：对象自身的初始集）。</translation>
+    </message>
+    <message>
+        <source>Print CSV (the only format so far).</source>
+        <translation>输出 CSV（目前唯一的格式）。</translation>
+    </message>
+    <message>
+        <source>Only the sub-copy f_w(A) of this address: 0-based map numbers, w_1 (the outermost map) first, e.g. 0,1,1.</source>
+        <translation>只输出该地址对应的子副本 f_w(A)：映射从 0 开始编号，w_1（最外层的映射）在前，例如 0,1,1。</translation>
+    </message>
+    <message>
+        <source>Refuse to print more (default 10000000).</source>
+        <translation>超过此数目时拒绝输出（默认 10000000）。</translation>
+    </message>
+    <message>
+        <source>--item NAME is required</source>
+        <translation>必须提供 --item NAME</translation>
+    </message>
+    <message>
+        <source>--csv is required (the only output format)</source>
+        <translation>必须提供 --csv（唯一的输出格式）</translation>
+    </message>
+    <message>
+        <source>--address %1: %2</source>
+        <translation>--address %1：%2</translation>
+    </message>
+    <message>
+        <source>--start lifted: needs at least one point</source>
+        <translation>--start lifted：至少需要一个点</translation>
+    </message>
+    <message>
+        <source>cannot write to the standard output</source>
+        <translation>无法写入标准输出</translation>
+    </message>
+    <message>
+        <source>Validate a project file: it must load, and every item&apos;s IFS must be computable (exit 1: the file is refused; exit 3: it loads but items cannot be computed).</source>
+        <translation>验证项目文件：它必须能够加载，并且每个对象的 IFS 都必须可以计算（退出码 1：文件被拒绝；退出码 3：文件可以加载，但有对象无法计算）。</translation>
+    </message>
+    <message>
+        <source>%1: %2: note: %3</source>
+        <translation>%1：%2：注意：%3</translation>
+    </message>
+    <message>
+        <source>Load a project and save it again in the canonical form of this version (sorted keys, every field written): to upgrade or normalise a hand-written file.</source>
+        <translation>加载项目并以当前版本的规范形式重新保存（键按字母排序，写出所有字段）：用于升级或规范化手写的文件。</translation>
+    </message>
+    <message>
+        <source>Write here instead of over the input.</source>
+        <translation>写入此处，而不是覆盖输入文件。</translation>
+    </message>
+    <message>
+        <source>v %1 %2 %3
+</source>
+        <translation>v %1 %2 %3
+</translation>
+    </message>
+    <message>
+        <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), or a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh.</source>
+        <translation>导出对象的几何：将吸引子 F^k(X0) 导出为 PLY 点云（每个点附带最后作用的映射），或将曲面对象经 k 轮经典细分后的控制网格导出为 OBJ 网格。</translation>
+    </message>
+    <message>
+        <source>ply (attractor points) or obj (subdivided mesh).</source>
+        <translation>ply（吸引子的点）或 obj（细分网格）。</translation>
+    </message>
+    <message>
+        <source>Output file.</source>
+        <translation>输出文件。</translation>
+    </message>
+    <message>
+        <source>PLY: iteration depth (default: the item&apos;s).</source>
+        <translation>PLY：迭代深度（默认：对象自身的深度）。</translation>
+    </message>
+    <message>
+        <source>OBJ: rounds of subdivision (default: the item&apos;s).</source>
+        <translation>OBJ：细分轮数（默认：对象自身的设置）。</translation>
+    </message>
+    <message>
+        <source>PLY: refuse to write more (default 50000000).</source>
+        <translation>PLY：超过此数目时拒绝写入（默认 50000000）。</translation>
+    </message>
+    <message>
+        <source>--item NAME, --format ply|obj and --out FILE are required</source>
+        <translation>必须提供 --item NAME、--format ply|obj 和 --out FILE</translation>
+    </message>
+    <message>
+        <source>--format must be ply or obj, got &apos;%1&apos;</source>
+        <translation>--format 必须为 ply 或 obj，实际为“%1”</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; is drawn by an automaton: PLY export covers items with one IFS</source>
+        <translation>对象“%1”由自动机绘制：PLY 导出仅支持由单个 IFS 绘制的对象</translation>
+    </message>
+    <message>
+        <source>OBJ export writes the subdivided net of a surface item; &apos;%1&apos; is a %2</source>
+        <translation>OBJ 导出写出曲面对象的细分控制网格；而“%1”的类型为 %2</translation>
+    </message>
+    <message>
+        <source>Print the control polygon after K subdivision steps as JSON {&quot;closed&quot;, &quot;points&quot;}: the figures of 001 for a normal-vector item (eq. (1) applied K times), classic subdivision S_w P for a subdivision curve.</source>
+        <translation>以 JSON {&quot;closed&quot;, &quot;points&quot;} 格式输出 K 步细分后的控制多边形：对于法向量对象为 001 中的图形（将 eq. (1) 应用 K 次），对于细分曲线为经典细分 S_w P。</translation>
+    </message>
+    <message>
+        <source>Subdivision steps K (0: the control polygon).</source>
+        <translation>细分步数 K（0：控制多边形本身）。</translation>
+    </message>
+    <message>
+        <source>Print JSON (the only format).</source>
+        <translation>输出 JSON（唯一的格式）。</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; has a complex split parameter: its control polygon has complex points</source>
+        <translation>对象“%1”具有复分割参数：其控制多边形含有复数点</translation>
+    </message>
+    <message>
+        <source>level %1 gives more than 5e7 points</source>
+        <translation>第 %1 层将产生超过 5e7 个点</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; (%2) is not polygon-based: the polygon command takes normal-vector items and subdivision curves</source>
+        <translation>对象“%1”（%2）不是基于多边形的：polygon 命令只接受法向量对象和细分曲线</translation>
+    </message>
+    <message>
+        <source>nothing to draw</source>
+        <translation>没有可绘制的内容</translation>
+    </message>
+</context>
+<context>
+    <name>awb::core</name>
+    <message>
+        <source>%1: entry (row %2, column %3) is not a finite number</source>
+        <translation>%1：元素（第 %2 行，第 %3 列）不是有限数</translation>
+    </message>
+    <message>
+        <source>matrix rows of different lengths</source>
+        <translation>矩阵各行长度不同</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ifs</name>
+    <message>
+        <source>the IFS has 1 map (0)</source>
+        <translation>该 IFS 有 1 个映射（0）</translation>
+    </message>
+    <message>
+        <source>the IFS has %1 maps (0..%2)</source>
+        <translation>该 IFS 有 %1 个映射（0..%2）</translation>
+    </message>
+    <message>
+        <source>no parameter intervals</source>
+        <translation>没有参数区间</translation>
+    </message>
+    <message>
+        <source>a parameter interval is empty or not finite</source>
+        <translation>某个参数区间为空或不是有限的</translation>
+    </message>
+    <message>
+        <source>the address has %1 symbols, more than %2</source>
+        <translation>该地址有 %1 个符号，超过了 %2 个</translation>
+    </message>
+    <message>
+        <source>symbol %1 of the address is map %2, but %3</source>
+        <translation>地址的第 %1 个符号是映射 %2，但%3</translation>
+    </message>
+    <message>
+        <source>the IFS has no maps</source>
+        <translation>该 IFS 没有映射</translation>
+    </message>
+    <message>
+        <source>the address &apos;%1&apos; has an empty symbol (a comma too many)</source>
+        <translation>地址“%1”含有空符号（多了一个逗号）</translation>
+    </message>
+    <message>
+        <source>the address &apos;%1&apos; ends with a comma</source>
+        <translation>地址“%1”以逗号结尾</translation>
+    </message>
+    <message>
+        <source>the address is empty: give map numbers such as 0,1,1</source>
+        <translation>地址为空：请给出映射编号，例如 0,1,1</translation>
+    </message>
+    <message>
+        <source>symbol %1 of the address, &apos;%2&apos;, is not a map number (0-based whole number)</source>
+        <translation>地址的第 %1 个符号“%2”不是映射编号（从 0 开始的整数）</translation>
+    </message>
+    <message>
+        <source>no subdivision matrices</source>
+        <translation>没有细分矩阵</translation>
+    </message>
+    <message>
+        <source>the subdivision matrices differ in size</source>
+        <translation>各细分矩阵的尺寸不同</translation>
+    </message>
+    <message>
+        <source>the parameter %1 is outside [0, 1]</source>
+        <translation>参数 %1 不在 [0, 1] 内</translation>
+    </message>
+    <message>
+        <source>an address has 0..%1 symbols</source>
+        <translation>地址的符号数为 0..%1</translation>
+    </message>
+    <message>
+        <source>the parameter interval must satisfy 0 &lt;= t0 &lt; t1 &lt;= 1</source>
+        <translation>参数区间必须满足 0 &lt;= t0 &lt; t1 &lt;= 1</translation>
+    </message>
+    <message>
+        <source>the seed point has %1 coordinates, the IFS %2</source>
+        <translation>种子点有 %1 个坐标，而该 IFS 有 %2 个</translation>
+    </message>
+    <message>
+        <source>map 0 does not converge to a fixed point</source>
+        <translation>映射 0 不收敛到不动点</translation>
+    </message>
+    <message>
+        <source>iteration depth must be between 0 and %1, got %2</source>
+        <translation>迭代深度必须介于 0 和 %1 之间，实际为 %2</translation>
+    </message>
+    <message>
+        <source>the start set is empty</source>
+        <translation>初始集为空</translation>
+    </message>
+    <message>
+        <source>start set has %1 coordinates, the IFS space has %2</source>
+        <translation>初始集有 %1 个坐标，而 IFS 空间有 %2 个</translation>
+    </message>
+    <message>
+        <source>start set</source>
+        <translation>初始集</translation>
+    </message>
+    <message>
+        <source>at most 255 maps are supported, got %1</source>
+        <translation>最多支持 255 个映射，实际为 %1 个</translation>
+    </message>
+    <message>
+        <source>no sink to receive the attractor</source>
+        <translation>没有用于接收吸引子的接收器</translation>
+    </message>
+    <message>
+        <source>start point has %1 coordinates, the IFS space has %2</source>
+        <translation>初始点有 %1 个坐标，而 IFS 空间有 %2 个</translation>
+    </message>
+    <message>
+        <source>start point</source>
+        <translation>初始点</translation>
+    </message>
+    <message>
+        <source>at most %1 random-iteration samples, got %2</source>
+        <translation>随机迭代的样本数最多为 %1，实际为 %2</translation>
+    </message>
+    <message>
+        <source>column %1 of %2 sums to %3, not 1: it does not map barycentric points to barycentric points</source>
+        <translation>%2 的第 %1 列之和为 %3，而不是 1：它不能把重心坐标点映射为重心坐标点</translation>
+    </message>
+    <message>
+        <source>the BCIFS has no cell &apos;%1&apos;</source>
+        <translation>该 BCIFS 没有单元“%1”</translation>
+    </message>
+    <message>
+        <source>the BCIFS has no operator &apos;%1&apos;</source>
+        <translation>该 BCIFS 没有算子“%1”</translation>
+    </message>
+    <message>
+        <source>the BCIFS has no cells</source>
+        <translation>该 BCIFS 没有单元</translation>
+    </message>
+    <message>
+        <source>cell &apos;%1&apos; has dimension %2; it needs at least one control point</source>
+        <translation>单元“%1”的维数为 %2；它至少需要一个控制点</translation>
+    </message>
+    <message>
+        <source>operator &apos;%1&apos; joins a cell that does not exist</source>
+        <translation>算子“%1”连接了一个不存在的单元</translation>
+    </message>
+    <message>
+        <source>operator &apos;%1&apos; (%2 -&gt; %3)</source>
+        <translation>算子“%1”（%2 -&gt; %3）</translation>
+    </message>
+    <message>
+        <source>%1 joins cells of the wrong kinds: subdivisions join edges or vertices, boundary operators go from an edge to a vertex, placements from the model</source>
+        <translation>%1 连接的单元类型不正确：细分算子连接边或顶点，边界算子从边指向顶点，放置算子从模型出发</translation>
+    </message>
+    <message>
+        <source>%1 is %2; it must be %3 x %4 (column convention: rows = dimension of &apos;%5&apos;, columns = dimension of &apos;%6&apos;)</source>
+        <translation>%1 的尺寸为 %2；它必须为 %3 x %4（列约定：行数 = “%5”的维数，列数 = “%6”的维数）</translation>
+    </message>
+    <message>
+        <source>edge cell &apos;%1&apos; has no subdivision operator: its attractor would be empty</source>
+        <translation>边单元“%1”没有细分算子：其吸引子将为空</translation>
+    </message>
+    <message>
+        <source>constraint %1</source>
+        <translation>约束 %1</translation>
+    </message>
+    <message>
+        <source>%1 has an empty side or an unknown operator</source>
+        <translation>%1 有一侧为空，或含有未知算子</translation>
+    </message>
+    <message>
+        <source>%1: %2 ends at &apos;%3&apos; but %4 starts at &apos;%5&apos;</source>
+        <translation>%1：%2 终止于“%3”，但 %4 起始于“%5”</translation>
+    </message>
+    <message>
+        <source>%1 (%2) compares paths between different cells</source>
+        <translation>%1（%2）比较的是不同单元之间的路径</translation>
+    </message>
+    <message>
+        <source>%1 constraint %2 %3 is violated by %4 (entry row %5, column %6)</source>
+        <translation>%1 约束 %2 %3 不满足，偏差为 %4（位于第 %5 行第 %6 列的元素）</translation>
+    </message>
+    <message>
+        <source>; also violated:</source>
+        <translation>；同样不满足的还有：</translation>
+    </message>
+    <message>
+        <source>edge cell &apos;%1&apos; has no placement (control points): it cannot be drawn</source>
+        <translation>边单元“%1”没有放置（控制点）：无法绘制</translation>
+    </message>
+    <message>
+        <source>the junction matrix must be square and at least 2 x 2, got %1</source>
+        <translation>拼接矩阵必须是至少 2 x 2 的方阵，实际为 %1</translation>
+    </message>
+    <message>
+        <source>the copy&apos;s placement must have %1 rows (one per control point of the junction), got %2</source>
+        <translation>副本的放置必须有 %1 行（拼接的每个控制点一行），实际为 %2 行</translation>
+    </message>
+    <message>
+        <source>the junction has %1 control points, got %2</source>
+        <translation>该拼接有 %1 个控制点，实际给出 %2 个</translation>
+    </message>
+    <message>
+        <source>junction matrix</source>
+        <translation>拼接矩阵</translation>
+    </message>
+    <message>
+        <source>copy placement</source>
+        <translation>副本放置</translation>
+    </message>
+    <message>
+        <source>the junction matrix</source>
+        <translation>拼接矩阵</translation>
+    </message>
+    <message>
+        <source>the copy placement</source>
+        <translation>副本放置</translation>
+    </message>
+    <message>
+        <source>the copies collapse onto the fixed point: no tangent information</source>
+        <translation>各副本坍缩到不动点上：没有切线信息</translation>
+    </message>
+    <message>
+        <source>lambda = %1: %2</source>
+        <translation>lambda = %1：%2</translation>
+    </message>
+    <message>
+        <source>; |lambda| &gt;= 1, so the junction matrix does not contract</source>
+        <translation>；|lambda| &gt;= 1，因此拼接矩阵不压缩</translation>
+    </message>
+    <message>
+        <source> (the copy has no component along the subdominant eigenvector, lambda = %1, so the next eigenvalue governs)</source>
+        <translation> （副本在次占优特征向量方向上没有分量，lambda = %1，因此由下一个特征值决定）</translation>
+    </message>
+    <message>
+        <source> (the eigenvectors are not complete; the copy&apos;s components were not examined)</source>
+        <translation> （特征向量不完备；未检查副本的各分量）</translation>
+    </message>
+    <message>
+        <source>vertex subdivisions must be square and non-empty, got %1 and %2</source>
+        <translation>顶点细分矩阵必须是非空方阵，实际为 %1 和 %2</translation>
+    </message>
+    <message>
+        <source>the free columns must have %1 rows (n_l + n_r), got X %2 and Y %3</source>
+        <translation>自由列必须有 %1 行（n_l + n_r），实际 X 为 %2、Y 为 %3</translation>
+    </message>
+    <message>
+        <source>free columns X of T^l</source>
+        <translation>T^l 的自由列 X</translation>
+    </message>
+    <message>
+        <source>free columns Y of T^r</source>
+        <translation>T^r 的自由列 Y</translation>
+    </message>
+    <message>
+        <source>the free columns X of T^l</source>
+        <translation>T^l 的自由列 X</translation>
+    </message>
+    <message>
+        <source>the free columns Y of T^r</source>
+        <translation>T^r 的自由列 Y</translation>
+    </message>
+    <message>
+        <source>the %1 curve&apos;s subdivision operators must both be m x m, got %2 and %3</source>
+        <translation>%1 曲线的细分算子必须都是 m x m，实际为 %2 和 %3</translation>
+    </message>
+    <message>
+        <source>the %1 curve&apos;s vertex dimension must be in 1..%2, got %3</source>
+        <translation>%1 曲线的顶点维数必须在 1..%2 内，实际为 %3</translation>
+    </message>
+    <message>
+        <source>the %1 curve needs %2 control points, got %3</source>
+        <translation>%1 曲线需要 %2 个控制点，实际为 %3 个</translation>
+    </message>
+    <message>
+        <source>control points of the %1 curve</source>
+        <translation>%1 曲线的控制点</translation>
+    </message>
+    <message>
+        <source>both curves&apos; control points must have the same dimension</source>
+        <translation>两条曲线的控制点必须具有相同的维数</translation>
+    </message>
+    <message>
+        <source>X must have m_l - n_l columns and Y m_r - n_r</source>
+        <translation>X 必须有 m_l - n_l 列，Y 必须有 m_r - n_r 列</translation>
+    </message>
+    <message>
+        <source>junction parameter %1 is not a finite number</source>
+        <translation>拼接参数 %1 不是有限数</translation>
+    </message>
+    <message>
+        <source>T^i has no subdominant eigenvalue</source>
+        <translation>T^i 没有次占优特征值</translation>
+    </message>
+    <message>
+        <source>lambda_2 = %1 (%2)</source>
+        <translation>lambda_2 = %1（%2）</translation>
+    </message>
+    <message>
+        <source>: |lambda_2| &gt;= 1, T^i does not contract and the junction does not converge</source>
+        <translation>：|lambda_2| &gt;= 1，T^i 不压缩，拼接不收敛</translation>
+    </message>
+    <message>
+        <source>: both sides have half-tangents along the same eigenvector, from opposite sides: G1 at the junction point</source>
+        <translation>：两侧都有沿同一特征向量、方向相反的单侧切线：在拼接点处为 G1</translation>
+    </message>
+    <message>
+        <source>: both sides have half-tangents, but they are not opposite (a corner or cusp)</source>
+        <translation>：两侧都有单侧切线，但方向并不相反（角点或尖点）</translation>
+    </message>
+    <message>
+        <source>the cubic needs 4 and the quadratic 3 control points of one dimension, got %1 and %2</source>
+        <translation>三次曲线需要 4 个、二次曲线需要 3 个维数相同的控制点，实际为 %1 个和 %2 个</translation>
+    </message>
+    <message>
+        <source>%1 must exceed the other eigenvalues of %2 (largest modulus %3) to be subdominant, and be below 1 for %2 to contract</source>
+        <translation>%1 必须大于 %2 的其他特征值（最大模为 %3）才能成为次占优特征值，并且必须小于 1 才能使 %2 压缩</translation>
+    </message>
+    <message>
+        <source>refined junction parameter %1 is not a finite number</source>
+        <translation>细化拼接参数 %1 不是有限数</translation>
+    </message>
+    <message>
+        <source>refined junction parameter %1 = %2 is outside its admissible range (%3, %4): %5</source>
+        <translation>细化拼接参数 %1 = %2 超出其容许范围 (%3, %4)：%5</translation>
+    </message>
+    <message>
+        <source>the refined junction needs 4 cubic, 3 quadratic and 3 handle control points of one dimension, got %1, %2 and %3</source>
+        <translation>细化拼接需要维数相同的 4 个三次曲线控制点、3 个二次曲线控制点和 3 个控制柄控制点，实际为 %1 个、%2 个和 %3 个</translation>
+    </message>
+    <message>
+        <source>handles of the refined junction</source>
+        <translation>细化拼接的控制柄</translation>
+    </message>
+    <message>
+        <source>the split parameter u is not a finite number</source>
+        <translation>分割参数 u 不是有限数</translation>
+    </message>
+    <message>
+        <source>the split parameter u = %1 must lie strictly between 0 and 1 (002 §4: 0 &lt; u &lt; 1)</source>
+        <translation>分割参数 u = %1 必须严格介于 0 和 1 之间（002 §4：0 &lt; u &lt; 1）</translation>
+    </message>
+    <message>
+        <source>coincide</source>
+        <comment>points</comment>
+        <translation>重合</translation>
+    </message>
+    <message>
+        <source>are collinear</source>
+        <comment>points</comment>
+        <translation>共线</translation>
+    </message>
+    <message>
+        <source>are coplanar</source>
+        <comment>points</comment>
+        <translation>共面</translation>
+    </message>
+    <message>
+        <source>the affine map is not invertible (its linear part is singular)</source>
+        <translation>该仿射映射不可逆（其线性部分是奇异的）</translation>
+    </message>
+    <message>
+        <source>an affine map of R^%1 is fixed by %2 point pairs</source>
+        <translation>R^%1 的仿射映射由 %2 对点确定</translation>
+    </message>
+    <message>
+        <source>source points</source>
+        <translation>源点</translation>
+    </message>
+    <message>
+        <source>target points</source>
+        <translation>目标点</translation>
+    </message>
+    <message>
+        <source>the source points %1: no unique affine map takes them to the targets</source>
+        <translation>源点%1：不存在将其映射到目标点的唯一仿射映射</translation>
+    </message>
+    <message>
+        <source>fractal interpolation needs N + 1 &gt;= 3 data points (x, y)</source>
+        <translation>分形插值需要 N + 1 &gt;= 3 个数据点 (x, y)</translation>
+    </message>
+    <message>
+        <source>interpolation data</source>
+        <translation>插值数据</translation>
+    </message>
+    <message>
+        <source>fractal interpolation through %1 points needs %2 vertical scalings d_n, got %3</source>
+        <translation>经过 %1 个点的分形插值需要 %2 个竖直缩放因子 d_n，实际为 %3 个</translation>
+    </message>
+    <message>
+        <source>interpolation abscissae must increase (x_%1 &lt;= x_%2)</source>
+        <translation>插值横坐标必须递增（x_%1 &lt;= x_%2）</translation>
+    </message>
+    <message>
+        <source>vertical scaling d_%1 = %2 must satisfy |d_n| &lt; 1</source>
+        <translation>竖直缩放因子 d_%1 = %2 必须满足 |d_n| &lt; 1</translation>
+    </message>
+    <message>
+        <source>002 §5 needs three control points in the plane (3 x 2)</source>
+        <translation>002 §5 需要平面上的三个控制点（3 x 2）</translation>
+    </message>
+    <message>
+        <source>control points</source>
+        <translation>控制点</translation>
+    </message>
+    <message>
+        <source>control points Q0, Q1, Q2 are collinear: the map omega of 002 §5 is not invertible</source>
+        <translation>控制点 Q0、Q1、Q2 共线：002 §5 中的映射 omega 不可逆</translation>
+    </message>
+    <message>
+        <source>a Bézier curve needs at least 2 control points (degree &gt;= 1), got %1</source>
+        <translation>Bézier 曲线至少需要 2 个控制点（次数 &gt;= 1），实际为 %1 个</translation>
+    </message>
+    <message>
+        <source>control points must have 1 to 3 coordinates</source>
+        <translation>控制点必须有 1 到 3 个坐标</translation>
+    </message>
+    <message>
+        <source>the %1 control points %2, so the affine maps of eqs. (9)-(10) are not unique</source>
+        <translation>这 %1 个控制点%2，因此 eqs. (9)-(10) 的仿射映射不唯一</translation>
+    </message>
+    <message>
+        <source>no affine map of R^%1 takes the control polygon of this degree-%2 curve to its de Casteljau pieces (mismatch %3): the pieces are not affine images of the curve in its own space</source>
+        <translation>R^%1 中没有仿射映射能将此 %2 次曲线的控制多边形映射为其 de Casteljau 片段（失配 %3）：这些片段不是该曲线在其自身空间中的仿射像</translation>
+    </message>
+    <message>
+        <source>; the maps act on barycentric coordinates R^%1 (%2)</source>
+        <translation>；映射作用于重心坐标 R^%1（%2）</translation>
+    </message>
+    <message>
+        <source>; the maps act on the lifted space R^%1 of 000 §2, drawn through its first %2 coordinates</source>
+        <translation>；映射作用于 000 §2 的提升空间 R^%1，并通过其前 %2 个坐标绘制</translation>
+    </message>
+    <message>
+        <source>map 1 has spectral radius %1, map 2 %2; %3 levels shrink every piece to 1/1000 of the curve</source>
+        <translation>映射 1 的谱半径为 %1，映射 2 的为 %2；经过 %3 层后，每个片段都缩小到曲线的 1/1000</translation>
+    </message>
+    <message>
+        <source>. u = %1 is close to %2: map %3 is nearly non-contractive and the pieces are very unequal (random iteration, or u nearer 1/2, converges faster)</source>
+        <translation>。u = %1 接近 %2：映射 %3 几乎不压缩，各片段大小相差悬殊（随机迭代，或取更接近 1/2 的 u，收敛更快）</translation>
+    </message>
+    <message>
+        <source>. Map %1 is not a Euclidean contraction (||A||_2 = %2) but is eventually contractive, as 002 §5 allows</source>
+        <translation>。映射 %1 不是欧氏压缩（||A||_2 = %2），但它是最终压缩的，这是 002 §5 所允许的</translation>
+    </message>
+    <message>
+        <source>a combined IFS needs at least one curve</source>
+        <translation>组合 IFS 至少需要一条曲线</translation>
+    </message>
+    <message>
+        <source>curve %1</source>
+        <translation>曲线 %1</translation>
+    </message>
+    <message>
+        <source>%1: the combined IFS of 002 §6 acts on the plane, control points need 2 coordinates</source>
+        <translation>%1：002 §6 的组合 IFS 作用于平面，控制点需要 2 个坐标</translation>
+    </message>
+    <message>
+        <source>%1: its maps do not act on the plane (%2), so they cannot be combined with the other curves&apos; maps</source>
+        <translation>%1：其映射不作用于平面（%2），因此无法与其他曲线的映射组合</translation>
+    </message>
+    <message>
+        <source>a union needs at least one curve</source>
+        <translation>并集至少需要一条曲线</translation>
+    </message>
+    <message>
+        <source>arc &apos;%1&apos; (%2 -&gt; %3)</source>
+        <translation>弧“%1”（%2 -&gt; %3）</translation>
+    </message>
+    <message>
+        <source>the automaton has no states</source>
+        <translation>该自动机没有状态</translation>
+    </message>
+    <message>
+        <source>state &apos;%1&apos; has no control points</source>
+        <translation>状态“%1”没有控制点</translation>
+    </message>
+    <message>
+        <source>state &apos;%1&apos;: control points must be 2D or 3D, got %2 coordinates</source>
+        <translation>状态“%1”：控制点必须是 2D 或 3D 的，实际有 %2 个坐标</translation>
+    </message>
+    <message>
+        <source>control points of state &apos;%1&apos;</source>
+        <translation>状态“%1”的控制点</translation>
+    </message>
+    <message>
+        <source>at most 255 arcs are supported (addresses are bytes), got %1</source>
+        <translation>最多支持 255 条弧（地址以字节存储），实际为 %1 条</translation>
+    </message>
+    <message>
+        <source>arc &apos;%1&apos; connects states %2 -&gt; %3, but the automaton has %4 states</source>
+        <translation>弧“%1”连接状态 %2 -&gt; %3，但该自动机只有 %4 个状态</translation>
+    </message>
+    <message>
+        <source>%1 has a %2 x %3 matrix; it must be %4 x %5 (row convention: rows = dimension of &apos;%6&apos;, columns = dimension of &apos;%7&apos;)</source>
+        <translation>%1 的矩阵为 %2 x %3；它必须为 %4 x %5（行约定：行数 = “%6”的维数，列数 = “%7”的维数）</translation>
+    </message>
+    <message>
+        <source>row %1 of %2 sums to %3, not 1: the map does not keep barycentric coordinates summing to 1</source>
+        <translation>%2 的第 %1 行之和为 %3，而不是 1：该映射不能保持重心坐标之和为 1</translation>
+    </message>
+    <message>
+        <source>the weight of %1 must be a finite number &gt; 0, got %2</source>
+        <translation>%1 的权重必须是 &gt; 0 的有限数，实际为 %2</translation>
+    </message>
+    <message>
+        <source>state &apos;%1&apos; has no outgoing arc: its attractor would be empty</source>
+        <translation>状态“%1”没有出弧：其吸引子将为空</translation>
+    </message>
+    <message>
+        <source>the barycentric part needs a non-empty square matrix</source>
+        <translation>重心坐标部分需要非空方阵</translation>
+    </message>
+    <message>
+        <source>cycle %1 has spectral radius %2 &gt;= 1 on the barycentric directions: repeating it does not contract, so the automaton has no attractor</source>
+        <translation>环路 %1 在重心坐标方向上的谱半径为 %2 &gt;= 1：重复该环路不会压缩，因此该自动机没有吸引子</translation>
+    </message>
+    <message>
+        <source>a fixed point needs a non-empty square matrix</source>
+        <translation>求不动点需要非空方阵</translation>
+    </message>
+    <message>
+        <source>the fixed point is not unique: 1 is a repeated eigenvalue</source>
+        <translation>不动点不唯一：1 是重特征值</translation>
+    </message>
+    <message>
+        <source>state %1 does not exist: the automaton has %2 states</source>
+        <translation>状态 %1 不存在：该自动机有 %2 个状态</translation>
+    </message>
+    <message>
+        <source>one start set per state is needed: the automaton has %1 states, got %2 start sets</source>
+        <translation>每个状态需要一个初始集：该自动机有 %1 个状态，实际给出 %2 个初始集</translation>
+    </message>
+    <message>
+        <source>start set of state &apos;%1&apos;</source>
+        <translation>状态“%1”的初始集</translation>
+    </message>
+    <message>
+        <source>%1 is empty</source>
+        <translation>%1 为空</translation>
+    </message>
+    <message>
+        <source>%1 has %2 coordinates, the state&apos;s space has %3</source>
+        <translation>%1 有 %2 个坐标，而该状态的空间有 %3 个</translation>
+    </message>
+    <message>
+        <source>at most 4e9 random-iteration samples, got %1</source>
+        <translation>随机迭代的样本数最多为 4e9，实际为 %1</translation>
+    </message>
+    <message>
+        <source>the affine map&apos;s translation does not match its linear part</source>
+        <translation>仿射映射的平移部分与其线性部分不匹配</translation>
+    </message>
+    <message>
+        <source>a barycentric frame in %1D needs %2 points, got a %3 x %4 matrix</source>
+        <translation>%1D 中的重心坐标框架需要 %2 个点，实际为 %3 x %4 矩阵</translation>
+    </message>
+    <message>
+        <source>domain frame</source>
+        <translation>定义域框架</translation>
+    </message>
+    <message>
+        <source>image frame</source>
+        <translation>像框架</translation>
+    </message>
+    <message>
+        <source>affine map</source>
+        <translation>仿射映射</translation>
+    </message>
+    <message>
+        <source>the image frame&apos;s points are affinely dependent (collinear in 2D)</source>
+        <translation>像框架的点仿射相关（在 2D 中即共线）</translation>
+    </message>
+    <message>
+        <source>map %1 does not act on the same space as map 1</source>
+        <translation>映射 %1 与映射 1 不作用于同一空间</translation>
+    </message>
+    <message>
+        <source>map %1 (linear part)</source>
+        <translation>映射 %1（线性部分）</translation>
+    </message>
+    <message>
+        <source>map %1 (translation)</source>
+        <translation>映射 %1（平移部分）</translation>
+    </message>
+    <message>
+        <source>view %1 does not fit the IFS space</source>
+        <translation>视图 %1 与 IFS 空间不匹配</translation>
+    </message>
+    <message>
+        <source>the IFS has %1 maps but %2 probabilities</source>
+        <translation>该 IFS 有 %1 个映射，却有 %2 个概率</translation>
+    </message>
+    <message>
+        <source>probability of map %1 must be a finite number &gt;= 0</source>
+        <translation>映射 %1 的概率必须是 &gt;= 0 的有限数</translation>
+    </message>
+    <message>
+        <source>the map probabilities sum to 0</source>
+        <translation>各映射的概率之和为 0</translation>
+    </message>
+    <message>
+        <source>the lifting needs %1 distinct free rows of the control points</source>
+        <translation>提升需要控制点中 %1 个互不相同的自由行</translation>
+    </message>
+    <message>
+        <source> and </source>
+        <translation> 和 </translation>
+    </message>
+    <message>
+        <source>the lifted matrix P is nearly singular (reciprocal condition number %1): M_i = P^-1 S_i P lose about %2 of 16 significant digits; control points %3 are almost collinear</source>
+        <translation>提升矩阵 P 接近奇异（条件数倒数为 %1）：M_i = P^-1 S_i P 约损失 16 位有效数字中的 %2 位；控制点 %3 几乎共线</translation>
+    </message>
+    <message>
+        <source>the lifted matrix P is nearly singular (reciprocal condition number %1): M_i = P^-1 S_i P lose about %2 of 16 significant digits; control points %3 are almost coplanar</source>
+        <translation>提升矩阵 P 接近奇异（条件数倒数为 %1）：M_i = P^-1 S_i P 约损失 16 位有效数字中的 %2 位；控制点 %3 几乎共面</translation>
+    </message>
+    <message>
+        <source>control points %1 are collinear, so the lifted matrix P of 000 §2 is singular and M_i = P^-1 S_i P is not defined; the attractor is computed in barycentric form</source>
+        <translation>控制点 %1 共线，因此 000 §2 的提升矩阵 P 是奇异的，M_i = P^-1 S_i P 没有定义；吸引子改用重心坐标形式计算</translation>
+    </message>
+    <message>
+        <source>control points %1 are coplanar, so the lifted matrix P of 000 §2 is singular and M_i = P^-1 S_i P is not defined; the attractor is computed in barycentric form</source>
+        <translation>控制点 %1 共面，因此 000 §2 的提升矩阵 P 是奇异的，M_i = P^-1 S_i P 没有定义；吸引子改用重心坐标形式计算</translation>
+    </message>
+    <message>
+        <source>control points %1 are affinely dependent, so the lifted matrix P of 000 §2 is singular and M_i = P^-1 S_i P is not defined; the attractor is computed in barycentric form</source>
+        <translation>控制点 %1 仿射相关，因此 000 §2 的提升矩阵 P 是奇异的，M_i = P^-1 S_i P 没有定义；吸引子改用重心坐标形式计算</translation>
+    </message>
+    <message>
+        <source>matrix S_%1 does not match %2 control points</source>
+        <translation>矩阵 S_%1 与 %2 个控制点不匹配</translation>
+    </message>
+    <message>
+        <source>matrix S_%1</source>
+        <translation>矩阵 S_%1</translation>
+    </message>
+    <message>
+        <source>start points must have %1 (plane) or %2 (barycentric) coordinates</source>
+        <translation>初始点必须有 %1 个（平面）或 %2 个（重心坐标）坐标</translation>
+    </message>
+    <message>
+        <source>start points must have %1 (plane) or %2 (lifted) coordinates</source>
+        <translation>初始点必须有 %1 个（平面）或 %2 个（提升）坐标</translation>
+    </message>
+    <message>
+        <source>a union needs at least one component</source>
+        <translation>并集至少需要一个组成部分</translation>
+    </message>
+    <message>
+        <source>component %1 has %2 maps, component 1 has %3: a block union needs equally many</source>
+        <translation>组成部分 %1 有 %2 个映射，而组成部分 1 有 %3 个：块并集要求各部分的映射数相同</translation>
+    </message>
+    <message>
+        <source>probabilities must be finite and non-negative</source>
+        <translation>概率必须是非负的有限数</translation>
+    </message>
+    <message>
+        <source>the probabilities sum to zero</source>
+        <translation>概率之和为零</translation>
+    </message>
+    <message>
+        <source>the lattice lists %1 coordinates for %2 control points</source>
+        <translation>格点列出了 %1 个坐标，但有 %2 个控制点</translation>
+    </message>
+    <message>
+        <source>a map is listed twice among the maps used</source>
+        <translation>所用映射中有一个映射被列出了两次</translation>
+    </message>
+    <message>
+        <source>map index %1 is out of range: the %2 layout has maps 0 to %3</source>
+        <translation>映射索引 %1 超出范围：%2 布局的映射编号为 0 到 %3</translation>
+    </message>
+</context>
+<context>
+    <name>awb::render</name>
+    <message>
+        <source>raster size must be between 1x1 and 32768x32768, got %1x%2</source>
+        <translation>栅格尺寸必须介于 1x1 和 32768x32768 之间，实际为 %1x%2</translation>
+    </message>
+    <message>
+        <source>supersampling must be 1 to 4 cells per pixel side, got %1</source>
+        <translation>超采样必须为每个像素每边 1 到 4 个单元，实际为 %1</translation>
+    </message>
+    <message>
+        <source>the supersampled raster would hold more than 1.2e9 cells</source>
+        <translation>超采样后的栅格将含有超过 1.2e9 个单元</translation>
+    </message>
+    <message>
+        <source>raster world rectangle is empty or not finite</source>
+        <translation>栅格的世界坐标矩形为空或不是有限的</translation>
+    </message>
+    <message>
+        <source>cannot merge density images of different sizes or modes</source>
+        <translation>无法合并尺寸或模式不同的密度图像</translation>
+    </message>
+    <message>
+        <source>density image does not match its frame</source>
+        <translation>密度图像与其取景框不匹配</translation>
+    </message>
+    <message>
+        <source>a view does not fit the IFS space</source>
+        <translation>某个视图与 IFS 空间不匹配</translation>
+    </message>
+    <message>
+        <source>there is no IFS to draw</source>
+        <translation>没有要绘制的 IFS</translation>
+    </message>
+    <message>
+        <source>the IFS has no view to draw it with</source>
+        <translation>该 IFS 没有可用于绘制的视图</translation>
+    </message>
+    <message>
+        <source>the colour table does not cover the address labels</source>
+        <translation>颜色表未覆盖所有地址标签</translation>
+    </message>
+</context>
+<context>
+    <name>awb::schemes</name>
+    <message>
+        <source>%1 is not a finite number</source>
+        <translation>%1 不是有限数</translation>
+    </message>
+    <message>
+        <source>%1 = %2 &lt; 1</source>
+        <translation>%1 = %2 &lt; 1</translation>
+    </message>
+    <message>
+        <source>%1 = %2: on the circle %1 = 1, so %3 is an isometry, not a contraction</source>
+        <translation>%1 = %2：位于圆 %1 = 1 上，因此 %3 是等距映射，而不是压缩映射</translation>
+    </message>
+    <message>
+        <source>%1 = %2 &gt; 1, so %3 expands</source>
+        <translation>%1 = %2 &gt; 1，因此 %3 是扩张的</translation>
+    </message>
+    <message>
+        <source>y must be a finite nonzero number (t = 1/2 + i y)</source>
+        <translation>y 必须是有限的非零数（t = 1/2 + i y）</translation>
+    </message>
+    <message>
+        <source>t = 1/2 + i y with y = %1: %2</source>
+        <translation>t = 1/2 + i y，y = %1：%2</translation>
+    </message>
+    <message>
+        <source>depth must be between 1 and 24, got %1</source>
+        <translation>深度必须介于 1 和 24 之间，实际为 %1</translation>
+    </message>
+    <message>
+        <source>the subdivision parameter t</source>
+        <translation>细分参数 t</translation>
+    </message>
+    <message>
+        <source>t = %1: %2, %3. t lies inside both discs: the IFS is hyperbolic (contraction factor %4) and its attractor is a connected curve (Theorem 3.7.2)</source>
+        <translation>t = %1：%2，%3。t 位于两个圆盘内部：该 IFS 是双曲的（压缩因子 %4），其吸引子是一条连通曲线（Theorem 3.7.2）</translation>
+    </message>
+    <message>
+        <source>t = %1: %2, %3. t lies outside both discs |t| &lt; 1 and |1 - t| &lt; 1: the IFS is not hyperbolic and has no attractor</source>
+        <translation>t = %1：%2，%3。t 位于两个圆盘 |t| &lt; 1 与 |1 - t| &lt; 1 之外：该 IFS 不是双曲的，没有吸引子</translation>
+    </message>
+    <message>
+        <source>t = %1: %2, %3. t lies outside the disc %4: the IFS is not hyperbolic and has no attractor</source>
+        <translation>t = %1：%2，%3。t 位于圆盘 %4 之外：该 IFS 不是双曲的，没有吸引子</translation>
+    </message>
+    <message>
+        <source>a Bézier curve needs at least 2 control points (degree &gt;= 1), got %1</source>
+        <translation>Bézier 曲线至少需要 2 个控制点（次数 &gt;= 1），实际为 %1 个</translation>
+    </message>
+    <message>
+        <source>control points</source>
+        <translation>控制点</translation>
+    </message>
+    <message>
+        <source>all control points coincide: the curve is a single point and the lifted matrix of 000 §2 is singular</source>
+        <translation>所有控制点重合：曲线退化为一个点，000 §2 中的提升矩阵是奇异的</translation>
+    </message>
+    <message>
+        <source>depth must be between 0 and 24, got %1</source>
+        <translation>深度必须介于 0 和 24 之间，实际为 %1</translation>
+    </message>
+    <message>
+        <source>the Takagi function needs a finite x</source>
+        <translation>Takagi 函数需要有限的 x</translation>
+    </message>
+    <message>
+        <source>the number of Takagi terms must be &gt;= 0</source>
+        <translation>Takagi 项数必须 &gt;= 0</translation>
+    </message>
+    <message>
+        <source>binary codes longer than 60 digits are not supported</source>
+        <translation>不支持长于 60 位的二进制码</translation>
+    </message>
+    <message>
+        <source>a binary code has digits 0 and 1 only (digit %1 is %2)</source>
+        <translation>二进制码只能包含数字 0 和 1（第 %1 位为 %2）</translation>
+    </message>
+    <message>
+        <source>Takagi image: needs at least 2 control points, got %1</source>
+        <translation>Takagi 像：至少需要 2 个控制点，实际为 %1 个</translation>
+    </message>
+    <message>
+        <source>Takagi image: control points and y must be finite</source>
+        <translation>Takagi 像：控制点和 y 必须是有限数</translation>
+    </message>
+    <message>
+        <source>Takagi image: depth %1 is outside 1..20</source>
+        <translation>Takagi 像：深度 %1 不在 1..20 范围内</translation>
+    </message>
+    <message>
+        <source>control points must have 2 or 3 coordinates, got %1</source>
+        <translation>控制点必须有 2 个或 3 个坐标，实际为 %1 个</translation>
+    </message>
+    <message>
+        <source>%1 control points are too few: affine combinations in %2D need at least %3 that are not collinear</source>
+        <translation>%1 个控制点太少：%2D 中的仿射组合至少需要 %3 个不共线的点</translation>
+    </message>
+    <message>
+        <source>%1 control points are too few: affine combinations in %2D need at least %3 that are not coplanar</source>
+        <translation>%1 个控制点太少：%2D 中的仿射组合至少需要 %3 个不共面的点</translation>
+    </message>
+    <message>
+        <source>the control points are all collinear: they must span the plane to write every image point as their affine combination (000 eq. (5))</source>
+        <translation>控制点全部共线：它们必须张成整个平面，才能将每个像点写成它们的仿射组合（000 eq. (5)）</translation>
+    </message>
+    <message>
+        <source>the control points are all coplanar: they must span space to write every image point as their affine combination (000 eq. (5))</source>
+        <translation>控制点全部共面：它们必须张成整个空间，才能将每个像点写成它们的仿射组合（000 eq. (5)）</translation>
+    </message>
+    <message>
+        <source>the point has %1 coordinates, the control points have %2</source>
+        <translation>该点有 %1 个坐标，而控制点有 %2 个</translation>
+    </message>
+    <message>
+        <source>point</source>
+        <translation>点</translation>
+    </message>
+    <message>
+        <source>the IFS has no maps</source>
+        <translation>该 IFS 没有映射</translation>
+    </message>
+    <message>
+        <source>map f_%1 is not a map of %2D points like the control points</source>
+        <translation>映射 f_%1 不是像控制点那样的 %2D 点的映射</translation>
+    </message>
+    <message>
+        <source>map f_%1 (linear part)</source>
+        <translation>映射 f_%1（线性部分）</translation>
+    </message>
+    <message>
+        <source>map f_%1 (translation)</source>
+        <translation>映射 f_%1（平移部分）</translation>
+    </message>
+    <message>
+        <source>Koch curve with control points</source>
+        <translation>带控制点的 Koch 曲线</translation>
+    </message>
+    <message>
+        <source>Sierpinski gasket with control points</source>
+        <translation>带控制点的 Sierpinski 垫片</translation>
+    </message>
+    <message>
+        <source>%1 needs %2 control points in the plane, got %3 with %4 coordinates</source>
+        <translation>%1 需要平面上的 %2 个控制点，实际为 %3 个具有 %4 个坐标的点</translation>
+    </message>
+    <message>
+        <source>Bézier degree must be at least 1</source>
+        <translation>Bézier 曲线的次数必须至少为 1</translation>
+    </message>
+    <message>
+        <source>B-spline degree must be at least 1</source>
+        <translation>B 样条的次数必须至少为 1</translation>
+    </message>
+    <message>
+        <source>a B-spline of degree %1 needs at least %2 control points (%3 knots), got %4 knots</source>
+        <translation>%1 次 B 样条至少需要 %2 个控制点（%3 个节点），实际为 %4 个节点</translation>
+    </message>
+    <message>
+        <source>B-spline knot %1 is not a finite number</source>
+        <translation>B 样条节点 %1 不是有限数</translation>
+    </message>
+    <message>
+        <source>B-spline knots must be nondecreasing (knot %1)</source>
+        <translation>B 样条节点必须单调不减（节点 %1）</translation>
+    </message>
+    <message>
+        <source>B-spline knot vector has an empty domain</source>
+        <translation>B 样条节点向量的定义域为空</translation>
+    </message>
+    <message>
+        <source>an end-interpolating B-spline of degree %1 needs at least %2 control points</source>
+        <translation>%1 次端点插值 B 样条至少需要 %2 个控制点</translation>
+    </message>
+    <message>
+        <source>B-spline needs %1 control points, got %2</source>
+        <translation>B 样条需要 %1 个控制点，实际为 %2 个</translation>
+    </message>
+    <message>
+        <source>scheme %1: the dilation must be at least 2</source>
+        <translation>细分格式 %1：伸缩因子必须至少为 2</translation>
+    </message>
+    <message>
+        <source>scheme %1: the mask holds a non-finite weight</source>
+        <translation>细分格式 %1：掩模含有非有限权值</translation>
+    </message>
+    <message>
+        <source>scheme %1: the mask is empty</source>
+        <translation>细分格式 %1：掩模为空</translation>
+    </message>
+    <message>
+        <source>scheme %1: the mask entries of class (%2, %3) mod %4 sum to %5, not 1</source>
+        <translation>细分格式 %1：同余类 (%2, %3) mod %4 的掩模元素之和为 %5，而不是 1</translation>
+    </message>
+    <message>
+        <source>scheme %1: local subdivision matrix not closed</source>
+        <translation>细分格式 %1：局部细分矩阵不封闭</translation>
+    </message>
+    <message>
+        <source>scheme %1: the local subdivision matrix has no eigenvalue 1</source>
+        <translation>细分格式 %1：局部细分矩阵没有特征值 1</translation>
+    </message>
+    <message>
+        <source>scheme %1: the limit eigenvector sums to 0</source>
+        <translation>细分格式 %1：极限特征向量之和为 0</translation>
+    </message>
+    <message>
+        <source>box spline %1: its directions sum to an odd vector, so the mask has no lattice-point centre</source>
+        <translation>箱样条 %1：其方向之和为奇向量，因此掩模的中心不在格点上</translation>
+    </message>
+    <message>
+        <source>bicubic B-spline</source>
+        <translation>双三次 B 样条</translation>
+    </message>
+    <message>
+        <source>Loop (three-direction quartic box spline)</source>
+        <translation>Loop（三向四次箱样条）</translation>
+    </message>
+    <message>
+        <source>Kobbelt √3 (two rounds)</source>
+        <translation>Kobbelt √3（两轮）</translation>
+    </message>
+    <message>
+        <source>positive (edge rotated 90° counter-clockwise)</source>
+        <translation>正向（边逆时针旋转 90°）</translation>
+    </message>
+    <message>
+        <source>negative (edge rotated 90° clockwise)</source>
+        <translation>负向（边顺时针旋转 90°）</translation>
+    </message>
+    <message>
+        <source>constant</source>
+        <comment>β sign</comment>
+        <translation>常数</translation>
+    </message>
+    <message>
+        <source>Positive normal: the edge vector P_i P_{i+1} rotated 90° counter-clockwise; negative: rotated clockwise. d_i = |P_i P_{i+1}| n_i. In the β signs (-1)^i, (-1)^(k+i), (-1)^(k+1), k is the level of the polygon being subdivided (the first step has k = 0) and i the 0-based index of the edge.</source>
+        <translation>正法向：边向量 P_i P_{i+1} 逆时针旋转 90°；负法向：顺时针旋转。d_i = |P_i P_{i+1}| n_i。在 β 符号 (-1)^i、(-1)^(k+i)、(-1)^(k+1) 中，k 是正在细分的多边形的层级（第一步 k = 0），i 是边的索引（从 0 开始）。</translation>
+    </message>
+    <message>
+        <source>p = %1: the normal-vector scheme needs p &gt;= 2 rules, one (α_j, β_j) pair each</source>
+        <translation>p = %1：法向量格式需要 p &gt;= 2 条规则，每条规则一对 (α_j, β_j)</translation>
+    </message>
+    <message>
+        <source>β has %1 values but α has %2: eq. (1) needs one (α_j, β_j) pair per rule j = 0..p-1</source>
+        <translation>β 有 %1 个值而 α 有 %2 个：eq. (1) 要求每条规则 j = 0..p-1 有一对 (α_j, β_j)</translation>
+    </message>
+    <message>
+        <source>α_%1 is not a finite number</source>
+        <translation>α_%1 不是有限数</translation>
+    </message>
+    <message>
+        <source>β_%1 is not a finite number</source>
+        <translation>β_%1 不是有限数</translation>
+    </message>
+    <message>
+        <source>%1 β signs given for p = %2 rules: give none, one for all rules, or one per rule</source>
+        <translation>为 p = %2 条规则给出了 %1 个 β 符号：请不给出、为所有规则给出一个，或每条规则给出一个</translation>
+    </message>
+    <message>
+        <source>p = %1, α = %2, β = %3, β signs (%4), normals %5</source>
+        <translation>p = %1，α = %2，β = %3，β 符号 (%4)，法向 %5</translation>
+    </message>
+    <message>
+        <source>the normal-vector scheme works in the plane: control points need 2 coordinates, got %1</source>
+        <translation>法向量格式在平面上工作：控制点需要 2 个坐标，实际为 %1 个</translation>
+    </message>
+    <message>
+        <source>control polygon</source>
+        <translation>控制多边形</translation>
+    </message>
+    <message>
+        <source>a closed control polygon needs at least %1 points, got %2</source>
+        <translation>闭合控制多边形至少需要 %1 个点，实际为 %2 个</translation>
+    </message>
+    <message>
+        <source>an open control polygon needs at least %1 points, got %2</source>
+        <translation>开控制多边形至少需要 %1 个点，实际为 %2 个</translation>
+    </message>
+    <message>
+        <source>open control polygons need α_0 = β_0 = 0: rule 0 at the last point (i = p^k n in eq. (1)) would use a point after the end; close the polygon instead</source>
+        <translation>开控制多边形要求 α_0 = β_0 = 0：最后一个点处的规则 0（eq. (1) 中 i = p^k n）会用到末端之后的点；请改为闭合多边形</translation>
+    </message>
+    <message>
+        <source>the number of subdivision steps cannot be negative, got %1</source>
+        <translation>细分步数不能为负数，实际为 %1</translation>
+    </message>
+    <message>
+        <source>the subdivision level cannot be negative, got %1</source>
+        <translation>细分层级不能为负数，实际为 %1</translation>
+    </message>
+    <message>
+        <source>%1 subdivision steps of a polygon with %2 edges would make %3 points (at most %4); use fewer steps</source>
+        <translation>对有 %2 条边的多边形进行 %1 步细分将产生 %3 个点（最多 %4 个）；请减少步数</translation>
+    </message>
+    <message>
+        <source>convergent: every edge shrinks by a factor of at most %1 per step, so ||F^{k+1} - F^k|| &lt;= %2 * %1^k * (longest initial edge) and F^k is a Cauchy sequence (the argument of 001 Theorem 1); non-rectifiable: the polygon length grows by a factor of at least %3 per step (001 Theorem 2)</source>
+        <translation>收敛：每一步每条边的长度至多变为原来的 %1 倍，因此 ||F^{k+1} - F^k|| &lt;= %2 * %1^k * (最长初始边)，F^k 是 Cauchy 序列（001 Theorem 1 的论证）；不可求长：每一步多边形长度至少变为原来的 %3 倍（001 Theorem 2）</translation>
+    </message>
+    <message>
+        <source>convergent: every edge shrinks by a factor of at most %1 per step, so ||F^{k+1} - F^k|| &lt;= %2 * %1^k * (longest initial edge) and F^k is a Cauchy sequence (the argument of 001 Theorem 1)</source>
+        <translation>收敛：每一步每条边的长度至多变为原来的 %1 倍，因此 ||F^{k+1} - F^k|| &lt;= %2 * %1^k * (最长初始边)，F^k 是 Cauchy 序列（001 Theorem 1 的论证）</translation>
+    </message>
+    <message>
+        <source>not decided: the one-step edge bound is %1 &gt;= 1, so the argument of 001 Theorem 1 does not apply (see the measured edge lengths per level)</source>
+        <translation>未判定：单步边长界为 %1 &gt;= 1，因此 001 Theorem 1 的论证不适用（请查看各层实测的边长）</translation>
+    </message>
+    <message>
+        <source>α_0 and β_0 are not both 0: the new edge across each old vertex joins two old edges and is not the image of one edge, so no IFS of one similarity per new edge exists</source>
+        <translation>α_0 与 β_0 不全为 0：跨过每个旧顶点的新边连接两条旧边，不是某一条边的像，因此不存在每条新边对应一个相似变换的 IFS</translation>
+    </message>
+    <message>
+        <source>new edge %1 of the unit edge has length %2 &gt;= 1: no map would contract</source>
+        <translation>单位边的新边 %1 的长度为 %2 &gt;= 1：没有映射是压缩的</translation>
+    </message>
+    <message>
+        <source>no IFS of %1 similarities (each new edge taken forward or reversed, plain or mirrored: %2 patterns) reproduces the polygons of the first %3 steps; the β sign changes with the level, so the rules repeat only every two steps (an IFS would need p^2 maps)</source>
+        <translation>由 %1 个相似变换组成的 IFS（每条新边取正向或反向、原样或镜像：共 %2 种模式）都无法再现前 %3 步的多边形；β 的符号随层级变化，因此规则每两步才重复一次（IFS 需要 p^2 个映射）</translation>
+    </message>
+    <message>
+        <source>no IFS of %1 similarities (each new edge taken forward or reversed, plain or mirrored: %2 patterns) reproduces the polygons of the first %3 steps</source>
+        <translation>由 %1 个相似变换组成的 IFS（每条新边取正向或反向、原样或镜像：共 %2 种模式）都无法再现前 %3 步的多边形</translation>
+    </message>
+    <message>
+        <source>no equivalent IFS: %1</source>
+        <translation>没有等价的 IFS：%1</translation>
+    </message>
+    <message>
+        <source>edge %1 of the control polygon is subdivided with rules no similarity copy of the unit edge&apos;s limit reproduces</source>
+        <translation>控制多边形的第 %1 条边所用的细分规则，无法由单位边极限的任何相似副本再现</translation>
+    </message>
+    <message>
+        <source>Lévy C curve</source>
+        <translation>Lévy C 曲线</translation>
+    </message>
+    <message>
+        <source>binary interpolatory; new point at the apex of a right isosceles triangle</source>
+        <translation>二进制插值；新点位于等腰直角三角形的顶点</translation>
+    </message>
+    <message>
+        <source>Dragon curve</source>
+        <translation>龙曲线</translation>
+    </message>
+    <message>
+        <source>scheme (2) with β_1 = (-1)^i / 2: the bump alternates sides along the curve</source>
+        <translation>格式 (2)，β_1 = (-1)^i / 2：凸起沿曲线交替位于两侧</translation>
+    </message>
+    <message>
+        <source>Sierpiński gasket (arrowhead curve)</source>
+        <translation>Sierpiński 垫片（箭头曲线）</translation>
+    </message>
+    <message>
+        <source>non-stationary and non-uniform, as in the paper: β_1 = β_2 = (-1)^(k+i) √3/4 flips with the level k and the edge i; the polygons tend to the gasket</source>
+        <translation>与论文一致，为非稳态且非均匀格式：β_1 = β_2 = (-1)^(k+i) √3/4 随层级 k 和边 i 翻转；多边形趋于该垫片</translation>
+    </message>
+    <message>
+        <source>Koch curve</source>
+        <translation>Koch 曲线</translation>
+    </message>
+    <message>
+        <source>quaternary interpolatory; the limit is the classic Koch curve</source>
+        <translation>四进制插值；极限为经典的 Koch 曲线</translation>
+    </message>
+    <message>
+        <source>Koch snowflake</source>
+        <translation>Koch 雪花</translation>
+    </message>
+    <message>
+        <source>the triangle traversed counter-clockwise with negative normals, so every bump points outwards (NOTES.md)</source>
+        <translation>三角形按逆时针方向遍历并使用负法向，因此每个凸起都朝外（NOTES.md）</translation>
+    </message>
+    <message>
+        <source>Tigerhead-like curve</source>
+        <translation>类虎头曲线</translation>
+    </message>
+    <message>
+        <source>α = (0, -1/4, 1/2, 5/4), β = (0, 1/3, 1/2, 1/3): rules 1 and 3 lie outside the edge, so the curve overlaps itself</source>
+        <translation>α = (0, -1/4, 1/2, 5/4)，β = (0, 1/3, 1/2, 1/3)：规则 1 和 3 位于边之外，因此曲线自身重叠</translation>
+    </message>
+    <message>
+        <source>Human-like curve</source>
+        <translation>类人形曲线</translation>
+    </message>
+    <message>
+        <source>β = (-1)^(k+1) (0, 1/3, 1/2, 1/3): the bumps point down at the first step (k = 0) and flip at every level</source>
+        <translation>β = (-1)^(k+1) (0, 1/3, 1/2, 1/3)：第一步（k = 0）时凸起朝下，之后每一层翻转一次</translation>
+    </message>
+    <message>
+        <source>Approximating curve</source>
+        <translation>逼近型曲线</translation>
+    </message>
+    <message>
+        <source>α_0 = -1/2 moves the old points, so the polygon must be closed; the text does not give the quadrilateral of Fig. 3(c): a unit square traversed counter-clockwise is assumed</source>
+        <translation>α_0 = -1/2 会移动旧点，因此多边形必须闭合；原文未给出 Fig. 3(c) 中的四边形：此处假定为按逆时针方向遍历的单位正方形</translation>
+    </message>
+    <message>
+        <source>Crown-like curve</source>
+        <translation>类王冠曲线</translation>
+    </message>
+    <message>
+        <source>6-ary interpolatory</source>
+        <translation>六进制插值</translation>
+    </message>
+    <message>
+        <source>7-ary square-wave curve</source>
+        <translation>七进制方波曲线</translation>
+    </message>
+    <message>
+        <source>the paper calls it the Minkowski curve; it equals the Minkowski sausage only at level 1 (its middle edge has length 1/2 and is replaced by a half-size copy), so it is a different curve of similarity dimension log_2 3, not 1.5</source>
+        <translation>论文称之为 Minkowski 曲线；它仅在第 1 层与 Minkowski 香肠相同（其中间边长为 1/2，并被替换为一半大小的副本），因此它是另一条曲线，相似维数为 log_2 3，而不是 1.5</translation>
+    </message>
+    <message>
+        <source>unknown normal-vector preset %1</source>
+        <translation>未知的法向量预设 %1</translation>
+    </message>
+    <message>
+        <source>%1 needs exactly %2 control points, got %3</source>
+        <translation>%1 恰好需要 %2 个控制点，实际为 %3 个</translation>
+    </message>
+    <message>
+        <source>%1 needs at least %2 control points, got %3</source>
+        <translation>%1 至少需要 %2 个控制点，实际为 %3 个</translation>
+    </message>
+    <message>
+        <source>%1: the arity of a scheme must be at least 2, got %2</source>
+        <translation>%1：细分格式的进制数必须至少为 2，实际为 %2</translation>
+    </message>
+    <message>
+        <source>%1: a scheme of arity %2 needs %2 rules, got %3</source>
+        <translation>%1：%2 进制细分格式需要 %2 条规则，实际为 %3 条</translation>
+    </message>
+    <message>
+        <source>%1: rule %2 has no weights</source>
+        <translation>%1：规则 %2 没有权值</translation>
+    </message>
+    <message>
+        <source>%1: weight %2 of rule %3 is not a finite number</source>
+        <translation>%1：规则 %3 的权值 %2 不是有限数</translation>
+    </message>
+    <message>
+        <source>%1: the weights of rule %2 sum to %3, not 1 (an affine rule must reproduce constants)</source>
+        <translation>%1：规则 %2 的权值之和为 %3，而不是 1（仿射规则必须再生常数）</translation>
+    </message>
+    <message>
+        <source>B-spline degree must be between 1 and 15, got %1</source>
+        <translation>B 样条的次数必须介于 1 和 15 之间，实际为 %1</translation>
+    </message>
+    <message>
+        <source>uniform B-spline of degree %1</source>
+        <translation>%1 次均匀 B 样条</translation>
+    </message>
+    <message>
+        <source>corner cutting needs 0 &lt; a &lt; b &lt; 1, got a = %1, b = %2</source>
+        <translation>割角要求 0 &lt; a &lt; b &lt; 1，实际为 a = %1，b = %2</translation>
+    </message>
+    <message>
+        <source>corner cutting (%1, %2)</source>
+        <translation>割角 (%1, %2)</translation>
+    </message>
+    <message>
+        <source>four-point tension omega is not a finite number</source>
+        <translation>四点格式的张力参数 omega 不是有限数</translation>
+    </message>
+    <message>
+        <source>four-point (omega = %1)</source>
+        <translation>四点格式（omega = %1）</translation>
+    </message>
+    <message>
+        <source>Bézier degree must be between 1 and 30, got %1</source>
+        <translation>Bézier 曲线的次数必须介于 1 和 30 之间，实际为 %1</translation>
+    </message>
+    <message>
+        <source>the de Casteljau split parameter t must lie strictly between 0 and 1, got %1</source>
+        <translation>de Casteljau 分割参数 t 必须严格介于 0 和 1 之间，实际为 %1</translation>
+    </message>
+    <message>
+        <source>Bézier of degree %1 (de Casteljau at t = %2)</source>
+        <translation>%1 次 Bézier 曲线（在 t = %2 处做 de Casteljau 分割）</translation>
+    </message>
+    <message>
+        <source>end-interpolating B-spline of degree %1</source>
+        <translation>%1 次端点插值 B 样条</translation>
+    </message>
+    <message>
+        <source>%1: an IFS needs at least two matrices, got %2</source>
+        <translation>%1：IFS 至少需要两个矩阵，实际为 %2 个</translation>
+    </message>
+    <message>
+        <source>%1: matrix S_1 is empty</source>
+        <translation>%1：矩阵 S_1 为空</translation>
+    </message>
+    <message>
+        <source>%1: matrix S_%2 is %3 x %4, expected %5 x %5 like S_1</source>
+        <translation>%1：矩阵 S_%2 为 %3 × %4，应与 S_1 一样为 %5 × %5</translation>
+    </message>
+    <message>
+        <source>%1: matrix S_%2</source>
+        <translation>%1：矩阵 S_%2</translation>
+    </message>
+    <message>
+        <source>%1: matrix S_%2, row %3 sums to %4, not 1 (subdivision rows are affine combinations)</source>
+        <translation>%1：矩阵 S_%2 的第 %3 行之和为 %4，而不是 1（细分矩阵的行是仿射组合）</translation>
+    </message>
+    <message>
+        <source>the number of subdivision steps cannot be negative</source>
+        <translation>细分步数不能为负数</translation>
+    </message>
+    <message>
+        <source>classic subdivision with %1 steps would make %2 points; use fewer steps</source>
+        <translation>%1 步经典细分将产生 %2 个点；请减少步数</translation>
+    </message>
+    <message>
+        <source>user matrices</source>
+        <translation>用户矩阵</translation>
+    </message>
+    <message>
+        <source>the square lattice of %1 has no layout &apos;%2&apos; (it has: %3)</source>
+        <translation>%1 的正方形格点没有布局“%2”（现有布局：%3）</translation>
+    </message>
+    <message>
+        <source>the triangular lattice of %1 has no layout &apos;%2&apos; (it has: %3)</source>
+        <translation>%1 的三角形格点没有布局“%2”（现有布局：%3）</translation>
+    </message>
+    <message>
+        <source>%1: the mask is not symmetric under the turn of map %2 of the %3 layout</source>
+        <translation>%1：在 %3 布局的映射 %2 的旋转下，掩模不对称</translation>
+    </message>
+    <message>
+        <source>%1: the pieces of the %2 layout are not determined by a finite net</source>
+        <translation>%1：%2 布局的各片段不能由有限控制网格确定</translation>
+    </message>
+    <message>
+        <source>the patch needs %1 control points on its net, got %2</source>
+        <translation>该曲面片的控制网格需要 %1 个控制点，实际为 %2 个</translation>
+    </message>
+    <message>
+        <source>lattice point %1 is given twice (points %2 and %3)</source>
+        <translation>格点 %1 重复给出（点 %2 和 %3）</translation>
+    </message>
+    <message>
+        <source>lattice point %1 (point %2) is not on the square net of the patch; missing: %3</source>
+        <translation>格点 %1（点 %2）不在曲面片的正方形网格上；缺少：%3</translation>
+    </message>
+    <message>
+        <source>lattice point %1 (point %2) is not on the triangular net of the patch; missing: %3</source>
+        <translation>格点 %1（点 %2）不在曲面片的三角形网格上；缺少：%3</translation>
+    </message>
+    <message>
+        <source>the net has %1 lattice points but %2 control points</source>
+        <translation>控制网格有 %1 个格点，但有 %2 个控制点</translation>
+    </message>
+    <message>
+        <source>refinement rounds must be from 0 to 12, got %1</source>
+        <translation>细化轮数必须在 0 到 12 之间，实际为 %1</translation>
+    </message>
+    <message>
+        <source>the mesh was refined by another scheme</source>
+        <translation>该网格由另一种细分格式细化</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Subdivision curves as attractors of IFS.</source>
+        <translation>作为 IFS 吸引子的细分曲线。</translation>
+    </message>
+    <message>
+        <source>Project file to open.</source>
+        <translation>要打开的项目文件。</translation>
+    </message>
+    <message>
+        <source>Select the item with this name after opening.</source>
+        <translation>打开后选择具有此名称的对象。</translation>
+    </message>
+    <message>
+        <source>Print the current item&apos;s figure sheet to this PDF file, then quit.</source>
+        <translation>将当前对象的图形页打印到此 PDF 文件，然后退出。</translation>
+    </message>
+    <message>
+        <source>Save a picture of the main window to this PNG file once the attractor is drawn, then quit.</source>
+        <translation>绘制完吸引子后，将主窗口的图片保存到此 PNG 文件，然后退出。</translation>
+    </message>
+    <message>
+        <source>Window size for --screenshot, WIDTHxHEIGHT.</source>
+        <translation>--screenshot 的窗口尺寸，格式为 WIDTHxHEIGHT。</translation>
+    </message>
+    <message>
+        <source>Export a figure of the current item to this file (.png, .svg, .pdf; .tex for the matrices), then quit.</source>
+        <translation>将当前对象的图形导出到此文件（.png、.svg、.pdf；矩阵使用 .tex），然后退出。</translation>
+    </message>
+    <message>
+        <source>Resolution of --export-figure in dpi (36..2400).</source>
+        <translation>--export-figure 的分辨率，单位为 dpi（36..2400）。</translation>
+    </message>
+    <message>
+        <source>What --export-figure shows: attractor, spectrum, matrices, analysis or sheet.</source>
+        <translation>--export-figure 显示的内容：attractor、spectrum、matrices、analysis 或 sheet。</translation>
+    </message>
+    <message>
+        <source>Size of --export-figure in pixels at its resolution, WIDTHxHEIGHT (16..20000).</source>
+        <translation>--export-figure 在其分辨率下的像素尺寸，格式为 WIDTHxHEIGHT（16..20000）。</translation>
+    </message>
+    <message>
+        <source>--export-figure without the grid.</source>
+        <translation>--export-figure 不绘制网格线。</translation>
+    </message>
+    <message>
+        <source>--export-figure without control polygons and start set.</source>
+        <translation>--export-figure 不绘制控制多边形和初始集。</translation>
+    </message>
+    <message>
+        <source>--export-figure framed tightly around the content (the height follows its proportions).</source>
+        <translation>--export-figure 紧贴内容裁剪边框（高度按内容比例确定）。</translation>
+    </message>
+    <message>
+        <source>Font of --export-figure&apos;s labels: FAMILY or FAMILY,POINTS.</source>
+        <translation>--export-figure 标签所用的字体：FAMILY 或 FAMILY,POINTS。</translation>
+    </message>
+</context>
+</TS>
