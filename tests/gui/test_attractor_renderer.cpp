@@ -140,7 +140,7 @@ void TestAttractorRenderer::newerRequestCancelsTheRunningOne()
     // 2^27 images take many seconds: far longer than the whole test may wait below.
     RenderRequest slow = cubicRequest(27);
     renderer.request(slow);
-    QVERIFY(ready.wait(20000)); // the coarse preview: the full pass is now running
+    QVERIFY(ready.wait(awb::test::ms(20000))); // the coarse preview: the full pass is now running
     QCOMPARE(ready.size(), 1);
     QVERIFY(!ready.first().at(1).value<RenderInfo>().final);
     QVERIFY(renderer.isBusy());
@@ -173,7 +173,7 @@ void TestAttractorRenderer::cancelStopsTheRunningRender()
     QSignalSpy busy(&renderer, &AttractorRenderer::busyChanged);
     QSignalSpy failed(&renderer, &AttractorRenderer::failed);
     renderer.request(cubicRequest(27)); // many seconds: only the cancel ends it in time
-    QVERIFY(ready.wait(20000));         // the coarse preview: the full pass is now running
+    QVERIFY(ready.wait(awb::test::ms(20000)));         // the coarse preview: the full pass is now running
     QVERIFY(renderer.isBusy());
     ready.clear();
     progress.clear();
@@ -339,7 +339,7 @@ void TestAttractorRenderer::nonContractiveIfsFails()
     QSignalSpy ready(&renderer, &AttractorRenderer::imageReady);
     QSignalSpy failed(&renderer, &AttractorRenderer::failed);
     renderer.request(r);
-    QVERIFY(failed.wait(10000));
+    QVERIFY(failed.wait(awb::test::ms(10000)));
     QCOMPARE(failed.size(), 1);
     const QString message = failed.first().at(0).toString();
     QVERIFY2(message.contains(QLatin1String("map 2 is not contractive")), qPrintable(message));
@@ -355,7 +355,7 @@ void TestAttractorRenderer::badStartSetFails()
     AttractorRenderer renderer;
     QSignalSpy failed(&renderer, &AttractorRenderer::failed);
     renderer.request(r);
-    QVERIFY(failed.wait(10000));
+    QVERIFY(failed.wait(awb::test::ms(10000)));
     QVERIFY2(failed.first().at(0).toString().contains(QLatin1String("coordinates")),
              qPrintable(failed.first().at(0).toString()));
 }

@@ -244,7 +244,7 @@ void TestAttractorView::rendersTheAttractor()
     rs.depth = 12;
     f.view.setRenderSettings(rs);
     QVERIFY(QTest::qWaitForWindowExposed(&f.view));
-    QVERIFY(finished.wait(30000));
+    QVERIFY(finished.wait(awb::test::ms(30000)));
     const QImage img = f.view.currentImage();
     QCOMPARE(img.size(), f.view.size() * f.view.devicePixelRatio());
     QVERIFY(f.view.currentImageInfo().final);
@@ -258,7 +258,7 @@ void TestAttractorView::rendersTheAttractor()
     finished.clear();
     f.view.setControlPoints(fig2());
     f.view.setRenderSettings(rs);
-    QVERIFY(finished.wait(30000));
+    QVERIFY(finished.wait(awb::test::ms(30000)));
     QTest::qWait(100);
     QCOMPARE(finished.size(), 1);
 
@@ -267,7 +267,7 @@ void TestAttractorView::rendersTheAttractor()
     bad->maps[0].A *= 4.0;
     QSignalSpy failed(&f.view, &AttractorView::renderFailed);
     f.view.setIfs(bad, StartSet::points(f.s.toIfsSpace(fig2().topRows(1))));
-    QVERIFY(failed.wait(30000));
+    QVERIFY(failed.wait(awb::test::ms(30000)));
     QVERIFY(f.view.currentImage().isNull());
     QVERIFY(f.view.lastError().contains(QLatin1String("not contractive")));
 }
@@ -330,7 +330,7 @@ void TestAttractorView::cancelAndRenderAgain()
     AttractorView::RenderSettings light;
     light.depth = 10;
     f.view.setRenderSettings(light);
-    QVERIFY(finished.wait(30000));
+    QVERIFY(finished.wait(awb::test::ms(30000)));
     QCOMPARE(finished.size(), 1);
     QVERIFY(f.view.currentImageInfo().final);
     QCOMPARE(f.view.currentImageInfo().depth, 10);
@@ -341,7 +341,7 @@ void TestAttractorView::cancelAndRenderAgain()
     const qint64 lightKey = f.view.currentImage().cacheKey();
     QTest::keyClick(&f.view, Qt::Key_F5);
     QVERIFY(f.view.isRendering());
-    QVERIFY(finished.wait(30000));
+    QVERIFY(finished.wait(awb::test::ms(30000)));
     QCOMPARE(finished.size(), 2);
     QVERIFY(f.view.currentImage().cacheKey() != lightKey);
     QCOMPARE(f.view.currentImageInfo().depth, 10);

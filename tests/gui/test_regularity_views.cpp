@@ -40,7 +40,7 @@ void TestRegularityViews::panelShowsCubicBSpline()
     QSignalSpy done(&panel, &RegularityPanel::finished);
     panel.analyse(std::make_shared<UniformScheme>(bsplineScheme(3)), 7, QStringLiteral("cubic"));
     QVERIFY(panel.isRunning() || done.count() == 1);
-    QVERIFY(done.count() == 1 || done.wait(20000));
+    QVERIFY(done.count() == 1 || done.wait(awb::test::ms(20000)));
     QVERIFY2(panel.summary().contains("C²"), qPrintable(panel.summary()));
     QVERIFY(panel.summary().contains("[3, 3]"));
     QVERIFY(panel.method().contains("joint spectral radius"));
@@ -62,7 +62,7 @@ void TestRegularityViews::panelCancel()
     QVERIFY(panel.isRunning());
     QTest::qWait(200);
     panel.cancel();
-    QVERIFY(done.count() == 1 || done.wait(20000));
+    QVERIFY(done.count() == 1 || done.wait(awb::test::ms(20000)));
     QVERIFY(t.elapsed() < awb::test::ms(20000));
     QVERIFY2(panel.summary().contains("C¹"), qPrintable(panel.summary()));
     QVERIFY(panel.summary().contains("cancelled"));
@@ -76,7 +76,7 @@ void TestRegularityViews::mainWindowHasPanelAndChartAction()
     QVERIFY(panel);
     // The new project's curve is a subdivision curve: its regularity is being computed or done.
     QSignalSpy done(panel, &RegularityPanel::finished);
-    QVERIFY(!panel->isRunning() || done.wait(20000));
+    QVERIFY(!panel->isRunning() || done.wait(awb::test::ms(20000)));
     QVERIFY2(panel->summary().startsWith("Regularity: C"), qPrintable(panel->summary()));
     auto *action = w.findChild<QAction *>(QStringLiteral("actionRegularityChart"));
     QVERIFY(action);
@@ -87,7 +87,7 @@ void TestRegularityViews::chartSweepsOmega()
     RegularityChart chart;
     QSignalSpy done(&chart, &RegularityChart::finished);
     chart.compute(-0.0625, 0.1875, 21, 0.05);   // steps of 1/80: 0 and 1/16 are samples
-    QVERIFY(done.wait(60000));
+    QVERIFY(done.wait(awb::test::ms(60000)));
     QCOMPARE(int(chart.samples().size()), 21);
     auto series = chart.chart()->series();
     QCOMPARE(series.size(), 3);   // lower, upper, known values
@@ -105,7 +105,7 @@ void TestRegularityViews::chartSweepsOmega()
     chart.compute(-0.0625, 0.1875, 400, 0.5);
     QVERIFY(chart.isRunning());
     chart.cancel();
-    QVERIFY(done.wait(20000));
+    QVERIFY(done.wait(awb::test::ms(20000)));
     QVERIFY(chart.samples().size() < 400);
 }
 

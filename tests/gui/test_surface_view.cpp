@@ -499,7 +499,7 @@ void TestSurfaceView::glPathUnderXvfb()
         view.setPointBudget(budget, 150'000);
         feed(view, *item);
         view.resetCamera();
-        QVERIFY(ready.wait(60000));
+        QVERIFY(ready.wait(awb::test::ms(60000)));
         QTest::qWait(300);
         // Frame times: rotating (decimated to the moving budget) and at rest (all points).
         QList<double> moving, still;
@@ -533,7 +533,7 @@ void TestSurfaceView::glPathUnderXvfb()
     view.setPointBudget(300'000);
     feed(view, *item);
     QSignalSpy ready(&view, &SurfaceView::frameReady);
-    QVERIFY(ready.wait(60000));
+    QVERIFY(ready.wait(awb::test::ms(60000)));
     QTest::qWait(400);
     view.setLayerVisible(SurfaceView::Layer::ControlNet, false);
     view.setLayerVisible(SurfaceView::Layer::Axes, false);

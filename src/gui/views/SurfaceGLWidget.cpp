@@ -70,7 +70,15 @@ SurfaceGLWidget::SurfaceGLWidget(SurfaceView *view) : QOpenGLWidget(view), m_vie
     setFocusPolicy(Qt::NoFocus);
 }
 
-SurfaceGLWidget::~SurfaceGLWidget() { cleanup(); }
+SurfaceGLWidget::~SurfaceGLWidget()
+{
+    cleanup();
+    // ~QOpenGLWidget destroys the context after this object stops being a SurfaceGLWidget:
+    // its aboutToBeDestroyed must not call cleanup() then (UBSan: a downcast to a destroyed
+    // type).
+    if (QOpenGLContext *c = context())
+        disconnect(c, &QOpenGLContext::aboutToBeDestroyed, this, &SurfaceGLWidget::cleanup);
+}
 
 void SurfaceGLWidget::cloudChanged()
 {
