@@ -2,6 +2,8 @@
 // Running attractor-cli from the CLI tests: the executable (AWB_BIN_DIR), the bundled examples
 // (AWB_SOURCE_DIR) and a run with captured output and exit code (-1 on a crash or time-out).
 
+#include "TestTime.h"
+
 #include <QCoreApplication>
 #include <QProcess>
 #include <QString>
@@ -26,7 +28,7 @@ inline int runProgram(const QString &program, const QStringList &args, QByteArra
 {
     QProcess p;
     p.start(program, args);
-    if (!p.waitForFinished(300000))
+    if (!p.waitForFinished(awb::test::ms(300000)))
         return -1;
     if (out)
         *out = p.readAllStandardOutput();

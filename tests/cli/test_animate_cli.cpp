@@ -1,6 +1,7 @@
 // attractor-cli animate (issue 16 part 2): frame k of an animation is the render of the item
 // with its parameters at time k / fps; PNG frames, movies through ffmpeg, clear refusals.
 #include "CliRunner.h"
+#include "TestTime.h"
 
 #include <QDir>
 #include <QFile>
@@ -130,7 +131,7 @@ private slots:
         env.insert("AWB_FFMPEG", "/nonexistent/ffmpeg");
         p.setProcessEnvironment(env);
         p.start(cliPath(), {"animate", examplePath(animated), "--out", dir.filePath("a.gif")});
-        QVERIFY(p.waitForFinished(60000));
+        QVERIFY(p.waitForFinished(awb::test::ms(60000)));
         QCOMPARE(p.exitCode(), 1);
         QVERIFY2(p.readAllStandardError().contains("needs ffmpeg"), "no ffmpeg message");
         QVERIFY(!QFile::exists(dir.filePath("a.gif")));

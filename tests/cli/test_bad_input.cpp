@@ -20,6 +20,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "TestTime.h"
+
 #include <functional>
 #include <map>
 
@@ -406,7 +408,7 @@ private slots:
         p.setWorkingDirectory(tmp.path());
         p.setProcessEnvironment(env);
         p.start(words.takeFirst(), words);
-        QVERIFY2(p.waitForFinished(120000), qPrintable(command + ": no answer within 120 s"));
+        QVERIFY2(p.waitForFinished(awb::test::ms(120000)), qPrintable(command + ": no answer within 120 s"));
         QCOMPARE(p.exitStatus(), QProcess::NormalExit);
         const QString err = QString::fromUtf8(p.readAllStandardError()).trimmed();
         const QString out = QString::fromUtf8(p.readAllStandardOutput()).trimmed();

@@ -6,6 +6,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "TestTime.h"
+
 class TestCli : public QObject {
     Q_OBJECT
 private slots:
@@ -24,7 +26,7 @@ private:
     {
         QProcess p;
         p.start(cli(), args);
-        if (!p.waitForFinished(120000))
+        if (!p.waitForFinished(awb::test::ms(120000)))
             return -1;
         if (out)
             *out = QString::fromUtf8(p.readAllStandardOutput());

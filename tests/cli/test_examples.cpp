@@ -10,6 +10,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "TestTime.h"
+
 class TestExamples : public QObject {
     Q_OBJECT
 private slots:
@@ -33,7 +35,7 @@ private:
     {
         QProcess p;
         p.start(cli(), args);
-        if (!p.waitForFinished(300000))
+        if (!p.waitForFinished(awb::test::ms(300000)))
             return -1;
         if (out)
             *out = p.readAllStandardOutput();

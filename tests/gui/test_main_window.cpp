@@ -369,9 +369,10 @@ void TestMainWindow::longRenderShowsProgressAndStops()
     auto *stop = w.findChild<QToolButton *>(QStringLiteral("renderCancel"));
     QVERIFY(progress && stop);
     QVERIFY(!progress->isVisible() && !stop->isVisible()); // quick renders show nothing
-    // 2^26 images from a point: seconds of work, so the progress and the button appear.
+    // 2^30 images from a point: seconds of work even for the fused depth-first kernel, so the
+    // progress and the button appear.
     AlgorithmSpec a = item->algorithm();
-    a.depth = 26;
+    a.depth = 30;
     QVERIFY(item->setAlgorithm(a));
     QTRY_VERIFY_WITH_TIMEOUT(stop->isVisible() && progress->isVisible(), awb::test::ms(10000));
     QVERIFY(w.attractorView()->isRendering());
@@ -634,12 +635,12 @@ void TestMainWindow::cancelledPrintWritesNothing()
     w.setCurrentItem(item);
     QVERIFY(waitForFinalImage(w.attractorView()));
     // Zoomed far in, the screen's raster does not cover the page's fitted framing: the sheet
-    // draws its own, 2^26 images deep, which takes seconds and shows a progress dialog.
+    // draws its own, 2^30 images deep, which takes seconds and shows a progress dialog.
     AlgorithmSpec a = item->algorithm();
-    a.depth = 26;
+    a.depth = 30;
     QVERIFY(item->setAlgorithm(a));
     w.controller()->refreshNow();
-    QCOMPARE(w.attractorView()->renderSettings().depth, 26);
+    QCOMPARE(w.attractorView()->renderSettings().depth, 30);
     w.attractorView()->setView(QPointF(3, 2), w.attractorView()->pixelsPerUnit() * 20);
     w.attractorView()->cancelRender();
     bool sawDialog = false;
