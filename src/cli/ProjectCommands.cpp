@@ -1009,9 +1009,12 @@ int check(const QStringList &args)
         parseOrFail(parser, args, 1);
         Project project;
         load(project, parser.positionalArguments().first());
+        // A figure PNG opens as an untitled project: name the file that was given.
+        const QString name = project.fileName().isEmpty() ? parser.positionalArguments().first()
+                                                          : project.fileName();
         const QStringList problems = project.problems();
         for (const QString &p : problems)
-            err() << project.fileName() << ": " << p << "\n";
+            err() << name << ": " << p << "\n";
         if (!problems.isEmpty())
             return 3;
         // What the items say about themselves: a singular lifting drawn in barycentric form,
@@ -1022,17 +1025,17 @@ int check(const QStringList &args)
             if (!d)
                 continue;
             if (!d->note.isEmpty())
-                err() << Tr::tr("%1: %2: note: %3").arg(project.fileName(), a->name(), d->note)
+                err() << Tr::tr("%1: %2: note: %3").arg(name, a->name(), d->note)
                       << "\n";
             if (!d->iterate && d->ifs.size() > 0)
                 if (const IfsCheck c = checkIfs(d->ifs); !c.contractive)
                     err() << Tr::tr("%1: %2: note: %3")
-                                 .arg(project.fileName(), a->name(),
+                                 .arg(name, a->name(),
                                       QString::fromStdString(c.message))
                           << "\n";
         }
         const auto n = project.items().size();
-        out() << project.fileName() << ": OK, " << n << (n == 1 ? " item\n" : " items\n");
+        out() << name << ": OK, " << n << (n == 1 ? " item\n" : " items\n");
         return 0;
     });
 }
