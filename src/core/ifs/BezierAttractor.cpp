@@ -341,30 +341,25 @@ JointContraction jointContraction(const Ifs &ifs, int maxLength, double maxWords
         const double f = P.squaredNorm(), det = P.determinant();
         return std::sqrt(std::max(0.0, 0.5 * (f + std::sqrt(std::max(0.0, f * f - 4 * det * det)))));
     };
-    for (int L = 1; L <= maxLength && std::pow(double(N), L) <= maxWords; ++L) {
+    const auto sigmaMax = [](const Mat &P) { return Eigen::JacobiSVD<Mat>(P).singularValues()(0); };
+    // The largest sigma over all words of length L, depth-first (one walker for both kinds).
+    const auto worstOver = [](const auto &maps, const auto &identity, const auto &sigma, int L) {
         double worst = 0.0;
-        // Depth-first over all words of length L.
-        std::function<void(int, const Mat &)> walk = [&](int level, const Mat &prod) {
+        const auto walk = [&](const auto &self, int level, const auto &prod) -> void {
             if (level == L) {
-                worst = std::max(worst, Eigen::JacobiSVD<Mat>(prod).singularValues()(0));
+                worst = std::max(worst, sigma(prod));
                 return;
             }
-            for (int i = 0; i < N; ++i)
-                walk(level + 1, prod * A[i]);
+            for (const auto &m : maps)
+                self(self, level + 1, (prod * m).eval());
         };
-        std::function<void(int, const Eigen::Matrix2d &)> walk2 =
-            [&](int level, const Eigen::Matrix2d &prod) {
-                if (level == L) {
-                    worst = std::max(worst, sigmaMax2(prod));
-                    return;
-                }
-                for (int i = 0; i < N; ++i)
-                    walk2(level + 1, prod * A2[size_t(i)]);
-            };
-        if (plane)
-            walk2(0, Eigen::Matrix2d::Identity());
-        else
-            walk(0, Mat::Identity(A[0].rows(), A[0].cols()));
+        walk(walk, 0, identity);
+        return worst;
+    };
+    for (int L = 1; L <= maxLength && std::pow(double(N), L) <= maxWords; ++L) {
+        const double worst =
+            plane ? worstOver(A2, Eigen::Matrix2d::Identity().eval(), sigmaMax2, L)
+                  : worstOver(A, Mat::Identity(A[0].rows(), A[0].cols()).eval(), sigmaMax, L);
         const double f = std::pow(worst, 1.0 / L);
         if (f < best.factor) {
             best.factor = f;
