@@ -218,6 +218,21 @@ void toneMapInto(const DensityImage &image, const RasterFrame &frame, const Tone
         return ramp[std::size_t(std::clamp(std::lround(c[1] / c[0]), 0L, 255L))];
     };
 
+    if (hitsImage && ss == 1 && !image.hasSpills()) {
+        // One cell per pixel, hit or not (the view's live drags): each label's opaque pixel
+        // packed once, then one bucket read per pixel.
+        std::vector<std::uint32_t> packed(std::max<std::size_t>(1, labels.size()),
+                                          packPremultiplied(1.0, 0.0, 0.0, 0.0));
+        for (std::size_t l = 0; l < labels.size(); ++l)
+            packed[l] = packPremultiplied(1.0, labels[l].r / 255.0, labels[l].g / 255.0,
+                                          labels[l].b / 255.0);
+        const std::size_t last = packed.size() - 1;
+        const DensityBucket *b = image.buckets();
+        for (std::size_t i = 0, n = std::size_t(W) * H; i < n; ++i)
+            if (b[i].n != 0)
+                out[i] = packed[std::min(std::size_t(b[i].v) - 1, last)];
+        return;
+    }
     if (tone.mode == Accumulation::Hits || hitsImage) {
         for (int y = 0; y < H; ++y)
             for (int x = 0; x < W; ++x) {

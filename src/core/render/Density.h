@@ -99,6 +99,9 @@ public:
     std::uint64_t litCells() const;
     void merge(const DensityImage &other);
     void clear();
+    // The buckets, row by row; exact totals only while no bucket has spilled.
+    const DensityBucket *buckets() const { return m_buckets.data(); }
+    bool hasSpills() const { return !m_spilled.empty(); }
 
     std::uint64_t offscreen = 0;   // hits outside the frame
     std::uint64_t nonFinite = 0;   // images with a NaN or infinite coordinate
@@ -112,9 +115,6 @@ private:
     static constexpr std::uint64_t kOneHit = std::uint64_t(1) << kCountShift;
     static_assert(sizeof(DensityBucket) == 8 && offsetof(DensityBucket, v) == 4);
 
-public:
-
-private:
     void spill(std::size_t i);
 
     int m_w = 0, m_h = 0;

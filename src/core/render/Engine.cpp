@@ -13,11 +13,28 @@
 #include <memory>
 #include <thread>
 
-#if defined(__SSE2__)
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#elif defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 
 namespace awb {
+
+namespace {
+bool haveAvx2();
+std::atomic<bool> g_baselineKernels{false};
+} // namespace
+
+const char *engineKernels()
+{
+    return haveAvx2() ? "avx2" : "baseline";
+}
+
+void forceBaselineKernels(bool on)
+{
+    g_baselineKernels = on;
+}
 
 std::uint32_t addressLabel(const std::uint8_t *address, int length, int prefix, int maps)
 {
@@ -41,6 +58,10 @@ struct Plotter {
     int w, h;
     const std::uint8_t *coords;  // colour coordinate of each label (density)
 
+    // Images whose every vertex lies in [0, xMax) x [0, yMax) need no clipping (imageInside).
+    double xMax() const { return double(w) - 1e-9; }
+    double yMax() const { return double(h) - 1e-9; }
+
     void cell(int x, int y, std::uint32_t label)
     {
         if (x < 0 || y < 0 || x >= w || y >= h) {
@@ -54,13 +75,31 @@ struct Plotter {
             img.addDensity(i, coords[label]);
     }
 
+    // The cells of the segment from (sx, sy) to (ex, ey), sampled at least once per cell side,
+    // to emit(x, y) (consecutive repeats dropped).
+    template <class Emit>
+    static void walk(double sx, double sy, double ex, double ey, Emit &&emit)
+    {
+        const int steps = int(std::ceil(std::max(std::abs(ex - sx), std::abs(ey - sy)))) + 1;
+        int lastX = INT_MIN, lastY = INT_MIN;
+        for (int s = 0; s <= steps; ++s) {
+            const double t = double(s) / steps;
+            const int x = int(std::floor(sx + t * (ex - sx)));
+            const int y = int(std::floor(sy + t * (ey - sy)));
+            if (x != lastX || y != lastY)
+                emit(x, y);
+            lastX = x;
+            lastY = y;
+        }
+    }
+
     void line(double ax, double ay, double bx, double by, std::uint32_t label)
     {
         // Clip to the raster (Liang-Barsky) so that a huge segment costs nothing off screen.
         double t0 = 0, t1 = 1;
         const double dx = bx - ax, dy = by - ay;
         const double p[4] = {-dx, dx, -dy, dy};
-        const double q[4] = {ax, w - 1e-9 - ax, ay, h - 1e-9 - ay};
+        const double q[4] = {ax, xMax() - ax, ay, yMax() - ay};
         for (int k = 0; k < 4; ++k) {
             if (p[k] == 0) {
                 if (q[k] < 0) {
@@ -79,22 +118,14 @@ struct Plotter {
             ++img.offscreen;
             return;
         }
-        const double sx = ax + t0 * dx, sy = ay + t0 * dy, ex = ax + t1 * dx, ey = ay + t1 * dy;
-        const int steps = int(std::ceil(std::max(std::abs(ex - sx), std::abs(ey - sy)))) + 1;
-        int lastX = INT_MIN, lastY = INT_MIN;
-        for (int s = 0; s <= steps; ++s) {
-            const double t = double(s) / steps;
-            const int x = int(std::floor(sx + t * (ex - sx)));
-            const int y = int(std::floor(sy + t * (ey - sy)));
-            if (x != lastX || y != lastY)
-                cell(x, y, label);
-            lastX = x;
-            lastY = y;
-        }
+        walk(ax + t0 * dx, ay + t0 * dy, ax + t1 * dx, ay + t1 * dy,
+             [&](int x, int y) { cell(x, y, label); });
     }
 
-    // Even-odd fill of the cells whose centres lie inside the polygon (xy pairs).
-    void fill(const double *s, int n, std::uint32_t label, std::vector<double> &xs)
+    // Even-odd fill: emit(x, y) for the cells of the raster whose centres lie inside the
+    // polygon (n xy pairs); xs holds at least n numbers (the crossings of one row).
+    template <class Emit>
+    void fill(const double *s, int n, double *xs, Emit &&emit) const
     {
         double ymin = 1e300, ymax = -1e300;
         for (int i = 0; i < n; ++i)
@@ -103,19 +134,22 @@ struct Plotter {
         ymax = std::min(double(h), ymax);
         for (int y = int(std::floor(ymin)); y < int(std::ceil(ymax)); ++y) {
             const double yc = y + 0.5;
-            xs.clear();
+            int k = 0;
             for (int i = 0; i < n; ++i) {
-                const int j = (i + 1) % n;
+                const int j = i + 1 < n ? i + 1 : 0;
                 const double y0 = s[2 * i + 1], y1 = s[2 * j + 1];
                 if ((y0 <= yc && y1 > yc) || (y1 <= yc && y0 > yc))
-                    xs.push_back(s[2 * i] + (yc - y0) / (y1 - y0) * (s[2 * j] - s[2 * i]));
+                    xs[k++] = s[2 * i] + (yc - y0) / (y1 - y0) * (s[2 * j] - s[2 * i]);
             }
-            std::sort(xs.begin(), xs.end());
-            for (std::size_t k = 0; k + 1 < xs.size(); k += 2) {
-                const int xa = std::max(0, int(std::ceil(xs[k] - 0.5)));
-                const int xb = std::min(w - 1, int(std::floor(xs[k + 1] - 0.5)));
+            // Few crossings (two for a convex image): insertion sort.
+            for (int a = 1; a < k; ++a)
+                for (int b = a; b > 0 && xs[b] < xs[b - 1]; --b)
+                    std::swap(xs[b], xs[b - 1]);
+            for (int c = 0; c + 1 < k; c += 2) {
+                const int xa = std::max(0, int(std::ceil(xs[c] - 0.5)));
+                const int xb = std::min(w - 1, int(std::floor(xs[c + 1] - 0.5)));
                 for (int x = xa; x <= xb; ++x)
-                    cell(x, y, label);
+                    emit(x, y);
             }
         }
     }
@@ -144,12 +178,67 @@ struct Plotter {
             cell(int(std::floor(x0)), int(std::floor(y0)), label);
             return;
         }
+        if (xs.size() < std::size_t(n))
+            xs.resize(std::size_t(n));
+        if (x0 >= 0 && y0 >= 0 && x1 < xMax() && y1 < yMax()) {
+            imageInside(s, n, kind, label, xs.data());
+            return;
+        }
+        auto emit = [&](int x, int y) { cell(x, y, label); };
         if (kind == StartSet::Kind::Polygon && n >= 3)
-            fill(s, n, label, xs);
+            fill(s, n, xs.data(), emit);
         const int segments = kind == StartSet::Kind::Polygon ? n : n - 1;
         for (int r = 0; r < segments; ++r) {
-            const int q = (r + 1) % n;
+            const int q = r + 1 < n ? r + 1 : 0;
             line(s[2 * r], s[2 * r + 1], s[2 * q], s[2 * q + 1], label);
+        }
+    }
+
+    // A polyline or polygon of n >= 2 vertices over several cells, every vertex inside
+    // [0, xMax) x [0, yMax): no clipping (it would leave t0 = 0 and t1 = 1, rounding included).
+    // An image within a 2 x 2 block of cells (deep levels) adds one hit to each cell it
+    // covers, however many of its samples fall there. xs: n numbers.
+    void imageInside(const double *s, int n, StartSet::Kind kind, std::uint32_t label,
+                     double *xs)
+    {
+        const int segments = kind == StartSet::Kind::Polygon ? n : n - 1;
+        double x0 = s[0], x1 = s[0], y0 = s[1], y1 = s[1];
+        for (int i = 1; i < n; ++i) {
+            x0 = std::min(x0, s[2 * i]), x1 = std::max(x1, s[2 * i]);
+            y0 = std::min(y0, s[2 * i + 1]), y1 = std::max(y1, s[2 * i + 1]);
+        }
+        // Coordinates are >= 0 here: truncation is the floor.
+        const int bx = int(x0), by = int(y0);
+        if (int(x1) - bx <= 1 && int(y1) - by <= 1) {
+            unsigned mask = 0;
+            auto mark = [&](int x, int y) {
+                const unsigned dx = unsigned(x - bx), dy = unsigned(y - by);
+                if ((dx | dy) <= 1u)
+                    mask |= 1u << (2 * dy + dx);
+                else
+                    cell(x, y, label);  // a sample rounded past the block's edge
+            };
+            if (kind == StartSet::Kind::Polygon && n >= 3)
+                fill(s, n, xs, mark);
+            for (int r = 0; r < segments; ++r) {
+                const int q = r + 1 < n ? r + 1 : 0;
+                const double dx = s[2 * q] - s[2 * r], dy = s[2 * q + 1] - s[2 * r + 1];
+                walk(s[2 * r] + 0.0 * dx, s[2 * r + 1] + 0.0 * dy, s[2 * r] + 1.0 * dx,
+                     s[2 * r + 1] + 1.0 * dy, mark);
+            }
+            for (unsigned k = 0; k < 4; ++k)
+                if (mask & (1u << k))
+                    cell(bx + int(k & 1u), by + int(k >> 1), label);
+            return;
+        }
+        auto emit = [&](int x, int y) { cell(x, y, label); };
+        if (kind == StartSet::Kind::Polygon && n >= 3)
+            fill(s, n, xs, emit);
+        for (int r = 0; r < segments; ++r) {
+            const int q = r + 1 < n ? r + 1 : 0;
+            const double dx = s[2 * q] - s[2 * r], dy = s[2 * q + 1] - s[2 * r + 1];
+            walk(s[2 * r] + 0.0 * dx, s[2 * r + 1] + 0.0 * dy, s[2 * r] + 1.0 * dx,
+                 s[2 * r + 1] + 1.0 * dy, emit);
         }
     }
 };
@@ -283,6 +372,154 @@ inline std::int32_t cellIndex(double sx, double sy, int w, int h)
     const bool in = (sx >= 0.0) & (sy >= 0.0) & (sx < double(w)) & (sy < double(h));
     return in ? int(sy) * w + int(sx) : -1;
 #endif
+}
+
+// ---- the leaves' vector kernels, baseline and AVX2 ----------------------------------------------
+//
+// The three loops of a fused leaf node (DfsKernel::leaves) over all N^m words at once: cell
+// coordinates of every vertex, the images' bounding boxes, their corners' cell indices. On
+// x86-64 each exists twice, for the baseline (SSE2) and for AVX2, chosen once per render by
+// the processor (leafKernels). The AVX2 loops add and multiply the same numbers in the same
+// order, without fused multiply-adds, so both give the same cells bit for bit.
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define AWB_AVX2_KERNELS 1
+#define AWB_AVX2_TARGET __attribute__((target("avx2")))
+#define AWB_INLINE_BODY __attribute__((always_inline)) inline
+#else
+#define AWB_INLINE_BODY inline
+#endif
+
+// s[r][k] = C[k] + sum_j X[r][j] L[j][k] for the n vertices X (rows of D) and k < len.
+template <int D>
+AWB_INLINE_BODY void fusedRowsBody(const double *__restrict C, const double *__restrict L,
+                                   const double *__restrict X, int n, int len,
+                                   double *__restrict s)
+{
+    for (int r = 0; r < n; ++r) {
+        double *__restrict sr = s + std::size_t(r) * len;
+        for (int k = 0; k < len; ++k)
+            sr[k] = C[k];
+        for (int j = 0; j < D; ++j) {
+            const double xj = X[r * D + j];
+            const double *__restrict lj = L + std::size_t(j) * len;
+            for (int k = 0; k < len; ++k)
+                sr[k] += xj * lj[k];
+        }
+    }
+}
+
+// Over the n rows of s: the smallest and largest of each of the len numbers, and their sum
+// (NaN when one of them is NaN: min and max alone may pass a NaN over).
+AWB_INLINE_BODY void boundsBody(const double *__restrict s, int n, int len,
+                                double *__restrict lo, double *__restrict hi,
+                                double *__restrict sum)
+{
+    for (int k = 0; k < len; ++k)
+        lo[k] = hi[k] = sum[k] = s[k];
+    for (int r = 1; r < n; ++r) {
+        const double *__restrict sr = s + std::size_t(r) * len;
+        for (int k = 0; k < len; ++k) {
+            const double v = sr[k];
+            lo[k] = v < lo[k] ? v : lo[k];
+            hi[k] = v > hi[k] ? v : hi[k];
+            sum[k] += v;
+        }
+    }
+}
+
+// cells[v] = cellIndex(xy[2v], xy[2v + 1], w, h) for v < words.
+AWB_INLINE_BODY void cellsBody(const double *xy, int words, int w, int h, std::int32_t *cells)
+{
+    for (int v = 0; v < words; ++v)
+        cells[v] = cellIndex(xy[2 * v], xy[2 * v + 1], w, h);
+}
+
+template <int D>
+void fusedRowsBase(const double *C, const double *L, const double *X, int n, int len, double *s)
+{
+    fusedRowsBody<D>(C, L, X, n, len, s);
+}
+void boundsBase(const double *s, int n, int len, double *lo, double *hi, double *sum)
+{
+    boundsBody(s, n, len, lo, hi, sum);
+}
+void cellsBase(const double *xy, int words, int w, int h, std::int32_t *cells)
+{
+    cellsBody(xy, words, w, h, cells);
+}
+
+#if defined(AWB_AVX2_KERNELS)
+template <int D>
+AWB_AVX2_TARGET void fusedRowsAvx2(const double *C, const double *L, const double *X, int n,
+                                   int len, double *s)
+{
+    fusedRowsBody<D>(C, L, X, n, len, s);
+}
+AWB_AVX2_TARGET void boundsAvx2(const double *s, int n, int len, double *lo, double *hi,
+                                double *sum)
+{
+    boundsBody(s, n, len, lo, hi, sum);
+}
+// Four words at a time: cvttpd2dq is cvttsd2si on four numbers (0x80000000 when out of range
+// or NaN), so the indices equal cellIndex's.
+AWB_AVX2_TARGET void cellsAvx2(const double *xy, int words, int w, int h, std::int32_t *cells)
+{
+    const __m256d one = _mm256_set1_pd(1.0);
+    const __m128i bias = _mm_set1_epi32(INT_MIN), ones = _mm_set1_epi32(-1);
+    const __m128i W = _mm_set1_epi32(w);
+    const __m128i wb = _mm_set1_epi32(int(unsigned(w) ^ 0x80000000u));
+    const __m128i hb = _mm_set1_epi32(int(unsigned(h) ^ 0x80000000u));
+    int v = 0;
+    for (; v + 4 <= words; v += 4) {
+        const __m256d a = _mm256_loadu_pd(xy + 2 * v);      // x0 y0 x1 y1
+        const __m256d b = _mm256_loadu_pd(xy + 2 * v + 4);  // x2 y2 x3 y3
+        // x0 x2 x1 x3 and y0 y2 y1 y3: words 0 2 1 3, put back in order after the conversion.
+        const __m128i cx = _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_unpacklo_pd(a, b), one));
+        const __m128i cy = _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_unpackhi_pd(a, b), one));
+        const __m128i ux = _mm_sub_epi32(_mm_shuffle_epi32(cx, _MM_SHUFFLE(3, 1, 2, 0)), _mm_set1_epi32(1));
+        const __m128i uy = _mm_sub_epi32(_mm_shuffle_epi32(cy, _MM_SHUFFLE(3, 1, 2, 0)), _mm_set1_epi32(1));
+        // Unsigned ux < w and uy < h, as signed comparisons of the biased numbers.
+        const __m128i in = _mm_and_si128(_mm_cmplt_epi32(_mm_xor_si128(ux, bias), wb),
+                                         _mm_cmplt_epi32(_mm_xor_si128(uy, bias), hb));
+        const __m128i index = _mm_add_epi32(_mm_mullo_epi32(uy, W), ux);
+        _mm_storeu_si128(reinterpret_cast<__m128i *>(cells + v),
+                         _mm_or_si128(_mm_and_si128(in, index), _mm_andnot_si128(in, ones)));
+    }
+    for (; v < words; ++v)
+        cells[v] = cellIndex(xy[2 * v], xy[2 * v + 1], w, h);
+}
+#endif
+
+template <int D>
+struct LeafKernels {
+    void (*rows)(const double *C, const double *L, const double *X, int n, int len, double *s);
+    void (*bounds)(const double *s, int n, int len, double *lo, double *hi, double *sum);
+    void (*cells)(const double *xy, int words, int w, int h, std::int32_t *cells);
+    const char *isa;
+};
+
+bool haveAvx2()
+{
+#if defined(AWB_AVX2_KERNELS)
+    static const bool avx2 = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx2") != 0;
+    }();
+    return avx2 && !g_baselineKernels.load(std::memory_order_relaxed);
+#else
+    return false;
+#endif
+}
+
+template <int D>
+LeafKernels<D> leafKernels()
+{
+#if defined(AWB_AVX2_KERNELS)
+    if (haveAvx2())
+        return {&fusedRowsAvx2<D>, &boundsAvx2, &cellsAvx2, "avx2"};
+#endif
+    return {&fusedRowsBase<D>, &boundsBase, &cellsBase, "baseline"};
 }
 
 template <Accumulation M>
@@ -624,10 +861,12 @@ public:
         : m_F(F), m_T(T), m_job(job), m_coords(coords), m_img(img), m_progress(progress),
           m_depth(job.depth), m_n(int(job.start.vertices.rows())), m_kind(job.start.kind),
           m_buf(std::size_t(job.depth + 1) * m_n * D), m_screen(std::size_t(m_n) * 2),
-          m_s(std::size_t(m_n) * T.words * 2), m_cells(std::size_t(T.words)),
-          m_labels(std::size_t(T.words)),
+          m_s(std::size_t(m_n) * T.words * 2), m_box(std::size_t(T.words) * 6),
+          m_cells(std::size_t(T.words)), m_cells2(std::size_t(T.words)),
+          m_labels(std::size_t(T.words)), m_kernels(leafKernels<D>()),
           m_plotter{img, img.cellsX(), img.cellsY(), coords}
     {
+        m_xs.resize(std::size_t(std::max(m_n, 1)));
         for (int r = 0; r < m_n; ++r)
             for (int j = 0; j < D; ++j)
                 m_buf[std::size_t(r) * D + j] = job.start.vertices(r, j);
@@ -695,6 +934,7 @@ private:
         const double *X = level(l);
         const int W = m_T.words;
         const int w = m_img.cellsX(), h = m_img.cellsY();
+        const double xMax = m_plotter.xMax(), yMax = m_plotter.yMax();
         if (!m_labelsFixed) {
             // A colour prefix longer than the fused levels: the parent's part of the address
             // (address[m..prefix-1]) is the low digits of every word's label.
@@ -712,23 +952,11 @@ private:
             const double *C = &m_T.c[std::size_t(q) * W * 2];
             // Every vertex's cell coordinates for every word: s = x L + c, as 2W-long
             // multiply-adds (vectorised).
-            for (int r = 0; r < m_n; ++r) {
-                double *__restrict sr = &m_s[std::size_t(r) * W * 2];
-                for (int k = 0; k < 2 * W; ++k)
-                    sr[k] = C[k];
-                for (int j = 0; j < D; ++j) {
-                    const double xj = X[r * D + j];
-                    const double *__restrict lj = L + std::size_t(j) * W * 2;
-                    for (int k = 0; k < 2 * W; ++k)
-                        sr[k] += xj * lj[k];
-                }
-            }
+            m_kernels.rows(C, L, X, m_n, 2 * W, m_s.data());
             if (m_points) {
                 for (int r = 0; r < m_n; ++r) {
-                    const double *sr = &m_s[std::size_t(r) * W * 2];
-                    // Cells first (NaN fails the comparisons: off screen), then the hits.
-                    for (int v = 0; v < W; ++v)
-                        m_cells[std::size_t(v)] = cellIndex(sr[2 * v], sr[2 * v + 1], w, h);
+                    // Cells first (NaN: off screen), then the hits.
+                    m_kernels.cells(&m_s[std::size_t(r) * W * 2], W, w, h, m_cells.data());
                     for (int v = 0; v < W; ++v) {
                         const std::int32_t cell = m_cells[std::size_t(v)];
                         if (cell < 0) {
@@ -743,33 +971,36 @@ private:
                 }
                 continue;
             }
+            // Each image's bounding box (and a NaN check), and the cells of its corners.
+            double *lo = m_box.data(), *hi = lo + 2 * W, *sum = hi + 2 * W;
+            m_kernels.bounds(m_s.data(), m_n, 2 * W, lo, hi, sum);
+            m_kernels.cells(lo, W, w, h, m_cells.data());
+            m_kernels.cells(hi, W, w, h, m_cells2.data());
             for (int v = 0; v < W; ++v) {
-                double x0 = m_s[2 * std::size_t(v)], x1 = x0, y0 = m_s[2 * std::size_t(v) + 1], y1 = y0;
-                bool nan = x0 != x0 || y0 != y0;
-                for (int r = 1; r < m_n; ++r) {
-                    const double sx = m_s[(std::size_t(r) * W + v) * 2];
-                    const double sy = m_s[(std::size_t(r) * W + v) * 2 + 1];
-                    x0 = std::min(x0, sx), x1 = std::max(x1, sx);
-                    y0 = std::min(y0, sy), y1 = std::max(y1, sy);
-                    nan = nan || sx != sx || sy != sy;
-                }
                 // Deep levels: an image whose bounding box has both corners in one cell on the
-                // raster is one hit there (cellIndex truncates without a libm floor). NaN, and
-                // images off the raster or over several cells, go to the rasteriser, which
-                // clips and counts them.
-                const std::int32_t c0 = nan ? -1 : cellIndex(x0, y0, w, h);
-                if (c0 >= 0 && c0 == cellIndex(x1, y1, w, h)) {
+                // raster is one hit there. NaN, and images off the raster or over several
+                // cells, go to the rasteriser.
+                const std::int32_t c0 = m_cells[std::size_t(v)];
+                const bool nan = sum[2 * v] != sum[2 * v] || sum[2 * v + 1] != sum[2 * v + 1];
+                if (c0 >= 0 && c0 == m_cells2[std::size_t(v)] && !nan) {
                     if constexpr (M == Accumulation::Hits)
                         m_img.addHit(std::size_t(c0), m_labels[std::size_t(v)]);
                     else
                         m_img.addDensity(std::size_t(c0), m_coords[m_labels[std::size_t(v)]]);
-                } else {
-                    for (int r = 0; r < m_n; ++r) {
-                        m_screen[2 * r] = m_s[(std::size_t(r) * W + v) * 2];
-                        m_screen[2 * r + 1] = m_s[(std::size_t(r) * W + v) * 2 + 1];
-                    }
-                    m_plotter.image(m_screen.data(), m_n, m_kind, m_labels[std::size_t(v)], m_xs);
+                    continue;
                 }
+                for (int r = 0; r < m_n; ++r) {
+                    m_screen[2 * r] = m_s[(std::size_t(r) * W + v) * 2];
+                    m_screen[2 * r + 1] = m_s[(std::size_t(r) * W + v) * 2 + 1];
+                }
+                // Small images straddling cells inside the raster (most of the rest at deep
+                // levels) skip the rasteriser's checks and clipping.
+                if (!nan && lo[2 * v] >= 0 && lo[2 * v + 1] >= 0 && hi[2 * v] < xMax
+                    && hi[2 * v + 1] < yMax)
+                    m_plotter.imageInside(m_screen.data(), m_n, m_kind, m_labels[std::size_t(v)],
+                                          m_xs.data());
+                else
+                    m_plotter.image(m_screen.data(), m_n, m_kind, m_labels[std::size_t(v)], m_xs);
             }
         }
         m_emitted += std::uint64_t(W);
@@ -813,9 +1044,10 @@ private:
     bool m_points = true;
     bool m_labelsFixed = true;
     std::uint32_t m_maps = 1;
-    std::vector<double> m_buf, m_screen, m_xs, m_s;
-    std::vector<std::int32_t> m_cells;
+    std::vector<double> m_buf, m_screen, m_xs, m_s, m_box;
+    std::vector<std::int32_t> m_cells, m_cells2;
     std::vector<std::uint32_t> m_labels;
+    LeafKernels<D> m_kernels;
     Plotter m_plotter;
     std::uint8_t m_address[65] = {};
     std::uint64_t m_emitted = 0, m_ticked = 0;

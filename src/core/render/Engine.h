@@ -10,8 +10,11 @@
 // - Deterministic iteration walks the words depth first with one buffer per level; the last
 //   map is fused with the projection to the raster (x A_i V + b_i V + c: 2D instead of D^2 + 2D
 //   flops per vertex), and the innermost levels are split across threads.
-// - Start sets drawn as segments or polygons plot one cell when an image falls inside one
-//   cell (deep levels), and are rasterised as lines and filled polygons otherwise.
+// - Start sets drawn as segments or polygons are rasterised as lines and filled polygons; an
+//   image within a 2 x 2 block of cells (deep levels) adds one hit to each cell it covers,
+//   and one inside a single cell one hit there.
+// - The leaves' loops exist for the baseline and for AVX2 (x86-64), chosen at run time, with
+//   the same rounding: the same cells either way.
 // Larger dimensions and custom iterations (automata) use the same rasteriser through
 // DensitySink, fed by the sink-based iterate()/chaosGame() of ifs/Attractor.h.
 
@@ -69,6 +72,12 @@ private:
     std::vector<std::uint8_t> m_coords;
     std::vector<double> m_screen;
 };
+
+// The vector kernels the engine runs here: "avx2" (x86-64 processors that have it) or
+// "baseline". forceBaselineKernels(true) selects the baseline ones for the renders that start
+// afterwards (tests compare the two: they give the same cells).
+const char *engineKernels();
+void forceBaselineKernels(bool on);
 
 // Label of an address (address[0] outermost) for `prefix` symbols of N maps.
 std::uint32_t addressLabel(const std::uint8_t *address, int length, int prefix, int maps);
