@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <mutex>
 
 namespace awb {
 
@@ -40,7 +42,7 @@ void DensityImage::reset(int cellsX, int cellsY, Accumulation mode)
     m_mode = mode;
     const std::size_t n = std::size_t(cellsX) * cellsY;
     if (m_buckets.size() == n)
-        std::fill(m_buckets.begin(), m_buckets.end(), DensityBucket{});
+        std::memset(static_cast<void *>(m_buckets.data()), 0, n * sizeof(DensityBucket));
     else
         m_buckets.assign(n, DensityBucket{});
     m_spilled.clear();
@@ -96,23 +98,65 @@ std::uint64_t DensityImage::litCells() const
 
 void DensityImage::merge(const DensityImage &o)
 {
+    mergeCells(o, 0, m_buckets.size());
+    mergeRest(o);
+}
+
+void DensityImage::mergeCells(const DensityImage &o, std::size_t first, std::size_t last)
+{
+    addCells<false>(o, first, last);
+}
+
+void DensityImage::takeCells(DensityImage &o, std::size_t first, std::size_t last)
+{
+    addCells<true>(o, first, last);
+}
+
+template <bool Take, class Source>
+void DensityImage::addCells(Source &o, std::size_t first, std::size_t last)
+{
     if (o.m_w != m_w || o.m_h != m_h || o.m_mode != m_mode)
         throw InputError(coreTranslate("awb::render", "cannot merge density images of different "
                                                       "sizes or modes"));
-    for (std::size_t i = 0; i < m_buckets.size(); ++i) {
-        const DensityBucket &src = o.m_buckets[i];
+    last = std::min(last, m_buckets.size());
+    auto add = [&](std::size_t i) {
+        const DensityBucket src = o.m_buckets[i];
         if (src.n == 0 && src.v == 0)
-            continue;
+            return;
+        if constexpr (Take)
+            o.m_buckets[i] = DensityBucket{};
         DensityBucket &dst = m_buckets[i];
-        // Sums of two buckets below 2^24 hits stay below 2^25 hits: spill first if needed.
-        if (std::uint64_t(dst.n) + src.n >= kSpillAt)
+        // Sums of two buckets below 2^24 hits stay below 2^25 hits: spill first if needed
+        // (rare; the map of spilled sums is shared by the threads merging other ranges).
+        if (std::uint64_t(dst.n) + src.n >= kSpillAt) [[unlikely]] {
+            static std::mutex spilling;
+            std::lock_guard lock(spilling);
             spill(i);
+        }
         dst.n += src.n;
         if (m_mode == Accumulation::Density)
             dst.v += src.v;
         else if (src.v != 0 && (dst.v == 0 || src.v < dst.v))
             dst.v = src.v;
+    };
+    // Most cells of a curve's histogram are empty: skip them four at a time.
+    std::size_t i = first;
+    for (; i < last && i % 4 != 0; ++i)
+        add(i);
+    for (; i + 4 <= last; i += 4) {
+        std::uint64_t w[4];
+        std::memcpy(w, static_cast<const void *>(&o.m_buckets[i]), sizeof w);
+        if ((w[0] | w[1] | w[2] | w[3]) == 0)
+            continue;
+        for (std::size_t k = i; k < i + 4; ++k)
+            add(k);
     }
+    for (; i < last; ++i)
+        add(i);
+}
+
+void DensityImage::mergeRest(const DensityImage &o)
+{
     for (const auto &[i, s] : o.m_spilled) {
         auto &d = m_spilled[i];
         for (int k = 0; k < 2; ++k)
@@ -122,6 +166,13 @@ void DensityImage::merge(const DensityImage &o)
     }
     offscreen += o.offscreen;
     nonFinite += o.nonFinite;
+}
+
+void DensityImage::takeRest(DensityImage &o)
+{
+    mergeRest(o);
+    o.m_spilled.clear();
+    o.offscreen = o.nonFinite = 0;
 }
 
 void DensityImage::clear()

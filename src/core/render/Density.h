@@ -98,6 +98,14 @@ public:
     std::uint64_t count(std::size_t i) const;
     std::uint64_t litCells() const;
     void merge(const DensityImage &other);
+    // merge() in parts that threads may run side by side: mergeCells for disjoint ranges of
+    // cell indices [first, last) (the buckets), then mergeRest once (spilled sums, counters).
+    void mergeCells(const DensityImage &other, std::size_t first, std::size_t last);
+    void mergeRest(const DensityImage &other);
+    // The same, emptying `other` as it goes (takeRest clears its spilled sums and counters):
+    // a histogram taken whole needs no reset before it is filled again.
+    void takeCells(DensityImage &other, std::size_t first, std::size_t last);
+    void takeRest(DensityImage &other);
     void clear();
     // The buckets, row by row; exact totals only while no bucket has spilled.
     const DensityBucket *buckets() const { return m_buckets.data(); }
@@ -116,6 +124,8 @@ private:
     static_assert(sizeof(DensityBucket) == 8 && offsetof(DensityBucket, v) == 4);
 
     void spill(std::size_t i);
+    template <bool Take, class Source>
+    void addCells(Source &other, std::size_t first, std::size_t last);
 
     int m_w = 0, m_h = 0;
     Accumulation m_mode = Accumulation::Density;

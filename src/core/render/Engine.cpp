@@ -1085,12 +1085,30 @@ std::vector<std::vector<int>> splitTasks(int N, int depth, int threads)
     return tasks;
 }
 
+// The histograms of one render: images[0] is the caller's picture, the others the threads'
+// own, reused from one render to the next; clean[t]: images[t] is known to be empty (taken
+// whole by the last merge) and of this size and mode, so it needs no reset.
+struct Histograms {
+    std::vector<DensityImage *> images;
+    std::vector<char> clean;
+
+    // Called by thread t before it draws.
+    void prepare(int t, const EngineJob &job) const
+    {
+        DensityImage &img = *images[std::size_t(t)];
+        if (!clean[std::size_t(t)] || img.cellsX() != job.frame.cellsX()
+            || img.cellsY() != job.frame.cellsY() || img.mode() != job.accumulation)
+            img.reset(job.frame.cellsX(), job.frame.cellsY(), job.accumulation);
+    }
+};
+
 template <int D, Accumulation M>
 IterationStats runFixed(const EngineJob &job, const std::vector<CellView> &cv,
-                        std::vector<DensityImage *> &images, const IterationControl &control)
+                        const Histograms &hist, const IterationControl &control)
 {
     const Flat<D> F(*job.ifs, cv);
     const std::vector<std::uint8_t> coords = labelCoordinates(job.colours.labelColours.size());
+    const std::vector<DensityImage *> &images = hist.images;
     const int threads = int(images.size());
     std::atomic<std::uint64_t> done{0};
     std::vector<IterationStats> results(threads);
@@ -1109,6 +1127,7 @@ IterationStats runFixed(const EngineJob &job, const std::vector<CellView> &cv,
             x0Screen(k) = start[k];
         // Thread t runs a contiguous block of streams.
         onThreads(threads, [&](int t) {
+            hist.prepare(t, job);
             const int first = kChaosStreams * t / threads, last = kChaosStreams * (t + 1) / threads;
             results[t] = inScreen
                              ? chaosKernel<D, M, true>(screen, pick, x0Screen, job, coords.data(),
@@ -1124,6 +1143,7 @@ IterationStats runFixed(const EngineJob &job, const std::vector<CellView> &cv,
         std::atomic<std::size_t> next{0};
         std::atomic<bool> stopped{false};
         onThreads(threads, [&](int t) {
+            hist.prepare(t, job);
             DfsKernel<D, M> walker(F, fused, job, coords.data(), *images[t], progress);
             for (;;) {
                 const std::size_t k = next.fetch_add(1);
@@ -1148,14 +1168,14 @@ IterationStats runFixed(const EngineJob &job, const std::vector<CellView> &cv,
 
 template <Accumulation M, int D = 1>
 IterationStats dispatch(int dim, const EngineJob &job, const std::vector<CellView> &cv,
-                        std::vector<DensityImage *> &images, const IterationControl &control)
+                        const Histograms &hist, const IterationControl &control)
 {
     if constexpr (D > kMaxFixedDim) {
         return {};
     } else {
         if (dim == D)
-            return runFixed<D, M>(job, cv, images, control);
-        return dispatch<M, D + 1>(dim, job, cv, images, control);
+            return runFixed<D, M>(job, cv, hist, control);
+        return dispatch<M, D + 1>(dim, job, cv, hist, control);
     }
 }
 
@@ -1193,31 +1213,44 @@ IterationStats accumulate(const EngineJob &job, DensityImage &out, const Iterati
     if (work < 2e5)
         threads = 1;
     threads = std::max(1, std::min(threads, int(kHistogramBudget / std::max(1.0, bytes))));
-    out.reset(job.frame.cellsX(), job.frame.cellsY(), job.accumulation);
     // The other threads' histograms are kept per calling thread and reused by the next
-    // picture of the same size (live drags render one picture after another).
-    static thread_local std::vector<std::unique_ptr<DensityImage>> spare;
+    // picture of the same size (live drags render one picture after another). The merge
+    // below empties them, so the next picture of that size skips their reset; each thread
+    // resets its own otherwise (the kernels; here for the sink path).
+    struct Spare {
+        std::unique_ptr<DensityImage> image;
+        bool clean = false;
+    };
+    static thread_local std::vector<Spare> spare;
     if (spare.size() < std::size_t(threads))
         spare.resize(std::size_t(threads));
-    std::vector<DensityImage *> images{&out};
+    Histograms hist;
+    hist.images.push_back(&out);
+    hist.clean.push_back(0);
     for (int t = 1; t < threads; ++t) {
-        if (!spare[t])
-            spare[t] = std::make_unique<DensityImage>();
-        spare[t]->reset(job.frame.cellsX(), job.frame.cellsY(), job.accumulation);
-        images.push_back(spare[t].get());
+        if (!spare[t].image)
+            spare[t].image = std::make_unique<DensityImage>();
+        hist.images.push_back(spare[t].image.get());
+        hist.clean.push_back(spare[t].clean ? 1 : 0);
+        spare[t].clean = false;  // until the merge empties it again
     }
+    const std::vector<DensityImage *> &images = hist.images;
     // A much larger earlier picture's memory is not kept.
     auto release = [&] {
-        for (auto &img : spare)
-            if (img && img->size() > 4 * std::size_t(job.frame.cellsX()) * job.frame.cellsY())
-                img.reset();
+        for (auto &s : spare)
+            if (s.image && s.image->size() > 4 * std::size_t(job.frame.cellsX()) * job.frame.cellsY())
+                s.image.reset(), s.clean = false;
     };
+    const bool fixed = ifs.dim() <= kMaxFixedDim && ifs.size() > 0;
+    if (!fixed)
+        for (int t = 0; t < threads; ++t)
+            hist.prepare(t, job);
 
     IterationStats stats;
-    if (ifs.dim() <= kMaxFixedDim && ifs.size() > 0) {
+    if (fixed) {
         stats = job.accumulation == Accumulation::Hits
-                    ? dispatch<Accumulation::Hits>(ifs.dim(), job, cv, images, control)
-                    : dispatch<Accumulation::Density>(ifs.dim(), job, cv, images, control);
+                    ? dispatch<Accumulation::Hits>(ifs.dim(), job, cv, hist, control)
+                    : dispatch<Accumulation::Density>(ifs.dim(), job, cv, hist, control);
     } else {
         // Large dimensions: the sink-based iteration into the same rasteriser.
         std::vector<std::unique_ptr<DensitySink>> sinks;
@@ -1242,8 +1275,21 @@ IterationStats accumulate(const EngineJob &job, DensityImage &out, const Iterati
     }
     if (stats.cancelled)
         return stats;
-    for (std::size_t t = 1; t < images.size(); ++t)
-        out.merge(*images[t]);
+    if (images.size() > 1) {
+        // Thread t moves every other histogram's band t of cells into `out`, leaving them
+        // empty for the next picture.
+        const std::size_t cells = out.size();
+        onThreads(threads, [&](int t) {
+            const std::size_t first = cells * std::size_t(t) / std::size_t(threads);
+            const std::size_t last = cells * std::size_t(t + 1) / std::size_t(threads);
+            for (std::size_t k = 1; k < images.size(); ++k)
+                out.takeCells(*images[k], first, last);
+        });
+        for (std::size_t k = 1; k < images.size(); ++k) {
+            out.takeRest(*images[k]);
+            spare[k].clean = true;
+        }
+    }
     release();
     if (control.progress)
         control.progress(1.0);
