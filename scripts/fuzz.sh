@@ -44,9 +44,9 @@ for t in "${TARGETS[@]}"; do
        "$corpus" "${existing[@]}" > "$log" 2>&1; then
     status=1
     echo "fuzz: $t FAILED; the input is in $artifacts, the log in $log"
-    grep -E "ERROR|SUMMARY|Test unit written" "$log" | head -5 || true
+    grep -a -E "ERROR|SUMMARY|Test unit written" "$log" | head -5 || true
   fi
-  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')
+  runs=$(grep -a -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')
   echo "fuzz: $t: $runs executions in $SECS s, corpus $(ls "$corpus" | wc -l) inputs"
 done
 exit $status
