@@ -107,6 +107,25 @@ double PointIndex::nearest(const double *q, Eigen::Index *index) const
     double best = std::numeric_limits<double>::infinity();
     Eigen::Index bestIdx = -1;
     const int maxRing = std::max({g.dims[0], g.dims[1], g.dims[2]});
+    auto visit = [&](int x, int y, int z) {
+        const int c[3] = {x, y, z};
+        const std::size_t cell = g.cellIndex(c);
+        for (std::uint32_t k = g.start[cell]; k < g.start[cell + 1]; ++k) {
+            const std::uint32_t i = g.order[k];
+            double s = 0;
+            for (int a = 0; a < g.d; ++a) {
+                const double t = g.pts(i, a) - q[a];
+                s += t * t;
+            }
+            if (s < best * best || bestIdx < 0) {
+                const double dist = std::sqrt(s);
+                if (dist < best) {
+                    best = dist;
+                    bestIdx = i;
+                }
+            }
+        }
+    };
     for (int r = 0; r <= maxRing; ++r) {
         // Points in ring r are at least (r - 1) cells away from q (clamping only helps).
         if (bestIdx >= 0 && (r - 1) * g.cell > best)
@@ -116,32 +135,24 @@ double PointIndex::nearest(const double *q, Eigen::Index *index) const
             lo[a] = a < g.d ? std::max(0, c0[a] - r) : 0;
             hi[a] = a < g.d ? std::min(g.dims[a] - 1, c0[a] + r) : 0;
         }
-        for (int z = lo[2]; z <= hi[2]; ++z)
-            for (int y = lo[1]; y <= hi[1]; ++y)
-                for (int x = lo[0]; x <= hi[0]; ++x) {
-                    const int c[3] = {x, y, z};
-                    int ring = 0;
-                    for (int a = 0; a < g.d; ++a)
-                        ring = std::max(ring, std::abs(c[a] - c0[a]));
-                    if (ring != r)
-                        continue;
-                    const std::size_t cell = g.cellIndex(c);
-                    for (std::uint32_t k = g.start[cell]; k < g.start[cell + 1]; ++k) {
-                        const std::uint32_t i = g.order[k];
-                        double s = 0;
-                        for (int a = 0; a < g.d; ++a) {
-                            const double t = g.pts(i, a) - q[a];
-                            s += t * t;
-                        }
-                        if (s < best * best || bestIdx < 0) {
-                            const double dist = std::sqrt(s);
-                            if (dist < best) {
-                                best = dist;
-                                bestIdx = i;
-                            }
-                        }
-                    }
+        // The cells at Chebyshev distance exactly r from c0: whole layers where z or y is at
+        // distance r, and only the two end columns x = c0 +- r in the rows between (a ring
+        // costs its perimeter, not its area: far queries no longer scan r^2 cells per ring).
+        for (int z = lo[2]; z <= hi[2]; ++z) {
+            const bool zEdge = g.d > 2 && std::abs(z - c0[2]) == r;
+            for (int y = lo[1]; y <= hi[1]; ++y) {
+                const bool yEdge = g.d > 1 && std::abs(y - c0[1]) == r;
+                if (zEdge || yEdge || r == 0) {
+                    for (int x = lo[0]; x <= hi[0]; ++x)
+                        visit(x, y, z);
+                } else {
+                    if (c0[0] - r >= 0)
+                        visit(c0[0] - r, y, z);
+                    if (c0[0] + r <= g.dims[0] - 1)
+                        visit(c0[0] + r, y, z);
                 }
+            }
+        }
     }
     if (index)
         *index = bestIdx;
