@@ -181,7 +181,7 @@ struct Plotter {
         if (xs.size() < std::size_t(n))
             xs.resize(std::size_t(n));
         if (x0 >= 0 && y0 >= 0 && x1 < xMax() && y1 < yMax()) {
-            imageInside(s, n, kind, label, xs.data());
+            imageInside(s, n, kind, label, xs.data(), x0, y0, x1, y1);
             return;
         }
         auto emit = [&](int x, int y) { cell(x, y, label); };
@@ -194,52 +194,47 @@ struct Plotter {
         }
     }
 
-    // A polyline or polygon of n >= 2 vertices over several cells, every vertex inside
-    // [0, xMax) x [0, yMax): no clipping (it would leave t0 = 0 and t1 = 1, rounding included).
-    // An image within a 2 x 2 block of cells (deep levels) adds one hit to each cell it
-    // covers, however many of its samples fall there. xs: n numbers.
-    void imageInside(const double *s, int n, StartSet::Kind kind, std::uint32_t label,
-                     double *xs)
+    // The cells of a polyline or polygon whose vertices all lie inside [0, xMax) x [0, yMax),
+    // to emit(x, y): the filled cells of a polygon, then its edges' samples. No clipping: it
+    // would leave t0 = 0 and t1 = 1 there, rounding included.
+    template <class Emit>
+    void traceInside(const double *s, int n, StartSet::Kind kind, double *xs, Emit &&emit) const
     {
-        const int segments = kind == StartSet::Kind::Polygon ? n : n - 1;
-        double x0 = s[0], x1 = s[0], y0 = s[1], y1 = s[1];
-        for (int i = 1; i < n; ++i) {
-            x0 = std::min(x0, s[2 * i]), x1 = std::max(x1, s[2 * i]);
-            y0 = std::min(y0, s[2 * i + 1]), y1 = std::max(y1, s[2 * i + 1]);
-        }
-        // Coordinates are >= 0 here: truncation is the floor.
-        const int bx = int(x0), by = int(y0);
-        if (int(x1) - bx <= 1 && int(y1) - by <= 1) {
-            unsigned mask = 0;
-            auto mark = [&](int x, int y) {
-                const unsigned dx = unsigned(x - bx), dy = unsigned(y - by);
-                if ((dx | dy) <= 1u)
-                    mask |= 1u << (2 * dy + dx);
-                else
-                    cell(x, y, label);  // a sample rounded past the block's edge
-            };
-            if (kind == StartSet::Kind::Polygon && n >= 3)
-                fill(s, n, xs, mark);
-            for (int r = 0; r < segments; ++r) {
-                const int q = r + 1 < n ? r + 1 : 0;
-                const double dx = s[2 * q] - s[2 * r], dy = s[2 * q + 1] - s[2 * r + 1];
-                walk(s[2 * r] + 0.0 * dx, s[2 * r + 1] + 0.0 * dy, s[2 * r] + 1.0 * dx,
-                     s[2 * r + 1] + 1.0 * dy, mark);
-            }
-            for (unsigned k = 0; k < 4; ++k)
-                if (mask & (1u << k))
-                    cell(bx + int(k & 1u), by + int(k >> 1), label);
-            return;
-        }
-        auto emit = [&](int x, int y) { cell(x, y, label); };
         if (kind == StartSet::Kind::Polygon && n >= 3)
             fill(s, n, xs, emit);
+        const int segments = kind == StartSet::Kind::Polygon ? n : n - 1;
         for (int r = 0; r < segments; ++r) {
             const int q = r + 1 < n ? r + 1 : 0;
             const double dx = s[2 * q] - s[2 * r], dy = s[2 * q + 1] - s[2 * r + 1];
             walk(s[2 * r] + 0.0 * dx, s[2 * r + 1] + 0.0 * dy, s[2 * r] + 1.0 * dx,
                  s[2 * r + 1] + 1.0 * dy, emit);
         }
+    }
+
+    // A polyline or polygon of n >= 2 vertices over several cells, inside the raster, with
+    // bounding box [x0, x1] x [y0, y1]. An image within a 2 x 2 block of cells (deep levels)
+    // adds one hit to each cell it covers, however many of its samples fall there. xs: n
+    // numbers.
+    void imageInside(const double *s, int n, StartSet::Kind kind, std::uint32_t label,
+                     double *xs, double x0, double y0, double x1, double y1)
+    {
+        // Coordinates are >= 0 here: truncation is the floor.
+        const int bx = int(x0), by = int(y0);
+        if (int(x1) - bx > 1 || int(y1) - by > 1) {
+            traceInside(s, n, kind, xs, [&](int x, int y) { cell(x, y, label); });
+            return;
+        }
+        unsigned mask = 0;
+        traceInside(s, n, kind, xs, [&](int x, int y) {
+            const unsigned dx = unsigned(x - bx), dy = unsigned(y - by);
+            if ((dx | dy) <= 1u)
+                mask |= 1u << (2 * dy + dx);
+            else
+                cell(x, y, label);  // a sample rounded past the block's edge
+        });
+        for (unsigned k = 0; k < 4; ++k)
+            if (mask & (1u << k))
+                cell(bx + int(k & 1u), by + int(k >> 1), label);
     }
 };
 
@@ -998,7 +993,8 @@ private:
                 if (!nan && lo[2 * v] >= 0 && lo[2 * v + 1] >= 0 && hi[2 * v] < xMax
                     && hi[2 * v + 1] < yMax)
                     m_plotter.imageInside(m_screen.data(), m_n, m_kind, m_labels[std::size_t(v)],
-                                          m_xs.data());
+                                          m_xs.data(), lo[2 * v], lo[2 * v + 1], hi[2 * v],
+                                          hi[2 * v + 1]);
                 else
                     m_plotter.image(m_screen.data(), m_n, m_kind, m_labels[std::size_t(v)], m_xs);
             }
