@@ -12,10 +12,14 @@
 # far (tests/fuzz/regressions/, also loaded by the normal test suite). One input may take at
 # most 1 s, 2 GB; leaks are reported. A crash, a hang or a leak fails the run and leaves its
 # input in build-asan/artifacts/<target>/.
+# The mutations follow a fixed seed (AWB_FUZZ_SEED, default 1), so a run is repeatable: CI's
+# 60-second smoke explores the same inputs as `scripts/fuzz.sh 60` here, up to the machine's
+# speed. Long campaigns should vary it (AWB_FUZZ_SEED=0: libFuzzer picks one and logs it).
 #   scripts/fuzz.sh [SECONDS] [TARGET...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SECS="${1:-60}"
+SEED="${AWB_FUZZ_SEED:-1}"
 shift || true
 TARGETS=("$@")
 [ ${#TARGETS[@]} -gt 0 ] || TARGETS=(fuzz_project_loader fuzz_item_ifs fuzz_cli_arguments)
@@ -38,8 +42,8 @@ for t in "${TARGETS[@]}"; do
   existing=()
   for s in "${seeds[@]}"; do [ -d "$s" ] && existing+=("$s"); done
   log="build-asan/$t.log"
-  echo "fuzz: $t for $SECS s"
-  if ! "build-asan/bin/$t" -max_total_time="$SECS" -timeout=1 -rss_limit_mb=2048 \
+  echo "fuzz: $t for $SECS s, seed $SEED"
+  if ! "build-asan/bin/$t" -seed="$SEED" -max_total_time="$SECS" -timeout=1 -rss_limit_mb=2048 \
        -max_len=65536 -print_final_stats=1 -artifact_prefix="$artifacts" \
        "$corpus" "${existing[@]}" > "$log" 2>&1; then
     status=1
