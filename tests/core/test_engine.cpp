@@ -88,6 +88,7 @@ private slots:
     void densityIsTheInvariantMeasure();
     void aliasTableDrawsTheProbabilities();
     void countsStayExactPastTheSpillThreshold();
+    void uncheckedHitsStayExactWithTheLargestCoordinate();
     void polygonsAndSegmentsAreRasterised();
     void toneMappingIsMonotone();
     void supersamplingAntiAliases();
@@ -269,6 +270,54 @@ void TestEngine::countsStayExactPastTheSpillThreshold()
         QCOMPARE(c[0], double(j.samples));
         QCOMPARE(c[1], 0.0);  // one label: coordinate 0
     }
+}
+
+void TestEngine::uncheckedHitsStayExactWithTheLargestCoordinate()
+{
+    // 33 555 000 hits (over 2^25) of colour coordinate 255 in one cell, in reserved batches of
+    // unchecked hits (and a few checked ones), then merged into an image with hits of its own: the
+    // coordinate sums (8.6e9 and more) would wrap in the 32-bit buckets without the sweeps.
+    constexpr std::uint64_t batches = 33555, batch = 1000;
+    constexpr std::size_t cell = 4;
+    DensityImage a(3, 2, Accumulation::Density);
+    for (std::uint64_t k = 0; k < batches; ++k) {
+        a.reserve(batch);
+        for (std::uint64_t i = 0; i < batch; ++i)
+            a.addDensityUnchecked(cell, 255);
+        if (k < 10)
+            a.addDensity(cell, 255);
+    }
+    const std::uint64_t total = batches * batch + 10;
+    QCOMPARE(a.count(cell), total);
+    QCOMPARE(a.cell(cell)[1], 255.0 * double(total));
+    QCOMPARE(a.litCells(), std::uint64_t(1));
+
+    DensityImage b(3, 2, Accumulation::Density);
+    const std::uint64_t own = DensityImage::kSpillAt;  // one whole batch, no sweep yet
+    b.reserve(own);
+    for (std::uint64_t i = 0; i < own; ++i)
+        b.addDensityUnchecked(cell, 255);
+    b.merge(a);
+    b.reserve(batch);  // sweeps: the room is used up
+    for (std::uint64_t i = 0; i < batch; ++i)
+        b.addDensityUnchecked(cell, 200);
+    QCOMPARE(b.count(cell), total + own + batch);
+    QCOMPARE(b.cell(cell)[1], 255.0 * double(total + own) + 200.0 * batch);
+
+    // Hits: the count is exact and the smallest label stays.
+    DensityImage h(3, 2, Accumulation::Hits);
+    for (std::uint64_t k = 0; k < batches; ++k) {
+        h.reserve(batch);
+        for (std::uint64_t i = 0; i < batch; ++i)
+            h.addHitUnchecked(cell, i == 500 && k == 7 ? 3u : 9u);
+    }
+    QCOMPARE(h.count(cell), batches * batch);
+    QCOMPARE(h.cell(cell)[1], 4.0);  // 1 + the smallest label
+    DensityImage h2(3, 2, Accumulation::Hits);
+    h2.addHit(cell, 5);
+    h2.merge(h);
+    QCOMPARE(h2.count(cell), batches * batch + 1);
+    QCOMPARE(h2.cell(cell)[1], 4.0);
 }
 
 void TestEngine::polygonsAndSegmentsAreRasterised()

@@ -46,7 +46,17 @@ void DensityImage::reset(int cellsX, int cellsY, Accumulation mode)
     else
         m_buckets.assign(n, DensityBucket{});
     m_spilled.clear();
+    m_room = kSpillAt;
     offscreen = nonFinite = 0;
+}
+
+void DensityImage::sweep()
+{
+    const std::size_t n = m_buckets.size();
+    for (std::size_t i = 0; i < n; ++i)
+        if (m_buckets[i].n >= kSpillAt) [[unlikely]]
+            spill(i);
+    m_room = kSpillAt;
 }
 
 void DensityImage::spill(std::size_t i)
@@ -126,12 +136,23 @@ void DensityImage::addCells(Source &o, std::size_t first, std::size_t last)
         if constexpr (Take)
             o.m_buckets[i] = DensityBucket{};
         DensityBucket &dst = m_buckets[i];
-        // Sums of two buckets below 2^24 hits stay below 2^25 hits: spill first if needed
-        // (rare; the map of spilled sums is shared by the threads merging other ranges).
+        // Every bucket stays below kSpillAt here too (reserve()): when the sum would reach it,
+        // this bucket spills, and a source bucket of kSpillAt or more hits (up to 2^24 after
+        // unchecked hits) goes to the spilled sums whole. Rare; the map of spilled sums is
+        // shared by the threads merging other ranges.
         if (std::uint64_t(dst.n) + src.n >= kSpillAt) [[unlikely]] {
             static std::mutex spilling;
             std::lock_guard lock(spilling);
             spill(i);
+            if (src.n >= kSpillAt) {
+                auto &s = m_spilled[i];
+                s[0] += src.n;
+                if (m_mode == Accumulation::Density)
+                    s[1] += src.v;
+                else if (src.v != 0 && (dst.v == 0 || src.v < dst.v))
+                    dst.v = src.v;
+                return;
+            }
         }
         dst.n += src.n;
         if (m_mode == Accumulation::Density)
@@ -179,6 +200,7 @@ void DensityImage::clear()
 {
     std::fill(m_buckets.begin(), m_buckets.end(), DensityBucket{});
     m_spilled.clear();
+    m_room = kSpillAt;
     offscreen = nonFinite = 0;
 }
 

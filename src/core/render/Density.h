@@ -73,25 +73,34 @@ public:
     // One hit at cell index i = y * cellsX + x (row 0 at the top).
     void addDensity(std::size_t i, std::uint8_t coordinate)
     {
-        // Both halves in one 64-bit add (n + 1, v + coordinate): n < 2^24 never carries into
-        // v, and 2^24 hits of coordinate <= 255 keep v below 2^32: the bucket moves aside
-        // before that.
-        std::uint64_t word;
-        std::memcpy(&word, static_cast<const void *>(&m_buckets[i]), sizeof word);
-        word += kOneHit + (std::uint64_t(coordinate) << kValueShift);
-        std::memcpy(static_cast<void *>(&m_buckets[i]), &word, sizeof word);
-        if (std::uint32_t(word >> kCountShift) == kSpillAt) [[unlikely]]
+        if (addDensityWord(i, coordinate) >= kSpillAt) [[unlikely]]
             spill(i);
     }
     void addHit(std::size_t i, std::uint32_t label)
     {
-        DensityBucket &b = m_buckets[i];
-        // v = 1 + min(label, v - 1), v = 0 (no hit yet) wrapping to the largest label: no branch
-        // on the bucket's content (a mispredicted one per hit costs more than the hit).
-        b.v = std::min(b.v - 1u, label) + 1u;
-        if (++b.n == kSpillAt) [[unlikely]]
+        if (addHitWord(i, label) >= kSpillAt) [[unlikely]]
             spill(i);
     }
+
+    // The hot loops' hits: reserve(n) announces at most n hits (n <= kSpillAt) that follow
+    // without the per-hit overflow check. A check per hit is a branch on the loaded count,
+    // which cannot retire before the load does, so it halves the rate of random updates
+    // that miss the caches (measured: 324 vs 550 M/s of 1024^2 density updates). Instead,
+    // every bucket is kept below kSpillAt by the checked adds, the merges and a sweep (which
+    // spills the buckets at or above kSpillAt) before every kSpillAt unchecked hits: a bucket
+    // then never exceeds 2 kSpillAt = 2^24 hits, whose coordinates (at most 255 each) sum
+    // below 2^32.
+    void reserve(std::size_t hits)
+    {
+        if (hits > m_room) [[unlikely]]
+            sweep();
+        m_room -= hits;
+    }
+    void addDensityUnchecked(std::size_t i, std::uint8_t coordinate)
+    {
+        addDensityWord(i, coordinate);
+    }
+    void addHitUnchecked(std::size_t i, std::uint32_t label) { addHitWord(i, label); }
 
     // Exact totals of cell i: count and coordinate sum (hits: 1 + the smallest label).
     std::array<double, 2> cell(std::size_t i) const;
@@ -114,7 +123,7 @@ public:
     std::uint64_t offscreen = 0;   // hits outside the frame
     std::uint64_t nonFinite = 0;   // images with a NaN or infinite coordinate
 
-    static constexpr std::uint32_t kSpillAt = 1u << 24;
+    static constexpr std::uint32_t kSpillAt = 1u << 23;
 
 private:
     // Where n and v sit in a bucket read as one 64-bit word.
@@ -123,13 +132,34 @@ private:
     static constexpr std::uint64_t kOneHit = std::uint64_t(1) << kCountShift;
     static_assert(sizeof(DensityBucket) == 8 && offsetof(DensityBucket, v) == 4);
 
+    // Both halves in one 64-bit add (n + 1, v + coordinate): n < 2^24 never carries into v.
+    // Returns the new count.
+    std::uint32_t addDensityWord(std::size_t i, std::uint8_t coordinate)
+    {
+        std::uint64_t word;
+        std::memcpy(&word, static_cast<const void *>(&m_buckets[i]), sizeof word);
+        word += kOneHit + (std::uint64_t(coordinate) << kValueShift);
+        std::memcpy(static_cast<void *>(&m_buckets[i]), &word, sizeof word);
+        return std::uint32_t(word >> kCountShift);
+    }
+    std::uint32_t addHitWord(std::size_t i, std::uint32_t label)
+    {
+        DensityBucket &b = m_buckets[i];
+        // v = 1 + min(label, v - 1), v = 0 (no hit yet) wrapping to the largest label: no branch
+        // on the bucket's content (a mispredicted one per hit costs more than the hit).
+        b.v = std::min(b.v - 1u, label) + 1u;
+        return ++b.n;
+    }
     void spill(std::size_t i);
+    // Spills every bucket at or above kSpillAt hits; kSpillAt unchecked hits may follow.
+    void sweep();
     template <bool Take, class Source>
     void addCells(Source &other, std::size_t first, std::size_t last);
 
     int m_w = 0, m_h = 0;
     Accumulation m_mode = Accumulation::Density;
     std::vector<DensityBucket> m_buckets;
+    std::size_t m_room = kSpillAt;  // unchecked hits allowed before the next sweep
     // Buckets that reached kSpillAt hits, summed exactly (rare: only huge sample counts).
     std::unordered_map<std::size_t, std::array<std::uint64_t, 2>> m_spilled;
 };

@@ -646,6 +646,7 @@ void chaosBlock(const Flat<D> &F, const AliasTable &pick, Orbits<D, K> &o, int s
     if constexpr (oneView && D >= 2) {
         if (!plot)
             return;
+        img.reserve(std::size_t(steps) * K);
         for (int s = 0; s < steps; ++s)
             for (int k = 0; k < K; ++k) {
                 const std::int32_t c = cells[s][k];
@@ -655,9 +656,9 @@ void chaosBlock(const Flat<D> &F, const AliasTable &pick, Orbits<D, K> &o, int s
                 }
                 const std::uint32_t l = prefix == 1 ? maps[s][k] : prefix == 0 ? 0u : labels[s][k];
                 if constexpr (M == Accumulation::Hits)
-                    img.addHit(std::size_t(c), l);
+                    img.addHitUnchecked(std::size_t(c), l);
                 else
-                    img.addDensity(std::size_t(c), coords[l]);
+                    img.addDensityUnchecked(std::size_t(c), coords[l]);
             }
     }
 }
@@ -952,6 +953,7 @@ private:
                 for (int r = 0; r < m_n; ++r) {
                     // Cells first (NaN: off screen), then the hits.
                     m_kernels.cells(&m_s[std::size_t(r) * W * 2], W, w, h, m_cells.data());
+                    m_img.reserve(std::size_t(W));
                     for (int v = 0; v < W; ++v) {
                         const std::int32_t cell = m_cells[std::size_t(v)];
                         if (cell < 0) {
@@ -959,9 +961,10 @@ private:
                             continue;
                         }
                         if constexpr (M == Accumulation::Hits)
-                            m_img.addHit(std::size_t(cell), m_labels[std::size_t(v)]);
+                            m_img.addHitUnchecked(std::size_t(cell), m_labels[std::size_t(v)]);
                         else
-                            m_img.addDensity(std::size_t(cell), m_coords[m_labels[std::size_t(v)]]);
+                            m_img.addDensityUnchecked(std::size_t(cell),
+                                                      m_coords[m_labels[std::size_t(v)]]);
                     }
                 }
                 continue;
@@ -971,6 +974,7 @@ private:
             m_kernels.bounds(m_s.data(), m_n, 2 * W, lo, hi, sum);
             m_kernels.cells(lo, W, w, h, m_cells.data());
             m_kernels.cells(hi, W, w, h, m_cells2.data());
+            m_img.reserve(std::size_t(W));
             for (int v = 0; v < W; ++v) {
                 // Deep levels: an image whose bounding box has both corners in one cell on the
                 // raster is one hit there. NaN, and images off the raster or over several
@@ -979,9 +983,10 @@ private:
                 const bool nan = sum[2 * v] != sum[2 * v] || sum[2 * v + 1] != sum[2 * v + 1];
                 if (c0 >= 0 && c0 == m_cells2[std::size_t(v)] && !nan) {
                     if constexpr (M == Accumulation::Hits)
-                        m_img.addHit(std::size_t(c0), m_labels[std::size_t(v)]);
+                        m_img.addHitUnchecked(std::size_t(c0), m_labels[std::size_t(v)]);
                     else
-                        m_img.addDensity(std::size_t(c0), m_coords[m_labels[std::size_t(v)]]);
+                        m_img.addDensityUnchecked(std::size_t(c0),
+                                                  m_coords[m_labels[std::size_t(v)]]);
                     continue;
                 }
                 for (int r = 0; r < m_n; ++r) {
