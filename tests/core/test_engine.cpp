@@ -11,6 +11,8 @@
 
 #include <QtTest>
 
+#include <stdexcept>
+
 using namespace awb;
 
 namespace {
@@ -318,6 +320,8 @@ void TestEngine::uncheckedHitsStayExactWithTheLargestCoordinate()
     h2.merge(h);
     QCOMPARE(h2.count(cell), batches * batch + 1);
     QCOMPARE(h2.cell(cell)[1], 4.0);
+    // A batch larger than one sweep covers is a caller's bug, refused.
+    QVERIFY_THROWS_EXCEPTION(std::length_error, h2.reserve(DensityImage::kSpillAt + 1));
 }
 
 void TestEngine::polygonsAndSegmentsAreRasterised()

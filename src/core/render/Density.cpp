@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <mutex>
+#include <stdexcept>
 
 namespace awb {
 
@@ -50,8 +51,10 @@ void DensityImage::reset(int cellsX, int cellsY, Accumulation mode)
     offscreen = nonFinite = 0;
 }
 
-void DensityImage::sweep()
+void DensityImage::sweep(std::size_t hits)
 {
+    if (hits > kSpillAt)
+        throw std::length_error("DensityImage::reserve: more than kSpillAt hits in one batch");
     const std::size_t n = m_buckets.size();
     for (std::size_t i = 0; i < n; ++i)
         if (m_buckets[i].n >= kSpillAt) [[unlikely]]
@@ -193,6 +196,7 @@ void DensityImage::takeRest(DensityImage &o)
 {
     mergeRest(o);
     o.m_spilled.clear();
+    o.m_room = kSpillAt;
     o.offscreen = o.nonFinite = 0;
 }
 

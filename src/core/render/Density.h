@@ -93,7 +93,7 @@ public:
     void reserve(std::size_t hits)
     {
         if (hits > m_room) [[unlikely]]
-            sweep();
+            sweep(hits);
         m_room -= hits;
     }
     void addDensityUnchecked(std::size_t i, std::uint8_t coordinate)
@@ -112,7 +112,9 @@ public:
     void mergeCells(const DensityImage &other, std::size_t first, std::size_t last);
     void mergeRest(const DensityImage &other);
     // The same, emptying `other` as it goes (takeRest clears its spilled sums and counters):
-    // a histogram taken whole needs no reset before it is filled again.
+    // a histogram taken whole needs no reset before it is filled again. takeRest is for
+    // after takeCells over every cell: `other` is then empty and takes kSpillAt unchecked hits
+    // before its next sweep.
     void takeCells(DensityImage &other, std::size_t first, std::size_t last);
     void takeRest(DensityImage &other);
     void clear();
@@ -152,7 +154,8 @@ private:
     }
     void spill(std::size_t i);
     // Spills every bucket at or above kSpillAt hits; kSpillAt unchecked hits may follow.
-    void sweep();
+    // Throws std::length_error for a batch larger than that (a caller's bug).
+    void sweep(std::size_t hits);
     template <bool Take, class Source>
     void addCells(Source &other, std::size_t first, std::size_t last);
 
