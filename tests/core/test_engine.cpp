@@ -507,6 +507,33 @@ void TestEngine::vectorKernelsMatchTheBaseline()
             QVERIFY(sameBuckets(native, baseline));
             QCOMPARE(native.offscreen, baseline.offscreen);
         }
+    // Random iteration: the four orbits' map choices drawn in AVX2 lanes are the baseline's,
+    // whatever the block's parity (samples per stream odd and even, a skip of odd length),
+    // on one and two threads, colour by map and by address.
+    const Ifs gasket = sierpinski();
+    RowVec z0(2);
+    z0 << 0.3, 0.3;
+    for (std::uint64_t samples : {std::uint64_t(1000003), std::uint64_t(999 * 8 + 5)})
+        for (int threads : {1, 2})
+            for (int prefix : {1, 2}) {
+                EngineJob j = job(gasket, StartSet::points(Mat(z0)), 128, -0.1, -0.1, 1.1, 1.1);
+                j.random = true;
+                j.samples = samples;
+                j.skip = 21;
+                j.threads = threads;
+                j.colours.prefix = prefix;
+                j.colours.labelColours.assign(9, Rgb8{10, 20, 30});
+                j.accumulation = Accumulation::Density;
+                DensityImage native, baseline;
+                accumulate(j, native);
+                forceBaselineKernels(true);
+                accumulate(j, baseline);
+                forceBaselineKernels(false);
+                QVERIFY(native.litCells() > 1000);
+                QVERIFY2(sameBuckets(native, baseline),
+                         qPrintable(QStringLiteral("samples %1, threads %2, prefix %3")
+                                        .arg(samples).arg(threads).arg(prefix)));
+            }
     qInfo("vector kernels here: %s", isa.constData());
 }
 

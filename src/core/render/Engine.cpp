@@ -553,6 +553,99 @@ struct Progress {
 // the points into the histogram.
 constexpr int kBlock = 256;
 
+// Equally likely map choices of K orbits for `steps` steps, maps[s][k] for orbit k: two
+// per 64-bit draw of the orbit's own stream (multiply-shift of each half by n: a bias below
+// 2^-32), the high half first; an odd last step uses the high half of one more draw. The
+// baseline runs the streams one after the other; for four orbits, the AVX2 version advances
+// them together in the four 64-bit lanes of a register (xoshiro256+ is adds, shifts and xors), with
+// the same draws and the same choices, bit for bit.
+template <int K>
+void uniformChoicesBase(Xoshiro256 *rngs, int steps, std::uint64_t n, std::uint8_t (*maps)[K])
+{
+    for (int k = 0; k < K; ++k) {
+        Xoshiro256 rng = rngs[k];
+        int s = 0;
+        for (; s + 1 < steps; s += 2) {
+            const std::uint64_t r = rng.next();
+            maps[s][k] = std::uint8_t(((r >> 32) * n) >> 32);
+            maps[s + 1][k] = std::uint8_t(((r & 0xffffffffu) * n) >> 32);
+        }
+        if (s < steps)
+            maps[s][k] = std::uint8_t(((rng.next() >> 32) * n) >> 32);
+        rngs[k] = rng;
+    }
+}
+
+#if defined(AWB_AVX2_KERNELS)
+// Xoshiro256::next in each 64-bit lane of the state st[0..3]; the draws into *result.
+AWB_AVX2_TARGET AWB_INLINE_BODY void xoshiroNext4(__m256i *st, __m256i *result)
+{
+    *result = _mm256_add_epi64(st[0], st[3]);
+    const __m256i t = _mm256_slli_epi64(st[1], 17);
+    st[2] = _mm256_xor_si256(st[2], st[0]);
+    st[3] = _mm256_xor_si256(st[3], st[1]);
+    st[1] = _mm256_xor_si256(st[1], st[2]);
+    st[0] = _mm256_xor_si256(st[0], st[3]);
+    st[2] = _mm256_xor_si256(st[2], t);
+    st[3] = _mm256_or_si256(_mm256_slli_epi64(st[3], 45), _mm256_srli_epi64(st[3], 19));
+}
+
+AWB_AVX2_TARGET void uniformChoices4Avx2(Xoshiro256 *rngs, int steps, std::uint64_t n,
+                                         std::uint8_t (*maps)[4])
+{
+    __m256i st[4];
+    for (int j = 0; j < 4; ++j)
+        st[j] = _mm256_setr_epi64x(std::int64_t(rngs[0].s[j]), std::int64_t(rngs[1].s[j]),
+                                   std::int64_t(rngs[2].s[j]), std::int64_t(rngs[3].s[j]));
+    const __m256i nv = _mm256_set1_epi64x(std::int64_t(n));
+    // Dwords hi0 lo0 hi1 lo1 hi2 lo2 hi3 lo3 -> hi0 hi1 hi2 hi3 | lo0 lo1 lo2 lo3, then the
+    // low byte of each dword to bytes 0..3 of its 128-bit half.
+    const __m256i order = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
+    const __m256i bytes = _mm256_setr_epi8(0, 4, 8, 12, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+                                           -1, -1, 0, 4, 8, 12, -1, -1, -1, -1, -1, -1, -1, -1,
+                                           -1, -1, -1, -1);
+    int s = 0;
+    for (; s + 1 < steps; s += 2) {
+        __m256i r;
+        xoshiroNext4(st, &r);
+        // ((r >> 32) n) >> 32 and ((r mod 2^32) n) >> 32: mul_epu32 takes each lane's low dword.
+        const __m256i hi = _mm256_srli_epi64(_mm256_mul_epu32(_mm256_srli_epi64(r, 32), nv), 32);
+        const __m256i lo = _mm256_srli_epi64(_mm256_mul_epu32(r, nv), 32);
+        const __m256i d = _mm256_or_si256(hi, _mm256_slli_epi64(lo, 32));
+        const __m256i b = _mm256_shuffle_epi8(_mm256_permutevar8x32_epi32(d, order), bytes);
+        const std::int32_t h4 = _mm_cvtsi128_si32(_mm256_castsi256_si128(b));
+        const std::int32_t l4 = _mm_cvtsi128_si32(_mm256_extracti128_si256(b, 1));
+        std::memcpy(maps[s], &h4, 4);
+        std::memcpy(maps[s + 1], &l4, 4);
+    }
+    if (s < steps) {
+        __m256i r;
+        xoshiroNext4(st, &r);
+        const __m256i hi = _mm256_srli_epi64(_mm256_mul_epu32(_mm256_srli_epi64(r, 32), nv), 32);
+        const __m256i b = _mm256_shuffle_epi8(_mm256_permutevar8x32_epi32(hi, order), bytes);
+        const std::int32_t h4 = _mm_cvtsi128_si32(_mm256_castsi256_si128(b));
+        std::memcpy(maps[s], &h4, 4);
+    }
+    alignas(32) std::uint64_t lanes[4][4];
+    for (int j = 0; j < 4; ++j)
+        _mm256_store_si256(reinterpret_cast<__m256i *>(lanes[j]), st[j]);
+    for (int k = 0; k < 4; ++k)
+        for (int j = 0; j < 4; ++j)
+            rngs[k].s[j] = lanes[j][k];
+}
+#endif
+
+template <int K>
+void uniformChoices(Xoshiro256 *rngs, int steps, std::uint64_t n, std::uint8_t (*maps)[K])
+{
+#if defined(AWB_AVX2_KERNELS)
+    if constexpr (K == 4)
+        if (haveAvx2())
+            return uniformChoices4Avx2(rngs, steps, n, maps);
+#endif
+    uniformChoicesBase<K>(rngs, steps, n, maps);
+}
+
 template <int D, int K>
 struct Orbits {
     double x[K][D];
@@ -567,20 +660,7 @@ void chaosBlock(const Flat<D> &F, const AliasTable &pick, Orbits<D, K> &o, int s
 {
     std::uint8_t maps[kBlock][K];
     if (pick.uniform()) {
-        // Two choices from each 64-bit draw (multiply-shift on each half: a bias below 2^-32).
-        const std::uint64_t n = std::uint64_t(pick.size());
-        for (int k = 0; k < K; ++k) {
-            Xoshiro256 rng = o.rng[k];
-            int s = 0;
-            for (; s + 1 < steps; s += 2) {
-                const std::uint64_t r = rng.next();
-                maps[s][k] = std::uint8_t(((r >> 32) * n) >> 32);
-                maps[s + 1][k] = std::uint8_t(((r & 0xffffffffu) * n) >> 32);
-            }
-            if (s < steps)
-                maps[s][k] = std::uint8_t(((rng.next() >> 32) * n) >> 32);
-            o.rng[k] = rng;
-        }
+        uniformChoices<K>(o.rng, steps, std::uint64_t(pick.size()), maps);
     } else {
         for (int k = 0; k < K; ++k) {
             Xoshiro256 rng = o.rng[k];
