@@ -133,7 +133,7 @@ void DensityImage::addCells(Source &o, std::size_t first, std::size_t last)
                                                       "sizes or modes"));
     last = std::min(last, m_buckets.size());
     auto add = [&](std::size_t i) {
-        const DensityBucket src = o.m_buckets[i];
+        DensityBucket src = o.m_buckets[i];
         if (src.n == 0 && src.v == 0)
             return;
         if constexpr (Take)
@@ -141,8 +141,9 @@ void DensityImage::addCells(Source &o, std::size_t first, std::size_t last)
         DensityBucket &dst = m_buckets[i];
         // Every bucket stays below kSpillAt here too (reserve()): when the sum would reach it,
         // this bucket spills, and a source bucket of kSpillAt or more hits (up to 2^24 after
-        // unchecked hits) goes to the spilled sums whole. Rare; the map of spilled sums is
-        // shared by the threads merging other ranges.
+        // unchecked hits) goes to the spilled sums whole (its label, in hits mode, still
+        // merges below). Rare; the map of spilled sums is shared by the threads merging other
+        // ranges.
         if (std::uint64_t(dst.n) + src.n >= kSpillAt) [[unlikely]] {
             static std::mutex spilling;
             std::lock_guard lock(spilling);
@@ -150,11 +151,11 @@ void DensityImage::addCells(Source &o, std::size_t first, std::size_t last)
             if (src.n >= kSpillAt) {
                 auto &s = m_spilled[i];
                 s[0] += src.n;
-                if (m_mode == Accumulation::Density)
+                src.n = 0;
+                if (m_mode == Accumulation::Density) {
                     s[1] += src.v;
-                else if (src.v != 0 && (dst.v == 0 || src.v < dst.v))
-                    dst.v = src.v;
-                return;
+                    src.v = 0;
+                }
             }
         }
         dst.n += src.n;

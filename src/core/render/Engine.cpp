@@ -604,8 +604,9 @@ AWB_AVX2_TARGET void uniformChoices4Avx2(Xoshiro256 *rngs, int steps, std::uint6
     const __m256i bytes = _mm256_setr_epi8(0, 4, 8, 12, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
                                            -1, -1, 0, 4, 8, 12, -1, -1, -1, -1, -1, -1, -1, -1,
                                            -1, -1, -1, -1);
-    int s = 0;
-    for (; s + 1 < steps; s += 2) {
+    // The choices of one draw per orbit: the high halves' (step s) and the low halves' (s + 1),
+    // four bytes each.
+    auto choices = [&](std::int32_t *h4, std::int32_t *l4) AWB_AVX2_TARGET {
         __m256i r;
         xoshiroNext4(st, &r);
         // ((r >> 32) n) >> 32 and ((r mod 2^32) n) >> 32: mul_epu32 takes each lane's low dword.
@@ -613,17 +614,18 @@ AWB_AVX2_TARGET void uniformChoices4Avx2(Xoshiro256 *rngs, int steps, std::uint6
         const __m256i lo = _mm256_srli_epi64(_mm256_mul_epu32(r, nv), 32);
         const __m256i d = _mm256_or_si256(hi, _mm256_slli_epi64(lo, 32));
         const __m256i b = _mm256_shuffle_epi8(_mm256_permutevar8x32_epi32(d, order), bytes);
-        const std::int32_t h4 = _mm_cvtsi128_si32(_mm256_castsi256_si128(b));
-        const std::int32_t l4 = _mm_cvtsi128_si32(_mm256_extracti128_si256(b, 1));
+        *h4 = _mm_cvtsi128_si32(_mm256_castsi256_si128(b));
+        *l4 = _mm_cvtsi128_si32(_mm256_extracti128_si256(b, 1));
+    };
+    int s = 0;
+    std::int32_t h4, l4;
+    for (; s + 1 < steps; s += 2) {
+        choices(&h4, &l4);
         std::memcpy(maps[s], &h4, 4);
         std::memcpy(maps[s + 1], &l4, 4);
     }
-    if (s < steps) {
-        __m256i r;
-        xoshiroNext4(st, &r);
-        const __m256i hi = _mm256_srli_epi64(_mm256_mul_epu32(_mm256_srli_epi64(r, 32), nv), 32);
-        const __m256i b = _mm256_shuffle_epi8(_mm256_permutevar8x32_epi32(hi, order), bytes);
-        const std::int32_t h4 = _mm_cvtsi128_si32(_mm256_castsi256_si128(b));
+    if (s < steps) {  // an odd last step: the high halves of one more draw
+        choices(&h4, &l4);
         std::memcpy(maps[s], &h4, 4);
     }
     alignas(32) std::uint64_t lanes[4][4];
