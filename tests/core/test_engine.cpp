@@ -2,7 +2,8 @@
 // the sink-based iteration drawn by the same rasteriser, pictures do not depend on the number
 // of threads, the density histogram is the invariant measure (unequal probabilities give the
 // pieces their masses), counts stay exact past 2^24 hits in a cell, the tone mapping is
-// monotone, supersampling anti-aliases, and bad input is refused with a message.
+// monotone, supersampling anti-aliases, a picture of one colour keeps counts alone and is the
+// same picture, and bad input is refused with a message.
 
 #include "core/ifs/Random.h"
 #include "core/render/Engine.h"
@@ -11,6 +12,8 @@
 
 #include <QtTest>
 
+#include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 using namespace awb;
@@ -40,6 +43,27 @@ Ifs sierpinski(std::vector<double> probabilities = {})
     }
     ifs.views.push_back({Mat::Identity(2, 2), RowVec::Zero(2)});
     ifs.probabilities = std::move(probabilities);
+    return ifs;
+}
+
+// side^2 maps z -> z R / side + (i, j) / side on the unit square, R a rotation by `angle` (a
+// carpet-like IFS; with side 3 and `skipCentre`, Sierpinski's carpet of 8 maps).
+Ifs gridIfs(int side, bool skipCentre, double angle)
+{
+    Ifs ifs;
+    for (int i = 0; i < side; ++i)
+        for (int j = 0; j < side; ++j) {
+            if (skipCentre && i == side / 2 && j == side / 2)
+                continue;
+            AffineMap f;
+            f.A = Mat(2, 2);
+            f.A << std::cos(angle), std::sin(angle), -std::sin(angle), std::cos(angle);
+            f.A /= side;
+            f.b = RowVec(2);
+            f.b << double(i) / side, double(j) / side;
+            ifs.maps.push_back(f);
+        }
+    ifs.views.push_back({Mat::Identity(2, 2), RowVec::Zero(2)});
     return ifs;
 }
 
@@ -91,6 +115,7 @@ private slots:
     void aliasTableDrawsTheProbabilities();
     void countsStayExactPastTheSpillThreshold();
     void uncheckedHitsStayExactWithTheLargestCoordinate();
+    void oneColourPicturesKeepCountsOnly();
     void polygonsAndSegmentsAreRasterised();
     void toneMappingIsMonotone();
     void supersamplingAntiAliases();
@@ -324,6 +349,88 @@ void TestEngine::uncheckedHitsStayExactWithTheLargestCoordinate()
     QVERIFY_THROWS_EXCEPTION(std::length_error, h2.reserve(DensityImage::kSpillAt + 1));
 }
 
+void TestEngine::oneColourPicturesKeepCountsOnly()
+{
+    // A picture whose labels all have one colour is accumulated as one label (4-byte counts):
+    // the same counts as the coloured picture, cell for cell, and the same pixels as the
+    // coloured histogram toned with that one colour. Random and deterministic iteration,
+    // points and triangles, hits and density, one and two threads, one and 2x2 cells a pixel.
+    const SubdivisionIfs sier = controlPointFractalIfs(sierpinskiControlPointFractal());
+    const StartSet point = StartSet::points(sier.toIfsSpace(pts({{0.37, 0.37}})));
+    const StartSet tri = StartSet::polygon(sier.toIfsSpace(pts({{0, 0}, {1, 0}, {0.5, 0.866}})));
+    const std::vector<Rgb8> one(9, Rgb8{200, 60, 30});
+    for (bool random : {false, true})
+        for (const StartSet *start : {&point, &tri}) {
+            if (random && start == &tri)
+                continue;
+            for (Accumulation mode : {Accumulation::Hits, Accumulation::Density})
+                for (int threads : {1, 2})
+                    for (int ss : {1, 2}) {
+                        EngineJob j = job(sier.ifs, *start, 150, -0.1, -0.1, 1.1, 1.1);
+                        j.random = random;
+                        j.depth = 10;
+                        j.samples = 400001;
+                        j.accumulation = mode;
+                        j.threads = threads;
+                        j.frame.supersample = ss;
+                        j.colours.prefix = 2;
+                        j.colours.labelColours.clear();
+                        for (int l = 0; l < 9; ++l)
+                            j.colours.labelColours.push_back(Rgb8{std::uint8_t(25 * l), 90, 20});
+                        DensityImage coloured, counts;
+                        const IterationStats a = accumulate(j, coloured);
+                        j.colours.labelColours = one;
+                        const IterationStats b = accumulate(j, counts);
+                        QVERIFY(!coloured.oneLabel());
+                        QVERIFY(counts.oneLabel());
+                        QCOMPARE(a.images, b.images);
+                        QCOMPARE(counts.offscreen, coloured.offscreen);
+                        QVERIFY(counts.litCells() > 1000);
+                        QCOMPARE(counts.litCells(), coloured.litCells());
+                        for (std::size_t i = 0; i < counts.size(); ++i)
+                            QCOMPARE(counts.count(i), coloured.count(i));
+                        ToneSettings tone;
+                        tone.mode = mode;
+                        QVERIFY(toneMap(counts, j.frame, tone, one)
+                                == toneMap(coloured, j.frame, tone, one));
+                    }
+        }
+
+    // Past the spill threshold: 3.4e7 unchecked counts (and a few checked) in one cell, merged
+    // into an image holding a whole batch of its own, stay exact.
+    constexpr std::uint64_t batches = 33555, batch = 1000;
+    constexpr std::size_t cell = 4;
+    DensityImage a(3, 2, Accumulation::Density, true);
+    for (std::uint64_t k = 0; k < batches; ++k) {
+        a.reserve(batch);
+        for (std::uint64_t i = 0; i < batch; ++i)
+            a.addCountUnchecked(cell);
+        if (k < 10)
+            a.addCount(cell);
+    }
+    const std::uint64_t total = batches * batch + 10;
+    QCOMPARE(a.count(cell), total);
+    QCOMPARE(a.cell(cell)[1], 0.0);
+    QCOMPARE(a.litCells(), std::uint64_t(1));
+    DensityImage b(3, 2, Accumulation::Density, true);
+    b.reserve(DensityImage::kSpillAt);
+    for (std::uint64_t i = 0; i < DensityImage::kSpillAt; ++i)
+        b.addCountUnchecked(cell);
+    b.merge(a);
+    b.reserve(batch);
+    for (std::uint64_t i = 0; i < batch; ++i)
+        b.addCountUnchecked(cell);
+    QCOMPARE(b.count(cell), total + DensityImage::kSpillAt + batch);
+    // A hits image of one label reads as label 0 wherever it was hit.
+    DensityImage h(3, 2, Accumulation::Hits, true);
+    h.addCount(1);
+    QCOMPARE(h.cell(1), (std::array<double, 2>{1.0, 1.0}));
+    QCOMPARE(h.cell(2), (std::array<double, 2>{0.0, 0.0}));
+    // Images of one label and coloured ones do not merge.
+    DensityImage coloured(3, 2, Accumulation::Density);
+    QVERIFY_THROWS_EXCEPTION(InputError, coloured.merge(a));
+}
+
 void TestEngine::polygonsAndSegmentsAreRasterised()
 {
     // Depth 0 of a big triangle fills it; a segment draws its cells once each.
@@ -507,33 +614,61 @@ void TestEngine::vectorKernelsMatchTheBaseline()
             QVERIFY(sameBuckets(native, baseline));
             QCOMPARE(native.offscreen, baseline.offscreen);
         }
-    // Random iteration: the four orbits' map choices drawn in AVX2 lanes are the baseline's,
-    // whatever the block's parity (samples per stream odd and even, a skip of odd length),
-    // on one and two threads, colour by map and by address.
+    // Random iteration: the four orbits' map choices drawn in AVX2 lanes, and their geometry
+    // advanced in AVX2 lanes (coefficients permuted from tables of up to four maps, or eight
+    // with a blend), are the baseline's, whatever the block's parity (samples per stream odd
+    // and even, a skip of odd length), on one and two threads, colour by map and by address,
+    // and in one colour (counts only): the gasket (3 maps, lifted dimension 2, also with
+    // unequal probabilities), a carpet of 8 rotated maps, a grid of 9 (the scalar loop),
+    // and the cubic B-spline's IFS (2 maps, dimension 4: full matrices in screen space).
     const Ifs gasket = sierpinski();
+    const Ifs unequal = sierpinski({0.5, 0.3, 0.2});
+    const Ifs carpet = gridIfs(3, true, 0.1);
+    const Ifs nine = gridIfs(3, false, 0.0);
     RowVec z0(2);
     z0 << 0.3, 0.3;
-    for (std::uint64_t samples : {std::uint64_t(1000003), std::uint64_t(999 * 8 + 5)})
-        for (int threads : {1, 2})
-            for (int prefix : {1, 2}) {
-                EngineJob j = job(gasket, StartSet::points(Mat(z0)), 128, -0.1, -0.1, 1.1, 1.1);
-                j.random = true;
-                j.samples = samples;
-                j.skip = 21;
-                j.threads = threads;
-                j.colours.prefix = prefix;
-                j.colours.labelColours.assign(9, Rgb8{10, 20, 30});
-                j.accumulation = Accumulation::Density;
-                DensityImage native, baseline;
-                accumulate(j, native);
-                forceBaselineKernels(true);
-                accumulate(j, baseline);
-                forceBaselineKernels(false);
-                QVERIFY(native.litCells() > 1000);
-                QVERIFY2(sameBuckets(native, baseline),
-                         qPrintable(QStringLiteral("samples %1, threads %2, prefix %3")
-                                        .arg(samples).arg(threads).arg(prefix)));
-            }
+    struct Orbit {
+        const Ifs *ifs;
+        RowVec x0;
+        double x0w, y0w, x1w, y1w;
+    };
+    const Orbit orbits[] = {
+        {&gasket, z0, -0.1, -0.1, 1.1, 1.1},
+        {&unequal, z0, -0.1, -0.1, 1.1, 1.1},
+        {&carpet, z0, -0.1, -0.1, 1.1, 1.1},
+        {&nine, z0, -0.1, -0.1, 1.1, 1.1},
+        {&bspline.ifs, bspline.toIfsSpace(pts({{7, -3}})).row(0), -0.5, -1.5, 6.5, 3.5},
+    };
+    for (const Orbit &orbit : orbits)
+        for (std::uint64_t samples : {std::uint64_t(1000003), std::uint64_t(999 * 8 + 5)})
+            for (int threads : {1, 2})
+                for (int prefix : {1, 2, -1}) {  // -1: prefix 1 in one colour
+                    EngineJob j = job(*orbit.ifs, StartSet::points(Mat(orbit.x0)), 128, orbit.x0w,
+                                      orbit.y0w, orbit.x1w, orbit.y1w);
+                    j.random = true;
+                    j.samples = samples;
+                    j.skip = 21;
+                    j.threads = threads;
+                    j.colours.prefix = std::abs(prefix);
+                    j.colours.labelColours.clear();
+                    for (int l = 0; l < 81; ++l)
+                        j.colours.labelColours.push_back(
+                            prefix < 0 ? Rgb8{10, 20, 30}
+                                       : Rgb8{std::uint8_t(l), std::uint8_t(3 * l), 7});
+                    j.accumulation = Accumulation::Density;
+                    DensityImage native, baseline;
+                    accumulate(j, native);
+                    forceBaselineKernels(true);
+                    accumulate(j, baseline);
+                    forceBaselineKernels(false);
+                    QCOMPARE(native.oneLabel(), prefix < 0);
+                    const QString what = QStringLiteral("%1 maps, dim %2, samples %3, threads %4, prefix %5")
+                                             .arg(orbit.ifs->size()).arg(orbit.ifs->dim())
+                                             .arg(samples).arg(threads).arg(prefix);
+                    QVERIFY2(native.litCells() > 60, qPrintable(what));  // the B-spline: 95
+                    QVERIFY2(sameBuckets(native, baseline), qPrintable(what));
+                    QVERIFY2(native.offscreen == baseline.offscreen, qPrintable(what));
+                }
     qInfo("vector kernels here: %s", isa.constData());
 }
 

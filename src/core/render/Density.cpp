@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <mutex>
+#include <type_traits>
 #include <stdexcept>
 
 namespace awb {
@@ -31,21 +32,30 @@ void RasterFrame::validate() const
                                                       "finite"));
 }
 
-DensityImage::DensityImage(int cellsX, int cellsY, Accumulation mode)
-    : m_w(cellsX), m_h(cellsY), m_mode(mode), m_buckets(std::size_t(cellsX) * cellsY)
+DensityImage::DensityImage(int cellsX, int cellsY, Accumulation mode, bool oneLabel)
 {
+    reset(cellsX, cellsY, mode, oneLabel);
 }
 
-void DensityImage::reset(int cellsX, int cellsY, Accumulation mode)
+void DensityImage::reset(int cellsX, int cellsY, Accumulation mode, bool oneLabel)
 {
     m_w = cellsX;
     m_h = cellsY;
     m_mode = mode;
+    m_oneLabel = oneLabel;
     const std::size_t n = std::size_t(cellsX) * cellsY;
-    if (m_buckets.size() == n)
-        std::memset(static_cast<void *>(m_buckets.data()), 0, n * sizeof(DensityBucket));
-    else
-        m_buckets.assign(n, DensityBucket{});
+    // The storage not used is released (a one-label picture after a coloured one, or back).
+    auto fit = [n](auto &cells, bool used) {
+        using Cells = std::remove_reference_t<decltype(cells)>;
+        if (!used)
+            Cells().swap(cells);
+        else if (cells.size() == n)
+            std::memset(static_cast<void *>(cells.data()), 0, n * sizeof(cells[0]));
+        else
+            cells.assign(n, typename Cells::value_type{});
+    };
+    fit(m_buckets, !oneLabel);
+    fit(m_counts, oneLabel);
     m_spilled.clear();
     m_room = kSpillAt;
     offscreen = nonFinite = 0;
@@ -55,15 +65,26 @@ void DensityImage::sweep(std::size_t hits)
 {
     if (hits > kSpillAt)
         throw std::length_error("DensityImage::reserve: more than kSpillAt hits in one batch");
-    const std::size_t n = m_buckets.size();
-    for (std::size_t i = 0; i < n; ++i)
-        if (m_buckets[i].n >= kSpillAt) [[unlikely]]
-            spill(i);
+    const std::size_t n = size();
+    if (m_oneLabel) {
+        for (std::size_t i = 0; i < n; ++i)
+            if (m_counts[i] >= kSpillAt) [[unlikely]]
+                spill(i);
+    } else {
+        for (std::size_t i = 0; i < n; ++i)
+            if (m_buckets[i].n >= kSpillAt) [[unlikely]]
+                spill(i);
+    }
     m_room = kSpillAt;
 }
 
 void DensityImage::spill(std::size_t i)
 {
+    if (m_oneLabel) {
+        m_spilled[i][0] += m_counts[i];
+        m_counts[i] = 0;
+        return;
+    }
     DensityBucket &b = m_buckets[i];
     auto &s = m_spilled[i];
     s[0] += b.n;
@@ -76,6 +97,11 @@ void DensityImage::spill(std::size_t i)
 
 std::array<double, 2> DensityImage::cell(std::size_t i) const
 {
+    if (m_oneLabel) {
+        // Label 0: the coordinate sum is 0 (density), the label word 1 + 0 once hit (hits).
+        const double n = double(count(i));
+        return {n, m_mode == Accumulation::Hits && n > 0 ? 1.0 : 0.0};
+    }
     const DensityBucket &b = m_buckets[i];
     std::array<double, 2> out{double(b.n), double(b.v)};
     if (!m_spilled.empty()) {
@@ -91,7 +117,7 @@ std::array<double, 2> DensityImage::cell(std::size_t i) const
 
 std::uint64_t DensityImage::count(std::size_t i) const
 {
-    std::uint64_t n = m_buckets[i].n;
+    std::uint64_t n = countWord(i);
     if (!m_spilled.empty()) {
         const auto it = m_spilled.find(i);
         if (it != m_spilled.end())
@@ -103,6 +129,11 @@ std::uint64_t DensityImage::count(std::size_t i) const
 std::uint64_t DensityImage::litCells() const
 {
     std::uint64_t lit = 0;
+    if (m_oneLabel) {
+        for (std::size_t i = 0; i < m_counts.size(); ++i)
+            lit += m_counts[i] != 0 || m_spilled.count(i);
+        return lit;
+    }
     for (std::size_t i = 0; i < m_buckets.size(); ++i)
         lit += (m_buckets[i].n != 0 || (m_buckets[i].v != 0 && m_mode == Accumulation::Hits)
                 || m_spilled.count(i));
@@ -111,7 +142,7 @@ std::uint64_t DensityImage::litCells() const
 
 void DensityImage::merge(const DensityImage &o)
 {
-    mergeCells(o, 0, m_buckets.size());
+    mergeCells(o, 0, size());
     mergeRest(o);
 }
 
@@ -128,9 +159,11 @@ void DensityImage::takeCells(DensityImage &o, std::size_t first, std::size_t las
 template <bool Take, class Source>
 void DensityImage::addCells(Source &o, std::size_t first, std::size_t last)
 {
-    if (o.m_w != m_w || o.m_h != m_h || o.m_mode != m_mode)
+    if (o.m_w != m_w || o.m_h != m_h || o.m_mode != m_mode || o.m_oneLabel != m_oneLabel)
         throw InputError(coreTranslate("awb::render", "cannot merge density images of different "
                                                       "sizes or modes"));
+    if (m_oneLabel)
+        return addCounts<Take>(o, first, last);
     last = std::min(last, m_buckets.size());
     auto add = [&](std::size_t i) {
         DensityBucket src = o.m_buckets[i];
@@ -180,13 +213,39 @@ void DensityImage::addCells(Source &o, std::size_t first, std::size_t last)
         add(i);
 }
 
+template <bool Take, class Source>
+void DensityImage::addCounts(Source &o, std::size_t first, std::size_t last)
+{
+    last = std::min(last, m_counts.size());
+    std::uint32_t *dst = m_counts.data();
+    auto *src = o.m_counts.data();
+    for (std::size_t i = first; i < last; ++i) {
+        std::uint32_t n = src[i];
+        if (n == 0)
+            continue;
+        if constexpr (Take)
+            src[i] = 0;
+        // As in addCells: every count stays below kSpillAt.
+        if (std::uint64_t(dst[i]) + n >= kSpillAt) [[unlikely]] {
+            static std::mutex spilling;
+            std::lock_guard lock(spilling);
+            spill(i);
+            if (n >= kSpillAt) {
+                m_spilled[i][0] += n;
+                n = 0;
+            }
+        }
+        dst[i] += n;
+    }
+}
+
 void DensityImage::mergeRest(const DensityImage &o)
 {
     for (const auto &[i, s] : o.m_spilled) {
         auto &d = m_spilled[i];
         for (int k = 0; k < 2; ++k)
             d[k] += s[k];
-        if (m_mode == Accumulation::Hits && m_buckets[i].v == 0)
+        if (m_mode == Accumulation::Hits && !m_oneLabel && m_buckets[i].v == 0)
             m_buckets[i].v = o.m_buckets[i].v;
     }
     offscreen += o.offscreen;
@@ -204,6 +263,7 @@ void DensityImage::takeRest(DensityImage &o)
 void DensityImage::clear()
 {
     std::fill(m_buckets.begin(), m_buckets.end(), DensityBucket{});
+    std::fill(m_counts.begin(), m_counts.end(), 0u);
     m_spilled.clear();
     m_room = kSpillAt;
     offscreen = nonFinite = 0;
@@ -305,8 +365,16 @@ void toneMapInto(const DensityImage &image, const RasterFrame &frame, const Tone
             packed[l] = packPremultiplied(1.0, labels[l].r / 255.0, labels[l].g / 255.0,
                                           labels[l].b / 255.0);
         const std::size_t last = packed.size() - 1;
+        const std::size_t n = std::size_t(W) * H;
+        if (image.oneLabel()) {
+            const std::uint32_t *c = image.counts();
+            for (std::size_t i = 0; i < n; ++i)
+                if (c[i] != 0)
+                    out[i] = packed[0];
+            return;
+        }
         const DensityBucket *b = image.buckets();
-        for (std::size_t i = 0, n = std::size_t(W) * H; i < n; ++i)
+        for (std::size_t i = 0; i < n; ++i)
             if (b[i].n != 0)
                 out[i] = packed[std::min(std::size_t(b[i].v) - 1, last)];
         return;

@@ -4,8 +4,8 @@
 // turns it into pixels. Every raster picture of a curve attractor (the view, `render`, print,
 // the figure sheet, the benches) goes through DensityImage and toneMap().
 //
-// Two ways to accumulate, chosen per picture (8 bytes a cell either way: the histogram of a
-// 1024 x 1024 picture stays in the caches where the attractor lives):
+// Two ways to accumulate, chosen per picture (8 bytes a cell either way, 4 for one label: the
+// histogram of a 1024 x 1024 picture stays in the caches where the attractor lives):
 // - Density: each hit adds 1 to the cell's count and its colour coordinate (0..255, the
 //   position of its label's colour on the picture's colour ramp) to the cell's coordinate sum,
 //   so the count is the invariant measure's mass in the cell (random iteration with the IFS's
@@ -14,6 +14,10 @@
 // - Hits: the cell keeps its count and the smallest colour label that hit it; the picture
 //   is crisp (every lit pixel opaque, one label's exact colour), and independent of the order
 //   of the hits, so a parallel render is pixel-identical to a serial one.
+// A one-label image (every hit carries label 0, colour coordinate 0: the engine's choice for a
+// picture whose labels all have one colour, in either mode) keeps the counts alone, 4 bytes a
+// cell: the scattered hits touch half the memory, and the picture is the same (a density
+// cell's coordinate sum is 0, a hits cell's label 0).
 //
 // The tone mapping of density follows the log-density display of the fractal flame algorithm
 // (S. Draves, E. Reckase, "The Fractal Flame Algorithm", 2003/2008, §4: log scaling, gamma,
@@ -60,17 +64,24 @@ struct DensityBucket {
 class DensityImage {
 public:
     DensityImage() = default;
-    DensityImage(int cellsX, int cellsY, Accumulation mode);
+    DensityImage(int cellsX, int cellsY, Accumulation mode, bool oneLabel = false);
     // Empties the image for a new picture of this size, reusing its memory when it fits (a
     // drag renders many pictures of one size: no allocation and no page faults each time).
-    void reset(int cellsX, int cellsY, Accumulation mode);
+    void reset(int cellsX, int cellsY, Accumulation mode, bool oneLabel = false);
 
     int cellsX() const { return m_w; }
     int cellsY() const { return m_h; }
     Accumulation mode() const { return m_mode; }
-    std::size_t size() const { return m_buckets.size(); }
+    bool oneLabel() const { return m_oneLabel; }
+    std::size_t size() const { return std::size_t(m_w) * std::size_t(m_h); }
 
-    // One hit at cell index i = y * cellsX + x (row 0 at the top).
+    // One hit at cell index i = y * cellsX + x (row 0 at the top). A one-label image takes
+    // addCount only (label 0 and coordinate 0 are implied).
+    void addCount(std::size_t i)
+    {
+        if (++m_counts[i] >= kSpillAt) [[unlikely]]
+            spill(i);
+    }
     void addDensity(std::size_t i, std::uint8_t coordinate)
     {
         if (addDensityWord(i, coordinate) >= kSpillAt) [[unlikely]]
@@ -101,6 +112,7 @@ public:
         addDensityWord(i, coordinate);
     }
     void addHitUnchecked(std::size_t i, std::uint32_t label) { addHitWord(i, label); }
+    void addCountUnchecked(std::size_t i) { ++m_counts[i]; }
 
     // Exact totals of cell i: count and coordinate sum (hits: 1 + the smallest label).
     std::array<double, 2> cell(std::size_t i) const;
@@ -118,8 +130,10 @@ public:
     void takeCells(DensityImage &other, std::size_t first, std::size_t last);
     void takeRest(DensityImage &other);
     void clear();
-    // The buckets, row by row; exact totals only while no bucket has spilled.
+    // The buckets (the counts of a one-label image), row by row; exact totals only while no
+    // bucket has spilled.
     const DensityBucket *buckets() const { return m_buckets.data(); }
+    const std::uint32_t *counts() const { return m_counts.data(); }
     bool hasSpills() const { return !m_spilled.empty(); }
 
     std::uint64_t offscreen = 0;   // hits outside the frame
@@ -159,9 +173,18 @@ private:
     template <bool Take, class Source>
     void addCells(Source &other, std::size_t first, std::size_t last);
 
+    template <bool Take, class Source>
+    void addCounts(Source &other, std::size_t first, std::size_t last);
+    std::uint32_t countWord(std::size_t i) const
+    {
+        return m_oneLabel ? m_counts[i] : m_buckets[i].n;
+    }
+
     int m_w = 0, m_h = 0;
     Accumulation m_mode = Accumulation::Density;
-    std::vector<DensityBucket> m_buckets;
+    bool m_oneLabel = false;
+    std::vector<DensityBucket> m_buckets;  // empty in a one-label image
+    std::vector<std::uint32_t> m_counts;   // a one-label image's cells
     std::size_t m_room = kSpillAt;  // unchecked hits allowed before the next sweep
     // Buckets that reached kSpillAt hits, summed exactly (rare: only huge sample counts).
     std::unordered_map<std::size_t, std::array<std::uint64_t, 2>> m_spilled;

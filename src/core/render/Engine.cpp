@@ -69,7 +69,9 @@ struct Plotter {
             return;
         }
         const std::size_t i = std::size_t(y) * w + x;
-        if (img.mode() == Accumulation::Hits)
+        if (img.oneLabel())
+            img.addCount(i);
+        else if (img.mode() == Accumulation::Hits)
             img.addHit(i, label);
         else
             img.addDensity(i, coords[label]);
@@ -517,17 +519,35 @@ LeafKernels<D> leafKernels()
     return {&fusedRowsBase<D>, &boundsBase, &cellsBase, "baseline"};
 }
 
-template <Accumulation M>
+// How a kernel adds its hits: the smallest label (hits), the colour coordinate (density), or
+// the count alone (a one-label image: a picture of one colour, in either mode).
+enum class Store { Hits, Colours, Counts };
+
+template <Store M>
+inline void addUnchecked(DensityImage &img, std::size_t i, std::uint32_t label,
+                         const std::uint8_t *coords)
+{
+    if constexpr (M == Store::Hits)
+        img.addHitUnchecked(i, label);
+    else if constexpr (M == Store::Colours)
+        img.addDensityUnchecked(i, coords[label]);
+    else
+        img.addCountUnchecked(i);
+}
+
+template <Store M>
 inline void plotCell(DensityImage &img, int w, int h, double sx, double sy, std::uint32_t label,
                      const std::uint8_t *coords)
 {
     // NaN fails both comparisons and counts as off screen.
     if (sx >= 0.0 && sy >= 0.0 && sx < double(w) && sy < double(h)) {
         const std::size_t i = std::size_t(int(sy)) * std::size_t(w) + std::size_t(int(sx));
-        if constexpr (M == Accumulation::Hits)
+        if constexpr (M == Store::Hits)
             img.addHit(i, label);
-        else
+        else if constexpr (M == Store::Colours)
             img.addDensity(i, coords[label]);
+        else
+            img.addCount(i);
     } else {
         ++img.offscreen;
     }
@@ -648,6 +668,107 @@ void uniformChoices(Xoshiro256 *rngs, int steps, std::uint64_t n, std::uint8_t (
     uniformChoicesBase<K>(rngs, steps, n, maps);
 }
 
+// The geometry of four orbits in screen space (toScreenSpace), one step of all four at a time
+// in the four 64-bit lanes of AVX2 registers (orbit k in lane k), ending in the cells of
+// cellIndex. The chosen maps' coefficients come from tables of the maps' values (`lanes`: for
+// coefficient c (A's D x D row by row, then b), maps 0..7 at lanes[8c + i]) by a permute
+// each, not by a load per orbit: one permute with at most four maps, two and a blend with up
+// to eight. The products and sums are the scalar loop's, in its order and without fused
+// multiply-adds: the same numbers bit for bit.
+template <int D>
+using ChaosGeometry = void (*)(const double *lanes, double (*x)[D], const std::uint8_t (*maps)[4],
+                               int steps, int w, int h, std::int32_t (*cells)[4]);
+
+// The coefficient tables of the geometry kernel for up to 8 maps (zeros beyond n).
+template <int D>
+std::vector<double> chaosLanes(const Flat<D> &F)
+{
+    std::vector<double> lanes(std::size_t(D * D + D) * 8, 0.0);
+    for (int i = 0; i < std::min(F.n, 8); ++i) {
+        for (int c = 0; c < D * D; ++c)
+            lanes[std::size_t(c) * 8 + i] = F.a[std::size_t(i) * D * D + c];
+        for (int j = 0; j < D; ++j)
+            lanes[std::size_t(D * D + j) * 8 + i] = F.b[std::size_t(i) * D + j];
+    }
+    return lanes;
+}
+
+#if defined(AWB_AVX2_KERNELS)
+template <int D, bool Wide>
+AWB_AVX2_TARGET void chaosGeometry4Avx2(const double *lanes, double (*x)[D],
+                                        const std::uint8_t (*maps)[4], int steps, int w, int h,
+                                        std::int32_t (*cells)[4])
+{
+    __m256d X[D];
+    for (int j = 0; j < D; ++j)
+        X[j] = _mm256_setr_pd(x[0][j], x[1][j], x[2][j], x[3][j]);
+    const __m256i high = _mm256_set1_epi64x(std::int64_t(1) << 32), three = _mm256_set1_epi64x(3);
+    const __m256d one = _mm256_set1_pd(1.0);
+    const __m128i bias = _mm_set1_epi32(INT_MIN), ones = _mm_set1_epi32(-1), W = _mm_set1_epi32(w);
+    const __m128i wb = _mm_set1_epi32(int(unsigned(w) ^ 0x80000000u));
+    const __m128i hb = _mm_set1_epi32(int(unsigned(h) ^ 0x80000000u));
+    for (int s = 0; s < steps; ++s) {
+        std::int32_t m4;
+        std::memcpy(&m4, maps[s], 4);
+        const __m256i m = _mm256_cvtepu8_epi64(_mm_cvtsi32_si128(m4));
+        // Map i's double is dwords 2i and 2i + 1 of a table (the permute reads i mod 4).
+        const __m256i idx = _mm256_add_epi64(
+            _mm256_add_epi64(_mm256_slli_epi64(m, 1), _mm256_slli_epi64(m, 33)), high);
+        __m256d upper = _mm256_setzero_pd();
+        if constexpr (Wide)
+            upper = _mm256_castsi256_pd(_mm256_cmpgt_epi64(m, three));
+        auto coef = [&](int c) AWB_AVX2_TARGET {
+            const __m256i *t = reinterpret_cast<const __m256i *>(lanes + std::size_t(c) * 8);
+            __m256d v = _mm256_castsi256_pd(_mm256_permutevar8x32_epi32(_mm256_loadu_si256(t), idx));
+            if constexpr (Wide)
+                v = _mm256_blendv_pd(v,
+                                     _mm256_castsi256_pd(_mm256_permutevar8x32_epi32(
+                                         _mm256_loadu_si256(t + 1), idx)),
+                                     upper);
+            return v;
+        };
+        __m256d y[D];
+        for (int j = 0; j < D; ++j)
+            y[j] = coef(D * D + j);
+        for (int q = 0; q < D; ++q)
+            for (int j = 0; j < D; ++j)
+                y[j] = _mm256_add_pd(y[j], _mm256_mul_pd(X[q], coef(q * D + j)));
+        for (int j = 0; j < D; ++j)
+            X[j] = y[j];
+        // cellIndex of (y0, y1) in each lane (as cellsAvx2).
+        const __m128i ux = _mm_sub_epi32(_mm256_cvttpd_epi32(_mm256_add_pd(y[0], one)), _mm_set1_epi32(1));
+        const __m128i uy = _mm_sub_epi32(_mm256_cvttpd_epi32(_mm256_add_pd(y[1], one)), _mm_set1_epi32(1));
+        const __m128i in = _mm_and_si128(_mm_cmplt_epi32(_mm_xor_si128(ux, bias), wb),
+                                         _mm_cmplt_epi32(_mm_xor_si128(uy, bias), hb));
+        const __m128i index = _mm_add_epi32(_mm_mullo_epi32(uy, W), ux);
+        _mm_storeu_si128(reinterpret_cast<__m128i *>(cells[s]),
+                         _mm_or_si128(_mm_and_si128(in, index), _mm_andnot_si128(in, ones)));
+    }
+    alignas(32) double out[4];
+    for (int j = 0; j < D; ++j) {
+        _mm256_store_pd(out, X[j]);
+        for (int k = 0; k < 4; ++k)
+            x[k][j] = out[k];
+    }
+}
+#endif
+
+// The geometry kernel for n maps here, or none (the scalar loop: no AVX2, or more than 8 maps).
+template <int D>
+ChaosGeometry<D> chaosGeometry(int n)
+{
+#if defined(AWB_AVX2_KERNELS)
+    if constexpr (D >= 2) {
+        if (haveAvx2() && n <= 4)
+            return &chaosGeometry4Avx2<D, false>;
+        if (haveAvx2() && n <= 8)
+            return &chaosGeometry4Avx2<D, true>;
+    }
+#endif
+    (void)n;
+    return nullptr;
+}
+
 template <int D, int K>
 struct Orbits {
     double x[K][D];
@@ -655,10 +776,11 @@ struct Orbits {
     Xoshiro256 rng[K];
 };
 
-template <int D, int K, Accumulation M, bool oneView>
+template <int D, int K, Store M, bool oneView>
 void chaosBlock(const Flat<D> &F, const AliasTable &pick, Orbits<D, K> &o, int steps,
                 bool plot, int prefix, std::uint32_t labelMod, DensityImage &img,
-                const std::uint8_t *coords)
+                const std::uint8_t *coords, ChaosGeometry<D> geometry = nullptr,
+                const double *lanes = nullptr)
 {
     std::uint8_t maps[kBlock][K];
     if (pick.uniform()) {
@@ -684,7 +806,20 @@ void chaosBlock(const Flat<D> &F, const AliasTable &pick, Orbits<D, K> &o, int s
     std::uint32_t labels[kBlock][K];
     const double *const allA = F.a.data();
     const double *const allB = F.b.data();
-    for (int s = 0; s < steps; ++s) {
+    int s0 = 0;  // the steps the vector kernel did
+    if constexpr (K == 4 && oneView && D >= 2) {
+        if (geometry) {
+            geometry(lanes, x, maps, steps, w, h, cells);
+            if (prefix > 1)
+                for (int s = 0; s < steps; ++s)
+                    for (int k = 0; k < K; ++k) {
+                        label[k] = (label[k] * std::uint32_t(F.n) + maps[s][k]) % labelMod;
+                        labels[s][k] = label[k];
+                    }
+            s0 = steps;
+        }
+    }
+    for (int s = s0; s < steps; ++s) {
         for (int k = 0; k < K; ++k) {
             const int i = maps[s][k];
             const double *A = allA + std::size_t(i) * D * D;
@@ -736,17 +871,18 @@ void chaosBlock(const Flat<D> &F, const AliasTable &pick, Orbits<D, K> &o, int s
                     ++img.offscreen;
                     continue;
                 }
-                const std::uint32_t l = prefix == 1 ? maps[s][k] : prefix == 0 ? 0u : labels[s][k];
-                if constexpr (M == Accumulation::Hits)
-                    img.addHitUnchecked(std::size_t(c), l);
-                else
-                    img.addDensityUnchecked(std::size_t(c), coords[l]);
+                if constexpr (M == Store::Counts) {
+                    img.addCountUnchecked(std::size_t(c));
+                } else {
+                    const std::uint32_t l = prefix == 1 ? maps[s][k] : prefix == 0 ? 0u : labels[s][k];
+                    addUnchecked<M>(img, std::size_t(c), l, coords);
+                }
             }
     }
 }
 
 // Random iteration of streams [first, last) (Random.h), kInterleave orbits at a time.
-template <int D, Accumulation M, bool OneView>
+template <int D, Store M, bool OneView>
 IterationStats chaosKernel(const Flat<D> &F, const AliasTable &pick, const RowVec &x0,
                            const EngineJob &job, const std::uint8_t *colours, int first, int last,
                            DensityImage &img, const Progress &progress)
@@ -757,6 +893,10 @@ IterationStats chaosKernel(const Flat<D> &F, const AliasTable &pick, const RowVe
         labelMod *= std::uint32_t(F.n);
     IterationStats stats;
     constexpr int K = kInterleave;
+    static_assert(K == 4, "the vector geometry advances four orbits");
+    // The vector geometry runs in screen space (one view), where the cells are coordinates.
+    const ChaosGeometry<D> geometry = OneView ? chaosGeometry<D>(F.n) : nullptr;
+    const std::vector<double> lanes = geometry ? chaosLanes(F) : std::vector<double>();
     for (int g = first; g < last; g += K) {
         // A group of K streams (fewer at the end: those run one by one below).
         const int members = std::min(K, last - g);
@@ -791,7 +931,7 @@ IterationStats chaosKernel(const Flat<D> &F, const AliasTable &pick, const RowVe
         }
         for (int sk = job.skip; sk > 0; sk -= kBlock)
             chaosBlock<D, K, M, OneView>(F, pick, o, std::min(sk, kBlock), false, prefix, labelMod, img,
-                                colours);
+                                         colours, geometry, lanes.data());
         std::uint64_t common = left[0];
         for (int k = 1; k < K; ++k)
             common = std::min(common, left[k]);
@@ -799,7 +939,8 @@ IterationStats chaosKernel(const Flat<D> &F, const AliasTable &pick, const RowVe
         std::uint64_t sinceCheck = 0;
         while (common > 0) {
             const int steps = int(std::min<std::uint64_t>(common, kBlock));
-            chaosBlock<D, K, M, OneView>(F, pick, o, steps, true, prefix, labelMod, img, colours);
+            chaosBlock<D, K, M, OneView>(F, pick, o, steps, true, prefix, labelMod, img, colours,
+                                         geometry, lanes.data());
             common -= std::uint64_t(steps);
             for (int k = 0; k < K; ++k)
                 left[k] -= std::uint64_t(steps);
@@ -931,7 +1072,7 @@ struct FusedLeaves {
 // Depth-first deterministic iteration of one thread: buf[level] holds the images of the start
 // set after `level` maps (the innermost first); the last T.m levels go through the fused
 // table T.
-template <int D, Accumulation M>
+template <int D, Store M>
 class DfsKernel {
 public:
     DfsKernel(const Flat<D> &F, const FusedLeaves<D> &T, const EngineJob &job,
@@ -1042,11 +1183,8 @@ private:
                             ++m_img.offscreen;
                             continue;
                         }
-                        if constexpr (M == Accumulation::Hits)
-                            m_img.addHitUnchecked(std::size_t(cell), m_labels[std::size_t(v)]);
-                        else
-                            m_img.addDensityUnchecked(std::size_t(cell),
-                                                      m_coords[m_labels[std::size_t(v)]]);
+                        addUnchecked<M>(m_img, std::size_t(cell), m_labels[std::size_t(v)],
+                                        m_coords);
                     }
                 }
                 continue;
@@ -1064,11 +1202,7 @@ private:
                 const std::int32_t c0 = m_cells[std::size_t(v)];
                 const bool nan = sum[2 * v] != sum[2 * v] || sum[2 * v + 1] != sum[2 * v + 1];
                 if (c0 >= 0 && c0 == m_cells2[std::size_t(v)] && !nan) {
-                    if constexpr (M == Accumulation::Hits)
-                        m_img.addHitUnchecked(std::size_t(c0), m_labels[std::size_t(v)]);
-                    else
-                        m_img.addDensityUnchecked(std::size_t(c0),
-                                                  m_coords[m_labels[std::size_t(v)]]);
+                    addUnchecked<M>(m_img, std::size_t(c0), m_labels[std::size_t(v)], m_coords);
                     continue;
                 }
                 for (int r = 0; r < m_n; ++r) {
@@ -1174,18 +1308,20 @@ std::vector<std::vector<int>> splitTasks(int N, int depth, int threads)
 struct Histograms {
     std::vector<DensityImage *> images;
     std::vector<char> clean;
+    bool oneLabel = false;  // counts only (a picture of one colour)
 
     // Called by thread t before it draws.
     void prepare(int t, const EngineJob &job) const
     {
         DensityImage &img = *images[std::size_t(t)];
         if (!clean[std::size_t(t)] || img.cellsX() != job.frame.cellsX()
-            || img.cellsY() != job.frame.cellsY() || img.mode() != job.accumulation)
-            img.reset(job.frame.cellsX(), job.frame.cellsY(), job.accumulation);
+            || img.cellsY() != job.frame.cellsY() || img.mode() != job.accumulation
+            || img.oneLabel() != oneLabel)
+            img.reset(job.frame.cellsX(), job.frame.cellsY(), job.accumulation, oneLabel);
     }
 };
 
-template <int D, Accumulation M>
+template <int D, Store M>
 IterationStats runFixed(const EngineJob &job, const std::vector<CellView> &cv,
                         const Histograms &hist, const IterationControl &control)
 {
@@ -1249,7 +1385,7 @@ IterationStats runFixed(const EngineJob &job, const std::vector<CellView> &cv,
     return stats;
 }
 
-template <Accumulation M, int D = 1>
+template <Store M, int D = 1>
 IterationStats dispatch(int dim, const EngineJob &job, const std::vector<CellView> &cv,
                         const Histograms &hist, const IterationControl &control)
 {
@@ -1331,9 +1467,25 @@ IterationStats accumulate(const EngineJob &job, DensityImage &out, const Iterati
 
     IterationStats stats;
     if (fixed) {
-        stats = job.accumulation == Accumulation::Hits
-                    ? dispatch<Accumulation::Hits>(ifs.dim(), job, cv, hist, control)
-                    : dispatch<Accumulation::Density>(ifs.dim(), job, cv, hist, control);
+        // A picture whose labels all have one colour is the same picture with one label: its
+        // histograms keep the counts alone (half the memory the hits touch), and the kernels
+        // skip the labels' arithmetic.
+        bool oneColour = true;
+        for (std::uint64_t l = 1; l < labels; ++l) {
+            const Rgb8 &a = job.colours.labelColours[l], &b = job.colours.labelColours[0];
+            oneColour = oneColour && a.r == b.r && a.g == b.g && a.b == b.b;
+        }
+        hist.oneLabel = oneColour;
+        if (oneColour) {
+            EngineJob one = job;
+            one.colours.prefix = 0;
+            one.colours.labelColours.resize(1);
+            stats = dispatch<Store::Counts>(ifs.dim(), one, cv, hist, control);
+        } else {
+            stats = job.accumulation == Accumulation::Hits
+                        ? dispatch<Store::Hits>(ifs.dim(), job, cv, hist, control)
+                        : dispatch<Store::Colours>(ifs.dim(), job, cv, hist, control);
+        }
     } else {
         // Large dimensions: the sink-based iteration into the same rasteriser.
         std::vector<std::unique_ptr<DensitySink>> sinks;
