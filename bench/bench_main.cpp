@@ -8,7 +8,8 @@
 //   plain kernel   a chaos game and a depth-first iteration of ~100 lines each (fixed
 //                  dimension, xoshiro, one uint32 histogram): what a plain program reaches;
 //   deterministic  the engine (core/render/Engine.h) drawing F^k(X0) into its histogram;
-//   chaos game     the engine's random iteration into its histogram;
+//   chaos game     the engine's random iteration into its histogram (one colour: counts
+//                  alone; colour by map: counts and colour sums);
 //   normal-vector  001's Koch scheme (polygons, not the raster engine).
 // Each engine line ends with its ratio to the plain kernel and to the machine limit.
 
@@ -280,9 +281,12 @@ void deterministic(const std::string &name, const Ifs &ifs, const StartSet &star
 }
 
 void chaos(const std::string &name, const Ifs &ifs, const RowVec &x0, std::uint64_t samples,
-           int threads, double plainRate, double incrementRate)
+           int threads, double plainRate, double incrementRate, bool colourByMap = false)
 {
     EngineJob job = jobFor(ifs, StartSet::points(Mat(x0)), threads);
+    if (colourByMap)  // a colour per map: the histogram keeps colour sums (8 bytes a cell)
+        for (std::size_t i = 0; i < job.colours.labelColours.size(); ++i)
+            job.colours.labelColours[i] = Rgb8{std::uint8_t(60 * i), 120, std::uint8_t(200 - 60 * i)};
     job.random = true;
     job.samples = samples;
     job.accumulation = Accumulation::Density;
@@ -368,6 +372,9 @@ int main(int argc, char **argv)
     for (int threads : {1, 2})
         chaos("Sierpinski in the plane", sier2, z0, chaosSamples, threads, plainRate[threads],
               limits.increments[threads]);
+    for (int threads : {1, 2})
+        chaos("Sierpinski, colour by map", sier2, z0, chaosSamples, threads, plainRate[threads],
+              limits.increments[threads], true);
 
     // 000 §4.2: the Sierpinski gasket with 6 control points (lifted 6 x 6 matrices) at depth 13.
     const SubdivisionIfs sier = controlPointFractalIfs(sierpinskiControlPointFractal());
