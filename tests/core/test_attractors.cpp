@@ -9,6 +9,7 @@
 #include <QtTest>
 #include <algorithm>
 #include <map>
+#include <string>
 
 using namespace awb;
 
@@ -231,16 +232,21 @@ void TestAttractors::iterateAlongFollowsTheCurve()
     ends << s.lifting.lifted.row(0).head(3), s.lifting.lifted.row(3).head(3);
     const StartSet chord = StartSet::polyline(ends);
     const int depth = 7;
-    std::map<std::vector<std::uint8_t>, Mat> byIterate;
+    // Addresses as byte strings (std::string compares its chars as unsigned: the addresses'
+    // lexicographic order).
+    auto address = [](const std::uint8_t *a, int n) {
+        return std::string(reinterpret_cast<const char *>(a), std::size_t(n));
+    };
+    std::map<std::string, Mat> byIterate;
     CallbackSink collect([&](const Mat &v, StartSet::Kind, const std::uint8_t *a, int n) {
-        byIterate[std::vector<std::uint8_t>(a, a + n)] = v;
+        byIterate[address(a, n)] = v;
     });
     iterate(s.ifs, chord, depth, collect);
-    std::vector<std::vector<std::uint8_t>> order;
+    std::vector<std::string> order;
     std::vector<Mat> images;
     CallbackSink along([&](const Mat &v, StartSet::Kind k, const std::uint8_t *a, int n) {
         QVERIFY(k == StartSet::Kind::Polyline);
-        order.emplace_back(a, a + n);
+        order.push_back(address(a, n));
         images.push_back(v);
     });
     const IterationStats stats = iterateAlong(s.ifs, chord, depth, along);
