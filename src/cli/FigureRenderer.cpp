@@ -129,10 +129,17 @@ Frame frameFor(const FigureSpec &spec, const QRectF &target)
     return {cx - hw, cy - hh, cx + hw, cy + hh, target};
 }
 
+// The colour of an image with address a (n symbols) in the figure's colouring.
+QColor styleColor(const FigureSpec &spec, const std::uint8_t *a, int n)
+{
+    const int maps = spec.ifs ? std::max(1, spec.ifs->size()) : 1;
+    return attractorAddressColor(spec.colorMode, spec.prefixLength, spec.palette, maps, a, n);
+}
+
 void drawVector(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
 {
     CallbackSink sink([&](const Mat &v, StartSet::Kind kind, const std::uint8_t *a, int n) {
-        const QColor c = mapColor(n > 0 ? a[0] : 0);
+        const QColor c = styleColor(spec, a, n);
         for (const Projection &view : viewsOf(spec)) {
             const Mat q = project(view, v);
             QPolygonF poly;
@@ -170,7 +177,7 @@ bool drawCurvePaths(QPainter &p, const FigureSpec &spec, const Frame &f, int dep
     const QTransform toLogical(sx, 0, 0, -sy, f.target.left() - f.x0 * sx,
                                f.target.top() + f.y1 * sy);
     CurvePathSink sink(viewsOf(spec), toLogical, devicePixelsPerLogical(p),
-                       [](const std::uint8_t *a, int n) { return mapColor(n > 0 ? a[0] : 0); });
+                       [&spec](const std::uint8_t *a, int n) { return styleColor(spec, a, n); });
     std::atomic<bool> stop{false};
     IterationControl control;
     control.cancel = &stop;
@@ -204,7 +211,9 @@ void drawRaster(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
     r.world = QRectF(f.x0, f.y0, f.x1 - f.x0, f.y1 - f.y0);
     r.size = QSize(std::max(1, int(f.target.width() * scale)),
                    std::max(1, int(f.target.height() * scale)));
-    r.colorMode = AttractorColorMode::ByMap;
+    r.colorMode = spec.colorMode;
+    r.prefixLength = spec.prefixLength;
+    r.palette = spec.palette;
     r.tone = spec.tone;
     r.supersample = spec.supersample;
     r.threads = spec.threads;

@@ -1,6 +1,8 @@
 // attractor-cli end to end: the bundled figures render to real, non-empty images; bad use gives
-// the exit codes and messages a command-line user expects.
+// the exit codes and messages a command-line user expects; `render` draws an item in its own
+// colours (style.color_by and style.colors), as the application's view does.
 
+#include <QFile>
 #include <QImage>
 #include <QProcess>
 #include <QTemporaryDir>
@@ -13,6 +15,7 @@ class TestCli : public QObject {
 private slots:
     void examplesRenderToPng();
     void usageErrors();
+    void renderUsesTheItemsColours();
 
 private:
     QString cli() const
@@ -74,6 +77,58 @@ void TestCli::usageErrors()
     QVERIFY(out.contains("--out"));
     QCOMPARE(run({"examples", "--list"}, &out), 0);
     QCOMPARE(out.count('\n'), 3);
+}
+
+void TestCli::renderUsesTheItemsColours()
+{
+    // The three-map gasket (bench/sierpinski-plane.awb) by random iteration, drawn crisp (hits):
+    // every lit pixel has exactly its image's colour.
+    auto project = [](const QString &style) {
+        return QStringLiteral(
+                   R"({"format": "attractor-workbench", "version": 1, "items": [
+                   {"type": "subdivision-curve", "name": "gasket",
+                    "scheme": {"kind": "matrices", "matrices": [
+                      [[1, 0, 0], [0.5, 0.5, 0], [0.5, 0, 0.5]],
+                      [[0.5, 0.5, 0], [0, 1, 0], [0, 0.5, 0.5]],
+                      [[0.5, 0, 0.5], [0, 0.5, 0.5], [0, 0, 1]]]},
+                    "control_points": [[0, 0], [1, 0], [0.5, 1]],
+                    "algorithm": {"mode": "random", "samples": 200000, "seed": 1},
+                    "style": %1}]})")
+            .arg(style)
+            .toUtf8();
+    };
+    QTemporaryDir dir;
+    auto render = [&](const QString &name, const QString &style) {
+        QFile f(dir.filePath(name + ".awb"));
+        f.open(QIODevice::WriteOnly);
+        f.write(project(style));
+        f.close();
+        const QString png = dir.filePath(name + ".png");
+        QString err;
+        const int code = run({"render", f.fileName(), "--tone", "hits", "--out", png}, nullptr, &err);
+        if (code != 0)
+            qWarning("%s", qPrintable(err));
+        return QImage(png).convertToFormat(QImage::Format_RGB32);
+    };
+    auto pixelsOf = [](const QImage &img, QRgb colour) {
+        int n = 0;
+        for (int y = 0; y < img.height(); ++y)
+            for (int x = 0; x < img.width(); ++x)
+                n += img.pixel(x, y) == colour;
+        return n;
+    };
+    const QRgb palette[3] = {qRgb(0xe6, 0x39, 0x46), qRgb(0x2a, 0x9d, 0x8f), qRgb(0x26, 0x46, 0x53)};
+    const QImage byMap = render("by-map", R"({"color_by": "map", "colors": ["#e63946", "#2a9d8f", "#264653"]})");
+    QVERIFY(!byMap.isNull());
+    for (QRgb c : palette)
+        QVERIFY2(pixelsOf(byMap, c) > 2000, qPrintable(QString::number(pixelsOf(byMap, c))));
+    const QImage one = render("one", R"({"color_by": "none", "colors": ["#2a9d8f"]})");
+    QVERIFY(!one.isNull());
+    QVERIFY(pixelsOf(one, palette[1]) > 6000);
+    QCOMPARE(pixelsOf(one, palette[0]) + pixelsOf(one, palette[2]), 0);
+    // The same lit pixels either way: the colours change, not the attractor.
+    QCOMPARE(pixelsOf(one, palette[1]),
+             pixelsOf(byMap, palette[0]) + pixelsOf(byMap, palette[1]) + pixelsOf(byMap, palette[2]));
 }
 
 QTEST_GUILESS_MAIN(TestCli)
