@@ -133,7 +133,8 @@ Frame frameFor(const FigureSpec &spec, const QRectF &target)
 QColor styleColor(const FigureSpec &spec, const std::uint8_t *a, int n)
 {
     const int maps = spec.ifs ? std::max(1, spec.ifs->size()) : 1;
-    return attractorAddressColor(spec.colorMode, spec.prefixLength, spec.palette, maps, a, n);
+    const AttractorColouring &c = spec.colouring;
+    return attractorAddressColor(c.mode, c.prefixLength, c.palette, maps, a, n);
 }
 
 void drawVector(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
@@ -211,9 +212,9 @@ void drawRaster(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
     r.world = QRectF(f.x0, f.y0, f.x1 - f.x0, f.y1 - f.y0);
     r.size = QSize(std::max(1, int(f.target.width() * scale)),
                    std::max(1, int(f.target.height() * scale)));
-    r.colorMode = spec.colorMode;
-    r.prefixLength = spec.prefixLength;
-    r.palette = spec.palette;
+    r.colorMode = spec.colouring.mode;
+    r.prefixLength = spec.colouring.prefixLength;
+    r.palette = spec.colouring.palette;
     r.tone = spec.tone;
     r.supersample = spec.supersample;
     r.threads = spec.threads;

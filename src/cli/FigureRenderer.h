@@ -44,11 +44,7 @@ struct FigureSpec {
     std::vector<Mat> polygons;         // figures that are polygons (normal-vector curves)
     std::vector<bool> polygonsClosed;  // per polygon: closed (missing entries: open)
     std::vector<FigurePanel> panels;
-    // The attractor's colours (an item's style): by map, by address prefix, or one colour, from
-    // `palette` (empty: the application's own colours).
-    AttractorColorMode colorMode = AttractorColorMode::ByMap;
-    int prefixLength = 1;
-    QList<QColor> palette;
+    AttractorColouring colouring;      // the attractor's colours (default: by map)
     // Raster panels (deep levels, random iteration): hits or log density, anti-aliasing, threads.
     ToneSettings tone;
     int supersample = 1;

@@ -580,14 +580,7 @@ void renderFigure(const Project &project, AttractorItem *item, const FigureOptio
             ? Accumulation::Density
             : Accumulation::Hits;
     spec.tone.gamma = o.gamma ? *o.gamma : item->style().gamma;
-    // The item's colours, as the application's view draws them.
-    const StyleSpec &style = item->style();
-    spec.colorMode = style.colorBy == StyleSpec::ColorBy::Address ? AttractorColorMode::ByAddress
-                     : style.colorBy == StyleSpec::ColorBy::None  ? AttractorColorMode::Single
-                                                                  : AttractorColorMode::ByMap;
-    spec.prefixLength = std::clamp(style.prefixLength, 1, 3);
-    for (const QString &c : style.colors)
-        spec.palette.append(QColor(c));
+    spec.colouring = attractorColouring(item->style());  // as the application's view draws it
     spec.tone.vibrancy = o.vibrancy;
     spec.supersample = o.supersample;
     if (o.threads > 0)

@@ -3,6 +3,7 @@
 #include "core/analysis/Spectrum.h"
 #include "core/ifs/Random.h"
 #include "core/render/Engine.h"
+#include "model/ItemValues.h"
 
 #include <QElapsedTimer>
 
@@ -168,6 +169,20 @@ QImage renderAttractorImage(const RenderRequest &r, int depth, std::uint64_t sam
         info->litPixels = lit;
     }
     return image;
+}
+
+AttractorColouring attractorColouring(const StyleSpec &style)
+{
+    AttractorColouring c;
+    switch (style.colorBy) {
+    case StyleSpec::ColorBy::Map: c.mode = AttractorColorMode::ByMap; break;
+    case StyleSpec::ColorBy::Address: c.mode = AttractorColorMode::ByAddress; break;
+    case StyleSpec::ColorBy::None: c.mode = AttractorColorMode::Single; break;
+    }
+    c.prefixLength = std::clamp(style.prefixLength, 1, 3);
+    for (const QString &name : style.colors)
+        c.palette.append(QColor(name));
+    return c;
 }
 
 QColor attractorMapColor(int i)

@@ -81,6 +81,17 @@ inline QImage renderAttractorImage(const RenderRequest &request, RenderInfo *inf
     return renderAttractorImage(request, request.depth, request.samples, info, control);
 }
 
+struct StyleSpec;  // model/ItemValues.h
+
+// An item's colouring, read from its style (color_by, prefix_length, colors): the view, export
+// and `attractor-cli render` all draw with it. An empty palette means the application's own.
+struct AttractorColouring {
+    AttractorColorMode mode = AttractorColorMode::ByMap;
+    int prefixLength = 1;  // 1..3
+    QList<QColor> palette;
+};
+AttractorColouring attractorColouring(const StyleSpec &style);
+
 // Default qualitative colours for maps and the default address gradient.
 QColor attractorMapColor(int i);
 QList<QColor> defaultAddressGradient();

@@ -175,20 +175,13 @@ void DensityImage::addCells(Source &o, std::size_t first, std::size_t last)
         // Every bucket stays below kSpillAt here too (reserve()): when the sum would reach it,
         // this bucket spills, and a source bucket of kSpillAt or more hits (up to 2^24 after
         // unchecked hits) goes to the spilled sums whole (its label, in hits mode, still
-        // merges below). Rare; the map of spilled sums is shared by the threads merging other
-        // ranges.
+        // merges below).
         if (std::uint64_t(dst.n) + src.n >= kSpillAt) [[unlikely]] {
-            static std::mutex spilling;
-            std::lock_guard lock(spilling);
-            spill(i);
-            if (src.n >= kSpillAt) {
-                auto &s = m_spilled[i];
-                s[0] += src.n;
+            const bool density = m_mode == Accumulation::Density;
+            if (spillForMerge(i, src.n, density ? src.v : 0)) {
                 src.n = 0;
-                if (m_mode == Accumulation::Density) {
-                    s[1] += src.v;
+                if (density)
                     src.v = 0;
-                }
             }
         }
         dst.n += src.n;
@@ -213,6 +206,20 @@ void DensityImage::addCells(Source &o, std::size_t first, std::size_t last)
         add(i);
 }
 
+bool DensityImage::spillForMerge(std::size_t i, std::uint32_t n, std::uint32_t sum)
+{
+    // Rare; the map of spilled sums is shared by the threads merging other ranges.
+    static std::mutex spilling;
+    std::lock_guard lock(spilling);
+    spill(i);
+    if (n < kSpillAt)
+        return false;
+    auto &s = m_spilled[i];
+    s[0] += n;
+    s[1] += sum;
+    return true;
+}
+
 template <bool Take, class Source>
 void DensityImage::addCounts(Source &o, std::size_t first, std::size_t last)
 {
@@ -226,15 +233,8 @@ void DensityImage::addCounts(Source &o, std::size_t first, std::size_t last)
         if constexpr (Take)
             src[i] = 0;
         // As in addCells: every count stays below kSpillAt.
-        if (std::uint64_t(dst[i]) + n >= kSpillAt) [[unlikely]] {
-            static std::mutex spilling;
-            std::lock_guard lock(spilling);
-            spill(i);
-            if (n >= kSpillAt) {
-                m_spilled[i][0] += n;
-                n = 0;
-            }
-        }
+        if (std::uint64_t(dst[i]) + n >= kSpillAt && spillForMerge(i, n, 0)) [[unlikely]]
+            n = 0;
         dst[i] += n;
     }
 }

@@ -175,6 +175,10 @@ private:
 
     template <bool Take, class Source>
     void addCounts(Source &other, std::size_t first, std::size_t last);
+    // A merge's rare path, when cell i's hits and the n to be added reach kSpillAt: cell i
+    // spills, and a source of n >= kSpillAt hits (colour sum `sum`) goes to the spilled sums
+    // whole (true: the caller adds nothing more of it to the bucket).
+    bool spillForMerge(std::size_t i, std::uint32_t n, std::uint32_t sum);
     std::uint32_t countWord(std::size_t i) const
     {
         return m_oneLabel ? m_counts[i] : m_buckets[i].n;

@@ -871,12 +871,8 @@ void chaosBlock(const Flat<D> &F, const AliasTable &pick, Orbits<D, K> &o, int s
                     ++img.offscreen;
                     continue;
                 }
-                if constexpr (M == Store::Counts) {
-                    img.addCountUnchecked(std::size_t(c));
-                } else {
-                    const std::uint32_t l = prefix == 1 ? maps[s][k] : prefix == 0 ? 0u : labels[s][k];
-                    addUnchecked<M>(img, std::size_t(c), l, coords);
-                }
+                const std::uint32_t l = prefix == 1 ? maps[s][k] : prefix == 0 ? 0u : labels[s][k];
+                addUnchecked<M>(img, std::size_t(c), l, coords);
             }
     }
 }

@@ -108,16 +108,6 @@ QList<MapSpectrum> mapSpectra(const DerivedIfs &d)
     return maps;
 }
 
-AttractorColorMode colorMode(StyleSpec::ColorBy by)
-{
-    switch (by) {
-    case StyleSpec::ColorBy::Map: return AttractorColorMode::ByMap;
-    case StyleSpec::ColorBy::Address: return AttractorColorMode::ByAddress;
-    case StyleSpec::ColorBy::None: break;
-    }
-    return AttractorColorMode::Single;
-}
-
 } // namespace
 
 namespace {
@@ -326,12 +316,11 @@ void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
     SurfaceView::RenderSettings rs = m_surface->renderSettings();
     rs.depth = m_maxDepth > 0 ? std::min(item->algorithm().depth, m_maxDepth)
                               : item->algorithm().depth;
-    rs.colorMode = colorMode(item->style().colorBy);
-    rs.prefixLength = std::clamp(item->style().prefixLength, 1, 3);
+    const AttractorColouring colouring = attractorColouring(item->style());
+    rs.colorMode = colouring.mode;
+    rs.prefixLength = colouring.prefixLength;
     rs.pointSize = item->style().pointSize;
-    rs.palette.clear();
-    for (const QString &c : item->style().colors)
-        rs.palette.append(QColor(c));
+    rs.palette = colouring.palette;
     if (rs.palette.isEmpty())
         rs.palette = m_palette;
     m_surface->setRenderSettings(rs);
@@ -462,8 +451,9 @@ void ItemController::refreshNow()
         rs.depth = m_maxDepth > 0 ? std::min(alg.depth, m_maxDepth) : alg.depth;
         rs.samples = std::uint64_t(std::max<qint64>(1, alg.samples));
         rs.seed = std::uint64_t(alg.seed);
-        rs.colorMode = colorMode(item->style().colorBy);
-        rs.prefixLength = std::clamp(item->style().prefixLength, 1, 3);
+        const AttractorColouring colouring = attractorColouring(item->style());
+        rs.colorMode = colouring.mode;
+        rs.prefixLength = colouring.prefixLength;
         rs.dotRadius = std::clamp(int(std::lround(item->style().pointSize / 2.0)), 0, 4);
         rs.tone.mode = item->style().densityTone(alg.mode == AlgorithmSpec::Mode::Random)
                            ? Accumulation::Density
@@ -472,9 +462,7 @@ void ItemController::refreshNow()
         // Density shows the measure itself: no growing of the points.
         if (rs.tone.mode == Accumulation::Density)
             rs.dotRadius = 0;
-        rs.palette.clear();
-        for (const QString &c : item->style().colors)
-            rs.palette.append(QColor(c));
+        rs.palette = colouring.palette;
         if (rs.palette.isEmpty())
             rs.palette = m_palette;
         if (m_highlightedMap >= 0) {
