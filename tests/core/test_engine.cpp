@@ -116,6 +116,7 @@ private slots:
     void countsStayExactPastTheSpillThreshold();
     void uncheckedHitsStayExactWithTheLargestCoordinate();
     void oneColourPicturesKeepCountsOnly();
+    void largeHistogramsSitOnHugePageBoundaries();
     void polygonsAndSegmentsAreRasterised();
     void toneMappingIsMonotone();
     void supersamplingAntiAliases();
@@ -429,6 +430,34 @@ void TestEngine::oneColourPicturesKeepCountsOnly()
     // Images of one label and coloured ones do not merge.
     DensityImage coloured(3, 2, Accumulation::Density);
     QVERIFY_THROWS_EXCEPTION(InputError, coloured.merge(a));
+}
+
+void TestEngine::largeHistogramsSitOnHugePageBoundaries()
+{
+    // A histogram of 2 MiB or more starts on a 2 MiB boundary (the transparent huge pages
+    // that keep the chaos game's random hits out of the page table); a small one is an
+    // ordinary block. Its cells start at zero and keep their hits through a reset to another
+    // size and back.
+    const auto aligned = [](const void *p) {
+        return reinterpret_cast<std::uintptr_t>(p) % (std::uintptr_t(2) << 20) == 0;
+    };
+    DensityImage img(1024, 1024, Accumulation::Density);
+    QVERIFY(aligned(img.buckets()));
+    for (std::size_t i = 0; i < img.size(); i += 4099)
+        QCOMPARE(img.count(i), std::uint64_t(0));
+    img.addDensity(img.size() - 1, 200);
+    QCOMPARE(img.cell(img.size() - 1)[1], 200.0);
+    img.reset(1024, 1024, Accumulation::Density, true);
+    QVERIFY(aligned(img.counts()));
+    img.addCount(img.size() - 1);
+    QCOMPARE(img.count(img.size() - 1), std::uint64_t(1));
+    img.reset(30, 20, Accumulation::Hits);
+    QCOMPARE(img.count(599), std::uint64_t(0));
+    img.addHit(599, 3);
+    QCOMPARE(img.cell(599)[1], 4.0);
+    img.reset(1024, 1024, Accumulation::Density);
+    QCOMPARE(img.count(img.size() - 1), std::uint64_t(0));
+    QCOMPARE(img.litCells(), std::uint64_t(0));
 }
 
 void TestEngine::polygonsAndSegmentsAreRasterised()

@@ -9,6 +9,11 @@
 #include <mutex>
 #include <type_traits>
 #include <stdexcept>
+#include <new>
+#include <cstdlib>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 namespace awb {
 
@@ -30,6 +35,32 @@ void RasterFrame::validate() const
     if (!(x1 > x0) || !(y1 > y0) || !std::isfinite(x1 - x0) || !std::isfinite(y1 - y0))
         throw InputError(coreTranslate("awb::render", "raster world rectangle is empty or not "
                                                       "finite"));
+}
+
+namespace {
+constexpr std::size_t kHugePage = std::size_t(2) << 20;
+}
+
+void *allocateCells(std::size_t bytes)
+{
+    if (bytes < kHugePage)
+        return ::operator new(bytes);
+    const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
+    void *p = std::aligned_alloc(kHugePage, rounded);
+    if (!p)
+        throw std::bad_alloc();
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    madvise(p, rounded, MADV_HUGEPAGE);  // a hint: without huge pages, 4 KiB ones
+#endif
+    return p;
+}
+
+void freeCells(void *p, std::size_t bytes) noexcept
+{
+    if (bytes < kHugePage)
+        ::operator delete(p);
+    else
+        std::free(p);
 }
 
 DensityImage::DensityImage(int cellsX, int cellsY, Accumulation mode, bool oneLabel)

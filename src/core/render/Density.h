@@ -55,6 +55,25 @@ struct RasterFrame {
 
 enum class Accumulation { Density, Hits };
 
+// The allocator of a histogram's cells: blocks of 2 MiB or more are aligned to 2 MiB and
+// offered to the kernel's transparent huge pages (madvise; Linux). The chaos game hits the
+// cells in random order: with 4 KiB pages a 1024 x 1024 histogram spans 2 048 pages, more
+// than the TLB holds, so most hits would also walk the page table.
+void *allocateCells(std::size_t bytes);
+void freeCells(void *p, std::size_t bytes) noexcept;
+
+template <class T>
+struct CellAllocator {
+    using value_type = T;
+    CellAllocator() = default;
+    template <class U>
+    CellAllocator(const CellAllocator<U> &) noexcept {}
+    T *allocate(std::size_t n) { return static_cast<T *>(allocateCells(n * sizeof(T))); }
+    void deallocate(T *p, std::size_t n) noexcept { freeCells(p, n * sizeof(T)); }
+    template <class U>
+    bool operator==(const CellAllocator<U> &) const noexcept { return true; }
+};
+
 struct DensityBucket {
     std::uint32_t n = 0;
     // Density: the sum of the hits' colour coordinates. Hits: 1 + the smallest label.
@@ -187,8 +206,8 @@ private:
     int m_w = 0, m_h = 0;
     Accumulation m_mode = Accumulation::Density;
     bool m_oneLabel = false;
-    std::vector<DensityBucket> m_buckets;  // empty in a one-label image
-    std::vector<std::uint32_t> m_counts;   // a one-label image's cells
+    std::vector<DensityBucket, CellAllocator<DensityBucket>> m_buckets;  // empty if one label
+    std::vector<std::uint32_t, CellAllocator<std::uint32_t>> m_counts;   // a one-label image's
     std::size_t m_room = kSpillAt;  // unchecked hits allowed before the next sweep
     // Buckets that reached kSpillAt hits, summed exactly (rare: only huge sample counts).
     std::unordered_map<std::size_t, std::array<std::uint64_t, 2>> m_spilled;
