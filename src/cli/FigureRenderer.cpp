@@ -133,8 +133,7 @@ Frame frameFor(const FigureSpec &spec, const QRectF &target)
 QColor styleColor(const FigureSpec &spec, const std::uint8_t *a, int n)
 {
     const int maps = spec.ifs ? std::max(1, spec.ifs->size()) : 1;
-    const AttractorColouring &c = spec.colouring;
-    return attractorAddressColor(c.mode, c.prefixLength, c.palette, maps, a, n);
+    return attractorAddressColor(spec.colouring, maps, a, n);
 }
 
 void drawVector(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
@@ -212,9 +211,7 @@ void drawRaster(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
     r.world = QRectF(f.x0, f.y0, f.x1 - f.x0, f.y1 - f.y0);
     r.size = QSize(std::max(1, int(f.target.width() * scale)),
                    std::max(1, int(f.target.height() * scale)));
-    r.colorMode = spec.colouring.mode;
-    r.prefixLength = spec.colouring.prefixLength;
-    r.palette = spec.colouring.palette;
+    r.colouring = spec.colouring;
     r.tone = spec.tone;
     r.supersample = spec.supersample;
     r.threads = spec.threads;

@@ -34,12 +34,12 @@ QColor gradientAt(const QList<QColor> &stops, double t)
 // than the depth drawn) along the address.
 int colourPrefix(const RenderRequest &r, int depth, int maps)
 {
-    switch (r.colorMode) {
+    switch (r.colouring.mode) {
     case AttractorColorMode::Single: return 0;
     case AttractorColorMode::ByMap: return 1;
     case AttractorColorMode::ByAddress: break;
     }
-    int L = std::clamp(r.prefixLength, 1, 3);
+    int L = std::clamp(r.colouring.prefixLength, 1, 3);
     if (r.mode == RenderRequest::Mode::Deterministic)
         L = std::min(L, std::max(1, depth));
     // At most 65536 colour labels (three symbols of up to 40 maps).
@@ -63,7 +63,7 @@ EngineColours colourTable(const RenderRequest &r, int prefix, int maps)
             address[k] = std::uint8_t(code % std::size_t(maps));
             code /= std::size_t(maps);
         }
-        const QColor q = attractorAddressColor(r.colorMode, std::max(1, prefix), r.palette, maps,
+        const QColor q = attractorAddressColor(r.colouring.mode, std::max(1, prefix), r.colouring.palette, maps,
                                                address, std::max(1, prefix));
         c.labelColours[label] = Rgb8{std::uint8_t(q.red()), std::uint8_t(q.green()),
                                      std::uint8_t(q.blue())};

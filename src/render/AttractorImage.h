@@ -25,6 +25,16 @@ enum class AttractorColorMode {
     Single      // one colour
 };
 
+// How an attractor's images are coloured: the one description the raster (RenderRequest), the
+// views' settings, export and `attractor-cli render` share, read from an item's style by
+// attractorColouring(). An empty palette means the application's own colours.
+struct AttractorColouring {
+    AttractorColorMode mode = AttractorColorMode::ByMap;
+    int prefixLength = 1;  // 1..3 address symbols, for ByAddress
+    QList<QColor> palette; // ByMap: one per map; ByAddress: gradient stops; Single: [0]
+    bool operator==(const AttractorColouring &) const = default;
+};
+
 // Streams F^k of an attractor that is not that of one IFS (an automaton's state) to the
 // sinks, like awb::iterateParallel (model/AttractorItem.h, DerivedIfs::iterate).
 using CustomIterate = std::function<IterationStats(const StartSet &, int,
@@ -43,9 +53,7 @@ struct RenderRequest {
     std::uint64_t seed = 1;
     QRectF world;                   // shown rectangle of the plane, y up (x0, y0, w, h)
     QSize size;                     // image size in pixels
-    AttractorColorMode colorMode = AttractorColorMode::ByMap;
-    int prefixLength = 2;           // 1..3, for ByAddress
-    QList<QColor> palette;          // ByMap: one per map; ByAddress: gradient stops; Single: [0]
+    AttractorColouring colouring;
     // Lit pixels are grown by this many pixels (0..4) so that a thin curve stays visible.
     int dotRadius = 0;
     // Hits (crisp, every lit pixel opaque: the papers' look) or density (log-density tone
@@ -83,13 +91,7 @@ inline QImage renderAttractorImage(const RenderRequest &request, RenderInfo *inf
 
 struct StyleSpec;  // model/ItemValues.h
 
-// An item's colouring, read from its style (color_by, prefix_length, colors): the view, export
-// and `attractor-cli render` all draw with it. An empty palette means the application's own.
-struct AttractorColouring {
-    AttractorColorMode mode = AttractorColorMode::ByMap;
-    int prefixLength = 1;  // 1..3
-    QList<QColor> palette;
-};
+// The colouring of an item's style (color_by, prefix_length, colors).
 AttractorColouring attractorColouring(const StyleSpec &style);
 
 // Default qualitative colours for maps and the default address gradient.
@@ -100,5 +102,10 @@ QList<QColor> defaultAddressGradient();
 QColor attractorAddressColor(AttractorColorMode mode, int prefixLength,
                              const QList<QColor> &palette, int maps,
                              const std::uint8_t *address, int length);
+inline QColor attractorAddressColor(const AttractorColouring &c, int maps,
+                                    const std::uint8_t *address, int length)
+{
+    return attractorAddressColor(c.mode, c.prefixLength, c.palette, maps, address, length);
+}
 
 } // namespace awb

@@ -243,8 +243,8 @@ void TestAttractorRenderer::equalRequestsGiveIdenticalPixels()
         r.mode = mode;
         r.samples = 60000;
         r.seed = 7;
-        r.colorMode = AttractorColorMode::ByAddress;
-        r.prefixLength = 3;
+        r.colouring.mode = AttractorColorMode::ByAddress;
+        r.colouring.prefixLength = 3;
         QImage images[2];
         for (QImage &img : images) {
             AttractorRenderer renderer;
@@ -264,7 +264,7 @@ void TestAttractorRenderer::equalRequestsGiveIdenticalPixels()
 void TestAttractorRenderer::colourModes()
 {
     RenderRequest r = cubicRequest(11);
-    r.colorMode = AttractorColorMode::ByMap;
+    r.colouring.mode = AttractorColorMode::ByMap;
     const QImage byMap = AttractorRenderer::renderNow(r);
     QSet<QRgb> colours;
     for (int y = 0; y < byMap.height(); ++y)
@@ -276,17 +276,17 @@ void TestAttractorRenderer::colourModes()
     QVERIFY(colours.contains(AttractorRenderer::mapColor(0).rgba()));
     QVERIFY(colours.contains(AttractorRenderer::mapColor(1).rgba()));
 
-    r.colorMode = AttractorColorMode::Single;
-    r.palette = {QColor(10, 20, 30)};
+    r.colouring.mode = AttractorColorMode::Single;
+    r.colouring.palette = {QColor(10, 20, 30)};
     const QImage single = AttractorRenderer::renderNow(r);
     for (int y = 0; y < single.height(); ++y)
         for (int x = 0; x < single.width(); ++x)
             if (qAlpha(single.pixel(x, y)))
                 QCOMPARE(single.pixel(x, y), QColor(10, 20, 30).rgba());
 
-    r.colorMode = AttractorColorMode::ByAddress;
-    r.prefixLength = 3;
-    r.palette.clear();
+    r.colouring.mode = AttractorColorMode::ByAddress;
+    r.colouring.prefixLength = 3;
+    r.colouring.palette.clear();
     const QImage byAddress = AttractorRenderer::renderNow(r);
     colours.clear();
     for (int y = 0; y < byAddress.height(); ++y)

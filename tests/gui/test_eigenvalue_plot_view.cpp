@@ -199,8 +199,8 @@ void TestEigenvaluePlotView::markerTooltipsAndClicks()
     QVERIFY(w.matrixView()->isHighlighted(3));  // M_2
     QCOMPARE(w.controller()->highlightedMap(), 1);
     const auto rs = w.attractorView()->renderSettings();
-    QCOMPARE(rs.palette.value(0), QColor(205, 205, 205));
-    QVERIFY(rs.palette.value(1) != QColor(205, 205, 205));
+    QCOMPARE(rs.colouring.palette.value(0), QColor(205, 205, 205));
+    QVERIFY(rs.colouring.palette.value(1) != QColor(205, 205, 205));
     // A click beside the markers clears the mark.
     QTest::mouseClick(spectrum->plot(), Qt::LeftButton, {},
                       spectrum->pixelOf(Complex(-0.6, 0.6)).toPoint());

@@ -280,7 +280,7 @@ void TestWindowUsability::paletteIsUndoable()
     QCOMPARE(item->style().colors.size(), 2);
     QCOMPARE(item->style().colors[1], QStringLiteral("#0ac81e"));
     w.controller()->refreshNow();
-    QCOMPARE(w.attractorView()->renderSettings().palette.value(1), QColor(10, 200, 30));
+    QCOMPARE(w.attractorView()->renderSettings().colouring.palette.value(1), QColor(10, 200, 30));
     w.project()->undoStack()->undo();
     QVERIFY(item->style().colors.isEmpty());
     // "Use the default colours" clears the item's own colours again.

@@ -316,13 +316,10 @@ void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
     SurfaceView::RenderSettings rs = m_surface->renderSettings();
     rs.depth = m_maxDepth > 0 ? std::min(item->algorithm().depth, m_maxDepth)
                               : item->algorithm().depth;
-    const AttractorColouring colouring = attractorColouring(item->style());
-    rs.colorMode = colouring.mode;
-    rs.prefixLength = colouring.prefixLength;
+    rs.colouring = attractorColouring(item->style());
     rs.pointSize = item->style().pointSize;
-    rs.palette = colouring.palette;
-    if (rs.palette.isEmpty())
-        rs.palette = m_palette;
+    if (rs.colouring.palette.isEmpty())
+        rs.colouring.palette = m_palette;
     m_surface->setRenderSettings(rs);
     m_surface->setControlPointsEditable(item == m_item.data()); // a plot's source is only shown
     const Mat P = toMatrix(item->controlPoints(0), 3);
@@ -451,9 +448,7 @@ void ItemController::refreshNow()
         rs.depth = m_maxDepth > 0 ? std::min(alg.depth, m_maxDepth) : alg.depth;
         rs.samples = std::uint64_t(std::max<qint64>(1, alg.samples));
         rs.seed = std::uint64_t(alg.seed);
-        const AttractorColouring colouring = attractorColouring(item->style());
-        rs.colorMode = colouring.mode;
-        rs.prefixLength = colouring.prefixLength;
+        rs.colouring = attractorColouring(item->style());
         rs.dotRadius = std::clamp(int(std::lround(item->style().pointSize / 2.0)), 0, 4);
         rs.tone.mode = item->style().densityTone(alg.mode == AlgorithmSpec::Mode::Random)
                            ? Accumulation::Density
@@ -462,20 +457,20 @@ void ItemController::refreshNow()
         // Density shows the measure itself: no growing of the points.
         if (rs.tone.mode == Accumulation::Density)
             rs.dotRadius = 0;
-        rs.palette = colouring.palette;
-        if (rs.palette.isEmpty())
-            rs.palette = m_palette;
+        if (rs.colouring.palette.isEmpty())
+            rs.colouring.palette = m_palette;
         if (m_highlightedMap >= 0) {
             // One map's part of the attractor: its colour, the rest in light grey, by map.
             QList<QColor> marked;
             const int maps = std::max(item->mapCount(), m_highlightedMap + 1);
             for (int i = 0; i < maps; ++i)
                 marked << (i == m_highlightedMap
-                               ? (rs.palette.isEmpty() ? AttractorRenderer::mapColor(i)
-                                                       : rs.palette[i % rs.palette.size()])
+                               ? (rs.colouring.palette.isEmpty()
+                                      ? AttractorRenderer::mapColor(i)
+                                      : rs.colouring.palette[i % rs.colouring.palette.size()])
                                : QColor(205, 205, 205));
-            rs.palette = marked;
-            rs.colorMode = AttractorColorMode::ByMap;
+            rs.colouring.palette = marked;
+            rs.colouring.mode = AttractorColorMode::ByMap;
         }
         m_attractor->setRenderSettings(rs);
 

@@ -50,11 +50,10 @@ public:
     static QList<QColor> defaultGradient() { return defaultAddressGradient(); }
     // The colour of an image with this address (address[0] = outermost map), as the raster
     // colours it: vector drawings of shallow levels use it to match the raster.
-    static QColor addressColor(AttractorColorMode mode, int prefixLength,
-                               const QList<QColor> &palette, int maps,
+    static QColor addressColor(const AttractorColouring &colouring, int maps,
                                const std::uint8_t *address, int length)
     {
-        return attractorAddressColor(mode, prefixLength, palette, maps, address, length);
+        return attractorAddressColor(colouring, maps, address, length);
     }
 
 signals:

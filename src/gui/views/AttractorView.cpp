@@ -394,9 +394,7 @@ RenderRequest AttractorView::renderRequest(const QRectF &world, QSize size,
     r.seed = m_settings.seed;
     r.world = world;
     r.size = size;
-    r.colorMode = m_settings.colorMode;
-    r.prefixLength = m_settings.prefixLength;
-    r.palette = m_settings.palette;
+    r.colouring = m_settings.colouring;
     r.dotRadius = int(std::lround(m_settings.dotRadius * pixelsPerScreenPixel));
     r.tone = m_settings.tone;
     // Exports and prints drawn at more pixels than the screen: anti-alias the edges.

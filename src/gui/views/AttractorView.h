@@ -36,9 +36,7 @@ public:
         int depth = 12;
         std::uint64_t samples = 300000;
         std::uint64_t seed = 1;
-        AttractorColorMode colorMode = AttractorColorMode::ByMap;
-        int prefixLength = 2;
-        QList<QColor> palette;   // empty: the renderer's defaults
+        AttractorColouring colouring;  // an empty palette: the renderer's defaults
         int dotRadius = 1;       // in screen pixels: a one-pixel curve is hard to see
         ToneSettings tone;       // hits (crisp) or log density of the invariant measure
     };

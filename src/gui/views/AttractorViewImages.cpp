@@ -35,8 +35,7 @@ bool AttractorView::vectorImages(int depth, std::size_t maxVertices,
     const int maps = m_ifs->size();
     const auto &views = m_ifs->views;
     CallbackSink sink([&](const Mat &v, StartSet::Kind, const std::uint8_t *a, int n) {
-        const QColor c = AttractorRenderer::addressColor(s.colorMode, s.prefixLength, s.palette,
-                                                         maps, a, n);
+        const QColor c = AttractorRenderer::addressColor(s.colouring, maps, a, n);
         for (const Projection &view : views)
             out->push_back({toPolygon(project(view, v)), c});
     });
@@ -66,8 +65,7 @@ bool AttractorView::randomVectorImages(std::size_t maxVertices,
     for (int t = 0; t < kRandomStreams; ++t) {
         sinks.push_back(std::make_unique<CallbackSink>(
             [&, t](const Mat &v, StartSet::Kind, const std::uint8_t *a, int n) {
-                const QColor c = AttractorRenderer::addressColor(s.colorMode, s.prefixLength,
-                                                                 s.palette, maps, a, n);
+                const QColor c = AttractorRenderer::addressColor(s.colouring, maps, a, n);
                 for (const Projection &view : m_ifs->views)
                     parts[t].push_back({toPolygon(project(view, v)), c});
             }));
@@ -76,7 +74,7 @@ bool AttractorView::randomVectorImages(std::size_t maxVertices,
     ChaosOptions opt;
     opt.samples = s.samples;
     opt.seed = s.seed;
-    opt.addressLength = std::clamp(s.prefixLength, 1, 3);
+    opt.addressLength = std::clamp(s.colouring.prefixLength, 1, 3);
     try {
         chaosGameParallel(*m_ifs, m_start.vertices.row(0), opt, raw);
     } catch (const std::exception &) {

@@ -191,8 +191,7 @@ bool AttractorView::paintCurvePaths(QPainter &p, const Mapping &m) const
     const int maps = m_ifs->size();
     CurvePathSink sink(m_ifs->views, toLogical, devicePixelsPerLogical(p),
                        [&s, maps](const std::uint8_t *a, int n) {
-                           return AttractorRenderer::addressColor(s.colorMode, s.prefixLength,
-                                                                  s.palette, maps, a, n);
+                           return AttractorRenderer::addressColor(s.colouring, maps, a, n);
                        },
                        kMaxExportCurveVertices);
     // In address order, so that neighbouring pieces of the curve come one after the other;

@@ -274,9 +274,7 @@ void SurfaceView::setMesh(const Mat &points, const std::vector<std::vector<int>>
 void SurfaceView::setRenderSettings(const RenderSettings &settings)
 {
     const bool same = settings.depth == m_settings.depth
-                      && settings.colorMode == m_settings.colorMode
-                      && settings.prefixLength == m_settings.prefixLength
-                      && settings.palette == m_settings.palette;
+                      && settings.colouring == m_settings.colouring;
     m_settings = settings;
     if (!same)
         dataChanged();
@@ -316,15 +314,14 @@ void SurfaceView::dataChanged()
 std::vector<std::uint32_t> SurfaceView::paletteArgb(int maps) const
 {
     std::vector<std::uint32_t> out;
-    if (m_settings.colorMode == AttractorColorMode::Single) {
-        const QColor c = m_settings.palette.isEmpty() ? QColor(70, 110, 160)
-                                                      : m_settings.palette.front();
+    const QList<QColor> &palette = m_settings.colouring.palette;
+    if (m_settings.colouring.mode == AttractorColorMode::Single) {
+        const QColor c = palette.isEmpty() ? QColor(70, 110, 160) : palette.front();
         return {std::uint32_t(c.rgb()) & 0xffffffu};
     }
-    const int n = m_settings.palette.isEmpty() ? std::max(maps, 9) : m_settings.palette.size();
+    const int n = palette.isEmpty() ? std::max(maps, 9) : int(palette.size());
     for (int i = 0; i < n; ++i) {
-        const QColor c = m_settings.palette.isEmpty() ? AttractorRenderer::mapColor(i)
-                                                      : m_settings.palette[i];
+        const QColor c = palette.isEmpty() ? AttractorRenderer::mapColor(i) : palette[i];
         out.push_back(std::uint32_t(c.rgb()) & 0xffffffu);
     }
     return out;
@@ -337,7 +334,7 @@ std::vector<int> SurfaceView::rasterLabels() const
     std::vector<int> labels;
     const int n = m_ifs ? m_ifs->size() : 0;
     for (int k = 0; k < n; ++k) {
-        if (m_settings.colorMode == AttractorColorMode::Single)
+        if (m_settings.colouring.mode == AttractorColorMode::Single)
             labels.push_back(0);
         else
             labels.push_back(k < int(m_colourIndex.size()) ? m_colourIndex[std::size_t(k)] : k);
@@ -381,15 +378,14 @@ void SurfaceView::startJob()
                 start.kind == StartSet::Kind::Points ? double(start.vertices.rows()) : 1.0;
             cloud->depth = depthWithin(*ifs, settings.depth, perImage, budget);
             const auto colour = [&](const std::uint8_t *a, int n) -> std::uint32_t {
-                if (settings.colorMode == AttractorColorMode::ByMap) {
+                if (settings.colouring.mode == AttractorColorMode::ByMap) {
                     const int k = n > 0 ? a[0] : 0;
                     const int c = k < int(colourIndex.size()) ? colourIndex[std::size_t(k)] : k;
                     return palette[std::size_t(c) % palette.size()];
                 }
-                if (settings.colorMode == AttractorColorMode::Single)
+                if (settings.colouring.mode == AttractorColorMode::Single)
                     return palette.front();
-                return AttractorRenderer::addressColor(settings.colorMode, settings.prefixLength,
-                                                       settings.palette, maps, a, n).rgb();
+                return AttractorRenderer::addressColor(settings.colouring, maps, a, n).rgb();
             };
             CloudSink a(ifs->views, colour), b(ifs->views, colour);
             IterationControl control;

@@ -60,9 +60,7 @@ class SurfaceView : public QWidget {
 public:
     struct RenderSettings {
         int depth = 8;                    // the item's depth (the budget may lower it)
-        AttractorColorMode colorMode = AttractorColorMode::ByMap;
-        int prefixLength = 1;
-        QList<QColor> palette;            // empty: the renderer's defaults
+        AttractorColouring colouring;     // an empty palette: the renderer's defaults
         double pointSize = 2.0;           // pixels
     };
     enum class Layer { Attractor, ControlNet, Mesh, Axes, Box };
