@@ -175,7 +175,7 @@ void PropertiesWidget::addPaletteEditor(QFormLayout *form)
     auto *button = new QPushButton;
     button->setToolTip(tr("The colour of each map's points: click to choose"));
     m_editors.insert(QStringLiteral("style.colors"), button);
-    const auto shown = [this, item] {
+    const auto shown = [item] {
         QList<QColor> colors;
         for (const QString &c : item->style().colors)
             colors << QColor(c);
@@ -248,7 +248,7 @@ void PropertiesWidget::addEigenvaluePlotEditors()
         if (!m_updating && i >= 0)
             plot->setMatrixKind(EigenvaluePlotItem::MatrixKind(i));
     });
-    m_bindings.append({QStringLiteral("plot"), [this, plot, source, matrices, status] {
+    m_bindings.append({QStringLiteral("plot"), [plot, source, matrices, status] {
         const QSignalBlocker b1(source), b2(matrices);
         // Any item drawn as an attractor has matrices to analyse.
         source->clear();
