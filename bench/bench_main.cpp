@@ -9,7 +9,8 @@
 //                  dimension, xoshiro, one uint32 histogram): what a plain program reaches;
 //   deterministic  the engine (core/render/Engine.h) drawing F^k(X0) into its histogram;
 //   chaos game     the engine's random iteration into its histogram (one colour: counts
-//                  alone; colour by map: counts and colour sums);
+//                  alone; colour by map: a plane of counts per map; "by map, buckets": the
+//                  same picture in 8-byte buckets of counts and colour sums, for comparison);
 //   normal-vector  001's Koch scheme (polygons, not the raster engine).
 // Each engine line ends with its ratio to the plain kernel and to the machine limit.
 
@@ -280,13 +281,17 @@ void deterministic(const std::string &name, const Ifs &ifs, const StartSet &star
     std::printf("\n");
 }
 
+enum class Colouring { One, ByMap, ByMapInBuckets };
+
 void chaos(const std::string &name, const Ifs &ifs, const RowVec &x0, std::uint64_t samples,
-           int threads, double plainRate, double incrementRate, bool colourByMap = false)
+           int threads, double plainRate, double incrementRate,
+           Colouring colouring = Colouring::One)
 {
     EngineJob job = jobFor(ifs, StartSet::points(Mat(x0)), threads);
-    if (colourByMap)  // a colour per map: the histogram keeps colour sums (8 bytes a cell)
+    if (colouring != Colouring::One)  // a colour per map: the histogram keeps the maps apart
         for (std::size_t i = 0; i < job.colours.labelColours.size(); ++i)
             job.colours.labelColours[i] = Rgb8{std::uint8_t(60 * i), 120, std::uint8_t(200 - 60 * i)};
+    job.labelPlanes = colouring != Colouring::ByMapInBuckets;
     job.random = true;
     job.samples = samples;
     job.accumulation = Accumulation::Density;
@@ -374,7 +379,10 @@ int main(int argc, char **argv)
               limits.increments[threads]);
     for (int threads : {1, 2})
         chaos("Sierpinski, colour by map", sier2, z0, chaosSamples, threads, plainRate[threads],
-              limits.increments[threads], true);
+              limits.increments[threads], Colouring::ByMap);
+    for (int threads : {1, 2})
+        chaos("Sierpinski, by map, buckets", sier2, z0, chaosSamples, threads, plainRate[threads],
+              limits.increments[threads], Colouring::ByMapInBuckets);
 
     // 000 §4.2: the Sierpinski gasket with 6 control points (lifted 6 x 6 matrices) at depth 13.
     const SubdivisionIfs sier = controlPointFractalIfs(sierpinskiControlPointFractal());

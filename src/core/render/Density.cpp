@@ -63,32 +63,47 @@ void freeCells(void *p, std::size_t bytes) noexcept
         std::free(p);
 }
 
-DensityImage::DensityImage(int cellsX, int cellsY, Accumulation mode, bool oneLabel)
+CellLayout CellLayout::labelPlanes(int labels, const std::vector<std::uint8_t> &coordinates)
 {
-    reset(cellsX, cellsY, mode, oneLabel);
+    if (labels < 2 || labels > kMaxPlanes || coordinates.size() < std::size_t(labels))
+        throw std::invalid_argument("CellLayout::labelPlanes: 2 to kMaxPlanes labels, each with "
+                                    "its coordinate");
+    CellLayout l;
+    l.planes = labels;
+    std::copy_n(coordinates.begin(), labels, l.coordinates.begin());
+    return l;
 }
 
-void DensityImage::reset(int cellsX, int cellsY, Accumulation mode, bool oneLabel)
+DensityImage::DensityImage(int cellsX, int cellsY, Accumulation mode, CellLayout layout)
 {
+    reset(cellsX, cellsY, mode, layout);
+}
+
+void DensityImage::reset(int cellsX, int cellsY, Accumulation mode, CellLayout layout)
+{
+    if (layout.planes < 0 || layout.planes > CellLayout::kMaxPlanes)
+        throw std::invalid_argument("DensityImage::reset: 0 to kMaxPlanes planes");
+    if (layout.planes <= 1)
+        layout.coordinates = {};  // one label's coordinate is 0; buckets keep their own
     m_w = cellsX;
     m_h = cellsY;
+    m_size = std::size_t(cellsX) * std::size_t(cellsY);
     m_mode = mode;
-    m_oneLabel = oneLabel;
-    const std::size_t n = std::size_t(cellsX) * cellsY;
+    m_layout = layout;
     // The storage not used is released (a one-label picture after a coloured one, or back).
-    auto fit = [n](auto &cells, bool used) {
+    auto fit = [](auto &cells, std::size_t n) {
         using Cells = std::remove_reference_t<decltype(cells)>;
-        if (!used)
+        if (n == 0)
             Cells().swap(cells);
         else if (cells.size() == n)
             std::memset(static_cast<void *>(cells.data()), 0, n * sizeof(cells[0]));
         else
             cells.assign(n, typename Cells::value_type{});
     };
-    fit(m_buckets, !oneLabel);
-    fit(m_counts, oneLabel);
+    fit(m_buckets, layout.planes == 0 ? m_size : 0);
+    fit(m_counts, m_size * std::size_t(layout.planes));
     m_spilled.clear();
-    m_room = kSpillAt;
+    m_room = fullRoom();
     offscreen = nonFinite = 0;
 }
 
@@ -96,22 +111,21 @@ void DensityImage::sweep(std::size_t hits)
 {
     if (hits > kSpillAt)
         throw std::length_error("DensityImage::reserve: more than kSpillAt hits in one batch");
-    const std::size_t n = size();
-    if (m_oneLabel) {
-        for (std::size_t i = 0; i < n; ++i)
-            if (m_counts[i] >= kSpillAt) [[unlikely]]
-                spill(i);
+    if (planes() > 0) {
+        for (std::size_t j = 0; j < m_counts.size(); ++j)
+            if (m_counts[j] >= kSpillAt) [[unlikely]]
+                spill(j);
     } else {
-        for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t i = 0; i < m_buckets.size(); ++i)
             if (m_buckets[i].n >= kSpillAt) [[unlikely]]
                 spill(i);
     }
-    m_room = kSpillAt;
+    m_room = fullRoom();
 }
 
 void DensityImage::spill(std::size_t i)
 {
-    if (m_oneLabel) {
+    if (planes() > 0) {
         m_spilled[i][0] += m_counts[i];
         m_counts[i] = 0;
         return;
@@ -126,12 +140,32 @@ void DensityImage::spill(std::size_t i)
     b.n = 0;
 }
 
+std::uint64_t DensityImage::stored(std::size_t j) const
+{
+    std::uint64_t n = planes() > 0 ? m_counts[j] : m_buckets[j].n;
+    if (!m_spilled.empty()) {
+        const auto it = m_spilled.find(j);
+        if (it != m_spilled.end())
+            n += it->second[0];
+    }
+    return n;
+}
+
 std::array<double, 2> DensityImage::cell(std::size_t i) const
 {
-    if (m_oneLabel) {
-        // Label 0: the coordinate sum is 0 (density), the label word 1 + 0 once hit (hits).
-        const double n = double(count(i));
-        return {n, m_mode == Accumulation::Hits && n > 0 ? 1.0 : 0.0};
+    if (planes() > 0) {
+        // Plane l holds label l's hits: the coordinate sum is sum_l n_l c_l (density; one
+        // label: 0), the label word 1 + the first label hit (hits). Exact below 2^53.
+        std::uint64_t n = 0, sum = 0;
+        std::uint32_t first = 0;
+        for (int l = planes() - 1; l >= 0; --l) {
+            const std::uint64_t nl = stored(std::size_t(l) * m_size + i);
+            n += nl;
+            sum += nl * m_layout.coordinates[std::size_t(l)];
+            if (nl > 0)
+                first = std::uint32_t(l) + 1;
+        }
+        return {double(n), m_mode == Accumulation::Hits ? double(first) : double(sum)};
     }
     const DensityBucket &b = m_buckets[i];
     std::array<double, 2> out{double(b.n), double(b.v)};
@@ -148,21 +182,26 @@ std::array<double, 2> DensityImage::cell(std::size_t i) const
 
 std::uint64_t DensityImage::count(std::size_t i) const
 {
-    std::uint64_t n = countWord(i);
-    if (!m_spilled.empty()) {
-        const auto it = m_spilled.find(i);
-        if (it != m_spilled.end())
-            n += it->second[0];
-    }
+    if (planes() == 0)
+        return stored(i);
+    std::uint64_t n = 0;
+    for (int l = 0; l < planes(); ++l)
+        n += stored(std::size_t(l) * m_size + i);
     return n;
 }
 
 std::uint64_t DensityImage::litCells() const
 {
     std::uint64_t lit = 0;
-    if (m_oneLabel) {
-        for (std::size_t i = 0; i < m_counts.size(); ++i)
-            lit += m_counts[i] != 0 || m_spilled.count(i);
+    if (planes() > 0) {
+        for (std::size_t i = 0; i < m_size; ++i) {
+            bool hit = false;
+            for (int l = 0; l < planes() && !hit; ++l) {
+                const std::size_t j = std::size_t(l) * m_size + i;
+                hit = m_counts[j] != 0 || m_spilled.count(j);
+            }
+            lit += hit;
+        }
         return lit;
     }
     for (std::size_t i = 0; i < m_buckets.size(); ++i)
@@ -190,11 +229,17 @@ void DensityImage::takeCells(DensityImage &o, std::size_t first, std::size_t las
 template <bool Take, class Source>
 void DensityImage::addCells(Source &o, std::size_t first, std::size_t last)
 {
-    if (o.m_w != m_w || o.m_h != m_h || o.m_mode != m_mode || o.m_oneLabel != m_oneLabel)
+    if (o.m_w != m_w || o.m_h != m_h || o.m_mode != m_mode || !(o.m_layout == m_layout))
         throw InputError(coreTranslate("awb::render", "cannot merge density images of different "
                                                       "sizes or modes"));
-    if (m_oneLabel)
-        return addCounts<Take>(o, first, last);
+    if (planes() > 0) {
+        // The cells [first, last) of every plane.
+        last = std::min(last, m_size);
+        for (int l = 0; l < planes(); ++l)
+            addCounts<Take>(o, std::size_t(l) * m_size + first,
+                            std::size_t(l) * m_size + std::max(first, last));
+        return;
+    }
     last = std::min(last, m_buckets.size());
     auto add = [&](std::size_t i) {
         DensityBucket src = o.m_buckets[i];
@@ -276,7 +321,7 @@ void DensityImage::mergeRest(const DensityImage &o)
         auto &d = m_spilled[i];
         for (int k = 0; k < 2; ++k)
             d[k] += s[k];
-        if (m_mode == Accumulation::Hits && !m_oneLabel && m_buckets[i].v == 0)
+        if (m_mode == Accumulation::Hits && planes() == 0 && m_buckets[i].v == 0)
             m_buckets[i].v = o.m_buckets[i].v;
     }
     offscreen += o.offscreen;
@@ -287,7 +332,7 @@ void DensityImage::takeRest(DensityImage &o)
 {
     mergeRest(o);
     o.m_spilled.clear();
-    o.m_room = kSpillAt;
+    o.m_room = o.fullRoom();
     o.offscreen = o.nonFinite = 0;
 }
 
@@ -296,7 +341,7 @@ void DensityImage::clear()
     std::fill(m_buckets.begin(), m_buckets.end(), DensityBucket{});
     std::fill(m_counts.begin(), m_counts.end(), 0u);
     m_spilled.clear();
-    m_room = kSpillAt;
+    m_room = fullRoom();
     offscreen = nonFinite = 0;
 }
 
@@ -397,11 +442,16 @@ void toneMapInto(const DensityImage &image, const RasterFrame &frame, const Tone
                                           labels[l].b / 255.0);
         const std::size_t last = packed.size() - 1;
         const std::size_t n = std::size_t(W) * H;
-        if (image.oneLabel()) {
+        if (image.planes() > 0) {
+            // The first plane that counts a cell gives its label (one label: plane 0).
             const std::uint32_t *c = image.counts();
-            for (std::size_t i = 0; i < n; ++i)
-                if (c[i] != 0)
-                    out[i] = packed[0];
+            for (int l = image.planes() - 1; l >= 0; --l) {
+                const std::uint32_t *plane = c + std::size_t(l) * n;
+                const std::uint32_t colour = packed[std::min(std::size_t(l), last)];
+                for (std::size_t i = 0; i < n; ++i)
+                    if (plane[i] != 0)
+                        out[i] = colour;
+            }
             return;
         }
         const DensityBucket *b = image.buckets();

@@ -4,8 +4,7 @@
 // turns it into pixels. Every raster picture of a curve attractor (the view, `render`, print,
 // the figure sheet, the benches) goes through DensityImage and toneMap().
 //
-// Two ways to accumulate, chosen per picture (8 bytes a cell either way, 4 for one label: the
-// histogram of a 1024 x 1024 picture stays in the caches where the attractor lives):
+// Two ways to accumulate, chosen per picture:
 // - Density: each hit adds 1 to the cell's count and its colour coordinate (0..255, the
 //   position of its label's colour on the picture's colour ramp) to the cell's coordinate sum,
 //   so the count is the invariant measure's mass in the cell (random iteration with the IFS's
@@ -14,10 +13,19 @@
 // - Hits: the cell keeps its count and the smallest colour label that hit it; the picture
 //   is crisp (every lit pixel opaque, one label's exact colour), and independent of the order
 //   of the hits, so a parallel render is pixel-identical to a serial one.
-// A one-label image (every hit carries label 0, colour coordinate 0: the engine's choice for a
-// picture whose labels all have one colour, in either mode) keeps the counts alone, 4 bytes a
-// cell: the scattered hits touch half the memory, and the picture is the same (a density
-// cell's coordinate sum is 0, a hits cell's label 0).
+// Three ways to store them, chosen per picture; each gives the same picture, exactly:
+// - Buckets, 8 bytes a cell: the count and the coordinate sum (density) or smallest label
+//   (hits) of every hit, one 64-bit add per hit; any number of labels.
+// - One plane of counts, 4 bytes a cell, when every hit carries label 0 (the engine's choice
+//   for a picture whose labels all have one colour): a density cell's coordinate sum is 0, a
+//   hits cell's label 0. The scattered hits touch half the memory.
+// - Label planes: L <= kMaxPlanes planes of counts, plane l counting the hits of label l
+//   (cell i of plane l at index l * size() + i). A cell's coordinate sum is sum_l n_l c_l
+//   and its smallest label the first plane that counts it: the buckets' numbers, from 4 bytes
+//   a hit. The random iteration's scattered hits then touch the cache lines of one colour's
+//   counts where the labels' parts of the attractor do not overlap (the sub-copies of an IFS
+//   coloured by map, the flame renderers' usual picture), instead of twice as many with
+//   buckets, for 4 L bytes a cell in all.
 //
 // The tone mapping of density follows the log-density display of the fractal flame algorithm
 // (S. Draves, E. Reckase, "The Fractal Flame Algorithm", 2003/2008, §4: log scaling, gamma,
@@ -81,26 +89,54 @@ struct DensityBucket {
     std::uint32_t v = 0;
 };
 
+// How a histogram stores its hits' labels: 0 planes for buckets, 1 for one label, 2 to
+// kMaxPlanes for label planes with the colour coordinate (0..255) of each plane's label.
+struct CellLayout {
+    static constexpr int kMaxPlanes = 4;
+    int planes = 0;
+    std::array<std::uint8_t, kMaxPlanes> coordinates{};
+
+    static CellLayout buckets() { return {}; }
+    static CellLayout oneLabel() { return {1, {}}; }
+    // Planes for `labels` labels (2..kMaxPlanes) of these coordinates (labels of them at least).
+    static CellLayout labelPlanes(int labels, const std::vector<std::uint8_t> &coordinates);
+    bool operator==(const CellLayout &o) const = default;
+};
+
 class DensityImage {
 public:
     DensityImage() = default;
-    DensityImage(int cellsX, int cellsY, Accumulation mode, bool oneLabel = false);
+    DensityImage(int cellsX, int cellsY, Accumulation mode, CellLayout layout = {});
     // Empties the image for a new picture of this size, reusing its memory when it fits (a
     // drag renders many pictures of one size: no allocation and no page faults each time).
-    void reset(int cellsX, int cellsY, Accumulation mode, bool oneLabel = false);
+    void reset(int cellsX, int cellsY, Accumulation mode, CellLayout layout = {});
 
     int cellsX() const { return m_w; }
     int cellsY() const { return m_h; }
     Accumulation mode() const { return m_mode; }
-    bool oneLabel() const { return m_oneLabel; }
-    std::size_t size() const { return std::size_t(m_w) * std::size_t(m_h); }
+    const CellLayout &layout() const { return m_layout; }
+    bool oneLabel() const { return m_layout.planes == 1; }
+    // Planes of counts (one label or label planes), 0 for buckets.
+    int planes() const { return m_layout.planes; }
+    std::size_t size() const { return m_size; }
 
-    // One hit at cell index i = y * cellsX + x (row 0 at the top). A one-label image takes
-    // addCount only (label 0 and coordinate 0 are implied).
-    void addCount(std::size_t i)
+    // One hit of `label` (its colour coordinate `coordinate`) at cell index i = y * cellsX + x
+    // (row 0 at the top), in any layout.
+    void add(std::size_t i, std::uint32_t label, std::uint8_t coordinate)
     {
-        if (++m_counts[i] >= kSpillAt) [[unlikely]]
-            spill(i);
+        if (m_layout.planes > 0)
+            addCount(m_layout.planes == 1 ? i : std::size_t(label) * m_size + i);
+        else if (m_mode == Accumulation::Hits)
+            addHit(i, label);
+        else
+            addDensity(i, coordinate);
+    }
+    // The layouts' own hits: a count at index j of the planes (one label: j = i; label planes:
+    // j = label * size() + i); the buckets' density or hit at cell i.
+    void addCount(std::size_t j)
+    {
+        if (++m_counts[j] >= kSpillAt) [[unlikely]]
+            spill(j);
     }
     void addDensity(std::size_t i, std::uint8_t coordinate)
     {
@@ -120,7 +156,8 @@ public:
     // every bucket is kept below kSpillAt by the checked adds, the merges and a sweep (which
     // spills the buckets at or above kSpillAt) before every kSpillAt unchecked hits: a bucket
     // then never exceeds 2 kSpillAt = 2^24 hits, whose coordinates (at most 255 each) sum
-    // below 2^32.
+    // below 2^32. A plane's count carries no sum: kCountRoom unchecked hits keep it below
+    // 2^32, so the planes are swept 512 times less often (a sweep reads every cell).
     void reserve(std::size_t hits)
     {
         if (hits > m_room) [[unlikely]]
@@ -132,7 +169,7 @@ public:
         addDensityWord(i, coordinate);
     }
     void addHitUnchecked(std::size_t i, std::uint32_t label) { addHitWord(i, label); }
-    void addCountUnchecked(std::size_t i) { ++m_counts[i]; }
+    void addCountUnchecked(std::size_t j) { ++m_counts[j]; }
 
     // Exact totals of cell i: count and coordinate sum (hits: 1 + the smallest label).
     std::array<double, 2> cell(std::size_t i) const;
@@ -145,13 +182,13 @@ public:
     void mergeRest(const DensityImage &other);
     // The same, emptying `other` as it goes (takeRest clears its spilled sums and counters):
     // a histogram taken whole needs no reset before it is filled again. takeRest is for
-    // after takeCells over every cell: `other` is then empty and takes kSpillAt unchecked hits
-    // before its next sweep.
+    // after takeCells over every cell: `other` is then empty and takes a full room of
+    // unchecked hits before its next sweep.
     void takeCells(DensityImage &other, std::size_t first, std::size_t last);
     void takeRest(DensityImage &other);
     void clear();
-    // The buckets (the counts of a one-label image), row by row; exact totals only while no
-    // bucket has spilled.
+    // The buckets (the counts of the planes, plane after plane), row by row; exact totals only
+    // while no bucket has spilled.
     const DensityBucket *buckets() const { return m_buckets.data(); }
     const std::uint32_t *counts() const { return m_counts.data(); }
     bool hasSpills() const { return !m_spilled.empty(); }
@@ -160,6 +197,8 @@ public:
     std::uint64_t nonFinite = 0;   // images with a NaN or infinite coordinate
 
     static constexpr std::uint32_t kSpillAt = 1u << 23;
+    // Unchecked hits between two sweeps of the planes' counts (buckets: kSpillAt).
+    static constexpr std::size_t kCountRoom = 0xffffffffu - kSpillAt;
 
 private:
     // Where n and v sit in a bucket read as one 64-bit word.
@@ -187,9 +226,10 @@ private:
         return ++b.n;
     }
     void spill(std::size_t i);
-    // Spills every bucket at or above kSpillAt hits; kSpillAt unchecked hits may follow.
-    // Throws std::length_error for a batch larger than that (a caller's bug).
+    // Spills every bucket at or above kSpillAt hits; a full room of unchecked hits may follow.
+    // Throws std::length_error for a batch of more than kSpillAt hits (a caller's bug).
     void sweep(std::size_t hits);
+    std::size_t fullRoom() const { return planes() > 0 ? kCountRoom : kSpillAt; }
     template <bool Take, class Source>
     void addCells(Source &other, std::size_t first, std::size_t last);
 
@@ -199,18 +239,18 @@ private:
     // spills, and a source of n >= kSpillAt hits (colour sum `sum`) goes to the spilled sums
     // whole (true: the caller adds nothing more of it to the bucket).
     bool spillForMerge(std::size_t i, std::uint32_t n, std::uint32_t sum);
-    std::uint32_t countWord(std::size_t i) const
-    {
-        return m_oneLabel ? m_counts[i] : m_buckets[i].n;
-    }
+    // The hits at index j of the storage (a bucket, or a count of a plane), spills included.
+    std::uint64_t stored(std::size_t j) const;
 
     int m_w = 0, m_h = 0;
+    std::size_t m_size = 0;  // m_w * m_h (not an int: the hot loops' uint32 stores may alias ints)
     Accumulation m_mode = Accumulation::Density;
-    bool m_oneLabel = false;
-    std::vector<DensityBucket, CellAllocator<DensityBucket>> m_buckets;  // empty if one label
-    std::vector<std::uint32_t, CellAllocator<std::uint32_t>> m_counts;   // one label's counts
+    CellLayout m_layout;
+    std::vector<DensityBucket, CellAllocator<DensityBucket>> m_buckets;  // empty with planes
+    std::vector<std::uint32_t, CellAllocator<std::uint32_t>> m_counts;   // the planes' counts
     std::size_t m_room = kSpillAt;  // unchecked hits allowed before the next sweep
-    // Buckets that reached kSpillAt hits, summed exactly (rare: only huge sample counts).
+    // Buckets (or plane counts, by their index j) that reached kSpillAt hits, summed exactly
+    // (rare: only huge sample counts).
     std::unordered_map<std::size_t, std::array<std::uint64_t, 2>> m_spilled;
 };
 

@@ -68,13 +68,7 @@ struct Plotter {
             ++img.offscreen;
             return;
         }
-        const std::size_t i = std::size_t(y) * w + x;
-        if (img.oneLabel())
-            img.addCount(i);
-        else if (img.mode() == Accumulation::Hits)
-            img.addHit(i, label);
-        else
-            img.addDensity(i, coords[label]);
+        img.add(std::size_t(y) * w + x, label, coords[label]);
     }
 
     // The cells of the segment from (sx, sy) to (ex, ey), sampled at least once per cell side,
@@ -521,7 +515,9 @@ LeafKernels<D> leafKernels()
 
 // How a kernel adds its hits: the smallest label (hits), the colour coordinate (density), or
 // the count alone (a one-label image: a picture of one colour, in either mode).
-enum class Store { Hits, Colours, Counts };
+// How a kernel stores a hit (DensityImage's layouts): buckets in hits or density mode, one
+// label's counts, label planes' counts.
+enum class Store { Hits, Colours, Counts, Planes };
 
 template <Store M>
 inline void addUnchecked(DensityImage &img, std::size_t i, std::uint32_t label,
@@ -531,6 +527,8 @@ inline void addUnchecked(DensityImage &img, std::size_t i, std::uint32_t label,
         img.addHitUnchecked(i, label);
     else if constexpr (M == Store::Colours)
         img.addDensityUnchecked(i, coords[label]);
+    else if constexpr (M == Store::Planes)
+        img.addCountUnchecked(std::size_t(label) * img.size() + i);
     else
         img.addCountUnchecked(i);
 }
@@ -546,6 +544,8 @@ inline void plotCell(DensityImage &img, int w, int h, double sx, double sy, std:
             img.addHit(i, label);
         else if constexpr (M == Store::Colours)
             img.addDensity(i, coords[label]);
+        else if constexpr (M == Store::Planes)
+            img.addCount(std::size_t(label) * img.size() + i);
         else
             img.addCount(i);
     } else {
@@ -1304,7 +1304,7 @@ std::vector<std::vector<int>> splitTasks(int N, int depth, int threads)
 struct Histograms {
     std::vector<DensityImage *> images;
     std::vector<char> clean;
-    bool oneLabel = false;  // counts only (a picture of one colour)
+    CellLayout layout;  // buckets, one label's counts (one colour), or label planes
 
     // Called by thread t before it draws.
     void prepare(int t, const EngineJob &job) const
@@ -1312,8 +1312,8 @@ struct Histograms {
         DensityImage &img = *images[std::size_t(t)];
         if (!clean[std::size_t(t)] || img.cellsX() != job.frame.cellsX()
             || img.cellsY() != job.frame.cellsY() || img.mode() != job.accumulation
-            || img.oneLabel() != oneLabel)
-            img.reset(job.frame.cellsX(), job.frame.cellsY(), job.accumulation, oneLabel);
+            || !(img.layout() == layout))
+            img.reset(job.frame.cellsX(), job.frame.cellsY(), job.accumulation, layout);
     }
 };
 
@@ -1471,12 +1471,22 @@ IterationStats accumulate(const EngineJob &job, DensityImage &out, const Iterati
             const Rgb8 &a = job.colours.labelColours[l], &b = job.colours.labelColours[0];
             oneColour = oneColour && a.r == b.r && a.g == b.g && a.b == b.b;
         }
-        hist.oneLabel = oneColour;
+        // The random iteration's hits scatter over the whole picture: with few labels, one
+        // plane of counts per label touches the memory of one colour where the labels' parts
+        // do not overlap (Density.h). Deterministic iteration hits its cells in the order of
+        // the addresses, where 8-byte buckets cost less to clear, merge and tone map.
+        const bool planes =
+            job.labelPlanes && job.random && labels >= 2 && labels <= CellLayout::kMaxPlanes;
         if (oneColour) {
+            hist.layout = CellLayout::oneLabel();
             EngineJob one = job;
             one.colours.prefix = 0;
             one.colours.labelColours.resize(1);
             stats = dispatch<Store::Counts>(ifs.dim(), one, cv, hist, control);
+        } else if (planes) {
+            hist.layout = CellLayout::labelPlanes(
+                int(labels), labelCoordinates(job.colours.labelColours.size()));
+            stats = dispatch<Store::Planes>(ifs.dim(), job, cv, hist, control);
         } else {
             stats = job.accumulation == Accumulation::Hits
                         ? dispatch<Store::Hits>(ifs.dim(), job, cv, hist, control)

@@ -48,6 +48,9 @@ struct EngineJob {
     Accumulation accumulation = Accumulation::Hits;
     EngineColours colours;
     int threads = 1;
+    // Random iteration with 2 to CellLayout::kMaxPlanes labels keeps a plane of counts per
+    // label (Density.h); false keeps 8-byte buckets, the same picture (the benches compare).
+    bool labelPlanes = true;
 };
 
 // Accumulates the job into `out` (sized to the frame's cells, cleared first). Throws
