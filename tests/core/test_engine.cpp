@@ -531,8 +531,8 @@ void TestEngine::labelPlanesKeepTheBucketsNumbers()
                     q.addHitUnchecked(cell, label);
             }
             if (k % 1000 == 0) {
-                p.add(0, 1, coords[1]);
-                q.add(0, 1, coords[1]);
+                p.add(0, 1, coords.data());
+                q.add(0, 1, coords.data());
             }
         }
         QCOMPARE(p.count(4) + p.count(1), batches * batch);

@@ -120,16 +120,17 @@ public:
     int planes() const { return m_layout.planes; }
     std::size_t size() const { return m_size; }
 
-    // One hit of `label` (its colour coordinate `coordinate`) at cell index i = y * cellsX + x
-    // (row 0 at the top), in any layout.
-    void add(std::size_t i, std::uint32_t label, std::uint8_t coordinate)
+    // One hit of `label` at cell index i = y * cellsX + x (row 0 at the top), in any layout;
+    // coordinates[label] is its colour coordinate, read by density buckets only. Labels past
+    // the last plane count in it (the tone map gives them the last colour too).
+    void add(std::size_t i, std::uint32_t label, const std::uint8_t *coordinates)
     {
         if (m_layout.planes > 0)
-            addCount(m_layout.planes == 1 ? i : std::size_t(label) * m_size + i);
+            addCount(std::min<std::size_t>(label, std::size_t(m_layout.planes) - 1) * m_size + i);
         else if (m_mode == Accumulation::Hits)
             addHit(i, label);
         else
-            addDensity(i, coordinate);
+            addDensity(i, coordinates[label]);
     }
     // The layouts' own hits: a count at index j of the planes (one label: j = i; label planes:
     // j = label * size() + i); the buckets' density or hit at cell i.

@@ -68,7 +68,7 @@ struct Plotter {
             ++img.offscreen;
             return;
         }
-        img.add(std::size_t(y) * w + x, label, coords[label]);
+        img.add(std::size_t(y) * w + x, label, coords);
     }
 
     // The cells of the segment from (sx, sy) to (ex, ey), sampled at least once per cell side,

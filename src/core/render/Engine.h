@@ -11,6 +11,11 @@
 //   registers (the same operations in the same order: the same cells).
 // - A picture whose labels all have one colour is drawn as one label into a counts-only
 //   histogram (4 bytes a cell instead of 8): the same picture, half the memory touched.
+//   Random iteration with 2 to 4 labels counts each label in its own plane (Density.h's
+//   label planes): the same picture, the scattered hits in one colour's cache lines where
+//   the labels' parts do not overlap. Deterministic iteration keeps its buckets, which cost
+//   less to clear, merge and tone map per picture (measured on drags: 1.7 vs 2.0 ms at depth
+//   8, 6.2 vs 6.8 ms at depth 11).
 // - Deterministic iteration walks the words depth first with one buffer per level; the last
 //   map is fused with the projection to the raster (x A_i V + b_i V + c: 2D instead of D^2 + 2D
 //   flops per vertex), and the innermost levels are split across threads.
