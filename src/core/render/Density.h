@@ -98,7 +98,8 @@ struct CellLayout {
 
     static CellLayout buckets() { return {}; }
     static CellLayout oneLabel() { return {1, {}}; }
-    // Planes for `labels` labels (2..kMaxPlanes) of these coordinates (labels of them at least).
+    // Planes for `labels` labels (2..kMaxPlanes), label l at coordinates[l]; throws
+    // std::invalid_argument for another number of labels or too few coordinates.
     static CellLayout labelPlanes(int labels, const std::vector<std::uint8_t> &coordinates);
     bool operator==(const CellLayout &o) const = default;
 };
