@@ -12,7 +12,13 @@ namespace {
 
 std::string str(LatticePoint p)
 {
-    return "(" + std::to_string(p.i) + ", " + std::to_string(p.j) + ")";
+    // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on "(" + string.
+    std::string s(1, '(');
+    s += std::to_string(p.i);
+    s += ", ";
+    s += std::to_string(p.j);
+    s += ')';
+    return s;
 }
 
 bool byRow(LatticePoint a, LatticePoint b) { return std::tie(a.j, a.i) < std::tie(b.j, b.i); }
