@@ -497,7 +497,7 @@ void TestEngine::labelPlanesKeepTheBucketsNumbers()
                     for (std::size_t i = 0; i < planes.size(); ++i) {
                         int hit = 0;
                         for (int l = 0; l < labels; ++l)
-                            hit += planes.counts()[std::size_t(l) * planes.size() + i] != 0;
+                            hit += planes.counts()[planes.planeIndex(i, std::uint32_t(l))] != 0;
                         mixed += hit > 1;
                     }
                     if (orbit.ifs == &four)
@@ -524,7 +524,7 @@ void TestEngine::labelPlanesKeepTheBucketsNumbers()
                 const std::uint64_t r = rng.next();
                 const std::size_t cell = (r >> 63) ? 4 : 1;
                 const std::uint32_t label = cell == 4 ? 2u : std::uint32_t((r >> 40) % 3);
-                p.addCountUnchecked(label * p.size() + cell);
+                p.addCountUnchecked(p.planeIndex(cell, label));
                 if (mode == Accumulation::Density)
                     q.addDensityUnchecked(cell, coords[label]);
                 else
@@ -542,7 +542,7 @@ void TestEngine::labelPlanesKeepTheBucketsNumbers()
         p2.reserve(DensityImage::kSpillAt);
         q2.reserve(DensityImage::kSpillAt);
         for (std::uint64_t n = 0; n < DensityImage::kSpillAt; ++n) {
-            p2.addCountUnchecked(0 * p2.size() + 4);
+            p2.addCountUnchecked(p2.planeIndex(4, 0));
             if (mode == Accumulation::Density)
                 q2.addDensityUnchecked(4, coords[0]);
             else
@@ -573,7 +573,7 @@ void TestEngine::labelPlanesKeepTheBucketsNumbers()
             img.reserve(batch);
             for (std::uint64_t n = 0; n < batch; ++n) {
                 if (layout.planes > 0)
-                    img.addCountUnchecked(img.size() * (layout.planes - 1) + 5);
+                    img.addCountUnchecked(img.planeIndex(5, std::uint32_t(layout.planes - 1)));
                 else
                     img.addDensityUnchecked(5, 255);
             }

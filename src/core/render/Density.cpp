@@ -159,7 +159,7 @@ std::array<double, 2> DensityImage::cell(std::size_t i) const
         std::uint64_t n = 0, sum = 0;
         std::uint32_t first = 0;
         for (int l = planes() - 1; l >= 0; --l) {
-            const std::uint64_t nl = stored(std::size_t(l) * m_size + i);
+            const std::uint64_t nl = stored(planeIndex(i, std::uint32_t(l)));
             n += nl;
             sum += nl * m_layout.coordinates[std::size_t(l)];
             if (nl > 0)
@@ -186,7 +186,7 @@ std::uint64_t DensityImage::count(std::size_t i) const
         return stored(i);
     std::uint64_t n = 0;
     for (int l = 0; l < planes(); ++l)
-        n += stored(std::size_t(l) * m_size + i);
+        n += stored(planeIndex(i, std::uint32_t(l)));
     return n;
 }
 
@@ -197,7 +197,7 @@ std::uint64_t DensityImage::litCells() const
         for (std::size_t i = 0; i < m_size; ++i) {
             bool hit = false;
             for (int l = 0; l < planes() && !hit; ++l) {
-                const std::size_t j = std::size_t(l) * m_size + i;
+                const std::size_t j = planeIndex(i, std::uint32_t(l));
                 hit = m_counts[j] != 0 || m_spilled.count(j);
             }
             lit += hit;
@@ -236,8 +236,8 @@ void DensityImage::addCells(Source &o, std::size_t first, std::size_t last)
         // The cells [first, last) of every plane.
         last = std::min(last, m_size);
         for (int l = 0; l < planes(); ++l)
-            addCounts<Take>(o, std::size_t(l) * m_size + first,
-                            std::size_t(l) * m_size + std::max(first, last));
+            addCounts<Take>(o, planeIndex(first, std::uint32_t(l)),
+                            planeIndex(std::max(first, last), std::uint32_t(l)));
         return;
     }
     last = std::min(last, m_buckets.size());

@@ -127,14 +127,19 @@ public:
     void add(std::size_t i, std::uint32_t label, const std::uint8_t *coordinates)
     {
         if (m_layout.planes > 0)
-            addCount(std::min<std::size_t>(label, std::size_t(m_layout.planes) - 1) * m_size + i);
+            addCount(planeIndex(i, std::min(label, std::uint32_t(m_layout.planes - 1))));
         else if (m_mode == Accumulation::Hits)
             addHit(i, label);
         else
             addDensity(i, coordinates[label]);
     }
+    // Index j of cell i's count in the plane of `label` (< planes()).
+    std::size_t planeIndex(std::size_t i, std::uint32_t label) const
+    {
+        return std::size_t(label) * m_size + i;
+    }
     // The layouts' own hits: a count at index j of the planes (one label: j = i; label planes:
-    // j = label * size() + i); the buckets' density or hit at cell i.
+    // j = planeIndex(i, label)); the buckets' density or hit at cell i.
     void addCount(std::size_t j)
     {
         if (++m_counts[j] >= kSpillAt) [[unlikely]]

@@ -513,10 +513,9 @@ LeafKernels<D> leafKernels()
     return {&fusedRowsBase<D>, &boundsBase, &cellsBase, "baseline"};
 }
 
-// How a kernel adds its hits: the smallest label (hits), the colour coordinate (density), or
-// the count alone (a one-label image: a picture of one colour, in either mode).
-// How a kernel stores a hit (DensityImage's layouts): buckets in hits or density mode, one
-// label's counts, label planes' counts.
+// How a kernel stores a hit (DensityImage's layouts): in buckets, the smallest label (hits) or
+// the colour coordinate (density); the count alone (a one-label image: a picture of one
+// colour, in either mode); the count in the label's plane (label planes).
 enum class Store { Hits, Colours, Counts, Planes };
 
 template <Store M>
@@ -528,7 +527,7 @@ inline void addUnchecked(DensityImage &img, std::size_t i, std::uint32_t label,
     else if constexpr (M == Store::Colours)
         img.addDensityUnchecked(i, coords[label]);
     else if constexpr (M == Store::Planes)
-        img.addCountUnchecked(std::size_t(label) * img.size() + i);
+        img.addCountUnchecked(img.planeIndex(i, label));
     else
         img.addCountUnchecked(i);
 }
@@ -545,7 +544,7 @@ inline void plotCell(DensityImage &img, int w, int h, double sx, double sy, std:
         else if constexpr (M == Store::Colours)
             img.addDensity(i, coords[label]);
         else if constexpr (M == Store::Planes)
-            img.addCount(std::size_t(label) * img.size() + i);
+            img.addCount(img.planeIndex(i, label));
         else
             img.addCount(i);
     } else {
