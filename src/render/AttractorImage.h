@@ -72,6 +72,10 @@ struct RenderInfo {
     bool final = false;             // false for the coarse preview
     QRectF world;                   // the request's world rectangle (the image's extent)
     std::uint64_t litPixels = 0;    // pixels the attractor hit (before dotRadius growth)
+    // Set by gui/views/AttractorRenderer: the caller's tag of the request, and whether the
+    // pass was an interactive one (chosen to fit a frame budget during a gesture).
+    std::uint64_t tag = 0;
+    bool interactive = false;
 };
 
 // Throws InputError when the request cannot be drawn (no maps, a non-contractive IFS, an

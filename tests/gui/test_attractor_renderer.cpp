@@ -80,6 +80,10 @@ private slots:
     void dotRadiusGrowsTheCurve();
     void nonContractiveIfsFails();
     void badStartSetFails();
+    void costModelFitsTheLatestPasses();
+    void interactivePassFitsTheBudget();
+    void interactivePassIsNotCancelled();
+    void refineSkipsTheCoarseLevel();
 };
 
 void TestAttractorRenderer::cubicBSplineIsDrawnOnTheCurve()
@@ -358,6 +362,114 @@ void TestAttractorRenderer::badStartSetFails()
     QVERIFY(failed.wait(awb::test::ms(10000)));
     QVERIFY2(failed.first().at(0).toString().contains(QLatin1String("coordinates")),
              qPrintable(failed.first().at(0).toString()));
+}
+
+void TestAttractorRenderer::costModelFitsTheLatestPasses()
+{
+    PassCostModel model;
+    const QSize size(800, 600);
+    QCOMPARE(model.predict(1000, size), -1.0); // nothing measured
+    QCOMPARE(model.workWithin(12, size), -1.0);
+    // ms = 2 + 0.001 work, exactly: the fit finds the line.
+    for (double work : {1000.0, 4000.0, 10000.0})
+        model.add(work, 2 + 0.001 * work, size);
+    QVERIFY(std::abs(model.predict(6000, size) - 8.0) < 1e-9);
+    QVERIFY(std::abs(model.workWithin(12, size) - 10000.0) < 1e-6);
+    QCOMPARE(model.workWithin(1, size), 0.0); // the fixed part alone is over the budget
+    // Another picture size: what was measured says nothing about it.
+    QCOMPARE(model.predict(6000, QSize(100, 100)), -1.0);
+    // One kind of pass only: proportional, through the origin.
+    PassCostModel one;
+    one.add(5000, 10, size);
+    one.add(5000, 10, size);
+    QVERIFY(std::abs(one.predict(2500, size) - 5.0) < 1e-9);
+    // Garbage is ignored.
+    one.add(0, 3, size);
+    one.add(100, qQNaN(), size);
+    QVERIFY(std::abs(one.predict(2500, size) - 5.0) < 1e-9);
+}
+
+void TestAttractorRenderer::interactivePassFitsTheBudget()
+{
+    AttractorRenderer renderer;
+    QSignalSpy ready(&renderer, &AttractorRenderer::imageReady);
+    QSignalSpy busy(&renderer, &AttractorRenderer::busyChanged);
+    RenderRequest r = cubicRequest(27); // minutes at full depth
+    // Nothing measured yet: the coarse pass's size, 30 000 images (2^14 < 30 000 < 2^15).
+    QCOMPARE(renderer.interactiveDepth(r), 14);
+    renderer.request(r, AttractorRenderer::Quality::Interactive, 7);
+    QVERIFY(ready.wait(awb::test::ms(20000)));
+    const RenderInfo info = ready.last().at(1).value<RenderInfo>();
+    QVERIFY(info.interactive);
+    QCOMPARE(info.tag, std::uint64_t(7));
+    QCOMPARE(info.depth, 14);
+    QVERIFY(!info.final);
+    // A frame is not a job: no progress bar, no "busy".
+    QVERIFY(busy.isEmpty());
+    QVERIFY(!renderer.isBusy());
+    // Measured now: a generous budget allows more, a tiny one the minimum (2000 images).
+    renderer.setFrameBudget(1e6);
+    QVERIFY(renderer.interactiveDepth(r) > 14);
+    renderer.setFrameBudget(1e-6);
+    QCOMPARE(renderer.interactiveDepth(r), 10); // 2^10 < 2000 < 2^11
+    // A request that fits whole is its own final picture.
+    renderer.setFrameBudget(1e6);
+    renderer.request(cubicRequest(9), AttractorRenderer::Quality::Interactive, 8);
+    QVERIFY(ready.wait(awb::test::ms(20000)));
+    QVERIFY(ready.last().at(1).value<RenderInfo>().final);
+    QCOMPARE(ready.last().at(1).value<RenderInfo>().depth, 9);
+    // Random iteration: a sample count, at most the request's.
+    RenderRequest random = cubicRequest(9);
+    random.mode = RenderRequest::Mode::Random;
+    random.samples = 500;
+    QCOMPARE(renderer.interactiveSamples(random), std::uint64_t(500));
+}
+
+void TestAttractorRenderer::interactivePassIsNotCancelled()
+{
+    AttractorRenderer renderer;
+    QSignalSpy ready(&renderer, &AttractorRenderer::imageReady);
+    renderer.setFrameBudget(1e6);
+    const auto tagged = [&](std::uint64_t tag) {
+        for (const auto &args : ready)
+            if (args.at(1).value<RenderInfo>().tag == tag)
+                return true;
+        return false;
+    };
+    // The first pass is drawing (or already done) when the second request comes: it ends
+    // and shows its picture, then the second one's picture follows.
+    renderer.request(cubicRequest(18), AttractorRenderer::Quality::Interactive, 1);
+    QTRY_VERIFY_WITH_TIMEOUT(renderer.drawingInteractive() || tagged(1), awb::test::ms(10000));
+    renderer.request(cubicRequest(12), AttractorRenderer::Quality::Interactive, 2);
+    QTRY_VERIFY_WITH_TIMEOUT(tagged(2), awb::test::ms(30000));
+    QVERIFY(tagged(1));
+    QCOMPARE(ready.first().at(1).value<RenderInfo>().tag, std::uint64_t(1));
+    // A Full request is cancelled by the next one: only the newest picture comes.
+    ready.clear();
+    renderer.request(cubicRequest(27), AttractorRenderer::Quality::Full, 3);
+    QTRY_VERIFY_WITH_TIMEOUT(tagged(3), awb::test::ms(20000)); // its coarse level
+    renderer.request(cubicRequest(12), AttractorRenderer::Quality::Interactive, 4);
+    QTRY_VERIFY_WITH_TIMEOUT(tagged(4), awb::test::ms(20000));
+    QTest::qWait(200);
+    for (const auto &args : ready) {
+        const RenderInfo info = args.at(1).value<RenderInfo>();
+        QVERIFY(info.tag == 4 || (info.tag == 3 && !info.final));
+    }
+    QCOMPARE(ready.last().at(1).value<RenderInfo>().tag, std::uint64_t(4));
+}
+
+void TestAttractorRenderer::refineSkipsTheCoarseLevel()
+{
+    AttractorRenderer renderer;
+    QSignalSpy ready(&renderer, &AttractorRenderer::imageReady);
+    renderer.request(cubicRequest(17), AttractorRenderer::Quality::Refine, 5);
+    QVERIFY(renderer.isBusy());
+    const QList<RenderInfo> infos = waitFinal(ready);
+    QCOMPARE(infos.size(), 1); // no coarse picture first: an interactive one is shown
+    QCOMPARE(infos.first().depth, 17);
+    QCOMPARE(infos.first().tag, std::uint64_t(5));
+    QVERIFY(!infos.first().interactive);
+    QTRY_VERIFY(!renderer.isBusy());
 }
 
 QTEST_MAIN(TestAttractorRenderer)

@@ -8,6 +8,7 @@
 #include "gui/views/AttractorViewDetail.h"
 
 #include "core/analysis/Spectrum.h"
+#include "gui/views/FrameLog.h"
 
 #include <algorithm>
 #include <cmath>
@@ -90,15 +91,19 @@ AttractorView::AttractorView(QWidget *parent) : QWidget(parent)
     m_renderTimer.setSingleShot(true);
     m_renderTimer.setInterval(10);
     connect(&m_renderTimer, &QTimer::timeout, this, &AttractorView::startRender);
+    m_refineTimer.setSingleShot(true);
+    m_refineTimer.setInterval(kRefineDelayMs);
+    connect(&m_refineTimer, &QTimer::timeout, this, &AttractorView::refineRender);
     connect(m_renderer, &AttractorRenderer::imageReady, this,
             [this](const QImage &image, const RenderInfo &info) {
                 m_image = image;
                 m_imageInfo = info;
-                // The renderer delivers only the latest request's images.
-                m_imageVersion = m_requestedVersion;
+                // The request's tag is the content version it drew.
+                m_imageVersion = info.tag;
+                ++m_imageSerial;
                 m_error.clear();
                 update();
-                if (info.final)
+                if (info.final && m_imageVersion == m_contentVersion)
                     emit renderFinished(info);
             });
     connect(m_renderer, &AttractorRenderer::progress, this, [this](double f) {
@@ -250,6 +255,13 @@ void AttractorView::updateStartPlane()
 void AttractorView::dataChanged(bool geometryChanged)
 {
     ++m_contentVersion;
+    if (framelog::enabled() && (m_drag.kind == DragKind::ControlPoint
+                                || m_drag.kind == DragKind::StartVertex)) {
+        m_versionInput.emplace_back(m_contentVersion,
+                                    mapToGlobal(m_drag.lastScreen.toPoint()));
+        if (m_versionInput.size() > 256)
+            m_versionInput.erase(m_versionInput.begin(), m_versionInput.begin() + 128);
+    }
     if (geometryChanged && m_autoFit && m_drag.kind == DragKind::None && width() > 0)
         fitToContents();
     scheduleRender();
@@ -353,13 +365,36 @@ void AttractorView::userMovedView() { m_autoFit = false; }
 
 // ---- rendering --------------------------------------------------------------------------------
 
+void AttractorView::setGestureActive(bool active)
+{
+    if (active == m_externalGesture)
+        return;
+    m_externalGesture = active;
+    if (!active && !isInteractive())
+        refineRender();
+}
+
+bool AttractorView::isInteractive() const
+{
+    return m_externalGesture || m_drag.kind != DragKind::None
+           || (m_wheelGesture.isValid() && m_wheelGesture.elapsed() < kRefineDelayMs);
+}
+
 void AttractorView::scheduleRender()
 {
-    if (isLayerVisible(Layer::Attractor))
-        m_renderTimer.start();
+    if (!isLayerVisible(Layer::Attractor))
+        return;
+    // During a gesture a render starts at the next turn of the event loop (the edits of one
+    // pointer event coalesce); otherwise after a short pause (a burst of setters).
+    m_renderTimer.start(isInteractive() ? 0 : 10);
 }
 
 void AttractorView::startRender()
+{
+    requestRender(isInteractive() ? RenderKind::Interactive : RenderKind::Full);
+}
+
+void AttractorView::requestRender(RenderKind kind)
 {
     if (!m_ifs || !isVisible() || width() < 1 || height() < 1
         || !isLayerVisible(Layer::Attractor)) {
@@ -375,10 +410,39 @@ void AttractorView::startRender()
                                           QSize(std::max(1, int(std::lround(width() * dpr))),
                                                 std::max(1, int(std::lround(height() * dpr)))),
                                           dpr);
-    m_progress = 0.0;
+    if (kind == RenderKind::Interactive) {
+        // A frame's worth of picture now, the full one when the gesture pauses or ends.
+        m_requestedVersion = m_contentVersion;
+        m_fullRequest.reset();
+        m_cancelled = false;
+        m_renderer->request(r, AttractorRenderer::Quality::Interactive, m_contentVersion);
+        m_refineTimer.start();
+        return;
+    }
+    m_refineTimer.stop();
+    const std::pair<std::uint64_t, QRectF> key{m_contentVersion, world};
+    const bool done = m_imageVersion == m_contentVersion && m_imageInfo.final
+                      && m_imageInfo.world == world && m_image.size() == r.size;
+    // The full picture of this content is drawn or being drawn (a release after a pause).
+    if (kind != RenderKind::Again && ((m_fullRequest == key && m_busy) || done))
+        return;
+    m_fullRequest = key;
     m_requestedVersion = m_contentVersion;
     m_cancelled = false; // a new render replaces the "cancelled" note
-    m_renderer->request(r);
+    m_progress = 0.0;
+    // An interactive picture of this very content is shown: no coarse level first.
+    const bool shown = !m_image.isNull() && m_imageInfo.interactive
+                       && m_imageVersion == m_contentVersion && m_imageInfo.world == world
+                       && m_image.size() == r.size;
+    m_renderer->request(r, shown ? AttractorRenderer::Quality::Refine
+                                 : AttractorRenderer::Quality::Full,
+                        m_contentVersion);
+}
+
+void AttractorView::refineRender()
+{
+    m_renderTimer.stop();
+    requestRender(RenderKind::Full);
 }
 
 RenderRequest AttractorView::renderRequest(const QRectF &world, QSize size,
@@ -421,7 +485,7 @@ void AttractorView::renderAgain()
 {
     m_renderTimer.stop();
     m_cancelled = false;
-    startRender();
+    requestRender(RenderKind::Again);
     update();
 }
 

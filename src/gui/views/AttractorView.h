@@ -23,6 +23,7 @@
 #include <utility>
 #include <vector>
 
+class QMouseEvent;
 class QPainter;
 
 namespace awb {
@@ -85,6 +86,12 @@ public:
     void setStartSetEditable(bool editable) { m_editStart = editable; }
     // Fit the view to the content whenever data arrives, until the user zooms or pans.
     void setAutoFit(bool on) { m_autoFit = on; }
+    // A gesture elsewhere (a slider, a drag in another view, an animation) changes the data
+    // many times a second: draw interactive pictures that fit the frame budget meanwhile, and
+    // the full picture when it ends or pauses. The view's own drags, pans and wheel zooms are
+    // gestures without being told.
+    void setGestureActive(bool active);
+    bool isInteractive() const;
 
     // ---- a selected sub-copy (view state, not a document edit): points of f_w(A) drawn over
     // the attractor, the control polygons S_w P of its pieces, and a caption. Drawn in
@@ -261,8 +268,17 @@ private:
                                 double pixelsPerScreenPixel) const;
     void dataChanged(bool geometryChanged);
     void scheduleRender();
+    // Interactive: a picture within the frame budget (during a gesture); Full: the full
+    // picture, unless it is drawn or being drawn; Again: the full picture anew (F5).
+    enum class RenderKind { Interactive, Full, Again };
     void startRender();
+    void requestRender(RenderKind kind);
+    // The full picture of the current content, after a gesture ends or pauses.
+    void refineRender();
     void userMovedView();
+    // The frame log (gui/views/FrameLog.h): a pointer event, a presented frame, the handles.
+    void logInput(const char *kind, const QMouseEvent *event) const;
+    void logFrame();
     void updateStartPlane();
     void updateHutchinson();
     // F^depth(X0) as vector images when there are at most `maxVertices` vertices; false if more.
@@ -277,6 +293,10 @@ private:
 
     AttractorRenderer *m_renderer = nullptr;
     QTimer m_renderTimer;
+    QTimer m_refineTimer;         // a paused gesture gets its full picture
+    std::optional<std::pair<std::uint64_t, QRectF>> m_fullRequest; // version, world
+    QElapsedTimer m_wheelGesture; // wheel zooms less than a refine delay apart are a gesture
+    bool m_externalGesture = false;
 
     std::shared_ptr<const Ifs> m_ifs;
     CustomIterate m_iterate;
@@ -318,6 +338,11 @@ private:
     mutable bool m_exportCancelled = false;
 
     Drag m_drag;
+    // Frame log: the pointer position (global) each content version came from during a drag,
+    // the picture count, and the handles last written.
+    std::vector<std::pair<std::uint64_t, QPoint>> m_versionInput;
+    std::uint64_t m_imageSerial = 0;
+    std::vector<QPoint> m_loggedHandles;
     int m_hoverControl = -1, m_hoverStart = -1;
     std::optional<QPointF> m_clickPress;   // a left press on empty space: maybe a click
     Highlight m_highlight;

@@ -28,6 +28,8 @@ inline constexpr double kMinScale = 1e-9, kMaxScale = 1e12;
 inline constexpr std::size_t kMaxHutchinsonVertices = 50000;
 // A render faster than this shows no progress text (it would only flicker).
 inline constexpr int kQuietRenderMs = 250;
+// A gesture that pauses this long gets its full picture (the interactive ones fit a frame).
+inline constexpr int kRefineDelayMs = 120;
 // An export's raster is made at the target's device resolution, at most this many pixels a
 // side (a 300 dpi A4 page is 3508 x 2480; a QImage this big takes 256 MB).
 inline constexpr int kMaxExportRaster = 8192;

@@ -6,6 +6,8 @@
 
 #include "gui/views/AttractorViewDetail.h"
 
+#include "gui/views/FrameLog.h"
+
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QWheelEvent>
@@ -101,6 +103,7 @@ int AttractorView::controlEdgeAt(const QPointF &screen, QPointF *world) const
 
 void AttractorView::mousePressEvent(QMouseEvent *event)
 {
+    logInput("press", event);
     if (m_drag.kind != DragKind::None) {
         event->accept(); // a second button during a drag changes nothing
         return;
@@ -141,6 +144,7 @@ void AttractorView::mousePressEvent(QMouseEvent *event)
 
 void AttractorView::mouseMoveEvent(QMouseEvent *event)
 {
+    logInput("move", event);
     const QPointF pos = event->position();
     emit cursorMoved(screenToWorld(pos));
     switch (m_drag.kind) {
@@ -185,6 +189,7 @@ void AttractorView::mouseMoveEvent(QMouseEvent *event)
 
 void AttractorView::mouseReleaseEvent(QMouseEvent *event)
 {
+    logInput("release", event);
     const Drag d = m_drag;
     const bool ends = (d.kind == DragKind::Pan && (event->button() == Qt::MiddleButton
                                                    || event->button() == Qt::RightButton))
@@ -211,6 +216,9 @@ void AttractorView::mouseReleaseEvent(QMouseEvent *event)
         emit controlPointReleased(d.index, d.startWorld, d.currentWorld);
     else if (d.kind == DragKind::StartVertex)
         emit startVertexReleased(d.index, d.startWorld, d.currentWorld);
+    // The gesture is over: the full picture now, not after the pause of a gesture.
+    if (!isInteractive())
+        refineRender();
     update();
     event->accept();
 }
@@ -238,6 +246,7 @@ void AttractorView::wheelEvent(QWheelEvent *event)
         return;
     }
     userMovedView();
+    m_wheelGesture.start(); // a burst of wheel events: interactive pictures until it pauses
     zoomBy(std::pow(1.2, notches), event->position());
     event->accept();
 }
@@ -274,6 +283,15 @@ void AttractorView::keyPressEvent(QKeyEvent *event)
         return;
     }
     event->accept();
+}
+
+void AttractorView::logInput(const char *kind, const QMouseEvent *event) const
+{
+    if (!framelog::enabled())
+        return;
+    const QPoint g = event->globalPosition().toPoint();
+    framelog::write("input", QStringLiteral("attractor %1 %2 %3")
+                                 .arg(QLatin1String(kind)).arg(g.x()).arg(g.y()));
 }
 
 void AttractorView::leaveEvent(QEvent *event)

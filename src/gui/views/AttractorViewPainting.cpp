@@ -6,6 +6,7 @@
 #include "render/CurvePaths.h"
 
 #include "gui/views/AttractorViewDetail.h"
+#include "gui/views/FrameLog.h"
 
 #include <QPainter>
 #include <QPainterPath>
@@ -28,6 +29,42 @@ void AttractorView::paintEvent(QPaintEvent *)
     p.setRenderHint(QPainter::Antialiasing);
     paintScene(p, screenMapping(), false);
     paintStatus(p);
+    p.end();
+    if (framelog::enabled())
+        logFrame();
+}
+
+void AttractorView::logFrame()
+{
+    QString handle = QStringLiteral("-"), shows = QStringLiteral("-");
+    if (m_drag.kind == DragKind::ControlPoint || m_drag.kind == DragKind::StartVertex)
+        handle = framelog::point(mapToGlobal(worldToScreen(m_drag.currentWorld).toPoint()));
+    for (auto it = m_versionInput.rbegin(); it != m_versionInput.rend(); ++it)
+        if (it->first <= m_imageVersion) {
+            if (it->first + 1 > m_imageVersion) // the picture of exactly that edit
+                shows = framelog::point(it->second);
+            break;
+        }
+    const bool final = m_imageInfo.final && m_imageVersion == m_contentVersion;
+    framelog::write("frame", QStringLiteral("attractor image=%1 final=%2 handle=%3 shows=%4 "
+                                            "depth=%5 work=%6 ms=%7")
+                                 .arg(m_imageSerial).arg(final ? 1 : 0).arg(handle, shows)
+                                 .arg(m_imageInfo.depth).arg(m_imageInfo.images)
+                                 .arg(m_imageInfo.seconds * 1e3, 0, 'f', 1));
+    if (!final || m_drag.kind != DragKind::None)
+        return;
+    std::vector<QPoint> handles;
+    for (int i = 0; i < int(m_control.size()); ++i)
+        handles.push_back(mapToGlobal(worldToScreen(m_control[std::size_t(i)]).toPoint()));
+    if (handles == m_loggedHandles)
+        return;
+    m_loggedHandles = handles;
+    const QPoint o = mapToGlobal(QPoint(0, 0));
+    framelog::write("area", QStringLiteral("attractor %1 %2 %3 %4")
+                                .arg(o.x()).arg(o.y()).arg(width()).arg(height()));
+    for (std::size_t i = 0; i < handles.size(); ++i)
+        framelog::write("handle", QStringLiteral("attractor %1 %2 %3")
+                                      .arg(i).arg(handles[i].x()).arg(handles[i].y()));
 }
 
 void AttractorView::renderTo(QPainter *painter, const QRectF &target, Framing framing)
