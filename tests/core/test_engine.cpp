@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <random>
 #include <stdexcept>
 
 using namespace awb;
@@ -125,6 +126,7 @@ private slots:
     void badInputIsRefused();
     void smallImagesMatchTheRasteriser();
     void vectorKernelsMatchTheBaseline();
+    void dilateMatchesItsDefinition();
 };
 
 void TestEngine::kernelsAgreeWithTheSinkPath()
@@ -854,6 +856,51 @@ void TestEngine::vectorKernelsMatchTheBaseline()
                     QVERIFY2(native.offscreen == baseline.offscreen, qPrintable(what));
                 }
     qInfo("vector kernels here: %s", isa.constData());
+}
+
+// The dots' growth (dilate): each unlit pixel takes the most opaque pixel of its (2r+1)^2
+// window, the first in row-major order on a tie; lit pixels keep their colour. The fast
+// version (lit pixels spread, empty rows skipped) must give exactly this.
+void TestEngine::dilateMatchesItsDefinition()
+{
+    std::mt19937 random(7);
+    for (int r = 1; r <= 4; ++r) {
+        for (const double fill : {0.0, 0.002, 0.05, 0.5}) {
+            const int w = 67, h = 41;
+            std::vector<std::uint32_t> image(std::size_t(w) * h, 0);
+            std::uniform_real_distribution<double> u(0, 1);
+            for (std::uint32_t &p : image)
+                if (u(random) < fill)
+                    p = (std::uint32_t(1 + random() % 255) << 24) | (random() & 0xffffffu);
+            // A lit pixel in the bottom-left corner.
+            image[std::size_t(w) * (h - 1)] = 0xff102030u;
+            std::vector<std::uint32_t> expected(image.size());
+            for (int y = 0; y < h; ++y)
+                for (int x = 0; x < w; ++x) {
+                    const std::uint32_t own = image[std::size_t(y) * w + x];
+                    if (own >> 24) {
+                        expected[std::size_t(y) * w + x] = own;
+                        continue;
+                    }
+                    // Per row the leftmost most opaque pixel, then the topmost of those.
+                    std::uint32_t best = 0;
+                    for (int yy = std::max(0, y - r); yy <= std::min(h - 1, y + r); ++yy) {
+                        std::uint32_t rowBest = 0;
+                        for (int xx = std::max(0, x - r); xx <= std::min(w - 1, x + r); ++xx) {
+                            const std::uint32_t c = image[std::size_t(yy) * w + xx];
+                            if ((c >> 24) > (rowBest >> 24))
+                                rowBest = c;
+                        }
+                        if ((rowBest >> 24) > (best >> 24))
+                            best = rowBest;
+                    }
+                    expected[std::size_t(y) * w + x] = best;
+                }
+            dilate(image.data(), w, h, r);
+            QVERIFY2(image == expected,
+                     qPrintable(QStringLiteral("r = %1, fill %2").arg(r).arg(fill)));
+        }
+    }
 }
 
 QTEST_GUILESS_MAIN(TestEngine)

@@ -526,27 +526,59 @@ void toneMapInto(const DensityImage &image, const RasterFrame &frame, const Tone
 
 void dilate(std::uint32_t *argb, int width, int height, int r)
 {
-    if (r <= 0)
+    if (r <= 0 || width <= 0 || height <= 0)
         return;
-    auto pick = [](std::uint32_t best, std::uint32_t c) { return (c >> 24) > (best >> 24) ? c : best; };
-    std::vector<std::uint32_t> tmp(std::size_t(width) * height);
-    for (int y = 0; y < height; ++y)
+    // Each output pixel takes the most opaque pixel of its (2r+1)^2 window, the first in
+    // row-major order on a tie (separably: the leftmost along a row, then the topmost), and
+    // lit pixels keep their own colour. Most of a picture is empty: the row pass visits only
+    // lit pixels and spreads each to its window (ascending order, replacing only a strictly
+    // more opaque one: the leftmost wins), and the column pass skips rows with nothing lit
+    // within r. The buffers stay with the thread (a drag draws many pictures).
+    const auto alpha = [](std::uint32_t c) { return c >> 24; };
+    const std::size_t w = std::size_t(width);
+    static thread_local std::vector<std::uint32_t> tmp;
+    static thread_local std::vector<std::uint8_t> rowLit;
+    if (tmp.size() < w * std::size_t(height))
+        tmp.resize(w * std::size_t(height));
+    rowLit.assign(std::size_t(height), 0);
+    for (int y = 0; y < height; ++y) {
+        const std::uint32_t *row = argb + std::size_t(y) * w;
+        std::uint32_t *out = tmp.data() + std::size_t(y) * w;
+        bool any = false;
         for (int x = 0; x < width; ++x) {
-            std::uint32_t best = 0;
-            for (int k = std::max(0, x - r); k <= std::min(width - 1, x + r); ++k)
-                best = pick(best, argb[std::size_t(y) * width + k]);
-            tmp[std::size_t(y) * width + x] = best;
+            if (!alpha(row[x]))
+                continue;
+            if (!any) {
+                std::fill(out, out + w, 0u);
+                any = true;
+            }
+            for (int k = std::max(0, x - r), e = std::min(width - 1, x + r); k <= e; ++k)
+                if (alpha(row[x]) > alpha(out[k]))
+                    out[k] = row[x];
         }
-    for (int y = 0; y < height; ++y)
+        rowLit[std::size_t(y)] = any;
+    }
+    for (int y = 0; y < height; ++y) {
+        const int k0 = std::max(0, y - r), k1 = std::min(height - 1, y + r);
+        bool near = false;
+        for (int k = k0; k <= k1 && !near; ++k)
+            near = rowLit[std::size_t(k)] != 0;
+        if (!near)
+            continue;
+        std::uint32_t *dst = argb + std::size_t(y) * w;
         for (int x = 0; x < width; ++x) {
-            std::uint32_t &dst = argb[std::size_t(y) * width + x];
-            if (dst >> 24)
+            if (alpha(dst[x]))
                 continue;  // lit pixels keep their own colour
             std::uint32_t best = 0;
-            for (int k = std::max(0, y - r); k <= std::min(height - 1, y + r); ++k)
-                best = pick(best, tmp[std::size_t(k) * width + x]);
-            dst = best;
+            for (int k = k0; k <= k1; ++k)
+                if (rowLit[std::size_t(k)]) {
+                    const std::uint32_t c = tmp[std::size_t(k) * w + std::size_t(x)];
+                    if (alpha(c) > alpha(best))
+                        best = c;
+                }
+            dst[x] = best;
         }
+    }
 }
 
 } // namespace awb
