@@ -9,6 +9,8 @@
 #include <QRegularExpression>
 #include <QSet>
 
+#include <algorithm>
+
 namespace awb {
 
 namespace {
@@ -366,6 +368,24 @@ QByteArray Project::serialize() const
     return ProjectIO::toBytes(ProjectIO::toJson(*this));
 }
 
+int Project::beginGesture()
+{
+    m_openGestures.push_back(++m_lastGesture);
+    if (m_openGestures.size() == 1)
+        emit gestureActiveChanged(true);
+    return m_lastGesture;
+}
+
+void Project::endGesture(int id)
+{
+    const auto it = std::find(m_openGestures.begin(), m_openGestures.end(), id);
+    if (it == m_openGestures.end())
+        return;
+    m_openGestures.erase(it);
+    if (m_openGestures.empty())
+        emit gestureActiveChanged(false);
+}
+
 void Project::clear()
 {
     replaceContent({}, {}, {});
@@ -382,6 +402,11 @@ void Project::replaceContent(std::vector<std::unique_ptr<Item>> items,
                              const QJsonObject &unknown, const QString &fileName)
 {
     emit aboutToReset();
+    // Gestures edit items that are about to go.
+    if (!m_openGestures.empty()) {
+        m_openGestures.clear();
+        emit gestureActiveChanged(false);
+    }
     m_compound.reset();
     m_compoundDepth = 0;
     m_stack.clear(); // its commands point into the old items: drop them first

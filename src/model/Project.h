@@ -54,8 +54,14 @@ public:
     // compound leaves no step behind.
     void beginCompound(const QString &text);
     void endCompound();
-    // A fresh id for one interactive gesture (a drag): its edits merge into one undo step.
-    int beginGesture() { return ++m_lastGesture; }
+    // A fresh id for one interactive gesture (a drag, a slider): its edits merge into one
+    // undo step. The gesture is open until endGesture(id); while any is open, gestureActive()
+    // is true, and views may draw quicker, coarser frames and defer what the pointer does not
+    // need (the GUI's FrameBudget). Opening the first and closing the last emit
+    // gestureActiveChanged. Ending an unknown or ended id does nothing.
+    int beginGesture();
+    void endGesture(int id);
+    bool gestureActive() const { return !m_openGestures.empty(); }
 
     // ---- files
     bool isModified() const { return !m_stack.isClean(); }
@@ -95,6 +101,7 @@ signals:
     void reset();
     void modifiedChanged(bool modified);
     void fileNameChanged(const QString &fileName);
+    void gestureActiveChanged(bool active);
 
 private:
     friend class InsertItemCommand;
@@ -125,6 +132,7 @@ private:
     std::unique_ptr<CompoundCommand> m_compound;
     int m_compoundDepth = 0;
     int m_lastGesture = 0;
+    std::vector<int> m_openGestures;
 };
 
 // Runs the edits of its lifetime as one compound undo step (no-op without a project).

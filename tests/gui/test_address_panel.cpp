@@ -6,6 +6,7 @@
 #include "gui/app/AddressPanel.h"
 #include "gui/app/ItemController.h"
 #include "gui/app/MainWindow.h"
+#include "gui/app/StatusText.h"
 #include "gui/views/AttractorView.h"
 #include "model/AttractorItem.h"
 #include "model/ItemAddress.h"
@@ -44,11 +45,13 @@ void click(QWidget *w, const QPointF &pos)
     QApplication::sendEvent(w, &release);
 }
 
-// The status bar's text of all its labels.
+// The status bar's text of all its labels and readouts.
 QString statusText(MainWindow &w)
 {
     QStringList texts;
     for (QLabel *l : w.statusBar()->findChildren<QLabel *>())
+        texts << l->text();
+    for (StatusText *l : w.statusBar()->findChildren<StatusText *>())
         texts << l->text();
     return texts.join(QStringLiteral(" | "));
 }

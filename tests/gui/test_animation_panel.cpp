@@ -38,6 +38,8 @@ QString examplePath()
 
 std::vector<Complex> shownEigenvalues(MainWindow &w)
 {
+    // The docks follow the views at the next turn of the event loop (FrameBudget).
+    QCoreApplication::processEvents();
     std::vector<Complex> all;
     for (const MapSpectrum &m : w.spectrumView()->maps())
         all.insert(all.end(), m.spectrum.values.begin(), m.spectrum.values.end());

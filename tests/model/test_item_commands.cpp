@@ -214,6 +214,31 @@ private slots:
         QCOMPARE(m_c->controlPoints()[3], (Point{4.0 + 50 * 0.1, 1.0 - 50 * 0.05}));
     }
 
+    void gesturesOpenUntilEnded()
+    {
+        QSignalSpy active(m_project.get(), &Project::gestureActiveChanged);
+        QVERIFY(!m_project->gestureActive());
+        const int drag = m_project->beginGesture();
+        QVERIFY(m_project->gestureActive());
+        const int slider = m_project->beginGesture(); // a second one meanwhile
+        QVERIFY(drag != slider);
+        QCOMPARE(active.size(), 1);
+        m_project->endGesture(drag);
+        QVERIFY(m_project->gestureActive()); // the slider is still held
+        m_project->endGesture(drag);         // twice: nothing
+        m_project->endGesture(12345);        // unknown: nothing
+        m_project->endGesture(slider);
+        QVERIFY(!m_project->gestureActive());
+        QCOMPARE(active.size(), 2);
+        QCOMPARE(active.at(0).at(0).toBool(), true);
+        QCOMPARE(active.at(1).at(0).toBool(), false);
+        // A gesture open when the content is replaced ends with it.
+        m_project->beginGesture();
+        m_project->clear();
+        QVERIFY(!m_project->gestureActive());
+        QCOMPARE(active.size(), 4);
+    }
+
     void dragBackToTheStartLeavesNoStep()
     {
         const PointList original = m_c->controlPoints();

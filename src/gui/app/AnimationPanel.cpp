@@ -239,7 +239,10 @@ void AnimationPanel::setItem(Item *item)
 {
     if (item == m_item)
         return;
+    const bool wasPlaying = isPlaying();
     m_timer->stop();
+    if (wasPlaying)
+        emit playingChanged(false);
     if (m_item)
         disconnect(m_item, nullptr, this, nullptr);
     const bool wasPreviewing = m_previewing;
@@ -293,7 +296,10 @@ void AnimationPanel::play()
         m_slider->setValue(0);
     m_playStart = time();
     m_clock.start();
+    const bool wasPlaying = isPlaying();
     m_timer->start(std::max(1, int(std::lround(1000.0 / spec.fps))));
+    if (!wasPlaying)
+        emit playingChanged(true);
     m_play->setIcon(QIcon::fromTheme(QStringLiteral("media-playback-pause"),
                                      style()->standardIcon(QStyle::SP_MediaPause)));
     m_play->setText(tr("Pause"));
@@ -302,7 +308,10 @@ void AnimationPanel::play()
 
 void AnimationPanel::pause()
 {
+    const bool wasPlaying = isPlaying();
     m_timer->stop();
+    if (wasPlaying)
+        emit playingChanged(false);
     m_play->setIcon(QIcon::fromTheme(QStringLiteral("media-playback-start"),
                                      style()->standardIcon(QStyle::SP_MediaPlay)));
     m_play->setText(tr("Play"));

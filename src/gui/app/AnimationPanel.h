@@ -70,6 +70,8 @@ signals:
     void frameChanged(std::shared_ptr<Item> frame);
     // An edit was refused or a frame could not be made: the message says why.
     void problem(const QString &message);
+    // Play started or ended (a gesture for the window's FrameBudget).
+    void playingChanged(bool playing);
 
 private:
     void rebuild();           // the widgets from the item's animation

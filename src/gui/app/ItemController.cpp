@@ -4,6 +4,7 @@
 #include "core/analysis/Geometry.h"
 #include "core/schemes/Scheme.h"
 #include "core/analysis/Spectrum.h"
+#include "gui/app/FrameBudget.h"
 #include "gui/views/AnalysisCharts.h"
 #include "gui/views/AttractorView.h"
 #include "gui/views/MatrixView.h"
@@ -134,13 +135,23 @@ QList<NamedMatrix> plotMatrices(const EigenvalueData &data)
 } // namespace
 
 ItemController::ItemController(AttractorView *attractor, MatrixView *matrices,
-                               SpectrumView *spectrum, AnalysisCharts *charts, QObject *parent)
+                               SpectrumView *spectrum, AnalysisCharts *charts,
+                               FrameBudget *budget, QObject *parent)
     : QObject(parent), m_attractor(attractor), m_matrices(matrices), m_spectrum(spectrum),
-      m_charts(charts)
+      m_charts(charts), m_budget(budget ? budget : new FrameBudget(this))
 {
     m_refreshTimer.setSingleShot(true);
     m_refreshTimer.setInterval(0);
-    connect(&m_refreshTimer, &QTimer::timeout, this, &ItemController::refreshNow);
+    connect(&m_refreshTimer, &QTimer::timeout, this, &ItemController::refreshViews);
+    // The docks beside the view: coalesced during gestures (FrameBudget).
+    m_matricesPanel = m_budget->addPanel(m_matrices, [this] { showMatrices(); });
+    m_spectrumPanel = m_budget->addPanel(m_spectrum, [this] { showSpectrum(); });
+    m_chartsPanel = m_budget->addPanel(m_charts, [this] { showCharts(); });
+    connect(m_budget, &FrameBudget::gestureChanged, this, [this](bool active) {
+        m_attractor->setGestureActive(active);
+        if (m_surface)
+            m_surface->setGestureActive(active);
+    });
     // The analysis waits until a drag pauses: it is the slow part.
     m_analysisTimer.setSingleShot(true);
     m_analysisTimer.setInterval(250);
@@ -181,7 +192,7 @@ void ItemController::setItem(Item *item)
     m_connections.clear();
     m_item = item;
     m_frame.reset();
-    m_gesture = 0;
+    endGesture();
     m_highlightedMap = -1;
     if (item) {
         m_connections << connect(item, &Item::derivedChanged, this,
@@ -215,8 +226,8 @@ void ItemController::showFrame(std::shared_ptr<Item> frame)
     if (frame && !m_frame)
         m_attractor->setAutoFit(false); // a moving attractor in a steady frame
     m_frame = std::move(frame);
-    m_gesture = 0;
-    refreshNow();
+    endGesture();
+    refreshViews();
 }
 
 AttractorItem *ItemController::drawnItem() const
@@ -241,7 +252,7 @@ void ItemController::setSurfaceView(SurfaceView *view)
             [this](int index, const QVector3D &start, const QVector3D &end) {
                 if (start != end)
                     onControlDragged3D(index, end);
-                m_gesture = 0;
+                endGesture();
                 scheduleRefresh(); // the docks skipped during the drag
             });
     connect(view, &SurfaceView::startVertexPressed, this, &ItemController::onSurfacePressed);
@@ -250,15 +261,31 @@ void ItemController::setSurfaceView(SurfaceView *view)
             [this](int index, const QVector3D &start, const QVector3D &end) {
                 if (start != end)
                     onStartDragged3D(index, end);
-                m_gesture = 0;
+                endGesture();
                 scheduleRefresh();
             });
 }
 
+void ItemController::beginGesture()
+{
+    endGesture();
+    if (!m_item || !m_item->project())
+        return;
+    m_gestureProject = m_item->project();
+    m_gesture = m_gestureProject->beginGesture();
+}
+
+void ItemController::endGesture()
+{
+    if (m_gesture != 0 && m_gestureProject)
+        m_gestureProject->endGesture(m_gesture);
+    m_gesture = 0;
+    m_gestureProject = nullptr;
+}
+
 void ItemController::onSurfacePressed()
 {
-    if (m_item && m_item->project())
-        m_gesture = m_item->project()->beginGesture();
+    beginGesture();
 }
 
 void ItemController::onControlDragged3D(int index, const QVector3D &world)
@@ -272,37 +299,73 @@ void ItemController::onStartDragged3D(int index, const QVector3D &world)
     moveStartVertex(index, {world.x(), world.y(), world.z()});
 }
 
-void ItemController::showAnalysis(const DerivedIfs &d, bool editableMatrices,
-                                  const EigenvaluePlotItem *plot)
+// The derived data the docks show: of the drawn item, or nothing.
+std::shared_ptr<const DerivedIfs> ItemController::drawnDerived() const
 {
-    QList<MapSpectrum> spectra = mapSpectra(d);
-    if (plot) {
-        // The plot's own choice of matrices; the verdicts on contractivity stay the maps'.
+    AttractorItem *item = drawnItem();
+    return item ? item->derivedIfs() : nullptr;
+}
+
+QList<MapSpectrum> ItemController::currentSpectra() const
+{
+    const auto d = drawnDerived();
+    if (!d)
+        return {};
+    QList<MapSpectrum> spectra = mapSpectra(*d);
+    const auto *plot = qobject_cast<const EigenvaluePlotItem *>(m_item.data());
+    if (!plot)
+        return spectra;
+    // The plot's own choice of matrices; the verdicts on contractivity stay the maps'.
+    const auto data = plot->eigenvalues();
+    QList<MapSpectrum> chosen;
+    for (std::size_t i = 0; data && i < data->spectra.size(); ++i) {
+        MapSpectrum m = int(i) < spectra.size() ? spectra[int(i)] : MapSpectrum{};
+        m.label = QStringLiteral("%1_%2").arg(data->symbol).arg(i + 1);
+        m.spectrum = data->spectra[i];
+        m.subdominant = data->subdominants[i];
+        chosen.append(m);
+    }
+    return chosen;
+}
+
+void ItemController::showMatrices()
+{
+    const auto d = drawnDerived();
+    const auto *plot = qobject_cast<const EigenvaluePlotItem *>(m_item.data());
+    if (!d) {
+        m_matrices->setMatrices({});
+    } else if (plot) {
         const auto data = plot->eigenvalues();
-        QList<MapSpectrum> chosen;
-        for (std::size_t i = 0; data && i < data->spectra.size(); ++i) {
-            MapSpectrum m = int(i) < spectra.size() ? spectra[int(i)] : MapSpectrum{};
-            m.label = QStringLiteral("%1_%2").arg(data->symbol).arg(i + 1);
-            m.spectrum = data->spectra[i];
-            m.subdominant = data->subdominants[i];
-            chosen.append(m);
-        }
-        spectra = chosen;
         m_matrices->setEditable(false);
         m_matrices->setMatrices(data ? plotMatrices(*data) : QList<NamedMatrix>{});
     } else {
-        m_matrices->setEditable(editableMatrices);
-        m_matrices->setMatrices(namedMatrices(d, editableMatrices));
+        const auto *curve = qobject_cast<const SubdivisionCurveItem *>(drawnItem());
+        const bool editable = curve && curve->scheme().kind == SchemeSpec::Kind::Matrices
+                              && !m_frame && !showsSurface();
+        m_matrices->setEditable(editable);
+        m_matrices->setMatrices(namedMatrices(*d, editable));
     }
-    m_spectrum->setMaps(spectra);
+}
+
+void ItemController::showSpectrum()
+{
+    m_spectrum->setMaps(currentSpectra());
+}
+
+void ItemController::showCharts()
+{
     QList<AnalysisCharts::MapModuli> moduli;
-    for (const MapSpectrum &m : spectra) {
+    for (const MapSpectrum &m : currentSpectra()) {
         AnalysisCharts::MapModuli mm{m.label, {}};
         for (const Complex &z : m.spectrum.values)
             mm.moduli.push_back(std::abs(z));
         moduli.append(mm);
     }
     m_charts->setModuli(moduli);
+    updateRegularity();
+    // The distances and dimensions of a curve (the slow part) wait until edits pause.
+    if (drawnDerived() && !showsSurface())
+        m_analysisTimer.start();
 }
 
 void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
@@ -366,11 +429,9 @@ void ItemController::setSubdivisionSteps(int steps)
 
 void ItemController::scheduleRefresh()
 {
-    // During a drag the views follow every move at once (live update); otherwise coalesce.
-    if (m_gesture != 0)
-        refreshNow();
-    else
-        m_refreshTimer.start();
+    // The signals of one edit (changed, derivedChanged) and the edits of one pointer event
+    // make one update, at the next turn of the event loop; the docks follow by the budget.
+    m_refreshTimer.start();
 }
 
 void ItemController::clearViews()
@@ -395,6 +456,19 @@ void ItemController::clearViews()
 
 void ItemController::refreshNow()
 {
+    refreshViews();
+    m_budget->flush();
+}
+
+void ItemController::markPanelsDirty()
+{
+    m_budget->markDirty(m_matricesPanel);
+    m_budget->markDirty(m_spectrumPanel);
+    m_budget->markDirty(m_chartsPanel);
+}
+
+void ItemController::refreshViews()
+{
     m_refreshTimer.stop();
     const auto *plot = qobject_cast<const EigenvaluePlotItem *>(m_item.data());
     AttractorItem *item = drawnItem();
@@ -409,14 +483,9 @@ void ItemController::refreshNow()
     } else if (auto d = item->derivedIfs(); !d) {
         clearViews();
         problem = tr("%1 cannot be drawn: %2").arg(item->name(), item->derivedError());
-    } else if (m_surface && item->pointDimension() == 3 && m_gesture != 0) {
-        // While a point of the net is dragged only the 3D view follows: the S_i and their
-        // spectra do not depend on the points, and the M_i tables (six of 19 x 19 and more)
-        // would cost the drag its frame rate. The docks catch up on release.
-        refreshSurface(item, *d);
     } else if (m_surface && item->pointDimension() == 3) {
         refreshSurface(item, *d);
-        showAnalysis(*d, false, plot);
+        markPanelsDirty();
         if (!d->note.isEmpty())
             problem = d->note;
     } else {
@@ -495,14 +564,10 @@ void ItemController::refreshNow()
             m_attractor->setExactCurve(Mat());
         m_attractor->setSubdivisionPolygons(polygons, polygonsClosed);
 
-        const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item);
-        const bool ownMatrices = curve && curve->scheme().kind == SchemeSpec::Kind::Matrices;
-        showAnalysis(*d, ownMatrices && !plot && !m_frame, plot);
+        markPanelsDirty();
         if (!d->note.isEmpty())
             problem = d->note;
-        m_analysisTimer.start();
     }
-    updateRegularity();
     if (plot && !plot->eigenvalues())
         problem = tr("%1 shows nothing: %2").arg(plot->name(), plot->derivedError());
     if (problem != m_problem) {
@@ -556,6 +621,10 @@ void ItemController::cancelAnalysis()
 
 void ItemController::startAnalysis()
 {
+    if (m_budget->inGesture()) {
+        m_analysisTimer.start(); // the renderer has the cores now
+        return;
+    }
     cancelAnalysis();
     AttractorItem *item = drawnItem();
     if (!item)
@@ -647,8 +716,7 @@ void ItemController::onControlPressed(int)
 {
     // The view must not refit under the user's hand while the curve changes shape.
     m_attractor->setAutoFit(false);
-    if (m_item && m_item->project())
-        m_gesture = m_item->project()->beginGesture();
+    beginGesture();
 }
 
 void ItemController::onControlDragged(int index, const QPointF &world)
@@ -663,14 +731,13 @@ void ItemController::onControlReleased(int index, const QPointF &start, const QP
 {
     if (start != end)
         onControlDragged(index, end);
-    m_gesture = 0;
+    endGesture();
 }
 
 void ItemController::onStartPressed(int)
 {
     m_attractor->setAutoFit(false);
-    if (m_item && m_item->project())
-        m_gesture = m_item->project()->beginGesture();
+    beginGesture();
 }
 
 void ItemController::onStartDragged(int index, const QPointF &world)
@@ -694,7 +761,7 @@ void ItemController::onStartReleased(int index, const QPointF &start, const QPoi
 {
     if (start != end)
         onStartDragged(index, end);
-    m_gesture = 0;
+    endGesture();
 }
 
 void ItemController::onCellEdited(int matrix, int row, int column, double value)

@@ -25,13 +25,16 @@ class AnalysisCharts;
 class AttractorItem;
 class AttractorView;
 class EigenvaluePlotItem;
+class FrameBudget;
 class Item;
 class MatrixView;
 class RegularityPanel;
 class Messages;
+class Project;
 class SpectrumView;
 class SurfaceView;
 struct AnalysisResult;
+struct MapSpectrum;
 
 struct DerivedIfs;
 
@@ -39,8 +42,10 @@ struct DerivedIfs;
 class ItemController : public QObject {
     Q_OBJECT
 public:
+    // `budget` coalesces the docks' updates during gestures (nullptr: the controller's own).
     ItemController(AttractorView *attractor, MatrixView *matrices, SpectrumView *spectrum,
-                   AnalysisCharts *charts, QObject *parent = nullptr);
+                   AnalysisCharts *charts, FrameBudget *budget = nullptr,
+                   QObject *parent = nullptr);
     ~ItemController() override;
 
     void setItem(Item *item);
@@ -66,9 +71,10 @@ public:
     // The panel that shows the current curve scheme's certified regularity (issue 16).
     void setRegularityPanel(RegularityPanel *panel);
     int subdivisionSteps() const { return m_subdivisionSteps; }
-    // Pushes the item's current data to every view at once (normally deferred to the event
-    // loop so that a burst of edits costs one update).
+    // Pushes the item's current data to every view and dock at once (normally deferred to the
+    // event loop so that a burst of edits costs one update, and the docks to the FrameBudget).
     void refreshNow();
+    FrameBudget *frameBudget() const { return m_budget; }
     // Whether the analysis worker is running.
     bool analysisRunning() const { return m_worker.joinable() && !m_workerDone; }
     void cancelAnalysis();
@@ -107,6 +113,18 @@ signals:
 
 private:
     void scheduleRefresh();
+    // The central view (attractor or 3D) now; the docks are marked for the FrameBudget.
+    void refreshViews();
+    void markPanelsDirty();
+    // The docks, each brought up to date with the drawn item (FrameBudget panels).
+    void showMatrices();
+    void showSpectrum();
+    void showCharts();
+    std::shared_ptr<const DerivedIfs> drawnDerived() const;
+    QList<MapSpectrum> currentSpectra() const;
+    // A drag in a view: one gesture of the project (one undo step, FrameBudget's gesture).
+    void beginGesture();
+    void endGesture();
     void updateRegularity();
     void clearViews();
     void startAnalysis();
@@ -122,10 +140,6 @@ private:
     void onEdgeDoubleClicked(int flatIndex, const QPointF &world);
     // The surface view's part of refreshNow() (items with 3D points).
     void refreshSurface(AttractorItem *item, const DerivedIfs &d);
-    // The Matrices, Spectrum and Analysis docks for the derived data of the current item; for
-    // an eigenvalue plot (`plot`) the matrices it analyses and their spectra.
-    void showAnalysis(const DerivedIfs &d, bool editableMatrices,
-                      const EigenvaluePlotItem *plot = nullptr);
     // A start-set vertex dragged in either view (one undo step per drag, by gesture).
     void moveStartVertex(int index, const Point &to);
     void onSurfacePressed();
@@ -143,6 +157,9 @@ private:
     QList<QMetaObject::Connection> m_connections;
     QTimer m_refreshTimer;
     QTimer m_analysisTimer;
+    FrameBudget *m_budget;
+    int m_matricesPanel = -1, m_spectrumPanel = -1, m_chartsPanel = -1;
+    QPointer<Project> m_gestureProject;
     int m_gesture = 0;
     int m_maxDepth = 0;
     int m_subdivisionSteps = 0;

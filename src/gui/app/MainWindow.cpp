@@ -3,6 +3,8 @@
 #include "gui/app/AddressPanel.h"
 #include "gui/app/AnimationPanel.h"
 #include "gui/app/FigureSheet.h"
+#include "gui/app/FrameBudget.h"
+#include "gui/app/StatusText.h"
 #include "gui/app/ItemController.h"
 #include "gui/app/Messages.h"
 #include "gui/app/PaletteDialog.h"
@@ -226,7 +228,15 @@ void MainWindow::createViews()
             });
     m_undoView = new QUndoView(m_project->undoStack());
     m_undoView->setEmptyLabel(tr("<original>"));
-    m_controller = new ItemController(m_attractor, m_matrices, m_spectrum, m_charts, this);
+    // During gestures the view under the pointer gets the frames, the docks follow a few
+    // times a second: the document's gestures (drags, sliders) and playback count.
+    m_budget = new FrameBudget(this);
+    connect(m_project.get(), &Project::gestureActiveChanged, m_budget, [this](bool active) {
+        active ? m_budget->beginGesture() : m_budget->endGesture();
+    });
+    m_properties->setFrameBudget(m_budget);
+    m_controller = new ItemController(m_attractor, m_matrices, m_spectrum, m_charts, m_budget,
+                                      this);
     m_controller->setSurfaceView(m_surface);
     // The scheme's certified regularity sits under the Analysis dock's charts (issue 16).
     auto *regularity = new RegularityPanel;
@@ -240,6 +250,9 @@ void MainWindow::createViews()
     m_animation = new AnimationPanel;
     m_animation->setObjectName(QStringLiteral("animationPanel"));
     connect(m_animation, &AnimationPanel::frameChanged, m_controller, &ItemController::showFrame);
+    connect(m_animation, &AnimationPanel::playingChanged, m_budget, [this](bool playing) {
+        playing ? m_budget->beginGesture() : m_budget->endGesture();
+    });
     connect(m_animation, &AnimationPanel::problem, this,
             [this](const QString &message) { statusBar()->showMessage(message, 8000); });
     // A click on a control point in the 3D view selects its row: x, y, z to edit exactly.
@@ -249,8 +262,10 @@ void MainWindow::createViews()
     });
 
     // Status bar: cursor position, problems, long-work progress with a cancel button.
-    m_cursorLabel = new QLabel;
-    m_cursorLabel->setMinimumWidth(180);
+    // Set on every mouse move: a readout that never lays out the window again.
+    m_cursorLabel = new StatusText(QStringLiteral("x = −0.123456, y = −0.123456   "
+                                                  "w = 0,1,2,0,1,2,0,1   t = 0.1234567"));
+    m_cursorLabel->setObjectName(QStringLiteral("cursorReadout"));
     m_problemLabel = new QLabel;
     m_problemLabel->setObjectName(QStringLiteral("problemLabel"));
     // A long explanation must not widen the window: elided here, whole in the tooltip and in
@@ -363,11 +378,13 @@ void MainWindow::createViews()
         m_messages->error(this, tr("Edit refused"), message);
     });
     connect(m_attractor, &AttractorView::cursorMoved, this, [this](const QPointF &w) {
-        const QString address = m_address->hoverText(w);
+        // The address under the cursor is sampled from the IFS, which a drag changes on every
+        // move: during gestures the readout shows the coordinates only.
+        const QString address = m_budget->inGesture() ? QString() : m_address->hoverText(w);
         const QString at = tr("x = %1, y = %2").arg(w.x(), 0, 'g', 5).arg(w.y(), 0, 'g', 5);
         m_cursorLabel->setText(address.isEmpty() ? at : at + QStringLiteral("   ") + address);
     });
-    connect(m_attractor, &AttractorView::cursorLeft, m_cursorLabel, &QLabel::clear);
+    connect(m_attractor, &AttractorView::cursorLeft, m_cursorLabel, &StatusText::clear);
     connect(m_attractor, &AttractorView::renderFailed, this, [this](const QString &message) {
         statusBar()->showMessage(tr("Drawing failed: %1").arg(message), 8000);
     });

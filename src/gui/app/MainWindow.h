@@ -33,6 +33,8 @@ class AnimationPanel;
 class AnalysisCharts;
 class AttractorView;
 class Item;
+class FrameBudget;
+class StatusText;
 class ItemController;
 class MatrixView;
 class Messages;
@@ -159,6 +161,7 @@ private:
     PropertiesWidget *m_properties = nullptr;
     QTreeView *m_tree = nullptr;
     QUndoView *m_undoView = nullptr;
+    FrameBudget *m_budget = nullptr;
     ItemController *m_controller = nullptr;
     QPointer<Item> m_current;
 
@@ -168,7 +171,7 @@ private:
     QByteArray m_defaultState;
     QSpinBox *m_hutchStep = nullptr;
     QSpinBox *m_subdivSteps = nullptr;
-    QLabel *m_cursorLabel = nullptr;
+    StatusText *m_cursorLabel = nullptr;
     QLabel *m_problemLabel = nullptr;
     QProgressBar *m_progress = nullptr;
     QToolButton *m_cancel = nullptr;

@@ -1,5 +1,6 @@
 #include "gui/app/PropertiesDock.h"
 
+#include "gui/app/FrameBudget.h"
 #include "gui/app/Messages.h"
 #include "gui/app/WheelGuard.h"
 #include "gui/views/ComplexPlanePicker.h"
@@ -107,6 +108,7 @@ PropertiesWidget::PropertiesWidget(Messages *messages, QWidget *parent)
 
 void PropertiesWidget::setItem(Item *item)
 {
+    endGesture(m_gesture); // a slider held while the item changes
     for (const auto &c : std::as_const(m_connections))
         disconnect(c);
     m_connections.clear();
@@ -135,10 +137,20 @@ void PropertiesWidget::onItemChanged()
             keys << p.key;
     // The parameter list depends on the state (ω only for the four-point scheme): rebuild
     // when it changed, otherwise only show the new values (keeps focus and slider grabs).
-    if (keys != m_keys)
+    if (keys != m_keys) {
         rebuild();
-    else
+    } else if (m_budget && m_budget->inGesture()) {
+        // During a gesture the editor under the user's hand follows at once, the rest of the
+        // dock a few times a second (FrameBudget).
+        ++m_updating;
+        for (const Binding &b : std::as_const(m_bindings))
+            if (!m_gestureKey.isEmpty() && b.key == m_gestureKey)
+                b.update();
+        --m_updating;
+        m_budget->markDirty(m_budgetPanel);
+    } else {
         updateValues();
+    }
 }
 
 void PropertiesWidget::report(const QString &message)
@@ -147,9 +159,31 @@ void PropertiesWidget::report(const QString &message)
         m_messages->error(this, tr("Value refused"), message);
 }
 
-int PropertiesWidget::beginGesture()
+int PropertiesWidget::beginGesture(const QString &key)
 {
-    return m_item && m_item->project() ? m_item->project()->beginGesture() : 0;
+    if (!m_item || !m_item->project())
+        return 0;
+    m_gestureProject = m_item->project();
+    m_gestureKey = key;
+    m_gesture = m_gestureProject->beginGesture();
+    return m_gesture;
+}
+
+void PropertiesWidget::endGesture(int gesture)
+{
+    if (gesture == 0 || gesture != m_gesture)
+        return;
+    if (m_gestureProject)
+        m_gestureProject->endGesture(gesture);
+    m_gesture = 0;
+    m_gestureKey.clear();
+    m_gestureProject = nullptr;
+}
+
+void PropertiesWidget::setFrameBudget(FrameBudget *budget)
+{
+    m_budget = budget;
+    m_budgetPanel = budget ? budget->addPanel(this, [this] { updateValues(); }) : -1;
 }
 
 bool PropertiesWidget::apply(const QString &key, const QVariant &value, int gesture)
@@ -292,8 +326,9 @@ void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info
             m_sliders.insert(key, slider);
             auto gesture = std::make_shared<int>(0);
             connect(slider, &QSlider::sliderPressed, this,
-                    [this, gesture] { *gesture = beginGesture(); });
-            connect(slider, &QSlider::sliderReleased, this, [gesture] { *gesture = 0; });
+                    [this, gesture, key] { *gesture = beginGesture(key); });
+            connect(slider, &QSlider::sliderReleased, this,
+                    [this, gesture] { endGesture(*gesture); *gesture = 0; });
             connect(slider, &QSlider::valueChanged, this,
                     [this, key, lo, hi, steps, integer, gesture](int pos) {
                         const double v = lo + (hi - lo) * pos / double(std::max(1, steps));
@@ -353,10 +388,11 @@ void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info
         plane->setObjectName(QStringLiteral("complexPlane:") + key);
         auto gesture = std::make_shared<int>(0);
         connect(plane, &ComplexPlanePicker::pressed, this,
-                [this, gesture] { *gesture = beginGesture(); });
+                [this, gesture, key] { *gesture = beginGesture(key); });
         connect(plane, &ComplexPlanePicker::moved, this,
                 [this, key, gesture](const QPointF &t) { apply(key, t, *gesture); });
-        connect(plane, &ComplexPlanePicker::released, this, [gesture] { *gesture = 0; });
+        connect(plane, &ComplexPlanePicker::released, this,
+                [this, gesture] { endGesture(*gesture); *gesture = 0; });
         m_bindings.append({key, [this, key, re, im, plane] {
             const QPointF z = m_item->parameter(key).toPointF();
             const QSignalBlocker b1(re), b2(im);

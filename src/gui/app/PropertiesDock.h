@@ -20,8 +20,10 @@ class QVBoxLayout;
 
 namespace awb {
 
+class FrameBudget;
 class Item;
 class Messages;
+class Project;
 
 class PropertiesWidget : public QWidget {
     Q_OBJECT
@@ -40,6 +42,8 @@ public:
     QWidget *slider(const QString &key) const;
     // The colours an item without its own uses (the preferences' palette; empty: the views').
     void setDefaultPalette(const QList<QColor> &palette);
+    // Coalesces the dock's updates during gestures (nullptr: every change shows at once).
+    void setFrameBudget(FrameBudget *budget);
 
 private:
     struct Binding {
@@ -59,7 +63,9 @@ private:
     // The selected rows of the point table (sorted), or the current row.
     std::vector<int> selectedPointRows() const;
     void report(const QString &message);
-    int beginGesture();
+    // A slider or the complex plane held for `key`: one undo step until endGesture.
+    int beginGesture(const QString &key);
+    void endGesture(int gesture);
 
     Messages *m_messages;
     QPointer<Item> m_item;
@@ -72,6 +78,11 @@ private:
     QTableWidget *m_points = nullptr;
     int m_pointSet = 0;  // the point set the table shows
     int m_updating = 0;
+    FrameBudget *m_budget = nullptr;
+    int m_budgetPanel = -1;
+    QPointer<Project> m_gestureProject;
+    int m_gesture = 0;
+    QString m_gestureKey;
     QList<QColor> m_defaultPalette;
 };
 

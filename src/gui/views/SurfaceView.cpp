@@ -284,6 +284,15 @@ void SurfaceView::setRenderSettings(const RenderSettings &settings)
         requestCpuFrame();
 }
 
+void SurfaceView::setGestureActive(bool active)
+{
+    if (active == m_externalGesture)
+        return;
+    m_externalGesture = active;
+    if (!active)
+        m_dataTimer.start(); // full detail
+}
+
 void SurfaceView::setLayerVisible(Layer layer, bool visible)
 {
     const std::uint32_t bit = 1u << int(layer);
@@ -360,7 +369,7 @@ void SurfaceView::startJob()
     }
     m_busy = true;
     const bool dragging = m_drag.kind == DragKind::ControlPoint
-                          || m_drag.kind == DragKind::StartVertex;
+                          || m_drag.kind == DragKind::StartVertex || m_externalGesture;
     const double budget = double(dragging ? m_movingBudget : m_budget);
     auto ifs = m_ifs;
     const StartSet start = m_start;

@@ -91,6 +91,9 @@ public:
     void setLayerVisible(Layer layer, bool visible);
     bool isLayerVisible(Layer layer) const;
     void setControlPointsEditable(bool editable) { m_editable = editable; }
+    // A gesture elsewhere (a slider, an animation) changes the data many times a second:
+    // decimated clouds meanwhile, full detail when it ends.
+    void setGestureActive(bool active);
     // Points of the cloud at most (full detail) and while the camera moves (decimated).
     void setPointBudget(std::size_t full, std::size_t moving = 150000);
     std::size_t pointBudget() const { return m_budget; }
@@ -199,6 +202,7 @@ private:
     RenderSettings m_settings;
     std::uint32_t m_hidden = 0;
     bool m_editable = true;
+    bool m_externalGesture = false;
     std::size_t m_budget = 1'200'000, m_movingBudget = 150'000;
 
     SurfaceViewCamera m_camera;
