@@ -390,6 +390,24 @@ void AnalysisCharts::setBoxCounting(const BoxDimension &box)
 
 void AnalysisCharts::setModuli(const QList<MapModuli> &maps)
 {
+    // The moduli of the S_i do not move while a control point is dragged: keep the chart.
+    const auto same = [](const QList<MapModuli> &a, const QList<MapModuli> &b) {
+        if (a.size() != b.size())
+            return false;
+        for (int i = 0; i < a.size(); ++i) {
+            if (a[i].label != b[i].label || a[i].moduli.size() != b[i].moduli.size())
+                return false;
+            for (std::size_t k = 0; k < a[i].moduli.size(); ++k)
+                if (!(std::abs(a[i].moduli[k] - b[i].moduli[k])
+                      <= 1e-12 * std::max(1.0, std::abs(a[i].moduli[k]))))
+                    return false;
+        }
+        return true;
+    };
+    if (m_moduliShown && same(maps, m_moduli))
+        return;
+    m_moduli = maps;
+    m_moduliShown = true;
     QChart *c = chart(ModuliTab);
     clearChart(c);
     auto *x = new QCategoryAxis;

@@ -73,6 +73,8 @@ private:
     QLabel *m_note = nullptr;
     QTabWidget *m_tabs = nullptr;
     QList<QChartView *> m_views;
+    QList<MapModuli> m_moduli;   // what the moduli chart shows
+    bool m_moduliShown = false;
 };
 
 } // namespace awb

@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <functional>
+#include <utility>
 
 namespace awb {
 
@@ -46,22 +47,46 @@ public:
     std::function<void(int row, int col, double value)> onEdited;
     std::function<void(const QString &message)> onRejected;
 
-    void setMatrix(const NamedMatrix &m)
+    // Replaces the numbers. Cells whose value did not change keep their text (formatting an
+    // exact fraction is the costly part) and emit nothing; true when a cell's text changed.
+    bool setMatrix(const NamedMatrix &m)
     {
-        const bool reshape = m.rows() != m_m.rows() || m.cols() != m_m.cols();
-        if (reshape)
+        const bool reshape = m.rows() != m_m.rows() || m.cols() != m_m.cols()
+                             || m.isComplex() != m_m.isComplex()
+                             || m.affineBlock != m_m.affineBlock;
+        if (reshape) {
             beginResetModel();
-        m_m = m;
-        if (reshape)
+            m_m = m;
+            m_text.clear();
             endResetModel();
-        else if (rowCount() > 0 && columnCount() > 0)
-            emit dataChanged(index(0, 0), index(rowCount() - 1, columnCount() - 1));
+            return true;
+        }
+        const NamedMatrix old = std::exchange(m_m, m);
+        int r0 = rowCount(), r1 = -1, c0 = columnCount(), c1 = -1;
+        for (int r = 0; r < rowCount(); ++r)
+            for (int c = 0; c < columnCount(); ++c) {
+                const bool same = m_m.isComplex()
+                                      ? complexValue(m_m, r, c) == complexValue(old, r, c)
+                                      : value(m_m, r, c) == value(old, r, c);
+                if (same)
+                    continue;
+                if (!m_text.isEmpty())
+                    m_text[r * columnCount() + c].clear(); // formatted again when shown
+                r0 = std::min(r0, r), r1 = std::max(r1, r);
+                c0 = std::min(c0, c), c1 = std::max(c1, c);
+            }
+        if (r1 < 0)
+            return false;
+        emit dataChanged(index(r0, c0), index(r1, c1),
+                         {Qt::DisplayRole, Qt::EditRole, Qt::ToolTipRole});
+        return true;
     }
     const NamedMatrix &matrix() const { return m_m; }
     void setSums(MatrixView::Sums s)
     {
         beginResetModel();
         m_sums = s;
+        m_text.clear();
         endResetModel();
     }
     void setEditable(bool e)
@@ -73,6 +98,7 @@ public:
     void setDigits(int d)
     {
         m_digits = d;
+        m_text.clear();
         if (rowCount() > 0 && columnCount() > 0)
             emit dataChanged(index(0, 0), index(rowCount() - 1, columnCount() - 1));
     }
@@ -98,8 +124,7 @@ public:
         const bool sum = isSum(r, c);
         switch (role) {
         case Qt::DisplayRole:
-            return m_m.isComplex() ? formatComplex(complexValue(r, c), m_digits)
-                                   : formatNumber(value(r, c), m_digits);
+            return displayText(r, c);
         case Qt::EditRole:
             return m_m.isComplex() ? formatComplex(complexValue(r, c), 17)
                                    : editableNumber(value(r, c));
@@ -194,24 +219,39 @@ private:
     {
         return r >= m_m.rows() || c >= m_m.cols();
     }
-    std::complex<double> complexValue(int r, int c) const
+    // The shown text of a cell, formatted once per value (the cache is cleared per cell when
+    // its value changes, wholly when the shape, the sums or the digits change).
+    QString displayText(int r, int c) const
     {
-        const CMat &M = m_m.complexValues;
+        const int n = rowCount() * columnCount();
+        if (m_text.size() != n)
+            m_text = QList<QString>(n);
+        QString &text = m_text[r * columnCount() + c];
+        if (text.isNull())
+            text = m_m.isComplex() ? formatComplex(complexValue(r, c), m_digits)
+                                   : formatNumber(value(r, c), m_digits);
+        return text;
+    }
+    std::complex<double> complexValue(int r, int c) const { return complexValue(m_m, r, c); }
+    double value(int r, int c) const { return value(m_m, r, c); }
+    static std::complex<double> complexValue(const NamedMatrix &m, int r, int c)
+    {
+        const CMat &M = m.complexValues;
         if (c >= M.cols())
             return M.row(r).sum();
         if (r >= M.rows())
             return M.col(c).sum();
         return M(r, c);
     }
-    double value(int r, int c) const
+    static double value(const NamedMatrix &m, int r, int c)
     {
-        if (m_m.isComplex())
-            return complexValue(r, c).real();
-        if (c >= m_m.values.cols())
-            return m_m.values.row(r).sum();
-        if (r >= m_m.values.rows())
-            return m_m.values.col(c).sum();
-        return m_m.values(r, c);
+        if (m.isComplex())
+            return complexValue(m, r, c).real();
+        if (c >= m.values.cols())
+            return m.values.row(r).sum();
+        if (r >= m.values.rows())
+            return m.values.col(c).sum();
+        return m.values(r, c);
     }
     QString blockName(int r, int c) const
     {
@@ -226,6 +266,7 @@ private:
     }
 
     NamedMatrix m_m;
+    mutable QList<QString> m_text;  // DisplayRole per cell, row-major; null: not formatted
     MatrixView::Sums m_sums = MatrixView::Sums::Rows;
     bool m_editable = false;
     int m_digits = 6;
@@ -311,12 +352,14 @@ void MatrixView::setMatrices(const QList<NamedMatrix> &matrices)
         return;
     }
     for (int i = 0; i < matrices.size(); ++i) {
-        m_models[i]->setMatrix(matrices[i]);
+        // Only tables whose numbers changed are measured again (a drag changes the M_i, not
+        // the S_i), and only cells that changed are formatted and repainted.
+        if (!m_models[i]->setMatrix(matrices[i]))
+            continue;
         if (auto *heat = m_boxes[i]->findChild<MatrixHeatMap *>())
             heat->setMatrix(matrices[i].name, matrices[i].values);
+        fitTable(m_views[i], false);
     }
-    for (QTableView *v : m_views)
-        fitTable(v);
 }
 
 void MatrixView::rebuild(const QList<NamedMatrix> &matrices)
@@ -363,8 +406,10 @@ void MatrixView::rebuild(const QList<NamedMatrix> &matrices)
         view->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
         view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
                               | QAbstractItemView::AnyKeyPressed);
-        view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-        view->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+        // Sized by fitTable when numbers change (ResizeToContents would measure every cell of
+        // the table again on every dataChanged).
+        view->horizontalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+        view->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
         view->horizontalHeader()->setMinimumSectionSize(44);
         boxLayout->addWidget(label);
         // Large real matrices (a surface's S_i) get a heat map above the table: the table is
@@ -385,11 +430,13 @@ void MatrixView::rebuild(const QList<NamedMatrix> &matrices)
     showHighlight();
 }
 
-void MatrixView::fitTable(QTableView *view) const
+void MatrixView::fitTable(QTableView *view, bool rows) const
 {
     // Whole tables, no inner scroll bars: the outer scroll area scrolls them all together.
+    // New numbers change the columns' widths, not the rows' heights (one line each).
     view->resizeColumnsToContents();
-    view->resizeRowsToContents();
+    if (rows)
+        view->resizeRowsToContents();
     int w = view->verticalHeader()->sizeHint().width() + 2 * view->frameWidth();
     for (int c = 0; c < view->model()->columnCount(); ++c)
         w += view->columnWidth(c);

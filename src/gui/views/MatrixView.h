@@ -59,7 +59,7 @@ signals:
 private:
     void rebuild(const QList<NamedMatrix> &matrices);
     void showError(const QString &message);
-    void fitTable(QTableView *view) const;
+    void fitTable(QTableView *view, bool rows = true) const;
     void showHighlight();
 
     QVBoxLayout *m_tables = nullptr;

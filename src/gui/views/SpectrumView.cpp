@@ -121,12 +121,44 @@ SpectrumView::SpectrumView(QWidget *parent) : QWidget(parent)
 
 SpectrumView::~SpectrumView() = default;
 
+namespace {
+
+// Whether two lists plot the same markers: labels, eigenvalues (to 1e-12 of their size) and
+// the subdominant marks. A drag of a control point leaves the S_i, and so the plot, as it was.
+bool samePlot(const QList<MapSpectrum> &a, const QList<MapSpectrum> &b)
+{
+    const auto close = [](const std::vector<Complex> &x, const std::vector<Complex> &y) {
+        if (x.size() != y.size())
+            return false;
+        for (std::size_t i = 0; i < x.size(); ++i)
+            if (std::abs(x[i] - y[i]) > 1e-12 * std::max(1.0, std::abs(x[i])))
+                return false;
+        return true;
+    };
+    if (a.size() != b.size())
+        return false;
+    for (int i = 0; i < a.size(); ++i) {
+        const MapSpectrum &p = a[i], &q = b[i];
+        if (p.label != q.label || p.spectrum.multiplicity != q.spectrum.multiplicity
+            || !close(p.spectrum.values, q.spectrum.values)
+            || p.subdominant.kind != q.subdominant.kind
+            || !close(p.subdominant.values, q.subdominant.values))
+            return false;
+    }
+    return true;
+}
+
+} // namespace
+
 void SpectrumView::setMaps(const QList<MapSpectrum> &maps)
 {
     if (maps.size() != m_maps.size())
         m_highlighted = -1;
+    const bool replot = !m_plotted || !samePlot(maps, m_maps);
     m_maps = maps;
-    rebuildPlot();
+    if (replot)
+        rebuildPlot();
+    m_plotted = true;
     updateVerdicts();
 }
 
@@ -425,7 +457,7 @@ bool SpectrumView::eventFilter(QObject *watched, QEvent *event)
 void SpectrumView::updateVerdicts()
 {
     if (m_maps.isEmpty()) {
-        m_text->setHtml(tr("<p>No maps.</p>"));
+        setVerdictHtml(tr("<p>No maps.</p>"));
         return;
     }
     QString html;
@@ -510,6 +542,15 @@ void SpectrumView::updateVerdicts()
                         .arg(s.multiplicity);
         html += QStringLiteral("<br><i>%1</i></p>").arg(meaning);
     }
+    setVerdictHtml(html);
+}
+
+void SpectrumView::setVerdictHtml(const QString &html)
+{
+    // Laying out rich text is the costly part: an unchanged verdict is left as it is.
+    if (html == m_verdictHtml)
+        return;
+    m_verdictHtml = html;
     m_text->setHtml(html);
 }
 

@@ -80,6 +80,7 @@ protected:
 
 private:
     void rebuildPlot();
+    void setVerdictHtml(const QString &html);
     void updateVerdicts();
     void keepAspect();
     // The legend under the axes when a plot of `size` has room for it.
@@ -89,6 +90,8 @@ private:
     QCustomPlot *m_plot = nullptr;
     QTextBrowser *m_text = nullptr;
     QList<MapSpectrum> m_maps;
+    bool m_plotted = false;     // rebuildPlot ran for m_maps
+    QString m_verdictHtml;
     QList<QCPGraph *> m_mapGraphs;
     QCPGraph *m_dominantGraph = nullptr;
     QCPGraph *m_subdominantGraph = nullptr;
