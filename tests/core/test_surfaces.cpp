@@ -7,6 +7,7 @@
 #include "core/analysis/Spectrum.h"
 #include "core/ifs/Attractor.h"
 #include "core/ifs/SurfaceIfs.h"
+#include "core/render/SurfaceRaster.h"
 #include "core/schemes/SurfacePatch.h"
 
 #include <QtTest>
@@ -84,6 +85,7 @@ private slots:
     void liftingOfSurfaceNets();
     void netsAreMatchedUpToTranslation();
     void badNetsAreNamed();
+    void meshDrawsTheImagesAgain();
 };
 
 void TestSurfaces::bicubicMaskIsTensorCubic()
@@ -468,6 +470,76 @@ void TestSurfaces::badNetsAreNamed()
     QVERIFY(message(user).contains("(7, 7)"));
     QVERIFY(message(user).contains("missing"));
     QVERIFY_THROWS_EXCEPTION(InputError, patchLayout(bicubicScheme(), "hexagon"));
+}
+
+// The 3D view's mesh (core/render/SurfaceMesh): F^k(X0) kept as world-space primitives and
+// drawn from a camera gives the very pixels of drawing the images as they are made, whatever
+// the number of threads; each start set makes its kind of primitive.
+void TestSurfaces::meshDrawsTheImagesAgain()
+{
+    const LatticeScheme s = loopScheme();
+    const PatchLayout layout = patchLayout(s, "hexagon");
+    const SurfaceMatrices m = surfaceMatrices(s, layout);
+    const Mat P = randomNet(s, m.net, 3);
+    const SurfaceIfs surface = buildSurfaceIfs(s, layout, m.net, P);
+    const Ifs &f = surface.ifs.ifs;
+    const StartSet start = StartSet::polygon(surface.ifs.toIfsSpace(surface.cornerLimitStart));
+    const ImageLabel byMap = [](const std::uint8_t *a, int n) {
+        return std::uint32_t(n > 0 ? a[0] : 0);
+    };
+    const int depth = 4;
+    SurfaceMeshSink sink(f.views, byMap, surfaceMeshKind(start));
+    iterate(f, start, depth, sink);
+    const SurfaceMesh &mesh = sink.mesh;
+    QCOMPARE(mesh.kind, SurfaceMesh::Kind::Triangles);
+    // The hexagon of corner limits: four triangles of its fan per image.
+    QCOMPARE(start.vertices.rows(), 6);
+    QCOMPARE(mesh.size(), std::size_t(6 * 6 * 6 * 6 * 4));
+    QCOMPARE(mesh.positions.size(), 9 * mesh.size());
+    QCOMPARE(mesh.normals.size(), 3 * mesh.size());
+    for (std::size_t i = 0; i < mesh.size(); ++i) {
+        const double n = std::hypot(mesh.normals[3 * i], mesh.normals[3 * i + 1],
+                                    mesh.normals[3 * i + 2]);
+        QVERIFY(std::abs(n - 1.0) < 1e-6);
+        QVERIFY(mesh.labels[i] < 6);
+    }
+    QVERIFY(mesh.area > 0);
+    // The same surface, all cores: the same primitives (in another order, perhaps).
+    const SurfaceMesh built = buildSurfaceMesh(f, start, depth, byMap);
+    QCOMPARE(built.size(), mesh.size());
+    QVERIFY(std::abs(built.area - mesh.area) < 1e-9 * mesh.area);
+
+    const OrthoCamera camera = OrthoCamera::fit(P, -60, 35, 4.0 / 3.0);
+    SurfaceRaster direct(320, 240, camera, f.views);
+    iterate(f, start, depth, direct);
+    SurfaceRaster drawn(320, 240, camera, {});
+    drawn.draw(mesh, 0, mesh.size());
+    QVERIFY(direct.coveredPixels() > 2000);
+    QCOMPARE(drawn.coveredPixels(), direct.coveredPixels());
+    for (int y = 0; y < 240; ++y)
+        for (int x = 0; x < 320; ++x) {
+            QCOMPARE(drawn.label(x, y), direct.label(x, y));
+            QCOMPARE(drawn.depth(x, y), direct.depth(x, y));
+        }
+    // Drawn in ranges on several threads and merged: the picture of one thread.
+    const std::vector<std::uint32_t> palette{0x1f77b4u, 0xd62728u, 0x2ca02cu};
+    const auto one = drawSurfaceMesh(mesh, 320, 240, camera, 1.0, palette, 1);
+    QVERIFY(one == drawSurfaceMesh(mesh, 320, 240, camera, 1.0, palette, 3));
+    std::atomic<bool> cancelled{true};
+    QVERIFY(drawSurfaceMesh(mesh, 320, 240, camera, 1.0, palette, 2, &cancelled).empty());
+
+    // Points and polylines as start sets: one point per vertex, one segment per edge.
+    const Mat corners = surface.ifs.toIfsSpace(surface.cornerLimitStart);
+    const SurfaceMesh points = buildSurfaceMesh(f, StartSet::points(corners), 2, byMap);
+    QCOMPARE(points.kind, SurfaceMesh::Kind::Points);
+    QCOMPARE(points.size(), std::size_t(36 * corners.rows()));
+    const SurfaceMesh segments = buildSurfaceMesh(f, StartSet::polyline(corners), 2, byMap);
+    QCOMPARE(segments.kind, SurfaceMesh::Kind::Segments);
+    QCOMPARE(segments.size(), std::size_t(36 * (corners.rows() - 1)));
+    // The budget's depth: 6^2 images of 4 triangles fit 300, 6^3 do not.
+    QCOMPARE(surfaceMeshDepth(f, start, 8, 300), 2);
+    QCOMPARE(surfaceMeshDepth(f, start, 2, 1e9), 2);
+    QCOMPARE(surfaceMeshDepth(f, start, 8, 0.5), 0);
 }
 
 QTEST_APPLESS_MAIN(TestSurfaces)

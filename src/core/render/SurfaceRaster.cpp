@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <thread>
 
 namespace awb {
 
@@ -166,6 +168,62 @@ void SurfaceRaster::consume(const Mat &v, StartSet::Kind kind, const std::uint8_
                 triangle(s[0], s[r], s[r + 1], label);
         }
     }
+}
+
+void SurfaceRaster::draw(const SurfaceMesh &mesh, std::size_t first, std::size_t last)
+{
+    const int nv = mesh.vertices();
+    const auto at = [&](std::size_t primitive, int vertex) {
+        const double *p = mesh.positions.data() + 3 * (primitive * std::size_t(nv) + vertex);
+        return toScreen(Eigen::Vector3d(p[0], p[1], p[2]));
+    };
+    last = std::min(last, mesh.size());
+    for (std::size_t i = first; i < last; ++i) {
+        const std::uint32_t label = 1u + mesh.labels[i];
+        switch (mesh.kind) {
+        case SurfaceMesh::Kind::Points: splat(at(i, 0), label); break;
+        case SurfaceMesh::Kind::Segments: line(at(i, 0), at(i, 1), label); break;
+        case SurfaceMesh::Kind::Triangles: triangle(at(i, 0), at(i, 1), at(i, 2), label); break;
+        }
+    }
+}
+
+std::vector<std::uint32_t> drawSurfaceMesh(const SurfaceMesh &mesh, int width, int height,
+                                           const OrthoCamera &camera, double pointRadius,
+                                           const std::vector<std::uint32_t> &palette,
+                                           int threads, const std::atomic<bool> *cancel)
+{
+    const int hw = int(std::max(1u, std::thread::hardware_concurrency()));
+    // A thread per 20 000 primitives at most: small meshes do not pay for the merges.
+    const int n = std::clamp(threads > 0 ? threads : hw, 1,
+                             std::max(1, int(mesh.size() / 20000) + 1));
+    std::vector<std::unique_ptr<SurfaceRaster>> rasters;
+    for (int t = 0; t < n; ++t)
+        rasters.push_back(std::make_unique<SurfaceRaster>(width, height, camera,
+                                                          std::vector<Projection>{},
+                                                          std::vector<int>{}, pointRadius));
+    // Contiguous ranges in mesh order: the nearer sample wins, a tie keeps the earlier range,
+    // so the picture does not depend on the number of threads.
+    const auto range = [&](int t) {
+        return std::pair{mesh.size() * std::size_t(t) / std::size_t(n),
+                         mesh.size() * std::size_t(t + 1) / std::size_t(n)};
+    };
+    std::vector<std::thread> workers;
+    for (int t = 1; t < n; ++t)
+        workers.emplace_back([&, t] {
+            const auto [a, b] = range(t);
+            rasters[std::size_t(t)]->draw(mesh, a, b);
+        });
+    const auto [a, b] = range(0);
+    rasters.front()->draw(mesh, a, b);
+    for (std::thread &w : workers)
+        w.join();
+    if (cancel && cancel->load())
+        return {};
+    for (int t = 1; t < n; ++t)
+        rasters.front()->merge(*rasters[std::size_t(t)]);
+    rasters.front()->fillPinholes();
+    return rasters.front()->shade(palette);
 }
 
 void SurfaceRaster::merge(const SurfaceRaster &other)

@@ -7,6 +7,7 @@
 // Qt-free: it hands out 32-bit ARGB pixels (0xAARRGGBB), row 0 at the top.
 
 #include "core/ifs/Attractor.h"
+#include "core/render/SurfaceMesh.h"
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -39,6 +40,9 @@ public:
     SurfaceRaster(int width, int height, const OrthoCamera &camera, std::vector<Projection> views,
                   std::vector<int> labels = {}, double pointRadius = 1.0);
     void consume(const Mat &v, StartSet::Kind k, const std::uint8_t *a, int n) override;
+    // Draws primitives [first, last) of a mesh built in advance (the same pixels as consume()
+    // of the images they came from; label = 1 + the primitive's colour index).
+    void draw(const SurfaceMesh &mesh, std::size_t first, std::size_t last);
     // Keeps the nearer sample of each pixel (for per-thread rasters).
     void merge(const SurfaceRaster &other);
 
@@ -81,5 +85,14 @@ private:
     std::vector<Eigen::Vector3d> m_screen;  // screen positions of the image being drawn
     std::uint64_t m_nonFinite = 0;
 };
+
+// The shaded picture (0xAARRGGBB, row 0 at the top) of `mesh` from `camera`, drawn on
+// `threads` threads (0: all cores) and merged, pinholes filled: the 3D view's CPU frames and
+// its exports draw this. An empty vector when `cancel` stopped it.
+std::vector<std::uint32_t> drawSurfaceMesh(const SurfaceMesh &mesh, int width, int height,
+                                           const OrthoCamera &camera, double pointRadius,
+                                           const std::vector<std::uint32_t> &palette,
+                                           int threads = 0,
+                                           const std::atomic<bool> *cancel = nullptr);
 
 } // namespace awb

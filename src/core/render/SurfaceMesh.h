@@ -1,0 +1,63 @@
+#pragma once
+// F^k(X0) of a 3D attractor as flat primitives in world space: the images of the start set
+// (triangles of a polygon start set, fan-triangulated; segments of a polyline; points), each
+// with a colour index and, for triangles, its unit normal. Built once per IFS, start set and
+// depth, it is drawn from any camera without iterating again: the 3D view's frames (SurfaceRaster
+// on the CPU, or OpenGL), its exports and prints draw the same primitives in the same colours.
+// Qt-free.
+
+#include "core/ifs/Attractor.h"
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace awb {
+
+struct SurfaceMesh {
+    enum class Kind { Points, Segments, Triangles };
+    Kind kind = Kind::Triangles;
+    std::vector<double> positions;      // 3 per vertex, vertices() per primitive
+    std::vector<float> normals;         // 3 per primitive (triangles; zero when degenerate)
+    std::vector<std::uint32_t> labels;  // colour index per primitive
+    int depth = 0;
+    double area = 0.0;                  // total area of the triangles
+    std::uint64_t nonFinite = 0;        // images left out: a coordinate was NaN or infinite
+
+    int vertices() const { return kind == Kind::Points ? 1 : kind == Kind::Segments ? 2 : 3; }
+    std::size_t size() const { return labels.size(); }
+    bool empty() const { return labels.empty(); }
+    // Appends `other` (same kind).
+    void append(const SurfaceMesh &other);
+};
+
+// The colour index of an image from its address (address[0] = the outermost map), e.g. the
+// map's colour, or the address prefix's place in a gradient.
+using ImageLabel = std::function<std::uint32_t(const std::uint8_t *address, int length)>;
+
+// Collects the images it is fed (one sink per thread; append the results in thread order).
+class SurfaceMeshSink : public AttractorSink {
+public:
+    SurfaceMeshSink(std::vector<Projection> views, ImageLabel label, SurfaceMesh::Kind kind);
+    void consume(const Mat &v, StartSet::Kind k, const std::uint8_t *a, int n) override;
+    SurfaceMesh mesh;
+
+private:
+    std::vector<Projection> m_views;
+    ImageLabel m_label;
+};
+
+// What an image of `start` becomes: points, segments or triangles.
+SurfaceMesh::Kind surfaceMeshKind(const StartSet &start);
+
+// F^depth(start) through ifs.views (3 columns each) on `threads` threads (0: all cores).
+// Throws InputError like iterate(); an empty mesh when control.cancel stopped it.
+SurfaceMesh buildSurfaceMesh(const Ifs &ifs, const StartSet &start, int depth,
+                             const ImageLabel &label, const IterationControl &control = {},
+                             int threads = 0);
+
+// The largest depth <= `depth` whose primitives (images times the primitives of one image)
+// number at most `budget` (at least 0).
+int surfaceMeshDepth(const Ifs &ifs, const StartSet &start, int depth, double budget);
+
+} // namespace awb
