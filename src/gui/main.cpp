@@ -195,7 +195,8 @@ int main(int argc, char *argv[])
             if (!window.exportView(figure, &error)) {
                 std::fprintf(stderr, "attractor-workbench: %s\n", qPrintable(error));
                 status = 1;
-            } else if (figure.target == awb::ExportDialog::Target::Attractor) {
+            } else if (figure.target == awb::ExportDialog::Target::Attractor
+                       && !window.controller()->showsSurface()) {
                 // What the attractor became (vector paths, a raster of which size): scripts
                 // and tests read it.
                 std::fprintf(stderr, "attractor-workbench: %s: attractor drawn as %s\n",

@@ -225,7 +225,7 @@ void TestMainWindow::openingFillsEveryView()
                 SurfaceView *view = w.surfaceView();
                 QVERIFY2(QTest::qWaitFor([view] {
                     return !view->isRendering()
-                           && (!view->cpuImage().isNull() || view->cloud().size() > 0);
+                           && (!view->cpuImage().isNull() || view->mesh().size() > 0);
                 }, awb::test::ms(30000)), qPrintable(where));
             } else {
                 QVERIFY2(waitForFinalImage(w.attractorView()), qPrintable(where));

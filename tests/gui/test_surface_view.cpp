@@ -21,7 +21,6 @@
 
 #include <QCheckBox>
 #include <QElapsedTimer>
-#include <QOpenGLWidget>
 #include <QProcess>
 #include <QStackedWidget>
 #include <QStandardPaths>
@@ -497,6 +496,9 @@ static bool glTestCanRun()
                          "CPU path", __FILE__, __LINE__);
         return false;
     }
+    // This machine's GL is a software one (llvmpipe), which the view leaves for the CPU
+    // path: the GL path is tested by asking for it.
+    qputenv("AWB_GL", "1");
     if (!SurfaceView::glAvailable()) {
         if (required)
             QTest::qFail("no OpenGL context on the Xvfb display", __FILE__, __LINE__);
@@ -517,18 +519,19 @@ void TestSurfaceView::glPathUnderXvfb()
     view.resize(800, 600);
     view.show();
     QVERIFY(QTest::qWaitForWindowExposed(&view));
-    // The second budget draws more points than the moving budget (decimation while rotating):
-    // depth 8 (1.7 M points) in the normal build, depth 7 (280 000) in an instrumented one,
-    // whose depth-8 cloud alone takes five minutes.
-    const std::size_t large = awb::test::ms(1) > 1 ? 300'000 : 2'000'000;
-    for (const std::size_t budget : {std::size_t(100'000), large}) {
+    // The full mesh has more primitives than the coarse one drawn while rotating: depth 7
+    // (280 000 triangles) against depth 5 in the normal build, depth 6 against 5 in an
+    // instrumented one, whose depth-7 mesh alone takes minutes.
+    const std::size_t large = awb::test::ms(1) > 1 ? 60'000 : 400'000;
+    for (const std::size_t budget : {std::size_t(10'000), large}) {
         QSignalSpy ready(&view, &SurfaceView::frameReady);
-        view.setPointBudget(budget, 150'000);
+        view.setDetailBudget(budget, 10'000);
         feed(view, *item);
         view.resetCamera();
-        QVERIFY(ready.wait(awb::test::ms(60000)));
+        QTRY_VERIFY_WITH_TIMEOUT(view.isFullDetail() && !view.isRendering(),
+                                 awb::test::ms(60000));
         QTest::qWait(300);
-        // Frame times: rotating (decimated to the moving budget) and at rest (all points).
+        // Frame times: rotating (the coarse mesh) and at rest (the full one).
         QList<double> moving, still;
         int frames = 0;
         double last = 0;
@@ -543,30 +546,26 @@ void TestSurfaceView::glPathUnderXvfb()
         QTest::qWait(400); // settles: full detail
         for (int k = 0; k < 5; ++k) {
             const int before = frames;
-            view.findChild<QOpenGLWidget *>()->update();
+            view.requestGlFrame();
             QTRY_VERIFY_WITH_TIMEOUT(frames > before, awb::test::ms(5000));
             still << last;
         }
         disconnect(c);
         std::sort(moving.begin(), moving.end());
         std::sort(still.begin(), still.end());
-        qInfo("GL llvmpipe %zu points (depth %d): rotating median %.1f ms (%zu points drawn), "
-              "still median %.1f ms, cloud built in %.2f s",
-              view.cloud().size(), view.cloud().depth, moving[moving.size() / 2],
-              std::min<std::size_t>(view.cloud().size(), 150'000), still[still.size() / 2],
-              view.cloud().seconds);
+        qInfo("GL llvmpipe %zu primitives (depth %d): rotating median %.1f ms, still median "
+              "%.1f ms, mesh built in %.2f s",
+              view.mesh().size(), view.mesh().depth, moving[moving.size() / 2],
+              still[still.size() / 2], view.meshSeconds());
+        QCOMPARE(view.lastFramePrimitives(), view.mesh().size());
     }
-    // The GL frame is the CPU figure within a tolerance (points vs filled triangles).
-    view.setPointBudget(300'000);
-    feed(view, *item);
-    QSignalSpy ready(&view, &SurfaceView::frameReady);
-    QVERIFY(ready.wait(awb::test::ms(60000)));
-    QTest::qWait(400);
+    // The GL frame is the CPU figure within a tolerance (the same primitives and colours;
+    // lit by their own normals in GL, by the depth buffer's on the CPU).
     view.setLayerVisible(SurfaceView::Layer::ControlNet, false);
     view.setLayerVisible(SurfaceView::Layer::Axes, false);
-    auto *gl = view.findChild<QOpenGLWidget *>();
-    QVERIFY(gl);
-    const QImage frame = gl->grabFramebuffer();
+    QTest::qWait(300);
+    const QImage frame = view.grabGlFrame();
+    QVERIFY(!frame.isNull());
     const QImage cpu = view.renderImage(frame.size(), false);
     const ImageDiff d = compare(cpu, frame);
     QVERIFY2(d.coverageMismatch < 0.15,
@@ -586,7 +585,7 @@ void TestSurfaceView::glDragUnderXvfb()
     auto *item = qobject_cast<SubdivisionSurfaceItem *>(w.currentItem());
     SurfaceView *view = w.surfaceView();
     QCOMPARE(view->path(), SurfaceView::Path::OpenGL);
-    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && view->cloud().size() > 0, awb::test::ms(60000));
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && view->isFullDetail(), awb::test::ms(60000));
     QTest::qWait(300);
     QElapsedTimer refresh;
     refresh.start();
@@ -622,17 +621,19 @@ void TestSurfaceView::glDragUnderXvfb()
         QTRY_VERIFY_WITH_TIMEOUT(shown > c0, awb::test::ms(10000));
         latency << shownAt;
         qInfo("  move %d: frame at %.0f ms (cloud %.0f ms on the worker, draw %.0f ms)", k,
-              shownAt, 1000 * view->cloud().seconds, view->lastFrameMs());
+              shownAt, 1000 * view->meshSeconds(), view->lastFrameMs());
     }
-    const std::size_t dragPoints = view->cloud().size();
+    const std::size_t dragPrimitives = view->lastFramePrimitives();
     QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, grab + QPoint(0, -40));
     QCOMPARE(w.project()->undoStack()->count(), steps + 1);
     QVERIFY(item->controlPoints(0)[9].z > original.z);
-    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && view->cloud().size() > dragPoints, awb::test::ms(60000));
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && view->isFullDetail()
+                                 && view->mesh().size() > dragPrimitives,
+                             awb::test::ms(60000));
     std::sort(latency.begin(), latency.end());
-    qInfo("GL llvmpipe drag: move -> new frame median %.0f ms, max %.0f ms (%zu points while "
+    qInfo("GL llvmpipe drag: move -> new frame median %.0f ms, max %.0f ms (%zu primitives while "
           "dragging, %zu after release)", latency[latency.size() / 2], latency.last(),
-          dragPoints, view->cloud().size());
+          dragPrimitives, view->mesh().size());
     w.project()->undoStack()->undo();
     QCOMPARE(item->controlPoints(0)[9], original);
 }

@@ -32,7 +32,7 @@ field() { printf '%s\n' "$info" | sed -n "s/^$1: //p"; }
 [ "$(field Suggests)" = "ffmpeg, qt6-translations-l10n, fonts-noto-cjk | fonts-wqy-microhei" ] || fail "Suggests: $(field Suggests)"
 depends=$(field Depends)
 for lib in libc6 libstdc++6 libqt6core6 libqt6gui6 libqt6widgets6 libqt6svg6 libqt6charts6 \
-           libqt6printsupport6 libqt6opengl6 libqt6openglwidgets6 libqcustomplot2.1-qt6; do
+           libqt6printsupport6 libqt6opengl6 libqcustomplot2.1-qt6; do
     [[ ", $depends," == *", $lib "* || ", $depends," == *", $lib,"* ]] \
         || fail "Depends lacks $lib: $depends"
 done

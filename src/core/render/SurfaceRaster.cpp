@@ -118,11 +118,9 @@ void SurfaceRaster::triangle(const Eigen::Vector3d &a, const Eigen::Vector3d &b,
     const int y1 = std::min(m_h - 1, int(std::ceil(std::max({a.y(), b.y(), c.y()}))));
     if (x0 > x1 || y0 > y1)
         return;
-    // Smaller than a pixel, or seen edge-on: splats at its corners and centre keep it
-    // visible without holes between neighbouring images.
+    // Smaller than a pixel, or seen edge-on: a splat at its centre keeps it visible (and the
+    // gaps between such images are closed by fillPinholes).
     if (std::abs(area) < 1.0 || (x1 - x0) * (y1 - y0) <= 1) {
-        for (const Eigen::Vector3d *p : {&a, &b, &c})
-            splat(*p, label);
         splat((a + b + c) / 3.0, label);
         return;
     }
@@ -246,26 +244,40 @@ std::uint64_t SurfaceRaster::coveredPixels() const
 
 void SurfaceRaster::fillPinholes()
 {
-    // Splats of neighbouring images leave single empty pixels: one that has at least three
-    // covered 4-neighbours takes the nearest of them (depth and label), as point renderers do.
-    std::vector<std::size_t> holes;
-    for (int y = 1; y + 1 < m_h; ++y)
-        for (int x = 1; x + 1 < m_w; ++x) {
+    // Splats of neighbouring images leave small empty gaps where the images are sparser than
+    // the splats are wide: an empty pixel lying between covered pixels -- within 2 pixels on
+    // both sides along at least two of the four directions (a row, a column, two diagonals) --
+    // takes the nearest of its covered 8-neighbours (depth and label), as point renderers do.
+    // The coverage decided on is the raster's before filling, so the outline does not grow.
+    const auto covered = [&](int x, int y) {
+        return x >= 0 && y >= 0 && x < m_w && y < m_h && m_label[index(x, y)] != 0;
+    };
+    const auto side = [&](int x, int y, int dx, int dy) {
+        return covered(x + dx, y + dy) || covered(x + 2 * dx, y + 2 * dy);
+    };
+    std::vector<std::pair<std::size_t, std::size_t>> fills; // hole, the neighbour it copies
+    for (int y = 0; y < m_h; ++y)
+        for (int x = 0; x < m_w; ++x) {
             if (m_label[index(x, y)])
                 continue;
-            int covered = 0;
-            for (const auto &[dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}})
-                covered += m_label[index(x + dx, y + dy)] != 0;
-            if (covered >= 3)
-                holes.push_back(index(x, y));
+            int between = 0;
+            for (const auto &[dx, dy] : {std::pair{1, 0}, {0, 1}, {1, 1}, {1, -1}})
+                between += side(x, y, dx, dy) && side(x, y, -dx, -dy);
+            if (between < 2)
+                continue;
+            std::size_t best = index(x, y);
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx)
+                    if (covered(x + dx, y + dy)
+                        && (best == index(x, y)
+                            || m_depth[index(x + dx, y + dy)] > m_depth[best]))
+                        best = index(x + dx, y + dy);
+            if (best != index(x, y))
+                fills.emplace_back(index(x, y), best);
         }
-    for (const std::size_t i : holes) {
-        std::size_t best = i;
-        for (const std::size_t j : {i + 1, i - 1, i + std::size_t(m_w), i - std::size_t(m_w)})
-            if (m_label[j] && (best == i || m_depth[j] > m_depth[best]))
-                best = j;
-        m_depth[i] = m_depth[best];
-        m_label[i] = m_label[best];
+    for (const auto &[hole, from] : fills) {
+        m_depth[hole] = m_depth[from];
+        m_label[hole] = m_label[from];
     }
 }
 

@@ -58,7 +58,8 @@ public:
     std::uint64_t coveredPixels() const;
     std::uint64_t nonFinite() const { return m_nonFinite; }
 
-    // Closes single-pixel gaps between splats (call once, after merging, before shade()).
+    // Closes gaps of up to 3 pixels between splats inside the picture, not its outline (call
+    // once, after merging, before shade()).
     void fillPinholes();
     // palette[i]: colour (0xRRGGBB) of colour index i (cycled); lambert shading from a light
     // above left of the viewer on normals taken from the depth buffer.

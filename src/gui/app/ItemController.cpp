@@ -404,7 +404,7 @@ void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
         }
     }
     m_surface->setControlNet(P, faces);
-    m_surface->setMesh(mesh, meshFaces);
+    m_surface->setRefinedNet(mesh, meshFaces);
     m_surface->setStartVertices(toMatrix(item->startSet().points, 3));
     try {
         m_surface->setIfs(std::make_shared<const Ifs>(d.ifs), item->coreStartSet(d), d.mapIndex);
@@ -449,7 +449,7 @@ void ItemController::clearViews()
     if (m_surface) {
         m_surface->setIfs(nullptr, StartSet{});
         m_surface->setControlNet(Mat(), {});
-        m_surface->setMesh(Mat(), {});
+        m_surface->setRefinedNet(Mat(), {});
         m_surface->setStartVertices(Mat());
     }
 }

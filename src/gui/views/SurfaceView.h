@@ -1,23 +1,30 @@
 #pragma once
-// The 3D attractor view of surface items (000 §3): the attractor of the current item's IFS as
-// a lit point cloud, with the control net (and the classic subdivision mesh after k rounds)
-// drawn over it. It takes plain core data through setters and reports edits as
-// press/drag/release signals (one undo step per drag is the owner's job, as in AttractorView).
+// The 3D attractor view of surface items (000 §3): F^k(X0) of the current item's IFS -- the
+// images of the start set, filled triangles for a polygon start set -- with the control net
+// (and the classic subdivision mesh after k rounds) drawn over it. It takes plain core data
+// through setters and reports edits as press/drag/release signals (one undo step per drag is
+// the owner's job, as in AttractorView).
 //
-// Two ways to draw, one camera: with an OpenGL context (a SurfaceGLWidget child, points with
-// depth test and lighting from the normals of the start-set images), or without one (the
-// offscreen platform, a machine with no GL) through the core's CPU z-buffer SurfaceRaster. The
-// overlays (net, handles, axes, box) are painted with QPainter through the same projection, and
-// printing always uses the CPU renderer, so a figure matches the screen wherever it is made.
-// The point cloud is computed off the GUI thread; a newer edit cancels the running job.
+// The images are kept as a SurfaceMesh (world-space primitives, core/render/SurfaceMesh.h),
+// built off the GUI thread once per edit: a coarse one (a lower depth: still closed, no holes)
+// for frames while the camera or a point moves, and the full one at rest. A camera move draws
+// the kept mesh again without iterating. Two ways to draw it, one camera, one look:
+//  - the CPU: SurfaceRaster (z-buffered, shaded, coloured by map) on worker threads; also every
+//    printed or exported figure, so a figure is what the screen shows;
+//  - OpenGL, in a QOpenGLWindow of its own (SurfaceGLWindow, created when the view is first
+//    shown): only this view is drawn through GL, never the rest of the window. Used where the
+//    GL renderer is a GPU's; with a software renderer (Mesa llvmpipe) the CPU path draws the
+//    same frames faster (bench/bench_window.cpp measures both: AWB_GL=1 forces GL).
+// The overlays (net, handles, axes, box) are painted with QPainter through the same projection.
 
-#include "core/ifs/Attractor.h"
+#include "core/render/SurfaceMesh.h"
 #include "core/render/SurfaceRaster.h"
 #include "gui/views/AttractorRenderer.h"
 
 #include <QElapsedTimer>
 #include <QImage>
 #include <QMatrix4x4>
+#include <QPointer>
 #include <QTimer>
 #include <QVector3D>
 #include <QWidget>
@@ -25,24 +32,13 @@
 #include <memory>
 #include <vector>
 
+class QMouseEvent;
 class QPainter;
 
 namespace awb {
 
-class SurfaceGLWidget;
 class LatestJobWorker;
-
-// The points a GL frame draws: positions, normals (zero when unknown) and colours, in a random
-// order so that any prefix is an even sample of the whole (decimation = drawing fewer).
-struct SurfaceCloud {
-    std::vector<float> positions;        // 3 per point
-    std::vector<float> normals;          // 3 per point
-    std::vector<std::uint32_t> colours;  // 0xAARRGGBB per point
-    int depth = 0;
-    double area = 0.0;     // world area the points stand for (sum of the images' areas)
-    double seconds = 0.0;
-    std::size_t size() const { return colours.size(); }
-};
+class SurfaceGLWindow;
 
 // The camera shared by both paths: the core's orthographic camera (azimuth, elevation, centre,
 // half height) plus an optional perspective with the same framing at the centre's depth.
@@ -61,19 +57,22 @@ public:
     struct RenderSettings {
         int depth = 8;                    // the item's depth (the budget may lower it)
         AttractorColouring colouring;     // an empty palette: the renderer's defaults
-        double pointSize = 2.0;           // pixels
+        double pointSize = 2.0;           // pixels, for point start sets
     };
     enum class Layer { Attractor, ControlNet, Mesh, Axes, Box };
-    // How frames are drawn: GL (a context was created) or CPU (SurfaceRaster).
+    // How frames are drawn: GL (a GPU's context) or CPU (SurfaceRaster).
     enum class Path { OpenGL, Cpu };
 
     // `allowGl` false forces the CPU path (tests); otherwise GL is used when a context can be
-    // created on this platform (not on "offscreen"/"minimal", nor with AWB_NO_GL=1).
+    // made on this platform with a hardware renderer (not on "offscreen"/"minimal", nor with
+    // AWB_NO_GL=1; a software renderer only with AWB_GL=1).
     explicit SurfaceView(QWidget *parent = nullptr, bool allowGl = true);
     ~SurfaceView() override;
 
+    // Whether a GL context can be made here at all, and whether it is drawn by hardware.
     static bool glAvailable();
-    Path path() const { return m_gl ? Path::OpenGL : Path::Cpu; }
+    static bool glIsSoftware();
+    Path path() const { return m_useGl ? Path::OpenGL : Path::Cpu; }
 
     // ---- data (copies; the document stays the owner) ----
     // The IFS (views give 3 columns) and its start set; `colourIndex[k]` is the colour index
@@ -85,18 +84,19 @@ public:
     // The start-set vertices (n x 3, drawn and draggable as handles).
     void setStartVertices(const Mat &points);
     // The subdivided net after k rounds (n x 3 with faces): the classic route beside the IFS.
-    void setMesh(const Mat &points, const std::vector<std::vector<int>> &faces);
+    void setRefinedNet(const Mat &points, const std::vector<std::vector<int>> &faces);
     void setRenderSettings(const RenderSettings &settings);
     RenderSettings renderSettings() const { return m_settings; }
     void setLayerVisible(Layer layer, bool visible);
     bool isLayerVisible(Layer layer) const;
     void setControlPointsEditable(bool editable) { m_editable = editable; }
     // A gesture elsewhere (a slider, an animation) changes the data many times a second:
-    // decimated clouds meanwhile, full detail when it ends.
+    // coarse meshes meanwhile, full detail when it ends.
     void setGestureActive(bool active);
-    // Points of the cloud at most (full detail) and while the camera moves (decimated).
-    void setPointBudget(std::size_t full, std::size_t moving = 150000);
-    std::size_t pointBudget() const { return m_budget; }
+    // Primitives (triangles, segments or points) of the full mesh at most, and of the coarse
+    // one drawn while something moves.
+    void setDetailBudget(std::size_t full, std::size_t moving);
+    std::size_t detailBudget() const { return m_fullBudget; }
 
     // ---- camera ----
     SurfaceViewCamera camera() const { return m_camera; }
@@ -107,7 +107,7 @@ public:
     void orbit(double dxPixels, double dyPixels);
     void pan(double dxPixels, double dyPixels);
     void zoomBy(double factor);
-    // Frames the net, the start set and the cloud from the default direction.
+    // Frames the net, the start set and the mesh from the default direction.
     void resetCamera();
     // The direction resetCamera() looks from (the item's saved camera, degrees); a new
     // direction resets the camera to it.
@@ -124,22 +124,26 @@ public:
     int startVertexCount() const { return int(m_start3.rows()); }
 
     // ---- output ----
-    // The latest cloud (GL path) or CPU frame, and whether the view is still computing.
-    const SurfaceCloud &cloud() const { return *m_cloud; }
+    // The full mesh (or the coarse one while only that exists), and whether the view is still
+    // computing a mesh or a CPU frame.
+    const SurfaceMesh &mesh() const;
+    bool isFullDetail() const;
+    double meshSeconds() const { return m_meshSeconds; }
     QImage cpuImage() const { return m_cpuImage; }
-    bool isRendering() const { return m_busy; }
-    // Paints the figure into `target` with the CPU renderer (same camera, colours, overlays):
-    // for printing, export and the batch mode. Runs on the calling thread.
+    bool isRendering() const { return m_meshBusy || m_frameBusy; }
+    // Paints the figure into `target` of any painter with the CPU renderer (same camera,
+    // colours, overlays): for printing, export and the batch mode. On the calling thread.
     void renderTo(QPainter *painter, const QRectF &target) const;
     // The CPU picture alone at `size` (no overlays): tests compare it to references.
     QImage renderImage(QSize size, bool overlays = true) const;
-    // Milliseconds of the last GL frame (draw + glFinish), and the points it drew.
+    // Milliseconds of the last frame drawn (GL: draw + glFinish; CPU: the raster), and the
+    // primitives it drew.
     double lastFrameMs() const { return m_frameMs; }
-    std::size_t lastFramePoints() const { return m_framePoints; }
+    std::size_t lastFramePrimitives() const { return m_framePrimitives; }
     bool cameraMoving() const { return m_moving; }
-    // Splat diameter in device pixels for `points` points of the cloud: the style's point
-    // size, or larger where the points are too sparse to close the surface.
-    double splatSize(std::size_t points, double devicePixelRatio) const;
+    // GL path only: the window's frame as an image, and a request for a new frame.
+    QImage grabGlFrame() const;
+    void requestGlFrame();
 
     QSize sizeHint() const override { return {640, 480}; }
 
@@ -151,13 +155,14 @@ signals:
     void startVertexDragged(int index, const QVector3D &world);
     void startVertexReleased(int index, const QVector3D &start, const QVector3D &end);
     void cameraChanged();
-    // A cloud (GL) or a CPU frame arrived.
+    // A mesh (GL) or a CPU frame arrived.
     void frameReady();
-    void frameDrawn(double milliseconds, qulonglong points);
+    void frameDrawn(double milliseconds, qulonglong primitives);
 
 protected:
     void paintEvent(QPaintEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
+    void showEvent(QShowEvent *event) override;
     void mousePressEvent(QMouseEvent *event) override;
     void mouseMoveEvent(QMouseEvent *event) override;
     void mouseReleaseEvent(QMouseEvent *event) override;
@@ -165,7 +170,7 @@ protected:
     void keyPressEvent(QKeyEvent *event) override;
 
 private:
-    friend class SurfaceGLWidget;
+    friend class SurfaceGLWindow;
     enum class DragKind { None, Orbit, Pan, ControlPoint, StartVertex };
     struct Drag {
         DragKind kind = DragKind::None;
@@ -173,54 +178,92 @@ private:
         QPointF press, last;
         QVector3D startWorld, currentWorld;
     };
+    // The colours of the primitives: a colour index per image, and the palette it indexes.
+    struct Colours {
+        ImageLabel label;
+        std::vector<std::uint32_t> palette;  // 0xRRGGBB
+    };
+    // A mesh and what it was made from (the pointer position of a drag, for the frame log).
+    struct MeshState {
+        std::shared_ptr<const SurfaceMesh> coarse, full;
+        std::uint64_t serial = 0;      // the data it was made of (m_dataSerial then)
+        QPoint input;
+        bool fromDrag = false;
+    };
 
-    // Everything painted over the points, through `mvp` onto `target`.
-    void paintOverlay(QPainter &p, const QMatrix4x4 &mvp, const QRectF &target,
-                      double unit) const;
+    // ---- SurfaceView.cpp: data and jobs
+    void dataChanged();
+    void startMeshJob();
+    void requestFrame();
+    void requestCpuFrame();
+    Colours colours() const;
+    bool pointMoving() const;
+    // The mesh a frame draws now: the coarse one while something moves, else the full one.
+    std::shared_ptr<const SurfaceMesh> frameMesh() const;
+    // A mesh of the current data for a figure (the full one when it is there).
+    std::shared_ptr<const SurfaceMesh> figureMesh() const;
+    // ---- SurfaceViewCamera.cpp
     QMatrix4x4 viewMatrix(QSizeF size) const;
     double depthRange() const;
     QPointF project(const QMatrix4x4 &mvp, const QRectF &target, const QVector3D &w) const;
-    Mat sceneBounds() const;  // 2 x 3: lo, hi of net, start and cloud
-    void dataChanged();
-    void startJob();
+    Mat sceneBounds() const;  // 2 x 3: lo, hi of net, start and refined net
     void cameraMoved();
-    void requestCpuFrame();
+    // ---- SurfaceViewPainting.cpp
+    // Everything painted over the surface, through `mvp` onto `target`.
+    void paintOverlay(QPainter &p, const QMatrix4x4 &mvp, const QRectF &target,
+                      double unit) const;
+    // The frame log (gui/views/FrameLog.h): a presented frame, and the handles at rest.
+    void logFrame(std::uint64_t picture, bool final, const QPoint *shows);
+    // ---- SurfaceViewInput.cpp
     int hit(const Mat &points, const QPointF &screen) const;
-    std::vector<std::uint32_t> paletteArgb(int maps) const;
-    std::vector<int> rasterLabels() const;
-    // The CPU raster of the current data at `size` for `camera` (blocking; cancellable).
-    QImage cpuRaster(QSize size, const OrthoCamera &camera, std::size_t budget,
-                     const std::atomic<bool> *cancel) const;
+    void logInput(const char *kind, const QMouseEvent *event);
+    void setViewCursor(Qt::CursorShape shape);
 
-    SurfaceGLWidget *m_gl = nullptr;
-    std::unique_ptr<LatestJobWorker> m_worker;
+    // GL: the window (created at the first show), its container and whether it is used.
+    bool m_allowGl = true;
+    bool m_useGl = false;
+    SurfaceGLWindow *m_glWindow = nullptr;
+    QWidget *m_glContainer = nullptr;
+
+    std::unique_ptr<LatestJobWorker> m_meshWorker, m_frameWorker;
     std::shared_ptr<const Ifs> m_ifs;
     StartSet m_start;
     std::vector<int> m_colourIndex;
-    Mat m_net, m_start3, m_mesh;
-    std::vector<std::vector<int>> m_netFaces, m_meshFaces;
+    Mat m_net, m_start3, m_refined;
+    std::vector<std::vector<int>> m_netFaces, m_refinedFaces;
     RenderSettings m_settings;
     std::uint32_t m_hidden = 0;
     bool m_editable = true;
     bool m_externalGesture = false;
-    std::size_t m_budget = 1'200'000, m_movingBudget = 150'000;
+    std::size_t m_fullBudget = 400'000, m_movingBudget = 40'000;
 
     SurfaceViewCamera m_camera;
     bool m_cameraSet = false;    // the user moved the camera: data changes keep it
     double m_homeAzimuth = -60.0, m_homeElevation = 40.0;
-    bool m_moving = false;       // camera moving: GL decimates, CPU draws coarse
-    QTimer m_settle;             // camera stopped -> full detail
+    bool m_moving = false;       // the camera moves: frames draw the coarse mesh
+    QTimer m_settle;             // the camera stopped -> full detail
     QTimer m_dataTimer;          // coalesces edits into one job
 
-    std::shared_ptr<const SurfaceCloud> m_cloud;
-    std::uint64_t m_serial = 0;
-    bool m_busy = false;
+    MeshState m_meshes;
+    std::uint64_t m_dataSerial = 0;  // bumped by every data change
+    double m_meshSeconds = 0.0;
+    bool m_meshBusy = false, m_frameBusy = false;
+    bool m_fullPending = false;      // a full mesh job was posted and has not delivered
+    std::uint64_t m_frameSerial = 0, m_frameDelivered = 0;
+    // The CPU frame on screen: its camera, mesh and the pointer position it shows.
     QImage m_cpuImage;
     OrthoCamera m_cpuImageCamera;
+    std::shared_ptr<const SurfaceMesh> m_cpuImageMesh;
+    QPoint m_cpuImageInput;
+    bool m_cpuImageShows = false;
+    std::uint64_t m_cpuPictures = 0;
     double m_frameMs = 0.0;
-    std::size_t m_framePoints = 0;
+    std::size_t m_framePrimitives = 0;
     Drag m_drag;
     int m_selected = -1;
+    // Frame log: the last pointer position (global) and the handles written last.
+    QPoint m_inputGlobal;
+    std::vector<QPoint> m_loggedHandles;
 };
 
 } // namespace awb

@@ -1,0 +1,186 @@
+// SurfaceView: input -- picking and dragging net points and start vertices in the view plane,
+// orbit, pan and zoom, the keyboard, and the frame log's pointer events. The GL window hands its
+// events to these handlers (SurfaceGLWindow).
+
+#include "gui/views/SurfaceView.h"
+
+#include "gui/views/FrameLog.h"
+#include "gui/views/SurfaceGLWindow.h"
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+
+namespace awb {
+
+namespace {
+
+constexpr double hitRadius = 9.0;
+
+} // namespace
+
+void SurfaceView::logInput(const char *kind, const QMouseEvent *event)
+{
+    m_inputGlobal = event->globalPosition().toPoint();
+    if (!framelog::enabled())
+        return;
+    framelog::write("input", QStringLiteral("surface %1 %2 %3")
+                                 .arg(QLatin1String(kind))
+                                 .arg(m_inputGlobal.x())
+                                 .arg(m_inputGlobal.y()));
+}
+
+void SurfaceView::setViewCursor(Qt::CursorShape shape)
+{
+    setCursor(shape);
+    if (m_glWindow)
+        m_glWindow->setCursor(shape);
+}
+
+
+int SurfaceView::hit(const Mat &points, const QPointF &screen) const
+{
+    int best = -1;
+    double bestDistance = hitRadius * hitRadius;
+    for (int i = 0; i < points.rows(); ++i) {
+        const QPointF d = toScreen(QVector3D(float(points(i, 0)), float(points(i, 1)),
+                                             float(points(i, 2)))) - screen;
+        const double dd = QPointF::dotProduct(d, d);
+        if (dd <= bestDistance) {
+            bestDistance = dd;
+            best = i;
+        }
+    }
+    return best;
+}
+
+void SurfaceView::mousePressEvent(QMouseEvent *event)
+{
+    logInput("press", event);
+    const QPointF pos = event->position();
+    m_drag = Drag{};
+    m_drag.press = m_drag.last = pos;
+    const bool panButton = event->button() == Qt::MiddleButton
+                           || event->button() == Qt::RightButton
+                           || (event->button() == Qt::LeftButton
+                               && (event->modifiers() & Qt::ShiftModifier));
+    if (panButton) {
+        m_drag.kind = DragKind::Pan;
+        return;
+    }
+    if (event->button() != Qt::LeftButton)
+        return;
+    int c = m_editable && isLayerVisible(Layer::ControlNet) ? hit(m_net, pos) : -1;
+    int s = m_editable ? hit(m_start3, pos) : -1;
+    // Start vertices often sit next to net points (limit points at the corners): the handle
+    // nearer to the mouse wins.
+    if (c >= 0 && s >= 0) {
+        const QPointF dc = controlPointScreen(c) - pos, ds = startVertexScreen(s) - pos;
+        if (QPointF::dotProduct(ds, ds) < QPointF::dotProduct(dc, dc))
+            c = -1;
+        else
+            s = -1;
+    }
+    if (c >= 0) {
+        m_drag.kind = DragKind::ControlPoint;
+        m_drag.index = c;
+        m_selected = c;
+        m_drag.startWorld = m_drag.currentWorld = QVector3D(
+            float(m_net(c, 0)), float(m_net(c, 1)), float(m_net(c, 2)));
+        m_cameraSet = true; // the view must not refit under the user's hand
+        emit controlPointPressed(c);
+    } else if (s >= 0) {
+        m_drag.kind = DragKind::StartVertex;
+        m_drag.index = s;
+        m_drag.startWorld = m_drag.currentWorld = QVector3D(
+            float(m_start3(s, 0)), float(m_start3(s, 1)), float(m_start3(s, 2)));
+        m_cameraSet = true;
+        emit startVertexPressed(s);
+    } else {
+        m_drag.kind = DragKind::Orbit;
+    }
+    update();
+}
+
+void SurfaceView::mouseMoveEvent(QMouseEvent *event)
+{
+    logInput("move", event);
+    const QPointF pos = event->position();
+    const QPointF step = pos - m_drag.last;
+    m_drag.last = pos;
+    switch (m_drag.kind) {
+    case DragKind::Orbit:
+        orbit(step.x(), step.y());
+        break;
+    case DragKind::Pan:
+        pan(step.x(), step.y());
+        break;
+    case DragKind::ControlPoint:
+    case DragKind::StartVertex: {
+        // In the view plane through the point's start: the depth stays as it was on press.
+        m_drag.currentWorld = m_drag.startWorld + screenDelta(pos - m_drag.press,
+                                                              m_drag.startWorld);
+        if (m_drag.kind == DragKind::ControlPoint)
+            emit controlPointDragged(m_drag.index, m_drag.currentWorld);
+        else
+            emit startVertexDragged(m_drag.index, m_drag.currentWorld);
+        break;
+    }
+    case DragKind::None: {
+        const bool over = (m_editable && hit(m_net, pos) >= 0) || hit(m_start3, pos) >= 0;
+        setViewCursor(over ? Qt::PointingHandCursor : Qt::ArrowCursor);
+        break;
+    }
+    }
+}
+
+void SurfaceView::mouseReleaseEvent(QMouseEvent *event)
+{
+    logInput("release", event);
+    const Drag drag = m_drag;
+    m_drag = Drag{};
+    if (drag.kind == DragKind::ControlPoint)
+        emit controlPointReleased(drag.index, drag.startWorld, drag.currentWorld);
+    else if (drag.kind == DragKind::StartVertex)
+        emit startVertexReleased(drag.index, drag.startWorld, drag.currentWorld);
+    if (drag.kind == DragKind::ControlPoint || drag.kind == DragKind::StartVertex)
+        m_dataTimer.start(); // full detail after the drag's coarse meshes
+    if (drag.kind == DragKind::Orbit || drag.kind == DragKind::Pan) {
+        // The camera is where the user left it: full detail now, not after the settle time.
+        m_settle.stop();
+        m_moving = false;
+    }
+    update();
+    requestFrame();
+}
+
+void SurfaceView::wheelEvent(QWheelEvent *event)
+{
+    // 15 degrees of a wheel notch (120 units) zoom by 1.2.
+    zoomBy(std::pow(1.2, event->angleDelta().y() / 120.0));
+    event->accept();
+}
+
+void SurfaceView::keyPressEvent(QKeyEvent *event)
+{
+    switch (event->key()) {
+    case Qt::Key_Home:
+    case Qt::Key_R:
+        resetCamera();
+        break;
+    case Qt::Key_P:
+        setPerspective(!m_camera.perspective);
+        break;
+    case Qt::Key_Left: orbit(-15, 0); break;
+    case Qt::Key_Right: orbit(15, 0); break;
+    case Qt::Key_Up: orbit(0, -15); break;
+    case Qt::Key_Down: orbit(0, 15); break;
+    default:
+        QWidget::keyPressEvent(event);
+    }
+}
+
+} // namespace awb
