@@ -83,8 +83,23 @@ void SurfaceRaster::plot(int x, int y, float z, std::uint32_t label)
     }
 }
 
+namespace {
+
+// Screen positions this far off the picture are not drawn: converting them to pixel
+// indices would overflow an int, and nothing of them could be seen anyway.
+constexpr double kFarOff = 1e7;
+
+bool drawable(const Eigen::Vector3d &s)
+{
+    return std::abs(s.x()) < kFarOff && std::abs(s.y()) < kFarOff && std::isfinite(s.z());
+}
+
+} // namespace
+
 void SurfaceRaster::splat(const Eigen::Vector3d &s, std::uint32_t label)
 {
+    if (!drawable(s))
+        return;
     const double r = std::max(m_radius, 0.5);
     const int x0 = int(std::floor(s.x() - r)), x1 = int(std::ceil(s.x() + r));
     const int y0 = int(std::floor(s.y() - r)), y1 = int(std::ceil(s.y() + r));
@@ -100,6 +115,8 @@ void SurfaceRaster::splat(const Eigen::Vector3d &s, std::uint32_t label)
 
 void SurfaceRaster::line(const Eigen::Vector3d &a, const Eigen::Vector3d &b, std::uint32_t label)
 {
+    if (!drawable(a) || !drawable(b))
+        return;
     const double len = std::max(std::abs(b.x() - a.x()), std::abs(b.y() - a.y()));
     const int steps = int(std::min(len, 4.0 * (m_w + m_h))) + 1;
     for (int k = 0; k <= steps; ++k) {
@@ -111,6 +128,8 @@ void SurfaceRaster::line(const Eigen::Vector3d &a, const Eigen::Vector3d &b, std
 void SurfaceRaster::triangle(const Eigen::Vector3d &a, const Eigen::Vector3d &b,
                              const Eigen::Vector3d &c, std::uint32_t label)
 {
+    if (!drawable(a) || !drawable(b) || !drawable(c))
+        return;
     const double area = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
     const int x0 = std::max(0, int(std::floor(std::min({a.x(), b.x(), c.x()}))));
     const int x1 = std::min(m_w - 1, int(std::ceil(std::max({a.x(), b.x(), c.x()}))));

@@ -496,7 +496,7 @@ void ItemController::refreshViews()
             else // a polygon figure (normal-vector curve without an equivalent IFS)
                 m_attractor->setIfs(nullptr, StartSet{});
         } catch (const std::exception &e) {
-            problem = tr("Start set: %1").arg(QString::fromStdString(e.what()));
+            problem = tr("%1 cannot be drawn: %2").arg(item->name(), QString::fromStdString(e.what()));
             m_attractor->setIfs(nullptr, StartSet{});
         }
         const Mat P = item->controlPointSetCount() > 0 ? toMatrix(item->controlPoints(0)) : Mat();
@@ -565,11 +565,12 @@ void ItemController::refreshViews()
         m_attractor->setSubdivisionPolygons(polygons, polygonsClosed);
 
         markPanelsDirty();
-        if (!d->note.isEmpty())
+        if (!d->note.isEmpty() && problem.isEmpty())
             problem = d->note;
     }
     if (plot && !plot->eigenvalues())
         problem = tr("%1 shows nothing: %2").arg(plot->name(), plot->derivedError());
+    m_attractor->setProblem(problem);
     if (problem != m_problem) {
         m_problem = problem;
         emit problemChanged(problem);

@@ -161,6 +161,16 @@ public:
     QImage currentImage() const { return m_image; }
     RenderInfo currentImageInfo() const { return m_imageInfo; }
     QString lastError() const { return m_error; }
+    // Why the current item cannot be drawn (the owner's words), shown in the view while it
+    // has no IFS to draw; empty when it can be drawn.
+    void setProblem(const QString &problem)
+    {
+        if (problem != m_problem) {
+            m_problem = problem;
+            update();
+        }
+    }
+    QString problem() const { return m_problem; }
     AttractorRenderer *renderer() const { return m_renderer; }
     // True while the renderer works on a request of this view (coarse or full pass).
     bool isRendering() const { return m_busy; }
@@ -326,6 +336,7 @@ private:
     // when it is final and of the current content.
     std::uint64_t m_contentVersion = 0, m_requestedVersion = 0, m_imageVersion = 0;
     QString m_error;
+    QString m_problem;
     double m_progress = 1.0;
     bool m_busy = false;
     QElapsedTimer m_busySince;

@@ -101,6 +101,26 @@ inline std::optional<QRectF> boundsOf(const QPolygonF &poly)
 }
 
 // A "nice" grid step (1, 2 or 5 times a power of ten) close to `approx`.
+// Grid lines at k * step (k a whole number) within [lo, hi]: the first k and how many, or
+// nothing when there would be more than `most` lines or when the coordinates are too large
+// for the step (beyond 1e12 steps from 0, neighbouring lines coincide in double precision and
+// a loop adding the step to 1e300 would never end).
+struct GridLines {
+    double first = 0;
+    int count = 0;
+};
+inline std::optional<GridLines> gridLines(double lo, double hi, double step, int most)
+{
+    if (!(step > 0) || !std::isfinite(step) || !std::isfinite(lo) || !std::isfinite(hi))
+        return std::nullopt;
+    const double k0 = std::ceil(lo / step), k1 = std::floor(hi / step);
+    if (!std::isfinite(k0) || !std::isfinite(k1) || std::max(std::abs(k0), std::abs(k1)) > 1e12)
+        return std::nullopt;
+    if (k1 - k0 > most)
+        return std::nullopt;
+    return GridLines{k0, std::max(0, int(k1 - k0) + 1)};
+}
+
 inline double niceStep(double approx)
 {
     const double e = std::pow(10.0, std::floor(std::log10(approx)));

@@ -341,15 +341,22 @@ void AttractorView::paintGrid(QPainter &p, const Mapping &m) const
     const QRectF w = QRectF(m.unmap(m.target.bottomLeft()), m.unmap(m.target.topRight()))
                          .normalized();
     const double step = niceStep(90.0 * m.unit / m.scale); // ~90 screen px
-    if (!(step > 0) || !std::isfinite(step) || w.width() / step > 400)
+    // Whatever the coordinates (1e300, 1e-300), at most a few hundred lines per axis.
+    const std::optional<GridLines> xs = gridLines(w.left(), w.right(), step, 400);
+    const std::optional<GridLines> ys = gridLines(w.top(), w.bottom(), step, 400);
+    if (!xs || !ys)
         return;
     const double u = m.unit;
     p.save();
     p.setPen(QPen(QColor(232, 232, 236), 1.0 * u));
-    for (double x = std::ceil(w.left() / step) * step; x <= w.right(); x += step)
+    for (int i = 0; i < xs->count; ++i) {
+        const double x = (xs->first + i) * step;
         p.drawLine(m.map(QPointF(x, w.top())), m.map(QPointF(x, w.bottom())));
-    for (double y = std::ceil(w.top() / step) * step; y <= w.bottom(); y += step)
+    }
+    for (int i = 0; i < ys->count; ++i) {
+        const double y = (ys->first + i) * step;
         p.drawLine(m.map(QPointF(w.left(), y)), m.map(QPointF(w.right(), y)));
+    }
     p.setPen(QPen(QColor(200, 200, 208), 1.0 * u));
     if (w.left() <= 0 && w.right() >= 0)
         p.drawLine(m.map(QPointF(0, w.top())), m.map(QPointF(0, w.bottom())));
@@ -364,11 +371,13 @@ void AttractorView::paintGrid(QPainter &p, const Mapping &m) const
         return QString::number(std::abs(v) < 1e-9 * step ? 0.0 : v, 'g', 6)
             .replace(QLatin1Char('-'), QChar(0x2212));
     };
-    for (double x = std::ceil(w.left() / step) * step; x <= w.right(); x += step) {
+    for (int i = 0; i < xs->count; ++i) {
+        const double x = (xs->first + i) * step;
         const QPointF s = m.map(QPointF(x, w.top()));
         p.drawText(QPointF(s.x() + 3 * u, m.target.bottom() - 4 * u), label(x));
     }
-    for (double y = std::ceil(w.top() / step) * step; y <= w.bottom(); y += step) {
+    for (int i = 0; i < ys->count; ++i) {
+        const double y = (ys->first + i) * step;
         const QPointF s = m.map(QPointF(w.left(), y));
         if (s.y() < m.target.bottom() - fm.height() - 4 * u)
             p.drawText(QPointF(m.target.left() + 4 * u, s.y() - 3 * u), label(y));
@@ -488,6 +497,11 @@ void AttractorView::paintHandles(QPainter &p, const Mapping &m) const
 void AttractorView::paintStatus(QPainter &p) const
 {
     QStringList lines;
+    // Why nothing is drawn (the item's own problem, e.g. a lifting that overflows): the view
+    // says it where the picture would be.
+    const QString problem = !m_ifs && m_error.isEmpty() ? m_problem : QString();
+    if (!problem.isEmpty())
+        lines << problem;
     if (!m_error.isEmpty())
         lines << m_error;
     else if (m_busy && m_busySince.isValid() && m_busySince.elapsed() > kQuietRenderMs)
@@ -504,13 +518,15 @@ void AttractorView::paintStatus(QPainter &p) const
     p.setFont(f);
     const QFontMetrics fm(f);
     const int pad = 6;
-    int y = height() - pad;
+    // Above the grid's x labels along the bottom edge.
+    int y = height() - pad - (isLayerVisible(Layer::Grid) ? fm.height() + 2 : 0);
     for (auto it = lines.crbegin(); it != lines.crend(); ++it) {
         const QRect box = fm.boundingRect(QRect(0, 0, std::max(50, width() - 4 * pad), 1000),
                                           Qt::TextWordWrap, *it);
         const QRect r(pad, y - box.height() - pad, box.width() + 2 * pad, box.height() + pad);
         p.fillRect(r, QColor(255, 255, 255, 225));
-        p.setPen(!m_error.isEmpty() && *it == m_error ? QColor(190, 30, 30) : QColor(60, 60, 60));
+        const bool bad = (!m_error.isEmpty() && *it == m_error) || (!problem.isEmpty() && *it == problem);
+        p.setPen(bad ? QColor(190, 30, 30) : QColor(60, 60, 60));
         p.drawText(r.adjusted(pad, pad / 2, -pad, 0), Qt::TextWordWrap, *it);
         y = r.top() - 2;
     }
