@@ -308,10 +308,6 @@
         <translation>hloubka %1 je nesmyslná: povoleno je nejvýše %2</translation>
     </message>
     <message>
-        <source>depth %1 with %2 maps makes %3 images of the start set, more than 2^31; use a smaller depth</source>
-        <translation>hloubka %1 s %2 zobrazeními dává %3 obrazů počáteční množiny, více než 2^31; použijte menší hloubku</translation>
-    </message>
-    <message>
         <source>the sample count must be between 1 and 2^31, got %1</source>
         <translation>počet vzorků musí být mezi 1 a 2^31, zadáno %1</translation>
     </message>
@@ -326,6 +322,10 @@
     <message>
         <source>the probabilities sum to 0</source>
         <translation>součet pravděpodobností je 0</translation>
+    </message>
+    <message>
+        <source>depth %1 with %2 maps makes %3 images of the start set, more than 2^31: at most depth %4 for %2 maps</source>
+        <translation>hloubka %1 se %2 zobrazeními dává %3 obrazů počáteční množiny, víc než 2^31: nejvýše hloubka %4 pro %2 zobrazení</translation>
     </message>
 </context>
 <context>
@@ -984,6 +984,17 @@
     </message>
 </context>
 <context>
+    <name>awb::CheckedSpinBox</name>
+    <message>
+        <source>“%1” is not a whole number.</source>
+        <translation>„%1“ není celé číslo.</translation>
+    </message>
+    <message>
+        <source>%1 is outside %2 … %3.</source>
+        <translation>%1 leží mimo %2 … %3.</translation>
+    </message>
+</context>
+<context>
     <name>awb::CifsItem</name>
     <message>
         <source>Fern of gaskets</source>
@@ -1198,6 +1209,17 @@
     <message>
         <source>exact curve: %1</source>
         <translation>přesná křivka: %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ExactSpinBox</name>
+    <message>
+        <source>“%1” is not a number (type e.g. 0.25, 1/3 or sqrt(3)/6).</source>
+        <translation>„%1“ není číslo (napište např. 0.25, 1/3 nebo sqrt(3)/6).</translation>
+    </message>
+    <message>
+        <source>%1 is outside %2 … %3.</source>
+        <translation>%1 leží mimo %2 … %3.</translation>
     </message>
 </context>
 <context>
@@ -1618,10 +1640,6 @@
     <message>
         <source>%1 cannot be drawn: %2</source>
         <translation>%1 nelze vykreslit: %2</translation>
-    </message>
-    <message>
-        <source>Start set: %1</source>
-        <translation>Počáteční množina: %1</translation>
     </message>
     <message>
         <source>Regularity: only for subdivision curves</source>
@@ -2974,6 +2992,26 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>%1 matrices %2_i, %3 eigenvalues: see the Spectrum and Matrices panels.</source>
         <translation>Matice %2_i: %1, vlastní čísla: %3; viz panely Spektrum a Matice.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Hloubka</translation>
+    </message>
+    <message>
+        <source>Samples</source>
+        <translation>Vzorky</translation>
+    </message>
+    <message>
+        <source>Prefix length</source>
+        <translation>Délka prefixu</translation>
+    </message>
+    <message>
+        <source>Point size</source>
+        <translation>Velikost bodů</translation>
     </message>
 </context>
 <context>

@@ -308,10 +308,6 @@
         <translation>une profondeur de %1 est absurde&#xa0;: %2 au maximum</translation>
     </message>
     <message>
-        <source>depth %1 with %2 maps makes %3 images of the start set, more than 2^31; use a smaller depth</source>
-        <translation>une profondeur de %1 avec %2 applications produit %3 images de l’ensemble initial, soit plus de 2^31&#x202f;; choisissez une profondeur plus petite</translation>
-    </message>
-    <message>
         <source>the sample count must be between 1 and 2^31, got %1</source>
         <translation>le nombre d’échantillons doit être compris entre 1 et 2^31 (reçu&#xa0;: %1)</translation>
     </message>
@@ -326,6 +322,10 @@
     <message>
         <source>the probabilities sum to 0</source>
         <translation>la somme des probabilités est nulle</translation>
+    </message>
+    <message>
+        <source>depth %1 with %2 maps makes %3 images of the start set, more than 2^31: at most depth %4 for %2 maps</source>
+        <translation>la profondeur %1 avec %2 applications donne %3 images de l’ensemble initial, plus que 2^31 : au plus la profondeur %4 pour %2 applications</translation>
     </message>
 </context>
 <context>
@@ -983,6 +983,17 @@
     </message>
 </context>
 <context>
+    <name>awb::CheckedSpinBox</name>
+    <message>
+        <source>“%1” is not a whole number.</source>
+        <translation>« %1 » n’est pas un nombre entier.</translation>
+    </message>
+    <message>
+        <source>%1 is outside %2 … %3.</source>
+        <translation>%1 est hors de %2 … %3.</translation>
+    </message>
+</context>
+<context>
     <name>awb::CifsItem</name>
     <message>
         <source>Fern of gaskets</source>
@@ -1197,6 +1208,17 @@
     <message>
         <source>exact curve: %1</source>
         <translation>courbe exacte&#xa0;: %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ExactSpinBox</name>
+    <message>
+        <source>“%1” is not a number (type e.g. 0.25, 1/3 or sqrt(3)/6).</source>
+        <translation>« %1 » n’est pas un nombre (tapez par exemple 0.25, 1/3 ou sqrt(3)/6).</translation>
+    </message>
+    <message>
+        <source>%1 is outside %2 … %3.</source>
+        <translation>%1 est hors de %2 … %3.</translation>
     </message>
 </context>
 <context>
@@ -1616,10 +1638,6 @@
     <message>
         <source>%1 cannot be drawn: %2</source>
         <translation>%1 ne peut pas être tracé&#xa0;: %2</translation>
-    </message>
-    <message>
-        <source>Start set: %1</source>
-        <translation>Ensemble initial&#xa0;: %1</translation>
     </message>
     <message>
         <source>Regularity: only for subdivision curves</source>
@@ -2607,7 +2625,7 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation>%1&#xa0;: %2</translation>
+        <translation>%1 : %2</translation>
     </message>
 </context>
 <context>
@@ -2968,6 +2986,26 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>%1 matrices %2_i, %3 eigenvalues: see the Spectrum and Matrices panels.</source>
         <translation>%1 matrices %2_i, %3 valeurs propres&#xa0;: voir les panneaux Spectre et Matrices.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Profondeur</translation>
+    </message>
+    <message>
+        <source>Samples</source>
+        <translation>Échantillons</translation>
+    </message>
+    <message>
+        <source>Prefix length</source>
+        <translation>Longueur du préfixe</translation>
+    </message>
+    <message>
+        <source>Point size</source>
+        <translation>Taille des points</translation>
     </message>
 </context>
 <context>

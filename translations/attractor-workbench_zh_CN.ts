@@ -308,10 +308,6 @@
         <translation>深度 %1 过大：最多允许 %2</translation>
     </message>
     <message>
-        <source>depth %1 with %2 maps makes %3 images of the start set, more than 2^31; use a smaller depth</source>
-        <translation>深度 %1、%2 个映射将产生初始集的 %3 个像，超过 2^31；请使用较小的深度</translation>
-    </message>
-    <message>
         <source>the sample count must be between 1 and 2^31, got %1</source>
         <translation>样本数必须介于 1 和 2^31 之间，实际为 %1</translation>
     </message>
@@ -326,6 +322,10 @@
     <message>
         <source>the probabilities sum to 0</source>
         <translation>概率之和为 0</translation>
+    </message>
+    <message>
+        <source>depth %1 with %2 maps makes %3 images of the start set, more than 2^31: at most depth %4 for %2 maps</source>
+        <translation>深度 %1 与 %2 个映射产生 %3 个初始集的像，超过 2^31：%2 个映射最多深度 %4</translation>
     </message>
 </context>
 <context>
@@ -982,6 +982,17 @@
     </message>
 </context>
 <context>
+    <name>awb::CheckedSpinBox</name>
+    <message>
+        <source>“%1” is not a whole number.</source>
+        <translation>“%1”不是整数。</translation>
+    </message>
+    <message>
+        <source>%1 is outside %2 … %3.</source>
+        <translation>%1 超出 %2 … %3。</translation>
+    </message>
+</context>
+<context>
     <name>awb::CifsItem</name>
     <message>
         <source>Fern of gaskets</source>
@@ -1196,6 +1207,17 @@
     <message>
         <source>exact curve: %1</source>
         <translation>精确曲线：%1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ExactSpinBox</name>
+    <message>
+        <source>“%1” is not a number (type e.g. 0.25, 1/3 or sqrt(3)/6).</source>
+        <translation>“%1”不是数（请输入例如 0.25、1/3 或 sqrt(3)/6）。</translation>
+    </message>
+    <message>
+        <source>%1 is outside %2 … %3.</source>
+        <translation>%1 超出 %2 … %3。</translation>
     </message>
 </context>
 <context>
@@ -1614,10 +1636,6 @@
     <message>
         <source>%1 cannot be drawn: %2</source>
         <translation>无法绘制 %1：%2</translation>
-    </message>
-    <message>
-        <source>Start set: %1</source>
-        <translation>初始集：%1</translation>
     </message>
     <message>
         <source>Regularity: only for subdivision curves</source>
@@ -2962,6 +2980,26 @@ It was kept as %2.</source>
     <message>
         <source>%1 matrices %2_i, %3 eigenvalues: see the Spectrum and Matrices panels.</source>
         <translation>%1 个矩阵 %2_i，%3 个特征值：请查看“谱”和“矩阵”面板。</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>深度</translation>
+    </message>
+    <message>
+        <source>Samples</source>
+        <translation>样本数</translation>
+    </message>
+    <message>
+        <source>Prefix length</source>
+        <translation>前缀长度</translation>
+    </message>
+    <message>
+        <source>Point size</source>
+        <translation>点大小</translation>
     </message>
 </context>
 <context>

@@ -87,6 +87,16 @@ const QStringList &AlgorithmSpec::modeNames()
     return names;
 }
 
+int AlgorithmSpec::maxDepthFor(int maps)
+{
+    if (maps <= 1)
+        return maxDepth;
+    int k = 0;
+    while (k < maxDepth && std::pow(double(maps), k + 1) <= maxImages)
+        ++k;
+    return k;
+}
+
 MaybeProblem AlgorithmSpec::check(int maps) const
 {
     if (depth < 0)
@@ -97,9 +107,10 @@ MaybeProblem AlgorithmSpec::check(int maps) const
     // N^k in floating point: exact enough to compare with 2^31, and it cannot overflow.
     if (maps > 1 && std::pow(double(maps), depth) > maxImages)
         return Problem{"depth", tr("depth %1 with %2 maps makes %3 images of the start set, "
-                                   "more than 2^31; use a smaller depth")
+                                   "more than 2^31: at most depth %4 for %2 maps")
                                     .arg(depth).arg(maps)
-                                    .arg(std::pow(double(maps), depth), 0, 'g', 3)};
+                                    .arg(std::pow(double(maps), depth), 0, 'g', 3)
+                                    .arg(maxDepthFor(maps))};
     if (samples < 1 || samples > maxSamples)
         return Problem{"samples", tr("the sample count must be between 1 and 2^31, got %1")
                                       .arg(samples)};

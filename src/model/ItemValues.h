@@ -77,6 +77,9 @@ public:
     // Deterministic depth k makes N^k images of the start set: more than this is refused.
     static constexpr double maxImages = 2147483648.0;  // 2^31
     static constexpr int maxDepth = 64;                 // the core's own limit
+    // The deepest level whose N^k images of the start set stay within 2^31 (maxDepth for
+    // one map or none).
+    static int maxDepthFor(int maps);
     static constexpr qint64 maxSamples = qint64(1) << 31;
     static constexpr qint64 maxSeed = (qint64(1) << 53) - 1;  // exact in a JSON number
 

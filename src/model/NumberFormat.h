@@ -28,9 +28,16 @@ QString formatNumber(double v, int digits = 6);
 // "0.112 + 0.449i", "1/2 − (1/4)i", "−0.25" (no imaginary part below 1e-12 relative).
 QString formatComplex(std::complex<double> z, int digits = 6);
 
-// Parses what a user types into a matrix cell: decimals, exponents, "3/8", "-1/16", with
-// ASCII or typographic minus. Returns nullopt for anything else and for non-finite results.
+// Parses what a user types for a number (a matrix cell, a parameter): decimals, exponents,
+// fractions "3/8", "-1/16", and expressions of them with + - * / ^ and parentheses, pi (π), e,
+// sqrt (√), cbrt, sin, cos, tan, exp, ln: "sqrt(3)/6", "1/2 + 1/16", "2^-5". ASCII or
+// typographic minus; a decimal comma. Returns nullopt for anything else (the whole text must
+// parse) and for non-finite results.
 std::optional<double> parseNumber(const QString &text);
+
+// What an editor shows for a value: a short exact decimal as it is ("0.25", "3"), a value only
+// a fraction writes exactly as the fraction ("1/3", "5/24"), else 10 significant digits.
+QString displayNumber(double v);
 
 // A name with a subscript as plain text: "S_1" -> "S₁", "M_{12}" -> "M₁₂" (legends and axis
 // labels have no rich text). Names without "_" are returned unchanged.

@@ -79,8 +79,10 @@ QVariant ProjectTreeModel::data(const QModelIndex &index, int role) const
     case Qt::EditRole:
         return index.column() == NameColumn ? item->name() : item->typeName();
     case Qt::ToolTipRole: {
+        // The whole name (the column elides it), its kind, and what keeps it from being drawn.
         const QString error = item->derivedError();
-        return error.isEmpty() ? item->typeName() : error;
+        const QString what = QStringLiteral("%1\n%2").arg(item->name(), item->typeName());
+        return error.isEmpty() ? what : what + QLatin1Char('\n') + error;
     }
     case ItemTypeRole: return item->type();
     case DerivedErrorRole: return item->derivedError();

@@ -36,6 +36,7 @@
 #include <QStandardPaths>
 #include <QTableView>
 #include <QTemporaryDir>
+#include <QLineEdit>
 #include <QtTest>
 
 #include "TestTime.h"
@@ -445,14 +446,23 @@ void TestMainWindow::propertiesEditIsUndoable()
     w.project()->undoStack()->undo();
     QCOMPARE(item->scheme().omega, 1.0 / 16.0);
 
-    // A refused value is reported and the editor shows the model's value again.
+    // A refused value is reported and the editor shows the model's value again: typed 64
+    // (2^64 images) or -3, the message names the range (0 … 31 for two maps).
     auto *depth = qobject_cast<QSpinBox *>(w.propertiesWidget()->editor("algorithm.depth"));
     QVERIFY(depth);
+    QCOMPARE(depth->maximum(), 31);
     const int depthBefore = item->algorithm().depth;
-    depth->setValue(64);  // 2^64 images: refused by the model
-    QCOMPARE(item->algorithm().depth, depthBefore);
-    QCOMPARE(depth->value(), depthBefore);
-    QCOMPARE(messages.errors.size(), 1);
+    auto *line = depth->findChild<QLineEdit *>();
+    for (const QString &typed : {QStringLiteral("64"), QStringLiteral("-3")}) {
+        depth->setFocus();
+        line->setText(typed);
+        QTest::keyClick(depth, Qt::Key_Return);
+        QCOMPARE(item->algorithm().depth, depthBefore);
+        QCOMPARE(depth->value(), depthBefore);
+    }
+    QCOMPARE(messages.errors.size(), 2);
+    QVERIFY2(messages.errors.first().contains(QStringLiteral("64 is outside 0 … 31")),
+             qPrintable(messages.errors.first()));
 }
 
 void TestMainWindow::matrixCellEditRebalancesRow()

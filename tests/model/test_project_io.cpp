@@ -278,7 +278,7 @@ private slots:
         QTest::newRow("too many images")
             << project(curveWith("a", "algorithm", R"({"depth": 40})"))
             << "item 1 (\"a\"): field \"algorithm.depth\": depth 40 with 2 maps makes 1.1e+12 "
-               "images of the start set, more than 2^31; use a smaller depth";
+               "images of the start set, more than 2^31: at most depth 31 for 2 maps";
         QTest::newRow("bad start set")
             << project(curveWith("a", "start_set",
                                  R"({"kind": "triangle", "points": [[0, 0], [1, 0]]})"))

@@ -255,6 +255,18 @@ void ItemController::setSurfaceView(SurfaceView *view)
                 endGesture();
                 scheduleRefresh(); // the docks skipped during the drag
             });
+    // The direction the user turned the view to becomes the item's camera (one undo step):
+    // the Properties dock, exports and attractor-cli render look from there too.
+    connect(view, &SurfaceView::cameraTurned, this, [this](double azimuth, double elevation) {
+        auto *surface = qobject_cast<SubdivisionSurfaceItem *>(m_item.data());
+        if (!surface || m_frame || !surface->project())
+            return;
+        Project *project = surface->project();
+        const int turn = project->beginGesture();
+        surface->setParameter(QStringLiteral("camera.azimuth"), azimuth, turn);
+        surface->setParameter(QStringLiteral("camera.elevation"), elevation, turn);
+        project->endGesture(turn);
+    });
     connect(view, &SurfaceView::startVertexPressed, this, &ItemController::onSurfacePressed);
     connect(view, &SurfaceView::startVertexDragged, this, &ItemController::onStartDragged3D);
     connect(view, &SurfaceView::startVertexReleased, this,

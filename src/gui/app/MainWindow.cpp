@@ -65,6 +65,7 @@
 #include <QPrinter>
 #include <QProgressBar>
 #include <QProgressDialog>
+#include <QTabBar>
 #include <QTimer>
 #include <QScreen>
 #include <QSettings>
@@ -217,8 +218,11 @@ void MainWindow::createViews()
     m_tree->setModel(m_treeModel);
     m_tree->setHeaderHidden(false);
     m_tree->header()->setSectionResizeMode(0, QHeaderView::Stretch);
-    m_tree->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+    m_tree->header()->setSectionResizeMode(1, QHeaderView::Interactive);
+    m_tree->header()->resizeSection(1, 90);
     m_tree->header()->setStretchLastSection(false);
+    // The name gets the room ("000 Fig. 11 (top): Sierpinski g…" and "(bottom): …" stay
+    // apart); the tooltip has the whole name and kind.
     m_tree->setEditTriggers(QAbstractItemView::EditKeyPressed | QAbstractItemView::DoubleClicked);
     connect(m_tree->selectionModel(), &QItemSelectionModel::currentChanged, this,
             [this](const QModelIndex &index) {
@@ -616,7 +620,7 @@ void MainWindow::createDocks()
     // A sensible first layout: side columns wide enough for their tables and plots.
     resizeDocks({tree, props}, {200, 560}, Qt::Vertical);
     resizeDocks({spec, mats}, {420, 420}, Qt::Vertical);
-    resizeDocks({props, spec}, {370, 460}, Qt::Horizontal);
+    resizeDocks({props, spec}, {320, 350}, Qt::Horizontal);
 }
 
 void MainWindow::createMenus()
@@ -1415,7 +1419,19 @@ void MainWindow::resizeEvent(QResizeEvent *event)
         if (widthChanged)
             shareWidthWithDocks();
         showProblem(m_problem);
+        keepDockTabsWhole();
     });
+}
+
+void MainWindow::keepDockTabsWhole()
+{
+    // The tabs of tabified docks are elided by default ("Proprié…", "Historique des
+    // modificati…" in French): whole titles, with scroll buttons when they do not fit.
+    for (QTabBar *bar : findChildren<QTabBar *>(QString(), Qt::FindDirectChildrenOnly)) {
+        bar->setElideMode(Qt::ElideNone);
+        bar->setUsesScrollButtons(true);
+        bar->setExpanding(false);
+    }
 }
 
 void MainWindow::shareWidthWithDocks()
@@ -1425,7 +1441,7 @@ void MainWindow::shareWidthWithDocks()
     if (total <= 0 || central >= total / 2)
         return;
     // Shrink the columns of docks on either side (one dock stands for its column) in
-    // proportion, so that the central view gets about 55% of the width; the docks' minimum
+    // proportion, so that the central view gets about 54% of the width; the docks' minimum
     // sizes still apply.
     QDockWidget *columns[2] = {nullptr, nullptr};
     for (QDockWidget *d : std::as_const(m_docks)) {
@@ -1443,7 +1459,7 @@ void MainWindow::shareWidthWithDocks()
         docks += d ? d->width() : 0;
     if (docks <= 0)
         return;
-    const double scale = 0.42 * total / docks;
+    const double scale = 0.46 * total / docks;
     QList<QDockWidget *> list;
     QList<int> widths;
     for (QDockWidget *d : columns)

@@ -128,6 +128,7 @@ private:
     void updateCentralView();
     // Narrows the docks when they leave the central view less than half of the window.
     void shareWidthWithDocks();
+    void keepDockTabsWhole();
     void preferencesDialog();
     // Edit > Language: System Default, English and the translations, saved in the settings and
     // applied at the next start.

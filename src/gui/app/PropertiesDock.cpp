@@ -1,5 +1,6 @@
 #include "gui/app/PropertiesDock.h"
 
+#include "gui/app/CompactEditors.h"
 #include "gui/app/FrameBudget.h"
 #include "gui/app/Messages.h"
 #include "gui/app/WheelGuard.h"
@@ -35,26 +36,26 @@ namespace {
 constexpr int sliderSteps = 1000;
 constexpr double spinLimit = 1e9;
 
-// A combo box whose width does not follow its longest entry (long preset names would make the
-// dock's content wider than the dock, clipping every row's right end).
-QComboBox *compactCombo()
-{
-    auto *combo = new QComboBox;
-    combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    combo->setMinimumContentsLength(8);
-    return combo;
-}
+// A combo box whose width does not follow its longest entry, its text elided (CompactEditors).
+QComboBox *compactCombo() { return new ElidingComboBox; }
 
 double finiteOr(double v, double fallback) { return std::isfinite(v) ? v : fallback; }
 
-QDoubleSpinBox *realSpin(double lo, double hi)
+// Real values shown exactly where they can be (1/3, not 0.333333) and typed as expressions.
+ExactSpinBox *realSpin(double lo, double hi)
 {
-    auto *spin = new QDoubleSpinBox;
-    spin->setDecimals(6);
+    auto *spin = new ExactSpinBox;
     spin->setRange(finiteOr(lo, -spinLimit), finiteOr(hi, spinLimit));
     spin->setSingleStep(0.01);
-    spin->setKeyboardTracking(false);
     spin->setMinimumWidth(90);
+    return spin;
+}
+
+CheckedSpinBox *wholeSpin(int lo, int hi)
+{
+    auto *spin = new CheckedSpinBox;
+    spin->setMinimumWidth(70); // not the width of its largest value
+    spin->setRange(lo, hi);
     return spin;
 }
 
@@ -153,6 +154,14 @@ void PropertiesWidget::onItemChanged()
     }
 }
 
+std::function<void(const QString &)> PropertiesWidget::refusal(const QString &label)
+{
+    return [this, label](const QString &why) {
+        report(tr("%1: %2").arg(QString(label).remove(QLatin1Char('&')).remove(QLatin1Char(':')),
+                                why));
+    };
+}
+
 void PropertiesWidget::report(const QString &message)
 {
     if (m_messages)
@@ -249,8 +258,11 @@ void PropertiesWidget::rebuild()
         }
     });
     m_bindings.append({QStringLiteral("name"), [this, name] {
-        if (!name->hasFocus())
+        if (!name->hasFocus()) {
             name->setText(m_item->name());
+            name->setCursorPosition(0); // the name's start, not its tail
+            name->setToolTip(m_item->name());
+        }
     }});
     content->addWidget(itemBox);
 
@@ -299,16 +311,15 @@ void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info
         QAbstractSpinBox *spinBase;
         std::function<void(double)> setSpin;
         if (integer) {
-            auto *spin = new QSpinBox;
-            spin->setMinimumWidth(70); // not the width of its largest value
-            spin->setRange(int(std::max(finiteOr(info.minimum, -spinLimit), -spinLimit)),
-                           int(std::min(finiteOr(info.maximum, spinLimit), spinLimit)));
-            spin->setKeyboardTracking(false);
+            auto *spin = wholeSpin(int(std::max(finiteOr(info.minimum, -spinLimit), -spinLimit)),
+                                   int(std::min(finiteOr(info.maximum, spinLimit), spinLimit)));
+            spin->setRefusal(refusal(info.label));
             connect(spin, &QSpinBox::valueChanged, this, [this, key](int v) { apply(key, v); });
             setSpin = [spin](double v) { spin->setValue(int(std::lround(v))); };
             spinBase = spin;
         } else {
             auto *spin = realSpin(info.minimum, info.maximum);
+            spin->setRefusal(refusal(info.label));
             connect(spin, &QDoubleSpinBox::valueChanged, this,
                     [this, key](double v) { apply(key, v); });
             setSpin = [spin](double v) { spin->setValue(v); };
@@ -348,6 +359,10 @@ void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info
             setSpin(m_item->parameter(key).toDouble());
         }});
         if (slider) {
+            // Both must stay usable in a narrow dock: a slider squeezed to a few pixels looks
+            // like a check box.
+            slider->setMinimumWidth(70);
+            spinBase->setMinimumWidth(64);
             row = new QWidget;
             auto *h = new QHBoxLayout(row);
             h->setContentsMargins(0, 0, 0, 0);
@@ -377,6 +392,8 @@ void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info
         auto *im = realSpin(-spinLimit, spinLimit);
         re->setPrefix(tr("Re "));
         im->setPrefix(tr("Im "));
+        re->setRefusal(refusal(info.label));
+        im->setRefusal(refusal(info.label));
         re->setToolTip(info.toolTip);
         im->setToolTip(info.toolTip);
         const auto send = [this, key, re, im] { apply(key, QPointF(re->value(), im->value())); };
@@ -551,15 +568,11 @@ void PropertiesWidget::addAttractorEditors()
     auto *algForm = new QFormLayout(algBox);
     auto *mode = compactCombo();
     mode->addItems({tr("Deterministic"), tr("Random (chaos game)")});
-    auto *depth = new QSpinBox;
-    depth->setMinimumWidth(70); // not the width of its largest value
-    depth->setRange(0, AlgorithmSpec::maxDepth);
-    depth->setKeyboardTracking(false);
-    auto *samples = new QSpinBox;
-    samples->setMinimumWidth(70); // not the width of its largest value
-    samples->setRange(1, 100'000'000);
+    auto *depth = wholeSpin(0, AlgorithmSpec::maxDepth);
+    depth->setRefusal(refusal(tr("Depth")));
+    auto *samples = wholeSpin(1, 100'000'000);
     samples->setSingleStep(10000);
-    samples->setKeyboardTracking(false);
+    samples->setRefusal(refusal(tr("Samples")));
     algForm->addRow(tr("Mode:"), mode);
     algForm->addRow(tr("Depth:"), depth);
     algForm->addRow(tr("Samples:"), samples);
@@ -585,6 +598,9 @@ void PropertiesWidget::addAttractorEditors()
     m_bindings.append({QStringLiteral("algorithm"), [item, mode, depth, samples] {
         const QSignalBlocker b1(mode), b2(depth), b3(samples);
         const AlgorithmSpec &a = item->algorithm();
+        // The deepest level this item's maps allow (N^k images at most 2^31): typing more is
+        // refused with that number.
+        depth->setMaximum(std::max(a.depth, AlgorithmSpec::maxDepthFor(item->mapCount())));
         mode->setCurrentIndex(int(a.mode));
         depth->setValue(a.depth);
         samples->setValue(int(std::min<qint64>(a.samples, 100'000'000)));
@@ -598,13 +614,12 @@ void PropertiesWidget::addAttractorEditors()
     auto *styleForm = new QFormLayout(styleBox);
     auto *colorBy = compactCombo();
     colorBy->addItems({tr("By map"), tr("By address prefix"), tr("Single colour")});
-    auto *prefix = new QSpinBox;
-    prefix->setMinimumWidth(70); // not the width of its largest value
-    prefix->setRange(1, StyleSpec::maxPrefixLength);
-    auto *pointSize = new QDoubleSpinBox;
-    pointSize->setRange(0.5, StyleSpec::maxPointSize);
+    auto *prefix = wholeSpin(1, StyleSpec::maxPrefixLength);
+    prefix->setRefusal(refusal(tr("Prefix length")));
+    auto *pointSize = realSpin(0.5, StyleSpec::maxPointSize);
     pointSize->setSingleStep(0.5);
-    pointSize->setKeyboardTracking(false);
+    pointSize->setMinimumWidth(70);
+    pointSize->setRefusal(refusal(tr("Point size")));
     styleForm->addRow(tr("Colour:"), colorBy);
     styleForm->addRow(tr("Prefix length:"), prefix);
     styleForm->addRow(tr("Point size:"), pointSize);

@@ -63,6 +63,8 @@ private:
     // The selected rows of the point table (sorted), or the current row.
     std::vector<int> selectedPointRows() const;
     void report(const QString &message);
+    // Reports an editor's refusal of a typed value ("Depth: 40 is outside 0 … 19.").
+    std::function<void(const QString &)> refusal(const QString &label);
     // A slider or the complex plane held for `key`: one undo step until endGesture.
     int beginGesture(const QString &key);
     void endGesture(int gesture);

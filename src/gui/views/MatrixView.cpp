@@ -410,7 +410,8 @@ void MatrixView::rebuild(const QList<NamedMatrix> &matrices)
         // the table again on every dataChanged).
         view->horizontalHeader()->setSectionResizeMode(QHeaderView::Fixed);
         view->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
-        view->horizontalHeader()->setMinimumSectionSize(44);
+        // Narrow columns: a 6 x 6 matrix and its sums fit the dock's first width.
+        view->horizontalHeader()->setMinimumSectionSize(26);
         boxLayout->addWidget(label);
         // Large real matrices (a surface's S_i) get a heat map above the table: the table is
         // too wide to read, the pattern of weights is not.

@@ -155,6 +155,9 @@ signals:
     void startVertexDragged(int index, const QVector3D &world);
     void startVertexReleased(int index, const QVector3D &start, const QVector3D &end);
     void cameraChanged();
+    // The user turned the view (the end of an orbit drag, an arrow key): the direction the
+    // document may keep (the item's camera, which exports and the CLI use), in degrees.
+    void cameraTurned(double azimuth, double elevation);
     // A mesh (GL) or a CPU frame arrived.
     void frameReady();
     void frameDrawn(double milliseconds, qulonglong primitives);

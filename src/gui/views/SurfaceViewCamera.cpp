@@ -149,6 +149,11 @@ void SurfaceView::setHomeDirection(double azimuth, double elevation)
         return;
     m_homeAzimuth = azimuth;
     m_homeElevation = elevation;
+    // The document took the direction the user turned the view to (cameraTurned): the view
+    // keeps its zoom and pan. Another direction (typed in Properties, undone) turns the view.
+    const OrthoCamera &c = m_camera.ortho;
+    if (std::abs(c.azimuth - azimuth) < 1e-9 && std::abs(c.elevation - elevation) < 1e-9)
+        return;
     if (m_net.rows() > 0)
         resetCamera();
 }
@@ -193,7 +198,10 @@ void SurfaceView::orbit(double dx, double dy)
     // Turntable orbit: the z axis stays up on screen, which keeps a surface z = f(x, y)
     // readable; 0.4 degree a pixel turns half around across a typical view.
     OrthoCamera &c = m_camera.ortho;
-    c.azimuth = std::fmod(c.azimuth - 0.4 * dx, 360.0);
+    // Azimuth in (-180, 180], as the Properties dock shows it.
+    c.azimuth = std::remainder(c.azimuth - 0.4 * dx, 360.0);
+    if (c.azimuth <= -180.0)
+        c.azimuth += 360.0;
     c.elevation = std::clamp(c.elevation + 0.4 * dy, -89.0, 89.0);
     m_cameraSet = true;
     cameraMoved();

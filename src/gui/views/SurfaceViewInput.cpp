@@ -153,6 +153,8 @@ void SurfaceView::mouseReleaseEvent(QMouseEvent *event)
         m_settle.stop();
         m_moving = false;
     }
+    if (drag.kind == DragKind::Orbit && drag.last != drag.press)
+        emit cameraTurned(m_camera.ortho.azimuth, m_camera.ortho.elevation);
     update();
     requestFrame();
 }
@@ -174,10 +176,16 @@ void SurfaceView::keyPressEvent(QKeyEvent *event)
     case Qt::Key_P:
         setPerspective(!m_camera.perspective);
         break;
-    case Qt::Key_Left: orbit(-15, 0); break;
-    case Qt::Key_Right: orbit(15, 0); break;
-    case Qt::Key_Up: orbit(0, -15); break;
-    case Qt::Key_Down: orbit(0, 15); break;
+    case Qt::Key_Left:
+    case Qt::Key_Right:
+    case Qt::Key_Up:
+    case Qt::Key_Down: {
+        const int k = event->key();
+        orbit(k == Qt::Key_Left ? -15 : k == Qt::Key_Right ? 15 : 0,
+              k == Qt::Key_Up ? -15 : k == Qt::Key_Down ? 15 : 0);
+        emit cameraTurned(m_camera.ortho.azimuth, m_camera.ortho.elevation);
+        break;
+    }
     default:
         QWidget::keyPressEvent(event);
     }
