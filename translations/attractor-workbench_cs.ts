@@ -221,6 +221,10 @@
         <source>%1, Hölder regularity r in [%2, %3] (width %4)</source>
         <translation>%1, Hölderovská regularita r v [%2, %3] (šířka %4)</translation>
     </message>
+    <message>
+        <source>%1, Hölder regularity r = %2 (exact)</source>
+        <translation>%1, Hölderovská regularita r = %2 (přesně)</translation>
+    </message>
 </context>
 <context>
     <name>awb::AddressPanel</name>
@@ -375,10 +379,6 @@
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;|λ| = %2</translation>
     </message>
     <message>
-        <source>∝ %1^k</source>
-        <translation>∝ %1^k</translation>
-    </message>
-    <message>
         <source>depth k</source>
         <translation>hloubka k</translation>
     </message>
@@ -403,10 +403,6 @@
         <translation>délka</translation>
     </message>
     <message>
-        <source>Box counting: dimension D = %1, R² = %2</source>
-        <translation>Počítání krabic: dimenze D = %1, R² = %2</translation>
-    </message>
-    <message>
         <source>Box counting: no fit (%1)</source>
         <translation>Počítání krabic: bez proložení (%1)</translation>
     </message>
@@ -417,10 +413,6 @@
     <message>
         <source>fitted levels</source>
         <translation>proložené úrovně</translation>
-    </message>
-    <message>
-        <source>fit: log N = %1 log(1/ε) + %2</source>
-        <translation>proložení: log N = %1 log(1/ε) + %2</translation>
     </message>
     <message>
         <source>log(1/ε)</source>
@@ -449,6 +441,26 @@
     <message>
         <source>The Hausdorff distance is measured against an exact curve: B-spline, Bézier and complex de Casteljau curves have one.</source>
         <translation>Hausdorffova vzdálenost se měří vůči přesné křivce: mají ji B-spline křivky, Bézierovy křivky a komplexní de Casteljauovy křivky.</translation>
+    </message>
+    <message>
+        <source>∝ (%1)ᵏ</source>
+        <translation>∝ (%1)ᵏ</translation>
+    </message>
+    <message>
+        <source>D = %1 (R² = %2)</source>
+        <translation>D = %1 (R² = %2)</translation>
+    </message>
+    <message>
+        <source>Box-counting dimension D = %1: the slope of log N(ε) against log(1/ε) over the fitted levels, log N = %1 log(1/ε) + %2, R² = %3</source>
+        <translation>Krabicová dimenze D = %1: sklon log N(ε) vůči log(1/ε) na proložených úrovních, log N = %1 log(1/ε) + %2, R² = %3</translation>
+    </message>
+    <message>
+        <source>No fit</source>
+        <translation>Bez proložení</translation>
+    </message>
+    <message>
+        <source>slope %1</source>
+        <translation>sklon %1</translation>
     </message>
 </context>
 <context>
@@ -1396,10 +1408,6 @@
         <source>samples = %1</source>
         <translation>vzorky = %1</translation>
     </message>
-    <message>
-        <source>%1: %2 × %3 (see the Matrices dock)</source>
-        <translation>%1: %2 × %3 (viz panel Matice)</translation>
-    </message>
     <message numerus="yes">
         <source>… and %n more: see the Matrices dock, or copy them as LaTeX.</source>
         <translation>
@@ -1411,6 +1419,10 @@
     <message>
         <source>Printing %1 was cancelled while the attractor was drawn.</source>
         <translation>Tisk %1 byl zrušen během kreslení atraktoru.</translation>
+    </message>
+    <message>
+        <source>%1 (%2 × %3):</source>
+        <translation>%1 (%2 × %3):</translation>
     </message>
 </context>
 <context>
@@ -1658,14 +1670,6 @@
         <translation>parametry schématu byly odmítnuty</translation>
     </message>
     <message>
-        <source>F^k(X0) to the %1</source>
-        <translation>F^k(X0) vůči: %1</translation>
-    </message>
-    <message>
-        <source>F^k(X0)</source>
-        <translation>F^k(X0)</translation>
-    </message>
-    <message>
         <source>Changing %1 (%2, %3) from %4 to %5 makes row %2 sum to %6, not 1: the rows of a subdivision matrix are affine combinations.
 
 Take the difference %7 from the entry in column %8 (%9 → %10) so that the row sums to 1?</source>
@@ -1700,6 +1704,14 @@ Odečíst rozdíl %7 od prvku ve sloupci %8 (%9 → %10), aby byl součet řádk
     <message>
         <source>&amp;Fit View</source>
         <translation>Přizpůsobit po&amp;hled</translation>
+    </message>
+    <message>
+        <source>Fᵏ(X₀)</source>
+        <translation>Fᵏ(X₀)</translation>
+    </message>
+    <message>
+        <source>Fᵏ(X₀) to the %1</source>
+        <translation>Fᵏ(X₀) k %1</translation>
     </message>
 </context>
 <context>
@@ -2076,10 +2088,6 @@ Odečíst rozdíl %7 od prvku ve sloupci %8 (%9 → %10), aby byl součet řádk
         <translation>vyp.</translation>
     </message>
     <message>
-        <source>Draw F^k(X0) of the start set X0 as vectors</source>
-        <translation>Kreslit F^k(X0) počáteční množiny X0 jako vektory</translation>
-    </message>
-    <message>
         <source>  Subdivision steps: </source>
         <translation>  Kroky subdivize: </translation>
     </message>
@@ -2286,6 +2294,34 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>Built with Qt %1 (running on Qt %2), Eigen %3 and QCustomPlot %4.</source>
         <translation>Sestaveno s Qt %1 (spuštěno na Qt %2), Eigen %3 a QCustomPlot %4.</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+S</source>
+        <translation>Ctrl+Shift+S</translation>
+    </message>
+    <message>
+        <source>Open E&amp;xample</source>
+        <translation>Otevřít pří&amp;klad</translation>
+    </message>
+    <message>
+        <source>Draw Fᵏ(X₀) of the start set X₀ as vectors</source>
+        <translation>Kreslit Fᵏ(X₀) počáteční množiny X₀ vektorově</translation>
+    </message>
+    <message>
+        <source>untitled</source>
+        <translation>bez-nazvu</translation>
+    </message>
+    <message>
+        <source>No examples installed</source>
+        <translation>Žádné příklady nejsou nainstalovány</translation>
+    </message>
+    <message>
+        <source>Open Example</source>
+        <translation>Otevřít příklad</translation>
+    </message>
+    <message>
+        <source>Opened the example %1 (a copy: Save As keeps it)</source>
+        <translation>Otevřen příklad %1 (kopie: Uložit jako ji zachová)</translation>
     </message>
 </context>
 <context>
@@ -2990,10 +3026,6 @@ Byla ponechána jako %2.</translation>
         <translation>%1 (chybí)</translation>
     </message>
     <message>
-        <source>%1 matrices %2_i, %3 eigenvalues: see the Spectrum and Matrices panels.</source>
-        <translation>Matice %2_i: %1, vlastní čísla: %3; viz panely Spektrum a Matice.</translation>
-    </message>
-    <message>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -3012,6 +3044,10 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>Point size</source>
         <translation>Velikost bodů</translation>
+    </message>
+    <message>
+        <source>%1 matrices %2_i, %3 eigenvalues, plotted in the centre; click an eigenvalue to mark its map (its matrices in the Matrices dock).</source>
+        <translation>%1 matic %2_i, %3 vlastních čísel, vykreslených uprostřed; kliknutím na vlastní číslo označíte jeho zobrazení (jeho matice v panelu Matice).</translation>
     </message>
 </context>
 <context>
@@ -3261,6 +3297,10 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>Eigenvalues</source>
         <translation>Vlastní čísla</translation>
+    </message>
+    <message>
+        <source>%1: λ = %2</source>
+        <translation>%1: λ = %2</translation>
     </message>
 </context>
 <context>
@@ -3591,10 +3631,6 @@ Byla ponechána jako %2.</translation>
 <context>
     <name>awb::UserGuideDialog</name>
     <message>
-        <source>Attractor Workbench — User Guide</source>
-        <translation>Attractor Workbench — Uživatelská příručka</translation>
-    </message>
-    <message>
         <source>&lt;p&gt;The guide is missing.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Příručka chybí.&lt;/p&gt;</translation>
     </message>
@@ -3621,6 +3657,10 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>Zoom at the cursor (view); scroll (panels)</source>
         <translation>Přiblížení v místě kurzoru (pohled); posouvání (panely)</translation>
+    </message>
+    <message>
+        <source>User Guide</source>
+        <translation>Uživatelská příručka</translation>
     </message>
 </context>
 <context>

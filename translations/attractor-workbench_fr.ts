@@ -221,6 +221,10 @@
         <source>%1, Hölder regularity r in [%2, %3] (width %4)</source>
         <translation>%1, régularité höldérienne r dans [%2, %3] (largeur %4)</translation>
     </message>
+    <message>
+        <source>%1, Hölder regularity r = %2 (exact)</source>
+        <translation>%1, régularité höldérienne r = %2 (exacte)</translation>
+    </message>
 </context>
 <context>
     <name>awb::AddressPanel</name>
@@ -375,10 +379,6 @@
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;|λ| = %2</translation>
     </message>
     <message>
-        <source>∝ %1^k</source>
-        <translation>∝ %1^k</translation>
-    </message>
-    <message>
         <source>depth k</source>
         <translation>profondeur k</translation>
     </message>
@@ -403,10 +403,6 @@
         <translation>longueur</translation>
     </message>
     <message>
-        <source>Box counting: dimension D = %1, R² = %2</source>
-        <translation>Comptage de boîtes&#xa0;: dimension D = %1, R² = %2</translation>
-    </message>
-    <message>
         <source>Box counting: no fit (%1)</source>
         <translation>Comptage de boîtes&#xa0;: pas d’ajustement (%1)</translation>
     </message>
@@ -417,10 +413,6 @@
     <message>
         <source>fitted levels</source>
         <translation>niveaux ajustés</translation>
-    </message>
-    <message>
-        <source>fit: log N = %1 log(1/ε) + %2</source>
-        <translation>ajustement&#xa0;: log N = %1 log(1/ε) + %2</translation>
     </message>
     <message>
         <source>log(1/ε)</source>
@@ -449,6 +441,26 @@
     <message>
         <source>The Hausdorff distance is measured against an exact curve: B-spline, Bézier and complex de Casteljau curves have one.</source>
         <translation>La distance de Hausdorff est mesurée par rapport à une courbe exacte&#xa0;: les B-splines, les courbes de Bézier et les courbes de de Casteljau complexes en ont une.</translation>
+    </message>
+    <message>
+        <source>∝ (%1)ᵏ</source>
+        <translation>∝ (%1)ᵏ</translation>
+    </message>
+    <message>
+        <source>D = %1 (R² = %2)</source>
+        <translation>D = %1 (R² = %2)</translation>
+    </message>
+    <message>
+        <source>Box-counting dimension D = %1: the slope of log N(ε) against log(1/ε) over the fitted levels, log N = %1 log(1/ε) + %2, R² = %3</source>
+        <translation>Dimension de comptage de boîtes D = %1 : la pente de log N(ε) en fonction de log(1/ε) sur les niveaux ajustés, log N = %1 log(1/ε) + %2, R² = %3</translation>
+    </message>
+    <message>
+        <source>No fit</source>
+        <translation>Pas d’ajustement</translation>
+    </message>
+    <message>
+        <source>slope %1</source>
+        <translation>pente %1</translation>
     </message>
 </context>
 <context>
@@ -1395,10 +1407,6 @@
         <source>samples = %1</source>
         <translation>échantillons = %1</translation>
     </message>
-    <message>
-        <source>%1: %2 × %3 (see the Matrices dock)</source>
-        <translation>%1&#xa0;: %2 × %3 (voir le panneau Matrices)</translation>
-    </message>
     <message numerus="yes">
         <source>… and %n more: see the Matrices dock, or copy them as LaTeX.</source>
         <translation>
@@ -1409,6 +1417,10 @@
     <message>
         <source>Printing %1 was cancelled while the attractor was drawn.</source>
         <translation>L’impression de %1 a été annulée pendant le tracé de l’attracteur.</translation>
+    </message>
+    <message>
+        <source>%1 (%2 × %3):</source>
+        <translation>%1 (%2 × %3) :</translation>
     </message>
 </context>
 <context>
@@ -1656,14 +1668,6 @@
         <translation>les paramètres du schéma sont refusés</translation>
     </message>
     <message>
-        <source>F^k(X0) to the %1</source>
-        <translation>F^k(X0) à la %1</translation>
-    </message>
-    <message>
-        <source>F^k(X0)</source>
-        <translation>F^k(X0)</translation>
-    </message>
-    <message>
         <source>Changing %1 (%2, %3) from %4 to %5 makes row %2 sum to %6, not 1: the rows of a subdivision matrix are affine combinations.
 
 Take the difference %7 from the entry in column %8 (%9 → %10) so that the row sums to 1?</source>
@@ -1698,6 +1702,14 @@ Retrancher la différence %7 du coefficient de la colonne %8 (%9 → %10) pour q
     <message>
         <source>&amp;Fit View</source>
         <translation>A&amp;juster la vue</translation>
+    </message>
+    <message>
+        <source>Fᵏ(X₀)</source>
+        <translation>Fᵏ(X₀)</translation>
+    </message>
+    <message>
+        <source>Fᵏ(X₀) to the %1</source>
+        <translation>Fᵏ(X₀) jusqu’à la %1</translation>
     </message>
 </context>
 <context>
@@ -2073,10 +2085,6 @@ Retrancher la différence %7 du coefficient de la colonne %8 (%9 → %10) pour q
         <translation>désactivé</translation>
     </message>
     <message>
-        <source>Draw F^k(X0) of the start set X0 as vectors</source>
-        <translation>Tracer F^k(X0) de l’ensemble initial X0 sous forme vectorielle</translation>
-    </message>
-    <message>
         <source>  Subdivision steps: </source>
         <translation>  Étapes de subdivision&#xa0;: </translation>
     </message>
@@ -2283,6 +2291,34 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>Built with Qt %1 (running on Qt %2), Eigen %3 and QCustomPlot %4.</source>
         <translation>Compilé avec Qt %1 (exécuté avec Qt %2), Eigen %3 et QCustomPlot %4.</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+S</source>
+        <translation>Ctrl+Shift+S</translation>
+    </message>
+    <message>
+        <source>Open E&amp;xample</source>
+        <translation>Ouvrir un e&amp;xemple</translation>
+    </message>
+    <message>
+        <source>Draw Fᵏ(X₀) of the start set X₀ as vectors</source>
+        <translation>Dessiner Fᵏ(X₀) de l’ensemble initial X₀ en vecteurs</translation>
+    </message>
+    <message>
+        <source>untitled</source>
+        <translation>sans-titre</translation>
+    </message>
+    <message>
+        <source>No examples installed</source>
+        <translation>Aucun exemple installé</translation>
+    </message>
+    <message>
+        <source>Open Example</source>
+        <translation>Ouvrir un exemple</translation>
+    </message>
+    <message>
+        <source>Opened the example %1 (a copy: Save As keeps it)</source>
+        <translation>Exemple %1 ouvert (une copie : « Enregistrer sous » la conserve)</translation>
     </message>
 </context>
 <context>
@@ -2984,10 +3020,6 @@ Elle a été conservée sous le nom %2.</translation>
         <translation>%1 (manquant)</translation>
     </message>
     <message>
-        <source>%1 matrices %2_i, %3 eigenvalues: see the Spectrum and Matrices panels.</source>
-        <translation>%1 matrices %2_i, %3 valeurs propres&#xa0;: voir les panneaux Spectre et Matrices.</translation>
-    </message>
-    <message>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
@@ -3006,6 +3038,10 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>Point size</source>
         <translation>Taille des points</translation>
+    </message>
+    <message>
+        <source>%1 matrices %2_i, %3 eigenvalues, plotted in the centre; click an eigenvalue to mark its map (its matrices in the Matrices dock).</source>
+        <translation>%1 matrices %2_i, %3 valeurs propres, tracées au centre ; cliquez sur une valeur propre pour marquer son application (ses matrices dans le panneau Matrices).</translation>
     </message>
 </context>
 <context>
@@ -3255,6 +3291,10 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>Eigenvalues</source>
         <translation>Valeurs propres</translation>
+    </message>
+    <message>
+        <source>%1: λ = %2</source>
+        <translation>%1 : λ = %2</translation>
     </message>
 </context>
 <context>
@@ -3585,10 +3625,6 @@ Elle a été conservée sous le nom %2.</translation>
 <context>
     <name>awb::UserGuideDialog</name>
     <message>
-        <source>Attractor Workbench — User Guide</source>
-        <translation>Attractor Workbench — Guide de l’utilisateur</translation>
-    </message>
-    <message>
         <source>&lt;p&gt;The guide is missing.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Le guide est introuvable.&lt;/p&gt;</translation>
     </message>
@@ -3615,6 +3651,10 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>Zoom at the cursor (view); scroll (panels)</source>
         <translation>Zoomer autour du curseur (vue)&#x202f;; faire défiler (panneaux)</translation>
+    </message>
+    <message>
+        <source>User Guide</source>
+        <translation>Guide de l’utilisateur</translation>
     </message>
 </context>
 <context>

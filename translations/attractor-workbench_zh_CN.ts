@@ -221,6 +221,10 @@
         <source>%1, Hölder regularity r in [%2, %3] (width %4)</source>
         <translation>%1，Hölder 正则性 r ∈ [%2, %3]（区间宽度 %4）</translation>
     </message>
+    <message>
+        <source>%1, Hölder regularity r = %2 (exact)</source>
+        <translation>%1，Hölder 正则性 r = %2（精确）</translation>
+    </message>
 </context>
 <context>
     <name>awb::AddressPanel</name>
@@ -375,10 +379,6 @@
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;|λ| = %2</translation>
     </message>
     <message>
-        <source>∝ %1^k</source>
-        <translation>∝ %1^k</translation>
-    </message>
-    <message>
         <source>depth k</source>
         <translation>深度 k</translation>
     </message>
@@ -403,10 +403,6 @@
         <translation>长度</translation>
     </message>
     <message>
-        <source>Box counting: dimension D = %1, R² = %2</source>
-        <translation>盒计数：维数 D = %1，R² = %2</translation>
-    </message>
-    <message>
         <source>Box counting: no fit (%1)</source>
         <translation>盒计数：无法拟合（%1）</translation>
     </message>
@@ -417,10 +413,6 @@
     <message>
         <source>fitted levels</source>
         <translation>拟合所用层级</translation>
-    </message>
-    <message>
-        <source>fit: log N = %1 log(1/ε) + %2</source>
-        <translation>拟合：log N = %1 log(1/ε) + %2</translation>
     </message>
     <message>
         <source>log(1/ε)</source>
@@ -449,6 +441,26 @@
     <message>
         <source>The Hausdorff distance is measured against an exact curve: B-spline, Bézier and complex de Casteljau curves have one.</source>
         <translation>Hausdorff 距离是相对于精确曲线测量的：B 样条、Bézier 曲线和复 de Casteljau 曲线都有精确曲线。</translation>
+    </message>
+    <message>
+        <source>∝ (%1)ᵏ</source>
+        <translation>∝ (%1)ᵏ</translation>
+    </message>
+    <message>
+        <source>D = %1 (R² = %2)</source>
+        <translation>D = %1（R² = %2）</translation>
+    </message>
+    <message>
+        <source>Box-counting dimension D = %1: the slope of log N(ε) against log(1/ε) over the fitted levels, log N = %1 log(1/ε) + %2, R² = %3</source>
+        <translation>盒计数维数 D = %1：在拟合层级上 log N(ε) 对 log(1/ε) 的斜率，log N = %1 log(1/ε) + %2，R² = %3</translation>
+    </message>
+    <message>
+        <source>No fit</source>
+        <translation>无拟合</translation>
+    </message>
+    <message>
+        <source>slope %1</source>
+        <translation>斜率 %1</translation>
     </message>
 </context>
 <context>
@@ -1394,10 +1406,6 @@
         <source>samples = %1</source>
         <translation>样本数 = %1</translation>
     </message>
-    <message>
-        <source>%1: %2 × %3 (see the Matrices dock)</source>
-        <translation>%1：%2 × %3（见“矩阵”面板）</translation>
-    </message>
     <message numerus="yes">
         <source>… and %n more: see the Matrices dock, or copy them as LaTeX.</source>
         <translation>
@@ -1407,6 +1415,10 @@
     <message>
         <source>Printing %1 was cancelled while the attractor was drawn.</source>
         <translation>绘制吸引子时，%1 的打印已取消。</translation>
+    </message>
+    <message>
+        <source>%1 (%2 × %3):</source>
+        <translation>%1（%2 × %3）：</translation>
     </message>
 </context>
 <context>
@@ -1654,14 +1666,6 @@
         <translation>细分格式的参数被拒绝</translation>
     </message>
     <message>
-        <source>F^k(X0) to the %1</source>
-        <translation>F^k(X0) 到 %1</translation>
-    </message>
-    <message>
-        <source>F^k(X0)</source>
-        <translation>F^k(X0)</translation>
-    </message>
-    <message>
         <source>Changing %1 (%2, %3) from %4 to %5 makes row %2 sum to %6, not 1: the rows of a subdivision matrix are affine combinations.
 
 Take the difference %7 from the entry in column %8 (%9 → %10) so that the row sums to 1?</source>
@@ -1696,6 +1700,14 @@ Take the difference %7 from the entry in column %8 (%9 → %10) so that the row 
     <message>
         <source>&amp;Fit View</source>
         <translation>适应视图(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Fᵏ(X₀)</source>
+        <translation>Fᵏ(X₀)</translation>
+    </message>
+    <message>
+        <source>Fᵏ(X₀) to the %1</source>
+        <translation>Fᵏ(X₀) 到%1</translation>
     </message>
 </context>
 <context>
@@ -2070,10 +2082,6 @@ Take the difference %7 from the entry in column %8 (%9 → %10) so that the row 
         <translation>关</translation>
     </message>
     <message>
-        <source>Draw F^k(X0) of the start set X0 as vectors</source>
-        <translation>将初始集 X0 的 F^k(X0) 以矢量形式绘制</translation>
-    </message>
-    <message>
         <source>  Subdivision steps: </source>
         <translation>  细分步数：</translation>
     </message>
@@ -2280,6 +2288,34 @@ It was kept as %2.</source>
     <message>
         <source>Built with Qt %1 (running on Qt %2), Eigen %3 and QCustomPlot %4.</source>
         <translation>基于 Qt %1（运行于 Qt %2）、Eigen %3 和 QCustomPlot %4 构建。</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+S</source>
+        <translation>Ctrl+Shift+S</translation>
+    </message>
+    <message>
+        <source>Open E&amp;xample</source>
+        <translation>打开示例(&amp;X)</translation>
+    </message>
+    <message>
+        <source>Draw Fᵏ(X₀) of the start set X₀ as vectors</source>
+        <translation>以矢量绘制初始集 X₀ 的 Fᵏ(X₀)</translation>
+    </message>
+    <message>
+        <source>untitled</source>
+        <translation>未命名</translation>
+    </message>
+    <message>
+        <source>No examples installed</source>
+        <translation>未安装示例</translation>
+    </message>
+    <message>
+        <source>Open Example</source>
+        <translation>打开示例</translation>
+    </message>
+    <message>
+        <source>Opened the example %1 (a copy: Save As keeps it)</source>
+        <translation>已打开示例 %1（副本：另存为可保留）</translation>
     </message>
 </context>
 <context>
@@ -2978,10 +3014,6 @@ It was kept as %2.</source>
         <translation>%1（缺失）</translation>
     </message>
     <message>
-        <source>%1 matrices %2_i, %3 eigenvalues: see the Spectrum and Matrices panels.</source>
-        <translation>%1 个矩阵 %2_i，%3 个特征值：请查看“谱”和“矩阵”面板。</translation>
-    </message>
-    <message>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -3000,6 +3032,10 @@ It was kept as %2.</source>
     <message>
         <source>Point size</source>
         <translation>点大小</translation>
+    </message>
+    <message>
+        <source>%1 matrices %2_i, %3 eigenvalues, plotted in the centre; click an eigenvalue to mark its map (its matrices in the Matrices dock).</source>
+        <translation>%1 个矩阵 %2_i，%3 个特征值，绘制在中央；点击特征值以标记其映射（其矩阵见矩阵面板）。</translation>
     </message>
 </context>
 <context>
@@ -3249,6 +3285,10 @@ It was kept as %2.</source>
     <message>
         <source>Eigenvalues</source>
         <translation>特征值</translation>
+    </message>
+    <message>
+        <source>%1: λ = %2</source>
+        <translation>%1：λ = %2</translation>
     </message>
 </context>
 <context>
@@ -3579,10 +3619,6 @@ It was kept as %2.</source>
 <context>
     <name>awb::UserGuideDialog</name>
     <message>
-        <source>Attractor Workbench — User Guide</source>
-        <translation>Attractor Workbench — 用户指南</translation>
-    </message>
-    <message>
         <source>&lt;p&gt;The guide is missing.&lt;/p&gt;</source>
         <translation>&lt;p&gt;缺少用户指南。&lt;/p&gt;</translation>
     </message>
@@ -3609,6 +3645,10 @@ It was kept as %2.</source>
     <message>
         <source>Zoom at the cursor (view); scroll (panels)</source>
         <translation>在光标处缩放（视图）；滚动（面板）</translation>
+    </message>
+    <message>
+        <source>User Guide</source>
+        <translation>用户指南</translation>
     </message>
 </context>
 <context>

@@ -19,6 +19,7 @@
 #include <QLabel>
 #include <QTableView>
 #include <QXYSeries>
+#include <QMenu>
 #include <QtTest>
 
 #include "TestTime.h"
@@ -98,14 +99,24 @@ void TestEigenvaluePlotView::fig2PlotFillsTheViews()
     QCOMPARE(w.matrixView()->matrixCount(), 2);
     QCOMPARE(w.matrixView()->table(0)->model()->rowCount(), 5);
     QVERIFY(!w.matrixView()->isEditable());
-    // The centre draws the source's attractor, its handles shown but not draggable.
-    QVERIFY(test::waitForFinalImage(w.attractorView()));
+    // The centre shows the plot itself, large (the source's attractor is its own item's).
+    auto *central = w.findChild<SpectrumView *>(QStringLiteral("eigenvaluePlotView"));
+    QVERIFY(central);
+    QVERIFY(central->isVisible());
+    QVERIFY(!w.attractorView()->isVisible());
+    QTRY_COMPARE(central->plottedEigenvalueCount(), 10);
     QCOMPARE(w.controller()->drawnItem(), w.project()->findItem(curveName));
-    QCOMPARE(w.attractorView()->controlPointCount(), 5);
-    QCOMPARE(w.attractorView()->controlPointAt(
-                 w.attractorView()->worldToScreen(w.attractorView()->controlPointPosition(0))),
-             -1);
     QVERIFY(w.controller()->problem().isEmpty());
+    // S_1 and S_2 share their eigenvalues: a click on one offers both maps.
+    QCoreApplication::processEvents();
+    central->plot()->replot();
+    const QList<int> both = central->mapsAt(central->pixelOf(Complex(0.5, 0)));
+    QCOMPARE(both, (QList<int>{0, 1}));
+    QCOMPARE(central->mapsAt(central->pixelOf(Complex(0.5, 0.9))), QList<int>{});
+    // The source selected again: its attractor is in the centre.
+    w.setCurrentItem(w.project()->findItem(curveName));
+    QVERIFY(test::waitForFinalImage(w.attractorView()));
+    QVERIFY(w.attractorView()->isVisible());
     QVERIFY(shown.messages.errors.isEmpty());
 }
 
@@ -188,10 +199,18 @@ void TestEigenvaluePlotView::markerTooltipsAndClicks()
     auto *g1 = spectrum->plot()->graph(0), *g2 = spectrum->plot()->graph(1);
     QVERIFY(g1->scatterStyle().shape() != g2->scatterStyle().shape());
     QVERIFY(g1->scatterStyle().size() > g2->scatterStyle().size());
-    // A click on a marker (the topmost: S_2's) marks S_2 and M_2 in the Matrices panel and
-    // draws that map's part of the attractor in colour.
+    // A click on coinciding markers offers both maps; choosing S_2 marks S_2 and M_2 in the
+    // Matrices panel and draws that map's part of the attractor in colour.
     QVERIFY(test::waitForFinalImage(w.attractorView()));
     QTest::mouseClick(spectrum->plot(), Qt::LeftButton, {}, half.toPoint());
+    auto *menu = spectrum->findChild<QMenu *>(QStringLiteral("coincidingEigenvalues"));
+    QVERIFY(menu);
+    QCOMPARE(menu->actions().size(), 2);
+    QVERIFY(menu->actions().at(0)->text().startsWith(QStringLiteral("S₁: λ = 1/2")));
+    QVERIFY(menu->actions().at(1)->text().startsWith(QStringLiteral("S₂: λ = 1/2")));
+    QCOMPARE(spectrum->highlightedMap(), -1); // nothing chosen yet
+    menu->actions().at(1)->trigger();
+    menu->close();
     QCOMPARE(spectrum->highlightedMap(), 1);
     QCOMPARE(w.matrixView()->highlightedMap(), 1);
     QVERIFY(!w.matrixView()->isHighlighted(0)); // S_1

@@ -42,8 +42,14 @@ void TestRegularityViews::panelShowsCubicBSpline()
     QVERIFY(panel.isRunning() || done.count() == 1);
     QVERIFY(done.count() == 1 || done.wait(awb::test::ms(20000)));
     QVERIFY2(panel.summary().contains("C²"), qPrintable(panel.summary()));
-    QVERIFY(panel.summary().contains("[3, 3]"));
+    // Bounds equal to rounding are the exponent: "r = 3 (exact)", not "[3, 3] (width 2e-13)".
+    QVERIFY2(panel.summary().contains("r = 3 (exact)"), qPrintable(panel.summary()));
     QVERIFY(panel.method().contains("joint spectral radius"));
+    // The core's ASCII formulas as the papers write them.
+    QVERIFY2(panel.method().contains("log₂ ρₙ") && panel.method().contains("(1 + z)⁴"),
+             qPrintable(panel.method()));
+    QCOMPARE(mathText(QStringLiteral("r = n - log_2 rho_n, (1 + .. + z^2)^3, F^k(X0)")),
+             QStringLiteral("r = n − log₂ ρₙ, (1 + … + z²)³, F^k(X₀)"));
     // The same key again does not restart it.
     panel.analyse(std::make_shared<UniformScheme>(bsplineScheme(3)), 7, QStringLiteral("cubic"));
     QVERIFY(!panel.isRunning());

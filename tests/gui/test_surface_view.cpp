@@ -26,6 +26,7 @@
 #include <QStandardPaths>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QDoubleSpinBox>
 #include <QtTest>
 
 #include "TestTime.h"
@@ -127,6 +128,7 @@ private slots:
     void cameraMovesTheFigure();
     void mainWindowShowsSurfaces();
     void dragIsOneUndoStep();
+    void orbitTurnsTheItemsCamera();
     void mapsOffMakeTheFractal();
     void tableEditsXyz();
     void printsTheSurface();
@@ -507,6 +509,47 @@ static bool glTestCanRun()
         return false;
     }
     return true;
+}
+
+// Orbiting the view sets the item's camera (one undo step): Properties, exports and the CLI
+// look from where the user turned the view; the view keeps its framing.
+void TestSurfaceView::orbitTurnsTheItemsCamera()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    w.resize(1200, 800);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.project()->addItem(loopItem(4));
+    auto *item = qobject_cast<SubdivisionSurfaceItem *>(w.currentItem());
+    QVERIFY(item);
+    SurfaceView *view = w.surfaceView();
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering(), awb::test::ms(10000));
+    const double azimuth = item->camera().azimuth, elevation = item->camera().elevation;
+    const int steps = w.project()->undoStack()->count();
+    // A drag on empty space (a corner of the view) orbits: 100 px right, 25 px down.
+    const QPoint from(8, 8);
+    QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, from);
+    QTest::mouseMove(view, from + QPoint(50, 10));
+    QTest::mouseMove(view, from + QPoint(100, 25));
+    const double halfHeight = view->camera().ortho.halfHeight;
+    QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, from + QPoint(100, 25));
+    QCOMPARE(w.project()->undoStack()->count(), steps + 1);
+    QVERIFY(std::abs(item->camera().azimuth - std::remainder(azimuth - 40.0, 360.0)) < 1e-9);
+    QVERIFY(std::abs(item->camera().elevation - (elevation + 10.0)) < 1e-9);
+    QCOMPARE(view->camera().ortho.azimuth, item->camera().azimuth);
+    QCOMPARE(view->camera().ortho.halfHeight, halfHeight); // the framing is kept
+    // The Properties dock shows it.
+    QCoreApplication::processEvents();
+    auto *field = qobject_cast<QDoubleSpinBox *>(
+        w.propertiesWidget()->editor(QStringLiteral("camera.azimuth")));
+    QVERIFY(field);
+    QCOMPARE(field->value(), item->camera().azimuth);
+    // Undo turns the view back.
+    w.project()->undoStack()->undo();
+    QCOMPARE(item->camera().azimuth, azimuth);
+    QCoreApplication::processEvents();
+    QTRY_COMPARE(view->camera().ortho.azimuth, azimuth);
 }
 
 void TestSurfaceView::glPathUnderXvfb()

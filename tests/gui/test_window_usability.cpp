@@ -16,6 +16,11 @@
 #include "model/SubdivisionCurveItem.h"
 #include "model/SubdivisionSurfaceItem.h"
 
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
@@ -73,6 +78,7 @@ private slots:
     void paletteIsUndoable();
     void userGuideShowsShortcutsAndExamples();
     void damagedRecoveryCopyIsKeptAside();
+    void examplesOutputsAndShortcuts();
 
 private:
     QTemporaryDir m_dir;
@@ -313,6 +319,54 @@ void TestWindowUsability::userGuideShowsShortcutsAndExamples()
     QVERIFY(text.contains(QStringLiteral("000-fig02")));
     QVERIFY(text.contains(QStringLiteral("004-fig3.9")));
     dialog->close();
+    // The desktop adds the application's name: the title does not repeat it.
+    QCOMPARE(dialog->windowTitle(), QStringLiteral("User Guide"));
+}
+
+// File > Open Example lists the papers' figures and opens a copy; outputs are proposed where
+// they can be written, named after the project; Save As has its shortcut everywhere.
+void TestWindowUsability::examplesOutputsAndShortcuts()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_recovery);
+    QCOMPARE(w.action(QStringLiteral("actionSaveAs"))->shortcut(),
+             QKeySequence(QStringLiteral("Ctrl+Shift+S")));
+    const QString examples = MainWindow::examplesDirectory();
+    QVERIFY(QFileInfo::exists(examples + QStringLiteral("/000-fig02-cubic-bspline-from-point.awb")));
+    auto *menu = w.findChild<QMenu *>(QStringLiteral("menuExamples"));
+    QVERIFY(menu);
+    QMetaObject::invokeMethod(menu, "aboutToShow");
+    QVERIFY2(menu->actions().size() >= 30, qPrintable(QString::number(menu->actions().size())));
+    bool found = false;
+    for (QAction *a : menu->actions())
+        found = found || a->text().startsWith(QStringLiteral("000 Fig. 2: cubic B-spline"));
+    QVERIFY(found);
+    // An example opens as a copy: no file name, not modified; saving asks where.
+    QVERIFY(w.openExample(examples + QStringLiteral("/000-fig11-sierpinski-with-control-points.awb")));
+    QCOMPARE(w.project()->fileName(), QString());
+    QVERIFY(!w.project()->isModified());
+    QVERIFY(w.project()->childCount() >= 2);
+    // Outputs of a project without a file go to the documents, named after the item.
+    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    const QString pdf = w.outputPath(QStringLiteral("pdf"));
+    QVERIFY2(pdf.startsWith(documents) && pdf.endsWith(QStringLiteral(".pdf")), qPrintable(pdf));
+    QVERIFY2(pdf.contains(QStringLiteral("Sierpinski")), qPrintable(pdf));
+    // A project in a folder that cannot be written to (an installed example): the same.
+    QTemporaryDir dir;
+    const QString readOnly = dir.filePath(QStringLiteral("ro"));
+    QVERIFY(QDir().mkpath(readOnly));
+    const QString copy = readOnly + QStringLiteral("/fig11.awb");
+    QVERIFY(QFile::copy(examples + QStringLiteral("/000-fig11-sierpinski-with-control-points.awb"), copy));
+    QVERIFY(w.openFile(copy));
+    QVERIFY(QFile::setPermissions(readOnly, QFileDevice::ReadOwner | QFileDevice::ExeOwner));
+    if (!QFileInfo(readOnly).isWritable()) // root writes anywhere: nothing to test then
+        QVERIFY2(w.outputPath(QStringLiteral("png")).startsWith(documents),
+                 qPrintable(w.outputPath(QStringLiteral("png"))));
+    QFile::setPermissions(readOnly, QFileDevice::ReadOwner | QFileDevice::WriteOwner
+                                        | QFileDevice::ExeOwner);
+    // A writable project folder: beside the project, "<project>-<item>.png".
+    const QString png = w.outputPath(QStringLiteral("png"));
+    QVERIFY2(png.startsWith(readOnly + QStringLiteral("/fig11-")), qPrintable(png));
 }
 
 // A crashed session left a recovery copy that is itself damaged: the next start offers it,

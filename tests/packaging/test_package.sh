@@ -112,6 +112,9 @@ mime_log=$(XDG_DATA_DIRS=$tmp update-mime-database "$tmp/mime" 2>&1) \
     || fail "update-mime-database: $mime_log"
 [ -z "$mime_log" ] || fail "update-mime-database: $mime_log"
 grep -qxF 'application/x-attractor-workbench:*.awb' "$tmp/mime/globs" || fail "no *.awb glob"
+# Heavier than AMR-WB audio's *.awb (50): choosers that go by the name alone say ours.
+grep -qxF '60:application/x-attractor-workbench:*.awb' "$tmp/mime/globs2" \
+    || fail "the *.awb glob does not weigh 60: $(grep awb "$tmp/mime/globs2")"
 grep -qxF 'application/x-attractor-workbench application/json' "$tmp/mime/subclasses" \
     || fail "not a sub-class of application/json"
 grep -qa 'application/x-attractor-workbench' "$tmp/mime/magic" || fail "no magic"

@@ -1,5 +1,7 @@
 #include "gui/app/FigureSheet.h"
 
+#include "gui/views/MatrixHeatMap.h"
+
 #include "render/FigureFile.h"
 
 #include "gui/app/ItemController.h"
@@ -56,7 +58,8 @@ void paintSpectrum(SpectrumView *view, QPainter *painter, const QRectF &target)
     // Record the plot at a pixel size like the screen's so fonts and markers keep their
     // proportions, then scale the recording into the target.
     const double aspect = target.width() / target.height();
-    const int h = 420, w = std::max(200, int(h * aspect));
+    // 320 pixels high: the legend's and the labels' text stays legible on paper.
+    const int h = 320, w = std::max(200, int(h * aspect));
     QPicture picture;
     {
         QCPPainter recorder(&picture);
@@ -107,9 +110,9 @@ QStringList FigureSheet::caption() const
     return lines;
 }
 
-QList<QStringList> FigureSheet::matrixBlocks() const
+QList<FigureSheet::MatrixBlock> FigureSheet::matrixBlocks() const
 {
-    QList<QStringList> blocks;
+    QList<MatrixBlock> blocks;
     const auto *a = qobject_cast<const AttractorItem *>(m_item);
     const auto d = a ? a->derivedIfs() : nullptr;
     if (!d)
@@ -117,10 +120,12 @@ QList<QStringList> FigureSheet::matrixBlocks() const
     // The matrix view's matrices, as text with right-aligned columns: fractions where exact
     // (3/8 reads better than 0.375), complex entries as a + bi. One block per matrix.
     for (const NamedMatrix &m : namedMatrices(*d)) {
-        // A surface's S_i (16 x 16 and up) would shrink the page's text to dust: name them.
-        if (m.rows() > 12) {
-            blocks << QStringList{tr("%1: %2 × %3 (see the Matrices dock)")
-                                      .arg(subscriptName(m.name)).arg(m.rows()).arg(m.cols())};
+        // A surface's S_i (16 x 16 and up) as text would shrink the page's text to dust: as a
+        // heat map of its entries, as the Matrices dock shows them above their tables.
+        if (m.rows() > 12 && !m.isComplex()) {
+            blocks << MatrixBlock{{tr("%1 (%2 × %3):").arg(subscriptName(m.name)).arg(m.rows())
+                                       .arg(m.cols())},
+                                  m.values};
             continue;
         }
         QList<QStringList> cells;
@@ -142,7 +147,7 @@ QList<QStringList> FigureSheet::matrixBlocks() const
                 line += t.rightJustified(width + 2);
             block << line;
         }
-        blocks << block;
+        blocks << MatrixBlock{block, {}};
     }
     return blocks;
 }
@@ -233,11 +238,17 @@ FigureSheet::MatrixLayout FigureSheet::layoutMatrices(QPainter *painter, const Q
         layout.font = mono;
         layout.at.clear();
         double x = box.left(), y = box.top(), columnWidth = 0;
-        for (const QStringList &block : std::as_const(layout.blocks)) {
+        // A heat map's cell: half a line high (19 x 19 cells are 9.5 lines square).
+        const double cell = 0.5 * line;
+        for (const MatrixBlock &block : std::as_const(layout.blocks)) {
             double w = 0;
-            for (const QString &l : block)
+            for (const QString &l : block.lines)
                 w = std::max(w, fm.horizontalAdvance(l));
-            const double h = line * block.size();
+            double h = line * block.lines.size();
+            if (block.heat.size() > 0) {
+                w = std::max(w, cell * double(block.heat.cols()));
+                h += cell * double(block.heat.rows());
+            }
             // A line stays free at the bottom for the note on matrices left out.
             if (y > box.top() && y + h > box.bottom() - line) {
                 x += columnWidth + gap;   // next column
@@ -266,10 +277,27 @@ void FigureSheet::paintMatrices(QPainter *painter, const MatrixLayout &layout) c
     const QFontMetricsF fm(layout.font, painter->device());
     const QRectF &box = layout.box;
     for (int i = 0; i < layout.shown; ++i) {
-        const QStringList &lines = layout.blocks[i];
+        const MatrixBlock &block = layout.blocks[i];
         const QPointF at = layout.at[i];
-        painter->drawText(QRectF(at, QSizeF(box.right() - at.x(), fm.lineSpacing() * lines.size())),
-                          Qt::AlignLeft | Qt::AlignTop, lines.join(QLatin1Char('\n')));
+        const double textHeight = fm.lineSpacing() * block.lines.size();
+        painter->drawText(QRectF(at, QSizeF(box.right() - at.x(), textHeight)),
+                          Qt::AlignLeft | Qt::AlignTop, block.lines.join(QLatin1Char('\n')));
+        if (block.heat.size() > 0) {
+            // The colour of each entry on the Matrices dock's scale, a hairline frame.
+            const double cell = 0.5 * fm.lineSpacing();
+            const double largest = std::max(1e-300, block.heat.cwiseAbs().maxCoeff());
+            const QPointF origin = at + QPointF(0, textHeight);
+            for (Eigen::Index r = 0; r < block.heat.rows(); ++r)
+                for (Eigen::Index c = 0; c < block.heat.cols(); ++c)
+                    painter->fillRect(QRectF(origin.x() + double(c) * cell,
+                                             origin.y() + double(r) * cell, cell, cell),
+                                      MatrixHeatMap::colour(block.heat(r, c), largest));
+            painter->save();
+            painter->setPen(QPen(QColor(160, 160, 160), 0));
+            painter->drawRect(QRectF(origin, QSizeF(cell * double(block.heat.cols()),
+                                                    cell * double(block.heat.rows()))));
+            painter->restore();
+        }
     }
     if (layout.shown < layout.blocks.size()) {
         const QString note = tr("… and %n more: see the Matrices dock, or copy them as LaTeX.",

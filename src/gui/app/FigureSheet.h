@@ -4,6 +4,8 @@
 // It paints on any QPainter (printer, print preview, PDF writer, SVG), keeping vector content
 // vector: the attractor's overlays come from AttractorView::renderTo, the spectrum plot is
 // recorded as a QPicture of QCustomPlot's own drawing, and the matrices are text.
+#include "core/Types.h"
+
 #include <QCoreApplication>
 #include <QFont>
 #include <QList>
@@ -48,13 +50,19 @@ public:
     int matricesShown() const { return m_matricesShown; }
 
 private:
-    QList<QStringList> matrixBlocks() const;   // one block of text lines per matrix
+    // One block per matrix: its text lines, or for a large one (a surface's 19 x 19 S_i) a
+    // title line and the matrix drawn as a heat map of its entries.
+    struct MatrixBlock {
+        QStringList lines;
+        Mat heat;
+    };
+    QList<MatrixBlock> matrixBlocks() const;
     // Where the matrices go in `box`: blocks placed in columns at the largest font that fits,
     // not below 8 pt; `shown` of them fit.
     struct MatrixLayout {
         QRectF box;
         QFont font;
-        QList<QStringList> blocks;
+        QList<MatrixBlock> blocks;
         QList<QPointF> at;
         int shown = 0;
     };

@@ -375,9 +375,16 @@ void ItemController::showCharts()
     }
     m_charts->setModuli(moduli);
     updateRegularity();
-    // The distances and dimensions of a curve (the slow part) wait until edits pause.
-    if (drawnDerived() && !showsSurface())
+    // The distances and dimensions of a curve (the slow part) wait until edits pause. A
+    // surface has no exact curve to measure against: its charts say so, not the last curve's.
+    if (drawnDerived() && !showsSurface()) {
         m_analysisTimer.start();
+    } else {
+        cancelAnalysis();
+        m_charts->setDistances({});
+        m_charts->setPolygonLengths({});
+        m_charts->setBoxCounting(BoxDimension{});
+    }
 }
 
 void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
@@ -472,8 +479,20 @@ void ItemController::refreshNow()
     m_budget->flush();
 }
 
+void ItemController::setPlotView(SpectrumView *view)
+{
+    m_plotView = view;
+    m_plotPanel = m_budget->addPanel(view, [this] {
+        m_plotView->setMaps(qobject_cast<const EigenvaluePlotItem *>(m_item.data())
+                                ? currentSpectra()
+                                : QList<MapSpectrum>{});
+    });
+    markPanelsDirty();
+}
+
 void ItemController::markPanelsDirty()
 {
+    m_budget->markDirty(m_plotPanel);
     m_budget->markDirty(m_matricesPanel);
     m_budget->markDirty(m_spectrumPanel);
     m_budget->markDirty(m_chartsPanel);
@@ -662,9 +681,10 @@ void ItemController::startAnalysis()
     // at O(y^2) instead of going to 0).
     const auto exactCurve = exactCurveOf(item, exactSamples);
     const Mat exact = exactCurve ? exactCurve->points : Mat();
-    const QString seriesName = exactCurve
-                                   ? tr("F^k(X0) to the %1").arg(exactCurve->label)
-                                   : tr("F^k(X0)");
+    // The legend says Fᵏ(X₀); what it is measured against goes to the chart's tooltip.
+    const QString seriesName = tr("Fᵏ(X₀)");
+    m_charts->setDistanceReference(exactCurve ? tr("Fᵏ(X₀) to the %1").arg(exactCurve->label)
+                                              : QString());
     m_worker = std::thread([this, d, start, scheme, P, exact, maxDepth, ticket, seriesName] {
         auto result = std::make_shared<AnalysisResult>();
         try {

@@ -68,6 +68,8 @@ public:
     void setPalette(const QList<QColor> &palette) { m_palette = palette; refreshNow(); }
     // Classic subdivision polygons beside the IFS: how many steps (0 hides them).
     void setSubdivisionSteps(int steps);
+    // The central view of an eigenvalue plot item: its eigenvalues in the complex plane, large.
+    void setPlotView(SpectrumView *view);
     // The panel that shows the current curve scheme's certified regularity (issue 16).
     void setRegularityPanel(RegularityPanel *panel);
     int subdivisionSteps() const { return m_subdivisionSteps; }
@@ -158,7 +160,8 @@ private:
     QTimer m_refreshTimer;
     QTimer m_analysisTimer;
     FrameBudget *m_budget;
-    int m_matricesPanel = -1, m_spectrumPanel = -1, m_chartsPanel = -1;
+    int m_matricesPanel = -1, m_spectrumPanel = -1, m_chartsPanel = -1, m_plotPanel = -1;
+    SpectrumView *m_plotView = nullptr;
     QPointer<Project> m_gestureProject;
     int m_gesture = 0;
     int m_maxDepth = 0;

@@ -93,17 +93,6 @@ static void initResources()
 
 namespace awb {
 
-namespace {
-
-constexpr int maxRecentFiles = 8;
-
-QString fileFilter()
-{
-    return MainWindow::tr("Attractor Workbench projects (*.awb);;All files (*)");
-}
-
-} // namespace
-
 MainWindow::MainWindow(Messages *messages, const QString &recoveryDirectory, QWidget *parent)
     : QMainWindow(parent), m_messages(messages), m_project(std::make_unique<Project>()),
       m_recoveryDirectory(recoveryDirectory.isEmpty() ? Recovery::defaultDirectory()
@@ -208,6 +197,10 @@ void MainWindow::createViews()
     m_central = new QStackedWidget;
     m_central->addWidget(m_attractor);
     m_central->addWidget(m_surface);
+    // An eigenvalue plot item shows its plot in the centre (its source has its own item).
+    m_plotView = new SpectrumView;
+    m_plotView->setObjectName(QStringLiteral("eigenvaluePlotView"));
+    m_central->addWidget(m_plotView);
     setCentralWidget(m_central);
     m_matrices = new MatrixView;
     m_spectrum = new SpectrumView;
@@ -242,6 +235,7 @@ void MainWindow::createViews()
     m_controller = new ItemController(m_attractor, m_matrices, m_spectrum, m_charts, m_budget,
                                       this);
     m_controller->setSurfaceView(m_surface);
+    m_controller->setPlotView(m_plotView);
     // The scheme's certified regularity sits under the Analysis dock's charts (issue 16).
     auto *regularity = new RegularityPanel;
     m_charts->layout()->addWidget(regularity);
@@ -354,10 +348,13 @@ void MainWindow::createViews()
             updateCentralView();
     });
     // A click on an eigenvalue marker marks that map's matrices and its part of the attractor.
-    connect(m_spectrum, &SpectrumView::mapClicked, this, [this](int map) {
-        m_matrices->setHighlightedMap(map);
-        m_controller->setHighlightedMap(map);
-    });
+    for (SpectrumView *plot : {m_spectrum, m_plotView})
+        connect(plot, &SpectrumView::mapClicked, this, [this](int map) {
+            m_matrices->setHighlightedMap(map);
+            m_spectrum->setHighlightedMap(map);
+            m_plotView->setHighlightedMap(map);
+            m_controller->setHighlightedMap(map);
+        });
     connect(m_controller, &ItemController::analysisStarted, this, [this] {
         m_progress->setValue(0);
         m_progress->setFormat(tr("Analysis %p%"));
@@ -415,7 +412,8 @@ void MainWindow::createActions()
     make(QStringLiteral("actionSave"), tr("&Save"), QStringLiteral("document-save"),
          QKeySequence::Save, &MainWindow::save);
     make(QStringLiteral("actionSaveAs"), tr("Save &As…"), QStringLiteral("document-save-as"),
-         QKeySequence::SaveAs, &MainWindow::saveAs);
+         // QKeySequence::SaveAs has no binding on some desktops (GNOME, none): say it.
+         QKeySequence(tr("Ctrl+Shift+S")), &MainWindow::saveAs);
     make(QStringLiteral("actionRevert"), tr("Re&vert"), QStringLiteral("document-revert"),
          QKeySequence(), &MainWindow::revert);
     make(QStringLiteral("actionClose"), tr("&Close"), QStringLiteral("document-close"),
@@ -428,7 +426,8 @@ void MainWindow::createActions()
     make(QStringLiteral("actionPrintPdf"), tr("Print to P&DF…"), QStringLiteral("document-export"),
          QKeySequence(), [this] {
              const QString name = QFileDialog::getSaveFileName(
-                 this, tr("Print to PDF"), QString(), tr("PDF document (*.pdf)"));
+                 this, tr("Print to PDF"), outputPath(QStringLiteral("pdf")),
+                 tr("PDF document (*.pdf)"));
              QString error;
              if (!name.isEmpty() && !printToPdf(name, &error))
                  m_messages->error(this, tr("Print to PDF"), error);
@@ -629,6 +628,10 @@ void MainWindow::createMenus()
     file->addAction(action(QStringLiteral("actionNew")));
     file->addAction(action(QStringLiteral("actionOpen")));
     m_recentMenu = file->addMenu(tr("Open &Recent"));
+    // The papers' figures, one project each: a copy opens (saving asks where).
+    m_examplesMenu = file->addMenu(tr("Open E&xample"));
+    m_examplesMenu->setObjectName(QStringLiteral("menuExamples"));
+    connect(m_examplesMenu, &QMenu::aboutToShow, this, &MainWindow::fillExamplesMenu);
     file->addAction(action(QStringLiteral("actionSave")));
     file->addAction(action(QStringLiteral("actionSaveAs")));
     file->addAction(action(QStringLiteral("actionRevert")));
@@ -725,7 +728,7 @@ void MainWindow::createMenus()
     m_hutchStep->setRange(-1, 20);
     m_hutchStep->setValue(-1);
     m_hutchStep->setSpecialValueText(tr("off"));
-    m_hutchStep->setToolTip(tr("Draw F^k(X0) of the start set X0 as vectors"));
+    m_hutchStep->setToolTip(tr("Draw Fᵏ(X₀) of the start set X₀ as vectors"));
     connect(m_hutchStep, &QSpinBox::valueChanged, m_attractor, &AttractorView::setHutchinsonStep);
     bar->addWidget(m_hutchStep);
     bar->addWidget(new QLabel(tr("  Subdivision steps: ")));
@@ -788,357 +791,6 @@ void MainWindow::updateActions()
         ->setEnabled(!m_project->fileName().isEmpty() && m_project->isModified());
     for (const char *name : {"actionPrint", "actionPrintPreview", "actionPrintPdf"})
         action(QString::fromLatin1(name))->setEnabled(hasItem);
-}
-
-void MainWindow::newProject()
-{
-    m_project->clear();
-    auto curve = std::make_unique<SubdivisionCurveItem>();
-    curve->setName(tr("Cubic B-spline"));
-    curve->moveControlPoints({{0, {0, 0}}, {1, {1, 2}}, {2, {3, 2.5}}, {3, {4.5, 1}}});
-    curve->insertControlPoint(4, {6, 2});
-    AlgorithmSpec a = curve->algorithm();
-    a.depth = m_preferences.defaultDepth;
-    if (!curve->checkAlgorithm(a))
-        curve->setAlgorithm(a);
-    StartSetSpec s;
-    s.kind = StartSetSpec::Kind::Triangle;
-    s.points = {{2, -0.5}, {4, -0.5}, {3, 0.5}};
-    curve->setStartSet(s);
-    m_project->addItem(std::move(curve));
-    // Building the first item is not an edit the user made.
-    m_project->undoStack()->clear();
-    m_project->undoStack()->setClean();
-    updateTitle();
-    selectFirstItem();
-}
-
-bool MainWindow::openFile(const QString &fileName)
-{
-    QString error;
-    if (!m_project->open(fileName, &error)) {
-        m_messages->error(this, tr("Open Project"), error);
-        return false;
-    }
-    addRecentFile(QFileInfo(fileName).absoluteFilePath());
-    updateTitle();
-    selectFirstItem();
-    statusBar()->showMessage(tr("Opened %1").arg(QFileInfo(fileName).fileName()), 4000);
-    return true;
-}
-
-bool MainWindow::saveFile(const QString &fileName)
-{
-    QString error;
-    if (!m_project->saveAs(fileName, &error)) {
-        m_messages->error(this, tr("Save Project"), error);
-        return false;
-    }
-    addRecentFile(QFileInfo(fileName).absoluteFilePath());
-    updateTitle();
-    statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(fileName).fileName()), 4000);
-    return true;
-}
-
-bool MainWindow::maybeSave()
-{
-    if (!m_project->isModified())
-        return true;
-    const auto answer = m_messages->question(
-        this, tr("Unsaved Changes"),
-        tr("The project \"%1\" has unsaved changes. Save them?")
-            .arg(m_project->fileName().isEmpty() ? tr("Untitled")
-                                                 : QFileInfo(m_project->fileName()).fileName()),
-        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
-    if (answer == QMessageBox::Save)
-        return save();
-    return answer == QMessageBox::Discard;
-}
-
-void MainWindow::openDialog()
-{
-    if (!maybeSave())
-        return;
-    const QString name = QFileDialog::getOpenFileName(
-        this, tr("Open Project"), QFileInfo(m_project->fileName()).path(),
-        tr("Projects and figures with their item (*.awb *.png);;Attractor Workbench projects "
-           "(*.awb);;Exported figures (*.png);;All files (*)"));
-    if (!name.isEmpty())
-        openFile(name);
-}
-
-bool MainWindow::save()
-{
-    if (m_project->fileName().isEmpty())
-        return saveAs();
-    return saveFile(m_project->fileName());
-}
-
-bool MainWindow::saveAs()
-{
-    QString name = QFileDialog::getSaveFileName(this, tr("Save Project As"),
-                                                m_project->fileName(), fileFilter());
-    if (name.isEmpty())
-        return false;
-    if (QFileInfo(name).suffix().isEmpty())
-        name += QStringLiteral(".awb");
-    return saveFile(name);
-}
-
-void MainWindow::revert()
-{
-    const QString file = m_project->fileName();
-    if (file.isEmpty())
-        return;
-    const auto answer = m_messages->question(
-        this, tr("Revert"), tr("Discard all changes and reload %1?").arg(QFileInfo(file).fileName()),
-        QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel);
-    if (answer == QMessageBox::Discard)
-        openFile(file);
-}
-
-void MainWindow::closeProject()
-{
-    if (maybeSave())
-        newProject();
-}
-
-void MainWindow::endExportProgress()
-{
-    delete m_exportProgress;
-    m_exportProgress = nullptr;
-}
-
-void MainWindow::print()
-{
-    QPrinter printer(QPrinter::HighResolution);
-    printer.setPageOrientation(QPageLayout::Landscape);
-    QPrintDialog dialog(&printer, this);
-    if (dialog.exec() != QDialog::Accepted)
-        return;
-    FigureSheet sheet(m_current, m_attractor, m_spectrum, m_surface);
-    const bool ok = sheet.print(&printer);
-    endExportProgress();
-    if (sheet.cancelled())
-        statusBar()->showMessage(tr("Printing cancelled."), 4000);
-    else if (!ok)
-        m_messages->error(this, tr("Print"), tr("The printer could not be started."));
-}
-
-void MainWindow::printPreview()
-{
-    QPrinter printer(QPrinter::HighResolution);
-    printer.setPageOrientation(QPageLayout::Landscape);
-    QPrintPreviewDialog preview(&printer, this);
-    preview.resize(1100, 800);
-    connect(&preview, &QPrintPreviewDialog::paintRequested, this, [this](QPrinter *p) {
-        FigureSheet(m_current, m_attractor, m_spectrum, m_surface).print(p);
-        endExportProgress();
-    });
-    preview.exec();
-}
-
-bool MainWindow::printToPdf(const QString &fileName, QString *error)
-{
-    const bool ok = FigureSheet(m_current, m_attractor, m_spectrum, m_surface)
-                        .writePdf(fileName, error);
-    endExportProgress();
-    return ok;
-}
-
-bool MainWindow::exportView(const ExportDialog::Options &options, QString *error)
-{
-    ExportDialog::Options o = options;
-    const QString suffix = QFileInfo(o.fileName).suffix().toLower();
-    AttractorView::ExportStyle style;
-    style.grid = o.grid;
-    style.handles = o.handles;
-    style.fontFamily = o.fontFamily;
-    style.fontPoints = o.fontPoints;
-    const bool planar = o.target == ExportDialog::Target::Attractor
-                        && !m_controller->showsSurface();
-    if (o.crop && planar) {
-        // Tight framing: the content fills the width, the height follows its proportions,
-        // with a margin of a few screen pixels at the figure's scale.
-        style.framing = AttractorView::Framing::FitContents;
-        style.margin = 6;
-        if (const auto bounds = m_attractor->exportBounds()) {
-            const double margin = 6.0 * o.size.width() / std::max(1, m_attractor->width());
-            const double inner = std::max(1.0, o.size.width() - 2 * margin);
-            const double h = inner * bounds->height() / bounds->width() + 2 * margin;
-            o.size.setHeight(std::clamp(int(std::lround(h)), 16, 20000));
-        }
-    }
-    if (suffix == QLatin1String("tex")) {
-        // The matrices as LaTeX (the other views are pictures).
-        if (o.target != ExportDialog::Target::Matrices) {
-            if (error)
-                *error = tr("A .tex file holds the matrices only: choose the Matrices view, or "
-                            ".png, .svg or .pdf for a picture.");
-            return false;
-        }
-        const QString text = matricesLatex();
-        if (text.isEmpty()) {
-            if (error)
-                *error = tr("The current item has no matrices to export.");
-            return false;
-        }
-        QString reason;
-        if (!writeWholeFile(o.fileName, text.toUtf8(), &reason)) {
-            if (error)
-                *error = tr("Cannot write %1: %2.").arg(o.fileName, reason);
-            return false;
-        }
-        return true;
-    }
-    const QRectF target(0, 0, o.size.width(), o.size.height());
-    const auto paint = [this, &o, &target, &style](QPainter &p) {
-        switch (o.target) {
-        case ExportDialog::Target::Attractor:
-            if (m_controller->showsSurface())
-                m_surface->renderTo(&p, target);
-            else
-                m_attractor->renderTo(&p, target, style);
-            break;
-        case ExportDialog::Target::Spectrum:
-            paintSpectrum(m_spectrum, &p, target);
-            break;
-        case ExportDialog::Target::Matrices: {
-            const QSize s = m_matrices->size();
-            const double k = std::min(target.width() / std::max(1, s.width()),
-                                      target.height() / std::max(1, s.height()));
-            p.scale(k, k);
-            m_matrices->render(&p, QPoint(), QRegion(), QWidget::DrawChildren);
-            break;
-        }
-        case ExportDialog::Target::Analysis: {
-            // Lay the chart out at the export size (in points at the chosen resolution) so
-            // that titles and axes get the room they have in the figure, not in the dock.
-            auto *view = m_charts->chartView(AnalysisCharts::Tab(m_charts->tabs()->currentIndex()));
-            const QSize old = view->size();
-            const double k = std::max(1.0, o.dpi / 96.0);
-            const QSize laidOut = (QSizeF(target.size()) / k).toSize();
-            view->resize(laidOut);
-            view->chart()->resize(laidOut);
-            view->setSceneRect(QRectF(QPointF(0, 0), laidOut));
-            view->render(&p, target, QRect(QPoint(0, 0), laidOut), Qt::IgnoreAspectRatio);
-            view->resize(old);
-            view->chart()->resize(old);
-            view->setSceneRect(QRectF(QPointF(0, 0), old));
-            break;
-        }
-        case ExportDialog::Target::FigureSheet:
-            FigureSheet(m_current, m_attractor, m_spectrum, m_surface).paint(&p, target);
-            break;
-        }
-    };
-    if (suffix != QLatin1String("png") && suffix != QLatin1String("svg")
-        && suffix != QLatin1String("pdf")) {
-        if (error)
-            *error = tr("Unknown format \"%1\": use .png, .svg or .pdf (.tex for the matrices).").arg(suffix);
-        return false;
-    }
-    const bool attractorShown = o.target == ExportDialog::Target::Attractor
-                                || o.target == ExportDialog::Target::FigureSheet;
-    const auto cancelled = [&] { return attractorShown && m_attractor->exportCancelled(); };
-    // Written whole or not at all (render/FigureFile.h): a cancelled or failed export leaves
-    // an existing file as it was.
-    QString writeError;
-    const bool ok = writeFigureFile(o.fileName, [&](QIODevice &out, QString *) {
-        if (suffix == QLatin1String("png")) {
-            QImage image(o.size, QImage::Format_ARGB32_Premultiplied);
-            image.fill(Qt::white);
-            const int dpm = int(std::lround(o.dpi / 0.0254));
-            image.setDotsPerMeterX(dpm);
-            image.setDotsPerMeterY(dpm);
-            {
-                QPainter p(&image);
-                p.setRenderHint(QPainter::Antialiasing);
-                paint(p);
-            }
-            addPngText(image, figureMetadata());
-            return !cancelled() && writePng(image, out);
-        }
-        if (suffix == QLatin1String("svg")) {
-            QByteArray bytes;
-            {
-                QBuffer buffer(&bytes);
-                QSvgGenerator svg;
-                svg.setOutputDevice(&buffer);
-                svg.setSize(o.size);
-                svg.setViewBox(target);
-                svg.setResolution(o.dpi);
-                svg.setTitle(m_current ? m_current->name() : QString());
-                QPainter p;
-                if (!p.begin(&svg))
-                    return false;
-                paint(p);
-                if (!p.end())
-                    return false;
-            }
-            return !cancelled() && addSvgMetadata(bytes, figureMetadata())
-                   && out.write(bytes) == bytes.size();
-        }
-        QPdfWriter pdf(&out);
-        pdf.setResolution(o.dpi);
-        pdf.setPageLayout(QPageLayout(
-            QPageSize(QSizeF(o.size.width() * 72.0 / o.dpi, o.size.height() * 72.0 / o.dpi),
-                      QPageSize::Point),
-            QPageLayout::Portrait, QMarginsF()));
-        QPainter p;
-        if (!p.begin(&pdf))
-            return false;
-        p.setRenderHint(QPainter::LosslessImageRendering); // rasters not as JPEG
-        paint(p);
-        return p.end() && !cancelled();
-    }, &writeError);
-    endExportProgress();
-    if (cancelled()) {
-        // No figure without its attractor (nothing was written).
-        if (error)
-            *error = tr("Exporting %1 was cancelled while the attractor was drawn.")
-                         .arg(QFileInfo(o.fileName).fileName());
-        return false;
-    }
-    if (!ok && error)
-        *error = writeError;
-    return ok;
-}
-
-FigureMetadata MainWindow::figureMetadata() const
-{
-    // The current item's project: the PNG or SVG reopens as this item (File > Open).
-    if (!m_current)
-        return {};
-    const QByteArray bytes = figureProjectBytes(*m_project, *m_current);
-    return {figurePngTexts(bytes), svgMetadataElement(bytes)};
-}
-
-QString MainWindow::matricesLatex() const
-{
-    const QList<NamedMatrix> list = m_matrices->matrices();
-    if (list.isEmpty())
-        return {};
-    return latexMatrices(list, m_current ? m_current->name() : QString());
-}
-
-void MainWindow::exportDialog()
-{
-    ExportDialog::Options initial;
-    initial.fileName = m_lastExport.isEmpty()
-                           ? QFileInfo(m_project->fileName()).path() + QStringLiteral("/figure.png")
-                           : m_lastExport;
-    initial.size = m_central->size() * 2;
-    ExportDialog dialog(initial, this);
-    if (dialog.exec() != QDialog::Accepted)
-        return;
-    const ExportDialog::Options o = dialog.options();
-    QString error;
-    if (!exportView(o, &error))
-        m_messages->error(this, tr("Export"), error);
-    else
-        statusBar()->showMessage(tr("Exported %1").arg(o.fileName), 4000);
-    m_lastExport = o.fileName;
 }
 
 void MainWindow::preferencesDialog()
@@ -1303,73 +955,6 @@ void MainWindow::resetLayout()
         d->show();
 }
 
-void MainWindow::addRecentFile(const QString &fileName)
-{
-    QSettings settings;
-    QStringList files = settings.value(QStringLiteral("recentFiles")).toStringList();
-    files.removeAll(fileName);
-    files.prepend(fileName);
-    while (files.size() > maxRecentFiles)
-        files.removeLast();
-    settings.setValue(QStringLiteral("recentFiles"), files);
-    updateRecentMenu();
-}
-
-void MainWindow::updateRecentMenu()
-{
-    if (!m_recentMenu)
-        return;
-    m_recentMenu->clear();
-    const QStringList files = QSettings().value(QStringLiteral("recentFiles")).toStringList();
-    for (int i = 0; i < files.size(); ++i) {
-        QAction *a = m_recentMenu->addAction(
-            tr("&%1 %2").arg(i + 1).arg(QFileInfo(files[i]).fileName()));
-        a->setToolTip(files[i]);
-        const QString file = files[i];
-        connect(a, &QAction::triggered, this, [this, file] {
-            if (maybeSave())
-                openFile(file);
-        });
-    }
-    m_recentMenu->setEnabled(!files.isEmpty());
-}
-
-bool MainWindow::offerRecovery()
-{
-    const QList<RecoveryFile> files = Recovery::orphans(m_recoveryDirectory);
-    for (const RecoveryFile &f : files) {
-        const QString what = f.originalFile.isEmpty() ? tr("an unsaved project")
-                                                      : QFileInfo(f.originalFile).fileName();
-        const auto answer = m_messages->question(
-            this, tr("Recover Project"),
-            tr("Attractor Workbench did not shut down properly. A recovery copy of %1 from %2 "
-               "exists. Recover it? (Discard deletes the copy.)")
-                .arg(what, QLocale().toString(f.savedAt.toLocalTime(), QLocale::ShortFormat)),
-            QMessageBox::Yes | QMessageBox::Discard | QMessageBox::Ignore, QMessageBox::Yes);
-        if (answer == QMessageBox::Discard) {
-            Recovery::discard(f);
-        } else if (answer == QMessageBox::Yes) {
-            QString error;
-            if (!Recovery::recover(f, m_project.get(), &error)) {
-                // Never deleted: set aside, out of the next start's way.
-                const QString kept = Recovery::setAside(f);
-                m_messages->error(
-                    this, tr("Recover Project"),
-                    kept.isEmpty()
-                        ? tr("The recovery copy cannot be read: %1").arg(error)
-                        : tr("The recovery copy cannot be read: %1\n\nIt was kept as %2.")
-                              .arg(error, QDir::toNativeSeparators(kept)));
-                continue;
-            }
-            Recovery::discard(f);
-            updateTitle();
-            selectFirstItem();
-            return true;
-        }
-    }
-    return false;
-}
-
 void MainWindow::closeEvent(QCloseEvent *event)
 {
     if (!maybeSave()) {
@@ -1388,8 +973,10 @@ namespace awb {
 
 void MainWindow::updateCentralView()
 {
-    QWidget *view = m_controller->showsSurface() ? static_cast<QWidget *>(m_surface)
-                                                 : m_attractor;
+    QWidget *view = qobject_cast<EigenvaluePlotItem *>(m_current)
+                        ? static_cast<QWidget *>(m_plotView)
+                    : m_controller->showsSurface() ? static_cast<QWidget *>(m_surface)
+                                                   : m_attractor;
     if (m_central->currentWidget() != view)
         m_central->setCurrentWidget(view);
 }
@@ -1468,59 +1055,6 @@ void MainWindow::shareWidthWithDocks()
             widths << std::max(d->minimumSizeHint().width(), int(d->width() * scale));
         }
     resizeDocks(list, widths, Qt::Horizontal);
-}
-
-void MainWindow::exportPointsDialog()
-{
-    AttractorItem *item = m_controller->drawnItem();
-    if (!item) {
-        m_messages->error(this, tr("Export Points"),
-                          tr("The current item has no attractor whose points could be "
-                             "exported."));
-        return;
-    }
-    QString name = m_lastPointExport;
-    const QString suffix = item->pointDimension() == 3 ? QStringLiteral("ply")
-                                                       : QStringLiteral("csv");
-    if (name.isEmpty()) {
-        const QString dir = m_project->fileName().isEmpty()
-                                ? QDir::homePath()
-                                : QFileInfo(m_project->fileName()).path();
-        QString base = item->name();
-        base.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9._-]+")), QStringLiteral("-"));
-        name = dir + QLatin1Char('/') + base + QLatin1Char('.') + suffix;
-    }
-    PointExportDialog dialog(item, name, this);
-    if (dialog.exec() != QDialog::Accepted)
-        return;
-    QString error;
-    m_lastPointExport = dialog.fileName();
-    if (!exportPoints(dialog.fileName(), dialog.depth(), &error))
-        m_messages->error(this, tr("Export Points"), error);
-    else
-        statusBar()->showMessage(tr("Exported the points to %1").arg(dialog.fileName()), 5000);
-}
-
-bool MainWindow::exportPoints(const QString &fileName, int depth, QString *error)
-{
-    const AttractorItem *item = m_controller->drawnItem();
-    if (!item) {
-        if (error)
-            *error = tr("The current item has no attractor.");
-        return false;
-    }
-    // The colours the view uses: the item's own, else the preferences', else the defaults.
-    QList<QColor> palette;
-    for (const QString &c : item->style().colors)
-        palette << QColor(c);
-    if (palette.isEmpty())
-        palette = m_preferences.palette;
-    const auto color = [palette](int map) {
-        return paletteColor(palette, map, AttractorRenderer::mapColor(map));
-    };
-    return PointExportDialog::exportPoints(item, fileName,
-                                           depth < 0 ? item->algorithm().depth : depth, color,
-                                           isVisible() ? this : nullptr, error);
 }
 
 void MainWindow::userGuide()

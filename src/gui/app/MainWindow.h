@@ -66,6 +66,13 @@ public:
     bool saveFile(const QString &fileName);
     // Offers the recovery files of crashed sessions; true when one was recovered.
     bool offerRecovery();
+    // Opens a bundled example (a copy: saving asks where, the examples stay as they are).
+    bool openExample(const QString &fileName);
+    // Where the bundled examples are (the installed data folder, else the source tree's).
+    static QString examplesDirectory();
+    // The file an output of the current item is proposed as: "<project>-<item>.<suffix>" in
+    // the project's folder when it can be written to, else in the user's documents.
+    QString outputPath(const QString &suffix) const;
 
     // Export of one view (format from the suffix). False with a message on failure.
     bool exportView(const ExportDialog::Options &options, QString *error = nullptr);
@@ -107,6 +114,7 @@ private:
     void updateTitle();
     void updateActions();
     void updateRecentMenu();
+    void fillExamplesMenu();
     void addRecentFile(const QString &fileName);
     // Asks to save unsaved changes; false when the user cancels.
     bool maybeSave();
@@ -169,10 +177,12 @@ private:
     QList<QDockWidget *> m_docks;
     QMenu *m_viewMenu = nullptr;
     QMenu *m_recentMenu = nullptr;
+    QMenu *m_examplesMenu = nullptr;
     QByteArray m_defaultState;
     QSpinBox *m_hutchStep = nullptr;
     QSpinBox *m_subdivSteps = nullptr;
     StatusText *m_cursorLabel = nullptr;
+    SpectrumView *m_plotView = nullptr;  // the centre for an eigenvalue plot item
     QLabel *m_problemLabel = nullptr;
     QProgressBar *m_progress = nullptr;
     QToolButton *m_cancel = nullptr;

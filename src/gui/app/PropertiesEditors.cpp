@@ -268,8 +268,9 @@ void PropertiesWidget::addEigenvaluePlotEditors()
             std::size_t n = 0;
             for (const auto &s : data->spectra)
                 n += s.values.size();
-            status->setText(tr("%1 matrices %2_i, %3 eigenvalues: see the Spectrum "
-                                        "and Matrices panels.")
+            status->setText(tr("%1 matrices %2_i, %3 eigenvalues, plotted in the centre; "
+                               "click an eigenvalue to mark its map (its matrices in the "
+                               "Matrices dock).")
                                 .arg(data->spectra.size()).arg(data->symbol).arg(n));
             status->setStyleSheet(QString());
         } else {

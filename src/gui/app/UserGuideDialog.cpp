@@ -12,7 +12,8 @@ UserGuideDialog::UserGuideDialog(const QList<QAction *> &actions, QWidget *paren
     : QDialog(parent), m_browser(new QTextBrowser)
 {
     setObjectName(QStringLiteral("userGuide"));
-    setWindowTitle(tr("Attractor Workbench — User Guide"));
+    // The desktop adds the application's name to the title.
+    setWindowTitle(tr("User Guide"));
     m_browser->setOpenExternalLinks(true);
     m_browser->setHtml(html(actions));
     auto *layout = new QVBoxLayout(this);

@@ -12,6 +12,7 @@
 #include <QLineF>
 #include <QLabel>
 #include <QLineSeries>
+#include <QFontMetrics>
 #include <QLogValueAxis>
 #include <QScatterSeries>
 #include <QTabWidget>
@@ -150,6 +151,20 @@ void AnalysisCharts::fitToView(QChartView *view)
         axis->setLabelsFont(labels);
     }
     c->legend()->setVisible(!tiny && c->series().size() > 1);
+    // Qt Charts elides a vertical axis' labels to "…" when the ticks are closer than a label's
+    // height: ticks of a round step with room for each label.
+    const QFontMetrics fm(labels);
+    const double plotHeight = std::max(40.0, view->height() * (tiny ? 0.7 : 0.55));
+    const int most = std::max(2, int(plotHeight / (2.2 * fm.height())));
+    for (QAbstractAxis *axis : c->axes(Qt::Vertical)) {
+        auto *v = qobject_cast<QValueAxis *>(axis);
+        if (!v || v->tickType() != QValueAxis::TicksDynamic || !(v->max() > v->min()))
+            continue;
+        const double approx = (v->max() - v->min()) / most;
+        const double e = std::pow(10.0, std::floor(std::log10(approx)));
+        const double f = approx / e;
+        v->setTickInterval((f <= 1 ? 1.0 : f <= 2 ? 2.0 : f <= 5 ? 5.0 : 10.0) * e);
+    }
     c->legend()->setFont(labels);
     c->setMargins(compact ? QMargins(2, 2, 2, 2) : QMargins(6, 6, 6, 6));
 }
@@ -255,7 +270,7 @@ void AnalysisCharts::setDistances(const QList<DistanceSeries> &series, double ra
         // C rate^k through the first measured point: the convergence the eigenvalue predicts.
         const QPointF p0 = made.front()->at(0);
         reference = new QLineSeries;
-        reference->setName(tr("∝ %1^k").arg(formatNumber(rate, 4)));
+        reference->setName(tr("∝ (%1)ᵏ").arg(formatNumber(rate, 4)));
         reference->setPen(dashed(QColor(120, 120, 120)));
         for (double k = xlo; k <= xhi + 1e-9; k += 0.25) {
             const double y = p0.y() * std::pow(rate, k - p0.x());
@@ -271,7 +286,7 @@ void AnalysisCharts::setDistances(const QList<DistanceSeries> &series, double ra
     chartView(DistanceTab)->setToolTip(
         empty ? tr("The Hausdorff distance is measured against an exact curve: B-spline, Bézier "
                    "and complex de Casteljau curves have one.")
-              : QString());
+              : m_distanceReference);
     if (!std::isfinite(xlo)) {
         xlo = 0, xhi = 1, ylo = 0.1, yhi = 1;
     }
@@ -336,12 +351,22 @@ void AnalysisCharts::setBoxCounting(const BoxDimension &box)
 {
     QChart *c = chart(BoxCountingTab);
     clearChart(c);
-    if (box.valid)
-        c->setTitle(tr("Box counting: dimension D = %1, R² = %2")
+    // Short titles and legends: a title wider than the view makes Qt Charts squeeze the
+    // y axis to its minimum and elide its labels to "…". The fit's numbers are in the tooltip.
+    if (box.valid) {
+        c->setTitle(tr("D = %1 (R² = %2)")
                         .arg(QString::number(box.dimension, 'f', 4),
                              QString::number(box.r2, 'f', 5)));
-    else
-        c->setTitle(tr("Box counting: no fit (%1)").arg(QString::fromStdString(box.note)));
+        chartView(BoxCountingTab)->setToolTip(
+            tr("Box-counting dimension D = %1: the slope of log N(ε) against log(1/ε) over the "
+               "fitted levels, log N = %1 log(1/ε) + %2, R² = %3")
+                .arg(QString::number(box.dimension, 'f', 4),
+                     QString::number(box.intercept, 'f', 3), QString::number(box.r2, 'f', 5)));
+    } else {
+        c->setTitle(tr("No fit"));
+        chartView(BoxCountingTab)->setToolTip(
+            tr("Box counting: no fit (%1)").arg(QString::fromStdString(box.note)));
+    }
     auto *all = new QScatterSeries;
     all->setName(tr("not fitted"));
     all->setMarkerSize(7);
@@ -364,9 +389,7 @@ void AnalysisCharts::setBoxCounting(const BoxDimension &box)
     QLineSeries *line = nullptr;
     if (box.valid && n > 0) {
         line = new QLineSeries;
-        line->setName(tr("fit: log N = %1 log(1/ε) + %2")
-                          .arg(QString::number(box.dimension, 'f', 3),
-                               QString::number(box.intercept, 'f', 3)));
+        line->setName(tr("slope %1").arg(QString::number(box.dimension, 'f', 3)));
         line->setPen(QPen(QColor(200, 0, 60), 1.6));
         for (double x : {xlo, xhi}) {
             const double y = box.intercept + box.dimension * x;

@@ -42,6 +42,9 @@ public:
 
     // (a) d_H(F^k(X0), curve) against k. With rate > 0 a dashed reference line
     // C rate^k through the first point of the first series shows the expected convergence.
+    // What the distances are measured against, for the chart's tooltip ("Fᵏ(X₀) to the
+    // exact curve: uniform B-spline ...").
+    void setDistanceReference(const QString &text) { m_distanceReference = text; }
     void setDistances(const QList<DistanceSeries> &series, double rate = 0.0);
     // (b) length of the control polygon after k classic subdivision steps (lengths[k]);
     // exactLength > 0 adds the exact curve's length as a dashed line.
@@ -74,6 +77,7 @@ private:
     QTabWidget *m_tabs = nullptr;
     QList<QChartView *> m_views;
     QList<MapModuli> m_moduli;   // what the moduli chart shows
+    QString m_distanceReference;
     bool m_moduliShown = false;
 };
 

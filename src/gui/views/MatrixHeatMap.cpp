@@ -48,13 +48,15 @@ QRectF MatrixHeatMap::grid() const
     return {double(margin), double(margin), k * m_values.cols(), k * m_values.rows()};
 }
 
-QColor MatrixHeatMap::cellColour(double v) const
+QColor MatrixHeatMap::cellColour(double v) const { return colour(v, m_max); }
+
+QColor MatrixHeatMap::colour(double v, double largest)
 {
     // Diverging scale through white: zero entries vanish, so the sparsity pattern shows; the
     // square root lifts small weights (1/64 next to 3/4) into view.
-    if (v == 0.0)
+    if (v == 0.0 || !(largest > 0))
         return Qt::white;
-    const double t = std::sqrt(std::min(1.0, std::abs(v) / m_max));
+    const double t = std::sqrt(std::min(1.0, std::abs(v) / largest));
     const QColor end = v > 0 ? QColor(178, 24, 43) : QColor(33, 102, 172);
     const auto mix = [t](int a, int b) { return int(std::lround(a + (b - a) * t)); };
     return QColor(mix(255, end.red()), mix(255, end.green()), mix(255, end.blue()));

@@ -22,6 +22,8 @@ public:
     // The tooltip text of a cell: "S₁ (r, c) = 3/8".
     QString cellText(int row, int column) const;
     QColor cellColour(double value) const;
+    // The colour of an entry on the scale ending at |largest| (the figure sheet's too).
+    static QColor colour(double value, double largest);
 
     QSize sizeHint() const override;
 

@@ -33,15 +33,49 @@ QString superscripted(const std::string &label)
 }
 } // namespace
 
+QString mathText(const QString &ascii)
+{
+    // The core writes its formulas in ASCII (they also go to attractor-cli's JSON): on screen
+    // they read as the papers write them.
+    static const QString subs = QStringLiteral("₀₁₂₃₄₅₆₇₈₉");
+    static const QString sups = QStringLiteral("⁰¹²³⁴⁵⁶⁷⁸⁹");
+    QString s = ascii;
+    s.replace(QStringLiteral("rho_n"), QStringLiteral("ρₙ"));
+    s.replace(QStringLiteral("rho("), QStringLiteral("ρ("));
+    s.replace(QStringLiteral(" - "), QStringLiteral(" − "));
+    s.replace(QStringLiteral(" .. "), QStringLiteral(" … "));
+    s.replace(QStringLiteral("X0"), QStringLiteral("X₀"));
+    QString out;
+    for (int i = 0; i < s.size(); ++i) {
+        // log_2 -> log₂, z^3 -> z³, ^(1/k) -> ^(1/k) (left as it is: no superscript slash)
+        if ((s[i] == QLatin1Char('_') || s[i] == QLatin1Char('^')) && i + 1 < s.size()
+            && s[i + 1].isDigit()) {
+            const QString &table = s[i] == QLatin1Char('_') ? subs : sups;
+            ++i;
+            while (i < s.size() && s[i].isDigit())
+                out += table.at(s[i++].digitValue());
+            --i;
+            continue;
+        }
+        out += s[i];
+    }
+    return out;
+}
+
 QString regularityText(const Regularity &r)
 {
     if (!r.applies || r.infinite || (r.divergent && r.transition.empty()))
         return QString::fromStdString(r.message);
-    QString text = QObject::tr("%1, Hölder regularity r in [%2, %3] (width %4)")
-                       .arg(superscripted(r.smoothnessLabel()))
-                       .arg(r.lower, 0, 'g', 8)
-                       .arg(r.upper, 0, 'g', 8)
-                       .arg(r.width(), 0, 'g', 2);
+    // Bounds equal to rounding are the exponent itself: "exact", not "width 2.4e-13".
+    const bool exact = r.width() <= 1e-9 * std::max(1.0, std::abs(r.upper));
+    QString text = exact ? QObject::tr("%1, Hölder regularity r = %2 (exact)")
+                               .arg(superscripted(r.smoothnessLabel()))
+                               .arg(r.upper, 0, 'g', 8)
+                         : QObject::tr("%1, Hölder regularity r in [%2, %3] (width %4)")
+                               .arg(superscripted(r.smoothnessLabel()))
+                               .arg(r.lower, 0, 'g', 8)
+                               .arg(r.upper, 0, 'g', 8)
+                               .arg(r.width(), 0, 'g', 2);
     if (!r.notes.empty())
         text += QStringLiteral("; ") + QString::fromStdString(r.notes).trimmed();
     return text;
@@ -144,7 +178,7 @@ void RegularityPanel::showResult(const Regularity &r, quint64 generation)
     m_progress->setVisible(false);
     m_cancel->setVisible(false);
     m_summary->setText(tr("Regularity: %1").arg(regularityText(r)));
-    m_method->setText(QString::fromStdString(r.method));
+    m_method->setText(mathText(QString::fromStdString(r.method)));
     emit finished();
 }
 

@@ -56,5 +56,7 @@ private:
 
 // "C^1, r in [1.9999, 2] (width 1e-06)" or the reason the analysis does not apply.
 QString regularityText(const Regularity &r);
+// The core's ASCII formulas as the papers write them: log_2 -> log₂, rho_n -> ρₙ, ^4 -> ⁴.
+QString mathText(const QString &ascii);
 
 } // namespace awb

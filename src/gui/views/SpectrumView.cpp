@@ -1,5 +1,7 @@
 #include "gui/views/SpectrumView.h"
 
+#include <QMenu>
+
 #include "gui/views/AttractorRenderer.h"
 #include "model/NumberFormat.h"
 #include "render/FigureFile.h"
@@ -389,6 +391,30 @@ void SpectrumView::paintPlot(QCPPainter *painter, int width, int height)
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }
 
+QList<int> SpectrumView::mapsAt(const QPointF &pixel) const
+{
+    QList<int> found;
+    for (int i = 0; i < m_maps.size(); ++i)
+        for (Complex z : m_maps[i].spectrum.values)
+            if (QLineF(pixelOf(z), pixel).length() <= std::max(kTooltipRadius, markerSize(i) / 2)) {
+                found << i;
+                break;
+            }
+    return found;
+}
+
+Complex SpectrumView::nearestEigenvalue(int map, const QPointF &pixel) const
+{
+    Complex best{};
+    double distance = INFINITY;
+    for (Complex z : m_maps[map].spectrum.values)
+        if (const double d = QLineF(pixelOf(z), pixel).length(); d < distance) {
+            distance = d;
+            best = z;
+        }
+    return best;
+}
+
 int SpectrumView::mapAt(const QPointF &pixel) const
 {
     // Later maps are drawn on top: the last hit is what the user sees.
@@ -417,6 +443,26 @@ bool SpectrumView::eventFilter(QObject *watched, QEvent *event)
         if (e->button() == Qt::LeftButton
             && QLineF(e->position(), m_pressPosition).length() < 4.0) {
             const int map = mapAt(e->position());
+            // Eigenvalues of several maps on one spot (S_1 and S_2 of a symmetric scheme share
+            // theirs): the user picks the map instead of always getting the topmost.
+            const QList<int> maps = mapsAt(e->position());
+            if (maps.size() > 1) {
+                auto *menu = new QMenu(this);
+                menu->setObjectName(QStringLiteral("coincidingEigenvalues"));
+                menu->setAttribute(Qt::WA_DeleteOnClose);
+                for (int i : maps) {
+                    const Complex z = nearestEigenvalue(i, e->position());
+                    QAction *a = menu->addAction(tr("%1: λ = %2")
+                                                     .arg(subscriptName(m_maps[i].label),
+                                                          formatComplex(z, 6)));
+                    connect(a, &QAction::triggered, this, [this, i] {
+                        setHighlightedMap(i);
+                        emit mapClicked(i);
+                    });
+                }
+                menu->popup(m_plot->mapToGlobal(e->position().toPoint()));
+                return QWidget::eventFilter(watched, event);
+            }
             setHighlightedMap(map);
             emit mapClicked(map);
         }

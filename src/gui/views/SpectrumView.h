@@ -52,6 +52,9 @@ public:
     QString tooltipAt(const QPointF &plotPixel) const;
     // The map whose marker is under `plotPixel` (the last drawn, i.e. topmost), or -1.
     int mapAt(const QPointF &plotPixel) const;
+    // Every map with an eigenvalue under `plotPixel` (a click there offers them in a menu).
+    QList<int> mapsAt(const QPointF &plotPixel) const;
+    Complex nearestEigenvalue(int map, const QPointF &plotPixel) const;
     // Outlines map `map`'s markers (-1: none).
     void setHighlightedMap(int map);
     int highlightedMap() const { return m_highlighted; }
