@@ -86,6 +86,7 @@ private slots:
     void netsAreMatchedUpToTranslation();
     void badNetsAreNamed();
     void meshDrawsTheImagesAgain();
+    void pinholesCloseInsideNotOutside();
 };
 
 void TestSurfaces::bicubicMaskIsTensorCubic()
@@ -540,6 +541,42 @@ void TestSurfaces::meshDrawsTheImagesAgain()
     QCOMPARE(surfaceMeshDepth(f, start, 8, 300), 2);
     QCOMPARE(surfaceMeshDepth(f, start, 2, 1e9), 2);
     QCOMPARE(surfaceMeshDepth(f, start, 8, 0.5), 0);
+}
+
+// Splats 3 pixels apart leave gaps of up to 2 pixels between them: fillPinholes closes those
+// inside the picture and does not grow its outline.
+void TestSurfaces::pinholesCloseInsideNotOutside()
+{
+    SurfaceMesh grid;
+    grid.kind = SurfaceMesh::Kind::Points;
+    // Points in the plane z = 0 seen from above: world units are pixels (half height 50 at
+    // 100 pixels high), a 10 x 10 grid 3 pixels apart around the centre.
+    for (int j = 0; j < 10; ++j)
+        for (int i = 0; i < 10; ++i) {
+            grid.positions.insert(grid.positions.end(), {3.0 * i - 13.5, 3.0 * j - 13.5, 0.0});
+            grid.labels.push_back(0);
+        }
+    OrthoCamera top;
+    top.azimuth = -90;
+    top.elevation = 90;
+    top.halfHeight = 50;
+    SurfaceRaster r(100, 100, top, {}, {}, 0.5);
+    r.draw(grid, 0, grid.size());
+    const std::uint64_t dots = r.coveredPixels();
+    QCOMPARE(dots, std::uint64_t(100)); // one pixel a point: holes between them
+    r.fillPinholes();
+    // Inside the grid everything is covered; nothing beyond its outline.
+    int inside = 0, outside = 0;
+    for (int y = 0; y < 100; ++y)
+        for (int x = 0; x < 100; ++x) {
+            const bool in = x >= 36 && x <= 63 && y >= 36 && y <= 63;
+            if (in)
+                inside += r.covered(x, y);
+            else
+                outside += r.covered(x, y);
+        }
+    QCOMPARE(outside, 0);
+    QVERIFY2(inside >= 28 * 28 * 95 / 100, qPrintable(QString::number(inside)));
 }
 
 QTEST_APPLESS_MAIN(TestSurfaces)

@@ -59,9 +59,13 @@ void SurfaceMeshSink::consume(const Mat &v, StartSet::Kind, const std::uint8_t *
             mesh.positions.push_back(p(r, k));
     };
     for (const Projection &view : m_views) {
-        const Mat p = project(view, v);
-        if (p.cols() != 3)
+        if (view.V.cols() != 3 || view.V.rows() != v.cols())
             continue;
+        // Into the sink's own buffer: an image is a few vertices, an allocation would cost
+        // more than the product.
+        Mat &p = m_projected;
+        p.noalias() = v * view.V;
+        p.rowwise() += view.c;
         if (!p.allFinite()) {
             ++mesh.nonFinite;
             continue;

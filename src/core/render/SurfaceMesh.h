@@ -45,6 +45,7 @@ public:
 private:
     std::vector<Projection> m_views;
     ImageLabel m_label;
+    Mat m_projected;  // the image through a view, reused
 };
 
 // What an image of `start` becomes: points, segments or triangles.

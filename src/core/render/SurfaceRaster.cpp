@@ -265,34 +265,46 @@ void SurfaceRaster::fillPinholes()
 {
     // Splats of neighbouring images leave small empty gaps where the images are sparser than
     // the splats are wide: an empty pixel lying between covered pixels -- within 2 pixels on
-    // both sides along at least two of the four directions (a row, a column, two diagonals) --
+    // both sides along one of the four directions (a row, a column, two diagonals) --
     // takes the nearest of its covered 8-neighbours (depth and label), as point renderers do.
     // The coverage decided on is the raster's before filling, so the outline does not grow.
-    const auto covered = [&](int x, int y) {
-        return x >= 0 && y >= 0 && x < m_w && y < m_h && m_label[index(x, y)] != 0;
-    };
-    const auto side = [&](int x, int y, int dx, int dy) {
-        return covered(x + dx, y + dy) || covered(x + 2 * dx, y + 2 * dy);
-    };
-    std::vector<std::pair<std::size_t, std::size_t>> fills; // hole, the neighbour it copies
+    // A byte per pixel with a border of 2 (no bounds checks), and only the rows and columns
+    // around what is covered are visited: the background costs nothing.
+    const int pad = 2, W = m_w + 2 * pad, H = m_h + 2 * pad;
+    std::vector<std::uint8_t> cov(std::size_t(W) * std::size_t(H), 0);
+    int x0 = m_w, x1 = -1, y0 = m_h, y1 = -1;
     for (int y = 0; y < m_h; ++y)
-        for (int x = 0; x < m_w; ++x) {
-            if (m_label[index(x, y)])
+        for (int x = 0; x < m_w; ++x)
+            if (m_label[index(x, y)]) {
+                cov[std::size_t(y + pad) * std::size_t(W) + std::size_t(x + pad)] = 1;
+                x0 = std::min(x0, x), x1 = std::max(x1, x);
+                y0 = std::min(y0, y), y1 = std::max(y1, y);
+            }
+    if (x1 < 0)
+        return;
+    const std::ptrdiff_t steps[4] = {1, W, W + 1, W - 1}; // row, column, two diagonals
+    std::vector<std::pair<std::size_t, std::size_t>> fills; // hole, the neighbour it copies
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+            const std::size_t i = index(x, y);
+            if (m_label[i])
                 continue;
+            const std::uint8_t *c = cov.data() + std::size_t(y + pad) * std::size_t(W)
+                                    + std::size_t(x + pad);
             int between = 0;
-            for (const auto &[dx, dy] : {std::pair{1, 0}, {0, 1}, {1, 1}, {1, -1}})
-                between += side(x, y, dx, dy) && side(x, y, -dx, -dy);
-            if (between < 2)
+            for (const std::ptrdiff_t d : steps)
+                between += (c[d] | c[2 * d]) & (c[-d] | c[-2 * d]);
+            if (between == 0)
                 continue;
-            std::size_t best = index(x, y);
+            std::size_t best = i;
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dx = -1; dx <= 1; ++dx)
-                    if (covered(x + dx, y + dy)
-                        && (best == index(x, y)
-                            || m_depth[index(x + dx, y + dy)] > m_depth[best]))
-                        best = index(x + dx, y + dy);
-            if (best != index(x, y))
-                fills.emplace_back(index(x, y), best);
+                    if (c[dy * W + dx]) {
+                        const std::size_t j = index(x + dx, y + dy);
+                        if (best == i || m_depth[j] > m_depth[best])
+                            best = j;
+                    }
+            fills.emplace_back(i, best);
         }
     for (const auto &[hole, from] : fills) {
         m_depth[hole] = m_depth[from];

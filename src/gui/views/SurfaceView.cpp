@@ -315,6 +315,12 @@ void SurfaceView::startMeshJob()
         return;
     }
     const bool moving = pointMoving();
+    // The full mesh of this very data is there (a gesture that changed nothing ended): draw.
+    if (!moving && m_meshes.serial == m_dataSerial && m_meshes.full && !m_fullPending) {
+        m_meshBusy = false;
+        requestFrame();
+        return;
+    }
     // The coarse mesh of this very data is there (the last move of a drag): only the full one.
     const bool haveCoarse = m_meshes.serial == m_dataSerial && m_meshes.coarse;
     const int fullDepth = surfaceMeshDepth(*m_ifs, m_start, m_settings.depth, double(m_fullBudget));
