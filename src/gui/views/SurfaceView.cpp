@@ -438,6 +438,7 @@ void SurfaceView::requestCpuFrame()
         if (!mesh || !isLayerVisible(Layer::Attractor)) {
             m_cpuImage = QImage();
             m_cpuImageMesh.reset();
+            m_requestedFrameMesh.reset(); // drawn again when it shows again
         }
         m_frameBusy = false;
         update();
@@ -448,6 +449,21 @@ void SurfaceView::requestCpuFrame()
     const OrthoCamera camera = m_camera.ortho;
     const std::vector<std::uint32_t> palette = colours().palette;
     const double radius = std::max(0.5, 0.5 * m_settings.pointSize * dpr);
+    // The same picture asked for again (several setters of one edit, the end of a gesture):
+    // it is drawn or being drawn.
+    const auto sameCamera = [](const OrthoCamera &a, const OrthoCamera &b) {
+        return a.azimuth == b.azimuth && a.elevation == b.elevation && a.centre == b.centre
+               && a.halfHeight == b.halfHeight;
+    };
+    if (mesh == m_requestedFrameMesh && size == m_requestedFrameSize
+        && sameCamera(camera, m_requestedFrameCamera)
+        && palette == m_requestedFramePalette && radius == m_requestedFrameRadius)
+        return;
+    m_requestedFrameMesh = mesh;
+    m_requestedFrameSize = size;
+    m_requestedFrameCamera = camera;
+    m_requestedFramePalette = palette;
+    m_requestedFrameRadius = radius;
     const std::uint64_t serial = ++m_frameSerial;
     // The pointer position the frame shows: the drag's mesh, or the orbit's camera.
     const bool orbit = m_drag.kind == DragKind::Orbit || m_drag.kind == DragKind::Pan;

@@ -253,6 +253,12 @@ private:
     bool m_meshBusy = false, m_frameBusy = false;
     bool m_fullPending = false;      // a full mesh job was posted and has not delivered
     std::uint64_t m_frameSerial = 0, m_frameDelivered = 0;
+    // What the last CPU frame request drew (an equal request is not drawn again).
+    std::shared_ptr<const SurfaceMesh> m_requestedFrameMesh;
+    QSize m_requestedFrameSize;
+    OrthoCamera m_requestedFrameCamera;
+    std::vector<std::uint32_t> m_requestedFramePalette;
+    double m_requestedFrameRadius = 0.0;
     // The CPU frame on screen: its camera, mesh and the pointer position it shows.
     QImage m_cpuImage;
     OrthoCamera m_cpuImageCamera;
