@@ -14,6 +14,8 @@
 #include <QJsonObject>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include <algorithm>
 
 using namespace awb;
@@ -121,5 +123,5 @@ void TestAddressCli::refusesBadAddresses()
     QVERIFY(out.isEmpty());
 }
 
-QTEST_GUILESS_MAIN(TestAddressCli)
+AWB_TEST_GUILESS_MAIN(TestAddressCli)
 #include "test_address_cli.moc"

@@ -2,6 +2,7 @@
 // with its parameters at time k / fps; PNG frames, movies through ffmpeg, clear refusals.
 #include "CliRunner.h"
 #include "TestTime.h"
+#include "TestMain.h"
 
 #include <QDir>
 #include <QFile>
@@ -171,5 +172,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestAnimateCli)
+AWB_TEST_GUILESS_MAIN(TestAnimateCli)
 #include "test_animate_cli.moc"

@@ -20,6 +20,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include "TestTime.h"
 
 #include <functional>
@@ -424,5 +426,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestBadInput)
+AWB_TEST_GUILESS_MAIN(TestBadInput)
 #include "test_bad_input.moc"

@@ -8,6 +8,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include "TestTime.h"
 
 class TestCli : public QObject {
@@ -131,5 +133,5 @@ void TestCli::renderUsesTheItemsColours()
              pixelsOf(byMap, palette[0]) + pixelsOf(byMap, palette[1]) + pixelsOf(byMap, palette[2]));
 }
 
-QTEST_GUILESS_MAIN(TestCli)
+AWB_TEST_GUILESS_MAIN(TestCli)
 #include "test_cli.moc"

@@ -10,6 +10,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include "TestTime.h"
 
 class TestExamples : public QObject {
@@ -179,5 +181,5 @@ void TestExamples::cliErrors()
     QVERIFY(QFileInfo(dir.filePath("x.pdf")).size() > 1000);
 }
 
-QTEST_GUILESS_MAIN(TestExamples)
+AWB_TEST_GUILESS_MAIN(TestExamples)
 #include "test_examples.moc"

@@ -13,6 +13,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include "CliRunner.h"
 
 #include <cmath>
@@ -268,5 +270,5 @@ void TestFidelityCli::normalVectorStartSetInEdgeFrame()
     }
 }
 
-QTEST_MAIN(TestFidelityCli)
+AWB_TEST_MAIN(TestFidelityCli)
 #include "test_fidelity_cli.moc"

@@ -10,6 +10,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include "CliRunner.h"
 
 #include <cmath>
@@ -91,5 +93,5 @@ void TestRegularityCli::divergentFourPoint()
     QVERIFY(r["upper"].toDouble() <= 0.0);
 }
 
-QTEST_GUILESS_MAIN(TestRegularityCli)
+AWB_TEST_GUILESS_MAIN(TestRegularityCli)
 #include "test_regularity_cli.moc"

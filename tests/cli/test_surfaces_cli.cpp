@@ -12,6 +12,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include "CliRunner.h"
 
 #include <cmath>
@@ -250,5 +252,5 @@ void TestSurfacesCli::badOptions()
     QVERIFY(err.contains("--max-points"));
 }
 
-QTEST_MAIN(TestSurfacesCli)
+AWB_TEST_MAIN(TestSurfacesCli)
 #include "test_surfaces_cli.moc"

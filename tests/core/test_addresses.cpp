@@ -9,6 +9,8 @@
 
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include <cstdint>
 
 using namespace awb;
@@ -300,5 +302,5 @@ void TestAddresses::parameterIsTheKnotParameter()
     }
 }
 
-QTEST_APPLESS_MAIN(TestAddresses)
+AWB_TEST_APPLESS_MAIN(TestAddresses)
 #include "test_addresses.moc"

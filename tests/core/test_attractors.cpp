@@ -7,6 +7,8 @@
 #include "core/analysis/Spectrum.h"
 
 #include <QtTest>
+
+#include "TestMain.h"
 #include <algorithm>
 #include <map>
 #include <string>
@@ -394,5 +396,5 @@ void TestAttractors::cancellation()
     QVERIFY(stats.images < 20000);
 }
 
-QTEST_APPLESS_MAIN(TestAttractors)
+AWB_TEST_APPLESS_MAIN(TestAttractors)
 #include "test_attractors.moc"

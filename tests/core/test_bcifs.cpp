@@ -11,6 +11,8 @@
 #include <Eigen/Dense>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include <functional>
 #include <map>
 
@@ -438,5 +440,5 @@ void TestBcifs::badInputIsNamed()
     QVERIFY2(contains(m, "constraint (x): T^l ends at 'l' but ∂^r_0 starts at 'r'"), m.c_str());
 }
 
-QTEST_APPLESS_MAIN(TestBcifs)
+AWB_TEST_APPLESS_MAIN(TestBcifs)
 #include "test_bcifs.moc"

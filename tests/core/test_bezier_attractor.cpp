@@ -9,6 +9,8 @@
 
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include <cmath>
 #include <limits>
 
@@ -440,5 +442,5 @@ void TestBezierAttractor::badInput()
     VERIFY_INPUT_ERROR(bezierUnion({}), "at least one curve");
 }
 
-QTEST_APPLESS_MAIN(TestBezierAttractor)
+AWB_TEST_APPLESS_MAIN(TestBezierAttractor)
 #include "test_bezier_attractor.moc"

@@ -8,6 +8,8 @@
 
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include <functional>
 #include <map>
 
@@ -341,5 +343,5 @@ void TestCifs::badInputIsNamed()
     QVERIFY2(contains(m, "affinely dependent"), m.c_str());
 }
 
-QTEST_APPLESS_MAIN(TestCifs)
+AWB_TEST_APPLESS_MAIN(TestCifs)
 #include "test_cifs.moc"

@@ -10,6 +10,8 @@
 
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include <cmath>
 #include <limits>
 
@@ -465,5 +467,5 @@ void TestComplexBezier::badInput()
     VERIFY_INPUT_ERROR(attractorPoints(complexBezierIfs(segment(), 0.5), 30), "depth");
 }
 
-QTEST_APPLESS_MAIN(TestComplexBezier)
+AWB_TEST_APPLESS_MAIN(TestComplexBezier)
 #include "test_complex_bezier.moc"

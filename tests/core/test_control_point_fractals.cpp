@@ -7,6 +7,8 @@
 #include "core/analysis/Spectrum.h"
 
 #include <QtTest>
+
+#include "TestMain.h"
 #include <cmath>
 
 using namespace awb;
@@ -403,5 +405,5 @@ void TestControlPointFractals::badInput()
                 .contains("needs 5 control points"));
 }
 
-QTEST_APPLESS_MAIN(TestControlPointFractals)
+AWB_TEST_APPLESS_MAIN(TestControlPointFractals)
 #include "test_control_point_fractals.moc"

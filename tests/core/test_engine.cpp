@@ -12,6 +12,8 @@
 
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include <cmath>
 #include <cstdlib>
 #include <random>
@@ -903,5 +905,5 @@ void TestEngine::dilateMatchesItsDefinition()
     }
 }
 
-QTEST_GUILESS_MAIN(TestEngine)
+AWB_TEST_GUILESS_MAIN(TestEngine)
 #include "test_engine.moc"

@@ -5,6 +5,8 @@
 #include "core/analysis/Geometry.h"
 
 #include <QtTest>
+
+#include "TestMain.h"
 #include <random>
 
 using namespace awb;
@@ -108,5 +110,5 @@ void TestGeometry::bsplineBasisExample121()
     QVERIFY(std::abs(b.pointWeights(1.0).sum() - 1.0) < 1e-15);
 }
 
-QTEST_APPLESS_MAIN(TestGeometry)
+AWB_TEST_APPLESS_MAIN(TestGeometry)
 #include "test_geometry.moc"

@@ -7,6 +7,8 @@
 #include "core/schemes/NormalVectorScheme.h"
 
 #include <QtTest>
+
+#include "TestMain.h"
 #include <cmath>
 #include <set>
 
@@ -503,5 +505,5 @@ void TestNormalVector::badInput()
                 .contains("open control polygons need α_0 = β_0 = 0"));
 }
 
-QTEST_APPLESS_MAIN(TestNormalVector)
+AWB_TEST_APPLESS_MAIN(TestNormalVector)
 #include "test_normal_vector.moc"

@@ -10,6 +10,8 @@
 
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include "TestTime.h"
 
 #include <cmath>
@@ -286,5 +288,5 @@ void TestRegularity::cancelAndBudget()
     QVERIFY(timed.lower > 1.0);
 }
 
-QTEST_APPLESS_MAIN(TestRegularity)
+AWB_TEST_APPLESS_MAIN(TestRegularity)
 #include "test_regularity.moc"

@@ -9,6 +9,8 @@
 
 #include <QtTest>
 
+#include "TestMain.h"
+
 using namespace awb;
 
 namespace {
@@ -387,5 +389,5 @@ void TestSchemes::nonContractiveMapReported()
     QVERIFY(checkIfs(barycentricIfs(bsplineScheme(3).matrices(5).S, samplePoints(5))).contractive);
 }
 
-QTEST_APPLESS_MAIN(TestSchemes)
+AWB_TEST_APPLESS_MAIN(TestSchemes)
 #include "test_schemes.moc"

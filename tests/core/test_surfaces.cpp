@@ -12,6 +12,8 @@
 
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include <random>
 
 using namespace awb;
@@ -579,5 +581,5 @@ void TestSurfaces::pinholesCloseInsideNotOutside()
     QVERIFY2(inside >= 28 * 28 * 95 / 100, qPrintable(QString::number(inside)));
 }
 
-QTEST_APPLESS_MAIN(TestSurfaces)
+AWB_TEST_APPLESS_MAIN(TestSurfaces)
 #include "test_surfaces.moc"

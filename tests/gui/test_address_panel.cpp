@@ -20,6 +20,8 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include "TestTime.h"
 
 #include "WindowTestSupport.h"
@@ -247,5 +249,5 @@ void TestAddressPanel::intervalSelectsPiece()
     QVERIFY(error.contains(QStringLiteral("0 <= t0 < t1 <= 1")));
 }
 
-QTEST_MAIN(TestAddressPanel)
+AWB_TEST_MAIN(TestAddressPanel)
 #include "test_address_panel.moc"

@@ -16,6 +16,8 @@
 #include <QChartView>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include <cmath>
 
 using namespace awb;
@@ -138,5 +140,5 @@ void TestAnalysisCharts::replacingDataReplacesSeries()
     QCOMPARE(charts.tabs()->count(), 4);
 }
 
-QTEST_MAIN(TestAnalysisCharts)
+AWB_TEST_MAIN(TestAnalysisCharts)
 #include "test_analysis_charts.moc"

@@ -17,6 +17,8 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include "TestTime.h"
 
 #include <numbers>
@@ -199,5 +201,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestAnimationPanel)
+AWB_TEST_MAIN(TestAnimationPanel)
 #include "test_animation_panel.moc"

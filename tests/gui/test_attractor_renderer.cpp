@@ -11,6 +11,8 @@
 #include <QSignalSpy>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include "TestTime.h"
 
 using namespace awb;
@@ -472,5 +474,5 @@ void TestAttractorRenderer::refineSkipsTheCoarseLevel()
     QTRY_VERIFY(!renderer.isBusy());
 }
 
-QTEST_MAIN(TestAttractorRenderer)
+AWB_TEST_MAIN(TestAttractorRenderer)
 #include "test_attractor_renderer.moc"

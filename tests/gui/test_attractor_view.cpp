@@ -12,6 +12,8 @@
 #include <QSvgGenerator>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include "TestTime.h"
 
 using namespace awb;
@@ -486,5 +488,5 @@ void TestAttractorView::fittedExportIgnoresZoom()
     QCOMPARE(f.view.viewCenter(), QPointF(0.2, 0.2));
 }
 
-QTEST_MAIN(TestAttractorView)
+AWB_TEST_MAIN(TestAttractorView)
 #include "test_attractor_view.moc"

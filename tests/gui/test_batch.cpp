@@ -10,6 +10,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "TestMain.h"
+
 using namespace awb;
 
 class TestBatch : public QObject {
@@ -72,5 +74,5 @@ void TestBatch::badOptions()
     QVERIFY(!QFile::exists(out.filePath("bad.pdf")));
 }
 
-QTEST_GUILESS_MAIN(TestBatch)
+AWB_TEST_GUILESS_MAIN(TestBatch)
 #include "test_batch.moc"

@@ -14,6 +14,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include <map>
 
 #include "WindowTestSupport.h"
@@ -129,5 +131,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestDarkTheme)
+AWB_TEST_MAIN(TestDarkTheme)
 #include "test_dark_theme.moc"

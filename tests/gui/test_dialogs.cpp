@@ -13,6 +13,8 @@
 #include <QToolButton>
 #include <QtTest>
 
+#include "TestMain.h"
+
 using namespace awb;
 
 namespace {
@@ -344,5 +346,5 @@ void TestDialogs::preferencesLabelsAndTabOrder()
     QCOMPARE(focusOrder(child<QWidget>(dialog, "depthSpin"), order), order);
 }
 
-QTEST_MAIN(TestDialogs)
+AWB_TEST_MAIN(TestDialogs)
 #include "test_dialogs.moc"

@@ -22,6 +22,8 @@
 #include <QMenu>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include "TestTime.h"
 
 #include "model/Fig2Example.h"
@@ -276,5 +278,5 @@ void TestEigenvaluePlotView::newPlotAnalysesTheCurrentItem()
     QVERIFY(w.spectrumView()->plottedEigenvalueCount() > 0);
 }
 
-QTEST_MAIN(TestEigenvaluePlotView)
+AWB_TEST_MAIN(TestEigenvaluePlotView)
 #include "test_eigenvalue_plot_view.moc"

@@ -20,6 +20,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -259,5 +261,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestExtremeCoordinates)
+AWB_TEST_MAIN(TestExtremeCoordinates)
 #include "test_extreme_coordinates.moc"

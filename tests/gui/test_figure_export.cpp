@@ -24,6 +24,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "TestMain.h"
+
 using namespace awb;
 
 class TestFigureExport : public QObject {
@@ -319,5 +321,5 @@ void TestFigureExport::pngCarriesItsItemAndReopens()
     QVERIFY2(error.contains("holds no Attractor Workbench item"), qPrintable(error));
 }
 
-QTEST_MAIN(TestFigureExport)
+AWB_TEST_MAIN(TestFigureExport)
 #include "test_figure_export.moc"

@@ -17,6 +17,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "TestMain.h"
+
 using namespace awb;
 
 class TestFrameBudget : public QObject {
@@ -150,5 +152,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestFrameBudget)
+AWB_TEST_MAIN(TestFrameBudget)
 #include "test_frame_budget.moc"

@@ -13,6 +13,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "TestMain.h"
+
 using namespace awb;
 
 class TestLiftedStart : public QObject {
@@ -77,5 +79,5 @@ void TestLiftedStart::editLiftedStartPoints()
     QVERIFY(!lifted->isEnabled());
 }
 
-QTEST_MAIN(TestLiftedStart)
+AWB_TEST_MAIN(TestLiftedStart)
 #include "test_lifted_start.moc"

@@ -40,6 +40,8 @@
 #include <QLineEdit>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include "TestTime.h"
 
 using namespace awb;
@@ -863,5 +865,5 @@ void TestMainWindow::recoveryIsOffered()
     QVERIFY(!w.offerRecovery());
 }
 
-QTEST_MAIN(TestMainWindow)
+AWB_TEST_MAIN(TestMainWindow)
 #include "test_main_window.moc"

@@ -9,6 +9,8 @@
 #include <QTableView>
 #include <QtTest>
 
+#include "TestMain.h"
+
 using namespace awb;
 
 namespace {
@@ -226,5 +228,5 @@ void TestMatrixView::complexMatrices()
     QCOMPARE(text(view.table(0), 1, 1), QStringLiteral("1/2 + (1/2)i"));
 }
 
-QTEST_MAIN(TestMatrixView)
+AWB_TEST_MAIN(TestMatrixView)
 #include "test_matrix_view.moc"

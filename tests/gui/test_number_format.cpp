@@ -8,6 +8,8 @@
 #include <QLineEdit>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include <cmath>
 
 using namespace awb;
@@ -216,5 +218,5 @@ void TestNumberFormat::exactEditors()
     QVERIFY(a.check(3)->message.contains(QStringLiteral("at most depth 19")));
 }
 
-QTEST_MAIN(TestNumberFormat)
+AWB_TEST_MAIN(TestNumberFormat)
 #include "test_number_format.moc"

@@ -20,6 +20,8 @@
 #include <QToolButton>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include "WindowTestSupport.h"
 
 using namespace awb;
@@ -266,5 +268,5 @@ void TestPointEditing::fixedKindsRefuse()
     QVERIFY(curve.pointCountEditable(0));
 }
 
-QTEST_MAIN(TestPointEditing)
+AWB_TEST_MAIN(TestPointEditing)
 #include "test_point_editing.moc"

@@ -16,6 +16,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include "TestTime.h"
 
 #include <cmath>
@@ -115,5 +117,5 @@ void TestRegularityViews::chartSweepsOmega()
     QVERIFY(chart.samples().size() < 400);
 }
 
-QTEST_MAIN(TestRegularityViews)
+AWB_TEST_MAIN(TestRegularityViews)
 #include "test_regularity_views.moc"

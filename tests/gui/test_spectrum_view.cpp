@@ -7,6 +7,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include <qcustomplot.h>
 
 #include <cmath>
@@ -250,5 +252,5 @@ void TestSpectrumView::exportFormats()
     QVERIFY(equalAspect(view.plot()));
 }
 
-QTEST_MAIN(TestSpectrumView)
+AWB_TEST_MAIN(TestSpectrumView)
 #include "test_spectrum_view.moc"

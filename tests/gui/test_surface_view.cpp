@@ -29,6 +29,8 @@
 #include <QDoubleSpinBox>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include "TestTime.h"
 
 using namespace awb;
@@ -681,5 +683,5 @@ void TestSurfaceView::glDragUnderXvfb()
     QCOMPARE(item->controlPoints(0)[9], original);
 }
 
-QTEST_MAIN(TestSurfaceView)
+AWB_TEST_MAIN(TestSurfaceView)
 #include "test_surface_view.moc"

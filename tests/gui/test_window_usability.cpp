@@ -35,6 +35,8 @@
 #include <QToolButton>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include "TestTime.h"
 
 #include "WindowTestSupport.h"
@@ -401,5 +403,5 @@ void TestWindowUsability::damagedRecoveryCopyIsKeptAside()
     QVERIFY(again.messages.questions.isEmpty());
 }
 
-QTEST_MAIN(TestWindowUsability)
+AWB_TEST_MAIN(TestWindowUsability)
 #include "test_window_usability.moc"

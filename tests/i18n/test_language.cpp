@@ -16,6 +16,8 @@
 #include <QTranslator>
 #include <QtTest>
 
+#include "TestMain.h"
+
 using namespace awb;
 
 class TestLanguage : public QObject {
@@ -157,5 +159,5 @@ void TestLanguage::menu()
     }
 }
 
-QTEST_MAIN(TestLanguage)
+AWB_TEST_MAIN(TestLanguage)
 #include "test_language.moc"

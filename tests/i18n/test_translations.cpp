@@ -14,6 +14,8 @@
 #include <QTranslator>
 #include <QtTest>
 
+#include "TestMain.h"
+
 using namespace awb;
 
 namespace {
@@ -170,5 +172,5 @@ void TestTranslations::windowAndCoreTranslated()
     QVERIFY(core != QString::fromUtf8(coreSource));
 }
 
-QTEST_MAIN(TestTranslations)
+AWB_TEST_MAIN(TestTranslations)
 #include "test_translations.moc"

@@ -4,6 +4,7 @@
 
 #include "model/Animation.h"
 #include "model/ProjectIO.h"
+#include "TestMain.h"
 
 #include <QTest>
 
@@ -280,5 +281,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestAnimation)
+AWB_TEST_GUILESS_MAIN(TestAnimation)
 #include "test_animation.moc"

@@ -7,6 +7,7 @@
 #include "core/ifs/Bcifs.h"
 #include "core/analysis/Spectrum.h"
 #include "model/BcifsJunctionItem.h"
+#include "TestMain.h"
 
 using namespace awb;
 
@@ -269,5 +270,5 @@ void TestBcifsJunctionItem::badFilesNameTheField()
     QVERIFY2(error.contains(message), qPrintable(error));
 }
 
-QTEST_GUILESS_MAIN(TestBcifsJunctionItem)
+AWB_TEST_GUILESS_MAIN(TestBcifsJunctionItem)
 #include "test_bcifs_junction_item.moc"

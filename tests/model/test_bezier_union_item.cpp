@@ -5,6 +5,7 @@
 
 #include "core/ifs/BezierAttractor.h"
 #include "model/BezierUnionItem.h"
+#include "TestMain.h"
 
 using namespace awb;
 
@@ -219,5 +220,5 @@ void TestBezierUnionItem::badFilesNameTheField()
     QVERIFY2(error.contains(message), qPrintable(error));
 }
 
-QTEST_GUILESS_MAIN(TestBezierUnionItem)
+AWB_TEST_GUILESS_MAIN(TestBezierUnionItem)
 #include "test_bezier_union_item.moc"

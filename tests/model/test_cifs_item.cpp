@@ -6,6 +6,7 @@
 
 #include "core/ifs/Cifs.h"
 #include "model/CifsItem.h"
+#include "TestMain.h"
 
 using namespace awb;
 
@@ -169,5 +170,5 @@ void TestCifsItem::badFilesNameTheField()
     QVERIFY2(error.contains(message), qPrintable(error));
 }
 
-QTEST_GUILESS_MAIN(TestCifsItem)
+AWB_TEST_GUILESS_MAIN(TestCifsItem)
 #include "test_cifs_item.moc"

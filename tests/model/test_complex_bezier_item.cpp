@@ -6,6 +6,7 @@
 
 #include "core/schemes/ComplexBezier.h"
 #include "model/ComplexBezierItem.h"
+#include "TestMain.h"
 
 using namespace awb;
 
@@ -163,5 +164,5 @@ void TestComplexBezierItem::badFilesNameTheField()
     QVERIFY2(error.contains(message), qPrintable(error));
 }
 
-QTEST_GUILESS_MAIN(TestComplexBezierItem)
+AWB_TEST_GUILESS_MAIN(TestComplexBezierItem)
 #include "test_complex_bezier_item.moc"

@@ -12,6 +12,8 @@
 #include <QSignalSpy>
 #include <QtTest>
 
+#include "TestMain.h"
+
 using namespace awb;
 using awb::test::curve;
 using awb::test::scheme;
@@ -387,5 +389,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestDerived)
+AWB_TEST_GUILESS_MAIN(TestDerived)
 #include "test_derived.moc"

@@ -8,6 +8,8 @@
 
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include "Fig2Example.h"
 
 #include <algorithm>
@@ -147,5 +149,5 @@ void TestEigenvaluePlotItem::explainsWhatIsMissing()
     QVERIFY2(plot->derivedError().contains("Nothing"), qPrintable(plot->derivedError()));
 }
 
-QTEST_GUILESS_MAIN(TestEigenvaluePlotItem)
+AWB_TEST_GUILESS_MAIN(TestEigenvaluePlotItem)
 #include "test_eigenvalue_plot_item.moc"

@@ -8,6 +8,7 @@
 #include "core/schemes/ComplexBezier.h"
 #include "core/analysis/Geometry.h"
 #include "model/ExactCurve.h"
+#include "TestMain.h"
 
 using namespace awb;
 
@@ -88,5 +89,5 @@ void TestExactCurve::noOverlayWhereNoneIsKnown()
     QVERIFY(!exactCurveOf(nullptr));
 }
 
-QTEST_GUILESS_MAIN(TestExactCurve)
+AWB_TEST_GUILESS_MAIN(TestExactCurve)
 #include "test_exact_curve.moc"

@@ -5,6 +5,7 @@
 
 #include "core/schemes/ControlPointFractal.h"
 #include "model/FractalItem.h"
+#include "TestMain.h"
 
 using namespace awb;
 
@@ -263,5 +264,5 @@ void TestFractalItem::badFilesNameTheField()
     QVERIFY2(error.contains(message), qPrintable(error));
 }
 
-QTEST_GUILESS_MAIN(TestFractalItem)
+AWB_TEST_GUILESS_MAIN(TestFractalItem)
 #include "test_fractal_item.moc"

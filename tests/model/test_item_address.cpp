@@ -11,6 +11,8 @@
 #include <QBuffer>
 #include <QtTest>
 
+#include "TestMain.h"
+
 using namespace awb;
 using namespace awb::test;
 
@@ -117,5 +119,5 @@ void TestItemAddress::refusesBadAddresses()
                                                         {}, Address{2}));
 }
 
-QTEST_GUILESS_MAIN(TestItemAddress)
+AWB_TEST_GUILESS_MAIN(TestItemAddress)
 #include "test_item_address.moc"

@@ -10,6 +10,8 @@
 #include <QSignalSpy>
 #include <QtTest>
 
+#include "TestMain.h"
+
 using namespace awb;
 using awb::test::curve;
 using awb::test::curveNamed;
@@ -335,5 +337,5 @@ private:
     SubdivisionCurveItem *m_c = nullptr;
 };
 
-QTEST_GUILESS_MAIN(TestItemCommands)
+AWB_TEST_GUILESS_MAIN(TestItemCommands)
 #include "test_item_commands.moc"

@@ -3,6 +3,7 @@
 // back to its own value without an undo step.
 
 #include "ItemKindTests.h"
+#include "TestMain.h"
 
 #include "model/ItemRegistry.h"
 
@@ -49,5 +50,5 @@ void TestItemKinds::defaultItemsWork()
     QCOMPARE(p.undoStack()->count(), steps);
 }
 
-QTEST_GUILESS_MAIN(TestItemKinds)
+AWB_TEST_GUILESS_MAIN(TestItemKinds)
 #include "test_item_kinds.moc"

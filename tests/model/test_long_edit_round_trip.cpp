@@ -13,6 +13,8 @@
 
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include <random>
 
 using namespace awb;
@@ -324,5 +326,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestLongEditRoundTrip)
+AWB_TEST_GUILESS_MAIN(TestLongEditRoundTrip)
 #include "test_long_edit_round_trip.moc"

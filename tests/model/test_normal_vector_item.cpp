@@ -6,6 +6,7 @@
 
 #include "core/schemes/NormalVectorScheme.h"
 #include "model/NormalVectorItem.h"
+#include "TestMain.h"
 
 using namespace awb;
 
@@ -258,5 +259,5 @@ void TestNormalVectorItem::badFilesNameTheField()
     QVERIFY2(error.contains(message), qPrintable(error));
 }
 
-QTEST_GUILESS_MAIN(TestNormalVectorItem)
+AWB_TEST_GUILESS_MAIN(TestNormalVectorItem)
 #include "test_normal_vector_item.moc"

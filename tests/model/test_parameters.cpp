@@ -2,6 +2,7 @@
 // use to list and edit every scalar parameter of an item, through the undo stack.
 
 #include "TestProjects.h"
+#include "TestMain.h"
 
 using namespace awb;
 
@@ -76,5 +77,5 @@ void TestParameters::refusedValuesExplainWhy()
     QCOMPARE(project.undoStack()->count(), steps);
 }
 
-QTEST_GUILESS_MAIN(TestParameters)
+AWB_TEST_GUILESS_MAIN(TestParameters)
 #include "test_parameters.moc"

@@ -13,6 +13,8 @@
 #include <QRegularExpression>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include <cstring>
 
 using namespace awb;
@@ -423,5 +425,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestProjectIO)
+AWB_TEST_GUILESS_MAIN(TestProjectIO)
 #include "test_project_io.moc"

@@ -10,6 +10,8 @@
 #include <QSignalSpy>
 #include <QtTest>
 
+#include "TestMain.h"
+
 using namespace awb;
 using awb::test::curve;
 using awb::test::curveNamed;
@@ -342,5 +344,5 @@ private:
     SubdivisionCurveItem *m_c = nullptr;
 };
 
-QTEST_GUILESS_MAIN(TestPropertyCommands)
+AWB_TEST_GUILESS_MAIN(TestPropertyCommands)
 #include "test_property_commands.moc"

@@ -9,6 +9,8 @@
 #include <QAbstractItemModelTester>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include <random>
 
 using namespace awb;
@@ -274,5 +276,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRandomEdits)
+AWB_TEST_GUILESS_MAIN(TestRandomEdits)
 #include "test_random_edits.moc"

@@ -11,6 +11,7 @@
 
 #include "model/ProjectIO.h"
 #include "model/Recovery.h"
+#include "TestMain.h"
 
 #include <QDeadlineTimer>
 #include <QDir>
@@ -107,7 +108,7 @@ private slots:
         }
         QProcess child;
         child.start(QCoreApplication::applicationFilePath(),
-                    {"--recovery-child", recoveryDir, original});
+                    test::childArguments({"--recovery-child", recoveryDir, original}));
         QVERIFY(child.waitForStarted());
         const QByteArray out = waitFor(child, "autosaved");
         QVERIFY2(out.contains("autosaved"), (out + child.readAllStandardError()).constData());
@@ -155,7 +156,8 @@ private slots:
         int sawA = 0, sawB = 0;
         for (int round = 0; round < 8; ++round) {
             QProcess child;
-            child.start(QCoreApplication::applicationFilePath(), {"--save-loop", file});
+            child.start(QCoreApplication::applicationFilePath(),
+                        test::childArguments({"--save-loop", file}));
             QVERIFY(child.waitForStarted());
             QVERIFY(waitFor(child, "saved").contains("saved"));
             // Watch the file while the child saves over it, then kill the child at once: a
@@ -310,7 +312,9 @@ private slots:
     }
 };
 
-int main(int argc, char **argv)
+namespace {
+
+int runRecoveryTest(int argc, char **argv)
 {
     QCoreApplication app(argc, argv);
     const QStringList args = app.arguments();
@@ -322,5 +326,9 @@ int main(int argc, char **argv)
     QTEST_SET_MAIN_SOURCE_PATH
     return QTest::qExec(&test, argc, argv);
 }
+
+} // namespace
+
+AWB_TEST_CUSTOM_MAIN(runRecoveryTest)
 
 #include "test_recovery.moc"

@@ -7,6 +7,7 @@
 #include "core/analysis/Geometry.h"
 #include "core/ifs/SurfaceIfs.h"
 #include "model/SubdivisionSurfaceItem.h"
+#include "TestMain.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -368,5 +369,5 @@ void TestSurfaceItem::examplesLieOnTheirLimitSurface()
     }
 }
 
-QTEST_MAIN(TestSurfaceItem)
+AWB_TEST_MAIN(TestSurfaceItem)
 #include "test_surface_item.moc"

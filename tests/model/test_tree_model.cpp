@@ -10,6 +10,8 @@
 #include <QSignalSpy>
 #include <QtTest>
 
+#include "TestMain.h"
+
 using namespace awb;
 using awb::test::curve;
 using awb::test::scheme;
@@ -208,5 +210,5 @@ private:
     std::unique_ptr<QAbstractItemModelTester> m_tester;
 };
 
-QTEST_GUILESS_MAIN(TestTreeModel)
+AWB_TEST_GUILESS_MAIN(TestTreeModel)
 #include "test_tree_model.moc"

@@ -14,6 +14,8 @@
 #include <QJsonObject>
 #include <QtTest>
 
+#include "TestMain.h"
+
 #include <functional>
 
 using namespace awb;
@@ -158,5 +160,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestWrongTypes)
+AWB_TEST_GUILESS_MAIN(TestWrongTypes)
 #include "test_wrong_types.moc"
