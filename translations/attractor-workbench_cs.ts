@@ -227,6 +227,33 @@
     </message>
 </context>
 <context>
+    <name>awb</name>
+    <message>
+        <source>the SVG does not parse: %1 (line %2, column %3)</source>
+        <translation>SVG nelze přečíst: %1 (řádek %2, sloupec %3)</translation>
+    </message>
+    <message>
+        <source>%1: cannot read the figure: %2</source>
+        <translation>%1: obrázek nelze přečíst: %2</translation>
+    </message>
+    <message>
+        <source>larger than 512 MB</source>
+        <translation>větší než 512 MB</translation>
+    </message>
+    <message>
+        <source>neither a PNG nor an SVG</source>
+        <translation>není PNG ani SVG</translation>
+    </message>
+    <message>
+        <source>its project is larger than 64 MB</source>
+        <translation>jeho projekt je větší než 64 MB</translation>
+    </message>
+    <message>
+        <source>%1: this %2 holds no Attractor Workbench item (only figures exported by Attractor Workbench carry their parameters)</source>
+        <translation>%1: tento %2 neobsahuje žádnou položku Attractor Workbench (parametry nesou jen obrázky exportované z Attractor Workbench)</translation>
+    </message>
+</context>
+<context>
     <name>awb::AddressPanel</name>
     <message>
         <source>Address 0,1,1 or interval [0.25, 0.5]</source>
@@ -1360,21 +1387,6 @@
     </message>
 </context>
 <context>
-    <name>awb::FigureMetadata</name>
-    <message>
-        <source>%1: cannot read the PNG: %2</source>
-        <translation>%1: PNG nelze přečíst: %2</translation>
-    </message>
-    <message>
-        <source>larger than 512 MB</source>
-        <translation>větší než 512 MB</translation>
-    </message>
-    <message>
-        <source>%1: this PNG holds no Attractor Workbench item (only figures exported by Attractor Workbench carry their parameters)</source>
-        <translation>%1: tento PNG neobsahuje žádnou položku Attractor Workbench (parametry nesou jen obrázky exportované z Attractor Workbench)</translation>
-    </message>
-</context>
-<context>
     <name>awb::FigureSheet</name>
     <message>
         <source>yes</source>
@@ -2132,10 +2144,6 @@ Odečíst rozdíl %7 od prvku ve sloupci %8 (%9 → %10), aby byl součet řádk
         <translation>Projekt „%1“ obsahuje neuložené změny. Chcete je uložit?</translation>
     </message>
     <message>
-        <source>Projects and figures with their item (*.awb *.png);;Attractor Workbench projects (*.awb);;Exported figures (*.png);;All files (*)</source>
-        <translation>Projekty a obrázky s položkou (*.awb *.png);;Projekty Attractor Workbench (*.awb);;Exportované obrázky (*.png);;Všechny soubory (*)</translation>
-    </message>
-    <message>
         <source>Save Project As</source>
         <translation>Uložit projekt jako</translation>
     </message>
@@ -2322,6 +2330,10 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>Opened the example %1 (a copy: Save As keeps it)</source>
         <translation>Otevřen příklad %1 (kopie: Uložit jako ji zachová)</translation>
+    </message>
+    <message>
+        <source>Projects and figures with their item (*.awb *.png *.svg);;Attractor Workbench projects (*.awb);;Exported figures (*.png *.svg);;All files (*)</source>
+        <translation>Projekty a obrázky s položkou (*.awb *.png *.svg);;Projekty Attractor Workbench (*.awb);;Exportované obrázky (*.png *.svg);;Všechny soubory (*)</translation>
     </message>
 </context>
 <context>

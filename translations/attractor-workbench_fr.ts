@@ -227,6 +227,33 @@
     </message>
 </context>
 <context>
+    <name>awb</name>
+    <message>
+        <source>the SVG does not parse: %1 (line %2, column %3)</source>
+        <translation>le SVG ne se lit pas : %1 (ligne %2, colonne %3)</translation>
+    </message>
+    <message>
+        <source>%1: cannot read the figure: %2</source>
+        <translation>%1 : impossible de lire la figure : %2</translation>
+    </message>
+    <message>
+        <source>larger than 512 MB</source>
+        <translation>plus de 512 Mo</translation>
+    </message>
+    <message>
+        <source>neither a PNG nor an SVG</source>
+        <translation>ni un PNG ni un SVG</translation>
+    </message>
+    <message>
+        <source>its project is larger than 64 MB</source>
+        <translation>son projet dépasse 64 Mo</translation>
+    </message>
+    <message>
+        <source>%1: this %2 holds no Attractor Workbench item (only figures exported by Attractor Workbench carry their parameters)</source>
+        <translation>%1 : ce %2 ne contient aucun élément Attractor Workbench (seules les figures exportées par Attractor Workbench portent leurs paramètres)</translation>
+    </message>
+</context>
+<context>
     <name>awb::AddressPanel</name>
     <message>
         <source>Address 0,1,1 or interval [0.25, 0.5]</source>
@@ -1359,21 +1386,6 @@
     </message>
 </context>
 <context>
-    <name>awb::FigureMetadata</name>
-    <message>
-        <source>%1: cannot read the PNG: %2</source>
-        <translation>%1&#xa0;: impossible de lire le PNG&#xa0;: %2</translation>
-    </message>
-    <message>
-        <source>larger than 512 MB</source>
-        <translation>plus de 512 Mo</translation>
-    </message>
-    <message>
-        <source>%1: this PNG holds no Attractor Workbench item (only figures exported by Attractor Workbench carry their parameters)</source>
-        <translation>%1&#xa0;: ce PNG ne contient aucun élément Attractor Workbench (seules les figures exportées par Attractor Workbench portent leurs paramètres)</translation>
-    </message>
-</context>
-<context>
     <name>awb::FigureSheet</name>
     <message>
         <source>yes</source>
@@ -2129,10 +2141,6 @@ Retrancher la différence %7 du coefficient de la colonne %8 (%9 → %10) pour q
         <translation>Le projet «&#xa0;%1&#xa0;» contient des modifications non enregistrées. Voulez-vous les enregistrer&#x202f;?</translation>
     </message>
     <message>
-        <source>Projects and figures with their item (*.awb *.png);;Attractor Workbench projects (*.awb);;Exported figures (*.png);;All files (*)</source>
-        <translation>Projets et figures avec leur élément (*.awb *.png);;Projets Attractor Workbench (*.awb);;Figures exportées (*.png);;Tous les fichiers (*)</translation>
-    </message>
-    <message>
         <source>Save Project As</source>
         <translation>Enregistrer le projet sous</translation>
     </message>
@@ -2319,6 +2327,10 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>Opened the example %1 (a copy: Save As keeps it)</source>
         <translation>Exemple %1 ouvert (une copie : « Enregistrer sous » la conserve)</translation>
+    </message>
+    <message>
+        <source>Projects and figures with their item (*.awb *.png *.svg);;Attractor Workbench projects (*.awb);;Exported figures (*.png *.svg);;All files (*)</source>
+        <translation>Projets et figures avec leur élément (*.awb *.png *.svg);;Projets Attractor Workbench (*.awb);;Figures exportées (*.png *.svg);;Tous les fichiers (*)</translation>
     </message>
 </context>
 <context>

@@ -227,6 +227,33 @@
     </message>
 </context>
 <context>
+    <name>awb</name>
+    <message>
+        <source>the SVG does not parse: %1 (line %2, column %3)</source>
+        <translation>SVG 无法解析：%1（第 %2 行，第 %3 列）</translation>
+    </message>
+    <message>
+        <source>%1: cannot read the figure: %2</source>
+        <translation>%1：无法读取图形：%2</translation>
+    </message>
+    <message>
+        <source>larger than 512 MB</source>
+        <translation>大于 512 MB</translation>
+    </message>
+    <message>
+        <source>neither a PNG nor an SVG</source>
+        <translation>既不是 PNG 也不是 SVG</translation>
+    </message>
+    <message>
+        <source>its project is larger than 64 MB</source>
+        <translation>其项目大于 64 MB</translation>
+    </message>
+    <message>
+        <source>%1: this %2 holds no Attractor Workbench item (only figures exported by Attractor Workbench carry their parameters)</source>
+        <translation>%1：此 %2 不包含 Attractor Workbench 对象（只有由 Attractor Workbench 导出的图形才带有其参数）</translation>
+    </message>
+</context>
+<context>
     <name>awb::AddressPanel</name>
     <message>
         <source>Address 0,1,1 or interval [0.25, 0.5]</source>
@@ -1358,21 +1385,6 @@
     </message>
 </context>
 <context>
-    <name>awb::FigureMetadata</name>
-    <message>
-        <source>%1: cannot read the PNG: %2</source>
-        <translation>%1：无法读取该 PNG：%2</translation>
-    </message>
-    <message>
-        <source>larger than 512 MB</source>
-        <translation>大于 512 MB</translation>
-    </message>
-    <message>
-        <source>%1: this PNG holds no Attractor Workbench item (only figures exported by Attractor Workbench carry their parameters)</source>
-        <translation>%1：此 PNG 不包含 Attractor Workbench 对象（只有由 Attractor Workbench 导出的图形才带有其参数）</translation>
-    </message>
-</context>
-<context>
     <name>awb::FigureSheet</name>
     <message>
         <source>yes</source>
@@ -2126,10 +2138,6 @@ Take the difference %7 from the entry in column %8 (%9 → %10) so that the row 
         <translation>项目“%1”有未保存的更改。是否保存？</translation>
     </message>
     <message>
-        <source>Projects and figures with their item (*.awb *.png);;Attractor Workbench projects (*.awb);;Exported figures (*.png);;All files (*)</source>
-        <translation>项目及带有对象的图形 (*.awb *.png);;Attractor Workbench 项目 (*.awb);;导出的图形 (*.png);;所有文件 (*)</translation>
-    </message>
-    <message>
         <source>Save Project As</source>
         <translation>项目另存为</translation>
     </message>
@@ -2316,6 +2324,10 @@ It was kept as %2.</source>
     <message>
         <source>Opened the example %1 (a copy: Save As keeps it)</source>
         <translation>已打开示例 %1（副本：另存为可保留）</translation>
+    </message>
+    <message>
+        <source>Projects and figures with their item (*.awb *.png *.svg);;Attractor Workbench projects (*.awb);;Exported figures (*.png *.svg);;All files (*)</source>
+        <translation>项目及带有对象的图形 (*.awb *.png *.svg);;Attractor Workbench 项目 (*.awb);;导出的图形 (*.png *.svg);;所有文件 (*)</translation>
     </message>
 </context>
 <context>

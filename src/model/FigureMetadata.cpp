@@ -8,8 +8,12 @@
 #include <QCoreApplication>
 #include <QFile>
 #include <QJsonArray>
+#include <QXmlStreamReader>
+
+#include <zlib.h>
 
 #include <algorithm>
+#include <limits>
 
 namespace awb {
 
@@ -47,16 +51,16 @@ QByteArray svgMetadataElement(const QByteArray &projectBytes)
            + "]]></awb:project>\n</metadata>\n";
 }
 
-bool isPngFile(const QString &fileName)
-{
-    QFile f(fileName);
-    return f.open(QIODevice::ReadOnly) && f.read(8) == QByteArray("\x89PNG\r\n\x1a\n", 8);
-}
-
 namespace {
 
 constexpr qint64 kMaxFigureFile = 512ll << 20;  // a figure larger than this is no figure
 constexpr qsizetype kMaxProjectText = 64 << 20;  // decompressed project text
+const QByteArray kPngSignature("\x89PNG\r\n\x1a\n", 8);
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("awb::FigureMetadata", text);
+}
 
 quint32 bigEndian32(const char *p)
 {
@@ -64,15 +68,34 @@ quint32 bigEndian32(const char *p)
            | quint32(uchar(p[3]));
 }
 
+// A zlib stream inflated to at most kMaxProjectText bytes: empty when it is malformed or
+// larger (qUncompress doubles its buffer until the data fits: a 1 MB chunk of zeros asked it
+// for 1 GB).
 QByteArray inflate(const QByteArray &zlib)
 {
-    // qUncompress wants the length first; it grows its buffer when the hint is short.
-    const quint32 hint = quint32(std::min<qsizetype>(kMaxProjectText, 16 * zlib.size() + 1024));
-    QByteArray framed(4, '\0');
-    framed[0] = char(hint >> 24), framed[1] = char(hint >> 16), framed[2] = char(hint >> 8),
-    framed[3] = char(hint);
-    const QByteArray out = qUncompress(framed + zlib);
-    return out.size() <= kMaxProjectText ? out : QByteArray();
+    z_stream z{};
+    if (inflateInit(&z) != Z_OK)
+        return {};
+    QByteArray out;
+    char buffer[1 << 16];
+    z.next_in = reinterpret_cast<Bytef *>(const_cast<char *>(zlib.constData()));
+    z.avail_in = uInt(std::min<qsizetype>(zlib.size(), std::numeric_limits<uInt>::max()));
+    int status = Z_OK;
+    while (status == Z_OK) {
+        z.next_out = reinterpret_cast<Bytef *>(buffer);
+        z.avail_out = sizeof buffer;
+        status = ::inflate(&z, Z_NO_FLUSH);
+        if (status != Z_OK && status != Z_STREAM_END)
+            break;
+        out.append(buffer, qsizetype(sizeof buffer - z.avail_out));
+        if (out.size() > kMaxProjectText || (status == Z_OK && z.avail_in == 0
+                                             && z.avail_out != 0)) {
+            status = Z_DATA_ERROR;  // too large, or the stream ends before its end
+            break;
+        }
+    }
+    inflateEnd(&z);
+    return status == Z_STREAM_END ? out : QByteArray();
 }
 
 // The text of `key` in a PNG's tEXt, zTXt or iTXt chunks, byte for byte (QImageReader::text
@@ -114,29 +137,92 @@ QByteArray pngText(const QByteArray &png, const QByteArray &key)
     return {};
 }
 
+// The text of the SVG's <awb:project> element (svgMetadataElement), CDATA sections joined.
+// Empty with *problem set when the XML does not parse before it; empty alone when there is
+// none. QXmlStreamReader reads no external entity and bounds the expansion of internal ones.
+QByteArray svgProject(const QByteArray &svg, QString *problem)
+{
+    static const QString ns = QStringLiteral("https://attractor-workbench.invalid/project");
+    QXmlStreamReader xml(svg);
+    while (!xml.atEnd()) {
+        if (xml.readNext() == QXmlStreamReader::StartElement && xml.name() == u"project"
+            && xml.namespaceUri() == ns) {
+            const QString text = xml.readElementText(QXmlStreamReader::ErrorOnUnexpectedElement);
+            if (xml.hasError())
+                break;
+            return text.toUtf8().left(kMaxProjectText + 1);
+        }
+    }
+    if (xml.hasError())
+        *problem = tr("the SVG does not parse: %1 (line %2, column %3)")
+                       .arg(xml.errorString())
+                       .arg(xml.lineNumber())
+                       .arg(xml.columnNumber());
+    return {};
+}
+
 } // namespace
 
-QByteArray embeddedProject(const QString &pngFile, QString *error)
+FigureFormat figureFormat(const QByteArray &head)
 {
-    QFile file(pngFile);
+    if (head.startsWith(kPngSignature))
+        return FigureFormat::Png;
+    // XML: a byte order mark, then white space, a declaration or comments before the root.
+    QByteArrayView text(head);
+    if (text.startsWith("\xEF\xBB\xBF"))
+        text = text.sliced(3);
+    text = text.trimmed();
+    if (!text.startsWith('<'))
+        return FigureFormat::None;
+    const qsizetype svg = text.first(std::min<qsizetype>(text.size(), 4096)).indexOf("<svg");
+    return svg >= 0 ? FigureFormat::Svg : FigureFormat::None;
+}
+
+FigureFormat figureFileFormat(const QString &fileName)
+{
+    QFile f(fileName);
+    return f.open(QIODevice::ReadOnly) ? figureFormat(f.read(4096)) : FigureFormat::None;
+}
+
+QByteArray embeddedProject(const QString &figureFile, QString *error)
+{
+    QFile file(figureFile);
     if (!file.open(QIODevice::ReadOnly) || file.size() > kMaxFigureFile) {
         if (error)
-            *error = QCoreApplication::translate("awb::FigureMetadata",
-                                                 "%1: cannot read the PNG: %2")
-                         .arg(pngFile, file.isOpen()
-                                           ? QCoreApplication::translate("awb::FigureMetadata",
-                                                                         "larger than 512 MB")
-                                           : file.errorString());
+            *error = tr("%1: cannot read the figure: %2")
+                         .arg(figureFile, file.isOpen() ? tr("larger than 512 MB")
+                                                        : file.errorString());
         return {};
     }
-    const QByteArray text = pngText(file.readAll(), QByteArray(kFigureProjectKey));
-    if (text.isEmpty()) {
+    return embeddedProject(file.readAll(), figureFile, error);
+}
+
+QByteArray embeddedProject(const QByteArray &figure, const QString &fileName, QString *error)
+{
+    QString problem;
+    QByteArray text;
+    switch (figureFormat(figure.left(4096))) {
+    case FigureFormat::Png:
+        text = pngText(figure, QByteArray(kFigureProjectKey));
+        break;
+    case FigureFormat::Svg:
+        text = svgProject(figure, &problem);
+        break;
+    case FigureFormat::None:
+        problem = tr("neither a PNG nor an SVG");
+        break;
+    }
+    if (text.size() > kMaxProjectText)
+        problem = tr("its project is larger than 64 MB");
+    if (!problem.isEmpty() || text.isEmpty()) {
         if (error)
-            *error = QCoreApplication::translate(
-                         "awb::FigureMetadata",
-                         "%1: this PNG holds no Attractor Workbench item (only figures exported "
-                         "by Attractor Workbench carry their parameters)")
-                         .arg(pngFile);
+            *error = problem.isEmpty()
+                         ? tr("%1: this %2 holds no Attractor Workbench item (only figures "
+                              "exported by Attractor Workbench carry their parameters)")
+                               .arg(fileName, figureFormat(figure.left(4096)) == FigureFormat::Svg
+                                                  ? QStringLiteral("SVG")
+                                                  : QStringLiteral("PNG"))
+                         : QStringLiteral("%1: %2").arg(fileName, problem);
         return {};
     }
     return text;

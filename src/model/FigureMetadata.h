@@ -2,9 +2,9 @@
 // Figures that carry their parameters (layer 2, model: QtCore/QtGui). A PNG the application or
 // the CLI exports holds, in PNG text chunks as flam3 keeps its flame parameters, the program's
 // version and a complete project file holding the item drawn (and, for an eigenvalue plot, the
-// item it analyses); an SVG holds the same project in its <metadata>. Opening such a PNG (File
-// > Open, attractor-cli) restores the item exactly: it is read by the project loader, with all
-// of its checks, as an untitled project, never saved over the picture.
+// item it analyses); an SVG holds the same project in its <metadata>. Opening such a PNG or SVG
+// (File > Open, attractor-cli) restores the item exactly: it is read by the project loader, with
+// all of its checks, as an untitled project, never saved over the picture.
 #include <QByteArray>
 #include <QList>
 #include <QPair>
@@ -27,10 +27,20 @@ QList<QPair<QString, QString>> figurePngTexts(const QByteArray &projectBytes);
 // (render/FigureFile.h writes both).
 QByteArray svgMetadataElement(const QByteArray &projectBytes);
 
-// Whether the file is a PNG (by its signature, not its name).
-bool isPngFile(const QString &fileName);
-// The embedded project bytes of a PNG; empty with *error naming the problem when there are
-// none (a PNG from elsewhere) or the file cannot be read.
-QByteArray embeddedProject(const QString &pngFile, QString *error);
+// The kinds of figure that can carry a project, told by their first bytes, not their name:
+// the PNG signature, or XML text (after a byte order mark, white space, an XML declaration or
+// comments) with an <svg element in its first 4 KB.
+enum class FigureFormat { None, Png, Svg };
+FigureFormat figureFormat(const QByteArray &head);
+// The format of a file (None when it cannot be read).
+FigureFormat figureFileFormat(const QString &fileName);
+
+// The embedded project bytes of a PNG or SVG file; empty with *error naming the problem when
+// there are none (a figure from elsewhere) or the file cannot be read.
+QByteArray embeddedProject(const QString &figureFile, QString *error);
+// The same for the figure's bytes; `fileName` only names the file in messages. A malformed
+// figure (a truncated chunk, XML that does not parse, a project over 64 MB) is refused with a
+// message (tests/fuzz: fuzz_png_project, fuzz_svg_project).
+QByteArray embeddedProject(const QByteArray &figure, const QString &fileName, QString *error);
 
 } // namespace awb

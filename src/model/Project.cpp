@@ -318,7 +318,7 @@ void Project::invalidateAllReaders()
 bool Project::open(const QString &fileName, QString *error)
 {
     ProjectData data;
-    if (isPngFile(fileName)) {
+    if (figureFileFormat(fileName) != FigureFormat::None) {
         // A figure exported with its parameters (model/FigureMetadata.h): its project goes
         // through the same loader, and opens untitled and unsaved, so that saving never
         // writes over the picture.

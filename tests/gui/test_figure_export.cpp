@@ -268,7 +268,7 @@ void TestFigureExport::sheetMatricesAreAtLeast8pt()
 // A PNG export carries the item's project (and the version) in PNG text chunks, as flam3 keeps
 // its flames; opening the PNG gives back the same item, byte for byte in its JSON, untitled
 // (saving never writes over the picture); attractor-cli reads it too; an SVG carries it in its
-// <metadata>; a PNG from elsewhere is refused with a message.
+// <metadata> and reopens the same way; a PNG from elsewhere is refused with a message.
 void TestFigureExport::pngCarriesItsItemAndReopens()
 {
     QTemporaryDir out;
@@ -310,6 +310,12 @@ void TestFigureExport::pngCarriesItsItemAndReopens()
     const QByteArray svgBytes = readAll(svg);
     QVERIFY(svgBytes.contains("<metadata id=\"attractor-workbench-project\">"));
     QVERIFY(svgBytes.contains(test::fig2Curve.toUtf8()));
+    // The SVG reopens to the same item.
+    Project fromSvg;
+    QVERIFY2(fromSvg.open(svg, &error), qPrintable(error));
+    QVERIFY(fromSvg.fileName().isEmpty());
+    QCOMPARE(ProjectIO::itemToJson(*fromSvg.findItem(test::fig2Curve)),
+             ProjectIO::itemToJson(*original.findItem(test::fig2Curve)));
 
     // A PNG without an item.
     QImage plain(8, 8, QImage::Format_RGB32);

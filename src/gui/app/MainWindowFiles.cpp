@@ -174,8 +174,8 @@ void MainWindow::openDialog()
         return;
     const QString name = QFileDialog::getOpenFileName(
         this, tr("Open Project"), QFileInfo(m_project->fileName()).path(),
-        tr("Projects and figures with their item (*.awb *.png);;Attractor Workbench projects "
-           "(*.awb);;Exported figures (*.png);;All files (*)"));
+        tr("Projects and figures with their item (*.awb *.png *.svg);;Attractor Workbench "
+           "projects (*.awb);;Exported figures (*.png *.svg);;All files (*)"));
     if (!name.isEmpty())
         openFile(name);
 }
