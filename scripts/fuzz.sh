@@ -6,6 +6,10 @@
 #                        and saved again to the same bytes
 #   fuzz_item_ifs        the same, and every attractor item's IFS built or refused with a reason
 #                        (the item readers and the schemes on the loaded fields)
+#   fuzz_png_project     any bytes as a PNG figure with its project (text chunks, zTXt and
+#                        iTXt inflated within 64 MB): refused with a message, or the project
+#                        through fuzz_project_loader's checks
+#   fuzz_svg_project     the same for an SVG figure (its <metadata>, the XML reader)
 #   fuzz_cli_arguments   the command line of `attractor-cli points` (start sets, addresses,
 #                        depths, names) on a real example
 # Seeds: the examples, the bad files of the tests (tests/fuzz/seeds/) and the crashes found so
@@ -15,6 +19,7 @@
 # The mutations follow a fixed seed (AWB_FUZZ_SEED, default 1), so a run is repeatable: CI's
 # 60-second smoke explores the same inputs as `scripts/fuzz.sh 60` here, up to the machine's
 # speed. Long campaigns should vary it (AWB_FUZZ_SEED=0: libFuzzer picks one and logs it).
+# Targets run side by side, one per core (AWB_FUZZ_JOBS).
 #   scripts/fuzz.sh [SECONDS] [TARGET...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,35 +27,56 @@ SECS="${1:-60}"
 SEED="${AWB_FUZZ_SEED:-1}"
 shift || true
 TARGETS=("$@")
-[ ${#TARGETS[@]} -gt 0 ] || TARGETS=(fuzz_project_loader fuzz_item_ifs fuzz_cli_arguments)
+[ ${#TARGETS[@]} -gt 0 ] || TARGETS=(fuzz_project_loader fuzz_item_ifs fuzz_png_project
+                                     fuzz_svg_project fuzz_cli_arguments)
 bash scripts/setup.sh --packages-only
 bash scripts/configure-asan.sh
 cmake --build build-asan --parallel "$(nproc)" --target "${TARGETS[@]}"
 source scripts/sanitizer-env.sh
 export QT_QPA_PLATFORM=offscreen
-status=0
-for t in "${TARGETS[@]}"; do
-  corpus="build-asan/corpus/$t"
-  artifacts="build-asan/artifacts/$t/"
+# One target per core at a time (each fuzzer is one process): 5 targets of 60 s in 3 minutes
+# on 2 cores. AWB_FUZZ_JOBS overrides.
+jobs="${AWB_FUZZ_JOBS:-$(nproc)}"
+fuzz_one() {
+  local t="$1"
+  local corpus="build-asan/corpus/$t" artifacts="build-asan/artifacts/$t/"
   mkdir -p "$corpus" "$artifacts"
-  seeds=()
+  local seeds=()
   case "$t" in
     fuzz_project_loader|fuzz_item_ifs)
       seeds=(examples tests/fuzz/seeds/loader tests/fuzz/regressions/loader) ;;
+    fuzz_png_project) seeds=(tests/fuzz/seeds/png tests/fuzz/regressions/png) ;;
+    fuzz_svg_project) seeds=(tests/fuzz/seeds/svg tests/fuzz/regressions/svg) ;;
     fuzz_cli_arguments) seeds=(tests/fuzz/seeds/cli tests/fuzz/regressions/cli) ;;
   esac
-  existing=()
+  local existing=() s
   for s in "${seeds[@]}"; do [ -d "$s" ] && existing+=("$s"); done
-  log="build-asan/$t.log"
+  local log="build-asan/$t.log" rc=0
   echo "fuzz: $t for $SECS s, seed $SEED"
-  if ! "build-asan/bin/$t" -seed="$SEED" -max_total_time="$SECS" -timeout=1 -rss_limit_mb=2048 \
-       -max_len=65536 -print_final_stats=1 -artifact_prefix="$artifacts" \
-       "$corpus" "${existing[@]}" > "$log" 2>&1; then
-    status=1
+  "build-asan/bin/$t" -seed="$SEED" -max_total_time="$SECS" -timeout=1 -rss_limit_mb=2048 \
+    -max_len=65536 -print_final_stats=1 -artifact_prefix="$artifacts" \
+    "$corpus" "${existing[@]}" > "$log" 2>&1 || rc=1
+  local runs
+  runs=$(grep -a -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')
+  if [ $rc -ne 0 ]; then
     echo "fuzz: $t FAILED; the input is in $artifacts, the log in $log"
     grep -a -E "ERROR|SUMMARY|Test unit written" "$log" | head -5 || true
   fi
-  runs=$(grep -a -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')
   echo "fuzz: $t: $runs executions in $SECS s, corpus $(ls "$corpus" | wc -l) inputs"
+  return $rc
+}
+status=0
+running=0
+for t in "${TARGETS[@]}"; do
+  if [ "$running" -ge "$jobs" ]; then
+    wait -n || status=1
+    running=$((running - 1))
+  fi
+  fuzz_one "$t" &
+  running=$((running + 1))
+done
+while [ "$running" -gt 0 ]; do
+  wait -n || status=1
+  running=$((running - 1))
 done
 exit $status
