@@ -709,9 +709,9 @@ void ItemController::startAnalysis()
                     series.depth.push_back(k);
                     series.distance.push_back(hausdorffToCurve(deepest, exact));
                 }
-                QMetaObject::invokeMethod(this, [this, k, maxDepth] {
+                m_inbox.post([this, k, maxDepth] {
                     emit analysisProgress(double(k + 1) / double(maxDepth + 2));
-                }, Qt::QueuedConnection);
+                });
             }
             if (!series.depth.empty())
                 result->distances.append(series);
@@ -728,10 +728,10 @@ void ItemController::startAnalysis()
         }
         result->cancelled = m_cancel;
         m_workerDone = true;
-        QMetaObject::invokeMethod(this, [this, result, ticket] {
+        m_inbox.post([this, result, ticket] {
             if (ticket == m_analysisTicket)
                 applyAnalysis(result);
-        }, Qt::QueuedConnection);
+        });
     });
 }
 

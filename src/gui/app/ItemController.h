@@ -7,6 +7,7 @@
 // worker thread that a newer edit cancels.
 #include "core/Types.h"
 #include "model/Item.h"
+#include "gui/views/ThreadInbox.h"
 #include "model/NamedMatrix.h"
 #include <QObject>
 #include <QPointer>
@@ -169,6 +170,7 @@ private:
     int m_highlightedMap = -1;
     QList<QColor> m_palette;
     QString m_problem;
+    ThreadInbox m_inbox{this}; // the analysis' results; declared before m_worker: outlives it
     std::thread m_worker;
     std::atomic<bool> m_cancel{false};
     std::atomic<bool> m_workerDone{true};

@@ -235,15 +235,12 @@ void AttractorRenderer::workerLoop()
 
 void AttractorRenderer::post(std::uint64_t serial, std::function<void()> fn)
 {
-    QMetaObject::invokeMethod(
-        this,
-        [this, serial, fn = std::move(fn)] {
-            if (serial < m_floor || serial < m_delivered)
-                return;
-            m_delivered = serial;
-            fn();
-        },
-        Qt::QueuedConnection);
+    m_inbox.post([this, serial, fn = std::move(fn)] {
+        if (serial < m_floor || serial < m_delivered)
+            return;
+        m_delivered = serial;
+        fn();
+    });
 }
 
 void AttractorRenderer::runJob(const Job &job)

@@ -14,6 +14,7 @@
 // (progress bars, the "Rendering…" note): an interactive pass is a frame, not a job.
 // Every pass is render/AttractorImage's renderAttractorImage(): the one raster engine.
 
+#include "gui/views/ThreadInbox.h"
 #include "render/AttractorImage.h"
 
 #include <QObject>
@@ -120,6 +121,7 @@ private:
     void post(std::uint64_t serial, std::function<void()> fn);
     void setBusy(bool busy);
 
+    ThreadInbox m_inbox{this};  // before m_thread: outlives the worker
     std::thread m_thread;
     mutable std::mutex m_mutex;
     std::condition_variable m_wake;

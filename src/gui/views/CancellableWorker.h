@@ -1,36 +1,40 @@
 #pragma once
 // One background computation at a time for a view (layer 3): start() cancels and joins the
-// previous run, hands the new one a cancel flag and a generation number; results posted back
-// with an older generation are stale and dropped by the view. The destructor cancels and joins,
-// so a view never outlives its worker's access to it.
+// previous run, hands the new one a cancel flag and a generation number; the job hands its
+// results to the view's thread with post() (a ThreadInbox), and results of an older generation
+// are stale and dropped by the view. The destructor cancels and joins, so a view never
+// outlives its worker's access to it.
 
-#include <QThread>
+#include "gui/views/ThreadInbox.h"
 
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <thread>
 
 namespace awb {
 
 class CancellableWorker {
 public:
-    CancellableWorker() = default;
+    // Results posted by the jobs run on the thread of `receiver` (the view).
+    explicit CancellableWorker(QObject *receiver) : m_inbox(receiver) {}
     CancellableWorker(const CancellableWorker &) = delete;
     CancellableWorker &operator=(const CancellableWorker &) = delete;
     ~CancellableWorker() { stop(); }
 
-    // Runs job(cancel flag, generation) on a new low-priority thread; returns the generation.
+    // Runs job(cancel flag, generation) on a new thread; returns the generation.
     quint64 start(std::function<void(const std::atomic<bool> *, quint64)> job)
     {
         const quint64 generation = bump();
         auto flag = std::make_shared<std::atomic<bool>>(false);
         m_flag = flag;
-        m_thread = QThread::create([job = std::move(job), flag, generation] {
+        m_thread = std::thread([job = std::move(job), flag, generation] {
             job(flag.get(), generation);
         });
-        m_thread->start(QThread::LowPriority);
         return generation;
     }
+    // From the job: runs `fn` on the receiver's thread, in the order posted.
+    void post(std::function<void()> fn) { m_inbox.post(std::move(fn)); }
     // Cancels and joins the running job and makes its pending results stale.
     quint64 bump()
     {
@@ -45,16 +49,14 @@ public:
     void stop()
     {
         cancel();
-        if (m_thread) {
-            m_thread->wait();
-            delete m_thread;
-            m_thread = nullptr;
-        }
+        if (m_thread.joinable())
+            m_thread.join();
     }
     bool isCurrent(quint64 generation) const { return generation == m_generation; }
 
 private:
-    QThread *m_thread = nullptr;
+    ThreadInbox m_inbox; // before m_thread: outlives the job
+    std::thread m_thread;
     std::shared_ptr<std::atomic<bool>> m_flag;
     quint64 m_generation = 0;
 };

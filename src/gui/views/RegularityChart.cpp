@@ -119,10 +119,9 @@ void RegularityChart::compute(double omegaMin, double omegaMax, int count, doubl
             if (!r.applies)
                 continue;
             const Sample s{omega, r.lower, r.upper};
-            QMetaObject::invokeMethod(this, [=, this] { addSample(s, count, generation); },
-                                      Qt::QueuedConnection);
+            m_worker.post([=, this] { addSample(s, count, generation); });
         }
-        QMetaObject::invokeMethod(this, [=, this] { done(generation); }, Qt::QueuedConnection);
+        m_worker.post([=, this] { done(generation); });
     });
 }
 

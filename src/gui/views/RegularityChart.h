@@ -53,7 +53,7 @@ private:
     QLabel *m_status = nullptr;
     QProgressBar *m_progress = nullptr;
     QPushButton *m_cancel = nullptr;
-    CancellableWorker m_worker;
+    CancellableWorker m_worker{this};
     std::vector<Sample> m_samples;
     bool m_running = false;
 };

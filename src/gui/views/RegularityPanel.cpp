@@ -149,8 +149,7 @@ void RegularityPanel::analyse(std::shared_ptr<const CurveScheme> scheme, int m, 
         o.timeBudget = budget;
         o.cancel = cancel;
         o.progress = [this, generation](double lo, double hi, double fraction) {
-            QMetaObject::invokeMethod(this, [=, this] { showProgress(lo, hi, fraction, generation); },
-                                      Qt::QueuedConnection);
+            m_worker.post([=, this] { showProgress(lo, hi, fraction, generation); });
         };
         Regularity r;
         try {
@@ -158,7 +157,7 @@ void RegularityPanel::analyse(std::shared_ptr<const CurveScheme> scheme, int m, 
         } catch (const std::exception &e) {
             r.message = std::string("does not apply: ") + e.what();
         }
-        QMetaObject::invokeMethod(this, [=, this] { showResult(r, generation); }, Qt::QueuedConnection);
+        m_worker.post([=, this] { showResult(r, generation); });
     });
 }
 

@@ -48,7 +48,7 @@ private:
     QLabel *m_method = nullptr;
     QProgressBar *m_progress = nullptr;
     QToolButton *m_cancel = nullptr;
-    CancellableWorker m_worker;
+    CancellableWorker m_worker{this};
     QString m_key;
     double m_budget = 2.0;
     bool m_running = false;

@@ -342,7 +342,7 @@ void SurfaceView::startMeshJob()
     // Posted per mesh, in order: the coarse one first (a frame now), then the full one.
     const auto deliver = [this, serial, input, fromDrag](std::shared_ptr<const SurfaceMesh> mesh,
                                                         bool full, double seconds) {
-        QMetaObject::invokeMethod(this, [=, this] {
+        m_inbox.post([=, this] {
             if (serial < m_meshes.serial)
                 return; // older than the mesh shown
             if (full && serial == m_dataSerial)
@@ -360,7 +360,7 @@ void SurfaceView::startMeshJob()
             m_meshBusy = serial != m_dataSerial || (!full && !pointMoving());
             requestFrame();
             emit frameReady();
-        }, Qt::QueuedConnection);
+        });
     };
     m_meshWorker->post([ifs, start, label, fullDepth, coarseDepth, moving, haveCoarse,
                         deliver](const std::atomic<bool> &cancel) {
@@ -480,7 +480,7 @@ void SurfaceView::requestCpuFrame()
             toImage(drawSurfaceMesh(*mesh, size.width(), size.height(), camera, radius, palette),
                     size);
         const double ms = timer.nsecsElapsed() * 1e-6;
-        QMetaObject::invokeMethod(this, [=, this] {
+        m_inbox.post([=, this] {
             // Frames come in order; each is the newest picture there is when it comes (the
             // next one is being drawn), unless the data went away meanwhile.
             if (serial < m_frameDelivered || (!m_meshes.coarse && !m_meshes.full))
@@ -498,7 +498,7 @@ void SurfaceView::requestCpuFrame()
             m_framePrimitives = mesh->size();
             update();
             emit frameReady();
-        }, Qt::QueuedConnection);
+        });
     }, false);
 }
 

@@ -20,6 +20,7 @@
 #include "core/render/SurfaceMesh.h"
 #include "core/render/SurfaceRaster.h"
 #include "gui/views/AttractorRenderer.h"
+#include "gui/views/ThreadInbox.h"
 
 #include <QElapsedTimer>
 #include <QImage>
@@ -228,6 +229,7 @@ private:
     SurfaceGLWindow *m_glWindow = nullptr;
     QWidget *m_glContainer = nullptr;
 
+    ThreadInbox m_inbox{this}; // the workers' results; declared before them, so it outlives them
     std::unique_ptr<LatestJobWorker> m_meshWorker, m_frameWorker;
     std::shared_ptr<const Ifs> m_ifs;
     StartSet m_start;
