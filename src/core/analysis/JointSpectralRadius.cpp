@@ -1,10 +1,8 @@
 #include "core/analysis/JointSpectralRadius.h"
 
+#include "core/Decompositions.h"
 #include "core/Messages.h"
 
-#include <Eigen/Cholesky>
-#include <Eigen/Dense>
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -71,7 +69,7 @@ private:
     {
         if (M.size() == 0)
             return 0.0;
-        Eigen::SelfAdjointEigenSolver<Mat> es(M.transpose() * M, Eigen::EigenvaluesOnly);
+        Eigen::SelfAdjointEigenSolver<Mat> es(Mat(M.transpose() * M), Eigen::EigenvaluesOnly);
         return std::sqrt(std::max(0.0, es.eigenvalues().maxCoeff()));
     }
     Kind m_kind;

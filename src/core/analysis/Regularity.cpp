@@ -1,10 +1,10 @@
 #include "core/analysis/Regularity.h"
 
+#include "core/Decompositions.h"
 #include "core/Messages.h"
 #include "core/analysis/Spectrum.h"
 #include "core/schemes/Scheme.h"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <numeric>

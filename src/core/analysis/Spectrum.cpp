@@ -1,9 +1,8 @@
 #include "core/analysis/Spectrum.h"
 
+#include "core/Decompositions.h"
 #include "core/Messages.h"
 
-#include <Eigen/Dense>
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <numeric>
 #include <sstream>

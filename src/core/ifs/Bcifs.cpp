@@ -1,9 +1,9 @@
 #include "core/ifs/Bcifs.h"
 
+#include "core/Decompositions.h"
 #include "core/Messages.h"
 #include "core/schemes/Scheme.h"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <sstream>

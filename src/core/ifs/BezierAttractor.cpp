@@ -1,9 +1,9 @@
 #include "core/ifs/BezierAttractor.h"
 
+#include "core/Decompositions.h"
 #include "core/Messages.h"
 #include "core/schemes/Curves.h"
 
-#include <Eigen/Dense>
 #include <cmath>
 #include <functional>
 #include <limits>

@@ -1,9 +1,9 @@
 #include "core/ifs/Cifs.h"
 
+#include "core/Decompositions.h"
 #include "core/Messages.h"
 #include "core/analysis/Spectrum.h"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <deque>

@@ -1,8 +1,8 @@
 #include "core/ifs/Ifs.h"
 
+#include "core/Decompositions.h"
 #include "core/Messages.h"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <sstream>

@@ -1,11 +1,11 @@
 #include "core/schemes/ComplexBezier.h"
 
+#include "core/Decompositions.h"
 #include "core/Messages.h"
 #include "core/ifs/Attractor.h"
 #include "core/schemes/Curves.h"
 #include "core/analysis/Geometry.h"
 
-#include <Eigen/Dense>
 #include <cmath>
 #include <sstream>
 

@@ -1,8 +1,7 @@
 #include "core/schemes/LatticeScheme.h"
 
+#include "core/Decompositions.h"
 #include "core/Messages.h"
-
-#include <Eigen/Eigenvalues>
 
 #include <cmath>
 #include <cstdlib>
@@ -129,7 +128,7 @@ void LatticeScheme::computeLimitStencil()
             L(k, it->second) = w;
         }
     // Left eigenvector for eigenvalue 1: l L = l, i.e. L^T l^T = l^T.
-    Eigen::EigenSolver<Mat> es(L.transpose());
+    Eigen::EigenSolver<Mat> es(Mat(L.transpose()));
     int best = -1;
     double gap = 1e300;
     for (int k = 0; k < n; ++k) {
