@@ -1,0 +1,115 @@
+#pragma once
+// What Engine.cpp and the engine's kernels share (private to core/render/Engine*.cpp): the
+// Stores a kernel writes its hits in, the views as affine maps to raster cells, the threads and
+// their histograms, and the entry to the fixed-dimension kernels of each Store, compiled in
+// files of their own (EngineRun.h). Engine.cpp includes this and not the kernels, so that an edit
+// of it compiles none of them.
+
+#include "core/render/Engine.h"
+
+#include <cmath>
+#include <thread>
+#include <vector>
+
+namespace awb::engine {
+
+
+constexpr int kMaxFixedDim = 12;
+constexpr int kInterleave = 4;  // orbits advanced together per thread
+
+// Whether the AVX2 kernels run: the processor has AVX2 and forceBaselineKernels is off
+// (Engine.cpp).
+bool haveAvx2();
+
+// How a kernel stores a hit (DensityImage's layouts): in buckets, the smallest label (hits) or
+// the colour coordinate (density); the count alone (a one-label image: a picture of one
+// colour, in either mode); the count in the label's plane (label planes).
+enum class Store { Hits, Colours, Counts, Planes };
+
+// A view as an affine map from IFS space straight to raster cells: cell = x V + c.
+struct CellView {
+    Mat V;      // D x 2
+    double c[2];
+};
+
+// Runs fn(t) on `threads` threads (t = 0 on the caller's).
+template <typename Fn>
+void onThreads(int threads, Fn fn)
+{
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t)
+        pool.emplace_back(fn, t);
+    fn(0);
+    for (auto &th : pool)
+        th.join();
+}
+
+// Words of the innermost `split` levels, at least 4 per thread, as tasks.
+inline std::vector<std::vector<int>> splitTasks(int N, int depth, int threads)
+{
+    int split = 0;
+    while (split < depth && std::pow(double(N), split) < 8.0 * threads && threads > 1)
+        ++split;
+    std::vector<std::vector<int>> tasks(1);
+    for (int s = 0; s < split; ++s) {
+        std::vector<std::vector<int>> next;
+        for (const auto &t : tasks)
+            for (int i = 0; i < N; ++i) {
+                auto u = t;
+                u.push_back(i);
+                next.push_back(u);
+            }
+        tasks.swap(next);
+    }
+    return tasks;
+}
+
+// The histograms of one render: images[0] is the caller's picture, the others the threads'
+// own, reused from one render to the next; clean[t]: images[t] is known to be empty (taken
+// whole by the last merge) and of this size and mode, so it needs no reset.
+struct Histograms {
+    std::vector<DensityImage *> images;
+    std::vector<char> clean;
+    CellLayout layout;  // buckets, one label's counts (one colour), or label planes
+
+    // Called by thread t before it draws.
+    void prepare(int t, const EngineJob &job) const
+    {
+        DensityImage &img = *images[std::size_t(t)];
+        if (!clean[std::size_t(t)] || img.cellsX() != job.frame.cellsX()
+            || img.cellsY() != job.frame.cellsY() || img.mode() != job.accumulation
+            || !(img.layout() == layout))
+            img.reset(job.frame.cellsX(), job.frame.cellsY(), job.accumulation, layout);
+    }
+};
+
+// The fixed-dimension kernels for IFS of dimensions Lo..Hi (<= kMaxFixedDim), writing in Store
+// `store`, one histogram per thread (EngineRun.h). Each range is compiled in a file of its own
+// (EngineDims*.cpp): the kernels of one dimension, shared by the four Stores, are compiled once,
+// and the files compile in parallel.
+template <int Lo, int Hi>
+IterationStats runFixedRange(Store store, int dim, const EngineJob &job,
+                             const std::vector<CellView> &cv, const Histograms &hist,
+                             const IterationControl &control);
+
+#define AWB_ENGINE_DIMS(Lo, Hi)                                                               \
+    template IterationStats runFixedRange<Lo, Hi>(Store, int, const EngineJob &,               \
+                                                  const std::vector<CellView> &,               \
+                                                  const Histograms &, const IterationControl &)
+extern AWB_ENGINE_DIMS(1, 4);
+extern AWB_ENGINE_DIMS(5, 8);
+extern AWB_ENGINE_DIMS(9, kMaxFixedDim);
+
+// The fixed-dimension kernels for an IFS of dimension `dim` <= kMaxFixedDim.
+inline IterationStats runFixedDims(Store store, int dim, const EngineJob &job,
+                                   const std::vector<CellView> &cv, const Histograms &hist,
+                                   const IterationControl &control)
+{
+    if (dim <= 4)
+        return runFixedRange<1, 4>(store, dim, job, cv, hist, control);
+    if (dim <= 8)
+        return runFixedRange<5, 8>(store, dim, job, cv, hist, control);
+    return runFixedRange<9, kMaxFixedDim>(store, dim, job, cv, hist, control);
+}
+
+} // namespace awb::engine
