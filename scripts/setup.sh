@@ -6,10 +6,12 @@ cd "$(dirname "$0")/.."
 
 PACKAGES=(
   build-essential cmake ninja-build pkg-config
+  ccache lld  # compile cache and fast linker, picked up by cmake/BuildSpeed.cmake
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-charts-dev qt6-svg-dev
   qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-translations-l10n libqcustomplot-dev
   libeigen3-dev zlib1g-dev
   libxkbcommon-dev xvfb xauth libgl1-mesa-dev x11-apps imagemagick fonts-dejavu-core poppler-utils
+  libxtst-dev xdotool  # attractor-bench-window: pointer moves through XTest, as a person drags
   fonts-wqy-microhei  # a CJK font: the Chinese translation on screen and in figures
   assimp-utils python3-meshio adwaita-icon-theme ffmpeg clang libclang-rt-14-dev
   # the Debian package (packaging/, scripts/package.sh, tests/packaging): icons, dpkg-shlibdeps, checks

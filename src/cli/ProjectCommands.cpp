@@ -41,8 +41,8 @@ namespace awb::cli {
 
 namespace {
 
-// lupdate takes the context of Tr::tr() from the macro.
-struct Tr {
+// lupdate takes the context of ProjectCommandsTr::tr() from the macro.
+struct ProjectCommandsTr {
     Q_DECLARE_TR_FUNCTIONS(awb::cli)
 };
 
@@ -73,7 +73,7 @@ void parseOrFail(QCommandLineParser &parser, const QStringList &args, int positi
         throw Failure{{}, 0};
     }
     if (parser.positionalArguments().size() != positional)
-        throw Failure{Tr::tr("expected %1 project file, got %2 arguments (see --help)")
+        throw Failure{ProjectCommandsTr::tr("expected %1 project file, got %2 arguments (see --help)")
                           .arg(positional)
                           .arg(parser.positionalArguments().size()),
                       2};
@@ -98,26 +98,26 @@ AttractorItem *attractorItem(const Project &project, const QString &name)
     if (!name.isEmpty()) {
         Item *item = project.findItem(name);
         if (!item)
-            throw Failure{Tr::tr("no item named '%1' in %2")
-                              .arg(name, project.fileName().isEmpty() ? Tr::tr("the figure's "
+            throw Failure{ProjectCommandsTr::tr("no item named '%1' in %2")
+                              .arg(name, project.fileName().isEmpty() ? ProjectCommandsTr::tr("the figure's "
                                                                                "project")
                                                                       : project.fileName())};
         auto *a = qobject_cast<AttractorItem *>(item);
         if (!a)
-            throw Failure{Tr::tr("item '%1' (%2) has no attractor").arg(name, item->typeName())};
+            throw Failure{ProjectCommandsTr::tr("item '%1' (%2) has no attractor").arg(name, item->typeName())};
         return a;
     }
     for (Item *item : project.items())
         if (auto *a = qobject_cast<AttractorItem *>(item))
             return a;
-    throw Failure{Tr::tr("%1 has no item with an attractor").arg(project.fileName())};
+    throw Failure{ProjectCommandsTr::tr("%1 has no item with an attractor").arg(project.fileName())};
 }
 
 std::shared_ptr<const DerivedIfs> derived(const AttractorItem *item)
 {
     auto d = item->derivedIfs();
     if (!d)
-        throw Failure{Tr::tr("item '%1': %2").arg(item->name(), item->derivedError())};
+        throw Failure{ProjectCommandsTr::tr("item '%1': %2").arg(item->name(), item->derivedError())};
     return d;
 }
 
@@ -126,7 +126,7 @@ int intOption(const QCommandLineParser &parser, const QString &name, int lo, int
     bool ok = false;
     const int v = parser.value(name).toInt(&ok);
     if (!ok || v < lo || v > hi)
-        throw Failure{Tr::tr("--%1 must be a whole number from %2 to %3, got '%4'")
+        throw Failure{ProjectCommandsTr::tr("--%1 must be a whole number from %2 to %3, got '%4'")
                           .arg(name)
                           .arg(lo)
                           .arg(hi)
@@ -155,7 +155,7 @@ double realOption(const QCommandLineParser &parser, const QString &name, double 
     bool ok = false;
     const double v = parser.value(name).toDouble(&ok);
     if (!ok || !std::isfinite(v) || v < lo || v > hi)
-        throw Failure{Tr::tr("--%1 must be a number from %2 to %3, got '%4'")
+        throw Failure{ProjectCommandsTr::tr("--%1 must be a number from %2 to %3, got '%4'")
                           .arg(name)
                           .arg(lo)
                           .arg(hi)
@@ -216,7 +216,7 @@ double requirePointBudget(const DerivedIfs &d, const StartSet &start, int depth,
     const double n = imageCount(d.ifs, depth) * double(start.vertices.rows())
                      * double(d.ifs.views.size());
     if (n > maxPoints)
-        throw Failure{Tr::tr("depth %1 gives %2 points, more than --max-points %3")
+        throw Failure{ProjectCommandsTr::tr("depth %1 gives %2 points, more than --max-points %3")
                           .arg(depth)
                           .arg(n, 0, 'g', 4)
                           .arg(maxPoints, 0, 'g', 4)};
@@ -471,29 +471,29 @@ int guarded(F &&body)
 // The options of `render` that `animate` shares: how a figure of an item is drawn.
 QList<QCommandLineOption> figureOptionList()
 {
-    return {{"size", Tr::tr("Image size in pixels (default 900x700)."), "WxH", "900x700"},
-            {"depth", Tr::tr("Deterministic iteration depth (default: the item's)."), "k"},
-            {"samples", Tr::tr("Random iteration with this many points (up to 1e12; "
+    return {{"size", ProjectCommandsTr::tr("Image size in pixels (default 900x700)."), "WxH", "900x700"},
+            {"depth", ProjectCommandsTr::tr("Deterministic iteration depth (default: the item's)."), "k"},
+            {"samples", ProjectCommandsTr::tr("Random iteration with this many points (up to 1e12; "
                                "memory stays that of the raster)."), "n"},
-            {"tone", Tr::tr("Raster tone: 'hits' (every lit pixel opaque, the papers' "
+            {"tone", ProjectCommandsTr::tr("Raster tone: 'hits' (every lit pixel opaque, the papers' "
                             "look) or 'density' (log density of the invariant measure, "
                             "gamma and vibrancy as flame renderers). Default: the item's "
                             "style (auto: hits for deterministic, density for random "
                             "iteration)."),
              "hits|density"},
-            {"gamma", Tr::tr("Density tone: display gamma (default: the item's, 2.2)."), "g"},
-            {"vibrancy", Tr::tr("Density tone: 1 saturated colours, 0 per-channel "
+            {"gamma", ProjectCommandsTr::tr("Density tone: display gamma (default: the item's, 2.2)."), "g"},
+            {"vibrancy", ProjectCommandsTr::tr("Density tone: 1 saturated colours, 0 per-channel "
                                 "gamma (default 1)."), "v", "1"},
-            {"supersample", Tr::tr("Histogram cells per pixel side, 1..4 (default 1; "
+            {"supersample", ProjectCommandsTr::tr("Histogram cells per pixel side, 1..4 (default 1; "
                                    "2 or 3 anti-alias edges)."), "s", "1"},
-            {"threads", Tr::tr("Threads of the raster engine (default: all cores)."), "n"},
-            {"view", Tr::tr("Surfaces: the camera's azimuth and elevation in degrees "
+            {"threads", ProjectCommandsTr::tr("Threads of the raster engine (default: all cores)."), "n"},
+            {"view", ProjectCommandsTr::tr("Surfaces: the camera's azimuth and elevation in degrees "
                             "(orthographic; default: the item's camera)."),
              "az,el"},
-            {"bounds", Tr::tr("Plane figures: the world rectangle to frame (padded by 6%), e.g. to "
+            {"bounds", ProjectCommandsTr::tr("Plane figures: the world rectangle to frame (padded by 6%), e.g. to "
                               "compare figures at one scale (default: fit the content)."),
              "x0,y0,x1,y1"},
-            {"format", Tr::tr("The output's format when its name has no suffix (e.g. /dev/stdout): "
+            {"format", ProjectCommandsTr::tr("The output's format when its name has no suffix (e.g. /dev/stdout): "
                               "png, svg or pdf (default: the suffix)."),
              "png|svg|pdf"}};
 }
@@ -517,12 +517,12 @@ FigureOptions figureOptions(const QCommandLineParser &parser)
 {
     FigureOptions o;
     if (parser.isSet("depth") && parser.isSet("samples"))
-        throw Failure{Tr::tr("--depth and --samples exclude each other"), 2};
+        throw Failure{ProjectCommandsTr::tr("--depth and --samples exclude each other"), 2};
     const QRegularExpression sizeRe("^(\\d+)x(\\d+)$");
     const auto sm = sizeRe.match(parser.value("size"));
     if (!sm.hasMatch() || sm.captured(1).toInt() < 64 || sm.captured(2).toInt() < 64
         || sm.captured(1).toInt() > 16384 || sm.captured(2).toInt() > 16384)
-        throw Failure{Tr::tr("--size must be WxH with 64..16384 pixels each, got '%1'")
+        throw Failure{ProjectCommandsTr::tr("--size must be WxH with 64..16384 pixels each, got '%1'")
                           .arg(parser.value("size"))};
     o.width = sm.captured(1).toInt();
     o.height = sm.captured(2).toInt();
@@ -532,7 +532,7 @@ FigureOptions figureOptions(const QCommandLineParser &parser)
         o.samples = countOption(parser, "samples", 1, double(kMaxChaosSamples));
     o.tone = parser.value("tone");
     if (!o.tone.isEmpty() && o.tone != "hits" && o.tone != "density")
-        throw Failure{Tr::tr("--tone must be 'hits' or 'density', got '%1'").arg(o.tone), 2};
+        throw Failure{ProjectCommandsTr::tr("--tone must be 'hits' or 'density', got '%1'").arg(o.tone), 2};
     if (parser.isSet("gamma"))
         o.gamma = realOption(parser, "gamma", 0.2, 10);
     o.vibrancy = realOption(parser, "vibrancy", 0, 1);
@@ -548,14 +548,14 @@ FigureOptions figureOptions(const QCommandLineParser &parser)
         for (int i = 0; ok && i < 4; ++i)
             v[i] = parts[i].trimmed().toDouble(&ok), ok = ok && std::isfinite(v[i]);
         if (!ok || !(v[2] > v[0]) || !(v[3] > v[1]))
-            throw Failure{Tr::tr("--bounds must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, got '%1'")
+            throw Failure{ProjectCommandsTr::tr("--bounds must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, got '%1'")
                               .arg(parser.value("bounds"))};
         o.bounds = QRectF(QPointF(v[0], v[1]), QPointF(v[2], v[3]));
     }
     if (parser.isSet("format")) {
         o.format = parser.value("format").toLower();
         if (o.format != "png" && o.format != "svg" && o.format != "pdf")
-            throw Failure{Tr::tr("--format must be png, svg or pdf, got '%1'")
+            throw Failure{ProjectCommandsTr::tr("--format must be png, svg or pdf, got '%1'")
                               .arg(parser.value("format")), 2};
     }
     return o;
@@ -589,11 +589,11 @@ void renderFigure(const Project &project, AttractorItem *item, const FigureOptio
     if (d->ifs.size() > 0 && !spec.random && !d->iterate) {
         const IfsCheck check = checkIfs(d->ifs);
         if (!check.contractive)
-            throw Failure{Tr::tr("item '%1': %2").arg(item->name(),
+            throw Failure{ProjectCommandsTr::tr("item '%1': %2").arg(item->name(),
                                                        QString::fromStdString(check.message))};
         const double images = imageCount(d->ifs, depth);
         if (images > 4e9)
-            throw Failure{Tr::tr("depth %1 makes %2 images; at most 4e9 are rendered")
+            throw Failure{ProjectCommandsTr::tr("depth %1 makes %2 images; at most 4e9 are rendered")
                               .arg(depth)
                               .arg(images, 0, 'g', 3)};
     }
@@ -608,7 +608,7 @@ void renderFigure(const Project &project, AttractorItem *item, const FigureOptio
         bool okA = false, okE = false;
         const double az = view.value(0).toDouble(&okA), el = view.value(1).toDouble(&okE);
         if (view.size() != 2 || !okA || !okE || !std::isfinite(az) || std::abs(el) > 90)
-            throw Failure{Tr::tr("--view must be AZ,EL in degrees with |EL| <= 90, got '%1'")
+            throw Failure{ProjectCommandsTr::tr("--view must be AZ,EL in degrees with |EL| <= 90, got '%1'")
                               .arg(o.view)};
         SurfaceFigureSpec s;
         s.ifs = &d->ifs;
@@ -629,16 +629,16 @@ void renderFigure(const Project &project, AttractorItem *item, const FigureOptio
         s.netFaces = net.faces;
         s.width = o.width;
         s.height = o.height;
-        const QString what = s.random ? Tr::tr("%1 random points").arg(s.samples)
-                                      : Tr::tr("F^%1(X0)").arg(depth);
+        const QString what = s.random ? ProjectCommandsTr::tr("%1 random points").arg(s.samples)
+                                      : ProjectCommandsTr::tr("F^%1(X0)").arg(depth);
         QString maps;
         if (!d->mapIndex.empty()) {
             QStringList on;
             for (int i : d->mapIndex)
                 on << QString::number(i + 1);
-            maps = Tr::tr(", maps %1 of %2").arg(on.join(' ')).arg(d->S.count());
+            maps = ProjectCommandsTr::tr(", maps %1 of %2").arg(on.join(' ')).arg(d->S.count());
         }
-        s.caption = Tr::tr("%1: %2%3 — orthographic view from azimuth %4°, elevation %5°")
+        s.caption = ProjectCommandsTr::tr("%1: %2%3 — orthographic view from azimuth %4°, elevation %5°")
                         .arg(item->name(), what, maps)
                         .arg(az)
                         .arg(el);
@@ -662,10 +662,10 @@ void renderFigure(const Project &project, AttractorItem *item, const FigureOptio
     spec.panelWidth = o.width;
     spec.panelHeight = o.height - 26;
     QString caption = spec.random
-                          ? Tr::tr("%1: %2 random points").arg(item->name()).arg(spec.samples)
-                          : Tr::tr("%1: F^%2(X0)").arg(item->name()).arg(depth);
+                          ? ProjectCommandsTr::tr("%1: %2 random points").arg(item->name()).arg(spec.samples)
+                          : ProjectCommandsTr::tr("%1: F^%2(X0)").arg(item->name()).arg(depth);
     if (d->polygon) // a normal-vector curve: the polygon after `steps` is the figure
-        caption = Tr::tr("%1: polygon after %2 steps")
+        caption = ProjectCommandsTr::tr("%1: polygon after %2 steps")
                       .arg(item->name())
                       .arg(item->parameter("steps").toInt());
     spec.panels = {{caption + o.captionSuffix, depth}};
@@ -688,16 +688,16 @@ int render(const QStringList &args)
     return guarded([&] {
         QCommandLineParser parser;
         parser.setApplicationDescription(
-            Tr::tr("Render an item's attractor (with its control polygons) to PNG, SVG or PDF."));
-        parser.addPositionalArgument("project", Tr::tr("The .awb project file."));
-        parser.addOptions({{"item", Tr::tr("The item to render (default: the first with an "
+            ProjectCommandsTr::tr("Render an item's attractor (with its control polygons) to PNG, SVG or PDF."));
+        parser.addPositionalArgument("project", ProjectCommandsTr::tr("The .awb project file."));
+        parser.addOptions({{"item", ProjectCommandsTr::tr("The item to render (default: the first with an "
                                            "attractor)."),
                             "name"},
-                           {"out", Tr::tr("Output file: .png, .svg or .pdf."), "file"}});
+                           {"out", ProjectCommandsTr::tr("Output file: .png, .svg or .pdf."), "file"}});
         parser.addOptions(figureOptionList());
         parseOrFail(parser, args, 1);
         if (!parser.isSet("out"))
-            throw Failure{Tr::tr("--out FILE is required"), 2};
+            throw Failure{ProjectCommandsTr::tr("--out FILE is required"), 2};
         const FigureOptions options = figureOptions(parser);
         Project project;
         load(project, parser.positionalArguments().first());
@@ -713,25 +713,25 @@ int animate(const QStringList &args)
     return guarded([&] {
         QCommandLineParser parser;
         parser.setApplicationDescription(
-            Tr::tr("Render the frames of an item's animation (its keyframed parameters): numbered "
+            ProjectCommandsTr::tr("Render the frames of an item's animation (its keyframed parameters): numbered "
                    "PNG files in a folder, or an MP4 or GIF movie through ffmpeg. Frame k is the "
                    "item with its parameters at time k / fps, drawn exactly as `render` draws "
                    "it."));
-        parser.addPositionalArgument("project", Tr::tr("The .awb project file."));
+        parser.addPositionalArgument("project", ProjectCommandsTr::tr("The .awb project file."));
         parser.addOptions(
-            {{"item", Tr::tr("The animated item (default: the first item with an "
+            {{"item", ProjectCommandsTr::tr("The animated item (default: the first item with an "
                              "animation)."), "name"},
-             {"out", Tr::tr("A folder for frame-0000.png, frame-0001.png, ... (made if missing), a "
+             {"out", ProjectCommandsTr::tr("A folder for frame-0000.png, frame-0001.png, ... (made if missing), a "
                             "movie .mp4 or .gif (made by ffmpeg), or with --frame one "
                             ".png/.svg/.pdf."),
               "dir|file"},
-             {"fps", Tr::tr("Frames per second (default: the animation's)."), "n"},
-             {"frame", Tr::tr("Render only frame K (0 = the start) to the file --out."), "k"},
-             {"no-caption-values", Tr::tr("Captions without the frame's time and values.")}});
+             {"fps", ProjectCommandsTr::tr("Frames per second (default: the animation's)."), "n"},
+             {"frame", ProjectCommandsTr::tr("Render only frame K (0 = the start) to the file --out."), "k"},
+             {"no-caption-values", ProjectCommandsTr::tr("Captions without the frame's time and values.")}});
         parser.addOptions(figureOptionList());
         parseOrFail(parser, args, 1);
         if (!parser.isSet("out"))
-            throw Failure{Tr::tr("--out DIR|FILE is required"), 2};
+            throw Failure{ProjectCommandsTr::tr("--out DIR|FILE is required"), 2};
         const FigureOptions options = figureOptions(parser);
         Project project;
         load(project, parser.positionalArguments().first());
@@ -745,15 +745,15 @@ int animate(const QStringList &args)
                     break;
                 }
             if (!item)
-                throw Failure{Tr::tr("%1 has no animated item").arg(project.fileName())};
+                throw Failure{ProjectCommandsTr::tr("%1 has no animated item").arg(project.fileName())};
         }
         if (item->animation().isEmpty())
-            throw Failure{Tr::tr("item '%1' has no animation: key its parameters in the "
+            throw Failure{ProjectCommandsTr::tr("item '%1' has no animation: key its parameters in the "
                                  "Animation dock, or give it an \"animation\" field "
                                  "(docs/file-format.md)")
                               .arg(item->name())};
         for (const QString &target : inactiveAnimationTargets(*item))
-            err() << Tr::tr("attractor-cli: note: the track of %1 is skipped: item '%2' has no "
+            err() << ProjectCommandsTr::tr("attractor-cli: note: the track of %1 is skipped: item '%2' has no "
                             "such input now")
                          .arg(target, item->name())
                   << "\n";
@@ -785,18 +785,18 @@ int animate(const QStringList &args)
         }
         const auto boundsText = [&] {
             const QRectF &b = frameOptions.bounds;
-            return b.isValid() ? Tr::tr("%1,%2,%3,%4")
+            return b.isValid() ? ProjectCommandsTr::tr("%1,%2,%3,%4")
                                      .arg(b.left(), 0, 'g', 17)
                                      .arg(b.top(), 0, 'g', 17)
                                      .arg(b.right(), 0, 'g', 17)
                                      .arg(b.bottom(), 0, 'g', 17)
-                               : Tr::tr("fitted per frame");
+                               : ProjectCommandsTr::tr("fitted per frame");
         };
         const auto renderFrame = [&](int k, const QString &file) {
             QString error;
             std::unique_ptr<Item> copy = animatedCopy(*item, timing.frameTime(k), &error);
             if (!copy)
-                throw Failure{Tr::tr("frame %1 (t = %2 s): %3")
+                throw Failure{ProjectCommandsTr::tr("frame %1 (t = %2 s): %3")
                                   .arg(k)
                                   .arg(timing.frameTime(k))
                                   .arg(error)};
@@ -806,7 +806,7 @@ int animate(const QStringList &args)
             try {
                 renderFigure(project, static_cast<AttractorItem *>(copy.get()), o, file);
             } catch (const Failure &f) {
-                throw Failure{Tr::tr("frame %1 (t = %2 s): %3")
+                throw Failure{ProjectCommandsTr::tr("frame %1 (t = %2 s): %3")
                                   .arg(k)
                                   .arg(timing.frameTime(k))
                                   .arg(f.message),
@@ -827,7 +827,7 @@ int animate(const QStringList &args)
                          ? qEnvironmentVariable("AWB_FFMPEG")
                          : QStandardPaths::findExecutable("ffmpeg");
             if (ffmpeg.isEmpty() || !QFileInfo(ffmpeg).isExecutable())
-                throw Failure{Tr::tr("writing %1 needs ffmpeg, which is not installed (Debian: "
+                throw Failure{ProjectCommandsTr::tr("writing %1 needs ffmpeg, which is not installed (Debian: "
                                      "apt-get install ffmpeg); give --out a folder to get the "
                                      "frames as PNG files")
                                   .arg(outPath)};
@@ -835,20 +835,20 @@ int animate(const QStringList &args)
         QTemporaryDir scratch;
         const QString dir = movie ? scratch.path() : outPath;
         if (movie && !scratch.isValid())
-            throw Failure{Tr::tr("cannot make a temporary folder for the frames: %1")
+            throw Failure{ProjectCommandsTr::tr("cannot make a temporary folder for the frames: %1")
                               .arg(scratch.errorString())};
         if (!movie && QFileInfo(dir).exists() && !QFileInfo(dir).isDir())
-            throw Failure{Tr::tr("%1 is a file, not a folder (a movie needs .mp4 or .gif)")
+            throw Failure{ProjectCommandsTr::tr("%1 is a file, not a folder (a movie needs .mp4 or .gif)")
                               .arg(dir)};
         if (!QDir().mkpath(dir))
-            throw Failure{Tr::tr("cannot make the folder %1").arg(dir)};
+            throw Failure{ProjectCommandsTr::tr("cannot make the folder %1").arg(dir)};
         const int digits = std::max(4, int(QString::number(frames - 1).size()));
         const QString pattern = "frame-%0" + QString::number(digits) + "d.png"; // ffmpeg's
         QElapsedTimer clock;
         clock.start();
         for (int k = 0; k < frames; ++k)
             renderFrame(k, QDir(dir).filePath(
-                               Tr::tr("frame-%1.png").arg(k, digits, 10, QLatin1Char('0'))));
+                               ProjectCommandsTr::tr("frame-%1.png").arg(k, digits, 10, QLatin1Char('0'))));
         const double seconds = clock.elapsed() / 1000.0;
         if (movie) {
             QStringList ffArgs{"-y", "-loglevel", "error", "-framerate",
@@ -863,11 +863,11 @@ int animate(const QStringList &args)
             process.start(ffmpeg, ffArgs);
             if (!process.waitForFinished(-1) || process.exitStatus() != QProcess::NormalExit
                 || process.exitCode() != 0)
-                throw Failure{Tr::tr("ffmpeg could not write %1: %2")
+                throw Failure{ProjectCommandsTr::tr("ffmpeg could not write %1: %2")
                                   .arg(outPath, QString::fromLocal8Bit(process.readAllStandardError())
                                                     .trimmed())};
         }
-        out() << Tr::tr("%1: %2 frames of %3x%4 at %5 frames/s (%6 s); rendered in %7 s, "
+        out() << ProjectCommandsTr::tr("%1: %2 frames of %3x%4 at %5 frames/s (%6 s); rendered in %7 s, "
                         "%8 frames/s\nbounds: %9\n")
                      .arg(outPath)
                      .arg(frames)
@@ -887,17 +887,17 @@ int analyse(const QStringList &args)
     return guarded([&] {
         QCommandLineParser parser;
         parser.setApplicationDescription(
-            Tr::tr("Analyse the items of a project: per map S_i (exact fractions), M_i = P^-1 S_i "
+            ProjectCommandsTr::tr("Analyse the items of a project: per map S_i (exact fractions), M_i = P^-1 S_i "
                    "P with its blocks A_i, b_i, the eigenvalues of S_i and A_i, spectral radius, "
                    "contractivity and fixed point; per item the subdominant eigenvalues, the "
                    "Hausdorff distance to the exact curve and the box-counting dimension; per "
                    "subdivision curve the certified Hölder regularity of its scheme."));
-        parser.addPositionalArgument("project", Tr::tr("The .awb project file."));
-        parser.addOptions({{"item", Tr::tr("Only this item."), "name"},
-                           {"json", Tr::tr("Print JSON (the only format so far).")}});
+        parser.addPositionalArgument("project", ProjectCommandsTr::tr("The .awb project file."));
+        parser.addOptions({{"item", ProjectCommandsTr::tr("Only this item."), "name"},
+                           {"json", ProjectCommandsTr::tr("Print JSON (the only format so far).")}});
         parseOrFail(parser, args, 1);
         if (!parser.isSet("json"))
-            throw Failure{Tr::tr("--json is required (the only output format)"), 2};
+            throw Failure{ProjectCommandsTr::tr("--json is required (the only output format)"), 2};
         Project project;
         load(project, parser.positionalArguments().first());
         QJsonArray items;
@@ -918,30 +918,30 @@ int points(const QStringList &args)
     return guarded([&] {
         QCommandLineParser parser;
         parser.setApplicationDescription(
-            Tr::tr("Print the points of F^k(X0) as CSV: x, y (and z for a surface), the map "
+            ProjectCommandsTr::tr("Print the points of F^k(X0) as CSV: x, y (and z for a surface), the map "
                    "applied last (1-based), and the view. --address w limits them to the sub-copy "
                    "f_w(A): the points f_w(F^k(X0))."));
-        parser.addPositionalArgument("project", Tr::tr("The .awb project file."));
-        parser.addOptions({{"item", Tr::tr("The item."), "name"},
-                           {"depth", Tr::tr("Iteration depth (default: the item's)."), "k"},
-                           {"start", Tr::tr("Start set: point:x,y | segment:x1,y1,x2,y2 | "
+        parser.addPositionalArgument("project", ProjectCommandsTr::tr("The .awb project file."));
+        parser.addOptions({{"item", ProjectCommandsTr::tr("The item."), "name"},
+                           {"depth", ProjectCommandsTr::tr("Iteration depth (default: the item's)."), "k"},
+                           {"start", ProjectCommandsTr::tr("Start set: point:x,y | segment:x1,y1,x2,y2 | "
                                             "triangle:... | polygon:... | points:... (plane "
                                             "coordinates; x,y,z for a surface) | "
                                             "lifted:x,y,c1,...;x,y,c1,... (points of the lifted "
                                             "space of 000 §2; default: the item's)."),
                             "set"},
-                           {"csv", Tr::tr("Print CSV (the only format so far).")},
-                           {"address", Tr::tr("Only the sub-copy f_w(A) of this address: 0-based "
+                           {"csv", ProjectCommandsTr::tr("Print CSV (the only format so far).")},
+                           {"address", ProjectCommandsTr::tr("Only the sub-copy f_w(A) of this address: 0-based "
                                               "map numbers, w_1 (the outermost map) first, e.g. "
                                               "0,1,1."),
                             "w"},
-                           {"max-points", Tr::tr("Refuse to print more (default 10000000)."), "n",
+                           {"max-points", ProjectCommandsTr::tr("Refuse to print more (default 10000000)."), "n",
                             "10000000"}});
         parseOrFail(parser, args, 1);
         if (!parser.isSet("item"))
-            throw Failure{Tr::tr("--item NAME is required"), 2};
+            throw Failure{ProjectCommandsTr::tr("--item NAME is required"), 2};
         if (!parser.isSet("csv"))
-            throw Failure{Tr::tr("--csv is required (the only output format)"), 2};
+            throw Failure{ProjectCommandsTr::tr("--csv is required (the only output format)"), 2};
         Project project;
         load(project, parser.positionalArguments().first());
         AttractorItem *item = attractorItem(project, parser.value("item"));
@@ -953,7 +953,7 @@ int points(const QStringList &args)
             try {
                 address = parseItemAddress(parser.value("address"), *d);
             } catch (const InputError &e) {
-                throw Failure{Tr::tr("--address %1: %2")
+                throw Failure{ProjectCommandsTr::tr("--address %1: %2")
                                   .arg(parser.value("address"), QString::fromStdString(e.what())),
                               2};
             }
@@ -969,12 +969,12 @@ int points(const QStringList &args)
                     bool ok = false;
                     p.push_back(n.trimmed().toDouble(&ok));
                     if (!ok || !std::isfinite(p.back()))
-                        throw Failure{Tr::tr("--start: '%1' is not a finite number").arg(n)};
+                        throw Failure{ProjectCommandsTr::tr("--start: '%1' is not a finite number").arg(n)};
                 }
                 lifted.push_back(std::move(p));
             }
             if (lifted.empty())
-                throw Failure{Tr::tr("--start lifted: needs at least one point")};
+                throw Failure{ProjectCommandsTr::tr("--start lifted: needs at least one point")};
             start = StartSet::points(liftedStartPoints(*d, lifted));
         } else if (parser.isSet("start")) {
             Mat pts;
@@ -988,7 +988,7 @@ int points(const QStringList &args)
         out().flush();
         QFile stdoutFile;
         if (!stdoutFile.open(stdout, QIODevice::WriteOnly))
-            throw Failure{Tr::tr("cannot write to the standard output")};
+            throw Failure{ProjectCommandsTr::tr("cannot write to the standard output")};
         std::atomic<bool> cancel{false};
         IterationControl control;
         control.cancel = &cancel;
@@ -1003,10 +1003,10 @@ int check(const QStringList &args)
     return guarded([&] {
         QCommandLineParser parser;
         parser.setApplicationDescription(
-            Tr::tr("Validate a project file: it must load, and every item's IFS must be computable "
+            ProjectCommandsTr::tr("Validate a project file: it must load, and every item's IFS must be computable "
                    "(exit 1: the file is refused; exit 3: it loads but items cannot be "
                    "computed)."));
-        parser.addPositionalArgument("project", Tr::tr("The .awb project file."));
+        parser.addPositionalArgument("project", ProjectCommandsTr::tr("The .awb project file."));
         parseOrFail(parser, args, 1);
         Project project;
         load(project, parser.positionalArguments().first());
@@ -1026,11 +1026,11 @@ int check(const QStringList &args)
             if (!d)
                 continue;
             if (!d->note.isEmpty())
-                err() << Tr::tr("%1: %2: note: %3").arg(name, a->name(), d->note)
+                err() << ProjectCommandsTr::tr("%1: %2: note: %3").arg(name, a->name(), d->note)
                       << "\n";
             if (!d->iterate && d->ifs.size() > 0)
                 if (const IfsCheck c = checkIfs(d->ifs); !c.contractive)
-                    err() << Tr::tr("%1: %2: note: %3")
+                    err() << ProjectCommandsTr::tr("%1: %2: note: %3")
                                  .arg(name, a->name(),
                                       QString::fromStdString(c.message))
                           << "\n";
@@ -1046,10 +1046,10 @@ int rewrite(const QStringList &args)
     return guarded([&] {
         QCommandLineParser parser;
         parser.setApplicationDescription(
-            Tr::tr("Load a project and save it again in the canonical form of this version (sorted "
+            ProjectCommandsTr::tr("Load a project and save it again in the canonical form of this version (sorted "
                    "keys, every field written): to upgrade or normalise a hand-written file."));
-        parser.addPositionalArgument("project", Tr::tr("The .awb project file."));
-        parser.addOption({"out", Tr::tr("Write here instead of over the input."), "file"});
+        parser.addPositionalArgument("project", ProjectCommandsTr::tr("The .awb project file."));
+        parser.addOption({"out", ProjectCommandsTr::tr("Write here instead of over the input."), "file"});
         parseOrFail(parser, args, 1);
         Project project;
         load(project, parser.positionalArguments().first());
@@ -1081,7 +1081,7 @@ void writeObj(QIODevice &file, const SubdivisionSurfaceItem *item, int rounds)
                 .arg(mesh.faces.size())
                 .toUtf8();
     for (Eigen::Index k = 0; k < mesh.points.rows(); ++k)
-        text += Tr::tr("v %1 %2 %3\n")
+        text += ProjectCommandsTr::tr("v %1 %2 %3\n")
                     .arg(mesh.points(k, 0), 0, 'g', 17)
                     .arg(mesh.points(k, 1), 0, 'g', 17)
                     .arg(mesh.points(k, 2), 0, 'g', 17)
@@ -1102,26 +1102,26 @@ int exportData(const QStringList &args)
     return guarded([&] {
         QCommandLineParser parser;
         parser.setApplicationDescription(
-            Tr::tr("Export an item's geometry: the attractor F^k(X0) as a PLY point cloud (with "
+            ProjectCommandsTr::tr("Export an item's geometry: the attractor F^k(X0) as a PLY point cloud (with "
                    "the map applied last per point), or a surface item's net after k rounds of "
                    "classic subdivision as an OBJ mesh."));
-        parser.addPositionalArgument("project", Tr::tr("The .awb project file."));
-        parser.addOptions({{"item", Tr::tr("The item."), "name"},
-                           {"format", Tr::tr("ply (attractor points) or obj (subdivided "
+        parser.addPositionalArgument("project", ProjectCommandsTr::tr("The .awb project file."));
+        parser.addOptions({{"item", ProjectCommandsTr::tr("The item."), "name"},
+                           {"format", ProjectCommandsTr::tr("ply (attractor points) or obj (subdivided "
                                              "mesh)."), "fmt"},
-                           {"out", Tr::tr("Output file."), "file"},
-                           {"depth", Tr::tr("PLY: iteration depth (default: the item's)."), "k"},
-                           {"rounds", Tr::tr("OBJ: rounds of subdivision (default: the "
+                           {"out", ProjectCommandsTr::tr("Output file."), "file"},
+                           {"depth", ProjectCommandsTr::tr("PLY: iteration depth (default: the item's)."), "k"},
+                           {"rounds", ProjectCommandsTr::tr("OBJ: rounds of subdivision (default: the "
                                              "item's)."), "r"},
-                           {"max-points", Tr::tr("PLY: refuse to write more (default "
+                           {"max-points", ProjectCommandsTr::tr("PLY: refuse to write more (default "
                                                  "50000000)."), "n",
                             "50000000"}});
         parseOrFail(parser, args, 1);
         if (!parser.isSet("item") || !parser.isSet("out") || !parser.isSet("format"))
-            throw Failure{Tr::tr("--item NAME, --format ply|obj and --out FILE are required"), 2};
+            throw Failure{ProjectCommandsTr::tr("--item NAME, --format ply|obj and --out FILE are required"), 2};
         const QString format = parser.value("format").toLower();
         if (format != "ply" && format != "obj")
-            throw Failure{Tr::tr("--format must be ply or obj, got '%1'").arg(format), 2};
+            throw Failure{ProjectCommandsTr::tr("--format must be ply or obj, got '%1'").arg(format), 2};
         Project project;
         load(project, parser.positionalArguments().first());
         AttractorItem *item = attractorItem(project, parser.value("item"));
@@ -1130,21 +1130,21 @@ int exportData(const QStringList &args)
         WholeFileWriter writer;
         QString reason;
         if (!writer.open(outFile, &reason))
-            throw Failure{Tr::tr("cannot write %1: %2").arg(outFile, reason)};
+            throw Failure{ProjectCommandsTr::tr("cannot write %1: %2").arg(outFile, reason)};
         QIODevice &file = *writer.device();
         if (format == "ply") {
             const int depth = parser.isSet("depth") ? intOption(parser, "depth", 0, 64)
                                                     : item->algorithm().depth;
             const StartSet start = item->coreStartSet(*d);
             if (d->iterate)
-                throw Failure{Tr::tr("item '%1' is drawn by an automaton: PLY export covers "
+                throw Failure{ProjectCommandsTr::tr("item '%1' is drawn by an automaton: PLY export covers "
                                      "items with one IFS").arg(item->name())};
             requirePointBudget(*d, start, depth, intOption(parser, "max-points", 1, 2000000000));
             writePointsPly(file, item->name(), *d, start, depth, mapColor);
         } else {
             const auto *surface = qobject_cast<const SubdivisionSurfaceItem *>(item);
             if (!surface)
-                throw Failure{Tr::tr("OBJ export writes the subdivided net of a surface item; "
+                throw Failure{ProjectCommandsTr::tr("OBJ export writes the subdivided net of a surface item; "
                                      "'%1' is a %2").arg(item->name(), item->typeName())};
             const int rounds = parser.isSet("rounds")
                                    ? intOption(parser, "rounds", 0,
@@ -1153,7 +1153,7 @@ int exportData(const QStringList &args)
             writeObj(file, surface, rounds);
         }
         if (!writer.commit(&reason))
-            throw Failure{Tr::tr("cannot write %1: %2").arg(outFile, reason)};
+            throw Failure{ProjectCommandsTr::tr("cannot write %1: %2").arg(outFile, reason)};
         out() << parser.value("out") << "\n";
         return 0;
     });
@@ -1168,19 +1168,19 @@ int polygon(const QStringList &args)
     return guarded([&] {
         QCommandLineParser parser;
         parser.setApplicationDescription(
-            Tr::tr("Print the control polygon after K subdivision steps as JSON {\"closed\", "
+            ProjectCommandsTr::tr("Print the control polygon after K subdivision steps as JSON {\"closed\", "
                    "\"points\"}: the figures of 001 for a normal-vector item (eq. (1) applied K "
                    "times), classic subdivision S_w P for a subdivision curve."));
-        parser.addPositionalArgument("project", Tr::tr("The .awb project file."));
-        parser.addOptions({{"item", Tr::tr("The item."), "name"},
-                           {"level", Tr::tr("Subdivision steps K (0: the control "
+        parser.addPositionalArgument("project", ProjectCommandsTr::tr("The .awb project file."));
+        parser.addOptions({{"item", ProjectCommandsTr::tr("The item."), "name"},
+                           {"level", ProjectCommandsTr::tr("Subdivision steps K (0: the control "
                                             "polygon)."), "k", "0"},
-                           {"json", Tr::tr("Print JSON (the only format).")}});
+                           {"json", ProjectCommandsTr::tr("Print JSON (the only format).")}});
         parseOrFail(parser, args, 1);
         if (!parser.isSet("item"))
-            throw Failure{Tr::tr("--item NAME is required"), 2};
+            throw Failure{ProjectCommandsTr::tr("--item NAME is required"), 2};
         if (!parser.isSet("json"))
-            throw Failure{Tr::tr("--json is required (the only output format)"), 2};
+            throw Failure{ProjectCommandsTr::tr("--json is required (the only output format)"), 2};
         Project project;
         load(project, parser.positionalArguments().first());
         AttractorItem *item = attractorItem(project, parser.value("item"));
@@ -1193,15 +1193,15 @@ int polygon(const QStringList &args)
             closed = poly.closed;
         } else if (const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item)) {
             if (curve->scheme().isComplex())
-                throw Failure{Tr::tr("item '%1' has a complex split parameter: its control "
+                throw Failure{ProjectCommandsTr::tr("item '%1' has a complex split parameter: its control "
                                      "polygon has complex points").arg(item->name())};
             const Mat P = toMatrix(curve->controlPoints());
             const auto scheme = curve->scheme().makeScheme();
             if (std::pow(double(scheme->arity()), level) * double(P.rows()) > 5e7)
-                throw Failure{Tr::tr("level %1 gives more than 5e7 points").arg(level)};
+                throw Failure{ProjectCommandsTr::tr("level %1 gives more than 5e7 points").arg(level)};
             points = subdivide(*scheme, P, level);
         } else {
-            throw Failure{Tr::tr("item '%1' (%2) is not polygon-based: the polygon command "
+            throw Failure{ProjectCommandsTr::tr("item '%1' (%2) is not polygon-based: the polygon command "
                                  "takes normal-vector items and subdivision curves")
                               .arg(item->name(), item->typeName())};
         }

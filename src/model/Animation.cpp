@@ -30,9 +30,9 @@ bool parsePointTarget(const QString &target, int *set, int *index)
 
 const QString probabilitiesTarget = QStringLiteral("probabilities");
 
-// lupdate takes the context of Tr::tr() from the macro (a free tr() would get the
+// lupdate takes the context of AnimationTr::tr() from the macro (a free tr() would get the
 // enclosing namespace as its context).
-struct Tr {
+struct AnimationTr {
     Q_DECLARE_TR_FUNCTIONS(awb::Animation)
 };
 
@@ -124,54 +124,54 @@ MaybeProblem AnimationSpec::check() const
 {
     if (!std::isfinite(duration) || duration <= 0 || duration > maxDuration)
         return Problem{QStringLiteral("duration"),
-                       Tr::tr("expected a duration in seconds above 0 and at most %1")
+                       AnimationTr::tr("expected a duration in seconds above 0 and at most %1")
                            .arg(maxDuration)};
     if (!std::isfinite(fps) || fps < 1 || fps > maxFps)
         return Problem{QStringLiteral("fps"),
-                       Tr::tr("expected between 1 and %1 frames per second").arg(maxFps)};
+                       AnimationTr::tr("expected between 1 and %1 frames per second").arg(maxFps)};
     if (duration * fps >= maxFrames)
         return Problem{QStringLiteral("duration"),
-                       Tr::tr("%1 s at %2 frames per second makes more than %3 frames")
+                       AnimationTr::tr("%1 s at %2 frames per second makes more than %3 frames")
                            .arg(duration).arg(fps).arg(maxFrames)};
     for (std::size_t t = 0; t < tracks.size(); ++t) {
         const AnimationTrack &track = tracks[t];
         const QString at = QStringLiteral("tracks[%1]").arg(t + 1);
         if (track.target.isEmpty())
-            return Problem{at + QStringLiteral(".target"), Tr::tr("names no parameter")};
+            return Problem{at + QStringLiteral(".target"), AnimationTr::tr("names no parameter")};
         if (trackIndex(track.target) != int(t))
             return Problem{at + QStringLiteral(".target"),
-                           Tr::tr("%1 is driven by an earlier track already").arg(track.target)};
+                           AnimationTr::tr("%1 is driven by an earlier track already").arg(track.target)};
         if (track.keys.empty())
-            return Problem{at + QStringLiteral(".keys"), Tr::tr("needs at least one key")};
+            return Problem{at + QStringLiteral(".keys"), AnimationTr::tr("needs at least one key")};
         const std::size_t size = track.keys.front().value.size();
         for (std::size_t k = 0; k < track.keys.size(); ++k) {
             const AnimationKey &key = track.keys[k];
             const QString where = at + QStringLiteral(".keys[%1]").arg(k + 1);
             if (!std::isfinite(key.time) || key.time < 0 || key.time > duration)
                 return Problem{where + QStringLiteral(".time"),
-                               Tr::tr("expected a time between 0 and the duration, %1 s")
+                               AnimationTr::tr("expected a time between 0 and the duration, %1 s")
                                    .arg(duration)};
             if (k > 0 && key.time <= track.keys[k - 1].time)
                 return Problem{where + QStringLiteral(".time"),
-                               Tr::tr("key times must increase (%1 s follows %2 s)")
+                               AnimationTr::tr("key times must increase (%1 s follows %2 s)")
                                    .arg(timeText(key.time), timeText(track.keys[k - 1].time))};
             if (key.value.empty() || key.value.size() != size)
                 return Problem{where + QStringLiteral(".value"),
-                               Tr::tr("expected %1 numbers, as the first key").arg(size)};
+                               AnimationTr::tr("expected %1 numbers, as the first key").arg(size)};
             for (double x : key.value)
                 if (!std::isfinite(x))
-                    return Problem{where + QStringLiteral(".value"), Tr::tr("not a finite number")};
+                    return Problem{where + QStringLiteral(".value"), AnimationTr::tr("not a finite number")};
         }
         if (track.path == AnimationTrack::Path::Circle) {
             if (size < 2)
                 return Problem{at + QStringLiteral(".path"),
-                               Tr::tr("a circle turns a point or a complex value, not one number")};
+                               AnimationTr::tr("a circle turns a point or a complex value, not one number")};
             if (track.center.size() != 2 || !std::isfinite(track.center[0])
                 || !std::isfinite(track.center[1]))
-                return Problem{at + QStringLiteral(".center"), Tr::tr("expected [x, y]")};
+                return Problem{at + QStringLiteral(".center"), AnimationTr::tr("expected [x, y]")};
             if (!std::isfinite(track.turns) || std::abs(track.turns) > 1000)
                 return Problem{at + QStringLiteral(".turns"),
-                               Tr::tr("expected a number of turns between -1000 and 1000")};
+                               AnimationTr::tr("expected a number of turns between -1000 and 1000")};
         }
     }
     return std::nullopt;
@@ -195,14 +195,14 @@ QList<AnimationTarget> animationTargets(const Item &item)
     if (!attractor)
         return list;
     if (attractor->algorithm().mode == AlgorithmSpec::Mode::Random && attractor->mapCount() > 1)
-        list.append({probabilitiesTarget, Tr::tr("Probabilities"), attractor->mapCount(), false,
+        list.append({probabilitiesTarget, AnimationTr::tr("Probabilities"), attractor->mapCount(), false,
                      false});
     const int sets = attractor->controlPointSetCount();
     for (int s = 0; s < sets; ++s) {
         const PointList &points = attractor->controlPoints(s);
         for (std::size_t i = 0; i < points.size(); ++i) {
-            const QString label = sets > 1 ? Tr::tr("Points %1, point %2").arg(s + 1).arg(i + 1)
-                                           : Tr::tr("Control point %1").arg(i + 1);
+            const QString label = sets > 1 ? AnimationTr::tr("Points %1, point %2").arg(s + 1).arg(i + 1)
+                                           : AnimationTr::tr("Control point %1").arg(i + 1);
             list.append({QStringLiteral("points.%1.%2").arg(s).arg(i), label,
                          attractor->pointDimension(), false, true});
         }
@@ -221,7 +221,7 @@ std::vector<double> animationValue(const Item &item, const QString &target, QStr
     int set = 0, index = 0;
     if (target == probabilitiesTarget) {
         if (!attractor || attractor->mapCount() < 1)
-            return fail(Tr::tr("%1 has no probabilities").arg(item.name()));
+            return fail(AnimationTr::tr("%1 has no probabilities").arg(item.name()));
         std::vector<double> p = attractor->algorithm().probabilities;
         if (p.empty())
             p.assign(std::size_t(attractor->mapCount()), 1.0 / attractor->mapCount());
@@ -230,7 +230,7 @@ std::vector<double> animationValue(const Item &item, const QString &target, QStr
     if (parsePointTarget(target, &set, &index)) {
         if (!attractor || set >= attractor->controlPointSetCount()
             || index >= int(attractor->controlPoints(set).size()))
-            return fail(Tr::tr("%1 has no control point %2 in point set %3")
+            return fail(AnimationTr::tr("%1 has no control point %2 in point set %3")
                             .arg(item.name()).arg(index + 1).arg(set + 1));
         const Point &p = attractor->controlPoints(set)[std::size_t(index)];
         if (attractor->pointDimension() == 3)
@@ -239,8 +239,8 @@ std::vector<double> animationValue(const Item &item, const QString &target, QStr
     }
     const auto info = findParameter(item, target);
     if (!info || !animatable(*info))
-        return fail(info ? Tr::tr("%1 is not a number that can be animated").arg(target)
-                         : Tr::tr("%1 has no parameter %2 (now)").arg(item.name(), target));
+        return fail(info ? AnimationTr::tr("%1 is not a number that can be animated").arg(target)
+                         : AnimationTr::tr("%1 has no parameter %2 (now)").arg(item.name(), target));
     const QVariant v = item.parameter(target);
     if (info->type == ParameterInfo::Type::Complex) {
         const QPointF z = v.toPointF();
@@ -272,7 +272,7 @@ bool applyTrack(Item &item, const AnimationTrack &track, const std::vector<doubl
     if (parsePointTarget(track.target, &set, &index)) {
         if (!attractor || set >= attractor->controlPointSetCount()
             || index >= int(attractor->controlPoints(set).size())) {
-            *error = Tr::tr("no such control point");
+            *error = AnimationTr::tr("no such control point");
             return false;
         }
         Point p = attractor->controlPoints(set)[std::size_t(index)];
@@ -281,21 +281,21 @@ bool applyTrack(Item &item, const AnimationTrack &track, const std::vector<doubl
         if (value.size() > 2)
             p.z = value[2];
         if (!attractor->moveControlPoint(index, p, 0, set)) {
-            *error = Tr::tr("the point was refused");
+            *error = AnimationTr::tr("the point was refused");
             return false;
         }
         return true;
     }
     const auto info = findParameter(item, track.target);
     if (!info || !animatable(*info)) {
-        *error = Tr::tr("no such parameter now");
+        *error = AnimationTr::tr("no such parameter now");
         return false;
     }
     QVariant v;
     switch (info->type) {
     case ParameterInfo::Type::Complex:
         if (value.size() != 2) {
-            *error = Tr::tr("a complex value needs 2 numbers");
+            *error = AnimationTr::tr("a complex value needs 2 numbers");
             return false;
         }
         v = QPointF(value[0], value[1]);
@@ -317,9 +317,9 @@ bool applyAnimation(Item &item, const AnimationSpec &spec, double time, QString 
             continue; // inactive: the item has no such input now
         if (!applyTrack(item, track, track.valueAt(time, spec.duration), &why)) {
             if (error)
-                *error = Tr::tr("%1 at %2 s: %3")
+                *error = AnimationTr::tr("%1 at %2 s: %3")
                              .arg(track.target, timeText(time),
-                                  why.isEmpty() ? Tr::tr("the value was refused") : why);
+                                  why.isEmpty() ? AnimationTr::tr("the value was refused") : why);
             return false;
         }
     }
@@ -361,7 +361,7 @@ MaybeProblem animationProblem(const Item &item, const AnimationSpec &spec,
             return Problem{at + QStringLiteral(".target"), why};
         if (int(now.size()) != track.size())
             return Problem{at + QStringLiteral(".keys"),
-                           Tr::tr("%1 has %2 coordinates, the keys %3")
+                           AnimationTr::tr("%1 has %2 coordinates, the keys %3")
                                .arg(track.target).arg(now.size()).arg(track.size())};
     }
     // The values themselves: at every key time, and around circles.
@@ -398,7 +398,7 @@ QString animationCaption(const Item &item, double time)
             QStringList p;
             for (double x : v)
                 p << num(x);
-            text = Tr::tr("p = (%1)").arg(p.join(QStringLiteral(", ")));
+            text = AnimationTr::tr("p = (%1)").arg(p.join(QStringLiteral(", ")));
         } else if (parsePointTarget(track.target, &set, &index)) {
             QStringList p;
             for (double x : v)
@@ -418,7 +418,7 @@ QString animationCaption(const Item &item, double time)
         }
         values << text;
     }
-    return Tr::tr("t = %1 s: %2").arg(time, 0, 'f', 2).arg(values.join(QStringLiteral(", ")));
+    return AnimationTr::tr("t = %1 s: %2").arg(time, 0, 'f', 2).arg(values.join(QStringLiteral(", ")));
 }
 
 // ---- JSON ---------------------------------------------------------------------------------------
@@ -461,13 +461,13 @@ AnimationSpec readAnimation(const FieldReader &r)
     spec.fps = r.number("fps", spec.fps);
     const QJsonValue tracks = r.value("tracks");
     if (!tracks.isArray())
-        r.fail("tracks", tracks.isUndefined() ? Tr::tr("missing")
-                                              : Tr::tr("expected an array of tracks"));
+        r.fail("tracks", tracks.isUndefined() ? AnimationTr::tr("missing")
+                                              : AnimationTr::tr("expected an array of tracks"));
     const QJsonArray list = tracks.toArray();
     for (qsizetype i = 0; i < list.size(); ++i) {
         const QString at = r.path("tracks") + QStringLiteral("[%1].").arg(i + 1);
         if (!list[i].isObject())
-            throw LoadError{at.chopped(1), Tr::tr("expected an object")};
+            throw LoadError{at.chopped(1), AnimationTr::tr("expected an object")};
         const FieldReader t(list[i].toObject(), at);
         AnimationTrack track;
         track.target = t.string("target");
@@ -479,13 +479,13 @@ AnimationSpec readAnimation(const FieldReader &r)
         }
         const QJsonValue keys = t.value("keys");
         if (!keys.isArray())
-            t.fail("keys", keys.isUndefined() ? Tr::tr("missing")
-                                              : Tr::tr("expected an array of keys"));
+            t.fail("keys", keys.isUndefined() ? AnimationTr::tr("missing")
+                                              : AnimationTr::tr("expected an array of keys"));
         const QJsonArray keyList = keys.toArray();
         for (qsizetype k = 0; k < keyList.size(); ++k) {
             const QString kat = t.path("keys") + QStringLiteral("[%1].").arg(k + 1);
             if (!keyList[k].isObject())
-                throw LoadError{kat.chopped(1), Tr::tr("expected an object {\"time\", \"value\"}")};
+                throw LoadError{kat.chopped(1), AnimationTr::tr("expected an object {\"time\", \"value\"}")};
             const FieldReader key(keyList[k].toObject(), kat);
             AnimationKey ak;
             ak.time = key.number("time");
@@ -495,15 +495,15 @@ AnimationSpec readAnimation(const FieldReader &r)
             else
                 ak.value = {key.number("value")};
             if (!key.unread().isEmpty())
-                key.fail(key.unread().keys().front(), Tr::tr("unknown field of a key"));
+                key.fail(key.unread().keys().front(), AnimationTr::tr("unknown field of a key"));
             track.keys.push_back(std::move(ak));
         }
         if (!t.unread().isEmpty())
-            t.fail(t.unread().keys().front(), Tr::tr("unknown field of a track"));
+            t.fail(t.unread().keys().front(), AnimationTr::tr("unknown field of a track"));
         spec.tracks.push_back(std::move(track));
     }
     if (!r.unread().isEmpty())
-        r.fail(r.unread().keys().front(), Tr::tr("unknown field of an animation"));
+        r.fail(r.unread().keys().front(), AnimationTr::tr("unknown field of an animation"));
     r.require(spec.check());
     return spec;
 }

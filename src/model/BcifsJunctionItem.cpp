@@ -1,9 +1,8 @@
 #include "model/BcifsJunctionItem.h"
 
+#include "core/schemes/ControlPointFractal.h"
 #include "model/Commands.h"
 #include "model/ProjectIO.h"
-
-#include <Eigen/Dense>
 
 #include <cmath>
 
@@ -31,20 +30,6 @@ private:
     AttractorSink &m_target;
     int m_dim;
 };
-
-// Least-norm barycentric coordinates of plane points X (k x 2) against P (n x 2): any
-// choice lands on the same attractor, and this one exists even for collinear points.
-Mat barycentric(const Mat &P, const Mat &X)
-{
-    Mat E(3, P.rows());
-    E.topRows(2) = P.transpose();
-    E.row(2).setOnes();
-    const Eigen::CompleteOrthogonalDecomposition<Mat> cod(E);
-    Mat rhs(3, X.rows());
-    rhs.topRows(2) = X.transpose();
-    rhs.row(2).setOnes();
-    return cod.solve(rhs).transpose();
-}
 
 } // namespace
 
@@ -160,7 +145,7 @@ DerivedIfs BcifsJunctionItem::computeIfs() const
         Mat Y(X.rows(), D);
         for (size_t s = 0; s < cifs->states.size(); ++s)
             Y.middleCols(offsets[s], cifs->states[s].dim()) =
-                barycentric(cifs->states[s].controlPoints, X);
+                leastNormWeightsOfRows(cifs->states[s].controlPoints, X);
         return Y;
     };
     // Every edge state's attractor in turn, on the first sink (the states are few, their

@@ -1,28 +1,13 @@
 #include "model/CifsItem.h"
 
+#include "core/schemes/ControlPointFractal.h"
 #include "core/ifs/Cifs.h"
 #include "model/Commands.h"
 #include "model/ProjectIO.h"
 
-#include <Eigen/Dense>
-
 namespace awb {
 
 namespace {
-
-// Least-norm barycentric coordinates of plane points X (k x 2) against P (n x 2): any choice
-// lands on the same attractor, and this one exists even for a degenerate frame.
-Mat barycentric(const Mat &P, const Mat &X)
-{
-    Mat E(3, P.rows());
-    E.topRows(2) = P.transpose();
-    E.row(2).setOnes();
-    const Eigen::CompleteOrthogonalDecomposition<Mat> cod(E);
-    Mat rhs(3, X.rows());
-    rhs.topRows(2) = X.transpose();
-    rhs.row(2).setOnes();
-    return cod.solve(rhs).transpose();
-}
 
 PointList toPoints(const Mat &P)
 {
@@ -97,7 +82,7 @@ DerivedIfs CifsItem::computeIfs() const
     out.note = tr("Arc T%1 of the fern leads into the Sierpiński state (003 §2.2, Fig. 4).")
                    .arg(m_spec.redirected);
     const Mat P = cifs->states[size_t(state)].controlPoints;
-    out.toIfsSpace = [P](const Mat &X) { return barycentric(P, X); };
+    out.toIfsSpace = [P](const Mat &X) { return leastNormWeightsOfRows(P, X); };
     // The start set comes in the drawn state's space; every other state gets the same plane
     // points in its own coordinates.
     out.iterate = [cifs, state](const StartSet &start, int depth,
@@ -106,7 +91,7 @@ DerivedIfs CifsItem::computeIfs() const
         const Mat plane = start.vertices * cifs->states[size_t(state)].controlPoints;
         std::vector<StartSet> starts;
         for (const CifsState &s : cifs->states)
-            starts.push_back({start.kind, barycentric(s.controlPoints, plane)});
+            starts.push_back({start.kind, leastNormWeightsOfRows(s.controlPoints, plane)});
         return iterate(*cifs, state, starts, depth, *sinks.front(), control);
     };
     return out;

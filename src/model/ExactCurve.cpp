@@ -13,9 +13,9 @@ namespace awb {
 
 namespace {
 
-// lupdate takes the context of Tr::tr() from the macro (a free tr() would get the
+// lupdate takes the context of ExactCurveTr::tr() from the macro (a free tr() would get the
 // enclosing namespace as its context).
-struct Tr {
+struct ExactCurveTr {
     Q_DECLARE_TR_FUNCTIONS(awb::ExactCurve)
 };
 
@@ -33,8 +33,8 @@ std::optional<ExactCurve> complexBezierCurve(Complex t, const Mat &P, int sample
     out.points.resize(Eigen::Index(c.size()), 2);
     for (std::size_t i = 0; i < c.size(); ++i)
         out.points.row(Eigen::Index(i)) << c[i].real(), c[i].imag();
-    out.label = real ? Tr::tr("Bézier curve c([0, 1])")
-                     : Tr::tr("Takagi image c(x + 2iy·T(x)), y = %1 (Conj. 3.7.1)")
+    out.label = real ? ExactCurveTr::tr("Bézier curve c([0, 1])")
+                     : ExactCurveTr::tr("Takagi image c(x + 2iy·T(x)), y = %1 (Conj. 3.7.1)")
                            .arg(t.imag(), 0, 'g', 4);
     return out;
 }
@@ -57,7 +57,7 @@ std::optional<ExactCurve> exactCurveOf(const Item *item, int samples)
         auto points = scheme->exactCurve(P, samples);
         if (!points || points->rows() < 2)
             return std::nullopt;
-        return ExactCurve{*points, Tr::tr("exact curve: %1")
+        return ExactCurve{*points, ExactCurveTr::tr("exact curve: %1")
                                        .arg(QString::fromStdString(scheme->name()))};
     } catch (const std::exception &) {
         return std::nullopt; // bad data: the item's derived error reports it

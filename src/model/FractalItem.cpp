@@ -10,9 +10,9 @@ namespace awb {
 
 namespace {
 
-// lupdate takes the context of Tr::tr() from the macro (a free tr() would get the
+// lupdate takes the context of FractalItemTr::tr() from the macro (a free tr() would get the
 // enclosing namespace as its context).
-struct Tr {
+struct FractalItemTr {
     Q_DECLARE_TR_FUNCTIONS(awb::FractalItem)
 };
 
@@ -42,7 +42,7 @@ RowVec readRow(const QJsonValue &v, int n, const QString &where)
 {
     const QJsonArray a = v.toArray();
     if (!v.isArray() || a.size() != n)
-        throw LoadError{where, Tr::tr("expected an array of %1 numbers").arg(n)};
+        throw LoadError{where, FractalItemTr::tr("expected an array of %1 numbers").arg(n)};
     RowVec out(n);
     for (int i = 0; i < n; ++i)
         out(i) = FieldReader::toNumber(a[i], where + QStringLiteral("[%1]").arg(i + 1));
@@ -53,29 +53,29 @@ std::vector<AffineMap> readMaps(const FieldReader &fields)
 {
     const QJsonValue v = fields.value("maps");
     if (v.isUndefined())
-        fields.fail("maps", Tr::tr("missing (the custom form needs its maps)"));
+        fields.fail("maps", FractalItemTr::tr("missing (the custom form needs its maps)"));
     if (!v.isArray() || v.toArray().isEmpty())
-        fields.fail("maps", Tr::tr("expected a non-empty array of maps {\"A\": [[a11, a12], "
+        fields.fail("maps", FractalItemTr::tr("expected a non-empty array of maps {\"A\": [[a11, a12], "
                                "[a21, a22]], \"b\": [b1, b2]}"));
     std::vector<AffineMap> maps;
     const QJsonArray list = v.toArray();
     for (qsizetype k = 0; k < list.size(); ++k) {
         const QString where = fields.path("maps") + QStringLiteral("[%1]").arg(k + 1);
         if (!list[k].isObject())
-            throw LoadError{where, Tr::tr("expected an object with \"A\" and \"b\"")};
+            throw LoadError{where, FractalItemTr::tr("expected an object with \"A\" and \"b\"")};
         const FieldReader map(list[k].toObject(), where + QLatin1Char('.'));
         const QJsonValue A = map.value("A");
         if (A.isUndefined())
-            map.fail("A", Tr::tr("missing"));
+            map.fail("A", FractalItemTr::tr("missing"));
         if (!A.isArray() || A.toArray().size() != 2)
-            map.fail("A", Tr::tr("expected a 2 x 2 matrix [[a11, a12], [a21, a22]]"));
+            map.fail("A", FractalItemTr::tr("expected a 2 x 2 matrix [[a11, a12], [a21, a22]]"));
         AffineMap f{Mat(2, 2), RowVec(2)};
         for (int r = 0; r < 2; ++r)
             f.A.row(r) = readRow(A.toArray()[r], 2, map.path("A") + QStringLiteral("[%1]")
                                                                         .arg(r + 1));
         const QJsonValue b = map.value("b");
         if (b.isUndefined())
-            map.fail("b", Tr::tr("missing"));
+            map.fail("b", FractalItemTr::tr("missing"));
         f.b = readRow(b, 2, map.path("b"));
         maps.push_back(f);
     }
@@ -114,19 +114,19 @@ MaybeProblem FractalSpec::check() const
     if (preset != Preset::Custom)
         return std::nullopt;
     if (maps.empty())
-        return Problem{"maps", Tr::tr("the custom form needs at least one map")};
+        return Problem{"maps", FractalItemTr::tr("the custom form needs at least one map")};
     for (size_t i = 0; i < maps.size(); ++i) {
         const AffineMap &f = maps[i];
         if (f.A.rows() != 2 || f.A.cols() != 2 || f.b.size() != 2)
-            return Problem{"maps", Tr::tr("map %1 is not a map of the plane").arg(i + 1)};
+            return Problem{"maps", FractalItemTr::tr("map %1 is not a map of the plane").arg(i + 1)};
         if (!f.A.allFinite() || !f.b.allFinite())
-            return Problem{"maps", Tr::tr("map %1 has a non-finite entry").arg(i + 1)};
+            return Problem{"maps", FractalItemTr::tr("map %1 has a non-finite entry").arg(i + 1)};
     }
     if (!allFinite(reference))
-        return Problem{"reference_points", Tr::tr("a reference point is not finite")};
+        return Problem{"reference_points", FractalItemTr::tr("a reference point is not finite")};
     if (!reference.empty() && reference.size() < 3)
         return Problem{"reference_points",
-                       Tr::tr("need at least 3 reference points (000 §4), got %1")
+                       FractalItemTr::tr("need at least 3 reference points (000 §4), got %1")
                            .arg(reference.size())};
     return std::nullopt;
 }
@@ -143,7 +143,7 @@ int FractalSpec::mapCount() const
 // ---- FractalItem ------------------------------------------------------------------------------
 
 FractalItem::FractalItem()
-    : AttractorItem(Tr::tr("Fractal")), m_points(toPoints(kochControlPointFractal().controlPoints))
+    : AttractorItem(FractalItemTr::tr("Fractal")), m_points(toPoints(kochControlPointFractal().controlPoints))
 {
 }
 
@@ -161,7 +161,7 @@ bool FractalItem::setFractal(const FractalSpec &spec, int gesture)
     if (checkFractal(spec))
         return false;
     applyProperty(&FractalItem::m_fractal, spec, &FractalItem::fractalChanged,
-                  Tr::tr("Change fractal of %1").arg(name()), gesture);
+                  FractalItemTr::tr("Change fractal of %1").arg(name()), gesture);
     return true;
 }
 
@@ -173,7 +173,7 @@ DerivedIfs FractalItem::computeIfs() const
     if (m_fractal.preset == FractalSpec::Preset::Custom) {
         const Mat R = m_fractal.reference.empty() ? P : toMatrix(m_fractal.reference);
         if (R.rows() != P.rows())
-            throw InputError(Tr::tr("the %1 reference points and the %2 control points must be "
+            throw InputError(FractalItemTr::tr("the %1 reference points and the %2 control points must be "
                                 "equally many")
                                  .arg(R.rows()).arg(P.rows()).toStdString());
         const AffineWeights mode = m_fractal.weights == FractalSpec::Weights::LeastNorm
@@ -182,7 +182,7 @@ DerivedIfs FractalItem::computeIfs() const
         const ControlPointMatrices cpm = controlPointMatrices(m_fractal.maps, R, mode);
         s = std::make_shared<const SubdivisionIfs>(buildSubdivisionIfs(cpm.S, cpm.overlap, P));
         if (cpm.maxResidual > 1e-9) // S_i R = f_i(R) only approximately: say so
-            out.note = Tr::tr("the reference points are ill-conditioned: S_i R differs from "
+            out.note = FractalItemTr::tr("the reference points are ill-conditioned: S_i R differs from "
                           "f_i(R) by up to %1").arg(cpm.maxResidual);
     } else {
         s = std::make_shared<const SubdivisionIfs>(
@@ -239,19 +239,19 @@ void FractalItem::read(const FieldReader &fields)
 QList<ParameterInfo> FractalItem::parameters() const
 {
     using P = ParameterInfo;
-    const QString group = Tr::tr("Fractal");
+    const QString group = FractalItemTr::tr("Fractal");
     QList<ParameterInfo> list;
-    list << P::make("preset", Tr::tr("Fractal"), P::Type::Choice)
-                .options({Tr::tr("Koch curve (000 §4.1)"),
-                          Tr::tr("Sierpinski triangle (000 §4.2)"),
-                          Tr::tr("Own maps")})
+    list << P::make("preset", FractalItemTr::tr("Fractal"), P::Type::Choice)
+                .options({FractalItemTr::tr("Koch curve (000 §4.1)"),
+                          FractalItemTr::tr("Sierpinski triangle (000 §4.2)"),
+                          FractalItemTr::tr("Own maps")})
                 .in(group)
-                .tip(Tr::tr("The presets use the paper's printed matrices S_i"));
+                .tip(FractalItemTr::tr("The presets use the paper's printed matrices S_i"));
     if (m_fractal.preset == FractalSpec::Preset::Custom) {
-        list << P::make("weights", Tr::tr("Affine weights"), P::Type::Choice)
-                    .options({Tr::tr("Nearest control points"), Tr::tr("Least norm (all points)")})
+        list << P::make("weights", FractalItemTr::tr("Affine weights"), P::Type::Choice)
+                    .options({FractalItemTr::tr("Nearest control points"), FractalItemTr::tr("Least norm (all points)")})
                     .in(group)
-                    .tip(Tr::tr("How f_i(P_j) is written as an affine combination of the control "
+                    .tip(FractalItemTr::tr("How f_i(P_j) is written as an affine combination of the control "
                             "points (000 eq. (5)): nearest points keep edits local, least norm "
                             "lets every point move the whole fractal"));
     }

@@ -10,9 +10,9 @@ namespace awb {
 
 namespace {
 
-// lupdate takes the context of Tr::tr() from the macro (a free tr() would get the
+// lupdate takes the context of ItemAddressTr::tr() from the macro (a free tr() would get the
 // enclosing namespace as its context).
-struct Tr {
+struct ItemAddressTr {
     Q_DECLARE_TR_FUNCTIONS(awb::ItemAddress)
 };
 
@@ -37,15 +37,15 @@ QString parameterMeaning(const AttractorItem &item)
     switch (curve->scheme().kind) {
     case SchemeSpec::Kind::BSpline:
     case SchemeSpec::Kind::Chaikin:
-        return Tr::tr("t: the B-spline's knot parameter scaled to [0, 1] (the address in base 2)");
+        return ItemAddressTr::tr("t: the B-spline's knot parameter scaled to [0, 1] (the address in base 2)");
     case SchemeSpec::Kind::EndInterpolatingBSpline:
-        return Tr::tr("t: the knot parameter scaled to [0, 1] (the address in base 2)");
+        return ItemAddressTr::tr("t: the knot parameter scaled to [0, 1] (the address in base 2)");
     case SchemeSpec::Kind::Bezier:
         return curve->scheme().t.real() == 0.5
-                   ? Tr::tr("t: the Bernstein parameter (the address in base 2)")
-                   : Tr::tr("t: the Bernstein parameter (pieces [0, t], [t, 1] of the split)");
+                   ? ItemAddressTr::tr("t: the Bernstein parameter (the address in base 2)")
+                   : ItemAddressTr::tr("t: the Bernstein parameter (pieces [0, t], [t, 1] of the split)");
     default:
-        return Tr::tr("t: the scheme's own parameter, the address read in base %1")
+        return ItemAddressTr::tr("t: the scheme's own parameter, the address read in base %1")
             .arg(curve->scheme().arity());
     }
 }
@@ -53,7 +53,7 @@ QString parameterMeaning(const AttractorItem &item)
 Address parseItemAddress(const QString &text, const DerivedIfs &d)
 {
     if (d.iterate)
-        throw InputError(Tr::tr("this item is drawn by an automaton: its words are not addresses "
+        throw InputError(ItemAddressTr::tr("this item is drawn by an automaton: its words are not addresses "
                             "of one IFS").toStdString());
     return parseAddress(text.toStdString(), d.ifs.size());
 }
@@ -83,10 +83,10 @@ std::optional<ParameterInterval> parseParameterInterval(const QString &text)
     const double t0 = match.captured(1).trimmed().toDouble(&ok0);
     const double t1 = match.captured(2).trimmed().toDouble(&ok1);
     if (!ok0 || !ok1)
-        throw InputError(Tr::tr("a parameter interval is [t0, t1] with two numbers, e.g. "
+        throw InputError(ItemAddressTr::tr("a parameter interval is [t0, t1] with two numbers, e.g. "
                             "[0.25, 0.5]").toStdString());
     if (!(t0 >= 0.0 && t0 < t1 && t1 <= 1.0))
-        throw InputError(Tr::tr("the parameter interval [%1, %2] must satisfy 0 <= t0 < t1 <= 1")
+        throw InputError(ItemAddressTr::tr("the parameter interval [%1, %2] must satisfy 0 <= t0 < t1 <= 1")
                              .arg(t0)
                              .arg(t1)
                              .toStdString());

@@ -9,9 +9,9 @@ namespace awb {
 
 namespace {
 
-// lupdate takes the context of Tr::tr() from the macro (a free tr() would get the
+// lupdate takes the context of PointExportTr::tr() from the macro (a free tr() would get the
 // enclosing namespace as its context).
-struct Tr {
+struct PointExportTr {
     Q_DECLARE_TR_FUNCTIONS(awb::PointExport)
 };
 
@@ -20,7 +20,7 @@ void put(QIODevice &out, const QByteArray &bytes)
 {
     if (out.write(bytes) != bytes.size())
         throw InputError(
-            Tr::tr("cannot write the points: %1").arg(out.errorString()).toStdString());
+            PointExportTr::tr("cannot write the points: %1").arg(out.errorString()).toStdString());
 }
 
 // Streams f_w(F^depth(X0)) (w = `address`, empty: the identity) to `visit(point row of one
@@ -30,7 +30,7 @@ void iteratePoints(const DerivedIfs &d, const StartSet &start, int depth, const 
                    const IterationControl &control, Visit &&visit)
 {
     if (!address.empty() && d.iterate)
-        throw InputError(Tr::tr("--address needs an item drawn by one IFS; this one is drawn by "
+        throw InputError(PointExportTr::tr("--address needs an item drawn by one IFS; this one is drawn by "
                             "an automaton").toStdString());
     const AffineMap prefix = composeAddress(d.ifs, address);
     CallbackSink sink([&](const Mat &v, StartSet::Kind, const std::uint8_t *a, int n) {

@@ -15,9 +15,9 @@ QString fromStd(const std::string &s) { return QString::fromStdString(s); }
 
 QString kindName(SchemeSpec::Kind kind) { return SchemeSpec::kindNames().at(int(kind)); }
 
-// lupdate takes the context of Tr::tr() from the macro (a free tr() would get the
+// lupdate takes the context of CurveItemTr::tr() from the macro (a free tr() would get the
 // enclosing namespace as its context).
-struct Tr {
+struct CurveItemTr {
     Q_DECLARE_TR_FUNCTIONS(awb::SubdivisionCurveItem)
 };
 
@@ -26,7 +26,7 @@ DerivedIfs complexBezierIfs(int n, Complex t, const Mat &P)
     requireFinite(P, "control points");
     const int m = int(P.rows());
     if (m != n + 1)
-        throw InputError(Tr::tr("Bézier of degree %1 needs exactly %2 control points, got %3")
+        throw InputError(CurveItemTr::tr("Bézier of degree %1 needs exactly %2 control points, got %3")
                              .arg(n).arg(n + 1).arg(m).toStdString());
     return complexBezierDerivedIfs(P, t);
 }
@@ -73,11 +73,11 @@ std::unique_ptr<CurveScheme> SchemeSpec::makeScheme() const
     case Kind::Bezier:
         if (isComplex())
             throw InputError(
-                Tr::tr("a complex Bézier parameter has no real scheme").toStdString());
+                CurveItemTr::tr("a complex Bézier parameter has no real scheme").toStdString());
         return std::make_unique<BezierScheme>(degree, t.real());
     case Kind::Matrices: return std::make_unique<MatrixScheme>(matrices);
     }
-    throw InputError(Tr::tr("unknown scheme kind").toStdString());
+    throw InputError(CurveItemTr::tr("unknown scheme kind").toStdString());
 }
 
 MaybeProblem SchemeSpec::check() const
@@ -108,7 +108,7 @@ MaybeProblem SchemeSpec::check() const
                 makeScheme();
             } else if (!std::isfinite(t.real()) || !std::isfinite(t.imag())
                        || !(std::abs(t) < 1.0 && std::abs(1.0 - t) < 1.0)) {
-                return Problem{field, Tr::tr("the complex parameter t = %1 %2 %3i must satisfy "
+                return Problem{field, CurveItemTr::tr("the complex parameter t = %1 %2 %3i must satisfy "
                                          "|t| < 1 and |1 - t| < 1 (004 §3.7)")
                                           .arg(t.real())
                                           .arg(t.imag() < 0 ? "-" : "+")
@@ -129,7 +129,7 @@ MaybeProblem SchemeSpec::check() const
 // ---- SubdivisionCurveItem ---------------------------------------------------------------------
 
 SubdivisionCurveItem::SubdivisionCurveItem()
-    : AttractorItem(Tr::tr("Curve")), m_points{{0.0, 0.0}, {1.0, 2.0}, {3.0, 2.0}, {4.0, 0.0}}
+    : AttractorItem(CurveItemTr::tr("Curve")), m_points{{0.0, 0.0}, {1.0, 2.0}, {3.0, 2.0}, {4.0, 0.0}}
 {
 }
 
@@ -147,7 +147,7 @@ bool SubdivisionCurveItem::setScheme(const SchemeSpec &scheme, int gesture)
     if (checkScheme(scheme))
         return false;
     applyProperty(&SubdivisionCurveItem::m_scheme, scheme, &SubdivisionCurveItem::schemeChanged,
-                  Tr::tr("Change scheme of %1").arg(name()), gesture);
+                  CurveItemTr::tr("Change scheme of %1").arg(name()), gesture);
     return true;
 }
 
@@ -238,7 +238,7 @@ void SubdivisionCurveItem::read(const FieldReader &fields)
         else if (t.isDouble()) // a real t may be written as a plain number
             spec.t = FieldReader::toNumber(t, s.path("t"));
         else if (!t.isUndefined())
-            s.fail("t", Tr::tr("expected [re, im] or a number"));
+            s.fail("t", CurveItemTr::tr("expected [re, im] or a number"));
         break;
     }
     case SchemeSpec::Kind::Matrices: spec.matrices = s.matrices("matrices"); break;
@@ -253,42 +253,42 @@ void SubdivisionCurveItem::read(const FieldReader &fields)
 QList<ParameterInfo> SubdivisionCurveItem::parameters() const
 {
     using P = ParameterInfo;
-    const QString group = Tr::tr("Scheme");
+    const QString group = CurveItemTr::tr("Scheme");
     QList<ParameterInfo> list;
-    list << P::make("scheme.kind", Tr::tr("Scheme"), P::Type::Choice)
-                .options({Tr::tr("Uniform B-spline"), Tr::tr("End-interpolating B-spline"),
-                          Tr::tr("Chaikin"),
-                          Tr::tr("Corner cutting"), Tr::tr("Four-point"),
-                          Tr::tr("Bézier (de Casteljau)"),
-                          Tr::tr("Own matrices")})
+    list << P::make("scheme.kind", CurveItemTr::tr("Scheme"), P::Type::Choice)
+                .options({CurveItemTr::tr("Uniform B-spline"), CurveItemTr::tr("End-interpolating B-spline"),
+                          CurveItemTr::tr("Chaikin"),
+                          CurveItemTr::tr("Corner cutting"), CurveItemTr::tr("Four-point"),
+                          CurveItemTr::tr("Bézier (de Casteljau)"),
+                          CurveItemTr::tr("Own matrices")})
                 .in(group);
     const bool bezier = m_scheme.kind == SchemeSpec::Kind::Bezier;
     if (bezier || m_scheme.kind == SchemeSpec::Kind::BSpline
         || m_scheme.kind == SchemeSpec::Kind::EndInterpolatingBSpline) {
-        list << P::make("scheme.degree", Tr::tr("Degree"), P::Type::Integer)
+        list << P::make("scheme.degree", CurveItemTr::tr("Degree"), P::Type::Integer)
                     .range(1, bezier ? 30 : 15)
                     .in(group)
-                    .tip(bezier ? Tr::tr("Degree n: the curve has n + 1 control points")
-                                : Tr::tr("Degree of the B-spline (Lane–Riesenfeld, 004 eq. 2.7)"));
+                    .tip(bezier ? CurveItemTr::tr("Degree n: the curve has n + 1 control points")
+                                : CurveItemTr::tr("Degree of the B-spline (Lane–Riesenfeld, 004 eq. 2.7)"));
     }
     if (bezier) {
-        list << P::make("scheme.t", Tr::tr("Split parameter t"), P::Type::Complex)
+        list << P::make("scheme.t", CurveItemTr::tr("Split parameter t"), P::Type::Complex)
                     .in(group)
-                    .tip(Tr::tr("de Casteljau split at t (004 eq. 2.5). A complex t inside both "
+                    .tip(CurveItemTr::tr("de Casteljau split at t (004 eq. 2.5). A complex t inside both "
                             "discs |t| < 1, |1 − t| < 1 gives a fractal curve (004 §3.7)."));
     }
     if (m_scheme.kind == SchemeSpec::Kind::FourPoint) {
-        list << P::make("scheme.omega", Tr::tr("Tension ω"), P::Type::Real)
+        list << P::make("scheme.omega", CurveItemTr::tr("Tension ω"), P::Type::Real)
                     .slider(-0.5, 0.5)
                     .in(group)
-                    .tip(Tr::tr("1/16 gives C1 curves reproducing cubics; −1/2 < ω < 0 or "
+                    .tip(CurveItemTr::tr("1/16 gives C1 curves reproducing cubics; −1/2 < ω < 0 or "
                             "1/4 ≤ ω < 1/2 gives fractal curves (004 Thm. 2.4.1)"));
     }
     if (m_scheme.kind == SchemeSpec::Kind::CornerCutting) {
         const QString tip =
-            Tr::tr("New points at parameters a < b on every edge (Chaikin: 1/4, 3/4)");
-        for (const auto &[key, label] : {std::pair{"scheme.a", Tr::tr("First cut a")},
-                                         std::pair{"scheme.b", Tr::tr("Second cut b")}})
+            CurveItemTr::tr("New points at parameters a < b on every edge (Chaikin: 1/4, 3/4)");
+        for (const auto &[key, label] : {std::pair{"scheme.a", CurveItemTr::tr("First cut a")},
+                                         std::pair{"scheme.b", CurveItemTr::tr("Second cut b")}})
             list << P::make(key, label, P::Type::Real).range(0, 1).slider(0, 1).in(group).tip(tip);
     }
     return list;

@@ -15,12 +15,6 @@
 
 namespace awb {
 
-namespace {
-
-QString fromStd(const std::string &s) { return QString::fromStdString(s); }
-
-} // namespace
-
 // ---- SurfaceSchemeSpec ------------------------------------------------------------------------
 
 const QStringList &SurfaceSchemeSpec::kindNames()
@@ -34,7 +28,7 @@ QStringList SurfaceSchemeSpec::layoutNames(Kind kind)
     QStringList out;
     for (const std::string &n :
          awb::layoutNames(kind == Kind::Bicubic ? Lattice::Square : Lattice::Triangular))
-        out << fromStd(n);
+        out << QString::fromStdString(n);
     return out;
 }
 
@@ -128,7 +122,7 @@ MaybeProblem SurfaceNet::check() const
     } catch (const InputError &e) {
         return Problem{"lattice", tr("not the net of a %1 %2 patch: %3")
                                       .arg(scheme.kindNames().at(int(scheme.kind)), scheme.layout,
-                                           fromStd(e.what()))};
+                                           QString::fromStdString(e.what()))};
     }
     const int n = int(canonical.S.size());
     if (!mapsUsed.empty()) {
@@ -284,9 +278,9 @@ DerivedIfs SubdivisionSurfaceItem::computeIfs() const
         for (const Mat &S : s->S)
             out.A.real.push_back(liftMatrix(s->ifs.lifting, S).A);
     } else {
-        out.A.unavailable = fromStd(s->ifs.lifting.reason);
+        out.A.unavailable = QString::fromStdString(s->ifs.lifting.reason);
     }
-    out.note = fromStd(s->ifs.lifting.note());
+    out.note = QString::fromStdString(s->ifs.lifting.note());
     out.ifs = s->ifs.ifs;
     if (int(s->mapsUsed.size()) != int(s->S.size()))
         out.mapIndex = s->mapsUsed;

@@ -1,10 +1,10 @@
 // Fractals with control points (000 §4): the general recipe and the Koch / Sierpinski presets.
 #include "core/schemes/ControlPointFractal.h"
 
+#include "core/Decompositions.h"
 #include "core/Messages.h"
 #include "core/schemes/Scheme.h"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -236,6 +236,15 @@ RowVec leastNormWeights(const Mat &P, const RowVec &y)
     requireControlPoints(P);
     requirePoint(P, y);
     return leastNormUnchecked(Eigen::CompleteOrthogonalDecomposition<Mat>(affineSystem(P)), y);
+}
+
+Mat leastNormWeightsOfRows(const Mat &P, const Mat &X)
+{
+    const Eigen::CompleteOrthogonalDecomposition<Mat> cod(affineSystem(P));
+    Mat rhs(P.cols() + 1, X.rows());
+    rhs.topRows(P.cols()) = X.transpose();
+    rhs.row(P.cols()).setOnes();
+    return cod.solve(rhs).transpose();
 }
 
 ControlPointMatrices controlPointMatrices(const std::vector<AffineMap> &maps, const Mat &P,

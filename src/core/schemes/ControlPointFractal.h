@@ -42,6 +42,10 @@ ControlPointMatrices controlPointMatrices(const std::vector<AffineMap> &maps, co
 // Same validation as controlPointMatrices.
 RowVec nearestBarycentricWeights(const Mat &P, const RowVec &y);
 RowVec leastNormWeights(const Mat &P, const RowVec &y);
+// The least-norm weights of every row of X (k x d) against P (m x d): k x m, rows summing to 1,
+// W P = X. Any weights land on the same attractor, and these exist even for a degenerate
+// frame (collinear P); no validation (the controlled IFS and junction items check P first).
+Mat leastNormWeightsOfRows(const Mat &P, const Mat &X);
 
 // A preset of 000 §4: the printed matrices, the canonical control points they were made for and
 // the classic IFS (ordered so that S_i P = f_i(P) on the canonical P).

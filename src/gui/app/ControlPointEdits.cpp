@@ -15,9 +15,9 @@ namespace awb::control_points {
 
 namespace {
 
-// lupdate takes the context of Tr::tr() from the macro (a free tr() would get the
+// lupdate takes the context of ControlPointEditsTr::tr() from the macro (a free tr() would get the
 // enclosing namespace as its context).
-struct Tr {
+struct ControlPointEditsTr {
     Q_DECLARE_TR_FUNCTIONS(awb::ControlPointEdits)
 };
 
@@ -56,9 +56,9 @@ bool asOneStep(AttractorItem *item, const QString &text, const std::function<boo
 QString whyFixed(const AttractorItem *item, int set)
 {
     if (!item || set < 0 || set >= item->controlPointSetCount())
-        return Tr::tr("There is no such point set.");
+        return ControlPointEditsTr::tr("There is no such point set.");
     if (!item->pointCountEditable(set))
-        return Tr::tr("%1 (%2) has a fixed number of control points.")
+        return ControlPointEditsTr::tr("%1 (%2) has a fixed number of control points.")
             .arg(item->name(), item->typeName());
     return {};
 }
@@ -70,17 +70,17 @@ bool insert(AttractorItem *item, int set, int index, const Point &point, QString
     const auto bezier = why.isEmpty() ? bezierFor(item, count + 1) : std::nullopt;
     if (why.isEmpty() && bezier)
         if (const auto p = qobject_cast<SubdivisionCurveItem *>(item)->checkScheme(*bezier))
-            why = Tr::tr("A Bézier curve of degree %1 is refused: %2")
+            why = ControlPointEditsTr::tr("A Bézier curve of degree %1 is refused: %2")
                       .arg(bezier->degree).arg(p->message);
     if (why.isEmpty() && (index < 0 || index > count))
-        why = Tr::tr("There is no point %1.").arg(index + 1);
+        why = ControlPointEditsTr::tr("There is no point %1.").arg(index + 1);
     if (!why.isEmpty()) {
         if (error)
             *error = why;
         return false;
     }
     return asOneStep(item,
-                     Tr::tr("Insert control point %1 into %2").arg(index + 1).arg(item->name()),
+                     ControlPointEditsTr::tr("Insert control point %1 into %2").arg(index + 1).arg(item->name()),
                      [&] {
                          if (!item->insertControlPoint(index, point, set))
                              return false;
@@ -97,11 +97,11 @@ bool remove(AttractorItem *item, int set, const std::vector<int> &indices, QStri
     std::sort(unique.begin(), unique.end());
     unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
     if (why.isEmpty() && unique.empty())
-        why = Tr::tr("No control point is selected.");
+        why = ControlPointEditsTr::tr("No control point is selected.");
     if (why.isEmpty() && (unique.front() < 0 || unique.back() >= count))
-        why = Tr::tr("There is no point %1.").arg(unique.back() + 1);
+        why = ControlPointEditsTr::tr("There is no point %1.").arg(unique.back() + 1);
     if (why.isEmpty() && count - int(unique.size()) < minPoints)
-        why = Tr::tr("%1 needs at least %2 control points.").arg(item->name()).arg(minPoints);
+        why = ControlPointEditsTr::tr("%1 needs at least %2 control points.").arg(item->name()).arg(minPoints);
     const auto bezier = why.isEmpty() ? bezierFor(item, count - int(unique.size()))
                                       : std::nullopt;
     if (!why.isEmpty()) {
@@ -110,9 +110,9 @@ bool remove(AttractorItem *item, int set, const std::vector<int> &indices, QStri
         return false;
     }
     const QString text = unique.size() == 1
-                             ? Tr::tr("Delete control point %1 of %2").arg(unique.front() + 1)
+                             ? ControlPointEditsTr::tr("Delete control point %1 of %2").arg(unique.front() + 1)
                                    .arg(item->name())
-                             : Tr::tr("Delete %1 control points of %2").arg(unique.size())
+                             : ControlPointEditsTr::tr("Delete %1 control points of %2").arg(unique.size())
                                    .arg(item->name());
     return asOneStep(item, text, [&] {
         if (!item->removeControlPoints(unique, set))

@@ -18,22 +18,6 @@
 
 namespace awb {
 
-namespace {
-
-// The CPU frame of a mesh as an image (the raster's pixels are 0xAARRGGBB rows).
-QImage toImage(const std::vector<std::uint32_t> &pixels, QSize size)
-{
-    if (pixels.size() != std::size_t(size.width()) * std::size_t(size.height()))
-        return {};
-    QImage image(size, QImage::Format_RGB32);
-    for (int y = 0; y < size.height(); ++y)
-        std::copy_n(pixels.begin() + std::ptrdiff_t(y) * size.width(), size.width(),
-                    reinterpret_cast<std::uint32_t *>(image.scanLine(y)));
-    return image;
-}
-
-} // namespace
-
 SurfaceView::SurfaceView(QWidget *parent, bool allowGl)
     : QWidget(parent), m_allowGl(allowGl), m_meshWorker(std::make_unique<LatestJobWorker>()),
       m_frameWorker(std::make_unique<LatestJobWorker>())
@@ -477,7 +461,7 @@ void SurfaceView::requestCpuFrame()
         QElapsedTimer timer;
         timer.start();
         const QImage image =
-            toImage(drawSurfaceMesh(*mesh, size.width(), size.height(), camera, radius, palette),
+            pixelsToImage(drawSurfaceMesh(*mesh, size.width(), size.height(), camera, radius, palette),
                     size);
         const double ms = timer.nsecsElapsed() * 1e-6;
         m_inbox.post([=, this] {

@@ -175,6 +175,8 @@ protected:
 
 private:
     friend class SurfaceGLWindow;
+    // The CPU frame of a mesh (0xAARRGGBB rows) as an image.
+    static QImage pixelsToImage(const std::vector<std::uint32_t> &pixels, QSize size);
     enum class DragKind { None, Orbit, Pan, ControlPoint, StartVertex };
     struct Drag {
         DragKind kind = DragKind::None;

@@ -26,7 +26,10 @@ bool sameCamera(const OrthoCamera &a, const OrthoCamera &b)
            && a.halfHeight == b.halfHeight;
 }
 
-QImage toImage(const std::vector<std::uint32_t> &pixels, QSize size)
+} // namespace
+
+// The CPU frame of a mesh as an image (the raster's pixels are 0xAARRGGBB rows).
+QImage SurfaceView::pixelsToImage(const std::vector<std::uint32_t> &pixels, QSize size)
 {
     if (pixels.size() != std::size_t(size.width()) * std::size_t(size.height()))
         return {};
@@ -36,8 +39,6 @@ QImage toImage(const std::vector<std::uint32_t> &pixels, QSize size)
                     reinterpret_cast<std::uint32_t *>(image.scanLine(y)));
     return image;
 }
-
-} // namespace
 
 void SurfaceView::resizeEvent(QResizeEvent *event)
 {
@@ -123,7 +124,7 @@ QImage SurfaceView::renderImage(QSize size, bool overlays) const
             camera.halfHeight *= aspectView / aspect;
         const double radius = std::max(0.5, 0.5 * m_settings.pointSize
                                                 * (double(size.height()) / std::max(1, height())));
-        const QImage raster = toImage(drawSurfaceMesh(*mesh, size.width(), size.height(), camera,
+        const QImage raster = pixelsToImage(drawSurfaceMesh(*mesh, size.width(), size.height(), camera,
                                                       radius, colours().palette),
                                       size);
         if (!raster.isNull())
@@ -152,7 +153,7 @@ void SurfaceView::renderTo(QPainter *painter, const QRectF &target) const
             const double radius = std::max(0.5, 0.5 * m_settings.pointSize
                                                     * (double(pixels.height())
                                                        / std::max(1, height())));
-            const QImage raster = toImage(drawSurfaceMesh(*mesh, pixels.width(), pixels.height(),
+            const QImage raster = pixelsToImage(drawSurfaceMesh(*mesh, pixels.width(), pixels.height(),
                                                           m_camera.ortho, radius,
                                                           colours().palette),
                                           pixels);
