@@ -1,22 +1,47 @@
 #!/usr/bin/env bash
-# Builds the project with AddressSanitizer and UndefinedBehaviorSanitizer (clang,
-# -fno-sanitize-recover=all: the first report ends the test with a failure) in build-asan/ and
-# runs the whole CTest suite there. Any report fails the run; leaks are reported too
-# (LeakSanitizer), with the suppressions of tests/sanitizers/lsan.supp (third-party libraries
-# only, each with its reason). The same build holds the fuzz targets of scripts/fuzz.sh.
-#   scripts/sanitize.sh [CTEST ARGUMENTS...]     e.g. -R model_ to run part of the suite
+# The sanitizer builds (clang), each in its own folder, each running its part of the CTest
+# suite; any report fails the run.
+#   scripts/sanitize.sh [address] [CTEST ARGUMENTS...]
+#       AddressSanitizer + UndefinedBehaviorSanitizer (-fno-sanitize-recover=all: the first
+#       report ends the test with a failure) and LeakSanitizer in build-asan/, the whole suite,
+#       with the suppressions of tests/sanitizers/lsan.supp (third-party libraries only, each
+#       with its reason). The same build holds the fuzz targets of scripts/fuzz.sh.
+#   scripts/sanitize.sh thread [CTEST ARGUMENTS...]
+#       ThreadSanitizer in build-tsan/: every test labelled `threads` (the tests that start a
+#       thread: the engine's workers and merges, the GUI's render, mesh, frame and analysis
+#       workers, cancellation, playback), with tests/sanitizers/tsan.supp (third-party only).
+# CTest arguments narrow the run, e.g. `scripts/sanitize.sh thread -R gui_` .
+# Prints the build's and the tests' times; scripts/check-tests.py checks that every test the
+# tree defines for the build ran (unless CTest arguments narrow it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+mode=address
+case "${1:-}" in
+  address|thread) mode="$1"; shift ;;
+esac
 bash scripts/setup.sh --packages-only
 start=$(date +%s)
-bash scripts/configure-asan.sh
-cmake --build build-asan --parallel "$(nproc)"
+if [ "$mode" = thread ]; then
+  dir=build-tsan kind=tsan
+  bash scripts/configure-tsan.sh
+  cmake --build "$dir" --parallel "$(nproc)"
+else
+  dir=build-asan kind=asan
+  bash scripts/configure-asan.sh
+  cmake --build "$dir" --parallel "$(nproc)"
+fi
 built=$(date +%s)
 source scripts/sanitizer-env.sh
-cd build-asan
 status=0
+log="$dir/ctest.log"
 # Instrumented code runs several times slower: tests get 1800 s each (tests/CMakeLists.txt).
-ctest --output-on-failure --parallel "$(nproc)" "$@" || status=$?
+selection=()
+[ "$mode" = thread ] && selection=(-L threads)
+ctest --test-dir "$dir" --output-on-failure --parallel "$(nproc)" "${selection[@]}" "$@" 2>&1 \
+  | tee "$log" || status=$?
+if [ $# -eq 0 ]; then
+  python3 scripts/check-tests.py "$dir" --kind "$kind" --log "$log" || status=1
+fi
 end=$(date +%s)
-echo "sanitize: build $((built - start)) s, tests $((end - built)) s, exit status $status"
+echo "sanitize ($mode): build $((built - start)) s, tests $((end - built)) s, exit status $status"
 exit $status

@@ -8,3 +8,6 @@ export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppress
 export QTEST_FUNCTION_TIMEOUT=1700000
 # The tests' wall-clock limits (waiting for a render or a worker) scaled for instrumented code.
 export AWB_TEST_TIME_SCALE=10
+# ThreadSanitizer (scripts/sanitize.sh thread): the first report fails the test; suppressions
+# for third-party code only (tests/sanitizers/tsan.supp, each with its reason).
+export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:history_size=4:suppressions=$PWD/tests/sanitizers/tsan.supp"
