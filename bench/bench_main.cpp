@@ -15,6 +15,7 @@
 // Each engine line ends with its ratio to the plain kernel and to the machine limit.
 
 #include "core/ifs/Attractor.h"
+#include "core/Threads.h"
 #include "core/ifs/Random.h"
 #include "core/render/Engine.h"
 #include "core/schemes/ControlPointFractal.h"
@@ -51,17 +52,6 @@ double best(int reps, Fn fn)
         t = std::min(t, seconds(t0));
     }
     return t;
-}
-
-template <typename Fn>
-void onThreads(int threads, Fn fn)
-{
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t)
-        pool.emplace_back(fn, t);
-    fn(0);
-    for (auto &th : pool)
-        th.join();
 }
 
 volatile std::uint64_t g_sink = 0;  // keeps results alive

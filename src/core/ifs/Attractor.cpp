@@ -1,12 +1,12 @@
 #include "core/ifs/Attractor.h"
 
 #include "core/Messages.h"
+#include "core/Threads.h"
 #include "core/ifs/Random.h"
 
 #include <algorithm>
 #include <climits>
 #include <cmath>
-#include <thread>
 
 namespace awb {
 
@@ -206,21 +206,7 @@ IterationStats iterateParallel(const Ifs &ifs, const StartSet &start, int depth,
         throw InputError(coreTranslate("awb::ifs", "no sink to receive the attractor"));
     const int N = ifs.size();
     const int threads = int(sinks.size());
-    // Split into tasks: all words of the innermost `split` levels, at least 4 per thread.
-    int split = 0;
-    while (split < depth && std::pow(double(N), split) < 4.0 * threads && threads > 1)
-        ++split;
-    std::vector<std::vector<int>> tasks(1);
-    for (int s = 0; s < split; ++s) {
-        std::vector<std::vector<int>> next;
-        for (const auto &t : tasks)
-            for (int i = 0; i < N; ++i) {
-                auto u = t;
-                u.push_back(i);
-                next.push_back(u);
-            }
-        tasks.swap(next);
-    }
+    const std::vector<std::vector<int>> tasks = splitTasks(N, depth, threads, 4);
     std::atomic<std::size_t> nextTask{0};
     std::atomic<std::uint64_t> done{0};
     std::atomic<bool> stopped{false};
@@ -240,15 +226,7 @@ IterationStats iterateParallel(const Ifs &ifs, const StartSet &start, int depth,
         }
         emitted[t] = walker.emitted();
     };
-    if (threads == 1) {
-        worker(0);
-    } else {
-        std::vector<std::thread> pool;
-        for (int t = 0; t < threads; ++t)
-            pool.emplace_back(worker, t);
-        for (auto &th : pool)
-            th.join();
-    }
+    onThreads(threads, worker);
     IterationStats stats;
     for (auto e : emitted)
         stats.images += e;
@@ -344,15 +322,7 @@ IterationStats chaosGameParallel(const Ifs &ifs, const RowVec &x0, const ChaosOp
             results[s] = chaosRun(ifs, pick, x0, s, streamShare(options.samples, s), options,
                                   *sinks[t], control, done, total);
     };
-    if (threads == 1) {
-        worker(0);
-    } else {
-        std::vector<std::thread> pool;
-        for (int t = 0; t < threads; ++t)
-            pool.emplace_back(worker, t);
-        for (auto &th : pool)
-            th.join();
-    }
+    onThreads(threads, worker);
     IterationStats stats;
     for (const auto &r : results) {
         stats.images += r.images;

@@ -42,7 +42,7 @@ IterationStats runFixed(const EngineJob &job, const std::vector<CellView> &cv,
                                                         last, *images[t], progress);
         });
     } else {
-        const auto tasks = splitTasks(F.n, job.depth, threads);
+        const auto tasks = splitTasks(F.n, job.depth, threads, 8);
         const int split = tasks.empty() ? 0 : int(tasks.front().size());
         const FusedLeaves<D> fused(F, FusedLeaves<D>::levelsFor(F.n, job.depth - split));
         const Progress progress{control, done, std::max(1.0, imageCount(*job.ifs, job.depth))};

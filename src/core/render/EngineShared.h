@@ -5,6 +5,7 @@
 // files of their own (EngineRun.h). Engine.cpp includes this and not the kernels, so that an edit
 // of it compiles none of them.
 
+#include "core/Threads.h"
 #include "core/render/Engine.h"
 
 #include <cmath>
@@ -31,38 +32,6 @@ struct CellView {
     Mat V;      // D x 2
     double c[2];
 };
-
-// Runs fn(t) on `threads` threads (t = 0 on the caller's).
-template <typename Fn>
-void onThreads(int threads, Fn fn)
-{
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t)
-        pool.emplace_back(fn, t);
-    fn(0);
-    for (auto &th : pool)
-        th.join();
-}
-
-// Words of the innermost `split` levels, at least 4 per thread, as tasks.
-inline std::vector<std::vector<int>> splitTasks(int N, int depth, int threads)
-{
-    int split = 0;
-    while (split < depth && std::pow(double(N), split) < 8.0 * threads && threads > 1)
-        ++split;
-    std::vector<std::vector<int>> tasks(1);
-    for (int s = 0; s < split; ++s) {
-        std::vector<std::vector<int>> next;
-        for (const auto &t : tasks)
-            for (int i = 0; i < N; ++i) {
-                auto u = t;
-                u.push_back(i);
-                next.push_back(u);
-            }
-        tasks.swap(next);
-    }
-    return tasks;
-}
 
 // The histograms of one render: images[0] is the caller's picture, the others the threads'
 // own, reused from one render to the next; clean[t]: images[t] is known to be empty (taken
