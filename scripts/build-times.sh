@@ -2,9 +2,11 @@
 # The build-time figures of the README ("Development"), measured as CI meets them: a fresh
 # clone of HEAD in a temporary folder, an empty ccache, nothing built.
 #   scripts/build-times.sh [main] [edit] [asan] [tsan]     (default: all four)
-#     main   `AWB_NO_GUI=1 bash scripts/main.sh`: packages checked, configure, build, the gallery
-#     edit   then one core file edited (a comment added to src/core/analysis/Spectrum.cpp):
-#            `cmake --build build` recompiles it and relinks what uses it
+#     main   `AWB_NO_GUI=1 bash scripts/main.sh`: packages checked, configure, build of the two
+#            programs, the gallery
+#     edit   then, the whole tree built, one core file edited (a comment added to
+#            src/core/analysis/Spectrum.cpp): `cmake --build build` recompiles it and relinks
+#            everything that uses it (programs, tests, benchmarks)
 #     asan   the instrumented build of scripts/sanitize.sh and scripts/fuzz.sh (build-asan/)
 #     tsan   the ThreadSanitizer build of `scripts/sanitize.sh thread` (build-tsan/)
 # Prints each time and the ten longest compile steps of the normal build (.ninja_log).
@@ -31,6 +33,7 @@ for w in "${what[@]}"; do
     main) AWB_NO_GUI=1 timed main bash scripts/main.sh ;;
     edit)
       [ -f build/build.ninja ] || timed setup bash scripts/setup.sh
+      cmake --build build > /dev/null  # the tests too (main.sh builds the programs only)
       echo "// $(date +%s) an edit (scripts/build-times.sh)" >> src/core/analysis/Spectrum.cpp
       timed edit cmake --build build
       git checkout -q src/core/analysis/Spectrum.cpp ;;

@@ -4,7 +4,7 @@
 # the gallery (examples/*.awb, one per paper figure) with the CLI to build/gallery/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
+bash scripts/setup.sh --programs
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && [ -z "${AWB_NO_GUI:-}" ] \
    && [ -x build/bin/attractor-workbench ]; then
     exec ./build/bin/attractor-workbench examples/000-fig11-sierpinski-with-control-points.awb

@@ -24,7 +24,13 @@ start=$(date +%s)
 if [ "$mode" = thread ]; then
   dir=build-tsan kind=tsan
   bash scripts/configure-tsan.sh
-  cmake --build "$dir" --parallel "$(nproc)"
+  # Only what the tests labelled `threads` run: their test executables (read from CTest's list)
+  # and the two programs they start; the model's tests and the fuzz replays start no thread.
+  targets=$(ctest --test-dir "$dir" -L threads --show-only=json-v1 | python3 -c '
+import json, os, sys
+names = {os.path.basename(a) for t in json.load(sys.stdin)["tests"] for a in t["command"]}
+print(" ".join(sorted(n for n in names if n.endswith("_tests"))))')
+  cmake --build "$dir" --parallel "$(nproc)" --target $targets attractor-cli attractor-workbench
 else
   dir=build-asan kind=asan
   bash scripts/configure-asan.sh

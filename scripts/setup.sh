@@ -43,4 +43,10 @@ BUILD_TYPE="${AWB_BUILD_TYPE:-RelWithDebInfo}"
 if [ ! -f build/build.ninja ]; then
   cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE="$BUILD_TYPE"
 fi
-cmake --build build --parallel "$(nproc)"
+# `setup.sh --programs`: only the two programs (scripts/main.sh: the first picture without
+# waiting for the tests and benchmarks to compile); otherwise everything.
+if [ "${1:-}" = "--programs" ]; then
+  cmake --build build --parallel "$(nproc)" --target attractor-cli attractor-workbench
+else
+  cmake --build build --parallel "$(nproc)"
+fi
