@@ -24,12 +24,16 @@ start=$(date +%s)
 if [ "$mode" = thread ]; then
   dir=build-tsan kind=tsan
   bash scripts/configure-tsan.sh
-  # Only what the tests labelled `threads` run: their test executables (read from CTest's list)
-  # and the two programs they start; the model's tests and the fuzz replays start no thread.
+  # Only what the tests labelled `threads` run: their test executables and the two programs
+  # they start; the model's tests and the fuzz replays start no thread. A test <layer>_test_<name>
+  # runs <layer>_tests (tests/CMakeLists.txt). The names, not the commands: before the first
+  # build CTest's list has no command for an executable that does not exist yet.
   targets=$(ctest --test-dir "$dir" -L threads --show-only=json-v1 | python3 -c '
-import json, os, sys
-names = {os.path.basename(a) for t in json.load(sys.stdin)["tests"] for a in t["command"]}
-print(" ".join(sorted(n for n in names if n.endswith("_tests"))))')
+import json, sys
+tests = json.load(sys.stdin)["tests"]
+if not tests:
+    sys.exit("no test is labelled threads")
+print(" ".join(sorted({t["name"].split("_test_")[0] + "_tests" for t in tests})))')
   cmake --build "$dir" --parallel "$(nproc)" --target $targets attractor-cli attractor-workbench
 else
   dir=build-asan kind=asan
