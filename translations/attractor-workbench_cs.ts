@@ -3877,6 +3877,10 @@ Byla ponechána jako %2.</translation>
         <source>map %1 is not contractive: the spectral radius of its linear part is %2 &gt;= 1, so the IFS has no attractor (the iteration does not converge)</source>
         <translation>zobrazení %1 není kontraktivní: spektrální poloměr jeho lineární části je %2 &gt;= 1, takže IFS nemá atraktor (iterace nekonverguje)</translation>
     </message>
+    <message>
+        <source>too many points to index</source>
+        <translation>příliš mnoho bodů k indexování</translation>
+    </message>
 </context>
 <context>
     <name>awb::cli</name>

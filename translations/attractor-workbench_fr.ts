@@ -3871,6 +3871,10 @@ Elle a été conservée sous le nom %2.</translation>
         <source>map %1 is not contractive: the spectral radius of its linear part is %2 &gt;= 1, so the IFS has no attractor (the iteration does not converge)</source>
         <translation>l’application %1 n’est pas contractante&#xa0;: le rayon spectral de sa partie linéaire vaut %2 &gt;= 1, donc l’IFS n’a pas d’attracteur (l’itération ne converge pas)</translation>
     </message>
+    <message>
+        <source>too many points to index</source>
+        <translation>trop de points à indexer</translation>
+    </message>
 </context>
 <context>
     <name>awb::cli</name>

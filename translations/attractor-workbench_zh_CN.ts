@@ -3865,6 +3865,10 @@ It was kept as %2.</source>
         <source>map %1 is not contractive: the spectral radius of its linear part is %2 &gt;= 1, so the IFS has no attractor (the iteration does not converge)</source>
         <translation>映射 %1 不是压缩的：其线性部分的谱半径为 %2 &gt;= 1，因此该 IFS 没有吸引子（迭代不收敛）</translation>
     </message>
+    <message>
+        <source>too many points to index</source>
+        <translation>要索引的点太多</translation>
+    </message>
 </context>
 <context>
     <name>awb::cli</name>

@@ -16,6 +16,7 @@ class TestGeometry : public QObject {
 private slots:
     void hausdorffOfKnownSets();
     void nearestAgreesWithBruteForce();
+    void nearestOnCurvesAndDegenerateSets();
     void boxDimensionOfLineAndSquare();
     void lengthAndArea();
     void bezierExample111();
@@ -52,6 +53,54 @@ void TestGeometry::nearestAgreesWithBruteForce()
             brute = std::max(brute, std::sqrt((B.rowwise() - A.row(i)).rowwise().squaredNorm().minCoeff()));
         QVERIFY(std::abs(directedDistance(A, B) - brute) < 1e-12);
     }
+}
+
+// The sets attractors are made of: points on a curve (a spiral and a Koch-like zigzag in the
+// plane, a helix in space), many copies of one point, 1D sets; every query's distance and index
+// against brute force, and within() against the distance.
+void TestGeometry::nearestOnCurvesAndDegenerateSets()
+{
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-2, 2);
+    auto check = [&](const Mat &B, const char *what) {
+        const PointIndex index(B);
+        Mat q(1, B.cols());
+        for (int k = 0; k < 2000; ++k) {
+            for (Eigen::Index a = 0; a < B.cols(); ++a)
+                q(0, a) = k % 3 == 0 ? B(k % B.rows(), a) + 1e-3 * u(rng) : u(rng) * (k % 5 ? 1 : 40);
+            Eigen::Index best;
+            const double brute = std::sqrt((B.rowwise() - q.row(0)).rowwise().squaredNorm().minCoeff(&best));
+            Eigen::Index got = -1;
+            const double d = index.nearest(q.data(), &got);
+            if (std::abs(d - brute) > 1e-14 || std::abs((B.row(got) - q.row(0)).norm() - brute) > 1e-14)
+                QFAIL(qPrintable(QString("%1: query %2 found %3, brute force %4").arg(what).arg(k).arg(d).arg(brute)));
+            QCOMPARE(index.within(q.data(), brute * 1.001 + 1e-300), true);
+            QCOMPARE(index.within(q.data(), brute * 0.999), false);
+        }
+    };
+    const int n = 20000;
+    Mat spiral(n, 2), zigzag(n, 2), helix(n, 3), same(500, 2), line1(n, 1);
+    for (int i = 0; i < n; ++i) {
+        const double t = 12.0 * i / n;
+        spiral.row(i) << t * std::cos(t), t * std::sin(t);
+        zigzag.row(i) << double(i) / n, (i / 37) % 2 ? double(i % 37) / 37 : 1 - double(i % 37) / 37;
+        helix.row(i) << std::cos(3 * t), std::sin(3 * t), t / 12;
+        line1(i, 0) = std::sin(t) * t;
+    }
+    same.rowwise() = RowVec::Constant(2, 0.25);
+    check(spiral, "spiral");
+    check(zigzag, "zigzag");
+    check(helix, "helix");
+    check(same, "one point 500 times");
+    check(line1, "points of a line (1 coordinate)");
+    // Directed distance on a curve equals brute force (the early break changes nothing).
+    Mat A(3000, 2);
+    for (Eigen::Index i = 0; i < A.size(); ++i)
+        A.data()[i] = u(rng) * 5;
+    double brute = 0;
+    for (Eigen::Index i = 0; i < A.rows(); ++i)
+        brute = std::max(brute, std::sqrt((spiral.rowwise() - A.row(i)).rowwise().squaredNorm().minCoeff()));
+    QCOMPARE(directedDistance(A, spiral), brute);
 }
 
 void TestGeometry::boxDimensionOfLineAndSquare()

@@ -13,7 +13,8 @@ double polygonLength(const Mat &pts, bool closed = false);
 // Signed shoelace area of a closed planar polygon (counter-clockwise positive).
 double polygonArea(const Mat &pts);
 
-// Nearest-neighbour queries on a fixed point set (uniform grid; 2D or 3D).
+// Nearest-neighbour queries on a fixed point set of 1 to 3 coordinates (a k-d tree: the cost of a
+// query does not depend on how the points are spread, on a curve, a surface or a cloud).
 class PointIndex {
 public:
     explicit PointIndex(const Mat &pts);
@@ -22,6 +23,8 @@ public:
     PointIndex &operator=(const PointIndex &) = delete;
     // Distance from q (size d) to the nearest indexed point; index of that point in `index`.
     double nearest(const double *q, Eigen::Index *index = nullptr) const;
+    // Whether an indexed point lies closer than `radius` to q (stops at the first found).
+    bool within(const double *q, double radius) const;
 
 private:
     struct Impl;
