@@ -1,32 +1,41 @@
 #include "gui/views/ThreadInbox.h"
 
-#include <QSocketNotifier>
-
-#include <cstdint>
-#include <stdexcept>
-
-#include <sys/eventfd.h>
-#include <unistd.h>
+#include <QCoreApplication>
+#include <QEvent>
 
 namespace awb {
 
-ThreadInbox::ThreadInbox(QObject *receiver)
+namespace {
+QEvent::Type wakeEventType()
 {
-    m_fd = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
-    if (m_fd < 0)
-        throw std::runtime_error("eventfd failed: no file descriptor left for a worker's results");
-    m_notifier = new QSocketNotifier(m_fd, QSocketNotifier::Read, receiver);
-    QObject::connect(m_notifier, &QSocketNotifier::activated, m_notifier, [this] {
-        std::uint64_t count;
-        [[maybe_unused]] const ssize_t n = read(m_fd, &count, sizeof count); // resets it
-        drain();
-    });
+    static const auto type = QEvent::Type(QEvent::registerEventType());
+    return type;
 }
+} // namespace
+
+// Receives the wake-up events in the receiver's thread.
+class ThreadInbox::Waker : public QObject {
+public:
+    Waker(ThreadInbox *inbox, QObject *receiver) : QObject(receiver), m_inbox(inbox) {}
+    bool event(QEvent *e) override
+    {
+        if (e->type() != wakeEventType())
+            return QObject::event(e);
+        // Cleared before draining: a function queued from now on posts a new event.
+        m_inbox->m_wakePending.store(false);
+        m_inbox->drain();
+        return true;
+    }
+
+private:
+    ThreadInbox *m_inbox;
+};
+
+ThreadInbox::ThreadInbox(QObject *receiver) : m_waker(new Waker(this, receiver)) {}
 
 ThreadInbox::~ThreadInbox()
 {
-    delete m_notifier;
-    close(m_fd);
+    delete m_waker; // and with it its pending wake-up event
 }
 
 void ThreadInbox::post(std::function<void()> fn)
@@ -35,8 +44,8 @@ void ThreadInbox::post(std::function<void()> fn)
         std::lock_guard lock(m_mutex);
         m_queue.push_back(std::move(fn));
     }
-    const std::uint64_t one = 1;
-    [[maybe_unused]] const ssize_t n = write(m_fd, &one, sizeof one);
+    if (!m_wakePending.exchange(true))
+        QCoreApplication::postEvent(m_waker, new QEvent(wakeEventType()));
 }
 
 void ThreadInbox::drain()
