@@ -1,9 +1,12 @@
 // attractor-bench-surfaces: time to draw each surface patch of 000 §3 at depth 6 and 8 on this
 // machine: deterministic iteration of a start triangle through the lifted IFS into the CPU
-// surface raster (900 x 700, the CLI's render path), on 1 thread and on all cores.
+// surface raster (900 x 700, the CLI's render path), on 1 thread and on all cores; and the
+// 3D view's path, the mesh of the same images (world-space triangles, one per image and view)
+// on all cores.
 // Run: build/bin/attractor-bench-surfaces [--quick]   (quick: depth 6 only)
 
 #include "core/ifs/SurfaceIfs.h"
+#include "core/render/SurfaceMesh.h"
 #include "core/render/SurfaceRaster.h"
 
 #include <chrono>
@@ -36,6 +39,16 @@ double drawSeconds(const SurfaceIfs &s, const StartSet &start, int depth, int th
     return sec;
 }
 
+double meshSeconds(const SurfaceIfs &s, const StartSet &start, int depth, int threads,
+                   std::size_t *triangles)
+{
+    const auto t0 = std::chrono::steady_clock::now();
+    const SurfaceMesh mesh = buildSurfaceMesh(s.ifs.ifs, start, depth, {}, {}, threads);
+    const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    *triangles = mesh.size();
+    return sec;
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -53,8 +66,8 @@ int main(int argc, char **argv)
                           {"sqrt3/triangle", sqrt3Scheme, "triangle"},
                           {"sqrt3/hexagon", sqrt3Scheme, "hexagon"}};
     std::printf("# surface patches: start triangle -> F^k(X0) -> 900x700 z-buffer raster\n");
-    std::printf("# %-15s %5s %4s %12s %9s %10s %10s %9s\n", "scheme/layout", "maps", "dim",
-                "depth:images", "", "1 thread", "threads", "pixels");
+    std::printf("# %-15s %5s %4s %12s %9s %10s %10s %9s %10s %10s\n", "scheme/layout", "maps",
+                "dim", "depth:images", "", "1 thread", "threads", "pixels", "3D mesh", "triangles");
     for (const Case &c : cases) {
         const LatticeScheme scheme = c.scheme();
         const PatchLayout layout = patchLayout(scheme, c.layout);
@@ -80,9 +93,12 @@ int main(int argc, char **argv)
             std::uint64_t covered = 0;
             const double one = images > 5e7 ? NAN : drawSeconds(s, start, depth, 1, &covered);
             const double all = drawSeconds(s, start, depth, cores, &covered);
-            std::printf("%-17s %5d %4d %3d:%-9.3g %9s %8.3f s %8.3f s %9llu\n", c.name,
-                        s.ifs.ifs.size(), s.ifs.ifs.dim(), depth, images, "", one, all,
-                        (unsigned long long)covered);
+            std::size_t triangles = 0;
+            const double mesh = images * s.ifs.ifs.views.size() > 2e7
+                                    ? NAN : meshSeconds(s, start, depth, cores, &triangles);
+            std::printf("%-17s %5d %4d %3d:%-9.3g %9s %8.3f s %8.3f s %9llu %8.3f s %10zu\n",
+                        c.name, s.ifs.ifs.size(), s.ifs.ifs.dim(), depth, images, "", one, all,
+                        (unsigned long long)covered, mesh, triangles);
             std::fflush(stdout);
         }
     }

@@ -38,6 +38,17 @@ public:
         for (auto &b : m_buf)
             b.resize(start.vertices.rows(), start.vertices.cols());
         m_buf[0] = start.vertices;
+        // Each map's A row by row (A(k, j) at k * D + j), for the product in step().
+        const Eigen::Index D = start.vertices.cols();
+        m_rows.resize(ifs.maps.size());
+        for (std::size_t i = 0; i < ifs.maps.size(); ++i) {
+            const Mat &A = ifs.maps[i].A;
+            m_rows[i].resize(std::size_t(D * D));
+            for (Eigen::Index k = 0; k < D; ++k)
+                for (Eigen::Index j = 0; j < D; ++j)
+                    m_rows[i][std::size_t(k * D + j)] = A(k, j);
+        }
+        m_row.resize(std::size_t(D));
     }
 
     // Apply the fixed innermost choices `prefix`, then walk the rest.
@@ -56,22 +67,29 @@ public:
 private:
     void step(int level, int i)
     {
-        // y = x A + b row by row. Plain loops over column-major A: the dynamic-size Eigen
-        // product costs more in dispatch than in arithmetic for D <= 8, the common case.
+        // y = x A + b row by row, in plain loops: the dynamic-size Eigen product costs more in
+        // dispatch than in arithmetic for D <= 8, the common case, and packs its operands for
+        // the lifted spaces of surfaces (D = 11 to 36). y = b + x_0 A_0 + x_1 A_1 + ... over
+        // the rows A_k of A (contiguous in m_rows): the inner loop runs along y and vectorises,
+        // and each y_j sums its terms in the order of the dot product b_j + sum_k x_k A(k, j).
         const AffineMap &f = m_ifs.maps[i];
         const Mat &X = m_buf[level];
         Mat &Y = m_buf[level + 1];
         const Eigen::Index n = X.rows(), D = X.cols();
-        const double *a = f.A.data();
+        const double *rows = m_rows[std::size_t(i)].data();
         const double *b = f.b.data();
+        double *y = m_row.data();
         for (Eigen::Index r = 0; r < n; ++r) {
-            for (Eigen::Index j = 0; j < D; ++j) {
-                const double *col = a + j * D;
-                double s = b[j];
-                for (Eigen::Index k = 0; k < D; ++k)
-                    s += X(r, k) * col[k];
-                Y(r, j) = s;
+            for (Eigen::Index j = 0; j < D; ++j)
+                y[j] = b[j];
+            for (Eigen::Index k = 0; k < D; ++k) {
+                const double x = X(r, k);
+                const double *row = rows + k * D;
+                for (Eigen::Index j = 0; j < D; ++j)
+                    y[j] += x * row[j];
             }
+            for (Eigen::Index j = 0; j < D; ++j)
+                Y(r, j) = y[j];
         }
         m_address[m_depth - level - 1] = std::uint8_t(i);
     }
@@ -109,6 +127,8 @@ private:
     std::atomic<std::uint64_t> &m_done;
     double m_total;
     std::vector<Mat> m_buf;
+    std::vector<std::vector<double>> m_rows; // each map's A, row-major
+    std::vector<double> m_row;               // the row of y being summed
     std::vector<std::uint8_t> m_address;
     std::uint64_t m_emitted = 0;
 };

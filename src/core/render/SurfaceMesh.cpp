@@ -62,10 +62,21 @@ void SurfaceMeshSink::consume(const Mat &v, StartSet::Kind, const std::uint8_t *
         if (view.V.cols() != 3 || view.V.rows() != v.cols())
             continue;
         // Into the sink's own buffer: an image is a few vertices, an allocation would cost
-        // more than the product.
+        // more than the product. Plain loops: for a lifted dimension of 18 (Loop's hexagon)
+        // Eigen's dynamic product takes its blocked GEMM path, whose packing costs more than
+        // the 3 x 18 x 3 multiplications.
         Mat &p = m_projected;
-        p.noalias() = v * view.V;
-        p.rowwise() += view.c;
+        p.resize(v.rows(), 3);
+        const Eigen::Index D = v.cols();
+        for (int k = 0; k < 3; ++k) {
+            const double *col = view.V.data() + k * D;
+            for (Eigen::Index r = 0; r < v.rows(); ++r) {
+                double s = 0;
+                for (Eigen::Index j = 0; j < D; ++j)
+                    s += v(r, j) * col[j];
+                p(r, k) = s + view.c(k);
+            }
+        }
         if (!p.allFinite()) {
             ++mesh.nonFinite;
             continue;
