@@ -1,5 +1,7 @@
 #include "gui/app/ItemController.h"
 
+#include "gui/views/BackgroundPriority.h"
+
 #include "core/ifs/Attractor.h"
 #include "core/analysis/Geometry.h"
 #include "core/schemes/Scheme.h"
@@ -686,6 +688,7 @@ void ItemController::startAnalysis()
     m_charts->setDistanceReference(exactCurve ? tr("Fᵏ(X₀) to the %1").arg(exactCurve->label)
                                               : QString());
     m_worker = std::thread([this, d, start, scheme, P, exact, maxDepth, ticket, seriesName] {
+        lowerThisThreadPriority(); // the pictures' workers first
         auto result = std::make_shared<AnalysisResult>();
         try {
             if (exact.rows() > 1)

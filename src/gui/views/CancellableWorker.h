@@ -5,6 +5,7 @@
 // are stale and dropped by the view. The destructor cancels and joins, so a view never
 // outlives its worker's access to it.
 
+#include "gui/views/BackgroundPriority.h"
 #include "gui/views/ThreadInbox.h"
 
 #include <atomic>
@@ -22,13 +23,15 @@ public:
     CancellableWorker &operator=(const CancellableWorker &) = delete;
     ~CancellableWorker() { stop(); }
 
-    // Runs job(cancel flag, generation) on a new thread; returns the generation.
+    // Runs job(cancel flag, generation) on a new thread of lower priority (the pictures'
+    // workers come first, BackgroundPriority.h); returns the generation.
     quint64 start(std::function<void(const std::atomic<bool> *, quint64)> job)
     {
         const quint64 generation = bump();
         auto flag = std::make_shared<std::atomic<bool>>(false);
         m_flag = flag;
         m_thread = std::thread([job = std::move(job), flag, generation] {
+            lowerThisThreadPriority();
             job(flag.get(), generation);
         });
         return generation;
