@@ -683,11 +683,13 @@ void ItemController::startAnalysis()
     // at O(y^2) instead of going to 0).
     const auto exactCurve = exactCurveOf(item, exactSamples);
     const Mat exact = exactCurve ? exactCurve->points : Mat();
-    // The legend says Fᵏ(X₀); what it is measured against goes to the chart's tooltip.
-    const QString seriesName = tr("Fᵏ(X₀)");
+    // The legend says Fᵏ(X₀) (named in applyAnalysis: no Qt string on the worker, whose copy
+    // would be released at the thread's exit while Qt Charts frees the shared text on the GUI
+    // thread, an order ThreadSanitizer cannot see inside the uninstrumented Qt); what it is
+    // measured against goes to the chart's tooltip.
     m_charts->setDistanceReference(exactCurve ? tr("Fᵏ(X₀) to the %1").arg(exactCurve->label)
                                               : QString());
-    m_worker = std::thread([this, d, start, scheme, P, exact, maxDepth, ticket, seriesName] {
+    m_worker = std::thread([this, d, start, scheme, P, exact, maxDepth, ticket] {
         lowerThisThreadPriority(); // the pictures' workers first
         auto result = std::make_shared<AnalysisResult>();
         try {
@@ -701,7 +703,7 @@ void ItemController::startAnalysis()
                         break;
                 }
             }
-            AnalysisCharts::DistanceSeries series{seriesName, {}, {}};
+            AnalysisCharts::DistanceSeries series;
             Mat deepest;
             for (int k = 0; k <= maxDepth && !m_cancel && !d->iterate; ++k) {
                 if (imageCount(d->ifs, k) * double(std::max<Eigen::Index>(1, start.vertices.rows()))
@@ -731,7 +733,9 @@ void ItemController::startAnalysis()
         }
         result->cancelled = m_cancel;
         m_workerDone = true;
-        m_inbox.post([this, result, ticket] {
+        // Moved: the GUI thread holds the only reference, so that the result (whose series
+        // Qt Charts gets) is released there, not at this thread's exit.
+        m_inbox.post([this, result = std::move(result), ticket] {
             if (ticket == m_analysisTicket)
                 applyAnalysis(result);
         });
@@ -741,7 +745,10 @@ void ItemController::startAnalysis()
 void ItemController::applyAnalysis(const std::shared_ptr<AnalysisResult> &result)
 {
     if (!result->cancelled) {
-        m_charts->setDistances(result->distances, result->rate);
+        QList<AnalysisCharts::DistanceSeries> distances = result->distances;
+        for (auto &series : distances)
+            series.name = tr("Fᵏ(X₀)");
+        m_charts->setDistances(distances, result->rate);
         m_charts->setPolygonLengths(result->lengths, result->exactLength);
         m_charts->setBoxCounting(result->box);
     }

@@ -19,10 +19,18 @@ public:
     Waker(ThreadInbox *inbox, QObject *receiver) : QObject(receiver), m_inbox(inbox) {}
     bool event(QEvent *e) override
     {
-        if (e->type() != wakeEventType())
+        bool wake;
+        {
+            // The lock first: the wake-up event was allocated on the worker under this mutex,
+            // and taking it makes that visible to ThreadSanitizer before e is read. Cleared
+            // before draining: a function queued from now on posts a new event.
+            std::lock_guard lock(m_inbox->m_mutex);
+            wake = e->type() == wakeEventType();
+            if (wake)
+                m_inbox->m_wakePending = false;
+        }
+        if (!wake)
             return QObject::event(e);
-        // Cleared before draining: a function queued from now on posts a new event.
-        m_inbox->m_wakePending.store(false);
         m_inbox->drain();
         return true;
     }
@@ -40,12 +48,17 @@ ThreadInbox::~ThreadInbox()
 
 void ThreadInbox::post(std::function<void()> fn)
 {
+    QEvent *wake = nullptr;
     {
         std::lock_guard lock(m_mutex);
         m_queue.push_back(std::move(fn));
+        if (!m_wakePending) {
+            m_wakePending = true;
+            wake = new QEvent(wakeEventType());
+        }
     }
-    if (!m_wakePending.exchange(true))
-        QCoreApplication::postEvent(m_waker, new QEvent(wakeEventType()));
+    if (wake)
+        QCoreApplication::postEvent(m_waker, wake);
 }
 
 void ThreadInbox::drain()

@@ -17,7 +17,6 @@
 
 #include <QObject>
 
-#include <atomic>
 #include <deque>
 #include <functional>
 #include <mutex>
@@ -44,7 +43,8 @@ private:
     class Waker;
     std::mutex m_mutex;
     std::deque<std::function<void()>> m_queue; // guarded by m_mutex
-    std::atomic<bool> m_wakePending{false};    // a wake-up event is posted and not yet handled
+    bool m_wakePending = false;                // guarded by m_mutex: a wake-up event is posted
+                                               // and not yet handled
     Waker *m_waker = nullptr;                  // a child of the receiver, in its thread
 };
 
