@@ -380,6 +380,12 @@ void ItemController::showCharts()
     // The distances and dimensions of a curve (the slow part) wait until edits pause. A
     // surface has no exact curve to measure against: its charts say so, not the last curve's.
     if (drawnDerived() && !showsSurface()) {
+        // What runs or waits in the inbox measures the data before this refresh (or another
+        // item): dropped when it arrives, and its worker told to stop. (Joined by the next
+        // start, not here: the GUI thread does not wait. Without this, a slow analysis of the
+        // item shown before File > Open filled the charts of the opened one.)
+        ++m_analysisTicket;
+        m_cancel = true;
         m_analysisTimer.start();
     } else {
         cancelAnalysis();
