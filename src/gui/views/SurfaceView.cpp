@@ -288,6 +288,7 @@ SurfaceView::Colours SurfaceView::colours() const
 
 void SurfaceView::startMeshJob()
 {
+    m_dataTimer.stop(); // called directly too (a release): the timer's turn is this one
     if (!m_ifs || m_ifs->size() == 0 || m_start.vertices.rows() == 0) {
         m_meshes = MeshState{};
         m_meshes.serial = m_dataSerial;
@@ -305,6 +306,10 @@ void SurfaceView::startMeshJob()
         requestFrame();
         return;
     }
+    // The full mesh of this very data is being built (asked for again, e.g. by the release
+    // and then by the end of the gesture): let it finish.
+    if (!moving && m_fullPending && m_fullSerial == m_dataSerial)
+        return;
     // The coarse mesh of this very data is there (the last move of a drag): only the full one.
     const bool haveCoarse = m_meshes.serial == m_dataSerial && m_meshes.coarse;
     const int fullDepth = surfaceMeshDepth(*m_ifs, m_start, m_settings.depth, double(m_fullBudget));
@@ -322,6 +327,7 @@ void SurfaceView::startMeshJob()
     // long and of data that changed, so it is cancelled.
     const bool cancelRunning = !moving || m_fullPending;
     m_fullPending = !moving;
+    m_fullSerial = m_dataSerial;
     m_meshBusy = true;
     // Posted per mesh, in order: the coarse one first (a frame now), then the full one.
     const auto deliver = [this, serial, input, fromDrag](std::shared_ptr<const SurfaceMesh> mesh,

@@ -132,6 +132,8 @@ public:
     double meshSeconds() const { return m_meshSeconds; }
     QImage cpuImage() const { return m_cpuImage; }
     bool isRendering() const { return m_meshBusy || m_frameBusy; }
+    // The full mesh of the data shown is being built (from the release of a drag on).
+    bool fullMeshPending() const { return m_fullPending && m_fullSerial == m_dataSerial; }
     // Paints the figure into `target` of any painter with the CPU renderer (same camera,
     // colours, overlays): for printing, export and the batch mode. On the calling thread.
     void renderTo(QPainter *painter, const QRectF &target) const;
@@ -256,6 +258,7 @@ private:
     double m_meshSeconds = 0.0;
     bool m_meshBusy = false, m_frameBusy = false;
     bool m_fullPending = false;      // a full mesh job was posted and has not delivered
+    std::uint64_t m_fullSerial = 0;  // the data serial of that job
     std::uint64_t m_frameSerial = 0, m_frameDelivered = 0;
     // What the last CPU frame request drew (an equal request is not drawn again).
     std::shared_ptr<const SurfaceMesh> m_requestedFrameMesh;

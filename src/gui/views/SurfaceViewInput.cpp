@@ -142,12 +142,18 @@ void SurfaceView::mouseReleaseEvent(QMouseEvent *event)
     logInput("release", event);
     const Drag drag = m_drag;
     m_drag = Drag{};
+    if (drag.kind == DragKind::ControlPoint || drag.kind == DragKind::StartVertex) {
+        // Full detail after the drag's coarse meshes, started now on the mesh worker: the
+        // owner's answer to the release (the end of the document's gesture, which brings every
+        // dock up to date on this thread) then runs beside it instead of before it. The
+        // gesture this drag made ends with it (setGestureActive(false) follows).
+        m_externalGesture = false;
+        startMeshJob();
+    }
     if (drag.kind == DragKind::ControlPoint)
         emit controlPointReleased(drag.index, drag.startWorld, drag.currentWorld);
     else if (drag.kind == DragKind::StartVertex)
         emit startVertexReleased(drag.index, drag.startWorld, drag.currentWorld);
-    if (drag.kind == DragKind::ControlPoint || drag.kind == DragKind::StartVertex)
-        m_dataTimer.start(); // full detail after the drag's coarse meshes
     if (drag.kind == DragKind::Orbit || drag.kind == DragKind::Pan) {
         // The camera is where the user left it: full detail now, not after the settle time.
         m_settle.stop();
