@@ -5025,6 +5025,57 @@ meze: %9
     </message>
 </context>
 <context>
+    <name>awb::mesh</name>
+    <message>
+        <source>the mesh has no vertices</source>
+        <translation>síť nemá žádné vrcholy</translation>
+    </message>
+    <message>
+        <source>the mesh has no faces</source>
+        <translation>síť nemá žádné stěny</translation>
+    </message>
+    <message>
+        <source>face %1 has %2 vertices; a face needs at least 3</source>
+        <translation>stěna %1 má %2 vrcholy; stěna potřebuje alespoň 3</translation>
+    </message>
+    <message>
+        <source>face %1 refers to vertex %2, but the mesh has %3 vertices (0 to %4)</source>
+        <translation>stěna %1 odkazuje na vrchol %2, ale síť má %3 vrcholů (0 až %4)</translation>
+    </message>
+    <message>
+        <source>face %1 lists vertex %2 twice</source>
+        <translation>stěna %1 uvádí vrchol %2 dvakrát</translation>
+    </message>
+    <message>
+        <source>edge (%1, %2) is non-manifold: faces %3 meet there</source>
+        <translation>hrana (%1, %2) není varietní: stýkají se v ní stěny %3</translation>
+    </message>
+    <message>
+        <source>faces %1 and %2 are oriented inconsistently: both run from vertex %3 to vertex %4 (turn one of them over)</source>
+        <translation>stěny %1 a %2 jsou orientovány nesouhlasně: obě vedou z vrcholu %3 do vrcholu %4 (jednu z nich obraťte)</translation>
+    </message>
+    <message>
+        <source>vertex %1 is non-manifold: its %2 faces do not form one fan around it</source>
+        <translation>vrchol %1 není varietní: jeho %2 stěn kolem něj netvoří jeden vějíř</translation>
+    </message>
+    <message>
+        <source>mesh vertices need 3 coordinates, got %1</source>
+        <translation>vrcholy sítě potřebují 3 souřadnice, mají %1</translation>
+    </message>
+    <message>
+        <source>vertex %1 has a coordinate that is not a finite number</source>
+        <translation>vrchol %1 má souřadnici, která není konečné číslo</translation>
+    </message>
+    <message>
+        <source>face %1 has %2 vertices; Loop subdivision takes triangles only</source>
+        <translation>stěna %1 má %2 vrcholů; Loopovo dělení přijímá jen trojúhelníky</translation>
+    </message>
+    <message>
+        <source>a vertex&apos;s valence must be 3 to 64, got %1</source>
+        <translation>valence vrcholu musí být 3 až 64, je %1</translation>
+    </message>
+</context>
+<context>
     <name>awb::render</name>
     <message>
         <source>raster size must be between 1x1 and 32768x32768, got %1x%2</source>

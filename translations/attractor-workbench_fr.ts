@@ -5019,6 +5019,57 @@ limites&#xa0;: %9
     </message>
 </context>
 <context>
+    <name>awb::mesh</name>
+    <message>
+        <source>the mesh has no vertices</source>
+        <translation>le maillage n’a aucun sommet</translation>
+    </message>
+    <message>
+        <source>the mesh has no faces</source>
+        <translation>le maillage n’a aucune face</translation>
+    </message>
+    <message>
+        <source>face %1 has %2 vertices; a face needs at least 3</source>
+        <translation>la face %1 a %2 sommets ; une face en demande au moins 3</translation>
+    </message>
+    <message>
+        <source>face %1 refers to vertex %2, but the mesh has %3 vertices (0 to %4)</source>
+        <translation>la face %1 renvoie au sommet %2, mais le maillage a %3 sommets (0 à %4)</translation>
+    </message>
+    <message>
+        <source>face %1 lists vertex %2 twice</source>
+        <translation>la face %1 cite deux fois le sommet %2</translation>
+    </message>
+    <message>
+        <source>edge (%1, %2) is non-manifold: faces %3 meet there</source>
+        <translation>l’arête (%1, %2) n’est pas une variété : les faces %3 s’y rencontrent</translation>
+    </message>
+    <message>
+        <source>faces %1 and %2 are oriented inconsistently: both run from vertex %3 to vertex %4 (turn one of them over)</source>
+        <translation>les faces %1 et %2 sont orientées de façon incohérente : toutes deux vont du sommet %3 au sommet %4 (retournez l’une d’elles)</translation>
+    </message>
+    <message>
+        <source>vertex %1 is non-manifold: its %2 faces do not form one fan around it</source>
+        <translation>le sommet %1 n’est pas une variété : ses %2 faces ne forment pas un seul éventail autour de lui</translation>
+    </message>
+    <message>
+        <source>mesh vertices need 3 coordinates, got %1</source>
+        <translation>les sommets du maillage demandent 3 coordonnées, reçu %1</translation>
+    </message>
+    <message>
+        <source>vertex %1 has a coordinate that is not a finite number</source>
+        <translation>le sommet %1 a une coordonnée qui n’est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>face %1 has %2 vertices; Loop subdivision takes triangles only</source>
+        <translation>la face %1 a %2 sommets ; la subdivision de Loop ne prend que des triangles</translation>
+    </message>
+    <message>
+        <source>a vertex&apos;s valence must be 3 to 64, got %1</source>
+        <translation>la valence d’un sommet doit être de 3 à 64, reçu %1</translation>
+    </message>
+</context>
+<context>
     <name>awb::render</name>
     <message>
         <source>raster size must be between 1x1 and 32768x32768, got %1x%2</source>

@@ -5013,6 +5013,57 @@ bounds: %9
     </message>
 </context>
 <context>
+    <name>awb::mesh</name>
+    <message>
+        <source>the mesh has no vertices</source>
+        <translation>网格没有顶点</translation>
+    </message>
+    <message>
+        <source>the mesh has no faces</source>
+        <translation>网格没有面</translation>
+    </message>
+    <message>
+        <source>face %1 has %2 vertices; a face needs at least 3</source>
+        <translation>面 %1 有 %2 个顶点；一个面至少需要 3 个</translation>
+    </message>
+    <message>
+        <source>face %1 refers to vertex %2, but the mesh has %3 vertices (0 to %4)</source>
+        <translation>面 %1 引用了顶点 %2，但网格只有 %3 个顶点（0 到 %4）</translation>
+    </message>
+    <message>
+        <source>face %1 lists vertex %2 twice</source>
+        <translation>面 %1 两次列出顶点 %2</translation>
+    </message>
+    <message>
+        <source>edge (%1, %2) is non-manifold: faces %3 meet there</source>
+        <translation>边 (%1, %2) 非流形：面 %3 在此相交</translation>
+    </message>
+    <message>
+        <source>faces %1 and %2 are oriented inconsistently: both run from vertex %3 to vertex %4 (turn one of them over)</source>
+        <translation>面 %1 和 %2 的朝向不一致：两者都从顶点 %3 走向顶点 %4（请翻转其中一个）</translation>
+    </message>
+    <message>
+        <source>vertex %1 is non-manifold: its %2 faces do not form one fan around it</source>
+        <translation>顶点 %1 非流形：其 %2 个面未在其周围构成一个扇形</translation>
+    </message>
+    <message>
+        <source>mesh vertices need 3 coordinates, got %1</source>
+        <translation>网格顶点需要 3 个坐标，得到 %1 个</translation>
+    </message>
+    <message>
+        <source>vertex %1 has a coordinate that is not a finite number</source>
+        <translation>顶点 %1 的某个坐标不是有限数</translation>
+    </message>
+    <message>
+        <source>face %1 has %2 vertices; Loop subdivision takes triangles only</source>
+        <translation>面 %1 有 %2 个顶点；Loop 细分只接受三角形</translation>
+    </message>
+    <message>
+        <source>a vertex&apos;s valence must be 3 to 64, got %1</source>
+        <translation>顶点的价必须为 3 到 64，得到 %1</translation>
+    </message>
+</context>
+<context>
     <name>awb::render</name>
     <message>
         <source>raster size must be between 1x1 and 32768x32768, got %1x%2</source>

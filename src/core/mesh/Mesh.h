@@ -1,0 +1,84 @@
+#pragma once
+// A polygon mesh of any topology (issue 30): vertices in R^3, faces as vertex loops, and the
+// connectivity subdivision needs. The mesh room of the core keeps OpenSubdiv's separation:
+//   Mesh.h            the topology (OpenSubdiv's Vtr): edges, boundaries, the ordered ring of
+//                     every vertex, and the checks that refuse what is not a 2-manifold;
+//   MeshRules.h       the scheme rules (Sdc): the weights of Catmull-Clark and Loop;
+//   MeshRefine.h      the refinement of data (Far): stencils of one step, limit stencils;
+//   VertexSpectrum.h  the local subdivision matrix of a vertex and its eigenvalues.
+// Qt-free. Doubles throughout.
+
+#include "core/Types.h"
+
+#include <string>
+#include <vector>
+
+namespace awb {
+
+enum class MeshScheme { CatmullClark, Loop };
+
+std::string toString(MeshScheme scheme);
+// The valence of a regular interior vertex: 4 for Catmull-Clark, 6 for Loop.
+int regularValence(MeshScheme scheme);
+
+struct Mesh {
+    Mat vertices;                         // n x 3, one point per row
+    std::vector<std::vector<int>> faces;  // vertex loops, 0-based, counter-clockwise from outside
+};
+
+// The connectivity of a mesh's faces. The constructor refuses, with an InputError naming the
+// problem (and the faces or vertices concerned), what subdivision cannot take: no faces, a face
+// of fewer than three vertices or one that lists a vertex twice, an index out of range, an edge
+// shared by three or more faces (non-manifold), two faces that run along their common edge in
+// the same direction (inconsistent orientation), and a vertex whose faces form separate fans.
+// A vertex of no face is allowed (it stays where it is).
+class MeshTopology {
+public:
+    MeshTopology(int vertexCount, const std::vector<std::vector<int>> &faces);
+
+    struct Edge {
+        int v[2] = {-1, -1};
+        int face[2] = {-1, -1};  // face[1] == -1: a boundary edge
+        bool boundary() const { return face[1] < 0; }
+    };
+    // The faces and edges around a vertex, counter-clockwise seen from outside: face k lies
+    // between edges k and k + 1 (mod the edge count inside). Inside, edges.size() ==
+    // faces.size(); on the boundary edges.size() == faces.size() + 1, and edges.front() and
+    // edges.back() are the two boundary edges.
+    struct Ring {
+        std::vector<int> edges;
+        std::vector<int> faces;
+        bool boundary = false;
+    };
+
+    int vertexCount() const { return int(m_rings.size()); }
+    int faceCount() const { return int(m_faces.size()); }
+    int edgeCount() const { return int(m_edges.size()); }
+    const std::vector<int> &face(int f) const { return m_faces[std::size_t(f)]; }
+    // Edge k of face f joins its corners k and k + 1.
+    const std::vector<int> &faceEdges(int f) const { return m_faceEdges[std::size_t(f)]; }
+    const Edge &edge(int e) const { return m_edges[std::size_t(e)]; }
+    const Ring &ring(int v) const { return m_rings[std::size_t(v)]; }
+    // The number of edges at v (0 for a vertex of no face).
+    int valence(int v) const { return int(ring(v).edges.size()); }
+    bool onBoundary(int v) const { return ring(v).boundary; }
+    int otherEnd(int e, int v) const { return edge(e).v[0] == v ? edge(e).v[1] : edge(e).v[0]; }
+    // The edge joining a and b, or -1.
+    int findEdge(int a, int b) const;
+    // Interior vertices of valence != regularValence(scheme), and boundary vertices of more
+    // than two faces' valence other than the regular boundary valence (3 for Catmull-Clark,
+    // 4 for Loop), in vertex order.
+    std::vector<int> extraordinaryVertices(MeshScheme scheme) const;
+
+private:
+    std::vector<std::vector<int>> m_faces;
+    std::vector<std::vector<int>> m_faceEdges;
+    std::vector<Edge> m_edges;
+    std::vector<Ring> m_rings;
+};
+
+// The checks of a mesh for a scheme, beyond MeshTopology's: vertices with three finite
+// coordinates, and triangles only for Loop. Throws InputError naming the problem.
+void checkMesh(const Mesh &mesh, MeshScheme scheme);
+
+} // namespace awb

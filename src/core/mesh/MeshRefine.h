@@ -1,0 +1,45 @@
+#pragma once
+// One step of Catmull-Clark or Loop on a mesh of any topology, and the limit positions of its
+// vertices (issue 30), as stencils: each new point a weighted sum of the old ones. The same
+// stencils move positions, build the local subdivision matrix of a vertex (VertexSpectrum.h),
+// and compose into limit stencils, so that nothing is computed twice in two ways.
+//
+// Numbering of the refined mesh: the vertex points first, with the numbers of their vertices
+// (vertex v of the input is vertex v at every level), then one point per edge (in the
+// topology's edge order), then, for Catmull-Clark, one per face.
+
+#include "core/mesh/Mesh.h"
+
+#include <utility>
+#include <vector>
+
+namespace awb {
+
+using Stencil = std::vector<std::pair<int, double>>;  // (old point, weight), weights sum to 1
+
+struct Refinement {
+    std::vector<std::vector<int>> faces;  // of the refined mesh, counter-clockwise
+    std::vector<Stencil> stencils;        // one per point of the refined mesh
+    int vertexPoints = 0;                 // the first points: the old vertices' (same numbers)
+    int edgePoints = 0;                   // then the edges'
+    int facePoints = 0;                   // then the faces' (Catmull-Clark)
+};
+
+// One step on a topology (checked: triangles only for Loop; InputError otherwise).
+Refinement refineTopology(const MeshTopology &topology, MeshScheme scheme);
+
+// rows of data (one per old point) -> one row per stencil.
+Mat applyStencils(const std::vector<Stencil> &stencils, const Mat &data);
+
+// The mesh after `steps` steps (checked by checkMesh first).
+Mesh refineMesh(const Mesh &mesh, MeshScheme scheme, int steps = 1);
+
+// The limit position of every vertex of the topology as a stencil on its vertices: the masks of
+// MeshRules.h; for a Catmull-Clark vertex next to a face that is not a quad, the mask of its
+// point after one step composed with that step. A vertex of no face stays where it is.
+std::vector<Stencil> limitStencils(const MeshTopology &topology, MeshScheme scheme);
+
+// The limit positions of the mesh's vertices (n x 3).
+Mat limitPositions(const Mesh &mesh, MeshScheme scheme);
+
+} // namespace awb

@@ -1,0 +1,46 @@
+#pragma once
+// The local subdivision matrix of an interior vertex of valence n (issue 30) and what its
+// eigenvalues say about the limit surface there (Doo-Sabin 1978, Reif 1995, Stam 1998,
+// Peters-Reif 2008).
+//
+// The matrix is read off the scheme's own stencils (MeshRefine.h): a star of n sectors, regular
+// but for its centre, is refined once, and S maps the ring of the centre -- every point within
+// two faces of it: 6n + 1 points for Catmull-Clark (n quads around the vertex and the quads
+// around those), 3n + 1 for Loop -- to the same ring one level finer. The ring holds every
+// control point of the patches around the vertex, so its eigenvalues are those the analysis
+// needs (the 1-ring's, and the smaller ones of the outer points: 1/8, 1/16, ...).
+
+#include "core/mesh/Mesh.h"
+
+#include <complex>
+#include <string>
+#include <vector>
+
+namespace awb {
+
+struct VertexSpectrum {
+    MeshScheme scheme = MeshScheme::CatmullClark;
+    int valence = 0;
+    Mat S;                              // ring x ring, rows sum to 1
+    std::vector<Complex> eigenvalues;   // by modulus, largest first (1 first)
+    double subdominant = 0.0;           // lambda = lambda_2 = lambda_3
+    double subsubdominant = 0.0;        // mu = |lambda_4|
+    // The spectral part of Reif's C1 criterion: 1 = lambda_1 > lambda_2 = lambda_3 > |lambda_4|,
+    // lambda_2 real (the characteristic map's regularity and injectivity are checked apart).
+    bool spectralC1 = false;
+    // mu against lambda^2: "zero" (mu < lambda^2: the curvature vanishes at the vertex),
+    // "bounded" (mu = lambda^2), "unbounded" (mu > lambda^2, for generic data).
+    std::string curvature;
+};
+
+// The analysis of an interior vertex of valence n >= 3 (all faces around it quads for
+// Catmull-Clark, triangles for Loop: the case after one step of any mesh). InputError for
+// n < 3 or n > 64.
+VertexSpectrum interiorVertexSpectrum(MeshScheme scheme, int valence);
+
+// The subdominant eigenvalue in closed form: Catmull-Clark
+// (5 + cos(2 pi/n) + cos(pi/n) sqrt(2 (9 + cos(2 pi/n)))) / 16 (Stam 1998), Loop
+// 3/8 + cos(2 pi/n) / 4.
+double closedFormSubdominant(MeshScheme scheme, int valence);
+
+} // namespace awb

@@ -1,0 +1,357 @@
+// Meshes of any topology (issue 30, the core): connectivity and its refusals, one step of
+// Catmull-Clark and Loop with OpenSubdiv's rules (VTX_BOUNDARY_EDGE_ONLY), limit positions,
+// and the eigenvalues of the local subdivision matrix against their closed forms.
+
+#include "core/mesh/Mesh.h"
+#include "core/mesh/MeshRefine.h"
+#include "core/mesh/VertexSpectrum.h"
+
+#include <QtTest>
+
+#include "TestMain.h"
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+
+using namespace awb;
+
+namespace {
+
+// Turns every face of a convex polyhedron outward (counter-clockwise seen from outside).
+void orientOutward(Mesh &m)
+{
+    const Eigen::RowVector3d centre = m.vertices.colwise().mean();
+    for (auto &f : m.faces) {
+        Eigen::RowVector3d c = Eigen::RowVector3d::Zero();
+        for (int v : f)
+            c += m.vertices.row(v);
+        c /= double(f.size());
+        const Eigen::Vector3d a = (m.vertices.row(f[1]) - m.vertices.row(f[0])).transpose();
+        const Eigen::Vector3d b = (m.vertices.row(f[2]) - m.vertices.row(f[0])).transpose();
+        if (a.cross(b).dot((c - centre).transpose()) < 0)
+            std::reverse(f.begin(), f.end());
+    }
+}
+
+Mesh cube()
+{
+    Mesh m;
+    m.vertices.resize(8, 3);
+    for (int v = 0; v < 8; ++v)
+        m.vertices.row(v) << (v & 1 ? 1 : -1), (v & 2 ? 1 : -1), (v & 4 ? 1 : -1);
+    m.faces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    orientOutward(m);
+    return m;
+}
+
+// The twelve vertices (0, +-1, +-phi) and their cyclic shifts; a face is three vertices at
+// distance 2 of each other.
+Mesh icosahedron()
+{
+    const double p = (1 + std::sqrt(5.0)) / 2;
+    Mesh m;
+    m.vertices.resize(12, 3);
+    int k = 0;
+    for (int a : {-1, 1})
+        for (int b : {-1, 1}) {
+            m.vertices.row(k++) << 0, a, b * p;
+            m.vertices.row(k++) << a, b * p, 0;
+            m.vertices.row(k++) << b * p, 0, a;
+        }
+    const auto edge = [&](int i, int j) {
+        return std::abs((m.vertices.row(i) - m.vertices.row(j)).norm() - 2) < 1e-9;
+    };
+    for (int i = 0; i < 12; ++i)
+        for (int j = i + 1; j < 12; ++j)
+            for (int l = j + 1; l < 12; ++l)
+                if (edge(i, j) && edge(j, l) && edge(i, l))
+                    m.faces.push_back({i, j, l});
+    orientOutward(m);
+    return m;
+}
+
+Mesh tetrahedron()
+{
+    Mesh m;
+    m.vertices.resize(4, 3);
+    m.vertices << 1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1;
+    m.faces = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
+    orientOutward(m);
+    return m;
+}
+
+// Two pentagons and five quads: Catmull-Clark's valence-5 face centres after one step.
+Mesh pentagonalPrism()
+{
+    Mesh m;
+    m.vertices.resize(10, 3);
+    for (int k = 0; k < 5; ++k) {
+        const double a = 2 * M_PI * k / 5;
+        m.vertices.row(k) << std::cos(a), std::sin(a), 1;
+        m.vertices.row(k + 5) << std::cos(a), std::sin(a), -1;
+    }
+    m.faces = {{0, 1, 2, 3, 4}, {5, 6, 7, 8, 9}};
+    for (int k = 0; k < 5; ++k)
+        m.faces.push_back({k, (k + 1) % 5, (k + 1) % 5 + 5, k + 5});
+    orientOutward(m);
+    return m;
+}
+
+// An open grid of w x h quads (or each split into two triangles), bumped in z.
+Mesh grid(int w, int h, bool triangles)
+{
+    Mesh m;
+    m.vertices.resize((w + 1) * (h + 1), 3);
+    const auto id = [w](int i, int j) { return j * (w + 1) + i; };
+    for (int j = 0; j <= h; ++j)
+        for (int i = 0; i <= w; ++i)
+            m.vertices.row(id(i, j)) << i, j, std::sin(1.3 * i + 0.7 * j);
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            if (triangles) {
+                m.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+                m.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+            } else {
+                m.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+            }
+        }
+    return m;
+}
+
+double diagonal(const Mesh &m)
+{
+    return (m.vertices.colwise().maxCoeff() - m.vertices.colwise().minCoeff()).norm();
+}
+
+QString refusal(const Mesh &m, MeshScheme scheme)
+{
+    try {
+        checkMesh(m, scheme);
+    } catch (const InputError &e) {
+        return QString::fromStdString(e.what());
+    }
+    return QString();
+}
+
+} // namespace
+
+class TestMesh : public QObject {
+    Q_OBJECT
+private slots:
+    void cubeAfterOneCatmullClarkStep();
+    void loopCounts();
+    void limitPositionsAreTheLimitOfRefinement_data();
+    void limitPositionsAreTheLimitOfRefinement();
+    void boundaryIsTheCubicBSplineOfThePolygon();
+    void extraordinaryVertices();
+    void subdominantEigenvalueClosedForms();
+    void badMeshesAreRefusedByName();
+};
+
+void TestMesh::cubeAfterOneCatmullClarkStep()
+{
+    // The cube [-1, 1]^3: a corner goes to (Q + 2R + (n - 3) V) / n with n = 3, Q the mean of
+    // its three face centres (1/3 each coordinate), R of its three edge midpoints (2/3): 5/9.
+    const Mesh once = refineMesh(cube(), MeshScheme::CatmullClark);
+    QCOMPARE(once.vertices.rows(), Eigen::Index(8 + 12 + 6));
+    QCOMPARE(once.faces.size(), std::size_t(24));
+    for (int v = 0; v < 8; ++v) // vertex points keep their numbers
+        for (int c = 0; c < 3; ++c)
+            QVERIFY(std::abs(std::abs(once.vertices(v, c)) - 5.0 / 9.0) < 1e-15);
+    QVERIFY((once.vertices.row(7) - Eigen::RowVector3d(5.0 / 9, 5.0 / 9, 5.0 / 9)).norm() < 1e-15);
+    // Edge points: (v0 + v1 + two face centres) / 4, e.g. (1, 1, +-1) -> (3/4, 3/4, 0).
+    const MeshTopology t(8, cube().faces);
+    const int e = t.findEdge(3, 7);
+    QVERIFY(e >= 0);
+    QVERIFY((once.vertices.row(8 + e) - Eigen::RowVector3d(0.75, 0.75, 0)).norm() < 1e-15);
+    // Face points: the face centres (one coordinate +-1, the others 0).
+    for (int f = 0; f < 6; ++f)
+        QVERIFY(std::abs(once.vertices.row(20 + f).cwiseAbs().sum() - 1.0) < 1e-15);
+    // The refined mesh is closed, oriented, all quads, valence 3 at the corners.
+    const MeshTopology t1(26, once.faces);
+    QCOMPARE(t1.edgeCount(), 48);
+    for (int v = 0; v < 26; ++v)
+        QVERIFY(!t1.onBoundary(v));
+    QCOMPARE(t1.valence(0), 3);
+    QCOMPARE(t1.valence(20), 4);
+}
+
+void TestMesh::loopCounts()
+{
+    const Mesh ico = icosahedron();
+    QCOMPARE(ico.faces.size(), std::size_t(20));
+    const Mesh once = refineMesh(ico, MeshScheme::Loop);
+    QCOMPARE(once.vertices.rows(), Eigen::Index(12 + 30));
+    QCOMPARE(once.faces.size(), std::size_t(80));
+    // A vertex of valence 5: (1 - 5 beta) v + beta (sum of its 5 neighbours), beta = 3/80 ... as
+    // Loop's formula gives: (5/8 - (3/8 + cos(72 deg)/4)^2) / 5.
+    const double c = 3.0 / 8 + std::cos(2 * M_PI / 5) / 4;
+    const double beta = (5.0 / 8 - c * c) / 5;
+    const MeshTopology t(12, ico.faces);
+    Eigen::RowVector3d expect = (1 - 5 * beta) * ico.vertices.row(0);
+    for (int e : t.ring(0).edges)
+        expect += beta * ico.vertices.row(t.otherEnd(e, 0));
+    QVERIFY((once.vertices.row(0) - expect).norm() < 1e-15);
+}
+
+void TestMesh::limitPositionsAreTheLimitOfRefinement_data()
+{
+    QTest::addColumn<int>("which");
+    QTest::newRow("cube, Catmull-Clark") << 0;
+    QTest::newRow("pentagonal prism, Catmull-Clark (pentagons)") << 1;
+    QTest::newRow("tetrahedron, Catmull-Clark (triangles)") << 2;
+    QTest::newRow("icosahedron, Loop") << 3;
+    QTest::newRow("open grid, Catmull-Clark") << 4;
+    QTest::newRow("open triangulated grid, Loop") << 5;
+}
+
+void TestMesh::limitPositionsAreTheLimitOfRefinement()
+{
+    // The limit of vertex v is the limit of its point after k steps (same number): the limit
+    // masks are the left eigenvectors of the rules, at extraordinary vertices, next to
+    // non-quads and on the boundary. And the points of the steps converge to it.
+    QFETCH(int, which);
+    const std::vector<std::pair<Mesh, MeshScheme>> meshes{
+        {cube(), MeshScheme::CatmullClark},
+        {pentagonalPrism(), MeshScheme::CatmullClark},
+        {tetrahedron(), MeshScheme::CatmullClark},
+        {icosahedron(), MeshScheme::Loop},
+        {grid(4, 3, false), MeshScheme::CatmullClark},
+        {grid(4, 3, true), MeshScheme::Loop}};
+    const auto &[mesh, scheme] = meshes[std::size_t(which)];
+    const Eigen::Index n = mesh.vertices.rows();
+    const Mat limit = limitPositions(mesh, scheme);
+    const double tol = 1e-12 * diagonal(mesh);
+    double previous = 1e300;
+    for (int k = 1; k <= 6; ++k) {
+        const Mesh refined = refineMesh(mesh, scheme, k);
+        const Mat again = limitPositions(refined, scheme).topRows(n);
+        const double gap = (again - limit).rowwise().norm().maxCoeff();
+        QVERIFY2(gap < tol, qPrintable(QStringLiteral("step %1: %2").arg(k).arg(gap)));
+        const double distance = (refined.vertices.topRows(n) - limit).rowwise().norm().maxCoeff();
+        QVERIFY2(distance < previous, qPrintable(QStringLiteral("step %1").arg(k)));
+        previous = distance;
+    }
+    QVERIFY(previous < 0.02 * diagonal(mesh));
+}
+
+void TestMesh::boundaryIsTheCubicBSplineOfThePolygon()
+{
+    // VTX_BOUNDARY_EDGE_ONLY: every boundary vertex, the grid's corners too, has the limit
+    // (b0 + 4 v + b1) / 6 of its boundary neighbours, in both schemes.
+    for (bool triangles : {false, true}) {
+        const Mesh m = grid(3, 2, triangles);
+        const Mat limit =
+            limitPositions(m, triangles ? MeshScheme::Loop : MeshScheme::CatmullClark);
+        // Vertex 1 = (1, 0): neighbours (0, 0) and (2, 0) along the boundary.
+        const Eigen::RowVector3d expect =
+            (m.vertices.row(0) + 4 * m.vertices.row(1) + m.vertices.row(2)) / 6;
+        QVERIFY((limit.row(1) - expect).norm() < 1e-15);
+        // The corner (0, 0): neighbours (1, 0) and (0, 1) = vertex 4.
+        const Eigen::RowVector3d corner =
+            (m.vertices.row(1) + 4 * m.vertices.row(0) + m.vertices.row(4)) / 6;
+        QVERIFY((limit.row(0) - corner).norm() < 1e-15);
+    }
+}
+
+void TestMesh::extraordinaryVertices()
+{
+    const MeshTopology c(8, cube().faces);
+    QCOMPARE(c.extraordinaryVertices(MeshScheme::CatmullClark).size(), std::size_t(8));
+    const MeshTopology ico(12, icosahedron().faces);
+    const auto ev = ico.extraordinaryVertices(MeshScheme::Loop);
+    QCOMPARE(ev.size(), std::size_t(12));
+    for (int v : ev)
+        QCOMPARE(ico.valence(v), 5);
+    const Mesh g = grid(4, 4, false);
+    const MeshTopology gt(int(g.vertices.rows()), g.faces);
+    QVERIFY(gt.extraordinaryVertices(MeshScheme::CatmullClark).empty());
+    QCOMPARE(gt.valence(0), 2); // a corner: boundary, regular for the crease rule
+    QVERIFY(gt.onBoundary(0));
+}
+
+void TestMesh::subdominantEigenvalueClosedForms()
+{
+    // The local subdivision matrix on the ring of two faces around a vertex of valence n:
+    // 1 first, the subdominant pair (Stam 1998 for Catmull-Clark, 3/8 + cos(2 pi/n)/4 for
+    // Loop), and the next modulus mu against lambda^2.
+    for (MeshScheme scheme : {MeshScheme::CatmullClark, MeshScheme::Loop}) {
+        for (int n = 3; n <= 12; ++n) {
+            const VertexSpectrum s = interiorVertexSpectrum(scheme, n);
+            QCOMPARE(s.S.rows(),
+                     Eigen::Index(scheme == MeshScheme::Loop ? 3 * n + 1 : 6 * n + 1));
+            QVERIFY((s.S.rowwise().sum().array() - 1.0).abs().maxCoeff() < 1e-14);
+            QVERIFY(std::abs(s.eigenvalues[0] - 1.0) < 1e-12);
+            const double closed = closedFormSubdominant(scheme, n);
+            QVERIFY2(std::abs(s.subdominant - closed) < 1e-12,
+                     qPrintable(QStringLiteral("%1 n=%2: %3 vs %4")
+                                    .arg(QString::fromStdString(toString(scheme)))
+                                    .arg(n)
+                                    .arg(s.subdominant, 0, 'g', 17)
+                                    .arg(closed, 0, 'g', 17)));
+            QVERIFY(s.spectralC1);
+            qInfo("%-13s n=%2d  lambda=%.6f  mu=%.6f  lambda^2=%.6f  curvature %s",
+                  toString(scheme).c_str(), n, s.subdominant, s.subsubdominant,
+                  s.subdominant * s.subdominant, s.curvature.c_str());
+        }
+        // The regular vertex: lambda = 1/2, mu = 1/4 = lambda^2 (the splines' bounded curvature).
+        const VertexSpectrum regular = interiorVertexSpectrum(scheme, regularValence(scheme));
+        QVERIFY(std::abs(regular.subdominant - 0.5) < 1e-12);
+        QVERIFY(std::abs(regular.subsubdominant - 0.25) < 1e-12);
+        QCOMPARE(regular.curvature, std::string("bounded"));
+    }
+    // Catmull-Clark's curvature diverges at valences above 4 (mu = 1/4 > lambda^2): Peters &
+    // Reif 2008, section 7.
+    QCOMPARE(interiorVertexSpectrum(MeshScheme::CatmullClark, 5).curvature,
+             std::string("unbounded"));
+    QVERIFY_THROWS_EXCEPTION(InputError, interiorVertexSpectrum(MeshScheme::Loop, 2));
+}
+
+void TestMesh::badMeshesAreRefusedByName()
+{
+    const auto cc = MeshScheme::CatmullClark;
+    Mesh m = cube();
+    m.faces[2][1] = 8;
+    QCOMPARE(refusal(m, cc),
+             QStringLiteral("face 2 refers to vertex 8, but the mesh has 8 vertices (0 to 7)"));
+    m = cube();
+    m.faces[3] = {2, 6, 2, 3};
+    QCOMPARE(refusal(m, cc), QStringLiteral("face 3 lists vertex 2 twice"));
+    m = cube();
+    m.faces[0] = {0, 2};
+    QCOMPARE(refusal(m, cc), QStringLiteral("face 0 has 2 vertices; a face needs at least 3"));
+    m = cube();
+    std::reverse(m.faces[4].begin(), m.faces[4].end());
+    QVERIFY2(refusal(m, cc).contains(QStringLiteral("oriented inconsistently")),
+             qPrintable(refusal(m, cc)));
+    QVERIFY(refusal(m, cc).contains(QStringLiteral(" 4 ")));
+    m = cube();
+    m.faces.push_back(m.faces[0]); // a second copy of a face on the same edges
+    std::reverse(m.faces.back().begin(), m.faces.back().end());
+    QVERIFY2(refusal(m, cc).contains(QStringLiteral("non-manifold: faces")),
+             qPrintable(refusal(m, cc)));
+    m = cube();
+    m.vertices(5, 1) = std::nan("");
+    QCOMPARE(refusal(m, cc),
+             QStringLiteral("vertex 5 has a coordinate that is not a finite number"));
+    QCOMPARE(refusal(cube(), MeshScheme::Loop),
+             QStringLiteral("face 0 has 4 vertices; Loop subdivision takes triangles only"));
+    QCOMPARE(refusal(Mesh{}, cc), QStringLiteral("the mesh has no vertices"));
+    m = cube();
+    m.faces.clear();
+    QCOMPARE(refusal(m, cc), QStringLiteral("the mesh has no faces"));
+    // Two tetrahedra sharing one vertex only: a bowtie, two fans at vertex 0.
+    Mesh bow;
+    bow.vertices.resize(7, 3);
+    bow.vertices << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, 0, 0, 0, -1, 0, 0, 0, -1;
+    bow.faces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3},
+                 {0, 4, 5}, {0, 6, 4}, {0, 5, 6}, {4, 6, 5}};
+    QVERIFY2(refusal(bow, cc).startsWith(QStringLiteral("vertex 0 is non-manifold")),
+             qPrintable(refusal(bow, cc)));
+    QVERIFY(refusal(cube(), cc).isEmpty());
+    QVERIFY(refusal(icosahedron(), MeshScheme::Loop).isEmpty());
+}
+
+AWB_TEST_MAIN(TestMesh)
+#include "test_mesh.moc"
