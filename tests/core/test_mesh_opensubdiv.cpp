@@ -1,0 +1,230 @@
+// The mesh room against OpenSubdiv 3.5 (issue 30; Debian libosd-dev, a test-only dependency):
+// the same meshes refined 1, 2, 3 times by both, with Sdc::Options::VTX_BOUNDARY_EDGE_ONLY and
+// TRI_SUB_CATMARK; the points of every level and the limit positions of every vertex of the
+// last level agree to 1e-9 of the bounding box's diagonal -- closed and open meshes, valences 3
+// to 8, polygons that are not quads, random coordinates.
+
+#include "core/mesh/Mesh.h"
+#include "core/mesh/MeshRefine.h"
+
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+
+#include <QtTest>
+
+#include "TestMain.h"
+
+#include <cmath>
+#include <memory>
+#include <random>
+
+using namespace awb;
+namespace osd = OpenSubdiv;
+
+namespace {
+
+struct OsdPoint {
+    double p[3];
+    void Clear(void * = nullptr) { p[0] = p[1] = p[2] = 0; }
+    void AddWithWeight(const OsdPoint &s, double w)
+    {
+        for (int k = 0; k < 3; ++k)
+            p[k] += w * s.p[k];
+    }
+};
+
+struct OsdResult {
+    Mat points;  // the vertices of the last level
+    Mat limits;  // their limit positions
+};
+
+OsdResult openSubdiv(const Mesh &m, MeshScheme scheme, int levels)
+{
+    osd::Sdc::Options options;
+    options.SetVtxBoundaryInterpolation(osd::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+    options.SetTriangleSubdivision(osd::Sdc::Options::TRI_SUB_CATMARK);
+    std::vector<int> counts, indices;
+    for (const auto &f : m.faces) {
+        counts.push_back(int(f.size()));
+        indices.insert(indices.end(), f.begin(), f.end());
+    }
+    osd::Far::TopologyDescriptor desc;
+    desc.numVertices = int(m.vertices.rows());
+    desc.numFaces = int(m.faces.size());
+    desc.numVertsPerFace = counts.data();
+    desc.vertIndicesPerFace = indices.data();
+    using Factory = osd::Far::TopologyRefinerFactory<osd::Far::TopologyDescriptor>;
+    const auto type =
+        scheme == MeshScheme::Loop ? osd::Sdc::SCHEME_LOOP : osd::Sdc::SCHEME_CATMARK;
+    std::unique_ptr<osd::Far::TopologyRefiner> refiner(
+        Factory::Create(desc, Factory::Options(type, options)));
+    osd::Far::TopologyRefiner::UniformOptions uniform(levels);
+    uniform.fullTopologyInLastLevel = true;
+    refiner->RefineUniform(uniform);
+    std::vector<OsdPoint> buffer(std::size_t(refiner->GetNumVerticesTotal()));
+    for (Eigen::Index v = 0; v < m.vertices.rows(); ++v)
+        for (int k = 0; k < 3; ++k)
+            buffer[std::size_t(v)].p[k] = m.vertices(v, k);
+    osd::Far::PrimvarRefinerReal<double> primvar(*refiner);
+    OsdPoint *src = buffer.data();
+    for (int level = 1; level <= levels; ++level) {
+        OsdPoint *dst = src + refiner->GetLevel(level - 1).GetNumVertices();
+        primvar.Interpolate(level, src, dst);
+        src = dst;
+    }
+    const int n = refiner->GetLevel(levels).GetNumVertices();
+    std::vector<OsdPoint> limit(static_cast<std::size_t>(n));
+    primvar.Limit(src, limit);
+    OsdResult r{Mat(n, 3), Mat(n, 3)};
+    for (int i = 0; i < n; ++i)
+        for (int k = 0; k < 3; ++k) {
+            r.points(i, k) = src[i].p[k];
+            r.limits(i, k) = limit[std::size_t(i)].p[k];
+        }
+    return r;
+}
+
+// The largest distance from a row of a to the nearest row of b, both ways.
+double setDistance(const Mat &a, const Mat &b)
+{
+    const auto directed = [](const Mat &x, const Mat &y) {
+        double worst = 0;
+        for (Eigen::Index i = 0; i < x.rows(); ++i)
+            worst = std::max(worst, (y.rowwise() - x.row(i)).rowwise().norm().minCoeff());
+        return worst;
+    };
+    return std::max(directed(a, b), directed(b, a));
+}
+
+// n sectors of k rings around vertex 0 (quads, or triangles), open at the rim: an interior
+// vertex of valence n, boundary vertices of every kind around it.
+Mesh star(int n, int k, bool triangles, std::mt19937 &random)
+{
+    std::uniform_real_distribution<double> jitter(-0.15, 0.15);
+    Mesh m;
+    std::vector<Eigen::RowVector3d> points;
+    std::map<std::tuple<int, int, int>, int> ids;
+    const auto id = [&](int s, int i, int j) {
+        std::tuple<int, int, int> key = i == 0 && j == 0 ? std::tuple{0, 0, 0}
+                                        : i == 0         ? std::tuple{(s + 1) % n, j, 0}
+                                                         : std::tuple{s, i, j};
+        const auto it = ids.find(key);
+        if (it != ids.end())
+            return it->second;
+        const auto [ks, ki, kj] = key;
+        const double a0 = 2 * M_PI * ks / n, a1 = 2 * M_PI * (ks + 1) / n;
+        const Eigen::RowVector2d u(std::cos(a0), std::sin(a0)), w(std::cos(a1), std::sin(a1));
+        const Eigen::RowVector2d xy = ki * u + kj * w;
+        points.emplace_back(xy.x() + jitter(random), xy.y() + jitter(random),
+                            0.3 * std::sin(xy.x()) + jitter(random));
+        ids.emplace(key, int(points.size()) - 1);
+        return int(points.size()) - 1;
+    };
+    for (int s = 0; s < n; ++s)
+        for (int i = 0; i < k; ++i)
+            for (int j = 0; j < k; ++j) {
+                if (!triangles) {
+                    m.faces.push_back({id(s, i, j), id(s, i + 1, j), id(s, i + 1, j + 1),
+                                       id(s, i, j + 1)});
+                } else {
+                    if (i + j <= k - 1)
+                        m.faces.push_back({id(s, i, j), id(s, i + 1, j), id(s, i, j + 1)});
+                    if (i + j <= k - 2)
+                        m.faces.push_back(
+                            {id(s, i + 1, j), id(s, i + 1, j + 1), id(s, i, j + 1)});
+                }
+            }
+    m.vertices.resize(Eigen::Index(points.size()), 3);
+    for (std::size_t v = 0; v < points.size(); ++v)
+        m.vertices.row(Eigen::Index(v)) = points[v];
+    return m;
+}
+
+// A closed mesh of valences 3 to 6 with quads, triangles and pentagons: a pentagonal prism
+// capped by a pyramid on top.
+Mesh cappedPrism(std::mt19937 &random)
+{
+    std::uniform_real_distribution<double> jitter(-0.1, 0.1);
+    Mesh m;
+    m.vertices.resize(11, 3);
+    for (int k = 0; k < 5; ++k) {
+        const double a = 2 * M_PI * k / 5;
+        m.vertices.row(k) << std::cos(a) + jitter(random), std::sin(a) + jitter(random), 1;
+        m.vertices.row(k + 5) << std::cos(a), std::sin(a) + jitter(random), -1 + jitter(random);
+    }
+    m.vertices.row(10) << 0, 0, 2;
+    m.faces.push_back({9, 8, 7, 6, 5});  // bottom, seen from below
+    for (int k = 0; k < 5; ++k) {
+        m.faces.push_back({k + 5, (k + 1) % 5 + 5, (k + 1) % 5, k});
+        m.faces.push_back({k, (k + 1) % 5, 10});
+    }
+    return m;
+}
+
+double diagonal(const Mat &v)
+{
+    return (v.colwise().maxCoeff() - v.colwise().minCoeff()).norm();
+}
+
+} // namespace
+
+class TestMeshOpenSubdiv : public QObject {
+    Q_OBJECT
+private slots:
+    void sameLevelsAndLimitsAsOpenSubdiv_data();
+    void sameLevelsAndLimitsAsOpenSubdiv();
+};
+
+void TestMeshOpenSubdiv::sameLevelsAndLimitsAsOpenSubdiv_data()
+{
+    QTest::addColumn<int>("valence");
+    QTest::addColumn<bool>("loop");
+    QTest::addColumn<bool>("closed");
+    for (bool loop : {false, true})
+        for (int n = 3; n <= 8; ++n)
+            QTest::addRow("%s star, valence %d, open", loop ? "Loop" : "Catmull-Clark", n)
+                << n << loop << false;
+    QTest::addRow("Catmull-Clark, capped pentagonal prism") << 0 << false << true;
+}
+
+void TestMeshOpenSubdiv::sameLevelsAndLimitsAsOpenSubdiv()
+{
+    QFETCH(int, valence);
+    QFETCH(bool, loop);
+    QFETCH(bool, closed);
+    std::mt19937 random(std::uint32_t(1000 + valence + 17 * loop));
+    const MeshScheme scheme = loop ? MeshScheme::Loop : MeshScheme::CatmullClark;
+    const Mesh mesh = closed ? cappedPrism(random) : star(valence, 3, loop, random);
+    const double tol = 1e-9 * diagonal(mesh.vertices);
+    double largest = 0;
+    for (int levels = 1; levels <= 3; ++levels) {
+        const OsdResult reference = openSubdiv(mesh, scheme, levels);
+        const Mesh ours = refineMesh(mesh, scheme, levels);
+        QCOMPARE(ours.vertices.rows(), reference.points.rows());
+        const Mat limits = limitPositions(ours, scheme);
+        // Vertex v keeps its number in both (OpenSubdiv lists the vertices' children first).
+        const Eigen::Index n = mesh.vertices.rows();
+        const double first = (ours.vertices.topRows(n) - reference.points.topRows(n)).norm();
+        const double firstLimit = (limits.topRows(n) - reference.limits.topRows(n))
+                                      .rowwise()
+                                      .norm()
+                                      .maxCoeff();
+        const double points = setDistance(ours.vertices, reference.points);
+        const double limit = setDistance(limits, reference.limits);
+        QVERIFY2(first < tol && firstLimit < tol && points < tol && limit < tol,
+                 qPrintable(QStringLiteral("level %1: vertices %2, their limits %3, all points "
+                                           "%4, all limits %5 (tolerance %6)")
+                                .arg(levels)
+                                .arg(first)
+                                .arg(firstLimit)
+                                .arg(points)
+                                .arg(limit)
+                                .arg(tol)));
+        largest = std::max({largest, first, firstLimit, points, limit});
+    }
+    qInfo("largest difference from OpenSubdiv: %.3g (%.3g of the diagonal)", largest,
+          largest / diagonal(mesh.vertices));
+}
+
+AWB_TEST_MAIN(TestMeshOpenSubdiv)
+#include "test_mesh_opensubdiv.moc"
