@@ -5074,6 +5074,10 @@ meze: %9
         <source>a vertex&apos;s valence must be 3 to 64, got %1</source>
         <translation>valence vrcholu musí být 3 až 64, je %1</translation>
     </message>
+    <message>
+        <source>a characteristic map needs ring x 2 points</source>
+        <translation>charakteristické zobrazení potřebuje body prstence × 2</translation>
+    </message>
 </context>
 <context>
     <name>awb::render</name>

@@ -5068,6 +5068,10 @@ limites&#xa0;: %9
         <source>a vertex&apos;s valence must be 3 to 64, got %1</source>
         <translation>la valence d’un sommet doit être de 3 à 64, reçu %1</translation>
     </message>
+    <message>
+        <source>a characteristic map needs ring x 2 points</source>
+        <translation>une application caractéristique demande les points de l’anneau × 2</translation>
+    </message>
 </context>
 <context>
     <name>awb::render</name>

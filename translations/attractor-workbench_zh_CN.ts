@@ -5062,6 +5062,10 @@ bounds: %9
         <source>a vertex&apos;s valence must be 3 to 64, got %1</source>
         <translation>顶点的价必须为 3 到 64，得到 %1</translation>
     </message>
+    <message>
+        <source>a characteristic map needs ring x 2 points</source>
+        <translation>特征映射需要环上的点 × 2</translation>
+    </message>
 </context>
 <context>
     <name>awb::render</name>

@@ -146,6 +146,7 @@ private slots:
     void boundaryIsTheCubicBSplineOfThePolygon();
     void extraordinaryVertices();
     void subdominantEigenvalueClosedForms();
+    void characteristicMapWindsOnce();
     void badMeshesAreRefusedByName();
 };
 
@@ -291,6 +292,9 @@ void TestMesh::subdominantEigenvalueClosedForms()
                                     .arg(s.subdominant, 0, 'g', 17)
                                     .arg(closed, 0, 'g', 17)));
             QVERIFY(s.spectralC1);
+            QVERIFY(s.characteristicRegular);
+            QVERIFY(s.characteristicInjective);
+            QVERIFY(s.c1);
             qInfo("%-13s n=%2d  lambda=%.6f  mu=%.6f  lambda^2=%.6f  curvature %s",
                   toString(scheme).c_str(), n, s.subdominant, s.subsubdominant,
                   s.subdominant * s.subdominant, s.curvature.c_str());
@@ -306,6 +310,41 @@ void TestMesh::subdominantEigenvalueClosedForms()
     QCOMPARE(interiorVertexSpectrum(MeshScheme::CatmullClark, 5).curvature,
              std::string("unbounded"));
     QVERIFY_THROWS_EXCEPTION(InputError, interiorVertexSpectrum(MeshScheme::Loop, 2));
+}
+
+void TestMesh::characteristicMapWindsOnce()
+{
+    // The star's own layout as planar control points is a regular, injective map (winding
+    // number 1); the same points at twice their angle wind twice around the centre: not
+    // injective, as the second Fourier frequency's eigenvectors (mu for Catmull-Clark n > 4).
+    for (MeshScheme scheme : {MeshScheme::CatmullClark, MeshScheme::Loop}) {
+        const std::vector<std::pair<int, int>> sector =
+            scheme == MeshScheme::CatmullClark
+                ? std::vector<std::pair<int, int>>{{1, 0}, {1, 1}, {2, 0}, {2, 1}, {2, 2}, {1, 2}}
+                : std::vector<std::pair<int, int>>{{1, 0}, {2, 0}, {1, 1}};
+        const int n = 7;
+        Mat layout(1 + n * Eigen::Index(sector.size()), 2), doubled(layout.rows(), 2);
+        layout.row(0).setZero();
+        doubled.row(0).setZero();
+        Eigen::Index r = 1;
+        for (int k = 0; k < n; ++k) {
+            const double a0 = 2 * M_PI * k / n, a1 = 2 * M_PI * (k + 1) / n;
+            for (const auto &[i, j] : sector) {
+                const double x = i * std::cos(a0) + j * std::cos(a1);
+                const double y = i * std::sin(a0) + j * std::sin(a1);
+                layout.row(r) << x, y;
+                const double radius = std::hypot(x, y), angle = 2 * std::atan2(y, x);
+                doubled.row(r++) << radius * std::cos(angle), radius * std::sin(angle);
+            }
+        }
+        const CharacteristicMap plain = checkCharacteristicMap(scheme, n, layout);
+        QVERIFY(plain.regular());
+        QCOMPARE(plain.winding, 1);
+        QVERIFY(plain.injective());
+        const CharacteristicMap twice = checkCharacteristicMap(scheme, n, doubled);
+        QCOMPARE(twice.winding, 2);
+        QVERIFY(!twice.injective());
+    }
 }
 
 void TestMesh::badMeshesAreRefusedByName()

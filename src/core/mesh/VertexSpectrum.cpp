@@ -1,11 +1,15 @@
 #include "core/mesh/VertexSpectrum.h"
 
+#include "core/Decompositions.h"
 #include "core/Messages.h"
 #include "core/analysis/Spectrum.h"
 #include "core/mesh/MeshRefine.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <tuple>
 
@@ -99,7 +103,119 @@ private:
     std::vector<std::vector<int>> m_faces;
 };
 
+// The ring of S: the centre, then per sector the points within two faces of it.
+std::vector<std::pair<int, int>> ringSector(MeshScheme scheme)
+{
+    if (scheme == MeshScheme::CatmullClark)
+        return {{1, 0}, {1, 1}, {2, 0}, {2, 1}, {2, 2}, {1, 2}};
+    return {{1, 0}, {2, 0}, {1, 1}};
+}
+
+std::vector<int> ringPoints(Star &star, MeshScheme scheme, int n)
+{
+    std::vector<int> ids{star.id(0, 0, 0)};
+    for (int s = 0; s < n; ++s)
+        for (const auto &[i, j] : ringSector(scheme))
+            ids.push_back(star.id(s, i, j));
+    return ids;
+}
+
+double signedArea(const Mat &p, const std::vector<int> &loop)
+{
+    double a = 0;
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+        const int u = loop[k], w = loop[(k + 1) % loop.size()];
+        a += p(u, 0) * p(w, 1) - p(w, 0) * p(u, 1);
+    }
+    return a / 2;
+}
+
+// The real basis of the eigenspace of a double eigenvalue `value` of S (ring x 2).
+Mat eigenPlane(const Mat &S, double value)
+{
+    const Mat shifted = S - value * Mat::Identity(S.rows(), S.cols());
+    Eigen::JacobiSVD<Mat> svd(shifted, Eigen::ComputeFullV);
+    return svd.matrixV().rightCols(2);
+}
+
 } // namespace
+
+CharacteristicMap checkCharacteristicMap(MeshScheme scheme, int n, const Mat &Q)
+{
+    Star star(scheme, n);
+    const std::vector<int> ring = ringPoints(star, scheme, n);
+    if (Q.rows() != Eigen::Index(ring.size()) || Q.cols() != 2)
+        throw InputError(coreTranslate("awb::mesh", "a characteristic map needs ring x 2 points"));
+    // The data outside the ring is never reached by the limit over the faces around the centre
+    // (their patches' support is the ring): zeros there.
+    Mat data = Mat::Zero(star.vertexCount(), 2);
+    for (std::size_t r = 0; r < ring.size(); ++r)
+        data.row(ring[r]) = Q.row(Eigen::Index(r));
+    std::vector<std::vector<int>> faces = star.faces();
+    // ancestor[f]: the face of the star that face f of the current level lies in.
+    std::vector<int> ancestor(faces.size());
+    for (std::size_t f = 0; f < faces.size(); ++f)
+        ancestor[f] = int(f);
+    const MeshTopology coarse(star.vertexCount(), faces);
+    std::vector<bool> around(faces.size(), false);
+    for (int f : coarse.ring(0).faces)
+        around[std::size_t(f)] = true;
+    int vertices = star.vertexCount();
+    for (int level = 0; level < 3; ++level) {
+        const MeshTopology t(vertices, faces);
+        Refinement r = refineTopology(t, scheme);
+        data = applyStencils(r.stencils, data);
+        std::vector<int> next;
+        for (std::size_t f = 0; f < faces.size(); ++f)
+            next.insert(next.end(), scheme == MeshScheme::Loop ? 4 : faces[f].size(), ancestor[f]);
+        ancestor = std::move(next);
+        faces = std::move(r.faces);
+        vertices = int(r.stencils.size());
+    }
+    const MeshTopology fine(vertices, faces);
+    const Mat limit = applyStencils(limitStencils(fine, scheme), data);
+    CharacteristicMap out;
+    out.minArea = std::numeric_limits<double>::infinity();
+    out.maxArea = -out.minArea;
+    std::map<int, int> boundaryNext;  // a -> b along the outer boundary of the faces around
+    std::set<std::pair<int, int>> halfEdges;
+    for (std::size_t f = 0; f < faces.size(); ++f)
+        if (around[std::size_t(ancestor[f])])
+            for (std::size_t k = 0; k < faces[f].size(); ++k)
+                halfEdges.emplace(faces[f][k], faces[f][(k + 1) % faces[f].size()]);
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        if (!around[std::size_t(ancestor[f])])
+            continue;
+        const auto &loop = faces[f];
+        for (std::size_t k = 0; k < loop.size(); ++k) {
+            const int a = loop[k], b = loop[(k + 1) % loop.size()];
+            if (!halfEdges.count({b, a}))
+                boundaryNext[a] = b;
+        }
+        if (std::find(loop.begin(), loop.end(), 0) != loop.end())
+            continue;  // at the centre the map's Jacobian vanishes
+        const double area = signedArea(limit, loop);
+        out.minArea = std::min(out.minArea, area);
+        out.maxArea = std::max(out.maxArea, area);
+    }
+    // The winding number of the boundary's image around the centre's image.
+    const Eigen::RowVector2d centre = limit.row(0);
+    double turn = 0;
+    if (!boundaryNext.empty()) {
+        const int start = boundaryNext.begin()->first;
+        int at = start;
+        for (std::size_t steps = 0; steps <= boundaryNext.size(); ++steps) {
+            const int to = boundaryNext.at(at);
+            const Eigen::RowVector2d u = limit.row(at) - centre, w = limit.row(to) - centre;
+            turn += std::atan2(u.x() * w.y() - u.y() * w.x(), u.dot(w));
+            at = to;
+            if (at == start)
+                break;
+        }
+    }
+    out.winding = int(std::lround(turn / (2 * M_PI)));
+    return out;
+}
 
 double closedFormSubdominant(MeshScheme scheme, int n)
 {
@@ -117,18 +233,11 @@ VertexSpectrum interiorVertexSpectrum(MeshScheme scheme, int n)
     Star star(scheme, n);
     const MeshTopology topology(star.vertexCount(), star.faces());
     const Refinement refinement = refineTopology(topology, scheme);
-    // The ring: the centre, then per sector the points within two faces of it.
-    std::vector<std::pair<int, int>> sector;
-    if (scheme == MeshScheme::CatmullClark)
-        sector = {{1, 0}, {1, 1}, {2, 0}, {2, 1}, {2, 2}, {1, 2}};
-    else
-        sector = {{1, 0}, {2, 0}, {1, 1}};
-    std::vector<int> coarse{star.id(0, 0, 0)}, fine{0};
+    const std::vector<int> coarse = ringPoints(star, scheme, n);
+    std::vector<int> fine{0};
     for (int s = 0; s < n; ++s)
-        for (const auto &[i, j] : sector) {
-            coarse.push_back(star.id(s, i, j));
+        for (const auto &[i, j] : ringSector(scheme))
             fine.push_back(star.child(topology, s, i, j));
-        }
     std::map<int, int> column;
     for (std::size_t c = 0; c < coarse.size(); ++c)
         column[coarse[c]] = int(c);
@@ -155,6 +264,13 @@ VertexSpectrum interiorVertexSpectrum(MeshScheme scheme, int n)
     out.spectralC1 = std::abs(out.eigenvalues[0] - 1.0) < tol && std::abs(l2.imag()) < tol
                      && std::abs(l3.imag()) < tol && std::abs(l2 - l3) < tol && l2.real() > 0
                      && l2.real() < 1.0 - tol && out.subsubdominant < out.subdominant - tol;
+    if (out.spectralC1) {
+        const CharacteristicMap map =
+            checkCharacteristicMap(scheme, n, eigenPlane(out.S, l2.real()));
+        out.characteristicRegular = map.regular();
+        out.characteristicInjective = map.injective();
+    }
+    out.c1 = out.spectralC1 && out.characteristicRegular && out.characteristicInjective;
     const double l2sq = out.subdominant * out.subdominant;
     out.curvature = out.subsubdominant < l2sq - tol   ? "zero"
                     : out.subsubdominant > l2sq + tol ? "unbounded"

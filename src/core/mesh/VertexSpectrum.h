@@ -26,8 +26,16 @@ struct VertexSpectrum {
     double subdominant = 0.0;           // lambda = lambda_2 = lambda_3
     double subsubdominant = 0.0;        // mu = |lambda_4|
     // The spectral part of Reif's C1 criterion: 1 = lambda_1 > lambda_2 = lambda_3 > |lambda_4|,
-    // lambda_2 real (the characteristic map's regularity and injectivity are checked apart).
+    // lambda_2 real.
     bool spectralC1 = false;
+    // The characteristic map (the limit surface of the two real eigenvectors of lambda as
+    // planar control points) over the n faces around the vertex: regular (its Jacobian keeps
+    // one sign) and injective (regular, and the image of the faces' outer boundary winds once
+    // around the vertex's image) -- Reif's criterion: spectralC1 and both make the surface C1
+    // at the vertex for generic data.
+    bool characteristicRegular = false;
+    bool characteristicInjective = false;
+    bool c1 = false;
     // mu against lambda^2: "zero" (mu < lambda^2: the curvature vanishes at the vertex),
     // "bounded" (mu = lambda^2), "unbounded" (mu > lambda^2, for generic data).
     std::string curvature;
@@ -37,6 +45,19 @@ struct VertexSpectrum {
 // Catmull-Clark, triangles for Loop: the case after one step of any mesh). InputError for
 // n < 3 or n > 64.
 VertexSpectrum interiorVertexSpectrum(MeshScheme scheme, int valence);
+
+// The characteristic map of `Q` (ring x 2, rows in the order of S) checked numerically: the
+// star refined three times, the limit positions of its vertices, the signed area of the image
+// of every face over the n faces around the centre (except those at the centre) -- the
+// Jacobian's sign, cell by cell -- and the winding number of the image of their outer
+// boundary around the centre's image.
+struct CharacteristicMap {
+    double minArea = 0.0, maxArea = 0.0;  // signed areas of the faces' images
+    int winding = 0;
+    bool regular() const { return minArea > 0 || maxArea < 0; }
+    bool injective() const { return regular() && (minArea > 0 ? winding == 1 : winding == -1); }
+};
+CharacteristicMap checkCharacteristicMap(MeshScheme scheme, int valence, const Mat &Q);
 
 // The subdominant eigenvalue in closed form: Catmull-Clark
 // (5 + cos(2 pi/n) + cos(pi/n) sqrt(2 (9 + cos(2 pi/n)))) / 16 (Stam 1998), Loop
