@@ -183,7 +183,7 @@ std::vector<int> MeshTopology::extraordinaryVertices(MeshScheme scheme) const
     return out;
 }
 
-void checkMesh(const Mesh &mesh, MeshScheme scheme)
+MeshTopology checkMesh(const Mesh &mesh, MeshScheme scheme)
 {
     if (mesh.vertices.rows() == 0)
         throw InputError(coreTranslate("awb::mesh", "the mesh has no vertices"));
@@ -205,7 +205,7 @@ void checkMesh(const Mesh &mesh, MeshScheme scheme)
                                   "face %1 has %2 vertices; Loop subdivision takes triangles only"),
                     f,
                     mesh.faces[f].size()));
-    MeshTopology(int(mesh.vertices.rows()), mesh.faces);
+    return MeshTopology(int(mesh.vertices.rows()), mesh.faces);
 }
 
 } // namespace awb

@@ -65,9 +65,9 @@ public:
     int otherEnd(int e, int v) const { return edge(e).v[0] == v ? edge(e).v[1] : edge(e).v[0]; }
     // The edge joining a and b, or -1.
     int findEdge(int a, int b) const;
-    // Interior vertices of valence != regularValence(scheme), and boundary vertices of more
-    // than two faces' valence other than the regular boundary valence (3 for Catmull-Clark,
-    // 4 for Loop), in vertex order.
+    // Interior vertices of valence != regularValence(scheme), and boundary vertices of two or
+    // more faces whose valence is not the regular boundary valence (3 for Catmull-Clark, 4 for
+    // Loop; a corner of one face takes the crease rule and is not listed), in vertex order.
     std::vector<int> extraordinaryVertices(MeshScheme scheme) const;
 
 private:
@@ -78,7 +78,8 @@ private:
 };
 
 // The checks of a mesh for a scheme, beyond MeshTopology's: vertices with three finite
-// coordinates, and triangles only for Loop. Throws InputError naming the problem.
-void checkMesh(const Mesh &mesh, MeshScheme scheme);
+// coordinates, and triangles only for Loop. Throws InputError naming the problem; returns the
+// mesh's topology.
+MeshTopology checkMesh(const Mesh &mesh, MeshScheme scheme);
 
 } // namespace awb

@@ -161,10 +161,7 @@ Refinement refineTopology(const MeshTopology &t, MeshScheme scheme)
                     coreTranslate("awb::mesh",
                                   "face %1 has %2 vertices; Loop subdivision takes triangles only"),
                     f, t.face(f).size()));
-    r.vertexPoints = nv;
-    r.edgePoints = ne;
-    r.facePoints = scheme == MeshScheme::CatmullClark ? nf : 0;
-    r.stencils.reserve(std::size_t(nv + ne + r.facePoints));
+    r.stencils.reserve(std::size_t(nv + ne + (scheme == MeshScheme::CatmullClark ? nf : 0)));
     for (int v = 0; v < nv; ++v)
         r.stencils.push_back(scheme == MeshScheme::Loop ? loopVertex(t, v) : catmarkVertex(t, v));
     for (int e = 0; e < ne; ++e)
@@ -209,10 +206,11 @@ Mat applyStencils(const std::vector<Stencil> &stencils, const Mat &data)
 
 Mesh refineMesh(const Mesh &mesh, MeshScheme scheme, int steps)
 {
-    checkMesh(mesh, scheme);
+    MeshTopology t = checkMesh(mesh, scheme);
     Mesh m = mesh;
     for (int k = 0; k < steps; ++k) {
-        const MeshTopology t(int(m.vertices.rows()), m.faces);
+        if (k > 0)
+            t = MeshTopology(int(m.vertices.rows()), m.faces);
         Refinement r = refineTopology(t, scheme);
         m.vertices = applyStencils(r.stencils, m.vertices);
         m.faces = std::move(r.faces);
@@ -242,8 +240,7 @@ std::vector<Stencil> limitStencils(const MeshTopology &t, MeshScheme scheme)
 
 Mat limitPositions(const Mesh &mesh, MeshScheme scheme)
 {
-    checkMesh(mesh, scheme);
-    const MeshTopology t(int(mesh.vertices.rows()), mesh.faces);
+    const MeshTopology t = checkMesh(mesh, scheme);
     return applyStencils(limitStencils(t, scheme), mesh.vertices);
 }
 

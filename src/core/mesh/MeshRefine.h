@@ -19,10 +19,7 @@ using Stencil = std::vector<std::pair<int, double>>;  // (old point, weight), we
 
 struct Refinement {
     std::vector<std::vector<int>> faces;  // of the refined mesh, counter-clockwise
-    std::vector<Stencil> stencils;        // one per point of the refined mesh
-    int vertexPoints = 0;                 // the first points: the old vertices' (same numbers)
-    int edgePoints = 0;                   // then the edges'
-    int facePoints = 0;                   // then the faces' (Catmull-Clark)
+    std::vector<Stencil> stencils;        // one per point of the refined mesh (numbered as above)
 };
 
 // One step on a topology (checked: triangles only for Loop; InputError otherwise).
