@@ -3,6 +3,7 @@
 // and the eigenvalues of the local subdivision matrix against their closed forms.
 
 #include "core/mesh/Mesh.h"
+#include "core/mesh/MeshExamples.h"
 #include "core/mesh/MeshRefine.h"
 #include "core/mesh/VertexSpectrum.h"
 
@@ -17,107 +18,6 @@
 using namespace awb;
 
 namespace {
-
-// Turns every face of a convex polyhedron outward (counter-clockwise seen from outside).
-void orientOutward(Mesh &m)
-{
-    const Eigen::RowVector3d centre = m.vertices.colwise().mean();
-    for (auto &f : m.faces) {
-        Eigen::RowVector3d c = Eigen::RowVector3d::Zero();
-        for (int v : f)
-            c += m.vertices.row(v);
-        c /= double(f.size());
-        const Eigen::Vector3d a = (m.vertices.row(f[1]) - m.vertices.row(f[0])).transpose();
-        const Eigen::Vector3d b = (m.vertices.row(f[2]) - m.vertices.row(f[0])).transpose();
-        if (a.cross(b).dot((c - centre).transpose()) < 0)
-            std::reverse(f.begin(), f.end());
-    }
-}
-
-Mesh cube()
-{
-    Mesh m;
-    m.vertices.resize(8, 3);
-    for (int v = 0; v < 8; ++v)
-        m.vertices.row(v) << (v & 1 ? 1 : -1), (v & 2 ? 1 : -1), (v & 4 ? 1 : -1);
-    m.faces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-    orientOutward(m);
-    return m;
-}
-
-// The twelve vertices (0, +-1, +-phi) and their cyclic shifts; a face is three vertices at
-// distance 2 of each other.
-Mesh icosahedron()
-{
-    const double p = (1 + std::sqrt(5.0)) / 2;
-    Mesh m;
-    m.vertices.resize(12, 3);
-    int k = 0;
-    for (int a : {-1, 1})
-        for (int b : {-1, 1}) {
-            m.vertices.row(k++) << 0, a, b * p;
-            m.vertices.row(k++) << a, b * p, 0;
-            m.vertices.row(k++) << b * p, 0, a;
-        }
-    const auto edge = [&](int i, int j) {
-        return std::abs((m.vertices.row(i) - m.vertices.row(j)).norm() - 2) < 1e-9;
-    };
-    for (int i = 0; i < 12; ++i)
-        for (int j = i + 1; j < 12; ++j)
-            for (int l = j + 1; l < 12; ++l)
-                if (edge(i, j) && edge(j, l) && edge(i, l))
-                    m.faces.push_back({i, j, l});
-    orientOutward(m);
-    return m;
-}
-
-Mesh tetrahedron()
-{
-    Mesh m;
-    m.vertices.resize(4, 3);
-    m.vertices << 1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1;
-    m.faces = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
-    orientOutward(m);
-    return m;
-}
-
-// Two pentagons and five quads: Catmull-Clark's valence-5 face centres after one step.
-Mesh pentagonalPrism()
-{
-    Mesh m;
-    m.vertices.resize(10, 3);
-    for (int k = 0; k < 5; ++k) {
-        const double a = 2 * M_PI * k / 5;
-        m.vertices.row(k) << std::cos(a), std::sin(a), 1;
-        m.vertices.row(k + 5) << std::cos(a), std::sin(a), -1;
-    }
-    m.faces = {{0, 1, 2, 3, 4}, {5, 6, 7, 8, 9}};
-    for (int k = 0; k < 5; ++k)
-        m.faces.push_back({k, (k + 1) % 5, (k + 1) % 5 + 5, k + 5});
-    orientOutward(m);
-    return m;
-}
-
-// An open grid of w x h quads (or each split into two triangles), bumped in z.
-Mesh grid(int w, int h, bool triangles)
-{
-    Mesh m;
-    m.vertices.resize((w + 1) * (h + 1), 3);
-    const auto id = [w](int i, int j) { return j * (w + 1) + i; };
-    for (int j = 0; j <= h; ++j)
-        for (int i = 0; i <= w; ++i)
-            m.vertices.row(id(i, j)) << i, j, std::sin(1.3 * i + 0.7 * j);
-    for (int j = 0; j < h; ++j)
-        for (int i = 0; i < w; ++i) {
-            if (triangles) {
-                m.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-                m.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-            } else {
-                m.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
-            }
-        }
-    return m;
-}
 
 double diagonal(const Mesh &m)
 {
@@ -154,7 +54,7 @@ void TestMesh::cubeAfterOneCatmullClarkStep()
 {
     // The cube [-1, 1]^3: a corner goes to (Q + 2R + (n - 3) V) / n with n = 3, Q the mean of
     // its three face centres (1/3 each coordinate), R of its three edge midpoints (2/3): 5/9.
-    const Mesh once = refineMesh(cube(), MeshScheme::CatmullClark);
+    const Mesh once = refineMesh(cubeMesh(), MeshScheme::CatmullClark);
     QCOMPARE(once.vertices.rows(), Eigen::Index(8 + 12 + 6));
     QCOMPARE(once.faces.size(), std::size_t(24));
     for (int v = 0; v < 8; ++v) // vertex points keep their numbers
@@ -162,7 +62,7 @@ void TestMesh::cubeAfterOneCatmullClarkStep()
             QVERIFY(std::abs(std::abs(once.vertices(v, c)) - 5.0 / 9.0) < 1e-15);
     QVERIFY((once.vertices.row(7) - Eigen::RowVector3d(5.0 / 9, 5.0 / 9, 5.0 / 9)).norm() < 1e-15);
     // Edge points: (v0 + v1 + two face centres) / 4, e.g. (1, 1, +-1) -> (3/4, 3/4, 0).
-    const MeshTopology t(8, cube().faces);
+    const MeshTopology t(8, cubeMesh().faces);
     const int e = t.findEdge(3, 7);
     QVERIFY(e >= 0);
     QVERIFY((once.vertices.row(8 + e) - Eigen::RowVector3d(0.75, 0.75, 0)).norm() < 1e-15);
@@ -180,7 +80,7 @@ void TestMesh::cubeAfterOneCatmullClarkStep()
 
 void TestMesh::loopCounts()
 {
-    const Mesh ico = icosahedron();
+    const Mesh ico = icosahedronMesh();
     QCOMPARE(ico.faces.size(), std::size_t(20));
     const Mesh once = refineMesh(ico, MeshScheme::Loop);
     QCOMPARE(once.vertices.rows(), Eigen::Index(12 + 30));
@@ -214,12 +114,12 @@ void TestMesh::limitPositionsAreTheLimitOfRefinement()
     // non-quads and on the boundary. And the points of the steps converge to it.
     QFETCH(int, which);
     const std::vector<std::pair<Mesh, MeshScheme>> meshes{
-        {cube(), MeshScheme::CatmullClark},
-        {pentagonalPrism(), MeshScheme::CatmullClark},
-        {tetrahedron(), MeshScheme::CatmullClark},
-        {icosahedron(), MeshScheme::Loop},
-        {grid(4, 3, false), MeshScheme::CatmullClark},
-        {grid(4, 3, true), MeshScheme::Loop}};
+        {cubeMesh(), MeshScheme::CatmullClark},
+        {pentagonalPrismMesh(), MeshScheme::CatmullClark},
+        {tetrahedronMesh(), MeshScheme::CatmullClark},
+        {icosahedronMesh(), MeshScheme::Loop},
+        {gridMesh(4, 3, false), MeshScheme::CatmullClark},
+        {gridMesh(4, 3, true), MeshScheme::Loop}};
     const auto &[mesh, scheme] = meshes[std::size_t(which)];
     const Eigen::Index n = mesh.vertices.rows();
     const Mat limit = limitPositions(mesh, scheme);
@@ -242,7 +142,7 @@ void TestMesh::boundaryIsTheCubicBSplineOfThePolygon()
     // VTX_BOUNDARY_EDGE_ONLY: every boundary vertex, the grid's corners too, has the limit
     // (b0 + 4 v + b1) / 6 of its boundary neighbours, in both schemes.
     for (bool triangles : {false, true}) {
-        const Mesh m = grid(3, 2, triangles);
+        const Mesh m = gridMesh(3, 2, triangles);
         const Mat limit =
             limitPositions(m, triangles ? MeshScheme::Loop : MeshScheme::CatmullClark);
         // Vertex 1 = (1, 0): neighbours (0, 0) and (2, 0) along the boundary.
@@ -258,14 +158,14 @@ void TestMesh::boundaryIsTheCubicBSplineOfThePolygon()
 
 void TestMesh::extraordinaryVertices()
 {
-    const MeshTopology c(8, cube().faces);
+    const MeshTopology c(8, cubeMesh().faces);
     QCOMPARE(c.extraordinaryVertices(MeshScheme::CatmullClark).size(), std::size_t(8));
-    const MeshTopology ico(12, icosahedron().faces);
+    const MeshTopology ico(12, icosahedronMesh().faces);
     const auto ev = ico.extraordinaryVertices(MeshScheme::Loop);
     QCOMPARE(ev.size(), std::size_t(12));
     for (int v : ev)
         QCOMPARE(ico.valence(v), 5);
-    const Mesh g = grid(4, 4, false);
+    const Mesh g = gridMesh(4, 4, false);
     const MeshTopology gt(int(g.vertices.rows()), g.faces);
     QVERIFY(gt.extraordinaryVertices(MeshScheme::CatmullClark).empty());
     QCOMPARE(gt.valence(0), 2); // a corner: boundary, regular for the crease rule
@@ -350,34 +250,34 @@ void TestMesh::characteristicMapWindsOnce()
 void TestMesh::badMeshesAreRefusedByName()
 {
     const auto cc = MeshScheme::CatmullClark;
-    Mesh m = cube();
+    Mesh m = cubeMesh();
     m.faces[2][1] = 8;
     QCOMPARE(refusal(m, cc),
              QStringLiteral("face 2 refers to vertex 8, but the mesh has 8 vertices (0 to 7)"));
-    m = cube();
+    m = cubeMesh();
     m.faces[3] = {2, 6, 2, 3};
     QCOMPARE(refusal(m, cc), QStringLiteral("face 3 lists vertex 2 twice"));
-    m = cube();
+    m = cubeMesh();
     m.faces[0] = {0, 2};
     QCOMPARE(refusal(m, cc), QStringLiteral("face 0 has 2 vertices; a face needs at least 3"));
-    m = cube();
+    m = cubeMesh();
     std::reverse(m.faces[4].begin(), m.faces[4].end());
     QVERIFY2(refusal(m, cc).contains(QStringLiteral("oriented inconsistently")),
              qPrintable(refusal(m, cc)));
     QVERIFY(refusal(m, cc).contains(QStringLiteral(" 4 ")));
-    m = cube();
+    m = cubeMesh();
     m.faces.push_back(m.faces[0]); // a second copy of a face on the same edges
     std::reverse(m.faces.back().begin(), m.faces.back().end());
     QVERIFY2(refusal(m, cc).contains(QStringLiteral("non-manifold: faces")),
              qPrintable(refusal(m, cc)));
-    m = cube();
+    m = cubeMesh();
     m.vertices(5, 1) = std::nan("");
     QCOMPARE(refusal(m, cc),
              QStringLiteral("vertex 5 has a coordinate that is not a finite number"));
-    QCOMPARE(refusal(cube(), MeshScheme::Loop),
+    QCOMPARE(refusal(cubeMesh(), MeshScheme::Loop),
              QStringLiteral("face 0 has 4 vertices; Loop subdivision takes triangles only"));
     QCOMPARE(refusal(Mesh{}, cc), QStringLiteral("the mesh has no vertices"));
-    m = cube();
+    m = cubeMesh();
     m.faces.clear();
     QCOMPARE(refusal(m, cc), QStringLiteral("the mesh has no faces"));
     // Two tetrahedra sharing one vertex only: a bowtie, two fans at vertex 0.
@@ -388,8 +288,8 @@ void TestMesh::badMeshesAreRefusedByName()
                  {0, 4, 5}, {0, 6, 4}, {0, 5, 6}, {4, 6, 5}};
     QVERIFY2(refusal(bow, cc).startsWith(QStringLiteral("vertex 0 is non-manifold")),
              qPrintable(refusal(bow, cc)));
-    QVERIFY(refusal(cube(), cc).isEmpty());
-    QVERIFY(refusal(icosahedron(), MeshScheme::Loop).isEmpty());
+    QVERIFY(refusal(cubeMesh(), cc).isEmpty());
+    QVERIFY(refusal(icosahedronMesh(), MeshScheme::Loop).isEmpty());
 }
 
 AWB_TEST_MAIN(TestMesh)

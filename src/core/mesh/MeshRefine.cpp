@@ -138,8 +138,9 @@ std::optional<Stencil> directLimit(const MeshTopology &t, int v, MeshScheme sche
     return merged(std::move(s));
 }
 
-// stencil over the points of a refinement -> over the old points.
-Stencil compose(const Stencil &outer, const std::vector<Stencil> &inner)
+} // namespace
+
+Stencil composeStencils(const Stencil &outer, const std::vector<Stencil> &inner)
 {
     Stencil s;
     for (const auto &[p, w] : outer)
@@ -147,8 +148,6 @@ Stencil compose(const Stencil &outer, const std::vector<Stencil> &inner)
             s.emplace_back(q, w * u);
     return merged(std::move(s));
 }
-
-} // namespace
 
 Refinement refineTopology(const MeshTopology &t, MeshScheme scheme)
 {
@@ -234,7 +233,7 @@ std::vector<Stencil> limitStencils(const MeshTopology &t, MeshScheme scheme)
     const Refinement r = refineTopology(t, scheme);
     const MeshTopology child(int(r.stencils.size()), r.faces);
     for (int v : later)
-        out[std::size_t(v)] = compose(*directLimit(child, v, scheme), r.stencils);
+        out[std::size_t(v)] = composeStencils(*directLimit(child, v, scheme), r.stencils);
     return out;
 }
 

@@ -22,6 +22,10 @@ struct Refinement {
     std::vector<Stencil> stencils;        // one per point of the refined mesh (numbered as above)
 };
 
+// `outer` (over the points of a refinement) as a stencil over the old points, given the
+// refinement's stencils `inner`.
+Stencil composeStencils(const Stencil &outer, const std::vector<Stencil> &inner);
+
 // One step on a topology (checked: triangles only for Loop; InputError otherwise).
 Refinement refineTopology(const MeshTopology &topology, MeshScheme scheme);
 
