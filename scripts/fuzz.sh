@@ -12,6 +12,11 @@
 #   fuzz_svg_project     the same for an SVG figure (its <metadata>, the XML reader)
 #   fuzz_cli_arguments   the command line of `attractor-cli points` (start sets, addresses,
 #                        depths, names) on a real example
+#   fuzz_mesh_obj, fuzz_mesh_off, fuzz_mesh_ply
+#                        any bytes as a mesh file of that format (core/mesh/MeshFiles.h):
+#                        refused with a message, or a mesh that writeObj and readMesh give back
+#                        unchanged; small readers, so 20 s each (AWB_FUZZ_MESH_SECONDS) in the
+#                        run of all targets, SECONDS when named
 # Seeds: the examples, the bad files of the tests (tests/fuzz/seeds/) and the crashes found so
 # far (tests/fuzz/regressions/, also loaded by the normal test suite). One input may take at
 # most 1 s, 2 GB; leaks are reported. A crash, a hang or a leak fails the run and leaves its
@@ -27,18 +32,27 @@ SECS="${1:-60}"
 SEED="${AWB_FUZZ_SEED:-1}"
 shift || true
 TARGETS=("$@")
-[ ${#TARGETS[@]} -gt 0 ] || TARGETS=(fuzz_project_loader fuzz_item_ifs fuzz_png_project
-                                     fuzz_svg_project fuzz_cli_arguments)
+ALL=0
+if [ ${#TARGETS[@]} -eq 0 ]; then
+  ALL=1
+  TARGETS=(fuzz_project_loader fuzz_item_ifs fuzz_png_project fuzz_svg_project
+           fuzz_cli_arguments fuzz_mesh_obj fuzz_mesh_off fuzz_mesh_ply)
+fi
+MESH_SECS="${AWB_FUZZ_MESH_SECONDS:-20}"
 bash scripts/setup.sh --packages-only
 bash scripts/configure-asan.sh
 cmake --build build-asan --parallel "$(nproc)" --target "${TARGETS[@]}"
 source scripts/sanitizer-env.sh
 export QT_QPA_PLATFORM=offscreen
-# One target per core at a time (each fuzzer is one process): 5 targets of 60 s in 3 minutes
-# on 2 cores. AWB_FUZZ_JOBS overrides.
+# One target per core at a time (each fuzzer is one process), in the order listed: on 2 cores
+# the five targets of 60 s take 3 minutes, and the three mesh targets of 20 s each run one
+# after the other beside the fifth, so that all end together. AWB_FUZZ_JOBS overrides.
 jobs="${AWB_FUZZ_JOBS:-$(nproc)}"
 fuzz_one() {
-  local t="$1"
+  local t="$1" secs="$SECS"
+  if [ "$ALL" = 1 ] && [[ "$t" == fuzz_mesh_* ]] && [ "$MESH_SECS" -lt "$SECS" ]; then
+    secs="$MESH_SECS"
+  fi
   local corpus="build-asan/corpus/$t" artifacts="build-asan/artifacts/$t/"
   mkdir -p "$corpus" "$artifacts"
   local seeds=()
@@ -48,12 +62,13 @@ fuzz_one() {
     fuzz_png_project) seeds=(tests/fuzz/seeds/png tests/fuzz/regressions/png) ;;
     fuzz_svg_project) seeds=(tests/fuzz/seeds/svg tests/fuzz/regressions/svg) ;;
     fuzz_cli_arguments) seeds=(tests/fuzz/seeds/cli tests/fuzz/regressions/cli) ;;
+    fuzz_mesh_*) seeds=(tests/fuzz/seeds/${t#fuzz_} tests/fuzz/regressions/${t#fuzz_}) ;;
   esac
   local existing=() s
   for s in "${seeds[@]}"; do [ -d "$s" ] && existing+=("$s"); done
   local log="build-asan/$t.log" rc=0
-  echo "fuzz: $t for $SECS s, seed $SEED"
-  "build-asan/bin/$t" -seed="$SEED" -max_total_time="$SECS" -timeout=1 -rss_limit_mb=2048 \
+  echo "fuzz: $t for $secs s, seed $SEED"
+  "build-asan/bin/$t" -seed="$SEED" -max_total_time="$secs" -timeout=1 -rss_limit_mb=2048 \
     -max_len=65536 -print_final_stats=1 -artifact_prefix="$artifacts" \
     "$corpus" "${existing[@]}" > "$log" 2>&1 || rc=1
   local runs
@@ -62,7 +77,7 @@ fuzz_one() {
     echo "fuzz: $t FAILED; the input is in $artifacts, the log in $log"
     grep -a -E "ERROR|SUMMARY|Test unit written" "$log" | head -5 || true
   fi
-  echo "fuzz: $t: $runs executions in $SECS s, corpus $(ls "$corpus" | wc -l) inputs"
+  echo "fuzz: $t: $runs executions in $secs s, corpus $(ls "$corpus" | wc -l) inputs"
   return $rc
 }
 status=0

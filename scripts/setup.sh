@@ -11,6 +11,7 @@ PACKAGES=(
   qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-translations-l10n libqcustomplot-dev
   libeigen3-dev zlib1g-dev
   libosd-dev  # OpenSubdiv 3.5: the reference of the mesh tests (tests/core/test_mesh_opensubdiv.cpp)
+  libtinyobjloader-dev  # the OBJ reader of the core's mesh files (src/core/mesh/MeshFiles.cpp)
   libxkbcommon-dev xvfb xauth libgl1-mesa-dev x11-apps imagemagick fonts-dejavu-core poppler-utils
   libxtst-dev xdotool  # attractor-bench-window: pointer moves through XTest, as a person drags
   fonts-wqy-microhei  # a CJK font: the Chinese translation on screen and in figures
