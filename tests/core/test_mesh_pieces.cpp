@@ -38,6 +38,9 @@ Mat collect(const MeshPieces &pieces, const Mat &vertices, const MeshStart &star
             rows.push_back(v.row(r));
     });
     iterateMesh(pieces, vertices, start, depth, {&sink});
+    // The count known in advance is the count sent (PLY headers rely on it).
+    if (double(rows.size()) != meshPointCount(pieces, start, depth))
+        throw std::logic_error("meshPointCount disagrees with the points sent");
     Mat out(Eigen::Index(rows.size()), 3);
     for (std::size_t i = 0; i < rows.size(); ++i)
         out.row(Eigen::Index(i)) = rows[i];

@@ -15,26 +15,19 @@ namespace {
 constexpr int kMaxDepth = 64;
 constexpr double kMaxPoints = 2147483648.0;  // 2^31
 
-// Images of each type at each depth: 1 at depth 0, the children's sum below.
-class ImageCounts {
+// Points a piece of each type sends at each depth: its outputs at depth 0, its children's
+// sum below.
+class PointCounts {
 public:
-    explicit ImageCounts(const MeshPieces &pieces) : m_pieces(pieces) {}
-    double operator()(int type, int depth)
+    PointCounts(const MeshPieces &pieces, const MeshStart &start)
+        : m_pieces(pieces), m_start(start)
     {
-        if (depth == 0)
-            return 1.0;
-        const auto [it, added] = m_memo.emplace(std::make_pair(type, depth), 0.0);
-        if (!added)
-            return it->second;
-        double sum = 0.0;
-        for (const auto &child : m_pieces.types[std::size_t(type)].children)
-            sum += (*this)(child.type, depth - 1);
-        m_memo[{type, depth}] = sum;
-        return sum;
     }
+    double operator()(int type, int depth);
 
 private:
     const MeshPieces &m_pieces;
+    const MeshStart &m_start;
     std::map<std::pair<int, int>, double> m_memo;
 };
 
@@ -50,6 +43,7 @@ public:
 
     void root(int type, Mat net, int depth)
     {
+        m_rootIsVertex = m_pieces.types[std::size_t(type)].kind == MeshPieceType::Kind::Vertex;
         m_nets.resize(std::size_t(depth) + 1);
         m_address.assign(std::size_t(depth) + 1, 0);
         m_nets[0] = std::move(net);
@@ -113,22 +107,37 @@ private:
 
     void emit(const MeshPieceType &t, const Mat &net, int level)
     {
-        StartSet::Kind kind = StartSet::Kind::Points;
-        switch (m_start.kind) {
-        case MeshStart::Kind::VertexLimits:
-            m_out.noalias() = t.limits * net;
-            break;
-        case MeshStart::Kind::ControlPoints:
-            m_out.resize(Eigen::Index(t.corners.size()), 3);
-            for (std::size_t i = 0; i < t.corners.size(); ++i)
-                m_out.row(Eigen::Index(i)) = net.row(t.corners[i]);
-            break;
-        case MeshStart::Kind::Points:
+        if (m_start.kind == MeshStart::Kind::Points) {
             m_out.noalias() = m_weights[std::size_t(&t - m_pieces.types.data())] * net;
-            kind = m_start.points.kind;
-            break;
+            consume(m_out, m_start.points.kind, level);
+            return;
         }
-        m_sink.consume(m_out, kind, m_address.data(), level);
+        // The piece's faces as polygons of their corners' limits (or the corners): drawn as
+        // shaded faces, and as points the vertices of the refined mesh.
+        const bool limits = m_start.kind == MeshStart::Kind::VertexLimits;
+        if (limits)
+            m_out.noalias() = t.limits * net;
+        const Mat &corners = limits ? m_out : net;
+        for (const std::vector<int> &face : t.faces) {
+            m_face.resize(Eigen::Index(face.size()), 3);
+            for (std::size_t i = 0; i < face.size(); ++i)
+                m_face.row(Eigen::Index(i)) = corners.row(face[i]);
+            consume(m_face, StartSet::Kind::Polygon, level);
+        }
+    }
+
+    void consume(const Mat &points, StartSet::Kind kind, int level)
+    {
+        if (m_start.levelAddresses && m_rootIsVertex && level > 0) {
+            m_levelAddress.assign(m_address.begin(), m_address.end());
+            int k = 0;
+            while (k < level && m_address[std::size_t(k)] == 0)
+                ++k;
+            m_levelAddress[0] = std::uint8_t(std::min(k, 255));
+            m_sink.consume(points, kind, m_levelAddress.data(), level);
+        } else {
+            m_sink.consume(points, kind, m_address.data(), level);
+        }
         ++m_images;
     }
 
@@ -138,29 +147,59 @@ private:
     const IterationControl &m_control;
     std::vector<Mat> m_nets;
     std::vector<Mat> m_weights;  // per type (Points)
-    std::vector<std::uint8_t> m_address;
-    Mat m_out;
+    std::vector<std::uint8_t> m_address, m_levelAddress;
+    bool m_rootIsVertex = false;
+    Mat m_out, m_face;
     std::uint64_t m_steps = 0, m_images = 0;
     bool m_cancelled = false;
 };
 
+// Points per image set of one piece: the start set, or the corners of each of its faces.
 int outputsOf(const MeshPieceType &t, const MeshStart &start)
 {
-    return start.kind == MeshStart::Kind::Points ? int(start.points.vertices.rows())
-                                                 : int(t.corners.size());
+    if (start.kind == MeshStart::Kind::Points)
+        return int(start.points.vertices.rows());
+    int n = 0;
+    for (const auto &face : t.faces)
+        n += int(face.size());
+    return n;
+}
+
+double PointCounts::operator()(int type, int depth)
+{
+    const MeshPieceType &t = m_pieces.types[std::size_t(type)];
+    if (depth == 0)
+        return outputsOf(t, m_start);
+    const auto it = m_memo.find({type, depth});
+    if (it != m_memo.end())
+        return it->second;
+    double sum = 0.0;
+    for (const auto &child : t.children)
+        sum += (*this)(child.type, depth - 1);
+    m_memo[{type, depth}] = sum;
+    return sum;
 }
 
 } // namespace
 
-double meshImageCount(const MeshPieces &pieces, int depth)
+double meshPointCount(const MeshPieces &pieces, const MeshStart &start, int depth)
 {
-    if (depth < pieces.steps)
-        return 1.0;
-    ImageCounts counts(pieces);
-    double sum = double(pieces.loneVertices.size());
+    if (depth < pieces.steps && start.kind != MeshStart::Kind::Points) {
+        MeshTopology t(pieces.inputVertexCount, pieces.inputFaces);
+        int count = t.vertexCount();
+        for (int k = 0; k < depth; ++k) {
+            Refinement r = refineTopology(t, pieces.scheme);
+            count = int(r.stencils.size());
+            t = MeshTopology(count, r.faces);
+        }
+        return count;
+    }
+    const int pieceDepth = std::max(depth - pieces.steps, 0);
+    PointCounts counts(pieces, start);
+    double points = double(pieces.loneVertices.size());
     for (const MeshPieceRoot &root : pieces.roots)
-        sum += counts(root.type, depth - pieces.steps);
-    return sum;
+        points += counts(root.type, pieceDepth);
+    return points;
 }
 
 IterationStats iterateMesh(const MeshPieces &pieces, const Mat &inputVertices,
@@ -201,11 +240,7 @@ IterationStats iterateMesh(const MeshPieces &pieces, const Mat &inputVertices,
         return stats;
     }
     const int pieceDepth = std::max(depth - pieces.steps, 0);
-    ImageCounts counts(pieces);
-    double points = double(pieces.loneVertices.size());
-    for (const MeshPieceRoot &root : pieces.roots)
-        points += counts(root.type, pieceDepth)
-                  * outputsOf(pieces.types[std::size_t(root.type)], start);
+    const double points = meshPointCount(pieces, start, depth);
     if (points > kMaxPoints)
         throw InputError(formatMessage(
             coreTranslate("awb::mesh", "depth %1 makes about %2 points; at most 2^31 are drawn"),

@@ -27,11 +27,14 @@ struct MeshStart {
     };
     Kind kind = Kind::VertexLimits;
     StartSet points;
+    // Addresses that show the construction: an image inside the neighbourhood of an
+    // extraordinary vertex gets as first symbol its level k (it lies in f^k(C)), an image of a
+    // regular patch its first map as usual.
+    bool levelAddresses = false;
 };
 
-// Images at depth `depth` (steps of the input mesh), estimated without iterating: pieces
-// times their corners. Below the isolation steps, the vertices of the refined mesh.
-double meshImageCount(const MeshPieces &pieces, int depth);
+// The number of points iterateMesh sends at `depth`.
+double meshPointCount(const MeshPieces &pieces, const MeshStart &start, int depth);
 
 // Streams the images of depth `depth` to `sinks` (one thread each, pieces shared out). The
 // address of an image is the path of maps from its root piece (map 0 of a vertex piece: the

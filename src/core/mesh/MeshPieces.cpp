@@ -223,6 +223,8 @@ public:
             for (int c = 0; c < w.coreCount; ++c)
                 type.boundary = type.boundary || t.onBoundary(w.order[std::size_t(c)]);
         }
+        type.faces.assign(w.faces.begin(),
+                          w.faces.begin() + (seed.vertex ? t.ring(seed.id).faces.size() : 1));
         type.corners.resize(std::size_t(w.coreCount));
         std::iota(type.corners.begin(), type.corners.end(), 0);
         const int id = int(types.size());
@@ -257,7 +259,7 @@ private:
         const int coreCount = int(types[std::size_t(p.type)].corners.size());
         const Split s0 = splitFans(m, p.faces);
         const MeshTopology t(int(s0.copyOf.size()), s0.faces);
-        const std::vector<Stencil> limit = limitStencils(t, m_scheme);
+        const std::vector<MeshStencil> limit = limitStencils(t, m_scheme);
         Mat limits = Mat::Zero(coreCount, m);
         for (int c = 0; c < coreCount; ++c)
             for (const auto &[q, w] : limit[std::size_t(c)])
@@ -352,7 +354,7 @@ MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
             throw InputError(coreTranslate("awb::mesh", "the irregular vertices do not separate"));
         const Refinement r = refineTopology(t, scheme);
         const int nv = t.vertexCount(), ne = t.edgeCount();
-        std::vector<Stencil> isolation;
+        std::vector<MeshStencil> isolation;
         std::vector<int> origin;
         for (std::size_t p = 0; p < r.stencils.size(); ++p) {
             isolation.push_back(composeStencils(r.stencils[p], out.isolation));

@@ -45,6 +45,9 @@ struct MeshPieceType {
     // their limit stencils.
     std::vector<int> corners;
     Mat limits;
+    // The piece's own faces (one for a face piece, the n faces around the vertex for a vertex
+    // piece) as loops of places in the net (all among `corners`).
+    std::vector<std::vector<int>> faces;
     // One per map: the child piece's type and S_i (child net x this net; rows sum to 1), also
     // as (row, column, weight) entries for the iteration. Vertex pieces: child 0 is the
     // neighbourhood one level finer, the others the annulus faces.
@@ -76,7 +79,7 @@ struct MeshPieces {
     int steps = 0;  // isolation steps L
     // The isolated mesh's vertices as stencils on the input's (vertex v < inputVertexCount is
     // the input's vertex v at every level), and its faces.
-    std::vector<Stencil> isolation;
+    std::vector<MeshStencil> isolation;
     std::vector<std::vector<int>> isolatedFaces;
     // Where an isolated vertex comes from: >= 0 an input vertex; -1 - f the centre of input
     // face f (a Catmull-Clark face that is not a quad); otherwise kNewPoint.

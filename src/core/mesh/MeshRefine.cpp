@@ -13,10 +13,10 @@ namespace {
 using namespace meshrules;
 
 // Sums weights of the same point (sorted by point).
-Stencil merged(Stencil s)
+MeshStencil merged(MeshStencil s)
 {
     std::sort(s.begin(), s.end());
-    Stencil out;
+    MeshStencil out;
     for (const auto &[p, w] : s) {
         if (!out.empty() && out.back().first == p)
             out.back().second += w;
@@ -26,7 +26,7 @@ Stencil merged(Stencil s)
     return out;
 }
 
-void addFaceCentroid(Stencil &s, const std::vector<int> &face, double weight)
+void addFaceCentroid(MeshStencil &s, const std::vector<int> &face, double weight)
 {
     for (int v : face)
         s.emplace_back(v, weight / double(face.size()));
@@ -41,24 +41,24 @@ std::pair<int, int> boundaryNeighbours(const MeshTopology &t, int v)
 
 // The vertex point of a vertex of no face (itself) or on the boundary (the crease rule), the
 // same in both schemes; nullopt inside.
-std::optional<Stencil> creaseVertex(const MeshTopology &t, int v)
+std::optional<MeshStencil> creaseVertex(const MeshTopology &t, int v)
 {
     const auto &ring = t.ring(v);
     if (ring.edges.empty())
-        return Stencil{{v, 1.0}};
+        return MeshStencil{{v, 1.0}};
     if (!ring.boundary)
         return std::nullopt;
     const auto [a, b] = boundaryNeighbours(t, v);
     return merged({{v, kCreaseSelf}, {a, kCreaseNeighbour}, {b, kCreaseNeighbour}});
 }
 
-Stencil catmarkVertex(const MeshTopology &t, int v)
+MeshStencil catmarkVertex(const MeshTopology &t, int v)
 {
     if (auto s = creaseVertex(t, v))
         return *s;
     const auto &ring = t.ring(v);
     const int n = int(ring.edges.size());
-    Stencil s{{v, catmarkVertexSelf(n)}};
+    MeshStencil s{{v, catmarkVertexSelf(n)}};
     for (int e : ring.edges)
         s.emplace_back(t.otherEnd(e, v), catmarkVertexRing(n));
     for (int f : ring.faces)
@@ -66,14 +66,14 @@ Stencil catmarkVertex(const MeshTopology &t, int v)
     return merged(std::move(s));
 }
 
-Stencil loopVertex(const MeshTopology &t, int v)
+MeshStencil loopVertex(const MeshTopology &t, int v)
 {
     if (auto s = creaseVertex(t, v))
         return *s;
     const auto &ring = t.ring(v);
     const int n = int(ring.edges.size());
     const double beta = loopBeta(n);
-    Stencil s{{v, 1.0 - n * beta}};
+    MeshStencil s{{v, 1.0 - n * beta}};
     for (int e : ring.edges)
         s.emplace_back(t.otherEnd(e, v), beta);
     return merged(std::move(s));
@@ -89,7 +89,7 @@ int opposite(const MeshTopology &t, int f, int e)
     return edge.v[0];
 }
 
-Stencil edgePoint(const MeshTopology &t, int e, MeshScheme scheme)
+MeshStencil edgePoint(const MeshTopology &t, int e, MeshScheme scheme)
 {
     const auto &edge = t.edge(e);
     if (edge.boundary())
@@ -99,7 +99,7 @@ Stencil edgePoint(const MeshTopology &t, int e, MeshScheme scheme)
                        {edge.v[1], 0.375},
                        {opposite(t, edge.face[0], e), 0.125},
                        {opposite(t, edge.face[1], e), 0.125}});
-    Stencil s{{edge.v[0], 0.25}, {edge.v[1], 0.25}};
+    MeshStencil s{{edge.v[0], 0.25}, {edge.v[1], 0.25}};
     addFaceCentroid(s, t.face(edge.face[0]), 0.25);
     addFaceCentroid(s, t.face(edge.face[1]), 0.25);
     return merged(std::move(s));
@@ -107,11 +107,11 @@ Stencil edgePoint(const MeshTopology &t, int e, MeshScheme scheme)
 
 // The limit stencil of v, when every face at v is a quad (Catmull-Clark) or v is on the
 // boundary, of no face, or in a Loop mesh; nullopt otherwise.
-std::optional<Stencil> directLimit(const MeshTopology &t, int v, MeshScheme scheme)
+std::optional<MeshStencil> directLimit(const MeshTopology &t, int v, MeshScheme scheme)
 {
     const auto &ring = t.ring(v);
     if (ring.edges.empty())
-        return Stencil{{v, 1.0}};
+        return MeshStencil{{v, 1.0}};
     if (ring.boundary) {
         const auto [a, b] = boundaryNeighbours(t, v);
         return merged(
@@ -120,12 +120,12 @@ std::optional<Stencil> directLimit(const MeshTopology &t, int v, MeshScheme sche
     const int n = int(ring.edges.size());
     if (scheme == MeshScheme::Loop) {
         const double chi = loopLimitNeighbour(n);
-        Stencil s{{v, 1.0 - n * chi}};
+        MeshStencil s{{v, 1.0 - n * chi}};
         for (int e : ring.edges)
             s.emplace_back(t.otherEnd(e, v), chi);
         return merged(std::move(s));
     }
-    Stencil s{{v, catmarkLimitSelf(n)}};
+    MeshStencil s{{v, catmarkLimitSelf(n)}};
     for (int e : ring.edges)
         s.emplace_back(t.otherEnd(e, v), catmarkLimitEdge(n));
     for (int f : ring.faces) {
@@ -140,9 +140,9 @@ std::optional<Stencil> directLimit(const MeshTopology &t, int v, MeshScheme sche
 
 } // namespace
 
-Stencil composeStencils(const Stencil &outer, const std::vector<Stencil> &inner)
+MeshStencil composeStencils(const MeshStencil &outer, const std::vector<MeshStencil> &inner)
 {
-    Stencil s;
+    MeshStencil s;
     for (const auto &[p, w] : outer)
         for (const auto &[q, u] : inner[std::size_t(p)])
             s.emplace_back(q, w * u);
@@ -168,7 +168,7 @@ Refinement refineTopology(const MeshTopology &t, MeshScheme scheme)
     const auto edgeChild = [nv](int e) { return nv + e; };
     if (scheme == MeshScheme::CatmullClark) {
         for (int f = 0; f < nf; ++f) {
-            Stencil s;
+            MeshStencil s;
             addFaceCentroid(s, t.face(f), 1.0);
             r.stencils.push_back(merged(std::move(s)));
         }
@@ -194,7 +194,7 @@ Refinement refineTopology(const MeshTopology &t, MeshScheme scheme)
     return r;
 }
 
-Mat applyStencils(const std::vector<Stencil> &stencils, const Mat &data)
+Mat applyStencils(const std::vector<MeshStencil> &stencils, const Mat &data)
 {
     Mat out = Mat::Zero(Eigen::Index(stencils.size()), data.cols());
     for (std::size_t i = 0; i < stencils.size(); ++i)
@@ -217,9 +217,9 @@ Mesh refineMesh(const Mesh &mesh, MeshScheme scheme, int steps)
     return m;
 }
 
-std::vector<Stencil> limitStencils(const MeshTopology &t, MeshScheme scheme)
+std::vector<MeshStencil> limitStencils(const MeshTopology &t, MeshScheme scheme)
 {
-    std::vector<Stencil> out(std::size_t(t.vertexCount()));
+    std::vector<MeshStencil> out(std::size_t(t.vertexCount()));
     std::vector<int> later;
     for (int v = 0; v < t.vertexCount(); ++v) {
         if (auto s = directLimit(t, v, scheme))

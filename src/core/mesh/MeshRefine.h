@@ -15,22 +15,23 @@
 
 namespace awb {
 
-using Stencil = std::vector<std::pair<int, double>>;  // (old point, weight), weights sum to 1
+// (old point, weight), weights sum to 1. (Not LatticeScheme.h's Stencil, on lattice points.)
+using MeshStencil = std::vector<std::pair<int, double>>;
 
 struct Refinement {
     std::vector<std::vector<int>> faces;  // of the refined mesh, counter-clockwise
-    std::vector<Stencil> stencils;        // one per point of the refined mesh (numbered as above)
+    std::vector<MeshStencil> stencils;    // one per point of the refined mesh (numbered as above)
 };
 
 // `outer` (over the points of a refinement) as a stencil over the old points, given the
 // refinement's stencils `inner`.
-Stencil composeStencils(const Stencil &outer, const std::vector<Stencil> &inner);
+MeshStencil composeStencils(const MeshStencil &outer, const std::vector<MeshStencil> &inner);
 
 // One step on a topology (checked: triangles only for Loop; InputError otherwise).
 Refinement refineTopology(const MeshTopology &topology, MeshScheme scheme);
 
 // rows of data (one per old point) -> one row per stencil.
-Mat applyStencils(const std::vector<Stencil> &stencils, const Mat &data);
+Mat applyStencils(const std::vector<MeshStencil> &stencils, const Mat &data);
 
 // The mesh after `steps` steps (checked by checkMesh first).
 Mesh refineMesh(const Mesh &mesh, MeshScheme scheme, int steps = 1);
@@ -38,7 +39,7 @@ Mesh refineMesh(const Mesh &mesh, MeshScheme scheme, int steps = 1);
 // The limit position of every vertex of the topology as a stencil on its vertices: the masks of
 // MeshRules.h; for a Catmull-Clark vertex next to a face that is not a quad, the mask of its
 // point after one step composed with that step. A vertex of no face stays where it is.
-std::vector<Stencil> limitStencils(const MeshTopology &topology, MeshScheme scheme);
+std::vector<MeshStencil> limitStencils(const MeshTopology &topology, MeshScheme scheme);
 
 // The limit positions of the mesh's vertices (n x 3).
 Mat limitPositions(const Mesh &mesh, MeshScheme scheme);

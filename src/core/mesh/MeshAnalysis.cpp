@@ -1,0 +1,161 @@
+#include "core/mesh/MeshAnalysis.h"
+
+#include "core/mesh/VertexSpectrum.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <map>
+
+namespace awb {
+
+namespace {
+
+std::vector<Complex> sortedEigenvalues(const Mat &S)
+{
+    const Eigen::EigenSolver<Mat> es(S, false);
+    std::vector<Complex> values(es.eigenvalues().data(),
+                                es.eigenvalues().data() + es.eigenvalues().size());
+    std::stable_sort(values.begin(), values.end(), [](const Complex &a, const Complex &b) {
+        return std::abs(a) > std::abs(b) + 1e-12
+               || (std::abs(std::abs(a) - std::abs(b)) <= 1e-12 && a.imag() > b.imag());
+    });
+    return values;
+}
+
+// The left eigenvectors of S that give the limit (eigenvalue 1, weights summing to 1) and the
+// tangent plane (the subdominant pair: two real eigenvectors, or the real and imaginary parts
+// of one complex one).
+struct LeftVectors {
+    RowVec limit, tangentA, tangentB;
+};
+
+LeftVectors leftVectors(const Mat &S)
+{
+    const Eigen::EigenSolver<Mat> es(S.transpose());
+    std::vector<int> order(std::size_t(S.rows()));
+    for (std::size_t i = 0; i < order.size(); ++i)
+        order[i] = int(i);
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+        return std::abs(es.eigenvalues()(a)) > std::abs(es.eigenvalues()(b));
+    });
+    LeftVectors out;
+    out.limit = es.eigenvectors().col(order[0]).real().transpose();
+    out.limit /= out.limit.sum();
+    const Eigen::VectorXcd u = es.eigenvectors().col(order[1]);
+    out.tangentA = u.real().transpose();
+    out.tangentB = u.imag().transpose();
+    if (out.tangentB.norm() < 1e-12 * out.tangentA.norm())
+        out.tangentB = es.eigenvectors().col(order[2]).real().transpose();
+    return out;
+}
+
+// `outward`: the sum of the normals of the faces at the vertex (counter-clockwise seen from
+// outside), which orients the normal.
+void limitAndNormal(const LeftVectors &v, const Mat &net, const Eigen::Vector3d &outward,
+                    ExtraordinaryVertex &out)
+{
+    out.limit = v.limit * net;
+    const Eigen::Vector3d ta = (v.tangentA * net).transpose();
+    const Eigen::Vector3d tb = (v.tangentB * net).transpose();
+    Eigen::Vector3d n = ta.cross(tb);
+    if (n.dot(outward) < 0)
+        n = -n;
+    out.normal = n.norm() > 1e-300 ? RowVec(n.normalized().transpose()) : RowVec::Zero(3);
+}
+
+} // namespace
+
+std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
+                                                       const Mat &inputVertices)
+{
+    const Mat level = isolatedPositions(pieces, inputVertices);
+    std::map<int, VertexSpectrum> interior;  // by valence
+    std::map<int, LeftVectors> left;         // by settled type
+    std::map<int, Eigen::Vector3d> outward;  // by vertex of the isolated mesh
+    for (const MeshPieceRoot &root : pieces.roots)
+        if (root.vertex >= 0)
+            outward[root.vertex] = Eigen::Vector3d::Zero();
+    for (const auto &face : pieces.isolatedFaces)
+        for (std::size_t k = 0; k < face.size(); ++k)
+            if (const auto it = outward.find(face[k]); it != outward.end()) {
+                const Eigen::Vector3d p = level.row(face[k]).transpose();
+                const Eigen::Vector3d a = level.row(face[(k + 1) % face.size()]).transpose();
+                const Eigen::Vector3d b =
+                    level.row(face[(k + face.size() - 1) % face.size()]).transpose();
+                it->second += (a - p).cross(b - p);
+            }
+    std::vector<ExtraordinaryVertex> vertices, faces;
+    for (const MeshPieceRoot &root : pieces.roots) {
+        if (root.vertex < 0)
+            continue;
+        const MeshPieceType &type = pieces.types[std::size_t(root.type)];
+        if (type.boundary && type.valence == 2)  // a corner of one face: the crease rule
+            continue;
+        const int origin = pieces.origin[std::size_t(root.vertex)];
+        if (origin == MeshPieces::kNewPoint)
+            continue;
+        ExtraordinaryVertex e;
+        if (origin >= 0)
+            e.vertex = origin;
+        else
+            e.face = -1 - origin;
+        e.valence = type.valence;
+        e.boundary = type.boundary;
+        // The net of the settled type, and its S.
+        Mat net(Eigen::Index(root.net.size()), 3);
+        for (std::size_t i = 0; i < root.net.size(); ++i)
+            net.row(Eigen::Index(i)) = level.row(root.net[i]);
+        int t = root.type;
+        const int settled = settledType(pieces, t);
+        while (settled >= 0 && t != settled) {
+            const MeshPieceType::Child &c = pieces.types[std::size_t(t)].children.front();
+            net = c.S * net;
+            t = c.type;
+        }
+        if (settled >= 0) {
+            auto it = left.find(settled);
+            if (it == left.end())
+                it = left.emplace(settled, leftVectors(
+                                               pieces.types[std::size_t(settled)].children[0].S))
+                         .first;
+            limitAndNormal(it->second, net, outward[root.vertex], e);
+        }
+        if (!e.boundary) {
+            auto it = interior.find(e.valence);
+            if (it == interior.end())
+                it = interior.emplace(e.valence, interiorVertexSpectrum(pieces.scheme, e.valence))
+                         .first;
+            const VertexSpectrum &s = it->second;
+            e.ring = "ring";
+            e.ringSize = int(s.S.rows());
+            e.eigenvalues = s.eigenvalues;
+            e.subdominant = s.subdominant;
+            e.subsubdominant = s.subsubdominant;
+            e.c1 = s.c1;
+            e.curvature = s.curvature;
+        } else if (settled >= 0) {
+            const Mat &S = pieces.types[std::size_t(settled)].children.front().S;
+            e.ring = "piece";
+            e.ringSize = int(S.rows());
+            e.eigenvalues = sortedEigenvalues(S);
+            if (e.eigenvalues.size() > 1)
+                e.subdominant = std::abs(e.eigenvalues[1]);
+            for (std::size_t k = 2; k < e.eigenvalues.size(); ++k)
+                if (std::abs(e.eigenvalues[k]) < e.subdominant - 1e-9) {
+                    e.subsubdominant = std::abs(e.eigenvalues[k]);
+                    break;
+                }
+        }
+        (e.vertex >= 0 ? vertices : faces).push_back(std::move(e));
+    }
+    std::sort(vertices.begin(), vertices.end(),
+              [](const auto &a, const auto &b) { return a.vertex < b.vertex; });
+    std::sort(faces.begin(), faces.end(),
+              [](const auto &a, const auto &b) { return a.face < b.face; });
+    vertices.insert(vertices.end(), faces.begin(), faces.end());
+    return vertices;
+}
+
+} // namespace awb

@@ -1,0 +1,42 @@
+#pragma once
+// What the eigenvalues say at every extraordinary vertex of a mesh (issue 30): the vertex's
+// local subdivision matrix, its spectrum, Reif's C1 criterion and the curvature verdict
+// (VertexSpectrum.h), the limit position and the tangent plane (the left eigenvectors of S on
+// the vertex piece's net, MeshPieces.h).
+
+#include "core/mesh/MeshPieces.h"
+
+#include <complex>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace awb {
+
+struct ExtraordinaryVertex {
+    int vertex = -1;  // the input's vertex, or -1
+    int face = -1;    // a Catmull-Clark face that is not a quad, whose centre this is, or -1
+    int valence = 0;
+    bool boundary = false;
+    // The matrix analysed: inside, the ring of every point within two faces (6n + 1 points for
+    // Catmull-Clark, 3n + 1 for Loop, VertexSpectrum); on the boundary, the vertex piece's net.
+    std::string ring;
+    int ringSize = 0;
+    std::vector<Complex> eigenvalues;  // by modulus, largest first
+    double subdominant = 0.0;          // lambda
+    double subsubdominant = 0.0;       // mu: the largest modulus below lambda
+    // Inside: Reif's criterion (spectral and characteristic map) and mu against lambda^2.
+    // On the boundary: not decided (nullopt, "").
+    std::optional<bool> c1;
+    std::string curvature;
+    RowVec limit;   // 1 x 3
+    RowVec normal;  // 1 x 3, unit (zero when the tangents are parallel)
+};
+
+// Interior vertices of valence != 4 (Catmull-Clark) or != 6 (Loop), boundary vertices of two
+// or more faces and valence != 3 or 4, and the centres of Catmull-Clark faces that are not
+// quads; in the order: input vertices, then faces.
+std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
+                                                       const Mat &inputVertices);
+
+} // namespace awb
