@@ -174,6 +174,13 @@ StartSet AttractorItem::coreStartSet(const DerivedIfs &derived) const
 {
     if (m_startSet.kind == StartSetSpec::Kind::Lifted)
         return StartSet::points(liftedStartPoints(derived, m_startSet.lifted));
+    if (m_startSet.kind == StartSetSpec::Kind::VertexLimits) {
+        if (!derived.vertexLimitStart)
+            throw InputError(tr("the start set \"vertex-limits\" is the limit positions of a "
+                                "mesh's vertices: this item has no mesh")
+                                 .toStdString());
+        return StartSet::points(Mat(0, pointDimension()));
+    }
     const Mat vertices = derived.toIfsSpace(toMatrix(m_startSet.points, pointDimension()));
     if (!vertices.allFinite())
         throw InputError(tr("the start set is not finite in the IFS space: the lifting "
@@ -183,7 +190,8 @@ StartSet AttractorItem::coreStartSet(const DerivedIfs &derived) const
     switch (m_startSet.kind) {
     case StartSetSpec::Kind::Point:
     case StartSetSpec::Kind::Points:
-    case StartSetSpec::Kind::Lifted:  // handled above
+    case StartSetSpec::Kind::Lifted:        // handled above
+    case StartSetSpec::Kind::VertexLimits:  // handled above
         return StartSet::points(vertices);
     case StartSetSpec::Kind::Segment:
         return StartSet::polyline(vertices);
@@ -245,7 +253,7 @@ void AttractorItem::checkLoaded(const FieldReader &fields) const
     Item::checkLoaded(fields);
     for (int set = 0; set < controlPointSetCount(); ++set) {
         const qsizetype n = qsizetype(controlPoints(set).size());
-        if (n > maxControlPoints)
+        if (n > maxPointCount(set))
             fields.fail(QStringLiteral("control_points"),
                         controlPointSetCount() == 1
                             ? tr("%1 points; an item takes at most %2 (its subdivision "

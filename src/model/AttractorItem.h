@@ -53,6 +53,12 @@ struct DerivedIfs {
     std::function<IterationStats(const StartSet &, int depth, const std::vector<AttractorSink *> &,
                                  const IterationControl &)>
         iterate;
+    // Items that start from the limit positions of their vertices (mesh items, start set kind
+    // "vertex-limits"): `iterate` takes an empty start set as that start.
+    bool vertexLimitStart = false;
+    // Items with `iterate` that know how many points a start set makes at a depth (mesh
+    // items; -1 or unset: unknown).
+    std::function<double(const StartSet &, int depth)> pointCount;
     // Items whose figure is a polygon rather than (only) an attractor: the normal-vector
     // scheme's polygon at the item's number of steps (n x 2; closed when polygonClosed).
     std::optional<Mat> polygon;
@@ -85,6 +91,8 @@ public:
     // (lifting, spectra, fixed points cost n^3), so a file or an edit beyond this is refused
     // with a message rather than left to exhaust the time or the memory.
     static constexpr int maxControlPoints = 256;
+    // The most points point set `set` may have (maxControlPoints; a mesh's vertices more).
+    virtual int maxPointCount(int set) const { Q_UNUSED(set); return maxControlPoints; }
 
     // ---- control points: an item has controlPointSetCount() ordered lists of plane points.
     virtual int controlPointSetCount() const { return 0; }

@@ -8,6 +8,7 @@
 #include "model/FractalItem.h"
 #include "model/NormalVectorItem.h"
 #include "model/SubdivisionCurveItem.h"
+#include "model/SubdivisionMeshItem.h"
 #include "model/SubdivisionSurfaceItem.h"
 
 namespace awb {
@@ -24,6 +25,7 @@ ItemRegistry::ItemRegistry()
     add<CifsItem>();
     add<BcifsJunctionItem>();
     add<SubdivisionSurfaceItem>();
+    add<SubdivisionMeshItem>();
 }
 
 const ItemRegistry &ItemRegistry::instance()

@@ -35,8 +35,8 @@ bool allFinite(const PointList &points)
 
 const QStringList &StartSetSpec::kindNames()
 {
-    static const QStringList names{"point", "segment", "triangle", "polygon", "points",
-                                   "lifted"};
+    static const QStringList names{"point",  "segment", "triangle",     "polygon",
+                                   "points", "lifted",  "vertex-limits"};
     return names;
 }
 
@@ -57,6 +57,8 @@ MaybeProblem StartSetSpec::check() const
         }
         return std::nullopt;
     }
+    if (kind == Kind::VertexLimits)
+        return std::nullopt;
     if (!allFinite(points))
         return Problem{"points", tr("every point must have finite coordinates")};
     const int n = int(points.size());
@@ -68,7 +70,8 @@ MaybeProblem StartSetSpec::check() const
     case Kind::Triangle: exact = 3; break;
     case Kind::Polygon: least = 3; break;
     case Kind::Points: least = 1; break;
-    case Kind::Lifted: break;
+    case Kind::Lifted:
+    case Kind::VertexLimits: break;
     }
     if (exact > 0 && n != exact)
         return Problem{"points", tr("a start set of kind \"%1\" needs exactly %2 points, got %3")

@@ -49,7 +49,9 @@ using MaybeProblem = std::optional<Problem>;
 struct StartSetSpec {
     Q_DECLARE_TR_FUNCTIONS(awb::StartSetSpec)
 public:
-    enum class Kind { Point, Segment, Triangle, Polygon, Points, Lifted };
+    // VertexLimits: the limit positions of a mesh item's vertices (exact at every depth); no
+    // points.
+    enum class Kind { Point, Segment, Triangle, Polygon, Points, Lifted, VertexLimits };
     Kind kind = Kind::Point;
     PointList points{{0.0, 0.0}};
     // Kind Lifted: the points, each with the lifted space's number of coordinates (the item

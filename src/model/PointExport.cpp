@@ -56,7 +56,7 @@ void iteratePoints(const DerivedIfs &d, const StartSet &start, int depth, const 
 double exportPointCount(const DerivedIfs &d, const StartSet &start, int depth)
 {
     if (d.iterate)
-        return -1;
+        return d.pointCount ? d.pointCount(start, depth) * double(d.ifs.views.size()) : -1;
     return imageCount(d.ifs, depth) * double(start.vertices.rows())
            * double(d.ifs.views.size());
 }

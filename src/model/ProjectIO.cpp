@@ -520,7 +520,8 @@ QJsonArray ProjectIO::pointsToJson(const PointList &points, int dim)
 
 QJsonObject ProjectIO::startSetToJson(const StartSetSpec &s, int dim)
 {
-    QJsonArray points = pointsToJson(s.points, dim);
+    QJsonArray points = s.kind == StartSetSpec::Kind::VertexLimits ? QJsonArray()
+                                                                     : pointsToJson(s.points, dim);
     if (s.kind == StartSetSpec::Kind::Lifted) {
         points = QJsonArray();
         for (const auto &p : s.lifted) {
@@ -554,6 +555,10 @@ StartSetSpec ProjectIO::readStartSet(const FieldReader &r, int dim)
             s.lifted.push_back(std::move(p));
         }
         r.require(s.check());
+        return s;
+    }
+    if (s.kind == StartSetSpec::Kind::VertexLimits) {
+        s.points.clear();
         return s;
     }
     s.points = r.points("points", s.points, dim);

@@ -84,6 +84,7 @@ PointList startPoints(StartSetSpec::Kind kind, const PointList &control)
         return c;
     case StartSetSpec::Kind::Points: return c;
     case StartSetSpec::Kind::Lifted: return c;  // not offered by the kind box
+    case StartSetSpec::Kind::VertexLimits: return {};  // mesh items
     }
     return c;
 }

@@ -1,0 +1,99 @@
+#include "model/MeshAnalysisJson.h"
+
+#include "core/mesh/MeshAnalysis.h"
+#include "core/mesh/MeshPieces.h"
+#include "model/SubdivisionMeshItem.h"
+
+#include <QJsonArray>
+
+namespace awb {
+
+namespace {
+
+QJsonArray rowJson(const RowVec &r)
+{
+    QJsonArray a;
+    for (Eigen::Index c = 0; c < r.size(); ++c)
+        a.append(r(c));
+    return a;
+}
+
+QJsonObject vertexJson(const ExtraordinaryVertex &e)
+{
+    QJsonObject o;
+    if (e.vertex >= 0)
+        o["vertex"] = e.vertex;
+    else
+        o["face"] = e.face;
+    o["valence"] = e.valence;
+    o["boundary"] = e.boundary;
+    QJsonArray ev;
+    for (const Complex &z : e.eigenvalues)
+        ev.append(QJsonArray{z.real(), z.imag()});
+    o["eigenvalues"] = ev;
+    o["subdominant"] = e.subdominant;
+    o["subsubdominant"] = e.subsubdominant;
+    o["c1"] = e.c1 ? QJsonValue(*e.c1) : QJsonValue(QJsonValue::Null);
+    o["curvature"] = e.curvature.empty() ? QJsonValue(QJsonValue::Null)
+                                         : QJsonValue(QString::fromStdString(e.curvature));
+    // Inside: the ring of every point within two faces; on the boundary: the vertex piece's
+    // net (its S_0), and the verdicts are not decided there.
+    o["ring"] = QString::fromStdString(e.ring);
+    o["ring_size"] = e.ringSize;
+    if (e.limit.size() == 3) {
+        o["limit"] = rowJson(e.limit);
+        o["normal"] = rowJson(e.normal);
+    }
+    return o;
+}
+
+QJsonObject piecesJson(const MeshPieces &pieces)
+{
+    QJsonArray types;
+    for (std::size_t t = 0; t < pieces.types.size(); ++t) {
+        const MeshPieceType &type = pieces.types[t];
+        const bool vertex = type.kind == MeshPieceType::Kind::Vertex;
+        QJsonObject o{{"index", int(t)},
+                      {"kind", vertex ? "vertex" : "face"},
+                      {"net_size", type.netSize},
+                      {"boundary", type.boundary},
+                      {"roots", type.roots}};
+        if (vertex) {
+            o["valence"] = type.valence;
+            o["settles_in"] = settledType(pieces, int(t));
+        }
+        QJsonArray maps;
+        for (const MeshPieceType::Child &c : type.children)
+            maps.append(QJsonObject{{"to", c.type},
+                                    {"rows", int(c.S.rows())},
+                                    {"columns", int(c.S.cols())}});
+        o["maps"] = maps;
+        types.append(o);
+    }
+    return {{"isolation_steps", pieces.steps},
+            {"roots", int(pieces.roots.size())},
+            {"lone_vertices", int(pieces.loneVertices.size())},
+            {"types", types}};
+}
+
+} // namespace
+
+QJsonObject meshAnalysisJson(const SubdivisionMeshItem &item)
+{
+    const auto pieces = item.pieces();
+    if (!pieces)
+        return {};
+    QJsonObject o;
+    o["kind"] = item.type();
+    o["scheme"] = MeshInputs::schemeNames().at(int(item.scheme()));
+    o["vertex_count"] = int(item.inputs().vertices.size());
+    o["face_count"] = int(item.inputs().faces.size());
+    QJsonArray extraordinary;
+    for (const ExtraordinaryVertex &e : item.extraordinary())
+        extraordinary.append(vertexJson(e));
+    o["extraordinary"] = extraordinary;
+    o["pieces"] = piecesJson(*pieces);
+    return o;
+}
+
+} // namespace awb

@@ -1,0 +1,282 @@
+#include "model/SubdivisionMeshItem.h"
+
+#include "core/mesh/MeshAnalysis.h"
+#include "core/mesh/MeshExamples.h"
+#include "core/mesh/MeshIterate.h"
+#include "core/mesh/MeshPieces.h"
+#include "model/ProjectIO.h"
+
+#include <QJsonArray>
+
+namespace awb {
+
+// ---- MeshInputs -------------------------------------------------------------------------------
+
+const QStringList &MeshInputs::schemeNames()
+{
+    static const QStringList names{"catmull-clark", "loop"};
+    return names;
+}
+
+Mesh MeshInputs::mesh() const { return {toMatrix(vertices, 3), faces}; }
+
+MaybeProblem MeshInputs::check() const
+{
+    if (int(vertices.size()) > SubdivisionMeshItem::maxVertices)
+        return Problem{"vertices", tr("%1 vertices; a mesh item takes at most %2")
+                                       .arg(vertices.size())
+                                       .arg(SubdivisionMeshItem::maxVertices)};
+    if (faces.size() > std::size_t(2 * SubdivisionMeshItem::maxVertices))
+        return Problem{"faces", tr("%1 faces; a mesh item takes at most %2")
+                                    .arg(faces.size())
+                                    .arg(2 * SubdivisionMeshItem::maxVertices)};
+    try {
+        checkMesh(mesh(), scheme);
+    } catch (const InputError &e) {
+        const QString message = QString::fromStdString(e.what());
+        const bool aboutVertices = message.startsWith("vertex") && message.contains("finite");
+        return Problem{aboutVertices || vertices.empty() ? "vertices" : "faces", message};
+    }
+    return std::nullopt;
+}
+
+// ---- SubdivisionMeshItem ----------------------------------------------------------------------
+
+SubdivisionMeshItem::SubdivisionMeshItem() : AttractorItem(tr("Mesh surface"))
+{
+    const Mesh cube = cubeMesh();
+    m_inputs.vertices = toPointList(cube.vertices);
+    m_inputs.faces = cube.faces;
+    StartSetSpec start;
+    start.kind = StartSetSpec::Kind::VertexLimits;
+    start.points.clear();
+    setInitialStartSet(start);
+    AlgorithmSpec algorithm;
+    algorithm.depth = 4;
+    setAlgorithm(algorithm);
+}
+
+SubdivisionMeshItem::~SubdivisionMeshItem() = default;
+
+bool SubdivisionMeshItem::setInputs(const MeshInputs &inputs, QString *error)
+{
+    if (const MaybeProblem p = checkInputs(inputs)) {
+        if (error)
+            *error = p->message;
+        return false;
+    }
+    applyProperty(&SubdivisionMeshItem::m_inputs, inputs, &SubdivisionMeshItem::meshChanged,
+                  tr("Change mesh of %1").arg(name()));
+    return true;
+}
+
+bool SubdivisionMeshItem::setScheme(MeshScheme scheme, QString *error)
+{
+    MeshInputs next = m_inputs;
+    next.scheme = scheme;
+    return next == m_inputs || setInputs(next, error);
+}
+
+bool SubdivisionMeshItem::setMesh(const Mesh &mesh, MeshScheme scheme, QString *error)
+{
+    MeshInputs next;
+    next.scheme = scheme;
+    next.vertices = toPointList(mesh.vertices);
+    next.faces = mesh.faces;
+    return setInputs(next, error);
+}
+
+std::shared_ptr<const MeshPieces> SubdivisionMeshItem::pieces() const
+{
+    const auto d = derivedIfs();
+    if (!d)
+        return nullptr;
+    std::lock_guard<std::mutex> lock(m_piecesMutex);
+    return m_pieces;
+}
+
+std::vector<ExtraordinaryVertex> SubdivisionMeshItem::extraordinary() const
+{
+    const auto p = pieces();
+    if (!p)
+        return {};
+    return extraordinaryVertices(*p, toMatrix(m_inputs.vertices, 3));
+}
+
+DerivedIfs SubdivisionMeshItem::computeIfs() const
+{
+    if (const MaybeProblem p = m_inputs.check())
+        throw InputError((p->field + ": " + p->message).toStdString());
+    if (algorithm().mode == AlgorithmSpec::Mode::Random)
+        throw InputError(tr("a mesh surface is drawn by deterministic iteration: random "
+                            "iteration of its pieces is not implemented")
+                             .toStdString());
+    std::shared_ptr<const MeshPieces> pieces;
+    {
+        std::lock_guard<std::mutex> lock(m_piecesMutex);
+        if (!m_pieces || m_piecesFaces != m_inputs.faces || m_piecesScheme != m_inputs.scheme) {
+            m_pieces.reset();
+            m_pieces = std::make_shared<const MeshPieces>(
+                buildMeshPieces(m_inputs.mesh(), m_inputs.scheme));
+            m_piecesFaces = m_inputs.faces;
+            m_piecesScheme = m_inputs.scheme;
+        }
+        pieces = m_pieces;
+    }
+    DerivedIfs out;
+    out.ifs.space = "R^3";
+    out.ifs.views.push_back({Mat::Identity(3, 3), RowVec::Zero(3)});
+    out.toIfsSpace = [](const Mat &X) { return X; };
+    out.vertexLimitStart = true;
+    const Mat vertices = toMatrix(m_inputs.vertices, 3);
+    const bool levels = m_inputs.levelColours;
+    const auto startOf = [levels](const StartSet &start) {
+        MeshStart s;
+        s.levelAddresses = levels;
+        if (start.vertices.rows() > 0) {
+            s.kind = MeshStart::Kind::Points;
+            s.points = start;
+        }
+        return s;
+    };
+    out.iterate = [pieces, vertices, startOf](const StartSet &start, int depth,
+                                              const std::vector<AttractorSink *> &sinks,
+                                              const IterationControl &control) {
+        return iterateMesh(*pieces, vertices, startOf(start), depth, sinks, control);
+    };
+    out.pointCount = [pieces, startOf](const StartSet &start, int depth) {
+        return meshPointCount(*pieces, startOf(start), depth);
+    };
+    // The matrices shown: the local subdivision matrix of the first extraordinary vertex (its
+    // piece's map 0, once settled), then the 4 maps of the first patch that maps to itself.
+    for (const MeshPieceRoot &root : pieces->roots)
+        if (const int settled = root.vertex >= 0 ? settledType(*pieces, root.type) : -1;
+            settled >= 0) {
+            out.S.real.push_back(pieces->types[std::size_t(settled)].children.front().S);
+            break;
+        }
+    for (const MeshPieceType &type : pieces->types) {
+        if (type.kind != MeshPieceType::Kind::Face || type.children.empty())
+            continue;
+        bool square = true;
+        for (const MeshPieceType::Child &c : type.children)
+            square = square && c.S.rows() == c.S.cols();
+        if (!square)
+            continue;
+        for (const MeshPieceType::Child &c : type.children)
+            out.S.real.push_back(c.S);
+        break;
+    }
+    out.A.unavailable = tr("each piece of a mesh has the lifted space of its own net");
+    out.note = tr("%1 pieces of %2 kinds after %3 isolating steps (docs/mathematics.md, "
+                  "\"Extraordinary vertices\")")
+                   .arg(pieces->roots.size())
+                   .arg(pieces->types.size())
+                   .arg(pieces->steps);
+    return out;
+}
+
+// ---- files ------------------------------------------------------------------------------------
+
+void SubdivisionMeshItem::write(QJsonObject &json) const
+{
+    AttractorItem::write(json);
+    json["scheme"] = QJsonObject{{"kind", MeshInputs::schemeNames().at(int(m_inputs.scheme))}};
+    json["vertices"] = ProjectIO::pointsToJson(m_inputs.vertices, 3);
+    QJsonArray faces;
+    for (const auto &f : m_inputs.faces) {
+        QJsonArray loop;
+        for (int v : f)
+            loop.append(v);
+        faces.append(loop);
+    }
+    json["faces"] = faces;
+    json["colouring"] = m_inputs.levelColours ? "levels" : "maps";
+}
+
+void SubdivisionMeshItem::read(const FieldReader &fields)
+{
+    AttractorItem::read(fields);
+    MeshInputs inputs;
+    if (const auto s = fields.object("scheme"))
+        inputs.scheme = MeshScheme(s->choice("kind", MeshInputs::schemeNames(), 0));
+    inputs.vertices = fields.points("vertices", std::nullopt, 3);
+    const QJsonValue faces = fields.value("faces");
+    if (!faces.isArray())
+        fields.fail("faces", tr("expected an array of faces, each an array of vertex numbers"));
+    const QJsonArray rows = faces.toArray();
+    inputs.faces.reserve(std::size_t(rows.size()));
+    for (qsizetype k = 0; k < rows.size(); ++k) {
+        const QString where = fields.path("faces") + QStringLiteral("[%1]").arg(k + 1);
+        if (!rows[k].isArray())
+            throw LoadError{where, tr("expected a face: an array of vertex numbers (0-based)")};
+        const QJsonArray loop = rows[k].toArray();
+        std::vector<int> face;
+        for (qsizetype i = 0; i < loop.size(); ++i) {
+            const double x =
+                FieldReader::toNumber(loop[i], where + QStringLiteral("[%1]").arg(i + 1));
+            if (x != std::floor(x) || std::abs(x) > 1e9)
+                throw LoadError{where, tr("vertex numbers are whole numbers (0-based)")};
+            face.push_back(int(x));
+        }
+        inputs.faces.push_back(std::move(face));
+    }
+    inputs.levelColours = fields.choice("colouring", {"maps", "levels"}, 0) == 1;
+    fields.require(inputs.check());
+    m_inputs = std::move(inputs);
+}
+
+// ---- generic parameters -----------------------------------------------------------------------
+
+QList<ParameterInfo> SubdivisionMeshItem::parameters() const
+{
+    using P = ParameterInfo;
+    return {P::make("scheme.kind", tr("Scheme"), P::Type::Choice)
+                .options({tr("Catmull–Clark"), tr("Loop")})
+                .in(tr("Scheme"))
+                .tip(tr("Loop takes triangle meshes only")),
+            P::make("colouring", tr("Colours"), P::Type::Choice)
+                .options({tr("By map"), tr("By level around extraordinary vertices")})
+                .in(tr("Style"))
+                .tip(tr("By level: the neighbourhood of an extraordinary vertex as C, f(C), "
+                        "f²(C), … in turn (its IFS with condensation)"))};
+}
+
+QVariant SubdivisionMeshItem::parameter(const QString &key) const
+{
+    if (key == "scheme.kind")
+        return int(m_inputs.scheme);
+    if (key == "colouring")
+        return m_inputs.levelColours ? 1 : 0;
+    return {};
+}
+
+bool SubdivisionMeshItem::setParameter(const QString &key, const QVariant &value, int gesture,
+                                       QString *error)
+{
+    if (key == "scheme.kind") {
+        bool ok = false;
+        const int k = value.toInt(&ok);
+        ok = ok && k >= 0 && k < MeshInputs::schemeNames().size();
+        MeshInputs next = m_inputs;
+        if (ok)
+            next.scheme = MeshScheme(k);
+        MaybeProblem problem;
+        if (ok)
+            if (const MaybeProblem p = next.check())
+                problem = Problem{key, p->message};
+        return commitParameter(key, value, ok, problem, [&] { return setInputs(next); }, error);
+    }
+    if (key == "colouring") {
+        bool ok = false;
+        const int k = value.toInt(&ok);
+        ok = ok && (k == 0 || k == 1);
+        MeshInputs next = m_inputs;
+        next.levelColours = k == 1;
+        return commitParameter(key, value, ok, std::nullopt,
+                               [&] { return next == m_inputs || setInputs(next); }, error);
+    }
+    return AttractorItem::setParameter(key, value, gesture, error);
+}
+
+} // namespace awb

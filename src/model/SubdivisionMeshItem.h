@@ -1,0 +1,98 @@
+#pragma once
+// Document item "subdivision-mesh" (layer 2, model; issue 30): a polygon mesh of any topology
+// -- vertices in R^3, faces as vertex loops -- and its Catmull-Clark or Loop limit surface,
+// drawn as the attractor of the mesh's IFS with condensation (core/mesh/MeshPieces.h): regular
+// patches as their 4 maps, the neighbourhood of each extraordinary vertex as its ring's map
+// with the annulus of patches as condensation set. The mesh's vertices are the item's control
+// points (moving one is one undo step); the faces and the scheme change together with them.
+
+#include "model/AttractorItem.h"
+
+#include "core/mesh/Mesh.h"
+
+#include <mutex>
+
+namespace awb {
+
+struct MeshPieces;
+struct ExtraordinaryVertex;
+
+// Every input that changes together: the faces index the vertices, the scheme takes them.
+struct MeshInputs {
+    Q_DECLARE_TR_FUNCTIONS(awb::MeshInputs)
+public:
+    MeshScheme scheme = MeshScheme::CatmullClark;
+    PointList vertices;
+    std::vector<std::vector<int>> faces;
+    // Colours: by map (false), or the neighbourhoods of extraordinary vertices by level
+    // (C, f(C), f^2(C), ... in turn; MeshStart::levelAddresses).
+    bool levelColours = false;
+
+    bool operator==(const MeshInputs &) const = default;
+    Mesh mesh() const;
+    // The core's checks (checkMesh): field "faces" or "vertices" with its message.
+    MaybeProblem check() const;
+    // JSON spellings of the schemes, in MeshScheme order.
+    static const QStringList &schemeNames();
+};
+
+class SubdivisionMeshItem : public AttractorItem {
+    Q_OBJECT
+public:
+    SubdivisionMeshItem();
+    ~SubdivisionMeshItem() override;
+
+    static QString staticType() { return QStringLiteral("subdivision-mesh"); }
+    static QString staticTypeName() { return tr("Mesh surface"); }
+    QString type() const override { return staticType(); }
+    QString typeName() const override { return staticTypeName(); }
+
+    const MeshInputs &inputs() const { return m_inputs; }
+    MeshScheme scheme() const { return m_inputs.scheme; }
+    Mesh mesh() const { return m_inputs.mesh(); }
+    MaybeProblem checkInputs(const MeshInputs &inputs) const { return inputs.check(); }
+    // Undoable, one step; refused (false, *error says why) when checkInputs() complains.
+    bool setInputs(const MeshInputs &inputs, QString *error = nullptr);
+    bool setScheme(MeshScheme scheme, QString *error = nullptr);
+    // A new mesh (an import, a starting mesh), with its scheme.
+    bool setMesh(const Mesh &mesh, MeshScheme scheme, QString *error = nullptr);
+
+    // The pieces of the mesh's IFS: they depend on the faces and the scheme only, so moving a
+    // vertex keeps them. Null when the mesh is refused (derivedError() says why).
+    std::shared_ptr<const MeshPieces> pieces() const;
+    // The extraordinary vertices with their spectra (empty when the mesh is refused).
+    std::vector<ExtraordinaryVertex> extraordinary() const;
+
+    // "scheme.kind" (0 Catmull-Clark, 1 Loop), "colouring" (0 by map, 1 by level).
+    QList<ParameterInfo> parameters() const override;
+    QVariant parameter(const QString &key) const override;
+    bool setParameter(const QString &key, const QVariant &value, int gesture = 0,
+                      QString *error = nullptr) override;
+
+    int mapCount() const override { return 4; }
+    int pointDimension() const override { return 3; }
+    int controlPointSetCount() const override { return 1; }
+    bool pointCountEditable(int) const override { return false; }
+    static constexpr int maxVertices = 2000000;
+    int maxPointCount(int) const override { return maxVertices; }
+
+    void write(QJsonObject &json) const override;
+    void read(const FieldReader &fields) override;
+
+signals:
+    void meshChanged();
+
+protected:
+    DerivedIfs computeIfs() const override;
+    PointList &pointStorage(int) override { return m_inputs.vertices; }
+
+private:
+    MeshInputs m_inputs;
+    // The pieces for (faces, scheme), kept across vertex moves.
+    mutable std::mutex m_piecesMutex;
+    mutable std::shared_ptr<const MeshPieces> m_pieces;
+    mutable std::vector<std::vector<int>> m_piecesFaces;
+    mutable MeshScheme m_piecesScheme = MeshScheme::CatmullClark;
+};
+
+} // namespace awb
