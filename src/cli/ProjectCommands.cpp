@@ -1,5 +1,7 @@
 #include "cli/ProjectCommands.h"
 
+#include "cli/CommandSupport.h"
+
 #include "cli/FigureRenderer.h"
 #include "core/analysis/Geometry.h"
 #include "core/analysis/Spectrum.h"
@@ -18,6 +20,10 @@
 #include "core/schemes/NormalVectorScheme.h"
 #include "core/schemes/Scheme.h"
 #include "model/SubdivisionSurfaceItem.h"
+#include "model/SubdivisionMeshItem.h"
+#include "model/MeshAnalysisJson.h"
+#include "core/mesh/MeshFiles.h"
+#include "core/mesh/MeshRefine.h"
 #include "core/ifs/SurfaceIfs.h"
 #include "render/SurfaceFigure.h"
 
@@ -37,6 +43,8 @@
 #include <QRegularExpression>
 #include <QTextStream>
 
+#include <sstream>
+
 namespace awb::cli {
 
 namespace {
@@ -46,92 +54,11 @@ struct ProjectCommandsTr {
     Q_DECLARE_TR_FUNCTIONS(awb::cli)
 };
 
-QTextStream &out()
-{
-    static QTextStream s(stdout);
-    return s;
-}
-QTextStream &err()
-{
-    static QTextStream s(stderr);
-    return s;
-}
-
-// Raised for a user error with its exit code; caught at the command's top.
-struct Failure {
-    QString message;
-    int code = 1;
-};
-
-void parseOrFail(QCommandLineParser &parser, const QStringList &args, int positional)
-{
-    parser.addHelpOption();
-    if (!parser.parse(args))
-        throw Failure{parser.errorText(), 2};
-    if (parser.isSet("help")) {
-        out() << parser.helpText();
-        throw Failure{{}, 0};
-    }
-    if (parser.positionalArguments().size() != positional)
-        throw Failure{ProjectCommandsTr::tr("expected %1 project file, got %2 arguments (see --help)")
-                          .arg(positional)
-                          .arg(parser.positionalArguments().size()),
-                      2};
-}
-
 // The item's project in the figure file (PNG text chunk, SVG metadata): it reopens as is.
 FigureMetadata figureMetadata(const Project &project, const Item &item)
 {
     const QByteArray bytes = figureProjectBytes(project, item);
     return {figurePngTexts(bytes), svgMetadataElement(bytes)};
-}
-
-void load(Project &project, const QString &file)
-{
-    QString error;
-    if (!project.open(file, &error))
-        throw Failure{error, 1};
-}
-
-AttractorItem *attractorItem(const Project &project, const QString &name)
-{
-    if (!name.isEmpty()) {
-        Item *item = project.findItem(name);
-        if (!item)
-            throw Failure{ProjectCommandsTr::tr("no item named '%1' in %2")
-                              .arg(name, project.fileName().isEmpty() ? ProjectCommandsTr::tr("the figure's "
-                                                                               "project")
-                                                                      : project.fileName())};
-        auto *a = qobject_cast<AttractorItem *>(item);
-        if (!a)
-            throw Failure{ProjectCommandsTr::tr("item '%1' (%2) has no attractor").arg(name, item->typeName())};
-        return a;
-    }
-    for (Item *item : project.items())
-        if (auto *a = qobject_cast<AttractorItem *>(item))
-            return a;
-    throw Failure{ProjectCommandsTr::tr("%1 has no item with an attractor").arg(project.fileName())};
-}
-
-std::shared_ptr<const DerivedIfs> derived(const AttractorItem *item)
-{
-    auto d = item->derivedIfs();
-    if (!d)
-        throw Failure{ProjectCommandsTr::tr("item '%1': %2").arg(item->name(), item->derivedError())};
-    return d;
-}
-
-int intOption(const QCommandLineParser &parser, const QString &name, int lo, int hi)
-{
-    bool ok = false;
-    const int v = parser.value(name).toInt(&ok);
-    if (!ok || v < lo || v > hi)
-        throw Failure{ProjectCommandsTr::tr("--%1 must be a whole number from %2 to %3, got '%4'")
-                          .arg(name)
-                          .arg(lo)
-                          .arg(hi)
-                          .arg(parser.value(name))};
-    return v;
 }
 
 // A count written as digits or in exponent form ("1e9"), whole, from lo to hi.
@@ -213,8 +140,8 @@ StartSet::Kind parseStart(const QString &text, Mat *points, int dim = 2)
 // The number of points F^depth(start) makes (over every view); refuses more than maxPoints.
 double requirePointBudget(const DerivedIfs &d, const StartSet &start, int depth, double maxPoints)
 {
-    const double n = imageCount(d.ifs, depth) * double(start.vertices.rows())
-                     * double(d.ifs.views.size());
+    // Items drawn by their own iteration (automata, meshes) say their count when they know it.
+    const double n = exportPointCount(d, start, depth);
     if (n > maxPoints)
         throw Failure{ProjectCommandsTr::tr("depth %1 gives %2 points, more than --max-points %3")
                           .arg(depth)
@@ -390,6 +317,12 @@ QJsonObject analyseItem(const AttractorItem *item)
     }
     o["maps"] = maps;
     o["subdominant"] = subdominants;
+    // A mesh: its extraordinary vertices and the pieces of its IFS with condensation.
+    if (const auto *mesh = qobject_cast<const SubdivisionMeshItem *>(item)) {
+        const QJsonObject m = meshAnalysisJson(*mesh);
+        for (auto it = m.begin(); it != m.end(); ++it)
+            o[it.key()] = it.value();
+    }
     // The scheme's certified Hölder regularity (issue 16): an interval, its class C^n, how.
     if (const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item))
         o["regularity"] = regularityJson(itemRegularity(*curve));
@@ -451,21 +384,6 @@ QJsonObject analyseItem(const AttractorItem *item)
         o["box_dimension_error"] = QString::fromStdString(e.what());
     }
     return o;
-}
-
-template<class F>
-int guarded(F &&body)
-{
-    try {
-        return body();
-    } catch (const Failure &f) {
-        if (!f.message.isEmpty())
-            err() << "attractor-cli: " << f.message << "\n";
-        return f.code;
-    } catch (const InputError &e) {
-        err() << "attractor-cli: " << e.what() << "\n";
-        return 1;
-    }
 }
 
 // The options of `render` that `animate` shares: how a figure of an item is drawn.
@@ -599,12 +517,14 @@ void renderFigure(const Project &project, AttractorItem *item, const FigureOptio
     }
     if (d->ifs.size() > 0 || d->iterate)
         spec.start = item->coreStartSet(*d);
-    if (d->surface) {
+    const auto *mesh = qobject_cast<const SubdivisionMeshItem *>(item);
+    if (d->surface || mesh) {
         const auto *surface = qobject_cast<const SubdivisionSurfaceItem *>(item);
+        const SurfaceCamera camera = surface ? surface->camera() : SurfaceCamera{};
         const QStringList view =
             !o.view.isEmpty() ? o.view.split(',')
-                                 : QStringList{QString::number(surface->camera().azimuth, 'g', 17),
-                                               QString::number(surface->camera().elevation, 'g', 17)};
+                                 : QStringList{QString::number(camera.azimuth, 'g', 17),
+                                               QString::number(camera.elevation, 'g', 17)};
         bool okA = false, okE = false;
         const double az = view.value(0).toDouble(&okA), el = view.value(1).toDouble(&okE);
         if (view.size() != 2 || !okA || !okE || !std::isfinite(az) || std::abs(el) > 90)
@@ -612,6 +532,7 @@ void renderFigure(const Project &project, AttractorItem *item, const FigureOptio
                               .arg(o.view)};
         SurfaceFigureSpec s;
         s.ifs = &d->ifs;
+        s.iterate = d->iterate;
         s.start = spec.start;
         s.depth = depth;
         s.random = spec.random;
@@ -623,10 +544,16 @@ void renderFigure(const Project &project, AttractorItem *item, const FigureOptio
         s.pointRadius = std::max(0.5, 0.5 * item->style().pointSize);
         s.azimuth = az;
         s.elevation = el;
-        const LatticeMesh net = surface->refinedMesh(0);
-        s.framePoints = net.points;
-        s.netPoints = net.points;
-        s.netFaces = net.faces;
+        if (surface) {
+            const LatticeMesh net = surface->refinedMesh(0);
+            s.framePoints = net.points;
+            s.netPoints = net.points;
+            s.netFaces = net.faces;
+        } else {
+            s.framePoints = toMatrix(mesh->inputs().vertices, 3);
+            s.netPoints = s.framePoints;
+            s.netFaces = mesh->inputs().faces;
+        }
         s.width = o.width;
         s.height = o.height;
         const QString what = s.random ? ProjectCommandsTr::tr("%1 random points").arg(s.samples)
@@ -928,7 +855,9 @@ int points(const QStringList &args)
                                             "triangle:... | polygon:... | points:... (plane "
                                             "coordinates; x,y,z for a surface) | "
                                             "lifted:x,y,c1,...;x,y,c1,... (points of the lifted "
-                                            "space of 000 §2; default: the item's)."),
+                                            "space of 000 §2) | vertex-limits (a mesh item: the "
+                                            "limit positions of the vertices of the mesh refined "
+                                            "k times; default: the item's)."),
                             "set"},
                            {"csv", ProjectCommandsTr::tr("Print CSV (the only format so far).")},
                            {"address", ProjectCommandsTr::tr("Only the sub-copy f_w(A) of this address: 0-based "
@@ -976,6 +905,13 @@ int points(const QStringList &args)
             if (lifted.empty())
                 throw Failure{ProjectCommandsTr::tr("--start lifted: needs at least one point")};
             start = StartSet::points(liftedStartPoints(*d, lifted));
+        } else if (parser.isSet("start") && parser.value("start") == "vertex-limits") {
+            // The limit positions of the vertices of the mesh refined `depth` times (exact).
+            if (!d->vertexLimitStart)
+                throw Failure{ProjectCommandsTr::tr("--start vertex-limits needs a mesh item; '%1' "
+                                                    "is a %2")
+                                  .arg(item->name(), item->typeName())};
+            start = StartSet::points(Mat(0, 3));
         } else if (parser.isSet("start")) {
             Mat pts;
             const StartSet::Kind kind =
@@ -983,8 +919,7 @@ int points(const QStringList &args)
             start = {kind, d->toIfsSpace(pts)};
         }
         const double maxPoints = intOption(parser, "max-points", 1, 2000000000);
-        if (!d->iterate)
-            requirePointBudget(*d, start, depth, maxPoints);
+        requirePointBudget(*d, start, depth, maxPoints);
         out().flush();
         QFile stdoutFile;
         if (!stdoutFile.open(stdout, QIODevice::WriteOnly))
@@ -1103,8 +1038,9 @@ int exportData(const QStringList &args)
         QCommandLineParser parser;
         parser.setApplicationDescription(
             ProjectCommandsTr::tr("Export an item's geometry: the attractor F^k(X0) as a PLY point cloud (with "
-                   "the map applied last per point), or a surface item's net after k rounds of "
-                   "classic subdivision as an OBJ mesh."));
+                   "the map applied last per point), a surface item's net after k rounds of "
+                   "classic subdivision as an OBJ mesh, or a mesh item after k steps with every "
+                   "vertex at its limit position (OBJ)."));
         parser.addPositionalArgument("project", ProjectCommandsTr::tr("The .awb project file."));
         parser.addOptions({{"item", ProjectCommandsTr::tr("The item."), "name"},
                            {"format", ProjectCommandsTr::tr("ply (attractor points) or obj (subdivided "
@@ -1112,7 +1048,7 @@ int exportData(const QStringList &args)
                            {"out", ProjectCommandsTr::tr("Output file."), "file"},
                            {"depth", ProjectCommandsTr::tr("PLY: iteration depth (default: the item's)."), "k"},
                            {"rounds", ProjectCommandsTr::tr("OBJ: rounds of subdivision (default: the "
-                                             "item's)."), "r"},
+                                             "item's; a mesh item: its depth, at most 6)."), "r"},
                            {"max-points", ProjectCommandsTr::tr("PLY: refuse to write more (default "
                                                  "50000000)."), "n",
                             "50000000"}});
@@ -1136,11 +1072,30 @@ int exportData(const QStringList &args)
             const int depth = parser.isSet("depth") ? intOption(parser, "depth", 0, 64)
                                                     : item->algorithm().depth;
             const StartSet start = item->coreStartSet(*d);
-            if (d->iterate)
-                throw Failure{ProjectCommandsTr::tr("item '%1' is drawn by an automaton: PLY export covers "
-                                     "items with one IFS").arg(item->name())};
             requirePointBudget(*d, start, depth, intOption(parser, "max-points", 1, 2000000000));
             writePointsPly(file, item->name(), *d, start, depth, mapColor);
+        } else if (const auto *mesh = qobject_cast<const SubdivisionMeshItem *>(item)) {
+            // The mesh after k steps, every vertex at its exact limit position.
+            const int rounds = parser.isSet("rounds") ? intOption(parser, "rounds", 0, 8)
+                               : parser.isSet("depth") ? intOption(parser, "depth", 0, 8)
+                                                       : std::min(item->algorithm().depth, 6);
+            Mesh refined = refineMesh(mesh->mesh(), mesh->scheme(), rounds);
+            if (refined.vertices.rows() > 50000000)
+                throw Failure{ProjectCommandsTr::tr("%1 steps give %2 vertices: too many")
+                                  .arg(rounds)
+                                  .arg(refined.vertices.rows())};
+            refined.vertices = limitPositions(refined, mesh->scheme());
+            std::ostringstream text;
+            writeObj(text, refined,
+                     ProjectCommandsTr::tr("Attractor Workbench: item %1, %2 after %3 steps, "
+                                           "every vertex at its limit position")
+                         .arg(mesh->name(), MeshInputs::schemeNames().at(int(mesh->scheme())))
+                         .arg(rounds)
+                         .toStdString());
+            const std::string bytes = text.str();
+            if (file.write(bytes.data(), qint64(bytes.size())) != qint64(bytes.size()))
+                throw Failure{ProjectCommandsTr::tr("cannot write %1: %2")
+                                  .arg(outFile, file.errorString())};
         } else {
             const auto *surface = qobject_cast<const SubdivisionSurfaceItem *>(item);
             if (!surface)

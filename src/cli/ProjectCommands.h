@@ -17,5 +17,7 @@ int check(const QStringList &args);
 int rewrite(const QStringList &args);
 int exportData(const QStringList &args);
 int polygon(const QStringList &args);
+// ImportMesh.cpp: a mesh file as a project with one mesh item.
+int importMesh(const QStringList &args);
 
 } // namespace awb::cli

@@ -99,8 +99,9 @@ void usage()
                     "  points     the points of F^k(X0) as CSV\n"
                     "  check      validate a project file\n"
                     "  rewrite    load and save a project in canonical form\n"
-                    "  export     attractor points as PLY, a surface's subdivided net as OBJ\n"
+                    "  export     attractor points as PLY, a subdivided net or mesh (limit) as OBJ\n"
                     "  polygon    the control polygon after K subdivision steps (JSON)\n"
+                    "  import-mesh  a mesh file (OBJ, OFF, PLY) as a project with a mesh item\n"
                     "  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG\n\n"
                     "Run 'attractor-cli <command> --help' for the options of a command.\n");
 }
@@ -162,6 +163,8 @@ int main(int argc, char **argv)
             return cli::exportData(args);
         if (command == "polygon")
             return cli::polygon(args);
+        if (command == "import-mesh")
+            return cli::importMesh(args);
     } catch (const InputError &e) {
         err() << "attractor-cli " << command << ": " << e.what() << "\n";
         return 1;

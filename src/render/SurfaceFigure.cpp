@@ -34,7 +34,16 @@ OrthoCamera surfaceCamera(const SurfaceFigureSpec &spec, int height)
     std::vector<Mat> parts;
     if (spec.framePoints.rows() > 0)
         parts.push_back(spec.framePoints);
-    if (spec.ifs && spec.ifs->size() > 0 && !spec.ifs->views.empty()) {
+    if (spec.ifs && spec.iterate && !spec.ifs->views.empty()) {
+        // The item's own images at depth 0: its pieces.
+        PointCollector c(spec.ifs->views.front(), 200000);
+        try {
+            spec.iterate(spec.start, 0, {&c}, {});
+            if (c.points().cols() == 3 && c.points().allFinite())
+                parts.push_back(c.points());
+        } catch (const InputError &) {
+        }
+    } else if (spec.ifs && spec.ifs->size() > 0 && !spec.ifs->views.empty()) {
         int depth = 0;
         while (depth < spec.depth && imageCount(*spec.ifs, depth + 1) <= 4096)
             ++depth;
@@ -68,7 +77,7 @@ QImage renderSurfaceFigure(const SurfaceFigureSpec &spec, const std::atomic<bool
     std::vector<std::unique_ptr<SurfaceRaster>> rasters;
     std::vector<AttractorSink *> sinks;
     IterationStats stats;
-    if (spec.ifs && spec.ifs->size() > 0) {
+    if (spec.ifs && (spec.ifs->size() > 0 || spec.iterate)) {
         for (int t = 0; t < threads; ++t) {
             rasters.push_back(std::make_unique<SurfaceRaster>(
                 spec.width, h, camera, spec.ifs->views, spec.mapColors, spec.pointRadius));
@@ -76,7 +85,9 @@ QImage renderSurfaceFigure(const SurfaceFigureSpec &spec, const std::atomic<bool
         }
         IterationControl control;
         control.cancel = cancel;
-        if (spec.random) {
+        if (spec.iterate) {
+            stats = spec.iterate(spec.start, spec.depth, sinks, control);
+        } else if (spec.random) {
             ChaosOptions options;
             options.samples = spec.samples;
             options.seed = spec.seed;

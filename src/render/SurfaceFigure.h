@@ -14,6 +14,7 @@
 #include <QString>
 
 #include <atomic>
+#include <functional>
 #include <vector>
 
 namespace awb {
@@ -21,6 +22,11 @@ namespace awb {
 struct SurfaceFigureSpec {
     QString caption;                 // under the picture; empty: none
     const Ifs *ifs = nullptr;        // views project to R^3
+    // Items drawn by their own iteration (mesh items, DerivedIfs::iterate): used instead of
+    // iterating `ifs`, whose views still say how a point is drawn.
+    std::function<IterationStats(const StartSet &, int, const std::vector<AttractorSink *> &,
+                                 const IterationControl &)>
+        iterate;
     StartSet start;
     int depth = 6;                   // deterministic iteration
     bool random = false;             // chaos game instead

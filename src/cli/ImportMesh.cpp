@@ -1,0 +1,82 @@
+// attractor-cli import-mesh: a mesh file (OBJ, OFF, PLY) as a project with one
+// "subdivision-mesh" item, the file's vertex numbering and polygons kept.
+
+#include "cli/CommandSupport.h"
+#include "cli/ProjectCommands.h"
+
+#include "core/mesh/MeshAnalysis.h"
+#include "core/mesh/MeshFiles.h"
+#include "model/Project.h"
+#include "model/SubdivisionMeshItem.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+
+namespace awb::cli {
+
+namespace {
+
+struct ImportMeshTr {
+    Q_DECLARE_TR_FUNCTIONS(awb::cli)
+};
+
+} // namespace
+
+int importMesh(const QStringList &args)
+{
+    return guarded([&] {
+        QCommandLineParser parser;
+        parser.setApplicationDescription(ImportMeshTr::tr(
+            "Make a project of a mesh file (OBJ, OFF, PLY ASCII or binary): one subdivision-mesh "
+            "item with the file's vertices, in its numbering, and its polygons."));
+        parser.addPositionalArgument("mesh", ImportMeshTr::tr("The mesh file."));
+        parser.addOptions(
+            {{"scheme", ImportMeshTr::tr("catmull-clark (any polygons, the default) or loop "
+                                         "(triangles)."),
+              "scheme", "catmull-clark"},
+             {"out", ImportMeshTr::tr("The project file to write (.awb)."), "file"},
+             {"name", ImportMeshTr::tr("The item's name (default: the file's base name)."),
+              "name"}});
+        parseOrFail(parser, args, 1);
+        if (!parser.isSet("out"))
+            throw Failure{ImportMeshTr::tr("--out PROJECT.awb is required"), 2};
+        const int scheme = MeshInputs::schemeNames().indexOf(parser.value("scheme").toLower());
+        if (scheme < 0)
+            throw Failure{ImportMeshTr::tr("--scheme must be catmull-clark or loop, got '%1'")
+                              .arg(parser.value("scheme")),
+                          2};
+        const QString file = parser.positionalArguments().first();
+        Mesh mesh;
+        try {
+            mesh = readMesh(QFile::encodeName(file).toStdString());
+        } catch (const InputError &e) {  // the message names the file and the place
+            throw Failure{QString::fromStdString(e.what())};
+        }
+        Project project;
+        auto item = std::make_unique<SubdivisionMeshItem>();
+        QString error;
+        if (!item->setMesh(mesh, MeshScheme(scheme), &error))
+            throw Failure{QStringLiteral("%1: %2").arg(file, error)};
+        const QString name =
+            parser.isSet("name") ? parser.value("name") : QFileInfo(file).completeBaseName();
+        if (!name.isEmpty() && !item->setName(name))
+            throw Failure{ImportMeshTr::tr("'%1' cannot be an item's name").arg(name), 2};
+        SubdivisionMeshItem *added = static_cast<SubdivisionMeshItem *>(
+            project.addItem(std::move(item)));
+        if (!project.saveAs(parser.value("out"), &error))
+            throw Failure{error};
+        const auto extraordinary = added->extraordinary();
+        out() << ImportMeshTr::tr("%1: item '%2', %3 vertices, %4 faces, %5 extraordinary "
+                                  "vertices (%6)\n")
+                     .arg(parser.value("out"), added->name())
+                     .arg(mesh.vertices.rows())
+                     .arg(mesh.faces.size())
+                     .arg(extraordinary.size())
+                     .arg(MeshInputs::schemeNames().at(scheme));
+        if (!added->derivedError().isEmpty())
+            err() << ImportMeshTr::tr("attractor-cli: note: %1").arg(added->derivedError()) << "\n";
+        return 0;
+    });
+}
+
+} // namespace awb::cli
