@@ -11,6 +11,15 @@ namespace awb {
 
 AttractorItem::AttractorItem(const QString &defaultName) : Item(defaultName) {}
 
+MaybeProblem AttractorItem::checkStartSet(const StartSetSpec &s) const
+{
+    if (s.kind == StartSetSpec::Kind::VertexLimits && !startsAtVertexLimits())
+        return Problem{"kind", tr("the start set \"vertex-limits\" is the limit positions of a "
+                                  "mesh's vertices: a %1 has no mesh")
+                                   .arg(typeName())};
+    return s.check();
+}
+
 bool AttractorItem::setStartSet(const StartSetSpec &startSet, int gesture)
 {
     if (checkStartSet(startSet))
@@ -175,10 +184,8 @@ StartSet AttractorItem::coreStartSet(const DerivedIfs &derived) const
     if (m_startSet.kind == StartSetSpec::Kind::Lifted)
         return StartSet::points(liftedStartPoints(derived, m_startSet.lifted));
     if (m_startSet.kind == StartSetSpec::Kind::VertexLimits) {
-        if (!derived.vertexLimitStart)
-            throw InputError(tr("the start set \"vertex-limits\" is the limit positions of a "
-                                "mesh's vertices: this item has no mesh")
-                                 .toStdString());
+        if (const MaybeProblem p = checkStartSet(m_startSet); p || !derived.vertexLimitStart)
+            throw InputError(p ? p->message.toStdString() : derived.note.toStdString());
         return StartSet::points(Mat(0, pointDimension()));
     }
     const Mat vertices = derived.toIfsSpace(toMatrix(m_startSet.points, pointDimension()));
@@ -263,6 +270,7 @@ void AttractorItem::checkLoaded(const FieldReader &fields) const
                                   .arg(set + 1).arg(n).arg(maxControlPoints));
     }
     fields.require(m_algorithm.check(mapCount()), "algorithm");
+    fields.require(checkStartSet(m_startSet), "start_set");
     // Lifted start points must have the lifted space's number of coordinates.
     if (m_startSet.kind == StartSetSpec::Kind::Lifted)
         if (const auto d = derivedIfs()) {

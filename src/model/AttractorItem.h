@@ -73,7 +73,9 @@ class AttractorItem : public Item {
     Q_OBJECT
 public:
     const StartSetSpec &startSet() const { return m_startSet; }
-    MaybeProblem checkStartSet(const StartSetSpec &s) const { return s.check(); }
+    // The spec's own check, and "vertex-limits" only for items with vertices (meshes).
+    MaybeProblem checkStartSet(const StartSetSpec &s) const;
+    virtual bool startsAtVertexLimits() const { return false; }
     bool setStartSet(const StartSetSpec &startSet, int gesture = 0);
 
     const AlgorithmSpec &algorithm() const { return m_algorithm; }

@@ -558,7 +558,10 @@ StartSetSpec ProjectIO::readStartSet(const FieldReader &r, int dim)
         return s;
     }
     if (s.kind == StartSetSpec::Kind::VertexLimits) {
-        s.points.clear();
+        s.points = r.points("points", PointList{}, dim);
+        if (!s.points.empty())
+            r.fail("points", tr("a \"vertex-limits\" start set has no points (it starts at the "
+                                "limit positions of the mesh's vertices)"));
         return s;
     }
     s.points = r.points("points", s.points, dim);

@@ -58,7 +58,7 @@ SubdivisionMeshItem::SubdivisionMeshItem() : AttractorItem(tr("Mesh surface"))
 
 SubdivisionMeshItem::~SubdivisionMeshItem() = default;
 
-bool SubdivisionMeshItem::setInputs(const MeshInputs &inputs, QString *error)
+bool SubdivisionMeshItem::setInputs(const MeshInputs &inputs, QString *error, int gesture)
 {
     if (const MaybeProblem p = checkInputs(inputs)) {
         if (error)
@@ -66,7 +66,7 @@ bool SubdivisionMeshItem::setInputs(const MeshInputs &inputs, QString *error)
         return false;
     }
     applyProperty(&SubdivisionMeshItem::m_inputs, inputs, &SubdivisionMeshItem::meshChanged,
-                  tr("Change mesh of %1").arg(name()));
+                  tr("Change mesh of %1").arg(name()), gesture);
     return true;
 }
 
@@ -265,7 +265,8 @@ bool SubdivisionMeshItem::setParameter(const QString &key, const QVariant &value
         if (ok)
             if (const MaybeProblem p = next.check())
                 problem = Problem{key, p->message};
-        return commitParameter(key, value, ok, problem, [&] { return setInputs(next); }, error);
+        return commitParameter(key, value, ok, problem,
+                               [&] { return setInputs(next, nullptr, gesture); }, error);
     }
     if (key == "colouring") {
         bool ok = false;
@@ -274,7 +275,8 @@ bool SubdivisionMeshItem::setParameter(const QString &key, const QVariant &value
         MeshInputs next = m_inputs;
         next.levelColours = k == 1;
         return commitParameter(key, value, ok, std::nullopt,
-                               [&] { return next == m_inputs || setInputs(next); }, error);
+                               [&] { return next == m_inputs || setInputs(next, nullptr, gesture); },
+                               error);
     }
     return AttractorItem::setParameter(key, value, gesture, error);
 }

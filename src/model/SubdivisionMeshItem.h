@@ -52,7 +52,7 @@ public:
     Mesh mesh() const { return m_inputs.mesh(); }
     MaybeProblem checkInputs(const MeshInputs &inputs) const { return inputs.check(); }
     // Undoable, one step; refused (false, *error says why) when checkInputs() complains.
-    bool setInputs(const MeshInputs &inputs, QString *error = nullptr);
+    bool setInputs(const MeshInputs &inputs, QString *error = nullptr, int gesture = 0);
     bool setScheme(MeshScheme scheme, QString *error = nullptr);
     // A new mesh (an import, a starting mesh), with its scheme.
     bool setMesh(const Mesh &mesh, MeshScheme scheme, QString *error = nullptr);
@@ -75,6 +75,7 @@ public:
     bool pointCountEditable(int) const override { return false; }
     static constexpr int maxVertices = 2000000;
     int maxPointCount(int) const override { return maxVertices; }
+    bool startsAtVertexLimits() const override { return true; }
 
     void write(QJsonObject &json) const override;
     void read(const FieldReader &fields) override;

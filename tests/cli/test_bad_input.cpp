@@ -214,6 +214,20 @@ const std::map<QString, Maker> &inputs()
              return f.open(QIODevice::WriteOnly) && f.write("{") == 1
                     && f.resize(200ll * 1024 * 1024);
          }},
+        // ---- mesh files (issue 30)
+        {"mesh-index", [](QDir &d, QStringList *) {
+             return file(d, "range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n");
+         }},
+        {"mesh-non-manifold", [](QDir &d, QStringList *) {
+             return file(d, "fin.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\n"
+                                       "f 1 2 3\nf 2 4 3\nf 3 2 5\n");
+         }},
+        {"mesh-orientation", [](QDir &d, QStringList *) {
+             return file(d, "flip.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 3 4\n");
+         }},
+        {"mesh-loop-quads", [](QDir &d, QStringList *) {
+             return file(d, "quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+         }},
         // ---- numbers
         {"million-points", [](QDir &d, QStringList *) {
              QByteArray pts;

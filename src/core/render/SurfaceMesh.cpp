@@ -118,21 +118,27 @@ void SurfaceMeshSink::consume(const Mat &v, StartSet::Kind, const std::uint8_t *
 
 SurfaceMesh buildSurfaceMesh(const Ifs &ifs, const StartSet &start, int depth,
                              const ImageLabel &label, const IterationControl &control,
-                             int threads)
+                             int threads, const OwnIteration &own)
 {
-    checkIterateInputs(ifs, start, depth);
+    if (!own.iterate)
+        checkIterateInputs(ifs, start, depth);
+    // An item's own exact start sends faces.
+    const SurfaceMesh::Kind kind = own.iterate && start.vertices.rows() == 0
+                                       ? SurfaceMesh::Kind::Triangles
+                                       : surfaceMeshKind(start);
     const int hw = int(std::max(1u, std::thread::hardware_concurrency()));
     const int n = std::clamp(threads > 0 ? threads : hw, 1, 64);
     std::vector<std::unique_ptr<SurfaceMeshSink>> sinks;
     std::vector<AttractorSink *> raw;
     for (int t = 0; t < n; ++t) {
         sinks.push_back(
-            std::make_unique<SurfaceMeshSink>(ifs.views, label, surfaceMeshKind(start)));
+            std::make_unique<SurfaceMeshSink>(ifs.views, label, kind));
         raw.push_back(sinks.back().get());
     }
-    const IterationStats stats = iterateParallel(ifs, start, depth, raw, control);
+    const IterationStats stats = own.iterate ? own.iterate(start, depth, raw, control)
+                                             : iterateParallel(ifs, start, depth, raw, control);
     SurfaceMesh mesh;
-    mesh.kind = surfaceMeshKind(start);
+    mesh.kind = kind;
     mesh.depth = depth;
     if (stats.cancelled)
         return mesh;
@@ -148,10 +154,16 @@ SurfaceMesh buildSurfaceMesh(const Ifs &ifs, const StartSet &start, int depth,
     return mesh;
 }
 
-int surfaceMeshDepth(const Ifs &ifs, const StartSet &start, int depth, double budget)
+int surfaceMeshDepth(const Ifs &ifs, const StartSet &start, int depth, double budget,
+                     const OwnIteration &own)
 {
-    const double per = primitivesPerImage(start);
     int k = std::max(0, depth);
+    if (own.pointCount) {
+        while (k > 0 && own.pointCount(start, k) > budget)
+            --k;
+        return k;
+    }
+    const double per = primitivesPerImage(start);
     while (k > 0 && imageCount(ifs, k) * double(std::max<std::size_t>(1, ifs.views.size()))
                             * per
                         > budget)

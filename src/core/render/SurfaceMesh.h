@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace awb {
@@ -51,14 +52,27 @@ private:
 // What an image of `start` becomes: points, segments or triangles.
 SurfaceMesh::Kind surfaceMeshKind(const StartSet &start);
 
+// Items drawn by their own iteration (mesh items: an IFS with condensation, its images
+// streamed like iterateParallel's): used instead of iterating the Ifs, whose views still say
+// how a point is drawn. An empty start set then means the item's exact start (a mesh's vertex
+// limits: its images are faces). `identity` is the same object while the data is the same.
+struct OwnIteration {
+    std::function<IterationStats(const StartSet &, int, const std::vector<AttractorSink *> &,
+                                 const IterationControl &)>
+        iterate;
+    std::function<double(const StartSet &, int)> pointCount;  // points a depth makes
+    std::shared_ptr<const void> identity;
+};
+
 // F^depth(start) through ifs.views (3 columns each) on `threads` threads (0: all cores).
 // Throws InputError like iterate(); an empty mesh when control.cancel stopped it.
 SurfaceMesh buildSurfaceMesh(const Ifs &ifs, const StartSet &start, int depth,
                              const ImageLabel &label, const IterationControl &control = {},
-                             int threads = 0);
+                             int threads = 0, const OwnIteration &own = {});
 
-// The largest depth <= `depth` whose primitives (images times the primitives of one image)
-// number at most `budget` (at least 0).
-int surfaceMeshDepth(const Ifs &ifs, const StartSet &start, int depth, double budget);
+// The largest depth <= `depth` whose primitives (images times the primitives of one image;
+// with `own`, its points) number at most `budget` (at least 0).
+int surfaceMeshDepth(const Ifs &ifs, const StartSet &start, int depth, double budget,
+                     const OwnIteration &own = {});
 
 } // namespace awb

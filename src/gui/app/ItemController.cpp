@@ -20,6 +20,7 @@
 #include "model/Project.h"
 #include "model/SubdivisionCurveItem.h"
 #include "model/SubdivisionSurfaceItem.h"
+#include "model/SubdivisionMeshItem.h"
 
 #include <QColor>
 #include <QJsonDocument>
@@ -416,7 +417,15 @@ void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
     std::vector<std::vector<int>> faces;
     Mat mesh;
     std::vector<std::vector<int>> meshFaces;
-    if (const auto *surface = qobject_cast<const SubdivisionSurfaceItem *>(item)) {
+    OwnIteration own;
+    if (const auto *meshItem = qobject_cast<const SubdivisionMeshItem *>(item)) {
+        // The control mesh, and the pieces' own iteration (its identity: the derived data,
+        // recomputed on every edit).
+        faces = meshItem->inputs().faces;
+        own.iterate = d.iterate;
+        own.pointCount = d.pointCount;
+        own.identity = item->derivedIfs();
+    } else if (const auto *surface = qobject_cast<const SubdivisionSurfaceItem *>(item)) {
         // The item's saved view (also the CLI's default camera) is where Home looks from.
         m_surface->setHomeDirection(surface->camera().azimuth, surface->camera().elevation);
         try {
@@ -434,7 +443,8 @@ void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
     m_surface->setRefinedNet(mesh, meshFaces);
     m_surface->setStartVertices(toMatrix(item->startSet().points, 3));
     try {
-        m_surface->setIfs(std::make_shared<const Ifs>(d.ifs), item->coreStartSet(d), d.mapIndex);
+        m_surface->setIfs(std::make_shared<const Ifs>(d.ifs), item->coreStartSet(d), d.mapIndex,
+                          own);
     } catch (const std::exception &) {
         m_surface->setIfs(nullptr, StartSet{});
     }

@@ -456,7 +456,7 @@ void PropertiesWidget::addAttractorEditors()
     auto *startForm = new QFormLayout(startBox);
     auto *startKind = compactCombo();
     startKind->addItems({tr("Point"), tr("Segment"), tr("Triangle"), tr("Polygon"),
-                         tr("Points"), tr("Lifted points")});
+                         tr("Points"), tr("Lifted points"), tr("Vertex limits")});
     startForm->addRow(tr("Kind:"), startKind);
     auto *dragHint = new QLabel(tr("Drag its vertices in the attractor view."));
     dragHint->setWordWrap(true);
@@ -498,6 +498,14 @@ void PropertiesWidget::addAttractorEditors()
             return;
         StartSetSpec s;
         s.kind = StartSetSpec::Kind(i);
+        if (s.kind == StartSetSpec::Kind::VertexLimits) {
+            s.points.clear();
+            if (auto p = item->checkStartSet(s); p || !item->setStartSet(s)) {
+                report(p ? p->message : tr("The start set was refused."));
+                updateValues();
+            }
+            return;
+        }
         if (s.kind == StartSetSpec::Kind::Lifted) {
             // The centroid of the control points, lifted with zero extra coordinates.
             const auto d = item->derivedIfs();

@@ -134,18 +134,20 @@ bool sameImages(const Ifs *a, const Ifs *b)
 } // namespace
 
 void SurfaceView::setIfs(std::shared_ptr<const Ifs> ifs, const StartSet &start,
-                         std::vector<int> colourIndex)
+                         std::vector<int> colourIndex, OwnIteration own)
 {
     // The owner sends the data again after edits that did not change it (the end of a drag,
     // a dock's refresh): keep the meshes.
     if (sameImages(ifs.get(), m_ifs.get()) && start.kind == m_start.kind
         && start.vertices.rows() == m_start.vertices.rows()
         && start.vertices.cols() == m_start.vertices.cols() && start.vertices == m_start.vertices
-        && colourIndex == m_colourIndex) {
+        && colourIndex == m_colourIndex && own.identity == m_own.identity) {
         m_ifs = std::move(ifs);
+        m_own = std::move(own);
         return;
     }
     m_ifs = std::move(ifs);
+    m_own = std::move(own);
     m_start = start;
     m_colourIndex = std::move(colourIndex);
     dataChanged();
@@ -289,7 +291,7 @@ SurfaceView::Colours SurfaceView::colours() const
 void SurfaceView::startMeshJob()
 {
     m_dataTimer.stop(); // called directly too (a release): the timer's turn is this one
-    if (!m_ifs || m_ifs->size() == 0 || m_start.vertices.rows() == 0) {
+    if (!hasImages()) {
         m_meshes = MeshState{};
         m_meshes.serial = m_dataSerial;
         m_cpuImage = QImage();
@@ -312,14 +314,16 @@ void SurfaceView::startMeshJob()
         return;
     // The coarse mesh of this very data is there (the last move of a drag): only the full one.
     const bool haveCoarse = m_meshes.serial == m_dataSerial && m_meshes.coarse;
-    const int fullDepth = surfaceMeshDepth(*m_ifs, m_start, m_settings.depth, double(m_fullBudget));
+    const int fullDepth =
+        surfaceMeshDepth(*m_ifs, m_start, m_settings.depth, double(m_fullBudget), m_own);
     const int coarseDepth =
-        surfaceMeshDepth(*m_ifs, m_start, m_settings.depth, double(m_movingBudget));
+        surfaceMeshDepth(*m_ifs, m_start, m_settings.depth, double(m_movingBudget), m_own);
     const std::uint64_t serial = m_dataSerial;
     const QPoint input = m_inputGlobal;
     const bool fromDrag =
         m_drag.kind == DragKind::ControlPoint || m_drag.kind == DragKind::StartVertex;
     auto ifs = m_ifs;
+    const OwnIteration own = m_own;
     const StartSet start = m_start;
     const ImageLabel label = colours().label;
     // While a point moves, the coarse mesh being built ends and shows (a frame a little
@@ -352,7 +356,7 @@ void SurfaceView::startMeshJob()
             emit frameReady();
         });
     };
-    m_meshWorker->post([ifs, start, label, fullDepth, coarseDepth, moving, haveCoarse,
+    m_meshWorker->post([ifs, own, start, label, fullDepth, coarseDepth, moving, haveCoarse,
                         deliver](const std::atomic<bool> &cancel) {
         QElapsedTimer timer;
         timer.start();
@@ -361,7 +365,7 @@ void SurfaceView::startMeshJob()
         try {
             if (moving || (coarseDepth < fullDepth && !haveCoarse)) {
                 auto coarse = std::make_shared<SurfaceMesh>(
-                    buildSurfaceMesh(*ifs, start, coarseDepth, label, control));
+                    buildSurfaceMesh(*ifs, start, coarseDepth, label, control, 0, own));
                 if (cancel)
                     return;
                 deliver(coarse, coarseDepth == fullDepth, timer.nsecsElapsed() * 1e-9);
@@ -369,7 +373,7 @@ void SurfaceView::startMeshJob()
                     return;
             }
             auto full = std::make_shared<SurfaceMesh>(
-                buildSurfaceMesh(*ifs, start, fullDepth, label, control));
+                buildSurfaceMesh(*ifs, start, fullDepth, label, control, 0, own));
             if (cancel)
                 return;
             deliver(full, true, timer.nsecsElapsed() * 1e-9);
@@ -401,13 +405,13 @@ std::shared_ptr<const SurfaceMesh> SurfaceView::figureMesh() const
 {
     if (m_meshes.full && m_meshes.serial == m_dataSerial)
         return m_meshes.full;
-    if (!m_ifs || m_ifs->size() == 0 || m_start.vertices.rows() == 0)
+    if (!hasImages())
         return nullptr;
     try {
         const int depth =
-            surfaceMeshDepth(*m_ifs, m_start, m_settings.depth, double(m_fullBudget));
+            surfaceMeshDepth(*m_ifs, m_start, m_settings.depth, double(m_fullBudget), m_own);
         return std::make_shared<SurfaceMesh>(
-            buildSurfaceMesh(*m_ifs, m_start, depth, colours().label));
+            buildSurfaceMesh(*m_ifs, m_start, depth, colours().label, {}, 0, m_own));
     } catch (const std::exception &) {
         return nullptr;
     }

@@ -78,8 +78,9 @@ public:
     // ---- data (copies; the document stays the owner) ----
     // The IFS (views give 3 columns) and its start set; `colourIndex[k]` is the colour index
     // of map k (the analysis map when a subset of maps is used; empty: k).
+    // Items drawn by their own iteration (mesh items) add `own` (core/render/SurfaceMesh.h).
     void setIfs(std::shared_ptr<const Ifs> ifs, const StartSet &start,
-                std::vector<int> colourIndex = {});
+                std::vector<int> colourIndex = {}, OwnIteration own = {});
     // The control net: points n x 3 and faces (index lists); empty to hide.
     void setControlNet(const Mat &points, const std::vector<std::vector<int>> &faces);
     // The start-set vertices (n x 3, drawn and draggable as handles).
@@ -236,6 +237,12 @@ private:
     ThreadInbox m_inbox{this}; // the workers' results; declared before them, so it outlives them
     std::unique_ptr<LatestJobWorker> m_meshWorker, m_frameWorker;
     std::shared_ptr<const Ifs> m_ifs;
+    OwnIteration m_own;
+    // Whether there is anything to iterate: maps and a start set, or the item's own iteration.
+    bool hasImages() const
+    {
+        return m_ifs && ((m_ifs->size() > 0 && m_start.vertices.rows() > 0) || m_own.iterate);
+    }
     StartSet m_start;
     std::vector<int> m_colourIndex;
     Mat m_net, m_start3, m_refined;

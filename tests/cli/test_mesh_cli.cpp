@@ -1,0 +1,292 @@
+// attractor-cli on meshes of any topology (issue 30): import-mesh from OBJ, OFF and PLY keeps
+// the file's numbering; the CLI contract -- points --start vertex-limits prints exactly the
+// limit positions of the vertices of the mesh refined K times, on meshes with random valences,
+// random coordinates and boundaries; analyse --json lists the extraordinary vertices with their
+// eigenvalues; export --format obj writes the refined mesh at its limit positions; bad files
+// get their messages.
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include "TestMain.h"
+
+#include "CliRunner.h"
+
+#include "core/mesh/MeshExamples.h"
+#include "core/mesh/MeshFiles.h"
+#include "core/mesh/MeshRefine.h"
+
+#include <cmath>
+#include <fstream>
+#include <random>
+
+using namespace awb;
+
+namespace {
+
+Mesh jittered(Mesh m, unsigned seed)
+{
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+    for (Eigen::Index v = 0; v < m.vertices.rows(); ++v)
+        for (int c = 0; c < 3; ++c)
+            m.vertices(v, c) += jitter(random);
+    return m;
+}
+
+// Rows of `a` with no row of `b` within `tol`, counted (brute force: the tests' sizes are
+// small).
+int unmatched(const Mat &a, const Mat &b, double tol)
+{
+    int count = 0;
+    for (Eigen::Index i = 0; i < a.rows(); ++i)
+        if ((b.rowwise() - a.row(i)).rowwise().norm().minCoeff() > tol)
+            ++count;
+    return count;
+}
+
+} // namespace
+
+class TestMeshCli : public QObject {
+    Q_OBJECT
+private slots:
+    void importKeepsTheFilesNumbering_data();
+    void importKeepsTheFilesNumbering();
+    void pointsAreExactlyTheLimitPositions_data();
+    void pointsAreExactlyTheLimitPositions();
+    void analyseListsTheExtraordinaryVertices();
+    void exportObjIsTheRefinedMeshAtItsLimit();
+    void badFilesAreRefusedByName();
+
+private:
+    int run(const QStringList &args, QByteArray *out = nullptr, QByteArray *err = nullptr)
+    {
+        return awb::test::runProgram(awb::test::cliPath(), args, out, err);
+    }
+    QString write(const QString &name, const Mesh &mesh)
+    {
+        const QString path = m_dir.filePath(name);
+        std::ofstream out(QFile::encodeName(path).toStdString());
+        writeObj(out, mesh, "test mesh");
+        return path;
+    }
+    QString importMesh(const Mesh &mesh, const QString &scheme, const QString &name)
+    {
+        const QString obj = write(name + ".obj", mesh), awb = m_dir.filePath(name + ".awb");
+        QByteArray err;
+        if (run({"import-mesh", obj, "--scheme", scheme, "--out", awb, "--name", name}, nullptr,
+                &err)
+            != 0)
+            qWarning() << err;
+        return awb;
+    }
+    QJsonObject analyse(const QString &project)
+    {
+        QByteArray out;
+        if (run({"analyse", project, "--json"}, &out) != 0)
+            return {};
+        return QJsonDocument::fromJson(out).object()["items"].toArray().first().toObject();
+    }
+    QTemporaryDir m_dir;
+};
+
+void TestMeshCli::importKeepsTheFilesNumbering_data()
+{
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<QByteArray>("text");
+    // A cube whose vertices are listed in an order of their own: vertex 5 of the file is the
+    // corner (1, 1, 1).
+    const QByteArray off = "OFF\n8 6 12\n"
+                           "-1 -1 -1\n1 -1 -1\n-1 1 -1\n1 -1 1\n-1 -1 1\n1 1 1\n-1 1 1\n"
+                           "1 1 -1\n"
+                           "4 0 2 7 1\n4 4 3 5 6\n4 0 1 3 4\n4 2 6 5 7\n4 0 4 6 2\n4 1 7 5 3\n";
+    QTest::newRow("OFF") << "cube.off" << off;
+    QByteArray obj;
+    for (const QByteArray &line : off.split('\n').mid(2, 8))
+        obj += "v " + line + "\n";
+    for (const QByteArray &line : off.split('\n').mid(10, 6)) {
+        QList<QByteArray> ids = line.split(' ').mid(1);
+        obj += "f";
+        for (const QByteArray &id : ids)
+            obj += " " + QByteArray::number(id.toInt() + 1);
+        obj += "\n";
+    }
+    QTest::newRow("OBJ") << "cube.obj" << obj;
+    QByteArray ply = "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\n"
+                     "property float y\nproperty float z\nelement face 6\n"
+                     "property list uchar int vertex_indices\nend_header\n";
+    ply += off.split('\n').mid(2, 14).join('\n') + "\n";
+    QTest::newRow("PLY") << "cube.ply" << ply;
+}
+
+void TestMeshCli::importKeepsTheFilesNumbering()
+{
+    QFETCH(QString, file);
+    QFETCH(QByteArray, text);
+    const QString path = m_dir.filePath(file);
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(text);
+    f.close();
+    const QString project = m_dir.filePath(file + ".awb");
+    QByteArray out, err;
+    QCOMPARE(run({"import-mesh", path, "--out", project}, &out, &err), 0);
+    QVERIFY2(out.contains("8 vertices, 6 faces, 8 extraordinary vertices"), out.constData());
+    const QJsonObject a = analyse(project);
+    QCOMPARE(a["kind"].toString(), QString("subdivision-mesh"));
+    QCOMPARE(a["vertex_count"].toInt(), 8);
+    const QJsonArray e = a["extraordinary"].toArray();
+    QCOMPARE(e.size(), 8);
+    for (int k = 0; k < 8; ++k) {
+        const QJsonObject v = e[k].toObject();
+        QCOMPARE(v["vertex"].toInt(), k);  // the file's own numbers
+        QCOMPARE(v["valence"].toInt(), 3);
+        QVERIFY(std::abs(v["subdominant"].toDouble() - 0.4100970508) < 1e-9);
+        QCOMPARE(v["curvature"].toString(), QString("zero"));
+        QVERIFY(v["c1"].toBool());
+    }
+    // Vertex 5 is the corner (1, 1, 1): its limit is (1/2, 1/2, 1/2).
+    const QJsonArray limit = e[5].toObject()["limit"].toArray();
+    for (int c = 0; c < 3; ++c)
+        QVERIFY(std::abs(limit[c].toDouble() - 0.5) < 1e-12);
+}
+
+void TestMeshCli::pointsAreExactlyTheLimitPositions_data()
+{
+    QTest::addColumn<QString>("scheme");
+    QTest::addColumn<unsigned>("seed");
+    QTest::addColumn<bool>("closed");
+    for (unsigned seed : {11u, 12u})
+        for (const char *scheme : {"catmull-clark", "loop"}) {
+            QTest::addRow("%s, open, seed %u", scheme, seed) << scheme << seed << false;
+            QTest::addRow("%s, closed, seed %u", scheme, seed) << scheme << seed << true;
+        }
+}
+
+void TestMeshCli::pointsAreExactlyTheLimitPositions()
+{
+    // Meshes the IFS was not made for: mixed diagonals give interior valences 4 to 8 and
+    // boundary vertices of every kind; the closed ones are octahedra (CC: valence 4 vertices,
+    // valence 3 triangle centres; Loop: valence 4), random coordinates throughout.
+    QFETCH(QString, scheme);
+    QFETCH(unsigned, seed);
+    QFETCH(bool, closed);
+    const Mesh mesh = jittered(closed ? octahedronMesh() : diagonalGridMesh(4, 3, seed), seed);
+    const MeshScheme s = scheme == "loop" ? MeshScheme::Loop : MeshScheme::CatmullClark;
+    const QString project = importMesh(mesh, scheme, QString("m%1%2").arg(seed).arg(closed));
+    const double diagonal =
+        (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
+    for (int depth = 0; depth <= 3; ++depth) {
+        QByteArray out, err;
+        QCOMPARE(run({"points", project, "--item", QString("m%1%2").arg(seed).arg(closed),
+                      "--depth", QString::number(depth), "--start", "vertex-limits", "--csv"},
+                     &out, &err),
+                 0);
+        const QList<QByteArray> lines = out.trimmed().split('\n');
+        QCOMPARE(lines.front(), QByteArray("x,y,z,map,view"));
+        Mat got(lines.size() - 1, 3);
+        for (qsizetype l = 1; l < lines.size(); ++l) {
+            const QList<QByteArray> c = lines[l].split(',');
+            got.row(l - 1) << c[0].toDouble(), c[1].toDouble(), c[2].toDouble();
+        }
+        const Mat expected = limitPositions(refineMesh(mesh, s, depth), s);
+        // Each limit position at least once, and nothing else, to 1e-9 of the diagonal.
+        QCOMPARE(unmatched(expected, got, 1e-9 * diagonal), 0);
+        QCOMPARE(unmatched(got, expected, 1e-9 * diagonal), 0);
+    }
+}
+
+void TestMeshCli::analyseListsTheExtraordinaryVertices()
+{
+    // The icosahedron under Loop: twelve valence-5 vertices, lambda = 3/8 + cos(2 pi/5)/4.
+    const QJsonObject ico = analyse(importMesh(icosahedronMesh(), "loop", "ico"));
+    QCOMPARE(ico["scheme"].toString(), QString("loop"));
+    const QJsonArray e = ico["extraordinary"].toArray();
+    QCOMPARE(e.size(), 12);
+    const double lambda = 3.0 / 8 + std::cos(2 * M_PI / 5) / 4;
+    for (const QJsonValue &v : e) {
+        const QJsonObject o = v.toObject();
+        QCOMPARE(o["valence"].toInt(), 5);
+        QVERIFY(std::abs(o["subdominant"].toDouble() - lambda) < 1e-12);
+        QCOMPARE(o["eigenvalues"].toArray().size(), 16);  // the ring: 3n + 1
+        const QJsonArray first = o["eigenvalues"].toArray().first().toArray();
+        QVERIFY(std::abs(first[0].toDouble() - 1.0) < 1e-12);
+        QCOMPARE(o["curvature"].toString(), QString("bounded"));
+    }
+    // The pentagonal prism under Catmull-Clark: the pentagons' centres are listed by face.
+    const QJsonObject prism = analyse(importMesh(pentagonalPrismMesh(), "catmull-clark", "p"));
+    const QJsonArray p = prism["extraordinary"].toArray();
+    QCOMPARE(p.size(), 12);
+    QCOMPARE(p[10].toObject()["face"].toInt(), 0);
+    QCOMPARE(p[11].toObject()["face"].toInt(), 1);
+    QCOMPARE(p[11].toObject()["valence"].toInt(), 5);
+    QVERIFY(prism["pieces"].toObject()["types"].toArray().size() > 2);
+}
+
+void TestMeshCli::exportObjIsTheRefinedMeshAtItsLimit()
+{
+    const Mesh mesh = jittered(diagonalGridMesh(3, 3, 5), 5);
+    const QString project = importMesh(mesh, "catmull-clark", "grid");
+    const QString obj = m_dir.filePath("limit.obj");
+    QCOMPARE(run({"export", project, "--item", "grid", "--format", "obj", "--rounds", "2", "--out",
+                  obj}),
+             0);
+    const Mesh back = readMesh(QFile::encodeName(obj).toStdString());
+    const Mesh refined = refineMesh(mesh, MeshScheme::CatmullClark, 2);
+    QCOMPARE(back.faces, refined.faces);
+    QVERIFY((back.vertices - limitPositions(refined, MeshScheme::CatmullClark)).cwiseAbs()
+                .maxCoeff()
+            < 1e-14);
+    // PLY: the attractor's points, as many as the header says.
+    const QString ply = m_dir.filePath("points.ply");
+    QCOMPARE(run({"export", project, "--item", "grid", "--format", "ply", "--depth", "2", "--out",
+                  ply}),
+             0);
+    QFile f(ply);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QVERIFY(f.readAll().contains("element vertex"));
+}
+
+void TestMeshCli::badFilesAreRefusedByName()
+{
+    QByteArray out, err;
+    const QString awb = m_dir.filePath("bad.awb");
+    const auto refuse = [&](const QByteArray &text, const QString &suffix,
+                            const QStringList &extra = {}) {
+        const QString path = m_dir.filePath("bad." + suffix);
+        QFile f(path);
+        f.open(QIODevice::WriteOnly);
+        f.write(text);
+        f.close();
+        err.clear();
+        const int code = run(QStringList{"import-mesh", path, "--out", awb} + extra, &out, &err);
+        return code == 1 ? QString::fromUtf8(err) : QString("exit %1").arg(code);
+    };
+    QVERIFY(refuse("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", "obj").contains("out of range"));
+    QVERIFY(refuse("this is not a mesh\n", "off").contains("bad.off"));
+    QVERIFY(refuse("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 4 3\n", "obj", {"--scheme", "loop"})
+                .contains("triangles only"));
+    // Three triangles on the edge (1, 2): non-manifold.
+    QVERIFY(refuse("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nf 1 2 3\nf 2 4 3\nf 3 2 5\n", "obj")
+                .contains("non-manifold"));
+    QVERIFY(refuse("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 3 4\n", "obj")
+                .contains("oriented inconsistently"));
+    QVERIFY(!QFile::exists(awb));  // nothing written for a refused file
+    QCOMPARE(run({"import-mesh", m_dir.filePath("bad.obj")}, &out, &err), 2);  // no --out
+    QCOMPARE(run({"import-mesh", m_dir.filePath("nothing.obj"), "--out", awb}, &out, &err), 1);
+    // A mesh item's start set in the plane's terms is refused for other items.
+    const QString curve = awb::test::examplePath("000-fig02-cubic-bspline-from-point.awb");
+    QCOMPARE(run({"points", curve, "--item", "000 Fig. 2: cubic B-spline from a point",
+                  "--start", "vertex-limits", "--csv"},
+                 &out, &err),
+             1);
+    QVERIFY2(err.contains("needs a mesh item"), err.constData());
+}
+
+AWB_TEST_MAIN(TestMeshCli)
+#include "test_mesh_cli.moc"
