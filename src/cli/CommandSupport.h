@@ -1,23 +1,33 @@
 #pragma once
-// What every attractor-cli command shares (the commands: ProjectCommands.cpp, ImportMesh.cpp):
+// What every attractor-cli command shares (the commands: one file each, ProjectCommands.h):
 // its streams, the user error it raises with an exit code, option parsing, loading a project
 // and finding its items. Exit codes: 0 success, 1 bad input, 2 usage error.
 
 #include "core/Types.h"
+#include "core/ifs/Attractor.h"
+#include "render/FigureFile.h"
 
 #include <QCommandLineParser>
+#include <QCoreApplication>
 #include <QString>
 #include <QTextStream>
 
+#include <cstdint>
 #include <memory>
 
 namespace awb {
 class AttractorItem;
+class Item;
 class Project;
 struct DerivedIfs;
 } // namespace awb
 
 namespace awb::cli {
+
+// The translation context of every command's messages (lupdate reads it from the macro).
+struct CliTr {
+    Q_DECLARE_TR_FUNCTIONS(awb::cli)
+};
 
 QTextStream &out();
 QTextStream &err();
@@ -35,6 +45,18 @@ void load(Project &project, const QString &file);
 AttractorItem *attractorItem(const Project &project, const QString &name);
 std::shared_ptr<const DerivedIfs> derived(const AttractorItem *item);
 int intOption(const QCommandLineParser &parser, const QString &name, int lo, int hi);
+// A count written as digits or in exponent form ("1e9"), whole, from lo to hi.
+std::uint64_t countOption(const QCommandLineParser &parser, const QString &name, double lo,
+                          double hi);
+double realOption(const QCommandLineParser &parser, const QString &name, double lo, double hi);
+// "point:x,y", "segment:x1,y1,x2,y2", "triangle:...", "polygon:...", "points:..." (x,y,z with
+// dim 3): the kind, and the points into *points.
+StartSet::Kind parseStart(const QString &text, Mat *points, int dim = 2);
+// The points F^depth(start) makes (Failure when more than maxPoints).
+double requirePointBudget(const DerivedIfs &d, const StartSet &start, int depth,
+                          double maxPoints);
+// The item's project in the figure file (PNG text chunk, SVG metadata): it reopens as is.
+FigureMetadata figureMetadata(const Project &project, const Item &item);
 
 // Runs a command's body: a Failure or an InputError becomes its message on stderr and the exit
 // code.

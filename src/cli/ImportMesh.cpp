@@ -14,35 +14,27 @@
 
 namespace awb::cli {
 
-namespace {
-
-struct ImportMeshTr {
-    Q_DECLARE_TR_FUNCTIONS(awb::cli)
-};
-
-} // namespace
-
 int importMesh(const QStringList &args)
 {
     return guarded([&] {
         QCommandLineParser parser;
-        parser.setApplicationDescription(ImportMeshTr::tr(
+        parser.setApplicationDescription(CliTr::tr(
             "Make a project of a mesh file (OBJ, OFF, PLY ASCII or binary): one subdivision-mesh "
             "item with the file's vertices, in its numbering, and its polygons."));
-        parser.addPositionalArgument("mesh", ImportMeshTr::tr("The mesh file."));
+        parser.addPositionalArgument("mesh", CliTr::tr("The mesh file."));
         parser.addOptions(
-            {{"scheme", ImportMeshTr::tr("catmull-clark (any polygons, the default) or loop "
+            {{"scheme", CliTr::tr("catmull-clark (any polygons, the default) or loop "
                                          "(triangles)."),
               "scheme", "catmull-clark"},
-             {"out", ImportMeshTr::tr("The project file to write (.awb)."), "file"},
-             {"name", ImportMeshTr::tr("The item's name (default: the file's base name)."),
+             {"out", CliTr::tr("The project file to write (.awb)."), "file"},
+             {"name", CliTr::tr("The item's name (default: the file's base name)."),
               "name"}});
         parseOrFail(parser, args, 1);
         if (!parser.isSet("out"))
-            throw Failure{ImportMeshTr::tr("--out PROJECT.awb is required"), 2};
+            throw Failure{CliTr::tr("--out PROJECT.awb is required"), 2};
         const int scheme = MeshInputs::schemeNames().indexOf(parser.value("scheme").toLower());
         if (scheme < 0)
-            throw Failure{ImportMeshTr::tr("--scheme must be catmull-clark or loop, got '%1'")
+            throw Failure{CliTr::tr("--scheme must be catmull-clark or loop, got '%1'")
                               .arg(parser.value("scheme")),
                           2};
         const QString file = parser.positionalArguments().first();
@@ -60,13 +52,13 @@ int importMesh(const QStringList &args)
         const QString name =
             parser.isSet("name") ? parser.value("name") : QFileInfo(file).completeBaseName();
         if (!name.isEmpty() && !item->setName(name))
-            throw Failure{ImportMeshTr::tr("'%1' cannot be an item's name").arg(name), 2};
+            throw Failure{CliTr::tr("'%1' cannot be an item's name").arg(name), 2};
         SubdivisionMeshItem *added = static_cast<SubdivisionMeshItem *>(
             project.addItem(std::move(item)));
         if (!project.saveAs(parser.value("out"), &error))
             throw Failure{error};
         const auto extraordinary = added->extraordinary();
-        out() << ImportMeshTr::tr("%1: item '%2', %3 vertices, %4 faces, %5 extraordinary "
+        out() << CliTr::tr("%1: item '%2', %3 vertices, %4 faces, %5 extraordinary "
                                   "vertices (%6)\n")
                      .arg(parser.value("out"), added->name())
                      .arg(mesh.vertices.rows())
@@ -74,7 +66,7 @@ int importMesh(const QStringList &args)
                      .arg(extraordinary.size())
                      .arg(MeshInputs::schemeNames().at(scheme));
         if (!added->derivedError().isEmpty())
-            err() << ImportMeshTr::tr("attractor-cli: note: %1").arg(added->derivedError()) << "\n";
+            err() << CliTr::tr("attractor-cli: note: %1").arg(added->derivedError()) << "\n";
         return 0;
     });
 }

@@ -1,6 +1,7 @@
 #pragma once
-// The project commands of attractor-cli: render, animate, analyse, points, check, rewrite, export. Each takes the
-// command's arguments (argv[0] = "attractor-cli <command>") and returns the exit code:
+// The commands of attractor-cli, one file each (Render.cpp, Animate.cpp, Analyse.cpp, Points.cpp,
+// Check.cpp, Rewrite.cpp, Export.cpp, Polygon.cpp, ImportMesh.cpp). Each takes the command's
+// arguments (argv[0] = "attractor-cli <command>") and returns the exit code:
 // 0 success, 1 bad input (file, item, option values), 2 usage error, 3 the project loads but an
 // item cannot be computed (check).
 

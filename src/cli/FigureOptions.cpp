@@ -1,0 +1,260 @@
+// How a figure of an item is drawn: the options `render` and `animate` share, and the
+// drawing itself (plane attractors, surfaces and meshes).
+
+#include "cli/FigureOptions.h"
+#include "cli/CommandSupport.h"
+#include "cli/ProjectCommands.h"
+
+#include "cli/FigureRenderer.h"
+#include "core/analysis/Geometry.h"
+#include "core/analysis/Spectrum.h"
+#include "model/Animation.h"
+#include "model/FigureMetadata.h"
+#include "model/AttractorItem.h"
+#include "model/ExactCurve.h"
+#include "model/FileWriting.h"
+#include "model/ItemAddress.h"
+#include "model/NumberFormat.h"
+#include "model/PointExport.h"
+#include "model/Project.h"
+#include "model/SchemeRegularity.h"
+#include "model/NormalVectorItem.h"
+#include "model/SubdivisionCurveItem.h"
+#include "core/schemes/NormalVectorScheme.h"
+#include "core/schemes/Scheme.h"
+#include "model/SubdivisionSurfaceItem.h"
+#include "model/SubdivisionMeshItem.h"
+#include "model/MeshAnalysisJson.h"
+#include "core/mesh/MeshFiles.h"
+#include "core/mesh/MeshRefine.h"
+#include "core/ifs/SurfaceIfs.h"
+#include "render/SurfaceFigure.h"
+
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QRegularExpression>
+#include <QTextStream>
+
+#include <sstream>
+
+namespace awb::cli {
+
+// The options of `render` that `animate` shares: how a figure of an item is drawn.
+QList<QCommandLineOption> figureOptionList()
+{
+    return {{"size", CliTr::tr("Image size in pixels (default 900x700)."), "WxH", "900x700"},
+            {"depth", CliTr::tr("Deterministic iteration depth (default: the item's)."), "k"},
+            {"samples", CliTr::tr("Random iteration with this many points (up to 1e12; "
+                               "memory stays that of the raster)."), "n"},
+            {"tone", CliTr::tr("Raster tone: 'hits' (every lit pixel opaque, the papers' "
+                            "look) or 'density' (log density of the invariant measure, "
+                            "gamma and vibrancy as flame renderers). Default: the item's "
+                            "style (auto: hits for deterministic, density for random "
+                            "iteration)."),
+             "hits|density"},
+            {"gamma", CliTr::tr("Density tone: display gamma (default: the item's, 2.2)."), "g"},
+            {"vibrancy", CliTr::tr("Density tone: 1 saturated colours, 0 per-channel "
+                                "gamma (default 1)."), "v", "1"},
+            {"supersample", CliTr::tr("Histogram cells per pixel side, 1..4 (default 1; "
+                                   "2 or 3 anti-alias edges)."), "s", "1"},
+            {"threads", CliTr::tr("Threads of the raster engine (default: all cores)."), "n"},
+            {"view", CliTr::tr("Surfaces: the camera's azimuth and elevation in degrees "
+                            "(orthographic; default: the item's camera)."),
+             "az,el"},
+            {"bounds", CliTr::tr("Plane figures: the world rectangle to frame (padded by 6%), e.g. to "
+                              "compare figures at one scale (default: fit the content)."),
+             "x0,y0,x1,y1"},
+            {"format", CliTr::tr("The output's format when its name has no suffix (e.g. /dev/stdout): "
+                              "png, svg or pdf (default: the suffix)."),
+             "png|svg|pdf"}};
+}
+
+
+FigureOptions figureOptions(const QCommandLineParser &parser)
+{
+    FigureOptions o;
+    if (parser.isSet("depth") && parser.isSet("samples"))
+        throw Failure{CliTr::tr("--depth and --samples exclude each other"), 2};
+    const QRegularExpression sizeRe("^(\\d+)x(\\d+)$");
+    const auto sm = sizeRe.match(parser.value("size"));
+    if (!sm.hasMatch() || sm.captured(1).toInt() < 64 || sm.captured(2).toInt() < 64
+        || sm.captured(1).toInt() > 16384 || sm.captured(2).toInt() > 16384)
+        throw Failure{CliTr::tr("--size must be WxH with 64..16384 pixels each, got '%1'")
+                          .arg(parser.value("size"))};
+    o.width = sm.captured(1).toInt();
+    o.height = sm.captured(2).toInt();
+    if (parser.isSet("depth"))
+        o.depth = intOption(parser, "depth", 0, 64);
+    if (parser.isSet("samples"))
+        o.samples = countOption(parser, "samples", 1, double(kMaxChaosSamples));
+    o.tone = parser.value("tone");
+    if (!o.tone.isEmpty() && o.tone != "hits" && o.tone != "density")
+        throw Failure{CliTr::tr("--tone must be 'hits' or 'density', got '%1'").arg(o.tone), 2};
+    if (parser.isSet("gamma"))
+        o.gamma = realOption(parser, "gamma", 0.2, 10);
+    o.vibrancy = realOption(parser, "vibrancy", 0, 1);
+    o.supersample = intOption(parser, "supersample", 1, 4);
+    if (parser.isSet("threads"))
+        o.threads = intOption(parser, "threads", 1, 64);
+    if (parser.isSet("view"))
+        o.view = parser.value("view");
+    if (parser.isSet("bounds")) {
+        const QStringList parts = parser.value("bounds").split(',');
+        double v[4] = {};
+        bool ok = parts.size() == 4;
+        for (int i = 0; ok && i < 4; ++i)
+            v[i] = parts[i].trimmed().toDouble(&ok), ok = ok && std::isfinite(v[i]);
+        if (!ok || !(v[2] > v[0]) || !(v[3] > v[1]))
+            throw Failure{CliTr::tr("--bounds must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, got '%1'")
+                              .arg(parser.value("bounds"))};
+        o.bounds = QRectF(QPointF(v[0], v[1]), QPointF(v[2], v[3]));
+    }
+    if (parser.isSet("format")) {
+        o.format = parser.value("format").toLower();
+        if (o.format != "png" && o.format != "svg" && o.format != "pdf")
+            throw Failure{CliTr::tr("--format must be png, svg or pdf, got '%1'")
+                              .arg(parser.value("format")), 2};
+    }
+    return o;
+}
+
+// Draws `item` (of `project`, or a copy of one of its items: an animation frame) as
+// `render` does and writes the figure to `outFile`; or, with `measure`, only measures the
+// world rectangle the figure would fit (invalid for surfaces). Throws Failure.
+void renderFigure(const Project &project, AttractorItem *item, const FigureOptions &o,
+                  const QString &outFile, QRectF *measure)
+{
+    auto d = derived(item);
+    const AlgorithmSpec &alg = item->algorithm();
+    FigureSpec spec;
+    spec.ifs = &d->ifs;
+    spec.iterate = d->iterate;
+    spec.random = o.samples || (alg.mode == AlgorithmSpec::Mode::Random && !o.depth);
+    spec.samples = o.samples ? *o.samples : std::uint64_t(alg.samples);
+    spec.seed = std::uint64_t(alg.seed);
+    spec.tone.mode =
+        o.tone == "density" || (o.tone.isEmpty() && item->style().densityTone(spec.random))
+            ? Accumulation::Density
+            : Accumulation::Hits;
+    spec.tone.gamma = o.gamma ? *o.gamma : item->style().gamma;
+    spec.colouring = attractorColouring(item->style());  // as the application's view draws it
+    spec.tone.vibrancy = o.vibrancy;
+    spec.supersample = o.supersample;
+    if (o.threads > 0)
+        spec.threads = o.threads;
+    const int depth = o.depth ? *o.depth : alg.depth;
+    if (d->ifs.size() > 0 && !spec.random && !d->iterate) {
+        const IfsCheck check = checkIfs(d->ifs);
+        if (!check.contractive)
+            throw Failure{CliTr::tr("item '%1': %2").arg(item->name(),
+                                                       QString::fromStdString(check.message))};
+        const double images = imageCount(d->ifs, depth);
+        if (images > 4e9)
+            throw Failure{CliTr::tr("depth %1 makes %2 images; at most 4e9 are rendered")
+                              .arg(depth)
+                              .arg(images, 0, 'g', 3)};
+    }
+    if (d->ifs.size() > 0 || d->iterate)
+        spec.start = item->coreStartSet(*d);
+    const auto *mesh = qobject_cast<const SubdivisionMeshItem *>(item);
+    if (d->surface || mesh) {
+        const auto *surface = qobject_cast<const SubdivisionSurfaceItem *>(item);
+        const SurfaceCamera camera = surface ? surface->camera() : SurfaceCamera{};
+        const QStringList view =
+            !o.view.isEmpty() ? o.view.split(',')
+                                 : QStringList{QString::number(camera.azimuth, 'g', 17),
+                                               QString::number(camera.elevation, 'g', 17)};
+        bool okA = false, okE = false;
+        const double az = view.value(0).toDouble(&okA), el = view.value(1).toDouble(&okE);
+        if (view.size() != 2 || !okA || !okE || !std::isfinite(az) || std::abs(el) > 90)
+            throw Failure{CliTr::tr("--view must be AZ,EL in degrees with |EL| <= 90, got '%1'")
+                              .arg(o.view)};
+        SurfaceFigureSpec s;
+        s.ifs = &d->ifs;
+        s.iterate = d->iterate;
+        s.start = spec.start;
+        s.depth = depth;
+        s.random = spec.random;
+        s.samples = spec.samples;
+        s.seed = spec.seed;
+        s.mapColors = d->mapIndex;
+        for (int i = 0; i < 18; ++i)
+            s.palette.push_back(mapColor(i));
+        s.pointRadius = std::max(0.5, 0.5 * item->style().pointSize);
+        s.azimuth = az;
+        s.elevation = el;
+        if (surface) {
+            const LatticeMesh net = surface->refinedMesh(0);
+            s.framePoints = net.points;
+            s.netPoints = net.points;
+            s.netFaces = net.faces;
+        } else {
+            s.framePoints = toMatrix(mesh->inputs().vertices, 3);
+            s.netPoints = s.framePoints;
+            s.netFaces = mesh->inputs().faces;
+        }
+        s.width = o.width;
+        s.height = o.height;
+        const QString what = s.random ? CliTr::tr("%1 random points").arg(s.samples)
+                                      : CliTr::tr("F^%1(X0)").arg(depth);
+        QString maps;
+        if (!d->mapIndex.empty()) {
+            QStringList on;
+            for (int i : d->mapIndex)
+                on << QString::number(i + 1);
+            maps = CliTr::tr(", maps %1 of %2").arg(on.join(' ')).arg(d->S.count());
+        }
+        s.caption = CliTr::tr("%1: %2%3 — orthographic view from azimuth %4°, elevation %5°")
+                        .arg(item->name(), what, maps)
+                        .arg(az)
+                        .arg(el);
+        s.metadata = figureMetadata(project, *item);
+        QString error;
+        if (!writeSurfaceFigure(s, outFile, &error, o.format))
+            throw Failure{error};
+        return;
+    }
+    for (int s = 0; s < item->controlPointSetCount(); ++s)
+        if (!item->controlPoints(s).empty()) {
+            spec.controlPolygons.push_back(toMatrix(item->controlPoints(s)));
+            spec.controlClosed.push_back(item->controlPointSetClosed(s));
+        }
+    if (d->polygon) {
+        spec.polygons.push_back(*d->polygon);
+        spec.polygonsClosed.push_back(d->polygonClosed);
+    }
+    if (const auto exact = exactCurveOf(item, 800))
+        spec.overlays.push_back(exact->points);
+    spec.panelWidth = o.width;
+    spec.panelHeight = o.height - 26;
+    QString caption = spec.random
+                          ? CliTr::tr("%1: %2 random points").arg(item->name()).arg(spec.samples)
+                          : CliTr::tr("%1: F^%2(X0)").arg(item->name()).arg(depth);
+    if (d->polygon) // a normal-vector curve: the polygon after `steps` is the figure
+        caption = CliTr::tr("%1: polygon after %2 steps")
+                      .arg(item->name())
+                      .arg(item->parameter("steps").toInt());
+    spec.panels = {{caption + o.captionSuffix, depth}};
+    spec.bounds = o.bounds;
+    if (measure) {
+        *measure = contentBounds(spec);
+        return;
+    }
+    spec.metadata = figureMetadata(project, *item);
+    QString error;
+    if (!writeFigure(spec, outFile, &error, o.format))
+        throw Failure{error};
+}
+
+} // namespace awb::cli

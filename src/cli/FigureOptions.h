@@ -1,0 +1,45 @@
+#pragma once
+// How a figure of an item is drawn (attractor-cli render and animate): the options both take,
+// and the drawing of one item to a file -- a plane attractor, a surface or a mesh.
+
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+#include <QList>
+#include <QRectF>
+#include <QString>
+
+#include <cstdint>
+#include <optional>
+
+namespace awb {
+class AttractorItem;
+class Project;
+} // namespace awb
+
+namespace awb::cli {
+
+struct FigureOptions {
+    int width = 900, height = 700;
+    std::optional<int> depth;
+    std::optional<std::uint64_t> samples;
+    QString tone;  // "", "hits" or "density"
+    std::optional<double> gamma;
+    double vibrancy = 1.0;
+    int supersample = 1;
+    int threads = 0;
+    QString view;  // "az,el" or empty
+    QRectF bounds;  // the world rectangle to frame; invalid: fit the content
+    QString captionSuffix;  // e.g. an animation frame's time and values
+    QString format;  // "", "png", "svg" or "pdf"
+};
+
+// The options of `render` that `animate` shares.
+QList<QCommandLineOption> figureOptionList();
+// Reads them (Failure for a value out of range).
+FigureOptions figureOptions(const QCommandLineParser &parser);
+// Draws `item` into `outFile` (PNG, SVG, PDF by o.format or the suffix); with `measure`, only
+// the bounds of the content are measured into it.
+void renderFigure(const Project &project, AttractorItem *item, const FigureOptions &o,
+                  const QString &outFile, QRectF *measure = nullptr);
+
+} // namespace awb::cli

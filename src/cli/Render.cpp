@@ -1,0 +1,77 @@
+// attractor-cli render: an item to PNG, SVG or PDF.
+
+#include "cli/FigureOptions.h"
+#include "cli/CommandSupport.h"
+#include "cli/ProjectCommands.h"
+
+#include "cli/FigureRenderer.h"
+#include "core/analysis/Geometry.h"
+#include "core/analysis/Spectrum.h"
+#include "model/Animation.h"
+#include "model/FigureMetadata.h"
+#include "model/AttractorItem.h"
+#include "model/ExactCurve.h"
+#include "model/FileWriting.h"
+#include "model/ItemAddress.h"
+#include "model/NumberFormat.h"
+#include "model/PointExport.h"
+#include "model/Project.h"
+#include "model/SchemeRegularity.h"
+#include "model/NormalVectorItem.h"
+#include "model/SubdivisionCurveItem.h"
+#include "core/schemes/NormalVectorScheme.h"
+#include "core/schemes/Scheme.h"
+#include "model/SubdivisionSurfaceItem.h"
+#include "model/SubdivisionMeshItem.h"
+#include "model/MeshAnalysisJson.h"
+#include "core/mesh/MeshFiles.h"
+#include "core/mesh/MeshRefine.h"
+#include "core/ifs/SurfaceIfs.h"
+#include "render/SurfaceFigure.h"
+
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QRegularExpression>
+#include <QTextStream>
+
+#include <sstream>
+
+namespace awb::cli {
+
+int render(const QStringList &args)
+{
+    return guarded([&] {
+        QCommandLineParser parser;
+        parser.setApplicationDescription(
+            CliTr::tr("Render an item's attractor (with its control polygons) to PNG, SVG or PDF."));
+        parser.addPositionalArgument("project", CliTr::tr("The .awb project file."));
+        parser.addOptions({{"item", CliTr::tr("The item to render (default: the first with an "
+                                           "attractor)."),
+                            "name"},
+                           {"out", CliTr::tr("Output file: .png, .svg or .pdf."), "file"}});
+        parser.addOptions(figureOptionList());
+        parseOrFail(parser, args, 1);
+        if (!parser.isSet("out"))
+            throw Failure{CliTr::tr("--out FILE is required"), 2};
+        const FigureOptions options = figureOptions(parser);
+        Project project;
+        load(project, parser.positionalArguments().first());
+        renderFigure(project, attractorItem(project, parser.value("item")), options,
+                     parser.value("out"));
+        out() << parser.value("out") << "\n";
+        return 0;
+    });
+}
+
+} // namespace awb::cli
