@@ -862,6 +862,10 @@
         <source>point set %1 has %2 points; an item takes at most %3 per set</source>
         <translation>sada bodů %1 má %2 bodů; položka připouští nejvýše %3 bodů v jedné sadě</translation>
     </message>
+    <message>
+        <source>the start set &quot;vertex-limits&quot; is the limit positions of a mesh&apos;s vertices: a %1 has no mesh</source>
+        <translation>počáteční množina &quot;vertex-limits&quot; jsou limitní polohy vrcholů sítě: položka typu %1 nemá síť</translation>
+    </message>
 </context>
 <context>
     <name>awb::AttractorRenderer</name>
@@ -2383,6 +2387,17 @@ Byla ponechána jako %2.</translation>
     </message>
 </context>
 <context>
+    <name>awb::MeshInputs</name>
+    <message>
+        <source>%1 vertices; a mesh item takes at most %2</source>
+        <translation>%1 vrcholů; položka se sítí jich pojme nejvýše %2</translation>
+    </message>
+    <message>
+        <source>%1 faces; a mesh item takes at most %2</source>
+        <translation>%1 stěn; položka se sítí jich pojme nejvýše %2</translation>
+    </message>
+</context>
+<context>
     <name>awb::MoveControlPointsCommand</name>
     <message numerus="yes">
         <source>Move %n control points of %1</source>
@@ -2783,6 +2798,10 @@ Byla ponechána jako %2.</translation>
         <source>expected a string &quot;#rrggbb&quot;</source>
         <translation>očekáván řetězec &quot;#rrggbb&quot;</translation>
     </message>
+    <message>
+        <source>a &quot;vertex-limits&quot; start set has no points (it starts at the limit positions of the mesh&apos;s vertices)</source>
+        <translation>počáteční množina &quot;vertex-limits&quot; nemá body (začíná v limitních polohách vrcholů sítě)</translation>
+    </message>
 </context>
 <context>
     <name>awb::ProjectTreeModel</name>
@@ -3060,6 +3079,10 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>%1 matrices %2_i, %3 eigenvalues, plotted in the centre; click an eigenvalue to mark its map (its matrices in the Matrices dock).</source>
         <translation>%1 matic %2_i, %3 vlastních čísel, vykreslených uprostřed; kliknutím na vlastní číslo označíte jeho zobrazení (jeho matice v panelu Matice).</translation>
+    </message>
+    <message>
+        <source>Vertex limits</source>
+        <translation>Limitní polohy vrcholů</translation>
     </message>
 </context>
 <context>
@@ -3462,6 +3485,77 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>Subdivision curve</source>
         <translation>Subdivizní křivka</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SubdivisionMeshItem</name>
+    <message>
+        <source>Mesh surface</source>
+        <translation>Plocha ze sítě</translation>
+    </message>
+    <message>
+        <source>Change mesh of %1</source>
+        <translation>Změnit síť položky %1</translation>
+    </message>
+    <message>
+        <source>a mesh surface is drawn by deterministic iteration: random iteration of its pieces is not implemented</source>
+        <translation>plocha ze sítě se kreslí deterministickou iterací: náhodná iterace jejích částí není implementována</translation>
+    </message>
+    <message>
+        <source>each piece of a mesh has the lifted space of its own net</source>
+        <translation>každá část sítě má zdvižený prostor své vlastní sítě</translation>
+    </message>
+    <message>
+        <source>%1 pieces of %2 kinds after %3 isolating steps (docs/mathematics.md, &quot;Extraordinary vertices&quot;)</source>
+        <translation>%1 částí %2 druhů po %3 izolačních krocích (docs/mathematics.md, &quot;Extraordinary vertices&quot;)</translation>
+    </message>
+    <message>
+        <source>expected an array of faces, each an array of vertex numbers</source>
+        <translation>očekáváno pole stěn, každá jako pole čísel vrcholů</translation>
+    </message>
+    <message>
+        <source>expected a face: an array of vertex numbers (0-based)</source>
+        <translation>očekávána stěna: pole čísel vrcholů (číslovaných od 0)</translation>
+    </message>
+    <message>
+        <source>vertex numbers are whole numbers (0-based)</source>
+        <translation>čísla vrcholů jsou celá čísla (číslovaná od 0)</translation>
+    </message>
+    <message>
+        <source>Scheme</source>
+        <translation>Schéma</translation>
+    </message>
+    <message>
+        <source>Catmull–Clark</source>
+        <translation>Catmull–Clark</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>Loop</translation>
+    </message>
+    <message>
+        <source>Loop takes triangle meshes only</source>
+        <translation>Loop přijímá jen trojúhelníkové sítě</translation>
+    </message>
+    <message>
+        <source>Colours</source>
+        <translation>Barvy</translation>
+    </message>
+    <message>
+        <source>By map</source>
+        <translation>Podle zobrazení</translation>
+    </message>
+    <message>
+        <source>By level around extraordinary vertices</source>
+        <translation>Podle úrovně kolem mimořádných vrcholů</translation>
+    </message>
+    <message>
+        <source>Style</source>
+        <translation>Styl</translation>
+    </message>
+    <message>
+        <source>By level: the neighbourhood of an extraordinary vertex as C, f(C), f²(C), … in turn (its IFS with condensation)</source>
+        <translation>Podle úrovně: okolí mimořádného vrcholu postupně jako C, f(C), f²(C), … (jeho IFS s kondenzací)</translation>
     </message>
 </context>
 <context>
@@ -3901,38 +3995,6 @@ Byla ponechána jako %2.</translation>
         <translation>attractor-cli: nelze vytvořit složku %1</translation>
     </message>
     <message>
-        <source>Usage: attractor-cli &lt;command&gt; [options]
-
-Commands:
-  render     render an item of a project to PNG, SVG or PDF
-  animate    render the frames of an item&apos;s animation (PNG files, MP4/GIF)
-  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)
-  points     the points of F^k(X0) as CSV
-  check      validate a project file
-  rewrite    load and save a project in canonical form
-  export     attractor points as PLY, a surface&apos;s subdivided net as OBJ
-  polygon    the control polygon after K subdivision steps (JSON)
-  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG
-
-Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
-</source>
-        <translation>Použití: attractor-cli &lt;command&gt; [options]
-
-Příkazy:
-  render     vykreslí položku projektu do PNG, SVG nebo PDF
-  animate    vykreslí snímky animace položky (soubory PNG, MP4/GIF)
-  analyse    vlastní čísla, kontraktivita, pevné body, dimenze (JSON)
-  points     body F^k(X0) jako CSV
-  check      ověří projektový soubor
-  rewrite    načte a uloží projekt v kanonickém tvaru
-  export     body atraktoru jako PLY, zjemněná síť plochy jako OBJ
-  polygon    řídicí polygon po K krocích subdivize (JSON)
-  examples   vykreslí vestavěné obrázky z článků (000 Figs. 2, 3, 5) do PNG
-
-Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --help&apos;.
-</translation>
-    </message>
-    <message>
         <source>attractor-cli: unknown command &apos;%1&apos;</source>
         <translation>attractor-cli: neznámý příkaz „%1“</translation>
     </message>
@@ -4221,10 +4283,6 @@ meze: %9
         <translation>Hloubka iterace (výchozí: podle položky).</translation>
     </message>
     <message>
-        <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2; default: the item&apos;s).</source>
-        <translation>Počáteční množina: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (rovinné souřadnice; u plochy x,y,z) | lifted:x,y,c1,...;x,y,c1,... (body zdviženého prostoru z 000 §2; výchozí: podle položky).</translation>
-    </message>
-    <message>
         <source>Print CSV (the only format so far).</source>
         <translation>Vypsat CSV (zatím jediný formát).</translation>
     </message>
@@ -4279,10 +4337,6 @@ meze: %9
 </translation>
     </message>
     <message>
-        <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), or a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh.</source>
-        <translation>Exportuje geometrii položky: atraktor F^k(X0) jako mračno bodů PLY (u každého bodu s naposledy použitým zobrazením), nebo síť plošné položky po k kolech klasické subdivize jako polygonovou síť OBJ.</translation>
-    </message>
-    <message>
         <source>ply (attractor points) or obj (subdivided mesh).</source>
         <translation>ply (body atraktoru) nebo obj (zjemněná síť).</translation>
     </message>
@@ -4293,10 +4347,6 @@ meze: %9
     <message>
         <source>PLY: iteration depth (default: the item&apos;s).</source>
         <translation>PLY: hloubka iterace (výchozí: podle položky).</translation>
-    </message>
-    <message>
-        <source>OBJ: rounds of subdivision (default: the item&apos;s).</source>
-        <translation>OBJ: počet kol subdivize (výchozí: podle položky).</translation>
     </message>
     <message>
         <source>PLY: refuse to write more (default 50000000).</source>
@@ -4313,10 +4363,6 @@ meze: %9
     <message>
         <source>cannot write %1: %2</source>
         <translation>%1 nelze zapsat: %2</translation>
-    </message>
-    <message>
-        <source>item &apos;%1&apos; is drawn by an automaton: PLY export covers items with one IFS</source>
-        <translation>položka „%1“ je kreslena automatem: export do PLY podporuje jen položky s jedním IFS</translation>
     </message>
     <message>
         <source>OBJ export writes the subdivided net of a surface item; &apos;%1&apos; is a %2</source>
@@ -4349,6 +4395,106 @@ meze: %9
     <message>
         <source>nothing to draw</source>
         <translation>není co kreslit</translation>
+    </message>
+    <message>
+        <source>Make a project of a mesh file (OBJ, OFF, PLY ASCII or binary): one subdivision-mesh item with the file&apos;s vertices, in its numbering, and its polygons.</source>
+        <translation>Vytvoří projekt ze souboru sítě (OBJ, OFF, PLY ASCII nebo binární): jednu položku subdivision-mesh s vrcholy souboru v jeho číslování a s jeho polygony.</translation>
+    </message>
+    <message>
+        <source>The mesh file.</source>
+        <translation>Soubor sítě.</translation>
+    </message>
+    <message>
+        <source>catmull-clark (any polygons, the default) or loop (triangles).</source>
+        <translation>catmull-clark (libovolné polygony, výchozí) nebo loop (trojúhelníky).</translation>
+    </message>
+    <message>
+        <source>The project file to write (.awb).</source>
+        <translation>Projektový soubor, který se má zapsat (.awb).</translation>
+    </message>
+    <message>
+        <source>The item&apos;s name (default: the file&apos;s base name).</source>
+        <translation>Název položky (výchozí: název souboru bez přípony).</translation>
+    </message>
+    <message>
+        <source>--out PROJECT.awb is required</source>
+        <translation>--out PROJECT.awb je povinné</translation>
+    </message>
+    <message>
+        <source>--scheme must be catmull-clark or loop, got &apos;%1&apos;</source>
+        <translation>--scheme musí být catmull-clark nebo loop, zadáno „%1“</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; cannot be an item&apos;s name</source>
+        <translation>„%1“ nemůže být názvem položky</translation>
+    </message>
+    <message>
+        <source>%1: item &apos;%2&apos;, %3 vertices, %4 faces, %5 extraordinary vertices (%6)
+</source>
+        <translation>%1: položka „%2“, %3 vrcholů, %4 stěn, %5 mimořádných vrcholů (%6)
+</translation>
+    </message>
+    <message>
+        <source>attractor-cli: note: %1</source>
+        <translation>attractor-cli: poznámka: %1</translation>
+    </message>
+    <message>
+        <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2) | vertex-limits (a mesh item: the limit positions of the vertices of the mesh refined k times; default: the item&apos;s).</source>
+        <translation>Počáteční množina: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (rovinné souřadnice; u plochy x,y,z) | lifted:x,y,c1,...;x,y,c1,... (body zdviženého prostoru z 000 §2) | vertex-limits (položka se sítí: limitní polohy vrcholů sítě zjemněné k-krát; výchozí: podle položky).</translation>
+    </message>
+    <message>
+        <source>--start vertex-limits needs a mesh item; &apos;%1&apos; is a %2</source>
+        <translation>--start vertex-limits vyžaduje položku se sítí; „%1“ je typu %2</translation>
+    </message>
+    <message>
+        <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ).</source>
+        <translation>Exportuje geometrii položky: atraktor F^k(X0) jako mračno bodů PLY (u každého bodu s naposledy použitým zobrazením), síť plošné položky po k kolech klasické subdivize jako polygonovou síť OBJ, nebo položku se sítí po k krocích s každým vrcholem v jeho limitní poloze (OBJ).</translation>
+    </message>
+    <message>
+        <source>OBJ: rounds of subdivision (default: the item&apos;s; a mesh item: its depth, at most 6).</source>
+        <translation>OBJ: počet kol subdivize (výchozí: podle položky; u položky se sítí její hloubka, nejvýše 6).</translation>
+    </message>
+    <message>
+        <source>%1 steps give %2 vertices: too many</source>
+        <translation>%1 kroků dává %2 vrcholů: příliš mnoho</translation>
+    </message>
+    <message>
+        <source>Attractor Workbench: item %1, %2 after %3 steps, every vertex at its limit position</source>
+        <translation>Attractor Workbench: položka %1, %2 po %3 krocích, každý vrchol v limitní poloze</translation>
+    </message>
+    <message>
+        <source>Usage: attractor-cli &lt;command&gt; [options]
+
+Commands:
+  render     render an item of a project to PNG, SVG or PDF
+  animate    render the frames of an item&apos;s animation (PNG files, MP4/GIF)
+  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)
+  points     the points of F^k(X0) as CSV
+  check      validate a project file
+  rewrite    load and save a project in canonical form
+  export     attractor points as PLY, a subdivided net or mesh (limit) as OBJ
+  polygon    the control polygon after K subdivision steps (JSON)
+  import-mesh  a mesh file (OBJ, OFF, PLY) as a project with a mesh item
+  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG
+
+Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
+</source>
+        <translation>Použití: attractor-cli &lt;command&gt; [options]
+
+Příkazy:
+  render     vykreslí položku projektu do PNG, SVG nebo PDF
+  animate    vykreslí snímky animace položky (soubory PNG, MP4/GIF)
+  analyse    vlastní čísla, kontraktivita, pevné body, dimenze (JSON)
+  points     body F^k(X0) jako CSV
+  check      ověří projektový soubor
+  rewrite    načte a uloží projekt v kanonickém tvaru
+  export     body atraktoru jako PLY, zjemněná síť nebo síť (v limitě) jako OBJ
+  polygon    řídicí polygon po K krocích subdivize (JSON)
+  import-mesh  soubor sítě (OBJ, OFF, PLY) jako projekt s položkou se sítí
+  examples   vykreslí vestavěné obrázky z článků (000 Figs. 2, 3, 5) do PNG
+
+Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --help&apos;.
+</translation>
     </message>
 </context>
 <context>
@@ -5077,6 +5223,222 @@ meze: %9
     <message>
         <source>a characteristic map needs ring x 2 points</source>
         <translation>charakteristické zobrazení potřebuje body prstence × 2</translation>
+    </message>
+    <message>
+        <source>a grid needs 1 to 1000 quads a side, got %1 x %2</source>
+        <translation>mřížka potřebuje 1 až 1000 čtyřúhelníků na stranu, zadáno %1 x %2</translation>
+    </message>
+    <message>
+        <source>there is no example mesh &apos;%1&apos;</source>
+        <translation>síť „%1“ mezi příklady neexistuje</translation>
+    </message>
+    <message>
+        <source>%1, line %2</source>
+        <translation>%1, řádek %2</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number</source>
+        <translation>%1: „%2“ není číslo</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a finite number</source>
+        <translation>%1: „%2“ není konečné číslo</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a whole number</source>
+        <translation>%1: „%2“ není celé číslo</translation>
+    </message>
+    <message>
+        <source>%1: a vertex needs 3 coordinates, this one has %2</source>
+        <translation>%1: vrchol potřebuje 3 souřadnice, tento jich má %2</translation>
+    </message>
+    <message>
+        <source>%1: a face needs at least 3 vertices, this one has %2</source>
+        <translation>%1: stěna potřebuje alespoň 3 vrcholy, tato jich má %2</translation>
+    </message>
+    <message>
+        <source>%1: vertex index %2 is out of range (the file has %3 vertices)</source>
+        <translation>%1: index vrcholu %2 je mimo rozsah (soubor má %3 vrcholů)</translation>
+    </message>
+    <message>
+        <source>%1 holds no vertices</source>
+        <translation>%1 neobsahuje žádné vrcholy</translation>
+    </message>
+    <message>
+        <source>%1 holds no faces: not a polygon mesh</source>
+        <translation>%1 neobsahuje žádné stěny: není to polygonová síť</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a face corner (v, v/vt, v//vn or v/vt/vn, nonzero whole numbers)</source>
+        <translation>%1: „%2“ není roh stěny (v, v/vt, v//vn nebo v/vt/vn, nenulová celá čísla)</translation>
+    </message>
+    <message>
+        <source>%1: relative vertex index %2 is out of range (%3 vertices precede it)</source>
+        <translation>%1: relativní index vrcholu %2 je mimo rozsah (předchází mu %3 vrcholů)</translation>
+    </message>
+    <message>
+        <source>%1 is not a valid OBJ file (tinyobjloader: %2)</source>
+        <translation>%1 není platný soubor OBJ (tinyobjloader: %2)</translation>
+    </message>
+    <message>
+        <source>%1 is empty</source>
+        <translation>soubor %1 je prázdný</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a header this reader takes: ASCII OFF of 3D points ([ST][C][N]OFF)</source>
+        <translation>%1: „%2“ není hlavička, kterou tento čtecí modul přijímá: ASCII OFF s body ve 3D ([ST][C][N]OFF)</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not the counts line (vertices, faces and edges) of an OFF file</source>
+        <translation>%1: „%2“ není řádek s počty (vrcholů, stěn a hran) souboru OFF</translation>
+    </message>
+    <message>
+        <source>%1: %2 vertices and %3 faces need more lines than the %4 left in the file</source>
+        <translation>%1: %2 vrcholů a %3 stěn potřebuje více řádků, než kolik jich v souboru zbývá (%4)</translation>
+    </message>
+    <message>
+        <source>%1 ends after %2 of its %3 vertices</source>
+        <translation>%1 končí po %2 z %3 vrcholů</translation>
+    </message>
+    <message>
+        <source>%1 ends after %2 of its %3 faces</source>
+        <translation>%1 končí po %2 z %3 stěn</translation>
+    </message>
+    <message>
+        <source>%1: the face announces %2 vertices but lists %3</source>
+        <translation>%1: stěna ohlašuje %2 vrcholů, ale uvádí %3</translation>
+    </message>
+    <message>
+        <source>%1: data after the last face (the counts announce %2 vertices and %3 faces)</source>
+        <translation>%1: data za poslední stěnou (počty ohlašují %2 vrcholů a %3 stěn)</translation>
+    </message>
+    <message>
+        <source>%1: a property outside any element</source>
+        <translation>%1: vlastnost mimo jakýkoli element</translation>
+    </message>
+    <message>
+        <source>%1: unknown PLY property type &apos;%2&apos;</source>
+        <translation>%1: neznámý typ vlastnosti PLY „%2“</translation>
+    </message>
+    <message>
+        <source>%1: a list&apos;s length needs a whole-number type</source>
+        <translation>%1: délka seznamu vyžaduje celočíselný typ</translation>
+    </message>
+    <message>
+        <source>%1: property %2 appears twice in element %3</source>
+        <translation>%1: vlastnost %2 se v elementu %3 vyskytuje dvakrát</translation>
+    </message>
+    <message>
+        <source>%1 is not a PLY file (its first line is not &apos;ply&apos;)</source>
+        <translation>%1 není soubor PLY (jeho první řádek není „ply“)</translation>
+    </message>
+    <message>
+        <source>%1: the PLY header has no end_header line</source>
+        <translation>%1: hlavička PLY nemá řádek end_header</translation>
+    </message>
+    <message>
+        <source>%1: unsupported PLY format &apos;%2&apos; (ascii, binary_little_endian or binary_big_endian 1.0)</source>
+        <translation>%1: nepodporovaný formát PLY „%2“ (ascii, binary_little_endian nebo binary_big_endian 1.0)</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a valid count</source>
+        <translation>%1: „%2“ není platný počet</translation>
+    </message>
+    <message>
+        <source>%1: element %2 appears twice</source>
+        <translation>%1: element %2 se vyskytuje dvakrát</translation>
+    </message>
+    <message>
+        <source>%1: unknown PLY header line &apos;%2&apos;</source>
+        <translation>%1: neznámý řádek hlavičky PLY „%2“</translation>
+    </message>
+    <message>
+        <source>%1: the PLY header has no format line</source>
+        <translation>%1: hlavička PLY nemá řádek format</translation>
+    </message>
+    <message>
+        <source>%1: the vertex element needs the scalar properties x, y and z</source>
+        <translation>%1: element vertex potřebuje skalární vlastnosti x, y a z</translation>
+    </message>
+    <message>
+        <source>%1: the face element needs one list property vertex_indices (or vertex_index) of whole numbers</source>
+        <translation>%1: element face potřebuje jednu seznamovou vlastnost vertex_indices (nebo vertex_index) s celými čísly</translation>
+    </message>
+    <message>
+        <source>%1, line %2 (%3 %4)</source>
+        <translation>%1, řádek %2 (%3 %4)</translation>
+    </message>
+    <message>
+        <source>%1, %2 %3 (byte %4)</source>
+        <translation>%1, %2 %3 (bajt %4)</translation>
+    </message>
+    <message>
+        <source>%1: element %2 claims %3 items, more than the rest of the file can hold</source>
+        <translation>%1: element %2 uvádí %3 záznamů, víc, než se vejde do zbytku souboru</translation>
+    </message>
+    <message>
+        <source>%1: the data ends early (truncated)</source>
+        <translation>%1: data končí předčasně (soubor je zkrácený)</translation>
+    </message>
+    <message>
+        <source>%1: data after the last element (the header&apos;s counts do not match the data)</source>
+        <translation>%1: data za posledním elementem (počty v hlavičce neodpovídají datům)</translation>
+    </message>
+    <message>
+        <source>%1, byte %2</source>
+        <translation>%1, bajt %2</translation>
+    </message>
+    <message>
+        <source>%1: list length %2 is negative</source>
+        <translation>%1: délka seznamu %2 je záporná</translation>
+    </message>
+    <message>
+        <source>%1 has no file extension (expected .obj, .off or .ply)</source>
+        <translation>%1 nemá příponu souboru (očekávána .obj, .off nebo .ply)</translation>
+    </message>
+    <message>
+        <source>unknown mesh file extension &apos;%1&apos; of %2 (expected .obj, .off or .ply)</source>
+        <translation>neznámá přípona souboru sítě „%1“ u %2 (očekávána .obj, .off nebo .ply)</translation>
+    </message>
+    <message>
+        <source>cannot open %1</source>
+        <translation>%1 nelze otevřít</translation>
+    </message>
+    <message>
+        <source>cannot read %1</source>
+        <translation>%1 nelze přečíst</translation>
+    </message>
+    <message>
+        <source>%1: a NUL byte: not a text file</source>
+        <translation>%1: bajt NUL: není to textový soubor</translation>
+    </message>
+    <message>
+        <source>the mesh has %1 vertices, but %2 positions were given</source>
+        <translation>síť má %1 vrcholů, ale bylo zadáno %2 poloh</translation>
+    </message>
+    <message>
+        <source>mesh vertices</source>
+        <translation>vrcholy sítě</translation>
+    </message>
+    <message>
+        <source>depth %1 makes about %2 points; at most 2^31 are drawn</source>
+        <translation>hloubka %1 dává asi %2 bodů; vykresluje se nejvýše 2^31</translation>
+    </message>
+    <message>
+        <source>the mesh has more than %1 kinds of neighbourhood</source>
+        <translation>síť má více než %1 druhů okolí</translation>
+    </message>
+    <message>
+        <source>vertex %1 has %2 edges; the workbench takes valences up to %3</source>
+        <translation>vrchol %1 má %2 hran; Attractor Workbench přijímá valence nejvýše %3</translation>
+    </message>
+    <message>
+        <source>face %1 has %2 sides; the workbench takes faces of up to %3</source>
+        <translation>stěna %1 má %2 stran; Attractor Workbench přijímá stěny s nejvýše %3 stranami</translation>
+    </message>
+    <message>
+        <source>the irregular vertices do not separate</source>
+        <translation>nepravidelné vrcholy se neoddělí</translation>
     </message>
 </context>
 <context>

@@ -861,6 +861,10 @@
         <source>point set %1 has %2 points; an item takes at most %3 per set</source>
         <translation>l’ensemble de points %1 a %2 points&#x202f;; un élément en accepte au plus %3 par ensemble</translation>
     </message>
+    <message>
+        <source>the start set &quot;vertex-limits&quot; is the limit positions of a mesh&apos;s vertices: a %1 has no mesh</source>
+        <translation>l’ensemble initial &quot;vertex-limits&quot; est formé des positions limites des sommets d’un maillage&#xa0;: un élément de type %1 n’a pas de maillage</translation>
+    </message>
 </context>
 <context>
     <name>awb::AttractorRenderer</name>
@@ -2380,6 +2384,17 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
 </context>
 <context>
+    <name>awb::MeshInputs</name>
+    <message>
+        <source>%1 vertices; a mesh item takes at most %2</source>
+        <translation>%1 sommets&#x202f;; un élément maillage en accepte au plus %2</translation>
+    </message>
+    <message>
+        <source>%1 faces; a mesh item takes at most %2</source>
+        <translation>%1 faces&#x202f;; un élément maillage en accepte au plus %2</translation>
+    </message>
+</context>
+<context>
     <name>awb::MoveControlPointsCommand</name>
     <message numerus="yes">
         <source>Move %n control points of %1</source>
@@ -2778,6 +2793,10 @@ Elle a été conservée sous le nom %2.</translation>
         <source>expected a string &quot;#rrggbb&quot;</source>
         <translation>chaîne &quot;#rrggbb&quot; attendue</translation>
     </message>
+    <message>
+        <source>a &quot;vertex-limits&quot; start set has no points (it starts at the limit positions of the mesh&apos;s vertices)</source>
+        <translation>un ensemble initial &quot;vertex-limits&quot; n’a pas de points (il part des positions limites des sommets du maillage)</translation>
+    </message>
 </context>
 <context>
     <name>awb::ProjectTreeModel</name>
@@ -3054,6 +3073,10 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>%1 matrices %2_i, %3 eigenvalues, plotted in the centre; click an eigenvalue to mark its map (its matrices in the Matrices dock).</source>
         <translation>%1 matrices %2_i, %3 valeurs propres, tracées au centre ; cliquez sur une valeur propre pour marquer son application (ses matrices dans le panneau Matrices).</translation>
+    </message>
+    <message>
+        <source>Vertex limits</source>
+        <translation>Positions limites des sommets</translation>
     </message>
 </context>
 <context>
@@ -3456,6 +3479,77 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>Subdivision curve</source>
         <translation>Courbe de subdivision</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SubdivisionMeshItem</name>
+    <message>
+        <source>Mesh surface</source>
+        <translation>Surface de maillage</translation>
+    </message>
+    <message>
+        <source>Change mesh of %1</source>
+        <translation>Modifier le maillage de %1</translation>
+    </message>
+    <message>
+        <source>a mesh surface is drawn by deterministic iteration: random iteration of its pieces is not implemented</source>
+        <translation>une surface de maillage est tracée par itération déterministe&#xa0;: l’itération aléatoire de ses morceaux n’est pas implémentée</translation>
+    </message>
+    <message>
+        <source>each piece of a mesh has the lifted space of its own net</source>
+        <translation>chaque morceau d’un maillage a l’espace relevé de son propre réseau</translation>
+    </message>
+    <message>
+        <source>%1 pieces of %2 kinds after %3 isolating steps (docs/mathematics.md, &quot;Extraordinary vertices&quot;)</source>
+        <translation>%1 morceaux de %2 types après %3 étapes d’isolement (docs/mathematics.md, &quot;Extraordinary vertices&quot;)</translation>
+    </message>
+    <message>
+        <source>expected an array of faces, each an array of vertex numbers</source>
+        <translation>tableau de faces attendu, chacune étant un tableau de numéros de sommets</translation>
+    </message>
+    <message>
+        <source>expected a face: an array of vertex numbers (0-based)</source>
+        <translation>face attendue&#xa0;: un tableau de numéros de sommets (numérotés à partir de 0)</translation>
+    </message>
+    <message>
+        <source>vertex numbers are whole numbers (0-based)</source>
+        <translation>les numéros de sommets sont des entiers (numérotés à partir de 0)</translation>
+    </message>
+    <message>
+        <source>Scheme</source>
+        <translation>Schéma</translation>
+    </message>
+    <message>
+        <source>Catmull–Clark</source>
+        <translation>Catmull–Clark</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>Loop</translation>
+    </message>
+    <message>
+        <source>Loop takes triangle meshes only</source>
+        <translation>Loop ne prend que des maillages triangulaires</translation>
+    </message>
+    <message>
+        <source>Colours</source>
+        <translation>Couleurs</translation>
+    </message>
+    <message>
+        <source>By map</source>
+        <translation>Par application</translation>
+    </message>
+    <message>
+        <source>By level around extraordinary vertices</source>
+        <translation>Par niveau autour des sommets extraordinaires</translation>
+    </message>
+    <message>
+        <source>Style</source>
+        <translation>Style</translation>
+    </message>
+    <message>
+        <source>By level: the neighbourhood of an extraordinary vertex as C, f(C), f²(C), … in turn (its IFS with condensation)</source>
+        <translation>Par niveau&#xa0;: le voisinage d’un sommet extraordinaire, vu tour à tour comme C, f(C), f²(C), … (son IFS avec condensation)</translation>
     </message>
 </context>
 <context>
@@ -3895,38 +3989,6 @@ Elle a été conservée sous le nom %2.</translation>
         <translation>attractor-cli&#xa0;: impossible de créer le répertoire %1</translation>
     </message>
     <message>
-        <source>Usage: attractor-cli &lt;command&gt; [options]
-
-Commands:
-  render     render an item of a project to PNG, SVG or PDF
-  animate    render the frames of an item&apos;s animation (PNG files, MP4/GIF)
-  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)
-  points     the points of F^k(X0) as CSV
-  check      validate a project file
-  rewrite    load and save a project in canonical form
-  export     attractor points as PLY, a surface&apos;s subdivided net as OBJ
-  polygon    the control polygon after K subdivision steps (JSON)
-  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG
-
-Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
-</source>
-        <translation>Utilisation&#xa0;: attractor-cli &lt;commande&gt; [options]
-
-Commandes&#xa0;:
-  render     rendre un élément d’un projet en PNG, SVG ou PDF
-  animate    rendre les images de l’animation d’un élément (fichiers PNG, MP4/GIF)
-  analyse    valeurs propres, contractivité, points fixes, dimension (JSON)
-  points     les points de F^k(X0) en CSV
-  check      valider un fichier de projet
-  rewrite    charger et réenregistrer un projet sous forme canonique
-  export     points de l’attracteur en PLY, réseau subdivisé d’une surface en OBJ
-  polygon    le polygone de contrôle après K étapes de subdivision (JSON)
-  examples   rendre les figures des articles intégrées (000 fig. 2, 3, 5) en PNG
-
-Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les options d’une commande.
-</translation>
-    </message>
-    <message>
         <source>attractor-cli: unknown command &apos;%1&apos;</source>
         <translation>attractor-cli&#xa0;: commande inconnue «&#xa0;%1&#xa0;»</translation>
     </message>
@@ -4215,10 +4277,6 @@ limites&#xa0;: %9
         <translation>Profondeur d’itération (par défaut&#xa0;: celle de l’élément).</translation>
     </message>
     <message>
-        <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2; default: the item&apos;s).</source>
-        <translation>Ensemble initial&#xa0;: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (coordonnées du plan&#x202f;; x,y,z pour une surface) | lifted:x,y,c1,...;x,y,c1,... (points de l’espace relevé de 000 §2&#x202f;; par défaut&#xa0;: celui de l’élément).</translation>
-    </message>
-    <message>
         <source>Print CSV (the only format so far).</source>
         <translation>Produire du CSV (le seul format pour l’instant).</translation>
     </message>
@@ -4273,10 +4331,6 @@ limites&#xa0;: %9
 </translation>
     </message>
     <message>
-        <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), or a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh.</source>
-        <translation>Exporter la géométrie d’un élément&#xa0;: l’attracteur F^k(X0) en nuage de points PLY (avec l’application appliquée en dernier pour chaque point), ou le réseau d’un élément surface après k passes de subdivision classique en maillage OBJ.</translation>
-    </message>
-    <message>
         <source>ply (attractor points) or obj (subdivided mesh).</source>
         <translation>ply (points de l’attracteur) ou obj (maillage subdivisé).</translation>
     </message>
@@ -4287,10 +4341,6 @@ limites&#xa0;: %9
     <message>
         <source>PLY: iteration depth (default: the item&apos;s).</source>
         <translation>PLY&#xa0;: profondeur d’itération (par défaut&#xa0;: celle de l’élément).</translation>
-    </message>
-    <message>
-        <source>OBJ: rounds of subdivision (default: the item&apos;s).</source>
-        <translation>OBJ&#xa0;: passes de subdivision (par défaut&#xa0;: celles de l’élément).</translation>
     </message>
     <message>
         <source>PLY: refuse to write more (default 50000000).</source>
@@ -4307,10 +4357,6 @@ limites&#xa0;: %9
     <message>
         <source>cannot write %1: %2</source>
         <translation>impossible d’écrire %1&#xa0;: %2</translation>
-    </message>
-    <message>
-        <source>item &apos;%1&apos; is drawn by an automaton: PLY export covers items with one IFS</source>
-        <translation>l’élément «&#xa0;%1&#xa0;» est tracé par un automate&#xa0;: l’export PLY ne couvre que les éléments à un seul IFS</translation>
     </message>
     <message>
         <source>OBJ export writes the subdivided net of a surface item; &apos;%1&apos; is a %2</source>
@@ -4343,6 +4389,106 @@ limites&#xa0;: %9
     <message>
         <source>nothing to draw</source>
         <translation>rien à dessiner</translation>
+    </message>
+    <message>
+        <source>Make a project of a mesh file (OBJ, OFF, PLY ASCII or binary): one subdivision-mesh item with the file&apos;s vertices, in its numbering, and its polygons.</source>
+        <translation>Créer un projet à partir d’un fichier de maillage (OBJ, OFF, PLY ASCII ou binaire)&#xa0;: un élément subdivision-mesh avec les sommets du fichier, dans sa numérotation, et ses polygones.</translation>
+    </message>
+    <message>
+        <source>The mesh file.</source>
+        <translation>Le fichier de maillage.</translation>
+    </message>
+    <message>
+        <source>catmull-clark (any polygons, the default) or loop (triangles).</source>
+        <translation>catmull-clark (polygones quelconques, par défaut) ou loop (triangles).</translation>
+    </message>
+    <message>
+        <source>The project file to write (.awb).</source>
+        <translation>Le fichier de projet à écrire (.awb).</translation>
+    </message>
+    <message>
+        <source>The item&apos;s name (default: the file&apos;s base name).</source>
+        <translation>Le nom de l’élément (par défaut&#xa0;: le nom du fichier sans son extension).</translation>
+    </message>
+    <message>
+        <source>--out PROJECT.awb is required</source>
+        <translation>--out PROJET.awb est obligatoire</translation>
+    </message>
+    <message>
+        <source>--scheme must be catmull-clark or loop, got &apos;%1&apos;</source>
+        <translation>--scheme doit valoir catmull-clark ou loop (reçu&#xa0;: «&#xa0;%1&#xa0;»)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; cannot be an item&apos;s name</source>
+        <translation>«&#xa0;%1&#xa0;» ne peut pas être le nom d’un élément</translation>
+    </message>
+    <message>
+        <source>%1: item &apos;%2&apos;, %3 vertices, %4 faces, %5 extraordinary vertices (%6)
+</source>
+        <translation>%1&#xa0;: élément «&#xa0;%2&#xa0;», %3 sommets, %4 faces, %5 sommets extraordinaires (%6)
+</translation>
+    </message>
+    <message>
+        <source>attractor-cli: note: %1</source>
+        <translation>attractor-cli&#xa0;: note&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2) | vertex-limits (a mesh item: the limit positions of the vertices of the mesh refined k times; default: the item&apos;s).</source>
+        <translation>Ensemble initial&#xa0;: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (coordonnées du plan&#x202f;; x,y,z pour une surface) | lifted:x,y,c1,...;x,y,c1,... (points de l’espace relevé de 000 §2) | vertex-limits (élément maillage&#xa0;: les positions limites des sommets du maillage raffiné k fois&#x202f;; par défaut&#xa0;: celui de l’élément).</translation>
+    </message>
+    <message>
+        <source>--start vertex-limits needs a mesh item; &apos;%1&apos; is a %2</source>
+        <translation>--start vertex-limits demande un élément maillage&#x202f;; «&#xa0;%1&#xa0;» est de type %2</translation>
+    </message>
+    <message>
+        <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ).</source>
+        <translation>Exporter la géométrie d’un élément&#xa0;: l’attracteur F^k(X0) en nuage de points PLY (avec l’application appliquée en dernier pour chaque point), le réseau d’un élément surface après k passes de subdivision classique en maillage OBJ, ou un élément maillage après k étapes avec chaque sommet à sa position limite (OBJ).</translation>
+    </message>
+    <message>
+        <source>OBJ: rounds of subdivision (default: the item&apos;s; a mesh item: its depth, at most 6).</source>
+        <translation>OBJ&#xa0;: passes de subdivision (par défaut&#xa0;: celles de l’élément&#x202f;; pour un élément maillage&#xa0;: sa profondeur, au plus 6).</translation>
+    </message>
+    <message>
+        <source>%1 steps give %2 vertices: too many</source>
+        <translation>%1 étapes donnent %2 sommets&#xa0;: c’est trop</translation>
+    </message>
+    <message>
+        <source>Attractor Workbench: item %1, %2 after %3 steps, every vertex at its limit position</source>
+        <translation>Attractor Workbench&#xa0;: élément %1, %2 après %3 étapes, chaque sommet à sa position limite</translation>
+    </message>
+    <message>
+        <source>Usage: attractor-cli &lt;command&gt; [options]
+
+Commands:
+  render     render an item of a project to PNG, SVG or PDF
+  animate    render the frames of an item&apos;s animation (PNG files, MP4/GIF)
+  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)
+  points     the points of F^k(X0) as CSV
+  check      validate a project file
+  rewrite    load and save a project in canonical form
+  export     attractor points as PLY, a subdivided net or mesh (limit) as OBJ
+  polygon    the control polygon after K subdivision steps (JSON)
+  import-mesh  a mesh file (OBJ, OFF, PLY) as a project with a mesh item
+  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG
+
+Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
+</source>
+        <translation>Utilisation&#xa0;: attractor-cli &lt;commande&gt; [options]
+
+Commandes&#xa0;:
+  render     rendre un élément d’un projet en PNG, SVG ou PDF
+  animate    rendre les images de l’animation d’un élément (fichiers PNG, MP4/GIF)
+  analyse    valeurs propres, contractivité, points fixes, dimension (JSON)
+  points     les points de F^k(X0) en CSV
+  check      valider un fichier de projet
+  rewrite    charger et réenregistrer un projet sous forme canonique
+  export     points de l’attracteur en PLY, réseau subdivisé ou maillage (à la limite) en OBJ
+  polygon    le polygone de contrôle après K étapes de subdivision (JSON)
+  import-mesh  un fichier de maillage (OBJ, OFF, PLY) en projet avec un élément maillage
+  examples   rendre les figures des articles intégrées (000 fig. 2, 3, 5) en PNG
+
+Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les options d’une commande.
+</translation>
     </message>
 </context>
 <context>
@@ -5071,6 +5217,222 @@ limites&#xa0;: %9
     <message>
         <source>a characteristic map needs ring x 2 points</source>
         <translation>une application caractéristique demande les points de l’anneau × 2</translation>
+    </message>
+    <message>
+        <source>a grid needs 1 to 1000 quads a side, got %1 x %2</source>
+        <translation>une grille demande 1 à 1000 quadrilatères par côté (reçu&#xa0;: %1 x %2)</translation>
+    </message>
+    <message>
+        <source>there is no example mesh &apos;%1&apos;</source>
+        <translation>il n’y a pas de maillage d’exemple «&#xa0;%1&#xa0;»</translation>
+    </message>
+    <message>
+        <source>%1, line %2</source>
+        <translation>%1, ligne %2</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number</source>
+        <translation>%1&#xa0;: «&#xa0;%2&#xa0;» n’est pas un nombre</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a finite number</source>
+        <translation>%1&#xa0;: «&#xa0;%2&#xa0;» n’est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a whole number</source>
+        <translation>%1&#xa0;: «&#xa0;%2&#xa0;» n’est pas un nombre entier</translation>
+    </message>
+    <message>
+        <source>%1: a vertex needs 3 coordinates, this one has %2</source>
+        <translation>%1&#xa0;: un sommet demande 3 coordonnées, celui-ci en a %2</translation>
+    </message>
+    <message>
+        <source>%1: a face needs at least 3 vertices, this one has %2</source>
+        <translation>%1&#xa0;: une face demande au moins 3 sommets, celle-ci en a %2</translation>
+    </message>
+    <message>
+        <source>%1: vertex index %2 is out of range (the file has %3 vertices)</source>
+        <translation>%1&#xa0;: l’indice de sommet %2 est hors limites (le fichier a %3 sommets)</translation>
+    </message>
+    <message>
+        <source>%1 holds no vertices</source>
+        <translation>%1 ne contient aucun sommet</translation>
+    </message>
+    <message>
+        <source>%1 holds no faces: not a polygon mesh</source>
+        <translation>%1 ne contient aucune face&#xa0;: ce n’est pas un maillage polygonal</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a face corner (v, v/vt, v//vn or v/vt/vn, nonzero whole numbers)</source>
+        <translation>%1&#xa0;: «&#xa0;%2&#xa0;» n’est pas un coin de face (v, v/vt, v//vn ou v/vt/vn, entiers non nuls)</translation>
+    </message>
+    <message>
+        <source>%1: relative vertex index %2 is out of range (%3 vertices precede it)</source>
+        <translation>%1&#xa0;: l’indice de sommet relatif %2 est hors limites (%3 sommets le précèdent)</translation>
+    </message>
+    <message>
+        <source>%1 is not a valid OBJ file (tinyobjloader: %2)</source>
+        <translation>%1 n’est pas un fichier OBJ valide (tinyobjloader&#xa0;: %2)</translation>
+    </message>
+    <message>
+        <source>%1 is empty</source>
+        <translation>%1 est vide</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a header this reader takes: ASCII OFF of 3D points ([ST][C][N]OFF)</source>
+        <translation>%1&#xa0;: «&#xa0;%2&#xa0;» n’est pas un en-tête que ce lecteur accepte&#xa0;: OFF ASCII de points 3D ([ST][C][N]OFF)</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not the counts line (vertices, faces and edges) of an OFF file</source>
+        <translation>%1&#xa0;: «&#xa0;%2&#xa0;» n’est pas la ligne des nombres (de sommets, de faces et d’arêtes) d’un fichier OFF</translation>
+    </message>
+    <message>
+        <source>%1: %2 vertices and %3 faces need more lines than the %4 left in the file</source>
+        <translation>%1&#xa0;: %2 sommets et %3 faces demandent plus de lignes que les %4 qui restent dans le fichier</translation>
+    </message>
+    <message>
+        <source>%1 ends after %2 of its %3 vertices</source>
+        <translation>%1 se termine après %2 de ses %3 sommets</translation>
+    </message>
+    <message>
+        <source>%1 ends after %2 of its %3 faces</source>
+        <translation>%1 se termine après %2 de ses %3 faces</translation>
+    </message>
+    <message>
+        <source>%1: the face announces %2 vertices but lists %3</source>
+        <translation>%1&#xa0;: la face annonce %2 sommets mais en cite %3</translation>
+    </message>
+    <message>
+        <source>%1: data after the last face (the counts announce %2 vertices and %3 faces)</source>
+        <translation>%1&#xa0;: données après la dernière face (les nombres annoncent %2 sommets et %3 faces)</translation>
+    </message>
+    <message>
+        <source>%1: a property outside any element</source>
+        <translation>%1&#xa0;: une propriété hors de tout élément</translation>
+    </message>
+    <message>
+        <source>%1: unknown PLY property type &apos;%2&apos;</source>
+        <translation>%1&#xa0;: type de propriété PLY inconnu «&#xa0;%2&#xa0;»</translation>
+    </message>
+    <message>
+        <source>%1: a list&apos;s length needs a whole-number type</source>
+        <translation>%1&#xa0;: la longueur d’une liste demande un type entier</translation>
+    </message>
+    <message>
+        <source>%1: property %2 appears twice in element %3</source>
+        <translation>%1&#xa0;: la propriété %2 apparaît deux fois dans l’élément %3</translation>
+    </message>
+    <message>
+        <source>%1 is not a PLY file (its first line is not &apos;ply&apos;)</source>
+        <translation>%1 n’est pas un fichier PLY (sa première ligne n’est pas «&#xa0;ply&#xa0;»)</translation>
+    </message>
+    <message>
+        <source>%1: the PLY header has no end_header line</source>
+        <translation>%1&#xa0;: l’en-tête PLY n’a pas de ligne end_header</translation>
+    </message>
+    <message>
+        <source>%1: unsupported PLY format &apos;%2&apos; (ascii, binary_little_endian or binary_big_endian 1.0)</source>
+        <translation>%1&#xa0;: format PLY «&#xa0;%2&#xa0;» non pris en charge (ascii, binary_little_endian ou binary_big_endian 1.0)</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a valid count</source>
+        <translation>%1&#xa0;: «&#xa0;%2&#xa0;» n’est pas un nombre d’éléments valide</translation>
+    </message>
+    <message>
+        <source>%1: element %2 appears twice</source>
+        <translation>%1&#xa0;: l’élément %2 apparaît deux fois</translation>
+    </message>
+    <message>
+        <source>%1: unknown PLY header line &apos;%2&apos;</source>
+        <translation>%1&#xa0;: ligne d’en-tête PLY inconnue «&#xa0;%2&#xa0;»</translation>
+    </message>
+    <message>
+        <source>%1: the PLY header has no format line</source>
+        <translation>%1&#xa0;: l’en-tête PLY n’a pas de ligne format</translation>
+    </message>
+    <message>
+        <source>%1: the vertex element needs the scalar properties x, y and z</source>
+        <translation>%1&#xa0;: l’élément vertex demande les propriétés scalaires x, y et z</translation>
+    </message>
+    <message>
+        <source>%1: the face element needs one list property vertex_indices (or vertex_index) of whole numbers</source>
+        <translation>%1&#xa0;: l’élément face demande une propriété liste vertex_indices (ou vertex_index) d’entiers</translation>
+    </message>
+    <message>
+        <source>%1, line %2 (%3 %4)</source>
+        <translation>%1, ligne %2 (%3 %4)</translation>
+    </message>
+    <message>
+        <source>%1, %2 %3 (byte %4)</source>
+        <translation>%1, %2 %3 (octet %4)</translation>
+    </message>
+    <message>
+        <source>%1: element %2 claims %3 items, more than the rest of the file can hold</source>
+        <translation>%1&#xa0;: l’élément %2 annonce %3 entrées, plus que le reste du fichier ne peut en contenir</translation>
+    </message>
+    <message>
+        <source>%1: the data ends early (truncated)</source>
+        <translation>%1&#xa0;: les données s’arrêtent trop tôt (fichier tronqué)</translation>
+    </message>
+    <message>
+        <source>%1: data after the last element (the header&apos;s counts do not match the data)</source>
+        <translation>%1&#xa0;: données après le dernier élément (les nombres de l’en-tête ne correspondent pas aux données)</translation>
+    </message>
+    <message>
+        <source>%1, byte %2</source>
+        <translation>%1, octet %2</translation>
+    </message>
+    <message>
+        <source>%1: list length %2 is negative</source>
+        <translation>%1&#xa0;: la longueur de liste %2 est négative</translation>
+    </message>
+    <message>
+        <source>%1 has no file extension (expected .obj, .off or .ply)</source>
+        <translation>%1 n’a pas d’extension de fichier (.obj, .off ou .ply attendue)</translation>
+    </message>
+    <message>
+        <source>unknown mesh file extension &apos;%1&apos; of %2 (expected .obj, .off or .ply)</source>
+        <translation>extension de fichier de maillage inconnue «&#xa0;%1&#xa0;» pour %2 (.obj, .off ou .ply attendue)</translation>
+    </message>
+    <message>
+        <source>cannot open %1</source>
+        <translation>impossible d’ouvrir %1</translation>
+    </message>
+    <message>
+        <source>cannot read %1</source>
+        <translation>impossible de lire %1</translation>
+    </message>
+    <message>
+        <source>%1: a NUL byte: not a text file</source>
+        <translation>%1&#xa0;: un octet NUL&#xa0;: ce n’est pas un fichier texte</translation>
+    </message>
+    <message>
+        <source>the mesh has %1 vertices, but %2 positions were given</source>
+        <translation>le maillage a %1 sommets, mais %2 positions ont été données</translation>
+    </message>
+    <message>
+        <source>mesh vertices</source>
+        <translation>sommets du maillage</translation>
+    </message>
+    <message>
+        <source>depth %1 makes about %2 points; at most 2^31 are drawn</source>
+        <translation>la profondeur %1 donne environ %2 points&#x202f;; 2^31 au plus sont tracés</translation>
+    </message>
+    <message>
+        <source>the mesh has more than %1 kinds of neighbourhood</source>
+        <translation>le maillage a plus de %1 types de voisinage</translation>
+    </message>
+    <message>
+        <source>vertex %1 has %2 edges; the workbench takes valences up to %3</source>
+        <translation>le sommet %1 a %2 arêtes&#x202f;; Attractor Workbench accepte des valences jusqu’à %3</translation>
+    </message>
+    <message>
+        <source>face %1 has %2 sides; the workbench takes faces of up to %3</source>
+        <translation>la face %1 a %2 côtés&#x202f;; Attractor Workbench accepte des faces d’au plus %3 côtés</translation>
+    </message>
+    <message>
+        <source>the irregular vertices do not separate</source>
+        <translation>les sommets irréguliers ne se séparent pas</translation>
     </message>
 </context>
 <context>

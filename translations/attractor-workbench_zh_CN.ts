@@ -860,6 +860,10 @@
         <source>point set %1 has %2 points; an item takes at most %3 per set</source>
         <translation>点集 %1 有 %2 个点；一个对象每个点集最多接受 %3 个点</translation>
     </message>
+    <message>
+        <source>the start set &quot;vertex-limits&quot; is the limit positions of a mesh&apos;s vertices: a %1 has no mesh</source>
+        <translation>初始集 &quot;vertex-limits&quot; 是网格顶点的极限位置：%1 类型的对象没有网格</translation>
+    </message>
 </context>
 <context>
     <name>awb::AttractorRenderer</name>
@@ -2377,6 +2381,17 @@ It was kept as %2.</source>
     </message>
 </context>
 <context>
+    <name>awb::MeshInputs</name>
+    <message>
+        <source>%1 vertices; a mesh item takes at most %2</source>
+        <translation>%1 个顶点；网格对象最多接受 %2 个</translation>
+    </message>
+    <message>
+        <source>%1 faces; a mesh item takes at most %2</source>
+        <translation>%1 个面；网格对象最多接受 %2 个</translation>
+    </message>
+</context>
+<context>
     <name>awb::MoveControlPointsCommand</name>
     <message numerus="yes">
         <source>Move %n control points of %1</source>
@@ -2773,6 +2788,10 @@ It was kept as %2.</source>
         <source>expected a string &quot;#rrggbb&quot;</source>
         <translation>应为字符串 &quot;#rrggbb&quot;</translation>
     </message>
+    <message>
+        <source>a &quot;vertex-limits&quot; start set has no points (it starts at the limit positions of the mesh&apos;s vertices)</source>
+        <translation>&quot;vertex-limits&quot; 初始集没有点（它从网格顶点的极限位置开始）</translation>
+    </message>
 </context>
 <context>
     <name>awb::ProjectTreeModel</name>
@@ -3048,6 +3067,10 @@ It was kept as %2.</source>
     <message>
         <source>%1 matrices %2_i, %3 eigenvalues, plotted in the centre; click an eigenvalue to mark its map (its matrices in the Matrices dock).</source>
         <translation>%1 个矩阵 %2_i，%3 个特征值，绘制在中央；点击特征值以标记其映射（其矩阵见矩阵面板）。</translation>
+    </message>
+    <message>
+        <source>Vertex limits</source>
+        <translation>顶点极限位置</translation>
     </message>
 </context>
 <context>
@@ -3450,6 +3473,77 @@ It was kept as %2.</source>
     <message>
         <source>Subdivision curve</source>
         <translation>细分曲线</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SubdivisionMeshItem</name>
+    <message>
+        <source>Mesh surface</source>
+        <translation>网格曲面</translation>
+    </message>
+    <message>
+        <source>Change mesh of %1</source>
+        <translation>更改 %1 的网格</translation>
+    </message>
+    <message>
+        <source>a mesh surface is drawn by deterministic iteration: random iteration of its pieces is not implemented</source>
+        <translation>网格曲面通过确定性迭代绘制：尚未实现对其曲面片的随机迭代</translation>
+    </message>
+    <message>
+        <source>each piece of a mesh has the lifted space of its own net</source>
+        <translation>网格的每个曲面片都有其自身控制网格的提升空间</translation>
+    </message>
+    <message>
+        <source>%1 pieces of %2 kinds after %3 isolating steps (docs/mathematics.md, &quot;Extraordinary vertices&quot;)</source>
+        <translation>经过 %3 步隔离后共有 %1 个曲面片，分属 %2 种类型（docs/mathematics.md，&quot;Extraordinary vertices&quot;）</translation>
+    </message>
+    <message>
+        <source>expected an array of faces, each an array of vertex numbers</source>
+        <translation>应为由面组成的数组，每个面是顶点编号的数组</translation>
+    </message>
+    <message>
+        <source>expected a face: an array of vertex numbers (0-based)</source>
+        <translation>应为面：顶点编号的数组（从 0 开始）</translation>
+    </message>
+    <message>
+        <source>vertex numbers are whole numbers (0-based)</source>
+        <translation>顶点编号必须是整数（从 0 开始）</translation>
+    </message>
+    <message>
+        <source>Scheme</source>
+        <translation>细分格式</translation>
+    </message>
+    <message>
+        <source>Catmull–Clark</source>
+        <translation>Catmull–Clark</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>Loop</translation>
+    </message>
+    <message>
+        <source>Loop takes triangle meshes only</source>
+        <translation>Loop 只接受三角形网格</translation>
+    </message>
+    <message>
+        <source>Colours</source>
+        <translation>颜色</translation>
+    </message>
+    <message>
+        <source>By map</source>
+        <translation>按映射</translation>
+    </message>
+    <message>
+        <source>By level around extraordinary vertices</source>
+        <translation>按奇异顶点周围的层级</translation>
+    </message>
+    <message>
+        <source>Style</source>
+        <translation>样式</translation>
+    </message>
+    <message>
+        <source>By level: the neighbourhood of an extraordinary vertex as C, f(C), f²(C), … in turn (its IFS with condensation)</source>
+        <translation>按层级：将奇异顶点的邻域依次作为 C、f(C)、f²(C)、… 着色（其带凝聚集的 IFS）</translation>
     </message>
 </context>
 <context>
@@ -3889,38 +3983,6 @@ It was kept as %2.</source>
         <translation>attractor-cli：无法创建目录 %1</translation>
     </message>
     <message>
-        <source>Usage: attractor-cli &lt;command&gt; [options]
-
-Commands:
-  render     render an item of a project to PNG, SVG or PDF
-  animate    render the frames of an item&apos;s animation (PNG files, MP4/GIF)
-  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)
-  points     the points of F^k(X0) as CSV
-  check      validate a project file
-  rewrite    load and save a project in canonical form
-  export     attractor points as PLY, a surface&apos;s subdivided net as OBJ
-  polygon    the control polygon after K subdivision steps (JSON)
-  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG
-
-Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
-</source>
-        <translation>用法：attractor-cli &lt;command&gt; [options]
-
-命令：
-  render     将项目中的某个对象渲染为 PNG、SVG 或 PDF
-  animate    渲染对象动画的各帧（PNG 文件，MP4/GIF）
-  analyse    特征值、压缩性、不动点、维数（JSON）
-  points     以 CSV 格式输出 F^k(X0) 的点
-  check      验证项目文件
-  rewrite    加载项目并以规范形式重新保存
-  export     将吸引子的点导出为 PLY，将曲面细分后的控制网格导出为 OBJ
-  polygon    K 步细分后的控制多边形（JSON）
-  examples   将内置的论文图形（000 Figs. 2, 3, 5）渲染为 PNG
-
-运行“attractor-cli &lt;command&gt; --help”查看某个命令的选项。
-</translation>
-    </message>
-    <message>
         <source>attractor-cli: unknown command &apos;%1&apos;</source>
         <translation>attractor-cli：未知命令“%1”</translation>
     </message>
@@ -4209,10 +4271,6 @@ bounds: %9
         <translation>迭代深度（默认：对象自身的深度）。</translation>
     </message>
     <message>
-        <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2; default: the item&apos;s).</source>
-        <translation>初始集：point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:...（平面坐标；曲面为 x,y,z）| lifted:x,y,c1,...;x,y,c1,...（000 §2 提升空间中的点；默认：对象自身的初始集）。</translation>
-    </message>
-    <message>
         <source>Print CSV (the only format so far).</source>
         <translation>输出 CSV（目前唯一的格式）。</translation>
     </message>
@@ -4267,10 +4325,6 @@ bounds: %9
 </translation>
     </message>
     <message>
-        <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), or a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh.</source>
-        <translation>导出对象的几何：将吸引子 F^k(X0) 导出为 PLY 点云（每个点附带最后作用的映射），或将曲面对象经 k 轮经典细分后的控制网格导出为 OBJ 网格。</translation>
-    </message>
-    <message>
         <source>ply (attractor points) or obj (subdivided mesh).</source>
         <translation>ply（吸引子的点）或 obj（细分网格）。</translation>
     </message>
@@ -4281,10 +4335,6 @@ bounds: %9
     <message>
         <source>PLY: iteration depth (default: the item&apos;s).</source>
         <translation>PLY：迭代深度（默认：对象自身的深度）。</translation>
-    </message>
-    <message>
-        <source>OBJ: rounds of subdivision (default: the item&apos;s).</source>
-        <translation>OBJ：细分轮数（默认：对象自身的设置）。</translation>
     </message>
     <message>
         <source>PLY: refuse to write more (default 50000000).</source>
@@ -4301,10 +4351,6 @@ bounds: %9
     <message>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
-    </message>
-    <message>
-        <source>item &apos;%1&apos; is drawn by an automaton: PLY export covers items with one IFS</source>
-        <translation>对象“%1”由自动机绘制：PLY 导出仅支持由单个 IFS 绘制的对象</translation>
     </message>
     <message>
         <source>OBJ export writes the subdivided net of a surface item; &apos;%1&apos; is a %2</source>
@@ -4337,6 +4383,106 @@ bounds: %9
     <message>
         <source>nothing to draw</source>
         <translation>没有可绘制的内容</translation>
+    </message>
+    <message>
+        <source>Make a project of a mesh file (OBJ, OFF, PLY ASCII or binary): one subdivision-mesh item with the file&apos;s vertices, in its numbering, and its polygons.</source>
+        <translation>由网格文件（OBJ、OFF、PLY ASCII 或二进制）创建项目：其中包含一个 subdivision-mesh 对象，带有文件中的顶点（保留文件的编号）及其多边形。</translation>
+    </message>
+    <message>
+        <source>The mesh file.</source>
+        <translation>网格文件。</translation>
+    </message>
+    <message>
+        <source>catmull-clark (any polygons, the default) or loop (triangles).</source>
+        <translation>catmull-clark（任意多边形，默认）或 loop（三角形）。</translation>
+    </message>
+    <message>
+        <source>The project file to write (.awb).</source>
+        <translation>要写入的项目文件（.awb）。</translation>
+    </message>
+    <message>
+        <source>The item&apos;s name (default: the file&apos;s base name).</source>
+        <translation>对象名称（默认：不含扩展名的文件名）。</translation>
+    </message>
+    <message>
+        <source>--out PROJECT.awb is required</source>
+        <translation>必须提供 --out PROJECT.awb</translation>
+    </message>
+    <message>
+        <source>--scheme must be catmull-clark or loop, got &apos;%1&apos;</source>
+        <translation>--scheme 必须为 catmull-clark 或 loop，实际为“%1”</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; cannot be an item&apos;s name</source>
+        <translation>“%1”不能用作对象名称</translation>
+    </message>
+    <message>
+        <source>%1: item &apos;%2&apos;, %3 vertices, %4 faces, %5 extraordinary vertices (%6)
+</source>
+        <translation>%1：对象“%2”，%3 个顶点，%4 个面，%5 个奇异顶点（%6）
+</translation>
+    </message>
+    <message>
+        <source>attractor-cli: note: %1</source>
+        <translation>attractor-cli：注意：%1</translation>
+    </message>
+    <message>
+        <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2) | vertex-limits (a mesh item: the limit positions of the vertices of the mesh refined k times; default: the item&apos;s).</source>
+        <translation>初始集：point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:...（平面坐标；曲面为 x,y,z）| lifted:x,y,c1,...;x,y,c1,...（000 §2 提升空间中的点）| vertex-limits（网格对象：网格细化 k 次后各顶点的极限位置；默认：对象自身的初始集）。</translation>
+    </message>
+    <message>
+        <source>--start vertex-limits needs a mesh item; &apos;%1&apos; is a %2</source>
+        <translation>--start vertex-limits 需要网格对象；而“%1”的类型为 %2</translation>
+    </message>
+    <message>
+        <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ).</source>
+        <translation>导出对象的几何：将吸引子 F^k(X0) 导出为 PLY 点云（每个点附带最后作用的映射），将曲面对象经 k 轮经典细分后的控制网格导出为 OBJ 网格，或将网格对象细分 k 步后、每个顶点都置于其极限位置导出（OBJ）。</translation>
+    </message>
+    <message>
+        <source>OBJ: rounds of subdivision (default: the item&apos;s; a mesh item: its depth, at most 6).</source>
+        <translation>OBJ：细分轮数（默认：对象自身的设置；网格对象为其深度，最多 6）。</translation>
+    </message>
+    <message>
+        <source>%1 steps give %2 vertices: too many</source>
+        <translation>%1 步产生 %2 个顶点：过多</translation>
+    </message>
+    <message>
+        <source>Attractor Workbench: item %1, %2 after %3 steps, every vertex at its limit position</source>
+        <translation>Attractor Workbench：对象 %1，%2 细分 %3 步后，每个顶点都位于其极限位置</translation>
+    </message>
+    <message>
+        <source>Usage: attractor-cli &lt;command&gt; [options]
+
+Commands:
+  render     render an item of a project to PNG, SVG or PDF
+  animate    render the frames of an item&apos;s animation (PNG files, MP4/GIF)
+  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)
+  points     the points of F^k(X0) as CSV
+  check      validate a project file
+  rewrite    load and save a project in canonical form
+  export     attractor points as PLY, a subdivided net or mesh (limit) as OBJ
+  polygon    the control polygon after K subdivision steps (JSON)
+  import-mesh  a mesh file (OBJ, OFF, PLY) as a project with a mesh item
+  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG
+
+Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
+</source>
+        <translation>用法：attractor-cli &lt;command&gt; [options]
+
+命令：
+  render     将项目中的某个对象渲染为 PNG、SVG 或 PDF
+  animate    渲染对象动画的各帧（PNG 文件，MP4/GIF）
+  analyse    特征值、压缩性、不动点、维数（JSON）
+  points     以 CSV 格式输出 F^k(X0) 的点
+  check      验证项目文件
+  rewrite    加载项目并以规范形式重新保存
+  export     将吸引子的点导出为 PLY，将细分后的控制网格或网格（极限）导出为 OBJ
+  polygon    K 步细分后的控制多边形（JSON）
+  import-mesh  将网格文件（OBJ、OFF、PLY）导入为含一个网格对象的项目
+  examples   将内置的论文图形（000 Figs. 2, 3, 5）渲染为 PNG
+
+运行“attractor-cli &lt;command&gt; --help”查看某个命令的选项。
+</translation>
     </message>
 </context>
 <context>
@@ -5065,6 +5211,222 @@ bounds: %9
     <message>
         <source>a characteristic map needs ring x 2 points</source>
         <translation>特征映射需要环上的点 × 2</translation>
+    </message>
+    <message>
+        <source>a grid needs 1 to 1000 quads a side, got %1 x %2</source>
+        <translation>方格网每边需要 1 到 1000 个四边形，实际为 %1 x %2</translation>
+    </message>
+    <message>
+        <source>there is no example mesh &apos;%1&apos;</source>
+        <translation>没有名为“%1”的示例网格</translation>
+    </message>
+    <message>
+        <source>%1, line %2</source>
+        <translation>%1，第 %2 行</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number</source>
+        <translation>%1：“%2”不是数</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a finite number</source>
+        <translation>%1：“%2”不是有限数</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a whole number</source>
+        <translation>%1：“%2”不是整数</translation>
+    </message>
+    <message>
+        <source>%1: a vertex needs 3 coordinates, this one has %2</source>
+        <translation>%1：顶点需要 3 个坐标，此顶点有 %2 个</translation>
+    </message>
+    <message>
+        <source>%1: a face needs at least 3 vertices, this one has %2</source>
+        <translation>%1：面至少需要 3 个顶点，此面有 %2 个</translation>
+    </message>
+    <message>
+        <source>%1: vertex index %2 is out of range (the file has %3 vertices)</source>
+        <translation>%1：顶点索引 %2 超出范围（文件有 %3 个顶点）</translation>
+    </message>
+    <message>
+        <source>%1 holds no vertices</source>
+        <translation>%1 不含顶点</translation>
+    </message>
+    <message>
+        <source>%1 holds no faces: not a polygon mesh</source>
+        <translation>%1 不含面：不是多边形网格</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a face corner (v, v/vt, v//vn or v/vt/vn, nonzero whole numbers)</source>
+        <translation>%1：“%2”不是面的角点（v、v/vt、v//vn 或 v/vt/vn，非零整数）</translation>
+    </message>
+    <message>
+        <source>%1: relative vertex index %2 is out of range (%3 vertices precede it)</source>
+        <translation>%1：相对顶点索引 %2 超出范围（其前面只有 %3 个顶点）</translation>
+    </message>
+    <message>
+        <source>%1 is not a valid OBJ file (tinyobjloader: %2)</source>
+        <translation>%1 不是有效的 OBJ 文件（tinyobjloader：%2）</translation>
+    </message>
+    <message>
+        <source>%1 is empty</source>
+        <translation>%1 为空</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a header this reader takes: ASCII OFF of 3D points ([ST][C][N]OFF)</source>
+        <translation>%1：“%2”不是此读取器接受的文件头：仅支持三维点的 ASCII OFF（[ST][C][N]OFF）</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not the counts line (vertices, faces and edges) of an OFF file</source>
+        <translation>%1：“%2”不是 OFF 文件的计数行（顶点数、面数和边数）</translation>
+    </message>
+    <message>
+        <source>%1: %2 vertices and %3 faces need more lines than the %4 left in the file</source>
+        <translation>%1：%2 个顶点和 %3 个面所需的行数多于文件中剩余的 %4 行</translation>
+    </message>
+    <message>
+        <source>%1 ends after %2 of its %3 vertices</source>
+        <translation>%1 在其 %3 个顶点中读到第 %2 个后就结束了</translation>
+    </message>
+    <message>
+        <source>%1 ends after %2 of its %3 faces</source>
+        <translation>%1 在其 %3 个面中读到第 %2 个后就结束了</translation>
+    </message>
+    <message>
+        <source>%1: the face announces %2 vertices but lists %3</source>
+        <translation>%1：该面声明有 %2 个顶点，但列出了 %3 个</translation>
+    </message>
+    <message>
+        <source>%1: data after the last face (the counts announce %2 vertices and %3 faces)</source>
+        <translation>%1：最后一个面之后还有数据（计数声明了 %2 个顶点和 %3 个面）</translation>
+    </message>
+    <message>
+        <source>%1: a property outside any element</source>
+        <translation>%1：属性不在任何元素之内</translation>
+    </message>
+    <message>
+        <source>%1: unknown PLY property type &apos;%2&apos;</source>
+        <translation>%1：未知的 PLY 属性类型“%2”</translation>
+    </message>
+    <message>
+        <source>%1: a list&apos;s length needs a whole-number type</source>
+        <translation>%1：列表长度需要整数类型</translation>
+    </message>
+    <message>
+        <source>%1: property %2 appears twice in element %3</source>
+        <translation>%1：属性 %2 在元素 %3 中出现了两次</translation>
+    </message>
+    <message>
+        <source>%1 is not a PLY file (its first line is not &apos;ply&apos;)</source>
+        <translation>%1 不是 PLY 文件（其第一行不是“ply”）</translation>
+    </message>
+    <message>
+        <source>%1: the PLY header has no end_header line</source>
+        <translation>%1：PLY 文件头没有 end_header 行</translation>
+    </message>
+    <message>
+        <source>%1: unsupported PLY format &apos;%2&apos; (ascii, binary_little_endian or binary_big_endian 1.0)</source>
+        <translation>%1：不支持的 PLY 格式“%2”（应为 ascii、binary_little_endian 或 binary_big_endian 1.0）</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a valid count</source>
+        <translation>%1：“%2”不是有效的计数</translation>
+    </message>
+    <message>
+        <source>%1: element %2 appears twice</source>
+        <translation>%1：元素 %2 出现了两次</translation>
+    </message>
+    <message>
+        <source>%1: unknown PLY header line &apos;%2&apos;</source>
+        <translation>%1：未知的 PLY 文件头行“%2”</translation>
+    </message>
+    <message>
+        <source>%1: the PLY header has no format line</source>
+        <translation>%1：PLY 文件头没有 format 行</translation>
+    </message>
+    <message>
+        <source>%1: the vertex element needs the scalar properties x, y and z</source>
+        <translation>%1：vertex 元素需要标量属性 x、y 和 z</translation>
+    </message>
+    <message>
+        <source>%1: the face element needs one list property vertex_indices (or vertex_index) of whole numbers</source>
+        <translation>%1：face 元素需要一个整数列表属性 vertex_indices（或 vertex_index）</translation>
+    </message>
+    <message>
+        <source>%1, line %2 (%3 %4)</source>
+        <translation>%1，第 %2 行（%3 %4）</translation>
+    </message>
+    <message>
+        <source>%1, %2 %3 (byte %4)</source>
+        <translation>%1，%2 %3（字节 %4）</translation>
+    </message>
+    <message>
+        <source>%1: element %2 claims %3 items, more than the rest of the file can hold</source>
+        <translation>%1：元素 %2 声明了 %3 项，超出文件剩余部分所能容纳的数量</translation>
+    </message>
+    <message>
+        <source>%1: the data ends early (truncated)</source>
+        <translation>%1：数据提前结束（文件被截断）</translation>
+    </message>
+    <message>
+        <source>%1: data after the last element (the header&apos;s counts do not match the data)</source>
+        <translation>%1：最后一个元素之后还有数据（文件头中的计数与数据不符）</translation>
+    </message>
+    <message>
+        <source>%1, byte %2</source>
+        <translation>%1，字节 %2</translation>
+    </message>
+    <message>
+        <source>%1: list length %2 is negative</source>
+        <translation>%1：列表长度 %2 为负数</translation>
+    </message>
+    <message>
+        <source>%1 has no file extension (expected .obj, .off or .ply)</source>
+        <translation>%1 没有文件扩展名（应为 .obj、.off 或 .ply）</translation>
+    </message>
+    <message>
+        <source>unknown mesh file extension &apos;%1&apos; of %2 (expected .obj, .off or .ply)</source>
+        <translation>%2 的网格文件扩展名“%1”未知（应为 .obj、.off 或 .ply）</translation>
+    </message>
+    <message>
+        <source>cannot open %1</source>
+        <translation>无法打开 %1</translation>
+    </message>
+    <message>
+        <source>cannot read %1</source>
+        <translation>无法读取 %1</translation>
+    </message>
+    <message>
+        <source>%1: a NUL byte: not a text file</source>
+        <translation>%1：含有 NUL 字节：不是文本文件</translation>
+    </message>
+    <message>
+        <source>the mesh has %1 vertices, but %2 positions were given</source>
+        <translation>网格有 %1 个顶点，但给出了 %2 个位置</translation>
+    </message>
+    <message>
+        <source>mesh vertices</source>
+        <translation>网格顶点</translation>
+    </message>
+    <message>
+        <source>depth %1 makes about %2 points; at most 2^31 are drawn</source>
+        <translation>深度 %1 将产生约 %2 个点；最多绘制 2^31 个</translation>
+    </message>
+    <message>
+        <source>the mesh has more than %1 kinds of neighbourhood</source>
+        <translation>网格的邻域类型多于 %1 种</translation>
+    </message>
+    <message>
+        <source>vertex %1 has %2 edges; the workbench takes valences up to %3</source>
+        <translation>顶点 %1 有 %2 条边；Attractor Workbench 支持的价最多为 %3</translation>
+    </message>
+    <message>
+        <source>face %1 has %2 sides; the workbench takes faces of up to %3</source>
+        <translation>面 %1 有 %2 条边；Attractor Workbench 最多支持 %3 条边的面</translation>
+    </message>
+    <message>
+        <source>the irregular vertices do not separate</source>
+        <translation>非正则顶点无法分离</translation>
     </message>
 </context>
 <context>
