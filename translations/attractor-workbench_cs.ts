@@ -863,8 +863,8 @@
         <translation>sada bodů %1 má %2 bodů; položka připouští nejvýše %3 bodů v jedné sadě</translation>
     </message>
     <message>
-        <source>the start set &quot;vertex-limits&quot; is the limit positions of a mesh&apos;s vertices: a %1 has no mesh</source>
-        <translation>počáteční množina &quot;vertex-limits&quot; jsou limitní polohy vrcholů sítě: položka typu %1 nemá síť</translation>
+        <source>the start set &quot;vertex-limits&quot; (the limit positions of a mesh&apos;s vertices) is for mesh items only; this item: %1</source>
+        <translation>počáteční množina &quot;vertex-limits&quot; (limitní polohy vrcholů sítě) je jen pro položky se sítí; tato položka: %1</translation>
     </message>
 </context>
 <context>
@@ -3502,10 +3502,6 @@ Byla ponechána jako %2.</translation>
         <translation>plocha ze sítě se kreslí deterministickou iterací: náhodná iterace jejích částí není implementována</translation>
     </message>
     <message>
-        <source>each piece of a mesh has the lifted space of its own net</source>
-        <translation>každá část sítě má zdvižený prostor své vlastní sítě</translation>
-    </message>
-    <message>
         <source>%1 pieces of %2 kinds after %3 isolating steps (docs/mathematics.md, &quot;Extraordinary vertices&quot;)</source>
         <translation>%1 částí %2 druhů po %3 izolačních krocích (docs/mathematics.md, &quot;Extraordinary vertices&quot;)</translation>
     </message>
@@ -3554,8 +3550,12 @@ Byla ponechána jako %2.</translation>
         <translation>Styl</translation>
     </message>
     <message>
-        <source>By level: the neighbourhood of an extraordinary vertex as C, f(C), f²(C), … in turn (its IFS with condensation)</source>
-        <translation>Podle úrovně: okolí mimořádného vrcholu postupně jako C, f(C), f²(C), … (jeho IFS s kondenzací)</translation>
+        <source>a mesh has no single lifted space: each of its pieces is lifted over its own control net</source>
+        <translation>síť nemá jediný zdvižený prostor: každá její část se zdvihá nad svou vlastní řídicí sítí</translation>
+    </message>
+    <message>
+        <source>By level: around an extraordinary vertex, the rings C, f(C), f²(C), … of its IFS with condensation get colours in turn</source>
+        <translation>Podle úrovně: kolem mimořádného vrcholu dostávají prstence C, f(C), f²(C), … jeho IFS s kondenzací postupně barvy</translation>
     </message>
 </context>
 <context>
@@ -4417,10 +4417,6 @@ meze: %9
         <translation>Název položky (výchozí: název souboru bez přípony).</translation>
     </message>
     <message>
-        <source>--out PROJECT.awb is required</source>
-        <translation>--out PROJECT.awb je povinné</translation>
-    </message>
-    <message>
         <source>--scheme must be catmull-clark or loop, got &apos;%1&apos;</source>
         <translation>--scheme musí být catmull-clark nebo loop, zadáno „%1“</translation>
     </message>
@@ -4495,6 +4491,10 @@ Příkazy:
 
 Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --help&apos;.
 </translation>
+    </message>
+    <message>
+        <source>--out FILE (the project to write) is required</source>
+        <translation>--out FILE (projekt, který se má zapsat) je povinné</translation>
     </message>
 </context>
 <context>
@@ -5429,16 +5429,16 @@ Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --he
         <translation>síť má více než %1 druhů okolí</translation>
     </message>
     <message>
-        <source>vertex %1 has %2 edges; the workbench takes valences up to %3</source>
-        <translation>vrchol %1 má %2 hran; Attractor Workbench přijímá valence nejvýše %3</translation>
-    </message>
-    <message>
-        <source>face %1 has %2 sides; the workbench takes faces of up to %3</source>
-        <translation>stěna %1 má %2 stran; Attractor Workbench přijímá stěny s nejvýše %3 stranami</translation>
-    </message>
-    <message>
         <source>the irregular vertices do not separate</source>
         <translation>nepravidelné vrcholy se neoddělí</translation>
+    </message>
+    <message>
+        <source>vertex %1 has %2 edges; valences above %3 are not supported</source>
+        <translation>vrchol %1 má %2 hran; valence nad %3 nejsou podporovány</translation>
+    </message>
+    <message>
+        <source>face %1 has %2 sides; faces of more than %3 sides are not supported</source>
+        <translation>stěna %1 má %2 stran; stěny s více než %3 stranami nejsou podporovány</translation>
     </message>
 </context>
 <context>

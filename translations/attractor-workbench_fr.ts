@@ -862,8 +862,8 @@
         <translation>l’ensemble de points %1 a %2 points&#x202f;; un élément en accepte au plus %3 par ensemble</translation>
     </message>
     <message>
-        <source>the start set &quot;vertex-limits&quot; is the limit positions of a mesh&apos;s vertices: a %1 has no mesh</source>
-        <translation>l’ensemble initial &quot;vertex-limits&quot; est formé des positions limites des sommets d’un maillage&#xa0;: un élément de type %1 n’a pas de maillage</translation>
+        <source>the start set &quot;vertex-limits&quot; (the limit positions of a mesh&apos;s vertices) is for mesh items only; this item: %1</source>
+        <translation>l’ensemble initial &quot;vertex-limits&quot; (les positions limites des sommets d’un maillage) est réservé aux éléments maillage&#x202f;; cet élément&#xa0;: %1</translation>
     </message>
 </context>
 <context>
@@ -3496,10 +3496,6 @@ Elle a été conservée sous le nom %2.</translation>
         <translation>une surface de maillage est tracée par itération déterministe&#xa0;: l’itération aléatoire de ses morceaux n’est pas implémentée</translation>
     </message>
     <message>
-        <source>each piece of a mesh has the lifted space of its own net</source>
-        <translation>chaque morceau d’un maillage a l’espace relevé de son propre réseau</translation>
-    </message>
-    <message>
         <source>%1 pieces of %2 kinds after %3 isolating steps (docs/mathematics.md, &quot;Extraordinary vertices&quot;)</source>
         <translation>%1 morceaux de %2 types après %3 étapes d’isolement (docs/mathematics.md, &quot;Extraordinary vertices&quot;)</translation>
     </message>
@@ -3548,8 +3544,12 @@ Elle a été conservée sous le nom %2.</translation>
         <translation>Style</translation>
     </message>
     <message>
-        <source>By level: the neighbourhood of an extraordinary vertex as C, f(C), f²(C), … in turn (its IFS with condensation)</source>
-        <translation>Par niveau&#xa0;: le voisinage d’un sommet extraordinaire, vu tour à tour comme C, f(C), f²(C), … (son IFS avec condensation)</translation>
+        <source>a mesh has no single lifted space: each of its pieces is lifted over its own control net</source>
+        <translation>un maillage n’a pas d’espace relevé unique&#xa0;: chacun de ses morceaux est relevé sur son propre réseau de contrôle</translation>
+    </message>
+    <message>
+        <source>By level: around an extraordinary vertex, the rings C, f(C), f²(C), … of its IFS with condensation get colours in turn</source>
+        <translation>Par niveau&#xa0;: autour d’un sommet extraordinaire, les anneaux C, f(C), f²(C), … de son IFS avec condensation reçoivent tour à tour une couleur</translation>
     </message>
 </context>
 <context>
@@ -4411,10 +4411,6 @@ limites&#xa0;: %9
         <translation>Le nom de l’élément (par défaut&#xa0;: le nom du fichier sans son extension).</translation>
     </message>
     <message>
-        <source>--out PROJECT.awb is required</source>
-        <translation>--out PROJET.awb est obligatoire</translation>
-    </message>
-    <message>
         <source>--scheme must be catmull-clark or loop, got &apos;%1&apos;</source>
         <translation>--scheme doit valoir catmull-clark ou loop (reçu&#xa0;: «&#xa0;%1&#xa0;»)</translation>
     </message>
@@ -4489,6 +4485,10 @@ Commandes&#xa0;:
 
 Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les options d’une commande.
 </translation>
+    </message>
+    <message>
+        <source>--out FILE (the project to write) is required</source>
+        <translation>--out FILE (le projet à écrire) est obligatoire</translation>
     </message>
 </context>
 <context>
@@ -5423,16 +5423,16 @@ Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les
         <translation>le maillage a plus de %1 types de voisinage</translation>
     </message>
     <message>
-        <source>vertex %1 has %2 edges; the workbench takes valences up to %3</source>
-        <translation>le sommet %1 a %2 arêtes&#x202f;; Attractor Workbench accepte des valences jusqu’à %3</translation>
-    </message>
-    <message>
-        <source>face %1 has %2 sides; the workbench takes faces of up to %3</source>
-        <translation>la face %1 a %2 côtés&#x202f;; Attractor Workbench accepte des faces d’au plus %3 côtés</translation>
-    </message>
-    <message>
         <source>the irregular vertices do not separate</source>
         <translation>les sommets irréguliers ne se séparent pas</translation>
+    </message>
+    <message>
+        <source>vertex %1 has %2 edges; valences above %3 are not supported</source>
+        <translation>le sommet %1 a %2 arêtes&#x202f;; les valences supérieures à %3 ne sont pas prises en charge</translation>
+    </message>
+    <message>
+        <source>face %1 has %2 sides; faces of more than %3 sides are not supported</source>
+        <translation>la face %1 a %2 côtés&#x202f;; les faces de plus de %3 côtés ne sont pas prises en charge</translation>
     </message>
 </context>
 <context>

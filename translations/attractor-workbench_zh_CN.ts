@@ -861,8 +861,8 @@
         <translation>点集 %1 有 %2 个点；一个对象每个点集最多接受 %3 个点</translation>
     </message>
     <message>
-        <source>the start set &quot;vertex-limits&quot; is the limit positions of a mesh&apos;s vertices: a %1 has no mesh</source>
-        <translation>初始集 &quot;vertex-limits&quot; 是网格顶点的极限位置：%1 类型的对象没有网格</translation>
+        <source>the start set &quot;vertex-limits&quot; (the limit positions of a mesh&apos;s vertices) is for mesh items only; this item: %1</source>
+        <translation>初始集 &quot;vertex-limits&quot;（网格顶点的极限位置）仅适用于网格对象；此对象：%1</translation>
     </message>
 </context>
 <context>
@@ -3490,10 +3490,6 @@ It was kept as %2.</source>
         <translation>网格曲面通过确定性迭代绘制：尚未实现对其曲面片的随机迭代</translation>
     </message>
     <message>
-        <source>each piece of a mesh has the lifted space of its own net</source>
-        <translation>网格的每个曲面片都有其自身控制网格的提升空间</translation>
-    </message>
-    <message>
         <source>%1 pieces of %2 kinds after %3 isolating steps (docs/mathematics.md, &quot;Extraordinary vertices&quot;)</source>
         <translation>经过 %3 步隔离后共有 %1 个曲面片，分属 %2 种类型（docs/mathematics.md，&quot;Extraordinary vertices&quot;）</translation>
     </message>
@@ -3542,8 +3538,12 @@ It was kept as %2.</source>
         <translation>样式</translation>
     </message>
     <message>
-        <source>By level: the neighbourhood of an extraordinary vertex as C, f(C), f²(C), … in turn (its IFS with condensation)</source>
-        <translation>按层级：将奇异顶点的邻域依次作为 C、f(C)、f²(C)、… 着色（其带凝聚集的 IFS）</translation>
+        <source>a mesh has no single lifted space: each of its pieces is lifted over its own control net</source>
+        <translation>网格没有单一的提升空间：它的每个曲面片都在其自身的控制网格上提升</translation>
+    </message>
+    <message>
+        <source>By level: around an extraordinary vertex, the rings C, f(C), f²(C), … of its IFS with condensation get colours in turn</source>
+        <translation>按层级：在奇异顶点周围，其带凝聚集的 IFS 的环 C、f(C)、f²(C)、… 依次着色</translation>
     </message>
 </context>
 <context>
@@ -4405,10 +4405,6 @@ bounds: %9
         <translation>对象名称（默认：不含扩展名的文件名）。</translation>
     </message>
     <message>
-        <source>--out PROJECT.awb is required</source>
-        <translation>必须提供 --out PROJECT.awb</translation>
-    </message>
-    <message>
         <source>--scheme must be catmull-clark or loop, got &apos;%1&apos;</source>
         <translation>--scheme 必须为 catmull-clark 或 loop，实际为“%1”</translation>
     </message>
@@ -4483,6 +4479,10 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
 
 运行“attractor-cli &lt;command&gt; --help”查看某个命令的选项。
 </translation>
+    </message>
+    <message>
+        <source>--out FILE (the project to write) is required</source>
+        <translation>必须提供 --out FILE（要写入的项目）</translation>
     </message>
 </context>
 <context>
@@ -5417,16 +5417,16 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
         <translation>网格的邻域类型多于 %1 种</translation>
     </message>
     <message>
-        <source>vertex %1 has %2 edges; the workbench takes valences up to %3</source>
-        <translation>顶点 %1 有 %2 条边；Attractor Workbench 支持的价最多为 %3</translation>
-    </message>
-    <message>
-        <source>face %1 has %2 sides; the workbench takes faces of up to %3</source>
-        <translation>面 %1 有 %2 条边；Attractor Workbench 最多支持 %3 条边的面</translation>
-    </message>
-    <message>
         <source>the irregular vertices do not separate</source>
         <translation>非正则顶点无法分离</translation>
+    </message>
+    <message>
+        <source>vertex %1 has %2 edges; valences above %3 are not supported</source>
+        <translation>顶点 %1 有 %2 条边；不支持大于 %3 的价</translation>
+    </message>
+    <message>
+        <source>face %1 has %2 sides; faces of more than %3 sides are not supported</source>
+        <translation>面 %1 有 %2 条边；不支持多于 %3 条边的面</translation>
     </message>
 </context>
 <context>

@@ -31,7 +31,7 @@ int importMesh(const QStringList &args)
               "name"}});
         parseOrFail(parser, args, 1);
         if (!parser.isSet("out"))
-            throw Failure{CliTr::tr("--out PROJECT.awb is required"), 2};
+            throw Failure{CliTr::tr("--out FILE (the project to write) is required"), 2};
         const int scheme = MeshInputs::schemeNames().indexOf(parser.value("scheme").toLower());
         if (scheme < 0)
             throw Failure{CliTr::tr("--scheme must be catmull-clark or loop, got '%1'")

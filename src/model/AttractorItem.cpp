@@ -14,8 +14,8 @@ AttractorItem::AttractorItem(const QString &defaultName) : Item(defaultName) {}
 MaybeProblem AttractorItem::checkStartSet(const StartSetSpec &s) const
 {
     if (s.kind == StartSetSpec::Kind::VertexLimits && !startsAtVertexLimits())
-        return Problem{"kind", tr("the start set \"vertex-limits\" is the limit positions of a "
-                                  "mesh's vertices: a %1 has no mesh")
+        return Problem{"kind", tr("the start set \"vertex-limits\" (the limit positions of a "
+                                  "mesh's vertices) is for mesh items only; this item: %1")
                                    .arg(typeName())};
     return s.check();
 }

@@ -167,7 +167,8 @@ DerivedIfs SubdivisionMeshItem::computeIfs() const
             out.S.real.push_back(c.S);
         break;
     }
-    out.A.unavailable = tr("each piece of a mesh has the lifted space of its own net");
+    out.A.unavailable = tr("a mesh has no single lifted space: each of its pieces is lifted "
+                           "over its own control net");
     out.note = tr("%1 pieces of %2 kinds after %3 isolating steps (docs/mathematics.md, "
                   "\"Extraordinary vertices\")")
                    .arg(pieces->roots.size())
@@ -238,8 +239,8 @@ QList<ParameterInfo> SubdivisionMeshItem::parameters() const
             P::make("colouring", tr("Colours"), P::Type::Choice)
                 .options({tr("By map"), tr("By level around extraordinary vertices")})
                 .in(tr("Style"))
-                .tip(tr("By level: the neighbourhood of an extraordinary vertex as C, f(C), "
-                        "f²(C), … in turn (its IFS with condensation)"))};
+                .tip(tr("By level: around an extraordinary vertex, the rings C, f(C), f²(C), … "
+                        "of its IFS with condensation get colours in turn"))};
 }
 
 QVariant SubdivisionMeshItem::parameter(const QString &key) const

@@ -331,7 +331,7 @@ MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
         if (t.valence(v) > kMaxValence)
             throw InputError(formatMessage(
                 coreTranslate("awb::mesh",
-                              "vertex %1 has %2 edges; the workbench takes valences up to %3"),
+                              "vertex %1 has %2 edges; valences above %3 are not supported"),
                 v, t.valence(v), kMaxValence));
         if (t.valence(v) == 0)
             out.loneVertices.push_back(v);
@@ -340,7 +340,7 @@ MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
         if (int(t.face(f).size()) > kMaxValence)
             throw InputError(formatMessage(
                 coreTranslate("awb::mesh",
-                              "face %1 has %2 sides; the workbench takes faces of up to %3"),
+                              "face %1 has %2 sides; faces of more than %3 sides are not supported"),
                 f, t.face(f).size(), kMaxValence));
     out.isolation.resize(std::size_t(t.vertexCount()));
     out.origin.resize(std::size_t(t.vertexCount()));
