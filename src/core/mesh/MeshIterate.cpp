@@ -31,25 +31,40 @@ private:
     std::map<std::pair<int, int>, double> m_memo;
 };
 
-// One thread's walk down the pieces: the nets of the current path, one per level, allocated
-// once.
+// One thread's walk down the pieces. The nets of the current path, one per level, are arrays
+// of x, y, z allocated once; a child's net is its sparse S_i times the parent's, each row summed
+// in registers and stored once; one step above the leaves the children's corner limits come
+// straight from the parent's net (their limits times S_i, precomputed), so that the leaves'
+// nets are never built.
 class PieceWalker {
 public:
     PieceWalker(const MeshPieces &pieces, const MeshStart &start, AttractorSink &sink,
                 const IterationControl &control)
         : m_pieces(pieces), m_start(start), m_sink(sink), m_control(control)
     {
+        int corners = 0;
+        for (const MeshPieceType &t : pieces.types) {
+            m_maxNet = std::max(m_maxNet, t.netSize);
+            corners = std::max(corners, int(t.corners.size()));
+        }
+        m_out.assign(std::size_t(3 * std::max(corners, m_maxNet)), 0.0);
     }
 
-    void root(int type, Mat net, int depth)
+    void root(const MeshPieceRoot &root, const Mat &level, int depth)
     {
-        m_rootIsVertex = m_pieces.types[std::size_t(type)].kind == MeshPieceType::Kind::Vertex;
-        m_nets.resize(std::size_t(depth) + 1);
+        m_rootIsVertex =
+            m_pieces.types[std::size_t(root.type)].kind == MeshPieceType::Kind::Vertex;
+        if (int(m_nets.size()) < depth + 1)
+            m_nets.resize(std::size_t(depth) + 1,
+                          std::vector<double>(std::size_t(3 * m_maxNet), 0.0));
         m_address.assign(std::size_t(depth) + 1, 0);
-        m_nets[0] = std::move(net);
+        double *net = m_nets[0].data();
+        for (std::size_t i = 0; i < root.net.size(); ++i)
+            for (int k = 0; k < 3; ++k)
+                net[3 * i + std::size_t(k)] = level(root.net[i], k);
         if (m_start.kind == MeshStart::Kind::Points)
-            liftStart(type);
-        descend(type, 0, depth);
+            liftStart(root.type, level, root.net);
+        descend(root.type, 0, depth);
     }
 
     bool cancelled() const { return m_cancelled; }
@@ -60,22 +75,24 @@ private:
     // over the net of the type's first piece met breadth first (the root's own net for the
     // root's type, so that depth 0 gives the start set itself). Each type keeps its weights at
     // every depth below: f_w(X0) then stays within |w| diam(net) of the shrinking piece.
-    void liftStart(int rootType)
+    void liftStart(int rootType, const Mat &level, const std::vector<int> &rootNet)
     {
         m_weights.assign(m_pieces.types.size(), Mat());
+        Mat net(Eigen::Index(rootNet.size()), 3);
+        for (std::size_t i = 0; i < rootNet.size(); ++i)
+            net.row(Eigen::Index(i)) = level.row(rootNet[i]);
         std::vector<std::pair<int, Mat>> queue;
-        queue.emplace_back(rootType, m_nets[0]);
-        m_weights[std::size_t(rootType)] =
-            leastNormWeightsOfRows(m_nets[0], m_start.points.vertices);
+        m_weights[std::size_t(rootType)] = leastNormWeightsOfRows(net, m_start.points.vertices);
+        queue.emplace_back(rootType, std::move(net));
         for (std::size_t q = 0; q < queue.size(); ++q) {
             const MeshPieceType &t = m_pieces.types[std::size_t(queue[q].first)];
             for (const MeshPieceType::Child &child : t.children) {
                 if (m_weights[std::size_t(child.type)].size() > 0)
                     continue;
-                const Mat net = child.S * queue[q].second;
+                Mat next = child.S * queue[q].second;
                 m_weights[std::size_t(child.type)] =
-                    leastNormWeightsOfRows(net, m_start.points.vertices);
-                queue.emplace_back(child.type, net);
+                    leastNormWeightsOfRows(next, m_start.points.vertices);
+                queue.emplace_back(child.type, std::move(next));
             }
         }
     }
@@ -83,45 +100,69 @@ private:
     void descend(int type, int level, int depth)
     {
         const MeshPieceType &t = m_pieces.types[std::size_t(type)];
-        const Mat &net = m_nets[std::size_t(level)];
+        const double *net = m_nets[std::size_t(level)].data();
         if (depth == 0) {
-            emit(t, net, level);
+            emit(t, type, net, level);
             return;
         }
+        const bool limitsNext = depth == 1 && m_start.kind == MeshStart::Kind::VertexLimits;
         for (std::size_t c = 0; c < t.children.size(); ++c) {
             if ((++m_steps & 255) == 0 && m_control.cancel && m_control.cancel->load()) {
                 m_cancelled = true;
                 return;
             }
             const MeshPieceType::Child &child = t.children[c];
-            Mat &next = m_nets[std::size_t(level) + 1];
-            next.setZero(m_pieces.types[std::size_t(child.type)].netSize, 3);
-            for (const MeshPieceType::Entry &e : child.entries)
-                next.row(e.row) += e.weight * net.row(e.col);
             m_address[std::size_t(level)] = std::uint8_t(c);
-            descend(child.type, level + 1, depth - 1);
+            if (limitsNext) {
+                child.leaf.apply(net, m_out.data());
+                emitFaces(m_pieces.types[std::size_t(child.type)], level + 1);
+            } else {
+                child.rows.apply(net, m_nets[std::size_t(level) + 1].data());
+                descend(child.type, level + 1, depth - 1);
+            }
             if (m_cancelled)
                 return;
         }
     }
 
-    void emit(const MeshPieceType &t, const Mat &net, int level)
+    void emit(const MeshPieceType &t, int type, const double *net, int level)
     {
-        if (m_start.kind == MeshStart::Kind::Points) {
-            m_out.noalias() = m_weights[std::size_t(&t - m_pieces.types.data())] * net;
-            consume(m_out, m_start.points.kind, level);
+        switch (m_start.kind) {
+        case MeshStart::Kind::Points: {
+            const Mat &w = m_weights[std::size_t(type)];
+            m_points.resize(w.rows(), 3);
+            for (Eigen::Index r = 0; r < w.rows(); ++r)
+                for (int k = 0; k < 3; ++k) {
+                    double x = 0;
+                    for (Eigen::Index j = 0; j < w.cols(); ++j)
+                        x += w(r, j) * net[3 * j + k];
+                    m_points(r, k) = x;
+                }
+            consume(m_points, m_start.points.kind, level);
             return;
         }
-        // The piece's faces as polygons of their corners' limits (or the corners): drawn as
-        // shaded faces, and as points the vertices of the refined mesh.
-        const bool limits = m_start.kind == MeshStart::Kind::VertexLimits;
-        if (limits)
-            m_out.noalias() = t.limits * net;
-        const Mat &corners = limits ? m_out : net;
+        case MeshStart::Kind::VertexLimits:
+            t.limitRows.apply(net, m_out.data());
+            break;
+        case MeshStart::Kind::ControlPoints:
+            for (std::size_t i = 0; i < t.corners.size(); ++i)
+                for (int k = 0; k < 3; ++k)
+                    m_out[3 * i + std::size_t(k)] = net[3 * t.corners[i] + k];
+            break;
+        }
+        emitFaces(t, level);
+    }
+
+    // The piece's faces as polygons of their corners in m_out (limits, or the corners): drawn
+    // as shaded faces, and as points the vertices of the refined mesh.
+    void emitFaces(const MeshPieceType &t, int level)
+    {
         for (const std::vector<int> &face : t.faces) {
-            m_face.resize(Eigen::Index(face.size()), 3);
+            if (m_face.rows() != Eigen::Index(face.size()))
+                m_face.resize(Eigen::Index(face.size()), 3);
             for (std::size_t i = 0; i < face.size(); ++i)
-                m_face.row(Eigen::Index(i)) = corners.row(face[i]);
+                for (int k = 0; k < 3; ++k)
+                    m_face(Eigen::Index(i), k) = m_out[3 * std::size_t(face[i]) + std::size_t(k)];
             consume(m_face, StartSet::Kind::Polygon, level);
         }
     }
@@ -145,12 +186,14 @@ private:
     const MeshStart &m_start;
     AttractorSink &m_sink;
     const IterationControl &m_control;
-    std::vector<Mat> m_nets;
+    int m_maxNet = 0;
+    std::vector<std::vector<double>> m_nets;
+    std::vector<double> m_out;
     std::vector<Mat> m_weights;  // per type (Points)
     std::vector<std::uint8_t> m_address, m_levelAddress;
-    bool m_rootIsVertex = false;
-    Mat m_out, m_face;
+    Mat m_face, m_points;
     std::uint64_t m_steps = 0, m_images = 0;
+    bool m_rootIsVertex = false;
     bool m_cancelled = false;
 };
 
@@ -261,11 +304,7 @@ IterationStats iterateMesh(const MeshPieces &pieces, const Mat &inputVertices,
     onThreads(threads, [&](int thread) {
         PieceWalker walker(pieces, start, *sinks[std::size_t(thread)], control);
         for (int r = next++; r < rootCount && !cancelled.load(); r = next++) {
-            const MeshPieceRoot &root = pieces.roots[std::size_t(r)];
-            Mat net(Eigen::Index(root.net.size()), 3);
-            for (std::size_t i = 0; i < root.net.size(); ++i)
-                net.row(Eigen::Index(i)) = level.row(root.net[i]);
-            walker.root(root.type, std::move(net), pieceDepth);
+            walker.root(pieces.roots[std::size_t(r)], level, pieceDepth);
             if (walker.cancelled())
                 cancelled = true;
             const int finished = ++done;

@@ -301,10 +301,6 @@ private:
             for (std::size_t i = 0; i < net.size(); ++i)
                 for (const auto &[q, w] : r.stencils[std::size_t(s1.copyOf[std::size_t(net[i])])])
                     child.S(Eigen::Index(i), s0.copyOf[std::size_t(q)]) += w;
-            for (Eigen::Index i = 0; i < child.S.rows(); ++i)
-                for (Eigen::Index j = 0; j < m; ++j)
-                    if (child.S(i, j) != 0.0)
-                        child.entries.push_back({int(i), int(j), child.S(i, j)});
             children.push_back(std::move(child));
         }
         MeshPieceType &type = types[std::size_t(p.type)];
@@ -318,6 +314,19 @@ private:
 };
 
 } // namespace
+
+SparseRows SparseRows::of(const Mat &m)
+{
+    SparseRows r;
+    r.begin.reserve(std::size_t(m.rows()) + 1);
+    for (Eigen::Index i = 0; i < m.rows(); ++i) {
+        for (Eigen::Index j = 0; j < m.cols(); ++j)
+            if (m(i, j) != 0.0)
+                r.entries.emplace_back(int(j), m(i, j));
+        r.begin.push_back(int(r.entries.size()));
+    }
+    return r;
+}
 
 MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
 {
@@ -340,7 +349,8 @@ MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
         if (int(t.face(f).size()) > kMaxValence)
             throw InputError(formatMessage(
                 coreTranslate("awb::mesh",
-                              "face %1 has %2 sides; faces of more than %3 sides are not supported"),
+                              "face %1 has %2 sides; faces of more than %3 sides are not "
+                              "supported"),
                 f, t.face(f).size(), kMaxValence));
     out.isolation.resize(std::size_t(t.vertexCount()));
     out.origin.resize(std::size_t(t.vertexCount()));
@@ -393,6 +403,13 @@ MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
     }
     builder.run();
     out.types = std::move(builder.types);
+    for (MeshPieceType &type : out.types) {
+        type.limitRows = SparseRows::of(type.limits);
+        for (MeshPieceType::Child &c : type.children) {
+            c.rows = SparseRows::of(c.S);
+            c.leaf = SparseRows::of(out.types[std::size_t(c.type)].limits * c.S);
+        }
+    }
     for (const MeshPieceRoot &root : out.roots)
         ++out.types[std::size_t(root.type)].roots;
     return out;

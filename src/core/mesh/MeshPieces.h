@@ -32,6 +32,33 @@
 
 namespace awb {
 
+// A sparse matrix by rows, for the iteration's inner loop: row i is entries[begin[i] ..
+// begin[i + 1]) as (column, weight).
+struct SparseRows {
+    std::vector<int> begin{0};
+    std::vector<std::pair<int, double>> entries;
+    static SparseRows of(const Mat &m);
+    int rows() const { return int(begin.size()) - 1; }
+    // out (rows x 3) = this * in (columns x 3), both row-major x, y, z triples.
+    void apply(const double *in, double *out) const
+    {
+        const std::pair<int, double> *e = entries.data();
+        for (int i = 0, n = rows(); i < n; ++i) {
+            double x = 0, y = 0, z = 0;
+            for (int k = begin[std::size_t(i)], end = begin[std::size_t(i) + 1]; k < end; ++k) {
+                const double *p = in + 3 * e[k].first;
+                const double w = e[k].second;
+                x += w * p[0];
+                y += w * p[1];
+                z += w * p[2];
+            }
+            out[3 * i] = x;
+            out[3 * i + 1] = y;
+            out[3 * i + 2] = z;
+        }
+    }
+};
+
 struct MeshPieceType {
     enum class Kind { Face, Vertex };
     Kind kind = Kind::Face;
@@ -45,20 +72,19 @@ struct MeshPieceType {
     // their limit stencils.
     std::vector<int> corners;
     Mat limits;
+    SparseRows limitRows;  // `limits`, sparse
     // The piece's own faces (one for a face piece, the n faces around the vertex for a vertex
     // piece) as loops of places in the net (all among `corners`).
     std::vector<std::vector<int>> faces;
     // One per map: the child piece's type and S_i (child net x this net; rows sum to 1), also
-    // as (row, column, weight) entries for the iteration. Vertex pieces: child 0 is the
+    // sparse for the iteration, and the child's corner limits over this net (its limits times
+    // S_i: the last step and the limits in one product). Vertex pieces: child 0 is the
     // neighbourhood one level finer, the others the annulus faces.
-    struct Entry {
-        int row = 0, col = 0;
-        double weight = 0.0;
-    };
     struct Child {
         int type = 0;
         Mat S;
-        std::vector<Entry> entries;
+        SparseRows rows;
+        SparseRows leaf;
     };
     std::vector<Child> children;
     int roots = 0;  // pieces of the isolated mesh of this type
