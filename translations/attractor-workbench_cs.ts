@@ -2339,6 +2339,58 @@ Byla ponechána jako %2.</translation>
         <source>Projects and figures with their item (*.awb *.png *.svg);;Attractor Workbench projects (*.awb);;Exported figures (*.png *.svg);;All files (*)</source>
         <translation>Projekty a obrázky s položkou (*.awb *.png *.svg);;Projekty Attractor Workbench (*.awb);;Exportované obrázky (*.png *.svg);;Všechny soubory (*)</translation>
     </message>
+    <message>
+        <source>&amp;Import Mesh…</source>
+        <translation>&amp;Importovat síť…</translation>
+    </message>
+    <message>
+        <source>Import Mesh</source>
+        <translation>Importovat síť</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.off *.ply);;Wavefront OBJ (*.obj);;OFF (*.off);;PLY (*.ply)</source>
+        <translation>Sítě (*.obj *.off *.ply);;Wavefront OBJ (*.obj);;OFF (*.off);;PLY (*.ply)</translation>
+    </message>
+    <message>
+        <source>Catmull–Clark (any polygons)</source>
+        <translation>Catmull–Clark (libovolné mnohoúhelníky)</translation>
+    </message>
+    <message>
+        <source>Loop (triangles only)</source>
+        <translation>Loop (jen trojúhelníky)</translation>
+    </message>
+    <message>
+        <source>Subdivision scheme:</source>
+        <translation>Schéma subdivize:</translation>
+    </message>
+    <message>
+        <source>Cube (Catmull–Clark)</source>
+        <translation>Krychle (Catmull–Clark)</translation>
+    </message>
+    <message>
+        <source>Tetrahedron (Loop)</source>
+        <translation>Čtyřstěn (Loop)</translation>
+    </message>
+    <message>
+        <source>Octahedron (Loop)</source>
+        <translation>Osmistěn (Loop)</translation>
+    </message>
+    <message>
+        <source>Icosahedron (Loop)</source>
+        <translation>Dvacetistěn (Loop)</translation>
+    </message>
+    <message>
+        <source>Pentagonal prism (Catmull–Clark)</source>
+        <translation>Pětiboký hranol (Catmull–Clark)</translation>
+    </message>
+    <message>
+        <source>Open grid (Catmull–Clark)</source>
+        <translation>Otevřená mřížka (Catmull–Clark)</translation>
+    </message>
+    <message>
+        <source>Grid of mixed diagonals (Loop)</source>
+        <translation>Mřížka se smíšenými úhlopříčkami (Loop)</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>

@@ -2336,6 +2336,58 @@ Elle a été conservée sous le nom %2.</translation>
         <source>Projects and figures with their item (*.awb *.png *.svg);;Attractor Workbench projects (*.awb);;Exported figures (*.png *.svg);;All files (*)</source>
         <translation>Projets et figures avec leur élément (*.awb *.png *.svg);;Projets Attractor Workbench (*.awb);;Figures exportées (*.png *.svg);;Tous les fichiers (*)</translation>
     </message>
+    <message>
+        <source>&amp;Import Mesh…</source>
+        <translation>&amp;Importer un maillage…</translation>
+    </message>
+    <message>
+        <source>Import Mesh</source>
+        <translation>Importer un maillage</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.off *.ply);;Wavefront OBJ (*.obj);;OFF (*.off);;PLY (*.ply)</source>
+        <translation>Maillages (*.obj *.off *.ply);;Wavefront OBJ (*.obj);;OFF (*.off);;PLY (*.ply)</translation>
+    </message>
+    <message>
+        <source>Catmull–Clark (any polygons)</source>
+        <translation>Catmull–Clark (tous polygones)</translation>
+    </message>
+    <message>
+        <source>Loop (triangles only)</source>
+        <translation>Loop (triangles uniquement)</translation>
+    </message>
+    <message>
+        <source>Subdivision scheme:</source>
+        <translation>Schéma de subdivision&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Cube (Catmull–Clark)</source>
+        <translation>Cube (Catmull–Clark)</translation>
+    </message>
+    <message>
+        <source>Tetrahedron (Loop)</source>
+        <translation>Tétraèdre (Loop)</translation>
+    </message>
+    <message>
+        <source>Octahedron (Loop)</source>
+        <translation>Octaèdre (Loop)</translation>
+    </message>
+    <message>
+        <source>Icosahedron (Loop)</source>
+        <translation>Icosaèdre (Loop)</translation>
+    </message>
+    <message>
+        <source>Pentagonal prism (Catmull–Clark)</source>
+        <translation>Prisme pentagonal (Catmull–Clark)</translation>
+    </message>
+    <message>
+        <source>Open grid (Catmull–Clark)</source>
+        <translation>Grille ouverte (Catmull–Clark)</translation>
+    </message>
+    <message>
+        <source>Grid of mixed diagonals (Loop)</source>
+        <translation>Grille à diagonales mêlées (Loop)</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>

@@ -2333,6 +2333,58 @@ It was kept as %2.</source>
         <source>Projects and figures with their item (*.awb *.png *.svg);;Attractor Workbench projects (*.awb);;Exported figures (*.png *.svg);;All files (*)</source>
         <translation>项目及带有对象的图形 (*.awb *.png *.svg);;Attractor Workbench 项目 (*.awb);;导出的图形 (*.png *.svg);;所有文件 (*)</translation>
     </message>
+    <message>
+        <source>&amp;Import Mesh…</source>
+        <translation>导入网格(&amp;I)…</translation>
+    </message>
+    <message>
+        <source>Import Mesh</source>
+        <translation>导入网格</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.off *.ply);;Wavefront OBJ (*.obj);;OFF (*.off);;PLY (*.ply)</source>
+        <translation>网格 (*.obj *.off *.ply);;Wavefront OBJ (*.obj);;OFF (*.off);;PLY (*.ply)</translation>
+    </message>
+    <message>
+        <source>Catmull–Clark (any polygons)</source>
+        <translation>Catmull–Clark（任意多边形）</translation>
+    </message>
+    <message>
+        <source>Loop (triangles only)</source>
+        <translation>Loop（仅三角形）</translation>
+    </message>
+    <message>
+        <source>Subdivision scheme:</source>
+        <translation>细分格式：</translation>
+    </message>
+    <message>
+        <source>Cube (Catmull–Clark)</source>
+        <translation>立方体（Catmull–Clark）</translation>
+    </message>
+    <message>
+        <source>Tetrahedron (Loop)</source>
+        <translation>四面体（Loop）</translation>
+    </message>
+    <message>
+        <source>Octahedron (Loop)</source>
+        <translation>八面体（Loop）</translation>
+    </message>
+    <message>
+        <source>Icosahedron (Loop)</source>
+        <translation>二十面体（Loop）</translation>
+    </message>
+    <message>
+        <source>Pentagonal prism (Catmull–Clark)</source>
+        <translation>五棱柱（Catmull–Clark）</translation>
+    </message>
+    <message>
+        <source>Open grid (Catmull–Clark)</source>
+        <translation>开放网格（Catmull–Clark）</translation>
+    </message>
+    <message>
+        <source>Grid of mixed diagonals (Loop)</source>
+        <translation>混合对角线网格（Loop）</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>

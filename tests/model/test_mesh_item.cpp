@@ -145,7 +145,10 @@ void TestMeshItem::badMeshesNameTheProblem_data()
     QTest::newRow("not a face list")
         << meshJson([](QJsonObject &j) { j["faces"] = "cube"; }) << "expected an array of faces";
     QTest::newRow("fractional index") << meshJson([](QJsonObject &j) {
-        j["faces"] = QJsonArray{QJsonArray{0, 1.5, 2}};
+        // Appended: QJsonArray{QJsonArray{...}} is a copy for some compilers (clang).
+        QJsonArray faces;
+        faces.append(QJsonArray{0, 1.5, 2});
+        j["faces"] = faces;
     }) << "whole numbers";
     QTest::newRow("no vertices") << meshJson([](QJsonObject &j) { j["vertices"] = QJsonArray(); })
                                  << "no vertices";

@@ -33,6 +33,7 @@
 #include "model/Recovery.h"
 #include "model/SubdivisionCurveItem.h"
 #include "model/SubdivisionSurfaceItem.h"
+#include "model/SubdivisionMeshItem.h"
 #include "core/ifs/SurfaceIfs.h"
 
 #include "model/NamedMatrix.h"
@@ -409,6 +410,8 @@ void MainWindow::createActions()
          });
     make(QStringLiteral("actionOpen"), tr("&Open…"), QStringLiteral("document-open"),
          QKeySequence::Open, &MainWindow::openDialog);
+    make(QStringLiteral("actionImportMesh"), tr("&Import Mesh…"),
+         QStringLiteral("document-import"), QKeySequence(), &MainWindow::importMeshDialog);
     make(QStringLiteral("actionSave"), tr("&Save"), QStringLiteral("document-save"),
          QKeySequence::Save, &MainWindow::save);
     make(QStringLiteral("actionSaveAs"), tr("Save &As…"), QStringLiteral("document-save-as"),
@@ -632,6 +635,7 @@ void MainWindow::createMenus()
     m_examplesMenu = file->addMenu(tr("Open E&xample"));
     m_examplesMenu->setObjectName(QStringLiteral("menuExamples"));
     connect(m_examplesMenu, &QMenu::aboutToShow, this, &MainWindow::fillExamplesMenu);
+    file->addAction(action(QStringLiteral("actionImportMesh")));
     file->addAction(action(QStringLiteral("actionSave")));
     file->addAction(action(QStringLiteral("actionSaveAs")));
     file->addAction(action(QStringLiteral("actionRevert")));
@@ -659,6 +663,10 @@ void MainWindow::createMenus()
     for (const ItemRegistry::Kind &kind : ItemRegistry::instance().kinds()) {
         if (kind.type == SubdivisionSurfaceItem::staticType()) {
             addSurfaceMenu(add, kind.displayName());
+            continue;
+        }
+        if (kind.type == SubdivisionMeshItem::staticType()) {
+            addMeshMenu(add, kind.displayName());
             continue;
         }
         QAction *a = add->addAction(kind.displayName());

@@ -6,6 +6,7 @@
 // title, settings and crash recovery. Every message to the user goes through Messages so that
 // tests can drive the window without modal boxes.
 #include "gui/app/Dialogs.h"
+#include "core/mesh/Mesh.h"
 #include "model/Item.h"
 #include "render/FigureFile.h"
 #include <QMainWindow>
@@ -63,6 +64,10 @@ public:
     void newProject();
     // Opens without asking about unsaved changes (the caller did); reports failures.
     bool openFile(const QString &fileName);
+    // File > Import Mesh…: a mesh file (OBJ, OFF, PLY) as a new mesh item, one undo step;
+    // false, with the reader's or the mesh's message in *error, when it is refused (nothing
+    // added).
+    bool importMesh(const QString &fileName, MeshScheme scheme, QString *error = nullptr);
     bool saveFile(const QString &fileName);
     // Offers the recovery files of crashed sessions; true when one was recovered.
     bool offerRecovery();
@@ -145,6 +150,9 @@ private:
     void addItem(const QString &type);
     // Add > Subdivision surface: one entry per scheme and layout.
     void addSurfaceMenu(QMenu *add, const QString &title);
+    // MainWindowMeshes.cpp: Item > Add > Mesh surface (the starting meshes), File > Import Mesh.
+    void addMeshMenu(QMenu *add, const QString &title);
+    void importMeshDialog();
     void addSurface(const SurfaceSchemeSpec &scheme);
     void duplicateItem();
     void deleteItem();
