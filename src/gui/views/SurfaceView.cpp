@@ -323,7 +323,10 @@ void SurfaceView::startMeshJob()
     const bool fromDrag =
         m_drag.kind == DragKind::ControlPoint || m_drag.kind == DragKind::StartVertex;
     auto ifs = m_ifs;
-    const OwnIteration own = m_own;
+    // The worker's copy without the identity (the item's derived data, Qt values inside): it
+    // is released on the GUI thread, never last on the worker.
+    OwnIteration own = m_own;
+    own.identity.reset();
     const StartSet start = m_start;
     const ImageLabel label = colours().label;
     // While a point moves, the coarse mesh being built ends and shows (a frame a little
