@@ -16,6 +16,7 @@
 #include "TestMain.h"
 
 #include "CliRunner.h"
+#include "PointSets.h"
 
 #include "core/mesh/MeshExamples.h"
 #include "core/mesh/MeshFiles.h"
@@ -26,31 +27,6 @@
 #include <random>
 
 using namespace awb;
-
-namespace {
-
-Mesh jittered(Mesh m, unsigned seed)
-{
-    std::mt19937 random(seed);
-    std::uniform_real_distribution<double> jitter(-0.3, 0.3);
-    for (Eigen::Index v = 0; v < m.vertices.rows(); ++v)
-        for (int c = 0; c < 3; ++c)
-            m.vertices(v, c) += jitter(random);
-    return m;
-}
-
-// Rows of `a` with no row of `b` within `tol`, counted (brute force: the tests' sizes are
-// small).
-int unmatched(const Mat &a, const Mat &b, double tol)
-{
-    int count = 0;
-    for (Eigen::Index i = 0; i < a.rows(); ++i)
-        if ((b.rowwise() - a.row(i)).rowwise().norm().minCoeff() > tol)
-            ++count;
-    return count;
-}
-
-} // namespace
 
 class TestMeshCli : public QObject {
     Q_OBJECT
@@ -176,11 +152,11 @@ void TestMeshCli::pointsAreExactlyTheLimitPositions()
     QFETCH(QString, scheme);
     QFETCH(unsigned, seed);
     QFETCH(bool, closed);
-    const Mesh mesh = jittered(closed ? octahedronMesh() : diagonalGridMesh(4, 3, seed), seed);
+    const Mesh mesh =
+        test::jittered(closed ? octahedronMesh() : diagonalGridMesh(4, 3, seed), seed, 0.3);
     const MeshScheme s = scheme == "loop" ? MeshScheme::Loop : MeshScheme::CatmullClark;
     const QString project = importMesh(mesh, scheme, QString("m%1%2").arg(seed).arg(closed));
-    const double diagonal =
-        (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
+    const double diagonal = test::diagonal(mesh.vertices);
     for (int depth = 0; depth <= 3; ++depth) {
         QByteArray out, err;
         QCOMPARE(run({"points", project, "--item", QString("m%1%2").arg(seed).arg(closed),
@@ -196,8 +172,7 @@ void TestMeshCli::pointsAreExactlyTheLimitPositions()
         }
         const Mat expected = limitPositions(refineMesh(mesh, s, depth), s);
         // Each limit position at least once, and nothing else, to 1e-9 of the diagonal.
-        QCOMPARE(unmatched(expected, got, 1e-9 * diagonal), 0);
-        QCOMPARE(unmatched(got, expected, 1e-9 * diagonal), 0);
+        QVERIFY(test::setDistance(expected, got) < 1e-9 * diagonal);
     }
 }
 
@@ -230,7 +205,7 @@ void TestMeshCli::analyseListsTheExtraordinaryVertices()
 
 void TestMeshCli::exportObjIsTheRefinedMeshAtItsLimit()
 {
-    const Mesh mesh = jittered(diagonalGridMesh(3, 3, 5), 5);
+    const Mesh mesh = test::jittered(diagonalGridMesh(3, 3, 5), 5, 0.3);
     const QString project = importMesh(mesh, "catmull-clark", "grid");
     const QString obj = m_dir.filePath("limit.obj");
     QCOMPARE(run({"export", project, "--item", "grid", "--format", "obj", "--rounds", "2", "--out",

@@ -18,6 +18,7 @@
 
 #include <QtTest>
 
+#include "PointSets.h"
 #include "TestMain.h"
 
 #include <cmath>
@@ -25,6 +26,8 @@
 #include <random>
 
 using namespace awb;
+using awb::test::diagonal;
+using awb::test::setDistance;
 namespace osd = OpenSubdiv;
 
 namespace {
@@ -141,24 +144,7 @@ RowVec piecePoint(const MeshPieces &pieces, const MeshPieceRoot &root, const Mat
 
 OsdResult openSubdiv(const Mesh &m, MeshScheme scheme, int levels)
 {
-    osd::Sdc::Options options;
-    options.SetVtxBoundaryInterpolation(osd::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
-    options.SetTriangleSubdivision(osd::Sdc::Options::TRI_SUB_CATMARK);
-    std::vector<int> counts, indices;
-    for (const auto &f : m.faces) {
-        counts.push_back(int(f.size()));
-        indices.insert(indices.end(), f.begin(), f.end());
-    }
-    osd::Far::TopologyDescriptor desc;
-    desc.numVertices = int(m.vertices.rows());
-    desc.numFaces = int(m.faces.size());
-    desc.numVertsPerFace = counts.data();
-    desc.vertIndicesPerFace = indices.data();
-    using Factory = osd::Far::TopologyRefinerFactory<osd::Far::TopologyDescriptor>;
-    const auto type =
-        scheme == MeshScheme::Loop ? osd::Sdc::SCHEME_LOOP : osd::Sdc::SCHEME_CATMARK;
-    std::unique_ptr<osd::Far::TopologyRefiner> refiner(
-        Factory::Create(desc, Factory::Options(type, options)));
+    auto refiner = openSubdivRefiner(m, scheme);
     osd::Far::TopologyRefiner::UniformOptions uniform(levels);
     uniform.fullTopologyInLastLevel = true;
     refiner->RefineUniform(uniform);
@@ -183,18 +169,6 @@ OsdResult openSubdiv(const Mesh &m, MeshScheme scheme, int levels)
             r.limits(i, k) = limit[std::size_t(i)].p[k];
         }
     return r;
-}
-
-// The largest distance from a row of a to the nearest row of b, both ways.
-double setDistance(const Mat &a, const Mat &b)
-{
-    const auto directed = [](const Mat &x, const Mat &y) {
-        double worst = 0;
-        for (Eigen::Index i = 0; i < x.rows(); ++i)
-            worst = std::max(worst, (y.rowwise() - x.row(i)).rowwise().norm().minCoeff());
-        return worst;
-    };
-    return std::max(directed(a, b), directed(b, a));
 }
 
 // n sectors of k rings around vertex 0 (quads, or triangles), open at the rim: an interior
@@ -262,10 +236,6 @@ Mesh cappedPrism(std::mt19937 &random)
     return m;
 }
 
-double diagonal(const Mat &v)
-{
-    return (v.colwise().maxCoeff() - v.colwise().minCoeff()).norm();
-}
 
 } // namespace
 

@@ -10,25 +10,23 @@
 
 #include <QtTest>
 
+#include "PointSets.h"
 #include "TestMain.h"
 
 #include <Eigen/Eigenvalues>
 
-#include <array>
 #include <cmath>
-#include <limits>
 #include <map>
-#include <random>
-#include <unordered_map>
 
 using namespace awb;
+using awb::test::diagonal;
+using awb::test::directedDistance;
+using awb::test::jittered;
 
 Q_DECLARE_METATYPE(awb::Mesh)
 Q_DECLARE_METATYPE(awb::MeshScheme)
 
 namespace {
-
-double diagonal(const Mat &v) { return (v.colwise().maxCoeff() - v.colwise().minCoeff()).norm(); }
 
 Mat collect(const MeshPieces &pieces, const Mat &vertices, const MeshStart &start, int depth)
 {
@@ -45,56 +43,6 @@ Mat collect(const MeshPieces &pieces, const Mat &vertices, const MeshStart &star
     for (std::size_t i = 0; i < rows.size(); ++i)
         out.row(Eigen::Index(i)) = rows[i];
     return out;
-}
-
-// The largest distance from a row of `a` to the nearest row of `b`, through a grid of cells of
-// size `cell` searched in growing shells, at most `shells` of them (infinity beyond).
-double directedDistance(const Mat &a, const Mat &b, double cell, long shells = 64)
-{
-    struct Hash {
-        std::size_t operator()(const std::array<long, 3> &k) const
-        {
-            return std::size_t(k[0] * 73856093L ^ k[1] * 19349663L ^ k[2] * 83492791L);
-        }
-    };
-    std::unordered_map<std::array<long, 3>, std::vector<Eigen::Index>, Hash> grid;
-    const auto keyOf = [cell](const RowVec &p) {
-        return std::array<long, 3>{long(std::floor(p(0) / cell)), long(std::floor(p(1) / cell)),
-                                   long(std::floor(p(2) / cell))};
-    };
-    for (Eigen::Index j = 0; j < b.rows(); ++j)
-        grid[keyOf(b.row(j))].push_back(j);
-    double worst = 0.0;
-    for (Eigen::Index i = 0; i < a.rows(); ++i) {
-        const auto k = keyOf(a.row(i));
-        double best = std::numeric_limits<double>::infinity();
-        // Shell r holds the cells at Chebyshev distance r; every point beyond it is farther
-        // than r cells.
-        for (long r = 0; r <= shells && !(best <= double(r) * cell); ++r)
-            for (long dx = -r; dx <= r; ++dx)
-                for (long dy = -r; dy <= r; ++dy)
-                    for (long dz = -r; dz <= r; ++dz) {
-                        if (std::max({std::abs(dx), std::abs(dy), std::abs(dz)}) != r)
-                            continue;
-                        const auto it = grid.find({k[0] + dx, k[1] + dy, k[2] + dz});
-                        if (it == grid.end())
-                            continue;
-                        for (Eigen::Index j : it->second)
-                            best = std::min(best, (a.row(i) - b.row(j)).norm());
-                    }
-        worst = std::max(worst, best);
-    }
-    return worst;
-}
-
-Mesh jittered(Mesh m, unsigned seed)
-{
-    std::mt19937 random(seed);
-    std::uniform_real_distribution<double> jitter(-0.2, 0.2);
-    for (Eigen::Index v = 0; v < m.vertices.rows(); ++v)
-        for (int c = 0; c < 3; ++c)
-            m.vertices(v, c) += jitter(random);
-    return m;
 }
 
 std::vector<double> moduli(const Mat &S)

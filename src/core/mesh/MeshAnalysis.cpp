@@ -1,8 +1,8 @@
 #include "core/mesh/MeshAnalysis.h"
 
+#include "core/analysis/Spectrum.h"
 #include "core/mesh/VertexSpectrum.h"
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -11,18 +11,6 @@
 namespace awb {
 
 namespace {
-
-std::vector<Complex> sortedEigenvalues(const Mat &S)
-{
-    const Eigen::EigenSolver<Mat> es(S, false);
-    std::vector<Complex> values(es.eigenvalues().data(),
-                                es.eigenvalues().data() + es.eigenvalues().size());
-    std::stable_sort(values.begin(), values.end(), [](const Complex &a, const Complex &b) {
-        return std::abs(a) > std::abs(b) + 1e-12
-               || (std::abs(std::abs(a) - std::abs(b)) <= 1e-12 && a.imag() > b.imag());
-    });
-    return values;
-}
 
 // The left eigenvectors of S that give the limit (eigenvalue 1, weights summing to 1) and the
 // tangent plane (the subdominant pair: two real eigenvectors, or the real and imaginary parts
@@ -33,21 +21,14 @@ struct LeftVectors {
 
 LeftVectors leftVectors(const Mat &S)
 {
-    const Eigen::EigenSolver<Mat> es(S.transpose());
-    std::vector<int> order(std::size_t(S.rows()));
-    for (std::size_t i = 0; i < order.size(); ++i)
-        order[i] = int(i);
-    std::sort(order.begin(), order.end(), [&](int a, int b) {
-        return std::abs(es.eigenvalues()(a)) > std::abs(es.eigenvalues()(b));
-    });
+    const Spectrum left = spectrum(Mat(S.transpose()), 1e-9);  // by modulus, largest first
     LeftVectors out;
-    out.limit = es.eigenvectors().col(order[0]).real().transpose();
+    out.limit = left.vectors[0].real().transpose();
     out.limit /= out.limit.sum();
-    const Eigen::VectorXcd u = es.eigenvectors().col(order[1]);
-    out.tangentA = u.real().transpose();
-    out.tangentB = u.imag().transpose();
+    out.tangentA = left.vectors[1].real().transpose();
+    out.tangentB = left.vectors[1].imag().transpose();
     if (out.tangentB.norm() < 1e-12 * out.tangentA.norm())
-        out.tangentB = es.eigenvectors().col(order[2]).real().transpose();
+        out.tangentB = left.vectors[2].real().transpose();
     return out;
 }
 
@@ -139,7 +120,7 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
             const Mat &S = pieces.types[std::size_t(settled)].children.front().S;
             e.ring = "piece";
             e.ringSize = int(S.rows());
-            e.eigenvalues = sortedEigenvalues(S);
+            e.eigenvalues = spectrum(S, 1e-9).values;
             if (e.eigenvalues.size() > 1)
                 e.subdominant = std::abs(e.eigenvalues[1]);
             for (std::size_t k = 2; k < e.eigenvalues.size(); ++k)

@@ -150,7 +150,8 @@ private:
     void addItem(const QString &type);
     // Add > Subdivision surface: one entry per scheme and layout.
     void addSurfaceMenu(QMenu *add, const QString &title);
-    // MainWindowMeshes.cpp: Item > Add > Mesh surface (the starting meshes), File > Import Mesh.
+    // MainWindowItems.cpp (with addItem, addSurface*, duplicateItem, deleteItem): Item > Add >
+    // Mesh surface (the starting meshes), File > Import Mesh.
     void addMeshMenu(QMenu *add, const QString &title);
     void importMeshDialog();
     void addSurface(const SurfaceSchemeSpec &scheme);

@@ -1,0 +1,199 @@
+// The main window's item actions: Item > Add (every kind; surfaces by scheme and layout; mesh
+// surfaces from the starting meshes), Duplicate, Delete, and File > Import Mesh… -- each one
+// undo step.
+
+#include "gui/app/MainWindow.h"
+
+#include "core/ifs/SurfaceIfs.h"
+#include "core/mesh/MeshExamples.h"
+#include "core/mesh/MeshFiles.h"
+#include "gui/app/ItemController.h"
+#include "gui/app/Messages.h"
+#include "model/EigenvaluePlotItem.h"
+#include "model/ItemRegistry.h"
+#include "model/Project.h"
+#include "model/ProjectIO.h"
+#include "model/SubdivisionMeshItem.h"
+#include "model/SubdivisionSurfaceItem.h"
+
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QJsonArray>
+#include <QMenu>
+
+namespace awb {
+
+void MainWindow::addItem(const QString &type)
+{
+    std::unique_ptr<Item> item = ItemRegistry::instance().create(type);
+    if (!item)
+        return;
+    if (auto *a = qobject_cast<AttractorItem *>(item.get())) {
+        AlgorithmSpec alg = a->algorithm();
+        alg.depth = m_preferences.defaultDepth;
+        if (!a->checkAlgorithm(alg))
+            a->setAlgorithm(alg);
+    }
+    // A new eigenvalue plot analyses the item drawn now and sits under it in the tree.
+    if (auto *plot = qobject_cast<EigenvaluePlotItem *>(item.get())) {
+        if (AttractorItem *source = m_controller->drawnItem()) {
+            plot->setSource(source->name());
+            plot->setName(tr("Spectra of %1").arg(source->name()));
+            m_project->addItem(std::move(item), source);
+            return;
+        }
+    }
+    m_project->addItem(std::move(item), nullptr);
+}
+
+void MainWindow::addSurfaceMenu(QMenu *add, const QString &title)
+{
+    // One entry per scheme and layout: a surface's net is fixed by both, so they are chosen
+    // up front; the user then drags the default net into shape.
+    QMenu *menu = add->addMenu(title);
+    const QStringList schemes{tr("Bicubic B-spline"), tr("Loop (box spline)"),
+                              tr("Kobbelt √3")};
+    const SurfaceSchemeSpec::Kind kinds[] = {SurfaceSchemeSpec::Kind::Bicubic,
+                                             SurfaceSchemeSpec::Kind::Loop,
+                                             SurfaceSchemeSpec::Kind::Sqrt3};
+    for (int k = 0; k < 3; ++k)
+        for (const QString &layout : SurfaceSchemeSpec::layoutNames(kinds[k])) {
+            QAction *a = menu->addAction(tr("%1, %2 layout").arg(schemes[k], layout));
+            const SurfaceSchemeSpec spec{kinds[k], layout};
+            a->setObjectName(QStringLiteral("actionAddSurface_%1_%2")
+                                 .arg(SurfaceSchemeSpec::kindNames().value(k), layout));
+            // The first entry is the kind's plain "add" action, as for the other kinds.
+            if (menu->actions().size() == 1)
+                a->setObjectName(QStringLiteral("actionAdd_")
+                                 + SubdivisionSurfaceItem::staticType());
+            connect(a, &QAction::triggered, this, [this, spec] { addSurface(spec); });
+        }
+}
+
+void MainWindow::addSurface(const SurfaceSchemeSpec &scheme)
+{
+    auto item = std::make_unique<SubdivisionSurfaceItem>();
+    if (!item->setScheme(scheme))
+        return;
+    item->setName(tr("%1 surface").arg(scheme.layout));
+    AlgorithmSpec alg = item->algorithm();
+    alg.depth = std::min(m_preferences.defaultDepth, 7);
+    if (!item->checkAlgorithm(alg))
+        item->setAlgorithm(alg);
+    // Start from the polygon of limit points at the domain's corners: its images tile the
+    // surface from the first level on (a triangle of control points only converges to it).
+    if (const auto d = item->derivedIfs(); d && d->surface
+                                           && d->surface->cornerLimitPoints.rows() >= 3) {
+        const Mat &c = d->surface->cornerLimitPoints;
+        StartSetSpec start;
+        start.kind = c.rows() == 3 ? StartSetSpec::Kind::Triangle : StartSetSpec::Kind::Polygon;
+        start.points.clear(); // not the default set's point
+        for (Eigen::Index r = 0; r < c.rows(); ++r)
+            start.points.push_back({c(r, 0), c(r, 1), c(r, 2)});
+        item->setStartSet(start);
+    }
+    m_project->addItem(std::move(item), nullptr);
+}
+
+void MainWindow::duplicateItem()
+{
+    if (!m_current)
+        return;
+    QJsonObject root = ProjectIO::toJson(*m_project);
+    root[QStringLiteral("items")] = QJsonArray{ProjectIO::itemToJson(*m_current)};
+    ProjectData data;
+    QString error;
+    if (!ProjectIO::parseRoot(root, tr("duplicate"), &data, &error) || data.items.empty()) {
+        m_messages->error(this, tr("Duplicate Item"), error);
+        return;
+    }
+    m_project->addItem(std::move(data.items.front()), m_current->parentItem(),
+                       m_project->rowOf(m_current) + 1);
+}
+
+void MainWindow::deleteItem()
+{
+    if (m_current)
+        m_project->removeItem(m_current);
+}
+
+bool MainWindow::importMesh(const QString &fileName, MeshScheme scheme, QString *error)
+{
+    QString why;
+    auto item = std::make_unique<SubdivisionMeshItem>();
+    try {
+        const Mesh mesh = readMesh(QFile::encodeName(fileName).toStdString());
+        if (!item->setMesh(mesh, scheme, &why))
+            why = QFileInfo(fileName).fileName() + QStringLiteral(": ") + why;
+    } catch (const std::exception &e) {  // the reader's message names the file and the place
+        why = QString::fromStdString(e.what());
+    }
+    if (!why.isEmpty()) {
+        if (error)
+            *error = why;
+        return false;
+    }
+    QString name = QFileInfo(fileName).completeBaseName();
+    for (int k = 2; m_project->findItem(name); ++k)
+        name = QStringLiteral("%1 (%2)").arg(QFileInfo(fileName).completeBaseName()).arg(k);
+    item->setName(name);
+    m_project->addItem(std::move(item), nullptr);
+    return true;
+}
+
+void MainWindow::importMeshDialog()
+{
+    const QString file = QFileDialog::getOpenFileName(
+        this, tr("Import Mesh"), QString(),
+        tr("Meshes (*.obj *.off *.ply);;Wavefront OBJ (*.obj);;OFF (*.off);;PLY (*.ply)"));
+    if (file.isEmpty())
+        return;
+    const QStringList schemes{tr("Catmull–Clark (any polygons)"), tr("Loop (triangles only)")};
+    bool ok = false;
+    const QString chosen = QInputDialog::getItem(this, tr("Import Mesh"),
+                                                 tr("Subdivision scheme:"), schemes, 0, false,
+                                                 &ok);
+    if (!ok)
+        return;
+    QString error;
+    if (!importMesh(file, chosen == schemes[1] ? MeshScheme::Loop : MeshScheme::CatmullClark,
+                    &error))
+        m_messages->error(this, tr("Import Mesh"), error);
+}
+
+void MainWindow::addMeshMenu(QMenu *add, const QString &title)
+{
+    // The starting meshes of every subdivision course, each with the scheme it is usually
+    // shown with (Properties switches it: Loop takes triangle meshes only).
+    QMenu *menu = add->addMenu(title);
+    const struct {
+        const char *name;
+        QString text;
+        MeshScheme scheme;
+    } meshes[] = {
+        {"cube", tr("Cube (Catmull–Clark)"), MeshScheme::CatmullClark},
+        {"tetrahedron", tr("Tetrahedron (Loop)"), MeshScheme::Loop},
+        {"octahedron", tr("Octahedron (Loop)"), MeshScheme::Loop},
+        {"icosahedron", tr("Icosahedron (Loop)"), MeshScheme::Loop},
+        {"pentagonal-prism", tr("Pentagonal prism (Catmull–Clark)"), MeshScheme::CatmullClark},
+        {"grid", tr("Open grid (Catmull–Clark)"), MeshScheme::CatmullClark},
+        {"diagonal-grid", tr("Grid of mixed diagonals (Loop)"), MeshScheme::Loop},
+    };
+    for (const auto &m : meshes) {
+        QAction *a = menu->addAction(m.text);
+        a->setObjectName(QStringLiteral("actionAddMesh_") + QString::fromLatin1(m.name));
+        const std::string name = m.name;
+        const MeshScheme scheme = m.scheme;
+        const QString text = m.text;
+        connect(a, &QAction::triggered, this, [this, name, scheme, text] {
+            auto item = std::make_unique<SubdivisionMeshItem>();
+            if (!item->setMesh(exampleMesh(name), scheme))
+                return;
+            item->setName(text);
+            m_project->addItem(std::move(item), nullptr);
+        });
+    }
+}
+
+} // namespace awb
