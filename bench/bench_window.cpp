@@ -16,7 +16,8 @@
 //       [--keep-logs DIR]
 //
 // Cases: sierpinski-d8, sierpinski-d11 (000 Fig. 11), bspline-d14 (000 Fig. 2), loop-drag-3d
-// (000 Fig. 7, a net point), loop-orbit-3d (the camera). The goals (issue 28): 2D drags
+// (000 Fig. 7, a net point), loop-orbit-3d (the camera), cube-drag-100k, cube-orbit-100k,
+// cube-drag-1m, cube-orbit-1m (a Catmull-Clark mesh, issue 31). The goals (issue 28): 2D drags
 // >= 30 frames/s, lag <= 50 ms, final <= 150 ms (depth 11: 300 ms); 3D >= 20 frames/s, full
 // quality <= 300 ms after the release. No timed test depends on this program.
 
@@ -82,6 +83,8 @@ std::vector<Case> cases()
                                           "control points");
     const QString fig7 = QStringLiteral("000-fig07-box-spline-hexagon.awb");
     const QString hexagon = QStringLiteral("000 Fig. 7: box-spline hexagon from a triangle");
+    const QString cube = QStringLiteral("mesh-cube-catmull-clark.awb");
+    const QString cubeItem = QStringLiteral("Cube (Catmull–Clark)");
     return {
         {QStringLiteral("sierpinski-d8"), fig11, gasket, 8, QStringLiteral("attractor"), 4, -3, 0},
         {QStringLiteral("sierpinski-d11"), fig11, gasket, 11, QStringLiteral("attractor"), 4, -3, 0},
@@ -90,6 +93,12 @@ std::vector<Case> cases()
          QStringLiteral("attractor"), 2, 0, 3},
         {QStringLiteral("loop-drag-3d"), fig7, hexagon, 0, QStringLiteral("surface"), 9, 3, 0},
         {QStringLiteral("loop-orbit-3d"), fig7, hexagon, 0, QStringLiteral("surface"), -1, 3, 0},
+        // A mesh of any topology (issue 31): the Catmull-Clark cube at about 100 k and 1.5 M
+        // faces of its limit surface (depth 5 and 7: 96 quads after isolation, 4^k each).
+        {QStringLiteral("cube-drag-100k"), cube, cubeItem, 5, QStringLiteral("surface"), 6, 3, 0},
+        {QStringLiteral("cube-orbit-100k"), cube, cubeItem, 5, QStringLiteral("surface"), -1, 3, 0},
+        {QStringLiteral("cube-drag-1m"), cube, cubeItem, 7, QStringLiteral("surface"), 6, 3, 0},
+        {QStringLiteral("cube-orbit-1m"), cube, cubeItem, 7, QStringLiteral("surface"), -1, 3, 0},
     };
 }
 

@@ -124,23 +124,16 @@ int exportData(const QStringList &args)
             writePointsPly(file, item->name(), *d, start, depth, mapColor);
         } else if (const auto *mesh = qobject_cast<const SubdivisionMeshItem *>(item)) {
             // The mesh after k steps, every vertex at its exact limit position.
-            const int rounds = parser.isSet("rounds") ? intOption(parser, "rounds", 0, 8)
-                               : parser.isSet("depth") ? intOption(parser, "depth", 0, 8)
+            const int most = SubdivisionMeshItem::maxExportRounds;
+            const int rounds = parser.isSet("rounds")  ? intOption(parser, "rounds", 0, most)
+                               : parser.isSet("depth") ? intOption(parser, "depth", 0, most)
                                                        : std::min(item->algorithm().depth, 6);
-            Mesh refined = refineMesh(mesh->mesh(), mesh->scheme(), rounds);
-            if (refined.vertices.rows() > 50000000)
-                throw Failure{CliTr::tr("%1 steps give %2 vertices: too many")
-                                  .arg(rounds)
-                                  .arg(refined.vertices.rows())};
-            refined.vertices = limitPositions(refined, mesh->scheme());
-            std::ostringstream text;
-            writeObj(text, refined,
-                     CliTr::tr("Attractor Workbench: item %1, %2 after %3 steps, "
-                                           "every vertex at its limit position")
-                         .arg(mesh->name(), MeshInputs::schemeNames().at(int(mesh->scheme())))
-                         .arg(rounds)
-                         .toStdString());
-            const std::string bytes = text.str();
+            std::string bytes;
+            try {
+                bytes = mesh->limitObj(rounds);
+            } catch (const InputError &e) {
+                throw Failure{QString::fromStdString(e.what())};
+            }
             if (file.write(bytes.data(), qint64(bytes.size())) != qint64(bytes.size()))
                 throw Failure{CliTr::tr("cannot write %1: %2")
                                   .arg(outFile, file.errorString())};

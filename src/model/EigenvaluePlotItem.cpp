@@ -4,6 +4,11 @@
 #include "model/Commands.h"
 #include "model/Project.h"
 #include "model/ProjectIO.h"
+#include "model/SubdivisionMeshItem.h"
+
+#include "core/mesh/MeshAnalysis.h"
+
+#include <cmath>
 
 namespace awb {
 
@@ -38,6 +43,20 @@ bool EigenvaluePlotItem::setMatrixKind(MatrixKind kind)
                   &EigenvaluePlotItem::matrixKindChanged,
                   tr("Analyse the matrices %1 in %2")
                       .arg(matrixKindNames().at(int(kind)), name()));
+    return true;
+}
+
+bool EigenvaluePlotItem::setExtraordinary(int vertex, int face)
+{
+    const std::pair<int, int> to{std::max(-1, face >= 0 ? -1 : vertex), std::max(-1, face)};
+    if (to == m_vertexFace)
+        return true;
+    const QString text = to.second >= 0   ? tr("Analyse the centre of face %1 in %2")
+                                                  .arg(to.second).arg(name())
+                         : to.first >= 0 ? tr("Analyse vertex %1 in %2").arg(to.first).arg(name())
+                                         : tr("Analyse the mesh's matrices in %1").arg(name());
+    applyProperty(&EigenvaluePlotItem::m_vertexFace, to, &EigenvaluePlotItem::extraordinaryChanged,
+                  text);
     return true;
 }
 
@@ -95,6 +114,27 @@ EigenvalueData EigenvaluePlotItem::compute() const
     EigenvalueData out;
     out.symbol = matrixKindNames().at(int(m_matrixKind));
     out.matrices = analysedMatrices(*derived, m_matrixKind);
+    if (vertex() >= 0 || face() >= 0) {
+        const auto *mesh = dynamic_cast<const SubdivisionMeshItem *>(source);
+        if (!mesh)
+            throw InputError(toStd(tr("\"%1\" is not a mesh: it has no extraordinary vertices")
+                                       .arg(m_source)));
+        const auto list = mesh->extraordinary();
+        const ExtraordinaryVertex *e = mesh->findExtraordinary(*list, vertex(), face());
+        if (!e)
+            throw InputError(toStd(
+                (face() >= 0 ? tr("the centre of face %1 of \"%2\" is not an extraordinary "
+                                  "vertex")
+                                   .arg(face())
+                             : tr("vertex %1 of \"%2\" is not an extraordinary vertex")
+                                   .arg(vertex()))
+                    .arg(m_source)));
+        if (m_matrixKind != MatrixKind::S)
+            throw InputError(toStd(tr("an extraordinary vertex has its local subdivision "
+                                      "matrix S only")));
+        out.matrices = AnalysisMatrices{};
+        out.matrices.real.push_back(e->S);
+    }
     const AnalysisMatrices &matrices = out.matrices;
     if (matrices.count() == 0)
         throw InputError(toStd(tr("\"%1\" has no matrices %2: %3")
@@ -116,6 +156,10 @@ void EigenvaluePlotItem::write(QJsonObject &json) const
     Item::write(json);
     json["source"] = m_source;
     json["matrices"] = matrixKindNames().at(int(m_matrixKind));
+    if (vertex() >= 0)
+        json["vertex"] = vertex();
+    if (face() >= 0)
+        json["face"] = face();
 }
 
 void EigenvaluePlotItem::read(const FieldReader &fields)
@@ -123,6 +167,17 @@ void EigenvaluePlotItem::read(const FieldReader &fields)
     Item::read(fields);
     m_source = fields.string("source");
     m_matrixKind = MatrixKind(fields.choice("matrices", matrixKindNames(), int(m_matrixKind)));
+    const auto index = [&fields](const char *key) {
+        if (!fields.has(key))
+            return -1;
+        const double x = fields.number(key);
+        if (x != std::floor(x) || x < 0 || x > 1e9)
+            fields.fail(key, tr("expected a vertex or face number (0-based)"));
+        return int(x);
+    };
+    m_vertexFace = {index("vertex"), index("face")};
+    if (m_vertexFace.second >= 0)
+        m_vertexFace.first = -1;
 }
 
 } // namespace awb

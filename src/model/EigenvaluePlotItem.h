@@ -35,6 +35,12 @@ public:
     // The name of the item whose matrices are analysed ("" for none yet).
     QString source() const { return m_source; }
     bool setSource(const QString &name);
+    // For a mesh source: the extraordinary vertex whose local subdivision matrix is analysed
+    // (issue 31) -- an input vertex, or with `face` the centre of a face that is not a quad
+    // (Catmull-Clark); -1, -1: the mesh's own matrices (derived S).
+    int vertex() const { return m_vertexFace.first; }
+    int face() const { return m_vertexFace.second; }
+    bool setExtraordinary(int vertex, int face = -1);
     MatrixKind matrixKind() const { return m_matrixKind; }
     bool setMatrixKind(MatrixKind kind);
     // "S", "A", "M" in enum order.
@@ -58,6 +64,7 @@ public:
 signals:
     void sourceChanged();
     void matrixKindChanged();
+    void extraordinaryChanged();
 
 protected:
     bool dropDerived() override { return m_eigenvalues.drop(); }
@@ -68,6 +75,7 @@ private:
 
     QString m_source;
     MatrixKind m_matrixKind = MatrixKind::S;
+    std::pair<int, int> m_vertexFace{-1, -1};
     DerivedCache<EigenvalueData> m_eigenvalues;
 };
 

@@ -89,7 +89,7 @@ QJsonObject meshAnalysisJson(const SubdivisionMeshItem &item)
     o["vertex_count"] = int(item.inputs().vertices.size());
     o["face_count"] = int(item.inputs().faces.size());
     QJsonArray extraordinary;
-    for (const ExtraordinaryVertex &e : item.extraordinary())
+    for (const ExtraordinaryVertex &e : *item.extraordinary())
         extraordinary.append(vertexJson(e));
     o["extraordinary"] = extraordinary;
     o["pieces"] = piecesJson(*pieces);

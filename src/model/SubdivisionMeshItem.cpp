@@ -2,11 +2,16 @@
 
 #include "core/mesh/MeshAnalysis.h"
 #include "core/mesh/MeshExamples.h"
+#include "core/mesh/MeshFiles.h"
 #include "core/mesh/MeshIterate.h"
 #include "core/mesh/MeshPieces.h"
+#include "core/mesh/MeshRefine.h"
 #include "model/ProjectIO.h"
 
 #include <QJsonArray>
+
+#include <cmath>
+#include <sstream>
 
 namespace awb {
 
@@ -95,12 +100,61 @@ std::shared_ptr<const MeshPieces> SubdivisionMeshItem::pieces() const
     return m_pieces;
 }
 
-std::vector<ExtraordinaryVertex> SubdivisionMeshItem::extraordinary() const
+std::shared_ptr<const std::vector<ExtraordinaryVertex>> SubdivisionMeshItem::extraordinary() const
 {
     const auto p = pieces();
     if (!p)
-        return {};
-    return extraordinaryVertices(*p, toMatrix(m_inputs.vertices, 3));
+        return std::make_shared<const std::vector<ExtraordinaryVertex>>();
+    {
+        std::lock_guard<std::mutex> lock(m_piecesMutex);
+        if (m_extraordinary && m_extraordinaryOf == m_inputs)
+            return m_extraordinary;
+    }
+    auto list = std::make_shared<const std::vector<ExtraordinaryVertex>>(
+        extraordinaryVertices(*p, toMatrix(m_inputs.vertices, 3)));
+    std::lock_guard<std::mutex> lock(m_piecesMutex);
+    m_extraordinary = list;
+    m_extraordinaryOf = m_inputs;
+    return list;
+}
+
+std::string SubdivisionMeshItem::limitObj(int rounds) const
+{
+    if (const MaybeProblem p = m_inputs.check())
+        throw InputError((p->field + ": " + p->message).toStdString());
+    if (rounds < 0 || rounds > maxExportRounds)
+        throw InputError(tr("the steps before the limit positions must be 0 to %1, got %2")
+                             .arg(maxExportRounds)
+                             .arg(rounds)
+                             .toStdString());
+    // Each step multiplies the vertices by about 4: refuse before refining, not after.
+    const Mesh mesh = m_inputs.mesh();
+    const double estimate = double(mesh.vertices.rows() + mesh.faces.size()) * std::pow(4.0, rounds);
+    if (estimate > double(maxExportVertices))
+        throw InputError(tr("%1 steps give about %2 vertices: more than %3")
+                             .arg(rounds)
+                             .arg(estimate, 0, 'g', 3)
+                             .arg(double(maxExportVertices), 0, 'g', 3)
+                             .toStdString());
+    Mesh refined = refineMesh(mesh, m_inputs.scheme, rounds);
+    refined.vertices = limitPositions(refined, m_inputs.scheme);
+    std::ostringstream text;
+    writeObj(text, refined,
+             tr("Attractor Workbench: item %1, %2 after %3 steps, every vertex at its limit "
+                "position")
+                 .arg(name(), MeshInputs::schemeNames().at(int(m_inputs.scheme)))
+                 .arg(rounds)
+                 .toStdString());
+    return text.str();
+}
+
+const ExtraordinaryVertex *SubdivisionMeshItem::findExtraordinary(
+    const std::vector<ExtraordinaryVertex> &list, int vertex, int face) const
+{
+    for (const ExtraordinaryVertex &e : list)
+        if (face >= 0 ? e.face == face : (vertex >= 0 && e.vertex == vertex))
+            return &e;
+    return nullptr;
 }
 
 DerivedIfs SubdivisionMeshItem::computeIfs() const

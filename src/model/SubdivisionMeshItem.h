@@ -60,8 +60,20 @@ public:
     // The pieces of the mesh's IFS: they depend on the faces and the scheme only, so moving a
     // vertex keeps them. Null when the mesh is refused (derivedError() says why).
     std::shared_ptr<const MeshPieces> pieces() const;
-    // The extraordinary vertices with their spectra (empty when the mesh is refused).
-    std::vector<ExtraordinaryVertex> extraordinary() const;
+    // The extraordinary vertices with their spectra (empty when the mesh is refused); kept
+    // until the mesh changes.
+    std::shared_ptr<const std::vector<ExtraordinaryVertex>> extraordinary() const;
+    // The one at input vertex `vertex` (or, with `face` >= 0, at the centre of that face), or
+    // null.
+    const ExtraordinaryVertex *findExtraordinary(
+        const std::vector<ExtraordinaryVertex> &list, int vertex, int face = -1) const;
+
+    // The mesh after `rounds` steps of its scheme, every vertex at its exact limit position, as
+    // OBJ text (File > Export Mesh, attractor-cli export --format obj). InputError when the
+    // mesh is refused or the steps give more than maxExportVertices vertices.
+    static constexpr int maxExportRounds = 8;
+    static constexpr Eigen::Index maxExportVertices = 50'000'000;
+    std::string limitObj(int rounds) const;
 
     // "scheme.kind" (0 Catmull-Clark, 1 Loop), "colouring" (0 by map, 1 by level).
     QList<ParameterInfo> parameters() const override;
@@ -94,6 +106,9 @@ private:
     mutable std::shared_ptr<const MeshPieces> m_pieces;
     mutable std::vector<std::vector<int>> m_piecesFaces;
     mutable MeshScheme m_piecesScheme = MeshScheme::CatmullClark;
+    // extraordinary() for m_extraordinaryOf.
+    mutable std::shared_ptr<const std::vector<ExtraordinaryVertex>> m_extraordinary;
+    mutable MeshInputs m_extraordinaryOf;
 };
 
 } // namespace awb

@@ -47,6 +47,7 @@ private slots:
     void extraordinaryVertices();
     void subdominantEigenvalueClosedForms();
     void characteristicMapWindsOnce();
+    void characteristicMapIsKeptForDrawing();
     void badMeshesAreRefusedByName();
 };
 
@@ -245,6 +246,45 @@ void TestMesh::characteristicMapWindsOnce()
         QCOMPARE(twice.winding, 2);
         QVERIFY(!twice.injective());
     }
+}
+
+void TestMesh::characteristicMapIsKeptForDrawing()
+{
+    // The map the view draws is the one checked: the n faces around the vertex refined three
+    // times (64 cells each), each cell's signed area of one sign away from the centre, every
+    // sector present, and an outline once around. The Catmull-Clark valence 3 of the issue:
+    // lambda = 0.4101 (Stam 1998).
+    for (MeshScheme scheme : {MeshScheme::CatmullClark, MeshScheme::Loop}) {
+        for (int n : {3, 5, 7}) {
+            const auto s = sharedVertexSpectrum(scheme, n);
+            QCOMPARE(sharedVertexSpectrum(scheme, n).get(), s.get());  // computed once
+            const CharacteristicMap &m = s->characteristic;
+            QCOMPARE(int(m.cells.size()), 64 * n);
+            QCOMPARE(m.cellAreas.size(), m.cells.size());
+            QCOMPARE(m.cellSectors.size(), m.cells.size());
+            int centre = 0, positive = 0, negative = 0;
+            std::vector<int> perSector(std::size_t(n), 0);
+            for (std::size_t c = 0; c < m.cells.size(); ++c) {
+                const double a = m.cellAreas[c];
+                (a == 0 ? centre : a > 0 ? positive : negative)++;
+                QVERIFY(m.cellSectors[c] >= 0 && m.cellSectors[c] < n);
+                ++perSector[std::size_t(m.cellSectors[c])];
+            }
+            QCOMPARE(centre, n);  // one cell per face touches the centre
+            QVERIFY(positive == 0 || negative == 0);
+            for (int k : perSector)
+                QCOMPARE(k, 64);
+            QVERIFY(m.outline.size() >= std::size_t(8 * n));
+            QVERIFY(std::abs(s->subdominant - closedFormSubdominant(scheme, n)) < 1e-12);
+        }
+    }
+    QVERIFY(std::abs(sharedVertexSpectrum(MeshScheme::CatmullClark, 3)->subdominant - 0.4101)
+            < 5e-5);
+    QVERIFY(std::abs(sharedVertexSpectrum(MeshScheme::Loop, 5)->subdominant - 0.4523) < 5e-5);
+    const std::vector<VertexSpectrum> table = valenceSpectra(MeshScheme::Loop, 3, 16);
+    QCOMPARE(int(table.size()), 14);
+    for (std::size_t k = 0; k < table.size(); ++k)
+        QCOMPARE(table[k].valence, int(k) + 3);
 }
 
 void TestMesh::badMeshesAreRefusedByName()

@@ -1,7 +1,18 @@
 // Meshes in the main window (issues 30 and 31): File > Import Mesh adds a mesh item in one undo
 // step and the 3D view draws its limit surface; a refused file leaves the project as it was,
-// with the reader's message; Item > Add > Mesh surface offers the starting meshes.
+// with the reader's message; Item > Add > Mesh surface offers the starting meshes. A click on
+// an extraordinary vertex shows its spectrum, Reif's verdict and its characteristic map (the
+// "done when" of issue 31, driven as a user would), File > Export Mesh writes the limit mesh.
 #include "core/mesh/MeshAnalysis.h"
+#include "core/mesh/MeshExamples.h"
+#include "core/mesh/MeshFiles.h"
+#include "core/mesh/VertexSpectrum.h"
+#include "gui/app/ItemController.h"
+#include "gui/views/AnalysisCharts.h"
+#include "gui/views/MatrixView.h"
+#include "gui/views/SpectrumView.h"
+#include "gui/views/VertexPanel.h"
+#include "model/EigenvaluePlotItem.h"
 #include "gui/app/MainWindow.h"
 #include "gui/app/Messages.h"
 #include "gui/views/SurfaceView.h"
@@ -10,9 +21,14 @@
 
 #include <QAction>
 #include <QFile>
+#include <QPainter>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <sstream>
+
+#include "ImageCompare.h"
 #include "TestMain.h"
 #include "TestTime.h"
 
@@ -24,6 +40,9 @@ private slots:
     void importAddsOneUndoableItem();
     void refusedFileChangesNothing();
     void startingMeshes();
+    void extraordinaryVertexInTheWindow_data();
+    void extraordinaryVertexInTheWindow();
+    void exportMeshWritesTheLimitMesh();
 
 private:
     QString write(const QString &name, const QByteArray &text)
@@ -53,7 +72,7 @@ void TestMeshWindow::importAddsOneUndoableItem()
     auto *mesh = qobject_cast<SubdivisionMeshItem *>(w.project()->findItem("octahedron"));
     QVERIFY(mesh);
     QVERIFY(mesh->scheme() == MeshScheme::Loop);
-    const auto e = mesh->extraordinary();
+    const auto e = *mesh->extraordinary();
     QCOMPARE(int(e.size()), 6);
     QVERIFY(std::abs(e.front().subdominant - 0.375) < 1e-12);  // Loop, n = 4: 3/8
     // Shown and drawn by the 3D view.
@@ -106,11 +125,166 @@ void TestMeshWindow::startingMeshes()
         QCOMPARE(w.project()->childCount(), before + 1);
         auto *mesh = qobject_cast<SubdivisionMeshItem *>(w.project()->child(before));
         QVERIFY(mesh);
-        const auto e = mesh->extraordinary();
+        const auto e = *mesh->extraordinary();
         QCOMPARE(int(e.size()), c.extraordinary);
         QVERIFY(std::abs(e.front().subdominant - c.lambda) < 1e-12);
     }
     QVERIFY(w.findChild<QAction *>("actionImportMesh"));
+}
+
+void TestMeshWindow::extraordinaryVertexInTheWindow_data()
+{
+    QTest::addColumn<QString>("mesh");
+    QTest::addColumn<int>("scheme");
+    QTest::addColumn<int>("valence");
+    QTest::addColumn<double>("lambda");
+    QTest::addColumn<int>("ring");
+    // Stam 1998: (5 + cos(2 pi/3) + cos(pi/3) sqrt(2 (9 + cos(2 pi/3)))) / 16 at valence 3;
+    // Loop: 3/8 + cos(2 pi/5) / 4 at valence 5.
+    QTest::newRow("Catmull-Clark cube") << "cube" << int(MeshScheme::CatmullClark) << 3
+                                        << 0.410097050800551 << 19;
+    QTest::newRow("Loop icosahedron") << "icosahedron" << int(MeshScheme::Loop) << 5
+                                      << 0.452254248593737 << 16;
+}
+
+void TestMeshWindow::extraordinaryVertexInTheWindow()
+{
+    QFETCH(QString, mesh);
+    QFETCH(int, scheme);
+    QFETCH(int, valence);
+    QFETCH(double, lambda);
+    QFETCH(int, ring);
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.filePath("recovery"));
+    w.resize(1400, 900);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    // The user's OBJ file (the starting mesh written as any modeller would).
+    std::ostringstream obj;
+    writeObj(obj, exampleMesh(mesh.toStdString()), "a test mesh");
+    const QString file = write(mesh + ".obj", QByteArray::fromStdString(obj.str()));
+    QString error;
+    QVERIFY2(w.importMesh(file, MeshScheme(scheme), &error), qPrintable(error));
+    auto *item = qobject_cast<SubdivisionMeshItem *>(w.project()->findItem(mesh));
+    QVERIFY(item);
+    w.setCurrentItem(item);
+    SurfaceView *view = w.surfaceView();
+    QTRY_VERIFY_WITH_TIMEOUT(view->isVisible() && !view->isRendering() && view->mesh().size() > 0,
+                             awb::test::ms(30000));
+    const auto list = item->extraordinary();
+    QCOMPARE(view->markerCount(), int(list->size()));
+
+    // Drag a vertex: one undo step, undone.
+    const int steps = w.project()->undoStack()->count();
+    const Point original = item->controlPoints(0)[0];
+    const QPoint grab = view->controlPointScreen(0).toPoint();
+    QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, grab);
+    QTest::mouseMove(view, grab + QPoint(0, -12));
+    QTest::mouseMove(view, grab + QPoint(0, -30));
+    QTest::qWait(30);
+    QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, grab + QPoint(0, -30));
+    QVERIFY(!(item->controlPoints(0)[0] == original));
+    QCOMPARE(w.project()->undoStack()->count(), steps + 1);
+    w.project()->undoStack()->undo();
+    QCOMPARE(item->controlPoints(0)[0], original);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering(), awb::test::ms(30000));
+
+    // Click an extraordinary vertex's marker (one away from every handle: a handle under the
+    // mouse is grabbed instead).
+    int chosen = -1;
+    for (int k = 0; k < view->markerCount() && chosen < 0; ++k) {
+        bool free = (*list)[std::size_t(k)].valence == valence;
+        for (int i = 0; i < view->controlPointCount(); ++i) {
+            const QPointF d = view->controlPointScreen(i) - view->markerScreen(k);
+            free = free && QPointF::dotProduct(d, d) > 14.0 * 14.0;
+        }
+        const QPointF at = view->markerScreen(k);
+        free = free && view->rect().contains(at.toPoint());
+        if (free)
+            chosen = k;
+    }
+    QVERIFY2(chosen >= 0, "every marker sits under a handle");
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->markerScreen(chosen).toPoint());
+    QCOMPARE(w.controller()->focusedVertex(), chosen);
+    QCOMPARE(view->selectedMarker(), chosen);
+    w.controller()->refreshNow();
+    // Spectrum dock: the eigenvalues of the vertex's local subdivision matrix, lambda marked.
+    const QList<MapSpectrum> maps = w.spectrumView()->maps();
+    QCOMPARE(maps.size(), 1);
+    QVERIFY2(std::abs(maps.front().subdominant.modulus - lambda) < 1e-9,
+             qPrintable(QString::number(maps.front().subdominant.modulus, 'g', 17)));
+    QCOMPARE(maps.front().spectrum.values.size(), std::size_t(ring));
+    // Matrices dock: that matrix, ring x ring.
+    QCOMPARE(w.matrixView()->matrixCount(), 1);
+    QCOMPARE(w.matrixView()->matrices().front().rows(), Eigen::Index(ring));
+    // Analysis dock, Vertex tab: Reif's verdict with the numbers, the characteristic map.
+    VertexPanel *panel = w.vertexPanel();
+    QCOMPARE(w.analysisCharts()->tabs()->currentWidget(), panel);
+    QVERIFY(panel->hasVertex());
+    const QString verdict = panel->verdictText();
+    QVERIFY2(verdict.contains(QStringLiteral("λ = %1").arg(lambda, 0, 'g', 6))
+                 && verdict.contains(QStringLiteral("C¹ at the vertex"))
+                 && verdict.contains(QStringLiteral("valence %1").arg(valence)),
+             qPrintable(verdict));
+    const CharacteristicMapView *map = panel->mapView();
+    QCOMPARE(map->valence(), valence);
+    QCOMPARE(int(map->map().cells.size()), 64 * valence);
+    QCOMPARE(map->foldedCells(), 0);
+    QVERIFY(map->map().injective());
+    // The picture: the n-fold star, compared with its reference (tolerant).
+    QImage picture(300, 300, QImage::Format_RGB32);
+    {
+        QPainter p(&picture);
+        map->paintMap(p, QRectF(0, 0, 300, 300));
+    }
+    const QString name = QStringLiteral("characteristic-map-%1.png").arg(mesh);
+    const QImage ref = test::reference(name, picture);
+    QVERIFY2(!ref.isNull(), "reference image missing: run with AWB_REGENERATE_REFERENCES=1");
+    const test::ImageDiff d = test::compare(ref, picture);
+    QVERIFY2(d.coverageMismatch < 0.03 && d.meanColour < 20,
+             qPrintable(QStringLiteral("coverage %1, colour %2")
+                            .arg(d.coverageMismatch)
+                            .arg(d.meanColour)));
+    // The valence explorer marks this mesh's valence.
+    const std::vector<int> marked = w.valenceChart()->markedValences();
+    QVERIFY(std::find(marked.begin(), marked.end(), valence) != marked.end());
+    // An eigenvalue plot item of the vertex: kept in the project, one undo step.
+    const int at = w.project()->undoStack()->index();
+    Item *plot = w.controller()->addVertexPlot();
+    QVERIFY(plot);
+    QCOMPARE(w.project()->undoStack()->index(), at + 1);
+    QCOMPARE(plot->parentItem(), item);
+    const auto data = qobject_cast<EigenvaluePlotItem *>(plot)->eigenvalues();
+    QVERIFY(data);
+    QVERIFY(std::abs(data->subdominants.front().modulus - lambda) < 1e-9);
+    // Another item: the focus goes, the docks show that item again.
+    w.setCurrentItem(plot);
+    QCOMPARE(w.controller()->focusedVertex(), -1);
+}
+
+void TestMeshWindow::exportMeshWritesTheLimitMesh()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.filePath("recovery"));
+    QString error;
+    // Not a mesh: refused by name.
+    QVERIFY(!w.exportMesh(m_dir.filePath("x.obj"), 1, &error));
+    QVERIFY2(error.contains("mesh surface"), qPrintable(error));
+    w.findChild<QAction *>("actionAddMesh_cube")->trigger();
+    auto *cube = qobject_cast<SubdivisionMeshItem *>(w.project()->child(w.project()->childCount() - 1));
+    QVERIFY(cube);
+    w.setCurrentItem(cube);
+    const QString out = m_dir.filePath("cube-limit.obj");
+    QVERIFY2(w.exportMesh(out, 2, &error), qPrintable(error));
+    const Mesh back = readMesh(QFile::encodeName(out).toStdString());
+    // Two Catmull-Clark steps of the cube: 98 vertices, 96 quads, all at their limit positions
+    // (inside the cube, on the sphere-like surface: none at a corner of the net).
+    QCOMPARE(back.vertices.rows(), Eigen::Index(98));
+    QCOMPARE(int(back.faces.size()), 96);
+    QVERIFY(back.vertices.cwiseAbs().maxCoeff() < 1.0 - 1e-3);
+    QVERIFY(!w.exportMesh(out, 9, &error));
+    QVERIFY2(error.contains("0 to 8"), qPrintable(error));
+    QVERIFY(w.findChild<QAction *>("actionExportMesh"));
 }
 
 AWB_TEST_MAIN(TestMeshWindow)

@@ -29,11 +29,16 @@
 #include <QDoubleSpinBox>
 #include <QtTest>
 
+#include "ImageCompare.h"
 #include "TestMain.h"
 
 #include "TestTime.h"
 
 using namespace awb;
+using awb::test::compare;
+using awb::test::drawnPixels;
+using awb::test::ImageDiff;
+using awb::test::reference;
 
 namespace {
 
@@ -67,57 +72,6 @@ void feed(SurfaceView &view, SubdivisionSurfaceItem &item)
     view.setRenderSettings(rs);
     view.setControlNet(toMatrix(item.controlPoints(0), 3), item.refinedMesh(0).faces);
     view.setIfs(std::make_shared<const Ifs>(d->ifs), item.coreStartSet(*d), d->mapIndex);
-}
-
-// Fraction of pixels where the two images disagree about being background (white), and the
-// mean colour difference where both are drawn: a tolerant comparison (rasterisation details,
-// thread scheduling and GL drivers differ; the figure must not).
-struct ImageDiff {
-    double coverageMismatch = 1.0;
-    double meanColour = 255.0;
-};
-ImageDiff compare(const QImage &a0, const QImage &b0)
-{
-    const QImage a = a0.convertToFormat(QImage::Format_RGB32);
-    const QImage b = b0.convertToFormat(QImage::Format_RGB32).scaled(a.size());
-    qint64 mismatch = 0, both = 0, drawn = 0;
-    double colour = 0;
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = 0; x < a.width(); ++x) {
-            const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
-            const bool inA = (p & 0xffffff) != 0xffffff, inB = (q & 0xffffff) != 0xffffff;
-            drawn += inA || inB;
-            mismatch += inA != inB;
-            if (inA && inB) {
-                ++both;
-                colour += (std::abs(qRed(p) - qRed(q)) + std::abs(qGreen(p) - qGreen(q))
-                           + std::abs(qBlue(p) - qBlue(q))) / 3.0;
-            }
-        }
-    ImageDiff d;
-    d.coverageMismatch = drawn ? double(mismatch) / double(drawn) : 0.0;
-    d.meanColour = both ? colour / double(both) : 0.0;
-    return d;
-}
-
-QImage reference(const QString &name, const QImage &actual)
-{
-    const QString file = QStringLiteral(AWB_TEST_SOURCE_DIR "/tests/gui/data/") + name;
-    if (qEnvironmentVariableIntValue("AWB_REGENERATE_REFERENCES")) {
-        QDir().mkpath(QFileInfo(file).path());
-        actual.save(file);
-    }
-    return QImage(file);
-}
-
-qint64 drawnPixels(const QImage &image)
-{
-    qint64 n = 0;
-    const QImage im = image.convertToFormat(QImage::Format_RGB32);
-    for (int y = 0; y < im.height(); ++y)
-        for (int x = 0; x < im.width(); ++x)
-            n += (im.pixel(x, y) & 0xffffff) != 0xffffff;
-    return n;
 }
 
 } // namespace

@@ -7,6 +7,7 @@
 #include "core/mesh/MeshAnalysis.h"
 #include "core/mesh/MeshExamples.h"
 #include "core/mesh/MeshPieces.h"
+#include "model/EigenvaluePlotItem.h"
 #include "model/MeshAnalysisJson.h"
 #include "model/PointExport.h"
 #include "model/SubdivisionMeshItem.h"
@@ -61,6 +62,8 @@ private slots:
     void schemeChangeIsOneUndoStep();
     void vertexLimitsStartIsExact();
     void analysisJson();
+    void eigenvaluePlotOfAnExtraordinaryVertex();
+    void limitObjRefusesAbsurdSteps();
 };
 
 void TestMeshItem::theCubeByDefault()
@@ -73,7 +76,7 @@ void TestMeshItem::theCubeByDefault()
     QVERIFY2(d, qPrintable(item.derivedError()));
     QVERIFY(d->iterate);
     QVERIFY(d->vertexLimitStart);
-    const auto e = item.extraordinary();
+    const auto e = *item.extraordinary();
     QCOMPARE(int(e.size()), 8);
     for (const ExtraordinaryVertex &v : e) {
         QCOMPARE(v.valence, 3);
@@ -111,7 +114,7 @@ void TestMeshItem::fileFormatRoundTrip()
     QCOMPARE(int(m->inputs().faces.size()), 20);
     QVERIFY(m->inputs().levelColours);
     QVERIFY(test::reloadsIdentically(p));
-    const auto e = m->extraordinary();
+    const auto e = *m->extraordinary();
     QCOMPARE(int(e.size()), 12);
     QVERIFY(std::abs(e.front().subdominant - (3.0 / 8 + std::cos(2 * M_PI / 5) / 4)) < 1e-12);
 }
@@ -198,10 +201,10 @@ void TestMeshItem::schemeChangeIsOneUndoStep()
     QVERIFY(m->setParameter("scheme.kind", 1));
     QVERIFY(m->scheme() == MeshScheme::Loop);
     QCOMPARE(p.undoStack()->count(), 2);
-    QCOMPARE(int(m->extraordinary().size()), 6);  // Loop: six valence-4 vertices
+    QCOMPARE(int(m->extraordinary()->size()), 6);  // Loop: six valence-4 vertices
     p.undoStack()->undo();
     QVERIFY(m->scheme() == MeshScheme::CatmullClark);
-    QCOMPARE(int(m->extraordinary().size()), 8);  // CC: valence 4 is regular; 8 triangle centres
+    QCOMPARE(int(m->extraordinary()->size()), 8);  // CC: valence 4 is regular; 8 triangle centres
     p.undoStack()->undo();
     QCOMPARE(int(m->inputs().vertices.size()), 8);
 }
@@ -262,6 +265,72 @@ void TestMeshItem::analysisJson()
     // One step makes the pentagons' centres vertices, next to the valence-3 corners; a second
     // separates them.
     QCOMPARE(o["pieces"].toObject()["isolation_steps"].toInt(), 2);
+}
+
+void TestMeshItem::eigenvaluePlotOfAnExtraordinaryVertex()
+{
+    // An eigenvalue plot whose source is an extraordinary vertex (issue 31): the eigenvalues of
+    // its local subdivision matrix, saved with the project, undoable, refused with a message
+    // that names the vertex when there is no such extraordinary vertex.
+    Project p;
+    QString error;
+    QVERIFY2(test::load(p, meshJson(), &error), qPrintable(error));
+    auto plot = std::make_unique<EigenvaluePlotItem>();
+    plot->setName("E");
+    plot->setSource("M");
+    auto *e = static_cast<EigenvaluePlotItem *>(p.addItem(std::move(plot)));
+    const int before = p.undoStack()->count();
+    QVERIFY(e->setExtraordinary(3));
+    QCOMPARE(p.undoStack()->count(), before + 1);
+    auto data = e->eigenvalues();
+    QVERIFY2(data, qPrintable(e->derivedError()));
+    QCOMPARE(int(data->spectra.size()), 1);
+    QCOMPARE(data->matrices.real.front().rows(), Eigen::Index(19));  // 6n + 1 at valence 3
+    QVERIFY(std::abs(data->subdominants.front().modulus - 0.410097050800551)
+            < 1e-9);
+    QVERIFY(test::reloadsIdentically(p));
+    QVERIFY(ProjectIO::itemToJson(*e)["vertex"].toInt() == 3);
+    p.undoStack()->undo();
+    QCOMPARE(e->vertex(), -1);
+    QVERIFY(e->setExtraordinary(42));
+    QVERIFY(!e->eigenvalues());
+    QVERIFY2(e->derivedError().contains("vertex 42"), qPrintable(e->derivedError()));
+    QVERIFY(e->setMatrixKind(EigenvaluePlotItem::MatrixKind::A));
+    QVERIFY(e->setExtraordinary(0));
+    QVERIFY(!e->eigenvalues());
+    QVERIFY2(e->derivedError().contains("local subdivision matrix"),
+             qPrintable(e->derivedError()));
+
+    // The Loop icosahedron: lambda = 3/8 + cos(2 pi/5)/4 = 0.4523 at every vertex (valence 5).
+    auto *m = meshItem(p);
+    QVERIFY(m->setMesh(icosahedronMesh(), MeshScheme::Loop));
+    QVERIFY(e->setMatrixKind(EigenvaluePlotItem::MatrixKind::S));
+    data = e->eigenvalues();
+    QVERIFY2(data, qPrintable(e->derivedError()));
+    QCOMPARE(data->matrices.real.front().rows(), Eigen::Index(16));  // 3n + 1
+    QVERIFY(std::abs(data->subdominants.front().modulus - 0.4523) < 5e-5);
+}
+
+void TestMeshItem::limitObjRefusesAbsurdSteps()
+{
+    SubdivisionMeshItem item;
+    const std::string obj = item.limitObj(1);
+    // The cube after one Catmull-Clark step: 26 vertices, 24 quads.
+    QCOMPARE(int(std::count(obj.begin(), obj.end(), '\n')) > 50, true);
+    QVERIFY(obj.find("\nv ") != std::string::npos);
+    try {
+        item.limitObj(SubdivisionMeshItem::maxExportRounds + 1);
+        QFAIL("nine steps accepted");
+    } catch (const InputError &e) {
+        QVERIFY2(QString(e.what()).contains("0 to 8"), e.what());
+    }
+    QVERIFY(item.setMesh(gridMesh(200, 200, false), MeshScheme::CatmullClark));
+    try {
+        item.limitObj(8);
+        QFAIL("billions of vertices accepted");
+    } catch (const InputError &e) {
+        QVERIFY2(QString(e.what()).contains("vertices"), e.what());
+    }
 }
 
 AWB_TEST_MAIN(TestMeshItem)

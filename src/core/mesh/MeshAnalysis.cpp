@@ -52,7 +52,6 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
                                                        const Mat &inputVertices)
 {
     const Mat level = isolatedPositions(pieces, inputVertices);
-    std::map<int, VertexSpectrum> interior;  // by valence
     std::map<int, LeftVectors> left;         // by settled type
     std::map<int, Eigen::Vector3d> outward;  // by vertex of the isolated mesh
     for (const MeshPieceRoot &root : pieces.roots)
@@ -104,13 +103,11 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
             limitAndNormal(it->second, net, outward[root.vertex], e);
         }
         if (!e.boundary) {
-            auto it = interior.find(e.valence);
-            if (it == interior.end())
-                it = interior.emplace(e.valence, interiorVertexSpectrum(pieces.scheme, e.valence))
-                         .first;
-            const VertexSpectrum &s = it->second;
+            const auto shared = sharedVertexSpectrum(pieces.scheme, e.valence);
+            const VertexSpectrum &s = *shared;
             e.ring = "ring";
             e.ringSize = int(s.S.rows());
+            e.S = s.S;
             e.eigenvalues = s.eigenvalues;
             e.subdominant = s.subdominant;
             e.subsubdominant = s.subsubdominant;
@@ -120,6 +117,7 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
             const Mat &S = pieces.types[std::size_t(settled)].children.front().S;
             e.ring = "piece";
             e.ringSize = int(S.rows());
+            e.S = S;
             e.eigenvalues = spectrum(S, 1e-9).values;
             if (e.eigenvalues.size() > 1)
                 e.subdominant = std::abs(e.eigenvalues[1]);

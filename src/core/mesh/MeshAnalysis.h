@@ -22,6 +22,7 @@ struct ExtraordinaryVertex {
     // Catmull-Clark, 3n + 1 for Loop, VertexSpectrum); on the boundary, the vertex piece's net.
     std::string ring;
     int ringSize = 0;
+    Mat S;                             // that matrix: ringSize x ringSize
     std::vector<Complex> eigenvalues;  // by modulus, largest first
     double subdominant = 0.0;          // lambda
     double subsubdominant = 0.0;       // mu: the largest modulus below lambda

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <mutex>
 #include <set>
 #include <stdexcept>
 #include <tuple>
@@ -192,9 +193,17 @@ CharacteristicMap checkCharacteristicMap(MeshScheme scheme, int n, const Mat &Q)
             if (!halfEdges.count({b, a}))
                 boundaryNext[a] = b;
         }
-        if (std::find(loop.begin(), loop.end(), 0) != loop.end())
+        std::vector<Eigen::Vector2d> cell;
+        for (int v : loop)
+            cell.emplace_back(limit(v, 0), limit(v, 1));
+        out.cells.push_back(std::move(cell));
+        out.cellSectors.push_back(ancestor[f] / (Star::K * Star::K));
+        if (std::find(loop.begin(), loop.end(), 0) != loop.end()) {
+            out.cellAreas.push_back(0.0);
             continue;  // at the centre the map's Jacobian vanishes
+        }
         const double area = signedArea(limit, loop);
+        out.cellAreas.push_back(area);
         out.minArea = std::min(out.minArea, area);
         out.maxArea = std::max(out.maxArea, area);
     }
@@ -206,6 +215,7 @@ CharacteristicMap checkCharacteristicMap(MeshScheme scheme, int n, const Mat &Q)
         int at = start;
         for (std::size_t steps = 0; steps <= boundaryNext.size(); ++steps) {
             const int to = boundaryNext.at(at);
+            out.outline.emplace_back(limit(at, 0), limit(at, 1));
             const Eigen::RowVector2d u = limit.row(at) - centre, w = limit.row(to) - centre;
             turn += std::atan2(u.x() * w.y() - u.y() * w.x(), u.dot(w));
             at = to;
@@ -269,12 +279,36 @@ VertexSpectrum interiorVertexSpectrum(MeshScheme scheme, int n)
             checkCharacteristicMap(scheme, n, eigenPlane(out.S, l2.real()));
         out.characteristicRegular = map.regular();
         out.characteristicInjective = map.injective();
+        out.characteristic = map;
     }
     out.c1 = out.spectralC1 && out.characteristicRegular && out.characteristicInjective;
     const double l2sq = out.subdominant * out.subdominant;
     out.curvature = out.subsubdominant < l2sq - tol   ? "zero"
                     : out.subsubdominant > l2sq + tol ? "unbounded"
                                                       : "bounded";
+    return out;
+}
+
+std::shared_ptr<const VertexSpectrum> sharedVertexSpectrum(MeshScheme scheme, int n)
+{
+    static std::mutex mutex;
+    static std::map<std::pair<MeshScheme, int>, std::shared_ptr<const VertexSpectrum>> known;
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (const auto it = known.find({scheme, n}); it != known.end())
+            return it->second;
+    }
+    // Computed outside the lock (two threads may compute the same one: the first kept wins).
+    auto s = std::make_shared<const VertexSpectrum>(interiorVertexSpectrum(scheme, n));
+    std::lock_guard<std::mutex> lock(mutex);
+    return known.emplace(std::pair{scheme, n}, std::move(s)).first->second;
+}
+
+std::vector<VertexSpectrum> valenceSpectra(MeshScheme scheme, int from, int to)
+{
+    std::vector<VertexSpectrum> out;
+    for (int n = from; n <= to; ++n)
+        out.push_back(*sharedVertexSpectrum(scheme, n));
     return out;
 }
 

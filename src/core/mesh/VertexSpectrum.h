@@ -13,10 +13,31 @@
 #include "core/mesh/Mesh.h"
 
 #include <complex>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace awb {
+
+// The characteristic map of `Q` (ring x 2, rows in the order of S) checked numerically: the
+// star refined three times, the limit positions of its vertices, the signed area of the image
+// of every face over the n faces around the centre (except those at the centre) -- the
+// Jacobian's sign, cell by cell -- and the winding number of the image of their outer
+// boundary around the centre's image.
+// The image itself is kept for drawing (the characteristic map view, issue 31): every face of
+// the refined star over the n faces around the centre as a loop of limit positions, its signed
+// area (0 at the centre, where the Jacobian vanishes and nothing is checked) and its sector,
+// and the image of the outer boundary, once around.
+struct CharacteristicMap {
+    double minArea = 0.0, maxArea = 0.0;  // signed areas of the faces' images
+    int winding = 0;
+    std::vector<std::vector<Eigen::Vector2d>> cells;
+    std::vector<double> cellAreas;
+    std::vector<int> cellSectors;
+    std::vector<Eigen::Vector2d> outline;
+    bool regular() const { return minArea > 0 || maxArea < 0; }
+    bool injective() const { return regular() && (minArea > 0 ? winding == 1 : winding == -1); }
+};
 
 struct VertexSpectrum {
     MeshScheme scheme = MeshScheme::CatmullClark;
@@ -35,6 +56,7 @@ struct VertexSpectrum {
     // at the vertex for generic data.
     bool characteristicRegular = false;
     bool characteristicInjective = false;
+    CharacteristicMap characteristic;   // when spectralC1: the map checked, for drawing
     bool c1 = false;
     // mu against lambda^2: "zero" (mu < lambda^2: the curvature vanishes at the vertex),
     // "bounded" (mu = lambda^2), "unbounded" (mu > lambda^2, for generic data).
@@ -46,22 +68,20 @@ struct VertexSpectrum {
 // n < 3 or n > 64.
 VertexSpectrum interiorVertexSpectrum(MeshScheme scheme, int valence);
 
-// The characteristic map of `Q` (ring x 2, rows in the order of S) checked numerically: the
-// star refined three times, the limit positions of its vertices, the signed area of the image
-// of every face over the n faces around the centre (except those at the centre) -- the
-// Jacobian's sign, cell by cell -- and the winding number of the image of their outer
-// boundary around the centre's image.
-struct CharacteristicMap {
-    double minArea = 0.0, maxArea = 0.0;  // signed areas of the faces' images
-    int winding = 0;
-    bool regular() const { return minArea > 0 || maxArea < 0; }
-    bool injective() const { return regular() && (minArea > 0 ? winding == 1 : winding == -1); }
-};
+// The characteristic map of `Q` (see CharacteristicMap above).
 CharacteristicMap checkCharacteristicMap(MeshScheme scheme, int valence, const Mat &Q);
 
 // The subdominant eigenvalue in closed form: Catmull-Clark
 // (5 + cos(2 pi/n) + cos(pi/n) sqrt(2 (9 + cos(2 pi/n)))) / 16 (Stam 1998), Loop
 // 3/8 + cos(2 pi/n) / 4.
 double closedFormSubdominant(MeshScheme scheme, int valence);
+
+// interiorVertexSpectrum, computed once per (scheme, valence) in the process and shared
+// (thread-safe): a mesh's analysis and the valence explorer ask for the same few valences
+// again on every edit.
+std::shared_ptr<const VertexSpectrum> sharedVertexSpectrum(MeshScheme scheme, int valence);
+
+// The valence explorer's table (issue 31): the spectra of n = from ... to.
+std::vector<VertexSpectrum> valenceSpectra(MeshScheme scheme, int from, int to);
 
 } // namespace awb

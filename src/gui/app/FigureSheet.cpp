@@ -1,5 +1,7 @@
 #include "gui/app/FigureSheet.h"
 
+#include "gui/views/VertexPanel.h"
+
 #include "gui/views/MatrixHeatMap.h"
 
 #include "render/FigureFile.h"
@@ -119,7 +121,7 @@ QList<FigureSheet::MatrixBlock> FigureSheet::matrixBlocks() const
         return blocks;
     // The matrix view's matrices, as text with right-aligned columns: fractions where exact
     // (3/8 reads better than 0.375), complex entries as a + bi. One block per matrix.
-    for (const NamedMatrix &m : namedMatrices(*d)) {
+    for (const NamedMatrix &m : m_vertexMatrices.isEmpty() ? namedMatrices(*d) : m_vertexMatrices) {
         // A surface's S_i (16 x 16 and up) as text would shrink the page's text to dust: as a
         // heat map of its entries, as the Matrices dock shows them above their tables.
         if (m.rows() > 12 && !m.isComplex()) {
@@ -195,6 +197,15 @@ void FigureSheet::paint(QPainter *painter, const QRectF &page) const
     else if (m_attractor)
         m_attractor->renderTo(painter, figure.adjusted(1, 1, -1, -1),
                               AttractorView::Framing::FitContents);
+    if (m_characteristic && !m_characteristic->map().cells.empty()) {
+        const double w = 0.38 * std::min(figure.width(), figure.height());
+        const QRectF inset(figure.right() - w - unit * 0.5, figure.bottom() - w - unit * 0.5, w,
+                           w);
+        m_characteristic->paintMap(*painter, inset);
+        painter->setPen(QPen(Qt::gray, 0));
+        painter->setBrush(Qt::NoBrush);
+        painter->drawRect(inset);
+    }
     const double rightX = figure.right() + unit * 2;
     QFont mono = body;
     mono.setFamily(QStringLiteral("monospace"));

@@ -5,6 +5,7 @@
 // vector: the attractor's overlays come from AttractorView::renderTo, the spectrum plot is
 // recorded as a QPicture of QCustomPlot's own drawing, and the matrices are text.
 #include "core/Types.h"
+#include "model/NamedMatrix.h"
 
 #include <QCoreApplication>
 #include <QFont>
@@ -20,6 +21,7 @@ class QPagedPaintDevice;
 namespace awb {
 
 class AttractorView;
+class CharacteristicMapView;
 class Item;
 class MatrixView;
 class SpectrumView;
@@ -31,6 +33,14 @@ public:
     // `surface` draws the figure of items with 3D points (at its current camera).
     FigureSheet(Item *item, AttractorView *attractor, SpectrumView *spectrum,
                 SurfaceView *surface = nullptr);
+
+    // A mesh's focused extraordinary vertex (issue 31): its local subdivision matrix replaces
+    // the mesh's matrices, and its characteristic map is drawn in a corner of the figure.
+    void setVertex(QList<NamedMatrix> matrices, const CharacteristicMapView *map)
+    {
+        m_vertexMatrices = std::move(matrices);
+        m_characteristic = map;
+    }
 
     // The caption's lines: item name and kind, then "label = value" of every parameter.
     QStringList caption() const;
@@ -73,6 +83,8 @@ private:
     AttractorView *m_attractor;
     SpectrumView *m_spectrum;
     SurfaceView *m_surface;
+    QList<NamedMatrix> m_vertexMatrices;
+    const CharacteristicMapView *m_characteristic = nullptr;
     mutable int m_matrixFontPixels = 0;
     mutable int m_matricesShown = 0;
 };

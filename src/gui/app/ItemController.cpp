@@ -197,6 +197,12 @@ void ItemController::setItem(Item *item)
     m_frame.reset();
     endGesture();
     m_highlightedMap = -1;
+    if (m_focusedVertex != -1) {
+        m_focusedVertex = -1;
+        if (m_surface)
+            m_surface->setSelectedMarker(-1);
+        emit focusedVertexChanged(-1);
+    }
     if (item) {
         m_connections << connect(item, &Item::derivedChanged, this,
                                  &ItemController::scheduleRefresh);
@@ -249,6 +255,7 @@ void ItemController::setSurfaceView(SurfaceView *view)
     m_surface = view;
     if (!view)
         return;
+    connect(view, &SurfaceView::markerClicked, this, &ItemController::setFocusedVertex);
     connect(view, &SurfaceView::controlPointPressed, this, &ItemController::onSurfacePressed);
     connect(view, &SurfaceView::controlPointDragged, this, &ItemController::onControlDragged3D);
     connect(view, &SurfaceView::controlPointReleased, this,
@@ -326,6 +333,8 @@ QList<MapSpectrum> ItemController::currentSpectra() const
     const auto d = drawnDerived();
     if (!d)
         return {};
+    if (QList<MapSpectrum> vertex = focusedSpectra(); !vertex.isEmpty())
+        return vertex;
     QList<MapSpectrum> spectra = mapSpectra(*d);
     const auto *plot = qobject_cast<const EigenvaluePlotItem *>(m_item.data());
     if (!plot)
@@ -349,6 +358,9 @@ void ItemController::showMatrices()
     const auto *plot = qobject_cast<const EigenvaluePlotItem *>(m_item.data());
     if (!d) {
         m_matrices->setMatrices({});
+    } else if (QList<NamedMatrix> vertex = focusedMatrices(); !vertex.isEmpty()) {
+        m_matrices->setEditable(false);
+        m_matrices->setMatrices(vertex);
     } else if (plot) {
         const auto data = plot->eigenvalues();
         m_matrices->setEditable(false);
@@ -422,6 +434,7 @@ void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
         // The control mesh, and the pieces' own iteration (its identity: the derived data,
         // recomputed on every edit).
         faces = meshItem->inputs().faces;
+        showMeshMarkers(meshItem);
         own.iterate = d.iterate;
         own.pointCount = d.pointCount;
         own.identity = item->derivedIfs();
@@ -439,6 +452,8 @@ void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
             // No net faces: the handles still show (and move) the points.
         }
     }
+    if (!qobject_cast<const SubdivisionMeshItem *>(item))
+        m_surface->setMarkers({});
     m_surface->setControlNet(P, faces);
     m_surface->setRefinedNet(mesh, meshFaces);
     m_surface->setStartVertices(toMatrix(item->startSet().points, 3));
@@ -488,6 +503,7 @@ void ItemController::clearViews()
         m_surface->setControlNet(Mat(), {});
         m_surface->setRefinedNet(Mat(), {});
         m_surface->setStartVertices(Mat());
+        m_surface->setMarkers({});
     }
 }
 
@@ -514,6 +530,7 @@ void ItemController::markPanelsDirty()
     m_budget->markDirty(m_matricesPanel);
     m_budget->markDirty(m_spectrumPanel);
     m_budget->markDirty(m_chartsPanel);
+    m_budget->markDirty(m_vertexPanel);
 }
 
 void ItemController::refreshViews()

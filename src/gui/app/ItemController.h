@@ -33,8 +33,12 @@ class RegularityPanel;
 class Messages;
 class Project;
 class SpectrumView;
+class SubdivisionMeshItem;
 class SurfaceView;
+class ValenceChart;
+class VertexPanel;
 struct AnalysisResult;
+struct ExtraordinaryVertex;
 struct MapSpectrum;
 
 struct DerivedIfs;
@@ -103,6 +107,20 @@ public:
 
     // The text shown when the item cannot be drawn (empty when it can).
     QString problem() const { return m_problem; }
+    // A mesh item's extraordinary vertices (issue 31): the Analysis dock's Vertex tab and the
+    // valence chart, and the vertex whose local subdivision matrix the Matrices and Spectrum
+    // docks show instead of the mesh's own -- an index into the item's extraordinary() list,
+    // chosen by a click on its marker in the 3D view (-1: none; reset by a new item).
+    void setVertexViews(VertexPanel *panel, ValenceChart *chart);
+    void setFocusedVertex(int index);
+    int focusedVertex() const { return m_focusedVertex; }
+    // "vertex 3" or "the centre of face 2" for entry `index` of the drawn mesh's list ("" when
+    // there is none).
+    QString focusedVertexName() const;
+    // Adds an eigenvalue plot item of the focused vertex under the mesh item (one undo step).
+    Item *addVertexPlot();
+    // The focused vertex's local subdivision matrix (empty when none is focused).
+    QList<NamedMatrix> focusedMatrices() const;
 
 signals:
     void problemChanged(const QString &problem);
@@ -113,6 +131,7 @@ signals:
     void analysisFinished(bool cancelled);
     // The views got the drawn item's current data (after refreshNow()).
     void refreshed();
+    void focusedVertexChanged(int index);
 
 private:
     void scheduleRefresh();
@@ -123,6 +142,14 @@ private:
     void showMatrices();
     void showSpectrum();
     void showCharts();
+    void showVertex();
+    // ItemControllerVertex.cpp: the focused vertex's S for the Spectrum and Matrices docks
+    // (empty when none is focused), and the markers of a mesh item's extraordinary vertices.
+    QList<MapSpectrum> focusedSpectra() const;
+    void showMeshMarkers(const SubdivisionMeshItem *mesh);
+    // The focused vertex of the drawn mesh (null: none), with the list that holds it.
+    const ExtraordinaryVertex *focused(
+        std::shared_ptr<const std::vector<ExtraordinaryVertex>> *list) const;
     std::shared_ptr<const DerivedIfs> drawnDerived() const;
     QList<MapSpectrum> currentSpectra() const;
     // A drag in a view: one gesture of the project (one undo step, FrameBudget's gesture).
@@ -162,6 +189,10 @@ private:
     QTimer m_analysisTimer;
     FrameBudget *m_budget;
     int m_matricesPanel = -1, m_spectrumPanel = -1, m_chartsPanel = -1, m_plotPanel = -1;
+    int m_vertexPanel = -1;
+    QPointer<VertexPanel> m_vertexView;
+    QPointer<ValenceChart> m_valences;
+    int m_focusedVertex = -1;
     SpectrumView *m_plotView = nullptr;
     QPointer<Project> m_gestureProject;
     int m_gesture = 0;

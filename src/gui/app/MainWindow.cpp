@@ -21,6 +21,7 @@
 #include "gui/views/SpectrumView.h"
 #include "i18n/Translations.h"
 #include "gui/views/SurfaceView.h"
+#include "gui/views/VertexPanel.h"
 #include "render/FigureFile.h"
 #include "model/FigureMetadata.h"
 #include "model/FileWriting.h"
@@ -241,6 +242,13 @@ void MainWindow::createViews()
     auto *regularity = new RegularityPanel;
     m_charts->layout()->addWidget(regularity);
     m_controller->setRegularityPanel(regularity);
+    // A mesh's extraordinary vertices (issue 31): a click on one in the 3D view shows its
+    // verdict and characteristic map here, its matrix and eigenvalues in their docks.
+    m_vertexPanel = new VertexPanel;
+    m_valenceChart = new ValenceChart;
+    m_charts->tabs()->addTab(m_vertexPanel, tr("Vertex"));
+    m_charts->tabs()->addTab(m_valenceChart, tr("Valences"));
+    m_controller->setVertexViews(m_vertexPanel, m_valenceChart);
     // Addresses of the attractor (issue 16): the status bar shows the hovered one, the
     // Address dock selects a sub-copy.
     m_address = new AddressPanel(m_controller, m_attractor);
@@ -371,6 +379,18 @@ void MainWindow::createViews()
             statusBar()->showMessage(tr("Analysis cancelled."), 4000);
     });
     connect(m_controller, &ItemController::problemChanged, this, &MainWindow::showProblem);
+    connect(m_controller, &ItemController::focusedVertexChanged, this, [this](int index) {
+        if (index < 0)
+            return;
+        // The vertex's verdict and map in front; its eigenvalues are in the Spectrum dock.
+        if (auto *analysis = findChild<QDockWidget *>(QStringLiteral("dockAnalysis")))
+            analysis->raise();
+        m_charts->tabs()->setCurrentWidget(m_vertexPanel);
+        statusBar()->showMessage(tr("%1: its spectrum, verdict and characteristic map are in "
+                                    "the Spectrum, Matrices and Analysis docks")
+                                     .arg(m_controller->focusedVertexName()),
+                                 6000);
+    });
     m_controller->setRebalanceQuestion([this](const QString &question) {
         return m_messages->question(this, tr("Row sum"), question,
                                     QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes)
@@ -412,6 +432,8 @@ void MainWindow::createActions()
          QKeySequence::Open, &MainWindow::openDialog);
     make(QStringLiteral("actionImportMesh"), tr("&Import Mesh…"),
          QStringLiteral("document-import"), QKeySequence(), &MainWindow::importMeshDialog);
+    make(QStringLiteral("actionExportMesh"), tr("Export &Mesh…"), QStringLiteral("document-export"),
+         QKeySequence(), &MainWindow::exportMeshDialog);
     make(QStringLiteral("actionSave"), tr("&Save"), QStringLiteral("document-save"),
          QKeySequence::Save, &MainWindow::save);
     make(QStringLiteral("actionSaveAs"), tr("Save &As…"), QStringLiteral("document-save-as"),
@@ -646,6 +668,7 @@ void MainWindow::createMenus()
     file->addAction(action(QStringLiteral("actionPrintPdf")));
     file->addAction(action(QStringLiteral("actionExport")));
     file->addAction(action(QStringLiteral("actionExportPoints")));
+    file->addAction(action(QStringLiteral("actionExportMesh")));
     file->addSeparator();
     file->addAction(action(QStringLiteral("actionQuit")));
 

@@ -34,6 +34,7 @@ class AnimationPanel;
 class AnalysisCharts;
 class AttractorView;
 class Item;
+class FigureSheet;
 class FrameBudget;
 class StatusText;
 class ItemController;
@@ -45,6 +46,8 @@ class PropertiesWidget;
 class Recovery;
 class SpectrumView;
 class SurfaceView;
+class ValenceChart;
+class VertexPanel;
 struct SurfaceSchemeSpec;
 
 class MainWindow : public QMainWindow {
@@ -68,6 +71,9 @@ public:
     // false, with the reader's or the mesh's message in *error, when it is refused (nothing
     // added).
     bool importMesh(const QString &fileName, MeshScheme scheme, QString *error = nullptr);
+    // File > Export Mesh…: the current mesh item after `rounds` steps, every vertex at its
+    // exact limit position, as OBJ. False with the reason in *error.
+    bool exportMesh(const QString &fileName, int rounds, QString *error = nullptr);
     bool saveFile(const QString &fileName);
     // Offers the recovery files of crashed sessions; true when one was recovered.
     bool offerRecovery();
@@ -98,6 +104,9 @@ public:
     MatrixView *matrixView() const { return m_matrices; }
     SpectrumView *spectrumView() const { return m_spectrum; }
     AnalysisCharts *analysisCharts() const { return m_charts; }
+    // The Analysis dock's Vertex and Valences tabs (a mesh's extraordinary vertices).
+    VertexPanel *vertexPanel() const { return m_vertexPanel; }
+    ValenceChart *valenceChart() const { return m_valenceChart; }
     AddressPanel *addressPanel() const { return m_address; }
     AnimationPanel *animationPanel() const { return m_animation; }
     PropertiesWidget *propertiesWidget() const { return m_properties; }
@@ -154,6 +163,10 @@ private:
     // Mesh surface (the starting meshes), File > Import Mesh.
     void addMeshMenu(QMenu *add, const QString &title);
     void importMeshDialog();
+    void exportMeshDialog();
+    // MainWindowExport.cpp: the printed sheet of the current item (with a mesh's focused
+    // vertex: its matrix and characteristic map).
+    FigureSheet figureSheet() const;
     void addSurface(const SurfaceSchemeSpec &scheme);
     void duplicateItem();
     void deleteItem();
@@ -174,6 +187,8 @@ private:
     MatrixView *m_matrices = nullptr;
     SpectrumView *m_spectrum = nullptr;
     AnalysisCharts *m_charts = nullptr;
+    VertexPanel *m_vertexPanel = nullptr;
+    ValenceChart *m_valenceChart = nullptr;
     AddressPanel *m_address = nullptr;
     AnimationPanel *m_animation = nullptr;
     PropertiesWidget *m_properties = nullptr;

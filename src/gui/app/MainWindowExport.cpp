@@ -15,6 +15,7 @@
 #include "gui/app/UserGuideDialog.h"
 #include "gui/app/WheelGuard.h"
 #include "gui/views/AnalysisCharts.h"
+#include "gui/views/VertexPanel.h"
 #include "gui/views/AttractorRenderer.h"
 #include "gui/views/AttractorView.h"
 #include "gui/views/MatrixView.h"
@@ -111,6 +112,14 @@ QString MainWindow::outputPath(const QString &suffix) const
     return QDir(dir).filePath(base.left(120) + QLatin1Char('.') + suffix);
 }
 
+FigureSheet MainWindow::figureSheet() const
+{
+    FigureSheet sheet(m_current, m_attractor, m_spectrum, m_surface);
+    if (m_controller->focusedVertex() >= 0)
+        sheet.setVertex(m_controller->focusedMatrices(), m_vertexPanel->mapView());
+    return sheet;
+}
+
 void MainWindow::print()
 {
     QPrinter printer(QPrinter::HighResolution);
@@ -121,7 +130,7 @@ void MainWindow::print()
     QPrintDialog dialog(&printer, this);
     if (dialog.exec() != QDialog::Accepted)
         return;
-    FigureSheet sheet(m_current, m_attractor, m_spectrum, m_surface);
+    const FigureSheet sheet = figureSheet();
     const bool ok = sheet.print(&printer);
     endExportProgress();
     if (sheet.cancelled())
@@ -137,7 +146,7 @@ void MainWindow::printPreview()
     QPrintPreviewDialog preview(&printer, this);
     preview.resize(1100, 800);
     connect(&preview, &QPrintPreviewDialog::paintRequested, this, [this](QPrinter *p) {
-        FigureSheet(m_current, m_attractor, m_spectrum, m_surface).print(p);
+        figureSheet().print(p);
         endExportProgress();
     });
     preview.exec();
@@ -145,7 +154,7 @@ void MainWindow::printPreview()
 
 bool MainWindow::printToPdf(const QString &fileName, QString *error)
 {
-    const bool ok = FigureSheet(m_current, m_attractor, m_spectrum, m_surface)
+    const bool ok = figureSheet()
                         .writePdf(fileName, error);
     endExportProgress();
     return ok;
@@ -219,7 +228,18 @@ bool MainWindow::exportView(const ExportDialog::Options &options, QString *error
         case ExportDialog::Target::Analysis: {
             // Lay the chart out at the export size (in points at the chosen resolution) so
             // that titles and axes get the room they have in the figure, not in the dock.
-            auto *view = m_charts->chartView(AnalysisCharts::Tab(m_charts->tabs()->currentIndex()));
+            // The Vertex tab exports its characteristic map, the Valences tab its chart.
+            QWidget *tab = m_charts->tabs()->currentWidget();
+            if (tab == m_vertexPanel) {
+                m_vertexPanel->mapView()->paintMap(p, target);
+                break;
+            }
+            auto *view = tab == m_valenceChart
+                             ? m_valenceChart->valenceView()
+                             : m_charts->chartView(
+                                   AnalysisCharts::Tab(m_charts->tabs()->currentIndex()));
+            if (!view)
+                break;
             const QSize old = view->size();
             const double k = std::max(1.0, o.dpi / 96.0);
             const QSize laidOut = (QSizeF(target.size()) / k).toSize();
@@ -233,7 +253,7 @@ bool MainWindow::exportView(const ExportDialog::Options &options, QString *error
             break;
         }
         case ExportDialog::Target::FigureSheet:
-            FigureSheet(m_current, m_attractor, m_spectrum, m_surface).paint(&p, target);
+            figureSheet().paint(&p, target);
             break;
         }
     };

@@ -10,17 +10,20 @@
 #include "gui/app/ItemController.h"
 #include "gui/app/Messages.h"
 #include "model/EigenvaluePlotItem.h"
+#include "model/FileWriting.h"
 #include "model/ItemRegistry.h"
 #include "model/Project.h"
 #include "model/ProjectIO.h"
 #include "model/SubdivisionMeshItem.h"
 #include "model/SubdivisionSurfaceItem.h"
 
+#include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QInputDialog>
 #include <QJsonArray>
 #include <QMenu>
+#include <QStatusBar>
 
 namespace awb {
 
@@ -37,6 +40,9 @@ void MainWindow::addItem(const QString &type)
     }
     // A new eigenvalue plot analyses the item drawn now and sits under it in the tree.
     if (auto *plot = qobject_cast<EigenvaluePlotItem *>(item.get())) {
+        // Of the extraordinary vertex clicked in a mesh, when there is one (issue 31).
+        if (m_controller->focusedVertex() >= 0 && m_controller->addVertexPlot())
+            return;
         if (AttractorItem *source = m_controller->drawnItem()) {
             plot->setSource(source->name());
             plot->setName(tr("Spectra of %1").arg(source->name()));
@@ -160,6 +166,59 @@ void MainWindow::importMeshDialog()
     if (!importMesh(file, chosen == schemes[1] ? MeshScheme::Loop : MeshScheme::CatmullClark,
                     &error))
         m_messages->error(this, tr("Import Mesh"), error);
+}
+
+bool MainWindow::exportMesh(const QString &fileName, int rounds, QString *error)
+{
+    const auto *mesh = qobject_cast<const SubdivisionMeshItem *>(m_controller->drawnItem());
+    QString why;
+    if (!mesh) {
+        why = m_current ? tr("Export Mesh writes a mesh surface; %1 is a %2")
+                              .arg(m_current->name(), m_current->typeName())
+                        : tr("Export Mesh writes a mesh surface: choose one first");
+    } else {
+        try {
+            const std::string text = mesh->limitObj(rounds);
+            if (QString reason; !writeWholeFile(fileName, QByteArray::fromStdString(text),
+                                                &reason))
+                why = tr("cannot write %1: %2").arg(fileName, reason);
+        } catch (const std::exception &e) {
+            why = QString::fromStdString(e.what());
+        }
+    }
+    if (!why.isEmpty() && error)
+        *error = why;
+    return why.isEmpty();
+}
+
+void MainWindow::exportMeshDialog()
+{
+    const auto *mesh = qobject_cast<const SubdivisionMeshItem *>(m_controller->drawnItem());
+    if (!mesh) {
+        QString error;
+        exportMesh(QString(), 0, &error);
+        m_messages->error(this, tr("Export Mesh"), error);
+        return;
+    }
+    bool ok = false;
+    const int rounds = QInputDialog::getInt(
+        this, tr("Export Mesh"),
+        tr("Steps of %1 before every vertex is moved to its limit position:")
+            .arg(MeshInputs::schemeNames().at(int(mesh->scheme()))),
+        std::min(3, SubdivisionMeshItem::maxExportRounds), 0, SubdivisionMeshItem::maxExportRounds,
+        1, &ok);
+    if (!ok)
+        return;
+    const QString file = QFileDialog::getSaveFileName(this, tr("Export Mesh"),
+                                                      outputPath(QStringLiteral("obj")),
+                                                      tr("Wavefront OBJ (*.obj)"));
+    if (file.isEmpty())
+        return;
+    QString error;
+    if (!exportMesh(file, rounds, &error))
+        m_messages->error(this, tr("Export Mesh"), error);
+    else
+        statusBar()->showMessage(tr("Wrote %1").arg(QDir::toNativeSeparators(file)), 5000);
 }
 
 void MainWindow::addMeshMenu(QMenu *add, const QString &title)

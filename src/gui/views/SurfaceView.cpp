@@ -172,6 +172,24 @@ void SurfaceView::setStartVertices(const Mat &points)
         m_glWindow->update();
 }
 
+void SurfaceView::setMarkers(std::vector<Marker> markers)
+{
+    if (markers.size() != m_markers.size())
+        m_selectedMarker = -1;
+    m_markers = std::move(markers);
+    update();
+    if (m_glWindow)
+        m_glWindow->update();
+}
+
+void SurfaceView::setSelectedMarker(int index)
+{
+    m_selectedMarker = index >= 0 && index < markerCount() ? index : -1;
+    update();
+    if (m_glWindow)
+        m_glWindow->update();
+}
+
 void SurfaceView::setRefinedNet(const Mat &points, const std::vector<std::vector<int>> &faces)
 {
     m_refined = points.cols() == 3 ? points : Mat();

@@ -122,6 +122,18 @@ public:
     int controlPointCount() const { return int(m_net.rows()); }
     // The control point picked last by a click (-1: none); drawn highlighted.
     int selectedControlPoint() const { return m_selected; }
+    // Marked points with a label (the extraordinary vertices of a mesh at their limit
+    // positions, labelled with their valence): drawn over the surface, one of them selected; a
+    // click on one (press and release without moving) reports markerClicked.
+    struct Marker {
+        QVector3D at;
+        QString label;
+    };
+    void setMarkers(std::vector<Marker> markers);
+    int markerCount() const { return int(m_markers.size()); }
+    QPointF markerScreen(int i) const;
+    void setSelectedMarker(int index);
+    int selectedMarker() const { return m_selectedMarker; }
     QPointF startVertexScreen(int i) const;
     int startVertexCount() const { return int(m_start3.rows()); }
 
@@ -158,6 +170,7 @@ signals:
     void startVertexPressed(int index);
     void startVertexDragged(int index, const QVector3D &world);
     void startVertexReleased(int index, const QVector3D &start, const QVector3D &end);
+    void markerClicked(int index);
     void cameraChanged();
     // The user turned the view (the end of an orbit drag, an arrow key): the direction the
     // document may keep (the item's camera, which exports and the CLI use), in degrees.
@@ -184,6 +197,7 @@ private:
     struct Drag {
         DragKind kind = DragKind::None;
         int index = -1;
+        int marker = -1;  // the marker under the press (an orbit drag that does not move)
         QPointF press, last;
         QVector3D startWorld, currentWorld;
     };
@@ -225,6 +239,7 @@ private:
     void logFrame(std::uint64_t picture, bool final, const QPoint *shows);
     // ---- SurfaceViewInput.cpp
     int hit(const Mat &points, const QPointF &screen) const;
+    int hitMarker(const QPointF &screen) const;
     void logInput(const char *kind, const QMouseEvent *event);
     void setViewCursor(Qt::CursorShape shape);
 
@@ -246,6 +261,8 @@ private:
     StartSet m_start;
     std::vector<int> m_colourIndex;
     Mat m_net, m_start3, m_refined;
+    std::vector<Marker> m_markers;
+    int m_selectedMarker = -1;
     std::vector<std::vector<int>> m_netFaces, m_refinedFaces;
     RenderSettings m_settings;
     std::uint32_t m_hidden = 0;

@@ -113,6 +113,13 @@ QPointF SurfaceView::startVertexScreen(int i) const
     return toScreen(vec(Eigen::Vector3d(m_start3.row(i).transpose())));
 }
 
+QPointF SurfaceView::markerScreen(int i) const
+{
+    if (i < 0 || i >= markerCount())
+        return {};
+    return toScreen(m_markers[std::size_t(i)].at);
+}
+
 Mat SurfaceView::sceneBounds() const
 {
     std::vector<const Mat *> sets{&m_net, &m_start3, &m_refined};

@@ -57,6 +57,21 @@ int SurfaceView::hit(const Mat &points, const QPointF &screen) const
     return best;
 }
 
+int SurfaceView::hitMarker(const QPointF &screen) const
+{
+    int best = -1;
+    double bestDistance = hitRadius * hitRadius;
+    for (int i = 0; i < markerCount(); ++i) {
+        const QPointF d = markerScreen(i) - screen;
+        const double dd = QPointF::dotProduct(d, d);
+        if (dd <= bestDistance) {
+            bestDistance = dd;
+            best = i;
+        }
+    }
+    return best;
+}
+
 void SurfaceView::mousePressEvent(QMouseEvent *event)
 {
     logInput("press", event);
@@ -101,6 +116,7 @@ void SurfaceView::mousePressEvent(QMouseEvent *event)
         emit startVertexPressed(s);
     } else {
         m_drag.kind = DragKind::Orbit;
+        m_drag.marker = hitMarker(pos);
     }
     update();
 }
@@ -130,7 +146,8 @@ void SurfaceView::mouseMoveEvent(QMouseEvent *event)
         break;
     }
     case DragKind::None: {
-        const bool over = (m_editable && hit(m_net, pos) >= 0) || hit(m_start3, pos) >= 0;
+        const bool over = (m_editable && hit(m_net, pos) >= 0) || hit(m_start3, pos) >= 0
+                          || hitMarker(pos) >= 0;
         setViewCursor(over ? Qt::PointingHandCursor : Qt::ArrowCursor);
         break;
     }
@@ -161,6 +178,10 @@ void SurfaceView::mouseReleaseEvent(QMouseEvent *event)
     }
     if (drag.kind == DragKind::Orbit && drag.last != drag.press)
         emit cameraTurned(m_camera.ortho.azimuth, m_camera.ortho.elevation);
+    else if (drag.kind == DragKind::Orbit && drag.marker >= 0) {
+        setSelectedMarker(drag.marker);
+        emit markerClicked(drag.marker);
+    }
     update();
     requestFrame();
 }

@@ -268,6 +268,37 @@ void SurfaceView::paintOverlay(QPainter &p, const QMatrix4x4 &mvp, const QRectF 
             p.drawEllipse(at(m_net, i), handleRadius * unit, handleRadius * unit);
         }
     }
+    if (!m_markers.empty()) {
+        QFont font = this->font();
+        font.setPixelSize(std::max(1, int(std::lround(0.9 * QFontInfo(this->font())
+                                                                  .pixelSize() * unit))));
+        font.setBold(true);
+        p.setFont(font);
+        for (int i = 0; i < markerCount(); ++i) {
+            const Marker &m = m_markers[std::size_t(i)];
+            const QPointF c = project(mvp, target, m.at);
+            const double r = 1.25 * handleRadius * unit;
+            const bool selected = i == m_selectedMarker;
+            QPolygonF diamond;
+            diamond << c + QPointF(0, -r) << c + QPointF(r, 0) << c + QPointF(0, r)
+                    << c + QPointF(-r, 0);
+            p.setPen(QPen(selected ? QColor(120, 20, 0) : QColor(60, 20, 90), 1.2 * unit));
+            p.setBrush(selected ? QColor(240, 90, 30) : QColor(150, 90, 210));
+            p.drawPolygon(diamond);
+            if (m.label.isEmpty())
+                continue;
+            const QPointF at = c + QPointF(r + 2 * unit, -r);
+            // A white halo keeps the label legible over the shaded surface.
+            QPainterPath text;
+            text.addText(at, font, m.label);
+            p.setPen(QPen(QColor(255, 255, 255, 220), 3 * unit));
+            p.setBrush(Qt::NoBrush);
+            p.drawPath(text);
+            p.setPen(Qt::NoPen);
+            p.setBrush(selected ? QColor(150, 30, 0) : QColor(50, 10, 80));
+            p.drawPath(text);
+        }
+    }
     if (m_start3.rows() > 0) {
         p.setPen(QPen(QColor(200, 110, 0), 1.2 * unit));
         p.setBrush(QColor(255, 200, 120));
