@@ -2,6 +2,81 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="cs_CZ" sourcelanguage="en">
 <context>
+    <name></name>
+    <message>
+        <source>valence %1, %2, %3</source>
+        <translation type="vanished">valence %1, %2, %3</translation>
+    </message>
+    <message>
+        <source>on the boundary</source>
+        <translation type="vanished">na hranici</translation>
+    </message>
+    <message>
+        <source>interior</source>
+        <translation type="vanished">vnitřní</translation>
+    </message>
+    <message>
+        <source>Local subdivision matrix S: %1 × %1 (the net of the vertex&apos;s piece).</source>
+        <translation type="vanished">Lokální matice subdivize S: %1 × %1 (síť části, k níž vrchol patří).</translation>
+    </message>
+    <message>
+        <source>Local subdivision matrix S: %1 × %1 (the vertex and every point within two faces of it).</source>
+        <translation type="vanished">Lokální matice subdivize S: %1 × %1 (vrchol a všechny body vzdálené od něj nejvýše dvě stěny).</translation>
+    </message>
+    <message>
+        <source>λ₁ = 1, λ = %1, μ = %2, λ² = %3</source>
+        <translation type="vanished">λ₁ = 1, λ = %1, μ = %2, λ² = %3</translation>
+    </message>
+    <message>
+        <source> (λ in closed form: %1)</source>
+        <translation type="vanished"> (λ v uzavřeném tvaru: %1)</translation>
+    </message>
+    <message>
+        <source>Reif&apos;s criterion is decided here for interior vertices only: a boundary vertex follows the crease rules, whose analysis needs the boundary&apos;s own characteristic map.</source>
+        <translation type="vanished">Reifovo kritérium se zde rozhoduje jen pro vnitřní vrcholy: hraniční vrchol se řídí pravidly pro ostré hrany, jejichž analýza vyžaduje vlastní charakteristické zobrazení hranice.</translation>
+    </message>
+    <message>
+        <source>spectral condition 1 &gt; λ₂ = λ₃ &gt; |λ₄|, λ real</source>
+        <translation type="vanished">spektrální podmínka 1 &gt; λ₂ = λ₃ &gt; |λ₄|, λ reálné</translation>
+    </message>
+    <message>
+        <source>characteristic map regular: the Jacobian keeps one sign on all %1 cells (signed areas %2 … %3)</source>
+        <translation type="vanished">charakteristické zobrazení je regulární: jakobián má na všech %1 buňkách stejné znaménko (orientované obsahy %2 … %3)</translation>
+    </message>
+    <message>
+        <source>characteristic map not regular: signed areas from %1 to %2</source>
+        <translation type="vanished">charakteristické zobrazení není regulární: orientované obsahy od %1 do %2</translation>
+    </message>
+    <message>
+        <source>characteristic map injective: its boundary winds %1 time(s) around the vertex</source>
+        <translation type="vanished">injektivita charakteristického zobrazení: jeho hranice oběhne vrchol %1krát</translation>
+    </message>
+    <message>
+        <source>Verdict (Reif 1995): the limit surface is C¹ at the vertex (for generic data).</source>
+        <translation type="vanished">Verdikt (Reif 1995): limitní plocha je ve vrcholu C¹ (pro generická data).</translation>
+    </message>
+    <message>
+        <source>Verdict (Reif 1995): C¹ is not established at the vertex.</source>
+        <translation type="vanished">Verdikt (Reif 1995): C¹ ve vrcholu není prokázáno.</translation>
+    </message>
+    <message>
+        <source>μ &lt; λ²: the curvature is zero at the vertex (the surface is flat there to second order, for generic data: no convex or saddle shape can be modelled at it)</source>
+        <translation type="vanished">μ &lt; λ²: křivost ve vrcholu je nulová (pro generická data je tam plocha do druhého řádu rovinná: nelze v něm modelovat konvexní ani sedlový tvar)</translation>
+    </message>
+    <message>
+        <source>μ = λ²: the curvature is bounded at the vertex</source>
+        <translation type="vanished">μ = λ²: křivost ve vrcholu je omezená</translation>
+    </message>
+    <message>
+        <source>μ &gt; λ²: the curvature is unbounded at the vertex (for generic data)</source>
+        <translation type="vanished">μ &gt; λ²: křivost ve vrcholu je neomezená (pro generická data)</translation>
+    </message>
+    <message>
+        <source>Limit position (%1, %2, %3), normal (%4, %5, %6).</source>
+        <translation type="vanished">Limitní poloha (%1, %2, %3), normála (%4, %5, %6).</translation>
+    </message>
+</context>
+<context>
     <name>ExportDialog</name>
     <message>
         <source>Export Figure</source>
@@ -1027,6 +1102,33 @@
     </message>
 </context>
 <context>
+    <name>awb::CharacteristicMapView</name>
+    <message>
+        <source>The characteristic map: the n faces around the vertex under the two eigenvectors of the subdominant eigenvalue. Cells where the Jacobian changes sign are red.</source>
+        <translation>Charakteristické zobrazení: n stěn kolem vrcholu zobrazených pomocí dvou vlastních vektorů subdominantního vlastního čísla. Buňky, v nichž jakobián mění znaménko, jsou červené.</translation>
+    </message>
+    <message>
+        <source>Click an extraordinary vertex in the 3D view to see its characteristic map.</source>
+        <translation>Klikněte na mimořádný vrchol ve 3D pohledu a zobrazí se jeho charakteristické zobrazení.</translation>
+    </message>
+    <message>
+        <source>n = %1: regular, %2</source>
+        <translation>n = %1: regulární, %2</translation>
+    </message>
+    <message>
+        <source>injective</source>
+        <translation>injektivní</translation>
+    </message>
+    <message>
+        <source>not injective</source>
+        <translation>neinjektivní</translation>
+    </message>
+    <message>
+        <source>n = %1: the Jacobian changes sign in %2 cells</source>
+        <translation>n = %1: jakobián mění znaménko v %2 buňkách</translation>
+    </message>
+</context>
+<context>
     <name>awb::CheckedSpinBox</name>
     <message>
         <source>“%1” is not a whole number.</source>
@@ -1237,6 +1339,38 @@
     <message>
         <source>Eigenvalue plot</source>
         <translation>Graf vlastních čísel</translation>
+    </message>
+    <message>
+        <source>Analyse the centre of face %1 in %2</source>
+        <translation>Analyzovat střed stěny %1 v položce %2</translation>
+    </message>
+    <message>
+        <source>Analyse vertex %1 in %2</source>
+        <translation>Analyzovat vrchol %1 v položce %2</translation>
+    </message>
+    <message>
+        <source>Analyse the mesh&apos;s matrices in %1</source>
+        <translation>Analyzovat matice sítě v položce %1</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a mesh: it has no extraordinary vertices</source>
+        <translation>„%1“ není síť: nemá mimořádné vrcholy</translation>
+    </message>
+    <message>
+        <source>the centre of face %1 of &quot;%2&quot; is not an extraordinary vertex</source>
+        <translation>střed stěny %1 položky „%2“ není mimořádný vrchol</translation>
+    </message>
+    <message>
+        <source>vertex %1 of &quot;%2&quot; is not an extraordinary vertex</source>
+        <translation>vrchol %1 položky „%2“ není mimořádný vrchol</translation>
+    </message>
+    <message>
+        <source>an extraordinary vertex has its local subdivision matrix S only</source>
+        <translation>mimořádný vrchol má jen svou lokální matici subdivize S</translation>
+    </message>
+    <message>
+        <source>expected a vertex or face number (0-based)</source>
+        <translation>očekáváno číslo vrcholu nebo stěny (číslováno od 0)</translation>
     </message>
 </context>
 <context>
@@ -1728,6 +1862,30 @@ Odečíst rozdíl %7 od prvku ve sloupci %8 (%9 → %10), aby byl součet řádk
     <message>
         <source>Fᵏ(X₀) to the %1</source>
         <translation>Fᵏ(X₀) k %1</translation>
+    </message>
+    <message>
+        <source>vertex %1</source>
+        <translation>vrchol %1</translation>
+    </message>
+    <message>
+        <source>the centre of face %1</source>
+        <translation>střed stěny %1</translation>
+    </message>
+    <message>
+        <source>S at %1 (n = %2)</source>
+        <translation>S (%1, n = %2)</translation>
+    </message>
+    <message>
+        <source>The Vertex tab analyses the extraordinary vertices of a mesh surface (Item &gt; Add &gt; Mesh surface, File &gt; Import Mesh).</source>
+        <translation>Karta Vrchol analyzuje mimořádné vrcholy plochy ze sítě (Položka &gt; Přidat &gt; Plocha ze sítě, Soubor &gt; Importovat síť).</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 položky %2</translation>
+    </message>
+    <message>
+        <source>Eigenvalues at %1</source>
+        <translation>Vlastní čísla (%1)</translation>
     </message>
 </context>
 <context>
@@ -2390,6 +2548,50 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>Grid of mixed diagonals (Loop)</source>
         <translation>Mřížka se smíšenými úhlopříčkami (Loop)</translation>
+    </message>
+    <message>
+        <source>Vertex</source>
+        <translation>Vrchol</translation>
+    </message>
+    <message>
+        <source>Valences</source>
+        <translation>Valence</translation>
+    </message>
+    <message>
+        <source>%1: its spectrum, verdict and characteristic map are in the Spectrum, Matrices and Analysis docks</source>
+        <translation>%1: jeho spektrum, verdikt a charakteristické zobrazení najdete v panelech Spektrum, Matice a Analýza</translation>
+    </message>
+    <message>
+        <source>Export &amp;Mesh…</source>
+        <translation>Exportovat &amp;síť…</translation>
+    </message>
+    <message>
+        <source>Export Mesh writes a mesh surface; %1 is a %2</source>
+        <translation>„Exportovat síť“ zapisuje plochu ze sítě; %1 je typu %2</translation>
+    </message>
+    <message>
+        <source>Export Mesh writes a mesh surface: choose one first</source>
+        <translation>„Exportovat síť“ zapisuje plochu ze sítě: nejprve nějakou vyberte</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>%1 nelze zapsat: %2</translation>
+    </message>
+    <message>
+        <source>Export Mesh</source>
+        <translation>Exportovat síť</translation>
+    </message>
+    <message>
+        <source>Steps of %1 before every vertex is moved to its limit position:</source>
+        <translation>Počet kroků schématu %1 před přesunem každého vrcholu do jeho limitní polohy:</translation>
+    </message>
+    <message>
+        <source>Wavefront OBJ (*.obj)</source>
+        <translation>Wavefront OBJ (*.obj)</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>Zapsáno: %1</translation>
     </message>
 </context>
 <context>
@@ -3136,6 +3338,10 @@ Byla ponechána jako %2.</translation>
         <source>Vertex limits</source>
         <translation>Limitní polohy vrcholů</translation>
     </message>
+    <message>
+        <source>Vertex limits: the exact limit positions of the mesh&apos;s vertices, where its IFS with condensation starts. Drag the control points in the 3D view; click a purple diamond to analyse that extraordinary vertex.</source>
+        <translation>Limitní polohy vrcholů: přesné limitní polohy vrcholů sítě, z nichž vychází její IFS s kondenzací. Řídicí body přetáhněte ve 3D pohledu; kliknutím na fialový kosočtverec analyzujete příslušný mimořádný vrchol.</translation>
+    </message>
 </context>
 <context>
     <name>awb::Recovery</name>
@@ -3609,6 +3815,18 @@ Byla ponechána jako %2.</translation>
         <source>By level: around an extraordinary vertex, the rings C, f(C), f²(C), … of its IFS with condensation get colours in turn</source>
         <translation>Podle úrovně: kolem mimořádného vrcholu dostávají prstence C, f(C), f²(C), … jeho IFS s kondenzací postupně barvy</translation>
     </message>
+    <message>
+        <source>the steps before the limit positions must be 0 to %1, got %2</source>
+        <translation>počet kroků před limitními polohami musí být 0 až %1, je %2</translation>
+    </message>
+    <message>
+        <source>%1 steps give about %2 vertices: more than %3</source>
+        <translation>počet kroků %1 dá přibližně %2 vrcholů: více než %3</translation>
+    </message>
+    <message>
+        <source>Attractor Workbench: item %1, %2 after %3 steps, every vertex at its limit position</source>
+        <translation>Attractor Workbench: položka %1, %2 po %3 krocích, každý vrchol v limitní poloze</translation>
+    </message>
 </context>
 <context>
     <name>awb::SubdivisionSurfaceItem</name>
@@ -3819,6 +4037,160 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>User Guide</source>
         <translation>Uživatelská příručka</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ValenceChart</name>
+    <message>
+        <source>Valences: choose a mesh surface</source>
+        <translation>Valence: vyberte plochu ze sítě</translation>
+    </message>
+    <message>
+        <source>λ (subdominant)</source>
+        <translation>λ (subdominantní)</translation>
+    </message>
+    <message>
+        <source>μ = |λ₄|</source>
+        <translation>μ = |λ₄|</translation>
+    </message>
+    <message>
+        <source>λ²</source>
+        <translation>λ²</translation>
+    </message>
+    <message>
+        <source>this mesh</source>
+        <translation>tato síť</translation>
+    </message>
+    <message>
+        <source>λ, μ, λ² against n (%1)</source>
+        <translation>λ, μ, λ² v závislosti na n (%1)</translation>
+    </message>
+    <message>
+        <source>The subdominant eigenvalue λ, the next modulus μ and λ² of the local subdivision matrix at an interior vertex of valence n; the purple dots are this mesh&apos;s valences</source>
+        <translation>Subdominantní vlastní číslo λ, následující modul μ a λ² lokální matice subdivize ve vnitřním vrcholu valence n; fialové body jsou valence této sítě</translation>
+    </message>
+    <message>
+        <source>valence n</source>
+        <translation>valence n</translation>
+    </message>
+    <message>
+        <source>μ = λ² (bounded curvature)</source>
+        <translation>μ = λ² (omezená křivost)</translation>
+    </message>
+    <message>
+        <source>n = %1 … %2</source>
+        <translation>n = %1 … %2</translation>
+    </message>
+    <message>
+        <source>μ against λ²</source>
+        <translation>μ v závislosti na λ²</translation>
+    </message>
+    <message>
+        <source>Below the diagonal (μ &lt; λ²) the curvature at the vertex is zero, on it bounded, above it unbounded (for generic data)</source>
+        <translation>Pod diagonálou (μ &lt; λ²) je křivost ve vrcholu nulová, na ní omezená, nad ní neomezená (pro generická data)</translation>
+    </message>
+    <message>
+        <source>μ</source>
+        <translation>μ</translation>
+    </message>
+</context>
+<context>
+    <name>awb::VertexPanel</name>
+    <message>
+        <source>Loop</source>
+        <translation>Loop</translation>
+    </message>
+    <message>
+        <source>Catmull–Clark</source>
+        <translation>Catmull–Clark</translation>
+    </message>
+    <message>
+        <source>New Eigenvalue Plot of This Vertex</source>
+        <translation type="vanished">Nový graf vlastních čísel tohoto vrcholu</translation>
+    </message>
+    <message>
+        <source>Adds an eigenvalue plot item whose source is this extraordinary vertex: its local subdivision matrix&apos;s eigenvalues, kept in the project and printed with it</source>
+        <translation>Přidá položku grafu vlastních čísel, jejímž zdrojem je tento mimořádný vrchol: vlastní čísla jeho lokální matice subdivize, uložená v projektu a tištěná spolu s ním</translation>
+    </message>
+    <message>
+        <source>Click an extraordinary vertex (a purple diamond labelled with its valence) in the 3D view of a mesh surface: its spectrum, Reif&apos;s verdict and its characteristic map appear here.</source>
+        <translation>Klikněte na mimořádný vrchol (fialový kosočtverec označený jeho valencí) ve 3D pohledu plochy ze sítě: zde se zobrazí jeho spektrum, Reifův verdikt a charakteristické zobrazení.</translation>
+    </message>
+    <message>
+        <source>valence %1, %2, %3</source>
+        <translation>valence %1, %2, %3</translation>
+    </message>
+    <message>
+        <source>on the boundary</source>
+        <translation>na hranici</translation>
+    </message>
+    <message>
+        <source>interior</source>
+        <translation>vnitřní</translation>
+    </message>
+    <message>
+        <source>Local subdivision matrix S: %1 × %1 (the net of the vertex&apos;s piece).</source>
+        <translation>Lokální matice subdivize S: %1 × %1 (síť části, k níž vrchol patří).</translation>
+    </message>
+    <message>
+        <source>Local subdivision matrix S: %1 × %1 (the vertex and every point within two faces of it).</source>
+        <translation>Lokální matice subdivize S: %1 × %1 (vrchol a všechny body vzdálené od něj nejvýše dvě stěny).</translation>
+    </message>
+    <message>
+        <source>λ₁ = 1, λ = %1, μ = %2, λ² = %3</source>
+        <translation>λ₁ = 1, λ = %1, μ = %2, λ² = %3</translation>
+    </message>
+    <message>
+        <source> (λ in closed form: %1)</source>
+        <translation> (λ v uzavřeném tvaru: %1)</translation>
+    </message>
+    <message>
+        <source>Reif&apos;s criterion is decided here for interior vertices only: a boundary vertex follows the crease rules, whose analysis needs the boundary&apos;s own characteristic map.</source>
+        <translation>Reifovo kritérium se zde rozhoduje jen pro vnitřní vrcholy: hraniční vrchol se řídí pravidly pro ostré hrany, jejichž analýza vyžaduje vlastní charakteristické zobrazení hranice.</translation>
+    </message>
+    <message>
+        <source>spectral condition 1 &gt; λ₂ = λ₃ &gt; |λ₄|, λ real</source>
+        <translation>spektrální podmínka 1 &gt; λ₂ = λ₃ &gt; |λ₄|, λ reálné</translation>
+    </message>
+    <message>
+        <source>characteristic map regular: the Jacobian keeps one sign on all %1 cells (signed areas %2 … %3)</source>
+        <translation>charakteristické zobrazení je regulární: jakobián má na všech %1 buňkách stejné znaménko (orientované obsahy %2 … %3)</translation>
+    </message>
+    <message>
+        <source>characteristic map not regular: signed areas from %1 to %2</source>
+        <translation>charakteristické zobrazení není regulární: orientované obsahy od %1 do %2</translation>
+    </message>
+    <message>
+        <source>characteristic map injective: its boundary winds %1 time(s) around the vertex</source>
+        <translation>injektivita charakteristického zobrazení: jeho hranice oběhne vrchol %1krát</translation>
+    </message>
+    <message>
+        <source>Verdict (Reif 1995): the limit surface is C¹ at the vertex (for generic data).</source>
+        <translation>Verdikt (Reif 1995): limitní plocha je ve vrcholu C¹ (pro generická data).</translation>
+    </message>
+    <message>
+        <source>Verdict (Reif 1995): C¹ is not established at the vertex.</source>
+        <translation>Verdikt (Reif 1995): C¹ ve vrcholu není prokázáno.</translation>
+    </message>
+    <message>
+        <source>μ &lt; λ²: the curvature is zero at the vertex (the surface is flat there to second order, for generic data: no convex or saddle shape can be modelled at it)</source>
+        <translation>μ &lt; λ²: křivost ve vrcholu je nulová (pro generická data je tam plocha do druhého řádu rovinná: nelze v něm modelovat konvexní ani sedlový tvar)</translation>
+    </message>
+    <message>
+        <source>μ = λ²: the curvature is bounded at the vertex</source>
+        <translation>μ = λ²: křivost ve vrcholu je omezená</translation>
+    </message>
+    <message>
+        <source>μ &gt; λ²: the curvature is unbounded at the vertex (for generic data)</source>
+        <translation>μ &gt; λ²: křivost ve vrcholu je neomezená (pro generická data)</translation>
+    </message>
+    <message>
+        <source>Limit position (%1, %2, %3), normal (%4, %5, %6).</source>
+        <translation>Limitní poloha (%1, %2, %3), normála (%4, %5, %6).</translation>
+    </message>
+    <message>
+        <source>New Eigenvalue Plot</source>
+        <translation>Nový graf vlastních čísel</translation>
     </message>
 </context>
 <context>
@@ -4504,11 +4876,11 @@ meze: %9
     </message>
     <message>
         <source>%1 steps give %2 vertices: too many</source>
-        <translation>%1 kroků dává %2 vrcholů: příliš mnoho</translation>
+        <translation type="vanished">%1 kroků dává %2 vrcholů: příliš mnoho</translation>
     </message>
     <message>
         <source>Attractor Workbench: item %1, %2 after %3 steps, every vertex at its limit position</source>
-        <translation>Attractor Workbench: položka %1, %2 po %3 krocích, každý vrchol v limitní poloze</translation>
+        <translation type="vanished">Attractor Workbench: položka %1, %2 po %3 krocích, každý vrchol v limitní poloze</translation>
     </message>
     <message>
         <source>Usage: attractor-cli &lt;command&gt; [options]
@@ -4527,7 +4899,7 @@ Commands:
 
 Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
 </source>
-        <translation>Použití: attractor-cli &lt;command&gt; [options]
+        <translation type="vanished">Použití: attractor-cli &lt;command&gt; [options]
 
 Příkazy:
   render     vykreslí položku projektu do PNG, SVG nebo PDF
@@ -4547,6 +4919,62 @@ Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --he
     <message>
         <source>--out FILE (the project to write) is required</source>
         <translation>--out FILE (projekt, který se má zapsat) je povinné</translation>
+    </message>
+    <message>
+        <source>The spectrum of the local subdivision matrix at an interior vertex of each valence: lambda (with its closed form), mu, lambda^2, Reif&apos;s C1 verdict and the curvature.</source>
+        <translation>Spektrum lokální matice subdivize ve vnitřním vrcholu každé valence: lambda (s uzavřeným tvarem), mu, lambda^2, Reifův verdikt C1 a křivost.</translation>
+    </message>
+    <message>
+        <source>catmull-clark (the default) or loop.</source>
+        <translation>catmull-clark (výchozí) nebo loop.</translation>
+    </message>
+    <message>
+        <source>The smallest valence (3 to 64, default 3).</source>
+        <translation>Nejmenší valence (3 až 64, výchozí 3).</translation>
+    </message>
+    <message>
+        <source>The largest valence (3 to 64, default 16).</source>
+        <translation>Největší valence (3 až 64, výchozí 16).</translation>
+    </message>
+    <message>
+        <source>Print JSON instead of a table.</source>
+        <translation>Vypsat JSON místo tabulky.</translation>
+    </message>
+    <message>
+        <source>Usage: attractor-cli &lt;command&gt; [options]
+
+Commands:
+  render     render an item of a project to PNG, SVG or PDF
+  animate    render the frames of an item&apos;s animation (PNG files, MP4/GIF)
+  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)
+  points     the points of F^k(X0) as CSV
+  check      validate a project file
+  rewrite    load and save a project in canonical form
+  export     attractor points as PLY, a subdivided net or mesh (limit) as OBJ
+  polygon    the control polygon after K subdivision steps (JSON)
+  import-mesh  a mesh file (OBJ, OFF, PLY) as a project with a mesh item
+  valences   lambda, mu, Reif&apos;s C1 verdict per valence (Catmull-Clark, Loop)
+  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG
+
+Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
+</source>
+        <translation>Použití: attractor-cli &lt;command&gt; [options]
+
+Příkazy:
+  render     vykreslí položku projektu do PNG, SVG nebo PDF
+  animate    vykreslí snímky animace položky (soubory PNG, MP4/GIF)
+  analyse    vlastní čísla, kontraktivita, pevné body, dimenze (JSON)
+  points     body F^k(X0) jako CSV
+  check      ověří projektový soubor
+  rewrite    načte a uloží projekt v kanonickém tvaru
+  export     body atraktoru jako PLY, zjemněná síť nebo síť (v limitě) jako OBJ
+  polygon    řídicí polygon po K krocích subdivize (JSON)
+  import-mesh  soubor sítě (OBJ, OFF, PLY) jako projekt s položkou se sítí
+  valences   lambda, mu, Reifův verdikt C1 pro každou valenci (Catmull-Clark, Loop)
+  examples   vykreslí vestavěné obrázky z článků (000 Figs. 2, 3, 5) do PNG
+
+Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --help&apos;.
+</translation>
     </message>
 </context>
 <context>

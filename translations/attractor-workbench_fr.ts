@@ -2,6 +2,81 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="fr_FR" sourcelanguage="en">
 <context>
+    <name></name>
+    <message>
+        <source>valence %1, %2, %3</source>
+        <translation type="vanished">valence %1, %2, %3</translation>
+    </message>
+    <message>
+        <source>on the boundary</source>
+        <translation type="vanished">sur le bord</translation>
+    </message>
+    <message>
+        <source>interior</source>
+        <translation type="vanished">intérieur</translation>
+    </message>
+    <message>
+        <source>Local subdivision matrix S: %1 × %1 (the net of the vertex&apos;s piece).</source>
+        <translation type="vanished">Matrice de subdivision locale S&#xa0;: %1 × %1 (le réseau du morceau du sommet).</translation>
+    </message>
+    <message>
+        <source>Local subdivision matrix S: %1 × %1 (the vertex and every point within two faces of it).</source>
+        <translation type="vanished">Matrice de subdivision locale S&#xa0;: %1 × %1 (le sommet et tous les points situés à deux faces au plus de celui-ci).</translation>
+    </message>
+    <message>
+        <source>λ₁ = 1, λ = %1, μ = %2, λ² = %3</source>
+        <translation type="vanished">λ₁ = 1, λ = %1, μ = %2, λ² = %3</translation>
+    </message>
+    <message>
+        <source> (λ in closed form: %1)</source>
+        <translation type="vanished"> (λ sous forme close&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>Reif&apos;s criterion is decided here for interior vertices only: a boundary vertex follows the crease rules, whose analysis needs the boundary&apos;s own characteristic map.</source>
+        <translation type="vanished">Le critère de Reif n’est évalué ici que pour les sommets intérieurs&#xa0;: un sommet de bord suit les règles d’arête vive, dont l’analyse demande l’application caractéristique propre au bord.</translation>
+    </message>
+    <message>
+        <source>spectral condition 1 &gt; λ₂ = λ₃ &gt; |λ₄|, λ real</source>
+        <translation type="vanished">condition spectrale 1 &gt; λ₂ = λ₃ &gt; |λ₄|, λ réel</translation>
+    </message>
+    <message>
+        <source>characteristic map regular: the Jacobian keeps one sign on all %1 cells (signed areas %2 … %3)</source>
+        <translation type="vanished">application caractéristique régulière&#xa0;: le jacobien garde un signe constant sur les %1 cellules (aires signées %2 … %3)</translation>
+    </message>
+    <message>
+        <source>characteristic map not regular: signed areas from %1 to %2</source>
+        <translation type="vanished">application caractéristique non régulière&#xa0;: aires signées de %1 à %2</translation>
+    </message>
+    <message>
+        <source>characteristic map injective: its boundary winds %1 time(s) around the vertex</source>
+        <translation type="vanished">application caractéristique injective&#xa0;: son bord fait %1 tour(s) autour du sommet</translation>
+    </message>
+    <message>
+        <source>Verdict (Reif 1995): the limit surface is C¹ at the vertex (for generic data).</source>
+        <translation type="vanished">Verdict (Reif 1995)&#xa0;: la surface limite est C¹ au sommet (pour des données génériques).</translation>
+    </message>
+    <message>
+        <source>Verdict (Reif 1995): C¹ is not established at the vertex.</source>
+        <translation type="vanished">Verdict (Reif 1995)&#xa0;: la régularité C¹ au sommet n’est pas établie.</translation>
+    </message>
+    <message>
+        <source>μ &lt; λ²: the curvature is zero at the vertex (the surface is flat there to second order, for generic data: no convex or saddle shape can be modelled at it)</source>
+        <translation type="vanished">μ &lt; λ²&#xa0;: la courbure est nulle au sommet (pour des données génériques, la surface y est plate au second ordre&#xa0;: aucune forme convexe ou en selle ne peut y être modélisée)</translation>
+    </message>
+    <message>
+        <source>μ = λ²: the curvature is bounded at the vertex</source>
+        <translation type="vanished">μ = λ²&#xa0;: la courbure est bornée au sommet</translation>
+    </message>
+    <message>
+        <source>μ &gt; λ²: the curvature is unbounded at the vertex (for generic data)</source>
+        <translation type="vanished">μ &gt; λ²&#xa0;: la courbure n’est pas bornée au sommet (pour des données génériques)</translation>
+    </message>
+    <message>
+        <source>Limit position (%1, %2, %3), normal (%4, %5, %6).</source>
+        <translation type="vanished">Position limite (%1, %2, %3), normale (%4, %5, %6).</translation>
+    </message>
+</context>
+<context>
     <name>ExportDialog</name>
     <message>
         <source>Export Figure</source>
@@ -1026,6 +1101,33 @@
     </message>
 </context>
 <context>
+    <name>awb::CharacteristicMapView</name>
+    <message>
+        <source>The characteristic map: the n faces around the vertex under the two eigenvectors of the subdominant eigenvalue. Cells where the Jacobian changes sign are red.</source>
+        <translation>L’application caractéristique&#xa0;: les n faces autour du sommet, transformées par les deux vecteurs propres de la valeur propre sous-dominante. Les cellules où le jacobien change de signe sont en rouge.</translation>
+    </message>
+    <message>
+        <source>Click an extraordinary vertex in the 3D view to see its characteristic map.</source>
+        <translation>Cliquez sur un sommet extraordinaire dans la vue 3D pour voir son application caractéristique.</translation>
+    </message>
+    <message>
+        <source>n = %1: regular, %2</source>
+        <translation>n = %1&#xa0;: régulière, %2</translation>
+    </message>
+    <message>
+        <source>injective</source>
+        <translation>injective</translation>
+    </message>
+    <message>
+        <source>not injective</source>
+        <translation>non injective</translation>
+    </message>
+    <message>
+        <source>n = %1: the Jacobian changes sign in %2 cells</source>
+        <translation>n = %1&#xa0;: le jacobien change de signe dans %2 cellules</translation>
+    </message>
+</context>
+<context>
     <name>awb::CheckedSpinBox</name>
     <message>
         <source>“%1” is not a whole number.</source>
@@ -1236,6 +1338,38 @@
     <message>
         <source>Eigenvalue plot</source>
         <translation>Diagramme des valeurs propres</translation>
+    </message>
+    <message>
+        <source>Analyse the centre of face %1 in %2</source>
+        <translation>Analyser le centre de la face %1 de %2</translation>
+    </message>
+    <message>
+        <source>Analyse vertex %1 in %2</source>
+        <translation>Analyser le sommet %1 de %2</translation>
+    </message>
+    <message>
+        <source>Analyse the mesh&apos;s matrices in %1</source>
+        <translation>Analyser les matrices du maillage de %1</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a mesh: it has no extraordinary vertices</source>
+        <translation>«&#xa0;%1&#xa0;» n’est pas un maillage&#xa0;: il n’a pas de sommets extraordinaires</translation>
+    </message>
+    <message>
+        <source>the centre of face %1 of &quot;%2&quot; is not an extraordinary vertex</source>
+        <translation>le centre de la face %1 de «&#xa0;%2&#xa0;» n’est pas un sommet extraordinaire</translation>
+    </message>
+    <message>
+        <source>vertex %1 of &quot;%2&quot; is not an extraordinary vertex</source>
+        <translation>le sommet %1 de «&#xa0;%2&#xa0;» n’est pas un sommet extraordinaire</translation>
+    </message>
+    <message>
+        <source>an extraordinary vertex has its local subdivision matrix S only</source>
+        <translation>un sommet extraordinaire n’a que sa matrice de subdivision locale S</translation>
+    </message>
+    <message>
+        <source>expected a vertex or face number (0-based)</source>
+        <translation>numéro de sommet ou de face attendu (numéroté à partir de 0)</translation>
     </message>
 </context>
 <context>
@@ -1726,6 +1860,30 @@ Retrancher la différence %7 du coefficient de la colonne %8 (%9 → %10) pour q
     <message>
         <source>Fᵏ(X₀) to the %1</source>
         <translation>Fᵏ(X₀) jusqu’à la %1</translation>
+    </message>
+    <message>
+        <source>vertex %1</source>
+        <translation>sommet %1</translation>
+    </message>
+    <message>
+        <source>the centre of face %1</source>
+        <translation>centre de la face %1</translation>
+    </message>
+    <message>
+        <source>S at %1 (n = %2)</source>
+        <translation>S (%1, n = %2)</translation>
+    </message>
+    <message>
+        <source>The Vertex tab analyses the extraordinary vertices of a mesh surface (Item &gt; Add &gt; Mesh surface, File &gt; Import Mesh).</source>
+        <translation>L’onglet Sommet analyse les sommets extraordinaires d’une surface de maillage (Élément &gt; Ajouter &gt; Surface de maillage, Fichier &gt; Importer un maillage).</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 de %2</translation>
+    </message>
+    <message>
+        <source>Eigenvalues at %1</source>
+        <translation>Valeurs propres (%1)</translation>
     </message>
 </context>
 <context>
@@ -2387,6 +2545,50 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>Grid of mixed diagonals (Loop)</source>
         <translation>Grille à diagonales mêlées (Loop)</translation>
+    </message>
+    <message>
+        <source>Vertex</source>
+        <translation>Sommet</translation>
+    </message>
+    <message>
+        <source>Valences</source>
+        <translation>Valences</translation>
+    </message>
+    <message>
+        <source>%1: its spectrum, verdict and characteristic map are in the Spectrum, Matrices and Analysis docks</source>
+        <translation>%1&#xa0;: son spectre, le verdict et l’application caractéristique sont dans les panneaux Spectre, Matrices et Analyse</translation>
+    </message>
+    <message>
+        <source>Export &amp;Mesh…</source>
+        <translation>Exporter le &amp;maillage…</translation>
+    </message>
+    <message>
+        <source>Export Mesh writes a mesh surface; %1 is a %2</source>
+        <translation>«&#xa0;Exporter le maillage&#xa0;» écrit une surface de maillage&#x202f;; %1 est de type %2</translation>
+    </message>
+    <message>
+        <source>Export Mesh writes a mesh surface: choose one first</source>
+        <translation>«&#xa0;Exporter le maillage&#xa0;» écrit une surface de maillage&#xa0;: choisissez-en d’abord une</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>impossible d’écrire %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>Export Mesh</source>
+        <translation>Exporter le maillage</translation>
+    </message>
+    <message>
+        <source>Steps of %1 before every vertex is moved to its limit position:</source>
+        <translation>Étapes de %1 avant que chaque sommet soit placé à sa position limite&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Wavefront OBJ (*.obj)</source>
+        <translation>Wavefront OBJ (*.obj)</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>Écrit&#xa0;: %1</translation>
     </message>
 </context>
 <context>
@@ -3130,6 +3332,10 @@ Elle a été conservée sous le nom %2.</translation>
         <source>Vertex limits</source>
         <translation>Positions limites des sommets</translation>
     </message>
+    <message>
+        <source>Vertex limits: the exact limit positions of the mesh&apos;s vertices, where its IFS with condensation starts. Drag the control points in the 3D view; click a purple diamond to analyse that extraordinary vertex.</source>
+        <translation>Positions limites des sommets&#xa0;: les positions limites exactes des sommets du maillage, d’où part son IFS avec condensation. Faites glisser les points de contrôle dans la vue 3D&#x202f;; cliquez sur un losange violet pour analyser ce sommet extraordinaire.</translation>
+    </message>
 </context>
 <context>
     <name>awb::Recovery</name>
@@ -3603,6 +3809,18 @@ Elle a été conservée sous le nom %2.</translation>
         <source>By level: around an extraordinary vertex, the rings C, f(C), f²(C), … of its IFS with condensation get colours in turn</source>
         <translation>Par niveau&#xa0;: autour d’un sommet extraordinaire, les anneaux C, f(C), f²(C), … de son IFS avec condensation reçoivent tour à tour une couleur</translation>
     </message>
+    <message>
+        <source>the steps before the limit positions must be 0 to %1, got %2</source>
+        <translation>le nombre d’étapes avant les positions limites doit être de 0 à %1, reçu %2</translation>
+    </message>
+    <message>
+        <source>%1 steps give about %2 vertices: more than %3</source>
+        <translation>%1 étapes donnent environ %2 sommets&#xa0;: plus de %3</translation>
+    </message>
+    <message>
+        <source>Attractor Workbench: item %1, %2 after %3 steps, every vertex at its limit position</source>
+        <translation>Attractor Workbench&#xa0;: élément %1, %2 après %3 étapes, chaque sommet à sa position limite</translation>
+    </message>
 </context>
 <context>
     <name>awb::SubdivisionSurfaceItem</name>
@@ -3813,6 +4031,160 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>User Guide</source>
         <translation>Guide de l’utilisateur</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ValenceChart</name>
+    <message>
+        <source>Valences: choose a mesh surface</source>
+        <translation>Valences&#xa0;: choisissez une surface de maillage</translation>
+    </message>
+    <message>
+        <source>λ (subdominant)</source>
+        <translation>λ (sous-dominante)</translation>
+    </message>
+    <message>
+        <source>μ = |λ₄|</source>
+        <translation>μ = |λ₄|</translation>
+    </message>
+    <message>
+        <source>λ²</source>
+        <translation>λ²</translation>
+    </message>
+    <message>
+        <source>this mesh</source>
+        <translation>ce maillage</translation>
+    </message>
+    <message>
+        <source>λ, μ, λ² against n (%1)</source>
+        <translation>λ, μ, λ² en fonction de n (%1)</translation>
+    </message>
+    <message>
+        <source>The subdominant eigenvalue λ, the next modulus μ and λ² of the local subdivision matrix at an interior vertex of valence n; the purple dots are this mesh&apos;s valences</source>
+        <translation>La valeur propre sous-dominante λ, le module suivant μ et λ² de la matrice de subdivision locale en un sommet intérieur de valence n&#x202f;; les points violets sont les valences de ce maillage</translation>
+    </message>
+    <message>
+        <source>valence n</source>
+        <translation>valence n</translation>
+    </message>
+    <message>
+        <source>μ = λ² (bounded curvature)</source>
+        <translation>μ = λ² (courbure bornée)</translation>
+    </message>
+    <message>
+        <source>n = %1 … %2</source>
+        <translation>n = %1 … %2</translation>
+    </message>
+    <message>
+        <source>μ against λ²</source>
+        <translation>μ en fonction de λ²</translation>
+    </message>
+    <message>
+        <source>Below the diagonal (μ &lt; λ²) the curvature at the vertex is zero, on it bounded, above it unbounded (for generic data)</source>
+        <translation>Sous la diagonale (μ &lt; λ²), la courbure au sommet est nulle, sur la diagonale bornée, au-dessus non bornée (pour des données génériques)</translation>
+    </message>
+    <message>
+        <source>μ</source>
+        <translation>μ</translation>
+    </message>
+</context>
+<context>
+    <name>awb::VertexPanel</name>
+    <message>
+        <source>Loop</source>
+        <translation>Loop</translation>
+    </message>
+    <message>
+        <source>Catmull–Clark</source>
+        <translation>Catmull–Clark</translation>
+    </message>
+    <message>
+        <source>New Eigenvalue Plot of This Vertex</source>
+        <translation type="vanished">Nouveau diagramme des valeurs propres de ce sommet</translation>
+    </message>
+    <message>
+        <source>Adds an eigenvalue plot item whose source is this extraordinary vertex: its local subdivision matrix&apos;s eigenvalues, kept in the project and printed with it</source>
+        <translation>Ajoute un élément diagramme des valeurs propres dont la source est ce sommet extraordinaire&#xa0;: les valeurs propres de sa matrice de subdivision locale, conservées dans le projet et imprimées avec lui</translation>
+    </message>
+    <message>
+        <source>Click an extraordinary vertex (a purple diamond labelled with its valence) in the 3D view of a mesh surface: its spectrum, Reif&apos;s verdict and its characteristic map appear here.</source>
+        <translation>Cliquez sur un sommet extraordinaire (un losange violet étiqueté par sa valence) dans la vue 3D d’une surface de maillage&#xa0;: son spectre, le verdict de Reif et son application caractéristique s’affichent ici.</translation>
+    </message>
+    <message>
+        <source>valence %1, %2, %3</source>
+        <translation>valence %1, %2, %3</translation>
+    </message>
+    <message>
+        <source>on the boundary</source>
+        <translation>sur le bord</translation>
+    </message>
+    <message>
+        <source>interior</source>
+        <translation>intérieur</translation>
+    </message>
+    <message>
+        <source>Local subdivision matrix S: %1 × %1 (the net of the vertex&apos;s piece).</source>
+        <translation>Matrice de subdivision locale S&#xa0;: %1 × %1 (le réseau du morceau du sommet).</translation>
+    </message>
+    <message>
+        <source>Local subdivision matrix S: %1 × %1 (the vertex and every point within two faces of it).</source>
+        <translation>Matrice de subdivision locale S&#xa0;: %1 × %1 (le sommet et tous les points situés à deux faces au plus de celui-ci).</translation>
+    </message>
+    <message>
+        <source>λ₁ = 1, λ = %1, μ = %2, λ² = %3</source>
+        <translation>λ₁ = 1, λ = %1, μ = %2, λ² = %3</translation>
+    </message>
+    <message>
+        <source> (λ in closed form: %1)</source>
+        <translation> (λ sous forme close&#xa0;: %1)</translation>
+    </message>
+    <message>
+        <source>Reif&apos;s criterion is decided here for interior vertices only: a boundary vertex follows the crease rules, whose analysis needs the boundary&apos;s own characteristic map.</source>
+        <translation>Le critère de Reif n’est évalué ici que pour les sommets intérieurs&#xa0;: un sommet de bord suit les règles d’arête vive, dont l’analyse demande l’application caractéristique propre au bord.</translation>
+    </message>
+    <message>
+        <source>spectral condition 1 &gt; λ₂ = λ₃ &gt; |λ₄|, λ real</source>
+        <translation>condition spectrale 1 &gt; λ₂ = λ₃ &gt; |λ₄|, λ réel</translation>
+    </message>
+    <message>
+        <source>characteristic map regular: the Jacobian keeps one sign on all %1 cells (signed areas %2 … %3)</source>
+        <translation>application caractéristique régulière&#xa0;: le jacobien garde un signe constant sur les %1 cellules (aires signées %2 … %3)</translation>
+    </message>
+    <message>
+        <source>characteristic map not regular: signed areas from %1 to %2</source>
+        <translation>application caractéristique non régulière&#xa0;: aires signées de %1 à %2</translation>
+    </message>
+    <message>
+        <source>characteristic map injective: its boundary winds %1 time(s) around the vertex</source>
+        <translation>application caractéristique injective&#xa0;: son bord fait %1 tour(s) autour du sommet</translation>
+    </message>
+    <message>
+        <source>Verdict (Reif 1995): the limit surface is C¹ at the vertex (for generic data).</source>
+        <translation>Verdict (Reif 1995)&#xa0;: la surface limite est C¹ au sommet (pour des données génériques).</translation>
+    </message>
+    <message>
+        <source>Verdict (Reif 1995): C¹ is not established at the vertex.</source>
+        <translation>Verdict (Reif 1995)&#xa0;: la régularité C¹ au sommet n’est pas établie.</translation>
+    </message>
+    <message>
+        <source>μ &lt; λ²: the curvature is zero at the vertex (the surface is flat there to second order, for generic data: no convex or saddle shape can be modelled at it)</source>
+        <translation>μ &lt; λ²&#xa0;: la courbure est nulle au sommet (pour des données génériques, la surface y est plate au second ordre&#xa0;: aucune forme convexe ou en selle ne peut y être modélisée)</translation>
+    </message>
+    <message>
+        <source>μ = λ²: the curvature is bounded at the vertex</source>
+        <translation>μ = λ²&#xa0;: la courbure est bornée au sommet</translation>
+    </message>
+    <message>
+        <source>μ &gt; λ²: the curvature is unbounded at the vertex (for generic data)</source>
+        <translation>μ &gt; λ²&#xa0;: la courbure n’est pas bornée au sommet (pour des données génériques)</translation>
+    </message>
+    <message>
+        <source>Limit position (%1, %2, %3), normal (%4, %5, %6).</source>
+        <translation>Position limite (%1, %2, %3), normale (%4, %5, %6).</translation>
+    </message>
+    <message>
+        <source>New Eigenvalue Plot</source>
+        <translation>Nouveau diagramme des valeurs propres</translation>
     </message>
 </context>
 <context>
@@ -4498,11 +4870,11 @@ limites&#xa0;: %9
     </message>
     <message>
         <source>%1 steps give %2 vertices: too many</source>
-        <translation>%1 étapes donnent %2 sommets&#xa0;: c’est trop</translation>
+        <translation type="vanished">%1 étapes donnent %2 sommets&#xa0;: c’est trop</translation>
     </message>
     <message>
         <source>Attractor Workbench: item %1, %2 after %3 steps, every vertex at its limit position</source>
-        <translation>Attractor Workbench&#xa0;: élément %1, %2 après %3 étapes, chaque sommet à sa position limite</translation>
+        <translation type="vanished">Attractor Workbench&#xa0;: élément %1, %2 après %3 étapes, chaque sommet à sa position limite</translation>
     </message>
     <message>
         <source>Usage: attractor-cli &lt;command&gt; [options]
@@ -4521,7 +4893,7 @@ Commands:
 
 Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
 </source>
-        <translation>Utilisation&#xa0;: attractor-cli &lt;commande&gt; [options]
+        <translation type="vanished">Utilisation&#xa0;: attractor-cli &lt;commande&gt; [options]
 
 Commandes&#xa0;:
   render     rendre un élément d’un projet en PNG, SVG ou PDF
@@ -4541,6 +4913,62 @@ Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les
     <message>
         <source>--out FILE (the project to write) is required</source>
         <translation>--out FILE (le projet à écrire) est obligatoire</translation>
+    </message>
+    <message>
+        <source>The spectrum of the local subdivision matrix at an interior vertex of each valence: lambda (with its closed form), mu, lambda^2, Reif&apos;s C1 verdict and the curvature.</source>
+        <translation>Le spectre de la matrice de subdivision locale en un sommet intérieur de chaque valence&#xa0;: lambda (avec sa forme close), mu, lambda^2, le verdict C1 de Reif et la courbure.</translation>
+    </message>
+    <message>
+        <source>catmull-clark (the default) or loop.</source>
+        <translation>catmull-clark (par défaut) ou loop.</translation>
+    </message>
+    <message>
+        <source>The smallest valence (3 to 64, default 3).</source>
+        <translation>La plus petite valence (3 à 64, 3 par défaut).</translation>
+    </message>
+    <message>
+        <source>The largest valence (3 to 64, default 16).</source>
+        <translation>La plus grande valence (3 à 64, 16 par défaut).</translation>
+    </message>
+    <message>
+        <source>Print JSON instead of a table.</source>
+        <translation>Afficher du JSON au lieu d’un tableau.</translation>
+    </message>
+    <message>
+        <source>Usage: attractor-cli &lt;command&gt; [options]
+
+Commands:
+  render     render an item of a project to PNG, SVG or PDF
+  animate    render the frames of an item&apos;s animation (PNG files, MP4/GIF)
+  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)
+  points     the points of F^k(X0) as CSV
+  check      validate a project file
+  rewrite    load and save a project in canonical form
+  export     attractor points as PLY, a subdivided net or mesh (limit) as OBJ
+  polygon    the control polygon after K subdivision steps (JSON)
+  import-mesh  a mesh file (OBJ, OFF, PLY) as a project with a mesh item
+  valences   lambda, mu, Reif&apos;s C1 verdict per valence (Catmull-Clark, Loop)
+  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG
+
+Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
+</source>
+        <translation>Utilisation&#xa0;: attractor-cli &lt;commande&gt; [options]
+
+Commandes&#xa0;:
+  render     rendre un élément d’un projet en PNG, SVG ou PDF
+  animate    rendre les images de l’animation d’un élément (fichiers PNG, MP4/GIF)
+  analyse    valeurs propres, contractivité, points fixes, dimension (JSON)
+  points     les points de F^k(X0) en CSV
+  check      valider un fichier de projet
+  rewrite    charger et réenregistrer un projet sous forme canonique
+  export     points de l’attracteur en PLY, réseau subdivisé ou maillage (à la limite) en OBJ
+  polygon    le polygone de contrôle après K étapes de subdivision (JSON)
+  import-mesh  un fichier de maillage (OBJ, OFF, PLY) en projet avec un élément maillage
+  valences   lambda, mu, verdict C1 de Reif par valence (Catmull-Clark, Loop)
+  examples   rendre les figures des articles intégrées (000 fig. 2, 3, 5) en PNG
+
+Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les options d’une commande.
+</translation>
     </message>
 </context>
 <context>

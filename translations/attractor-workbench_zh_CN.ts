@@ -2,6 +2,81 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN" sourcelanguage="en">
 <context>
+    <name></name>
+    <message>
+        <source>valence %1, %2, %3</source>
+        <translation type="vanished">价 %1，%2，%3</translation>
+    </message>
+    <message>
+        <source>on the boundary</source>
+        <translation type="vanished">位于边界</translation>
+    </message>
+    <message>
+        <source>interior</source>
+        <translation type="vanished">内部</translation>
+    </message>
+    <message>
+        <source>Local subdivision matrix S: %1 × %1 (the net of the vertex&apos;s piece).</source>
+        <translation type="vanished">局部细分矩阵 S：%1 × %1（该顶点所在曲面片的控制网格）。</translation>
+    </message>
+    <message>
+        <source>Local subdivision matrix S: %1 × %1 (the vertex and every point within two faces of it).</source>
+        <translation type="vanished">局部细分矩阵 S：%1 × %1（该顶点及其周围两圈面内的所有点）。</translation>
+    </message>
+    <message>
+        <source>λ₁ = 1, λ = %1, μ = %2, λ² = %3</source>
+        <translation type="vanished">λ₁ = 1，λ = %1，μ = %2，λ² = %3</translation>
+    </message>
+    <message>
+        <source> (λ in closed form: %1)</source>
+        <translation type="vanished">（λ 的闭式值：%1）</translation>
+    </message>
+    <message>
+        <source>Reif&apos;s criterion is decided here for interior vertices only: a boundary vertex follows the crease rules, whose analysis needs the boundary&apos;s own characteristic map.</source>
+        <translation type="vanished">此处仅对内部顶点判定 Reif 判据：边界顶点遵循折痕规则，其分析需要边界自身的特征映射。</translation>
+    </message>
+    <message>
+        <source>spectral condition 1 &gt; λ₂ = λ₃ &gt; |λ₄|, λ real</source>
+        <translation type="vanished">谱条件 1 &gt; λ₂ = λ₃ &gt; |λ₄|，λ 为实数</translation>
+    </message>
+    <message>
+        <source>characteristic map regular: the Jacobian keeps one sign on all %1 cells (signed areas %2 … %3)</source>
+        <translation type="vanished">特征映射正则：雅可比行列式在全部 %1 个单元上保持同号（有向面积 %2 … %3）</translation>
+    </message>
+    <message>
+        <source>characteristic map not regular: signed areas from %1 to %2</source>
+        <translation type="vanished">特征映射非正则：有向面积从 %1 到 %2</translation>
+    </message>
+    <message>
+        <source>characteristic map injective: its boundary winds %1 time(s) around the vertex</source>
+        <translation type="vanished">特征映射为单射：其边界绕顶点 %1 圈</translation>
+    </message>
+    <message>
+        <source>Verdict (Reif 1995): the limit surface is C¹ at the vertex (for generic data).</source>
+        <translation type="vanished">判定（Reif 1995）：极限曲面在该顶点处为 C¹（对一般数据）。</translation>
+    </message>
+    <message>
+        <source>Verdict (Reif 1995): C¹ is not established at the vertex.</source>
+        <translation type="vanished">判定（Reif 1995）：未能确认该顶点处为 C¹。</translation>
+    </message>
+    <message>
+        <source>μ &lt; λ²: the curvature is zero at the vertex (the surface is flat there to second order, for generic data: no convex or saddle shape can be modelled at it)</source>
+        <translation type="vanished">μ &lt; λ²：顶点处的曲率为零（对一般数据，曲面在该处二阶平坦：无法在该处构造凸形或鞍形）</translation>
+    </message>
+    <message>
+        <source>μ = λ²: the curvature is bounded at the vertex</source>
+        <translation type="vanished">μ = λ²：顶点处的曲率有界</translation>
+    </message>
+    <message>
+        <source>μ &gt; λ²: the curvature is unbounded at the vertex (for generic data)</source>
+        <translation type="vanished">μ &gt; λ²：顶点处的曲率无界（对一般数据）</translation>
+    </message>
+    <message>
+        <source>Limit position (%1, %2, %3), normal (%4, %5, %6).</source>
+        <translation type="vanished">极限位置 (%1, %2, %3)，法向量 (%4, %5, %6)。</translation>
+    </message>
+</context>
+<context>
     <name>ExportDialog</name>
     <message>
         <source>Export Figure</source>
@@ -1025,6 +1100,33 @@
     </message>
 </context>
 <context>
+    <name>awb::CharacteristicMapView</name>
+    <message>
+        <source>The characteristic map: the n faces around the vertex under the two eigenvectors of the subdominant eigenvalue. Cells where the Jacobian changes sign are red.</source>
+        <translation>特征映射：顶点周围的 n 个面在次占优特征值的两个特征向量下的像。雅可比行列式变号的单元显示为红色。</translation>
+    </message>
+    <message>
+        <source>Click an extraordinary vertex in the 3D view to see its characteristic map.</source>
+        <translation>在 3D 视图中单击一个奇异顶点以查看其特征映射。</translation>
+    </message>
+    <message>
+        <source>n = %1: regular, %2</source>
+        <translation>n = %1：正则，%2</translation>
+    </message>
+    <message>
+        <source>injective</source>
+        <translation>单射</translation>
+    </message>
+    <message>
+        <source>not injective</source>
+        <translation>非单射</translation>
+    </message>
+    <message>
+        <source>n = %1: the Jacobian changes sign in %2 cells</source>
+        <translation>n = %1：雅可比行列式在 %2 个单元中变号</translation>
+    </message>
+</context>
+<context>
     <name>awb::CheckedSpinBox</name>
     <message>
         <source>“%1” is not a whole number.</source>
@@ -1235,6 +1337,38 @@
     <message>
         <source>Eigenvalue plot</source>
         <translation>特征值图</translation>
+    </message>
+    <message>
+        <source>Analyse the centre of face %1 in %2</source>
+        <translation>分析 %2 中面 %1 的中心</translation>
+    </message>
+    <message>
+        <source>Analyse vertex %1 in %2</source>
+        <translation>分析 %2 中的顶点 %1</translation>
+    </message>
+    <message>
+        <source>Analyse the mesh&apos;s matrices in %1</source>
+        <translation>分析 %1 中网格的矩阵</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a mesh: it has no extraordinary vertices</source>
+        <translation>“%1”不是网格：它没有奇异顶点</translation>
+    </message>
+    <message>
+        <source>the centre of face %1 of &quot;%2&quot; is not an extraordinary vertex</source>
+        <translation>“%2”中面 %1 的中心不是奇异顶点</translation>
+    </message>
+    <message>
+        <source>vertex %1 of &quot;%2&quot; is not an extraordinary vertex</source>
+        <translation>“%2”的顶点 %1 不是奇异顶点</translation>
+    </message>
+    <message>
+        <source>an extraordinary vertex has its local subdivision matrix S only</source>
+        <translation>奇异顶点只有其局部细分矩阵 S</translation>
+    </message>
+    <message>
+        <source>expected a vertex or face number (0-based)</source>
+        <translation>应为顶点或面的编号（从 0 开始）</translation>
     </message>
 </context>
 <context>
@@ -1724,6 +1858,30 @@ Take the difference %7 from the entry in column %8 (%9 → %10) so that the row 
     <message>
         <source>Fᵏ(X₀) to the %1</source>
         <translation>Fᵏ(X₀) 到%1</translation>
+    </message>
+    <message>
+        <source>vertex %1</source>
+        <translation>顶点 %1</translation>
+    </message>
+    <message>
+        <source>the centre of face %1</source>
+        <translation>面 %1 的中心</translation>
+    </message>
+    <message>
+        <source>S at %1 (n = %2)</source>
+        <translation>%1 处的 S（n = %2）</translation>
+    </message>
+    <message>
+        <source>The Vertex tab analyses the extraordinary vertices of a mesh surface (Item &gt; Add &gt; Mesh surface, File &gt; Import Mesh).</source>
+        <translation>“顶点”标签页分析网格曲面的奇异顶点（对象 &gt; 添加 &gt; 网格曲面，文件 &gt; 导入网格）。</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%2 的%1</translation>
+    </message>
+    <message>
+        <source>Eigenvalues at %1</source>
+        <translation>%1 处的特征值</translation>
     </message>
 </context>
 <context>
@@ -2384,6 +2542,50 @@ It was kept as %2.</source>
     <message>
         <source>Grid of mixed diagonals (Loop)</source>
         <translation>混合对角线网格（Loop）</translation>
+    </message>
+    <message>
+        <source>Vertex</source>
+        <translation>顶点</translation>
+    </message>
+    <message>
+        <source>Valences</source>
+        <translation>顶点价</translation>
+    </message>
+    <message>
+        <source>%1: its spectrum, verdict and characteristic map are in the Spectrum, Matrices and Analysis docks</source>
+        <translation>%1：其谱、判定结果和特征映射见“谱”“矩阵”和“分析”面板</translation>
+    </message>
+    <message>
+        <source>Export &amp;Mesh…</source>
+        <translation>导出网格(&amp;M)…</translation>
+    </message>
+    <message>
+        <source>Export Mesh writes a mesh surface; %1 is a %2</source>
+        <translation>“导出网格”写出的是网格曲面；而 %1 的类型为 %2</translation>
+    </message>
+    <message>
+        <source>Export Mesh writes a mesh surface: choose one first</source>
+        <translation>“导出网格”写出的是网格曲面：请先选择一个网格曲面</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>Export Mesh</source>
+        <translation>导出网格</translation>
+    </message>
+    <message>
+        <source>Steps of %1 before every vertex is moved to its limit position:</source>
+        <translation>将每个顶点移到其极限位置之前的 %1 细分步数：</translation>
+    </message>
+    <message>
+        <source>Wavefront OBJ (*.obj)</source>
+        <translation>Wavefront OBJ (*.obj)</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>已写入 %1</translation>
     </message>
 </context>
 <context>
@@ -3124,6 +3326,10 @@ It was kept as %2.</source>
         <source>Vertex limits</source>
         <translation>顶点极限位置</translation>
     </message>
+    <message>
+        <source>Vertex limits: the exact limit positions of the mesh&apos;s vertices, where its IFS with condensation starts. Drag the control points in the 3D view; click a purple diamond to analyse that extraordinary vertex.</source>
+        <translation>顶点极限位置：网格顶点的精确极限位置，即其带凝聚集的 IFS 的起点。在 3D 视图中拖动控制点；单击紫色菱形可分析该奇异顶点。</translation>
+    </message>
 </context>
 <context>
     <name>awb::Recovery</name>
@@ -3597,6 +3803,18 @@ It was kept as %2.</source>
         <source>By level: around an extraordinary vertex, the rings C, f(C), f²(C), … of its IFS with condensation get colours in turn</source>
         <translation>按层级：在奇异顶点周围，其带凝聚集的 IFS 的环 C、f(C)、f²(C)、… 依次着色</translation>
     </message>
+    <message>
+        <source>the steps before the limit positions must be 0 to %1, got %2</source>
+        <translation>极限位置之前的步数必须为 0 到 %1，得到 %2</translation>
+    </message>
+    <message>
+        <source>%1 steps give about %2 vertices: more than %3</source>
+        <translation>%1 步将产生约 %2 个顶点：超过 %3</translation>
+    </message>
+    <message>
+        <source>Attractor Workbench: item %1, %2 after %3 steps, every vertex at its limit position</source>
+        <translation>Attractor Workbench：对象 %1，%2 细分 %3 步后，每个顶点都位于其极限位置</translation>
+    </message>
 </context>
 <context>
     <name>awb::SubdivisionSurfaceItem</name>
@@ -3807,6 +4025,160 @@ It was kept as %2.</source>
     <message>
         <source>User Guide</source>
         <translation>用户指南</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ValenceChart</name>
+    <message>
+        <source>Valences: choose a mesh surface</source>
+        <translation>顶点价：请选择网格曲面</translation>
+    </message>
+    <message>
+        <source>λ (subdominant)</source>
+        <translation>λ（次占优）</translation>
+    </message>
+    <message>
+        <source>μ = |λ₄|</source>
+        <translation>μ = |λ₄|</translation>
+    </message>
+    <message>
+        <source>λ²</source>
+        <translation>λ²</translation>
+    </message>
+    <message>
+        <source>this mesh</source>
+        <translation>此网格</translation>
+    </message>
+    <message>
+        <source>λ, μ, λ² against n (%1)</source>
+        <translation>λ、μ、λ² 随 n 的变化（%1）</translation>
+    </message>
+    <message>
+        <source>The subdominant eigenvalue λ, the next modulus μ and λ² of the local subdivision matrix at an interior vertex of valence n; the purple dots are this mesh&apos;s valences</source>
+        <translation>价为 n 的内部顶点处局部细分矩阵的次占优特征值 λ、下一个模 μ 以及 λ²；紫色圆点为此网格中出现的价</translation>
+    </message>
+    <message>
+        <source>valence n</source>
+        <translation>价 n</translation>
+    </message>
+    <message>
+        <source>μ = λ² (bounded curvature)</source>
+        <translation>μ = λ²（曲率有界）</translation>
+    </message>
+    <message>
+        <source>n = %1 … %2</source>
+        <translation>n = %1 … %2</translation>
+    </message>
+    <message>
+        <source>μ against λ²</source>
+        <translation>μ 对 λ²</translation>
+    </message>
+    <message>
+        <source>Below the diagonal (μ &lt; λ²) the curvature at the vertex is zero, on it bounded, above it unbounded (for generic data)</source>
+        <translation>对角线下方（μ &lt; λ²）顶点处的曲率为零，对角线上有界，对角线上方无界（对一般数据）</translation>
+    </message>
+    <message>
+        <source>μ</source>
+        <translation>μ</translation>
+    </message>
+</context>
+<context>
+    <name>awb::VertexPanel</name>
+    <message>
+        <source>Loop</source>
+        <translation>Loop</translation>
+    </message>
+    <message>
+        <source>Catmull–Clark</source>
+        <translation>Catmull–Clark</translation>
+    </message>
+    <message>
+        <source>New Eigenvalue Plot of This Vertex</source>
+        <translation type="vanished">为此顶点新建特征值图</translation>
+    </message>
+    <message>
+        <source>Adds an eigenvalue plot item whose source is this extraordinary vertex: its local subdivision matrix&apos;s eigenvalues, kept in the project and printed with it</source>
+        <translation>添加一个以此奇异顶点为来源的特征值图对象：其局部细分矩阵的特征值，保存在项目中并随项目一起打印</translation>
+    </message>
+    <message>
+        <source>Click an extraordinary vertex (a purple diamond labelled with its valence) in the 3D view of a mesh surface: its spectrum, Reif&apos;s verdict and its characteristic map appear here.</source>
+        <translation>在网格曲面的 3D 视图中单击一个奇异顶点（标有其价的紫色菱形）：其谱、Reif 判定结果和特征映射将显示在此处。</translation>
+    </message>
+    <message>
+        <source>valence %1, %2, %3</source>
+        <translation>价 %1，%2，%3</translation>
+    </message>
+    <message>
+        <source>on the boundary</source>
+        <translation>位于边界</translation>
+    </message>
+    <message>
+        <source>interior</source>
+        <translation>内部</translation>
+    </message>
+    <message>
+        <source>Local subdivision matrix S: %1 × %1 (the net of the vertex&apos;s piece).</source>
+        <translation>局部细分矩阵 S：%1 × %1（该顶点所在曲面片的控制网格）。</translation>
+    </message>
+    <message>
+        <source>Local subdivision matrix S: %1 × %1 (the vertex and every point within two faces of it).</source>
+        <translation>局部细分矩阵 S：%1 × %1（该顶点及其周围两圈面内的所有点）。</translation>
+    </message>
+    <message>
+        <source>λ₁ = 1, λ = %1, μ = %2, λ² = %3</source>
+        <translation>λ₁ = 1，λ = %1，μ = %2，λ² = %3</translation>
+    </message>
+    <message>
+        <source> (λ in closed form: %1)</source>
+        <translation>（λ 的闭式值：%1）</translation>
+    </message>
+    <message>
+        <source>Reif&apos;s criterion is decided here for interior vertices only: a boundary vertex follows the crease rules, whose analysis needs the boundary&apos;s own characteristic map.</source>
+        <translation>此处仅对内部顶点判定 Reif 判据：边界顶点遵循折痕规则，其分析需要边界自身的特征映射。</translation>
+    </message>
+    <message>
+        <source>spectral condition 1 &gt; λ₂ = λ₃ &gt; |λ₄|, λ real</source>
+        <translation>谱条件 1 &gt; λ₂ = λ₃ &gt; |λ₄|，λ 为实数</translation>
+    </message>
+    <message>
+        <source>characteristic map regular: the Jacobian keeps one sign on all %1 cells (signed areas %2 … %3)</source>
+        <translation>特征映射正则：雅可比行列式在全部 %1 个单元上保持同号（有向面积 %2 … %3）</translation>
+    </message>
+    <message>
+        <source>characteristic map not regular: signed areas from %1 to %2</source>
+        <translation>特征映射非正则：有向面积从 %1 到 %2</translation>
+    </message>
+    <message>
+        <source>characteristic map injective: its boundary winds %1 time(s) around the vertex</source>
+        <translation>特征映射为单射：其边界绕顶点 %1 圈</translation>
+    </message>
+    <message>
+        <source>Verdict (Reif 1995): the limit surface is C¹ at the vertex (for generic data).</source>
+        <translation>判定（Reif 1995）：极限曲面在该顶点处为 C¹（对一般数据）。</translation>
+    </message>
+    <message>
+        <source>Verdict (Reif 1995): C¹ is not established at the vertex.</source>
+        <translation>判定（Reif 1995）：未能确认该顶点处为 C¹。</translation>
+    </message>
+    <message>
+        <source>μ &lt; λ²: the curvature is zero at the vertex (the surface is flat there to second order, for generic data: no convex or saddle shape can be modelled at it)</source>
+        <translation>μ &lt; λ²：顶点处的曲率为零（对一般数据，曲面在该处二阶平坦：无法在该处构造凸形或鞍形）</translation>
+    </message>
+    <message>
+        <source>μ = λ²: the curvature is bounded at the vertex</source>
+        <translation>μ = λ²：顶点处的曲率有界</translation>
+    </message>
+    <message>
+        <source>μ &gt; λ²: the curvature is unbounded at the vertex (for generic data)</source>
+        <translation>μ &gt; λ²：顶点处的曲率无界（对一般数据）</translation>
+    </message>
+    <message>
+        <source>Limit position (%1, %2, %3), normal (%4, %5, %6).</source>
+        <translation>极限位置 (%1, %2, %3)，法向量 (%4, %5, %6)。</translation>
+    </message>
+    <message>
+        <source>New Eigenvalue Plot</source>
+        <translation>新建特征值图</translation>
     </message>
 </context>
 <context>
@@ -4492,11 +4864,11 @@ bounds: %9
     </message>
     <message>
         <source>%1 steps give %2 vertices: too many</source>
-        <translation>%1 步产生 %2 个顶点：过多</translation>
+        <translation type="vanished">%1 步产生 %2 个顶点：过多</translation>
     </message>
     <message>
         <source>Attractor Workbench: item %1, %2 after %3 steps, every vertex at its limit position</source>
-        <translation>Attractor Workbench：对象 %1，%2 细分 %3 步后，每个顶点都位于其极限位置</translation>
+        <translation type="vanished">Attractor Workbench：对象 %1，%2 细分 %3 步后，每个顶点都位于其极限位置</translation>
     </message>
     <message>
         <source>Usage: attractor-cli &lt;command&gt; [options]
@@ -4515,7 +4887,7 @@ Commands:
 
 Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
 </source>
-        <translation>用法：attractor-cli &lt;command&gt; [options]
+        <translation type="vanished">用法：attractor-cli &lt;command&gt; [options]
 
 命令：
   render     将项目中的某个对象渲染为 PNG、SVG 或 PDF
@@ -4535,6 +4907,62 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>--out FILE (the project to write) is required</source>
         <translation>必须提供 --out FILE（要写入的项目）</translation>
+    </message>
+    <message>
+        <source>The spectrum of the local subdivision matrix at an interior vertex of each valence: lambda (with its closed form), mu, lambda^2, Reif&apos;s C1 verdict and the curvature.</source>
+        <translation>每个价的内部顶点处局部细分矩阵的谱：lambda（及其闭式）、mu、lambda^2、Reif 的 C1 判定和曲率。</translation>
+    </message>
+    <message>
+        <source>catmull-clark (the default) or loop.</source>
+        <translation>catmull-clark（默认）或 loop。</translation>
+    </message>
+    <message>
+        <source>The smallest valence (3 to 64, default 3).</source>
+        <translation>最小的价（3 到 64，默认 3）。</translation>
+    </message>
+    <message>
+        <source>The largest valence (3 to 64, default 16).</source>
+        <translation>最大的价（3 到 64，默认 16）。</translation>
+    </message>
+    <message>
+        <source>Print JSON instead of a table.</source>
+        <translation>输出 JSON 而不是表格。</translation>
+    </message>
+    <message>
+        <source>Usage: attractor-cli &lt;command&gt; [options]
+
+Commands:
+  render     render an item of a project to PNG, SVG or PDF
+  animate    render the frames of an item&apos;s animation (PNG files, MP4/GIF)
+  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)
+  points     the points of F^k(X0) as CSV
+  check      validate a project file
+  rewrite    load and save a project in canonical form
+  export     attractor points as PLY, a subdivided net or mesh (limit) as OBJ
+  polygon    the control polygon after K subdivision steps (JSON)
+  import-mesh  a mesh file (OBJ, OFF, PLY) as a project with a mesh item
+  valences   lambda, mu, Reif&apos;s C1 verdict per valence (Catmull-Clark, Loop)
+  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG
+
+Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
+</source>
+        <translation>用法：attractor-cli &lt;command&gt; [options]
+
+命令：
+  render     将项目中的某个对象渲染为 PNG、SVG 或 PDF
+  animate    渲染对象动画的各帧（PNG 文件，MP4/GIF）
+  analyse    特征值、压缩性、不动点、维数（JSON）
+  points     以 CSV 格式输出 F^k(X0) 的点
+  check      验证项目文件
+  rewrite    加载项目并以规范形式重新保存
+  export     将吸引子的点导出为 PLY，将细分后的控制网格或网格（极限）导出为 OBJ
+  polygon    K 步细分后的控制多边形（JSON）
+  import-mesh  将网格文件（OBJ、OFF、PLY）导入为含一个网格对象的项目
+  valences   每个价的 lambda、mu 与 Reif 的 C1 判定（Catmull-Clark、Loop）
+  examples   将内置的论文图形（000 Figs. 2, 3, 5）渲染为 PNG
+
+运行“attractor-cli &lt;command&gt; --help”查看某个命令的选项。
+</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,7 @@
 #include "cli/CommandSupport.h"
 
+#include "model/SubdivisionMeshItem.h"
+
 #include "model/AttractorItem.h"
 #include "model/FigureMetadata.h"
 #include "model/PointExport.h"
@@ -69,6 +71,16 @@ std::shared_ptr<const DerivedIfs> derived(const AttractorItem *item)
     if (!d)
         throw Failure{CliTr::tr("item '%1': %2").arg(item->name(), item->derivedError())};
     return d;
+}
+
+MeshScheme meshSchemeOption(const QCommandLineParser &parser)
+{
+    const int scheme = MeshInputs::schemeNames().indexOf(parser.value("scheme").toLower());
+    if (scheme < 0)
+        throw Failure{CliTr::tr("--scheme must be catmull-clark or loop, got '%1'")
+                          .arg(parser.value("scheme")),
+                      2};
+    return MeshScheme(scheme);
 }
 
 int intOption(const QCommandLineParser &parser, const QString &name, int lo, int hi)

@@ -5,6 +5,7 @@
 
 #include "core/Types.h"
 #include "core/ifs/Attractor.h"
+#include "core/mesh/Mesh.h"
 #include "render/FigureFile.h"
 
 #include <QCommandLineParser>
@@ -45,6 +46,8 @@ void load(Project &project, const QString &file);
 AttractorItem *attractorItem(const Project &project, const QString &name);
 std::shared_ptr<const DerivedIfs> derived(const AttractorItem *item);
 int intOption(const QCommandLineParser &parser, const QString &name, int lo, int hi);
+// --scheme of the mesh commands: catmull-clark or loop (exit 2 otherwise).
+MeshScheme meshSchemeOption(const QCommandLineParser &parser);
 // A count written as digits or in exponent form ("1e9"), whole, from lo to hi.
 std::uint64_t countOption(const QCommandLineParser &parser, const QString &name, double lo,
                           double hi);

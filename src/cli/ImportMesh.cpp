@@ -32,11 +32,7 @@ int importMesh(const QStringList &args)
         parseOrFail(parser, args, 1);
         if (!parser.isSet("out"))
             throw Failure{CliTr::tr("--out FILE (the project to write) is required"), 2};
-        const int scheme = MeshInputs::schemeNames().indexOf(parser.value("scheme").toLower());
-        if (scheme < 0)
-            throw Failure{CliTr::tr("--scheme must be catmull-clark or loop, got '%1'")
-                              .arg(parser.value("scheme")),
-                          2};
+        const MeshScheme scheme = meshSchemeOption(parser);
         const QString file = parser.positionalArguments().first();
         Mesh mesh;
         try {
@@ -47,7 +43,7 @@ int importMesh(const QStringList &args)
         Project project;
         auto item = std::make_unique<SubdivisionMeshItem>();
         QString error;
-        if (!item->setMesh(mesh, MeshScheme(scheme), &error))
+        if (!item->setMesh(mesh, scheme, &error))
             throw Failure{QStringLiteral("%1: %2").arg(file, error)};
         const QString name =
             parser.isSet("name") ? parser.value("name") : QFileInfo(file).completeBaseName();
@@ -64,7 +60,7 @@ int importMesh(const QStringList &args)
                      .arg(mesh.vertices.rows())
                      .arg(mesh.faces.size())
                      .arg(extraordinary.size())
-                     .arg(MeshInputs::schemeNames().at(scheme));
+                     .arg(MeshInputs::schemeNames().at(int(scheme)));
         if (!added->derivedError().isEmpty())
             err() << CliTr::tr("attractor-cli: note: %1").arg(added->derivedError()) << "\n";
         return 0;

@@ -20,5 +20,7 @@ int exportData(const QStringList &args);
 int polygon(const QStringList &args);
 // ImportMesh.cpp: a mesh file as a project with one mesh item.
 int importMesh(const QStringList &args);
+// Valences.cpp: the valence explorer's table of a mesh scheme (no project).
+int valences(const QStringList &args);
 
 } // namespace awb::cli

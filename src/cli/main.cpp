@@ -102,6 +102,7 @@ void usage()
                     "  export     attractor points as PLY, a subdivided net or mesh (limit) as OBJ\n"
                     "  polygon    the control polygon after K subdivision steps (JSON)\n"
                     "  import-mesh  a mesh file (OBJ, OFF, PLY) as a project with a mesh item\n"
+                    "  valences   lambda, mu, Reif's C1 verdict per valence (Catmull-Clark, Loop)\n"
                     "  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG\n\n"
                     "Run 'attractor-cli <command> --help' for the options of a command.\n");
 }
@@ -140,7 +141,8 @@ int main(int argc, char **argv)
     }
     const QString command = args[1];
     // JSON output is for programs: the core's notes, verdicts and errors in it stay in English.
-    if (command == "analyse" || command == "analyze" || command == "polygon")
+    if (command == "analyse" || command == "analyze" || command == "polygon"
+        || command == "valences")
         setMessageTranslator(nullptr);
     args.removeAt(1);
     args[0] = "attractor-cli " + command;
@@ -165,6 +167,8 @@ int main(int argc, char **argv)
             return cli::polygon(args);
         if (command == "import-mesh")
             return cli::importMesh(args);
+        if (command == "valences")
+            return cli::valences(args);
     } catch (const InputError &e) {
         err() << "attractor-cli " << command << ": " << e.what() << "\n";
         return 1;

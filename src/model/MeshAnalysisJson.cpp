@@ -2,6 +2,7 @@
 
 #include "core/mesh/MeshAnalysis.h"
 #include "core/mesh/MeshPieces.h"
+#include "core/mesh/VertexSpectrum.h"
 #include "model/SubdivisionMeshItem.h"
 
 #include <QJsonArray>
@@ -18,7 +19,20 @@ QJsonArray rowJson(const RowVec &r)
     return a;
 }
 
-QJsonObject vertexJson(const ExtraordinaryVertex &e)
+QJsonObject characteristicJson(const VertexSpectrum &s)
+{
+    const CharacteristicMap &m = s.characteristic;
+    if (!s.spectralC1)
+        return {};
+    return {{"regular", s.characteristicRegular},
+            {"injective", s.characteristicInjective},
+            {"winding", m.winding},
+            {"min_area", m.minArea},
+            {"max_area", m.maxArea},
+            {"cells", int(m.cells.size())}};
+}
+
+QJsonObject vertexJson(const ExtraordinaryVertex &e, MeshScheme scheme)
 {
     QJsonObject o;
     if (e.vertex >= 0)
@@ -38,6 +52,8 @@ QJsonObject vertexJson(const ExtraordinaryVertex &e)
                                          : QJsonValue(QString::fromStdString(e.curvature));
     // Inside: the ring of every point within two faces; on the boundary: the vertex piece's
     // net (its S_0), and the verdicts are not decided there.
+    if (!e.boundary)
+        o["characteristic_map"] = characteristicJson(*sharedVertexSpectrum(scheme, e.valence));
     o["ring"] = QString::fromStdString(e.ring);
     o["ring_size"] = e.ringSize;
     if (e.limit.size() == 3) {
@@ -90,10 +106,29 @@ QJsonObject meshAnalysisJson(const SubdivisionMeshItem &item)
     o["face_count"] = int(item.inputs().faces.size());
     QJsonArray extraordinary;
     for (const ExtraordinaryVertex &e : *item.extraordinary())
-        extraordinary.append(vertexJson(e));
+        extraordinary.append(vertexJson(e, item.scheme()));
     o["extraordinary"] = extraordinary;
     o["pieces"] = piecesJson(*pieces);
     return o;
+}
+
+QJsonArray valenceTableJson(MeshScheme scheme, int from, int to)
+{
+    QJsonArray rows;
+    for (int n = from; n <= to; ++n) {
+        const auto s = sharedVertexSpectrum(scheme, n);
+        rows.append(QJsonObject{{"valence", n},
+                                {"subdominant", s->subdominant},
+                                {"closed_form", closedFormSubdominant(scheme, n)},
+                                {"subsubdominant", s->subsubdominant},
+                                {"lambda_squared", s->subdominant * s->subdominant},
+                                {"spectral_c1", s->spectralC1},
+                                {"characteristic_map", characteristicJson(*s)},
+                                {"c1", s->c1},
+                                {"curvature", QString::fromStdString(s->curvature)},
+                                {"ring_size", int(s->S.rows())}});
+    }
+    return rows;
 }
 
 } // namespace awb

@@ -3,6 +3,9 @@
 // Python module's item.analyse()): the mesh, every extraordinary vertex with its spectrum and
 // verdicts, and the pieces of the IFS with condensation with their maps.
 
+#include "core/mesh/Mesh.h"
+
+#include <QJsonArray>
 #include <QJsonObject>
 
 namespace awb {
@@ -13,6 +16,13 @@ class SubdivisionMeshItem;
 // "valence", "boundary", "eigenvalues" ([re, im] pairs), "subdominant", "subsubdominant",
 // "c1", "curvature", "ring", "ring_size", "limit", "normal"}], "pieces": {"isolation_steps",
 // "roots", "types": [...]}. Empty when the mesh is refused.
+// An interior extraordinary vertex also has "characteristic_map": {"regular", "injective",
+// "winding", "min_area", "max_area", "cells"} (Reif's check, VertexSpectrum.h).
 QJsonObject meshAnalysisJson(const SubdivisionMeshItem &item);
+
+// The valence explorer's table (issue 31; `attractor-cli valences`): per valence n = from ...
+// to, {"valence", "subdominant", "closed_form", "subsubdominant", "lambda_squared",
+// "spectral_c1", "characteristic_map": {...}, "c1", "curvature", "ring_size"}.
+QJsonArray valenceTableJson(MeshScheme scheme, int from, int to);
 
 } // namespace awb

@@ -38,6 +38,7 @@ private slots:
     void analyseListsTheExtraordinaryVertices();
     void exportObjIsTheRefinedMeshAtItsLimit();
     void badFilesAreRefusedByName();
+    void valencesTableIsTheWindowsTable();
 
 private:
     int run(const QStringList &args, QByteArray *out = nullptr, QByteArray *err = nullptr)
@@ -225,6 +226,39 @@ void TestMeshCli::exportObjIsTheRefinedMeshAtItsLimit()
     QFile f(ply);
     QVERIFY(f.open(QIODevice::ReadOnly));
     QVERIFY(f.readAll().contains("element vertex"));
+}
+
+void TestMeshCli::valencesTableIsTheWindowsTable()
+{
+    // The valence explorer's table (issue 31): lambda per valence, equal to its closed form
+    // (Loop: 3/8 + cos(2 pi/n)/4, 0.4523 at n = 5), with Reif's verdict and the characteristic
+    // map's check, as JSON and as text.
+    QByteArray out, err;
+    QCOMPARE(run({"valences", "--scheme", "loop", "--from", "5", "--to", "7", "--json"}, &out,
+                 &err),
+             0);
+    const QJsonObject o = QJsonDocument::fromJson(out).object();
+    const QJsonArray rows = o["valences"].toArray();
+    QCOMPARE(rows.size(), 3);
+    const QJsonObject five = rows[0].toObject();
+    QCOMPARE(five["valence"].toInt(), 5);
+    QVERIFY(std::abs(five["subdominant"].toDouble() - 0.452254248593737) < 1e-12);
+    QVERIFY(std::abs(five["closed_form"].toDouble() - five["subdominant"].toDouble()) < 1e-12);
+    QCOMPARE(five["ring_size"].toInt(), 16);
+    QVERIFY(five["c1"].toBool());
+    QVERIFY(five["characteristic_map"].toObject()["injective"].toBool());
+    QCOMPARE(five["characteristic_map"].toObject()["cells"].toInt(), 320);
+    QCOMPARE(run({"valences", "--from", "3", "--to", "3"}, &out, &err), 0);
+    QVERIFY2(out.contains("0.410097") && out.contains("yes"), out.constData());
+    QCOMPARE(run({"valences", "--scheme", "doo-sabin"}, &out, &err), 2);
+    QVERIFY2(err.contains("catmull-clark or loop"), err.constData());
+    QCOMPARE(run({"valences", "--from", "2"}, &out, &err), 1);
+    QVERIFY2(err.contains("--from must be a whole number from 3 to 64"), err.constData());
+    // The extraordinary vertices of analyse carry the same check.
+    const QJsonObject v = analyse(importMesh(cubeMesh(), "catmull-clark", "cube-v"))
+                              ["extraordinary"].toArray()[0].toObject();
+    QVERIFY(v["characteristic_map"].toObject()["regular"].toBool());
+    QCOMPARE(v["characteristic_map"].toObject()["winding"].toInt(), 1);
 }
 
 void TestMeshCli::badFilesAreRefusedByName()

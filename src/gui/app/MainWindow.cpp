@@ -386,9 +386,12 @@ void MainWindow::createViews()
         if (auto *analysis = findChild<QDockWidget *>(QStringLiteral("dockAnalysis")))
             analysis->raise();
         m_charts->tabs()->setCurrentWidget(m_vertexPanel);
+        QString where = m_controller->focusedVertexName();
+        if (!where.isEmpty())
+            where[0] = where[0].toUpper();
         statusBar()->showMessage(tr("%1: its spectrum, verdict and characteristic map are in "
                                     "the Spectrum, Matrices and Analysis docks")
-                                     .arg(m_controller->focusedVertexName()),
+                                     .arg(where),
                                  6000);
     });
     m_controller->setRebalanceQuestion([this](const QString &question) {

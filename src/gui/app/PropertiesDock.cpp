@@ -458,7 +458,13 @@ void PropertiesWidget::addAttractorEditors()
     startKind->addItems({tr("Point"), tr("Segment"), tr("Triangle"), tr("Polygon"),
                          tr("Points"), tr("Lifted points"), tr("Vertex limits")});
     startForm->addRow(tr("Kind:"), startKind);
-    auto *dragHint = new QLabel(tr("Drag its vertices in the attractor view."));
+    // A mesh starts at its vertices' exact limit positions: nothing to drag or type.
+    const bool mesh = item->startsAtVertexLimits();
+    auto *dragHint = new QLabel(
+        mesh ? tr("Vertex limits: the exact limit positions of the mesh's vertices, where its "
+                  "IFS with condensation starts. Drag the control points in the 3D view; click "
+                  "a purple diamond to analyse that extraordinary vertex.")
+             : tr("Drag its vertices in the attractor view."));
     dragHint->setWordWrap(true);
     startForm->addRow(dragHint);
     // Points of the lifted space (000 §2, Fig. 2 "a random homogeneous point"): typed, since
@@ -468,6 +474,7 @@ void PropertiesWidget::addAttractorEditors()
                           "coordinates of the lifting, the homogeneous 1 implied. Commas "
                           "between coordinates, ';' between points."));
     startForm->addRow(tr("Lifted:"), lifted);
+    startForm->setRowVisible(lifted, !mesh);
     m_editors.insert(QStringLiteral("start.lifted"), lifted);
     const auto setLifted = [this, item](const std::vector<std::vector<double>> &points) {
         StartSetSpec s;

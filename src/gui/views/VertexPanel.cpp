@@ -164,29 +164,28 @@ void CharacteristicMapView::paintEvent(QPaintEvent *)
 QString vertexVerdictHtml(const ExtraordinaryVertex &e, MeshScheme scheme,
                           const std::optional<VertexSpectrum> &interior, const QString &where)
 {
-    using T = VertexPanel;
     QString html = QStringLiteral("<p><b>%1</b> — %2</p>")
                        .arg(where.toHtmlEscaped(),
-                            T::tr("valence %1, %2, %3")
+                            VertexPanel::tr("valence %1, %2, %3")
                                 .arg(e.valence)
-                                .arg(e.boundary ? T::tr("on the boundary") : T::tr("interior"),
+                                .arg(e.boundary ? VertexPanel::tr("on the boundary") : VertexPanel::tr("interior"),
                                      schemeName(scheme)));
     html += QStringLiteral("<p>%1</p>").arg(
-        e.boundary ? T::tr("Local subdivision matrix S: %1 × %1 (the net of the vertex's piece).")
+        e.boundary ? VertexPanel::tr("Local subdivision matrix S: %1 × %1 (the net of the vertex's piece).")
                          .arg(e.ringSize)
-                   : T::tr("Local subdivision matrix S: %1 × %1 (the vertex and every point "
+                   : VertexPanel::tr("Local subdivision matrix S: %1 × %1 (the vertex and every point "
                            "within two faces of it).")
                          .arg(e.ringSize));
     const double l = e.subdominant, m = e.subsubdominant;
-    QString numbers = T::tr("λ₁ = 1, λ = %1, μ = %2, λ² = %3").arg(number(l), number(m),
+    QString numbers = VertexPanel::tr("λ₁ = 1, λ = %1, μ = %2, λ² = %3").arg(number(l), number(m),
                                                                     number(l * l));
     if (!e.boundary)
-        numbers += T::tr(" (λ in closed form: %1)").arg(number(closedFormSubdominant(scheme,
+        numbers += VertexPanel::tr(" (λ in closed form: %1)").arg(number(closedFormSubdominant(scheme,
                                                                                        e.valence)));
     html += QStringLiteral("<p>%1</p>").arg(numbers);
     if (e.boundary || !interior) {
         html += QStringLiteral("<p>%1</p>").arg(
-            T::tr("Reif's criterion is decided here for interior vertices only: a boundary "
+            VertexPanel::tr("Reif's criterion is decided here for interior vertices only: a boundary "
                   "vertex follows the crease rules, whose analysis needs the boundary's own "
                   "characteristic map."));
     } else {
@@ -195,45 +194,45 @@ QString vertexVerdictHtml(const ExtraordinaryVertex &e, MeshScheme scheme,
         html += QStringLiteral("<ul>");
         html += QStringLiteral("<li>%1 %2</li>")
                     .arg(mark(s.spectralC1),
-                         T::tr("spectral condition 1 > λ₂ = λ₃ > |λ₄|, λ real"));
+                         VertexPanel::tr("spectral condition 1 > λ₂ = λ₃ > |λ₄|, λ real"));
         if (s.spectralC1) {
             const int cells = int(c.cells.size());
             html += QStringLiteral("<li>%1 %2</li>")
                         .arg(mark(s.characteristicRegular),
                              s.characteristicRegular
-                                 ? T::tr("characteristic map regular: the Jacobian keeps one "
+                                 ? VertexPanel::tr("characteristic map regular: the Jacobian keeps one "
                                          "sign on all %1 cells (signed areas %2 … %3)")
                                        .arg(cells)
                                        .arg(number(c.minArea, 3), number(c.maxArea, 3))
-                                 : T::tr("characteristic map not regular: signed areas from "
+                                 : VertexPanel::tr("characteristic map not regular: signed areas from "
                                          "%1 to %2")
                                        .arg(number(c.minArea, 3), number(c.maxArea, 3)));
             html += QStringLiteral("<li>%1 %2</li>")
                         .arg(mark(s.characteristicInjective),
-                             T::tr("characteristic map injective: its boundary winds %1 "
+                             VertexPanel::tr("characteristic map injective: its boundary winds %1 "
                                    "time(s) around the vertex")
                                  .arg(std::abs(c.winding)));
         }
         html += QStringLiteral("</ul>");
         html += QStringLiteral("<p><b>%1</b></p>")
-                    .arg(s.c1 ? T::tr("Verdict (Reif 1995): the limit surface is C¹ at the "
+                    .arg(s.c1 ? VertexPanel::tr("Verdict (Reif 1995): the limit surface is C¹ at the "
                                       "vertex (for generic data).")
-                              : T::tr("Verdict (Reif 1995): C¹ is not established at the "
+                              : VertexPanel::tr("Verdict (Reif 1995): C¹ is not established at the "
                                       "vertex."));
         const QString curvature =
             s.curvature == "zero"
-                ? T::tr("μ < λ²: the curvature is zero at the vertex (the surface is flat "
+                ? VertexPanel::tr("μ < λ²: the curvature is zero at the vertex (the surface is flat "
                         "there to second order, for generic data: no convex or saddle shape "
                         "can be modelled at it)")
                 : s.curvature == "bounded"
-                      ? T::tr("μ = λ²: the curvature is bounded at the vertex")
-                      : T::tr("μ > λ²: the curvature is unbounded at the vertex (for generic "
+                      ? VertexPanel::tr("μ = λ²: the curvature is bounded at the vertex")
+                      : VertexPanel::tr("μ > λ²: the curvature is unbounded at the vertex (for generic "
                               "data)");
         html += QStringLiteral("<p>%1</p>").arg(curvature);
     }
     if (e.limit.size() == 3)
         html += QStringLiteral("<p>%1</p>")
-                    .arg(T::tr("Limit position (%1, %2, %3), normal (%4, %5, %6).")
+                    .arg(VertexPanel::tr("Limit position (%1, %2, %3), normal (%4, %5, %6).")
                              .arg(number(e.limit(0)), number(e.limit(1)), number(e.limit(2)))
                              .arg(number(e.normal(0), 4), number(e.normal(1), 4),
                                   number(e.normal(2), 4)));
@@ -244,7 +243,7 @@ VertexPanel::VertexPanel(QWidget *parent) : QWidget(parent)
 {
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
-    auto *split = new QSplitter(Qt::Vertical, this);
+    auto *split = m_split = new QSplitter(Qt::Vertical, this);
     m_text = new QTextBrowser;
     m_text->setObjectName(QStringLiteral("vertexVerdict"));
     m_text->setOpenLinks(false);
@@ -253,9 +252,10 @@ VertexPanel::VertexPanel(QWidget *parent) : QWidget(parent)
     split->addWidget(m_text);
     split->addWidget(m_map);
     split->setStretchFactor(0, 1);
-    split->setStretchFactor(1, 2);
+    split->setStretchFactor(1, 1);
+    split->setChildrenCollapsible(false);
     layout->addWidget(split, 1);
-    m_plot = new QPushButton(tr("New Eigenvalue Plot of This Vertex"));
+    m_plot = new QPushButton(tr("New Eigenvalue Plot"));
     m_plot->setObjectName(QStringLiteral("vertexPlotButton"));
     m_plot->setToolTip(tr("Adds an eigenvalue plot item whose source is this extraordinary "
                           "vertex: its local subdivision matrix's eigenvalues, kept in the "
@@ -292,13 +292,24 @@ void VertexPanel::clear(const QString &why)
 
 QString VertexPanel::verdictText() const { return m_text->toPlainText(); }
 
+void VertexPanel::resizeEvent(QResizeEvent *event)
+{
+    QWidget::resizeEvent(event);
+    const Qt::Orientation wanted = width() > 1.3 * height() ? Qt::Horizontal : Qt::Vertical;
+    if (m_split->orientation() != wanted) {
+        m_split->setOrientation(wanted);
+        const int total = wanted == Qt::Horizontal ? m_split->width() : m_split->height();
+        m_split->setSizes({total / 2, total - total / 2});
+    }
+}
+
 // ---- the valence chart ------------------------------------------------------------------------
 
 ValenceChart::ValenceChart(QWidget *parent) : QWidget(parent)
 {
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    auto *split = new QSplitter(Qt::Horizontal, this);
+    auto *split = m_split = new QSplitter(Qt::Horizontal, this);
     const auto makeView = [](const QString &name) {
         auto *chart = new QChart;
         chart->legend()->setAlignment(Qt::AlignBottom);
@@ -306,7 +317,7 @@ ValenceChart::ValenceChart(QWidget *parent) : QWidget(parent)
         auto *view = new QChartView(chart);
         view->setObjectName(name);
         view->setRenderHint(QPainter::Antialiasing);
-        view->setMinimumSize(160, 140);
+        view->setMinimumSize(100, 100);
         return view;
     };
     m_byValence = makeView(QStringLiteral("valenceChart"));
@@ -332,6 +343,13 @@ const std::vector<VertexSpectrum> &ValenceChart::table() const
 {
     static const std::vector<VertexSpectrum> none;
     return m_scheme ? valenceTable(*m_scheme) : none;
+}
+
+void ValenceChart::resizeEvent(QResizeEvent *event)
+{
+    QWidget::resizeEvent(event);
+    // Side by side in a wide panel, one above the other in a tall one.
+    m_split->setOrientation(width() > 1.2 * height() ? Qt::Horizontal : Qt::Vertical);
 }
 
 void ValenceChart::showEvent(QShowEvent *event)
@@ -389,13 +407,16 @@ void ValenceChart::rebuild()
             own->append(s.valence, s.subdominant);
     }
     QChart *chart = m_byValence->chart();
-    chart->setTitle(tr("%1: λ, μ and λ² against the valence n").arg(schemeName(*m_scheme)));
+    chart->setTitle(tr("λ, μ, λ² against n (%1)").arg(schemeName(*m_scheme)));
+    m_byValence->setToolTip(tr("The subdominant eigenvalue λ, the next modulus μ and λ² of "
+                               "the local subdivision matrix at an interior vertex of valence "
+                               "n; the purple dots are this mesh's valences"));
     auto *x = new QValueAxis;
     x->setTitleText(tr("valence n"));
     x->setRange(kFrom - 0.5, kTo + 0.5);
     x->setTickType(QValueAxis::TicksDynamic);
     x->setTickAnchor(0);
-    x->setTickInterval(1);
+    x->setTickInterval(width() > 700 ? 1 : 2);
     x->setLabelFormat(QStringLiteral("%.0f"));
     auto *y = new QValueAxis;
     y->setRange(0, std::ceil(top * 10 + 0.5) / 10);
@@ -428,7 +449,9 @@ void ValenceChart::rebuild()
     diagonal->append(0, 0);
     diagonal->append(hi, hi);
     QChart *c = m_curvature->chart();
-    c->setTitle(tr("μ against λ²: curvature zero below the diagonal, unbounded above"));
+    c->setTitle(tr("μ against λ²"));
+    m_curvature->setToolTip(tr("Below the diagonal (μ < λ²) the curvature at the vertex is "
+                               "zero, on it bounded, above it unbounded (for generic data)"));
     auto *cx = new QValueAxis, *cy = new QValueAxis;
     cx->setTitleText(tr("λ²"));
     cy->setTitleText(tr("μ"));

@@ -24,6 +24,7 @@ class QChartView;
 class QLabel;
 class QPainter;
 class QPushButton;
+class QSplitter;
 class QTextBrowser;
 
 namespace awb {
@@ -71,7 +72,12 @@ signals:
     // "New eigenvalue plot of this vertex".
     void plotRequested();
 
+protected:
+    // Text beside the map in a wide panel, above it in a tall one.
+    void resizeEvent(QResizeEvent *event) override;
+
 private:
+    QSplitter *m_split = nullptr;
     QTextBrowser *m_text = nullptr;
     CharacteristicMapView *m_map = nullptr;
     QPushButton *m_plot = nullptr;
@@ -100,10 +106,12 @@ public:
 
 protected:
     void showEvent(QShowEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
 
 private:
     void rebuild();
 
+    QSplitter *m_split = nullptr;
     QChartView *m_byValence = nullptr;
     QChartView *m_curvature = nullptr;
     std::optional<MeshScheme> m_scheme;
