@@ -129,7 +129,8 @@ std::string SubdivisionMeshItem::limitObj(int rounds) const
                              .toStdString());
     // Each step multiplies the vertices by about 4: refuse before refining, not after.
     const Mesh mesh = m_inputs.mesh();
-    const double estimate = double(mesh.vertices.rows() + mesh.faces.size()) * std::pow(4.0, rounds);
+    const double estimate =
+        double(mesh.vertices.rows() + Eigen::Index(mesh.faces.size())) * std::pow(4.0, rounds);
     if (estimate > double(maxExportVertices))
         throw InputError(tr("%1 steps give about %2 vertices: more than %3")
                              .arg(rounds)

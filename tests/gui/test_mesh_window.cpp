@@ -187,7 +187,19 @@ void TestMeshWindow::extraordinaryVertexInTheWindow()
     QCOMPARE(w.project()->undoStack()->count(), steps + 1);
     w.project()->undoStack()->undo();
     QCOMPARE(item->controlPoints(0)[0], original);
-    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering(), awb::test::ms(30000));
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && view->isFullDetail(), awb::test::ms(30000));
+    // The limit surface as the attractor, compared with its reference (tolerant: the CPU
+    // renderer's rasterisation and shading may change a little, the figure must not).
+    const QImage surface = view->renderImage(QSize(400, 300), false);
+    QVERIFY(test::drawnPixels(surface) > 400 * 300 / 10);
+    const QImage surfaceRef =
+        test::reference(QStringLiteral("mesh-surface-%1.png").arg(mesh), surface);
+    QVERIFY2(!surfaceRef.isNull(), "reference image missing: run with AWB_REGENERATE_REFERENCES=1");
+    const test::ImageDiff sd = test::compare(surfaceRef, surface);
+    QVERIFY2(sd.coverageMismatch < 0.05 && sd.meanColour < 30,
+             qPrintable(QStringLiteral("surface: coverage %1, colour %2")
+                            .arg(sd.coverageMismatch)
+                            .arg(sd.meanColour)));
 
     // Click an extraordinary vertex's marker (one away from every handle: a handle under the
     // mouse is grabbed instead).
@@ -271,7 +283,8 @@ void TestMeshWindow::exportMeshWritesTheLimitMesh()
     QVERIFY(!w.exportMesh(m_dir.filePath("x.obj"), 1, &error));
     QVERIFY2(error.contains("mesh surface"), qPrintable(error));
     w.findChild<QAction *>("actionAddMesh_cube")->trigger();
-    auto *cube = qobject_cast<SubdivisionMeshItem *>(w.project()->child(w.project()->childCount() - 1));
+    auto *cube = qobject_cast<SubdivisionMeshItem *>(
+        w.project()->child(w.project()->childCount() - 1));
     QVERIFY(cube);
     w.setCurrentItem(cube);
     const QString out = m_dir.filePath("cube-limit.obj");

@@ -435,8 +435,8 @@ void MainWindow::createActions()
          QKeySequence::Open, &MainWindow::openDialog);
     make(QStringLiteral("actionImportMesh"), tr("&Import Mesh…"),
          QStringLiteral("document-import"), QKeySequence(), &MainWindow::importMeshDialog);
-    make(QStringLiteral("actionExportMesh"), tr("Export &Mesh…"), QStringLiteral("document-export"),
-         QKeySequence(), &MainWindow::exportMeshDialog);
+    make(QStringLiteral("actionExportMesh"), tr("Export &Mesh…"),
+         QStringLiteral("document-export"), QKeySequence(), &MainWindow::exportMeshDialog);
     make(QStringLiteral("actionSave"), tr("&Save"), QStringLiteral("document-save"),
          QKeySequence::Save, &MainWindow::save);
     make(QStringLiteral("actionSaveAs"), tr("Save &As…"), QStringLiteral("document-save-as"),

@@ -10,6 +10,9 @@
 #include "model/AttractorItem.h"
 #include "model/EigenvaluePlotItem.h"
 #include "model/Project.h"
+#include "model/SubdivisionMeshItem.h"
+
+#include "core/mesh/MeshAnalysis.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -18,6 +21,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QPoint>
 #include <QMenu>
 #include <QPushButton>
 #include <QTableWidget>
@@ -233,11 +237,26 @@ void PropertiesWidget::addEigenvaluePlotEditors()
                             "invariance); A_i: the linear parts of the lifted maps, whose "
                             "subdominant eigenvalue decides the tangents; M_i: the lifted "
                             "maps themselves (003 §4, 004 §2.1)"));
+    // A mesh source: the mesh's own matrices, or the local subdivision matrix of one of its
+    // extraordinary vertices (issue 31).
+    auto *vertex = new QComboBox;
+    vertex->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    vertex->setMinimumContentsLength(8);
+    vertex->setToolTip(tr("For a mesh surface: the extraordinary vertex whose local "
+                          "subdivision matrix is analysed"));
     auto *status = new QLabel;
     status->setWordWrap(true);
     form->addRow(tr("Source:"), source);
     form->addRow(tr("Matrices:"), matrices);
+    form->addRow(tr("Vertex:"), vertex);
     form->addRow(status);
+    m_editors.insert(QStringLiteral("plot.vertex"), vertex);
+    connect(vertex, &QComboBox::currentIndexChanged, this, [this, plot, vertex](int i) {
+        if (m_updating || i < 0)
+            return;
+        const QPoint at = vertex->itemData(i).toPoint();  // (vertex, face)
+        plot->setExtraordinary(at.x(), at.y());
+    });
     m_editors.insert(QStringLiteral("plot.source"), source);
     m_editors.insert(QStringLiteral("plot.matrices"), matrices);
     connect(source, &QComboBox::currentIndexChanged, this, [this, plot, source](int i) {
@@ -248,8 +267,31 @@ void PropertiesWidget::addEigenvaluePlotEditors()
         if (!m_updating && i >= 0)
             plot->setMatrixKind(EigenvaluePlotItem::MatrixKind(i));
     });
-    m_bindings.append({QStringLiteral("plot"), [plot, source, matrices, status] {
-        const QSignalBlocker b1(source), b2(matrices);
+    m_bindings.append({QStringLiteral("plot"), [plot, source, matrices, vertex, form, status] {
+        const QSignalBlocker b1(source), b2(matrices), b3(vertex);
+        vertex->clear();
+        const auto *mesh = plot->project() ? qobject_cast<const SubdivisionMeshItem *>(
+                                                 plot->project()->findItem(plot->source()))
+                                           : nullptr;
+        form->setRowVisible(vertex, mesh != nullptr);
+        if (mesh) {
+            vertex->addItem(tr("(the mesh's matrices)"), QPoint(-1, -1));
+            for (const ExtraordinaryVertex &e : *mesh->extraordinary())
+                vertex->addItem(
+                    e.vertex >= 0 ? tr("vertex %1 (n = %2)").arg(e.vertex).arg(e.valence)
+                                  : tr("centre of face %1 (n = %2)").arg(e.face).arg(e.valence),
+                    QPoint(e.vertex >= 0 ? e.vertex : -1, e.face));
+            const QPoint chosen(plot->face() >= 0 ? -1 : plot->vertex(), plot->face());
+            int at = vertex->findData(chosen);
+            if (at < 0) {  // not (or no longer) an extraordinary vertex: shown as it is
+                vertex->addItem(plot->face() >= 0
+                                    ? tr("centre of face %1 (missing)").arg(plot->face())
+                                    : tr("vertex %1 (missing)").arg(plot->vertex()),
+                                chosen);
+                at = vertex->count() - 1;
+            }
+            vertex->setCurrentIndex(at);
+        }
         // Any item drawn as an attractor has matrices to analyse.
         source->clear();
         source->addItem(tr("(none)"), QString());

@@ -28,7 +28,8 @@ QString number(double x, int digits = 6) { return QString::number(x, 'g', digits
 
 QString schemeName(MeshScheme scheme)
 {
-    return scheme == MeshScheme::Loop ? VertexPanel::tr("Loop") : VertexPanel::tr("Catmull–Clark");
+    return scheme == MeshScheme::Loop ? VertexPanel::tr("Loop")
+                                      : VertexPanel::tr("Catmull–Clark");
 }
 
 QString mark(bool ok)
@@ -161,78 +162,73 @@ void CharacteristicMapView::paintEvent(QPaintEvent *)
 
 // ---- the verdict ------------------------------------------------------------------------------
 
-QString vertexVerdictHtml(const ExtraordinaryVertex &e, MeshScheme scheme,
-                          const std::optional<VertexSpectrum> &interior, const QString &where)
+QString VertexPanel::verdictHtml(const ExtraordinaryVertex &e, MeshScheme scheme,
+                                 const std::optional<VertexSpectrum> &interior,
+                                 const QString &where)
 {
-    QString html = QStringLiteral("<p><b>%1</b> — %2</p>")
-                       .arg(where.toHtmlEscaped(),
-                            VertexPanel::tr("valence %1, %2, %3")
-                                .arg(e.valence)
-                                .arg(e.boundary ? VertexPanel::tr("on the boundary") : VertexPanel::tr("interior"),
-                                     schemeName(scheme)));
-    html += QStringLiteral("<p>%1</p>").arg(
-        e.boundary ? VertexPanel::tr("Local subdivision matrix S: %1 × %1 (the net of the vertex's piece).")
-                         .arg(e.ringSize)
-                   : VertexPanel::tr("Local subdivision matrix S: %1 × %1 (the vertex and every point "
-                           "within two faces of it).")
-                         .arg(e.ringSize));
+    const QString kind = tr("valence %1, %2, %3")
+                             .arg(e.valence)
+                             .arg(e.boundary ? tr("on the boundary") : tr("interior"),
+                                  schemeName(scheme));
+    QString html = QStringLiteral("<p><b>%1</b> — %2</p>").arg(where.toHtmlEscaped(), kind);
+    const QString ring =
+        e.boundary ? tr("Local subdivision matrix S: %1 × %1 (the net of the vertex's piece).")
+                   : tr("Local subdivision matrix S: %1 × %1 (the vertex and every point "
+                        "within two faces of it).");
+    html += QStringLiteral("<p>%1</p>").arg(ring.arg(e.ringSize));
     const double l = e.subdominant, m = e.subsubdominant;
-    QString numbers = VertexPanel::tr("λ₁ = 1, λ = %1, μ = %2, λ² = %3").arg(number(l), number(m),
-                                                                    number(l * l));
+    QString numbers =
+        tr("λ₁ = 1, λ = %1, μ = %2, λ² = %3").arg(number(l), number(m), number(l * l));
     if (!e.boundary)
-        numbers += VertexPanel::tr(" (λ in closed form: %1)").arg(number(closedFormSubdominant(scheme,
-                                                                                       e.valence)));
+        numbers += tr(" (λ in closed form: %1)")
+                       .arg(number(closedFormSubdominant(scheme, e.valence)));
     html += QStringLiteral("<p>%1</p>").arg(numbers);
     if (e.boundary || !interior) {
         html += QStringLiteral("<p>%1</p>").arg(
-            VertexPanel::tr("Reif's criterion is decided here for interior vertices only: a boundary "
-                  "vertex follows the crease rules, whose analysis needs the boundary's own "
-                  "characteristic map."));
+            tr("Reif's criterion is decided here for interior vertices only: a boundary "
+               "vertex follows the crease rules, whose analysis needs the boundary's own "
+               "characteristic map."));
     } else {
         const VertexSpectrum &s = *interior;
         const CharacteristicMap &c = s.characteristic;
+        const QString item = QStringLiteral("<li>%1 %2</li>");
         html += QStringLiteral("<ul>");
-        html += QStringLiteral("<li>%1 %2</li>")
-                    .arg(mark(s.spectralC1),
-                         VertexPanel::tr("spectral condition 1 > λ₂ = λ₃ > |λ₄|, λ real"));
+        html += item.arg(mark(s.spectralC1), tr("spectral condition 1 > λ₂ = λ₃ > |λ₄|, λ real"));
         if (s.spectralC1) {
-            const int cells = int(c.cells.size());
-            html += QStringLiteral("<li>%1 %2</li>")
-                        .arg(mark(s.characteristicRegular),
+            const QString lo = number(c.minArea, 3), hi = number(c.maxArea, 3);
+            html += item.arg(mark(s.characteristicRegular),
                              s.characteristicRegular
-                                 ? VertexPanel::tr("characteristic map regular: the Jacobian keeps one "
-                                         "sign on all %1 cells (signed areas %2 … %3)")
-                                       .arg(cells)
-                                       .arg(number(c.minArea, 3), number(c.maxArea, 3))
-                                 : VertexPanel::tr("characteristic map not regular: signed areas from "
-                                         "%1 to %2")
-                                       .arg(number(c.minArea, 3), number(c.maxArea, 3)));
-            html += QStringLiteral("<li>%1 %2</li>")
-                        .arg(mark(s.characteristicInjective),
-                             VertexPanel::tr("characteristic map injective: its boundary winds %1 "
-                                   "time(s) around the vertex")
+                                 ? tr("characteristic map regular: the Jacobian keeps one "
+                                      "sign on all %1 cells (signed areas %2 … %3)")
+                                       .arg(int(c.cells.size()))
+                                       .arg(lo, hi)
+                                 : tr("characteristic map not regular: signed areas from "
+                                      "%1 to %2")
+                                       .arg(lo, hi));
+            html += item.arg(mark(s.characteristicInjective),
+                             tr("characteristic map injective: its boundary winds %1 "
+                                "time(s) around the vertex")
                                  .arg(std::abs(c.winding)));
         }
         html += QStringLiteral("</ul>");
         html += QStringLiteral("<p><b>%1</b></p>")
-                    .arg(s.c1 ? VertexPanel::tr("Verdict (Reif 1995): the limit surface is C¹ at the "
-                                      "vertex (for generic data).")
-                              : VertexPanel::tr("Verdict (Reif 1995): C¹ is not established at the "
-                                      "vertex."));
+                    .arg(s.c1 ? tr("Verdict (Reif 1995): the limit surface is C¹ at the "
+                                   "vertex (for generic data).")
+                              : tr("Verdict (Reif 1995): C¹ is not established at the "
+                                   "vertex."));
         const QString curvature =
             s.curvature == "zero"
-                ? VertexPanel::tr("μ < λ²: the curvature is zero at the vertex (the surface is flat "
-                        "there to second order, for generic data: no convex or saddle shape "
-                        "can be modelled at it)")
-                : s.curvature == "bounded"
-                      ? VertexPanel::tr("μ = λ²: the curvature is bounded at the vertex")
-                      : VertexPanel::tr("μ > λ²: the curvature is unbounded at the vertex (for generic "
-                              "data)");
+                ? tr("μ < λ²: the curvature is zero at the vertex (the surface is flat "
+                     "there to second order, for generic data: no convex or saddle shape "
+                     "can be modelled at it)")
+            : s.curvature == "bounded"
+                ? tr("μ = λ²: the curvature is bounded at the vertex")
+                : tr("μ > λ²: the curvature is unbounded at the vertex (for generic data)");
         html += QStringLiteral("<p>%1</p>").arg(curvature);
     }
     if (e.limit.size() == 3)
         html += QStringLiteral("<p>%1</p>")
-                    .arg(VertexPanel::tr("Limit position (%1, %2, %3), normal (%4, %5, %6).")
+                    .arg(tr("Limit position (%1, %2, %3), normal (%4, %5, %6).")
                              .arg(number(e.limit(0)), number(e.limit(1)), number(e.limit(2)))
                              .arg(number(e.normal(0), 4), number(e.normal(1), 4),
                                   number(e.normal(2), 4)));
@@ -269,7 +265,7 @@ void VertexPanel::setVertex(const ExtraordinaryVertex &vertex, MeshScheme scheme
                             const std::optional<VertexSpectrum> &interior, const QString &where)
 {
     m_has = true;
-    m_text->setHtml(vertexVerdictHtml(vertex, scheme, interior, where));
+    m_text->setHtml(verdictHtml(vertex, scheme, interior, where));
     if (interior && interior->spectralC1)
         m_map->setMap(interior->characteristic, vertex.valence);
     else

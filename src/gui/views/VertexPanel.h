@@ -67,6 +67,10 @@ public:
     // The verdict as plain text (tests, the figure sheet).
     QString verdictText() const;
     CharacteristicMapView *mapView() const { return m_map; }
+    // The verdict at an extraordinary vertex as HTML.
+    static QString verdictHtml(const ExtraordinaryVertex &vertex, MeshScheme scheme,
+                               const std::optional<VertexSpectrum> &interior,
+                               const QString &where);
 
 signals:
     // "New eigenvalue plot of this vertex".
@@ -84,9 +88,6 @@ private:
     bool m_has = false;
 };
 
-// The verdict at an extraordinary vertex as HTML (VertexPanel, the figure sheet).
-QString vertexVerdictHtml(const ExtraordinaryVertex &vertex, MeshScheme scheme,
-                          const std::optional<VertexSpectrum> &interior, const QString &where);
 
 class ValenceChart : public QWidget {
     Q_OBJECT
