@@ -2593,6 +2593,18 @@ Byla ponechána jako %2.</translation>
         <source>Wrote %1</source>
         <translation>Zapsáno: %1</translation>
     </message>
+    <message>
+        <source>Copy Matrices as &amp;MATLAB</source>
+        <translation>Kopírovat matice jako &amp;MATLAB</translation>
+    </message>
+    <message numerus="yes">
+        <source>Copied %n matrices as MATLAB cell arrays (for jsr() of the JSR toolbox).</source>
+        <translation>
+            <numerusform>Zkopírována %n matice jako pole buněk MATLABu (pro jsr() z JSR toolboxu).</numerusform>
+            <numerusform>Zkopírovány %n matice jako pole buněk MATLABu (pro jsr() z JSR toolboxu).</numerusform>
+            <numerusform>Zkopírováno %n matic jako pole buněk MATLABu (pro jsr() z JSR toolboxu).</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -3342,6 +3354,34 @@ Byla ponechána jako %2.</translation>
         <source>Vertex limits: the exact limit positions of the mesh&apos;s vertices, where its IFS with condensation starts. Drag the control points in the 3D view; click a purple diamond to analyse that extraordinary vertex.</source>
         <translation>Limitní polohy vrcholů: přesné limitní polohy vrcholů sítě, z nichž vychází její IFS s kondenzací. Řídicí body přetáhněte ve 3D pohledu; kliknutím na fialový kosočtverec analyzujete příslušný mimořádný vrchol.</translation>
     </message>
+    <message>
+        <source>For a mesh surface: the extraordinary vertex whose local subdivision matrix is analysed</source>
+        <translation>U plochy ze sítě: mimořádný vrchol, jehož lokální matice subdivize se analyzuje</translation>
+    </message>
+    <message>
+        <source>Vertex:</source>
+        <translation>Vrchol:</translation>
+    </message>
+    <message>
+        <source>(the mesh&apos;s matrices)</source>
+        <translation>(matice sítě)</translation>
+    </message>
+    <message>
+        <source>vertex %1 (n = %2)</source>
+        <translation>vrchol %1 (n = %2)</translation>
+    </message>
+    <message>
+        <source>centre of face %1 (n = %2)</source>
+        <translation>střed stěny %1 (n = %2)</translation>
+    </message>
+    <message>
+        <source>centre of face %1 (missing)</source>
+        <translation>střed stěny %1 (chybí)</translation>
+    </message>
+    <message>
+        <source>vertex %1 (missing)</source>
+        <translation>vrchol %1 (chybí)</translation>
+    </message>
 </context>
 <context>
     <name>awb::Recovery</name>
@@ -4002,6 +4042,10 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>z</source>
         <translation>z</translation>
+    </message>
+    <message>
+        <source>depth %1 of %2 (detail budget: %3 k primitives) · %4</source>
+        <translation>hloubka %1 z %2 (rozpočet detailu: %3 tis. primitiv) · %4</translation>
     </message>
 </context>
 <context>
@@ -4762,7 +4806,7 @@ meze: %9
     </message>
     <message>
         <source>ply (attractor points) or obj (subdivided mesh).</source>
-        <translation>ply (body atraktoru) nebo obj (zjemněná síť).</translation>
+        <translation type="vanished">ply (body atraktoru) nebo obj (zjemněná síť).</translation>
     </message>
     <message>
         <source>Output file.</source>
@@ -4778,11 +4822,11 @@ meze: %9
     </message>
     <message>
         <source>--item NAME, --format ply|obj and --out FILE are required</source>
-        <translation>--item NAME, --format ply|obj a --out FILE jsou povinné</translation>
+        <translation type="vanished">--item NAME, --format ply|obj a --out FILE jsou povinné</translation>
     </message>
     <message>
         <source>--format must be ply or obj, got &apos;%1&apos;</source>
-        <translation>--format musí být ply nebo obj, zadáno „%1“</translation>
+        <translation type="vanished">--format musí být ply nebo obj, zadáno „%1“</translation>
     </message>
     <message>
         <source>cannot write %1: %2</source>
@@ -4868,7 +4912,7 @@ meze: %9
     </message>
     <message>
         <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ).</source>
-        <translation>Exportuje geometrii položky: atraktor F^k(X0) jako mračno bodů PLY (u každého bodu s naposledy použitým zobrazením), síť plošné položky po k kolech klasické subdivize jako polygonovou síť OBJ, nebo položku se sítí po k krocích s každým vrcholem v jeho limitní poloze (OBJ).</translation>
+        <translation type="vanished">Exportuje geometrii položky: atraktor F^k(X0) jako mračno bodů PLY (u každého bodu s naposledy použitým zobrazením), síť plošné položky po k kolech klasické subdivize jako polygonovou síť OBJ, nebo položku se sítí po k krocích s každým vrcholem v jeho limitní poloze (OBJ).</translation>
     </message>
     <message>
         <source>OBJ: rounds of subdivision (default: the item&apos;s; a mesh item: its depth, at most 6).</source>
@@ -4975,6 +5019,22 @@ Příkazy:
 
 Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --help&apos;.
 </translation>
+    </message>
+    <message>
+        <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ); or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab).</source>
+        <translation>Exportuje geometrii položky: atraktor F^k(X0) jako mračno bodů PLY (u každého bodu s naposledy použitým zobrazením), síť plošné položky po k kolech klasické subdivize jako polygonovou síť OBJ, nebo položku se sítí po k krocích s každým vrcholem v jeho limitní poloze (OBJ); nebo její matice S_i, M_i, A_i jako pole buněk MATLABu pro JSR toolbox (matlab).</translation>
+    </message>
+    <message>
+        <source>ply (attractor points), obj (subdivided mesh) or matlab (matrices).</source>
+        <translation>ply (body atraktoru), obj (zjemněná síť) nebo matlab (matice).</translation>
+    </message>
+    <message>
+        <source>--item NAME, --format ply|obj|matlab and --out FILE are required</source>
+        <translation>--item NAME, --format ply|obj|matlab a --out FILE jsou povinné</translation>
+    </message>
+    <message>
+        <source>--format must be ply, obj or matlab, got &apos;%1&apos;</source>
+        <translation>--format musí být ply, obj nebo matlab, zadáno „%1“</translation>
     </message>
 </context>
 <context>

@@ -2590,6 +2590,17 @@ Elle a été conservée sous le nom %2.</translation>
         <source>Wrote %1</source>
         <translation>Écrit&#xa0;: %1</translation>
     </message>
+    <message>
+        <source>Copy Matrices as &amp;MATLAB</source>
+        <translation>Copier les matrices en MA&amp;TLAB</translation>
+    </message>
+    <message numerus="yes">
+        <source>Copied %n matrices as MATLAB cell arrays (for jsr() of the JSR toolbox).</source>
+        <translation>
+            <numerusform>%n matrice copiée en tableau de cellules MATLAB (pour jsr() de la JSR toolbox).</numerusform>
+            <numerusform>%n matrices copiées en tableaux de cellules MATLAB (pour jsr() de la JSR toolbox).</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -3336,6 +3347,34 @@ Elle a été conservée sous le nom %2.</translation>
         <source>Vertex limits: the exact limit positions of the mesh&apos;s vertices, where its IFS with condensation starts. Drag the control points in the 3D view; click a purple diamond to analyse that extraordinary vertex.</source>
         <translation>Positions limites des sommets&#xa0;: les positions limites exactes des sommets du maillage, d’où part son IFS avec condensation. Faites glisser les points de contrôle dans la vue 3D&#x202f;; cliquez sur un losange violet pour analyser ce sommet extraordinaire.</translation>
     </message>
+    <message>
+        <source>For a mesh surface: the extraordinary vertex whose local subdivision matrix is analysed</source>
+        <translation>Pour une surface de maillage&#xa0;: le sommet extraordinaire dont la matrice de subdivision locale est analysée</translation>
+    </message>
+    <message>
+        <source>Vertex:</source>
+        <translation>Sommet&#xa0;:</translation>
+    </message>
+    <message>
+        <source>(the mesh&apos;s matrices)</source>
+        <translation>(les matrices du maillage)</translation>
+    </message>
+    <message>
+        <source>vertex %1 (n = %2)</source>
+        <translation>sommet %1 (n = %2)</translation>
+    </message>
+    <message>
+        <source>centre of face %1 (n = %2)</source>
+        <translation>centre de la face %1 (n = %2)</translation>
+    </message>
+    <message>
+        <source>centre of face %1 (missing)</source>
+        <translation>centre de la face %1 (manquant)</translation>
+    </message>
+    <message>
+        <source>vertex %1 (missing)</source>
+        <translation>sommet %1 (manquant)</translation>
+    </message>
 </context>
 <context>
     <name>awb::Recovery</name>
@@ -3996,6 +4035,10 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>z</source>
         <translation>z</translation>
+    </message>
+    <message>
+        <source>depth %1 of %2 (detail budget: %3 k primitives) · %4</source>
+        <translation>profondeur %1 sur %2 (budget de détail&#xa0;: %3 k primitives) · %4</translation>
     </message>
 </context>
 <context>
@@ -4756,7 +4799,7 @@ limites&#xa0;: %9
     </message>
     <message>
         <source>ply (attractor points) or obj (subdivided mesh).</source>
-        <translation>ply (points de l’attracteur) ou obj (maillage subdivisé).</translation>
+        <translation type="vanished">ply (points de l’attracteur) ou obj (maillage subdivisé).</translation>
     </message>
     <message>
         <source>Output file.</source>
@@ -4772,11 +4815,11 @@ limites&#xa0;: %9
     </message>
     <message>
         <source>--item NAME, --format ply|obj and --out FILE are required</source>
-        <translation>--item NOM, --format ply|obj et --out FICHIER sont obligatoires</translation>
+        <translation type="vanished">--item NOM, --format ply|obj et --out FICHIER sont obligatoires</translation>
     </message>
     <message>
         <source>--format must be ply or obj, got &apos;%1&apos;</source>
-        <translation>--format doit valoir ply ou obj (reçu&#xa0;: «&#xa0;%1&#xa0;»)</translation>
+        <translation type="vanished">--format doit valoir ply ou obj (reçu&#xa0;: «&#xa0;%1&#xa0;»)</translation>
     </message>
     <message>
         <source>cannot write %1: %2</source>
@@ -4862,7 +4905,7 @@ limites&#xa0;: %9
     </message>
     <message>
         <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ).</source>
-        <translation>Exporter la géométrie d’un élément&#xa0;: l’attracteur F^k(X0) en nuage de points PLY (avec l’application appliquée en dernier pour chaque point), le réseau d’un élément surface après k passes de subdivision classique en maillage OBJ, ou un élément maillage après k étapes avec chaque sommet à sa position limite (OBJ).</translation>
+        <translation type="vanished">Exporter la géométrie d’un élément&#xa0;: l’attracteur F^k(X0) en nuage de points PLY (avec l’application appliquée en dernier pour chaque point), le réseau d’un élément surface après k passes de subdivision classique en maillage OBJ, ou un élément maillage après k étapes avec chaque sommet à sa position limite (OBJ).</translation>
     </message>
     <message>
         <source>OBJ: rounds of subdivision (default: the item&apos;s; a mesh item: its depth, at most 6).</source>
@@ -4969,6 +5012,22 @@ Commandes&#xa0;:
 
 Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les options d’une commande.
 </translation>
+    </message>
+    <message>
+        <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ); or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab).</source>
+        <translation>Exporter la géométrie d’un élément&#xa0;: l’attracteur F^k(X0) en nuage de points PLY (avec l’application appliquée en dernier pour chaque point), le réseau d’un élément surface après k passes de subdivision classique en maillage OBJ, ou un élément maillage après k étapes avec chaque sommet à sa position limite (OBJ)&#x202f;; ou ses matrices S_i, M_i, A_i en tableaux de cellules MATLAB pour la JSR toolbox (matlab).</translation>
+    </message>
+    <message>
+        <source>ply (attractor points), obj (subdivided mesh) or matlab (matrices).</source>
+        <translation>ply (points de l’attracteur), obj (maillage subdivisé) ou matlab (matrices).</translation>
+    </message>
+    <message>
+        <source>--item NAME, --format ply|obj|matlab and --out FILE are required</source>
+        <translation>--item NAME, --format ply|obj|matlab et --out FILE sont obligatoires</translation>
+    </message>
+    <message>
+        <source>--format must be ply, obj or matlab, got &apos;%1&apos;</source>
+        <translation>--format doit valoir ply, obj ou matlab, et non «&#xa0;%1&#xa0;»</translation>
     </message>
 </context>
 <context>

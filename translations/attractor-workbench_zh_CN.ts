@@ -2587,6 +2587,16 @@ It was kept as %2.</source>
         <source>Wrote %1</source>
         <translation>已写入 %1</translation>
     </message>
+    <message>
+        <source>Copy Matrices as &amp;MATLAB</source>
+        <translation>将矩阵复制为 MATLAB(&amp;M)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Copied %n matrices as MATLAB cell arrays (for jsr() of the JSR toolbox).</source>
+        <translation>
+            <numerusform>已将 %n 个矩阵复制为 MATLAB 元胞数组（用于 JSR 工具箱的 jsr()）。</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -3330,6 +3340,34 @@ It was kept as %2.</source>
         <source>Vertex limits: the exact limit positions of the mesh&apos;s vertices, where its IFS with condensation starts. Drag the control points in the 3D view; click a purple diamond to analyse that extraordinary vertex.</source>
         <translation>顶点极限位置：网格顶点的精确极限位置，即其带凝聚集的 IFS 的起点。在 3D 视图中拖动控制点；单击紫色菱形可分析该奇异顶点。</translation>
     </message>
+    <message>
+        <source>For a mesh surface: the extraordinary vertex whose local subdivision matrix is analysed</source>
+        <translation>对于网格曲面：分析其局部细分矩阵的奇异顶点</translation>
+    </message>
+    <message>
+        <source>Vertex:</source>
+        <translation>顶点：</translation>
+    </message>
+    <message>
+        <source>(the mesh&apos;s matrices)</source>
+        <translation>（网格自身的矩阵）</translation>
+    </message>
+    <message>
+        <source>vertex %1 (n = %2)</source>
+        <translation>顶点 %1（n = %2）</translation>
+    </message>
+    <message>
+        <source>centre of face %1 (n = %2)</source>
+        <translation>面 %1 的中心（n = %2）</translation>
+    </message>
+    <message>
+        <source>centre of face %1 (missing)</source>
+        <translation>面 %1 的中心（缺失）</translation>
+    </message>
+    <message>
+        <source>vertex %1 (missing)</source>
+        <translation>顶点 %1（缺失）</translation>
+    </message>
 </context>
 <context>
     <name>awb::Recovery</name>
@@ -3990,6 +4028,10 @@ It was kept as %2.</source>
     <message>
         <source>z</source>
         <translation>z</translation>
+    </message>
+    <message>
+        <source>depth %1 of %2 (detail budget: %3 k primitives) · %4</source>
+        <translation>深度 %1/%2（细节预算：%3 千个图元）· %4</translation>
     </message>
 </context>
 <context>
@@ -4750,7 +4792,7 @@ bounds: %9
     </message>
     <message>
         <source>ply (attractor points) or obj (subdivided mesh).</source>
-        <translation>ply（吸引子的点）或 obj（细分网格）。</translation>
+        <translation type="vanished">ply（吸引子的点）或 obj（细分网格）。</translation>
     </message>
     <message>
         <source>Output file.</source>
@@ -4766,11 +4808,11 @@ bounds: %9
     </message>
     <message>
         <source>--item NAME, --format ply|obj and --out FILE are required</source>
-        <translation>必须提供 --item NAME、--format ply|obj 和 --out FILE</translation>
+        <translation type="vanished">必须提供 --item NAME、--format ply|obj 和 --out FILE</translation>
     </message>
     <message>
         <source>--format must be ply or obj, got &apos;%1&apos;</source>
-        <translation>--format 必须为 ply 或 obj，实际为“%1”</translation>
+        <translation type="vanished">--format 必须为 ply 或 obj，实际为“%1”</translation>
     </message>
     <message>
         <source>cannot write %1: %2</source>
@@ -4856,7 +4898,7 @@ bounds: %9
     </message>
     <message>
         <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ).</source>
-        <translation>导出对象的几何：将吸引子 F^k(X0) 导出为 PLY 点云（每个点附带最后作用的映射），将曲面对象经 k 轮经典细分后的控制网格导出为 OBJ 网格，或将网格对象细分 k 步后、每个顶点都置于其极限位置导出（OBJ）。</translation>
+        <translation type="vanished">导出对象的几何：将吸引子 F^k(X0) 导出为 PLY 点云（每个点附带最后作用的映射），将曲面对象经 k 轮经典细分后的控制网格导出为 OBJ 网格，或将网格对象细分 k 步后、每个顶点都置于其极限位置导出（OBJ）。</translation>
     </message>
     <message>
         <source>OBJ: rounds of subdivision (default: the item&apos;s; a mesh item: its depth, at most 6).</source>
@@ -4963,6 +5005,22 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
 
 运行“attractor-cli &lt;command&gt; --help”查看某个命令的选项。
 </translation>
+    </message>
+    <message>
+        <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ); or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab).</source>
+        <translation>导出对象的几何：将吸引子 F^k(X0) 导出为 PLY 点云（每个点附带最后作用的映射），将曲面对象经 k 轮经典细分后的控制网格导出为 OBJ 网格，或将网格对象细分 k 步后、每个顶点都置于其极限位置导出（OBJ）；或将其矩阵 S_i、M_i、A_i 导出为用于 JSR 工具箱的 MATLAB 元胞数组（matlab）。</translation>
+    </message>
+    <message>
+        <source>ply (attractor points), obj (subdivided mesh) or matlab (matrices).</source>
+        <translation>ply（吸引子的点）、obj（细分网格）或 matlab（矩阵）。</translation>
+    </message>
+    <message>
+        <source>--item NAME, --format ply|obj|matlab and --out FILE are required</source>
+        <translation>必须给出 --item NAME、--format ply|obj|matlab 和 --out FILE</translation>
+    </message>
+    <message>
+        <source>--format must be ply, obj or matlab, got &apos;%1&apos;</source>
+        <translation>--format 必须是 ply、obj 或 matlab，得到的是“%1”</translation>
     </message>
 </context>
 <context>

@@ -13,6 +13,7 @@
 #include "model/ExactCurve.h"
 #include "model/FileWriting.h"
 #include "model/ItemAddress.h"
+#include "model/NamedMatrix.h"
 #include "model/NumberFormat.h"
 #include "model/PointExport.h"
 #include "model/Project.h"
@@ -88,11 +89,13 @@ int exportData(const QStringList &args)
             CliTr::tr("Export an item's geometry: the attractor F^k(X0) as a PLY point cloud (with "
                    "the map applied last per point), a surface item's net after k rounds of "
                    "classic subdivision as an OBJ mesh, or a mesh item after k steps with every "
-                   "vertex at its limit position (OBJ)."));
+                   "vertex at its limit position (OBJ); or its matrices S_i, M_i, A_i as MATLAB "
+                   "cell arrays for the JSR toolbox (matlab)."));
         parser.addPositionalArgument("project", CliTr::tr("The .awb project file."));
         parser.addOptions({{"item", CliTr::tr("The item."), "name"},
-                           {"format", CliTr::tr("ply (attractor points) or obj (subdivided "
-                                             "mesh)."), "fmt"},
+                           {"format", CliTr::tr("ply (attractor points), obj (subdivided "
+                                                "mesh) or matlab (matrices)."),
+                            "fmt"},
                            {"out", CliTr::tr("Output file."), "file"},
                            {"depth", CliTr::tr("PLY: iteration depth (default: the item's)."), "k"},
                            {"rounds", CliTr::tr("OBJ: rounds of subdivision (default: the "
@@ -102,10 +105,12 @@ int exportData(const QStringList &args)
                             "50000000"}});
         parseOrFail(parser, args, 1);
         if (!parser.isSet("item") || !parser.isSet("out") || !parser.isSet("format"))
-            throw Failure{CliTr::tr("--item NAME, --format ply|obj and --out FILE are required"), 2};
+            throw Failure{
+                CliTr::tr("--item NAME, --format ply|obj|matlab and --out FILE are required"), 2};
         const QString format = parser.value("format").toLower();
-        if (format != "ply" && format != "obj")
-            throw Failure{CliTr::tr("--format must be ply or obj, got '%1'").arg(format), 2};
+        if (format != "ply" && format != "obj" && format != "matlab")
+            throw Failure{CliTr::tr("--format must be ply, obj or matlab, got '%1'").arg(format),
+                          2};
         Project project;
         load(project, parser.positionalArguments().first());
         AttractorItem *item = attractorItem(project, parser.value("item"));
@@ -116,7 +121,11 @@ int exportData(const QStringList &args)
         if (!writer.open(outFile, &reason))
             throw Failure{CliTr::tr("cannot write %1: %2").arg(outFile, reason)};
         QIODevice &file = *writer.device();
-        if (format == "ply") {
+        if (format == "matlab") {
+            const QByteArray text = matlabMatrices(namedMatrices(*d), item->name()).toUtf8();
+            if (file.write(text) != text.size())
+                throw Failure{CliTr::tr("cannot write %1: %2").arg(outFile, file.errorString())};
+        } else if (format == "ply") {
             const int depth = parser.isSet("depth") ? intOption(parser, "depth", 0, 64)
                                                     : item->algorithm().depth;
             const StartSet start = item->coreStartSet(*d);

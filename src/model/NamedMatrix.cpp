@@ -3,6 +3,7 @@
 #include "model/AttractorItem.h"
 #include "model/NumberFormat.h"
 
+#include <QMap>
 #include <QStringList>
 
 #include <cmath>
@@ -119,6 +120,81 @@ QString latexMatrices(const QList<NamedMatrix> &matrices, const QString &title, 
                    .arg(title);
     for (const NamedMatrix &m : matrices)
         out += QStringLiteral("\\[\n%1\n\\]\n").arg(latexMatrix(m, digits));
+    return out;
+}
+
+namespace {
+
+QString matlabComplex(std::complex<double> z)
+{
+    if (z.imag() == 0.0)
+        return exactText(z.real());
+    QString im = exactText(std::abs(z.imag()));
+    if (im.contains(QLatin1Char('/')))
+        im = QStringLiteral("(%1)").arg(im);
+    return QStringLiteral("%1%2%3i")
+        .arg(exactText(z.real()), z.imag() < 0 ? QStringLiteral("-") : QStringLiteral("+"), im);
+}
+
+template <class M, class Entry>
+QString matlabMatrix(const M &m, Eigen::Index rows, Eigen::Index cols, Entry entry)
+{
+    QStringList lines;
+    for (Eigen::Index r = 0; r < rows; ++r) {
+        QStringList row;
+        for (Eigen::Index c = 0; c < cols; ++c)
+            row << entry(m(r, c));
+        lines << row.join(QLatin1Char(' '));
+    }
+    return QStringLiteral("[") + lines.join(QStringLiteral("; ")) + QStringLiteral("]");
+}
+
+// The cell array a matrix goes to: the letters before its subscript ("S_1" -> "S"), a MATLAB
+// identifier; "S" when there is none.
+QString matlabGroup(const QString &name)
+{
+    QString key;
+    for (const QChar c : name) {
+        if (!(c.isLetterOrNumber() && c.unicode() < 128))
+            break;
+        key += c;
+    }
+    return key.isEmpty() || key[0].isDigit() ? QStringLiteral("S") : key;
+}
+
+} // namespace
+
+QString matlabMatrices(const QList<NamedMatrix> &matrices, const QString &title)
+{
+    // Cell arrays in the order their kinds first appear; A after M.
+    QStringList order;
+    QMap<QString, QStringList> cells;
+    const auto add = [&](const QString &group, const QString &text) {
+        if (!cells.contains(group))
+            order << group;
+        cells[group] << text;
+    };
+    for (const NamedMatrix &m : matrices) {
+        const QString group = matlabGroup(m.name);
+        if (m.isComplex()) {
+            add(group, matlabMatrix(m.complexValues, m.rows(), m.cols(), matlabComplex));
+            if (m.affineBlock > 0)
+                add(QStringLiteral("A"), matlabMatrix(m.complexValues, m.affineBlock,
+                                                      m.affineBlock, matlabComplex));
+            continue;
+        }
+        add(group, matlabMatrix(m.values, m.rows(), m.cols(), exactText));
+        if (m.affineBlock > 0)  // the linear parts of the M_i or f_i: what jsr() wants
+            add(QStringLiteral("A"),
+                matlabMatrix(m.values, m.affineBlock, m.affineBlock, exactText));
+    }
+    QString out;
+    if (!title.isEmpty())
+        out += QStringLiteral("% %1 (Attractor Workbench): cell arrays for jsr() of the JSR "
+                              "toolbox\n")
+                   .arg(title);
+    for (const QString &group : order)
+        out += QStringLiteral("%1 = {%2};\n").arg(group, cells[group].join(QStringLiteral(", ")));
     return out;
 }
 

@@ -56,4 +56,12 @@ QString latexMatrix(const NamedMatrix &m, int digits = 6);
 QString latexMatrices(const QList<NamedMatrix> &matrices, const QString &title = {},
                       int digits = 6);
 
+// The matrices as MATLAB / Octave cell arrays, one per kind, ready for jsr() of the JSR
+// toolbox (Jungers) and the t-toolboxes (Mejstrik): "S = {[1/2 1/2 0; ...], [...]};" for the
+// S_i, "M = {...};" for the lifted M_i, "f = {...};" for plain affine maps as [[A, 0]; [b, 1]],
+// and "A = {...};" for the linear parts of either (their top-left blocks). Entries are exact fractions where rational
+// ("3/8", "-1/16"), otherwise 17 significant digits (the eigenvalues come back to the last
+// digit); complex entries as "0.5+0.25i". A comment line names the item.
+QString matlabMatrices(const QList<NamedMatrix> &matrices, const QString &title = {});
+
 } // namespace awb

@@ -26,6 +26,7 @@ private slots:
     void pointsAreThreeDimensional();
     void plyIsReadByMeshio();
     void objIsReadByMeshioAndAssimp();
+    void matlabCellArrayOfTheBicubicPatch();
     void renderDrawsTheSurface_data();
     void renderDrawsTheSurface();
     void badOptions();
@@ -187,6 +188,29 @@ print(len(m.points), sum(len(c.data) for c in m.cells))
     QVERIFY2(out.contains("Vertices:") && out.contains("49"), out.constData());
 }
 
+void TestSurfacesCli::matlabCellArrayOfTheBicubicPatch()
+{
+    // The four 16 x 16 S_i of the bicubic patch (000 Fig. 6) for MATLAB's JSR toolbox: a cell
+    // array of exact fractions -- the tensor products of the cubic B-spline's 1/8, 3/4, 1/2.
+    const QString m = m_dir.filePath("fig6.m");
+    QByteArray out, err;
+    QCOMPARE(run({"export", example("000-fig06-bicubic-patch.awb"), "--item",
+                  "000 Fig. 6: bicubic B-spline patch from a triangle", "--format", "matlab",
+                  "--out", m},
+                 &out, &err),
+             0);
+    QFile f(m);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(f.readAll());
+    const QStringList lines = text.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QVERIFY2(lines.value(0).startsWith("% 000 Fig. 6"), qPrintable(text.left(200)));
+    const QString s = lines.value(1);
+    QVERIFY2(s.startsWith("S = {[") && s.endsWith("]};"), qPrintable(s.left(200)));
+    QCOMPARE(s.count(QLatin1Char('[')), 4);        // four maps
+    QCOMPARE(s.count(QLatin1Char(';')), 4 * 15 + 1); // 16 rows each, and the statement's end
+    QVERIFY(s.contains("9/16") && s.contains("1/64") && !s.contains("0.0"));
+}
+
 void TestSurfacesCli::renderDrawsTheSurface_data()
 {
     QTest::addColumn<QString>("file");
@@ -234,7 +258,7 @@ void TestSurfacesCli::badOptions()
                   "--format", "stl", "--out", m_dir.filePath("x.stl")},
                  &out, &err),
              2);
-    QVERIFY(err.contains("ply or obj"));
+    QVERIFY(err.contains("ply, obj or matlab"));
     const QString curve = example("000-fig02-cubic-bspline-from-point.awb");
     QCOMPARE(run({"analyse", curve, "--json"}, &out, &err), 0);
     const QString name = QJsonDocument::fromJson(out).object()["items"].toArray()[0]

@@ -487,6 +487,20 @@ void MainWindow::createActions()
                     int(m_matrices->matrices().size())),
                  4000);
          });
+    make(QStringLiteral("actionCopyMatlab"), tr("Copy Matrices as &MATLAB"),
+         QStringLiteral("edit-copy"), QKeySequence(), [this] {
+             const QList<NamedMatrix> list = m_matrices->matrices();
+             if (list.isEmpty()) {
+                 statusBar()->showMessage(tr("The current item has no matrices."), 4000);
+                 return;
+             }
+             QGuiApplication::clipboard()->setText(
+                 matlabMatrices(list, m_current ? m_current->name() : QString()));
+             statusBar()->showMessage(
+                 tr("Copied %n matrices as MATLAB cell arrays (for jsr() of the JSR toolbox).",
+                    nullptr, int(list.size())),
+                 4000);
+         });
     make(QStringLiteral("actionDuplicate"), tr("D&uplicate Item"), QStringLiteral("edit-copy"),
          QKeySequence(tr("Ctrl+D")), &MainWindow::duplicateItem);
     make(QStringLiteral("actionDelete"), tr("&Delete Item"), QStringLiteral("edit-delete"),
@@ -680,6 +694,7 @@ void MainWindow::createMenus()
     edit->addAction(action(QStringLiteral("actionRedo")));
     edit->addSeparator();
     edit->addAction(action(QStringLiteral("actionCopyLatex")));
+    edit->addAction(action(QStringLiteral("actionCopyMatlab")));
     edit->addSeparator();
     edit->addAction(action(QStringLiteral("actionPreferences")));
     addLanguageMenu(edit);

@@ -68,9 +68,17 @@ void SurfaceView::paintEvent(QPaintEvent *)
     }
     paintOverlay(p, viewMatrix(QSizeF(size())), QRectF(rect()), 1.0);
     p.setPen(QColor(110, 110, 110));
-    p.drawText(QRectF(rect()).adjusted(6, 4, -6, -4), Qt::AlignRight | Qt::AlignBottom,
-               isRendering() && !pointMoving() && !m_moving ? tr("Drawing… (CPU renderer)")
-                                                            : tr("CPU renderer"));
+    QString label = isRendering() && !pointMoving() && !m_moving ? tr("Drawing… (CPU renderer)")
+                                                                 : tr("CPU renderer");
+    // A depth the detail budget lowered is said, not hidden (a mesh at depth 7 has 1.5 M
+    // faces: the view draws depth 6 at rest and a coarser one while something moves).
+    if (m_meshes.full && m_meshes.full->depth < m_settings.depth)
+        label = tr("depth %1 of %2 (detail budget: %3 k primitives) · %4")
+                    .arg(m_meshes.full->depth)
+                    .arg(m_settings.depth)
+                    .arg(m_fullBudget / 1000)
+                    .arg(label);
+    p.drawText(QRectF(rect()).adjusted(6, 4, -6, -4), Qt::AlignRight | Qt::AlignBottom, label);
     p.end();
     if (framelog::enabled()) {
         const bool final = !m_moving && !pointMoving() && !isRendering() && m_meshes.full
