@@ -1630,7 +1630,7 @@
     </message>
     <message>
         <source>expected a 2 x 2 matrix [[a11, a12], [a21, a22]]</source>
-        <translation>očekávána matice 2 x 2 [[a11, a12], [a21, a22]]</translation>
+        <translation type="vanished">očekávána matice 2 x 2 [[a11, a12], [a21, a22]]</translation>
     </message>
     <message>
         <source>the custom form needs at least one map</source>
@@ -1638,7 +1638,7 @@
     </message>
     <message>
         <source>map %1 is not a map of the plane</source>
-        <translation>zobrazení %1 není zobrazení roviny</translation>
+        <translation type="vanished">zobrazení %1 není zobrazení roviny</translation>
     </message>
     <message>
         <source>map %1 has a non-finite entry</source>
@@ -1703,6 +1703,45 @@
     <message>
         <source>Fractal with control points</source>
         <translation>Fraktál s řídicími body</translation>
+    </message>
+    <message>
+        <source>expected a 2 x 2 matrix [[a11, a12], [a21, a22]] or a 3 x 3 one</source>
+        <translation>očekávána matice 2 x 2 [[a11, a12], [a21, a22]] nebo 3 x 3</translation>
+    </message>
+    <message>
+        <source>expected a %1 x %1 matrix, as the first map</source>
+        <translation>očekávána matice %1 x %1, stejně jako u prvního zobrazení</translation>
+    </message>
+    <message>
+        <source>map %1 is not a map of the plane or of space like the first</source>
+        <translation>zobrazení %1 není zobrazení roviny nebo prostoru stejné dimenze jako první</translation>
+    </message>
+</context>
+<context>
+    <name>awb::IfsExchange</name>
+    <message>
+        <source>%1, line %2: entry %3: %4 (%5)</source>
+        <translation>%1, řádek %2: záznam %3: %4 (%5)</translation>
+    </message>
+    <message>
+        <source>%1, line %2: %3</source>
+        <translation>%1, řádek %2: %3</translation>
+    </message>
+    <message>
+        <source>%1: the file is larger than %2 MB</source>
+        <translation>%1: soubor je větší než %2 MB</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>%1 nelze přečíst: %2</translation>
+    </message>
+    <message>
+        <source>%1 cannot be computed: %2</source>
+        <translation>%1 nelze vypočítat: %2</translation>
+    </message>
+    <message>
+        <source>the IFS of %1 acts in a space of dimension %2 that is drawn through a projection (000 §2): a Fractint entry holds maps of the plane or of space only</source>
+        <translation>IFS položky %1 působí v prostoru dimenze %2, který se kreslí pomocí projekce (000 §2): záznam formátu Fractint obsahuje jen zobrazení roviny nebo prostoru</translation>
     </message>
 </context>
 <context>
@@ -2604,6 +2643,62 @@ Byla ponechána jako %2.</translation>
             <numerusform>Zkopírovány %n matice jako pole buněk MATLABu (pro jsr() z JSR toolboxu).</numerusform>
             <numerusform>Zkopírováno %n matic jako pole buněk MATLABu (pro jsr() z JSR toolboxu).</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>&amp;Import…</source>
+        <translation>I&amp;mportovat…</translation>
+    </message>
+    <message>
+        <source>Ctrl+I</source>
+        <translation>Ctrl+I</translation>
+    </message>
+    <message>
+        <source>Export &amp;Item As…</source>
+        <translation>Exportovat po&amp;ložku jako…</translation>
+    </message>
+    <message>
+        <source>%1: no entry could be imported</source>
+        <translation>%1: nepodařilo se importovat žádný záznam</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Importovat %1</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Import</translation>
+    </message>
+    <message>
+        <source>Everything Attractor Workbench imports (*.ifs *.obj *.off *.ply);;Fractint IFS (*.ifs);;Meshes (*.obj *.off *.ply)</source>
+        <translation>Vše, co Attractor Workbench umí importovat (*.ifs *.obj *.off *.ply);;Fractint IFS (*.ifs);;Sítě (*.obj *.off *.ply)</translation>
+    </message>
+    <message>
+        <source>Imported the other entries; these were left out:</source>
+        <translation>Ostatní záznamy byly importovány; tyto byly vynechány:</translation>
+    </message>
+    <message>
+        <source>Imported %1</source>
+        <translation>Importováno: %1</translation>
+    </message>
+    <message>
+        <source>Export Item As writes an item with maps: choose one first</source>
+        <translation>„Exportovat položku jako“ zapisuje položku se zobrazeními: nejprve nějakou vyberte</translation>
+    </message>
+    <message>
+        <source>%1 has no matrices to export</source>
+        <translation>%1 nemá žádné matice k exportu</translation>
+    </message>
+    <message>
+        <source>%1: Export Item As writes .ifs (Fractint) or .m (MATLAB) files</source>
+        <translation>%1: „Exportovat položku jako“ zapisuje soubory .ifs (Fractint) nebo .m (MATLAB)</translation>
+    </message>
+    <message>
+        <source>Export Item As</source>
+        <translation>Exportovat položku jako</translation>
+    </message>
+    <message>
+        <source>Fractint IFS (*.ifs);;MATLAB cell arrays of the matrices (*.m)</source>
+        <translation>Fractint IFS (*.ifs);;Matice jako pole buněk MATLABu (*.m)</translation>
     </message>
 </context>
 <context>
@@ -5002,7 +5097,7 @@ Commands:
 
 Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
 </source>
-        <translation>Použití: attractor-cli &lt;command&gt; [options]
+        <translation type="vanished">Použití: attractor-cli &lt;command&gt; [options]
 
 Příkazy:
   render     vykreslí položku projektu do PNG, SVG nebo PDF
@@ -5022,19 +5117,101 @@ Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --he
     </message>
     <message>
         <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ); or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab).</source>
-        <translation>Exportuje geometrii položky: atraktor F^k(X0) jako mračno bodů PLY (u každého bodu s naposledy použitým zobrazením), síť plošné položky po k kolech klasické subdivize jako polygonovou síť OBJ, nebo položku se sítí po k krocích s každým vrcholem v jeho limitní poloze (OBJ); nebo její matice S_i, M_i, A_i jako pole buněk MATLABu pro JSR toolbox (matlab).</translation>
+        <translation type="vanished">Exportuje geometrii položky: atraktor F^k(X0) jako mračno bodů PLY (u každého bodu s naposledy použitým zobrazením), síť plošné položky po k kolech klasické subdivize jako polygonovou síť OBJ, nebo položku se sítí po k krocích s každým vrcholem v jeho limitní poloze (OBJ); nebo její matice S_i, M_i, A_i jako pole buněk MATLABu pro JSR toolbox (matlab).</translation>
     </message>
     <message>
         <source>ply (attractor points), obj (subdivided mesh) or matlab (matrices).</source>
-        <translation>ply (body atraktoru), obj (zjemněná síť) nebo matlab (matice).</translation>
+        <translation type="vanished">ply (body atraktoru), obj (zjemněná síť) nebo matlab (matice).</translation>
     </message>
     <message>
         <source>--item NAME, --format ply|obj|matlab and --out FILE are required</source>
-        <translation>--item NAME, --format ply|obj|matlab a --out FILE jsou povinné</translation>
+        <translation type="vanished">--item NAME, --format ply|obj|matlab a --out FILE jsou povinné</translation>
     </message>
     <message>
         <source>--format must be ply, obj or matlab, got &apos;%1&apos;</source>
-        <translation>--format musí být ply, obj nebo matlab, zadáno „%1“</translation>
+        <translation type="vanished">--format musí být ply, obj nebo matlab, zadáno „%1“</translation>
+    </message>
+    <message>
+        <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ); its maps as a Fractint .ifs entry (ifs); or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab).</source>
+        <translation>Exportuje geometrii položky: atraktor F^k(X0) jako mračno bodů PLY (u každého bodu s naposledy použitým zobrazením), síť plošné položky po k kolech klasické subdivize jako polygonovou síť OBJ, nebo položku se sítí po k krocích s každým vrcholem v jeho limitní poloze (OBJ); její zobrazení jako záznam souboru .ifs formátu Fractint (ifs); nebo její matice S_i, M_i, A_i jako pole buněk MATLABu pro JSR toolbox (matlab).</translation>
+    </message>
+    <message>
+        <source>ply (attractor points), obj (subdivided mesh), ifs (Fractint) or matlab (matrices).</source>
+        <translation>ply (body atraktoru), obj (zjemněná síť), ifs (Fractint) nebo matlab (matice).</translation>
+    </message>
+    <message>
+        <source>--item NAME, --format ply|obj|ifs|matlab and --out FILE are required</source>
+        <translation>--item NAME, --format ply|obj|ifs|matlab a --out FILE jsou povinné</translation>
+    </message>
+    <message>
+        <source>--format must be ply, obj, ifs or matlab, got &apos;%1&apos;</source>
+        <translation>--format musí být ply, obj, ifs nebo matlab, zadáno „%1“</translation>
+    </message>
+    <message>
+        <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit) as a fractal with control points.</source>
+        <translation>Vytvoří projekt ze souboru IFS jiného programu: každý záznam souboru .ifs formátu Fractint (2D i 3D; formát programů Fractint, xfractint a IFS Construction Kit) jako fraktál s řídicími body.</translation>
+    </message>
+    <message>
+        <source>The file to import (.ifs).</source>
+        <translation>Soubor, který se má importovat (.ifs).</translation>
+    </message>
+    <message>
+        <source>%1: import reads Fractint .ifs files</source>
+        <translation>%1: příkaz import čte soubory .ifs formátu Fractint</translation>
+    </message>
+    <message>
+        <source>%1: no entry could be imported</source>
+        <translation>%1: nepodařilo se importovat žádný záznam</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n item(s): %2
+</source>
+        <translation>
+            <numerusform>%1: %n položka: %2
+</numerusform>
+            <numerusform>%1: %n položky: %2
+</numerusform>
+            <numerusform>%1: %n položek: %2
+</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Usage: attractor-cli &lt;command&gt; [options]
+
+Commands:
+  render     render an item of a project to PNG, SVG or PDF
+  animate    render the frames of an item&apos;s animation (PNG files, MP4/GIF)
+  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)
+  points     the points of F^k(X0) as CSV
+  check      validate a project file
+  rewrite    load and save a project in canonical form
+  export     points (PLY), a net or mesh (OBJ), maps (.ifs), matrices (MATLAB)
+  polygon    the control polygon after K subdivision steps (JSON)
+  import     another tool&apos;s IFS file (Fractint .ifs) as a project
+  import-mesh  a mesh file (OBJ, OFF, PLY) as a project with a mesh item
+  valences   lambda, mu, Reif&apos;s C1 verdict per valence (Catmull-Clark, Loop)
+  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG
+
+Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
+</source>
+        <translation>Použití: attractor-cli &lt;command&gt; [options]
+
+Příkazy:
+  render     vykreslí položku projektu do PNG, SVG nebo PDF
+  animate    vykreslí snímky animace položky (soubory PNG, MP4/GIF)
+  analyse    vlastní čísla, kontraktivita, pevné body, dimenze (JSON)
+  points     body F^k(X0) jako CSV
+  check      ověří projektový soubor
+  rewrite    načte a uloží projekt v kanonickém tvaru
+  export     body (PLY), řídicí nebo polygonová síť (OBJ), zobrazení (.ifs), matice (MATLAB)
+  polygon    řídicí polygon po K krocích subdivize (JSON)
+  import     soubor IFS jiného programu (Fractint .ifs) jako projekt
+  import-mesh  soubor sítě (OBJ, OFF, PLY) jako projekt s položkou se sítí
+  valences   lambda, mu, Reifův verdikt C1 pro každou valenci (Catmull-Clark, Loop)
+  examples   vykreslí vestavěné obrázky z článků (000 Figs. 2, 3, 5) do PNG
+
+Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --help&apos;.
+</translation>
     </message>
 </context>
 <context>
@@ -5046,6 +5223,65 @@ Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --he
     <message>
         <source>matrix rows of different lengths</source>
         <translation>řádky matice mají různé délky</translation>
+    </message>
+</context>
+<context>
+    <name>awb::exchange</name>
+    <message>
+        <source>%1, line %2, column %3</source>
+        <translation>%1, řádek %2, sloupec %3</translation>
+    </message>
+    <message>
+        <source>: entry %1</source>
+        <translation>: záznam %1</translation>
+    </message>
+    <message>
+        <source>a &apos;}&apos; without its &apos;{&apos;</source>
+        <translation>„}“ bez odpovídající „{“</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not followed by &apos;{&apos;: an entry is NAME { rows }</source>
+        <translation>za „%1“ nenásleduje „{“: záznam má tvar NAME { rows }</translation>
+    </message>
+    <message>
+        <source>entry at line %1</source>
+        <translation>záznam na řádku %1</translation>
+    </message>
+    <message>
+        <source>a &apos;{&apos; inside an entry: its &apos;}&apos; is missing</source>
+        <translation>„{“ uvnitř záznamu: chybí jeho „}“</translation>
+    </message>
+    <message>
+        <source>the file ends before the entry&apos;s &apos;}&apos;</source>
+        <translation>soubor končí před „}“ záznamu</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a finite number</source>
+        <translation>„%1“ není konečné číslo</translation>
+    </message>
+    <message>
+        <source>the entry has no maps</source>
+        <translation>záznam nemá žádná zobrazení</translation>
+    </message>
+    <message>
+        <source>%1 numbers: a %2D entry has rows of %3 (the map&apos;s coefficients, then its probability), %4 left over</source>
+        <translation>počet čísel: %1; záznam %2D má řádky po %3 číslech (koeficienty zobrazení a za nimi jeho pravděpodobnost), přebývá %4</translation>
+    </message>
+    <message>
+        <source>map %1 has the negative probability %2</source>
+        <translation>zobrazení %1 má zápornou pravděpodobnost %2</translation>
+    </message>
+    <message>
+        <source>a Fractint entry holds maps of the plane or of space, not of dimension %1</source>
+        <translation>záznam formátu Fractint obsahuje zobrazení roviny nebo prostoru, ne dimenze %1</translation>
+    </message>
+    <message>
+        <source>the entry&apos;s maps are not all of its dimension</source>
+        <translation>ne všechna zobrazení záznamu mají jeho dimenzi</translation>
+    </message>
+    <message>
+        <source>entry %1: random iteration leaves every bound (its maps do not contract)</source>
+        <translation>záznam %1: náhodná iterace překračuje všechny meze (jeho zobrazení nejsou kontrakce)</translation>
     </message>
 </context>
 <context>

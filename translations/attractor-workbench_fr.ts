@@ -1628,7 +1628,7 @@
     </message>
     <message>
         <source>expected a 2 x 2 matrix [[a11, a12], [a21, a22]]</source>
-        <translation>matrice 2 x 2 [[a11, a12], [a21, a22]] attendue</translation>
+        <translation type="vanished">matrice 2 x 2 [[a11, a12], [a21, a22]] attendue</translation>
     </message>
     <message>
         <source>the custom form needs at least one map</source>
@@ -1636,7 +1636,7 @@
     </message>
     <message>
         <source>map %1 is not a map of the plane</source>
-        <translation>l’application %1 n’est pas une application du plan</translation>
+        <translation type="vanished">l’application %1 n’est pas une application du plan</translation>
     </message>
     <message>
         <source>map %1 has a non-finite entry</source>
@@ -1701,6 +1701,45 @@
     <message>
         <source>Fractal with control points</source>
         <translation>Fractale à points de contrôle</translation>
+    </message>
+    <message>
+        <source>expected a 2 x 2 matrix [[a11, a12], [a21, a22]] or a 3 x 3 one</source>
+        <translation>matrice 2 x 2 [[a11, a12], [a21, a22]] ou 3 x 3 attendue</translation>
+    </message>
+    <message>
+        <source>expected a %1 x %1 matrix, as the first map</source>
+        <translation>matrice %1 x %1 attendue, comme pour la première application</translation>
+    </message>
+    <message>
+        <source>map %1 is not a map of the plane or of space like the first</source>
+        <translation>l’application %1 n’est pas une application du plan ou de l’espace de même dimension que la première</translation>
+    </message>
+</context>
+<context>
+    <name>awb::IfsExchange</name>
+    <message>
+        <source>%1, line %2: entry %3: %4 (%5)</source>
+        <translation>%1, ligne %2&#xa0;: entrée %3&#xa0;: %4 (%5)</translation>
+    </message>
+    <message>
+        <source>%1, line %2: %3</source>
+        <translation>%1, ligne %2&#xa0;: %3</translation>
+    </message>
+    <message>
+        <source>%1: the file is larger than %2 MB</source>
+        <translation>%1&#xa0;: le fichier dépasse %2 Mo</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>impossible de lire %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>%1 cannot be computed: %2</source>
+        <translation>%1 ne peut pas être calculé&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>the IFS of %1 acts in a space of dimension %2 that is drawn through a projection (000 §2): a Fractint entry holds maps of the plane or of space only</source>
+        <translation>l’IFS de %1 agit dans un espace de dimension %2 qui est tracé au moyen d’une projection (000 §2)&#xa0;: une entrée Fractint ne contient que des applications du plan ou de l’espace</translation>
     </message>
 </context>
 <context>
@@ -2600,6 +2639,62 @@ Elle a été conservée sous le nom %2.</translation>
             <numerusform>%n matrice copiée en tableau de cellules MATLAB (pour jsr() de la JSR toolbox).</numerusform>
             <numerusform>%n matrices copiées en tableaux de cellules MATLAB (pour jsr() de la JSR toolbox).</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>&amp;Import…</source>
+        <translation>Impor&amp;ter…</translation>
+    </message>
+    <message>
+        <source>Ctrl+I</source>
+        <translation>Ctrl+I</translation>
+    </message>
+    <message>
+        <source>Export &amp;Item As…</source>
+        <translation>Exporter l’é&amp;lément sous…</translation>
+    </message>
+    <message>
+        <source>%1: no entry could be imported</source>
+        <translation>%1&#xa0;: aucune entrée n’a pu être importée</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Importer %1</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importer</translation>
+    </message>
+    <message>
+        <source>Everything Attractor Workbench imports (*.ifs *.obj *.off *.ply);;Fractint IFS (*.ifs);;Meshes (*.obj *.off *.ply)</source>
+        <translation>Tout ce qu’Attractor Workbench sait importer (*.ifs *.obj *.off *.ply);;IFS Fractint (*.ifs);;Maillages (*.obj *.off *.ply)</translation>
+    </message>
+    <message>
+        <source>Imported the other entries; these were left out:</source>
+        <translation>Les autres entrées ont été importées&#x202f;; celles-ci ont été laissées de côté&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Imported %1</source>
+        <translation>Importé&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>Export Item As writes an item with maps: choose one first</source>
+        <translation>«&#xa0;Exporter l’élément sous&#xa0;» écrit un élément doté d’applications&#xa0;: choisissez-en d’abord un</translation>
+    </message>
+    <message>
+        <source>%1 has no matrices to export</source>
+        <translation>%1 n’a pas de matrices à exporter</translation>
+    </message>
+    <message>
+        <source>%1: Export Item As writes .ifs (Fractint) or .m (MATLAB) files</source>
+        <translation>%1&#xa0;: «&#xa0;Exporter l’élément sous&#xa0;» écrit des fichiers .ifs (Fractint) ou .m (MATLAB)</translation>
+    </message>
+    <message>
+        <source>Export Item As</source>
+        <translation>Exporter l’élément sous</translation>
+    </message>
+    <message>
+        <source>Fractint IFS (*.ifs);;MATLAB cell arrays of the matrices (*.m)</source>
+        <translation>IFS Fractint (*.ifs);;Matrices en tableaux de cellules MATLAB (*.m)</translation>
     </message>
 </context>
 <context>
@@ -4995,7 +5090,7 @@ Commands:
 
 Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
 </source>
-        <translation>Utilisation&#xa0;: attractor-cli &lt;commande&gt; [options]
+        <translation type="vanished">Utilisation&#xa0;: attractor-cli &lt;commande&gt; [options]
 
 Commandes&#xa0;:
   render     rendre un élément d’un projet en PNG, SVG ou PDF
@@ -5015,19 +5110,99 @@ Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les
     </message>
     <message>
         <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ); or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab).</source>
-        <translation>Exporter la géométrie d’un élément&#xa0;: l’attracteur F^k(X0) en nuage de points PLY (avec l’application appliquée en dernier pour chaque point), le réseau d’un élément surface après k passes de subdivision classique en maillage OBJ, ou un élément maillage après k étapes avec chaque sommet à sa position limite (OBJ)&#x202f;; ou ses matrices S_i, M_i, A_i en tableaux de cellules MATLAB pour la JSR toolbox (matlab).</translation>
+        <translation type="vanished">Exporter la géométrie d’un élément&#xa0;: l’attracteur F^k(X0) en nuage de points PLY (avec l’application appliquée en dernier pour chaque point), le réseau d’un élément surface après k passes de subdivision classique en maillage OBJ, ou un élément maillage après k étapes avec chaque sommet à sa position limite (OBJ)&#x202f;; ou ses matrices S_i, M_i, A_i en tableaux de cellules MATLAB pour la JSR toolbox (matlab).</translation>
     </message>
     <message>
         <source>ply (attractor points), obj (subdivided mesh) or matlab (matrices).</source>
-        <translation>ply (points de l’attracteur), obj (maillage subdivisé) ou matlab (matrices).</translation>
+        <translation type="vanished">ply (points de l’attracteur), obj (maillage subdivisé) ou matlab (matrices).</translation>
     </message>
     <message>
         <source>--item NAME, --format ply|obj|matlab and --out FILE are required</source>
-        <translation>--item NAME, --format ply|obj|matlab et --out FILE sont obligatoires</translation>
+        <translation type="vanished">--item NAME, --format ply|obj|matlab et --out FILE sont obligatoires</translation>
     </message>
     <message>
         <source>--format must be ply, obj or matlab, got &apos;%1&apos;</source>
-        <translation>--format doit valoir ply, obj ou matlab, et non «&#xa0;%1&#xa0;»</translation>
+        <translation type="vanished">--format doit valoir ply, obj ou matlab, et non «&#xa0;%1&#xa0;»</translation>
+    </message>
+    <message>
+        <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ); its maps as a Fractint .ifs entry (ifs); or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab).</source>
+        <translation>Exporter la géométrie d’un élément&#xa0;: l’attracteur F^k(X0) en nuage de points PLY (avec l’application appliquée en dernier pour chaque point), le réseau d’un élément surface après k passes de subdivision classique en maillage OBJ, ou un élément maillage après k étapes avec chaque sommet à sa position limite (OBJ)&#x202f;; ses applications en entrée de fichier .ifs Fractint (ifs)&#x202f;; ou ses matrices S_i, M_i, A_i en tableaux de cellules MATLAB pour la JSR toolbox (matlab).</translation>
+    </message>
+    <message>
+        <source>ply (attractor points), obj (subdivided mesh), ifs (Fractint) or matlab (matrices).</source>
+        <translation>ply (points de l’attracteur), obj (maillage subdivisé), ifs (Fractint) ou matlab (matrices).</translation>
+    </message>
+    <message>
+        <source>--item NAME, --format ply|obj|ifs|matlab and --out FILE are required</source>
+        <translation>--item NAME, --format ply|obj|ifs|matlab et --out FILE sont obligatoires</translation>
+    </message>
+    <message>
+        <source>--format must be ply, obj, ifs or matlab, got &apos;%1&apos;</source>
+        <translation>--format doit valoir ply, obj, ifs ou matlab (reçu&#xa0;: «&#xa0;%1&#xa0;»)</translation>
+    </message>
+    <message>
+        <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit) as a fractal with control points.</source>
+        <translation>Créer un projet à partir du fichier IFS d’un autre outil&#xa0;: chaque entrée d’un fichier .ifs Fractint (2D et 3D, le format de Fractint, de xfractint et de l’IFS Construction Kit) devient une fractale à points de contrôle.</translation>
+    </message>
+    <message>
+        <source>The file to import (.ifs).</source>
+        <translation>Le fichier à importer (.ifs).</translation>
+    </message>
+    <message>
+        <source>%1: import reads Fractint .ifs files</source>
+        <translation>%1&#xa0;: la commande import lit les fichiers .ifs Fractint</translation>
+    </message>
+    <message>
+        <source>%1: no entry could be imported</source>
+        <translation>%1&#xa0;: aucune entrée n’a pu être importée</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n item(s): %2
+</source>
+        <translation>
+            <numerusform>%1&#xa0;: %n élément&#xa0;: %2
+</numerusform>
+            <numerusform>%1&#xa0;: %n éléments&#xa0;: %2
+</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Usage: attractor-cli &lt;command&gt; [options]
+
+Commands:
+  render     render an item of a project to PNG, SVG or PDF
+  animate    render the frames of an item&apos;s animation (PNG files, MP4/GIF)
+  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)
+  points     the points of F^k(X0) as CSV
+  check      validate a project file
+  rewrite    load and save a project in canonical form
+  export     points (PLY), a net or mesh (OBJ), maps (.ifs), matrices (MATLAB)
+  polygon    the control polygon after K subdivision steps (JSON)
+  import     another tool&apos;s IFS file (Fractint .ifs) as a project
+  import-mesh  a mesh file (OBJ, OFF, PLY) as a project with a mesh item
+  valences   lambda, mu, Reif&apos;s C1 verdict per valence (Catmull-Clark, Loop)
+  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG
+
+Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
+</source>
+        <translation>Utilisation&#xa0;: attractor-cli &lt;commande&gt; [options]
+
+Commandes&#xa0;:
+  render     rendre un élément d’un projet en PNG, SVG ou PDF
+  animate    rendre les images de l’animation d’un élément (fichiers PNG, MP4/GIF)
+  analyse    valeurs propres, contractivité, points fixes, dimension (JSON)
+  points     les points de F^k(X0) en CSV
+  check      valider un fichier de projet
+  rewrite    charger et réenregistrer un projet sous forme canonique
+  export     points (PLY), réseau ou maillage (OBJ), applications (.ifs), matrices (MATLAB)
+  polygon    le polygone de contrôle après K étapes de subdivision (JSON)
+  import     un fichier IFS d’un autre outil (Fractint .ifs) en projet
+  import-mesh  un fichier de maillage (OBJ, OFF, PLY) en projet avec un élément maillage
+  valences   lambda, mu, verdict C1 de Reif par valence (Catmull-Clark, Loop)
+  examples   rendre les figures des articles intégrées (000 fig. 2, 3, 5) en PNG
+
+Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les options d’une commande.
+</translation>
     </message>
 </context>
 <context>
@@ -5039,6 +5214,65 @@ Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les
     <message>
         <source>matrix rows of different lengths</source>
         <translation>lignes de matrice de longueurs différentes</translation>
+    </message>
+</context>
+<context>
+    <name>awb::exchange</name>
+    <message>
+        <source>%1, line %2, column %3</source>
+        <translation>%1, ligne %2, colonne %3</translation>
+    </message>
+    <message>
+        <source>: entry %1</source>
+        <translation>&#xa0;: entrée %1</translation>
+    </message>
+    <message>
+        <source>a &apos;}&apos; without its &apos;{&apos;</source>
+        <translation>accolade «&#xa0;}&#xa0;» sans accolade «&#xa0;{&#xa0;» correspondante</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not followed by &apos;{&apos;: an entry is NAME { rows }</source>
+        <translation>«&#xa0;%1&#xa0;» n’est pas suivi de «&#xa0;{&#xa0;»&#xa0;: une entrée s’écrit NAME { rows }</translation>
+    </message>
+    <message>
+        <source>entry at line %1</source>
+        <translation>entrée de la ligne %1</translation>
+    </message>
+    <message>
+        <source>a &apos;{&apos; inside an entry: its &apos;}&apos; is missing</source>
+        <translation>accolade «&#xa0;{&#xa0;» à l’intérieur d’une entrée&#xa0;: il manque l’accolade «&#xa0;}&#xa0;» de l’entrée</translation>
+    </message>
+    <message>
+        <source>the file ends before the entry&apos;s &apos;}&apos;</source>
+        <translation>le fichier se termine avant l’accolade «&#xa0;}&#xa0;» de l’entrée</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a finite number</source>
+        <translation>«&#xa0;%1&#xa0;» n’est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>the entry has no maps</source>
+        <translation>l’entrée n’a aucune application</translation>
+    </message>
+    <message>
+        <source>%1 numbers: a %2D entry has rows of %3 (the map&apos;s coefficients, then its probability), %4 left over</source>
+        <translation>%1 nombres&#xa0;: une entrée %2D a des lignes de %3 (les coefficients de l’application, puis sa probabilité), il en reste %4</translation>
+    </message>
+    <message>
+        <source>map %1 has the negative probability %2</source>
+        <translation>l’application %1 a une probabilité négative (%2)</translation>
+    </message>
+    <message>
+        <source>a Fractint entry holds maps of the plane or of space, not of dimension %1</source>
+        <translation>une entrée Fractint contient des applications du plan ou de l’espace, pas de dimension %1</translation>
+    </message>
+    <message>
+        <source>the entry&apos;s maps are not all of its dimension</source>
+        <translation>les applications de l’entrée ne sont pas toutes de sa dimension</translation>
+    </message>
+    <message>
+        <source>entry %1: random iteration leaves every bound (its maps do not contract)</source>
+        <translation>entrée %1&#xa0;: l’itération aléatoire dépasse toute borne (ses applications ne sont pas contractantes)</translation>
     </message>
 </context>
 <context>

@@ -1626,7 +1626,7 @@
     </message>
     <message>
         <source>expected a 2 x 2 matrix [[a11, a12], [a21, a22]]</source>
-        <translation>应为 2 × 2 矩阵 [[a11, a12], [a21, a22]]</translation>
+        <translation type="vanished">应为 2 × 2 矩阵 [[a11, a12], [a21, a22]]</translation>
     </message>
     <message>
         <source>the custom form needs at least one map</source>
@@ -1634,7 +1634,7 @@
     </message>
     <message>
         <source>map %1 is not a map of the plane</source>
-        <translation>映射 %1 不是平面上的映射</translation>
+        <translation type="vanished">映射 %1 不是平面上的映射</translation>
     </message>
     <message>
         <source>map %1 has a non-finite entry</source>
@@ -1699,6 +1699,45 @@
     <message>
         <source>Fractal with control points</source>
         <translation>带控制点的分形</translation>
+    </message>
+    <message>
+        <source>expected a 2 x 2 matrix [[a11, a12], [a21, a22]] or a 3 x 3 one</source>
+        <translation>应为 2 x 2 矩阵 [[a11, a12], [a21, a22]] 或 3 x 3 矩阵</translation>
+    </message>
+    <message>
+        <source>expected a %1 x %1 matrix, as the first map</source>
+        <translation>应为 %1 x %1 矩阵，与第一个映射相同</translation>
+    </message>
+    <message>
+        <source>map %1 is not a map of the plane or of space like the first</source>
+        <translation>映射 %1 不是与第一个映射同维的平面映射或空间映射</translation>
+    </message>
+</context>
+<context>
+    <name>awb::IfsExchange</name>
+    <message>
+        <source>%1, line %2: entry %3: %4 (%5)</source>
+        <translation>%1，第 %2 行：条目 %3：%4（%5）</translation>
+    </message>
+    <message>
+        <source>%1, line %2: %3</source>
+        <translation>%1，第 %2 行：%3</translation>
+    </message>
+    <message>
+        <source>%1: the file is larger than %2 MB</source>
+        <translation>%1：文件大于 %2 MB</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 cannot be computed: %2</source>
+        <translation>无法计算 %1：%2</translation>
+    </message>
+    <message>
+        <source>the IFS of %1 acts in a space of dimension %2 that is drawn through a projection (000 §2): a Fractint entry holds maps of the plane or of space only</source>
+        <translation>%1 的 IFS 作用于 %2 维空间，并通过投影绘制（000 §2）：Fractint 条目只能包含平面或空间中的映射</translation>
     </message>
 </context>
 <context>
@@ -2596,6 +2635,62 @@ It was kept as %2.</source>
         <translation>
             <numerusform>已将 %n 个矩阵复制为 MATLAB 元胞数组（用于 JSR 工具箱的 jsr()）。</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>&amp;Import…</source>
+        <translation>导入(&amp;T)…</translation>
+    </message>
+    <message>
+        <source>Ctrl+I</source>
+        <translation>Ctrl+I</translation>
+    </message>
+    <message>
+        <source>Export &amp;Item As…</source>
+        <translation>将对象导出为(&amp;L)…</translation>
+    </message>
+    <message>
+        <source>%1: no entry could be imported</source>
+        <translation>%1：未能导入任何条目</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>导入 %1</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>导入</translation>
+    </message>
+    <message>
+        <source>Everything Attractor Workbench imports (*.ifs *.obj *.off *.ply);;Fractint IFS (*.ifs);;Meshes (*.obj *.off *.ply)</source>
+        <translation>Attractor Workbench 可导入的所有文件 (*.ifs *.obj *.off *.ply);;Fractint IFS (*.ifs);;网格 (*.obj *.off *.ply)</translation>
+    </message>
+    <message>
+        <source>Imported the other entries; these were left out:</source>
+        <translation>已导入其余条目；以下条目被略过：</translation>
+    </message>
+    <message>
+        <source>Imported %1</source>
+        <translation>已导入 %1</translation>
+    </message>
+    <message>
+        <source>Export Item As writes an item with maps: choose one first</source>
+        <translation>“将对象导出为”写出的是带映射的对象：请先选择一个这样的对象</translation>
+    </message>
+    <message>
+        <source>%1 has no matrices to export</source>
+        <translation>%1 没有可导出的矩阵</translation>
+    </message>
+    <message>
+        <source>%1: Export Item As writes .ifs (Fractint) or .m (MATLAB) files</source>
+        <translation>%1：“将对象导出为”只能写出 .ifs（Fractint）或 .m（MATLAB）文件</translation>
+    </message>
+    <message>
+        <source>Export Item As</source>
+        <translation>将对象导出为</translation>
+    </message>
+    <message>
+        <source>Fractint IFS (*.ifs);;MATLAB cell arrays of the matrices (*.m)</source>
+        <translation>Fractint IFS (*.ifs);;矩阵的 MATLAB 元胞数组 (*.m)</translation>
     </message>
 </context>
 <context>
@@ -4988,7 +5083,7 @@ Commands:
 
 Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
 </source>
-        <translation>用法：attractor-cli &lt;command&gt; [options]
+        <translation type="vanished">用法：attractor-cli &lt;command&gt; [options]
 
 命令：
   render     将项目中的某个对象渲染为 PNG、SVG 或 PDF
@@ -5008,19 +5103,97 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ); or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab).</source>
-        <translation>导出对象的几何：将吸引子 F^k(X0) 导出为 PLY 点云（每个点附带最后作用的映射），将曲面对象经 k 轮经典细分后的控制网格导出为 OBJ 网格，或将网格对象细分 k 步后、每个顶点都置于其极限位置导出（OBJ）；或将其矩阵 S_i、M_i、A_i 导出为用于 JSR 工具箱的 MATLAB 元胞数组（matlab）。</translation>
+        <translation type="vanished">导出对象的几何：将吸引子 F^k(X0) 导出为 PLY 点云（每个点附带最后作用的映射），将曲面对象经 k 轮经典细分后的控制网格导出为 OBJ 网格，或将网格对象细分 k 步后、每个顶点都置于其极限位置导出（OBJ）；或将其矩阵 S_i、M_i、A_i 导出为用于 JSR 工具箱的 MATLAB 元胞数组（matlab）。</translation>
     </message>
     <message>
         <source>ply (attractor points), obj (subdivided mesh) or matlab (matrices).</source>
-        <translation>ply（吸引子的点）、obj（细分网格）或 matlab（矩阵）。</translation>
+        <translation type="vanished">ply（吸引子的点）、obj（细分网格）或 matlab（矩阵）。</translation>
     </message>
     <message>
         <source>--item NAME, --format ply|obj|matlab and --out FILE are required</source>
-        <translation>必须给出 --item NAME、--format ply|obj|matlab 和 --out FILE</translation>
+        <translation type="vanished">必须给出 --item NAME、--format ply|obj|matlab 和 --out FILE</translation>
     </message>
     <message>
         <source>--format must be ply, obj or matlab, got &apos;%1&apos;</source>
-        <translation>--format 必须是 ply、obj 或 matlab，得到的是“%1”</translation>
+        <translation type="vanished">--format 必须是 ply、obj 或 matlab，得到的是“%1”</translation>
+    </message>
+    <message>
+        <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ); its maps as a Fractint .ifs entry (ifs); or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab).</source>
+        <translation>导出对象的几何：将吸引子 F^k(X0) 导出为 PLY 点云（每个点附带最后作用的映射），将曲面对象经 k 轮经典细分后的控制网格导出为 OBJ 网格，或将网格对象细分 k 步后、每个顶点都置于其极限位置导出（OBJ）；将其映射导出为 Fractint .ifs 条目（ifs）；或将其矩阵 S_i、M_i、A_i 导出为用于 JSR 工具箱的 MATLAB 元胞数组（matlab）。</translation>
+    </message>
+    <message>
+        <source>ply (attractor points), obj (subdivided mesh), ifs (Fractint) or matlab (matrices).</source>
+        <translation>ply（吸引子的点）、obj（细分网格）、ifs（Fractint）或 matlab（矩阵）。</translation>
+    </message>
+    <message>
+        <source>--item NAME, --format ply|obj|ifs|matlab and --out FILE are required</source>
+        <translation>必须给出 --item NAME、--format ply|obj|ifs|matlab 和 --out FILE</translation>
+    </message>
+    <message>
+        <source>--format must be ply, obj, ifs or matlab, got &apos;%1&apos;</source>
+        <translation>--format 必须为 ply、obj、ifs 或 matlab，实际为“%1”</translation>
+    </message>
+    <message>
+        <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit) as a fractal with control points.</source>
+        <translation>由其他工具的 IFS 文件创建项目：将 Fractint .ifs 文件（2D 和 3D，即 Fractint、xfractint 和 IFS Construction Kit 所用的格式）中的每个条目导入为带控制点的分形。</translation>
+    </message>
+    <message>
+        <source>The file to import (.ifs).</source>
+        <translation>要导入的文件（.ifs）。</translation>
+    </message>
+    <message>
+        <source>%1: import reads Fractint .ifs files</source>
+        <translation>%1：import 命令读取的是 Fractint .ifs 文件</translation>
+    </message>
+    <message>
+        <source>%1: no entry could be imported</source>
+        <translation>%1：未能导入任何条目</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n item(s): %2
+</source>
+        <translation>
+            <numerusform>%1：%n 个对象：%2
+</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Usage: attractor-cli &lt;command&gt; [options]
+
+Commands:
+  render     render an item of a project to PNG, SVG or PDF
+  animate    render the frames of an item&apos;s animation (PNG files, MP4/GIF)
+  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)
+  points     the points of F^k(X0) as CSV
+  check      validate a project file
+  rewrite    load and save a project in canonical form
+  export     points (PLY), a net or mesh (OBJ), maps (.ifs), matrices (MATLAB)
+  polygon    the control polygon after K subdivision steps (JSON)
+  import     another tool&apos;s IFS file (Fractint .ifs) as a project
+  import-mesh  a mesh file (OBJ, OFF, PLY) as a project with a mesh item
+  valences   lambda, mu, Reif&apos;s C1 verdict per valence (Catmull-Clark, Loop)
+  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG
+
+Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
+</source>
+        <translation>用法：attractor-cli &lt;command&gt; [options]
+
+命令：
+  render     将项目中的某个对象渲染为 PNG、SVG 或 PDF
+  animate    渲染对象动画的各帧（PNG 文件，MP4/GIF）
+  analyse    特征值、压缩性、不动点、维数（JSON）
+  points     以 CSV 格式输出 F^k(X0) 的点
+  check      验证项目文件
+  rewrite    加载项目并以规范形式重新保存
+  export     点（PLY）、控制网格或网格（OBJ）、映射（.ifs）、矩阵（MATLAB）
+  polygon    K 步细分后的控制多边形（JSON）
+  import     将其他工具的 IFS 文件（Fractint .ifs）导入为项目
+  import-mesh  将网格文件（OBJ、OFF、PLY）导入为含一个网格对象的项目
+  valences   每个价的 lambda、mu 与 Reif 的 C1 判定（Catmull-Clark、Loop）
+  examples   将内置的论文图形（000 Figs. 2, 3, 5）渲染为 PNG
+
+运行“attractor-cli &lt;command&gt; --help”查看某个命令的选项。
+</translation>
     </message>
 </context>
 <context>
@@ -5032,6 +5205,65 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>matrix rows of different lengths</source>
         <translation>矩阵各行长度不同</translation>
+    </message>
+</context>
+<context>
+    <name>awb::exchange</name>
+    <message>
+        <source>%1, line %2, column %3</source>
+        <translation>%1，第 %2 行，第 %3 列</translation>
+    </message>
+    <message>
+        <source>: entry %1</source>
+        <translation>：条目 %1</translation>
+    </message>
+    <message>
+        <source>a &apos;}&apos; without its &apos;{&apos;</source>
+        <translation>“}”没有与之配对的“{”</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not followed by &apos;{&apos;: an entry is NAME { rows }</source>
+        <translation>“%1”后面没有“{”：条目的格式为 NAME { rows }</translation>
+    </message>
+    <message>
+        <source>entry at line %1</source>
+        <translation>第 %1 行的条目</translation>
+    </message>
+    <message>
+        <source>a &apos;{&apos; inside an entry: its &apos;}&apos; is missing</source>
+        <translation>条目内出现“{”：该条目缺少“}”</translation>
+    </message>
+    <message>
+        <source>the file ends before the entry&apos;s &apos;}&apos;</source>
+        <translation>文件在条目的“}”之前就结束了</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a finite number</source>
+        <translation>“%1”不是有限数</translation>
+    </message>
+    <message>
+        <source>the entry has no maps</source>
+        <translation>该条目没有映射</translation>
+    </message>
+    <message>
+        <source>%1 numbers: a %2D entry has rows of %3 (the map&apos;s coefficients, then its probability), %4 left over</source>
+        <translation>共 %1 个数：%2D 条目每行 %3 个数（先是映射的系数，然后是其概率），多出 %4 个</translation>
+    </message>
+    <message>
+        <source>map %1 has the negative probability %2</source>
+        <translation>映射 %1 的概率 %2 为负</translation>
+    </message>
+    <message>
+        <source>a Fractint entry holds maps of the plane or of space, not of dimension %1</source>
+        <translation>Fractint 条目只包含平面或空间中的映射，而不包含 %1 维的映射</translation>
+    </message>
+    <message>
+        <source>the entry&apos;s maps are not all of its dimension</source>
+        <translation>该条目的映射并非都与条目同维</translation>
+    </message>
+    <message>
+        <source>entry %1: random iteration leaves every bound (its maps do not contract)</source>
+        <translation>条目 %1：随机迭代超出了所有界限（其映射不是压缩映射）</translation>
     </message>
 </context>
 <context>

@@ -13,6 +13,7 @@
 #include "model/ExactCurve.h"
 #include "model/FileWriting.h"
 #include "model/ItemAddress.h"
+#include "model/IfsExchange.h"
 #include "model/NamedMatrix.h"
 #include "model/NumberFormat.h"
 #include "model/PointExport.h"
@@ -89,12 +90,13 @@ int exportData(const QStringList &args)
             CliTr::tr("Export an item's geometry: the attractor F^k(X0) as a PLY point cloud (with "
                    "the map applied last per point), a surface item's net after k rounds of "
                    "classic subdivision as an OBJ mesh, or a mesh item after k steps with every "
-                   "vertex at its limit position (OBJ); or its matrices S_i, M_i, A_i as MATLAB "
-                   "cell arrays for the JSR toolbox (matlab)."));
+                   "vertex at its limit position (OBJ); its maps as a Fractint .ifs entry (ifs); "
+                   "or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox "
+                   "(matlab)."));
         parser.addPositionalArgument("project", CliTr::tr("The .awb project file."));
         parser.addOptions({{"item", CliTr::tr("The item."), "name"},
                            {"format", CliTr::tr("ply (attractor points), obj (subdivided "
-                                                "mesh) or matlab (matrices)."),
+                                                "mesh), ifs (Fractint) or matlab (matrices)."),
                             "fmt"},
                            {"out", CliTr::tr("Output file."), "file"},
                            {"depth", CliTr::tr("PLY: iteration depth (default: the item's)."), "k"},
@@ -106,11 +108,12 @@ int exportData(const QStringList &args)
         parseOrFail(parser, args, 1);
         if (!parser.isSet("item") || !parser.isSet("out") || !parser.isSet("format"))
             throw Failure{
-                CliTr::tr("--item NAME, --format ply|obj|matlab and --out FILE are required"), 2};
+                CliTr::tr("--item NAME, --format ply|obj|ifs|matlab and --out FILE are required"),
+                2};
         const QString format = parser.value("format").toLower();
-        if (format != "ply" && format != "obj" && format != "matlab")
-            throw Failure{CliTr::tr("--format must be ply, obj or matlab, got '%1'").arg(format),
-                          2};
+        if (format != "ply" && format != "obj" && format != "ifs" && format != "matlab")
+            throw Failure{
+                CliTr::tr("--format must be ply, obj, ifs or matlab, got '%1'").arg(format), 2};
         Project project;
         load(project, parser.positionalArguments().first());
         AttractorItem *item = attractorItem(project, parser.value("item"));
@@ -121,7 +124,15 @@ int exportData(const QStringList &args)
         if (!writer.open(outFile, &reason))
             throw Failure{CliTr::tr("cannot write %1: %2").arg(outFile, reason)};
         QIODevice &file = *writer.device();
-        if (format == "matlab") {
+        if (format == "ifs") {
+            QString why;
+            const auto entry = fractintEntryOf(*item, &why);
+            if (!entry)
+                throw Failure{why};
+            const QByteArray text = QByteArray::fromStdString(fractintEntryText(*entry));
+            if (file.write(text) != text.size())
+                throw Failure{CliTr::tr("cannot write %1: %2").arg(outFile, file.errorString())};
+        } else if (format == "matlab") {
             const QByteArray text = matlabMatrices(namedMatrices(*d), item->name()).toUtf8();
             if (file.write(text) != text.size())
                 throw Failure{CliTr::tr("cannot write %1: %2").arg(outFile, file.errorString())};

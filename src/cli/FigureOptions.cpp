@@ -168,7 +168,7 @@ void renderFigure(const Project &project, AttractorItem *item, const FigureOptio
     if (d->ifs.size() > 0 || d->iterate)
         spec.start = item->coreStartSet(*d);
     const auto *mesh = qobject_cast<const SubdivisionMeshItem *>(item);
-    if (d->surface || mesh) {
+    if (d->surface || mesh || item->pointDimension() == 3) {
         const auto *surface = qobject_cast<const SubdivisionSurfaceItem *>(item);
         const SurfaceCamera camera = surface ? surface->camera() : SurfaceCamera{};
         const QStringList view =
@@ -199,10 +199,14 @@ void renderFigure(const Project &project, AttractorItem *item, const FigureOptio
             s.framePoints = net.points;
             s.netPoints = net.points;
             s.netFaces = net.faces;
-        } else {
+        } else if (mesh) {
             s.framePoints = toMatrix(mesh->inputs().vertices, 3);
             s.netPoints = s.framePoints;
             s.netFaces = mesh->inputs().faces;
+        } else {
+            // A fractal of space (an imported 3D IFS): its control points frame the view.
+            s.framePoints = toMatrix(item->controlPoints(0), 3);
+            s.netPoints = s.framePoints;
         }
         s.width = o.width;
         s.height = o.height;

@@ -22,5 +22,7 @@ int polygon(const QStringList &args);
 int importMesh(const QStringList &args);
 // Valences.cpp: the valence explorer's table of a mesh scheme (no project).
 int valences(const QStringList &args);
+// Import.cpp: another tool's IFS file (Fractint .ifs) as a project.
+int importFile(const QStringList &args);
 
 } // namespace awb::cli

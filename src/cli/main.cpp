@@ -99,8 +99,9 @@ void usage()
                     "  points     the points of F^k(X0) as CSV\n"
                     "  check      validate a project file\n"
                     "  rewrite    load and save a project in canonical form\n"
-                    "  export     attractor points as PLY, a subdivided net or mesh (limit) as OBJ\n"
+                    "  export     points (PLY), a net or mesh (OBJ), maps (.ifs), matrices (MATLAB)\n"
                     "  polygon    the control polygon after K subdivision steps (JSON)\n"
+                    "  import     another tool's IFS file (Fractint .ifs) as a project\n"
                     "  import-mesh  a mesh file (OBJ, OFF, PLY) as a project with a mesh item\n"
                     "  valences   lambda, mu, Reif's C1 verdict per valence (Catmull-Clark, Loop)\n"
                     "  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG\n\n"
@@ -169,6 +170,8 @@ int main(int argc, char **argv)
             return cli::importMesh(args);
         if (command == "valences")
             return cli::valences(args);
+        if (command == "import")
+            return cli::importFile(args);
     } catch (const InputError &e) {
         err() << "attractor-cli " << command << ": " << e.what() << "\n";
         return 1;

@@ -1,5 +1,6 @@
 #include "model/FractalItem.h"
 
+#include "core/ifs/Attractor.h"
 #include "core/schemes/ControlPointFractal.h"
 #include "model/Commands.h"
 #include "model/ProjectIO.h"
@@ -35,8 +36,6 @@ PointList toPoints(const Mat &P)
     return out;
 }
 
-QJsonArray rowToJson(const RowVec &v) { return QJsonArray{v(0), v(1)}; }
-
 // A row of `n` finite numbers at `where` (1-based indices in messages, like the points).
 RowVec readRow(const QJsonValue &v, int n, const QString &where)
 {
@@ -67,16 +66,22 @@ std::vector<AffineMap> readMaps(const FieldReader &fields)
         const QJsonValue A = map.value("A");
         if (A.isUndefined())
             map.fail("A", FractalItemTr::tr("missing"));
-        if (!A.isArray() || A.toArray().size() != 2)
-            map.fail("A", FractalItemTr::tr("expected a 2 x 2 matrix [[a11, a12], [a21, a22]]"));
-        AffineMap f{Mat(2, 2), RowVec(2)};
-        for (int r = 0; r < 2; ++r)
-            f.A.row(r) = readRow(A.toArray()[r], 2, map.path("A") + QStringLiteral("[%1]")
+        // The first map's rows fix the dimension: 2 (the plane) or 3 (space).
+        const int d = maps.empty() ? int(A.toArray().size()) : maps.front().dim();
+        if (!A.isArray() || A.toArray().size() != d || (d != 2 && d != 3))
+            map.fail("A", maps.empty()
+                              ? FractalItemTr::tr("expected a 2 x 2 matrix [[a11, a12], [a21, "
+                                                  "a22]] or a 3 x 3 one")
+                              : FractalItemTr::tr("expected a %1 x %1 matrix, as the first map")
+                                    .arg(d));
+        AffineMap f{Mat(d, d), RowVec(d)};
+        for (int r = 0; r < d; ++r)
+            f.A.row(r) = readRow(A.toArray()[r], d, map.path("A") + QStringLiteral("[%1]")
                                                                         .arg(r + 1));
         const QJsonValue b = map.value("b");
         if (b.isUndefined())
             map.fail("b", FractalItemTr::tr("missing"));
-        f.b = readRow(b, 2, map.path("b"));
+        f.b = readRow(b, d, map.path("b"));
         maps.push_back(f);
     }
     return maps;
@@ -117,8 +122,11 @@ MaybeProblem FractalSpec::check() const
         return Problem{"maps", FractalItemTr::tr("the custom form needs at least one map")};
     for (size_t i = 0; i < maps.size(); ++i) {
         const AffineMap &f = maps[i];
-        if (f.A.rows() != 2 || f.A.cols() != 2 || f.b.size() != 2)
-            return Problem{"maps", FractalItemTr::tr("map %1 is not a map of the plane").arg(i + 1)};
+        const Eigen::Index d = maps.front().A.rows();
+        if ((d != 2 && d != 3) || f.A.rows() != d || f.A.cols() != d || f.b.size() != d)
+            return Problem{"maps", FractalItemTr::tr("map %1 is not a map of the plane or of "
+                                                     "space like the first")
+                                       .arg(i + 1)};
         if (!f.A.allFinite() || !f.b.allFinite())
             return Problem{"maps", FractalItemTr::tr("map %1 has a non-finite entry").arg(i + 1)};
     }
@@ -129,6 +137,11 @@ MaybeProblem FractalSpec::check() const
                        FractalItemTr::tr("need at least 3 reference points (000 §4), got %1")
                            .arg(reference.size())};
     return std::nullopt;
+}
+
+int FractalSpec::dimension() const
+{
+    return preset == Preset::Custom && !maps.empty() ? maps.front().dim() : 2;
 }
 
 int FractalSpec::mapCount() const
@@ -167,11 +180,12 @@ bool FractalItem::setFractal(const FractalSpec &spec, int gesture)
 
 DerivedIfs FractalItem::computeIfs() const
 {
-    const Mat P = toMatrix(m_points);
+    const int dim = m_fractal.dimension();
+    const Mat P = toMatrix(m_points, dim);
     std::shared_ptr<const SubdivisionIfs> s;
     DerivedIfs out;
     if (m_fractal.preset == FractalSpec::Preset::Custom) {
-        const Mat R = m_fractal.reference.empty() ? P : toMatrix(m_fractal.reference);
+        const Mat R = m_fractal.reference.empty() ? P : toMatrix(m_fractal.reference, dim);
         if (R.rows() != P.rows())
             throw InputError(FractalItemTr::tr("the %1 reference points and the %2 control points must be "
                                 "equally many")
@@ -198,6 +212,28 @@ DerivedIfs FractalItem::computeIfs() const
     out.toIfsSpace = [s](const Mat &X) { return s->toIfsSpace(X); };
     out.subdivision = s;
     applyAlgorithm(out.ifs);
+    if (dim == 3 && algorithm().mode == AlgorithmSpec::Mode::Random) {
+        // The 3D view iterates its start set level by level; a fractal of space drawn by random
+        // iteration (an imported Fractint 3D entry, whose maps contract very unevenly) streams
+        // the chaos game instead: `samples` points at the item's depth and a quarter as many
+        // per level below it (the view's coarse frames while something moves).
+        const Ifs ifs = out.ifs;
+        const AlgorithmSpec a = algorithm();
+        const auto count = [a](int depth) {
+            return std::max(1.0, double(a.samples) / std::pow(4.0, std::max(0, a.depth - depth)));
+        };
+        out.iterate = [ifs, a, count](const StartSet &start, int depth,
+                                      const std::vector<AttractorSink *> &sinks,
+                                      const IterationControl &control) {
+            ChaosOptions o;
+            o.samples = std::uint64_t(count(depth));
+            o.seed = std::uint64_t(a.seed);
+            const RowVec x0 = start.vertices.rows() > 0 ? RowVec(start.vertices.row(0))
+                                                        : RowVec(RowVec::Zero(ifs.dim()));
+            return chaosGameParallel(ifs, x0, o, sinks, control);
+        };
+        out.pointCount = [count](const StartSet &, int depth) { return count(depth); };
+    }
     return out;
 }
 
@@ -205,33 +241,38 @@ void FractalItem::write(QJsonObject &json) const
 {
     AttractorItem::write(json);
     json["preset"] = FractalSpec::presetNames().at(int(m_fractal.preset));
-    json["control_points"] = ProjectIO::pointsToJson(m_points);
+    const int dim = m_fractal.dimension();
+    json["control_points"] = ProjectIO::pointsToJson(m_points, dim);
     if (m_fractal.preset != FractalSpec::Preset::Custom)
         return;
     QJsonArray maps;
-    for (const AffineMap &f : m_fractal.maps)
-        maps.append(QJsonObject{{"A", QJsonArray{rowToJson(f.A.row(0)), rowToJson(f.A.row(1))}},
-                                {"b", rowToJson(f.b)}});
+    for (const AffineMap &f : m_fractal.maps) {
+        QJsonArray A;
+        for (Eigen::Index r = 0; r < f.A.rows(); ++r)
+            A.append(ProjectIO::rowToJson(f.A.row(r)));
+        maps.append(QJsonObject{{"A", A}, {"b", ProjectIO::rowToJson(f.b)}});
+    }
     json["maps"] = maps;
     json["weights"] = FractalSpec::weightNames().at(int(m_fractal.weights));
     if (!m_fractal.reference.empty())
-        json["reference_points"] = ProjectIO::pointsToJson(m_fractal.reference);
+        json["reference_points"] = ProjectIO::pointsToJson(m_fractal.reference, dim);
 }
 
 void FractalItem::read(const FieldReader &fields)
 {
-    AttractorItem::read(fields);
+    // The maps first: their dimension is that of every point, the start set's too.
     FractalSpec spec;
     spec.preset = FractalSpec::Preset(fields.choice("preset", FractalSpec::presetNames()));
     if (spec.preset == FractalSpec::Preset::Custom) {
         spec.maps = readMaps(fields);
         spec.weights = FractalSpec::Weights(
             fields.choice("weights", FractalSpec::weightNames(), int(spec.weights)));
-        spec.reference = fields.points("reference_points", PointList{});
+        spec.reference = fields.points("reference_points", PointList{}, spec.dimension());
     }
     fields.require(spec.check());
     m_fractal = spec;
-    m_points = fields.points("control_points");
+    AttractorItem::read(fields);
+    m_points = fields.points("control_points", std::nullopt, spec.dimension());
 }
 
 // ---- generic parameters ---------------------------------------------------------------------

@@ -15,7 +15,9 @@ public:
     enum class Weights { Nearest, LeastNorm };
     Preset preset = Preset::Koch;
     // Custom only (kept while a preset is chosen, so switching back restores them).
-    std::vector<AffineMap> maps;   // row convention x |-> x A + b, A: 2 x 2, b: 1 x 2
+    // Row convention x |-> x A + b: A 2 x 2, b 1 x 2 in the plane; A 3 x 3, b 1 x 3 in space
+    // (all maps of one dimension; the control and reference points have it too).
+    std::vector<AffineMap> maps;
     Weights weights = Weights::Nearest;
     // The points the S_i are built for (S_i R = f_i(R)); empty: the control points themselves,
     // which reproduces the IFS's own attractor until a point is moved.
@@ -25,6 +27,8 @@ public:
     // Custom: at least one map, each 2 x 2 and finite; reference points finite, none or >= 3.
     MaybeProblem check() const;
     int mapCount() const;
+    // 2, or 3 for own maps of space.
+    int dimension() const;
     static const QStringList &presetNames();
     static const QStringList &weightNames();
 };
@@ -53,6 +57,7 @@ public:
                       QString *error = nullptr) override;
 
     int mapCount() const override { return m_fractal.mapCount(); }
+    int pointDimension() const override { return m_fractal.dimension(); }
     int controlPointSetCount() const override { return 1; }
     // A preset's S_i fix the number of points, and so do custom reference points; a custom
     // IFS on its own control points takes any number (>= 3).

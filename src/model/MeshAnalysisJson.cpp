@@ -3,6 +3,7 @@
 #include "core/mesh/MeshAnalysis.h"
 #include "core/mesh/MeshPieces.h"
 #include "core/mesh/VertexSpectrum.h"
+#include "model/ProjectIO.h"
 #include "model/SubdivisionMeshItem.h"
 
 #include <QJsonArray>
@@ -10,14 +11,6 @@
 namespace awb {
 
 namespace {
-
-QJsonArray rowJson(const RowVec &r)
-{
-    QJsonArray a;
-    for (Eigen::Index c = 0; c < r.size(); ++c)
-        a.append(r(c));
-    return a;
-}
 
 QJsonObject characteristicJson(const VertexSpectrum &s)
 {
@@ -57,8 +50,8 @@ QJsonObject vertexJson(const ExtraordinaryVertex &e, MeshScheme scheme)
     o["ring"] = QString::fromStdString(e.ring);
     o["ring_size"] = e.ringSize;
     if (e.limit.size() == 3) {
-        o["limit"] = rowJson(e.limit);
-        o["normal"] = rowJson(e.normal);
+        o["limit"] = ProjectIO::rowToJson(e.limit);
+        o["normal"] = ProjectIO::rowToJson(e.normal);
     }
     return o;
 }

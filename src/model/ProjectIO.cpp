@@ -510,6 +510,14 @@ std::unique_ptr<Item> ProjectIO::readItem(const QJsonValue &value, const QString
 
 // ---- common values ----------------------------------------------------------------------------
 
+QJsonArray ProjectIO::rowToJson(const RowVec &row)
+{
+    QJsonArray a;
+    for (Eigen::Index k = 0; k < row.size(); ++k)
+        a.append(row(k));
+    return a;
+}
+
 QJsonArray ProjectIO::pointsToJson(const PointList &points, int dim)
 {
     QJsonArray out;

@@ -114,6 +114,8 @@ public:
     // ---- the common values, for the items' read()/write()
     // dim: 2 writes [x, y], 3 writes [x, y, z] (surface items).
     static QJsonArray pointsToJson(const PointList &points, int dim = 2);
+    // A row of numbers (a map's b, a row of its A, a limit position) as a JSON array.
+    static QJsonArray rowToJson(const RowVec &row);
     static QJsonObject startSetToJson(const StartSetSpec &s, int dim = 2);
     static StartSetSpec readStartSet(const FieldReader &r, int dim = 2);
     static QJsonObject algorithmToJson(const AlgorithmSpec &a);

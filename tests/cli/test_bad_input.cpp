@@ -228,6 +228,15 @@ const std::map<QString, Maker> &inputs()
         {"mesh-loop-quads", [](QDir &d, QStringList *) {
              return file(d, "quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
          }},
+        // ---- other tools' files (issue 34)
+        {"ifs-row-length", [](QDir &d, QStringList *) {
+             return file(d, "short.ifs", "square {\n  .5 0 0 .5 0 0\n}\n");
+         }},
+        {"ifs-not-a-number", [](QDir &d, QStringList *) {
+             return file(d, "words.ifs", "half { .5 0 0 .5 0 0 .5  .5 0 0 .5 .5 0 .5 }\n"
+                                         "; the next entry has a typo\n"
+                                         "bad { .5 0 0 .5 x 0 .5 }\n");
+         }},
         // ---- numbers
         {"million-points", [](QDir &d, QStringList *) {
              QByteArray pts;

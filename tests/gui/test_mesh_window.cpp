@@ -29,6 +29,7 @@
 #include <sstream>
 
 #include "ImageCompare.h"
+#include "TestFiles.h"
 #include "TestMain.h"
 #include "TestTime.h"
 
@@ -47,11 +48,7 @@ private slots:
 private:
     QString write(const QString &name, const QByteArray &text)
     {
-        const QString path = m_dir.filePath(name);
-        QFile f(path);
-        f.open(QIODevice::WriteOnly);
-        f.write(text);
-        return path;
+        return awb::test::writeFile(m_dir, name, text);
     }
     QTemporaryDir m_dir;
 };

@@ -433,6 +433,10 @@ void MainWindow::createActions()
          });
     make(QStringLiteral("actionOpen"), tr("&Open…"), QStringLiteral("document-open"),
          QKeySequence::Open, &MainWindow::openDialog);
+    make(QStringLiteral("actionImport"), tr("&Import…"), QStringLiteral("document-import"),
+         QKeySequence(tr("Ctrl+I")), &MainWindow::importDialog);
+    make(QStringLiteral("actionExportItemAs"), tr("Export &Item As…"),
+         QStringLiteral("document-export"), QKeySequence(), &MainWindow::exportItemAsDialog);
     make(QStringLiteral("actionImportMesh"), tr("&Import Mesh…"),
          QStringLiteral("document-import"), QKeySequence(), &MainWindow::importMeshDialog);
     make(QStringLiteral("actionExportMesh"), tr("Export &Mesh…"),
@@ -674,6 +678,7 @@ void MainWindow::createMenus()
     m_examplesMenu = file->addMenu(tr("Open E&xample"));
     m_examplesMenu->setObjectName(QStringLiteral("menuExamples"));
     connect(m_examplesMenu, &QMenu::aboutToShow, this, &MainWindow::fillExamplesMenu);
+    file->addAction(action(QStringLiteral("actionImport")));
     file->addAction(action(QStringLiteral("actionImportMesh")));
     file->addAction(action(QStringLiteral("actionSave")));
     file->addAction(action(QStringLiteral("actionSaveAs")));
@@ -686,6 +691,7 @@ void MainWindow::createMenus()
     file->addAction(action(QStringLiteral("actionExport")));
     file->addAction(action(QStringLiteral("actionExportPoints")));
     file->addAction(action(QStringLiteral("actionExportMesh")));
+    file->addAction(action(QStringLiteral("actionExportItemAs")));
     file->addSeparator();
     file->addAction(action(QStringLiteral("actionQuit")));
 

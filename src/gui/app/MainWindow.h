@@ -71,6 +71,14 @@ public:
     // false, with the reader's or the mesh's message in *error, when it is refused (nothing
     // added).
     bool importMesh(const QString &fileName, MeshScheme scheme, QString *error = nullptr);
+    // File > Import…: another tool's IFS file (Fractint .ifs: every entry an item, all in one
+    // undo step) or a mesh (importMesh). False with *error when nothing could be imported;
+    // entries left out are listed in *problems (the window shows them).
+    bool importIfs(const QString &fileName, QStringList *problems = nullptr,
+                   QString *error = nullptr);
+    // File > Export Item As…: the current item as a Fractint .ifs entry (.ifs) or its matrices
+    // as MATLAB cell arrays (.m), by suffix. False with the reason in *error.
+    bool exportItemAs(const QString &fileName, QString *error = nullptr);
     // File > Export Mesh…: the current mesh item after `rounds` steps, every vertex at its
     // exact limit position, as OBJ. False with the reason in *error.
     bool exportMesh(const QString &fileName, int rounds, QString *error = nullptr);
@@ -163,6 +171,10 @@ private:
     // Mesh surface (the starting meshes), File > Import Mesh.
     void addMeshMenu(QMenu *add, const QString &title);
     void importMeshDialog();
+    // Asks for the scheme and imports the mesh file (Import Mesh, Import).
+    void importMeshFile(const QString &file);
+    void importDialog();
+    void exportItemAsDialog();
     void exportMeshDialog();
     // MainWindowExport.cpp: the printed sheet of the current item (with a mesh's focused
     // vertex: its matrix and characteristic map).

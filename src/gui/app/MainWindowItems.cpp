@@ -153,8 +153,12 @@ void MainWindow::importMeshDialog()
     const QString file = QFileDialog::getOpenFileName(
         this, tr("Import Mesh"), QString(),
         tr("Meshes (*.obj *.off *.ply);;Wavefront OBJ (*.obj);;OFF (*.off);;PLY (*.ply)"));
-    if (file.isEmpty())
-        return;
+    if (!file.isEmpty())
+        importMeshFile(file);
+}
+
+void MainWindow::importMeshFile(const QString &file)
+{
     const QStringList schemes{tr("Catmull–Clark (any polygons)"), tr("Loop (triangles only)")};
     bool ok = false;
     const QString chosen = QInputDialog::getItem(this, tr("Import Mesh"),

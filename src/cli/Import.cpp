@@ -1,0 +1,64 @@
+// attractor-cli import: the IFS files of other tools as a project (issue 34) -- every entry of
+// a Fractint .ifs file (2D and 3D) as a custom fractal with control points. Entries that are
+// malformed are named with their line and column on stderr (exit 1), the others are kept.
+
+#include "cli/CommandSupport.h"
+#include "cli/ProjectCommands.h"
+
+#include "model/IfsExchange.h"
+#include "model/Item.h"
+#include "model/Project.h"
+
+#include <QCommandLineParser>
+#include <QFileInfo>
+
+namespace awb::cli {
+
+int importFile(const QStringList &args)
+{
+    return guarded([&] {
+        QCommandLineParser parser;
+        parser.setApplicationDescription(CliTr::tr(
+            "Make a project of another tool's IFS file: every entry of a Fractint .ifs file (2D "
+            "and 3D, the format of Fractint, xfractint and the IFS Construction Kit) as a "
+            "fractal with control points."));
+        parser.addPositionalArgument("file", CliTr::tr("The file to import (.ifs)."));
+        parser.addOptions({{"out", CliTr::tr("The project file to write (.awb)."), "file"}});
+        parseOrFail(parser, args, 1);
+        if (!parser.isSet("out"))
+            throw Failure{CliTr::tr("--out FILE (the project to write) is required"), 2};
+        const QString file = parser.positionalArguments().first();
+        const QString suffix = QFileInfo(file).suffix().toLower();
+        if (suffix != "ifs")
+            throw Failure{CliTr::tr("%1: import reads Fractint .ifs files").arg(file), 2};
+        ImportedItems imported;
+        try {
+            imported = importFractint(file);
+        } catch (const InputError &e) {
+            throw Failure{QString::fromStdString(e.what())};
+        }
+        for (const QString &p : imported.problems)
+            err() << "attractor-cli: " << p << "\n";
+        if (imported.items.empty())
+            throw Failure{CliTr::tr("%1: no entry could be imported").arg(file)};
+        Project project;
+        QStringList names;
+        for (auto &item : imported.items) {
+            // Entries of one file may share a name: the project's names are unique.
+            const QString base = item->name();
+            QString name = base;
+            for (int k = 2; project.findItem(name); ++k)
+                name = QStringLiteral("%1 (%2)").arg(base).arg(k);
+            item->setName(name);
+            names << project.addItem(std::move(item))->name();
+        }
+        QString error;
+        if (!project.saveAs(parser.value("out"), &error))
+            throw Failure{error};
+        out() << CliTr::tr("%1: %n item(s): %2\n", nullptr, int(names.size()))
+                     .arg(parser.value("out"), names.join(QStringLiteral(", ")));
+        return imported.problems.isEmpty() ? 0 : 1;
+    });
+}
+
+} // namespace awb::cli

@@ -1,0 +1,148 @@
+#include "model/IfsExchange.h"
+
+#include "core/ifs/Attractor.h"
+#include "model/AttractorItem.h"
+#include "model/FractalItem.h"
+#include "model/ProjectIO.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonObject>
+
+#include <cmath>
+#include <sstream>
+
+namespace awb {
+
+namespace {
+
+struct ExchangeTr {
+    Q_DECLARE_TR_FUNCTIONS(awb::IfsExchange)
+};
+
+// The entry as the JSON of a custom "fractal" item (read back through the item's own reader,
+// which checks it as it checks a file).
+QJsonObject fractalJson(const FractintEntry &e)
+{
+    QJsonArray maps;
+    for (const AffineMap &f : e.maps) {
+        QJsonArray A;
+        for (Eigen::Index r = 0; r < f.A.rows(); ++r)
+            A.append(ProjectIO::rowToJson(f.A.row(r)));
+        maps.append(QJsonObject{{"A", A}, {"b", ProjectIO::rowToJson(f.b)}});
+    }
+    const Mat cage = fractintControlCage(e);
+    QJsonArray points;
+    for (Eigen::Index r = 0; r < cage.rows(); ++r)
+        points.append(ProjectIO::rowToJson(cage.row(r)));
+    QJsonArray probabilities;
+    for (double p : e.probabilities)
+        probabilities.append(p);
+    // Fractint's own way: the chaos game with the entry's probabilities (in space too: the 3D
+    // view streams it, FractalItem).
+    const QJsonObject algorithm{{"mode", "random"},
+                                {"samples", e.dimension == 2 ? 400000 : 200000},
+                                {"seed", 1},
+                                {"probabilities", probabilities},
+                                {"depth", 8}};
+    const Mat centre = cage.colwise().mean();
+    return {{"type", "fractal"},
+            {"name", QString::fromStdString(e.name)},
+            {"preset", "custom"},
+            {"weights", "nearest"},
+            {"maps", maps},
+            {"control_points", points},
+            {"algorithm", algorithm},
+            {"start_set", QJsonObject{{"kind", "point"},
+                                      {"points", QJsonArray{ProjectIO::rowToJson(centre.row(0))}}}}};
+}
+
+} // namespace
+
+ImportedItems importFractintText(const QByteArray &text, const QString &fileName)
+{
+    std::istringstream in(text.toStdString());
+    const FractintFile file = readFractintIfs(in);
+    const std::string name = QFileInfo(fileName).fileName().toStdString();
+    ImportedItems out;
+    for (const FractintProblem &p : file.problems)
+        out.problems << QString::fromStdString(p.describe(name));
+    for (const FractintEntry &e : file.entries) {
+        auto item = std::make_unique<FractalItem>();
+        try {
+            const QJsonObject json = fractalJson(e);
+            item->read(FieldReader(json, QString()));
+            item->setName(json["name"].toString());
+        } catch (const LoadError &error) {
+            out.problems << ExchangeTr::tr("%1, line %2: entry %3: %4 (%5)")
+                                .arg(QString::fromStdString(name))
+                                .arg(e.line)
+                                .arg(QString::fromStdString(e.name), error.message, error.field);
+            continue;
+        } catch (const std::exception &error) {
+            out.problems << ExchangeTr::tr("%1, line %2: %3")
+                                .arg(QString::fromStdString(name))
+                                .arg(e.line)
+                                .arg(QString::fromUtf8(error.what()));
+            continue;
+        }
+        out.items.push_back(std::move(item));
+    }
+    return out;
+}
+
+ImportedItems importFractint(const QString &fileName)
+{
+    QFile f(fileName);
+    if (f.size() > ProjectIO::maxFileBytes)
+        throw InputError(ExchangeTr::tr("%1: the file is larger than %2 MB")
+                             .arg(fileName)
+                             .arg(ProjectIO::maxFileBytes / (1024 * 1024))
+                             .toStdString());
+    if (!f.open(QIODevice::ReadOnly))
+        throw InputError(
+            ExchangeTr::tr("cannot read %1: %2").arg(fileName, f.errorString()).toStdString());
+    return importFractintText(f.readAll(), fileName);
+}
+
+std::optional<FractintEntry> fractintEntryOf(const AttractorItem &item, QString *why)
+{
+    FractintEntry e;
+    e.name = item.name().toStdString();
+    const auto *fractal = dynamic_cast<const FractalItem *>(&item);
+    if (fractal && fractal->fractal().preset == FractalSpec::Preset::Custom) {
+        e.maps = fractal->fractal().maps;
+    } else {
+        const auto d = item.derivedIfs();
+        if (!d) {
+            if (why)
+                *why = ExchangeTr::tr("%1 cannot be computed: %2")
+                           .arg(item.name(), item.derivedError());
+            return std::nullopt;
+        }
+        const Ifs &ifs = d->ifs;
+        const int dim = ifs.dim();
+        bool plain = (dim == 2 || dim == 3) && ifs.views.size() == 1
+                     && ifs.views.front().V.rows() == dim && ifs.views.front().V.cols() == dim
+                     && ifs.views.front().V.isIdentity(0) && ifs.views.front().c.isZero(0);
+        if (!plain) {
+            if (why)
+                *why = ExchangeTr::tr("the IFS of %1 acts in a space of dimension %2 that is "
+                                      "drawn through a projection (000 §2): a Fractint entry "
+                                      "holds maps of the plane or of space only")
+                           .arg(item.name())
+                           .arg(dim);
+            return std::nullopt;
+        }
+        e.maps = ifs.maps;
+    }
+    e.dimension = e.maps.empty() ? 2 : e.maps.front().dim();
+    const std::vector<double> &p = item.algorithm().probabilities;
+    for (std::size_t i = 0; i < e.maps.size(); ++i)
+        e.probabilities.push_back(p.size() == e.maps.size() ? p[i]
+                                                            : 1.0 / double(e.maps.size()));
+    return e;
+}
+
+} // namespace awb

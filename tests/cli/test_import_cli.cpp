@@ -1,0 +1,186 @@
+// attractor-cli and other tools' IFS files (issue 34): import makes a project of a Fractint
+// .ifs library -- every well-formed entry a fractal with control points, 2D and 3D, the
+// malformed ones named with their line and column (exit 1) -- and export --format ifs writes an
+// item's maps back: the round trip keeps every coefficient, the imported Sierpinski triangle
+// has the box-counting dimension log 3 / log 2, and its points lie on the triangle's attractor.
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include "TestFiles.h"
+#include "TestMain.h"
+
+#include "CliRunner.h"
+
+#include "core/exchange/FractintIfs.h"
+
+#include <cmath>
+#include <sstream>
+
+using namespace awb;
+
+namespace {
+
+const char *library = R"(; two classics and a tetrahedron
+fern {
+  0     0    0     .16 0 0    .01
+  .85  .04 -.04  .85  0 1.6  .85
+  .2  -.26  .23  .22  0 1.6  .07
+ -.15  .28  .26  .24  0 .44  .07
+}
+sierpinski { .5 0 0 .5 0 0 .333, .5 0 0 .5 .5 0 .333, .5 0 0 .5 .25 .5 .334 }
+tetra (3D) {
+ .5 0 0 0 .5 0 0 0 .5 0 0 0 .25
+ .5 0 0 0 .5 0 0 0 .5 1 0 0 .25
+ .5 0 0 0 .5 0 0 0 .5 0 1 0 .25
+ .5 0 0 0 .5 0 0 0 .5 0 0 1 .25
+}
+typo { .5 0 0 .5 0 0 .5 .5 0 0 .5 .5 }
+)";
+
+} // namespace
+
+class TestImportCli : public QObject {
+    Q_OBJECT
+private slots:
+    void importKeepsTheGoodEntries();
+    void bundledLibrary();
+    void exportRoundTrip();
+    void refusals();
+
+private:
+    int run(const QStringList &args, QByteArray *out = nullptr, QByteArray *err = nullptr)
+    {
+        return awb::test::runProgram(awb::test::cliPath(), args, out, err);
+    }
+    QString write(const QString &name, const QByteArray &text)
+    {
+        return awb::test::writeFile(m_dir, name, text);
+    }
+    QJsonObject analyse(const QString &project, const QString &item)
+    {
+        QByteArray out;
+        if (run({"analyse", project, "--item", item, "--json"}, &out) != 0)
+            return {};
+        return QJsonDocument::fromJson(out).object()["items"].toArray().first().toObject();
+    }
+    QTemporaryDir m_dir;
+};
+
+void TestImportCli::importKeepsTheGoodEntries()
+{
+    const QString lib = write("lib.ifs", library);
+    const QString awb = m_dir.filePath("lib.awb");
+    QByteArray out, err;
+    QCOMPARE(run({"import", lib, "--out", awb}, &out, &err), 1);  // one entry was refused
+    QVERIFY2(err.contains("lib.ifs, line 15, column 25: entry typo: 12 numbers: a 2D entry has "
+                          "rows of 7"),
+             err.constData());
+    QVERIFY2(out.contains("3 item(s): fern, sierpinski, tetra"), out.constData());
+    // The Sierpinski triangle: random iteration with the file's probabilities, and the
+    // box-counting dimension of the paper's gasket, log 3 / log 2 = 1.585.
+    const QJsonObject s = analyse(awb, "sierpinski");
+    QCOMPARE(s["type"].toString(), QString("fractal"));
+    const double dimension = s["box_dimension"].toDouble();
+    QVERIFY2(std::abs(dimension - std::log(3.0) / std::log(2.0)) < 0.05,
+             qPrintable(QString::number(dimension)));
+    // Its points lie on the gasket: each one's coordinates in the triangle's frame have
+    // disjoint binary digits (u AND v = 0 for (u, v) on the dyadic grid of the corners).
+    QCOMPARE(run({"points", awb, "--item", "sierpinski", "--depth", "6", "--start",
+                  "point:0,0", "--csv"},
+                 &out, &err),
+             0);
+    const QList<QByteArray> lines = out.trimmed().split('\n');
+    QCOMPARE(lines.size(), 1 + 729);  // a header, 3^6 images of the corner
+    for (int k = 1; k < lines.size(); ++k) {
+        const QList<QByteArray> xy = lines[k].split(',');  // x,y,map,view
+        const double x = xy.value(0).toDouble(), y = xy.value(1).toDouble();
+        const long v = std::lround(y * 128), u = std::lround((x - 0.5 * y) * 128);
+        QVERIFY2(u >= 0 && v >= 0 && (u & v) == 0, lines[k].constData());
+    }
+    // The tetrahedron is an item of space, rendered in 3D.
+    const QJsonObject t = analyse(awb, "tetra");
+    QCOMPARE(t["type"].toString(), QString("fractal"));
+    const QString png = m_dir.filePath("tetra.png");
+    QCOMPARE(run({"render", awb, "--item", "tetra", "--out", png, "--size", "300x300"}, &out,
+                 &err),
+             0);
+    QVERIFY(QImage(png).width() == 300);
+}
+
+void TestImportCli::bundledLibrary()
+{
+    // examples/fractint-classics.ifs: every entry imports (exit 0), 2D and 3D.
+    QByteArray out, err;
+    const QString awb = m_dir.filePath("classics.awb");
+    QCOMPARE(run({"import", awb::test::examplePath("fractint-classics.ifs"), "--out", awb}, &out,
+                 &err),
+             0);
+    QVERIFY2(out.contains("5 item(s): fern, triangle, levy, 3dfern, tetrahedron"),
+             out.constData());
+    QVERIFY2(err.isEmpty(), err.constData());
+    // The triangle is Sierpinski's (dimension log 3 / log 2), the 3D entries items of space.
+    const double d = analyse(awb, "triangle")["box_dimension"].toDouble();
+    QVERIFY2(std::abs(d - std::log(3.0) / std::log(2.0)) < 0.05, qPrintable(QString::number(d)));
+    QCOMPARE(run({"points", awb, "--item", "tetrahedron", "--csv"}, &out, &err), 0);
+    QVERIFY2(out.startsWith("x,y,z,"), out.left(40).constData());
+}
+
+void TestImportCli::exportRoundTrip()
+{
+    const QString awb = m_dir.filePath("round.awb");
+    QByteArray out, err;
+    run({"import", write("round.ifs", library), "--out", awb}, &out, &err);
+    for (const char *name : {"fern", "tetra"}) {
+        const QString ifs = m_dir.filePath(QString(name) + "-out.ifs");
+        QCOMPARE(run({"export", awb, "--item", name, "--format", "ifs", "--out", ifs}, &out,
+                     &err),
+                 0);
+        QFile f(ifs);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        std::istringstream in(f.readAll().toStdString());
+        const FractintFile back = readFractintIfs(in);
+        std::istringstream original(library);
+        const FractintFile file = readFractintIfs(original);
+        const FractintEntry &want = std::string(name) == "fern" ? file.entries[0]
+                                                                : file.entries[2];
+        QCOMPARE(int(back.entries.size()), 1);
+        QCOMPARE(back.entries[0].name, want.name);
+        QCOMPARE(back.entries[0].probabilities, want.probabilities);
+        for (std::size_t i = 0; i < want.maps.size(); ++i)
+            QVERIFY((back.entries[0].maps[i].A - want.maps[i].A).norm() < 1e-12
+                    && (back.entries[0].maps[i].b - want.maps[i].b).norm() < 1e-12);
+    }
+}
+
+void TestImportCli::refusals()
+{
+    QByteArray out, err;
+    QCOMPARE(run({"import", write("none.ifs", "; nothing\nonly {\n"), "--out",
+                  m_dir.filePath("none.awb")},
+                 &out, &err),
+             1);
+    QVERIFY2(err.contains("none.ifs, line 2, column 6: entry only: the file ends before the "
+                          "entry's '}'")
+                 && err.contains("no entry could be imported"),
+             err.constData());
+    QVERIFY(!QFile::exists(m_dir.filePath("none.awb")));
+    QCOMPARE(run({"import", write("x.txt", "a { }"), "--out", m_dir.filePath("x.awb")}, &out,
+                 &err),
+             2);
+    QVERIFY(err.contains("Fractint .ifs"));
+    // A B-spline curve's IFS acts in the lifted space of 000 §2: no Fractint entry.
+    const QString curve = awb::test::examplePath("000-fig02-cubic-bspline-from-point.awb");
+    QCOMPARE(run({"export", curve, "--item", "000 Fig. 2: cubic B-spline from a point",
+                  "--format", "ifs", "--out", m_dir.filePath("c.ifs")},
+                 &out, &err),
+             1);
+    QVERIFY2(err.contains("drawn through a projection"), err.constData());
+}
+
+AWB_TEST_MAIN(TestImportCli)
+#include "test_import_cli.moc"

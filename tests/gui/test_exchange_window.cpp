@@ -1,0 +1,95 @@
+// Other tools' files in the window (issue 34): File > Import adds every entry of a Fractint
+// .ifs file in one undo step and says which entries were left out (line and column); File >
+// Export Item As writes the current item as a Fractint entry or its matrices as MATLAB cell
+// arrays, and refuses an item whose IFS is not one of the plane or of space, by name.
+#include "gui/app/MainWindow.h"
+#include "gui/app/Messages.h"
+#include "model/FractalItem.h"
+#include "model/Project.h"
+
+#include <QAction>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include "TestFiles.h"
+#include "TestMain.h"
+
+using namespace awb;
+
+class TestExchangeWindow : public QObject {
+    Q_OBJECT
+private slots:
+    void importIsOneUndoStep();
+    void exportItemAs();
+
+private:
+    QString write(const QString &name, const QByteArray &text)
+    {
+        return awb::test::writeFile(m_dir, name, text);
+    }
+    QTemporaryDir m_dir;
+};
+
+void TestExchangeWindow::importIsOneUndoStep()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.filePath("recovery"));
+    const int before = w.project()->childCount();
+    const QString file = write("two.ifs", "; two entries and a typo\n"
+                                          "half { .5 0 0 .5 0 0 .5  .5 0 0 .5 .5 .5 .5 }\n"
+                                          "space (3D) { .5 0 0 0 .5 0 0 0 .5 0 0 0 1 }\n"
+                                          "typo { .5 0 0 .5 0 }\n");
+    QStringList problems;
+    QString error;
+    QVERIFY2(w.importIfs(file, &problems, &error), qPrintable(error));
+    QCOMPARE(w.project()->childCount(), before + 2);
+    QCOMPARE(problems.size(), 1);
+    QVERIFY2(problems[0].startsWith("two.ifs, line 4, column 8: entry typo"),
+             qPrintable(problems[0]));
+    auto *half = qobject_cast<FractalItem *>(w.project()->findItem("half"));
+    auto *space = qobject_cast<FractalItem *>(w.project()->findItem("space"));
+    QVERIFY(half && space);
+    QCOMPARE(half->pointDimension(), 2);
+    QCOMPARE(space->pointDimension(), 3);
+    QCOMPARE(half->algorithm().mode, AlgorithmSpec::Mode::Random);
+    QCOMPARE(w.currentItem(), half);
+    w.project()->undoStack()->undo();
+    QCOMPARE(w.project()->childCount(), before);
+    // Nothing to import: the reason, nothing added.
+    QVERIFY(!w.importIfs(write("bad.ifs", "typo { .5 0 0 .5 0 }\n"), &problems, &error));
+    QVERIFY2(error.contains("no entry could be imported"), qPrintable(error));
+    QCOMPARE(w.project()->childCount(), before);
+    QVERIFY(w.findChild<QAction *>("actionImport"));
+    QVERIFY(w.findChild<QAction *>("actionExportItemAs"));
+}
+
+void TestExchangeWindow::exportItemAs()
+{
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.filePath("recovery"));
+    QString error;
+    QVERIFY(w.importIfs(write("half.ifs", "half { .5 0 0 .5 0 0 .5  .5 0 0 .5 .5 .5 .5 }\n"),
+                        nullptr, &error));
+    const QString ifs = m_dir.filePath("out.ifs");
+    QVERIFY2(w.exportItemAs(ifs, &error), qPrintable(error));
+    QFile f(ifs);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QByteArray text = f.readAll();
+    QVERIFY2(text.startsWith("half {\n  0.5 0 0 0.5 0 0  0.5\n  0.5 0 0 0.5 0.5 0.5  0.5\n}"),
+             text.constData());
+    const QString m = m_dir.filePath("out.m");
+    QVERIFY2(w.exportItemAs(m, &error), qPrintable(error));
+    QFile mf(m);
+    QVERIFY(mf.open(QIODevice::ReadOnly));
+    QVERIFY(mf.readAll().contains("S = {["));
+    QVERIFY(!w.exportItemAs(m_dir.filePath("out.txt"), &error));
+    QVERIFY2(error.contains(".ifs (Fractint) or .m (MATLAB)"), qPrintable(error));
+    // The cubic B-spline of a new project acts in the lifted space of 000 §2.
+    w.newProject();
+    QVERIFY(!w.exportItemAs(ifs, &error));
+    QVERIFY2(error.contains("drawn through a projection"), qPrintable(error));
+}
+
+AWB_TEST_MAIN(TestExchangeWindow)
+#include "test_exchange_window.moc"
