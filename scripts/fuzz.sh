@@ -17,6 +17,8 @@
 #                        refused with a message, or a mesh that writeObj and readMesh give back
 #                        unchanged; small readers, so 20 s each (AWB_FUZZ_MESH_SECONDS) in the
 #                        run of all targets, SECONDS when named
+#   fuzz_fractint_ifs    any bytes as a Fractint .ifs library: every entry kept (and given back
+#                        by the writer) or named with its place; 20 s like the mesh readers
 # Seeds: the examples, the bad files of the tests (tests/fuzz/seeds/) and the crashes found so
 # far (tests/fuzz/regressions/, also loaded by the normal test suite). One input may take at
 # most 1 s, 2 GB; leaks are reported. A crash, a hang or a leak fails the run and leaves its
@@ -36,7 +38,7 @@ ALL=0
 if [ ${#TARGETS[@]} -eq 0 ]; then
   ALL=1
   TARGETS=(fuzz_project_loader fuzz_item_ifs fuzz_png_project fuzz_svg_project
-           fuzz_cli_arguments fuzz_mesh_obj fuzz_mesh_off fuzz_mesh_ply)
+           fuzz_cli_arguments fuzz_mesh_obj fuzz_mesh_off fuzz_mesh_ply fuzz_fractint_ifs)
 fi
 MESH_SECS="${AWB_FUZZ_MESH_SECONDS:-20}"
 bash scripts/setup.sh --packages-only
@@ -50,7 +52,8 @@ export QT_QPA_PLATFORM=offscreen
 jobs="${AWB_FUZZ_JOBS:-$(nproc)}"
 fuzz_one() {
   local t="$1" secs="$SECS"
-  if [ "$ALL" = 1 ] && [[ "$t" == fuzz_mesh_* ]] && [ "$MESH_SECS" -lt "$SECS" ]; then
+  if [ "$ALL" = 1 ] && [[ "$t" == fuzz_mesh_* || "$t" == fuzz_fractint_ifs ]] \
+     && [ "$MESH_SECS" -lt "$SECS" ]; then
     secs="$MESH_SECS"
   fi
   local corpus="build-asan/corpus/$t" artifacts="build-asan/artifacts/$t/"
@@ -62,7 +65,8 @@ fuzz_one() {
     fuzz_png_project) seeds=(tests/fuzz/seeds/png tests/fuzz/regressions/png) ;;
     fuzz_svg_project) seeds=(tests/fuzz/seeds/svg tests/fuzz/regressions/svg) ;;
     fuzz_cli_arguments) seeds=(tests/fuzz/seeds/cli tests/fuzz/regressions/cli) ;;
-    fuzz_mesh_*) seeds=(tests/fuzz/seeds/${t#fuzz_} tests/fuzz/regressions/${t#fuzz_}) ;;
+    fuzz_mesh_*|fuzz_fractint_ifs)
+      seeds=(tests/fuzz/seeds/${t#fuzz_} tests/fuzz/regressions/${t#fuzz_}) ;;
   esac
   local existing=() s
   for s in "${seeds[@]}"; do [ -d "$s" ] && existing+=("$s"); done
