@@ -35,7 +35,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     for (const awb::FractintProblem &p : file.problems)
         if (p.line < 1 || p.column < 1 || p.message.empty())
             fail("a problem without its place or message");
+    // The checks of an entry cost far more than reading it (the cage runs 6000 steps of random
+    // iteration): the first entries only, so that one input stays well within libFuzzer's 1 s.
+    std::size_t checked = 0;
     for (const awb::FractintEntry &e : file.entries) {
+        if (++checked > 8)
+            break;
         if ((e.dimension != 2 && e.dimension != 3) || e.maps.empty()
             || e.probabilities.size() != e.maps.size())
             fail("an entry without maps, or maps and probabilities of different counts");
@@ -62,6 +67,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
             if (!near(e.probabilities[i], g.probabilities[i]))
                 fail("a probability read back differs");
         }
+        if (checked > 2)
+            continue;
         try {
             if (!awb::fractintControlCage(e).allFinite())
                 fail("a control cage with corners that are not finite");
