@@ -130,6 +130,7 @@ protected:
 
 private:
     void createViews();
+    // MainWindowActions.cpp (with addLanguageMenu): every action, and the menus and tool bar.
     void createActions();
     void createMenus();
     void createDocks();
