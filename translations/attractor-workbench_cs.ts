@@ -4538,6 +4538,10 @@ Byla ponechána jako %2.</translation>
         <source>too many points to index</source>
         <translation>příliš mnoho bodů k indexování</translation>
     </message>
+    <message>
+        <source>; but the IFS contracts on average (Lyapunov exponent %1 along the orbit): random iteration draws its attractor</source>
+        <translation>; IFS se ale v průměru zkracuje (Ljapunovův exponent %1 podél orbity): náhodná iterace jeho atraktor vykreslí</translation>
+    </message>
 </context>
 <context>
     <name>awb::cli</name>

@@ -4531,6 +4531,10 @@ Elle a été conservée sous le nom %2.</translation>
         <source>too many points to index</source>
         <translation>trop de points à indexer</translation>
     </message>
+    <message>
+        <source>; but the IFS contracts on average (Lyapunov exponent %1 along the orbit): random iteration draws its attractor</source>
+        <translation>&#x202f;; mais l’IFS est contractant en moyenne (exposant de Lyapounov %1 le long de l’orbite)&#xa0;: l’itération aléatoire trace son attracteur</translation>
+    </message>
 </context>
 <context>
     <name>awb::cli</name>

@@ -4524,6 +4524,10 @@ It was kept as %2.</source>
         <source>too many points to index</source>
         <translation>要索引的点太多</translation>
     </message>
+    <message>
+        <source>; but the IFS contracts on average (Lyapunov exponent %1 along the orbit): random iteration draws its attractor</source>
+        <translation>；但该 IFS 平均意义下是压缩的（沿轨道的李雅普诺夫指数为 %1）：随机迭代可以绘出其吸引子</translation>
+    </message>
 </context>
 <context>
     <name>awb::cli</name>

@@ -217,6 +217,15 @@ QJsonObject analyseItem(const AttractorItem *item)
         }
     }
     o["maps"] = maps;
+    // A map that does not contract: whether the IFS contracts on average (the top Lyapunov
+    // exponent of its random products with the item's probabilities, core IfsCheck), which is
+    // what random iteration needs.
+    if (!d->iterate && d->ifs.size() > 0)
+        if (const IfsCheck check = checkIfs(d->ifs); !check.contractive) {
+            o["contractive_on_average"] = check.contractsOnAverage();
+            o["lyapunov_exponent"] =
+                check.lyapunov ? QJsonValue(*check.lyapunov) : QJsonValue(QJsonValue::Null);
+        }
     o["subdominant"] = subdominants;
     // A mesh: its extraordinary vertices and the pieces of its IFS with condensation.
     if (const auto *mesh = qobject_cast<const SubdivisionMeshItem *>(item)) {

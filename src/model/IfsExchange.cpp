@@ -47,6 +47,8 @@ QJsonObject fractalJson(const FractintEntry &e)
                                 {"probabilities", probabilities},
                                 {"depth", 8}};
     const Mat centre = cage.colwise().mean();
+    QJsonArray start;  // (not QJsonArray{array}: clang takes that for a copy of the inner one)
+    start.append(ProjectIO::rowToJson(centre.row(0)));
     return {{"type", "fractal"},
             {"name", QString::fromStdString(e.name)},
             {"preset", "custom"},
@@ -54,8 +56,7 @@ QJsonObject fractalJson(const FractintEntry &e)
             {"maps", maps},
             {"control_points", points},
             {"algorithm", algorithm},
-            {"start_set", QJsonObject{{"kind", "point"},
-                                      {"points", QJsonArray{ProjectIO::rowToJson(centre.row(0))}}}}};
+            {"start_set", QJsonObject{{"kind", "point"}, {"points", start}}}};
 }
 
 } // namespace

@@ -89,8 +89,10 @@ void checkRenderRequest(const RenderRequest &r)
     if (r.size.width() < 1 || r.size.height() < 1)
         throw InputError("the image is empty");
     if (!r.iterate) {
+        // Random iteration needs only contraction on average (a flame's maps, IfsCheck).
         const IfsCheck check = checkIfs(*r.ifs);
-        if (!check.contractive)
+        const bool random = r.mode == RenderRequest::Mode::Random;
+        if (!(random ? check.contractsOnAverage() : check.contractive))
             throw InputError(check.message);
     }
     if (r.start.vertices.rows() == 0)

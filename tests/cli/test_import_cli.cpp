@@ -50,6 +50,7 @@ private slots:
     void importKeepsTheGoodEntries();
     void bundledLibrary();
     void exportRoundTrip();
+    void contractiveOnAverage();
     void refusals();
 
 private:
@@ -155,6 +156,31 @@ void TestImportCli::exportRoundTrip()
             QVERIFY((back.entries[0].maps[i].A - want.maps[i].A).norm() < 1e-12
                     && (back.entries[0].maps[i].b - want.maps[i].b).norm() < 1e-12);
     }
+}
+
+void TestImportCli::contractiveOnAverage()
+{
+    // A map that grows (1.2 x) among one that shrinks: random iteration still converges, the
+    // IFS contracts on average (Lyapunov exponent .3 log 1.2 + .7 log .3 = -0.788): imported,
+    // reported, rendered; deterministic iteration of the same maps is refused.
+    const QString awb = m_dir.filePath("avg.awb");
+    QByteArray out, err;
+    QCOMPARE(run({"import", write("avg.ifs", "avg { 1.2 0 0 1.2 0 0 .3  .3 0 0 .3 1 1 .7 }\n"),
+                  "--out", awb},
+                 &out, &err),
+             0);
+    const QJsonObject a = analyse(awb, "avg");
+    QVERIFY(a["contractive_on_average"].toBool());
+    QVERIFY2(std::abs(a["lyapunov_exponent"].toDouble() - (.3 * std::log(1.2) + .7 * std::log(.3)))
+                 < 0.03,
+             qPrintable(QString::number(a["lyapunov_exponent"].toDouble())));
+    QCOMPARE(run({"render", awb, "--out", m_dir.filePath("avg.png"), "--size", "200x200"}, &out,
+                 &err),
+             0);
+    QCOMPARE(run({"render", awb, "--out", m_dir.filePath("avg-d.png"), "--depth", "6"}, &out,
+                 &err),
+             1);
+    QVERIFY2(err.contains("not contractive"), err.constData());
 }
 
 void TestImportCli::refusals()

@@ -47,6 +47,7 @@ private slots:
     void rasterIsFilledAndDeterministic();
     void unionOfTwoBeziers();
     void singularControlPointsUseBarycentricForm();
+    void contractionOnAverage();
     void badInputIsRefused();
     void cancellation();
 };
@@ -360,6 +361,37 @@ void TestAttractors::singularControlPointsUseBarycentricForm()
     QVERIFY(sl.barycentric());
     const Mat Y = attractorPoints(sl, StartSet::points(sl.toIfsSpace(pts({{5, -1}}))), 12);
     QVERIFY((Y.col(0) - Y.col(1)).cwiseAbs().maxCoeff() < 1e-12);
+}
+
+void TestAttractors::contractionOnAverage()
+{
+    // x -> 1.2 x (probability p) and x -> 0.3 x + 1 (1 - p): the first map does not contract,
+    // but random iteration does when p log 1.2 + (1 - p) log 0.3 < 0 (Barnsley-Elton 1988):
+    // the Lyapunov exponent along the orbit is that mean, within its sampling error.
+    for (const double p : {0.3, 0.5, 0.9}) {
+        Ifs ifs;
+        Mat grow(2, 2), shrink(2, 2);
+        grow << 1.2, 0, 0, 1.2;
+        shrink << 0.3, 0, 0, 0.3;
+        RowVec b(2);
+        b << 1, 1;
+        ifs.maps = {{grow, RowVec::Zero(2)}, {shrink, b}};
+        ifs.views = {{Mat::Identity(2, 2), RowVec::Zero(2)}};
+        ifs.probabilities = {p, 1 - p};
+        const IfsCheck check = checkIfs(ifs);
+        QVERIFY(!check.contractive);
+        QVERIFY(check.lyapunov.has_value());
+        const double mean = p * std::log(1.2) + (1 - p) * std::log(0.3);
+        QVERIFY2(std::abs(*check.lyapunov - mean) < 0.03,
+                 qPrintable(QString("p %1: %2 vs %3").arg(p).arg(*check.lyapunov).arg(mean)));
+        QCOMPARE(check.contractsOnAverage(), mean < 0);
+        QCOMPARE(check.message.find("contracts on average") != std::string::npos, mean < 0);
+    }
+    // A contractive IFS needs no estimate.
+    Ifs half;
+    half.maps = {{0.5 * Mat::Identity(2, 2), RowVec::Zero(2)}};
+    half.views = {{Mat::Identity(2, 2), RowVec::Zero(2)}};
+    QVERIFY(checkIfs(half).contractive && !checkIfs(half).lyapunov);
 }
 
 void TestAttractors::badInputIsRefused()

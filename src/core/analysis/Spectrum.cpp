@@ -4,6 +4,9 @@
 #include "core/Messages.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numeric>
 #include <sstream>
 
@@ -294,6 +297,48 @@ IfsCheck checkIfs(const Ifs &ifs)
                                                "of its linear part is %2 >= 1, so the IFS has no "
                                                "attractor (the iteration does not converge)"),
                 i + 1, streamedNumber(out.maps.back().spectralRadius));
+        }
+    }
+    if (!out.contractive && ifs.size() > 0) {
+        std::vector<Mat> linear;
+        for (int i = 0; i < ifs.size(); ++i)
+            linear.push_back(ifs.effectiveLinearPart(i));
+        std::vector<double> cumulative;
+        double total = 0;
+        for (int i = 0; i < ifs.size(); ++i) {
+            const double p = std::size_t(i) < ifs.probabilities.size() ? ifs.probabilities[i]
+                             : ifs.probabilities.empty()                ? 1.0
+                                                                        : 0.0;
+            total += std::max(0.0, p);
+            cumulative.push_back(total);
+        }
+        if (total > 0 && linear.front().rows() > 0) {
+            RowVec v = RowVec::Ones(linear.front().rows()).normalized();
+            std::uint64_t state = 0x2545f4914f6cdd1dull;
+            double sum = 0;
+            const int steps = 20000;
+            for (int n = 0; n < steps; ++n) {
+                state = state * 6364136223846793005ull + 1442695040888963407ull;
+                const double u = double(state >> 11) * 0x1.0p-53 * total;
+                std::size_t i = 0;
+                while (i + 1 < cumulative.size() && u >= cumulative[i])
+                    ++i;
+                v = v * linear[i];
+                const double norm = v.norm();
+                if (!(norm > 0) || !std::isfinite(norm)) {  // a singular map: contracts
+                    sum = -std::numeric_limits<double>::infinity();
+                    break;
+                }
+                sum += std::log(norm);
+                v /= norm;
+            }
+            out.lyapunov = std::isfinite(sum) ? sum / steps : -std::numeric_limits<double>::max();
+            if (out.contractsOnAverage())
+                out.message += formatMessage(
+                    coreTranslate("awb::analysis", "; but the IFS contracts on average (Lyapunov "
+                                                   "exponent %1 along the orbit): random "
+                                                   "iteration draws its attractor"),
+                    streamedNumber(*out.lyapunov));
         }
     }
     return out;
