@@ -275,37 +275,45 @@ void paintFigure(QPainter &p, const FigureSpec &spec)
         p.setPen(QPen(QColor(200, 200, 200), 1));
         p.setBrush(Qt::NoBrush);
         p.drawRect(cell);
-        p.save();
-        p.setClipRect(cell);
-        p.setBrush(Qt::NoBrush);
-        for (const Mat &o : spec.overlays) {
-            p.setPen(QPen(QColor(60, 60, 60, 110), 4));
-            drawPolyline(p, f, o, false);
-        }
-        for (size_t c = 0; c < spec.controlPolygons.size(); ++c) {
-            const Mat &m = spec.controlPolygons[c];
-            p.setPen(QPen(QColor(40, 150, 60), 1.5, Qt::DashLine));
+        {
+            // Restored also when drawing the attractor throws (an IFS that does not contract):
+            // the painter then ends without a saved state left over.
+            const struct Saved {
+                QPainter &painter;
+                explicit Saved(QPainter &q) : painter(q) { painter.save(); }
+                ~Saved() { painter.restore(); }
+            } saved(p);
+            p.setClipRect(cell);
             p.setBrush(Qt::NoBrush);
-            drawPolyline(p, f, m, c < spec.controlClosed.size() && spec.controlClosed[c]);
-            p.setPen(QPen(Qt::black, 1));
-            p.setBrush(QColor(40, 150, 60));
-            for (Eigen::Index r = 0; r < m.rows(); ++r)
-                p.drawRect(QRectF(f.map(m(r, 0), m(r, 1)) - QPointF(3.5, 3.5), QSizeF(7, 7)));
+            for (const Mat &o : spec.overlays) {
+                p.setPen(QPen(QColor(60, 60, 60, 110), 4));
+                drawPolyline(p, f, o, false);
+            }
+            for (size_t c = 0; c < spec.controlPolygons.size(); ++c) {
+                const Mat &m = spec.controlPolygons[c];
+                p.setPen(QPen(QColor(40, 150, 60), 1.5, Qt::DashLine));
+                p.setBrush(Qt::NoBrush);
+                drawPolyline(p, f, m, c < spec.controlClosed.size() && spec.controlClosed[c]);
+                p.setPen(QPen(Qt::black, 1));
+                p.setBrush(QColor(40, 150, 60));
+                for (Eigen::Index r = 0; r < m.rows(); ++r)
+                    p.drawRect(QRectF(f.map(m(r, 0), m(r, 1)) - QPointF(3.5, 3.5),
+                                      QSizeF(7, 7)));
+            }
+            p.setBrush(Qt::NoBrush);
+            for (size_t c = 0; c < spec.polygons.size(); ++c) {
+                p.setPen(QPen(mapColor(0), 1.2));
+                drawPolyline(p, f, spec.polygons[c],
+                             c < spec.polygonsClosed.size() && spec.polygonsClosed[c]);
+            }
+            const int depth = spec.panels[i].depth;
+            if (hasAttractor(spec)) {
+                if (imagesAt(spec, depth) <= kVectorLimit)
+                    drawVector(p, spec, f, depth);
+                else if (!drawCurvePaths(p, spec, f, depth))
+                    drawRaster(p, spec, f, depth);
+            }
         }
-        p.setBrush(Qt::NoBrush);
-        for (size_t c = 0; c < spec.polygons.size(); ++c) {
-            p.setPen(QPen(mapColor(0), 1.2));
-            drawPolyline(p, f, spec.polygons[c],
-                         c < spec.polygonsClosed.size() && spec.polygonsClosed[c]);
-        }
-        const int depth = spec.panels[i].depth;
-        if (hasAttractor(spec)) {
-            if (imagesAt(spec, depth) <= kVectorLimit)
-                drawVector(p, spec, f, depth);
-            else if (!drawCurvePaths(p, spec, f, depth))
-                drawRaster(p, spec, f, depth);
-        }
-        p.restore();
         p.setPen(Qt::black);
         // A long caption shrinks to the panel's width (down to 9 px, then it is elided).
         QFont captionFont = font;

@@ -181,6 +181,24 @@ void TestImportCli::contractiveOnAverage()
                  &err),
              1);
     QVERIFY2(err.contains("not contractive"), err.constData());
+    // Chosen 99 times in 100, the growing map wins (Lyapunov exponent > 0): random iteration is
+    // refused too, by its message alone (no painter left with a saved state on the way out).
+    QFile f(awb);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QJsonObject root = QJsonDocument::fromJson(f.readAll()).object();
+    f.close();
+    QJsonArray items = root["items"].toArray();
+    QJsonObject item = items[0].toObject();
+    QJsonObject algorithm = item["algorithm"].toObject();
+    algorithm["probabilities"] = QJsonArray{0.99, 0.01};
+    item["algorithm"] = algorithm;
+    items[0] = item;
+    root["items"] = items;
+    const QString grow = write("grow.awb", QJsonDocument(root).toJson());
+    QCOMPARE(run({"render", grow, "--out", m_dir.filePath("grow.png")}, &out, &err), 1);
+    QVERIFY2(err.contains("not contractive") && !err.contains("contracts on average")
+                 && !err.contains("QPainter"),
+             err.constData());
 }
 
 void TestImportCli::refusals()
