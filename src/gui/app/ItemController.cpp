@@ -81,13 +81,8 @@ QList<MapSpectrum> mapSpectra(const DerivedIfs &d)
             return contractivity(d.A.complex[std::size_t(i)]);
         if (i < d.ifs.size())
             return contractivity(d.ifs.effectiveLinearPart(i));
-        // Automata list their row-stochastic arc matrices in S but have no plain maps: the
-        // matrix acts on barycentric coordinates, so restrict it to the sum-preserving part.
-        Ifs arc;
-        const Mat &S = d.S.real.at(std::size_t(i));
-        arc.maps.push_back({S, RowVec::Zero(S.rows())});
-        arc.barycentricBlocks.push_back({0, int(S.rows())});
-        return contractivity(arc.effectiveLinearPart(0));
+        // Automata list their row-stochastic arc matrices in S but have no plain maps.
+        return ItemController::stochasticContractivity(d.S.real.at(std::size_t(i)));
     };
     if (!d.S.real.empty() || !d.S.complex.empty()) {
         for (int i = 0; i < d.S.count(); ++i) {
@@ -181,6 +176,15 @@ ItemController::ItemController(AttractorView *attractor, MatrixView *matrices,
                 fillContextMenu(&menu, screen);
                 menu.exec(global);
             });
+}
+
+Contractivity ItemController::stochasticContractivity(const Mat &S)
+{
+    // S acts on barycentric coordinates: restrict it to the sum-preserving part.
+    Ifs arc;
+    arc.maps.push_back({S, RowVec::Zero(S.rows())});
+    arc.barycentricBlocks.push_back({0, int(S.rows())});
+    return contractivity(arc.effectiveLinearPart(0));
 }
 
 ItemController::~ItemController()

@@ -38,6 +38,7 @@ class SurfaceView;
 class ValenceChart;
 class VertexPanel;
 struct AnalysisResult;
+struct Contractivity;
 struct ExtraordinaryVertex;
 struct MapSpectrum;
 
@@ -121,6 +122,9 @@ public:
     Item *addVertexPlot();
     // The focused vertex's local subdivision matrix (empty when none is focused).
     QList<NamedMatrix> focusedMatrices() const;
+    // The contraction of a row-stochastic S (an automaton's arc, a vertex's local subdivision
+    // matrix) on the sum-preserving directions it acts in.
+    static Contractivity stochasticContractivity(const Mat &S);
 
 signals:
     void problemChanged(const QString &problem);

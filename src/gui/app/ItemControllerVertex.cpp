@@ -77,12 +77,7 @@ QList<MapSpectrum> ItemController::focusedSpectra() const
     m.label = tr("S at %1 (n = %2)").arg(focusedVertexName()).arg(e->valence);
     m.spectrum = spectrum(e->S);
     m.subdominant = subdominant(m.spectrum, true);
-    // S is row-stochastic: it acts on affine combinations, so its contraction is that of the
-    // sum-preserving part (as for an automaton's arc matrices).
-    Ifs arc;
-    arc.maps.push_back({e->S, RowVec::Zero(e->S.rows())});
-    arc.barycentricBlocks.push_back({0, int(e->S.rows())});
-    m.contractivity = contractivity(arc.effectiveLinearPart(0));
+    m.contractivity = stochasticContractivity(e->S);
     return {m};
 }
 

@@ -17,8 +17,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <mutex>
 
 namespace awb {
 
@@ -36,19 +34,6 @@ QString mark(bool ok)
 {
     return ok ? QStringLiteral("<span style='color:#1a7f1a'>✓</span>")
               : QStringLiteral("<span style='color:#b01e1e'>✗</span>");
-}
-
-// The valence table of each scheme, computed once (a few hundred milliseconds for both).
-const std::vector<VertexSpectrum> &valenceTable(MeshScheme scheme)
-{
-    static std::mutex mutex;
-    static std::map<MeshScheme, std::vector<VertexSpectrum>> tables;
-    std::lock_guard<std::mutex> lock(mutex);
-    auto it = tables.find(scheme);
-    if (it == tables.end())
-        it = tables.emplace(scheme, valenceSpectra(scheme, ValenceChart::kFrom, ValenceChart::kTo))
-                 .first;
-    return it->second;
 }
 
 } // namespace
@@ -335,11 +320,7 @@ void ValenceChart::setScheme(MeshScheme scheme, std::vector<int> itemValences)
         rebuild();
 }
 
-const std::vector<VertexSpectrum> &ValenceChart::table() const
-{
-    static const std::vector<VertexSpectrum> none;
-    return m_scheme ? valenceTable(*m_scheme) : none;
-}
+const std::vector<VertexSpectrum> &ValenceChart::table() const { return m_table; }
 
 void ValenceChart::resizeEvent(QResizeEvent *event)
 {
@@ -360,6 +341,8 @@ void ValenceChart::rebuild()
         return;
     m_drawn = m_scheme;
     m_drawnMarked = m_marked;
+    // The core computes each valence once per process (sharedVertexSpectrum).
+    m_table = m_scheme ? valenceSpectra(*m_scheme, kFrom, kTo) : std::vector<VertexSpectrum>{};
     for (QChartView *view : {m_byValence, m_curvature}) {
         QChart *chart = view->chart();
         chart->removeAllSeries();

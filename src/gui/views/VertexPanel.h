@@ -97,7 +97,7 @@ public:
     // The scheme's table (computed once per scheme and kept) and the item's valences (interior
     // extraordinary vertices) to mark.
     void setScheme(MeshScheme scheme, std::vector<int> itemValences);
-    // The rows drawn (n = 3 ... 16).
+    // The rows drawn (n = 3 ... 16; empty until the chart is first shown).
     const std::vector<VertexSpectrum> &table() const;
     std::vector<int> markedValences() const { return m_marked; }
     QChartView *valenceView() const { return m_byValence; }
@@ -118,6 +118,7 @@ private:
     std::optional<MeshScheme> m_scheme;
     std::optional<MeshScheme> m_drawn;
     std::vector<int> m_marked, m_drawnMarked;
+    std::vector<VertexSpectrum> m_table;
 };
 
 } // namespace awb
