@@ -19,6 +19,8 @@
 #                        run of all targets, SECONDS when named
 #   fuzz_fractint_ifs    any bytes as a Fractint .ifs library: every entry kept (and given back
 #                        by the writer) or named with its place; 20 s like the mesh readers
+#   fuzz_flame           any bytes as a flam3 genome: every flame imported (and given back by
+#                        the writer) or named with its place, every loss a warning; 20 s
 # Seeds: the examples, the bad files of the tests (tests/fuzz/seeds/) and the crashes found so
 # far (tests/fuzz/regressions/, also loaded by the normal test suite). One input may take at
 # most 1 s, 2 GB; leaks are reported. A crash, a hang or a leak fails the run and leaves its
@@ -38,7 +40,8 @@ ALL=0
 if [ ${#TARGETS[@]} -eq 0 ]; then
   ALL=1
   TARGETS=(fuzz_project_loader fuzz_item_ifs fuzz_png_project fuzz_svg_project
-           fuzz_cli_arguments fuzz_mesh_obj fuzz_mesh_off fuzz_mesh_ply fuzz_fractint_ifs)
+           fuzz_cli_arguments fuzz_mesh_obj fuzz_mesh_off fuzz_mesh_ply fuzz_fractint_ifs
+           fuzz_flame)
 fi
 MESH_SECS="${AWB_FUZZ_MESH_SECONDS:-20}"
 bash scripts/setup.sh --packages-only
@@ -52,7 +55,8 @@ export QT_QPA_PLATFORM=offscreen
 jobs="${AWB_FUZZ_JOBS:-$(nproc)}"
 fuzz_one() {
   local t="$1" secs="$SECS"
-  if [ "$ALL" = 1 ] && [[ "$t" == fuzz_mesh_* || "$t" == fuzz_fractint_ifs ]] \
+  if [ "$ALL" = 1 ] \
+     && [[ "$t" == fuzz_mesh_* || "$t" == fuzz_fractint_ifs || "$t" == fuzz_flame ]] \
      && [ "$MESH_SECS" -lt "$SECS" ]; then
     secs="$MESH_SECS"
   fi
@@ -65,7 +69,7 @@ fuzz_one() {
     fuzz_png_project) seeds=(tests/fuzz/seeds/png tests/fuzz/regressions/png) ;;
     fuzz_svg_project) seeds=(tests/fuzz/seeds/svg tests/fuzz/regressions/svg) ;;
     fuzz_cli_arguments) seeds=(tests/fuzz/seeds/cli tests/fuzz/regressions/cli) ;;
-    fuzz_mesh_*|fuzz_fractint_ifs)
+    fuzz_mesh_*|fuzz_fractint_ifs|fuzz_flame)
       seeds=(tests/fuzz/seeds/${t#fuzz_} tests/fuzz/regressions/${t#fuzz_}) ;;
   esac
   local existing=() s

@@ -12,6 +12,8 @@ PACKAGES=(
   libeigen3-dev zlib1g-dev
   libosd-dev  # OpenSubdiv 3.5: the reference of the mesh tests (tests/core/test_mesh_opensubdiv.cpp)
   libtinyobjloader-dev  # the OBJ reader of the core's mesh files (src/core/mesh/MeshFiles.cpp)
+  libopenexr-dev  # raw density out: render --out F.exr (src/render/DensityExr.cpp)
+  flam3-utils  # flam3-render and flam3-genome: the judges of the .flame tests (tests/cli)
   libxkbcommon-dev xvfb xauth libgl1-mesa-dev x11-apps imagemagick fonts-dejavu-core poppler-utils
   libxtst-dev xdotool  # attractor-bench-window: pointer moves through XTest, as a person drags
   fonts-wqy-microhei  # a CJK font: the Chinese translation on screen and in figures

@@ -1287,6 +1287,25 @@
     </message>
 </context>
 <context>
+    <name>awb::DensityFile</name>
+    <message>
+        <source>cannot write %1: the picture is empty</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation type="unfinished">%1 nelze přečíst: %2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: not enough memory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1; alpha = log(1 + hits) / log(1 + %2); world %3 %4 %5 %6</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>awb::EigenvaluePlotItem</name>
     <message>
         <source>Eigenvalues</source>
@@ -1604,6 +1623,141 @@
     <message>
         <source>the file is not open</source>
         <translation>soubor není otevřen</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FlameExchange</name>
+    <message>
+        <source>the XML is malformed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the file holds no &lt;flame&gt; element</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, line %2, column %3: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;, final xform</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;, xform %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: &lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: element &lt;%2&gt; ignored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos; has no xform</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1=&quot;%2&quot; must be 6 finite numbers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>weight=&quot;%1&quot; must be a finite number &gt;= 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>var1=&quot;%1&quot; names no variation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>variation %1=&quot;%2&quot; is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: opacity %1 not kept (every map is drawn)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: attribute %1=&quot;%2&quot; ignored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>: variation %1 dropped (non-linear)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>; its affine part kept as a linear map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: no variation given; taken as linear</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: element &lt;%2&gt; ignored (animation)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: a &lt;color&gt; needs index=&quot;0..255&quot; and rgb=&quot;r g b&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: the palette&apos;s hex digits are not whole colours of %2 digits</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: palette entry %2 is not hexadecimal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: the final xform is not invertible (determinant %2): dropped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: its xaos (chaos) rows forbid some transitions; imported as the plain IFS of its maps, whose attractor contains the flame&apos;s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: its xaos (chaos) weights are dropped: the attractor is the same, its measure differs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: every xform has weight 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: %2 (%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the file is larger than %2 MB</source>
+        <translation type="unfinished">%1: soubor je větší než %2 MB</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation type="unfinished">%1 nelze přečíst: %2</translation>
+    </message>
+    <message>
+        <source>%1 is an IFS of space: a flame holds maps of the plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the flame&apos;s frame is empty</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2670,11 +2824,11 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>Everything Attractor Workbench imports (*.ifs *.obj *.off *.ply);;Fractint IFS (*.ifs);;Meshes (*.obj *.off *.ply)</source>
-        <translation>Vše, co Attractor Workbench umí importovat (*.ifs *.obj *.off *.ply);;Fractint IFS (*.ifs);;Sítě (*.obj *.off *.ply)</translation>
+        <translation type="vanished">Vše, co Attractor Workbench umí importovat (*.ifs *.obj *.off *.ply);;Fractint IFS (*.ifs);;Sítě (*.obj *.off *.ply)</translation>
     </message>
     <message>
         <source>Imported the other entries; these were left out:</source>
-        <translation>Ostatní záznamy byly importovány; tyto byly vynechány:</translation>
+        <translation type="vanished">Ostatní záznamy byly importovány; tyto byly vynechány:</translation>
     </message>
     <message>
         <source>Imported %1</source>
@@ -2690,7 +2844,7 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>%1: Export Item As writes .ifs (Fractint) or .m (MATLAB) files</source>
-        <translation>%1: „Exportovat položku jako“ zapisuje soubory .ifs (Fractint) nebo .m (MATLAB)</translation>
+        <translation type="vanished">%1: „Exportovat položku jako“ zapisuje soubory .ifs (Fractint) nebo .m (MATLAB)</translation>
     </message>
     <message>
         <source>Export Item As</source>
@@ -2698,7 +2852,27 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>Fractint IFS (*.ifs);;MATLAB cell arrays of the matrices (*.m)</source>
-        <translation>Fractint IFS (*.ifs);;Matice jako pole buněk MATLABu (*.m)</translation>
+        <translation type="vanished">Fractint IFS (*.ifs);;Matice jako pole buněk MATLABu (*.m)</translation>
+    </message>
+    <message>
+        <source>Everything Attractor Workbench imports (*.ifs *.flame *.flam3 *.obj *.off *.ply);;Fractint IFS (*.ifs);;Fractal flames: flam3, Apophysis, JWildfire (*.flame *.flam3);;Meshes (*.obj *.off *.ply)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Imported the others; these were left out:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Imported with these losses:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: Export Item As writes .ifs (Fractint), .flame (flam3) or .m (MATLAB) files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fractint IFS (*.ifs);;Fractal flame for flam3-render, Apophysis, JWildfire (*.flame);;MATLAB cell arrays of the matrices (*.m)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4659,7 +4833,7 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>The output&apos;s format when its name has no suffix (e.g. /dev/stdout): png, svg or pdf (default: the suffix).</source>
-        <translation>Formát výstupu, pokud jeho název nemá příponu (např. /dev/stdout): png, svg nebo pdf (výchozí: podle přípony).</translation>
+        <translation type="vanished">Formát výstupu, pokud jeho název nemá příponu (např. /dev/stdout): png, svg nebo pdf (výchozí: podle přípony).</translation>
     </message>
     <message>
         <source>--depth and --samples exclude each other</source>
@@ -4679,7 +4853,7 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>--format must be png, svg or pdf, got &apos;%1&apos;</source>
-        <translation>--format musí být png, svg nebo pdf, zadáno „%1“</translation>
+        <translation type="vanished">--format musí být png, svg nebo pdf, zadáno „%1“</translation>
     </message>
     <message>
         <source>depth %1 makes %2 images; at most 4e9 are rendered</source>
@@ -4719,7 +4893,7 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>Render an item&apos;s attractor (with its control polygons) to PNG, SVG or PDF.</source>
-        <translation>Vykreslí atraktor položky (s jejími řídicími polygony) do PNG, SVG nebo PDF.</translation>
+        <translation type="vanished">Vykreslí atraktor položky (s jejími řídicími polygony) do PNG, SVG nebo PDF.</translation>
     </message>
     <message>
         <source>The .awb project file.</source>
@@ -4731,7 +4905,7 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>Output file: .png, .svg or .pdf.</source>
-        <translation>Výstupní soubor: .png, .svg nebo .pdf.</translation>
+        <translation type="vanished">Výstupní soubor: .png, .svg nebo .pdf.</translation>
     </message>
     <message>
         <source>--out FILE is required</source>
@@ -5137,31 +5311,31 @@ Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --he
     </message>
     <message>
         <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ); its maps as a Fractint .ifs entry (ifs); or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab).</source>
-        <translation>Exportuje geometrii položky: atraktor F^k(X0) jako mračno bodů PLY (u každého bodu s naposledy použitým zobrazením), síť plošné položky po k kolech klasické subdivize jako polygonovou síť OBJ, nebo položku se sítí po k krocích s každým vrcholem v jeho limitní poloze (OBJ); její zobrazení jako záznam souboru .ifs formátu Fractint (ifs); nebo její matice S_i, M_i, A_i jako pole buněk MATLABu pro JSR toolbox (matlab).</translation>
+        <translation type="vanished">Exportuje geometrii položky: atraktor F^k(X0) jako mračno bodů PLY (u každého bodu s naposledy použitým zobrazením), síť plošné položky po k kolech klasické subdivize jako polygonovou síť OBJ, nebo položku se sítí po k krocích s každým vrcholem v jeho limitní poloze (OBJ); její zobrazení jako záznam souboru .ifs formátu Fractint (ifs); nebo její matice S_i, M_i, A_i jako pole buněk MATLABu pro JSR toolbox (matlab).</translation>
     </message>
     <message>
         <source>ply (attractor points), obj (subdivided mesh), ifs (Fractint) or matlab (matrices).</source>
-        <translation>ply (body atraktoru), obj (zjemněná síť), ifs (Fractint) nebo matlab (matice).</translation>
+        <translation type="vanished">ply (body atraktoru), obj (zjemněná síť), ifs (Fractint) nebo matlab (matice).</translation>
     </message>
     <message>
         <source>--item NAME, --format ply|obj|ifs|matlab and --out FILE are required</source>
-        <translation>--item NAME, --format ply|obj|ifs|matlab a --out FILE jsou povinné</translation>
+        <translation type="vanished">--item NAME, --format ply|obj|ifs|matlab a --out FILE jsou povinné</translation>
     </message>
     <message>
         <source>--format must be ply, obj, ifs or matlab, got &apos;%1&apos;</source>
-        <translation>--format musí být ply, obj, ifs nebo matlab, zadáno „%1“</translation>
+        <translation type="vanished">--format musí být ply, obj, ifs nebo matlab, zadáno „%1“</translation>
     </message>
     <message>
         <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit) as a fractal with control points.</source>
-        <translation>Vytvoří projekt ze souboru IFS jiného programu: každý záznam souboru .ifs formátu Fractint (2D i 3D; formát programů Fractint, xfractint a IFS Construction Kit) jako fraktál s řídicími body.</translation>
+        <translation type="vanished">Vytvoří projekt ze souboru IFS jiného programu: každý záznam souboru .ifs formátu Fractint (2D i 3D; formát programů Fractint, xfractint a IFS Construction Kit) jako fraktál s řídicími body.</translation>
     </message>
     <message>
         <source>The file to import (.ifs).</source>
-        <translation>Soubor, který se má importovat (.ifs).</translation>
+        <translation type="vanished">Soubor, který se má importovat (.ifs).</translation>
     </message>
     <message>
         <source>%1: import reads Fractint .ifs files</source>
-        <translation>%1: příkaz import čte soubory .ifs formátu Fractint</translation>
+        <translation type="vanished">%1: příkaz import čte soubory .ifs formátu Fractint</translation>
     </message>
     <message>
         <source>%1: no entry could be imported</source>
@@ -5216,6 +5390,78 @@ Příkazy:
 
 Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --help&apos;.
 </translation>
+    </message>
+    <message>
+        <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ); its maps as a Fractint .ifs entry (ifs) or a flam3 genome that flam3-render draws in the frame of render&apos;s --size and --bounds (flame); or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ply (attractor points), obj (subdivided mesh), ifs (Fractint), flame (flam3) or matlab (matrices).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--item NAME, --format ply|obj|ifs|flame|matlab and --out FILE are required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--format must be ply, obj, ifs, flame or matlab, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has nothing to frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The output&apos;s format when its name has no suffix (e.g. /dev/stdout): png, svg, pdf or exr (default: the suffix).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PNG: 8 (the figure, default) or 16 (the attractor&apos;s raw density: alpha = log(1 + hits) / log(1 + most hits), the colour the hits&apos; mean; no title, polygons or margins). An .exr file always holds the raw density, as float32 counts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--format must be png, svg, pdf or exr, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--bits must be 8 or 16, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--bits 16 writes PNG files, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the raw density (.exr, --bits 16) counts an attractor&apos;s points; this item&apos;s figure is a polygon</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the raw density (.exr, --bits 16) is of attractors drawn in the plane; &apos;%1&apos; is drawn in space</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit), or every flame of a flam3 genome (.flame, .flam3: flam3, Apophysis, JWildfire), as a fractal with control points. Non-linear variations are dropped with a warning.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The file to import (.ifs, .flame, .flam3).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: import reads Fractint .ifs and flam3 .flame (.flam3) files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>warning: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Render an item&apos;s attractor (with its control polygons) to PNG, SVG or PDF; or its raw density (hits per pixel) to OpenEXR (.exr, float32 counts) or a 16-bit PNG (--bits 16), to tone-map elsewhere.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output file: .png, .svg, .pdf or .exr.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

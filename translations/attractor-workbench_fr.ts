@@ -1286,6 +1286,25 @@
     </message>
 </context>
 <context>
+    <name>awb::DensityFile</name>
+    <message>
+        <source>cannot write %1: the picture is empty</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation type="unfinished">impossible de lire %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: not enough memory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1; alpha = log(1 + hits) / log(1 + %2); world %3 %4 %5 %6</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>awb::EigenvaluePlotItem</name>
     <message>
         <source>Eigenvalues</source>
@@ -1602,6 +1621,140 @@
     <message>
         <source>the file is not open</source>
         <translation>le fichier n’est pas ouvert</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FlameExchange</name>
+    <message>
+        <source>the XML is malformed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the file holds no &lt;flame&gt; element</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, line %2, column %3: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;, final xform</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;, xform %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: &lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: element &lt;%2&gt; ignored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos; has no xform</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1=&quot;%2&quot; must be 6 finite numbers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>weight=&quot;%1&quot; must be a finite number &gt;= 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>var1=&quot;%1&quot; names no variation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>variation %1=&quot;%2&quot; is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: opacity %1 not kept (every map is drawn)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: attribute %1=&quot;%2&quot; ignored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>: variation %1 dropped (non-linear)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>; its affine part kept as a linear map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: no variation given; taken as linear</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: element &lt;%2&gt; ignored (animation)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: a &lt;color&gt; needs index=&quot;0..255&quot; and rgb=&quot;r g b&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: the palette&apos;s hex digits are not whole colours of %2 digits</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: palette entry %2 is not hexadecimal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: the final xform is not invertible (determinant %2): dropped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: its xaos (chaos) rows forbid some transitions; imported as the plain IFS of its maps, whose attractor contains the flame&apos;s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: its xaos (chaos) weights are dropped: the attractor is the same, its measure differs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: every xform has weight 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: %2 (%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the file is larger than %2 MB</source>
+        <translation type="unfinished">%1&#xa0;: le fichier dépasse %2 Mo</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation type="unfinished">impossible de lire %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>%1 is an IFS of space: a flame holds maps of the plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the flame&apos;s frame is empty</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2666,11 +2819,11 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>Everything Attractor Workbench imports (*.ifs *.obj *.off *.ply);;Fractint IFS (*.ifs);;Meshes (*.obj *.off *.ply)</source>
-        <translation>Tout ce qu’Attractor Workbench sait importer (*.ifs *.obj *.off *.ply);;IFS Fractint (*.ifs);;Maillages (*.obj *.off *.ply)</translation>
+        <translation type="vanished">Tout ce qu’Attractor Workbench sait importer (*.ifs *.obj *.off *.ply);;IFS Fractint (*.ifs);;Maillages (*.obj *.off *.ply)</translation>
     </message>
     <message>
         <source>Imported the other entries; these were left out:</source>
-        <translation>Les autres entrées ont été importées&#x202f;; celles-ci ont été laissées de côté&#xa0;:</translation>
+        <translation type="vanished">Les autres entrées ont été importées&#x202f;; celles-ci ont été laissées de côté&#xa0;:</translation>
     </message>
     <message>
         <source>Imported %1</source>
@@ -2686,7 +2839,7 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>%1: Export Item As writes .ifs (Fractint) or .m (MATLAB) files</source>
-        <translation>%1&#xa0;: «&#xa0;Exporter l’élément sous&#xa0;» écrit des fichiers .ifs (Fractint) ou .m (MATLAB)</translation>
+        <translation type="vanished">%1&#xa0;: «&#xa0;Exporter l’élément sous&#xa0;» écrit des fichiers .ifs (Fractint) ou .m (MATLAB)</translation>
     </message>
     <message>
         <source>Export Item As</source>
@@ -2694,7 +2847,27 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>Fractint IFS (*.ifs);;MATLAB cell arrays of the matrices (*.m)</source>
-        <translation>IFS Fractint (*.ifs);;Matrices en tableaux de cellules MATLAB (*.m)</translation>
+        <translation type="vanished">IFS Fractint (*.ifs);;Matrices en tableaux de cellules MATLAB (*.m)</translation>
+    </message>
+    <message>
+        <source>Everything Attractor Workbench imports (*.ifs *.flame *.flam3 *.obj *.off *.ply);;Fractint IFS (*.ifs);;Fractal flames: flam3, Apophysis, JWildfire (*.flame *.flam3);;Meshes (*.obj *.off *.ply)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Imported the others; these were left out:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Imported with these losses:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: Export Item As writes .ifs (Fractint), .flame (flam3) or .m (MATLAB) files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fractint IFS (*.ifs);;Fractal flame for flam3-render, Apophysis, JWildfire (*.flame);;MATLAB cell arrays of the matrices (*.m)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4652,7 +4825,7 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>The output&apos;s format when its name has no suffix (e.g. /dev/stdout): png, svg or pdf (default: the suffix).</source>
-        <translation>Format de la sortie lorsque son nom n’a pas de suffixe (p. ex. /dev/stdout)&#xa0;: png, svg ou pdf (par défaut&#xa0;: le suffixe).</translation>
+        <translation type="vanished">Format de la sortie lorsque son nom n’a pas de suffixe (p. ex. /dev/stdout)&#xa0;: png, svg ou pdf (par défaut&#xa0;: le suffixe).</translation>
     </message>
     <message>
         <source>--depth and --samples exclude each other</source>
@@ -4672,7 +4845,7 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>--format must be png, svg or pdf, got &apos;%1&apos;</source>
-        <translation>--format doit valoir png, svg ou pdf (reçu&#xa0;: «&#xa0;%1&#xa0;»)</translation>
+        <translation type="vanished">--format doit valoir png, svg ou pdf (reçu&#xa0;: «&#xa0;%1&#xa0;»)</translation>
     </message>
     <message>
         <source>depth %1 makes %2 images; at most 4e9 are rendered</source>
@@ -4712,7 +4885,7 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>Render an item&apos;s attractor (with its control polygons) to PNG, SVG or PDF.</source>
-        <translation>Rendre l’attracteur d’un élément (avec ses polygones de contrôle) en PNG, SVG ou PDF.</translation>
+        <translation type="vanished">Rendre l’attracteur d’un élément (avec ses polygones de contrôle) en PNG, SVG ou PDF.</translation>
     </message>
     <message>
         <source>The .awb project file.</source>
@@ -4724,7 +4897,7 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>Output file: .png, .svg or .pdf.</source>
-        <translation>Fichier de sortie&#xa0;: .png, .svg ou .pdf.</translation>
+        <translation type="vanished">Fichier de sortie&#xa0;: .png, .svg ou .pdf.</translation>
     </message>
     <message>
         <source>--out FILE is required</source>
@@ -5130,31 +5303,31 @@ Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les
     </message>
     <message>
         <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ); its maps as a Fractint .ifs entry (ifs); or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab).</source>
-        <translation>Exporter la géométrie d’un élément&#xa0;: l’attracteur F^k(X0) en nuage de points PLY (avec l’application appliquée en dernier pour chaque point), le réseau d’un élément surface après k passes de subdivision classique en maillage OBJ, ou un élément maillage après k étapes avec chaque sommet à sa position limite (OBJ)&#x202f;; ses applications en entrée de fichier .ifs Fractint (ifs)&#x202f;; ou ses matrices S_i, M_i, A_i en tableaux de cellules MATLAB pour la JSR toolbox (matlab).</translation>
+        <translation type="vanished">Exporter la géométrie d’un élément&#xa0;: l’attracteur F^k(X0) en nuage de points PLY (avec l’application appliquée en dernier pour chaque point), le réseau d’un élément surface après k passes de subdivision classique en maillage OBJ, ou un élément maillage après k étapes avec chaque sommet à sa position limite (OBJ)&#x202f;; ses applications en entrée de fichier .ifs Fractint (ifs)&#x202f;; ou ses matrices S_i, M_i, A_i en tableaux de cellules MATLAB pour la JSR toolbox (matlab).</translation>
     </message>
     <message>
         <source>ply (attractor points), obj (subdivided mesh), ifs (Fractint) or matlab (matrices).</source>
-        <translation>ply (points de l’attracteur), obj (maillage subdivisé), ifs (Fractint) ou matlab (matrices).</translation>
+        <translation type="vanished">ply (points de l’attracteur), obj (maillage subdivisé), ifs (Fractint) ou matlab (matrices).</translation>
     </message>
     <message>
         <source>--item NAME, --format ply|obj|ifs|matlab and --out FILE are required</source>
-        <translation>--item NAME, --format ply|obj|ifs|matlab et --out FILE sont obligatoires</translation>
+        <translation type="vanished">--item NAME, --format ply|obj|ifs|matlab et --out FILE sont obligatoires</translation>
     </message>
     <message>
         <source>--format must be ply, obj, ifs or matlab, got &apos;%1&apos;</source>
-        <translation>--format doit valoir ply, obj, ifs ou matlab (reçu&#xa0;: «&#xa0;%1&#xa0;»)</translation>
+        <translation type="vanished">--format doit valoir ply, obj, ifs ou matlab (reçu&#xa0;: «&#xa0;%1&#xa0;»)</translation>
     </message>
     <message>
         <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit) as a fractal with control points.</source>
-        <translation>Créer un projet à partir du fichier IFS d’un autre outil&#xa0;: chaque entrée d’un fichier .ifs Fractint (2D et 3D, le format de Fractint, de xfractint et de l’IFS Construction Kit) devient une fractale à points de contrôle.</translation>
+        <translation type="vanished">Créer un projet à partir du fichier IFS d’un autre outil&#xa0;: chaque entrée d’un fichier .ifs Fractint (2D et 3D, le format de Fractint, de xfractint et de l’IFS Construction Kit) devient une fractale à points de contrôle.</translation>
     </message>
     <message>
         <source>The file to import (.ifs).</source>
-        <translation>Le fichier à importer (.ifs).</translation>
+        <translation type="vanished">Le fichier à importer (.ifs).</translation>
     </message>
     <message>
         <source>%1: import reads Fractint .ifs files</source>
-        <translation>%1&#xa0;: la commande import lit les fichiers .ifs Fractint</translation>
+        <translation type="vanished">%1&#xa0;: la commande import lit les fichiers .ifs Fractint</translation>
     </message>
     <message>
         <source>%1: no entry could be imported</source>
@@ -5207,6 +5380,78 @@ Commandes&#xa0;:
 
 Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les options d’une commande.
 </translation>
+    </message>
+    <message>
+        <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ); its maps as a Fractint .ifs entry (ifs) or a flam3 genome that flam3-render draws in the frame of render&apos;s --size and --bounds (flame); or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ply (attractor points), obj (subdivided mesh), ifs (Fractint), flame (flam3) or matlab (matrices).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--item NAME, --format ply|obj|ifs|flame|matlab and --out FILE are required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--format must be ply, obj, ifs, flame or matlab, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has nothing to frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The output&apos;s format when its name has no suffix (e.g. /dev/stdout): png, svg, pdf or exr (default: the suffix).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PNG: 8 (the figure, default) or 16 (the attractor&apos;s raw density: alpha = log(1 + hits) / log(1 + most hits), the colour the hits&apos; mean; no title, polygons or margins). An .exr file always holds the raw density, as float32 counts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--format must be png, svg, pdf or exr, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--bits must be 8 or 16, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--bits 16 writes PNG files, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the raw density (.exr, --bits 16) counts an attractor&apos;s points; this item&apos;s figure is a polygon</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the raw density (.exr, --bits 16) is of attractors drawn in the plane; &apos;%1&apos; is drawn in space</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit), or every flame of a flam3 genome (.flame, .flam3: flam3, Apophysis, JWildfire), as a fractal with control points. Non-linear variations are dropped with a warning.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The file to import (.ifs, .flame, .flam3).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: import reads Fractint .ifs and flam3 .flame (.flam3) files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>warning: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Render an item&apos;s attractor (with its control polygons) to PNG, SVG or PDF; or its raw density (hits per pixel) to OpenEXR (.exr, float32 counts) or a 16-bit PNG (--bits 16), to tone-map elsewhere.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output file: .png, .svg, .pdf or .exr.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

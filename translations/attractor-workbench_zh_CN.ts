@@ -1285,6 +1285,25 @@
     </message>
 </context>
 <context>
+    <name>awb::DensityFile</name>
+    <message>
+        <source>cannot write %1: the picture is empty</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation type="unfinished">无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: not enough memory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1; alpha = log(1 + hits) / log(1 + %2); world %3 %4 %5 %6</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>awb::EigenvaluePlotItem</name>
     <message>
         <source>Eigenvalues</source>
@@ -1600,6 +1619,139 @@
     <message>
         <source>the file is not open</source>
         <translation>文件未打开</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FlameExchange</name>
+    <message>
+        <source>the XML is malformed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the file holds no &lt;flame&gt; element</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, line %2, column %3: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;, final xform</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;, xform %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: &lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: element &lt;%2&gt; ignored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos; has no xform</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1=&quot;%2&quot; must be 6 finite numbers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>weight=&quot;%1&quot; must be a finite number &gt;= 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>var1=&quot;%1&quot; names no variation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>variation %1=&quot;%2&quot; is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: opacity %1 not kept (every map is drawn)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: attribute %1=&quot;%2&quot; ignored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>: variation %1 dropped (non-linear)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>; its affine part kept as a linear map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: no variation given; taken as linear</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: element &lt;%2&gt; ignored (animation)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: a &lt;color&gt; needs index=&quot;0..255&quot; and rgb=&quot;r g b&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: the palette&apos;s hex digits are not whole colours of %2 digits</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: palette entry %2 is not hexadecimal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: the final xform is not invertible (determinant %2): dropped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: its xaos (chaos) rows forbid some transitions; imported as the plain IFS of its maps, whose attractor contains the flame&apos;s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: its xaos (chaos) weights are dropped: the attractor is the same, its measure differs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: every xform has weight 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: %2 (%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the file is larger than %2 MB</source>
+        <translation type="unfinished">%1：文件大于 %2 MB</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation type="unfinished">无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is an IFS of space: a flame holds maps of the plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the flame&apos;s frame is empty</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2662,11 +2814,11 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>Everything Attractor Workbench imports (*.ifs *.obj *.off *.ply);;Fractint IFS (*.ifs);;Meshes (*.obj *.off *.ply)</source>
-        <translation>Attractor Workbench 可导入的所有文件 (*.ifs *.obj *.off *.ply);;Fractint IFS (*.ifs);;网格 (*.obj *.off *.ply)</translation>
+        <translation type="vanished">Attractor Workbench 可导入的所有文件 (*.ifs *.obj *.off *.ply);;Fractint IFS (*.ifs);;网格 (*.obj *.off *.ply)</translation>
     </message>
     <message>
         <source>Imported the other entries; these were left out:</source>
-        <translation>已导入其余条目；以下条目被略过：</translation>
+        <translation type="vanished">已导入其余条目；以下条目被略过：</translation>
     </message>
     <message>
         <source>Imported %1</source>
@@ -2682,7 +2834,7 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>%1: Export Item As writes .ifs (Fractint) or .m (MATLAB) files</source>
-        <translation>%1：“将对象导出为”只能写出 .ifs（Fractint）或 .m（MATLAB）文件</translation>
+        <translation type="vanished">%1：“将对象导出为”只能写出 .ifs（Fractint）或 .m（MATLAB）文件</translation>
     </message>
     <message>
         <source>Export Item As</source>
@@ -2690,7 +2842,27 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>Fractint IFS (*.ifs);;MATLAB cell arrays of the matrices (*.m)</source>
-        <translation>Fractint IFS (*.ifs);;矩阵的 MATLAB 元胞数组 (*.m)</translation>
+        <translation type="vanished">Fractint IFS (*.ifs);;矩阵的 MATLAB 元胞数组 (*.m)</translation>
+    </message>
+    <message>
+        <source>Everything Attractor Workbench imports (*.ifs *.flame *.flam3 *.obj *.off *.ply);;Fractint IFS (*.ifs);;Fractal flames: flam3, Apophysis, JWildfire (*.flame *.flam3);;Meshes (*.obj *.off *.ply)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Imported the others; these were left out:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Imported with these losses:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: Export Item As writes .ifs (Fractint), .flame (flam3) or .m (MATLAB) files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fractint IFS (*.ifs);;Fractal flame for flam3-render, Apophysis, JWildfire (*.flame);;MATLAB cell arrays of the matrices (*.m)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4645,7 +4817,7 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>The output&apos;s format when its name has no suffix (e.g. /dev/stdout): png, svg or pdf (default: the suffix).</source>
-        <translation>输出文件名没有后缀时（例如 /dev/stdout）所用的格式：png、svg 或 pdf（默认：由后缀决定）。</translation>
+        <translation type="vanished">输出文件名没有后缀时（例如 /dev/stdout）所用的格式：png、svg 或 pdf（默认：由后缀决定）。</translation>
     </message>
     <message>
         <source>--depth and --samples exclude each other</source>
@@ -4665,7 +4837,7 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>--format must be png, svg or pdf, got &apos;%1&apos;</source>
-        <translation>--format 必须为 png、svg 或 pdf，实际为“%1”</translation>
+        <translation type="vanished">--format 必须为 png、svg 或 pdf，实际为“%1”</translation>
     </message>
     <message>
         <source>depth %1 makes %2 images; at most 4e9 are rendered</source>
@@ -4705,7 +4877,7 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>Render an item&apos;s attractor (with its control polygons) to PNG, SVG or PDF.</source>
-        <translation>将对象的吸引子（连同其控制多边形）渲染为 PNG、SVG 或 PDF。</translation>
+        <translation type="vanished">将对象的吸引子（连同其控制多边形）渲染为 PNG、SVG 或 PDF。</translation>
     </message>
     <message>
         <source>The .awb project file.</source>
@@ -4717,7 +4889,7 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>Output file: .png, .svg or .pdf.</source>
-        <translation>输出文件：.png、.svg 或 .pdf。</translation>
+        <translation type="vanished">输出文件：.png、.svg 或 .pdf。</translation>
     </message>
     <message>
         <source>--out FILE is required</source>
@@ -5123,31 +5295,31 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ); its maps as a Fractint .ifs entry (ifs); or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab).</source>
-        <translation>导出对象的几何：将吸引子 F^k(X0) 导出为 PLY 点云（每个点附带最后作用的映射），将曲面对象经 k 轮经典细分后的控制网格导出为 OBJ 网格，或将网格对象细分 k 步后、每个顶点都置于其极限位置导出（OBJ）；将其映射导出为 Fractint .ifs 条目（ifs）；或将其矩阵 S_i、M_i、A_i 导出为用于 JSR 工具箱的 MATLAB 元胞数组（matlab）。</translation>
+        <translation type="vanished">导出对象的几何：将吸引子 F^k(X0) 导出为 PLY 点云（每个点附带最后作用的映射），将曲面对象经 k 轮经典细分后的控制网格导出为 OBJ 网格，或将网格对象细分 k 步后、每个顶点都置于其极限位置导出（OBJ）；将其映射导出为 Fractint .ifs 条目（ifs）；或将其矩阵 S_i、M_i、A_i 导出为用于 JSR 工具箱的 MATLAB 元胞数组（matlab）。</translation>
     </message>
     <message>
         <source>ply (attractor points), obj (subdivided mesh), ifs (Fractint) or matlab (matrices).</source>
-        <translation>ply（吸引子的点）、obj（细分网格）、ifs（Fractint）或 matlab（矩阵）。</translation>
+        <translation type="vanished">ply（吸引子的点）、obj（细分网格）、ifs（Fractint）或 matlab（矩阵）。</translation>
     </message>
     <message>
         <source>--item NAME, --format ply|obj|ifs|matlab and --out FILE are required</source>
-        <translation>必须给出 --item NAME、--format ply|obj|ifs|matlab 和 --out FILE</translation>
+        <translation type="vanished">必须给出 --item NAME、--format ply|obj|ifs|matlab 和 --out FILE</translation>
     </message>
     <message>
         <source>--format must be ply, obj, ifs or matlab, got &apos;%1&apos;</source>
-        <translation>--format 必须为 ply、obj、ifs 或 matlab，实际为“%1”</translation>
+        <translation type="vanished">--format 必须为 ply、obj、ifs 或 matlab，实际为“%1”</translation>
     </message>
     <message>
         <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit) as a fractal with control points.</source>
-        <translation>由其他工具的 IFS 文件创建项目：将 Fractint .ifs 文件（2D 和 3D，即 Fractint、xfractint 和 IFS Construction Kit 所用的格式）中的每个条目导入为带控制点的分形。</translation>
+        <translation type="vanished">由其他工具的 IFS 文件创建项目：将 Fractint .ifs 文件（2D 和 3D，即 Fractint、xfractint 和 IFS Construction Kit 所用的格式）中的每个条目导入为带控制点的分形。</translation>
     </message>
     <message>
         <source>The file to import (.ifs).</source>
-        <translation>要导入的文件（.ifs）。</translation>
+        <translation type="vanished">要导入的文件（.ifs）。</translation>
     </message>
     <message>
         <source>%1: import reads Fractint .ifs files</source>
-        <translation>%1：import 命令读取的是 Fractint .ifs 文件</translation>
+        <translation type="vanished">%1：import 命令读取的是 Fractint .ifs 文件</translation>
     </message>
     <message>
         <source>%1: no entry could be imported</source>
@@ -5198,6 +5370,78 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
 
 运行“attractor-cli &lt;command&gt; --help”查看某个命令的选项。
 </translation>
+    </message>
+    <message>
+        <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ); its maps as a Fractint .ifs entry (ifs) or a flam3 genome that flam3-render draws in the frame of render&apos;s --size and --bounds (flame); or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ply (attractor points), obj (subdivided mesh), ifs (Fractint), flame (flam3) or matlab (matrices).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--item NAME, --format ply|obj|ifs|flame|matlab and --out FILE are required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--format must be ply, obj, ifs, flame or matlab, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has nothing to frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The output&apos;s format when its name has no suffix (e.g. /dev/stdout): png, svg, pdf or exr (default: the suffix).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PNG: 8 (the figure, default) or 16 (the attractor&apos;s raw density: alpha = log(1 + hits) / log(1 + most hits), the colour the hits&apos; mean; no title, polygons or margins). An .exr file always holds the raw density, as float32 counts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--format must be png, svg, pdf or exr, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--bits must be 8 or 16, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--bits 16 writes PNG files, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the raw density (.exr, --bits 16) counts an attractor&apos;s points; this item&apos;s figure is a polygon</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the raw density (.exr, --bits 16) is of attractors drawn in the plane; &apos;%1&apos; is drawn in space</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit), or every flame of a flam3 genome (.flame, .flam3: flam3, Apophysis, JWildfire), as a fractal with control points. Non-linear variations are dropped with a warning.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The file to import (.ifs, .flame, .flam3).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: import reads Fractint .ifs and flam3 .flame (.flam3) files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>warning: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Render an item&apos;s attractor (with its control polygons) to PNG, SVG or PDF; or its raw density (hits per pixel) to OpenEXR (.exr, float32 counts) or a 16-bit PNG (--bits 16), to tone-map elsewhere.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output file: .png, .svg, .pdf or .exr.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

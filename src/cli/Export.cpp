@@ -14,6 +14,8 @@
 #include "model/FileWriting.h"
 #include "model/ItemAddress.h"
 #include "model/IfsExchange.h"
+#include "model/FlameExchange.h"
+#include "cli/FigureOptions.h"
 #include "model/NamedMatrix.h"
 #include "model/NumberFormat.h"
 #include "model/PointExport.h"
@@ -87,16 +89,18 @@ int exportData(const QStringList &args)
     return guarded([&] {
         QCommandLineParser parser;
         parser.setApplicationDescription(
-            CliTr::tr("Export an item's geometry: the attractor F^k(X0) as a PLY point cloud (with "
-                   "the map applied last per point), a surface item's net after k rounds of "
-                   "classic subdivision as an OBJ mesh, or a mesh item after k steps with every "
-                   "vertex at its limit position (OBJ); its maps as a Fractint .ifs entry (ifs); "
-                   "or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox "
-                   "(matlab)."));
+            CliTr::tr("Export an item's geometry: the attractor F^k(X0) as a PLY point cloud "
+                      "(with the map applied last per point), a surface item's net after k "
+                      "rounds of classic subdivision as an OBJ mesh, or a mesh item after k "
+                      "steps with every vertex at its limit position (OBJ); its maps as a "
+                      "Fractint .ifs entry (ifs) or a flam3 genome that flam3-render draws in "
+                      "the frame of render's --size and --bounds (flame); or its matrices S_i, "
+                      "M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab)."));
         parser.addPositionalArgument("project", CliTr::tr("The .awb project file."));
         parser.addOptions({{"item", CliTr::tr("The item."), "name"},
                            {"format", CliTr::tr("ply (attractor points), obj (subdivided "
-                                                "mesh), ifs (Fractint) or matlab (matrices)."),
+                                                "mesh), ifs (Fractint), flame (flam3) or "
+                                                "matlab (matrices)."),
                             "fmt"},
                            {"out", CliTr::tr("Output file."), "file"},
                            {"depth", CliTr::tr("PLY: iteration depth (default: the item's)."), "k"},
@@ -105,15 +109,19 @@ int exportData(const QStringList &args)
                            {"max-points", CliTr::tr("PLY: refuse to write more (default "
                                                  "50000000)."), "n",
                             "50000000"}});
+        parser.addOptions(frameOptionList());
         parseOrFail(parser, args, 1);
         if (!parser.isSet("item") || !parser.isSet("out") || !parser.isSet("format"))
             throw Failure{
-                CliTr::tr("--item NAME, --format ply|obj|ifs|matlab and --out FILE are required"),
+                CliTr::tr("--item NAME, --format ply|obj|ifs|flame|matlab and --out FILE are "
+                          "required"),
                 2};
         const QString format = parser.value("format").toLower();
-        if (format != "ply" && format != "obj" && format != "ifs" && format != "matlab")
+        if (format != "ply" && format != "obj" && format != "ifs" && format != "flame"
+            && format != "matlab")
             throw Failure{
-                CliTr::tr("--format must be ply, obj, ifs or matlab, got '%1'").arg(format), 2};
+                CliTr::tr("--format must be ply, obj, ifs, flame or matlab, got '%1'").arg(format),
+                2};
         Project project;
         load(project, parser.positionalArguments().first());
         AttractorItem *item = attractorItem(project, parser.value("item"));
@@ -131,6 +139,27 @@ int exportData(const QStringList &args)
                 throw Failure{why};
             const QByteArray text = QByteArray::fromStdString(fractintEntryText(*entry));
             if (file.write(text) != text.size())
+                throw Failure{CliTr::tr("cannot write %1: %2").arg(outFile, file.errorString())};
+        } else if (format == "flame") {
+            // The frame `render` draws with the same --size and --bounds.
+            FigureOptions o;
+            readFrameOptions(parser, o);
+            QRectF content;
+            renderFigure(project, item, o, QString(), &content);
+            if (content.width() < 0)
+                throw Failure{CliTr::tr("'%1' has nothing to frame").arg(item->name())};
+            QStringList colours;
+            const QStringList own = item->style().colors;
+            for (int i = 0; i < std::max(1, d->ifs.size()); ++i)
+                colours << (i < own.size() ? own[i] : mapColor(i).name());
+            QString why;
+            const auto text = flameOf(
+                *item, colours, {figureWorld(content, QSizeF(o.width, o.height)),
+                                 QSize(o.width, o.height)},
+                &why);
+            if (!text)
+                throw Failure{why};
+            if (file.write(*text) != text->size())
                 throw Failure{CliTr::tr("cannot write %1: %2").arg(outFile, file.errorString())};
         } else if (format == "matlab") {
             const QByteArray text = matlabMatrices(namedMatrices(*d), item->name()).toUtf8();

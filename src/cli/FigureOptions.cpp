@@ -2,6 +2,8 @@
 // drawing itself (plane attractors, surfaces and meshes).
 
 #include "cli/FigureOptions.h"
+
+#include "render/DensityFile.h"
 #include "cli/CommandSupport.h"
 #include "cli/ProjectCommands.h"
 
@@ -51,9 +53,18 @@
 namespace awb::cli {
 
 // The options of `render` that `animate` shares: how a figure of an item is drawn.
-QList<QCommandLineOption> figureOptionList()
+QList<QCommandLineOption> frameOptionList()
 {
     return {{"size", CliTr::tr("Image size in pixels (default 900x700)."), "WxH", "900x700"},
+            {"bounds", CliTr::tr("Plane figures: the world rectangle to frame (padded by 6%), e.g. to "
+                              "compare figures at one scale (default: fit the content)."),
+             "x0,y0,x1,y1"}};
+}
+
+QList<QCommandLineOption> figureOptionList()
+{
+    QList<QCommandLineOption> list = frameOptionList();
+    list += QList<QCommandLineOption>{
             {"depth", CliTr::tr("Deterministic iteration depth (default: the item's)."), "k"},
             {"samples", CliTr::tr("Random iteration with this many points (up to 1e12; "
                                "memory stays that of the raster)."), "n"},
@@ -72,20 +83,20 @@ QList<QCommandLineOption> figureOptionList()
             {"view", CliTr::tr("Surfaces: the camera's azimuth and elevation in degrees "
                             "(orthographic; default: the item's camera)."),
              "az,el"},
-            {"bounds", CliTr::tr("Plane figures: the world rectangle to frame (padded by 6%), e.g. to "
-                              "compare figures at one scale (default: fit the content)."),
-             "x0,y0,x1,y1"},
             {"format", CliTr::tr("The output's format when its name has no suffix (e.g. /dev/stdout): "
-                              "png, svg or pdf (default: the suffix)."),
-             "png|svg|pdf"}};
+                              "png, svg, pdf or exr (default: the suffix)."),
+             "png|svg|pdf|exr"},
+            {"bits", CliTr::tr("PNG: 8 (the figure, default) or 16 (the attractor's raw density: "
+                               "alpha = log(1 + hits) / log(1 + most hits), the colour the "
+                               "hits' mean; no title, polygons or margins). An .exr file always "
+                               "holds the raw density, as float32 counts."),
+             "8|16", "8"}};
+    return list;
 }
 
 
-FigureOptions figureOptions(const QCommandLineParser &parser)
+void readFrameOptions(const QCommandLineParser &parser, FigureOptions &o)
 {
-    FigureOptions o;
-    if (parser.isSet("depth") && parser.isSet("samples"))
-        throw Failure{CliTr::tr("--depth and --samples exclude each other"), 2};
     const QRegularExpression sizeRe("^(\\d+)x(\\d+)$");
     const auto sm = sizeRe.match(parser.value("size"));
     if (!sm.hasMatch() || sm.captured(1).toInt() < 64 || sm.captured(2).toInt() < 64
@@ -94,6 +105,25 @@ FigureOptions figureOptions(const QCommandLineParser &parser)
                           .arg(parser.value("size"))};
     o.width = sm.captured(1).toInt();
     o.height = sm.captured(2).toInt();
+    if (parser.isSet("bounds")) {
+        const QStringList parts = parser.value("bounds").split(',');
+        double v[4] = {};
+        bool ok = parts.size() == 4;
+        for (int i = 0; ok && i < 4; ++i)
+            v[i] = parts[i].trimmed().toDouble(&ok), ok = ok && std::isfinite(v[i]);
+        if (!ok || !(v[2] > v[0]) || !(v[3] > v[1]))
+            throw Failure{CliTr::tr("--bounds must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, got '%1'")
+                              .arg(parser.value("bounds"))};
+        o.bounds = QRectF(QPointF(v[0], v[1]), QPointF(v[2], v[3]));
+    }
+}
+
+FigureOptions figureOptions(const QCommandLineParser &parser)
+{
+    FigureOptions o;
+    if (parser.isSet("depth") && parser.isSet("samples"))
+        throw Failure{CliTr::tr("--depth and --samples exclude each other"), 2};
+    readFrameOptions(parser, o);
     if (parser.isSet("depth"))
         o.depth = intOption(parser, "depth", 0, 64);
     if (parser.isSet("samples"))
@@ -109,25 +139,61 @@ FigureOptions figureOptions(const QCommandLineParser &parser)
         o.threads = intOption(parser, "threads", 1, 64);
     if (parser.isSet("view"))
         o.view = parser.value("view");
-    if (parser.isSet("bounds")) {
-        const QStringList parts = parser.value("bounds").split(',');
-        double v[4] = {};
-        bool ok = parts.size() == 4;
-        for (int i = 0; ok && i < 4; ++i)
-            v[i] = parts[i].trimmed().toDouble(&ok), ok = ok && std::isfinite(v[i]);
-        if (!ok || !(v[2] > v[0]) || !(v[3] > v[1]))
-            throw Failure{CliTr::tr("--bounds must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, got '%1'")
-                              .arg(parser.value("bounds"))};
-        o.bounds = QRectF(QPointF(v[0], v[1]), QPointF(v[2], v[3]));
-    }
     if (parser.isSet("format")) {
         o.format = parser.value("format").toLower();
-        if (o.format != "png" && o.format != "svg" && o.format != "pdf")
-            throw Failure{CliTr::tr("--format must be png, svg or pdf, got '%1'")
+        if (o.format != "png" && o.format != "svg" && o.format != "pdf" && o.format != "exr")
+            throw Failure{CliTr::tr("--format must be png, svg, pdf or exr, got '%1'")
                               .arg(parser.value("format")), 2};
     }
+    o.bits = intOption(parser, "bits", 8, 16);
+    if (o.bits != 8 && o.bits != 16)
+        throw Failure{CliTr::tr("--bits must be 8 or 16, got '%1'").arg(parser.value("bits")), 2};
     return o;
 }
+
+namespace {
+
+// The attractor's raw density in the figure's frame, without title, polygons or margins:
+// float32 counts (.exr) or the 16-bit log density (PNG), render/DensityFile.h.
+void writeRawDensity(const FigureSpec &spec, const std::shared_ptr<const DerivedIfs> &d,
+                     int depth, const FigureOptions &o, const QString &suffix,
+                     const QString &caption, const QString &outFile)
+{
+    if (suffix != QLatin1String("exr") && suffix != QLatin1String("png"))
+        throw Failure{CliTr::tr("--bits 16 writes PNG files, got '%1'").arg(outFile), 2};
+    if (d->polygon || (d->ifs.size() == 0 && !d->iterate))
+        throw Failure{CliTr::tr("the raw density (.exr, --bits 16) counts an attractor's "
+                                "points; this item's figure is a polygon")};
+    RenderRequest r;
+    r.ifs = std::shared_ptr<const Ifs>(d, &d->ifs);
+    r.iterate = d->iterate;
+    r.start = spec.start;
+    r.mode = spec.random ? RenderRequest::Mode::Random : RenderRequest::Mode::Deterministic;
+    r.depth = depth;
+    r.samples = spec.samples;
+    r.seed = spec.seed;
+    const QRectF content = spec.bounds.isValid() ? spec.bounds : contentBounds(spec);
+    r.world = figureWorld(content, QSizeF(o.width, o.height));
+    r.size = QSize(o.width, o.height);
+    r.colouring = spec.colouring;
+    r.supersample = 1;  // counts per pixel, not per anti-aliasing cell
+    r.threads = spec.threads;
+    AttractorDensity density;
+    try {
+        density = renderAttractorDensity(r);
+    } catch (const InputError &e) {
+        throw Failure{QString::fromStdString(e.what())};
+    }
+    DensityFileInfo info{r.world, caption, spec.metadata};
+    QString error;
+    const bool ok = suffix == QLatin1String("exr")
+                        ? writeDensityExr(outFile, density, info, &error)
+                        : writeDensityPng16(outFile, density, info, &error);
+    if (!ok)
+        throw Failure{error};
+}
+
+} // namespace
 
 // Draws `item` (of `project`, or a copy of one of its items: an animation frame) as
 // `render` does and writes the figure to `outFile`; or, with `measure`, only measures the
@@ -169,6 +235,11 @@ void renderFigure(const Project &project, AttractorItem *item, const FigureOptio
         spec.start = item->coreStartSet(*d);
     const auto *mesh = qobject_cast<const SubdivisionMeshItem *>(item);
     if (d->surface || mesh || item->pointDimension() == 3) {
+        if (o.bits == 16 || o.format == QLatin1String("exr")
+            || QFileInfo(outFile).suffix().toLower() == QLatin1String("exr"))
+            throw Failure{CliTr::tr("the raw density (.exr, --bits 16) is of attractors "
+                                    "drawn in the plane; '%1' is drawn in space")
+                              .arg(item->name())};
         const auto *surface = qobject_cast<const SubdivisionSurfaceItem *>(item);
         const SurfaceCamera camera = surface ? surface->camera() : SurfaceCamera{};
         const QStringList view =
@@ -256,6 +327,11 @@ void renderFigure(const Project &project, AttractorItem *item, const FigureOptio
         return;
     }
     spec.metadata = figureMetadata(project, *item);
+    const QString suffix = o.format.isEmpty() ? QFileInfo(outFile).suffix().toLower() : o.format;
+    if (suffix == QLatin1String("exr") || o.bits == 16) {
+        writeRawDensity(spec, d, depth, o, suffix, caption, outFile);
+        return;
+    }
     QString error;
     if (!writeFigure(spec, outFile, &error, o.format))
         throw Failure{error};

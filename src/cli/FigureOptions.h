@@ -30,15 +30,21 @@ struct FigureOptions {
     QString view;  // "az,el" or empty
     QRectF bounds;  // the world rectangle to frame; invalid: fit the content
     QString captionSuffix;  // e.g. an animation frame's time and values
-    QString format;  // "", "png", "svg" or "pdf"
+    QString format;  // "", "png", "svg", "pdf" or "exr"
+    int bits = 8;    // PNG: 8 (the figure) or 16 (the raw log density, render/DensityFile.h)
 };
 
 // The options of `render` that `animate` shares.
 QList<QCommandLineOption> figureOptionList();
+// The frame's two of them, --size and --bounds (export --format flame takes these too), and
+// their reading into o.width, o.height and o.bounds.
+QList<QCommandLineOption> frameOptionList();
+void readFrameOptions(const QCommandLineParser &parser, FigureOptions &o);
 // Reads them (Failure for a value out of range).
 FigureOptions figureOptions(const QCommandLineParser &parser);
-// Draws `item` into `outFile` (PNG, SVG, PDF by o.format or the suffix); with `measure`, only
-// the bounds of the content are measured into it.
+// Draws `item` into `outFile` (PNG, SVG, PDF by o.format or the suffix; EXR and 16-bit PNG:
+// the attractor's raw density in the figure's frame); with `measure`, only the bounds of the
+// content are measured into it.
 void renderFigure(const Project &project, AttractorItem *item, const FigureOptions &o,
                   const QString &outFile, QRectF *measure = nullptr);
 

@@ -2,6 +2,7 @@
 
 #include "render/CurvePaths.h"
 #include "render/FigureFile.h"
+#include "core/analysis/Spectrum.h"
 
 #include <QCoreApplication>
 #include <QFontMetricsF>
@@ -84,7 +85,17 @@ QRectF contentBounds(const FigureSpec &spec)
         // Enough levels to see the attractor's extent, few enough to be instant.
         while (shallow > 0 && imagesAt(spec, shallow) > 50000)
             --shallow;
-        if (spec.random) {
+        if (spec.random && !checkIfs(*spec.ifs).contractive) {
+            // Contracting on average only (a flame): the box of 99% of the measure, as the
+            // window frames it (AttractorView::contentBounds); the tails are not bounded.
+            ChaosOptions opt;
+            opt.samples = 20000;
+            opt.seed = spec.seed;
+            QuantileBoundsSink mass(viewsOf(spec), 0.99);
+            chaosGame(*spec.ifs, spec.start.vertices.row(0), opt, mass);
+            if (!mass.empty())
+                grow(Mat(mass.lo()).leftCols(2)), grow(Mat(mass.hi()).leftCols(2));
+        } else if (spec.random) {
             ChaosOptions opt;
             opt.samples = std::min<std::uint64_t>(spec.samples, 20000);
             opt.seed = spec.seed;
@@ -109,13 +120,8 @@ QRectF contentBounds(const FigureSpec &spec)
     return QRectF(QPointF(lo[0], lo[1]), QPointF(hi[0], hi[1]));
 }
 
-namespace {
-
-// Bounds of everything drawn in all panels (or the spec's own), padded, with equal scale on
-// both axes.
-Frame frameFor(const FigureSpec &spec, const QRectF &target)
+QRectF figureWorld(const QRectF &content, const QSizeF &target)
 {
-    const QRectF content = spec.bounds.isValid() ? spec.bounds : contentBounds(spec);
     double lo[2] = {content.left(), content.top()}, hi[2] = {content.right(), content.bottom()};
     if (content.width() < 0)
         lo[0] = lo[1] = -1, hi[0] = hi[1] = 1;
@@ -126,7 +132,18 @@ Frame frameFor(const FigureSpec &spec, const QRectF &target)
     const double scale = std::min(target.width() / w, target.height() / h);
     const double cx = 0.5 * (lo[0] + hi[0]), cy = 0.5 * (lo[1] + hi[1]);
     const double hw = 0.5 * target.width() / scale, hh = 0.5 * target.height() / scale;
-    return {cx - hw, cy - hh, cx + hw, cy + hh, target};
+    return QRectF(QPointF(cx - hw, cy - hh), QPointF(cx + hw, cy + hh));
+}
+
+namespace {
+
+// Bounds of everything drawn in all panels (or the spec's own), padded, with equal scale on
+// both axes.
+Frame frameFor(const FigureSpec &spec, const QRectF &target)
+{
+    const QRectF content = spec.bounds.isValid() ? spec.bounds : contentBounds(spec);
+    const QRectF w = figureWorld(content, target.size());
+    return {w.left(), w.top(), w.right(), w.bottom(), target};
 }
 
 // The colour of an image with address a (n symbols) in the figure's colouring.

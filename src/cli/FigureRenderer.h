@@ -63,6 +63,9 @@ QColor mapColor(int i);
 // The world rectangle of what the figure draws (attractor at a shallow level, start set,
 // polygons), unpadded; a negative size when there is nothing.
 QRectF contentBounds(const FigureSpec &spec);
+// The world rectangle a panel of `target` pixels shows of `content` (contentBounds or the
+// --bounds): padded by 6% of its larger side, centred, one scale on both axes (y up).
+QRectF figureWorld(const QRectF &content, const QSizeF &target);
 // Size of the whole figure in pixels (panels side by side, title, captions).
 QSize figureSize(const FigureSpec &spec);
 // Paints the figure into the rectangle (0, 0, figureSize) of the painter's device.

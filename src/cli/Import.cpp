@@ -1,10 +1,13 @@
 // attractor-cli import: the IFS files of other tools as a project (issue 34) -- every entry of
-// a Fractint .ifs file (2D and 3D) as a custom fractal with control points. Entries that are
-// malformed are named with their line and column on stderr (exit 1), the others are kept.
+// a Fractint .ifs file (2D and 3D), every flame of a flam3 file (.flame, .flam3), as a custom
+// fractal with control points. Entries that are malformed are named with their line and
+// column on stderr (exit 1), the others are kept; what was kept with a loss (a flame's
+// non-linear variation) is a warning on stderr.
 
 #include "cli/CommandSupport.h"
 #include "cli/ProjectCommands.h"
 
+#include "model/FlameExchange.h"
 #include "model/IfsExchange.h"
 #include "model/Item.h"
 #include "model/Project.h"
@@ -20,25 +23,33 @@ int importFile(const QStringList &args)
         QCommandLineParser parser;
         parser.setApplicationDescription(CliTr::tr(
             "Make a project of another tool's IFS file: every entry of a Fractint .ifs file (2D "
-            "and 3D, the format of Fractint, xfractint and the IFS Construction Kit) as a "
-            "fractal with control points."));
-        parser.addPositionalArgument("file", CliTr::tr("The file to import (.ifs)."));
+            "and 3D, the format of Fractint, xfractint and the IFS Construction Kit), or every "
+            "flame of a flam3 genome (.flame, .flam3: flam3, Apophysis, JWildfire), as a "
+            "fractal with control points. Non-linear variations are dropped with a warning."));
+        parser.addPositionalArgument("file",
+                                     CliTr::tr("The file to import (.ifs, .flame, .flam3)."));
         parser.addOptions({{"out", CliTr::tr("The project file to write (.awb)."), "file"}});
         parseOrFail(parser, args, 1);
         if (!parser.isSet("out"))
             throw Failure{CliTr::tr("--out FILE (the project to write) is required"), 2};
         const QString file = parser.positionalArguments().first();
         const QString suffix = QFileInfo(file).suffix().toLower();
-        if (suffix != "ifs")
-            throw Failure{CliTr::tr("%1: import reads Fractint .ifs files").arg(file), 2};
+        const bool flame = suffix == "flame" || suffix == "flam3";
+        if (suffix != "ifs" && !flame)
+            throw Failure{
+                CliTr::tr("%1: import reads Fractint .ifs and flam3 .flame (.flam3) files")
+                    .arg(file),
+                2};
         ImportedItems imported;
         try {
-            imported = importFractint(file);
+            imported = flame ? importFlame(file) : importFractint(file);
         } catch (const InputError &e) {
             throw Failure{QString::fromStdString(e.what())};
         }
         for (const QString &p : imported.problems)
             err() << "attractor-cli: " << p << "\n";
+        for (const QString &w : imported.warnings)
+            err() << "attractor-cli: " << CliTr::tr("warning: %1").arg(w) << "\n";
         if (imported.items.empty())
             throw Failure{CliTr::tr("%1: no entry could be imported").arg(file)};
         Project project;

@@ -54,12 +54,14 @@ int render(const QStringList &args)
     return guarded([&] {
         QCommandLineParser parser;
         parser.setApplicationDescription(
-            CliTr::tr("Render an item's attractor (with its control polygons) to PNG, SVG or PDF."));
+            CliTr::tr("Render an item's attractor (with its control polygons) to PNG, SVG or PDF; "
+                      "or its raw density (hits per pixel) to OpenEXR (.exr, float32 "
+                      "counts) or a 16-bit PNG (--bits 16), to tone-map elsewhere."));
         parser.addPositionalArgument("project", CliTr::tr("The .awb project file."));
         parser.addOptions({{"item", CliTr::tr("The item to render (default: the first with an "
                                            "attractor)."),
                             "name"},
-                           {"out", CliTr::tr("Output file: .png, .svg or .pdf."), "file"}});
+                           {"out", CliTr::tr("Output file: .png, .svg, .pdf or .exr."), "file"}});
         parser.addOptions(figureOptionList());
         parseOrFail(parser, args, 1);
         if (!parser.isSet("out"))

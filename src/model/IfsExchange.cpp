@@ -21,9 +21,11 @@ struct ExchangeTr {
     Q_DECLARE_TR_FUNCTIONS(awb::IfsExchange)
 };
 
+} // namespace
+
 // The entry as the JSON of a custom "fractal" item (read back through the item's own reader,
 // which checks it as it checks a file).
-QJsonObject fractalJson(const FractintEntry &e)
+QJsonObject importedFractalJson(const FractintEntry &e, const QStringList &colours, int samples)
 {
     QJsonArray maps;
     for (const AffineMap &f : e.maps) {
@@ -42,24 +44,37 @@ QJsonObject fractalJson(const FractintEntry &e)
     // Fractint's own way: the chaos game with the entry's probabilities (in space too: the 3D
     // view streams it, FractalItem).
     const QJsonObject algorithm{{"mode", "random"},
-                                {"samples", e.dimension == 2 ? 400000 : 200000},
+                                {"samples", samples > 0 ? samples
+                                                        : e.dimension == 2 ? 400000 : 200000},
                                 {"seed", 1},
                                 {"probabilities", probabilities},
                                 {"depth", 8}};
     const Mat centre = cage.colwise().mean();
     QJsonArray start;  // (not QJsonArray{array}: clang takes that for a copy of the inner one)
     start.append(ProjectIO::rowToJson(centre.row(0)));
-    return {{"type", "fractal"},
-            {"name", QString::fromStdString(e.name)},
-            {"preset", "custom"},
-            {"weights", "nearest"},
-            {"maps", maps},
-            {"control_points", points},
-            {"algorithm", algorithm},
-            {"start_set", QJsonObject{{"kind", "point"}, {"points", start}}}};
+    QJsonObject json{{"type", "fractal"},
+                     {"name", QString::fromStdString(e.name)},
+                     {"preset", "custom"},
+                     {"weights", "nearest"},
+                     {"maps", maps},
+                     {"control_points", points},
+                     {"algorithm", algorithm},
+                     {"start_set", QJsonObject{{"kind", "point"}, {"points", start}}}};
+    if (!colours.isEmpty())
+        json["style"] = QJsonObject{{"color_by", "map"},
+                                    {"colors", QJsonArray::fromStringList(colours)}};
+    return json;
 }
 
-} // namespace
+std::unique_ptr<Item> importedFractal(const FractintEntry &e, const QStringList &colours,
+                                     int samples)
+{
+    auto item = std::make_unique<FractalItem>();
+    const QJsonObject json = importedFractalJson(e, colours, samples);
+    item->read(FieldReader(json, QString()));
+    item->setName(json["name"].toString());
+    return item;
+}
 
 ImportedItems importFractintText(const QByteArray &text, const QString &fileName)
 {
@@ -70,11 +85,9 @@ ImportedItems importFractintText(const QByteArray &text, const QString &fileName
     for (const FractintProblem &p : file.problems)
         out.problems << QString::fromStdString(p.describe(name));
     for (const FractintEntry &e : file.entries) {
-        auto item = std::make_unique<FractalItem>();
+        std::unique_ptr<Item> item;
         try {
-            const QJsonObject json = fractalJson(e);
-            item->read(FieldReader(json, QString()));
-            item->setName(json["name"].toString());
+            item = importedFractal(e);
         } catch (const LoadError &error) {
             out.problems << ExchangeTr::tr("%1, line %2: entry %3: %4 (%5)")
                                 .arg(QString::fromStdString(name))

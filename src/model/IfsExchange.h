@@ -25,7 +25,17 @@ struct ImportedItems {
     // Entries left out, each with the file, line and column ("fern.ifs, line 4, column 9:
     // entry fern: ...").
     QStringList problems;
+    // What was imported with a loss, with where ("a.flame, line 7, column 4: flame 'x', xform
+    // 2: variation 'spherical' (0.5) dropped"): never silent.
+    QStringList warnings;
 };
+
+// A custom fractal of an imported entry: its maps, the attractor's bounding box as control
+// points, random iteration with the entry's probabilities (`samples` of them; 0: the
+// application's default), coloured by map with `colours` ("#rrggbb"; empty: the views' own).
+// Throws LoadError or InputError (maps that leave every bound).
+std::unique_ptr<Item> importedFractal(const FractintEntry &entry, const QStringList &colours = {},
+                                      int samples = 0);
 
 // Every entry of a .ifs file; InputError when the file cannot be read at all.
 ImportedItems importFractint(const QString &fileName);

@@ -99,14 +99,16 @@ void checkRenderRequest(const RenderRequest &r)
         throw InputError("the start set is empty");
 }
 
-QImage renderAttractorImage(const RenderRequest &r, int depth, std::uint64_t samples,
-                            RenderInfo *info, const IterationControl &control)
+namespace {
+
+// The histogram of a picture: the frame, the colours and the engine's (or an automaton's)
+// hits. False when control.cancel stopped it.
+bool accumulatePicture(const RenderRequest &r, int depth, std::uint64_t samples,
+                       const IterationControl &control, DensityImage &density, RasterFrame &frame,
+                       EngineColours &colours, IterationStats &stats)
 {
     checkRenderRequest(r);
-    QElapsedTimer timer;
-    timer.start();
     const QRectF w = r.world.normalized();
-    RasterFrame frame;
     frame.width = r.size.width();
     frame.height = r.size.height();
     frame.x0 = w.left(), frame.x1 = w.right(), frame.y0 = w.top(), frame.y1 = w.bottom();
@@ -116,11 +118,7 @@ QImage renderAttractorImage(const RenderRequest &r, int depth, std::uint64_t sam
         --frame.supersample;
     frame.validate();
     const int maps = std::max(1, r.ifs->size());
-    const EngineColours colours = colourTable(r, colourPrefix(r, depth, maps), maps);
-
-    // Reused by the next picture rendered on this thread (a drag: no allocation per step).
-    static thread_local DensityImage density;
-    IterationStats stats;
+    colours = colourTable(r, colourPrefix(r, depth, maps), maps);
     if (r.iterate) {
         // An automaton: its own iteration into the engine's rasteriser, one sink per thread.
         std::vector<std::unique_ptr<DensitySink>> sinks;
@@ -148,7 +146,39 @@ QImage renderAttractorImage(const RenderRequest &r, int depth, std::uint64_t sam
         job.threads = threadsFor(r);
         stats = accumulate(job, density, control);
     }
-    if (stats.cancelled || (control.cancel && control.cancel->load()))
+    return !(stats.cancelled || (control.cancel && control.cancel->load()));
+}
+
+} // namespace
+
+AttractorDensity renderAttractorDensity(const RenderRequest &request,
+                                        const IterationControl &control)
+{
+    RenderRequest r = request;
+    r.tone.mode = Accumulation::Density;
+    DensityImage density;
+    AttractorDensity out;
+    EngineColours colours;
+    IterationStats stats;
+    if (!accumulatePicture(r, r.depth, r.samples, control, density, out.frame, colours, stats))
+        return {};
+    out.rgba = densityChannels(density, out.frame, colours.labelColours);
+    out.images = double(stats.images);
+    return out;
+}
+
+QImage renderAttractorImage(const RenderRequest &r, int depth, std::uint64_t samples,
+                            RenderInfo *info, const IterationControl &control)
+{
+    QElapsedTimer timer;
+    timer.start();
+    const QRectF w = r.world.normalized();
+    // Reused by the next picture rendered on this thread (a drag: no allocation per step).
+    static thread_local DensityImage density;
+    RasterFrame frame;
+    EngineColours colours;
+    IterationStats stats;
+    if (!accumulatePicture(r, depth, samples, control, density, frame, colours, stats))
         return {};
 
     QImage image(frame.width, frame.height, QImage::Format_ARGB32_Premultiplied);

@@ -93,6 +93,17 @@ inline QImage renderAttractorImage(const RenderRequest &request, RenderInfo *inf
     return renderAttractorImage(request, request.depth, request.samples, info, control);
 }
 
+// The raw density of a picture: the histogram of the request's final picture (density
+// accumulation, whatever its tone) as four floats a pixel (core densityChannels: R G B = hits
+// times colour, A = hits), row 0 at the top. Empty rgba when control.cancel stopped it.
+struct AttractorDensity {
+    RasterFrame frame;
+    std::vector<float> rgba;
+    double images = 0;
+};
+AttractorDensity renderAttractorDensity(const RenderRequest &request,
+                                        const IterationControl &control = {});
+
 struct StyleSpec;  // model/ItemValues.h
 
 // The colouring of an item's style (color_by, prefix_length, colors).

@@ -237,6 +237,22 @@ const std::map<QString, Maker> &inputs()
                                          "; the next entry has a typo\n"
                                          "bad { .5 0 0 .5 x 0 .5 }\n");
          }},
+        {"flame-coefs", [](QDir &d, QStringList *) {
+             return file(d, "short.flame", "<flame name=\"cut\">\n"
+                                           "  <xform weight=\"1\" linear=\"1\" "
+                                           "coefs=\"0.5 0 0 0.5 0\"/>\n</flame>\n");
+         }},
+        {"flame-xml", [](QDir &d, QStringList *) {
+             return file(d, "unclosed.flame", "<flames>\n<flame name=\"a\">\n"
+                                              "<xform coefs=\"1 0 0 1 0 0\">\n</flame>\n");
+         }},
+        {"flame-non-linear", [](QDir &d, QStringList *) {
+             return file(d, "swirl.flame",
+                         "<flame name=\"s\">\n"
+                         "  <xform weight=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 0 0\"/>\n"
+                         "  <xform weight=\"1\" swirl=\"0.7\" coefs=\"0.5 0 0 0.5 1 0\"/>\n"
+                         "</flame>\n");
+         }},
         // ---- numbers
         {"million-points", [](QDir &d, QStringList *) {
              QByteArray pts;
@@ -340,6 +356,7 @@ const std::map<QString, Maker> &inputs()
         // ---- command lines
         {"depth-option", [](QDir &d, QStringList *) { return copyExample(d, "000-fig11-sierpinski-with-control-points.awb", "fig11.awb"); }},
         {"samples-option", [](QDir &d, QStringList *) { return copyExample(d, "000-fig11-sierpinski-with-control-points.awb", "fig11.awb"); }},
+        {"raw-density-bits", [](QDir &d, QStringList *) { return copyExample(d, "000-fig11-sierpinski-with-control-points.awb", "fig11.awb"); }},
         {"size-option", [](QDir &d, QStringList *) { return copyExample(d, "000-fig11-sierpinski-with-control-points.awb", "fig11.awb"); }},
         {"bad-address", [](QDir &d, QStringList *) { return copyExample(d, "000-fig11-sierpinski-with-control-points.awb", "fig11.awb"); }},
         {"bad-start", [](QDir &d, QStringList *) { return copyExample(d, "000-fig11-sierpinski-with-control-points.awb", "fig11.awb"); }},

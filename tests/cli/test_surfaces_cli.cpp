@@ -258,7 +258,7 @@ void TestSurfacesCli::badOptions()
                   "--format", "stl", "--out", m_dir.filePath("x.stl")},
                  &out, &err),
              2);
-    QVERIFY(err.contains("ply, obj, ifs or matlab"));
+    QVERIFY(err.contains("ply, obj, ifs, flame or matlab"));
     const QString curve = example("000-fig02-cubic-bspline-from-point.awb");
     QCOMPARE(run({"analyse", curve, "--json"}, &out, &err), 0);
     const QString name = QJsonDocument::fromJson(out).object()["items"].toArray()[0]

@@ -22,6 +22,7 @@ class TestExchangeWindow : public QObject {
 private slots:
     void importIsOneUndoStep();
     void exportItemAs();
+    void flamesInAndOut();
 
 private:
     QString write(const QString &name, const QByteArray &text)
@@ -84,11 +85,55 @@ void TestExchangeWindow::exportItemAs()
     QVERIFY(mf.open(QIODevice::ReadOnly));
     QVERIFY(mf.readAll().contains("S = {["));
     QVERIFY(!w.exportItemAs(m_dir.filePath("out.txt"), &error));
-    QVERIFY2(error.contains(".ifs (Fractint) or .m (MATLAB)"), qPrintable(error));
+    QVERIFY2(error.contains(".ifs (Fractint), .flame (flam3) or .m (MATLAB)"), qPrintable(error));
     // The cubic B-spline of a new project acts in the lifted space of 000 §2.
     w.newProject();
     QVERIFY(!w.exportItemAs(ifs, &error));
     QVERIFY2(error.contains("drawn through a projection"), qPrintable(error));
+}
+
+void TestExchangeWindow::flamesInAndOut()
+{
+    // Two flames, one undo step; the dropped variation is named for the window to show.
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.filePath("recovery"));
+    w.resize(900, 700);
+    const int before = w.project()->childCount();
+    const QString file =
+        write("two.flame", "<flames>\n"
+                           "<flame name=\"halves\"><xform weight=\"1\" linear=\"1\" "
+                           "coefs=\"0.5 0 0 0.5 0 0\"/>\n"
+                           "<xform weight=\"1\" linear=\"1\" julia=\"0.2\" "
+                           "coefs=\"0.5 0 0 0.5 0.5 0.5\"/></flame>\n"
+                           "<flame name=\"thirds\"><xform weight=\"1\" linear=\"1\" "
+                           "coefs=\"0.3 0 0 0.3 0 0\"/><xform weight=\"2\" linear=\"1\" "
+                           "coefs=\"0.3 0 0 0.3 0.7 0\"/></flame>\n</flames>\n");
+    QStringList problems, warnings;
+    QString error;
+    QVERIFY2(w.importIfs(file, &problems, &error, &warnings), qPrintable(error));
+    QVERIFY(problems.isEmpty());
+    QCOMPARE(warnings.size(), 1);
+    QVERIFY2(warnings[0].startsWith("two.flame, line 3, column ")
+                 && warnings[0].contains("flame 'halves', xform 2: variation julia (0.2) dropped"),
+             qPrintable(warnings[0]));
+    QCOMPARE(w.project()->childCount(), before + 2);
+    auto *thirds = qobject_cast<FractalItem *>(w.project()->findItem("thirds"));
+    QVERIFY(thirds);
+    QCOMPARE(thirds->algorithm().probabilities, (std::vector<double>{1.0, 2.0}));
+    w.project()->undoStack()->undo();
+    QCOMPARE(w.project()->childCount(), before);
+    w.project()->undoStack()->redo();
+
+    // Out again, framed as the view shows the current item.
+    w.setCurrentItem(w.project()->findItem("thirds"));
+    const QString out = m_dir.filePath("thirds.flame");
+    QVERIFY2(w.exportItemAs(out, &error), qPrintable(error));
+    QFile f(out);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QByteArray text = f.readAll();
+    QVERIFY2(text.contains("coefs=\"0.3 0 0 0.3 0.7 0\"") && text.contains("weight=\"2\""),
+             text.constData());
+    QVERIFY(text.contains("<color index=\"255\""));
 }
 
 AWB_TEST_MAIN(TestExchangeWindow)

@@ -2,6 +2,9 @@
 
 #include "core/Messages.h"
 
+#include <Eigen/SVD>
+
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -272,8 +275,15 @@ Mat fractintControlCage(const FractintEntry &entry)
             cumulative[i] = double(i + 1);
         total = double(cumulative.size());
     }
+    // Maps that contract one by one: the orbit's bounding box. Otherwise (a flame's IFS that
+    // contracts on average only) the orbit has heavy tails: the box of 99% of its points.
+    bool contractive = true;
+    for (const AffineMap &f : entry.maps)
+        contractive = contractive
+                      && Eigen::JacobiSVD<Mat>(f.A).singularValues()(0) < 1.0 - 1e-12;
     RowVec x = RowVec::Zero(d);
     RowVec lo = RowVec::Constant(d, std::numeric_limits<double>::infinity()), hi = -lo;
+    std::vector<std::vector<double>> seen(static_cast<std::size_t>(d));
     std::uint64_t state = 0x9e3779b97f4a7c15ull;  // a fixed seed: the same cage every time
     for (int step = 0; step < 6000; ++step) {
         state = state * 6364136223846793005ull + 1442695040888963407ull;
@@ -290,8 +300,20 @@ Mat fractintControlCage(const FractintEntry &entry)
         if (step >= 50) {
             lo = lo.cwiseMin(x);
             hi = hi.cwiseMax(x);
+            for (int k = 0; k < d; ++k)
+                seen[std::size_t(k)].push_back(x(k));
         }
     }
+    if (!contractive)
+        for (int k = 0; k < d; ++k) {
+            std::vector<double> &v = seen[std::size_t(k)];
+            const auto a = std::ptrdiff_t(0.005 * double(v.size())),
+                       b = std::ptrdiff_t(0.995 * double(v.size()));
+            std::nth_element(v.begin(), v.begin() + a, v.end());
+            lo(k) = v[std::size_t(a)];
+            std::nth_element(v.begin(), v.begin() + b, v.end());
+            hi(k) = v[std::size_t(b)];
+        }
     const double largest = std::max((hi - lo).maxCoeff(), 1e-9);
     for (int k = 0; k < d; ++k)
         if (hi(k) - lo(k) < 1e-6 * largest) {

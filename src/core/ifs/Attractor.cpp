@@ -404,4 +404,33 @@ void BoundsSink::consume(const Mat &v, StartSet::Kind, const std::uint8_t *, int
     }
 }
 
+void QuantileBoundsSink::consume(const Mat &v, StartSet::Kind, const std::uint8_t *, int)
+{
+    for (const Projection &view : m_views) {
+        const Mat p = project(view, v);
+        if (m_coords.size() < std::size_t(p.cols()))
+            m_coords.resize(std::size_t(p.cols()));
+        for (Eigen::Index r = 0; r < p.rows(); ++r)
+            if (p.row(r).allFinite())
+                for (Eigen::Index c = 0; c < p.cols(); ++c)
+                    m_coords[std::size_t(c)].push_back(p(r, c));
+    }
+}
+
+RowVec QuantileBoundsSink::quantile(double q) const
+{
+    RowVec out(Eigen::Index(m_coords.size()));
+    for (std::size_t c = 0; c < m_coords.size(); ++c) {
+        std::vector<double> v = m_coords[c];
+        if (v.empty()) {
+            out(Eigen::Index(c)) = 0;
+            continue;
+        }
+        const auto k = std::size_t(std::clamp(q, 0.0, 1.0) * double(v.size() - 1) + 0.5);
+        std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
+        out(Eigen::Index(c)) = v[k];
+    }
+    return out;
+}
+
 } // namespace awb

@@ -131,6 +131,28 @@ private:
     bool m_finite = true;
 };
 
+// The box that holds `share` of the points it is fed, per axis of the projected images (all
+// views): the quantiles (1 - share) / 2 and (1 + share) / 2 of each coordinate. Fed by the
+// chaos game, the box of that share of the invariant measure: the frame of an IFS that
+// contracts only on average (a flame's), whose orbit has heavy tails (a bounding box of every
+// point would show the bulk as a dot).
+class QuantileBoundsSink : public AttractorSink {
+public:
+    QuantileBoundsSink(std::vector<Projection> views, double share)
+        : m_views(std::move(views)), m_share(share)
+    {}
+    void consume(const Mat &v, StartSet::Kind k, const std::uint8_t *a, int n) override;
+    bool empty() const { return m_coords.empty() || m_coords.front().empty(); }
+    RowVec lo() const { return quantile(0.5 * (1 - m_share)); }
+    RowVec hi() const { return quantile(0.5 * (1 + m_share)); }
+
+private:
+    RowVec quantile(double q) const;
+    std::vector<Projection> m_views;
+    double m_share;
+    std::vector<std::vector<double>> m_coords;  // per axis, the finite values seen
+};
+
 // Rasters of these images: DensitySink and the engine's kernels (core/render/Engine.h).
 
 } // namespace awb

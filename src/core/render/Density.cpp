@@ -410,6 +410,52 @@ std::vector<std::uint32_t> toneMap(const DensityImage &image, const RasterFrame 
     return out;
 }
 
+std::vector<std::array<double, 4>> densitySums(const DensityImage &image,
+                                               const RasterFrame &frame,
+                                               const std::vector<Rgb8> &labels)
+{
+    const int W = frame.width, H = frame.height, ss = frame.supersample;
+    if (image.cellsX() != W * ss || image.cellsY() != H * ss)
+        throw InputError(coreTranslate("awb::render", "density image does not match its frame"));
+    const int cw = image.cellsX();
+    const std::vector<Rgb8> ramp = colourRamp(labels);
+    const bool hitsImage = image.mode() == Accumulation::Hits;
+    std::vector<std::array<double, 4>> px(std::size_t(W) * H);
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            std::array<double, 4> s{0, 0, 0, 0};
+            for (int sy = 0; sy < ss; ++sy)
+                for (int sx = 0; sx < ss; ++sx) {
+                    const auto c = image.cell(std::size_t(y * ss + sy) * cw + (x * ss + sx));
+                    if (c[0] <= 0)
+                        continue;
+                    Rgb8 colour;
+                    if (!hitsImage)
+                        colour = ramp[std::size_t(std::clamp(std::lround(c[1] / c[0]), 0L, 255L))];
+                    else if (!labels.empty())
+                        colour = labels[std::min(std::size_t(c[1]) - 1, labels.size() - 1)];
+                    s[0] += c[0];
+                    s[1] += c[0] * colour.r, s[2] += c[0] * colour.g, s[3] += c[0] * colour.b;
+                }
+            px[std::size_t(y) * W + x] = s;
+        }
+    return px;
+}
+
+std::vector<float> densityChannels(const DensityImage &image, const RasterFrame &frame,
+                                   const std::vector<Rgb8> &labels)
+{
+    const std::vector<std::array<double, 4>> px = densitySums(image, frame, labels);
+    std::vector<float> out(4 * px.size());
+    for (std::size_t i = 0; i < px.size(); ++i) {
+        out[4 * i + 0] = float(px[i][1] / 255.0);
+        out[4 * i + 1] = float(px[i][2] / 255.0);
+        out[4 * i + 2] = float(px[i][3] / 255.0);
+        out[4 * i + 3] = float(px[i][0]);
+    }
+    return out;
+}
+
 void toneMapInto(const DensityImage &image, const RasterFrame &frame, const ToneSettings &tone,
                  const std::vector<Rgb8> &labels, std::uint32_t *out)
 {
@@ -485,23 +531,10 @@ void toneMapInto(const DensityImage &image, const RasterFrame &frame, const Tone
 
     // Density: box-filter the cells into pixels (counts and colours weighted by count), then
     // log-scale against the densest pixel.
-    std::vector<std::array<double, 4>> px(std::size_t(W) * H);
+    const std::vector<std::array<double, 4>> px = densitySums(image, frame, labels);
     double maxCount = 0;
-    for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x) {
-            std::array<double, 4> s{0, 0, 0, 0};
-            for (int sy = 0; sy < ss; ++sy)
-                for (int sx = 0; sx < ss; ++sx) {
-                    const auto c = image.cell(std::size_t(y * ss + sy) * cw + (x * ss + sx));
-                    if (c[0] <= 0)
-                        continue;
-                    const Rgb8 colour = colourOf(c);
-                    s[0] += c[0];
-                    s[1] += c[0] * colour.r, s[2] += c[0] * colour.g, s[3] += c[0] * colour.b;
-                }
-            px[std::size_t(y) * W + x] = s;
-            maxCount = std::max(maxCount, s[0]);
-        }
+    for (const auto &p : px)
+        maxCount = std::max(maxCount, p[0]);
     if (maxCount <= 0)
         return;
     const double g = 1.0 / std::max(0.1, tone.gamma);

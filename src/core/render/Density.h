@@ -285,6 +285,19 @@ std::vector<std::uint32_t> toneMap(const DensityImage &image, const RasterFrame 
 void toneMapInto(const DensityImage &image, const RasterFrame &frame, const ToneSettings &tone,
                  const std::vector<Rgb8> &labels, std::uint32_t *out);
 
+// Per output pixel, the hits of its frame.supersample^2 cells summed (the box filter's sum,
+// not its mean) and the same hits weighted by their colour channels (0..255: the ramp at a
+// cell's mean colour coordinate for density, its label's colour for hits): {n, n r, n g, n b},
+// row 0 at the top. The density tone maps these; densityChannels writes them out.
+std::vector<std::array<double, 4>> densitySums(const DensityImage &image, const RasterFrame &frame,
+                                               const std::vector<Rgb8> &labels);
+// The raw density of a picture (render --out F.exr, --bits 16): four floats a pixel, R G B A,
+// A = the pixel's hits (the invariant measure's mass in it, in hits) and R, G, B = the hits
+// times their colour (0..1), so that R/A, G/A, B/A is the pixel's mean colour. Exact counts
+// up to 2^24 a pixel.
+std::vector<float> densityChannels(const DensityImage &image, const RasterFrame &frame,
+                                   const std::vector<Rgb8> &labels);
+
 // Grows lit pixels by r pixels (a square): an unlit pixel takes the most opaque neighbour
 // within r (ties: the first in scan order), so a thin curve reads at print size.
 void dilate(std::uint32_t *argb, int width, int height, int r);

@@ -71,13 +71,15 @@ public:
     // false, with the reader's or the mesh's message in *error, when it is refused (nothing
     // added).
     bool importMesh(const QString &fileName, MeshScheme scheme, QString *error = nullptr);
-    // File > Import…: another tool's IFS file (Fractint .ifs: every entry an item, all in one
-    // undo step) or a mesh (importMesh). False with *error when nothing could be imported;
-    // entries left out are listed in *problems (the window shows them).
+    // File > Import…: another tool's IFS file (Fractint .ifs, flam3 .flame/.flam3: every entry
+    // or flame an item, all in one undo step) or a mesh (importMesh). False with *error when
+    // nothing could be imported; entries left out are listed in *problems, what was imported
+    // with a loss (a flame's non-linear variation) in *warnings (the window shows both).
     bool importIfs(const QString &fileName, QStringList *problems = nullptr,
-                   QString *error = nullptr);
-    // File > Export Item As…: the current item as a Fractint .ifs entry (.ifs) or its matrices
-    // as MATLAB cell arrays (.m), by suffix. False with the reason in *error.
+                   QString *error = nullptr, QStringList *warnings = nullptr);
+    // File > Export Item As…: the current item as a Fractint .ifs entry (.ifs), a flam3 genome
+    // framed as the attractor view shows it (.flame, .flam3) or its matrices as MATLAB cell
+    // arrays (.m), by suffix. False with the reason in *error.
     bool exportItemAs(const QString &fileName, QString *error = nullptr);
     // File > Export Mesh…: the current mesh item after `rounds` steps, every vertex at its
     // exact limit position, as OBJ. False with the reason in *error.

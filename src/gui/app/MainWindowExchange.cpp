@@ -1,15 +1,20 @@
-// MainWindow: the files of other tools (issue 34) -- File > Import (Fractint .ifs, every entry
-// an item in one undo step, the entries left out shown with their line and column; meshes go
-// to importMesh) and File > Export Item As (a Fractint .ifs entry, MATLAB cell arrays of the
-// matrices). The model does the reading and writing (model/IfsExchange.h, NamedMatrix.h).
+// MainWindow: the files of other tools (issue 34) -- File > Import (Fractint .ifs and flam3
+// .flame, every entry or flame an item in one undo step, the entries left out shown with their
+// line and column, a flame's dropped variations named; meshes go to importMesh) and File >
+// Export Item As (a Fractint .ifs entry, a flam3 genome framed as the view shows the item,
+// MATLAB cell arrays of the matrices). The model does the reading and writing
+// (model/IfsExchange.h, FlameExchange.h, NamedMatrix.h).
 
 #include "gui/app/MainWindow.h"
 
 #include "gui/app/ItemController.h"
 #include "gui/app/Messages.h"
+#include "gui/views/AttractorView.h"
 #include "gui/views/MatrixView.h"
+#include "render/AttractorImage.h"
 #include "model/AttractorItem.h"
 #include "model/FileWriting.h"
+#include "model/FlameExchange.h"
 #include "model/IfsExchange.h"
 #include "model/NamedMatrix.h"
 #include "model/Project.h"
@@ -22,11 +27,15 @@
 
 namespace awb {
 
-bool MainWindow::importIfs(const QString &fileName, QStringList *problems, QString *error)
+bool MainWindow::importIfs(const QString &fileName, QStringList *problems, QString *error,
+                           QStringList *warnings)
 {
     ImportedItems imported;
+    const QString suffix = QFileInfo(fileName).suffix().toLower();
     try {
-        imported = importFractint(fileName);
+        imported = suffix == QLatin1String("flame") || suffix == QLatin1String("flam3")
+                       ? importFlame(fileName)
+                       : importFractint(fileName);
     } catch (const std::exception &e) {
         if (error)
             *error = QString::fromUtf8(e.what());
@@ -34,6 +43,8 @@ bool MainWindow::importIfs(const QString &fileName, QStringList *problems, QStri
     }
     if (problems)
         *problems = imported.problems;
+    if (warnings)
+        *warnings = imported.warnings;
     if (imported.items.empty()) {
         if (error)
             *error = tr("%1: no entry could be imported").arg(QFileInfo(fileName).fileName());
@@ -60,26 +71,34 @@ void MainWindow::importDialog()
 {
     const QString file = QFileDialog::getOpenFileName(
         this, tr("Import"), QString(),
-        tr("Everything Attractor Workbench imports (*.ifs *.obj *.off *.ply);;Fractint IFS "
-           "(*.ifs);;Meshes (*.obj *.off *.ply)"));
+        tr("Everything Attractor Workbench imports (*.ifs *.flame *.flam3 *.obj *.off *.ply);;"
+           "Fractint IFS (*.ifs);;Fractal flames: flam3, Apophysis, JWildfire (*.flame "
+           "*.flam3);;Meshes (*.obj *.off *.ply)"));
     if (file.isEmpty())
         return;
-    if (QFileInfo(file).suffix().toLower() != QLatin1String("ifs")) {
+    const QString suffix = QFileInfo(file).suffix().toLower();
+    if (suffix != QLatin1String("ifs") && suffix != QLatin1String("flame")
+        && suffix != QLatin1String("flam3")) {
         importMeshFile(file);
         return;
     }
-    QStringList problems;
+    QStringList problems, warnings;
     QString error;
-    const bool ok = importIfs(file, &problems, &error);
+    const bool ok = importIfs(file, &problems, &error, &warnings);
     if (!ok && problems.isEmpty()) {
         m_messages->error(this, tr("Import"), error);
         return;
     }
+    QString text;
     if (!problems.isEmpty())
-        m_messages->information(this, tr("Import"),
-                                (ok ? tr("Imported the other entries; these were left out:")
-                                    : error + QLatin1Char('\n'))
-                                    + QStringLiteral("\n\n") + problems.join(QLatin1Char('\n')));
+        text += (ok ? tr("Imported the others; these were left out:") : error)
+                + QStringLiteral("\n\n") + problems.join(QLatin1Char('\n'));
+    if (!warnings.isEmpty())
+        text += (text.isEmpty() ? QString() : QStringLiteral("\n\n"))
+                + tr("Imported with these losses:") + QStringLiteral("\n\n")
+                + warnings.join(QLatin1Char('\n'));
+    if (!text.isEmpty())
+        m_messages->information(this, tr("Import"), text);
     else
         statusBar()->showMessage(tr("Imported %1").arg(QDir::toNativeSeparators(file)), 5000);
 }
@@ -100,6 +119,17 @@ bool MainWindow::exportItemAs(const QString &fileName, QString *error)
                 why = QString::fromUtf8(e.what());
             }
         }
+    } else if (suffix == QLatin1String("flame") || suffix == QLatin1String("flam3")) {
+        // Framed as the attractor view shows it, at the view's size in pixels; each map in
+        // the colour the view gives it.
+        const QSize size = m_attractor->size().expandedTo(QSize(64, 64));
+        QStringList colours;
+        const QStringList own = item->style().colors;
+        for (int i = 0; i < std::max(1, item->mapCount()); ++i)
+            colours << (i < own.size() ? own[i] : attractorMapColor(i).name());
+        if (const auto flame =
+                flameOf(*item, colours, {m_attractor->visibleWorldRect(), size}, &why))
+            bytes = *flame;
     } else if (suffix == QLatin1String("m")) {
         const QList<NamedMatrix> list = m_matrices->matrices();
         if (list.isEmpty())
@@ -107,7 +137,8 @@ bool MainWindow::exportItemAs(const QString &fileName, QString *error)
         else
             bytes = matlabMatrices(list, item->name()).toUtf8();
     } else {
-        why = tr("%1: Export Item As writes .ifs (Fractint) or .m (MATLAB) files")
+        why = tr("%1: Export Item As writes .ifs (Fractint), .flame (flam3) or .m (MATLAB) "
+                 "files")
                   .arg(QFileInfo(fileName).fileName());
     }
     if (why.isEmpty()) {
@@ -124,7 +155,8 @@ void MainWindow::exportItemAsDialog()
 {
     const QString file = QFileDialog::getSaveFileName(
         this, tr("Export Item As"), outputPath(QStringLiteral("ifs")),
-        tr("Fractint IFS (*.ifs);;MATLAB cell arrays of the matrices (*.m)"));
+        tr("Fractint IFS (*.ifs);;Fractal flame for flam3-render, Apophysis, JWildfire "
+           "(*.flame);;MATLAB cell arrays of the matrices (*.m)"));
     if (file.isEmpty())
         return;
     QString error;

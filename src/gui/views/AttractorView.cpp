@@ -286,7 +286,18 @@ std::optional<QRectF> AttractorView::contentBounds() const
         // The attractor itself: a shallow level from one start point is already close to it
         // (each level shrinks the distance by the contraction factor).
         try {
-            if (checkIfs(*m_ifs).contractive) {
+            const IfsCheck check = checkIfs(*m_ifs);
+            if (!check.contractive && check.contractsOnAverage()) {
+                // Contracting on average only (a flame): the box of 99% of the invariant
+                // measure (its tails are unbounded), as `render` frames it.
+                ChaosOptions opt;
+                opt.samples = 20000;
+                QuantileBoundsSink mass(m_ifs->views, 0.99);
+                chaosGame(*m_ifs, m_start.vertices.row(0), opt, mass);
+                if (!mass.empty() && mass.lo().size() >= 2)
+                    add(QPolygonF{QPointF(mass.lo()(0), mass.lo()(1)),
+                                  QPointF(mass.hi()(0), mass.hi()(1))});
+            } else if (check.contractive) {
                 int depth = 0;
                 while (depth < 40 && imageCount(*m_ifs, depth + 1) <= 20000 && m_ifs->size() > 1)
                     ++depth;

@@ -1,0 +1,510 @@
+// attractor-cli and fractal flames (issue 34), judged by flam3 itself (Debian flam3-utils,
+// installed by scripts/setup.sh): genomes that flam3-genome generated with linear variations
+// only are imported, rendered by us and by flam3-render in the same frame, and the two
+// pictures' density (block means of alpha) must agree -- and disagree once ours is mirrored,
+// so that the comparison can fail; an item we export as a .flame renders in flam3-render to
+// the attractor we draw. The coefficient order (coefs="a d b e c f"), post, the final xform,
+// non-linear variations dropped with a warning, malformed flames with line and column, and the
+// raw density out (.exr float counts, 16-bit PNG) are checked on small hand-made files.
+
+#include <QFile>
+#include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include "TestFiles.h"
+#include "TestMain.h"
+
+#include "CliRunner.h"
+
+#include "render/DensityFile.h"
+
+#include <cmath>
+
+using namespace awb;
+
+namespace {
+
+bool put(const QString &path, const QByteArray &text)
+{
+    QFile f(path);
+    return f.open(QIODevice::WriteOnly) && f.write(text) == text.size();
+}
+
+QString dataPath(const QString &name)
+{
+    return qEnvironmentVariable("AWB_SOURCE_DIR", QString(AWB_TEST_SOURCE_DIR))
+           + "/tests/cli/data/" + name;
+}
+
+// A flame's frame as attractor-cli's --bounds: the world rectangle before render's 6% padding,
+// so that the padded frame is the flame's (centre, size / scale; y mirrored).
+QString boundsOfFlame(const QByteArray &flame, int *width, int *height)
+{
+    auto attribute = [&](const char *name) {
+        const QRegularExpression re(QStringLiteral("<flame [^>]*\\b%1=\"([^\"]+)\"").arg(name));
+        return re.match(QString::fromUtf8(flame)).captured(1).split(' ');
+    };
+    const QStringList size = attribute("size"), centre = attribute("center");
+    const double scale = attribute("scale").value(0).toDouble();
+    *width = size.value(0).toInt();
+    *height = size.value(1).toInt();
+    const double W = *width / scale, H = *height / scale;
+    const double cx = centre.value(0).toDouble(), cy = -centre.value(1).toDouble();
+    // Padding adds 0.06 of the larger side on each side.
+    const double w0 = W >= H ? W / 1.12 : W - 0.12 * H / 1.12;
+    const double h0 = W >= H ? H - 0.12 * w0 : H / 1.12;
+    return QStringLiteral("%1,%2,%3,%4")
+        .arg(cx - w0 / 2, 0, 'g', 17)
+        .arg(cy - h0 / 2, 0, 'g', 17)
+        .arg(cx + w0 / 2, 0, 'g', 17)
+        .arg(cy + h0 / 2, 0, 'g', 17);
+}
+
+// The picture's alpha in blocks of b x b pixels (their means), row by row; `mirror` flips it
+// upside down first.
+std::vector<double> blockAlpha(const QImage &image, int b, bool mirror = false)
+{
+    const QImage a = image.convertToFormat(QImage::Format_RGBA64);
+    const int nx = a.width() / b, ny = a.height() / b;
+    std::vector<double> out(std::size_t(nx) * ny, 0.0);
+    for (int y = 0; y < ny * b; ++y) {
+        const auto *row =
+            reinterpret_cast<const QRgba64 *>(a.constScanLine(mirror ? a.height() - 1 - y : y));
+        for (int x = 0; x < nx * b; ++x)
+            out[std::size_t(y / b) * nx + x / b] += row[x].alpha() / 65535.0 / (b * b);
+    }
+    return out;
+}
+
+double correlation(const std::vector<double> &a, const std::vector<double> &b)
+{
+    const double n = double(a.size());
+    double ma = 0, mb = 0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        ma += a[i] / n, mb += b[i] / n;
+    double sab = 0, saa = 0, sbb = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        sab += (a[i] - ma) * (b[i] - mb);
+        saa += (a[i] - ma) * (a[i] - ma);
+        sbb += (b[i] - mb) * (b[i] - mb);
+    }
+    return sab / std::sqrt(saa * sbb);
+}
+
+// The share of the lit blocks (alpha mean > 0.05) of `a` that are lit in `b`.
+double litCovered(const std::vector<double> &a, const std::vector<double> &b)
+{
+    double lit = 0, both = 0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i] > 0.05) {
+            lit += 1;
+            both += b[i] > 0.05;
+        }
+    return lit > 0 ? both / lit : 0;
+}
+
+// flam3-render of a genome into `png` (with alpha: transparency=1).
+bool flam3Render(const QString &flame, const QString &png, QString *why)
+{
+    QProcess p;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("format", "png");
+    env.insert("transparency", "1");
+    env.insert("out", png);
+    env.insert("nthreads", "2");
+    p.setProcessEnvironment(env);
+    p.setStandardInputFile(flame);
+    p.start("flam3-render", {});
+    if (!p.waitForFinished(awb::test::ms(300000)) || p.exitCode() != 0) {
+        *why = QString::fromUtf8(p.readAllStandardError());
+        return false;
+    }
+    return true;
+}
+
+// A genome with its quality (samples per pixel) raised, as flam3-render should draw it.
+QByteArray withQuality(QByteArray flame, int quality)
+{
+    return QString::fromUtf8(flame)
+        .replace(QRegularExpression("quality=\"[^\"]*\""), QStringLiteral("quality=\"%1\"").arg(quality))
+        .toUtf8();
+}
+
+} // namespace
+
+class TestFlameCli : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void coefficientOrderPostAndMirror();
+    void finalXformConjugates();
+    void nonLinearVariationsAreNamed();
+    void symmetryAddsFlam3sXforms();
+    void malformedFlames();
+    void genomesRenderAsFlam3Renders_data();
+    void genomesRenderAsFlam3Renders();
+    void liveGenomeImports();
+    void exportRendersInFlam3();
+    void rawDensityOut();
+
+private:
+    int run(const QStringList &args, QByteArray *out = nullptr, QByteArray *err = nullptr)
+    {
+        return awb::test::runProgram(awb::test::cliPath(), args, out, err);
+    }
+    // The maps of the first item of a project as saved: per map {A (2x2), b}, row convention.
+    QJsonArray affineMaps(const QString &project)
+    {
+        QFile f(project);
+        if (!f.open(QIODevice::ReadOnly))
+            return {};
+        return QJsonDocument::fromJson(f.readAll())["items"][0]["maps"].toArray();
+    }
+    QTemporaryDir m_dir;
+};
+
+void TestFlameCli::initTestCase()
+{
+    QVERIFY(m_dir.isValid());
+    QVERIFY2(!QStandardPaths::findExecutable("flam3-render").isEmpty(),
+             "flam3-render (Debian flam3-utils) is missing: run scripts/setup.sh");
+}
+
+void TestFlameCli::coefficientOrderPostAndMirror()
+{
+    // x' = a x + b y + c, y' = d x + e y + f is written coefs="a d b e c f"; post the same.
+    const QString flame = m_dir.filePath("order.flame");
+    QVERIFY(put(flame, R"(<flame name="order" size="100 100" center="0 0" scale="30">
+  <xform weight="1" linear="1" coefs="0.5 0.1 0.2 0.4 0.3 -0.2"/>
+  <xform weight="3" linear="0.5" coefs="1 0 0 1 0 0" post="0.6 0 0 0.6 0.1 0.2"/>
+</flame>
+)"));
+    const QString project = m_dir.filePath("order.awb");
+    QByteArray err;
+    QCOMPARE(run({"import", flame, "--out", project}, nullptr, &err), 0);
+    QVERIFY2(err.isEmpty(), err.constData());
+    const QJsonArray maps = affineMaps(project);
+    QCOMPARE(maps.size(), 2);
+    // Ours is the flame's map seen with y up: R f R, R = diag(1, -1), in the row convention
+    // x |-> x A + b: A = [[a, d], [b, e]] with the off-diagonal signs flipped, b = (c, -f).
+    auto A = [&](int i, int r, int c) { return maps[i]["A"][r][c].toDouble(); };
+    auto b = [&](int i, int k) { return maps[i]["b"][k].toDouble(); };
+    QCOMPARE(A(0, 0, 0), 0.5);
+    QCOMPARE(A(0, 0, 1), -0.1);  // d
+    QCOMPARE(A(0, 1, 0), -0.2);  // b
+    QCOMPARE(A(0, 1, 1), 0.4);
+    QCOMPARE(b(0, 0), 0.3);
+    QCOMPARE(b(0, 1), 0.2);
+    // post(0.5 pre(p)): 0.3 p + (0.1, 0.2), mirrored.
+    QVERIFY(std::abs(A(1, 0, 0) - 0.3) < 1e-12 && std::abs(A(1, 1, 1) - 0.3) < 1e-12);
+    QVERIFY(std::abs(b(1, 0) - 0.1) < 1e-12 && std::abs(b(1, 1) + 0.2) < 1e-12);
+    // The weights are the random iteration's probabilities.
+    QFile f(project);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QJsonObject item = QJsonDocument::fromJson(f.readAll())["items"][0].toObject();
+    QCOMPARE(item["algorithm"]["probabilities"][1].toDouble(), 3.0);
+    QCOMPARE(item["algorithm"]["mode"].toString(), QString("random"));
+
+    // And back: export writes the same coefficients in flam3's order.
+    const QString out = m_dir.filePath("order-out.flame");
+    QCOMPARE(run({"export", project, "--item", "order", "--format", "flame", "--out", out}), 0);
+    QFile g(out);
+    QVERIFY(g.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(g.readAll());
+    QVERIFY2(text.contains("coefs=\"0.5 0.1 0.2 0.4 0.3 -0.2\""), qPrintable(text.left(800)));
+    QVERIFY(text.contains("weight=\"3\""));
+}
+
+void TestFlameCli::finalXformConjugates()
+{
+    // A final xform F (here x |-> 2x + (1, 0)) is drawn on every point: the picture is F(A),
+    // the attractor of F f F^-1. For f = x/2 (fixed point 0) that is x/2 + (0.5, 0), whose
+    // fixed point is F(0) = (1, 0); the second, x/2 + (0.5, 0), becomes x/2 + (1.5, 0).
+    const QString flame = m_dir.filePath("final.flame");
+    QVERIFY(put(flame, R"(<flames><flame name="final">
+  <xform weight="1" linear="1" coefs="0.5 0 0 0.5 0 0"/>
+  <xform weight="1" linear="1" coefs="0.5 0 0 0.5 0.5 0"/>
+  <finalxform linear="1" coefs="2 0 0 2 1 0"/>
+</flame></flames>
+)"));
+    const QString project = m_dir.filePath("final.awb");
+    QCOMPARE(run({"import", flame, "--out", project}), 0);
+    const QJsonArray maps = affineMaps(project);
+    QCOMPARE(maps.size(), 2);
+    QVERIFY(std::abs(maps[0]["A"][0][0].toDouble() - 0.5) < 1e-12);
+    QVERIFY(std::abs(maps[0]["b"][0].toDouble() - 0.5) < 1e-12);
+    QVERIFY(std::abs(maps[1]["b"][0].toDouble() - 1.5) < 1e-12);
+}
+
+void TestFlameCli::nonLinearVariationsAreNamed()
+{
+    const QString flame = m_dir.filePath("vars.flame");
+    QVERIFY(put(flame, R"(<flame name="vars">
+  <xform weight="1" linear="1" coefs="0.5 0 0 0.5 0 0"/>
+  <xform weight="1" linear="0.8" spherical="0.5" blob_low="0.3" coefs="0.5 0 0 0.5 0.5 0"/>
+  <xform weight="1" swirl="1" coefs="0.5 0 0 0.5 0 0.5"/>
+  <xform weight="1" linear="1" frobnicate="2" coefs="0.5 0 0 0.5 0.5 0.5"/>
+</flame>
+)"));
+    const QString project = m_dir.filePath("vars.awb");
+    QByteArray err;
+    QCOMPARE(run({"import", flame, "--out", project}, nullptr, &err), 0);
+    const QString text = QString::fromUtf8(err);
+    QVERIFY2(text.contains(QRegularExpression("vars.flame, line 3, column \\d+: flame 'vars', "
+                                              "xform 2: variation spherical \\(0.5\\) dropped")),
+             qPrintable(text));
+    QVERIFY2(text.contains(QRegularExpression("line 4, column \\d+: flame 'vars', xform 3: "
+                                              "variation swirl \\(1\\) dropped \\(non-linear\\); "
+                                              "its affine part kept")),
+             qPrintable(text));
+    QVERIFY2(text.contains("attribute frobnicate=\"2\" ignored"), qPrintable(text));
+    QVERIFY2(!text.contains("blob_low"), qPrintable(text));  // the parameter of a variation
+    const QJsonArray maps = affineMaps(project);
+    QCOMPARE(maps.size(), 4);
+    // The linear weight scales the map: 0.8 * 0.5.
+    QVERIFY(std::abs(maps[1]["A"][0][0].toDouble() - 0.4) < 1e-12);
+}
+
+void TestFlameCli::symmetryAddsFlam3sXforms()
+{
+    // kind = -3: the reflection x |-> -x (y up: the same), then the rotations by 120 and 240
+    // degrees with cosines and sines rounded to 6 decimals, as flam3_add_symmetry.
+    const QString flame = m_dir.filePath("sym.flame");
+    QVERIFY(put(flame, R"(<flame name="sym"><symmetry kind="-3"/>
+  <xform weight="1" linear="1" coefs="0.5 0 0 0.5 0.3 0"/>
+</flame>
+)"));
+    const QString project = m_dir.filePath("sym.awb");
+    QByteArray err;
+    QCOMPARE(run({"import", flame, "--out", project}, nullptr, &err), 0);
+    QVERIFY2(err.isEmpty(), err.constData());
+    const QJsonArray maps = affineMaps(project);
+    QCOMPARE(maps.size(), 4);
+    QCOMPARE(maps[0]["A"][0][0].toDouble(), -1.0);
+    QCOMPARE(maps[0]["A"][1][1].toDouble(), 1.0);
+    QCOMPARE(maps[1]["A"][0][0].toDouble(), -0.5);
+    QCOMPARE(maps[1]["A"][0][1].toDouble(), -0.866025);  // sin 120 deg, mirrored
+    QCOMPARE(maps[2]["A"][0][1].toDouble(), 0.866025);
+    QCOMPARE(maps[3]["b"][0].toDouble(), 0.3);
+}
+
+void TestFlameCli::malformedFlames()
+{
+    const QString flame = m_dir.filePath("bad.flame");
+    QVERIFY(put(flame, R"(<flames>
+<flame name="good"><xform weight="1" linear="1" coefs="0.5 0 0 0.5 0 0"/>
+  <xform weight="1" linear="1" coefs="0.5 0 0 0.5 1 0"/></flame>
+<flame name="short">
+  <xform weight="1" linear="1" coefs="0.5 0 0 0.5 0"/>
+</flame>
+<flame name="negative"><xform weight="-1" coefs="0.5 0 0 0.5 0 0"/></flame>
+<flame name="empty"></flame>
+</flames>
+)"));
+    const QString project = m_dir.filePath("bad.awb");
+    QByteArray out, err;
+    QCOMPARE(run({"import", flame, "--out", project}, &out, &err), 1);
+    const QString text = QString::fromUtf8(err);
+    QVERIFY2(text.contains(QRegularExpression("bad.flame, line 5, column \\d+: flame 'short', "
+                                              "xform 1: coefs=\"0.5 0 0 0.5 0\" must be 6 "
+                                              "finite numbers")),
+             qPrintable(text));
+    QVERIFY2(text.contains(QRegularExpression("line 7, column \\d+: flame 'negative', xform 1: "
+                                              "weight=\"-1\" must be a finite number >= 0")),
+             qPrintable(text));
+    QVERIFY2(text.contains(QRegularExpression("line 8, column \\d+: flame 'empty' has no xform")),
+             qPrintable(text));
+    QVERIFY(out.contains("1 item(s): good"));
+
+    // XML that does not parse: the line and column of the fault.
+    const QString broken = m_dir.filePath("broken.flame");
+    QVERIFY(put(broken, "<flames>\n<flame name=\"x\">\n<xform coefs=\"1 0 0 1 0 0\">\n</flame>\n"));
+    QCOMPARE(run({"import", broken, "--out", project}, nullptr, &err), 1);
+    QVERIFY2(QString::fromUtf8(err).contains(
+                 QRegularExpression("broken.flame, line 4, column \\d+: the XML is malformed")),
+             err.constData());
+}
+
+void TestFlameCli::genomesRenderAsFlam3Renders_data()
+{
+    QTest::addColumn<QString>("genome");
+    QTest::newRow("contractive") << "flam3-genome-contractive.flame";
+    QTest::newRow("contractive on average") << "flam3-genome-contractive-on-average.flame";
+    // <symmetry kind="-4">: a reflection and three rotations, which flam3's parser adds to
+    // those the file lists.
+    QTest::newRow("symmetry") << "flam3-genome-symmetry.flame";
+}
+
+void TestFlameCli::genomesRenderAsFlam3Renders()
+{
+    QFETCH(QString, genome);
+    QFile in(dataPath(genome));
+    QVERIFY(in.open(QIODevice::ReadOnly));
+    // Larger and denser than flam3-genome's thumbnail: 400 x 400 at the same frame.
+    QByteArray flame = withQuality(in.readAll(), 100);
+    flame.replace("size=\"100 100\"", "size=\"400 400\"");
+    const QRegularExpression scaleRe("scale=\"([^\"]+)\"");
+    const double scale = scaleRe.match(QString::fromUtf8(flame)).captured(1).toDouble();
+    flame.replace(scaleRe.match(QString::fromUtf8(flame)).captured(0).toUtf8(),
+                  QStringLiteral("scale=\"%1\"").arg(4 * scale, 0, 'g', 17).toUtf8());
+    const QString file = m_dir.filePath(genome);
+    QVERIFY(put(file, flame));
+    QString why;
+    const QString theirs = m_dir.filePath(genome + ".flam3.png");
+    QVERIFY2(flam3Render(file, theirs, &why), qPrintable(why));
+
+    const QString project = m_dir.filePath(genome + ".awb");
+    QByteArray err;
+    QCOMPARE(run({"import", file, "--out", project}, nullptr, &err), 0);
+    QVERIFY2(err.isEmpty(), err.constData());  // linear variations only: nothing is lost
+    int w = 0, h = 0;
+    const QString bounds = boundsOfFlame(flame, &w, &h);
+    const QString ours = m_dir.filePath(genome + ".ours.png");
+    QCOMPARE(run({"render", project, "--size", QStringLiteral("%1x%2").arg(w).arg(h), "--bounds",
+                  bounds, "--samples", "8000000", "--bits", "16", "--out", ours}),
+             0);
+    const QImage a(theirs), b(ours);
+    QCOMPARE(a.size(), QSize(400, 400));
+    QCOMPARE(b.size(), QSize(400, 400));
+    const auto A = blockAlpha(a, 10), B = blockAlpha(b, 10), Bm = blockAlpha(b, 10, true);
+    const double same = correlation(A, B), mirrored = correlation(A, Bm);
+    qInfo("%s: correlation of 10 x 10 block alpha %.3f (mirrored %.3f); flam3's lit blocks "
+          "lit in ours %.3f",
+          qPrintable(genome), same, mirrored, litCovered(A, B));
+    QVERIFY2(same > 0.8, qPrintable(QString::number(same)));
+    QVERIFY2(same > mirrored + 0.2, qPrintable(QString::number(mirrored)));
+    // flam3's density estimator (estimator_radius 9 in these genomes) spreads a sparse tail's
+    // single hits over up to 9 pixels, so its lit blocks reach a little beyond ours.
+    QVERIFY(litCovered(A, B) > 0.8);
+}
+
+void TestFlameCli::liveGenomeImports()
+{
+    // Whatever flam3-genome makes today with linear variations only imports without a loss,
+    // and its analysis says how it contracts.
+    QProcess p;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("use_vars", "0");
+    p.setProcessEnvironment(env);
+    p.start("flam3-genome", {});
+    QVERIFY(p.waitForFinished(awb::test::ms(60000)));
+    const QString file = m_dir.filePath("live.flame");
+    QVERIFY(put(file, p.readAllStandardOutput()));
+    const QString project = m_dir.filePath("live.awb");
+    QByteArray err, out;
+    QCOMPARE(run({"import", file, "--out", project}, nullptr, &err), 0);
+    QVERIFY2(err.isEmpty(), err.constData());
+    QCOMPARE(run({"analyse", project, "--json"}, &out), 0);
+    const QJsonObject item = QJsonDocument::fromJson(out)["items"][0].toObject();
+    QVERIFY(item.contains("box_dimension"));
+    if (item.contains("contractive_on_average")) {
+        QVERIFY(item["contractive_on_average"].toBool());
+        QVERIFY(item["lyapunov_exponent"].toDouble() < 0);
+    }
+}
+
+void TestFlameCli::exportRendersInFlam3()
+{
+    // Barnsley's fern of the bundled Fractint library, out as a flame: flam3-render draws the
+    // attractor we draw, in the frame of render's --size.
+    const QString project = m_dir.filePath("classics.awb");
+    QByteArray err;
+    run({"import", awb::test::examplePath("fractint-classics.ifs"), "--out", project}, nullptr,
+        &err);
+    const QString flame = m_dir.filePath("fern.flame");
+    QCOMPARE(run({"export", project, "--item", "fern", "--format", "flame", "--size", "300x400",
+                  "--out", flame},
+                 nullptr, &err),
+             0);
+    QString why;
+    const QString theirs = m_dir.filePath("fern.flam3.png");
+    QVERIFY2(flam3Render(flame, theirs, &why), qPrintable(why));
+    const QString ours = m_dir.filePath("fern.ours.png");
+    QCOMPARE(run({"render", project, "--item", "fern", "--size", "300x400", "--samples",
+                  "4000000", "--bits", "16", "--out", ours}),
+             0);
+    const QImage a(theirs), b(ours);
+    QCOMPARE(a.size(), QSize(300, 400));
+    QCOMPARE(b.size(), QSize(300, 400));
+    const auto A = blockAlpha(a, 10), B = blockAlpha(b, 10), Bm = blockAlpha(b, 10, true);
+    const double same = correlation(A, B), mirrored = correlation(A, Bm);
+    qInfo("fern: correlation %.3f (mirrored %.3f), lit covered %.3f / %.3f", same, mirrored,
+          litCovered(A, B), litCovered(B, A));
+    QVERIFY2(same > 0.8, qPrintable(QString::number(same)));
+    QVERIFY(same > mirrored + 0.2);
+    QVERIFY(litCovered(A, B) > 0.9);
+    QVERIFY(litCovered(B, A) > 0.9);
+}
+
+void TestFlameCli::rawDensityOut()
+{
+    // The Sierpinski triangle ("triangle") by random iteration: every sample lands in the frame, so the
+    // EXR's counts add up to the samples; the 16-bit PNG gives the same counts back through
+    // its max-count chunk.
+    const QString project = m_dir.filePath("classics.awb");
+    QCOMPARE(run({"import", awb::test::examplePath("fractint-classics.ifs"), "--out", project},
+                 nullptr, nullptr) <= 1,
+             true);
+    const QString exr = m_dir.filePath("triangle.exr");
+    QCOMPARE(run({"render", project, "--item", "triangle", "--size", "256x256", "--samples",
+                  "1000000", "--out", exr}),
+             0);
+    QRectF world;
+    QString error;
+    const AttractorDensity d = readDensityExr(exr, &world, &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QCOMPARE(d.frame.width, 256);
+    QCOMPARE(d.frame.height, 256);
+    QVERIFY(world.width() > 0);
+    double total = 0, most = 0, colourError = 0;
+    for (std::size_t i = 3; i < d.rgba.size(); i += 4) {
+        total += d.rgba[i];
+        most = std::max(most, double(d.rgba[i]));
+        // R, G, B are hits times a colour in 0..1.
+        for (int k = 1; k <= 3; ++k)
+            colourError = std::max(colourError, double(d.rgba[i - k]) - d.rgba[i]);
+    }
+    QVERIFY2(std::abs(total - 1e6) <= 64, qPrintable(QString::number(total, 'f', 0)));
+    QVERIFY(colourError <= 1e-3);
+
+    const QString png = m_dir.filePath("triangle16.png");
+    QCOMPARE(run({"render", project, "--item", "triangle", "--size", "256x256", "--samples",
+                  "1000000", "--bits", "16", "--out", png}),
+             0);
+    const QImage image(png);
+    QCOMPARE(image.depth(), 64);
+    const double maxCount = image.text(kDensityMaxCountKey).toDouble();
+    QCOMPARE(maxCount, most);
+    // Pixel by pixel, n = (1 + n_max)^alpha - 1 to 1/65535 of the log density.
+    const QImage rgba = image.convertToFormat(QImage::Format_RGBA64);
+    double worst = 0;
+    for (int y = 0; y < 256; ++y) {
+        const auto *row = reinterpret_cast<const QRgba64 *>(rgba.constScanLine(y));
+        for (int x = 0; x < 256; ++x) {
+            const double n = d.rgba[4 * (std::size_t(y) * 256 + x) + 3];
+            const double back = std::pow(1 + maxCount, row[x].alpha() / 65535.0) - 1;
+            worst = std::max(worst, std::abs(back - n) / (1 + n));
+        }
+    }
+    QVERIFY2(worst < 2e-4, qPrintable(QString::number(worst)));
+    QVERIFY(!image.text("attractor-workbench:project").isEmpty());
+
+    // --bits takes 8 or 16; an attractor of space has no plane density.
+    QByteArray err;
+    QCOMPARE(run({"render", project, "--item", "triangle", "--bits", "12", "--out", png},
+                 nullptr, &err),
+             2);
+    QVERIFY2(err.contains("--bits must be 8 or 16"), err.constData());
+    QCOMPARE(run({"render", project, "--item", "tetrahedron", "--out", exr}, nullptr, &err), 1);
+    QVERIFY2(err.contains("drawn in space"), err.constData());
+}
+
+AWB_TEST_MAIN(TestFlameCli)
+#include "test_flame_cli.moc"
