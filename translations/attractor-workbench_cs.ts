@@ -1290,19 +1290,19 @@
     <name>awb::DensityFile</name>
     <message>
         <source>cannot write %1: the picture is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>nelze zapsat %1: obrázek je prázdný</translation>
     </message>
     <message>
         <source>cannot read %1: %2</source>
-        <translation type="unfinished">%1 nelze přečíst: %2</translation>
+        <translation>nelze přečíst %1: %2</translation>
     </message>
     <message>
         <source>cannot write %1: not enough memory</source>
-        <translation type="unfinished"></translation>
+        <translation>nelze zapsat %1: nedostatek paměti</translation>
     </message>
     <message>
         <source>%1; alpha = log(1 + hits) / log(1 + %2); world %3 %4 %5 %6</source>
-        <translation type="unfinished"></translation>
+        <translation>%1; alpha = log(1 + zásahy) / log(1 + %2); svět %3 %4 %5 %6</translation>
     </message>
 </context>
 <context>
@@ -1629,135 +1629,135 @@
     <name>awb::FlameExchange</name>
     <message>
         <source>the XML is malformed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>chybně utvořené XML: %1</translation>
     </message>
     <message>
         <source>%1: the file holds no &lt;flame&gt; element</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: soubor neobsahuje žádný prvek &lt;flame&gt;</translation>
     </message>
     <message>
         <source>%1, line %2, column %3: </source>
-        <translation type="unfinished"></translation>
+        <translation>%1, řádek %2, sloupec %3: </translation>
     </message>
     <message>
         <source>flame %1</source>
-        <translation type="unfinished"></translation>
+        <translation>plamen %1</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;, final xform</source>
-        <translation type="unfinished"></translation>
+        <translation>plamen „%1“, finální xform</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;, xform %2</source>
-        <translation type="unfinished"></translation>
+        <translation>plamen „%1“, xform %2</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: &lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number</source>
-        <translation type="unfinished"></translation>
+        <translation>plamen „%1“: &lt;symmetry&gt; vyžaduje kind=&quot;k&quot;, celé číslo</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: element &lt;%2&gt; ignored</source>
-        <translation type="unfinished"></translation>
+        <translation>plamen „%1“: prvek &lt;%2&gt; ignorován</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos; has no xform</source>
-        <translation type="unfinished"></translation>
+        <translation>plamen „%1“ nemá žádnou xform</translation>
     </message>
     <message>
         <source>%1=&quot;%2&quot; must be 6 finite numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>%1=&quot;%2&quot; musí být 6 konečných čísel</translation>
     </message>
     <message>
         <source>weight=&quot;%1&quot; must be a finite number &gt;= 0</source>
-        <translation type="unfinished"></translation>
+        <translation>weight=&quot;%1&quot; musí být konečné číslo &gt;= 0</translation>
     </message>
     <message>
         <source>var1=&quot;%1&quot; names no variation</source>
-        <translation type="unfinished"></translation>
+        <translation>var1=&quot;%1&quot; neoznačuje žádnou variaci</translation>
     </message>
     <message>
         <source>variation %1=&quot;%2&quot; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>variace %1=&quot;%2&quot; není číslo</translation>
     </message>
     <message>
         <source>: opacity %1 not kept (every map is drawn)</source>
-        <translation type="unfinished"></translation>
+        <translation>: opacity %1 nezachována (vykresluje se každé zobrazení)</translation>
     </message>
     <message>
         <source>: attribute %1=&quot;%2&quot; ignored</source>
-        <translation type="unfinished"></translation>
+        <translation>: atribut %1=&quot;%2&quot; ignorován</translation>
     </message>
     <message numerus="yes">
         <source>: variation %1 dropped (non-linear)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>: variace %1 vynechána (nelineární)</numerusform>
+            <numerusform>: variace %1 vynechány (nelineární)</numerusform>
+            <numerusform>: variace %1 vynechány (nelineární)</numerusform>
         </translation>
     </message>
     <message>
         <source>; its affine part kept as a linear map</source>
-        <translation type="unfinished"></translation>
+        <translation>; její afinní část zachována jako lineární zobrazení</translation>
     </message>
     <message>
         <source>: no variation given; taken as linear</source>
-        <translation type="unfinished"></translation>
+        <translation>: nezadána žádná variace; použije se linear</translation>
     </message>
     <message>
         <source>%1: element &lt;%2&gt; ignored (animation)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: prvek &lt;%2&gt; ignorován (animace)</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: a &lt;color&gt; needs index=&quot;0..255&quot; and rgb=&quot;r g b&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>plamen „%1“: prvek &lt;color&gt; vyžaduje index=&quot;0..255&quot; a rgb=&quot;r g b&quot;</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: the palette&apos;s hex digits are not whole colours of %2 digits</source>
-        <translation type="unfinished"></translation>
+        <translation>plamen „%1“: hexadecimální číslice palety netvoří celé barvy po %2 číslicích</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: palette entry %2 is not hexadecimal</source>
-        <translation type="unfinished"></translation>
+        <translation>plamen „%1“: záznam palety %2 není hexadecimální</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: the final xform is not invertible (determinant %2): dropped</source>
-        <translation type="unfinished"></translation>
+        <translation>plamen „%1“: finální xform není invertovatelná (determinant %2): vynechána</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its xaos (chaos) rows forbid some transitions; imported as the plain IFS of its maps, whose attractor contains the flame&apos;s</source>
-        <translation type="unfinished"></translation>
+        <translation>plamen „%1“: jeho řádky xaos (chaos) zakazují některé přechody; importován jako prostý IFS jeho zobrazení, jehož atraktor obsahuje atraktor plamene</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its xaos (chaos) weights are dropped: the attractor is the same, its measure differs</source>
-        <translation type="unfinished"></translation>
+        <translation>plamen „%1“: jeho váhy xaos (chaos) jsou vynechány: atraktor je stejný, jeho míra se liší</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: every xform has weight 0</source>
-        <translation type="unfinished"></translation>
+        <translation>plamen „%1“: každá xform má váhu 0</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: %2 (%3)</source>
-        <translation type="unfinished"></translation>
+        <translation>plamen „%1“: %2 (%3)</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>plamen „%1“: %2</translation>
     </message>
     <message>
         <source>%1: the file is larger than %2 MB</source>
-        <translation type="unfinished">%1: soubor je větší než %2 MB</translation>
+        <translation>%1: soubor je větší než %2 MB</translation>
     </message>
     <message>
         <source>cannot read %1: %2</source>
-        <translation type="unfinished">%1 nelze přečíst: %2</translation>
+        <translation>nelze přečíst %1: %2</translation>
     </message>
     <message>
         <source>%1 is an IFS of space: a flame holds maps of the plane</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 je IFS v prostoru: plamen obsahuje zobrazení roviny</translation>
     </message>
     <message>
         <source>the flame&apos;s frame is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>rámec plamene je prázdný</translation>
     </message>
 </context>
 <context>
@@ -1887,7 +1887,7 @@
     </message>
     <message>
         <source>cannot read %1: %2</source>
-        <translation>%1 nelze přečíst: %2</translation>
+        <translation>nelze přečíst %1: %2</translation>
     </message>
     <message>
         <source>%1 cannot be computed: %2</source>
@@ -2856,23 +2856,23 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>Everything Attractor Workbench imports (*.ifs *.flame *.flam3 *.obj *.off *.ply);;Fractint IFS (*.ifs);;Fractal flames: flam3, Apophysis, JWildfire (*.flame *.flam3);;Meshes (*.obj *.off *.ply)</source>
-        <translation type="unfinished"></translation>
+        <translation>Vše, co Attractor Workbench importuje (*.ifs *.flame *.flam3 *.obj *.off *.ply);;IFS Fractint (*.ifs);;Fraktální plameny: flam3, Apophysis, JWildfire (*.flame *.flam3);;Sítě (*.obj *.off *.ply)</translation>
     </message>
     <message>
         <source>Imported the others; these were left out:</source>
-        <translation type="unfinished"></translation>
+        <translation>Ostatní byly importovány; tyto byly vynechány:</translation>
     </message>
     <message>
         <source>Imported with these losses:</source>
-        <translation type="unfinished"></translation>
+        <translation>Importováno s těmito ztrátami:</translation>
     </message>
     <message>
         <source>%1: Export Item As writes .ifs (Fractint), .flame (flam3) or .m (MATLAB) files</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: „Exportovat položku jako“ zapisuje soubory .ifs (Fractint), .flame (flam3) nebo .m (MATLAB)</translation>
     </message>
     <message>
         <source>Fractint IFS (*.ifs);;Fractal flame for flam3-render, Apophysis, JWildfire (*.flame);;MATLAB cell arrays of the matrices (*.m)</source>
-        <translation type="unfinished"></translation>
+        <translation>IFS Fractint (*.ifs);;Fraktální plamen pro flam3-render, Apophysis, JWildfire (*.flame);;Pole buněk MATLABu s maticemi (*.m)</translation>
     </message>
 </context>
 <context>
@@ -3903,6 +3903,10 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>%1: λ = %2</source>
         <translation>%1: λ = %2</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;%1 is not contractive, but the IFS contracts on average&lt;/b&gt;: its Lyapunov exponent is %2 &amp;lt; 0 (Barnsley–Elton), so random iteration converges to its attractor, as in flame renderers; deterministic iteration does not.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;%1 není kontraktivní, ale IFS je kontraktivní v průměru&lt;/b&gt;: jeho Ljapunovův exponent je %2 &amp;lt; 0 (Barnsley–Elton), takže náhodná iterace konverguje k jeho atraktoru jako v programech pro fraktální plameny; deterministická iterace nekonverguje.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -5393,75 +5397,75 @@ Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --he
     </message>
     <message>
         <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ); its maps as a Fractint .ifs entry (ifs) or a flam3 genome that flam3-render draws in the frame of render&apos;s --size and --bounds (flame); or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab).</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportovat geometrii položky: atraktor F^k(X0) jako mračno bodů PLY (u každého bodu s naposledy použitým zobrazením), řídicí síť plošné položky po k krocích klasické subdivize jako síť OBJ, nebo síťovou položku po k krocích se všemi vrcholy v jejich limitní poloze (OBJ); její zobrazení jako záznam Fractint .ifs (ifs) nebo genom flam3, který flam3-render vykreslí v rámci daném volbami --size a --bounds příkazu render (flame); nebo její matice S_i, M_i, A_i jako pole buněk MATLABu pro JSR toolbox (matlab).</translation>
     </message>
     <message>
         <source>ply (attractor points), obj (subdivided mesh), ifs (Fractint), flame (flam3) or matlab (matrices).</source>
-        <translation type="unfinished"></translation>
+        <translation>ply (body atraktoru), obj (subdividovaná síť), ifs (Fractint), flame (flam3) nebo matlab (matice).</translation>
     </message>
     <message>
         <source>--item NAME, --format ply|obj|ifs|flame|matlab and --out FILE are required</source>
-        <translation type="unfinished"></translation>
+        <translation>jsou vyžadovány --item NÁZEV, --format ply|obj|ifs|flame|matlab a --out SOUBOR</translation>
     </message>
     <message>
         <source>--format must be ply, obj, ifs, flame or matlab, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--format musí být ply, obj, ifs, flame nebo matlab, zadáno „%1“</translation>
     </message>
     <message>
         <source>&apos;%1&apos; has nothing to frame</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ neobsahuje nic, co by šlo zarámovat</translation>
     </message>
     <message>
         <source>The output&apos;s format when its name has no suffix (e.g. /dev/stdout): png, svg, pdf or exr (default: the suffix).</source>
-        <translation type="unfinished"></translation>
+        <translation>Formát výstupu, pokud jeho název nemá příponu (např. /dev/stdout): png, svg, pdf nebo exr (výchozí: podle přípony).</translation>
     </message>
     <message>
         <source>PNG: 8 (the figure, default) or 16 (the attractor&apos;s raw density: alpha = log(1 + hits) / log(1 + most hits), the colour the hits&apos; mean; no title, polygons or margins). An .exr file always holds the raw density, as float32 counts.</source>
-        <translation type="unfinished"></translation>
+        <translation>PNG: 8 (obrázek, výchozí) nebo 16 (surová hustota atraktoru: alpha = log(1 + zásahy) / log(1 + max. zásahů), barva je průměrem zásahů; bez titulku, polygonů a okrajů). Soubor .exr vždy obsahuje surovou hustotu jako počty ve float32.</translation>
     </message>
     <message>
         <source>--format must be png, svg, pdf or exr, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--format musí být png, svg, pdf nebo exr, zadáno „%1“</translation>
     </message>
     <message>
         <source>--bits must be 8 or 16, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--bits musí být 8 nebo 16, zadáno „%1“</translation>
     </message>
     <message>
         <source>--bits 16 writes PNG files, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--bits 16 zapisuje soubory PNG, zadáno „%1“</translation>
     </message>
     <message>
         <source>the raw density (.exr, --bits 16) counts an attractor&apos;s points; this item&apos;s figure is a polygon</source>
-        <translation type="unfinished"></translation>
+        <translation>surová hustota (.exr, --bits 16) počítá body atraktoru; obrázek této položky je polygon</translation>
     </message>
     <message>
         <source>the raw density (.exr, --bits 16) is of attractors drawn in the plane; &apos;%1&apos; is drawn in space</source>
-        <translation type="unfinished"></translation>
+        <translation>surová hustota (.exr, --bits 16) je určena pro atraktory kreslené v rovině; „%1“ se kreslí v prostoru</translation>
     </message>
     <message>
         <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit), or every flame of a flam3 genome (.flame, .flam3: flam3, Apophysis, JWildfire), as a fractal with control points. Non-linear variations are dropped with a warning.</source>
-        <translation type="unfinished"></translation>
+        <translation>Vytvořit projekt ze souboru IFS jiného nástroje: každý záznam souboru Fractint .ifs (2D i 3D, formát programů Fractint, xfractint a IFS Construction Kit) nebo každý plamen genomu flam3 (.flame, .flam3: flam3, Apophysis, JWildfire) se stane fraktálem s řídicími body. Nelineární variace se vynechají s varováním.</translation>
     </message>
     <message>
         <source>The file to import (.ifs, .flame, .flam3).</source>
-        <translation type="unfinished"></translation>
+        <translation>Soubor k importu (.ifs, .flame, .flam3).</translation>
     </message>
     <message>
         <source>%1: import reads Fractint .ifs and flam3 .flame (.flam3) files</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: import čte soubory Fractint .ifs a flam3 .flame (.flam3)</translation>
     </message>
     <message>
         <source>warning: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>varování: %1</translation>
     </message>
     <message>
         <source>Render an item&apos;s attractor (with its control polygons) to PNG, SVG or PDF; or its raw density (hits per pixel) to OpenEXR (.exr, float32 counts) or a 16-bit PNG (--bits 16), to tone-map elsewhere.</source>
-        <translation type="unfinished"></translation>
+        <translation>Vykreslit atraktor položky (s jejími řídicími polygony) do PNG, SVG nebo PDF; nebo jeho surovou hustotu (zásahy na pixel) do OpenEXR (.exr, počty ve float32) či do 16bitového PNG (--bits 16) pro mapování tónů jinde.</translation>
     </message>
     <message>
         <source>Output file: .png, .svg, .pdf or .exr.</source>
-        <translation type="unfinished"></translation>
+        <translation>Výstupní soubor: .png, .svg, .pdf nebo .exr.</translation>
     </message>
 </context>
 <context>

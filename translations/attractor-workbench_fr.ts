@@ -1289,19 +1289,19 @@
     <name>awb::DensityFile</name>
     <message>
         <source>cannot write %1: the picture is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>impossible d’écrire %1&#xa0;: l’image est vide</translation>
     </message>
     <message>
         <source>cannot read %1: %2</source>
-        <translation type="unfinished">impossible de lire %1&#xa0;: %2</translation>
+        <translation>impossible de lire %1&#xa0;: %2</translation>
     </message>
     <message>
         <source>cannot write %1: not enough memory</source>
-        <translation type="unfinished"></translation>
+        <translation>impossible d’écrire %1&#xa0;: mémoire insuffisante</translation>
     </message>
     <message>
         <source>%1; alpha = log(1 + hits) / log(1 + %2); world %3 %4 %5 %6</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;; alpha = log(1 + impacts) / log(1 + %2)&#xa0;; monde %3 %4 %5 %6</translation>
     </message>
 </context>
 <context>
@@ -1627,134 +1627,134 @@
     <name>awb::FlameExchange</name>
     <message>
         <source>the XML is malformed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>le XML est mal formé&#xa0;: %1</translation>
     </message>
     <message>
         <source>%1: the file holds no &lt;flame&gt; element</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;: le fichier ne contient aucun élément &lt;flame&gt;</translation>
     </message>
     <message>
         <source>%1, line %2, column %3: </source>
-        <translation type="unfinished"></translation>
+        <translation>%1, ligne %2, colonne %3&#xa0;: </translation>
     </message>
     <message>
         <source>flame %1</source>
-        <translation type="unfinished"></translation>
+        <translation>flamme %1</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;, final xform</source>
-        <translation type="unfinished"></translation>
+        <translation>flamme «&#xa0;%1&#xa0;», xform final</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;, xform %2</source>
-        <translation type="unfinished"></translation>
+        <translation>flamme «&#xa0;%1&#xa0;», xform %2</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: &lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number</source>
-        <translation type="unfinished"></translation>
+        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: &lt;symmetry&gt; nécessite kind=&quot;k&quot;, un nombre entier</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: element &lt;%2&gt; ignored</source>
-        <translation type="unfinished"></translation>
+        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: élément &lt;%2&gt; ignoré</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos; has no xform</source>
-        <translation type="unfinished"></translation>
+        <translation>la flamme «&#xa0;%1&#xa0;» n’a aucun xform</translation>
     </message>
     <message>
         <source>%1=&quot;%2&quot; must be 6 finite numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>%1=&quot;%2&quot; doit comporter 6 nombres finis</translation>
     </message>
     <message>
         <source>weight=&quot;%1&quot; must be a finite number &gt;= 0</source>
-        <translation type="unfinished"></translation>
+        <translation>weight=&quot;%1&quot; doit être un nombre fini &gt;= 0</translation>
     </message>
     <message>
         <source>var1=&quot;%1&quot; names no variation</source>
-        <translation type="unfinished"></translation>
+        <translation>var1=&quot;%1&quot; ne désigne aucune variation</translation>
     </message>
     <message>
         <source>variation %1=&quot;%2&quot; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>variation %1=&quot;%2&quot; n’est pas un nombre</translation>
     </message>
     <message>
         <source>: opacity %1 not kept (every map is drawn)</source>
-        <translation type="unfinished"></translation>
+        <translation>&#xa0;: opacity %1 non conservée (chaque application est dessinée)</translation>
     </message>
     <message>
         <source>: attribute %1=&quot;%2&quot; ignored</source>
-        <translation type="unfinished"></translation>
+        <translation>&#xa0;: attribut %1=&quot;%2&quot; ignoré</translation>
     </message>
     <message numerus="yes">
         <source>: variation %1 dropped (non-linear)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>&#xa0;: variation %1 abandonnée (non linéaire)</numerusform>
+            <numerusform>&#xa0;: variations %1 abandonnées (non linéaires)</numerusform>
         </translation>
     </message>
     <message>
         <source>; its affine part kept as a linear map</source>
-        <translation type="unfinished"></translation>
+        <translation>&#xa0;; sa partie affine est conservée comme application linéaire</translation>
     </message>
     <message>
         <source>: no variation given; taken as linear</source>
-        <translation type="unfinished"></translation>
+        <translation>&#xa0;: aucune variation indiquée&#xa0;; considérée comme linear</translation>
     </message>
     <message>
         <source>%1: element &lt;%2&gt; ignored (animation)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;: élément &lt;%2&gt; ignoré (animation)</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: a &lt;color&gt; needs index=&quot;0..255&quot; and rgb=&quot;r g b&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: un élément &lt;color&gt; nécessite index=&quot;0..255&quot; et rgb=&quot;r g b&quot;</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: the palette&apos;s hex digits are not whole colours of %2 digits</source>
-        <translation type="unfinished"></translation>
+        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: les chiffres hexadécimaux de la palette ne forment pas un nombre entier de couleurs de %2 chiffres</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: palette entry %2 is not hexadecimal</source>
-        <translation type="unfinished"></translation>
+        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: l’entrée %2 de la palette n’est pas hexadécimale</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: the final xform is not invertible (determinant %2): dropped</source>
-        <translation type="unfinished"></translation>
+        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: le xform final n’est pas inversible (déterminant %2)&#xa0;: supprimé</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its xaos (chaos) rows forbid some transitions; imported as the plain IFS of its maps, whose attractor contains the flame&apos;s</source>
-        <translation type="unfinished"></translation>
+        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: ses lignes xaos (chaos) interdisent certaines transitions&#xa0;; importée comme l’IFS simple de ses applications, dont l’attracteur contient celui de la flamme</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its xaos (chaos) weights are dropped: the attractor is the same, its measure differs</source>
-        <translation type="unfinished"></translation>
+        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: ses poids xaos (chaos) sont abandonnés&#xa0;: l’attracteur est le même, sa mesure diffère</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: every xform has weight 0</source>
-        <translation type="unfinished"></translation>
+        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: tous les xforms ont le poids 0</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: %2 (%3)</source>
-        <translation type="unfinished"></translation>
+        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: %2 (%3)</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: %2</translation>
     </message>
     <message>
         <source>%1: the file is larger than %2 MB</source>
-        <translation type="unfinished">%1&#xa0;: le fichier dépasse %2 Mo</translation>
+        <translation>%1&#xa0;: le fichier dépasse %2 Mo</translation>
     </message>
     <message>
         <source>cannot read %1: %2</source>
-        <translation type="unfinished">impossible de lire %1&#xa0;: %2</translation>
+        <translation>impossible de lire %1&#xa0;: %2</translation>
     </message>
     <message>
         <source>%1 is an IFS of space: a flame holds maps of the plane</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 est un IFS de l’espace&#xa0;: une flamme contient des applications du plan</translation>
     </message>
     <message>
         <source>the flame&apos;s frame is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>le cadre de la flamme est vide</translation>
     </message>
 </context>
 <context>
@@ -2851,23 +2851,23 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>Everything Attractor Workbench imports (*.ifs *.flame *.flam3 *.obj *.off *.ply);;Fractint IFS (*.ifs);;Fractal flames: flam3, Apophysis, JWildfire (*.flame *.flam3);;Meshes (*.obj *.off *.ply)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tout ce qu’Attractor Workbench importe (*.ifs *.flame *.flam3 *.obj *.off *.ply);;IFS Fractint (*.ifs);;Flammes fractales&#xa0;: flam3, Apophysis, JWildfire (*.flame *.flam3);;Maillages (*.obj *.off *.ply)</translation>
     </message>
     <message>
         <source>Imported the others; these were left out:</source>
-        <translation type="unfinished"></translation>
+        <translation>Les autres ont été importés&#xa0;; ceux-ci ont été laissés de côté&#xa0;:</translation>
     </message>
     <message>
         <source>Imported with these losses:</source>
-        <translation type="unfinished"></translation>
+        <translation>Importé avec ces pertes&#xa0;:</translation>
     </message>
     <message>
         <source>%1: Export Item As writes .ifs (Fractint), .flame (flam3) or .m (MATLAB) files</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;: «&#xa0;Exporter l’élément sous&#xa0;» écrit des fichiers .ifs (Fractint), .flame (flam3) ou .m (MATLAB)</translation>
     </message>
     <message>
         <source>Fractint IFS (*.ifs);;Fractal flame for flam3-render, Apophysis, JWildfire (*.flame);;MATLAB cell arrays of the matrices (*.m)</source>
-        <translation type="unfinished"></translation>
+        <translation>IFS Fractint (*.ifs);;Flamme fractale pour flam3-render, Apophysis, JWildfire (*.flame);;Tableaux de cellules MATLAB des matrices (*.m)</translation>
     </message>
 </context>
 <context>
@@ -3895,6 +3895,10 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>%1: λ = %2</source>
         <translation>%1 : λ = %2</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;%1 is not contractive, but the IFS contracts on average&lt;/b&gt;: its Lyapunov exponent is %2 &amp;lt; 0 (Barnsley–Elton), so random iteration converges to its attractor, as in flame renderers; deterministic iteration does not.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;%1 n’est pas contractante, mais l’IFS est contractant en moyenne&lt;/b&gt;&#xa0;: son exposant de Lyapunov vaut %2 &amp;lt; 0 (Barnsley–Elton), donc l’itération aléatoire converge vers son attracteur, comme dans les logiciels de flammes fractales&#xa0;; l’itération déterministe ne converge pas.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -5383,75 +5387,75 @@ Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les
     </message>
     <message>
         <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ); its maps as a Fractint .ifs entry (ifs) or a flam3 genome that flam3-render draws in the frame of render&apos;s --size and --bounds (flame); or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab).</source>
-        <translation type="unfinished"></translation>
+        <translation>Exporter la géométrie d’un élément&#xa0;: l’attracteur F^k(X0) comme nuage de points PLY (avec, pour chaque point, l’application appliquée en dernier), le réseau d’un élément surface après k passes de subdivision classique comme maillage OBJ, ou un élément maillage après k étapes avec chaque sommet à sa position limite (OBJ)&#xa0;; ses applications comme entrée .ifs de Fractint (ifs) ou comme génome flam3 que flam3-render dessine dans le cadre des options --size et --bounds de render (flame)&#xa0;; ou ses matrices S_i, M_i, A_i comme tableaux de cellules MATLAB pour la boîte à outils JSR (matlab).</translation>
     </message>
     <message>
         <source>ply (attractor points), obj (subdivided mesh), ifs (Fractint), flame (flam3) or matlab (matrices).</source>
-        <translation type="unfinished"></translation>
+        <translation>ply (points de l’attracteur), obj (maillage subdivisé), ifs (Fractint), flame (flam3) ou matlab (matrices).</translation>
     </message>
     <message>
         <source>--item NAME, --format ply|obj|ifs|flame|matlab and --out FILE are required</source>
-        <translation type="unfinished"></translation>
+        <translation>--item NOM, --format ply|obj|ifs|flame|matlab et --out FICHIER sont obligatoires</translation>
     </message>
     <message>
         <source>--format must be ply, obj, ifs, flame or matlab, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--format doit valoir ply, obj, ifs, flame ou matlab, reçu «&#xa0;%1&#xa0;»</translation>
     </message>
     <message>
         <source>&apos;%1&apos; has nothing to frame</source>
-        <translation type="unfinished"></translation>
+        <translation>«&#xa0;%1&#xa0;» n’a rien à cadrer</translation>
     </message>
     <message>
         <source>The output&apos;s format when its name has no suffix (e.g. /dev/stdout): png, svg, pdf or exr (default: the suffix).</source>
-        <translation type="unfinished"></translation>
+        <translation>Format de la sortie lorsque son nom n’a pas de suffixe (p. ex. /dev/stdout)&#xa0;: png, svg, pdf ou exr (par défaut&#xa0;: le suffixe).</translation>
     </message>
     <message>
         <source>PNG: 8 (the figure, default) or 16 (the attractor&apos;s raw density: alpha = log(1 + hits) / log(1 + most hits), the colour the hits&apos; mean; no title, polygons or margins). An .exr file always holds the raw density, as float32 counts.</source>
-        <translation type="unfinished"></translation>
+        <translation>PNG&#xa0;: 8 (la figure, par défaut) ou 16 (la densité brute de l’attracteur&#xa0;: alpha = log(1 + impacts) / log(1 + impacts max), la couleur étant la moyenne des impacts&#xa0;; ni titre, ni polygones, ni marges). Un fichier .exr contient toujours la densité brute, sous forme de comptes float32.</translation>
     </message>
     <message>
         <source>--format must be png, svg, pdf or exr, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--format doit valoir png, svg, pdf ou exr, reçu «&#xa0;%1&#xa0;»</translation>
     </message>
     <message>
         <source>--bits must be 8 or 16, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--bits doit valoir 8 ou 16, reçu «&#xa0;%1&#xa0;»</translation>
     </message>
     <message>
         <source>--bits 16 writes PNG files, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--bits 16 écrit des fichiers PNG, reçu «&#xa0;%1&#xa0;»</translation>
     </message>
     <message>
         <source>the raw density (.exr, --bits 16) counts an attractor&apos;s points; this item&apos;s figure is a polygon</source>
-        <translation type="unfinished"></translation>
+        <translation>la densité brute (.exr, --bits 16) compte les points d’un attracteur&#xa0;; la figure de cet élément est un polygone</translation>
     </message>
     <message>
         <source>the raw density (.exr, --bits 16) is of attractors drawn in the plane; &apos;%1&apos; is drawn in space</source>
-        <translation type="unfinished"></translation>
+        <translation>la densité brute (.exr, --bits 16) concerne les attracteurs dessinés dans le plan&#xa0;; «&#xa0;%1&#xa0;» est dessiné dans l’espace</translation>
     </message>
     <message>
         <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit), or every flame of a flam3 genome (.flame, .flam3: flam3, Apophysis, JWildfire), as a fractal with control points. Non-linear variations are dropped with a warning.</source>
-        <translation type="unfinished"></translation>
+        <translation>Créer un projet à partir du fichier IFS d’un autre outil&#xa0;: chaque entrée d’un fichier .ifs de Fractint (2D et 3D, le format de Fractint, de xfractint et de l’IFS Construction Kit), ou chaque flamme d’un génome flam3 (.flame, .flam3&#xa0;: flam3, Apophysis, JWildfire), devient une fractale avec des points de contrôle. Les variations non linéaires sont abandonnées avec un avertissement.</translation>
     </message>
     <message>
         <source>The file to import (.ifs, .flame, .flam3).</source>
-        <translation type="unfinished"></translation>
+        <translation>Le fichier à importer (.ifs, .flame, .flam3).</translation>
     </message>
     <message>
         <source>%1: import reads Fractint .ifs and flam3 .flame (.flam3) files</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;: import lit les fichiers .ifs de Fractint et .flame (.flam3) de flam3</translation>
     </message>
     <message>
         <source>warning: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>avertissement&#xa0;: %1</translation>
     </message>
     <message>
         <source>Render an item&apos;s attractor (with its control polygons) to PNG, SVG or PDF; or its raw density (hits per pixel) to OpenEXR (.exr, float32 counts) or a 16-bit PNG (--bits 16), to tone-map elsewhere.</source>
-        <translation type="unfinished"></translation>
+        <translation>Rendre l’attracteur d’un élément (avec ses polygones de contrôle) en PNG, SVG ou PDF&#xa0;; ou sa densité brute (impacts par pixel) en OpenEXR (.exr, comptes float32) ou en PNG 16 bits (--bits 16), pour un mappage tonal ailleurs.</translation>
     </message>
     <message>
         <source>Output file: .png, .svg, .pdf or .exr.</source>
-        <translation type="unfinished"></translation>
+        <translation>Fichier de sortie&#xa0;: .png, .svg, .pdf ou .exr.</translation>
     </message>
 </context>
 <context>

@@ -1288,19 +1288,19 @@
     <name>awb::DensityFile</name>
     <message>
         <source>cannot write %1: the picture is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>无法写入 %1：图像为空</translation>
     </message>
     <message>
         <source>cannot read %1: %2</source>
-        <translation type="unfinished">无法读取 %1：%2</translation>
+        <translation>无法读取 %1：%2</translation>
     </message>
     <message>
         <source>cannot write %1: not enough memory</source>
-        <translation type="unfinished"></translation>
+        <translation>无法写入 %1：内存不足</translation>
     </message>
     <message>
         <source>%1; alpha = log(1 + hits) / log(1 + %2); world %3 %4 %5 %6</source>
-        <translation type="unfinished"></translation>
+        <translation>%1；alpha = log(1 + 命中数) / log(1 + %2)；世界坐标 %3 %4 %5 %6</translation>
     </message>
 </context>
 <context>
@@ -1625,133 +1625,133 @@
     <name>awb::FlameExchange</name>
     <message>
         <source>the XML is malformed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>XML 格式错误：%1</translation>
     </message>
     <message>
         <source>%1: the file holds no &lt;flame&gt; element</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：文件中没有 &lt;flame&gt; 元素</translation>
     </message>
     <message>
         <source>%1, line %2, column %3: </source>
-        <translation type="unfinished"></translation>
+        <translation>%1，第 %2 行，第 %3 列：</translation>
     </message>
     <message>
         <source>flame %1</source>
-        <translation type="unfinished"></translation>
+        <translation>火焰分形 %1</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;, final xform</source>
-        <translation type="unfinished"></translation>
+        <translation>火焰分形“%1”，最终 xform</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;, xform %2</source>
-        <translation type="unfinished"></translation>
+        <translation>火焰分形“%1”，xform %2</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: &lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number</source>
-        <translation type="unfinished"></translation>
+        <translation>火焰分形“%1”：&lt;symmetry&gt; 需要 kind=&quot;k&quot;，其中 k 为整数</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: element &lt;%2&gt; ignored</source>
-        <translation type="unfinished"></translation>
+        <translation>火焰分形“%1”：已忽略元素 &lt;%2&gt;</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos; has no xform</source>
-        <translation type="unfinished"></translation>
+        <translation>火焰分形“%1”没有 xform</translation>
     </message>
     <message>
         <source>%1=&quot;%2&quot; must be 6 finite numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>%1=&quot;%2&quot; 必须是 6 个有限数值</translation>
     </message>
     <message>
         <source>weight=&quot;%1&quot; must be a finite number &gt;= 0</source>
-        <translation type="unfinished"></translation>
+        <translation>weight=&quot;%1&quot; 必须是 &gt;= 0 的有限数值</translation>
     </message>
     <message>
         <source>var1=&quot;%1&quot; names no variation</source>
-        <translation type="unfinished"></translation>
+        <translation>var1=&quot;%1&quot; 不是任何变体的名称</translation>
     </message>
     <message>
         <source>variation %1=&quot;%2&quot; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>变体 %1=&quot;%2&quot; 不是数值</translation>
     </message>
     <message>
         <source>: opacity %1 not kept (every map is drawn)</source>
-        <translation type="unfinished"></translation>
+        <translation>：未保留 opacity %1（所有映射均会绘制）</translation>
     </message>
     <message>
         <source>: attribute %1=&quot;%2&quot; ignored</source>
-        <translation type="unfinished"></translation>
+        <translation>：已忽略属性 %1=&quot;%2&quot;</translation>
     </message>
     <message numerus="yes">
         <source>: variation %1 dropped (non-linear)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>：已舍弃变体 %1（非线性）</numerusform>
         </translation>
     </message>
     <message>
         <source>; its affine part kept as a linear map</source>
-        <translation type="unfinished"></translation>
+        <translation>；其仿射部分保留为线性映射</translation>
     </message>
     <message>
         <source>: no variation given; taken as linear</source>
-        <translation type="unfinished"></translation>
+        <translation>：未给出变体；按 linear 处理</translation>
     </message>
     <message>
         <source>%1: element &lt;%2&gt; ignored (animation)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：已忽略元素 &lt;%2&gt;（动画）</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: a &lt;color&gt; needs index=&quot;0..255&quot; and rgb=&quot;r g b&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>火焰分形“%1”：&lt;color&gt; 需要 index=&quot;0..255&quot; 和 rgb=&quot;r g b&quot;</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: the palette&apos;s hex digits are not whole colours of %2 digits</source>
-        <translation type="unfinished"></translation>
+        <translation>火焰分形“%1”：调色板的十六进制数字不能分成完整的 %2 位颜色值</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: palette entry %2 is not hexadecimal</source>
-        <translation type="unfinished"></translation>
+        <translation>火焰分形“%1”：调色板条目 %2 不是十六进制</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: the final xform is not invertible (determinant %2): dropped</source>
-        <translation type="unfinished"></translation>
+        <translation>火焰分形“%1”：最终 xform 不可逆（行列式 %2）：已舍弃</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its xaos (chaos) rows forbid some transitions; imported as the plain IFS of its maps, whose attractor contains the flame&apos;s</source>
-        <translation type="unfinished"></translation>
+        <translation>火焰分形“%1”：其 xaos（chaos）行禁止了部分转移；已按其映射构成的普通 IFS 导入，该 IFS 的吸引子包含原火焰分形的吸引子</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its xaos (chaos) weights are dropped: the attractor is the same, its measure differs</source>
-        <translation type="unfinished"></translation>
+        <translation>火焰分形“%1”：已舍弃其 xaos（chaos）权重：吸引子不变，但其测度不同</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: every xform has weight 0</source>
-        <translation type="unfinished"></translation>
+        <translation>火焰分形“%1”：所有 xform 的权重均为 0</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: %2 (%3)</source>
-        <translation type="unfinished"></translation>
+        <translation>火焰分形“%1”：%2（%3）</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>火焰分形“%1”：%2</translation>
     </message>
     <message>
         <source>%1: the file is larger than %2 MB</source>
-        <translation type="unfinished">%1：文件大于 %2 MB</translation>
+        <translation>%1：文件大于 %2 MB</translation>
     </message>
     <message>
         <source>cannot read %1: %2</source>
-        <translation type="unfinished">无法读取 %1：%2</translation>
+        <translation>无法读取 %1：%2</translation>
     </message>
     <message>
         <source>%1 is an IFS of space: a flame holds maps of the plane</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 是空间 IFS：火焰分形只包含平面映射</translation>
     </message>
     <message>
         <source>the flame&apos;s frame is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>火焰分形的画框为空</translation>
     </message>
 </context>
 <context>
@@ -2846,23 +2846,23 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>Everything Attractor Workbench imports (*.ifs *.flame *.flam3 *.obj *.off *.ply);;Fractint IFS (*.ifs);;Fractal flames: flam3, Apophysis, JWildfire (*.flame *.flam3);;Meshes (*.obj *.off *.ply)</source>
-        <translation type="unfinished"></translation>
+        <translation>Attractor Workbench 可导入的所有文件 (*.ifs *.flame *.flam3 *.obj *.off *.ply);;Fractint IFS (*.ifs);;火焰分形：flam3、Apophysis、JWildfire (*.flame *.flam3);;网格 (*.obj *.off *.ply)</translation>
     </message>
     <message>
         <source>Imported the others; these were left out:</source>
-        <translation type="unfinished"></translation>
+        <translation>其余已导入；以下各项被略过：</translation>
     </message>
     <message>
         <source>Imported with these losses:</source>
-        <translation type="unfinished"></translation>
+        <translation>已导入，但有以下损失：</translation>
     </message>
     <message>
         <source>%1: Export Item As writes .ifs (Fractint), .flame (flam3) or .m (MATLAB) files</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：“将对象导出为”只能写入 .ifs（Fractint）、.flame（flam3）或 .m（MATLAB）文件</translation>
     </message>
     <message>
         <source>Fractint IFS (*.ifs);;Fractal flame for flam3-render, Apophysis, JWildfire (*.flame);;MATLAB cell arrays of the matrices (*.m)</source>
-        <translation type="unfinished"></translation>
+        <translation>Fractint IFS (*.ifs);;用于 flam3-render、Apophysis、JWildfire 的火焰分形 (*.flame);;矩阵的 MATLAB 元胞数组 (*.m)</translation>
     </message>
 </context>
 <context>
@@ -3887,6 +3887,10 @@ It was kept as %2.</source>
     <message>
         <source>%1: λ = %2</source>
         <translation>%1：λ = %2</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;%1 is not contractive, but the IFS contracts on average&lt;/b&gt;: its Lyapunov exponent is %2 &amp;lt; 0 (Barnsley–Elton), so random iteration converges to its attractor, as in flame renderers; deterministic iteration does not.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;%1 不是压缩的，但该 IFS 平均压缩&lt;/b&gt;：其李雅普诺夫指数为 %2 &amp;lt; 0（Barnsley–Elton），因此随机迭代收敛到其吸引子，正如火焰分形渲染器那样；确定性迭代则不收敛。&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -5373,75 +5377,75 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ); its maps as a Fractint .ifs entry (ifs) or a flam3 genome that flam3-render draws in the frame of render&apos;s --size and --bounds (flame); or its matrices S_i, M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab).</source>
-        <translation type="unfinished"></translation>
+        <translation>导出项目的几何数据：吸引子 F^k(X0) 导出为 PLY 点云（每个点附带最后作用的映射），曲面项目经 k 轮经典细分后的控制网导出为 OBJ 网格，网格项目经 k 步细分、每个顶点置于其极限位置后导出（OBJ）；其映射导出为 Fractint .ifs 条目（ifs），或导出为 flam3 基因组，由 flam3-render 在 render 的 --size 和 --bounds 所定的画框中绘制（flame）；或将其矩阵 S_i、M_i、A_i 导出为供 JSR 工具箱使用的 MATLAB 元胞数组（matlab）。</translation>
     </message>
     <message>
         <source>ply (attractor points), obj (subdivided mesh), ifs (Fractint), flame (flam3) or matlab (matrices).</source>
-        <translation type="unfinished"></translation>
+        <translation>ply（吸引子点）、obj（细分网格）、ifs（Fractint）、flame（flam3）或 matlab（矩阵）。</translation>
     </message>
     <message>
         <source>--item NAME, --format ply|obj|ifs|flame|matlab and --out FILE are required</source>
-        <translation type="unfinished"></translation>
+        <translation>必须指定 --item 名称、--format ply|obj|ifs|flame|matlab 和 --out 文件</translation>
     </message>
     <message>
         <source>--format must be ply, obj, ifs, flame or matlab, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--format 必须是 ply、obj、ifs、flame 或 matlab，实际为“%1”</translation>
     </message>
     <message>
         <source>&apos;%1&apos; has nothing to frame</source>
-        <translation type="unfinished"></translation>
+        <translation>“%1”没有可用于确定画框的内容</translation>
     </message>
     <message>
         <source>The output&apos;s format when its name has no suffix (e.g. /dev/stdout): png, svg, pdf or exr (default: the suffix).</source>
-        <translation type="unfinished"></translation>
+        <translation>输出名称没有后缀时（例如 /dev/stdout）使用的输出格式：png、svg、pdf 或 exr（默认：按后缀确定）。</translation>
     </message>
     <message>
         <source>PNG: 8 (the figure, default) or 16 (the attractor&apos;s raw density: alpha = log(1 + hits) / log(1 + most hits), the colour the hits&apos; mean; no title, polygons or margins). An .exr file always holds the raw density, as float32 counts.</source>
-        <translation type="unfinished"></translation>
+        <translation>PNG：8（图形，默认）或 16（吸引子的原始密度：alpha = log(1 + 命中数) / log(1 + 最大命中数)，颜色为各次命中的平均值；无标题、多边形和边距）。.exr 文件始终保存原始密度，为 float32 计数。</translation>
     </message>
     <message>
         <source>--format must be png, svg, pdf or exr, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--format 必须是 png、svg、pdf 或 exr，实际为“%1”</translation>
     </message>
     <message>
         <source>--bits must be 8 or 16, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--bits 必须是 8 或 16，实际为“%1”</translation>
     </message>
     <message>
         <source>--bits 16 writes PNG files, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--bits 16 只能写入 PNG 文件，实际为“%1”</translation>
     </message>
     <message>
         <source>the raw density (.exr, --bits 16) counts an attractor&apos;s points; this item&apos;s figure is a polygon</source>
-        <translation type="unfinished"></translation>
+        <translation>原始密度（.exr，--bits 16）统计的是吸引子的点；此项目的图形是多边形</translation>
     </message>
     <message>
         <source>the raw density (.exr, --bits 16) is of attractors drawn in the plane; &apos;%1&apos; is drawn in space</source>
-        <translation type="unfinished"></translation>
+        <translation>原始密度（.exr，--bits 16）仅适用于在平面中绘制的吸引子；“%1”在空间中绘制</translation>
     </message>
     <message>
         <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit), or every flame of a flam3 genome (.flame, .flam3: flam3, Apophysis, JWildfire), as a fractal with control points. Non-linear variations are dropped with a warning.</source>
-        <translation type="unfinished"></translation>
+        <translation>将其他工具的 IFS 文件生成项目：Fractint .ifs 文件中的每个条目（2D 和 3D，即 Fractint、xfractint 和 IFS Construction Kit 的格式），或 flam3 基因组（.flame、.flam3：flam3、Apophysis、JWildfire）中的每个火焰分形，都会成为带控制点的分形。非线性变体将被舍弃并给出警告。</translation>
     </message>
     <message>
         <source>The file to import (.ifs, .flame, .flam3).</source>
-        <translation type="unfinished"></translation>
+        <translation>要导入的文件（.ifs、.flame、.flam3）。</translation>
     </message>
     <message>
         <source>%1: import reads Fractint .ifs and flam3 .flame (.flam3) files</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：import 只读取 Fractint .ifs 和 flam3 .flame（.flam3）文件</translation>
     </message>
     <message>
         <source>warning: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>警告：%1</translation>
     </message>
     <message>
         <source>Render an item&apos;s attractor (with its control polygons) to PNG, SVG or PDF; or its raw density (hits per pixel) to OpenEXR (.exr, float32 counts) or a 16-bit PNG (--bits 16), to tone-map elsewhere.</source>
-        <translation type="unfinished"></translation>
+        <translation>将项目的吸引子（连同其控制多边形）渲染为 PNG、SVG 或 PDF；或将其原始密度（每像素命中数）输出为 OpenEXR（.exr，float32 计数）或 16 位 PNG（--bits 16），以便在其他软件中进行色调映射。</translation>
     </message>
     <message>
         <source>Output file: .png, .svg, .pdf or .exr.</source>
-        <translation type="unfinished"></translation>
+        <translation>输出文件：.png、.svg、.pdf 或 .exr。</translation>
     </message>
 </context>
 <context>

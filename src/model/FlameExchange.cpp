@@ -149,6 +149,7 @@ private:
         std::map<int, QColor> palette;
         QString problem;
         QStringList warnings;
+        int written = 0;  // the <xform> elements so far (symmetry adds others)
         while (m_xml.readNextStartElement()) {
             const QStringView tag = m_xml.name();
             if (tag == QLatin1String("xform") || tag == QLatin1String("finalxform")) {
@@ -156,7 +157,7 @@ private:
                 Xform x;
                 const QString where =
                     isFinal ? FlameTr::tr("flame '%1', final xform").arg(name)
-                            : FlameTr::tr("flame '%1', xform %2").arg(name).arg(xforms.size() + 1);
+                            : FlameTr::tr("flame '%1', xform %2").arg(name).arg(++written);
                 if (!readXform(x, where, &problem, &warnings))
                     break;
                 if (isFinal)

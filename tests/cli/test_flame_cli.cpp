@@ -151,6 +151,7 @@ private slots:
     void genomesRenderAsFlam3Renders_data();
     void genomesRenderAsFlam3Renders();
     void liveGenomeImports();
+    void bundledGenomes();
     void exportRendersInFlam3();
     void rawDensityOut();
 
@@ -408,6 +409,34 @@ void TestFlameCli::liveGenomeImports()
         QVERIFY(item["contractive_on_average"].toBool());
         QVERIFY(item["lyapunov_exponent"].toDouble() < 0);
     }
+}
+
+void TestFlameCli::bundledGenomes()
+{
+    // examples/flam3-linear-genomes.flame: the three genomes above in one file, each an item,
+    // nothing lost; the analysis tells the two kinds of contraction apart.
+    const QString project = m_dir.filePath("genomes.awb");
+    QByteArray out, err;
+    QCOMPARE(run({"import", awb::test::examplePath("flam3-linear-genomes.flame"), "--out",
+                  project},
+                 &out, &err),
+             0);
+    QVERIFY2(err.isEmpty(), err.constData());
+    QVERIFY2(out.contains("3 item(s): contractive, contractive on average, flam3 symmetry kind -4"),
+             out.constData());
+    QCOMPARE(run({"analyse", project, "--json"}, &out), 0);
+    const QJsonArray items = QJsonDocument::fromJson(out)["items"].toArray();
+    QCOMPARE(items.size(), 3);
+    QVERIFY(!items[0].toObject().contains("contractive_on_average"));  // every map contracts
+    for (int i : {1, 2}) {
+        QVERIFY(items[i]["contractive_on_average"].toBool());
+        QVERIFY(items[i]["lyapunov_exponent"].toDouble() < -0.01);
+    }
+    // flam3's symmetry kind -4 adds a reflection and three rotations to the 6 listed xforms
+    // (which hold them already): 2 + 4 + 4 maps.
+    QFile f(project);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QCOMPARE(QJsonDocument::fromJson(f.readAll())["items"][2]["maps"].toArray().size(), 10);
 }
 
 void TestFlameCli::exportRendersInFlam3()

@@ -2,7 +2,9 @@
 // .ifs file in one undo step and says which entries were left out (line and column); File >
 // Export Item As writes the current item as a Fractint entry or its matrices as MATLAB cell
 // arrays, and refuses an item whose IFS is not one of the plane or of space, by name.
+#include "gui/app/ItemController.h"
 #include "gui/app/MainWindow.h"
+#include "gui/views/SpectrumView.h"
 #include "gui/app/Messages.h"
 #include "model/FractalItem.h"
 #include "model/Project.h"
@@ -134,6 +136,19 @@ void TestExchangeWindow::flamesInAndOut()
     QVERIFY2(text.contains("coefs=\"0.3 0 0 0.3 0.7 0\"") && text.contains("weight=\"2\""),
              text.constData());
     QVERIFY(text.contains("<color index=\"255\""));
+
+    // A flame with flam3's symmetry: a reflection (spectral radius 1) among its maps. The
+    // Spectrum panel says that the IFS contracts on average instead of refusing it.
+    QVERIFY2(w.importIfs(write("sym.flame", "<flame name=\"sym\"><symmetry kind=\"-2\"/>"
+                                           "<xform weight=\"1\" linear=\"1\" "
+                                           "coefs=\"0.5 0 0 0.5 0.5 0\"/></flame>\n"),
+                        &problems, &error, &warnings),
+            qPrintable(error));
+    QVERIFY(warnings.isEmpty());
+    w.setCurrentItem(w.project()->findItem("sym"));
+    w.controller()->refreshNow();
+    const QString verdict = w.spectrumView()->verdictText();
+    QVERIFY2(verdict.contains("but the IFS contracts on average"), qPrintable(verdict));
 }
 
 AWB_TEST_MAIN(TestExchangeWindow)

@@ -380,7 +380,21 @@ void ItemController::showMatrices()
 
 void ItemController::showSpectrum()
 {
-    m_spectrum->setMaps(currentSpectra());
+    const QList<MapSpectrum> spectra = currentSpectra();
+    // Whether an IFS with a map that does not contract contracts on average (a flame).
+    std::optional<double> lyapunov;
+    const auto d = drawnDerived();
+    const bool contractive = std::all_of(spectra.begin(), spectra.end(), [](const auto &m) {
+        return m.contractivity.eventuallyContractive;
+    });
+    if (!contractive && d && d->ifs.size() > 0 && !d->iterate && focusedSpectra().isEmpty()) {
+        try {
+            lyapunov = checkIfs(d->ifs).lyapunov;
+        } catch (const std::exception &) {
+        }
+    }
+    m_spectrum->setLyapunovExponent(lyapunov);
+    m_spectrum->setMaps(spectra);
 }
 
 void ItemController::showCharts()

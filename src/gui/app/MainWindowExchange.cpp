@@ -97,9 +97,13 @@ void MainWindow::importDialog()
         text += (text.isEmpty() ? QString() : QStringLiteral("\n\n"))
                 + tr("Imported with these losses:") + QStringLiteral("\n\n")
                 + warnings.join(QLatin1Char('\n'));
-    if (!text.isEmpty())
-        m_messages->information(this, tr("Import"), text);
-    else
+    if (!text.isEmpty()) {
+        // After the window has shown the new items (its panels rebuild on the way back to the
+        // event loop, not inside the message's own).
+        QMetaObject::invokeMethod(
+            this, [this, text] { m_messages->information(this, tr("Import"), text); },
+            Qt::QueuedConnection);
+    } else
         statusBar()->showMessage(tr("Imported %1").arg(QDir::toNativeSeparators(file)), 5000);
 }
 

@@ -515,9 +515,16 @@ void SpectrumView::updateVerdicts()
                 firstBad = richLabel(m.label);
             allContractive = false;
         }
+    const bool onAverage = !allContractive && m_lyapunov && *m_lyapunov < -1e-3;
     html += allContractive
                 ? tr("<p><b>All maps are (eventually) contractive</b>: the IFS has a unique "
                      "attractor.</p>")
+            : onAverage
+                ? tr("<p><b>%1 is not contractive, but the IFS contracts on average</b>: its "
+                     "Lyapunov exponent is %2 &lt; 0 (Barnsley–Elton), so random iteration "
+                     "converges to its attractor, as in flame renderers; deterministic "
+                     "iteration does not.</p>")
+                      .arg(firstBad, formatNumber(*m_lyapunov, 4))
                 : tr("<p style='color:#b01e1e'><b>%1 is not contractive</b>: the IFS has no "
                      "attractor and its iteration does not converge.</p>")
                       .arg(firstBad);

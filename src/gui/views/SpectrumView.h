@@ -16,6 +16,8 @@
 #include <QString>
 #include <QWidget>
 
+#include <optional>
+
 #include <vector>
 
 class QCustomPlot;
@@ -40,6 +42,11 @@ public:
     ~SpectrumView() override;
 
     void setMaps(const QList<MapSpectrum> &maps);
+    // When a map is not contractive: the IFS's top Lyapunov exponent (core IfsCheck), so that
+    // the verdict says whether it contracts on average (random iteration draws its attractor,
+    // as flame renderers do). nullopt: not known (every map contractive, an automaton, a
+    // vertex's matrix). Takes effect at the next setMaps().
+    void setLyapunovExponent(std::optional<double> exponent) { m_lyapunov = exponent; }
     const QList<MapSpectrum> &maps() const { return m_maps; }
 
     // Eigenvalue points plotted (one per distinct eigenvalue of each map; multiplicity is
@@ -100,6 +107,7 @@ private:
     QCPGraph *m_subdominantGraph = nullptr;
     bool m_fitPending = true;
     int m_highlighted = -1;
+    std::optional<double> m_lyapunov;
     QPointF m_pressPosition;
     bool m_inKeepAspect = false;
 };
