@@ -1745,11 +1745,11 @@
     </message>
     <message>
         <source>%1: the file is larger than %2 MB</source>
-        <translation>%1: soubor je větší než %2 MB</translation>
+        <translation type="vanished">%1: soubor je větší než %2 MB</translation>
     </message>
     <message>
         <source>cannot read %1: %2</source>
-        <translation>nelze přečíst %1: %2</translation>
+        <translation type="vanished">nelze přečíst %1: %2</translation>
     </message>
     <message>
         <source>%1 is an IFS of space: a flame holds maps of the plane</source>

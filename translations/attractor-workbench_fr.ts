@@ -1742,11 +1742,11 @@
     </message>
     <message>
         <source>%1: the file is larger than %2 MB</source>
-        <translation>%1&#xa0;: le fichier dépasse %2 Mo</translation>
+        <translation type="vanished">%1&#xa0;: le fichier dépasse %2 Mo</translation>
     </message>
     <message>
         <source>cannot read %1: %2</source>
-        <translation>impossible de lire %1&#xa0;: %2</translation>
+        <translation type="vanished">impossible de lire %1&#xa0;: %2</translation>
     </message>
     <message>
         <source>%1 is an IFS of space: a flame holds maps of the plane</source>

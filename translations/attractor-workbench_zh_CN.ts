@@ -1739,11 +1739,11 @@
     </message>
     <message>
         <source>%1: the file is larger than %2 MB</source>
-        <translation>%1：文件大于 %2 MB</translation>
+        <translation type="vanished">%1：文件大于 %2 MB</translation>
     </message>
     <message>
         <source>cannot read %1: %2</source>
-        <translation>无法读取 %1：%2</translation>
+        <translation type="vanished">无法读取 %1：%2</translation>
     </message>
     <message>
         <source>%1 is an IFS of space: a flame holds maps of the plane</source>

@@ -511,16 +511,7 @@ ImportedItems importFlameText(const QByteArray &text, const QString &fileName)
 
 ImportedItems importFlame(const QString &fileName)
 {
-    QFile f(fileName);
-    if (f.size() > ProjectIO::maxFileBytes)
-        throw InputError(FlameTr::tr("%1: the file is larger than %2 MB")
-                             .arg(fileName)
-                             .arg(ProjectIO::maxFileBytes / (1024 * 1024))
-                             .toStdString());
-    if (!f.open(QIODevice::ReadOnly))
-        throw InputError(
-            FlameTr::tr("cannot read %1: %2").arg(fileName, f.errorString()).toStdString());
-    return importFlameText(f.readAll(), fileName);
+    return importFlameText(readExchangeFile(fileName), fileName);
 }
 
 std::optional<QByteArray> flameOf(const AttractorItem &item, const QStringList &mapColours,

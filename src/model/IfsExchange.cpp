@@ -106,7 +106,7 @@ ImportedItems importFractintText(const QByteArray &text, const QString &fileName
     return out;
 }
 
-ImportedItems importFractint(const QString &fileName)
+QByteArray readExchangeFile(const QString &fileName)
 {
     QFile f(fileName);
     if (f.size() > ProjectIO::maxFileBytes)
@@ -117,7 +117,12 @@ ImportedItems importFractint(const QString &fileName)
     if (!f.open(QIODevice::ReadOnly))
         throw InputError(
             ExchangeTr::tr("cannot read %1: %2").arg(fileName, f.errorString()).toStdString());
-    return importFractintText(f.readAll(), fileName);
+    return f.readAll();
+}
+
+ImportedItems importFractint(const QString &fileName)
+{
+    return importFractintText(readExchangeFile(fileName), fileName);
 }
 
 std::optional<FractintEntry> fractintEntryOf(const AttractorItem &item, QString *why)

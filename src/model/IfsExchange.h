@@ -37,6 +37,10 @@ struct ImportedItems {
 std::unique_ptr<Item> importedFractal(const FractintEntry &entry, const QStringList &colours = {},
                                       int samples = 0);
 
+// The bytes of another tool's file: InputError when it cannot be read or is larger than a
+// project may be (ProjectIO::maxFileBytes).
+QByteArray readExchangeFile(const QString &fileName);
+
 // Every entry of a .ifs file; InputError when the file cannot be read at all.
 ImportedItems importFractint(const QString &fileName);
 // The same from text (`fileName` names it in the messages).
