@@ -963,6 +963,10 @@
         <source>F^%1(X₀) has too many images to draw as vectors</source>
         <translation>F^%1(X₀) má příliš mnoho obrazů na vykreslení ve vektorové podobě</translation>
     </message>
+    <message>
+        <source>there is no attractor to count</source>
+        <translation>není žádný atraktor, který by šlo spočítat</translation>
+    </message>
 </context>
 <context>
     <name>awb::BcifsJunctionItem</name>
@@ -1426,7 +1430,11 @@
     </message>
     <message>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf);;LaTeX matrices (*.tex)</source>
-        <translation>Obrázek PNG (*.png);;Kresba SVG (*.svg);;Dokument PDF (*.pdf);;Matice v LaTeXu (*.tex)</translation>
+        <translation type="vanished">Obrázek PNG (*.png);;Kresba SVG (*.svg);;Dokument PDF (*.pdf);;Matice v LaTeXu (*.tex)</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf);;LaTeX matrices (*.tex);;OpenEXR raw density of the attractor, float32 hits per pixel (*.exr)</source>
+        <translation>Obrázek PNG (*.png);;Kresba SVG (*.svg);;Dokument PDF (*.pdf);;Matice v LaTeXu (*.tex);;Surová hustota atraktoru v OpenEXR, zásahy na pixel jako float32 (*.exr)</translation>
     </message>
 </context>
 <context>
@@ -2536,7 +2544,7 @@ Odečíst rozdíl %7 od prvku ve sloupci %8 (%9 → %10), aby byl součet řádk
     </message>
     <message>
         <source>Unknown format &quot;%1&quot;: use .png, .svg or .pdf (.tex for the matrices).</source>
-        <translation>Neznámý formát „%1“: použijte .png, .svg nebo .pdf (.tex pro matice).</translation>
+        <translation type="vanished">Neznámý formát „%1“: použijte .png, .svg nebo .pdf (.tex pro matice).</translation>
     </message>
     <message>
         <source>Exporting %1 was cancelled while the attractor was drawn.</source>
@@ -2688,7 +2696,7 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>Projects and figures with their item (*.awb *.png *.svg);;Attractor Workbench projects (*.awb);;Exported figures (*.png *.svg);;All files (*)</source>
-        <translation>Projekty a obrázky s položkou (*.awb *.png *.svg);;Projekty Attractor Workbench (*.awb);;Exportované obrázky (*.png *.svg);;Všechny soubory (*)</translation>
+        <translation type="vanished">Projekty a obrázky s položkou (*.awb *.png *.svg);;Projekty Attractor Workbench (*.awb);;Exportované obrázky (*.png *.svg);;Všechny soubory (*)</translation>
     </message>
     <message>
         <source>&amp;Import Mesh…</source>
@@ -2873,6 +2881,18 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>Fractint IFS (*.ifs);;Fractal flame for flam3-render, Apophysis, JWildfire (*.flame);;MATLAB cell arrays of the matrices (*.m)</source>
         <translation>IFS Fractint (*.ifs);;Fraktální plamen pro flam3-render, Apophysis, JWildfire (*.flame);;Pole buněk MATLABu s maticemi (*.m)</translation>
+    </message>
+    <message>
+        <source>An .exr file holds the raw density of an attractor drawn in the plane: choose the Attractor view of such an item.</source>
+        <translation>Soubor .exr obsahuje surovou hustotu atraktoru kresleného v rovině: zvolte pohled Atraktor takové položky.</translation>
+    </message>
+    <message>
+        <source>Unknown format &quot;%1&quot;: use .png, .svg or .pdf (.tex for the matrices, .exr for the attractor&apos;s raw density).</source>
+        <translation>Neznámý formát „%1“: použijte .png, .svg nebo .pdf (.tex pro matice, .exr pro surovou hustotu atraktoru).</translation>
+    </message>
+    <message>
+        <source>Projects and figures with their item (*.awb *.png *.svg);;Attractor Workbench projects (*.awb);;Exported figures (*.png *.svg);;Other tools&apos; IFS files, as a new project (*.ifs *.flame *.flam3);;All files (*)</source>
+        <translation>Projekty a obrázky s položkou (*.awb *.png *.svg);;Projekty Attractor Workbench (*.awb);;Exportované obrázky (*.png *.svg);;Soubory IFS jiných nástrojů jako nový projekt (*.ifs *.flame *.flam3);;Všechny soubory (*)</translation>
     </message>
 </context>
 <context>

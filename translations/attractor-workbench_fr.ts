@@ -962,6 +962,10 @@
         <source>F^%1(X₀) has too many images to draw as vectors</source>
         <translation>F^%1(X₀) a trop d’images pour être tracé sous forme vectorielle</translation>
     </message>
+    <message>
+        <source>there is no attractor to count</source>
+        <translation>il n’y a pas d’attracteur à compter</translation>
+    </message>
 </context>
 <context>
     <name>awb::BcifsJunctionItem</name>
@@ -1425,7 +1429,11 @@
     </message>
     <message>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf);;LaTeX matrices (*.tex)</source>
-        <translation>Image PNG (*.png);;Dessin SVG (*.svg);;Document PDF (*.pdf);;Matrices LaTeX (*.tex)</translation>
+        <translation type="vanished">Image PNG (*.png);;Dessin SVG (*.svg);;Document PDF (*.pdf);;Matrices LaTeX (*.tex)</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf);;LaTeX matrices (*.tex);;OpenEXR raw density of the attractor, float32 hits per pixel (*.exr)</source>
+        <translation>Image PNG (*.png);;Dessin SVG (*.svg);;Document PDF (*.pdf);;Matrices LaTeX (*.tex);;Densité brute OpenEXR de l’attracteur, impacts par pixel en float32 (*.exr)</translation>
     </message>
 </context>
 <context>
@@ -2532,7 +2540,7 @@ Retrancher la différence %7 du coefficient de la colonne %8 (%9 → %10) pour q
     </message>
     <message>
         <source>Unknown format &quot;%1&quot;: use .png, .svg or .pdf (.tex for the matrices).</source>
-        <translation>Format «&#xa0;%1&#xa0;» inconnu&#xa0;: utilisez .png, .svg ou .pdf (.tex pour les matrices).</translation>
+        <translation type="vanished">Format «&#xa0;%1&#xa0;» inconnu&#xa0;: utilisez .png, .svg ou .pdf (.tex pour les matrices).</translation>
     </message>
     <message>
         <source>Exporting %1 was cancelled while the attractor was drawn.</source>
@@ -2684,7 +2692,7 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>Projects and figures with their item (*.awb *.png *.svg);;Attractor Workbench projects (*.awb);;Exported figures (*.png *.svg);;All files (*)</source>
-        <translation>Projets et figures avec leur élément (*.awb *.png *.svg);;Projets Attractor Workbench (*.awb);;Figures exportées (*.png *.svg);;Tous les fichiers (*)</translation>
+        <translation type="vanished">Projets et figures avec leur élément (*.awb *.png *.svg);;Projets Attractor Workbench (*.awb);;Figures exportées (*.png *.svg);;Tous les fichiers (*)</translation>
     </message>
     <message>
         <source>&amp;Import Mesh…</source>
@@ -2868,6 +2876,18 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>Fractint IFS (*.ifs);;Fractal flame for flam3-render, Apophysis, JWildfire (*.flame);;MATLAB cell arrays of the matrices (*.m)</source>
         <translation>IFS Fractint (*.ifs);;Flamme fractale pour flam3-render, Apophysis, JWildfire (*.flame);;Tableaux de cellules MATLAB des matrices (*.m)</translation>
+    </message>
+    <message>
+        <source>An .exr file holds the raw density of an attractor drawn in the plane: choose the Attractor view of such an item.</source>
+        <translation>Un fichier .exr contient la densité brute d’un attracteur dessiné dans le plan&#xa0;: choisissez la vue Attracteur d’un tel élément.</translation>
+    </message>
+    <message>
+        <source>Unknown format &quot;%1&quot;: use .png, .svg or .pdf (.tex for the matrices, .exr for the attractor&apos;s raw density).</source>
+        <translation>Format «&#xa0;%1&#xa0;» inconnu&#xa0;: utilisez .png, .svg ou .pdf (.tex pour les matrices, .exr pour la densité brute de l’attracteur).</translation>
+    </message>
+    <message>
+        <source>Projects and figures with their item (*.awb *.png *.svg);;Attractor Workbench projects (*.awb);;Exported figures (*.png *.svg);;Other tools&apos; IFS files, as a new project (*.ifs *.flame *.flam3);;All files (*)</source>
+        <translation>Projets et figures avec leur élément (*.awb *.png *.svg);;Projets Attractor Workbench (*.awb);;Figures exportées (*.png *.svg);;Fichiers IFS d’autres outils, en nouveau projet (*.ifs *.flame *.flam3);;Tous les fichiers (*)</translation>
     </message>
 </context>
 <context>

@@ -961,6 +961,10 @@
         <source>F^%1(X₀) has too many images to draw as vectors</source>
         <translation>F^%1(X₀) 的像太多，无法以矢量形式绘制</translation>
     </message>
+    <message>
+        <source>there is no attractor to count</source>
+        <translation>没有可计数的吸引子</translation>
+    </message>
 </context>
 <context>
     <name>awb::BcifsJunctionItem</name>
@@ -1424,7 +1428,11 @@
     </message>
     <message>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf);;LaTeX matrices (*.tex)</source>
-        <translation>PNG 图像 (*.png);;SVG 绘图 (*.svg);;PDF 文档 (*.pdf);;LaTeX 矩阵 (*.tex)</translation>
+        <translation type="vanished">PNG 图像 (*.png);;SVG 绘图 (*.svg);;PDF 文档 (*.pdf);;LaTeX 矩阵 (*.tex)</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf);;LaTeX matrices (*.tex);;OpenEXR raw density of the attractor, float32 hits per pixel (*.exr)</source>
+        <translation>PNG 图像 (*.png);;SVG 绘图 (*.svg);;PDF 文档 (*.pdf);;LaTeX 矩阵 (*.tex);;吸引子的 OpenEXR 原始密度，每像素命中数 float32 (*.exr)</translation>
     </message>
 </context>
 <context>
@@ -2528,7 +2536,7 @@ Take the difference %7 from the entry in column %8 (%9 → %10) so that the row 
     </message>
     <message>
         <source>Unknown format &quot;%1&quot;: use .png, .svg or .pdf (.tex for the matrices).</source>
-        <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf（矩阵使用 .tex）。</translation>
+        <translation type="vanished">未知格式“%1”：请使用 .png、.svg 或 .pdf（矩阵使用 .tex）。</translation>
     </message>
     <message>
         <source>Exporting %1 was cancelled while the attractor was drawn.</source>
@@ -2680,7 +2688,7 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>Projects and figures with their item (*.awb *.png *.svg);;Attractor Workbench projects (*.awb);;Exported figures (*.png *.svg);;All files (*)</source>
-        <translation>项目及带有对象的图形 (*.awb *.png *.svg);;Attractor Workbench 项目 (*.awb);;导出的图形 (*.png *.svg);;所有文件 (*)</translation>
+        <translation type="vanished">项目及带有对象的图形 (*.awb *.png *.svg);;Attractor Workbench 项目 (*.awb);;导出的图形 (*.png *.svg);;所有文件 (*)</translation>
     </message>
     <message>
         <source>&amp;Import Mesh…</source>
@@ -2863,6 +2871,18 @@ It was kept as %2.</source>
     <message>
         <source>Fractint IFS (*.ifs);;Fractal flame for flam3-render, Apophysis, JWildfire (*.flame);;MATLAB cell arrays of the matrices (*.m)</source>
         <translation>Fractint IFS (*.ifs);;用于 flam3-render、Apophysis、JWildfire 的火焰分形 (*.flame);;矩阵的 MATLAB 元胞数组 (*.m)</translation>
+    </message>
+    <message>
+        <source>An .exr file holds the raw density of an attractor drawn in the plane: choose the Attractor view of such an item.</source>
+        <translation>.exr 文件保存平面中绘制的吸引子的原始密度：请选择此类对象的吸引子视图。</translation>
+    </message>
+    <message>
+        <source>Unknown format &quot;%1&quot;: use .png, .svg or .pdf (.tex for the matrices, .exr for the attractor&apos;s raw density).</source>
+        <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf（矩阵使用 .tex，吸引子的原始密度使用 .exr）。</translation>
+    </message>
+    <message>
+        <source>Projects and figures with their item (*.awb *.png *.svg);;Attractor Workbench projects (*.awb);;Exported figures (*.png *.svg);;Other tools&apos; IFS files, as a new project (*.ifs *.flame *.flam3);;All files (*)</source>
+        <translation>项目及带有对象的图形 (*.awb *.png *.svg);;Attractor Workbench 项目 (*.awb);;导出的图形 (*.png *.svg);;其他工具的 IFS 文件，作为新项目 (*.ifs *.flame *.flam3);;所有文件 (*)</translation>
     </message>
 </context>
 <context>

@@ -4,7 +4,10 @@
 // arrays, and refuses an item whose IFS is not one of the plane or of space, by name.
 #include "gui/app/ItemController.h"
 #include "gui/app/MainWindow.h"
+#include "gui/app/Dialogs.h"
+#include "gui/views/AttractorView.h"
 #include "gui/views/SpectrumView.h"
+#include "render/DensityFile.h"
 #include "gui/app/Messages.h"
 #include "model/FractalItem.h"
 #include "model/Project.h"
@@ -25,6 +28,8 @@ private slots:
     void importIsOneUndoStep();
     void exportItemAs();
     void flamesInAndOut();
+    void openMakesAnUntitledProject();
+    void rawDensityOfTheView();
 
 private:
     QString write(const QString &name, const QByteArray &text)
@@ -149,6 +154,69 @@ void TestExchangeWindow::flamesInAndOut()
     w.controller()->refreshNow();
     const QString verdict = w.spectrumView()->verdictText();
     QVERIFY2(verdict.contains("but the IFS contracts on average"), qPrintable(verdict));
+}
+
+void TestExchangeWindow::openMakesAnUntitledProject()
+{
+    // File > Open of a flame (or a Fractint library, or one given on the command line): an
+    // untitled, modified project of its entries; a file without one changes nothing.
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.filePath("recovery"));
+    const QString bad = write("none.flame", "<flames></flames>\n");
+    const int before = w.project()->childCount();
+    QVERIFY(!w.openFile(bad));
+    QCOMPARE(w.project()->childCount(), before);
+    QVERIFY2(!messages.errors.isEmpty() && messages.errors[0].contains("no <flame>"),
+             qPrintable(messages.errors.join("; ")));
+    const QString file =
+        write("one.flame", "<flame name=\"one\"><xform weight=\"1\" linear=\"1\" "
+                           "coefs=\"0.5 0 0 0.5 0 0\"/><xform weight=\"1\" linear=\"1\" "
+                           "coefs=\"0.5 0 0 0.5 0.5 0\"/></flame>\n");
+    QVERIFY(w.openFile(file));
+    QCOMPARE(w.project()->childCount(), 1);
+    QVERIFY(w.project()->findItem("one"));
+    QVERIFY(w.project()->fileName().isEmpty());
+    QVERIFY(w.project()->isModified());
+}
+
+void TestExchangeWindow::rawDensityOfTheView()
+{
+    // File > Export Figure to .exr: the view's attractor as float32 hits per pixel. The
+    // Sierpinski triangle by random iteration, fitted in the view: every sample is counted.
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.filePath("recovery"));
+    w.resize(1000, 700);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QString error;
+    QVERIFY(w.importIfs(write("tri.ifs", "tri { .5 0 0 .5 0 0 1  .5 0 0 .5 1 0 1  "
+                                         ".5 0 0 .5 .5 1 1 }\n"),
+                        nullptr, &error));
+    w.controller()->refreshNow();
+    w.attractorView()->fitToContents();
+    ExportDialog::Options o;
+    o.target = ExportDialog::Target::Attractor;
+    o.fileName = m_dir.filePath("tri.exr");
+    o.size = QSize(300, 200);
+    QVERIFY2(w.exportView(o, &error), qPrintable(error));
+    QRectF world;
+    const AttractorDensity d = readDensityExr(o.fileName, &world, &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QCOMPARE(d.frame.width, 300);
+    QCOMPARE(d.frame.height, 200);
+    double total = 0;
+    for (std::size_t i = 3; i < d.rgba.size(); i += 4)
+        total += d.rgba[i];
+    const double samples = double(qobject_cast<AttractorItem *>(w.currentItem())
+                                      ->algorithm().samples);
+    QVERIFY2(total > 0.999 * samples && total <= samples,
+             qPrintable(QStringLiteral("%1 of %2").arg(total).arg(samples)));
+    // Proportions of the export, one scale on both axes.
+    QVERIFY(std::abs(world.width() / world.height() - 1.5) < 1e-9);
+    // The Spectrum is not an attractor.
+    o.target = ExportDialog::Target::Spectrum;
+    QVERIFY(!w.exportView(o, &error));
+    QVERIFY2(error.contains("raw density of an attractor"), qPrintable(error));
 }
 
 AWB_TEST_MAIN(TestExchangeWindow)

@@ -59,7 +59,8 @@ void ExportDialog::browse()
 {
     const QString name = QFileDialog::getSaveFileName(
         this, tr("Export Figure"), m_ui->fileEdit->text(),
-        tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf);;LaTeX matrices (*.tex)"));
+        tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf);;LaTeX matrices "
+           "(*.tex);;OpenEXR raw density of the attractor, float32 hits per pixel (*.exr)"));
     if (!name.isEmpty())
         m_ui->fileEdit->setText(name);
 }

@@ -75,8 +75,11 @@ public:
     // or flame an item, all in one undo step) or a mesh (importMesh). False with *error when
     // nothing could be imported; entries left out are listed in *problems, what was imported
     // with a loss (a flame's non-linear variation) in *warnings (the window shows both).
+    // With `replace`, the items replace the project's (File > Open of such a file: an
+    // untitled project of its entries); a file that gives no item changes nothing.
     bool importIfs(const QString &fileName, QStringList *problems = nullptr,
-                   QString *error = nullptr, QStringList *warnings = nullptr);
+                   QString *error = nullptr, QStringList *warnings = nullptr,
+                   bool replace = false);
     // File > Export Item As…: the current item as a Fractint .ifs entry (.ifs), a flam3 genome
     // framed as the attractor view shows it (.flame, .flam3) or its matrices as MATLAB cell
     // arrays (.m), by suffix. False with the reason in *error.
@@ -176,6 +179,8 @@ private:
     void importMeshDialog();
     // Asks for the scheme and imports the mesh file (Import Mesh, Import).
     void importMeshFile(const QString &file);
+    // importIfs with what was left out or lost shown in a message; false when nothing came.
+    bool importReporting(const QString &file, bool replace);
     void importDialog();
     void exportItemAsDialog();
     void exportMeshDialog();

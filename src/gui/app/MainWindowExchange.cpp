@@ -28,7 +28,7 @@
 namespace awb {
 
 bool MainWindow::importIfs(const QString &fileName, QStringList *problems, QString *error,
-                           QStringList *warnings)
+                           QStringList *warnings, bool replace)
 {
     ImportedItems imported;
     const QString suffix = QFileInfo(fileName).suffix().toLower();
@@ -50,6 +50,8 @@ bool MainWindow::importIfs(const QString &fileName, QStringList *problems, QStri
             *error = tr("%1: no entry could be imported").arg(QFileInfo(fileName).fileName());
         return false;
     }
+    if (replace)
+        m_project->clear();
     m_project->beginCompound(tr("Import %1").arg(QFileInfo(fileName).fileName()));
     Item *first = nullptr;
     for (auto &item : imported.items) {
@@ -82,17 +84,25 @@ void MainWindow::importDialog()
         importMeshFile(file);
         return;
     }
+    importReporting(file, false);
+}
+
+bool MainWindow::importReporting(const QString &file, bool replace)
+{
     QStringList problems, warnings;
     QString error;
-    const bool ok = importIfs(file, &problems, &error, &warnings);
-    if (!ok && problems.isEmpty()) {
-        m_messages->error(this, tr("Import"), error);
-        return;
+    const bool ok = importIfs(file, &problems, &error, &warnings, replace);
+    if (!ok) {
+        m_messages->error(this, tr("Import"),
+                          problems.isEmpty() ? error
+                                             : error + QStringLiteral("\n\n")
+                                                   + problems.join(QLatin1Char('\n')));
+        return false;
     }
     QString text;
     if (!problems.isEmpty())
-        text += (ok ? tr("Imported the others; these were left out:") : error)
-                + QStringLiteral("\n\n") + problems.join(QLatin1Char('\n'));
+        text += tr("Imported the others; these were left out:") + QStringLiteral("\n\n")
+                + problems.join(QLatin1Char('\n'));
     if (!warnings.isEmpty())
         text += (text.isEmpty() ? QString() : QStringLiteral("\n\n"))
                 + tr("Imported with these losses:") + QStringLiteral("\n\n")
@@ -103,8 +113,10 @@ void MainWindow::importDialog()
         QMetaObject::invokeMethod(
             this, [this, text] { m_messages->information(this, tr("Import"), text); },
             Qt::QueuedConnection);
-    } else
+    } else {
         statusBar()->showMessage(tr("Imported %1").arg(QDir::toNativeSeparators(file)), 5000);
+    }
+    return ok;
 }
 
 bool MainWindow::exportItemAs(const QString &fileName, QString *error)

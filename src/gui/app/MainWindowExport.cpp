@@ -2,6 +2,8 @@
 // export of any view (ExportDialog, --export-figure), the matrices as LaTeX, points as CSV/PLY.
 
 #include "gui/app/MainWindow.h"
+
+#include "render/DensityFile.h"
 #include "gui/app/AddressPanel.h"
 #include "gui/app/AnimationPanel.h"
 #include "gui/app/FigureSheet.h"
@@ -257,10 +259,36 @@ bool MainWindow::exportView(const ExportDialog::Options &options, QString *error
             break;
         }
     };
+    if (suffix == QLatin1String("exr")) {
+        // The attractor's raw density (float32 hits per pixel), as the view frames it.
+        if (!planar) {
+            if (error)
+                *error = tr("An .exr file holds the raw density of an attractor drawn in the "
+                            "plane: choose the Attractor view of such an item.");
+            return false;
+        }
+        QString why;
+        try {
+            const AttractorDensity density = m_attractor->rawDensity(o.size);
+            DensityFileInfo info{QRectF(density.frame.x0, density.frame.y0,
+                                        density.frame.x1 - density.frame.x0,
+                                        density.frame.y1 - density.frame.y0),
+                                 m_current ? m_current->name() : QString(), figureMetadata()};
+            if (writeDensityExr(o.fileName, density, info, &why))
+                return true;
+        } catch (const std::exception &e) {
+            why = QString::fromUtf8(e.what());
+        }
+        if (error)
+            *error = why;
+        return false;
+    }
     if (suffix != QLatin1String("png") && suffix != QLatin1String("svg")
         && suffix != QLatin1String("pdf")) {
         if (error)
-            *error = tr("Unknown format \"%1\": use .png, .svg or .pdf (.tex for the matrices).").arg(suffix);
+            *error = tr("Unknown format \"%1\": use .png, .svg or .pdf (.tex for the matrices, "
+                        ".exr for the attractor's raw density).")
+                         .arg(suffix);
         return false;
     }
     const bool attractorShown = o.target == ExportDialog::Target::Attractor

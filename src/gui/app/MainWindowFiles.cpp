@@ -128,6 +128,16 @@ void MainWindow::newProject()
 
 bool MainWindow::openFile(const QString &fileName)
 {
+    // Another tool's IFS file (a Fractint library, a flame): an untitled project of its
+    // entries, never saved over the file (File > Import adds them to the open project).
+    const QString suffix = QFileInfo(fileName).suffix().toLower();
+    if (suffix == QLatin1String("ifs") || suffix == QLatin1String("flame")
+        || suffix == QLatin1String("flam3")) {
+        if (!importReporting(fileName, true))
+            return false;
+        updateTitle();
+        return true;
+    }
     QString error;
     if (!m_project->open(fileName, &error)) {
         m_messages->error(this, tr("Open Project"), error);
@@ -175,7 +185,8 @@ void MainWindow::openDialog()
     const QString name = QFileDialog::getOpenFileName(
         this, tr("Open Project"), QFileInfo(m_project->fileName()).path(),
         tr("Projects and figures with their item (*.awb *.png *.svg);;Attractor Workbench "
-           "projects (*.awb);;Exported figures (*.png *.svg);;All files (*)"));
+           "projects (*.awb);;Exported figures (*.png *.svg);;Other tools' IFS files, as a new "
+           "project (*.ifs *.flame *.flam3);;All files (*)"));
     if (!name.isEmpty())
         openFile(name);
 }

@@ -477,6 +477,20 @@ RenderRequest AttractorView::renderRequest(const QRectF &world, QSize size,
     return r;
 }
 
+AttractorDensity AttractorView::rawDensity(QSize size) const
+{
+    if (!m_ifs)
+        throw InputError(tr("there is no attractor to count").toStdString());
+    QRectF world = visibleWorldRect();
+    // The view's frame at the export's proportions (centred, one scale on both axes).
+    const double k = std::max(world.width() / size.width(), world.height() / size.height());
+    world = QRectF(world.center() - QPointF(0.5 * k * size.width(), 0.5 * k * size.height()),
+                   QSizeF(k * size.width(), k * size.height()));
+    RenderRequest r = renderRequest(world, size, 1.0);
+    r.supersample = 1;
+    return renderAttractorDensity(r);
+}
+
 void AttractorView::cancelRender()
 {
     if (!isRendering())

@@ -147,6 +147,10 @@ public:
     void renderTo(QPainter *painter, const QRectF &target, const ExportStyle &style);
     // The world rectangle a FitContents export frames (content bounds), if there is content.
     std::optional<QRectF> exportBounds() const { return fittedWorld(); }
+    // The raw density (hits per pixel, render/DensityFile.h) of the attractor as the view
+    // frames it, at `size` pixels, with the current data and settings: File > Export Figure
+    // to .exr. Throws InputError when there is no attractor to count.
+    AttractorDensity rawDensity(QSize size) const;
     // What the last renderTo drew the attractor as: "vector" (dots or shapes), "curve paths",
     // "raster WxH" (the raster's pixel size), or "none". For tests and the batch mode's log.
     QString lastExportKind() const { return m_lastExportKind; }
@@ -276,6 +280,7 @@ private:
     // `pixelsPerScreenPixel` times the settings' radius.
     RenderRequest renderRequest(const QRectF &world, QSize size,
                                 double pixelsPerScreenPixel) const;
+
     void dataChanged(bool geometryChanged);
     void scheduleRender();
     // Interactive: a picture within the frame budget (during a gesture); Full: the full
