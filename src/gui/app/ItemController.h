@@ -38,6 +38,7 @@ class SurfaceView;
 class ValenceChart;
 class VertexPanel;
 struct AnalysisResult;
+class CurveScheme;
 struct Contractivity;
 struct ExtraordinaryVertex;
 struct MapSpectrum;
@@ -125,6 +126,8 @@ public:
     // The contraction of a row-stochastic S (an automaton's arc, a vertex's local subdivision
     // matrix) on the sum-preserving directions it acts in.
     static Contractivity stochasticContractivity(const Mat &S);
+    // Points of the exact curve the analysis compares with (ItemControllerAnalysis.cpp).
+    static constexpr int kExactSamples = 600;
 
 signals:
     void problemChanged(const QString &problem);
@@ -163,6 +166,8 @@ private:
     void clearViews();
     void startAnalysis();
     void applyAnalysis(const std::shared_ptr<AnalysisResult> &result);
+    // The real curve scheme of a subdivision-curve item (null for others and complex ones).
+    static std::shared_ptr<const CurveScheme> realScheme(const Item *item);
     void onControlPressed(int index);
     void onControlDragged(int index, const QPointF &world);
     void onControlReleased(int index, const QPointF &start, const QPointF &end);
