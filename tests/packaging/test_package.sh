@@ -143,7 +143,7 @@ while read -r option; do
     grep -qF -- "$option" "$tmp/attractor-workbench.1" \
         || fail "attractor-workbench.1 does not mention $option"
 done < "$tmp/gui-options"
-commands=$("$bin/attractor-cli" --help | sed -n 's/^  \([a-z]\{1,\}\)  .*/\1/p')
+commands=$("$bin/attractor-cli" --help | sed -n 's/^  \([a-z][a-z-]\{1,\}\)  .*/\1/p')
 [ "$(echo "$commands" | wc -w)" -ge 9 ] || fail "could not read attractor-cli --help"
 for command in $commands; do
     grep -qx "\.SS $command" "$tmp/attractor-cli.1" || fail "attractor-cli.1 has no section $command"
