@@ -13,6 +13,10 @@
 #include "model/Project.h"
 
 #include <QAction>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QMimeData>
+#include <QUrl>
 #include <QFile>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -30,6 +34,7 @@ private slots:
     void flamesInAndOut();
     void openMakesAnUntitledProject();
     void rawDensityOfTheView();
+    void droppedFiles();
 
 private:
     QString write(const QString &name, const QByteArray &text)
@@ -217,6 +222,36 @@ void TestExchangeWindow::rawDensityOfTheView()
     o.target = ExportDialog::Target::Spectrum;
     QVERIFY(!w.exportView(o, &error));
     QVERIFY2(error.contains("raw density of an attractor"), qPrintable(error));
+}
+
+void TestExchangeWindow::droppedFiles()
+{
+    // A flame and a Fractint library dropped on the window are imported into the project (one
+    // undo step each); a file of another kind is not accepted.
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.filePath("recovery"));
+    QVERIFY(w.acceptDrops());
+    const int before = w.project()->childCount();
+    QMimeData mime;
+    mime.setUrls({QUrl::fromLocalFile(write("d.flame", "<flame name=\"d\"><xform weight=\"1\" "
+                                                       "linear=\"1\" coefs=\"0.5 0 0 0.5 0 0\"/>"
+                                                       "<xform weight=\"1\" linear=\"1\" "
+                                                       "coefs=\"0.5 0 0 0.5 1 0\"/></flame>\n")),
+                  QUrl::fromLocalFile(write("e.ifs", "e { .5 0 0 .5 0 0 1  .5 0 0 .5 1 1 1 }\n"))});
+    QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    enter.setAccepted(false);
+    QCoreApplication::sendEvent(&w, &enter);
+    QVERIFY(enter.isAccepted());
+    QDropEvent drop(QPointF(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(&w, &drop);
+    QCOMPARE(w.project()->childCount(), before + 2);
+    QVERIFY(w.project()->findItem("d") && w.project()->findItem("e"));
+    QMimeData text;
+    text.setUrls({QUrl::fromLocalFile(write("notes.txt", "hello\n"))});
+    QDragEnterEvent other(QPoint(10, 10), Qt::CopyAction, &text, Qt::LeftButton, Qt::NoModifier);
+    other.setAccepted(false);
+    QCoreApplication::sendEvent(&w, &other);
+    QVERIFY(!other.isAccepted());
 }
 
 AWB_TEST_MAIN(TestExchangeWindow)

@@ -101,6 +101,7 @@ MainWindow::MainWindow(Messages *messages, const QString &recoveryDirectory, QWi
                                                       : recoveryDirectory),
       m_preferences(Preferences::load())
 {
+    setAcceptDrops(true);  // files dropped on the window (MainWindowExchange.cpp)
     if (!m_messages) {
         m_ownMessages = std::make_unique<Messages>();
         m_messages = m_ownMessages.get();

@@ -131,6 +131,10 @@ public:
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    // Files dropped on the window (MainWindowExchange.cpp): a project or a figure with its
+    // project opens (after asking to save), another tool's IFS file or a mesh is imported.
+    void dragEnterEvent(QDragEnterEvent *event) override;
+    void dropEvent(QDropEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
 
 private:

@@ -20,6 +20,9 @@
 #include "model/Project.h"
 
 #include <QDir>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QMimeData>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QInputDialog>
@@ -180,6 +183,70 @@ void MainWindow::exportItemAsDialog()
         m_messages->error(this, tr("Export Item As"), error);
     else
         statusBar()->showMessage(tr("Wrote %1").arg(QDir::toNativeSeparators(file)), 5000);
+}
+
+namespace {
+
+enum class DropKind { None, Project, Ifs, Mesh };
+
+DropKind dropKind(const QString &file)
+{
+    const QString suffix = QFileInfo(file).suffix().toLower();
+    if (suffix == QLatin1String("awb") || suffix == QLatin1String("png")
+        || suffix == QLatin1String("svg"))
+        return DropKind::Project;
+    if (suffix == QLatin1String("ifs") || suffix == QLatin1String("flame")
+        || suffix == QLatin1String("flam3"))
+        return DropKind::Ifs;
+    if (suffix == QLatin1String("obj") || suffix == QLatin1String("off")
+        || suffix == QLatin1String("ply"))
+        return DropKind::Mesh;
+    return DropKind::None;
+}
+
+QStringList droppedFiles(const QMimeData *mime)
+{
+    QStringList files;
+    if (!mime)
+        return files;
+    for (const QUrl &url : mime->urls())
+        if (url.isLocalFile() && dropKind(url.toLocalFile()) != DropKind::None)
+            files << url.toLocalFile();
+    return files;
+}
+
+} // namespace
+
+void MainWindow::dragEnterEvent(QDragEnterEvent *event)
+{
+    if (!droppedFiles(event->mimeData()).isEmpty())
+        event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent *event)
+{
+    const QStringList files = droppedFiles(event->mimeData());
+    if (files.isEmpty())
+        return;
+    event->acceptProposedAction();
+    // One project at a time (the first dropped); the other files are imported into it.
+    bool opened = false;
+    for (const QString &file : files) {
+        switch (dropKind(file)) {
+        case DropKind::Project:
+            if (!opened && maybeSave())
+                opened = openFile(file);
+            break;
+        case DropKind::Ifs:
+            importReporting(file, false);
+            break;
+        case DropKind::Mesh:
+            importMeshFile(file);
+            break;
+        case DropKind::None:
+            break;
+        }
+    }
 }
 
 } // namespace awb
