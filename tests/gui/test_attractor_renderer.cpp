@@ -237,9 +237,16 @@ void TestAttractorRenderer::newerRequestBeforeAnyResult()
     RenderRequest last = cubicRequest(8);
     renderer.request(last);
     const QList<RenderInfo> infos = waitFinal(ready, awb::test::ms(20000));
-    QCOMPARE(infos.size(), 1); // depth 8 needs no coarse pass
-    QCOMPARE(infos.first().depth, 8);
-    QVERIFY(infos.first().final);
+    QVERIFY(!infos.isEmpty());
+    // The newest request's picture, in one pass (depth 8 needs no coarse pass). A superseded
+    // request may still show a coarse pass it had finished before the newer ones came (on a
+    // loaded machine, e.g. ThreadSanitizer beside another suite), never its final picture.
+    QCOMPARE(infos.last().depth, 8);
+    QVERIFY(infos.last().final);
+    for (qsizetype i = 0; i + 1 < infos.size(); ++i) {
+        QVERIFY(!infos[i].final);
+        QVERIFY(infos[i].depth != 8);
+    }
 }
 
 void TestAttractorRenderer::equalRequestsGiveIdenticalPixels()
