@@ -1767,6 +1767,10 @@
         <source>the flame&apos;s frame is empty</source>
         <translation>rámec plamene je prázdný</translation>
     </message>
+    <message>
+        <source>: no weight given; taken as 0, as flam3 does (the map is never chosen)</source>
+        <translation>: váha není uvedena; bere se 0 jako ve flam3 (zobrazení se nikdy nevybere)</translation>
+    </message>
 </context>
 <context>
     <name>awb::FractalItem</name>

@@ -1764,6 +1764,10 @@
         <source>the flame&apos;s frame is empty</source>
         <translation>le cadre de la flamme est vide</translation>
     </message>
+    <message>
+        <source>: no weight given; taken as 0, as flam3 does (the map is never chosen)</source>
+        <translation>&#xa0;: aucun poids donné&#xa0;; pris égal à 0, comme le fait flam3 (l’application n’est jamais choisie)</translation>
+    </message>
 </context>
 <context>
     <name>awb::FractalItem</name>

@@ -1761,6 +1761,10 @@
         <source>the flame&apos;s frame is empty</source>
         <translation>火焰分形的画框为空</translation>
     </message>
+    <message>
+        <source>: no weight given; taken as 0, as flam3 does (the map is never chosen)</source>
+        <translation>：未给出权重；按 flam3 的做法取 0（该映射从不被选中）</translation>
+    </message>
 </context>
 <context>
     <name>awb::FractalItem</name>

@@ -158,7 +158,7 @@ private:
                 const QString where =
                     isFinal ? FlameTr::tr("flame '%1', final xform").arg(name)
                             : FlameTr::tr("flame '%1', xform %2").arg(name).arg(++written);
-                if (!readXform(x, where, &problem, &warnings))
+                if (!readXform(x, where, isFinal, &problem, &warnings))
                     break;
                 if (isFinal)
                     final = x;
@@ -249,7 +249,8 @@ private:
                 kind < 3 ? 0.0 : (j - 1.0) / (kind - 2.0));
     }
 
-    bool readXform(Xform &x, const QString &where, QString *problem, QStringList *warnings)
+    bool readXform(Xform &x, const QString &where, bool isFinal, QString *problem,
+                   QStringList *warnings)
     {
         x.line = m_xml.lineNumber();
         x.column = m_xml.columnNumber();
@@ -259,7 +260,10 @@ private:
         bool anyVariation = false;
         QStringList dropped;
         std::vector<double> variations;  // the `var` attribute's list
-        x.weight = 0.5;  // Apophysis' default
+        // flam3 gives an xform without a weight the weight 0 (initialize_xforms): it is never
+        // chosen. So do we, and say so.
+        x.weight = 0;
+        bool weighted = false;
         for (const QXmlStreamAttribute &a : m_xml.attributes()) {
             const QStringView key = a.name();
             const QString value = a.value().toString().simplified();
@@ -272,6 +276,7 @@ private:
                     return fail(FlameTr::tr("%1=\"%2\" must be 6 finite numbers")
                                     .arg(key.toString(), value));
             } else if (key == QLatin1String("weight")) {
+                weighted = true;
                 bool ok = false;
                 x.weight = value.toDouble(&ok);
                 if (!ok || !std::isfinite(x.weight) || x.weight < 0)
@@ -332,6 +337,10 @@ private:
                                .arg(variationNames()[int(j)])
                                .arg(variations[j]);
         }
+        if (!weighted && !isFinal)
+            *warnings << at + where
+                             + FlameTr::tr(": no weight given; taken as 0, as flam3 does (the "
+                                           "map is never chosen)");
         if (!dropped.isEmpty())
             *warnings << at + where
                              + FlameTr::tr(": variation %1 dropped (non-linear)", nullptr,

@@ -252,6 +252,7 @@ void TestFlameCli::nonLinearVariationsAreNamed()
   <xform weight="1" linear="0.8" spherical="0.5" blob_low="0.3" coefs="0.5 0 0 0.5 0.5 0"/>
   <xform weight="1" swirl="1" coefs="0.5 0 0 0.5 0 0.5"/>
   <xform weight="1" linear="1" frobnicate="2" coefs="0.5 0 0 0.5 0.5 0.5"/>
+  <xform linear="1" coefs="0.1 0 0 0.1 0 0"/>
 </flame>
 )"));
     const QString project = m_dir.filePath("vars.awb");
@@ -266,9 +267,11 @@ void TestFlameCli::nonLinearVariationsAreNamed()
                                               "its affine part kept")),
              qPrintable(text));
     QVERIFY2(text.contains("attribute frobnicate=\"2\" ignored"), qPrintable(text));
+    // No weight: flam3's 0 (initialize_xforms), and the user is told.
+    QVERIFY2(text.contains("xform 5: no weight given; taken as 0"), qPrintable(text));
     QVERIFY2(!text.contains("blob_low"), qPrintable(text));  // the parameter of a variation
     const QJsonArray maps = affineMaps(project);
-    QCOMPARE(maps.size(), 4);
+    QCOMPARE(maps.size(), 5);
     // The linear weight scales the map: 0.8 * 0.5.
     QVERIFY(std::abs(maps[1]["A"][0][0].toDouble() - 0.4) < 1e-12);
 }
