@@ -88,13 +88,8 @@ QRectF contentBounds(const FigureSpec &spec)
         if (spec.random && !checkIfs(*spec.ifs).contractive) {
             // Contracting on average only (a flame): the box of 99% of the measure, as the
             // window frames it (AttractorView::contentBounds); the tails are not bounded.
-            ChaosOptions opt;
-            opt.samples = 20000;
-            opt.seed = spec.seed;
-            QuantileBoundsSink mass(viewsOf(spec), 0.99);
-            chaosGame(*spec.ifs, spec.start.vertices.row(0), opt, mass);
-            if (!mass.empty())
-                grow(Mat(mass.lo()).leftCols(2)), grow(Mat(mass.hi()).leftCols(2));
+            if (const auto box = measureBox(*spec.ifs, spec.start.vertices.row(0), spec.seed))
+                grow(Mat(box->first).leftCols(2)), grow(Mat(box->second).leftCols(2));
         } else if (spec.random) {
             ChaosOptions opt;
             opt.samples = std::min<std::uint64_t>(spec.samples, 20000);

@@ -1,6 +1,7 @@
 #include "core/exchange/FractintIfs.h"
 
 #include "core/Messages.h"
+#include "core/ifs/Attractor.h"
 
 #include <Eigen/SVD>
 
@@ -304,16 +305,10 @@ Mat fractintControlCage(const FractintEntry &entry)
                 seen[std::size_t(k)].push_back(x(k));
         }
     }
-    if (!contractive)
-        for (int k = 0; k < d; ++k) {
-            std::vector<double> &v = seen[std::size_t(k)];
-            const auto a = std::ptrdiff_t(0.005 * double(v.size())),
-                       b = std::ptrdiff_t(0.995 * double(v.size()));
-            std::nth_element(v.begin(), v.begin() + a, v.end());
-            lo(k) = v[std::size_t(a)];
-            std::nth_element(v.begin(), v.begin() + b, v.end());
-            hi(k) = v[std::size_t(b)];
-        }
+    if (!contractive) {
+        lo = QuantileBoundsSink::columnQuantile(seen, 0.005);
+        hi = QuantileBoundsSink::columnQuantile(std::move(seen), 0.995);
+    }
     const double largest = std::max((hi - lo).maxCoeff(), 1e-9);
     for (int k = 0; k < d; ++k)
         if (hi(k) - lo(k) < 1e-6 * largest) {

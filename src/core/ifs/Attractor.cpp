@@ -417,11 +417,25 @@ void QuantileBoundsSink::consume(const Mat &v, StartSet::Kind, const std::uint8_
     }
 }
 
-RowVec QuantileBoundsSink::quantile(double q) const
+std::optional<std::pair<RowVec, RowVec>> measureBox(const Ifs &ifs, const RowVec &x0,
+                                                    std::uint64_t seed, double share,
+                                                    std::uint64_t samples)
 {
-    RowVec out(Eigen::Index(m_coords.size()));
-    for (std::size_t c = 0; c < m_coords.size(); ++c) {
-        std::vector<double> v = m_coords[c];
+    ChaosOptions opt;
+    opt.samples = samples;
+    opt.seed = seed;
+    QuantileBoundsSink mass(ifs.views, share);
+    chaosGame(ifs, x0, opt, mass);
+    if (mass.empty())
+        return std::nullopt;
+    return std::pair{mass.lo(), mass.hi()};
+}
+
+RowVec QuantileBoundsSink::columnQuantile(std::vector<std::vector<double>> columns, double q)
+{
+    RowVec out(Eigen::Index(columns.size()));
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+        std::vector<double> &v = columns[c];
         if (v.empty()) {
             out(Eigen::Index(c)) = 0;
             continue;

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 
 namespace awb {
 
@@ -143,15 +144,24 @@ public:
     {}
     void consume(const Mat &v, StartSet::Kind k, const std::uint8_t *a, int n) override;
     bool empty() const { return m_coords.empty() || m_coords.front().empty(); }
-    RowVec lo() const { return quantile(0.5 * (1 - m_share)); }
-    RowVec hi() const { return quantile(0.5 * (1 + m_share)); }
+    RowVec lo() const { return columnQuantile(m_coords, 0.5 * (1 - m_share)); }
+    RowVec hi() const { return columnQuantile(m_coords, 0.5 * (1 + m_share)); }
+    // The q-quantile (0..1, nearest rank) of each column of values (0 for an empty one).
+    static RowVec columnQuantile(std::vector<std::vector<double>> columns, double q);
 
 private:
-    RowVec quantile(double q) const;
     std::vector<Projection> m_views;
     double m_share;
     std::vector<std::vector<double>> m_coords;  // per axis, the finite values seen
 };
+
+// The frame of an IFS that contracts on average only: the box (lo, hi, in the views'
+// coordinates) of `share` of its invariant measure, from `samples` points of the chaos game
+// from x0 with `seed` (QuantileBoundsSink). nullopt when no point was finite. The CLI's
+// figures and the window's fit both frame such an IFS with it.
+std::optional<std::pair<RowVec, RowVec>> measureBox(const Ifs &ifs, const RowVec &x0,
+                                                    std::uint64_t seed, double share = 0.99,
+                                                    std::uint64_t samples = 20000);
 
 // Rasters of these images: DensitySink and the engine's kernels (core/render/Engine.h).
 

@@ -290,13 +290,10 @@ std::optional<QRectF> AttractorView::contentBounds() const
             if (!check.contractive && check.contractsOnAverage()) {
                 // Contracting on average only (a flame): the box of 99% of the invariant
                 // measure (its tails are unbounded), as `render` frames it.
-                ChaosOptions opt;
-                opt.samples = 20000;
-                QuantileBoundsSink mass(m_ifs->views, 0.99);
-                chaosGame(*m_ifs, m_start.vertices.row(0), opt, mass);
-                if (!mass.empty() && mass.lo().size() >= 2)
-                    add(QPolygonF{QPointF(mass.lo()(0), mass.lo()(1)),
-                                  QPointF(mass.hi()(0), mass.hi()(1))});
+                const auto box = measureBox(*m_ifs, m_start.vertices.row(0), m_settings.seed);
+                if (box && box->first.size() >= 2)
+                    add(QPolygonF{QPointF(box->first(0), box->first(1)),
+                                  QPointF(box->second(0), box->second(1))});
             } else if (check.contractive) {
                 int depth = 0;
                 while (depth < 40 && imageCount(*m_ifs, depth + 1) <= 20000 && m_ifs->size() > 1)
