@@ -1771,6 +1771,10 @@
         <source>: no weight given; taken as 0, as flam3 does (the map is never chosen)</source>
         <translation>: váha není uvedena; bere se 0 jako ve flam3 (zobrazení se nikdy nevybere)</translation>
     </message>
+    <message>
+        <source>flame &apos;%1&apos;: its maps do not contract, not even on average (Lyapunov exponent %2 &gt;= 0), so it has no attractor; flam3 draws it only by discarding the points that escape</source>
+        <translation>plamen &apos;%1&apos;: jeho zobrazení nejsou kontraktivní, ani v průměru (Ljapunovův exponent %2 &gt;= 0), takže nemá atraktor; flam3 ho kreslí jen tak, že zahazuje body, které utíkají</translation>
+    </message>
 </context>
 <context>
     <name>awb::FractalItem</name>

@@ -1768,6 +1768,10 @@
         <source>: no weight given; taken as 0, as flam3 does (the map is never chosen)</source>
         <translation>&#xa0;: aucun poids donné&#xa0;; pris égal à 0, comme le fait flam3 (l’application n’est jamais choisie)</translation>
     </message>
+    <message>
+        <source>flame &apos;%1&apos;: its maps do not contract, not even on average (Lyapunov exponent %2 &gt;= 0), so it has no attractor; flam3 draws it only by discarding the points that escape</source>
+        <translation>flamme &apos;%1&apos;&#xa0;: ses applications ne sont pas contractantes, pas même en moyenne (exposant de Lyapunov %2 &gt;= 0), elle n&apos;a donc pas d&apos;attracteur&#xa0;; flam3 ne la dessine qu&apos;en écartant les points qui s&apos;échappent</translation>
+    </message>
 </context>
 <context>
     <name>awb::FractalItem</name>

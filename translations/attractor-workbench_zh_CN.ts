@@ -1765,6 +1765,10 @@
         <source>: no weight given; taken as 0, as flam3 does (the map is never chosen)</source>
         <translation>：未给出权重；按 flam3 的做法取 0（该映射从不被选中）</translation>
     </message>
+    <message>
+        <source>flame &apos;%1&apos;: its maps do not contract, not even on average (Lyapunov exponent %2 &gt;= 0), so it has no attractor; flam3 draws it only by discarding the points that escape</source>
+        <translation>火焰 &apos;%1&apos;：其映射不收缩，平均意义下也不收缩（李雅普诺夫指数 %2 &gt;= 0），因此没有吸引子；flam3 只是通过丢弃逃逸的点来绘制它</translation>
+    </message>
 </context>
 <context>
     <name>awb::FractalItem</name>

@@ -1,5 +1,6 @@
 #include "model/FlameExchange.h"
 
+#include "core/analysis/Spectrum.h"
 #include "core/ifs/Attractor.h"
 #include "model/AttractorItem.h"
 #include "model/Item.h"
@@ -497,6 +498,19 @@ private:
                                         .arg(name, QString::fromUtf8(error.what()));
             return;
         }
+        // flam3 draws any genome, discarding the points that escape; an IFS that does not even
+        // contract on average has no attractor, and the user hears it here, not at the render.
+        if (const auto *item = dynamic_cast<const AttractorItem *>(m_out.items.back().get()))
+            if (const auto d = item->derivedIfs(); d && d->ifs.size() > 0)
+                if (const IfsCheck check = checkIfs(d->ifs); !check.contractsOnAverage())
+                    warnings << place(line, column)
+                                    + FlameTr::tr("flame '%1': its maps do not contract, not "
+                                                  "even on average (Lyapunov exponent %2 >= 0), "
+                                                  "so it has no attractor; flam3 draws it only "
+                                                  "by discarding the points that escape")
+                                          .arg(name)
+                                          .arg(check.lyapunov ? *check.lyapunov : qQNaN(), 0,
+                                               'g', 3);
         m_out.warnings << warnings;
     }
 

@@ -10,6 +10,7 @@
 #include <QJsonArray>
 #include <QJsonObject>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -48,7 +49,10 @@ QJsonObject importedFractalJson(const FractintEntry &e, const QStringList &colou
                                                         : e.dimension == 2 ? 400000 : 200000},
                                 {"seed", 1},
                                 {"probabilities", probabilities},
-                                {"depth", 8}};
+                                // deterministic iteration, if the user switches to it: the
+                                // deepest that stays under 2^31 images, at most 8
+                                {"depth", std::min(8, AlgorithmSpec::maxDepthFor(
+                                                          int(e.maps.size())))}};
     const Mat centre = cage.colwise().mean();
     QJsonArray start;  // (not QJsonArray{array}: clang takes that for a copy of the inner one)
     start.append(ProjectIO::rowToJson(centre.row(0)));
@@ -71,7 +75,11 @@ std::unique_ptr<Item> importedFractal(const FractintEntry &e, const QStringList 
 {
     auto item = std::make_unique<FractalItem>();
     const QJsonObject json = importedFractalJson(e, colours, samples);
-    item->read(FieldReader(json, QString()));
+    // Read and checked as a project file's item is (ProjectIO): what the import writes, the
+    // next command loads.
+    const FieldReader fields(json, QString());
+    item->read(fields);
+    item->checkLoaded(fields);
     item->setName(json["name"].toString());
     return item;
 }

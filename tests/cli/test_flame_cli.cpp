@@ -151,6 +151,7 @@ private slots:
     void genomesRenderAsFlam3Renders_data();
     void genomesRenderAsFlam3Renders();
     void liveGenomeImports();
+    void manyMapsAndNoAttractor();
     void bundledGenomes();
     void exportRendersInFlam3();
     void rawDensityOut();
@@ -391,27 +392,76 @@ void TestFlameCli::genomesRenderAsFlam3Renders()
 
 void TestFlameCli::liveGenomeImports()
 {
-    // Whatever flam3-genome makes today with linear variations only imports without a loss,
-    // and its analysis says how it contracts.
+    // Whatever flam3-genome makes today with linear variations only (a new genome each run:
+    // flam3-genome seeds from the clock) imports and analyses; nothing is lost but, when its
+    // maps do not contract even on average, the import says so, and the analysis agrees.
     QProcess p;
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert("use_vars", "0");
     p.setProcessEnvironment(env);
     p.start("flam3-genome", {});
     QVERIFY(p.waitForFinished(awb::test::ms(60000)));
+    const QByteArray genome = p.readAllStandardOutput();
     const QString file = m_dir.filePath("live.flame");
-    QVERIFY(put(file, p.readAllStandardOutput()));
+    QVERIFY(put(file, genome));
     const QString project = m_dir.filePath("live.awb");
     QByteArray err, out;
     QCOMPARE(run({"import", file, "--out", project}, nullptr, &err), 0);
-    QVERIFY2(err.isEmpty(), err.constData());
-    QCOMPARE(run({"analyse", project, "--json"}, &out), 0);
+    QCOMPARE(run({"analyse", project, "--json"}, &out, &err), 0);
+    const auto why = [&] { return qPrintable(QString::fromUtf8(err + "\n" + genome)); };
     const QJsonObject item = QJsonDocument::fromJson(out)["items"][0].toObject();
-    QVERIFY(item.contains("box_dimension"));
-    if (item.contains("contractive_on_average")) {
-        QVERIFY(item["contractive_on_average"].toBool());
-        QVERIFY(item["lyapunov_exponent"].toDouble() < 0);
-    }
+    QVERIFY2(item.contains("box_dimension"), why());
+    const bool noAttractor = item.contains("contractive_on_average")
+                             && !item["contractive_on_average"].toBool();
+    if (item.contains("contractive_on_average"))
+        QVERIFY2(item["contractive_on_average"].toBool()
+                     == (item["lyapunov_exponent"].toDouble() < 0),
+                 why());
+    QByteArray importErr;
+    QCOMPARE(run({"import", file, "--out", project}, nullptr, &importErr), 0);
+    QVERIFY2(importErr.isEmpty() != noAttractor, importErr.constData());
+}
+
+void TestFlameCli::manyMapsAndNoAttractor()
+{
+    // Ten xforms and symmetry kind -5 (a reflection and four rotations): 15 maps, whose
+    // depth-8 deterministic iteration would make 2.6e9 images. The import picks the deepest
+    // depth under 2^31 (7), so the project it writes is one the next command loads (a live
+    // flam3-genome once made such a project that analyse refused).
+    QByteArray ten = "<flame name=\"many\"><symmetry kind=\"-5\"/>\n";
+    for (int i = 0; i < 10; ++i)
+        ten += QStringLiteral("<xform weight=\"1\" linear=\"1\" "
+                               "coefs=\"0.3 0.1 -0.1 0.3 %1 0\"/>\n")
+                    .arg(0.1 * i)
+                    .toUtf8();
+    ten += "</flame>\n";
+    const QString flame = m_dir.filePath("many.flame");
+    QVERIFY(put(flame, ten));
+    const QString project = m_dir.filePath("many.awb");
+    QByteArray err, out;
+    QCOMPARE(run({"import", flame, "--out", project}, nullptr, &err), 0);
+    QVERIFY2(err.isEmpty(), err.constData());
+    QCOMPARE(affineMaps(project).size(), 15);
+    QFile f(project);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QCOMPARE(QJsonDocument::fromJson(f.readAll())["items"][0]["algorithm"]["depth"].toInt(), 7);
+    QCOMPARE(run({"analyse", project, "--json"}, &out, &err), 0);
+
+    // A genome flam3-genome made whose maps grow on average (top Lyapunov exponent about
+    // +0.22): imported, with the warning that it has no attractor; the analysis agrees, and
+    // the render refuses with the map that does not contract.
+    const QString none = m_dir.filePath("none.awb");
+    QCOMPARE(run({"import", dataPath("flam3-genome-no-attractor.flame"), "--out", none},
+                 nullptr, &err),
+             0);
+    QVERIFY2(err.contains("do not contract, not even on average (Lyapunov exponent 0.2"),
+             err.constData());
+    QCOMPARE(run({"analyse", none, "--json"}, &out), 0);
+    const QJsonObject item = QJsonDocument::fromJson(out)["items"][0].toObject();
+    QCOMPARE(item["contractive_on_average"].toBool(true), false);
+    QVERIFY(item["lyapunov_exponent"].toDouble() > 0.1);
+    QCOMPARE(run({"render", none, "--out", m_dir.filePath("none.png")}, nullptr, &err), 1);
+    QVERIFY2(err.contains("is not contractive"), err.constData());
 }
 
 void TestFlameCli::bundledGenomes()
