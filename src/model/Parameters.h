@@ -23,6 +23,7 @@ struct ParameterInfo {
         Choice,   // QVariant int: index into `choices`
         Complex,  // QVariant QPointF(re, im)
         Bool,     // QVariant bool
+        Text,     // QVariant QString: a list typed as text (a mask "1/8, 1/2, 3/4, 1/2, 1/8")
     };
     QString key;     // stable, e.g. "scheme.omega", "curves.2.u", "j"
     QString label;   // translated, for the user
@@ -36,6 +37,7 @@ struct ParameterInfo {
     QStringList choices;  // Choice: translated texts in index order
     QString group;        // heading in the properties dock ("Scheme", "Curve 2", ...)
     QString toolTip;      // what it means, with the paper reference
+    bool readOnly = false;  // shown, never edited (a derived fact: the symbol's factorisation)
 
     bool hasSlider() const { return !std::isnan(sliderMinimum) && !std::isnan(sliderMaximum); }
 
@@ -53,6 +55,7 @@ struct ParameterInfo {
     ParameterInfo &options(const QStringList &texts) { choices = texts; return *this; }
     ParameterInfo &in(const QString &heading) { group = heading; return *this; }
     ParameterInfo &tip(const QString &text) { toolTip = text; return *this; }
+    ParameterInfo &shownOnly() { readOnly = true; return *this; }
 };
 
 } // namespace awb

@@ -2,6 +2,7 @@
 
 #include "model/FileWriting.h"
 #include "model/ItemRegistry.h"
+#include "model/NumberFormat.h"
 #include "model/Project.h"
 
 #include <QFile>
@@ -192,7 +193,7 @@ std::vector<Mat> FieldReader::matrices(const QString &key) const
                 throw LoadError{rowWhere, tr("row %1 has %2 numbers, row 1 has %3")
                                               .arg(r + 1).arg(row.size()).arg(cols)};
             for (qsizetype c = 0; c < cols; ++c)
-                M(r, c) = toNumber(row[c], rowWhere + QStringLiteral("[%1]").arg(c + 1));
+                M(r, c) = toExactNumber(row[c], rowWhere + QStringLiteral("[%1]").arg(c + 1));
         }
         out.push_back(std::move(M));
     }
@@ -237,6 +238,17 @@ double FieldReader::toNumber(const QJsonValue &v, const QString &where)
     if (!std::isfinite(d))
         throw LoadError{where, tr("expected a finite number")};
     return d;
+}
+
+double FieldReader::toExactNumber(const QJsonValue &v, const QString &where)
+{
+    if (!v.isString() || v.toString().startsWith(notFiniteMarker))
+        return toNumber(v, where);
+    if (const auto d = parseNumber(v.toString()))
+        return *d;
+    throw LoadError{where, tr("\"%1\" is not a number (a fraction such as \"3/8\" or an "
+                              "expression such as \"(1 + sqrt(3))/8\" is)")
+                               .arg(v.toString())};
 }
 
 Point FieldReader::toPoint(const QJsonValue &v, const QString &where, int dim)

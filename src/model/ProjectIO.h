@@ -63,6 +63,9 @@ public:
 
     // Element-level conversions; `where` is the element's full path.
     static double toNumber(const QJsonValue &v, const QString &where);
+    // A number, or a string a user would type for one: an exact fraction "3/8", an expression
+    // "(1 + sqrt(3))/8" (NumberFormat's parseNumber). Masks and matrices keep exact values so.
+    static double toExactNumber(const QJsonValue &v, const QString &where);
     static Point toPoint(const QJsonValue &v, const QString &where, int dim = 2);
 
 private:

@@ -1,8 +1,10 @@
 #include "model/SubdivisionCurveItem.h"
 
+#include "core/analysis/Regularity.h"
 #include "core/schemes/Scheme.h"
 #include "model/Commands.h"
 #include "model/ComplexBezierItem.h"
+#include "model/NumberFormat.h"
 #include "model/ProjectIO.h"
 
 #include <cmath>
@@ -39,14 +41,15 @@ const QStringList &SchemeSpec::kindNames()
 {
     static const QStringList names{"bspline",     "bspline-end-interpolating", "chaikin",
                                    "corner-cutting", "four-point",          "bezier",
-                                   "matrices"};
+                                   "matrices",    "mask"};
     return names;
 }
 
 bool SchemeSpec::operator==(const SchemeSpec &o) const
 {
     if (kind != o.kind || degree != o.degree || t != o.t || omega != o.omega || a != o.a
-        || b != o.b || matrices.size() != o.matrices.size())
+        || b != o.b || matrices.size() != o.matrices.size() || maskArity != o.maskArity
+        || maskOffset != o.maskOffset || mask != o.mask || maskText != o.maskText)
         return false;
     for (size_t i = 0; i < matrices.size(); ++i)
         if (matrices[i].rows() != o.matrices[i].rows()
@@ -58,7 +61,7 @@ bool SchemeSpec::operator==(const SchemeSpec &o) const
 
 int SchemeSpec::arity() const
 {
-    return kind == Kind::Matrices ? int(matrices.size()) : 2;
+    return kind == Kind::Matrices ? int(matrices.size()) : kind == Kind::Mask ? maskArity : 2;
 }
 
 std::unique_ptr<CurveScheme> SchemeSpec::makeScheme() const
@@ -76,6 +79,8 @@ std::unique_ptr<CurveScheme> SchemeSpec::makeScheme() const
                 CurveItemTr::tr("a complex Bézier parameter has no real scheme").toStdString());
         return std::make_unique<BezierScheme>(degree, t.real());
     case Kind::Matrices: return std::make_unique<MatrixScheme>(matrices);
+    case Kind::Mask:
+        return std::make_unique<UniformScheme>(maskScheme(maskArity, mask, maskOffset));
     }
     throw InputError(CurveItemTr::tr("unknown scheme kind").toStdString());
 }
@@ -119,11 +124,117 @@ MaybeProblem SchemeSpec::check() const
             field = "matrices";
             makeScheme();
             break;
+        case Kind::Mask:
+            field = maskArity < 2 || maskArity > 64 ? "arity" : "mask";
+            makeScheme();
+            break;
         }
     } catch (const InputError &e) {
         return Problem{field, fromStd(e.what())};
     }
     return std::nullopt;
+}
+
+QString SchemeSpec::maskLine() const
+{
+    QStringList entries;
+    for (size_t i = 0; i < mask.size(); ++i)
+        entries << (i < size_t(maskText.size()) && !maskText[int(i)].isEmpty()
+                        ? maskText[int(i)]
+                        : displayNumber(mask[i]));
+    return entries.join(QStringLiteral(", "));
+}
+
+bool SchemeSpec::setMaskLine(const QString &line, QString *error)
+{
+    const QChar separator = line.contains(QLatin1Char(';')) ? QLatin1Char(';') : QLatin1Char(',');
+    QStringList entries = line.split(separator);
+    if (entries.size() == 1 && !line.contains(separator))
+        entries = line.simplified().split(QLatin1Char(' '));  // "1 4 6 4 1" would read as one
+    std::vector<double> values;
+    QStringList texts;
+    for (int i = 0; i < entries.size(); ++i) {
+        const QString entry = entries[i].trimmed();
+        const auto v = parseNumber(entry);
+        if (!v) {
+            if (error)
+                *error = CurveItemTr::tr("mask entry %1, \"%2\", is not a number (fractions "
+                                         "such as 3/8 and expressions such as "
+                                         "(1 + sqrt(3))/8 are)")
+                             .arg(i + 1)
+                             .arg(entry);
+            return false;
+        }
+        values.push_back(*v);
+        bool plain = false;
+        entry.toDouble(&plain);
+        texts << (plain ? QString() : entry);
+    }
+    mask = std::move(values);
+    maskText = texts;
+    return true;
+}
+
+QString SchemeSpec::symbolText() const
+{
+    const int N = maskArity;
+    const DifferenceMask d = dividedDifferenceMask(mask, N);
+    const QString sigma = N == 2   ? QStringLiteral("1 + z")
+                          : N == 3 ? QStringLiteral("1 + z + z²")
+                                   : QStringLiteral("1 + z + … + z^%1").arg(N - 1);
+    if (d.order == 0)
+        return CurveItemTr::tr("no sum rule: σ(z) = %1 does not divide the symbol a(z), so the "
+                               "scheme has no difference scheme and cannot converge")
+            .arg(sigma);
+    QStringList b;
+    for (size_t i = 0; i < d.mask.size() && i < 8; ++i)
+        b << displayNumber(d.mask[i]);
+    if (d.mask.size() > 8)
+        b << QStringLiteral("…");
+    const QString rules = d.order == 1 ? CurveItemTr::tr("1 sum rule")
+                                       : CurveItemTr::tr("%1 sum rules").arg(d.order);
+    return CurveItemTr::tr("%1: a(z) = σ(z)^%2 b(z) / %3^%2 with σ(z) = %4 and b = (%5) from "
+                           "z^%6")
+        .arg(rules)
+        .arg(d.order)
+        .arg(N)
+        .arg(sigma, b.join(QStringLiteral(", ")))
+        .arg(maskOffset);
+}
+
+bool SchemeSpec::takeMaskOf(const SchemeSpec &other)
+{
+    if (other.kind == Kind::Bezier || other.kind == Kind::Matrices
+        || other.kind == Kind::EndInterpolatingBSpline || other.check())
+        return false;
+    std::unique_ptr<CurveScheme> scheme;
+    try {
+        scheme = other.makeScheme();
+    } catch (const InputError &) {
+        return false;
+    }
+    const auto *uniform = dynamic_cast<const UniformScheme *>(scheme.get());
+    if (!uniform)
+        return false;
+    std::vector<double> a = uniform->mask();
+    int offset = uniform->maskStart();
+    while (a.size() > 1 && a.back() == 0.0)  // the core's padding
+        a.pop_back();
+    while (a.size() > 1 && a.front() == 0.0) {
+        a.erase(a.begin());
+        ++offset;
+    }
+    maskArity = uniform->arity();
+    maskOffset = offset;
+    mask = a;
+    maskText.clear();
+    for (double v : a) {
+        const auto f = exactFraction(v, 4096, 1e-15);
+        maskText << (f && f->denominator > 1 ? QStringLiteral("%1/%2").arg(f->numerator)
+                                                    .arg(f->denominator)
+                                             : QString());
+    }
+    return true;
 }
 
 // ---- SubdivisionCurveItem ---------------------------------------------------------------------
@@ -149,6 +260,21 @@ bool SubdivisionCurveItem::setScheme(const SchemeSpec &scheme, int gesture)
     applyProperty(&SubdivisionCurveItem::m_scheme, scheme, &SubdivisionCurveItem::schemeChanged,
                   CurveItemTr::tr("Change scheme of %1").arg(name()), gesture);
     return true;
+}
+
+std::vector<Mat> SubdivisionCurveItem::startingMatrices() const
+{
+    const int m = int(m_points.size());
+    for (const SchemeSpec &from : {m_scheme, SchemeSpec{}}) {
+        if (from.kind == SchemeSpec::Kind::Matrices || from.check())
+            continue;
+        try {
+            return from.makeScheme()->matrices(m).S;
+        } catch (const InputError &) {
+        }
+    }
+    // Too few points even for the cubic B-spline: the linear B-spline's split (m >= 2).
+    return bsplineScheme(1).matrices(std::max(m, 2)).S;
 }
 
 DerivedIfs SubdivisionCurveItem::computeIfs() const
@@ -206,6 +332,19 @@ void SubdivisionCurveItem::write(QJsonObject &json) const
         scheme["matrices"] = list;
         break;
     }
+    case SchemeSpec::Kind::Mask: {
+        scheme["arity"] = m_scheme.maskArity;
+        QJsonArray mask;
+        for (size_t i = 0; i < m_scheme.mask.size(); ++i) {
+            const QString text = i < size_t(m_scheme.maskText.size())
+                                     ? m_scheme.maskText[int(i)]
+                                     : QString();
+            mask.append(text.isEmpty() ? QJsonValue(m_scheme.mask[i]) : QJsonValue(text));
+        }
+        scheme["mask"] = mask;
+        scheme["offset"] = m_scheme.maskOffset;
+        break;
+    }
     }
     json["scheme"] = scheme;
     json["control_points"] = ProjectIO::pointsToJson(m_points);
@@ -242,6 +381,22 @@ void SubdivisionCurveItem::read(const FieldReader &fields)
         break;
     }
     case SchemeSpec::Kind::Matrices: spec.matrices = s.matrices("matrices"); break;
+    case SchemeSpec::Kind::Mask: {
+        spec.maskArity = int(s.integer("arity", 2, 2, 64));
+        spec.maskOffset = int(s.integer("offset", 0, -1000000, 1000000));
+        const QJsonValue v = s.value("mask");
+        const QJsonArray list = v.toArray();
+        if (!v.isArray() || list.isEmpty())
+            s.fail("mask", CurveItemTr::tr("expected a non-empty array of coefficients"));
+        spec.mask.clear();
+        spec.maskText.clear();
+        for (qsizetype i = 0; i < list.size(); ++i) {
+            spec.mask.push_back(FieldReader::toExactNumber(
+                list[i], s.path("mask") + QStringLiteral("[%1]").arg(i + 1)));
+            spec.maskText << (list[i].isString() ? list[i].toString().trimmed() : QString());
+        }
+        break;
+    }
     }
     s.require(spec.check());
     m_scheme = spec;
@@ -260,7 +415,7 @@ QList<ParameterInfo> SubdivisionCurveItem::parameters() const
                           CurveItemTr::tr("Chaikin"),
                           CurveItemTr::tr("Corner cutting"), CurveItemTr::tr("Four-point"),
                           CurveItemTr::tr("Bézier (de Casteljau)"),
-                          CurveItemTr::tr("Own matrices")})
+                          CurveItemTr::tr("Own matrices"), CurveItemTr::tr("Mask")})
                 .in(group);
     const bool bezier = m_scheme.kind == SchemeSpec::Kind::Bezier;
     if (bezier || m_scheme.kind == SchemeSpec::Kind::BSpline
@@ -291,6 +446,33 @@ QList<ParameterInfo> SubdivisionCurveItem::parameters() const
                                          std::pair{"scheme.b", CurveItemTr::tr("Second cut b")}})
             list << P::make(key, label, P::Type::Real).range(0, 1).slider(0, 1).in(group).tip(tip);
     }
+    if (m_scheme.kind == SchemeSpec::Kind::Mask) {
+        list << P::make("scheme.arity", CurveItemTr::tr("Arity N"), P::Type::Integer)
+                    .range(2, 64)
+                    .in(group)
+                    .tip(CurveItemTr::tr("Each step makes N new points per old one. A new "
+                                         "arity whose cosets the mask does not fit starts "
+                                         "from the N-ary piecewise linear mask."));
+        list << P::make("scheme.mask", CurveItemTr::tr("Mask a_k"), P::Type::Text)
+                    .in(group)
+                    .tip(CurveItemTr::tr("q_n = Σ a_(n − N l) p_l. Separate the coefficients "
+                                         "by commas (by semicolons to use decimal commas); "
+                                         "fractions (3/8) and expressions ((1 + sqrt(3))/8) are "
+                                         "kept as typed. Each of the N cosets a_(r + N k) must "
+                                         "sum to 1."));
+        list << P::make("scheme.offset", CurveItemTr::tr("First index k"), P::Type::Integer)
+                    .range(-100000, 100000)
+                    .in(group)
+                    .tip(CurveItemTr::tr("The index of the mask's first coefficient: the cubic "
+                                         "B-spline is 1/8, 1/2, 3/4, 1/2, 1/8 from k = −2"));
+        list << P::make("scheme.symbol", CurveItemTr::tr("Symbol"), P::Type::Text)
+                    .in(group)
+                    .shownOnly()
+                    .tip(CurveItemTr::tr("The symbol a(z) = Σ a_k z^k divided by "
+                                         "σ(z) = 1 + z + … + z^(N−1) as often as it goes: "
+                                         "each factor is one sum rule (polynomials of one more "
+                                         "degree reproduced, one more difference scheme)"));
+    }
     return list;
 }
 
@@ -308,6 +490,14 @@ QVariant SubdivisionCurveItem::parameter(const QString &key) const
         return m_scheme.a;
     if (key == "scheme.b")
         return m_scheme.b;
+    if (key == "scheme.arity")
+        return m_scheme.maskArity;
+    if (key == "scheme.mask")
+        return m_scheme.maskLine();
+    if (key == "scheme.offset")
+        return m_scheme.maskOffset;
+    if (key == "scheme.symbol")
+        return m_scheme.symbolText();
     return {};
 }
 
@@ -321,6 +511,12 @@ bool SubdivisionCurveItem::setParameter(const QString &key, const QVariant &valu
         ok = ok && k >= 0 && k < SchemeSpec::kindNames().size();
         if (ok)
             next.kind = SchemeSpec::Kind(k);
+        // A new mask or own matrices start from what the curve has now (the cubic B-spline's
+        // when there is nothing to take), so the first step is always a valid scheme.
+        if (ok && next.kind == SchemeSpec::Kind::Mask && m_scheme.kind != next.kind)
+            next.takeMaskOf(m_scheme) || next.takeMaskOf(SchemeSpec{});
+        if (ok && next.kind == SchemeSpec::Kind::Matrices && m_scheme.kind != next.kind)
+            next.matrices = startingMatrices();
     } else if (key == "scheme.degree") {
         next.degree = value.toInt(&ok);
     } else if (key == "scheme.t") {
@@ -332,6 +528,36 @@ bool SubdivisionCurveItem::setParameter(const QString &key, const QVariant &valu
         next.a = value.toDouble(&ok);
     } else if (key == "scheme.b") {
         next.b = value.toDouble(&ok);
+    } else if (key == "scheme.arity") {
+        next.maskArity = value.toInt(&ok);
+        if (ok && next.maskArity != m_scheme.maskArity && next.maskArity >= 2
+            && next.maskArity <= 64 && next.check()) {
+            // The N-ary hat (1, 2, .., N, .., 2, 1) / N: piecewise linear interpolation.
+            const int N = next.maskArity;
+            next.mask.clear();
+            next.maskText.clear();
+            for (int k = 1 - N; k <= N - 1; ++k) {
+                next.mask.push_back(double(N - std::abs(k)) / N);
+                next.maskText << (std::abs(k) == 0 ? QStringLiteral("1")
+                                                   : QStringLiteral("%1/%2")
+                                                         .arg(N - std::abs(k))
+                                                         .arg(N));
+            }
+            next.maskOffset = 1 - N;
+        }
+    } else if (key == "scheme.mask") {
+        QString why;
+        if (!next.setMaskLine(value.toString(), &why)) {
+            if (error)
+                *error = why;
+            return false;
+        }
+    } else if (key == "scheme.offset") {
+        next.maskOffset = value.toInt(&ok);
+    } else if (key == "scheme.symbol") {
+        if (error)
+            *error = CurveItemTr::tr("the symbol follows from the mask: edit the mask");
+        return false;
     } else {
         return Item::setParameter(key, value, gesture, error);
     }

@@ -26,6 +26,7 @@ public:
         FourPoint,
         Bezier,
         Matrices,
+        Mask,
     };
     Kind kind = Kind::BSpline;
     int degree = 3;                       // bspline, bspline-end-interpolating, bezier
@@ -33,6 +34,13 @@ public:
     double omega = 1.0 / 16.0;            // four-point tension
     double a = 0.25, b = 0.75;            // corner cutting
     std::vector<Mat> matrices;            // matrices: S_1..S_p, m x m, row-stochastic
+    // mask: a_k for k = maskOffset .. maskOffset + size - 1, arity maskArity (core maskScheme).
+    // maskText[i] is the entry as written when it is not a plain number ("3/8",
+    // "(1 + sqrt(3))/8"): kept, so the file says what the user typed; empty otherwise.
+    int maskArity = 2;
+    int maskOffset = -2;
+    std::vector<double> mask{0.125, 0.5, 0.75, 0.5, 0.125};
+    QStringList maskText{"1/8", "1/2", "3/4", "1/2", "1/8"};
 
     bool operator==(const SchemeSpec &other) const;
     // The parameters the core refuses (degree out of range, t outside the lens |t| < 1,
@@ -46,6 +54,17 @@ public:
     std::unique_ptr<CurveScheme> makeScheme() const;
     // JSON spellings, in enum order.
     static const QStringList &kindNames();
+    // The mask as one line of text, "1/8, 1/2, 3/4, 1/2, 1/8" (what the user typed where it
+    // was not a plain number), and back: entries separated by commas, or by semicolons when
+    // there is one (then a comma may be a decimal comma). False with `error` set when an
+    // entry is no number.
+    QString maskLine() const;
+    bool setMaskLine(const QString &line, QString *error);
+    // How many sum rules the mask satisfies and its symbol's factorisation, in one line.
+    QString symbolText() const;
+    // The mask of a uniform scheme (B-spline, Chaikin, corner cutting, four-point), as a mask
+    // kind would hold it; false for Bézier and matrices.
+    bool takeMaskOf(const SchemeSpec &other);
 };
 
 class SubdivisionCurveItem : public AttractorItem {
@@ -66,7 +85,9 @@ public:
     bool setScheme(const SchemeSpec &scheme, int gesture = 0);
 
     // Parameters: "scheme.kind" always; "scheme.degree", "scheme.t", "scheme.omega",
-    // "scheme.a", "scheme.b" while the kind uses them. Edits go through setScheme().
+    // "scheme.a", "scheme.b", "scheme.arity", "scheme.mask", "scheme.offset" (and the
+    // read-only "scheme.symbol") while the kind uses them. Edits go through setScheme().
+    // Switching to "mask" or "matrices" starts from the current scheme's mask or matrices.
     QList<ParameterInfo> parameters() const override;
     QVariant parameter(const QString &key) const override;
     bool setParameter(const QString &key, const QVariant &value, int gesture = 0,
@@ -94,6 +115,10 @@ protected:
     PointList &pointStorage(int) override { return m_points; }
 
 private:
+    // S_i of the current scheme for the current points (or the cubic B-spline's): where own
+    // matrices start.
+    std::vector<Mat> startingMatrices() const;
+
     SchemeSpec m_scheme;
     PointList m_points;
 };

@@ -227,7 +227,7 @@ private slots:
             << project(curveWith("a", "scheme", R"({"kind": "loop"})"))
             << "item 1 (\"a\"): field \"scheme.kind\": expected one of \"bspline\", "
                "\"bspline-end-interpolating\", \"chaikin\", \"corner-cutting\", "
-               "\"four-point\", \"bezier\", \"matrices\", got \"loop\"";
+               "\"four-point\", \"bezier\", \"matrices\", \"mask\", got \"loop\"";
         QTest::newRow("infinite number")
             << project(curveWith("a", "control_points", "[[0, 0], [1, 1e400]]"))
             << "item 1 (\"a\"): field \"control_points[2][2]\": 1e400 is not a finite number";

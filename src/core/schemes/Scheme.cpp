@@ -213,6 +213,57 @@ UniformScheme fourPointScheme(double omega)
                           SchemeRule{-1, {-omega, 0.5 + omega, 0.5 + omega, -omega}}});
 }
 
+UniformScheme maskScheme(int arity, const std::vector<double> &mask, int offset)
+{
+    if (arity < 2 || arity > 64)
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "the arity of a mask must be between 2 and 64, got %1"),
+            arity));
+    if (mask.empty() || mask.size() > 4096)
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "a mask needs between 1 and 4096 coefficients, got %1"),
+            mask.size()));
+    if (std::abs(double(offset)) > 1e6)
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "the mask's offset %1 is absurd"), offset));
+    for (size_t i = 0; i < mask.size(); ++i)
+        if (!std::isfinite(mask[i]))
+            throw InputError(formatMessage(
+                coreTranslate("awb::schemes", "mask coefficient %1 is not a finite number"),
+                i + 1));
+    // Rule r (refined points N i + r) holds the coefficients a_k with k = r mod N, from the
+    // largest k down: new point N i + r = sum_j a_{r - N (o_r + j)} p_{i + o_r + j}.
+    auto mod = [arity](int k) { return ((k % arity) + arity) % arity; };
+    const int first = offset, last = offset + int(mask.size()) - 1;
+    std::vector<SchemeRule> rules;
+    for (int r = 0; r < arity; ++r) {
+        int top = last;
+        while (top >= first && mod(top) != r)
+            --top;
+        double sum = 0.0, scale = 0.0;
+        SchemeRule rule;
+        if (top >= first) {
+            rule.offset = (r - top) / arity;
+            for (int k = top; k >= first; k -= arity) {
+                rule.weights.push_back(mask[size_t(k - first)]);
+                sum += mask[size_t(k - first)];
+                scale += std::abs(mask[size_t(k - first)]);
+            }
+        }
+        if (std::abs(sum - 1.0) > 1e-9 * std::max(1.0, scale))
+            throw InputError(formatMessage(
+                coreTranslate("awb::schemes",
+                              "the coefficients a_k with k = %1 mod %2 sum to %3, not 1: every "
+                              "coset of the mask must sum to 1 (the scheme must reproduce "
+                              "constants; the whole mask sums to the arity %2)"),
+                r, arity, fmt(sum)));
+        rules.push_back(std::move(rule));
+    }
+    return UniformScheme(
+        formatMessage(coreTranslate("awb::schemes", "mask of arity %1"), arity), arity,
+        std::move(rules));
+}
+
 // ---------------------------------------------------------------------------------------------
 
 BezierScheme::BezierScheme(int degree, double t) : m_degree(degree), m_t(t)

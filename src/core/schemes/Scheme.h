@@ -91,6 +91,11 @@ UniformScheme cornerCuttingScheme(double a, double b);
 UniformScheme chaikinScheme();
 // Dyn-Levin-Gregory four-point scheme with tension omega, 004 eq. (2.10); 1/16 is the classic.
 UniformScheme fourPointScheme(double omega);
+// The uniform scheme of arity N >= 2 with the mask a_k, k = offset .. offset + size - 1:
+// q_n = sum_l a_{n - N l} p_l (symbol a(z) = sum_k a_k z^k). Each of the N cosets
+// {a_k : k = r mod N} must sum to 1 (the scheme reproduces constants); an InputError names
+// the first coset that does not, and its sum. The cubic B-spline is (1 4 6 4 1)/8 from -2.
+UniformScheme maskScheme(int arity, const std::vector<double> &mask, int offset);
 
 // The de Casteljau split of a Bézier curve of degree n at a real t in (0, 1):
 // S_1 = L(t), S_2 = R(t), m = n + 1 (004 eq. (2.5), 000 §2.2).

@@ -47,6 +47,7 @@ QString valueText(const ParameterInfo &p, const QVariant &v)
         return v.toBool() ? FigureSheet::tr("yes") : FigureSheet::tr("no");
     case ParameterInfo::Type::Integer: return QString::number(v.toInt());
     case ParameterInfo::Type::Real: return QString::number(v.toDouble(), 'g', 8);
+    case ParameterInfo::Type::Text: return v.toString();
     }
     return v.toString();
 }

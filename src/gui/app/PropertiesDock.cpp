@@ -440,6 +440,36 @@ void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info
         row = check;
         break;
     }
+    case ParameterInfo::Type::Text: {
+        if (info.readOnly) {
+            auto *shown = new QLabel;
+            shown->setWordWrap(true);
+            shown->setTextInteractionFlags(Qt::TextSelectableByMouse);
+            shown->setToolTip(info.toolTip);
+            m_bindings.append({key, [this, key, shown] {
+                shown->setText(m_item->parameter(key).toString());
+            }});
+            row = shown;
+            break;
+        }
+        // Committed when typing ends (Return or focus out): one edit, one undo step; a
+        // refused text comes back as the item has it, with the reason.
+        auto *line = new QLineEdit;
+        line->setToolTip(info.toolTip);
+        line->setObjectName(QStringLiteral("text:") + key);
+        connect(line, &QLineEdit::editingFinished, this, [this, key, line] {
+            if (line->text() != m_item->parameter(key).toString())
+                apply(key, line->text());
+        });
+        m_bindings.append({key, [this, key, line] {
+            const QSignalBlocker block(line);
+            line->setText(m_item->parameter(key).toString());
+            line->setCursorPosition(0);
+        }});
+        m_editors.insert(key, line);
+        row = line;
+        break;
+    }
     }
     auto *label = new QLabel(info.label + QLatin1Char(':'));
     label->setToolTip(info.toolTip);
