@@ -10,7 +10,9 @@
 //   Lagarias 1992). The tests check this with the JSR (maskRegularity) of the autocorrelation;
 // - the four-point scheme (omega = 1/16): its Phi's Hölder exponent (JSR) brackets 2 s_2;
 // - for every mask, s_2 - 1/2 <= Hölder exponent <= s_2 (Sobolev embedding in 1D; a compactly
-//   supported C^alpha function is in H^s for s < alpha) against maskRegularity's interval.
+//   supported C^alpha function is in H^s for s < alpha) against maskRegularity's interval;
+// - rho itself against a power method on sequences (the cascade of the autocorrelation's
+//   2n-th difference scheme), with no matrix, eigen-solver or basis of V.
 
 #include "core/Decompositions.h"
 #include "core/analysis/Regularity.h"
@@ -137,6 +139,53 @@ double maxDifference(const std::vector<double> &x, const std::vector<double> &y)
     return d;
 }
 
+// rho by brute force, without matrices, eigen-solvers or a basis of V: the cascade c_k(z) =
+// b(z) b(z^N) .. b(z^{N^{k-1}}) of the autocorrelation and its centred differences e_k(z) =
+// z^-n (1 - z)^{2n} c_k(z), which obey e_{k+1}(z) = q(z) e_k(z^N) with q = b / (z^{-(N-1)}
+// sigma^2)^n (the 2n-th difference scheme of b). On the unit circle c_k = N^k prod |m|^2 >= 0,
+// so |e_k| is largest at 0 and e_k[0] = <delta, T^k Delta^{2n} delta> (subdivision with b is
+// T's adjoint) is the power method for T on V: e_{k+1}[0] / e_k[0] -> rho. The window [-W, W]
+// determines itself (W >= the half-length of q).
+double cascadeRho(const std::vector<double> &b, int N, int n, int steps)
+{
+    std::vector<double> q = b;   // z^s b(z), coefficients 0..2s
+    for (int k = 0; k < 2 * n; ++k) {
+        std::vector<double> r = q, quotient(q.size() - size_t(N - 1), 0.0);
+        for (int t = int(q.size()) - 1; t >= N - 1; --t) {
+            const double c = r[size_t(t)];
+            quotient[size_t(t - N + 1)] = c;
+            for (int j = 0; j < N; ++j)
+                r[size_t(t - j)] -= c;
+        }
+        for (int t = 0; t < N - 1; ++t)
+            if (std::abs(r[size_t(t)]) > 1e-12)
+                return std::nan("");
+        q.swap(quotient);
+    }
+    const int h = int(q.size()) / 2;   // q lives on [-h, h]
+    const int W = std::max(h, n) + 1;
+    std::vector<double> e(size_t(2 * W + 1), 0.0);
+    double binom = 1.0;   // e_0 = z^-n (1 - z)^{2n}
+    for (int t = 0; t <= 2 * n; ++t) {
+        e[size_t(W + t - n)] = (t % 2 ? -1.0 : 1.0) * binom;
+        binom = binom * (2 * n - t) / (t + 1);
+    }
+    double ratio = 0.0;
+    for (int k = 0; k < steps; ++k) {
+        std::vector<double> next(e.size(), 0.0);
+        for (int m = -W; m <= W; ++m)
+            for (int j = -h; j <= h; ++j)
+                if ((m - j) % N == 0 && std::abs((m - j) / N) <= W)
+                    next[size_t(m + W)] += q[size_t(j + h)] * e[size_t((m - j) / N + W)];
+        ratio = next[size_t(W)] / e[size_t(W)];
+        const double scale = std::abs(next[size_t(W)]);
+        for (double &v : next)
+            v /= scale;
+        e.swap(next);
+    }
+    return ratio;
+}
+
 QString text(double v)
 {
     return QString::number(v, 'g', 17);
@@ -186,6 +235,7 @@ private slots:
     void daubechies_data();
     void daubechies();
     void fourPoint();
+    void cascadeAgrees();
     void notApplicable();
     void noPositiveSmoothness();
     void unstableShifts();
@@ -307,6 +357,34 @@ void TestSobolev::fourPoint()
                             .arg(text(phi.lower), text(phi.upper), text(2 * s.exponent))));
     QVERIFY2(phi.width() < 0.01, qPrintable(text(phi.width())));
     table.back().phi = interval(phi);
+}
+
+void TestSobolev::cascadeAgrees()
+{
+    // An independent computation of rho (sequences only, no eigen-solver, no basis of V).
+    struct Case {
+        const char *name;
+        std::vector<double> mask;
+        int N;
+    };
+    const std::vector<Case> cases{
+        {"four-point", {-1. / 16, 0, 9. / 16, 1, 9. / 16, 0, -1. / 16}, 2},
+        {"D4", d4Mask(), 2},
+        {"D6", d6Mask(), 2},
+        {"D8", daubechiesMask(4), 2},
+        {"cubic B-spline", bsplineMask(3, 2), 2},
+        {"ternary quadratic", bsplineMask(2, 3), 3},
+        {"four-point omega = 1", {-1.0, 0, 1.5, 1, 1.5, 0, -1.0}, 2},
+    };
+    for (const Case &c : cases) {
+        const SobolevRegularity s = sobolevRegularity(c.mask, c.N);
+        QVERIFY(s.applies);
+        QVERIFY(maxDifference(s.autocorrelation, autocorrelation(c.mask, c.N)) < 1e-15);
+        const double rho = cascadeRho(autocorrelation(c.mask, c.N), c.N, s.sumRules, 200);
+        QVERIFY2(std::abs(rho - s.rho) < 1e-9 * s.rho,
+                 qPrintable(QString("%1: cascade %2, eigenvalue %3")
+                                .arg(c.name, text(rho), text(s.rho))));
+    }
 }
 
 void TestSobolev::notApplicable()
