@@ -2,6 +2,7 @@
 
 #include "core/Decompositions.h"
 #include "core/Messages.h"
+#include "core/analysis/Sobolev.h"
 #include "core/analysis/Spectrum.h"
 #include "core/schemes/Scheme.h"
 
@@ -245,6 +246,8 @@ Regularity maskRegularity(const std::vector<double> &mask, int arity,
       << " divided-difference mask (Daubechies & Lagarias 1992, Rioul 1992); "
       << jsrSummary(r.jsr, arity, r.transition.front().rows());
     r.method = m.str();
+    if (const SobolevRegularity sob = sobolevRegularity(a, arity); sob.applies)
+        r.sobolev = sob.exponent;
     return r;
 }
 

@@ -24,6 +24,8 @@
 
 #include "core/analysis/JointSpectralRadius.h"
 
+#include <optional>
+
 namespace awb {
 
 class CurveScheme;
@@ -52,6 +54,10 @@ struct Regularity {
     std::string notes;         // caveats (stability assumption, budget spent, ...)
     JsrBounds jsr;             // the bounds on rho_n
     std::vector<Mat> transition;  // T_0..T_{N-1} (or the quotient maps) whose JSR was bounded
+    // Masks: the Sobolev exponent s_2 of the basic limit function (sobolevRegularity in
+    // Sobolev.h: exact for stable shifts, a lower bound otherwise), when that applies. The
+    // exact exponents obey s_2 - 1/2 <= Hölder exponent <= s_2.
+    std::optional<double> sobolev;
     double seconds = 0.0;
 
     double width() const { return upper - lower; }
