@@ -46,6 +46,8 @@ QJsonObject regularityJson(const Regularity &r)
     o["arity"] = r.arity;
     o["sum_rules"] = r.sumRules;
     o["seconds"] = r.seconds;
+    // L2 smoothness (masks): the Sobolev exponent s_2, exact linear algebra (core Sobolev.h)
+    o["sobolev"] = r.sobolev ? QJsonValue(*r.sobolev) : QJsonValue(QJsonValue::Null);
     if (r.divergent && r.transition.empty())
         return o;   // no JSR was needed (the mask does not reproduce constants)
     o["lower"] = r.lower;

@@ -181,7 +181,7 @@ QString SchemeSpec::symbolText() const
     const DifferenceMask d = dividedDifferenceMask(mask, N);
     const QString sigma = N == 2   ? QStringLiteral("1 + z")
                           : N == 3 ? QStringLiteral("1 + z + z²")
-                                   : QStringLiteral("1 + z + … + z^%1").arg(N - 1);
+                                   : QStringLiteral("1 + z + … + z^(%1)").arg(N - 1);
     if (d.order == 0)
         return CurveItemTr::tr("no sum rule: σ(z) = %1 does not divide the symbol a(z), so the "
                                "scheme has no difference scheme and cannot converge")
@@ -193,13 +193,19 @@ QString SchemeSpec::symbolText() const
         b << QStringLiteral("…");
     const QString rules = d.order == 1 ? CurveItemTr::tr("1 sum rule")
                                        : CurveItemTr::tr("%1 sum rules").arg(d.order);
-    return CurveItemTr::tr("%1: a(z) = σ(z)^%2 b(z) / %3^%2 with σ(z) = %4 and b = (%5) from "
-                           "z^%6")
-        .arg(rules)
-        .arg(d.order)
-        .arg(N)
-        .arg(sigma, b.join(QStringLiteral(", ")))
-        .arg(maskOffset);
+    // Exponents as superscripts: "σ(z)⁴ b(z) / 2⁴ … from z⁻³".
+    const auto power = [](int n) {
+        static const QString digits = QStringLiteral("⁰¹²³⁴⁵⁶⁷⁸⁹");
+        QString out = n < 0 ? QStringLiteral("⁻") : QString();
+        for (const QChar c : QString::number(std::abs(n)))
+            out += digits[c.digitValue()];
+        return out;
+    };
+    return CurveItemTr::tr("%1: a(z) = σ(z)%2 b(z) / %3%2 with σ(z) = %4 and b = (%5) from "
+                           "z%6")
+        // one pass: a superscript digit after a marker would read as part of its number
+        .arg(rules, power(d.order), QString::number(N), sigma, b.join(QStringLiteral(", ")),
+             power(maskOffset));
 }
 
 bool SchemeSpec::takeMaskOf(const SchemeSpec &other)

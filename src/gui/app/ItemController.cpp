@@ -143,6 +143,9 @@ ItemController::ItemController(AttractorView *attractor, MatrixView *matrices,
     connect(m_attractor, &AttractorView::startVertexReleased, this,
             &ItemController::onStartReleased);
     connect(m_matrices, &MatrixView::cellEdited, this, &ItemController::onCellEdited);
+    connect(m_matrices, &MatrixView::addMapRequested, this, [this] { onMapCountEdited(-1); });
+    connect(m_matrices, &MatrixView::removeMapRequested, this,
+            &ItemController::onMapCountEdited);
     connect(m_attractor, &AttractorView::controlEdgeDoubleClicked, this,
             &ItemController::onEdgeDoubleClicked);
     connect(m_attractor, &AttractorView::contextMenuRequested, this,
@@ -746,6 +749,34 @@ void ItemController::onCellEdited(int matrix, int row, int column, double value)
     emit editRefused(tr("%1 (%2, %3) = %4 was refused: %5")
                          .arg(name).arg(row + 1).arg(column + 1).arg(formatNumber(value))
                          .arg(problem->message));
+}
+
+void ItemController::onMapCountEdited(int removed)
+{
+    auto *curve = qobject_cast<SubdivisionCurveItem *>(m_item.data());
+    if (!curve || curve->scheme().kind != SchemeSpec::Kind::Matrices
+        || curve->scheme().matrices.empty())
+        return;
+    SchemeSpec s = curve->scheme();
+    if (removed < 0) {
+        s.matrices.push_back(s.matrices.back());  // a copy of the last map, to edit
+    } else {
+        if (removed >= int(s.matrices.size()))
+            return;
+        if (s.matrices.size() <= 2) {
+            emit editRefused(tr("%1 cannot be removed: an IFS of own matrices needs at least "
+                                "two maps")
+                                 .arg(subscriptName(QStringLiteral("S_%1").arg(removed + 1))));
+            return;
+        }
+        s.matrices.erase(s.matrices.begin() + removed);
+    }
+    if (const auto problem = curve->checkScheme(s)) {
+        emit editRefused(removed < 0 ? tr("No map was added: %1").arg(problem->message)
+                                     : tr("No map was removed: %1").arg(problem->message));
+        return;
+    }
+    curve->setScheme(s);
 }
 
 } // namespace awb

@@ -175,6 +175,8 @@ private:
     void onStartDragged(int index, const QPointF &world);
     void onStartReleased(int index, const QPointF &start, const QPointF &end);
     void onCellEdited(int matrix, int row, int column, double value);
+    // Own matrices: -1 adds a copy of the last map, k removes map k (one undo step each).
+    void onMapCountEdited(int removed);
     // Double click on an edge of the control polygon: a new point there (ItemControllerMenu).
     void onEdgeDoubleClicked(int flatIndex, const QPointF &world);
     // The surface view's part of refreshNow() (items with 3D points).

@@ -9,11 +9,14 @@
 #include <QFont>
 #include <QHeaderView>
 #include <QLabel>
+#include <QPushButton>
 #include <QRegularExpression>
 #include <QScrollArea>
 #include <QTableView>
+#include <QToolButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <utility>
@@ -345,7 +348,8 @@ void MatrixView::setMatrices(const QList<NamedMatrix> &matrices)
     for (int i = 0; same && i < matrices.size(); ++i) {
         const NamedMatrix &a = matrices[i], &b = m_models[i]->matrix();
         same = a.name == b.name && a.rows() == b.rows() && a.cols() == b.cols()
-               && a.isComplex() == b.isComplex() && a.affineBlock == b.affineBlock;
+               && a.isComplex() == b.isComplex() && a.affineBlock == b.affineBlock
+               && a.editable == b.editable;
     }
     if (!same) {
         rebuild(matrices);
@@ -366,6 +370,8 @@ void MatrixView::rebuild(const QList<NamedMatrix> &matrices)
 {
     // Each box owns its title, table and (through the table) model.
     qDeleteAll(m_boxes);
+    delete m_addMap;
+    m_addMap = nullptr;
     m_boxes.clear();
     m_views.clear();
     m_models.clear();
@@ -412,7 +418,26 @@ void MatrixView::rebuild(const QList<NamedMatrix> &matrices)
         view->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
         // Narrow columns: a 6 x 6 matrix and its sums fit the dock's first width.
         view->horizontalHeader()->setMinimumSectionSize(26);
-        boxLayout->addWidget(label);
+        if (m_editable && nm.editable && !nm.isComplex()) {
+            // The user's own maps: each can be removed (the owner refuses the last two).
+            auto *remove = new QToolButton(box);
+            remove->setObjectName(QStringLiteral("removeMap:") + nm.name);
+            remove->setText(tr("Remove"));
+            remove->setToolTip(tr("Remove the map %1 from the IFS (one undo step)")
+                                   .arg(subscriptName(nm.name)));
+            remove->setAutoRaise(true);
+            connect(remove, &QToolButton::clicked, this, [this, i] {
+                emit removeMapRequested(i);
+            });
+            auto *title = new QHBoxLayout;
+            title->setContentsMargins(0, 0, 0, 0);
+            title->addWidget(label);
+            title->addWidget(remove);
+            title->addStretch(1);
+            boxLayout->addLayout(title);
+        } else {
+            boxLayout->addWidget(label);
+        }
         // Large real matrices (a surface's S_i) get a heat map above the table: the table is
         // too wide to read, the pattern of weights is not.
         if (!nm.isComplex() && nm.rows() > heatMapRows) {
@@ -427,6 +452,15 @@ void MatrixView::rebuild(const QList<NamedMatrix> &matrices)
         m_views << view;
         m_models << model;
         fitTable(view);
+    }
+    if (m_editable && std::any_of(matrices.begin(), matrices.end(),
+                    [](const NamedMatrix &m) { return m.editable && !m.isComplex(); })) {
+        m_addMap = new QPushButton(tr("Add a Map"));
+        m_addMap->setObjectName(QStringLiteral("addMap"));
+        m_addMap->setToolTip(tr("A new map S_(p+1), a copy of the last one to edit cell by "
+                                "cell (one undo step)"));
+        connect(m_addMap, &QPushButton::clicked, this, &MatrixView::addMapRequested);
+        m_tables->insertWidget(m_tables->count() - 1, m_addMap, 0, Qt::AlignLeft);
     }
     showHighlight();
 }

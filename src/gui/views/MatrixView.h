@@ -14,6 +14,7 @@
 #include <utility>
 
 class QLabel;
+class QPushButton;
 class QScrollArea;
 class QTableView;
 class QVBoxLayout;
@@ -55,6 +56,9 @@ public:
 
 signals:
     void cellEdited(int matrix, int row, int column, double value);
+    // Editable matrices (the user's own S_i): the buttons under and beside them.
+    void addMapRequested();
+    void removeMapRequested(int matrix);
 
 private:
     void rebuild(const QList<NamedMatrix> &matrices);
@@ -64,6 +68,7 @@ private:
 
     QVBoxLayout *m_tables = nullptr;
     QLabel *m_error = nullptr;
+    QPushButton *m_addMap = nullptr;
     QList<MatrixTableModel *> m_models;
     QList<QTableView *> m_views;
     QList<QWidget *> m_boxes;

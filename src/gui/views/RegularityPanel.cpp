@@ -76,6 +76,8 @@ QString regularityText(const Regularity &r)
                                .arg(r.lower, 0, 'g', 8)
                                .arg(r.upper, 0, 'g', 8)
                                .arg(r.width(), 0, 'g', 2);
+    if (r.sobolev)
+        text += QObject::tr("; Sobolev (L²) exponent s₂ = %1").arg(*r.sobolev, 0, 'g', 8);
     if (!r.notes.empty())
         text += QStringLiteral("; ") + QString::fromStdString(r.notes).trimmed();
     return text;
