@@ -24,5 +24,7 @@ int importMesh(const QStringList &args);
 int valences(const QStringList &args);
 // Import.cpp: another tool's IFS file (Fractint .ifs) as a project.
 int importFile(const QStringList &args);
+// RegularityInterval.cpp: where a curve scheme is C^k as a parameter moves (bisection).
+int regularityInterval(const QStringList &args);
 
 } // namespace awb::cli

@@ -104,6 +104,7 @@ void usage()
                     "  import     another tool's IFS file (Fractint .ifs) as a project\n"
                     "  import-mesh  a mesh file (OBJ, OFF, PLY) as a project with a mesh item\n"
                     "  valences   lambda, mu, Reif's C1 verdict per valence (Catmull-Clark, Loop)\n"
+                    "  regularity-interval  where a scheme is C^k as a parameter moves\n"
                     "  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG\n\n"
                     "Run 'attractor-cli <command> --help' for the options of a command.\n");
 }
@@ -143,7 +144,7 @@ int main(int argc, char **argv)
     const QString command = args[1];
     // JSON output is for programs: the core's notes, verdicts and errors in it stay in English.
     if (command == "analyse" || command == "analyze" || command == "polygon"
-        || command == "valences")
+        || command == "valences" || command == "regularity-interval")
         setMessageTranslator(nullptr);
     args.removeAt(1);
     args[0] = "attractor-cli " + command;
@@ -172,6 +173,8 @@ int main(int argc, char **argv)
             return cli::valences(args);
         if (command == "import")
             return cli::importFile(args);
+        if (command == "regularity-interval")
+            return cli::regularityInterval(args);
     } catch (const InputError &e) {
         err() << "attractor-cli " << command << ": " << e.what() << "\n";
         return 1;

@@ -10,10 +10,11 @@
 
 namespace awb {
 
-Regularity itemRegularity(const SubdivisionCurveItem &item, const RegularityOptions &options)
+Regularity specRegularity(const SchemeSpec &spec, int controlPoints,
+                          const RegularityOptions &options)
 {
     Regularity r;
-    if (item.scheme().isComplex()) {
+    if (spec.isComplex()) {
         r.message = QCoreApplication::translate("awb::SchemeRegularity",
                                                 "does not apply: a complex de Casteljau "
                                                 "parameter is not a real subdivision scheme")
@@ -21,8 +22,8 @@ Regularity itemRegularity(const SubdivisionCurveItem &item, const RegularityOpti
         return r;
     }
     try {
-        const auto scheme = item.scheme().makeScheme();
-        const int m = std::max(int(item.controlPoints(0).size()), scheme->minControlPoints());
+        const auto scheme = spec.makeScheme();
+        const int m = std::max(controlPoints, scheme->minControlPoints());
         return schemeRegularity(*scheme, std::min(m, scheme->maxControlPoints()), options);
     } catch (const std::exception &e) {
         r.message = QCoreApplication::translate("awb::SchemeRegularity", "does not apply: %1")
@@ -30,6 +31,11 @@ Regularity itemRegularity(const SubdivisionCurveItem &item, const RegularityOpti
                         .toStdString();
         return r;
     }
+}
+
+Regularity itemRegularity(const SubdivisionCurveItem &item, const RegularityOptions &options)
+{
+    return specRegularity(item.scheme(), int(item.controlPoints(0).size()), options);
 }
 
 QJsonObject regularityJson(const Regularity &r)

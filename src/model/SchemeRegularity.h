@@ -10,10 +10,15 @@
 namespace awb {
 
 class SubdivisionCurveItem;
+struct SchemeSpec;
 
 // Throws nothing: a scheme the analysis does not cover (complex Bézier parameter, a scheme the
 // core refuses) comes back with applies == false and the reason in `message`.
 Regularity itemRegularity(const SubdivisionCurveItem &item, const RegularityOptions &options = {});
+// The same for a scheme and a number of control points (a member of a family: the item's
+// scheme with a parameter moved, `regularity-interval` and the regularity chart).
+Regularity specRegularity(const SchemeSpec &spec, int controlPoints,
+                          const RegularityOptions &options = {});
 
 // {"lower", "upper", "width", "smoothness": "C^n", "method", "message", "notes", "sum_rules",
 // "arity", "seconds", "jsr": {"lower", "upper", "product", "norm", "depth"}}; lower/upper/width

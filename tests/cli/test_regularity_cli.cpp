@@ -1,7 +1,10 @@
 // attractor-cli analyse --json reports the certified Hölder regularity of each subdivision
 // curve's scheme (issue 16): the cubic B-spline of 000 Fig. 2 (exactly 3, C^2), the classic
 // four-point scheme of 000 Fig. 5 (2, not attained: C^1), a Bézier curve (C^infinity), and a
-// scheme edited to omega = 1 (not convergent).
+// scheme edited to omega = 1 (not convergent). Issue 32: `regularity-interval` brackets where
+// the four-point scheme is C^1 (0 < omega < omega*, omega* the real root of 32 w^3 + 4 w - 1,
+// Hechler, Mößner & Reif 2009), and a mask typed in a project (Daubechies' D4) gets its Hölder
+// exponent 2 - log2(1 + sqrt 3) (Daubechies & Lagarias 1992) and Sobolev exponent 1.
 
 #include <QFile>
 #include <QJsonArray>
@@ -23,6 +26,8 @@ private slots:
     void fourPointClassic();
     void bezierIsPolynomial();
     void divergentFourPoint();
+    void fourPointC1Interval();
+    void maskOfDaubechiesD4();
 
 private:
     QJsonObject regularity(const QString &file, const QString &item)
@@ -91,6 +96,73 @@ void TestRegularityCli::divergentFourPoint()
     QCOMPARE(r["smoothness"].toString(), QString("not convergent"));
     QVERIFY(r["message"].toString().startsWith("not convergent"));
     QVERIFY(r["upper"].toDouble() <= 0.0);
+}
+
+void TestRegularityCli::fourPointC1Interval()
+{
+    QByteArray out, err;
+    const QString file = awb::test::examplePath("000-fig05-four-point-from-segment.awb");
+    QCOMPARE(awb::test::runProgram(awb::test::cliPath(),
+                                   {"regularity-interval", file, "--parameter", "omega", "--from",
+                                    "-0.1", "--to", "0.3", "--smoothness", "1", "--grid", "17",
+                                    "--budget", "0.2", "--json"},
+                                   &out, &err),
+             0);
+    const QJsonObject r = QJsonDocument::fromJson(out).object();
+    QCOMPARE(r["smoothness"].toInt(), 1);
+    const QJsonArray runs = r["intervals"].toArray();
+    QCOMPARE(runs.size(), 1);
+    // omega*: Newton on 32 w^3 + 4 w - 1 from 0.2.
+    double w = 0.2;
+    for (int i = 0; i < 50; ++i)
+        w -= (32 * w * w * w + 4 * w - 1) / (96 * w * w + 4);
+    QVERIFY(std::abs(w - 0.19273) < 1e-5);
+    const QJsonObject from = runs[0].toObject()["from"].toObject();
+    const QJsonObject to = runs[0].toObject()["to"].toObject();
+    const auto contains = [](const QJsonObject &b, double x) {
+        const double lo = std::min(b["inner"].toDouble(), b["outer"].toDouble());
+        const double hi = std::max(b["inner"].toDouble(), b["outer"].toDouble());
+        return lo <= x && x <= hi;
+    };
+    QVERIFY2(contains(from, 0.0), QJsonDocument(from).toJson().constData());
+    QVERIFY2(contains(to, w), QJsonDocument(to).toJson().constData());
+    QVERIFY(to["certified_not"].toBool());
+    // (wider under the sanitizers, whose slower JSR gets less done per budget)
+    QVERIFY2(to["width"].toDouble() < 1e-2, QJsonDocument(to).toJson().constData());
+    QVERIFY(from["width"].toDouble() < 1e-2);
+
+    // No omega for a Chaikin curve; --from/--to required; an unknown item.
+    QCOMPARE(awb::test::runProgram(awb::test::cliPath(),
+                                   {"regularity-interval", file, "--parameter", "a", "--from",
+                                    "0", "--to", "1"},
+                                   &out, &err),
+             2);
+    QVERIFY2(err.contains("has no parameter 'a'"), err.constData());
+    QCOMPARE(awb::test::runProgram(awb::test::cliPath(),
+                                   {"regularity-interval", file, "--parameter", "omega"}, &out,
+                                   &err),
+             2);
+    QVERIFY2(err.contains("--from and --to are required"), err.constData());
+}
+
+void TestRegularityCli::maskOfDaubechiesD4()
+{
+    const QString file = m_dir.filePath("d4.awb");
+    QFile f(file);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(R"({"format": "attractor-workbench", "version": 1, "items": [
+        {"type": "subdivision-curve", "name": "D4",
+         "scheme": {"kind": "mask", "arity": 2, "offset": 0, "mask":
+             ["(1 + sqrt(3))/4", "(3 + sqrt(3))/4", "(3 - sqrt(3))/4", "(1 - sqrt(3))/4"]},
+         "control_points": [[0, 0], [1, 2], [3, 2], [4, 0], [5, 1]]}]})");
+    f.close();
+    const QJsonObject r = regularity(file, "D4");
+    const double alpha = 2 - std::log2(1 + std::sqrt(3.0));  // 0.550016 (Daubechies-Lagarias)
+    QVERIFY(r["lower"].toDouble() <= alpha + 1e-12 && alpha - 1e-9 <= r["lower"].toDouble());
+    QVERIFY(r["upper"].toDouble() >= alpha - 1e-12 && r["upper"].toDouble() <= alpha + 1e-9);
+    QCOMPARE(r["smoothness"].toString(), QString("C^0"));
+    QCOMPARE(r["sum_rules"].toInt(), 2);
+    QVERIFY(std::abs(r["sobolev"].toDouble() - 1.0) < 1e-9);  // Villemoes 1994
 }
 
 AWB_TEST_GUILESS_MAIN(TestRegularityCli)
