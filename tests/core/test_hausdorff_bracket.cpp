@@ -291,9 +291,9 @@ void TestHausdorffBracket::bsplineDistancesFallByFour()
 void TestHausdorffBracket::takagiImage()
 {
     // P = (0, 1): A*(y) against T*(y) = {x + 2iy T(x)} (004 Remark, eq. (3.42)), from the
-    // 2^15 points of depth 15 (the thesis iterates 15 times). d_H is then the curve's farthest
-    // point from those points, at least 3.05e-5 (= 2^-15, the points' spacing) for y = 2^-8
-    // and 2^-10, where the 4097-sample polyline saw 2.9e-5 and 1.8e-6.
+    // 2^15 points f_w(0) of depth 15 (the thesis iterates 15 times). d_H is then the curve's
+    // farthest point from those points: its end 1, 2^-15 = 3.05e-5 from the nearest point
+    // f_2^15(0), for y = 2^-8 and 2^-10, where the 4097-sample polyline saw 2.9e-5 and 1.8e-6.
     for (int e : {8, 10}) {
         const double y = std::ldexp(1.0, -e);
         const Mat A = takagiAttractor(segment01(), y, 15);
