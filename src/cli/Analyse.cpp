@@ -6,6 +6,7 @@
 
 #include "cli/FigureRenderer.h"
 #include "core/analysis/Geometry.h"
+#include "core/analysis/HausdorffBracket.h"
 #include "core/analysis/Spectrum.h"
 #include "model/Animation.h"
 #include "model/FigureMetadata.h"
@@ -120,10 +121,16 @@ void addMapMatrices(QJsonObject &m, const DerivedIfs &d, int i, int k)
 }
 
 // d_H(F^depth(X0), exact curve) at the item's depth (or the deepest depth under 2e6 points),
-// with the one-sided distance from the attractor points to the curve.
+// certified (core HausdorffBracket: the curve refined adaptively by enclosures of its exact
+// pieces, not sampled). "value" and "one_sided" are the midpoints of their brackets:
+//   value_bracket      contains d_H(F^depth(X0), C) = max of the two one-sided distances,
+//   one_sided_bracket  contains sup over the points a of dist(a, C),
+//   curve_side_bracket contains sup over the curve points c of dist(c, F^depth(X0)),
+// "width" is the largest relative width (upper - lower) / upper reached (requested 1e-3;
+// "converged" false if the budget stopped the refinement first).
 QJsonValue hausdorffToExact(const AttractorItem *item, const DerivedIfs &d)
 {
-    const auto exact = exactCurveOf(item, 4000);
+    const auto exact = certifiedExactCurveOf(item);
     if (!exact || d.iterate || d.ifs.views.empty() || d.ifs.size() == 0)
         return QJsonValue::Null;
     const StartSet start = item->coreStartSet(d);
@@ -133,9 +140,17 @@ QJsonValue hausdorffToExact(const AttractorItem *item, const DerivedIfs &d)
     PointCollector c(d.ifs.views.front());
     iterate(d.ifs, StartSet::points(start.vertices), depth, c);
     const Mat pts = c.points();
+    const HausdorffBracket h = hausdorffBracket(pts, *exact->curve);
+    auto bracket = [](const DistanceBracket &b) { return QJsonArray{b.lower, b.upper}; };
     return QJsonObject{{"depth", depth},
-                       {"value", hausdorffToCurve(pts, exact->points)},
-                       {"one_sided", distanceToPolyline(pts, exact->points)},
+                       {"points", double(pts.rows())},
+                       {"value", h.value.mid()},
+                       {"one_sided", h.oneSided.mid()},
+                       {"value_bracket", bracket(h.value)},
+                       {"one_sided_bracket", bracket(h.oneSided)},
+                       {"curve_side_bracket", bracket(h.curveToPoints)},
+                       {"width", h.width},
+                       {"converged", h.converged},
                        {"curve", exact->label}};
 }
 

@@ -1,5 +1,6 @@
 #include "model/ExactCurve.h"
 
+#include "core/analysis/HausdorffBracket.h"
 #include "core/schemes/ComplexBezier.h"
 #include "core/schemes/Scheme.h"
 #include "model/ComplexBezierItem.h"
@@ -19,12 +20,39 @@ struct ExactCurveTr {
     Q_DECLARE_TR_FUNCTIONS(awb::ExactCurve)
 };
 
+bool isRealParameter(Complex t) { return std::abs(t.imag()) < 1e-12; }
+
+// Whether the complex Bézier item of parameter t has a known exact curve.
+bool hasComplexExactCurve(Complex t, const Mat &P)
+{
+    // Otherwise the attractor is c(A_1), known only through the IFS.
+    return P.rows() >= 2 && (isRealParameter(t) || std::abs(t.real() - 0.5) <= 1e-12);
+}
+
+CVec complexPoints(const Mat &P)
+{
+    return P.col(0).cast<Complex>() + Complex(0.0, 1.0) * P.col(1).cast<Complex>();
+}
+
+QString complexLabel(Complex t)
+{
+    return isRealParameter(t)
+               ? ExactCurveTr::tr("Bézier curve c([0, 1])")
+               : ExactCurveTr::tr("Takagi image c(x + 2iy·T(x)), y = %1 (Conj. 3.7.1)")
+                     .arg(t.imag(), 0, 'g', 4);
+}
+
+QString schemeLabel(const CurveScheme &scheme)
+{
+    return ExactCurveTr::tr("exact curve: %1").arg(QString::fromStdString(scheme.name()));
+}
+
 std::optional<ExactCurve> complexBezierCurve(Complex t, const Mat &P, int samples)
 {
-    const bool real = std::abs(t.imag()) < 1e-12;
-    if (P.rows() < 2 || (!real && std::abs(t.real() - 0.5) > 1e-12))
-        return std::nullopt; // the attractor is c(A_1), known only through the IFS
-    const CVec z = P.col(0).cast<Complex>() + Complex(0.0, 1.0) * P.col(1).cast<Complex>();
+    const bool real = isRealParameter(t);
+    if (!hasComplexExactCurve(t, P))
+        return std::nullopt;
+    const CVec z = complexPoints(P);
     int depth = 1;
     while ((1 << depth) < samples && depth < 12)
         ++depth;
@@ -33,9 +61,19 @@ std::optional<ExactCurve> complexBezierCurve(Complex t, const Mat &P, int sample
     out.points.resize(Eigen::Index(c.size()), 2);
     for (std::size_t i = 0; i < c.size(); ++i)
         out.points.row(Eigen::Index(i)) << c[i].real(), c[i].imag();
-    out.label = real ? ExactCurveTr::tr("Bézier curve c([0, 1])")
-                     : ExactCurveTr::tr("Takagi image c(x + 2iy·T(x)), y = %1 (Conj. 3.7.1)")
-                           .arg(t.imag(), 0, 'g', 4);
+    out.label = complexLabel(t);
+    return out;
+}
+
+std::optional<CertifiedExactCurve> complexCertified(Complex t, const Mat &P)
+{
+    if (!hasComplexExactCurve(t, P))
+        return std::nullopt;
+    CertifiedExactCurve out{nullptr, complexLabel(t)};
+    if (isRealParameter(t))
+        out.curve = std::make_shared<BezierPiecesCurve>(std::vector<Mat>{P.leftCols(2)});
+    else
+        out.curve = std::make_shared<TakagiImageCurve>(complexPoints(P), t.imag());
     return out;
 }
 
@@ -57,8 +95,29 @@ std::optional<ExactCurve> exactCurveOf(const Item *item, int samples)
         auto points = scheme->exactCurve(P, samples);
         if (!points || points->rows() < 2)
             return std::nullopt;
-        return ExactCurve{*points, ExactCurveTr::tr("exact curve: %1")
-                                       .arg(QString::fromStdString(scheme->name()))};
+        return ExactCurve{*points, schemeLabel(*scheme)};
+    } catch (const std::exception &) {
+        return std::nullopt; // bad data: the item's derived error reports it
+    }
+}
+
+std::optional<CertifiedExactCurve> certifiedExactCurveOf(const Item *item)
+{
+    try {
+        if (const auto *cb = qobject_cast<const ComplexBezierItem *>(item))
+            return complexCertified(cb->t(), toMatrix(cb->controlPoints()));
+        const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item);
+        if (!curve)
+            return std::nullopt;
+        const Mat P = toMatrix(curve->controlPoints());
+        if (curve->scheme().isComplex())
+            return complexCertified(curve->scheme().t, P);
+        const auto scheme = curve->scheme().makeScheme();
+        auto pieces = scheme->bezierPieces(P);
+        if (!pieces || pieces->empty())
+            return std::nullopt;
+        return CertifiedExactCurve{std::make_shared<BezierPiecesCurve>(std::move(*pieces)),
+                                   schemeLabel(*scheme)};
     } catch (const std::exception &) {
         return std::nullopt; // bad data: the item's derived error reports it
     }

@@ -10,10 +10,12 @@
 
 #include <QString>
 
+#include <memory>
 #include <optional>
 
 namespace awb {
 
+class CertifiedCurve;
 class Item;
 
 struct ExactCurve {
@@ -24,5 +26,14 @@ struct ExactCurve {
 // nullopt when the item has no known exact curve or its data cannot be computed (the item's
 // own derived error says why). `samples` is a hint for the number of points.
 std::optional<ExactCurve> exactCurveOf(const Item *item, int samples = 600);
+
+// The same curve as exact data for measuring (core/analysis/HausdorffBracket): the Bézier
+// pieces of the B-spline / Bézier / end-interpolating curve, or the control points and y of the
+// Takagi image, with enclosures of every parameter interval; the label is exactCurveOf's.
+struct CertifiedExactCurve {
+    std::shared_ptr<const CertifiedCurve> curve;
+    QString label;
+};
+std::optional<CertifiedExactCurve> certifiedExactCurveOf(const Item *item);
 
 } // namespace awb

@@ -23,6 +23,7 @@ class TestFidelityCli : public QObject {
     Q_OBJECT
 private slots:
     void wholeAnalysisOfFig2();
+    void certifiedDistanceToExactCurve();
     void fixedPointsWithoutLifting();
     void dragonHasItsIfs();
     void liftedStartPoints();
@@ -73,11 +74,66 @@ void TestFidelityCli::wholeAnalysisOfFig2()
     const double want[4] = {0.5, 0.25, 0.125, 0.0};
     for (int k = 0; k < 4; ++k)
         QVERIFY(std::abs(evA[k].toArray()[0].toDouble() - want[k]) < 1e-9);
-    // The distance to the exact B-spline at the item's depth.
+    // The distance to the exact B-spline at the item's depth, certified: value and one_sided
+    // are the midpoints of their brackets.
     const QJsonObject h = item["hausdorff_to_exact"].toObject();
     QVERIFY(h["depth"].toInt() > 8);
     QVERIFY(h["value"].toDouble() > 0 && h["value"].toDouble() < 2e-3);
     QVERIFY(h["one_sided"].toDouble() <= h["value"].toDouble());
+    const QJsonArray vb = h["value_bracket"].toArray(), ob = h["one_sided_bracket"].toArray();
+    QCOMPARE(vb.size(), 2);
+    QVERIFY(vb[0].toDouble() <= h["value"].toDouble() && h["value"].toDouble() <= vb[1].toDouble());
+    QVERIFY(ob[0].toDouble() <= h["one_sided"].toDouble());
+    QVERIFY(h["one_sided"].toDouble() <= ob[1].toDouble());
+    QCOMPARE(h["curve_side_bracket"].toArray().size(), 2);
+    QVERIFY(h["converged"].toBool() && h["width"].toDouble() <= 1e-3);
+}
+
+void TestFidelityCli::certifiedDistanceToExactCurve()
+{
+    // The issue's cases, where 4000 samples of the curve measured the sampling: the
+    // end-interpolating cubic of 000 Fig. 3 at depth 12 (one-sided 1.3019e-6, which the
+    // polyline put at 8.2e-4), and the Takagi image at y = 2^-8, depth 15 from the point 0
+    // (the polyline saw d_H = 2.9e-5; it is at least 3.05e-5 = 2^-15, the distance from the
+    // curve's end 1 to the nearest point f_2^15(0), which the start {0} never reaches), and
+    // from the segment [0, 1] (its ends in the set: half a spacing, 1.54e-5).
+    const QString file = m_dir.filePath("certified.awb");
+    QFile f(file);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(R"({"format": "attractor-workbench", "version": 1, "items": [
+        {"type": "subdivision-curve", "name": "E",
+         "scheme": {"kind": "bspline-end-interpolating", "degree": 3},
+         "control_points": [[0, 0], [5, 4.5], [5.5, -0.5], [0.5, 3.5], [5, 3]],
+         "start_set": {"kind": "triangle", "points": [[1, -1.2], [3.5, -1.5], [2, 0.8]]},
+         "algorithm": {"depth": 12, "mode": "deterministic"}},
+        {"type": "complex-bezier", "name": "T", "t": [0.5, 0.00390625],
+         "control_points": [[0, 0], [1, 0]],
+         "start_set": {"kind": "point", "points": [[0, 0]]},
+         "algorithm": {"depth": 15, "mode": "deterministic"}},
+        {"type": "complex-bezier", "name": "S", "t": [0.5, 0.00390625],
+         "control_points": [[0, 0], [1, 0]],
+         "start_set": {"kind": "segment", "points": [[0, 0], [1, 0]]},
+         "algorithm": {"depth": 15, "mode": "deterministic"}}]})");
+    f.close();
+    const QJsonObject e = analyse(file, "E")["hausdorff_to_exact"].toObject();
+    QCOMPARE(e["depth"].toInt(), 12);
+    const QJsonArray eb = e["one_sided_bracket"].toArray();
+    QVERIFY2(eb[0].toDouble() > 1.3015e-6 && eb[1].toDouble() < 1.3022e-6,
+             qPrintable(QString("%1 %2").arg(eb[0].toDouble()).arg(eb[1].toDouble())));
+    QVERIFY(e["converged"].toBool());
+    const QJsonObject t = analyse(file, "T")["hausdorff_to_exact"].toObject();
+    QCOMPARE(t["depth"].toInt(), 15);
+    QVERIFY(t["curve"].toString().contains("Takagi"));
+    const QJsonArray tb = t["value_bracket"].toArray();
+    QVERIFY2(tb[0].toDouble() >= 3.05e-5, qPrintable(QString::number(tb[0].toDouble())));
+    QVERIFY(tb[1].toDouble() - tb[0].toDouble() <= 1e-3 * tb[1].toDouble());
+    // The points' own side is far smaller: 2.23e-6 = 0.15 y^2.
+    const QJsonArray to = t["one_sided_bracket"].toArray();
+    QVERIFY(to[0].toDouble() > 2.2e-6 && to[1].toDouble() < 2.26e-6);
+    const QJsonArray sb = analyse(file, "S")["hausdorff_to_exact"].toObject()["value_bracket"]
+                              .toArray();
+    QVERIFY2(sb[0].toDouble() > 1.53e-5 && sb[1].toDouble() < 1.55e-5,
+             qPrintable(QString::number(sb[0].toDouble())));
 }
 
 void TestFidelityCli::fixedPointsWithoutLifting()

@@ -7,6 +7,7 @@
 
 #include "core/schemes/ComplexBezier.h"
 #include "core/analysis/Geometry.h"
+#include "core/analysis/HausdorffBracket.h"
 #include "model/ExactCurve.h"
 #include "TestMain.h"
 
@@ -18,6 +19,7 @@ private slots:
     void realBezierIsTheCurve();
     void takagiImageForHalfPlusIy();
     void noOverlayWhereNoneIsKnown();
+    void certifiedCurveIsTheOverlay();
 };
 
 void TestExactCurve::realBezierIsTheCurve()
@@ -87,6 +89,39 @@ void TestExactCurve::noOverlayWhereNoneIsKnown()
     // derived error says there is no attractor.
     QVERIFY(exactCurveOf(p.findItem("outside")));
     QVERIFY(!exactCurveOf(nullptr));
+}
+
+void TestExactCurve::certifiedCurveIsTheOverlay()
+{
+    // The exact data the distances are measured with (certifiedExactCurveOf) is the curve the
+    // overlay samples: same label, same points at the overlay's parameters.
+    Project p;
+    QVERIFY(test::load(p, R"({"type": "complex-bezier", "name": "Fig. 3.9",
+        "control_points": [[0, 0], [0.5, 2], [0.5, 0]], "t": [0.5, 0.01]},
+        {"type": "complex-bezier", "name": "real t",
+        "control_points": [[0, 0], [0.5, 2], [0.5, 0]], "t": [0.3, 0]},
+        {"type": "subdivision-curve", "name": "uniform",
+         "scheme": {"kind": "bspline", "degree": 3},
+         "control_points": [[0, 0], [1, 2], [3, 2.5], [4.5, 1], [6, 2]]},
+        {"type": "subdivision-curve", "name": "end",
+         "scheme": {"kind": "bspline-end-interpolating", "degree": 3},
+         "control_points": [[0, 0], [5, 4.5], [5.5, -0.5], [0.5, 3.5], [5, 3]]},
+        {"type": "complex-bezier", "name": "Fig. 3.5",
+        "control_points": [[0, 0], [1, 0]], "t": [0.25, 0.4330127018922193]})"));
+    for (const char *name : {"Fig. 3.9", "real t", "uniform", "end"}) {
+        const Item *item = p.findItem(name);
+        const auto sampled = exactCurveOf(item, 65);
+        const auto certified = certifiedExactCurveOf(item);
+        QVERIFY(sampled && certified && certified->curve);
+        QCOMPARE(certified->label, sampled->label);
+        const Eigen::Index n = sampled->points.rows() - 1;
+        for (Eigen::Index j = 0; j <= n; j += 8) {
+            const Eigen::Vector2d q = certified->curve->point(double(j) / double(n));
+            QVERIFY2((q - sampled->points.row(j).transpose()).norm() < 1e-12, name);
+        }
+    }
+    QVERIFY(!certifiedExactCurveOf(p.findItem("Fig. 3.5")));
+    QVERIFY(!certifiedExactCurveOf(nullptr));
 }
 
 AWB_TEST_GUILESS_MAIN(TestExactCurve)

@@ -209,6 +209,29 @@ Mat BSplineBasis::insertionMatrix(const std::vector<double> &finer) const
     return K;
 }
 
+std::vector<Mat> BSplineBasis::bezierPieces(const Mat &P) const
+{
+    if (P.rows() != controlPointCount())
+        throw InputError(formatMessage(
+            coreTranslate("awb::schemes", "B-spline needs %1 control points, got %2"),
+            controlPointCount(), P.rows()));
+    const int n = m_degree;
+    std::vector<Mat> pieces;
+    for (int J = n - 1; J + 1 <= controlPointCount() - 1; ++J) {
+        const double a = m_knots[std::size_t(J)], b = m_knots[std::size_t(J + 1)];
+        if (!(b > a))
+            continue;
+        Mat Q(n + 1, P.cols());
+        for (int k = 0; k <= n; ++k) {
+            std::vector<double> u(std::size_t(n), a);
+            std::fill(u.begin() + (n - k), u.end(), b);
+            Q.row(k) = blossomWeights(u, J) * P;
+        }
+        pieces.push_back(Q);
+    }
+    return pieces;
+}
+
 Mat BSplineBasis::curve(const Mat &P, int samples) const
 {
     if (P.rows() != controlPointCount())

@@ -53,6 +53,10 @@ public:
 
     // samples points of the curve, evenly spaced in the parameter: samples x d.
     Mat curve(const Mat &P, int samples) const;
+    // The exact Bézier control points ((n+1) x d each) of the polynomial pieces on the
+    // nondegenerate spans of the domain, in order: row k is the blossom f(a^(n-k), b^k) of the
+    // span [a, b] (Ramshaw). Together they are the whole curve.
+    std::vector<Mat> bezierPieces(const Mat &P) const;
 
 private:
     int m_degree;

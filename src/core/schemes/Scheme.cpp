@@ -38,6 +38,11 @@ Mat SubdivisionMatrices::refinement() const
 
 std::optional<Mat> CurveScheme::exactCurve(const Mat &, int) const { return std::nullopt; }
 
+std::optional<std::vector<Mat>> CurveScheme::bezierPieces(const Mat &) const
+{
+    return std::nullopt;
+}
+
 void CurveScheme::requireControlPointCount(int m) const
 {
     if (m < minControlPoints() || m > maxControlPoints())
@@ -153,6 +158,14 @@ std::optional<Mat> UniformScheme::exactCurve(const Mat &P, int samples) const
         return std::nullopt;
     requireControlPointCount(int(P.rows()));
     return BSplineBasis::uniform(m_bsplineDegree, int(P.rows())).curve(P, samples);
+}
+
+std::optional<std::vector<Mat>> UniformScheme::bezierPieces(const Mat &P) const
+{
+    if (m_bsplineDegree < 1)
+        return std::nullopt;
+    requireControlPointCount(int(P.rows()));
+    return BSplineBasis::uniform(m_bsplineDegree, int(P.rows())).bezierPieces(P);
 }
 
 UniformScheme bsplineScheme(int degree)
@@ -298,6 +311,12 @@ std::optional<Mat> BezierScheme::exactCurve(const Mat &P, int samples) const
     return bezierPoints(P, linspace(0.0, 1.0, samples));
 }
 
+std::optional<std::vector<Mat>> BezierScheme::bezierPieces(const Mat &P) const
+{
+    requireControlPointCount(int(P.rows()));
+    return std::vector<Mat>{P};
+}
+
 // ---------------------------------------------------------------------------------------------
 
 EndInterpolatingBSplineScheme::EndInterpolatingBSplineScheme(int degree) : m_degree(degree)
@@ -336,6 +355,12 @@ std::optional<Mat> EndInterpolatingBSplineScheme::exactCurve(const Mat &P, int s
 {
     requireControlPointCount(int(P.rows()));
     return BSplineBasis::endInterpolating(m_degree, int(P.rows())).curve(P, samples);
+}
+
+std::optional<std::vector<Mat>> EndInterpolatingBSplineScheme::bezierPieces(const Mat &P) const
+{
+    requireControlPointCount(int(P.rows()));
+    return BSplineBasis::endInterpolating(m_degree, int(P.rows())).bezierPieces(P);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -35,6 +35,9 @@ public:
     // Points on the exact limit curve (samples x d) when the scheme has a closed form
     // (B-splines, Bézier); std::nullopt otherwise (four-point, user masks, ...).
     virtual std::optional<Mat> exactCurve(const Mat &P, int samples) const;
+    // The same curve exactly, as the Bézier control points of its polynomial pieces (each
+    // (n+1) x d, in order along the curve); std::nullopt where exactCurve() has no closed form.
+    virtual std::optional<std::vector<Mat>> bezierPieces(const Mat &P) const;
 
     void requireControlPointCount(int m) const;
 };
@@ -59,6 +62,7 @@ public:
     int minControlPoints() const override;
     SubdivisionMatrices matrices(int m) const override;
     std::optional<Mat> exactCurve(const Mat &P, int samples) const override;
+    std::optional<std::vector<Mat>> bezierPieces(const Mat &P) const override;
 
     const std::vector<SchemeRule> &rules() const { return m_rules; }
     // The mask a[k0 .. k1] (padded with zeros so that (p-1) divides k1 - k0).
@@ -108,6 +112,7 @@ public:
     int maxControlPoints() const override { return m_degree + 1; }
     SubdivisionMatrices matrices(int m) const override;
     std::optional<Mat> exactCurve(const Mat &P, int samples) const override;
+    std::optional<std::vector<Mat>> bezierPieces(const Mat &P) const override;
     int degree() const { return m_degree; }
     double t() const { return m_t; }
 
@@ -127,6 +132,7 @@ public:
     int minControlPoints() const override { return m_degree + 1; }
     SubdivisionMatrices matrices(int m) const override;
     std::optional<Mat> exactCurve(const Mat &P, int samples) const override;
+    std::optional<std::vector<Mat>> bezierPieces(const Mat &P) const override;
     int degree() const { return m_degree; }
 
 private:

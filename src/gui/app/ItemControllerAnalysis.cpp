@@ -6,6 +6,7 @@
 #include "gui/views/BackgroundPriority.h"
 
 #include "core/analysis/Geometry.h"
+#include "core/analysis/HausdorffBracket.h"
 #include "core/ifs/Attractor.h"
 #include "core/schemes/Scheme.h"
 #include "gui/views/AnalysisCharts.h"
@@ -118,16 +119,19 @@ void ItemController::startAnalysis()
     emit analysisStarted();
     // The curve the attractor is measured against (a closed-form limit curve, or for a
     // complex Bézier curve the Takagi image of 004 Conj. 3.7.1, where the distance levels off
-    // at O(y^2) instead of going to 0).
+    // at O(y^2) instead of going to 0): its samples for the length chart, its exact pieces for
+    // the certified distance (core HausdorffBracket, as attractor-cli analyse reports it).
     const auto exactCurve = exactCurveOf(item, kExactSamples);
     const Mat exact = exactCurve ? exactCurve->points : Mat();
+    const auto certified = certifiedExactCurveOf(item);
+    std::shared_ptr<const CertifiedCurve> curve = certified ? certified->curve : nullptr;
     // The legend says Fᵏ(X₀) (named in applyAnalysis: no Qt string on the worker, whose copy
     // would be released at the thread's exit while Qt Charts frees the shared text on the GUI
     // thread, an order ThreadSanitizer cannot see inside the uninstrumented Qt); what it is
     // measured against goes to the chart's tooltip.
-    m_charts->setDistanceReference(exactCurve ? tr("Fᵏ(X₀) to the %1").arg(exactCurve->label)
-                                              : QString());
-    m_worker = std::thread([this, d, start, scheme, P, exact, maxDepth, ticket] {
+    m_charts->setDistanceReference(certified ? tr("Fᵏ(X₀) to the %1").arg(certified->label)
+                                             : QString());
+    m_worker = std::thread([this, d, start, scheme, P, exact, curve, maxDepth, ticket] {
         lowerThisThreadPriority(); // the pictures' workers first
         auto result = std::make_shared<AnalysisResult>();
         try {
@@ -148,9 +152,13 @@ void ItemController::startAnalysis()
                     > analysisImages)
                     break;
                 deepest = planePoints(d->ifs, start, k, &m_cancel);
-                if (exact.rows() > 1 && deepest.rows() > 0) {
+                if (curve && deepest.rows() > 0 && !m_cancel) {
+                    // The midpoint of the certified bracket (relative width 1e-3).
+                    HausdorffBracketOptions options;
+                    options.cancel = &m_cancel;
+                    const HausdorffBracket h = hausdorffBracket(deepest, *curve, options);
                     series.depth.push_back(k);
-                    series.distance.push_back(hausdorffToCurve(deepest, exact));
+                    series.distance.push_back(h.value.mid());
                 }
                 m_inbox.post([this, k, maxDepth] {
                     emit analysisProgress(double(k + 1) / double(maxDepth + 2));
