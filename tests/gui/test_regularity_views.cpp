@@ -98,8 +98,19 @@ void TestRegularityViews::chartSweepsOmega()
     QVERIFY(done.wait(awb::test::ms(60000)));
     QCOMPARE(int(chart.samples().size()), 21);
     auto series = chart.chart()->series();
-    QCOMPARE(series.size(), 3);   // lower, upper, known values
+    // lower, upper, known values, and the bands: C^0 and C^1 (issue 32)
     QCOMPARE(qobject_cast<QLineSeries *>(series[0])->count(), 21);
+    QCOMPARE(series.size(), 3 + int(chart.bands().size()));
+    bool c1 = false;
+    for (const RegularityChart::Band &b : chart.bands()) {
+        if (b.smoothness != 1)
+            continue;
+        // C^1 exactly for 0 < omega < omega* = 0.19273 (beyond this range: its end)
+        c1 = true;
+        QVERIFY(std::min(b.from, b.fromOuter) <= 0.0 && 0.0 <= std::max(b.from, b.fromOuter));
+        QCOMPARE(b.to, 0.1875);
+    }
+    QVERIFY(c1);
     for (const RegularityChart::Sample &s : chart.samples()) {
         QVERIFY(s.lower <= s.upper);
         if (std::abs(s.omega) < 1e-12)

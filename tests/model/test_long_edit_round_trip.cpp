@@ -77,6 +77,10 @@ private:
             return QPointF(z.x() + uniform(-0.05, 0.05), z.y() + uniform(-0.05, 0.05));
         }
         case ParameterInfo::Type::Bool: return !now.toBool();
+        // A mask: one more coefficient 0 (the cosets' sums stay), or the read-only symbol
+        // (refused).
+        case ParameterInfo::Type::Text:
+            return p.readOnly ? now : QVariant(now.toString() + QStringLiteral(", 0"));
         }
         return now;
     }

@@ -1,8 +1,12 @@
 #include "gui/views/RegularityChart.h"
 
 #include "core/analysis/Regularity.h"
+#include "core/analysis/RegularityFamily.h"
 #include "core/schemes/Scheme.h"
+#include "model/SchemeRegularity.h"
+#include "model/SubdivisionCurveItem.h"
 
+#include <QAreaSeries>
 #include <QChart>
 #include <QChartView>
 #include <QHBoxLayout>
@@ -42,7 +46,7 @@ RegularityChart::RegularityChart(QWidget *parent) : QWidget(parent)
     dashed.setStyle(Qt::DashLine);
     upper->setPen(dashed);
     auto *known = new QScatterSeries;
-    known->setName(tr("known: ω = 0 → 1, ω = 1/16 → 2"));
+    known->setName(tr("r(0) = 1, r(1/16) = 2"));
     known->append(0.0, 1.0);
     known->append(1.0 / 16.0, 2.0);
     known->setMarkerSize(10);
@@ -73,6 +77,7 @@ RegularityChart::RegularityChart(QWidget *parent) : QWidget(parent)
     m_view = new QChartView(chart);
     m_view->setRenderHint(QPainter::Antialiasing);
     m_view->setMinimumSize(520, 360);
+    resize(820, 560);
     m_status = new QLabel;
     m_status->setObjectName(QStringLiteral("regularityChartStatus"));
     m_progress = new QProgressBar;
@@ -94,10 +99,17 @@ QChart *RegularityChart::chart() const { return m_view->chart(); }
 
 void RegularityChart::cancel() { m_worker.cancel(); }
 
-void RegularityChart::compute(double omegaMin, double omegaMax, int count, double budget)
+void RegularityChart::compute(double omegaMin, double omegaMax, int count, double budget,
+                              const std::vector<int> &classes)
 {
     m_worker.stop();
     m_samples.clear();
+    m_bands.clear();
+    for (QAbstractSeries *s : chart()->series())
+        if (qobject_cast<QAreaSeries *>(s)) {
+            chart()->removeSeries(s);
+            delete s;
+        }
     lineSeries(chart(), tr("lower bound"))->clear();
     lineSeries(chart(), tr("upper bound"))->clear();
     auto *x = qobject_cast<QValueAxis *>(chart()->axes(Qt::Horizontal).value(0));
@@ -115,12 +127,38 @@ void RegularityChart::compute(double omegaMin, double omegaMax, int count, doubl
             RegularityOptions o;
             o.timeBudget = budget;
             o.cancel = cancel;
-            const Regularity r = schemeRegularity(fourPointScheme(omega), 8, o);
+            SchemeSpec four;
+            four.kind = SchemeSpec::Kind::FourPoint;
+            four.omega = omega;
+            const Regularity r = specRegularity(four, 8, o);
             if (!r.applies)
                 continue;
             const Sample s{omega, r.lower, r.upper};
             m_worker.post([=, this] { addSample(s, count, generation); });
         }
+        // The bands: where the scheme is certified C^k, the ends bisected.
+        std::vector<Band> bands;
+        for (const int k : classes) {
+            if (cancel->load())
+                break;
+            FamilyOptions f;
+            f.grid = 24;
+            f.tolerance = 1e-5;
+            f.maxBisections = 30;
+            f.budgetPerValue = budget;
+            f.cancel = cancel;
+            const FamilyResult family = regularityInterval(
+                [](double t, const RegularityOptions &o) {
+                    SchemeSpec four;
+                    four.kind = SchemeSpec::Kind::FourPoint;
+                    four.omega = t;
+                    return specRegularity(four, 8, o);
+                },
+                omegaMin, omegaMax, k, f);
+            for (const FamilyRun &run : family.runs)
+                bands.push_back({k, run.from.inner, run.from.outer, run.to.inner, run.to.outer});
+        }
+        m_worker.post([=, this] { addBands(bands, generation); });
         m_worker.post([=, this] { done(generation); });
     });
 }
@@ -137,6 +175,38 @@ void RegularityChart::addSample(const Sample &s, int total, quint64 generation)
     emit progressed(int(m_samples.size()), total);
 }
 
+void RegularityChart::addBands(const std::vector<Band> &bands, quint64 generation)
+{
+    if (!m_worker.isCurrent(generation))
+        return;
+    m_bands = bands;
+    auto *x = chart()->axes(Qt::Horizontal).value(0);
+    auto *y = chart()->axes(Qt::Vertical).value(0);
+    for (const Band &b : bands) {
+        // From the axis up to k: "r > k here", tinted by class (C^1 over C^0).
+        auto *top = new QLineSeries, *bottom = new QLineSeries;
+        const double height = std::max(double(b.smoothness), 0.15);  // C^0: a strip on the axis
+        top->append(b.from, height);
+        top->append(b.to, height);
+        bottom->append(b.from, 0.0);
+        bottom->append(b.to, 0.0);
+        auto *area = new QAreaSeries(top, bottom);
+        const QString sup = b.smoothness == 0 ? QStringLiteral("⁰")
+                            : b.smoothness == 1 ? QStringLiteral("¹")
+                                                : QStringLiteral("^%1").arg(b.smoothness);
+        // The legend stays short; the status line gives the ends with their brackets.
+        area->setName(tr("C%1 (certified)").arg(sup));
+        QColor fill = b.smoothness == 0 ? QColor(120, 120, 120, 70) : QColor(40, 160, 80, 60);
+        area->setBrush(fill);
+        area->setPen(Qt::NoPen);
+        chart()->addSeries(area);
+        if (x && y) {
+            area->attachAxis(x);
+            area->attachAxis(y);
+        }
+    }
+}
+
 void RegularityChart::done(quint64 generation)
 {
     if (!m_worker.isCurrent(generation))
@@ -146,10 +216,22 @@ void RegularityChart::done(quint64 generation)
     double widest = 0.0;
     for (const Sample &s : m_samples)
         widest = std::max(widest, s.upper - s.lower);
+    QString c1;
+    for (const Band &b : m_bands)
+        if (b.smoothness == 1)
+            c1 = tr("; C¹ for ω in (%1, %2), the ends in [%3, %4] and [%5, %6]")
+                     .arg(b.from, 0, 'g', 6)
+                     .arg(b.to, 0, 'g', 6)
+                     .arg(std::min(b.from, b.fromOuter), 0, 'g', 6)
+                     .arg(std::max(b.from, b.fromOuter), 0, 'g', 6)
+                     .arg(std::min(b.to, b.toOuter), 0, 'g', 6)
+                     .arg(std::max(b.to, b.toOuter), 0, 'g', 6);
     m_status->setText(tr("%1 values of ω; widest interval %2 (bounds certified; the upper "
-                         "bound is exact for this interpolatory scheme)")
+                         "bound is exact for this interpolatory scheme)%3")
                           .arg(m_samples.size())
-                          .arg(widest, 0, 'g', 2));
+                          .arg(widest, 0, 'g', 2)
+                          .arg(c1));
+    m_status->setWordWrap(true);
     emit finished();
 }
 

@@ -31,13 +31,24 @@ public:
     explicit RegularityChart(QWidget *parent = nullptr);
     ~RegularityChart() override;
 
+    // One band: the omega interval where the scheme is certified C^k, each end bracketed
+    // [inner, outer] by bisection on certified bounds (core RegularityFamily, the computation
+    // of `attractor-cli regularity-interval`).
+    struct Band {
+        int smoothness = 1;
+        double from = 0.0, fromOuter = 0.0;  // inner end certified C^k, outer certified not
+        double to = 0.0, toOuter = 0.0;
+    };
+
     // Sweeps omega over [omegaMin, omegaMax] in `count` evenly spaced values (restarting a
-    // running sweep), each with `budget` seconds for its joint spectral radius.
+    // running sweep), each with `budget` seconds for its joint spectral radius; then the bands
+    // of the classes C^k, k in `classes`.
     void compute(double omegaMin = -0.125, double omegaMax = 0.375, int count = 81,
-                 double budget = 0.1);
+                 double budget = 0.1, const std::vector<int> &classes = {0, 1});
     void cancel();
     bool isRunning() const { return m_running; }
     const std::vector<Sample> &samples() const { return m_samples; }
+    const std::vector<Band> &bands() const { return m_bands; }
     QChart *chart() const;
     QChartView *chartView() const { return m_view; }
 
@@ -47,6 +58,7 @@ signals:
 
 private:
     void addSample(const Sample &s, int total, quint64 generation);
+    void addBands(const std::vector<Band> &bands, quint64 generation);
     void done(quint64 generation);
 
     QChartView *m_view = nullptr;
@@ -55,6 +67,7 @@ private:
     QPushButton *m_cancel = nullptr;
     CancellableWorker m_worker{this};
     std::vector<Sample> m_samples;
+    std::vector<Band> m_bands;
     bool m_running = false;
 };
 
