@@ -20,7 +20,7 @@ using Clock = std::chrono::steady_clock;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr double kTie = 1e-10;          // relative: near-ties of rho(A_w)^{1/|w|}
 constexpr double kDominance = 1e-8;     // relative gap to the second eigenvalue modulus
-constexpr double kExtension = 1e-3;     // eps of the complement's vertices (step 4)
+constexpr double kCoupling = 0.5;       // the complement's images use at most this of P|W
 constexpr long long kProductBudget = 1 << 15;
 
 std::string num(double v, int digits = 10)
@@ -157,6 +157,27 @@ std::optional<Vec> dominantEigenvector(const std::vector<Mat> &A, const std::vec
     return v;
 }
 
+// Every product of length L below 1e-10 s^L (s = max ||A_i||_F): the family is nilpotent to
+// rounding (a semigroup of nilpotent matrices is triangularisable, Levitzki: all products of
+// length L vanish). Only checked when there are at most 4096 such products.
+bool numericallyNilpotent(const std::vector<Mat> &A, double s)
+{
+    const int L = int(A.front().rows());
+    if (std::pow(double(A.size()), L) > 4096)
+        return false;
+    const double bound = 1e-10 * std::pow(s, L);
+    std::vector<Mat> level{Mat::Identity(L, L)};
+    for (int len = 1; len <= L; ++len) {
+        std::vector<Mat> next;
+        for (const Mat &P : level)
+            for (const Mat &M : A)
+                next.push_back(P * M);
+        level.swap(next);
+    }
+    return std::all_of(level.begin(), level.end(),
+                       [&](const Mat &P) { return P.norm() <= bound; });
+}
+
 class Search {
 public:
     Search(const std::vector<Mat> &A, double rhoHat, const PolytopeOptions &o, Clock::time_point t0)
@@ -218,11 +239,58 @@ public:
                 Eigen::ColPivHouseholderQR<Mat> qr(m_V);
                 qr.setThreshold(1e-9);
                 const Mat Q = qr.householderQ() * Mat::Identity(m_L, m_L);
-                for (int k = int(qr.rank()); k < m_L; ++k)
-                    next.push_back(addVertex(kExtension * Q.col(k)));
+                const int r = int(qr.rank());
+                const double eps = extensionScale(Q, r);
+                for (int k = r; k < m_L; ++k)
+                    next.push_back(addVertex(eps * Q.col(k)));
+                m_extension = eps;
             }
             generation.swap(next);
         }
+    }
+
+    // eps for the complement's vertices eps u_k: as large as the coupling into W allows, since
+    // the inner ball's radius (the residuals' weight in the certificate) grows with eps: the
+    // W-parts of B_i u_k take at most kCoupling of the polytope's norm on W.
+    double extensionScale(const Mat &Q, int r) const
+    {
+        const Mat QW = Q.leftCols(r);
+        double coupling = 0.0;
+        for (int k = r; k < m_L; ++k)
+            for (int i = 0; i < int(m_A.size()); ++i) {
+                const Vec w = image(i, Q.col(k));
+                const AbsoluteCombination c = absoluteCombination(m_V, QW * (QW.transpose() * w));
+                coupling = std::max(coupling, c.feasible ? c.norm : 1e3);
+            }
+        return std::clamp(kCoupling / std::max(coupling, 1e-300), 1e-3, 1.0);
+    }
+
+    // After an extension, the combinations found while the vertices spanned only W carry the
+    // images' tiny components off W (rounding, or matrices reducible only to ~1e-10) as
+    // residuals; those are weighed by 1/delta in the certificate. Re-solving them against the
+    // full-dimensional polytope moves such components onto the complement's vertices.
+    void polish()
+    {
+        if (m_extension == 0.0)
+            return;
+        const double weight = std::sqrt(double(m_L)) / m_extension;
+        for (size_t j = 0; j < m_vertices.size(); ++j)
+            for (int i = 0; i < int(m_A.size()); ++i) {
+                auto &lam = m_lambda[j][size_t(i)];
+                const Vec y = image(i, m_vertices[j]);
+                Vec z = Vec::Zero(m_L);
+                double s = 0.0;
+                for (const auto &[m, l] : lam) {
+                    z += l * m_vertices[size_t(m)];
+                    s += std::abs(l);
+                }
+                const double before = s + (y - z).norm() * weight;
+                if ((y - z).norm() <= 1e-15 * (1.0 + y.norm()))
+                    continue;
+                const AbsoluteCombination c = absoluteCombination(m_V, y);
+                if (c.feasible && c.norm + c.residual * weight < before)
+                    lam = c.lambda;
+            }
     }
 
     int rank() const
@@ -276,6 +344,7 @@ private:
     Clock::time_point m_start;
     int m_L;
     Mat m_V;
+    double m_extension = 0.0;   // eps of the complement's vertices; 0 before an extension
     std::vector<Vec> m_vertices;
     std::vector<std::vector<std::vector<std::pair<int, double>>>> m_lambda;
 };
@@ -501,6 +570,18 @@ PolytopeResult invariantPolytope(const std::vector<Mat> &A, const PolytopeOption
     out.smp = ties.front().word;
     double rhoHat = 0.0;
     out.lower = certifiedLower(A, out.smp, &rhoHat);
+    double scale = 0.0;
+    for (const Mat &M : A)
+        scale = std::max(scale, M.norm());
+    if (rhoHat < 1e-2 * scale && numericallyNilpotent(A, scale)) {
+        // rho^ is rounding noise of a nilpotent family (e.g. the quotient maps of a
+        // polynomial scheme), not a spectral radius to certify.
+        out.message = coreTranslate("awb::analysis", "the family is numerically nilpotent "
+                                                     "(every product of length L vanishes to "
+                                                     "rounding): JSR = 0, no s.m.p. to certify");
+        out.seconds = seconds(t0);
+        return out;
+    }
     std::string why;
     const std::optional<Vec> v = dominantEigenvector(A, out.smp, &why);
     if (!v) {
@@ -520,6 +601,8 @@ PolytopeResult invariantPolytope(const std::vector<Mat> &A, const PolytopeOption
         }
     }
     const bool closed = search.run(generation, out);
+    if (closed)
+        search.polish();
     const PolytopeCertificate cert = search.certificate(out.smp);
     out.vertices = int(cert.vertices.size());
     out.seconds = seconds(t0);

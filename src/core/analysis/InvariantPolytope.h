@@ -24,7 +24,10 @@
 //  4. Reducibility: if the vertices closed but span only a proper subspace W (then W is
 //     invariant under every A_i: the family is block triangular in a basis W + W'), the
 //     polytope is extended by eps * u_k for an orthonormal basis u_k of the orthogonal
-//     complement of W (eps = 1e-3) and the iteration continues from those vertices. This is
+//     complement of W and the iteration continues from those vertices (eps in [1e-3, 1], as
+//     large as keeps the W-parts of the images B_i u_k within half of P|W: the inner ball, and
+//     so the tolerance to residuals, grows with eps; the combinations found before are then
+//     re-solved against the full polytope, which absorbs components off W). This is
 //     the same algorithm on the whole space: the new orbits carry the quotient (diagonal)
 //     block D, and the search closes when D's products stay in eps-scaled copies of the
 //     polytope, i.e. when JSR(D) < rho^ or D has an invariant polytope of its own at level
@@ -36,7 +39,9 @@
 //     recomputed with a componentwise rounding bound added to r, and delta = sigma_min(V_S) /
 //     sqrt(L) is the radius of a Euclidean ball inside P (V_S: L columns of V chosen by
 //     pivoted QR; absco(V_S) contains V_S times the l2 ball of radius 1/sqrt(L)).
-// Trivial cases: L = 0 and all-zero matrices give JSR 0 exactly (an empty certificate).
+// Trivial cases: L = 0 and all-zero matrices give JSR 0 exactly (an empty certificate). A
+// family whose products of length L all vanish to rounding (1e-10 max ||A_i||_F^L) is
+// numerically nilpotent: its computed rho(A_w) are noise, and the algorithm does not apply.
 
 #include "core/analysis/JointSpectralRadius.h"
 
