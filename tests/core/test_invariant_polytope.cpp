@@ -456,6 +456,20 @@ void TestInvariantPolytope::tamperedCertificates()
         qInfo("changed matrix entry: %s", v.message.c_str());
     }
     {
+        // The same change with rhoHat made consistent again: the polytope is no longer
+        // invariant, and a (vertex, map) is named.
+        PolytopeCertificate c = *cert;
+        c.matrices[0](1, 2) += 1e-3;
+        Mat P = Mat::Identity(3, 3);
+        for (int i : c.smp)
+            P = P * c.matrices[size_t(i)];
+        c.rhoHat = std::pow(spectralRadiusOf(P), 1.0 / double(c.smp.size()));
+        const PolytopeVerdict v = verifyPolytopeCertificate(c);
+        QVERIFY(!v.ok);
+        QVERIFY(v.failingVertex >= 0 && v.failingMap >= 0);
+        qInfo("changed matrix entry, consistent rhoHat: %s", v.message.c_str());
+    }
+    {
         PolytopeCertificate c = *cert;
         c.vertices[0](0) += 1e-3;   // the s.m.p.'s leading eigenvector: on the boundary
         const PolytopeVerdict v = verifyPolytopeCertificate(c);
