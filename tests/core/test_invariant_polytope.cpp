@@ -15,6 +15,9 @@
 #include "core/analysis/Regularity.h"
 #include "core/schemes/Scheme.h"
 
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QtTest>
 
 #include "TestMain.h"
@@ -429,7 +432,21 @@ void TestInvariantPolytope::randomFamilies()
         const PolytopeVerdict v = verifyPolytopeCertificate(*p.certificate);
         QVERIFY2(v.ok, v.message.c_str());
         QCOMPARE(v.upper, p.upper);
-        QVERIFY(certificateJson(*p.certificate).find("\"rhoHat\"") != std::string::npos);
+        // The JSON text parses, and its numbers read back to the same doubles.
+        QJsonParseError error;
+        const QJsonDocument doc = QJsonDocument::fromJson(
+            QByteArray::fromStdString(certificateJson(*p.certificate)), &error);
+        QCOMPARE(error.error, QJsonParseError::NoError);
+        const QJsonObject json = doc.object();
+        QCOMPARE(json["rhoHat"].toDouble(), p.certificate->rhoHat);
+        const QJsonArray vertices = json["vertices"].toArray();
+        QCOMPARE(vertices.size(), qsizetype(p.certificate->vertices.size()));
+        for (qsizetype j = 0; j < vertices.size(); ++j)
+            for (int k = 0; k < 3; ++k)
+                QCOMPARE(vertices[j].toArray()[k].toDouble(),
+                         p.certificate->vertices[size_t(j)](k));
+        QCOMPARE(json["lambda"].toArray().size(), vertices.size());
+        QCOMPARE(json["matrices"].toArray()[0].toArray()[1].toArray()[2].toDouble(), A[0](1, 2));
     }
     qInfo("random 3 x 3 families: %d of %d closed", closed, tried);
     QVERIFY(closed >= tried / 2);

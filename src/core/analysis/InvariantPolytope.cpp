@@ -33,8 +33,11 @@ std::string num(double v, int digits = 10)
 std::string wordText(const std::vector<int> &w)
 {
     std::string s;
-    for (size_t k = 0; k < w.size(); ++k)
-        s += (k ? " " : "") + std::to_string(w[k]);
+    for (size_t k = 0; k < w.size(); ++k) {
+        if (k)
+            s += ' ';
+        s += std::to_string(w[k]);
+    }
     return s;
 }
 
@@ -499,8 +502,11 @@ std::string certificateJson(const PolytopeCertificate &c)
     }
     os << "\n  ],\n  \"smp\": [" << [&] {
         std::string s;
-        for (size_t k = 0; k < c.smp.size(); ++k)
-            s += (k ? ", " : "") + std::to_string(c.smp[k]);
+        for (size_t k = 0; k < c.smp.size(); ++k) {
+            if (k)
+                s += ", ";
+            s += std::to_string(c.smp[k]);
+        }
         return s;
     }() << "],\n  \"rhoHat\": " << num(c.rhoHat, 17) << ",\n  \"vertices\": [";
     for (size_t j = 0; j < c.vertices.size(); ++j) {
