@@ -98,10 +98,11 @@ void fillBounds(Regularity &r, double shift, double cap)
 // and a disjoint pair, which would mean a bug, is refused).
 void applyPolytope(Regularity &r, const RegularityOptions &o)
 {
-    if (o.polytopeBudget <= 0 || r.jsr.cancelled || (o.cancel && o.cancel->load()))
+    const double budget = o.polytopeBudget < 0 ? 0.5 * o.timeBudget : o.polytopeBudget;
+    if (budget <= 0 || r.jsr.cancelled || (o.cancel && o.cancel->load()))
         return;
     PolytopeOptions p;
-    p.timeBudget = o.polytopeBudget;
+    p.timeBudget = budget;
     p.cancel = o.cancel;
     const PolytopeResult pr = invariantPolytope(r.transition, p);
     r.polytopeNote = pr.message;

@@ -34,8 +34,9 @@ class CurveScheme;
 struct RegularityOptions {
     double timeBudget = 2.0;                    // seconds of wall time for the JSR
     // Seconds for the invariant polytope algorithm (InvariantPolytope.h), run after the bounds
-    // on the same matrices; 0 skips it. When it closes, rho_n is exact (a certificate).
-    double polytopeBudget = 1.0;
+    // on the same matrices; 0 skips it, negative means half of timeBudget (so a caller's time
+    // grows by at most half). When it closes, rho_n is exact (a certificate).
+    double polytopeBudget = -1.0;
     const std::atomic<bool> *cancel = nullptr;  // set from another thread to stop early
     // The current bounds (regularity and JSR) and the fraction of the budget spent.
     std::function<void(double lower, double upper, double fraction)> progress;
