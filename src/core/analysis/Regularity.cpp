@@ -83,12 +83,58 @@ void fillBounds(Regularity &r, double shift, double cap)
             coreTranslate("awb::analysis", "C^%1, Hölder regularity in [%2, %3]"), r.smoothness,
             streamedNumber(r.lower), streamedNumber(r.upper));
     std::string notes;
-    if (r.jsr.cancelled)
+    // The budget notes concern the branch and bound: an exact value supersedes them.
+    if (r.exact)
+        notes += "";
+    else if (r.jsr.cancelled)
         notes += coreTranslate("awb::analysis", "cancelled; the bounds are those reached. ");
     else if (r.jsr.timedOut)
         notes += coreTranslate("awb::analysis", "time budget spent; the bounds are those "
                                                 "reached. ");
     r.notes = notes + r.notes;
+}
+
+// After the bounds: the invariant polytope algorithm on the same matrices. Its certified
+// bracket replaces the bounds when it closes (both are certified: the intersection is kept,
+// and a disjoint pair, which would mean a bug, is refused).
+void applyPolytope(Regularity &r, const RegularityOptions &o)
+{
+    const double budget = o.polytopeBudget < 0 ? 0.5 * o.timeBudget : o.polytopeBudget;
+    if (budget <= 0 || r.jsr.cancelled || (o.cancel && o.cancel->load()))
+        return;
+    PolytopeOptions p;
+    p.timeBudget = budget;
+    p.cancel = o.cancel;
+    const PolytopeResult pr = invariantPolytope(r.transition, p);
+    r.polytopeNote = pr.message;
+    const double tol = 1e-9;
+    if (!pr.closed || pr.lower > r.jsr.upper * (1 + tol) || pr.upper < r.jsr.lower * (1 - tol)) {
+        if (pr.closed)
+            r.polytopeNote = coreTranslate("awb::analysis", "the invariant polytope's bracket "
+                                                            "contradicts the bounds; ignored");
+        r.notes += r.polytopeNote + ". ";
+        return;
+    }
+    r.exact = true;
+    r.smp = pr.smp;
+    r.certificate = pr.certificate;
+    r.jsr.lower = std::max(r.jsr.lower, pr.lower);
+    r.jsr.upper = std::max(r.jsr.lower, std::min(r.jsr.upper, pr.upper));
+    r.jsr.product = pr.smp;
+    r.jsr.converged = true;
+    r.jsr.seconds += pr.seconds;
+}
+
+std::string polytopeSummary(const Regularity &r)
+{
+    if (!r.exact)
+        return {};
+    std::ostringstream os;
+    os << "; exact by the invariant polytope algorithm (Guglielmi & Protasov 2013): s.m.p. (";
+    for (size_t k = 0; k < r.smp.size(); ++k)
+        os << (k ? " " : "") << "T_" << r.smp[k];
+    os << "), " << r.certificate->vertices.size() << " vertices";
+    return os.str();
 }
 
 std::string jsrSummary(const JsrBounds &b, int count, Eigen::Index size)
@@ -217,6 +263,7 @@ Regularity maskRegularity(const std::vector<double> &mask, int arity,
     r.applies = true;
     r.transition = transitionMatrices(d.mask, arity);
     r.jsr = jointSpectralRadius(r.transition, jsrOptions(options, arity, d.order, false));
+    applyPolytope(r, options);
     // Stable integer shifts are known for interpolatory masks (phi(k) = delta_k) and for
     // B-spline-like masks a = N sigma^n / N^n (a_n has one coefficient).
     bool interpolatory = false;
@@ -231,10 +278,10 @@ Regularity maskRegularity(const std::vector<double> &mask, int arity,
         interpolatory = ones == 1 && others == 0;
     }
     if (!interpolatory && d.mask.size() > 1)
-        r.notes = coreTranslate("awb::analysis", "the upper bound is the exact Hölder exponent "
-                                                 "only if the integer shifts of the basic limit "
-                                                 "function are stable (not checked for this "
-                                                 "mask). ");
+        r.notes += coreTranslate("awb::analysis", "the upper bound is the exact Hölder "
+                                                  "exponent only if the integer shifts of the "
+                                                  "basic limit function are stable (not checked "
+                                                  "for this mask). ");
     fillBounds(r, double(d.order), double(d.order));
     const std::string nth = ordinal(d.order);
     std::ostringstream m;
@@ -244,7 +291,7 @@ Regularity maskRegularity(const std::vector<double> &mask, int arity,
       << ")^" << d.order
       << "), rho_n the joint spectral radius of the transition matrices of the " << nth
       << " divided-difference mask (Daubechies & Lagarias 1992, Rioul 1992); "
-      << jsrSummary(r.jsr, arity, r.transition.front().rows());
+      << jsrSummary(r.jsr, arity, r.transition.front().rows()) << polytopeSummary(r);
     r.method = m.str();
     if (const SobolevRegularity sob = sobolevRegularity(a, arity); sob.applies)
         r.sobolev = sob.exponent;
@@ -369,8 +416,9 @@ Regularity matrixRegularity(const std::vector<Mat> &S, const RegularityOptions &
     for (const Mat &Si : S)
         r.transition.push_back(U.transpose() * Si * U);
     r.jsr = jointSpectralRadius(r.transition, jsrOptions(options, N, n, true));
-    r.notes = coreTranslate("awb::analysis", "the upper bound assumes the curve's basis "
-                                             "functions are stable. ");
+    applyPolytope(r, options);
+    r.notes += coreTranslate("awb::analysis", "the upper bound assumes the curve's basis "
+                                              "functions are stable. ");
     if (joined < generated)
         r.notes += formatMessage(coreTranslate("awb::analysis", "the pieces join only C^%1 "
                                                                 "(derivative %2 differs across a "
@@ -381,7 +429,7 @@ Regularity matrixRegularity(const std::vector<Mat> &S, const RegularityOptions &
     os << "r = -log_" << N << " rho with rho the joint spectral radius of S_1..S_" << N
        << " on the quotient by the control vectors of the polynomials of degree < " << n
        << " that they generate (Micchelli & Prautzsch 1989); "
-       << jsrSummary(r.jsr, N, m - n);
+       << jsrSummary(r.jsr, N, m - n) << polytopeSummary(r);
     r.method = os.str();
     return r;
 }

@@ -22,8 +22,10 @@
 // degree < n that the scheme generates; the quotient maps on the complement play the role of
 // the T_e (Micchelli & Prautzsch 1989). Bézier curves are polynomials: C^infinity.
 
+#include "core/analysis/InvariantPolytope.h"
 #include "core/analysis/JointSpectralRadius.h"
 
+#include <memory>
 #include <optional>
 
 namespace awb {
@@ -32,6 +34,10 @@ class CurveScheme;
 
 struct RegularityOptions {
     double timeBudget = 2.0;                    // seconds of wall time for the JSR
+    // Seconds for the invariant polytope algorithm (InvariantPolytope.h), run after the bounds
+    // on the same matrices; 0 skips it, negative means half of timeBudget (so a caller's time
+    // grows by at most half). When it closes, rho_n is exact (a certificate).
+    double polytopeBudget = -1.0;
     const std::atomic<bool> *cancel = nullptr;  // set from another thread to stop early
     // The current bounds (regularity and JSR) and the fraction of the budget spent.
     std::function<void(double lower, double upper, double fraction)> progress;
@@ -52,7 +58,14 @@ struct Regularity {
     std::string method;        // how the bounds were obtained, with references
     std::string message;       // why it does not apply, or a short verdict
     std::string notes;         // caveats (stability assumption, budget spent, ...)
-    JsrBounds jsr;             // the bounds on rho_n
+    JsrBounds jsr;             // the bounds on rho_n (the polytope's when exact)
+    // rho_n is exact: an invariant polytope closed, lower/upper are its certified values
+    // (width ~1e-12 relative), `smp` the spectrum maximizing product (indices into
+    // `transition`), `certificate` re-checkable by verifyPolytopeCertificate.
+    bool exact = false;
+    std::vector<int> smp;
+    std::shared_ptr<const PolytopeCertificate> certificate;
+    std::string polytopeNote;  // the polytope algorithm's verdict (closed, did not close, n/a)
     std::vector<Mat> transition;  // T_0..T_{N-1} (or the quotient maps) whose JSR was bounded
     // Masks: the Sobolev exponent s_2 of the basic limit function (sobolevRegularity in
     // Sobolev.h: exact for stable shifts, a lower bound otherwise), when that applies. The
