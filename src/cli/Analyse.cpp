@@ -17,6 +17,7 @@
 #include "model/NumberFormat.h"
 #include "model/PointExport.h"
 #include "model/Project.h"
+#include "model/RegularityCertificate.h"
 #include "model/SchemeRegularity.h"
 #include "model/NormalVectorItem.h"
 #include "model/SubdivisionCurveItem.h"
@@ -154,7 +155,8 @@ QJsonValue hausdorffToExact(const AttractorItem *item, const DerivedIfs &d)
                        {"curve", exact->label}};
 }
 
-QJsonObject analyseItem(const AttractorItem *item)
+// `regularity`, when given, receives the curve's regularity (its certificate for --certificate).
+QJsonObject analyseItem(const AttractorItem *item, Regularity *regularity = nullptr)
 {
     QJsonObject o;
     o["name"] = item->name();
@@ -248,9 +250,14 @@ QJsonObject analyseItem(const AttractorItem *item)
         for (auto it = m.begin(); it != m.end(); ++it)
             o[it.key()] = it.value();
     }
-    // The scheme's certified Hölder regularity (issue 16): an interval, its class C^n, how.
-    if (const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item))
-        o["regularity"] = regularityJson(itemRegularity(*curve));
+    // The scheme's certified Hölder regularity (issue 16): an interval, its class C^n, how;
+    // exact with an invariant polytope's certificate where one closes (issue 32).
+    if (const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item)) {
+        const Regularity r = itemRegularity(*curve);
+        o["regularity"] = regularityJson(r);
+        if (regularity)
+            *regularity = r;
+    }
     if (const auto *s = qobject_cast<const SubdivisionSurfaceItem *>(item)) {
         o["kind"] = item->type();
         o["scheme"] = SurfaceSchemeSpec::kindNames().at(int(s->scheme().kind));
@@ -325,15 +332,38 @@ int analyse(const QStringList &args)
                    "subdivision curve the certified Hölder regularity of its scheme."));
         parser.addPositionalArgument("project", CliTr::tr("The .awb project file."));
         parser.addOptions({{"item", CliTr::tr("Only this item."), "name"},
-                           {"json", CliTr::tr("Print JSON (the only format so far).")}});
+                           {"json", CliTr::tr("Print JSON (the only format so far).")},
+                           {"certificate",
+                            CliTr::tr("With --item: write the certificate of the curve's exact "
+                                      "Hölder exponent (verify-regularity checks it)."),
+                            "file"}});
         parseOrFail(parser, args, 1);
         if (!parser.isSet("json"))
             throw Failure{CliTr::tr("--json is required (the only output format)"), 2};
+        if (parser.isSet("certificate") && !parser.isSet("item"))
+            throw Failure{CliTr::tr("--certificate needs --item: the certificate is one "
+                                    "curve's"),
+                          2};
         Project project;
         load(project, parser.positionalArguments().first());
         QJsonArray items;
         if (parser.isSet("item")) {
-            items.append(analyseItem(attractorItem(project, parser.value("item"))));
+            const AttractorItem *item = attractorItem(project, parser.value("item"));
+            Regularity regularity;
+            items.append(analyseItem(item, &regularity));
+            if (parser.isSet("certificate")) {
+                const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item);
+                if (!curve)
+                    throw Failure{CliTr::tr("item '%1' is not a subdivision curve: no "
+                                            "regularity to certify")
+                                      .arg(item->name())};
+                QString why;
+                const QByteArray cert = regularityCertificate(curve->scheme(), regularity, &why);
+                if (cert.isEmpty())
+                    throw Failure{CliTr::tr("item '%1': %2").arg(item->name(), why)};
+                if (!writeWholeFile(parser.value("certificate"), cert, &why))
+                    throw Failure{why};
+            }
         } else {
             for (Item *item : project.items())
                 if (auto *a = qobject_cast<AttractorItem *>(item))

@@ -26,5 +26,7 @@ int valences(const QStringList &args);
 int importFile(const QStringList &args);
 // RegularityInterval.cpp: where a curve scheme is C^k as a parameter moves (bisection).
 int regularityInterval(const QStringList &args);
+// VerifyRegularity.cpp: re-checks a certificate of an exact Hölder exponent.
+int verifyRegularity(const QStringList &args);
 
 } // namespace awb::cli

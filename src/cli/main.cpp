@@ -105,6 +105,7 @@ void usage()
                     "  import-mesh  a mesh file (OBJ, OFF, PLY) as a project with a mesh item\n"
                     "  valences   lambda, mu, Reif's C1 verdict per valence (Catmull-Clark, Loop)\n"
                     "  regularity-interval  where a scheme is C^k as a parameter moves\n"
+                    "  verify-regularity  re-check the certificate of an exact Hölder exponent\n"
                     "  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG\n\n"
                     "Run 'attractor-cli <command> --help' for the options of a command.\n");
 }
@@ -144,7 +145,8 @@ int main(int argc, char **argv)
     const QString command = args[1];
     // JSON output is for programs: the core's notes, verdicts and errors in it stay in English.
     if (command == "analyse" || command == "analyze" || command == "polygon"
-        || command == "valences" || command == "regularity-interval")
+        || command == "valences" || command == "regularity-interval"
+        || command == "verify-regularity")
         setMessageTranslator(nullptr);
     args.removeAt(1);
     args[0] = "attractor-cli " + command;
@@ -175,6 +177,8 @@ int main(int argc, char **argv)
             return cli::importFile(args);
         if (command == "regularity-interval")
             return cli::regularityInterval(args);
+        if (command == "verify-regularity")
+            return cli::verifyRegularity(args);
     } catch (const InputError &e) {
         err() << "attractor-cli " << command << ": " << e.what() << "\n";
         return 1;

@@ -62,6 +62,15 @@ QJsonObject regularityJson(const Regularity &r)
     QJsonArray word;
     for (int i : r.jsr.product)
         word.append(i);
+    // Exact (issue 32): an invariant polytope closed; `smp` its spectrum maximizing product
+    // (indices of the transition matrices T_0..T_(N-1)), `method` names it.
+    o["exact"] = r.exact;
+    QJsonArray smp;
+    for (int i : r.smp)
+        smp.append(i);
+    o["smp"] = r.exact ? QJsonValue(smp) : QJsonValue(QJsonValue::Null);
+    if (!r.polytopeNote.empty())
+        o["polytope"] = QString::fromStdString(r.polytopeNote);
     o["jsr"] = QJsonObject{{"lower", r.jsr.lower},
                            {"upper", r.jsr.upper},
                            {"product", word},

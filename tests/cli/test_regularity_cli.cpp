@@ -28,6 +28,7 @@ private slots:
     void divergentFourPoint();
     void fourPointC1Interval();
     void maskOfDaubechiesD4();
+    void certificatesVerifiedAndTamperingCaught();
 
 private:
     QJsonObject regularity(const QString &file, const QString &item)
@@ -163,6 +164,112 @@ void TestRegularityCli::maskOfDaubechiesD4()
     QCOMPARE(r["smoothness"].toString(), QString("C^0"));
     QCOMPARE(r["sum_rules"].toInt(), 2);
     QVERIFY(std::abs(r["sobolev"].toDouble() - 1.0) < 1e-9);  // Villemoes 1994
+}
+
+void TestRegularityCli::certificatesVerifiedAndTamperingCaught()
+{
+    // The Dubuc-Deslauriers 6-point scheme (Rioul 1992: 2.830075 = 6 - log2 9): exact, its
+    // certificate written by analyse and accepted by verify-regularity; every tampering is
+    // rejected with its reason.
+    const QString file = m_dir.filePath("dd6.awb");
+    QFile f(file);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(R"({"format": "attractor-workbench", "version": 1, "items": [
+        {"type": "subdivision-curve", "name": "DD6",
+         "scheme": {"kind": "mask", "arity": 2, "offset": -5, "mask": ["3/256", 0, "-25/256",
+                    0, "75/128", 1, "75/128", 0, "-25/256", 0, "3/256"]},
+         "control_points": [[0, 0], [1, 2], [2, 1], [3, 3], [4, 0], [5, 1], [6, 2], [7, 0],
+                            [8, 1], [9, 0], [10, 2]]}]})");
+    f.close();
+    const QString cert = m_dir.filePath("dd6.json");
+    QByteArray out, err;
+    QCOMPARE(awb::test::runProgram(awb::test::cliPath(),
+                                   {"analyse", file, "--item", "DD6", "--json", "--certificate",
+                                    cert},
+                                   &out, &err),
+             0);
+    const QJsonObject r = QJsonDocument::fromJson(out)
+                              .object()["items"].toArray().first().toObject()["regularity"]
+                              .toObject();
+    const double exact = 6 - std::log2(9.0);
+    QVERIFY(r["exact"].toBool());
+    QCOMPARE(r["smp"].toArray(), QJsonArray{0});
+    QVERIFY(std::abs(r["lower"].toDouble() - exact) < 1e-10);
+    QVERIFY(std::abs(r["upper"].toDouble() - exact) < 1e-10);
+
+    QCOMPARE(awb::test::runProgram(awb::test::cliPath(),
+                                   {"verify-regularity", cert, "--json"}, &out, &err),
+             0);
+    const QJsonObject v = QJsonDocument::fromJson(out).object();
+    QVERIFY(v["ok"].toBool());
+    const double lo = v["holder"].toObject()["lower"].toDouble();
+    const double hi = v["holder"].toObject()["upper"].toDouble();
+    QVERIFY2(lo <= exact && exact <= hi && hi - lo < 1e-9, qPrintable(QString::number(hi - lo)));
+
+    QFile in(cert);
+    QVERIFY(in.open(QIODevice::ReadOnly));
+    const QJsonObject good = QJsonDocument::fromJson(in.readAll()).object();
+    const auto rejected = [&](const QJsonObject &tampered, const char *reason) {
+        const QString bad = m_dir.filePath("bad.json");
+        QFile o(bad);
+        if (!o.open(QIODevice::WriteOnly))
+            return false;
+        o.write(QJsonDocument(tampered).toJson());
+        o.close();
+        QByteArray o1, e1;
+        const int code =
+            awb::test::runProgram(awb::test::cliPath(), {"verify-regularity", bad}, &o1, &e1);
+        if (code != 1 || !e1.contains("certificate rejected") || !e1.contains(reason))
+            qWarning("exit %d: %s", code, e1.constData());
+        return code == 1 && e1.contains(reason);
+    };
+    // A matrix entry changed: not the scheme's transition matrix.
+    QJsonObject t = good;
+    QJsonObject p = t["polytope"].toObject();
+    QJsonArray ms = p["matrices"].toArray();
+    QJsonArray m0 = ms[0].toArray();
+    QJsonArray row = m0[0].toArray();
+    row[0] = row[0].toDouble() + 1e-6;
+    m0[0] = row;
+    ms[0] = m0;
+    p["matrices"] = ms;
+    t["polytope"] = p;
+    QVERIFY(rejected(t, "is not the scheme's"));
+    // The mask changed (its matrices with it): the certificate's are no longer its own.
+    t = good;
+    QJsonObject scheme = t["scheme"].toObject();
+    scheme["mask"] = QJsonArray{"1/16", 0, "-1/8", 0, "9/16", 1, "9/16", 0, "-1/8", 0, "1/16"};
+    t["scheme"] = scheme;
+    QVERIFY(rejected(t, "is not the scheme's"));
+    // A vertex moved.
+    t = good;
+    p = t["polytope"].toObject();
+    QJsonArray vs = p["vertices"].toArray();
+    QJsonArray v0 = vs[0].toArray();
+    v0[0] = v0[0].toDouble() * 1.5 + 0.1;
+    vs[0] = v0;
+    p["vertices"] = vs;
+    t["polytope"] = p;
+    QVERIFY(rejected(t, "vertex"));
+    // A claim better than the proof.
+    t = good;
+    t["holder"] = QJsonObject{{"lower", 2.9}, {"upper", 2.95}};
+    QVERIFY(rejected(t, "is not what the polytope proves"));
+    // The scaling changed (T_1 for T_0 would be no tampering: the scheme is symmetric, both
+    // are spectrum maximizing).
+    t = good;
+    p = t["polytope"].toObject();
+    p["rhoHat"] = p["rhoHat"].toDouble() * 1.001;
+    t["polytope"] = p;
+    QVERIFY(rejected(t, "rho"));
+    // An empty word.
+    t = good;
+    p = t["polytope"].toObject();
+    p["smp"] = QJsonArray{};
+    t["polytope"] = p;
+    QVERIFY(rejected(t, "certificate rejected"));
+    // Not a certificate at all.
+    QVERIFY(rejected(QJsonObject{{"format", "something"}}, "not an attractor-workbench"));
 }
 
 AWB_TEST_GUILESS_MAIN(TestRegularityCli)

@@ -125,6 +125,38 @@ void applyPolytope(Regularity &r, const RegularityOptions &o)
     r.jsr.seconds += pr.seconds;
 }
 
+// The invariant polytope first, for a moment (it closes in milliseconds for the schemes of the
+// literature): when it does, rho_n is exact and the branch and bound is not needed. Otherwise
+// the bounds run, and the polytope gets the rest of its budget after them (applyPolytope).
+bool polytopeFirst(Regularity &r, const RegularityOptions &o, int arity, double shift)
+{
+    const double budget = o.polytopeBudget < 0 ? 0.5 * o.timeBudget : o.polytopeBudget;
+    if (budget <= 0 || (o.cancel && o.cancel->load()))
+        return false;
+    PolytopeOptions p;
+    p.timeBudget = std::min(0.2, budget);
+    p.cancel = o.cancel;
+    const PolytopeResult pr = invariantPolytope(r.transition, p);
+    if (!pr.closed)
+        return false;
+    r.polytopeNote = pr.message;
+    r.exact = true;
+    r.smp = pr.smp;
+    r.certificate = pr.certificate;
+    r.jsr = JsrBounds{};
+    r.jsr.lower = pr.lower;
+    r.jsr.upper = pr.upper;
+    r.jsr.product = pr.smp;
+    r.jsr.norm = "invariant polytope";
+    r.jsr.converged = true;
+    r.jsr.seconds = pr.seconds;
+    if (o.progress && pr.upper > 0 && pr.lower > 0) {
+        const double logN = std::log(double(arity));
+        o.progress(shift - std::log(pr.upper) / logN, shift - std::log(pr.lower) / logN, 1.0);
+    }
+    return true;
+}
+
 std::string polytopeSummary(const Regularity &r)
 {
     if (!r.exact)
@@ -140,7 +172,10 @@ std::string polytopeSummary(const Regularity &r)
 std::string jsrSummary(const JsrBounds &b, int count, Eigen::Index size)
 {
     std::ostringstream os;
-    os << "JSR of " << count << " matrices " << size << " x " << size << ": lower bound "
+    os << "JSR of " << count << " matrices " << size << " x " << size;
+    if (b.norm == "invariant polytope")
+        return os.str();  // polytopeSummary says how
+    os << ": lower bound "
        << "max rho(product)^(1/k) over all products up to length " << b.enumerated;
     if (b.depth > b.enumerated)
         os << " and the branch's products up to length " << b.depth;
@@ -262,8 +297,10 @@ Regularity maskRegularity(const std::vector<double> &mask, int arity,
     }
     r.applies = true;
     r.transition = transitionMatrices(d.mask, arity);
-    r.jsr = jointSpectralRadius(r.transition, jsrOptions(options, arity, d.order, false));
-    applyPolytope(r, options);
+    if (!polytopeFirst(r, options, arity, double(d.order))) {
+        r.jsr = jointSpectralRadius(r.transition, jsrOptions(options, arity, d.order, false));
+        applyPolytope(r, options);
+    }
     // Stable integer shifts are known for interpolatory masks (phi(k) = delta_k) and for
     // B-spline-like masks a = N sigma^n / N^n (a_n has one coefficient).
     bool interpolatory = false;
@@ -415,8 +452,10 @@ Regularity matrixRegularity(const std::vector<Mat> &S, const RegularityOptions &
     }
     for (const Mat &Si : S)
         r.transition.push_back(U.transpose() * Si * U);
-    r.jsr = jointSpectralRadius(r.transition, jsrOptions(options, N, n, true));
-    applyPolytope(r, options);
+    if (!polytopeFirst(r, options, N, 0.0)) {
+        r.jsr = jointSpectralRadius(r.transition, jsrOptions(options, N, n, true));
+        applyPolytope(r, options);
+    }
     r.notes += coreTranslate("awb::analysis", "the upper bound assumes the curve's basis "
                                               "functions are stable. ");
     if (joined < generated)
