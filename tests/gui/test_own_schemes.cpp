@@ -10,19 +10,27 @@
 #include "gui/app/Messages.h"
 #include "gui/app/PropertiesDock.h"
 #include "gui/views/MatrixView.h"
+#include "gui/views/RegularityPanel.h"
 #include "model/Project.h"
+#include "model/RegularityCertificate.h"
 #include "model/SubdivisionCurveItem.h"
 
 #include <QComboBox>
+#include <QFile>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QToolButton>
 #include <QtTest>
 
 #include "TestMain.h"
+
+#include "TestTime.h"
+
+#include <cmath>
 
 using namespace awb;
 
@@ -156,6 +164,29 @@ void TestOwnSchemes::maskTypedInProperties()
     auto *offset = w.propertiesWidget()->editor("scheme.offset");
     QVERIFY(offset);
     QVERIFY(item->derivedIfs());
+
+    // The Analysis dock: the exact Hölder exponent 2 - log2(1 + sqrt 3) (Daubechies & Lagarias
+    // 1992) by an invariant polytope, its certificate saved and verified.
+    auto *panel = w.findChild<RegularityPanel *>();
+    QVERIFY(panel);
+    w.controller()->refreshNow();
+    QSignalSpy done(panel, &RegularityPanel::finished);
+    QVERIFY(!panel->isRunning() || done.wait(awb::test::ms(20000)));
+    QVERIFY2(panel->summary().contains(QStringLiteral("r = 0.550015686")) &&
+                 panel->summary().contains(QStringLiteral("invariant polytope")),
+             qPrintable(panel->summary()));
+    QVERIFY2(panel->summary().contains(QStringLiteral("s₂ = 1")), qPrintable(panel->summary()));
+    auto *save = panel->findChild<QToolButton *>(QStringLiteral("regularitySaveCertificate"));
+    QVERIFY(save && save->isVisible());
+    const QString cert = m_dir.filePath(QStringLiteral("d4.json"));
+    QString why;
+    QVERIFY2(w.controller()->saveCertificate(cert, &why), qPrintable(why));
+    QFile in(cert);
+    QVERIFY(in.open(QIODevice::ReadOnly));
+    const CertificateCheck check = verifyRegularityCertificate(in.readAll());
+    QVERIFY2(check.ok, qPrintable(check.message));
+    const double alpha = 2 - std::log2(1 + std::sqrt(3.0));
+    QVERIFY(check.lower <= alpha + 1e-12 && alpha - 1e-12 <= check.upper);
 
     // A coset off 1 (from k = -3, the four-point mask's first index, kept): refused with its
     // residue; the line shows the item's mask again.

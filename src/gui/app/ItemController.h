@@ -79,6 +79,9 @@ public:
     void setPlotView(SpectrumView *view);
     // The panel that shows the current curve scheme's certified regularity (issue 16).
     void setRegularityPanel(RegularityPanel *panel);
+    // The certificate of the current curve's exact Hölder exponent (the Analysis dock's Save
+    // Certificate), as `attractor-cli analyse --certificate` writes it; false with the reason.
+    bool saveCertificate(const QString &file, QString *error = nullptr);
     int subdivisionSteps() const { return m_subdivisionSteps; }
     // Pushes the item's current data to every view and dock at once (normally deferred to the
     // event loop so that a burst of edits costs one update, and the docks to the FrameBudget).

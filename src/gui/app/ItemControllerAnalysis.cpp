@@ -13,8 +13,13 @@
 #include "gui/views/RegularityPanel.h"
 #include "model/AttractorItem.h"
 #include "model/ExactCurve.h"
+#include "model/FileWriting.h"
 #include "model/NumberFormat.h"
+#include "model/RegularityCertificate.h"
 #include "model/SubdivisionCurveItem.h"
+
+#include <QFileDialog>
+#include <QJsonDocument>
 
 #include <algorithm>
 #include <cmath>
@@ -53,7 +58,42 @@ Mat planePoints(const Ifs &ifs, const StartSet &start, int depth, const std::ato
 void ItemController::setRegularityPanel(RegularityPanel *panel)
 {
     m_regularity = panel;
+    connect(panel, &RegularityPanel::saveCertificateRequested, this, [this] {
+        const QString file = QFileDialog::getSaveFileName(
+            m_attractor, tr("Save Regularity Certificate"),
+            m_item ? m_item->name() + QStringLiteral(".certificate.json") : QString(),
+            tr("Regularity certificate (*.json)"));
+        QString why;
+        if (!file.isEmpty() && !saveCertificate(file, &why))
+            emit editRefused(why);
+    });
     updateRegularity();
+}
+
+bool ItemController::saveCertificate(const QString &file, QString *error)
+{
+    const auto *curve = qobject_cast<const SubdivisionCurveItem *>(m_item.data());
+    const auto r = m_regularity ? m_regularity->result() : nullptr;
+    // The result must be the current scheme's (the panel's key is the scheme's JSON and m).
+    QJsonObject json;
+    if (curve)
+        curve->write(json);
+    const QString key = QString::fromUtf8(QJsonDocument(json["scheme"].toObject()).toJson())
+                        + QString::number(curve ? int(curve->controlPoints(0).size()) : 0);
+    if (!curve || !r || m_regularity->resultKey() != key) {
+        if (error)
+            *error = tr("No certificate: the regularity of the current curve is not computed "
+                        "yet.");
+        return false;
+    }
+    QString why;
+    const QByteArray bytes = regularityCertificate(curve->scheme(), *r, &why);
+    if (bytes.isEmpty() || !writeWholeFile(file, bytes, &why)) {
+        if (error)
+            *error = tr("No certificate was saved: %1").arg(why);
+        return false;
+    }
+    return true;
 }
 
 // The regularity depends only on the scheme and the number of control points: a drag of a

@@ -68,7 +68,11 @@ QString regularityText(const Regularity &r)
         return QString::fromStdString(r.message);
     // Bounds equal to rounding are the exponent itself: "exact", not "width 2.4e-13".
     const bool exact = r.width() <= 1e-9 * std::max(1.0, std::abs(r.upper));
-    QString text = exact ? QObject::tr("%1, Hölder regularity r = %2 (exact)")
+    QString text = r.exact ? QObject::tr("%1, Hölder regularity r = %2 (exact: invariant "
+                                         "polytope, certificate)")
+                                 .arg(superscripted(r.smoothnessLabel()))
+                                 .arg(r.upper, 0, 'g', 12)
+                   : exact ? QObject::tr("%1, Hölder regularity r = %2 (exact)")
                                .arg(superscripted(r.smoothnessLabel()))
                                .arg(r.upper, 0, 'g', 8)
                          : QObject::tr("%1, Hölder regularity r in [%2, %3] (width %4)")
@@ -108,10 +112,18 @@ RegularityPanel::RegularityPanel(QWidget *parent) : QWidget(parent)
     m_cancel->setToolTip(tr("Stop the regularity analysis; the bounds reached so far stay"));
     m_cancel->setVisible(false);
     connect(m_cancel, &QToolButton::clicked, this, &RegularityPanel::cancel);
+    m_save = new QToolButton;
+    m_save->setObjectName(QStringLiteral("regularitySaveCertificate"));
+    m_save->setText(tr("Save Certificate…"));
+    m_save->setToolTip(tr("The invariant polytope that proves the exponent, as JSON: "
+                          "attractor-cli verify-regularity re-checks it without any search"));
+    m_save->setVisible(false);
+    connect(m_save, &QToolButton::clicked, this, &RegularityPanel::saveCertificateRequested);
     auto *row = new QHBoxLayout;
     row->addWidget(m_summary, 1);
     row->addWidget(m_progress);
     row->addWidget(m_cancel);
+    row->addWidget(m_save);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 2, 4, 2);
     layout->addLayout(row);
@@ -131,6 +143,8 @@ void RegularityPanel::showMessage(const QString &message)
     m_method->clear();
     m_progress->setVisible(false);
     m_cancel->setVisible(false);
+    m_save->setVisible(false);
+    m_result.reset();
 }
 
 void RegularityPanel::analyse(std::shared_ptr<const CurveScheme> scheme, int m, const QString &key)
@@ -142,6 +156,8 @@ void RegularityPanel::analyse(std::shared_ptr<const CurveScheme> scheme, int m, 
     m_running = true;
     m_summary->setText(tr("Regularity of %1: computing…").arg(QString::fromStdString(scheme->name())));
     m_method->clear();
+    m_result.reset();
+    m_save->setVisible(false);
     m_progress->setValue(0);
     m_progress->setVisible(true);
     m_cancel->setVisible(true);
@@ -180,6 +196,8 @@ void RegularityPanel::showResult(const Regularity &r, quint64 generation)
     m_cancel->setVisible(false);
     m_summary->setText(tr("Regularity: %1").arg(regularityText(r)));
     m_method->setText(mathText(QString::fromStdString(r.method)));
+    m_result = std::make_shared<const Regularity>(r);
+    m_save->setVisible(r.exact && r.certificate);
     emit finished();
 }
 

@@ -36,9 +36,15 @@ public:
     bool isRunning() const { return m_running; }
     QString summary() const;      // the text of the result line
     QString method() const;       // the text of the method line
+    // The last result shown (null while computing or when nothing applies), and the key of
+    // the scheme it belongs to.
+    std::shared_ptr<const Regularity> result() const { return m_result; }
+    QString resultKey() const { return m_result ? m_key : QString(); }
 
 signals:
     void finished();
+    // The result is exact and the user asked to save its certificate.
+    void saveCertificateRequested();
 
 private:
     void showResult(const Regularity &r, quint64 generation);
@@ -48,6 +54,8 @@ private:
     QLabel *m_method = nullptr;
     QProgressBar *m_progress = nullptr;
     QToolButton *m_cancel = nullptr;
+    QToolButton *m_save = nullptr;
+    std::shared_ptr<const Regularity> m_result;
     CancellableWorker m_worker{this};
     QString m_key;
     double m_budget = 2.0;
