@@ -300,6 +300,14 @@
         <source>%1, Hölder regularity r = %2 (exact)</source>
         <translation>%1，Hölder 正则性 r = %2（精确）</translation>
     </message>
+    <message>
+        <source>%1, Hölder regularity r = %2 (exact: invariant polytope, certificate)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>; Sobolev (L²) exponent s₂ = %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>awb</name>
@@ -1513,6 +1521,10 @@
         <source>expected a point [x, y]</source>
         <translation>应为点 [x, y]</translation>
     </message>
+    <message>
+        <source>&quot;%1&quot; is not a number (a fraction such as &quot;3/8&quot; or an expression such as &quot;(1 + sqrt(3))/8&quot; is)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>awb::FigureFile</name>
@@ -2089,6 +2101,34 @@ Take the difference %7 from the entry in column %8 (%9 → %10) so that the row 
     <message>
         <source>Eigenvalues at %1</source>
         <translation>%1 处的特征值</translation>
+    </message>
+    <message>
+        <source>%1 cannot be removed: an IFS of own matrices needs at least two maps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No map was added: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No map was removed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save Regularity Certificate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Regularity certificate (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No certificate: the regularity of the current curve is not computed yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No certificate was saved: %1</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2938,6 +2978,22 @@ It was kept as %2.</source>
         <source>(complex entries)</source>
         <translation>（复数元素）</translation>
     </message>
+    <message>
+        <source>Remove</source>
+        <translation type="unfinished">移除</translation>
+    </message>
+    <message>
+        <source>Remove the map %1 from the IFS (one undo step)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add a Map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A new map S_(p+1), a copy of the last one to edit cell by cell (one undo step)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>awb::MeshInputs</name>
@@ -3684,6 +3740,77 @@ It was kept as %2.</source>
     </message>
 </context>
 <context>
+    <name>awb::RegularityCertificate</name>
+    <message>
+        <source>%1 is not a finite number</source>
+        <translation type="unfinished">%1 不是有限数</translation>
+    </message>
+    <message>
+        <source>%1 is not an index</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has no array &quot;%2&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is not an array of numbers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;polytope&quot; is not an awb-invariant-polytope object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>polytope.matrices[%1] is not square</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>polytope.lambda[%1] holds a term that is not [index, coefficient]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the regularity is not exact: no invariant polytope closed, so there is no certificate (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not JSON: %1 at offset %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not an attractor-workbench regularity certificate (format %1, version 1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the scheme has no difference scheme to certify: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the certificate has %1 matrices, the scheme&apos;s analysis %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>matrix %1 of the certificate is not the scheme&apos;s (the transition matrix T_%2 of its difference scheme)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>arity %1 and shift %2 do not match the scheme&apos;s (%3 and %4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the claimed Hölder exponent [%1, %2] is not what the polytope proves: [%3, %4]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>certificate verified: the Hölder exponent of the %1 lies in [%2, %3]; JSR in [%4, %5]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>certificate rejected: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>awb::RegularityChart</name>
     <message>
         <source>Regularity of the four-point scheme</source>
@@ -3703,7 +3830,7 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>known: ω = 0 → 1, ω = 1/16 → 2</source>
-        <translation>已知：ω = 0 → 1，ω = 1/16 → 2</translation>
+        <translation type="vanished">已知：ω = 0 → 1，ω = 1/16 → 2</translation>
     </message>
     <message>
         <source>tension ω</source>
@@ -3719,11 +3846,27 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>%1 values of ω; widest interval %2 (bounds certified; the upper bound is exact for this interpolatory scheme)</source>
-        <translation>ω 的 %1 个值；最宽区间为 %2（界经过验证；对于此插值格式，上界是精确的）</translation>
+        <translation type="vanished">ω 的 %1 个值；最宽区间为 %2（界经过验证；对于此插值格式，上界是精确的）</translation>
     </message>
     <message>
         <source>regularity r</source>
         <translation>正则性 r</translation>
+    </message>
+    <message>
+        <source>r(0) = 1, r(1/16) = 2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C%1 (certified)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>; C¹ for ω in (%1, %2), the ends in [%3, %4] and [%5, %6]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 values of ω; widest interval %2 (bounds certified; the upper bound is exact for this interpolatory scheme)%3</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -3755,6 +3898,14 @@ It was kept as %2.</source>
     <message>
         <source>Regularity: %1</source>
         <translation>正则性：%1</translation>
+    </message>
+    <message>
+        <source>Save Certificate…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The invariant polytope that proves the exponent, as JSON: attractor-cli verify-regularity re-checks it without any search</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4068,6 +4219,70 @@ It was kept as %2.</source>
     <message>
         <source>Subdivision curve</source>
         <translation>细分曲线</translation>
+    </message>
+    <message>
+        <source>mask entry %1, &quot;%2&quot;, is not a number (fractions such as 3/8 and expressions such as (1 + sqrt(3))/8 are)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no sum rule: σ(z) = %1 does not divide the symbol a(z), so the scheme has no difference scheme and cannot converge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>1 sum rule</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 sum rules</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: a(z) = σ(z)%2 b(z) / %3%2 with σ(z) = %4 and b = (%5) from z%6</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected a non-empty array of coefficients</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mask</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Arity N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Each step makes N new points per old one. A new arity whose cosets the mask does not fit starts from the N-ary piecewise linear mask.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mask a_k</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>q_n = Σ a_(n − N l) p_l. Separate the coefficients by commas (by semicolons to use decimal commas); fractions (3/8) and expressions ((1 + sqrt(3))/8) are kept as typed. Each of the N cosets a_(r + N k) must sum to 1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>First index k</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The index of the mask&apos;s first coefficient: the cubic B-spline is 1/8, 1/2, 3/4, 1/2, 1/8 from k = −2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Symbol</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The symbol a(z) = Σ a_k z^k divided by σ(z) = 1 + z + … + z^(N−1) as often as it goes: each factor is one sum rule (polynomials of one more degree reproduced, one more difference scheme)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the symbol follows from the mask: edit the mask</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4732,6 +4947,122 @@ It was kept as %2.</source>
         <source>; but the IFS contracts on average (Lyapunov exponent %1 along the orbit): random iteration draws its attractor</source>
         <translation>；但该 IFS 平均意义下是压缩的（沿轨道的李雅普诺夫指数为 %1）：随机迭代可以绘出其吸引子</translation>
     </message>
+    <message>
+        <source>a curve needs at least one piece</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a Bézier piece needs 2 to 31 plane control points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a Bézier piece</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a Takagi image needs 2 to 31 control points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the control points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a Takagi image needs a finite |y| &lt;= 1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the Hausdorff bracket needs a nonempty set of plane points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the point set</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the s.m.p. candidate&apos;s leading eigenvalue is complex (%1); the complex-polytope variant is not implemented</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the s.m.p. candidate&apos;s leading eigenvalue is not simple in modulus (not a dominant product)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no real leading eigenvector</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>invariant polytope: cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>invariant polytope did not close in the budget (%1 vertices)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>invariant polytope did not close within %1 vertices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>JSR = 0: the matrices are empty or zero</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>every product up to length %1 has spectral radius 0: no s.m.p. candidate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the family is numerically nilpotent (every product of length L vanishes to rounding): JSR = 0, no s.m.p. to certify</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the invariant polytope closed but its certificate failed the check: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>invariant polytope closed: JSR = rho(A_w)^(1/%1) for the s.m.p. w = (%2), %3 vertices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the invariant polytope&apos;s bracket contradicts the bounds; ignored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the parameter range [%1, %2] must be finite with from &lt; to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the smoothness k must be between 0 and 30, got %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the grid must have 2 to 10000 values, got %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no Sobolev exponent: the mask is zero</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no Sobolev exponent: the symbol has no sum rule (the rules&apos; weights do not each sum to 1), so the scheme does not converge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no Sobolev exponent: the mask sums to %1, not the arity %2 (the refinement equation has no integrable solution with nonzero mean)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no positive Sobolev smoothness: rho = %1 &gt;= 1 (to rounding), so s_2 = %2 &lt;= 0: with stable shifts the basic limit function is in no H^s with s &gt; 0, if it is a function at all</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sobolev exponent s_2 = %1: in H^s for every s &lt; %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (capped at the %1 sum rules; -log_N(rho) / 2 = %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>awb::cli</name>
@@ -5384,7 +5715,7 @@ Commands:
 
 Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
 </source>
-        <translation>用法：attractor-cli &lt;command&gt; [options]
+        <translation type="vanished">用法：attractor-cli &lt;command&gt; [options]
 
 命令：
   render     将项目中的某个对象渲染为 PNG、SVG 或 PDF
@@ -5474,6 +5805,137 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>Output file: .png, .svg, .pdf or .exr.</source>
         <translation>输出文件：.png、.svg、.pdf 或 .exr。</translation>
+    </message>
+    <message>
+        <source>With --item: write the certificate of the curve&apos;s exact Hölder exponent (verify-regularity checks it).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--certificate needs --item: the certificate is one curve&apos;s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; is not a subdivision curve: no regularity to certify</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where a curve scheme is C^k as one of its parameters moves: the parameter intervals on which the certified Hölder exponent exceeds k, each end bracketed by bisection on certified values.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project file (.awb).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The curve item (default: the first item with an attractor).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>omega (four-point), a or b (corner cutting).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The start of the range.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The end of the range.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>k: the class C^k asked for (default 1).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Values of the first sweep, 2 to 10000 (default 24).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bracket width at which bisection stops (default 1e-6).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Seconds of joint spectral radius per value (default 0.3).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Print JSON instead of text.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; is not a subdivision curve: its scheme has no parameter to move</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; (%2) has no parameter &apos;%3&apos;: omega belongs to the four-point scheme, a and b to corner cutting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--from and --to are required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: C^%2 for %3 in %4 interval(s) of [%5, %6]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (the range&apos;s end)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>in [%1, %2]%3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (the bounds cannot decide beyond)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>  from %1 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 evaluations, %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Re-check the certificate of an exact Hölder exponent, independently of the search that found it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The certificate (.json).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished">%1：%2</translation>
+    </message>
+    <message>
+        <source>%1: larger than 64 MiB, not a certificate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Usage: attractor-cli &lt;command&gt; [options]
+
+Commands:
+  render     render an item of a project to PNG, SVG or PDF
+  animate    render the frames of an item&apos;s animation (PNG files, MP4/GIF)
+  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)
+  points     the points of F^k(X0) as CSV
+  check      validate a project file
+  rewrite    load and save a project in canonical form
+  export     points (PLY), a net or mesh (OBJ), maps (.ifs), matrices (MATLAB)
+  polygon    the control polygon after K subdivision steps (JSON)
+  import     another tool&apos;s IFS file (Fractint .ifs) as a project
+  import-mesh  a mesh file (OBJ, OFF, PLY) as a project with a mesh item
+  valences   lambda, mu, Reif&apos;s C1 verdict per valence (Catmull-Clark, Loop)
+  regularity-interval  where a scheme is C^k as a parameter moves
+  verify-regularity  re-check the certificate of an exact Hölder exponent
+  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG
+
+Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
+</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -7080,6 +7542,30 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>the mesh was refined by another scheme</source>
         <translation>该网格由另一种细分格式细化</translation>
+    </message>
+    <message>
+        <source>the arity of a mask must be between 2 and 64, got %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a mask needs between 1 and 4096 coefficients, got %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the mask&apos;s offset %1 is absurd</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mask coefficient %1 is not a finite number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the coefficients a_k with k = %1 mod %2 sum to %3, not 1: every coset of the mask must sum to 1 (the scheme must reproduce constants; the whole mask sums to the arity %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mask of arity %1</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
