@@ -302,11 +302,11 @@
     </message>
     <message>
         <source>%1, Hölder regularity r = %2 (exact: invariant polytope, certificate)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, Hölderovská regularita r = %2 (přesně: invariantní polytop, certifikát)</translation>
     </message>
     <message>
         <source>; Sobolev (L²) exponent s₂ = %1</source>
-        <translation type="unfinished"></translation>
+        <translation>; Sobolevův (L²) exponent s₂ = %1</translation>
     </message>
 </context>
 <context>
@@ -796,7 +796,7 @@
     </message>
     <message>
         <source>Remove</source>
-        <translation>Odstranit</translation>
+        <translation>Odebrat</translation>
     </message>
     <message>
         <source>Remove the selected key, or the selected track with its keys</source>
@@ -1525,7 +1525,7 @@
     </message>
     <message>
         <source>&quot;%1&quot; is not a number (a fraction such as &quot;3/8&quot; or an expression such as &quot;(1 + sqrt(3))/8&quot; is)</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot; není číslo (číslem je zlomek jako &quot;3/8&quot; nebo výraz jako &quot;(1 + sqrt(3))/8&quot;)</translation>
     </message>
 </context>
 <context>
@@ -2110,31 +2110,31 @@ Odečíst rozdíl %7 od prvku ve sloupci %8 (%9 → %10), aby byl součet řádk
     </message>
     <message>
         <source>%1 cannot be removed: an IFS of own matrices needs at least two maps</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nelze odebrat: IFS z vlastních matic potřebuje alespoň dvě zobrazení</translation>
     </message>
     <message>
         <source>No map was added: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Zobrazení nebylo přidáno: %1</translation>
     </message>
     <message>
         <source>No map was removed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Zobrazení nebylo odebráno: %1</translation>
     </message>
     <message>
         <source>Save Regularity Certificate</source>
-        <translation type="unfinished"></translation>
+        <translation>Uložit certifikát regularity</translation>
     </message>
     <message>
         <source>Regularity certificate (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>Certifikát regularity (*.json)</translation>
     </message>
     <message>
         <source>No certificate: the regularity of the current curve is not computed yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>Žádný certifikát: regularita aktuální křivky ještě není spočtena.</translation>
     </message>
     <message>
         <source>No certificate was saved: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Certifikát nebyl uložen: %1</translation>
     </message>
 </context>
 <context>
@@ -2990,19 +2990,19 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>Remove</source>
-        <translation type="unfinished">Odstranit</translation>
+        <translation>Odebrat</translation>
     </message>
     <message>
         <source>Remove the map %1 from the IFS (one undo step)</source>
-        <translation type="unfinished"></translation>
+        <translation>Odebrat zobrazení %1 z IFS (jeden krok zpět)</translation>
     </message>
     <message>
         <source>Add a Map</source>
-        <translation type="unfinished"></translation>
+        <translation>Přidat zobrazení</translation>
     </message>
     <message>
         <source>A new map S_(p+1), a copy of the last one to edit cell by cell (one undo step)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nové zobrazení S_(p+1), kopie posledního k úpravě buňku po buňce (jeden krok zpět)</translation>
     </message>
 </context>
 <context>
@@ -3759,71 +3759,71 @@ Byla ponechána jako %2.</translation>
     <name>awb::RegularityCertificate</name>
     <message>
         <source>%1 is not a finite number</source>
-        <translation type="unfinished">%1 není konečné číslo</translation>
+        <translation>%1 není konečné číslo</translation>
     </message>
     <message>
         <source>%1 is not an index</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 není index</translation>
     </message>
     <message>
         <source>%1 has no array &quot;%2&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nemá pole &quot;%2&quot;</translation>
     </message>
     <message>
         <source>%1 is not an array of numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 není pole čísel</translation>
     </message>
     <message>
         <source>&quot;polytope&quot; is not an awb-invariant-polytope object</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;polytope&quot; není objekt awb-invariant-polytope</translation>
     </message>
     <message>
         <source>polytope.matrices[%1] is not square</source>
-        <translation type="unfinished"></translation>
+        <translation>polytope.matrices[%1] není čtvercová</translation>
     </message>
     <message>
         <source>polytope.lambda[%1] holds a term that is not [index, coefficient]</source>
-        <translation type="unfinished"></translation>
+        <translation>polytope.lambda[%1] obsahuje člen, který nemá tvar [index, koeficient]</translation>
     </message>
     <message>
         <source>the regularity is not exact: no invariant polytope closed, so there is no certificate (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>regularita není přesná: žádný invariantní polytop se neuzavřel, takže certifikát neexistuje (%1)</translation>
     </message>
     <message>
         <source>not JSON: %1 at offset %2</source>
-        <translation type="unfinished"></translation>
+        <translation>není JSON: %1 na pozici %2</translation>
     </message>
     <message>
         <source>not an attractor-workbench regularity certificate (format %1, version 1)</source>
-        <translation type="unfinished"></translation>
+        <translation>není certifikát regularity attractor-workbench (formát %1, verze 1)</translation>
     </message>
     <message>
         <source>the scheme has no difference scheme to certify: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>schéma nemá diferenční schéma, které by bylo možné certifikovat: %1</translation>
     </message>
     <message>
         <source>the certificate has %1 matrices, the scheme&apos;s analysis %2</source>
-        <translation type="unfinished"></translation>
+        <translation>počet matic v certifikátu: %1, v analýze schématu: %2</translation>
     </message>
     <message>
         <source>matrix %1 of the certificate is not the scheme&apos;s (the transition matrix T_%2 of its difference scheme)</source>
-        <translation type="unfinished"></translation>
+        <translation>matice %1 certifikátu není maticí schématu (přechodovou maticí T_%2 jeho diferenčního schématu)</translation>
     </message>
     <message>
         <source>arity %1 and shift %2 do not match the scheme&apos;s (%3 and %4)</source>
-        <translation type="unfinished"></translation>
+        <translation>arita %1 a posun %2 neodpovídají schématu (%3 a %4)</translation>
     </message>
     <message>
         <source>the claimed Hölder exponent [%1, %2] is not what the polytope proves: [%3, %4]</source>
-        <translation type="unfinished"></translation>
+        <translation>deklarovaný Hölderův exponent [%1, %2] neodpovídá tomu, co dokazuje polytop: [%3, %4]</translation>
     </message>
     <message>
         <source>certificate verified: the Hölder exponent of the %1 lies in [%2, %3]; JSR in [%4, %5]</source>
-        <translation type="unfinished"></translation>
+        <translation>certifikát ověřen (%1): Hölderův exponent leží v [%2, %3]; JSR v [%4, %5]</translation>
     </message>
     <message>
         <source>certificate rejected: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>certifikát zamítnut: %1</translation>
     </message>
 </context>
 <context>
@@ -3870,19 +3870,19 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>r(0) = 1, r(1/16) = 2</source>
-        <translation type="unfinished"></translation>
+        <translation>r(0) = 1, r(1/16) = 2</translation>
     </message>
     <message>
         <source>C%1 (certified)</source>
-        <translation type="unfinished"></translation>
+        <translation>C%1 (certifikováno)</translation>
     </message>
     <message>
         <source>; C¹ for ω in (%1, %2), the ends in [%3, %4] and [%5, %6]</source>
-        <translation type="unfinished"></translation>
+        <translation>; C¹ pro ω v (%1, %2), konce v [%3, %4] a [%5, %6]</translation>
     </message>
     <message>
         <source>%1 values of ω; widest interval %2 (bounds certified; the upper bound is exact for this interpolatory scheme)%3</source>
-        <translation type="unfinished"></translation>
+        <translation>počet hodnot ω: %1; nejširší interval %2 (meze certifikovány; horní mez je pro toto interpolační schéma přesná)%3</translation>
     </message>
 </context>
 <context>
@@ -3917,11 +3917,11 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>Save Certificate…</source>
-        <translation type="unfinished"></translation>
+        <translation>Uložit certifikát…</translation>
     </message>
     <message>
         <source>The invariant polytope that proves the exponent, as JSON: attractor-cli verify-regularity re-checks it without any search</source>
-        <translation type="unfinished"></translation>
+        <translation>Invariantní polytop, který dokazuje exponent, ve formátu JSON: attractor-cli verify-regularity jej znovu ověří bez jakéhokoli hledání</translation>
     </message>
 </context>
 <context>
@@ -4238,67 +4238,67 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>mask entry %1, &quot;%2&quot;, is not a number (fractions such as 3/8 and expressions such as (1 + sqrt(3))/8 are)</source>
-        <translation type="unfinished"></translation>
+        <translation>položka masky %1, &quot;%2&quot;, není číslo (čísly jsou zlomky jako 3/8 a výrazy jako (1 + sqrt(3))/8)</translation>
     </message>
     <message>
         <source>no sum rule: σ(z) = %1 does not divide the symbol a(z), so the scheme has no difference scheme and cannot converge</source>
-        <translation type="unfinished"></translation>
+        <translation>žádné součtové pravidlo: σ(z) = %1 nedělí symbol a(z), takže schéma nemá diferenční schéma a nemůže konvergovat</translation>
     </message>
     <message>
         <source>1 sum rule</source>
-        <translation type="unfinished"></translation>
+        <translation>1 součtové pravidlo</translation>
     </message>
     <message>
         <source>%1 sum rules</source>
-        <translation type="unfinished"></translation>
+        <translation>počet součtových pravidel: %1</translation>
     </message>
     <message>
         <source>%1: a(z) = σ(z)%2 b(z) / %3%2 with σ(z) = %4 and b = (%5) from z%6</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 – a(z) = σ(z)%2 b(z) / %3%2, kde σ(z) = %4 a b = (%5) od z%6</translation>
     </message>
     <message>
         <source>expected a non-empty array of coefficients</source>
-        <translation type="unfinished"></translation>
+        <translation>očekáváno neprázdné pole koeficientů</translation>
     </message>
     <message>
         <source>Mask</source>
-        <translation type="unfinished"></translation>
+        <translation>Maska</translation>
     </message>
     <message>
         <source>Arity N</source>
-        <translation type="unfinished"></translation>
+        <translation>Arita N</translation>
     </message>
     <message>
         <source>Each step makes N new points per old one. A new arity whose cosets the mask does not fit starts from the N-ary piecewise linear mask.</source>
-        <translation type="unfinished"></translation>
+        <translation>Každý krok vytvoří z každého starého bodu N nových. Pokud maska neodpovídá zbytkovým třídám nové arity, začne se od N-ární po částech lineární masky.</translation>
     </message>
     <message>
         <source>Mask a_k</source>
-        <translation type="unfinished"></translation>
+        <translation>Maska a_k</translation>
     </message>
     <message>
         <source>q_n = Σ a_(n − N l) p_l. Separate the coefficients by commas (by semicolons to use decimal commas); fractions (3/8) and expressions ((1 + sqrt(3))/8) are kept as typed. Each of the N cosets a_(r + N k) must sum to 1.</source>
-        <translation type="unfinished"></translation>
+        <translation>q_n = Σ a_(n − N l) p_l. Koeficienty oddělujte čárkami (středníky, chcete-li používat desetinné čárky); zlomky (3/8) a výrazy ((1 + sqrt(3))/8) se zachovají tak, jak jsou zapsány. Každá z N zbytkových tříd a_(r + N k) musí mít součet 1.</translation>
     </message>
     <message>
         <source>First index k</source>
-        <translation type="unfinished"></translation>
+        <translation>První index k</translation>
     </message>
     <message>
         <source>The index of the mask&apos;s first coefficient: the cubic B-spline is 1/8, 1/2, 3/4, 1/2, 1/8 from k = −2</source>
-        <translation type="unfinished"></translation>
+        <translation>Index prvního koeficientu masky: kubický B-spline je 1/8, 1/2, 3/4, 1/2, 1/8 od k = −2</translation>
     </message>
     <message>
         <source>Symbol</source>
-        <translation type="unfinished"></translation>
+        <translation>Symbol</translation>
     </message>
     <message>
         <source>The symbol a(z) = Σ a_k z^k divided by σ(z) = 1 + z + … + z^(N−1) as often as it goes: each factor is one sum rule (polynomials of one more degree reproduced, one more difference scheme)</source>
-        <translation type="unfinished"></translation>
+        <translation>Symbol a(z) = Σ a_k z^k vydělený σ(z) = 1 + z + … + z^(N−1) tolikrát, kolikrát to jde: každý faktor je jedno součtové pravidlo (reprodukují se polynomy o stupeň vyšší, přibude jedno diferenční schéma)</translation>
     </message>
     <message>
         <source>the symbol follows from the mask: edit the mask</source>
-        <translation type="unfinished"></translation>
+        <translation>symbol vyplývá z masky: upravte masku</translation>
     </message>
 </context>
 <context>
@@ -4965,119 +4965,119 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>a curve needs at least one piece</source>
-        <translation type="unfinished"></translation>
+        <translation>křivka potřebuje alespoň jeden úsek</translation>
     </message>
     <message>
         <source>a Bézier piece needs 2 to 31 plane control points</source>
-        <translation type="unfinished"></translation>
+        <translation>Bézierův úsek potřebuje 2 až 31 řídicích bodů v rovině</translation>
     </message>
     <message>
         <source>a Bézier piece</source>
-        <translation type="unfinished"></translation>
+        <translation>Bézierův úsek</translation>
     </message>
     <message>
         <source>a Takagi image needs 2 to 31 control points</source>
-        <translation type="unfinished"></translation>
+        <translation>Takagiho obraz potřebuje 2 až 31 řídicích bodů</translation>
     </message>
     <message>
         <source>the control points</source>
-        <translation type="unfinished"></translation>
+        <translation>řídicí body</translation>
     </message>
     <message>
         <source>a Takagi image needs a finite |y| &lt;= 1</source>
-        <translation type="unfinished"></translation>
+        <translation>Takagiho obraz potřebuje konečné |y| &lt;= 1</translation>
     </message>
     <message>
         <source>the Hausdorff bracket needs a nonempty set of plane points</source>
-        <translation type="unfinished"></translation>
+        <translation>interval (ohraničení) Hausdorffovy vzdálenosti potřebuje neprázdnou množinu bodů v rovině</translation>
     </message>
     <message>
         <source>the point set</source>
-        <translation type="unfinished"></translation>
+        <translation>množina bodů</translation>
     </message>
     <message>
         <source>the s.m.p. candidate&apos;s leading eigenvalue is complex (%1); the complex-polytope variant is not implemented</source>
-        <translation type="unfinished"></translation>
+        <translation>vedoucí vlastní číslo kandidáta na s.m.p. je komplexní (%1); varianta s komplexním polytopem není implementována</translation>
     </message>
     <message>
         <source>the s.m.p. candidate&apos;s leading eigenvalue is not simple in modulus (not a dominant product)</source>
-        <translation type="unfinished"></translation>
+        <translation>vedoucí vlastní číslo kandidáta na s.m.p. není jednoduché v absolutní hodnotě (nejde o dominantní součin)</translation>
     </message>
     <message>
         <source>no real leading eigenvector</source>
-        <translation type="unfinished"></translation>
+        <translation>žádný reálný vedoucí vlastní vektor</translation>
     </message>
     <message>
         <source>invariant polytope: cancelled</source>
-        <translation type="unfinished"></translation>
+        <translation>invariantní polytop: zrušeno</translation>
     </message>
     <message>
         <source>invariant polytope did not close in the budget (%1 vertices)</source>
-        <translation type="unfinished"></translation>
+        <translation>invariantní polytop se v rámci rozpočtu neuzavřel (vrcholů: %1)</translation>
     </message>
     <message>
         <source>invariant polytope did not close within %1 vertices</source>
-        <translation type="unfinished"></translation>
+        <translation>invariantní polytop se neuzavřel do %1 vrcholů</translation>
     </message>
     <message>
         <source>JSR = 0: the matrices are empty or zero</source>
-        <translation type="unfinished"></translation>
+        <translation>JSR = 0: matice jsou prázdné nebo nulové</translation>
     </message>
     <message>
         <source>every product up to length %1 has spectral radius 0: no s.m.p. candidate</source>
-        <translation type="unfinished"></translation>
+        <translation>každý součin do délky %1 má spektrální poloměr 0: žádný kandidát na s.m.p.</translation>
     </message>
     <message>
         <source>the family is numerically nilpotent (every product of length L vanishes to rounding): JSR = 0, no s.m.p. to certify</source>
-        <translation type="unfinished"></translation>
+        <translation>rodina je numericky nilpotentní (každý součin délky L je až na zaokrouhlení nulový): JSR = 0, žádný s.m.p. k certifikaci</translation>
     </message>
     <message>
         <source>the invariant polytope closed but its certificate failed the check: </source>
-        <translation type="unfinished"></translation>
+        <translation>invariantní polytop se uzavřel, ale jeho certifikát neprošel kontrolou: </translation>
     </message>
     <message>
         <source>invariant polytope closed: JSR = rho(A_w)^(1/%1) for the s.m.p. w = (%2), %3 vertices</source>
-        <translation type="unfinished"></translation>
+        <translation>invariantní polytop uzavřen: JSR = rho(A_w)^(1/%1) pro s.m.p. w = (%2), vrcholů: %3</translation>
     </message>
     <message>
         <source>the invariant polytope&apos;s bracket contradicts the bounds; ignored</source>
-        <translation type="unfinished"></translation>
+        <translation>interval (ohraničení) z invariantního polytopu odporuje mezím; ignorováno</translation>
     </message>
     <message>
         <source>the parameter range [%1, %2] must be finite with from &lt; to</source>
-        <translation type="unfinished"></translation>
+        <translation>rozsah parametru [%1, %2] musí být konečný, s počátkem menším než konec</translation>
     </message>
     <message>
         <source>the smoothness k must be between 0 and 30, got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>hladkost k musí být mezi 0 a 30, zadáno %1</translation>
     </message>
     <message>
         <source>the grid must have 2 to 10000 values, got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>mřížka musí mít 2 až 10000 hodnot, zadáno %1</translation>
     </message>
     <message>
         <source>no Sobolev exponent: the mask is zero</source>
-        <translation type="unfinished"></translation>
+        <translation>žádný Sobolevův exponent: maska je nulová</translation>
     </message>
     <message>
         <source>no Sobolev exponent: the symbol has no sum rule (the rules&apos; weights do not each sum to 1), so the scheme does not converge</source>
-        <translation type="unfinished"></translation>
+        <translation>žádný Sobolevův exponent: symbol nesplňuje žádné součtové pravidlo (váhy pravidel nemají každá součet 1), takže schéma nekonverguje</translation>
     </message>
     <message>
         <source>no Sobolev exponent: the mask sums to %1, not the arity %2 (the refinement equation has no integrable solution with nonzero mean)</source>
-        <translation type="unfinished"></translation>
+        <translation>žádný Sobolevův exponent: součet masky je %1, nikoli arita %2 (zjemňovací rovnice nemá integrovatelné řešení s nenulovou střední hodnotou)</translation>
     </message>
     <message>
         <source>no positive Sobolev smoothness: rho = %1 &gt;= 1 (to rounding), so s_2 = %2 &lt;= 0: with stable shifts the basic limit function is in no H^s with s &gt; 0, if it is a function at all</source>
-        <translation type="unfinished"></translation>
+        <translation>žádná kladná Sobolevova hladkost: rho = %1 &gt;= 1 (až na zaokrouhlení), takže s_2 = %2 &lt;= 0: při stabilních posunutích neleží základní limitní funkce v žádném H^s s s &gt; 0, pokud je vůbec funkcí</translation>
     </message>
     <message>
         <source>Sobolev exponent s_2 = %1: in H^s for every s &lt; %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Sobolevův exponent s_2 = %1: v H^s pro každé s &lt; %1</translation>
     </message>
     <message>
         <source> (capped at the %1 sum rules; -log_N(rho) / 2 = %2)</source>
-        <translation type="unfinished"></translation>
+        <translation> (shora omezeno počtem součtových pravidel, %1; -log_N(rho) / 2 = %2)</translation>
     </message>
 </context>
 <context>
@@ -5828,111 +5828,111 @@ Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --he
     </message>
     <message>
         <source>With --item: write the certificate of the curve&apos;s exact Hölder exponent (verify-regularity checks it).</source>
-        <translation type="unfinished"></translation>
+        <translation>S --item: zapíše certifikát přesného Hölderova exponentu křivky (ověří jej verify-regularity).</translation>
     </message>
     <message>
         <source>--certificate needs --item: the certificate is one curve&apos;s</source>
-        <translation type="unfinished"></translation>
+        <translation>--certificate vyžaduje --item: certifikát patří vždy jedné křivce</translation>
     </message>
     <message>
         <source>item &apos;%1&apos; is not a subdivision curve: no regularity to certify</source>
-        <translation type="unfinished"></translation>
+        <translation>položka &apos;%1&apos; není subdivizní křivka: není co certifikovat</translation>
     </message>
     <message>
         <source>Where a curve scheme is C^k as one of its parameters moves: the parameter intervals on which the certified Hölder exponent exceeds k, each end bracketed by bisection on certified values.</source>
-        <translation type="unfinished"></translation>
+        <translation>Kde je schéma křivky třídy C^k, když se mění jeden z jeho parametrů: intervaly parametru, na nichž certifikovaný Hölderův exponent přesahuje k, přičemž každý konec je ohraničen bisekcí na certifikovaných hodnotách.</translation>
     </message>
     <message>
         <source>The project file (.awb).</source>
-        <translation type="unfinished"></translation>
+        <translation>Soubor projektu (.awb).</translation>
     </message>
     <message>
         <source>The curve item (default: the first item with an attractor).</source>
-        <translation type="unfinished"></translation>
+        <translation>Položka křivky (výchozí: první položka s atraktorem).</translation>
     </message>
     <message>
         <source>omega (four-point), a or b (corner cutting).</source>
-        <translation type="unfinished"></translation>
+        <translation>omega (čtyřbodové schéma), a nebo b (ořezávání rohů).</translation>
     </message>
     <message>
         <source>The start of the range.</source>
-        <translation type="unfinished"></translation>
+        <translation>Začátek rozsahu.</translation>
     </message>
     <message>
         <source>The end of the range.</source>
-        <translation type="unfinished"></translation>
+        <translation>Konec rozsahu.</translation>
     </message>
     <message>
         <source>k: the class C^k asked for (default 1).</source>
-        <translation type="unfinished"></translation>
+        <translation>k: požadovaná třída C^k (výchozí 1).</translation>
     </message>
     <message>
         <source>Values of the first sweep, 2 to 10000 (default 24).</source>
-        <translation type="unfinished"></translation>
+        <translation>Počet hodnot prvního průchodu, 2 až 10000 (výchozí 24).</translation>
     </message>
     <message>
         <source>Bracket width at which bisection stops (default 1e-6).</source>
-        <translation type="unfinished"></translation>
+        <translation>Šířka intervalu, při které se bisekce zastaví (výchozí 1e-6).</translation>
     </message>
     <message>
         <source>Seconds of joint spectral radius per value (default 0.3).</source>
-        <translation type="unfinished"></translation>
+        <translation>Sekundy výpočtu společného spektrálního poloměru na jednu hodnotu (výchozí 0.3).</translation>
     </message>
     <message>
         <source>Print JSON instead of text.</source>
-        <translation type="unfinished"></translation>
+        <translation>Vypsat JSON místo textu.</translation>
     </message>
     <message>
         <source>item &apos;%1&apos; is not a subdivision curve: its scheme has no parameter to move</source>
-        <translation type="unfinished"></translation>
+        <translation>položka &apos;%1&apos; není subdivizní křivka: její schéma nemá žádný parametr, který by se dal měnit</translation>
     </message>
     <message>
         <source>item &apos;%1&apos; (%2) has no parameter &apos;%3&apos;: omega belongs to the four-point scheme, a and b to corner cutting</source>
-        <translation type="unfinished"></translation>
+        <translation>položka &apos;%1&apos; (%2) nemá parametr &apos;%3&apos;: omega patří ke čtyřbodovému schématu, a a b k ořezávání rohů</translation>
     </message>
     <message>
         <source>--from and --to are required</source>
-        <translation type="unfinished"></translation>
+        <translation>--from a --to jsou povinné</translation>
     </message>
     <message>
         <source>%1: C^%2 for %3 in %4 interval(s) of [%5, %6]</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: C^%2 pro %3 v [%5, %6], počet intervalů: %4</translation>
     </message>
     <message>
         <source>%1 (the range&apos;s end)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (konec rozsahu)</translation>
     </message>
     <message>
         <source>in [%1, %2]%3</source>
-        <translation type="unfinished"></translation>
+        <translation>v [%1, %2]%3</translation>
     </message>
     <message>
         <source> (the bounds cannot decide beyond)</source>
-        <translation type="unfinished"></translation>
+        <translation> (dále meze nerozhodnou)</translation>
     </message>
     <message>
         <source>  from %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>  od %1 do %2</translation>
     </message>
     <message>
         <source>%1 evaluations, %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>vyhodnocení: %1, %2 s</translation>
     </message>
     <message>
         <source>Re-check the certificate of an exact Hölder exponent, independently of the search that found it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Znovu ověří certifikát přesného Hölderova exponentu, nezávisle na hledání, které jej našlo.</translation>
     </message>
     <message>
         <source>The certificate (.json).</source>
-        <translation type="unfinished"></translation>
+        <translation>Certifikát (.json).</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished">%1: %2</translation>
+        <translation>%1: %2</translation>
     </message>
     <message>
         <source>%1: larger than 64 MiB, not a certificate</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: větší než 64 MiB, nejde o certifikát</translation>
     </message>
     <message>
         <source>Usage: attractor-cli &lt;command&gt; [options]
@@ -5955,7 +5955,26 @@ Commands:
 
 Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>Použití: attractor-cli &lt;příkaz&gt; [volby]
+
+Příkazy:
+  render     vykreslí položku projektu do PNG, SVG nebo PDF
+  animate    vykreslí snímky animace položky (soubory PNG, MP4/GIF)
+  analyse    vlastní čísla, kontraktivita, pevné body, dimenze (JSON)
+  points     body F^k(X0) jako CSV
+  check      ověří soubor projektu
+  rewrite    načte a uloží projekt v kanonickém tvaru
+  export     body (PLY), řídicí síť nebo síť (OBJ), zobrazení (.ifs), matice (MATLAB)
+  polygon    řídicí polygon po K krocích subdivize (JSON)
+  import     soubor IFS jiného nástroje (Fractint .ifs) jako projekt
+  import-mesh  soubor sítě (OBJ, OFF, PLY) jako projekt s položkou sítě
+  valences   lambda, mu, Reifův verdikt C1 pro každou valenci (Catmull-Clark, Loop)
+  regularity-interval  kde je schéma třídy C^k při změně parametru
+  verify-regularity  znovu ověří certifikát přesného Hölderova exponentu
+  examples   vykreslí vestavěné obrázky z článku (000 obr. 2, 3, 5) do PNG
+
+Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
+</translation>
     </message>
 </context>
 <context>
@@ -7565,27 +7584,27 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>the arity of a mask must be between 2 and 64, got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>arita masky musí být mezi 2 a 64, zadáno %1</translation>
     </message>
     <message>
         <source>a mask needs between 1 and 4096 coefficients, got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>maska potřebuje 1 až 4096 koeficientů, zadáno %1</translation>
     </message>
     <message>
         <source>the mask&apos;s offset %1 is absurd</source>
-        <translation type="unfinished"></translation>
+        <translation>posun masky %1 je nesmyslný</translation>
     </message>
     <message>
         <source>mask coefficient %1 is not a finite number</source>
-        <translation type="unfinished"></translation>
+        <translation>koeficient masky %1 není konečné číslo</translation>
     </message>
     <message>
         <source>the coefficients a_k with k = %1 mod %2 sum to %3, not 1: every coset of the mask must sum to 1 (the scheme must reproduce constants; the whole mask sums to the arity %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>koeficienty a_k s k = %1 mod %2 mají součet %3, nikoli 1: každá zbytková třída masky musí mít součet 1 (schéma musí reprodukovat konstanty; celá maska má součet rovný aritě %2)</translation>
     </message>
     <message>
         <source>mask of arity %1</source>
-        <translation type="unfinished"></translation>
+        <translation>maska arity %1</translation>
     </message>
 </context>
 <context>

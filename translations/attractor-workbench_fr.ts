@@ -302,11 +302,11 @@
     </message>
     <message>
         <source>%1, Hölder regularity r = %2 (exact: invariant polytope, certificate)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, régularité de Hölder r = %2 (exacte&#xa0;: polytope invariant, certificat)</translation>
     </message>
     <message>
         <source>; Sobolev (L²) exponent s₂ = %1</source>
-        <translation type="unfinished"></translation>
+        <translation>&#xa0;; exposant de Sobolev (L²) s₂ = %1</translation>
     </message>
 </context>
 <context>
@@ -1500,7 +1500,7 @@
     </message>
     <message>
         <source>%1 is not a finite number</source>
-        <translation>%1 n’est pas un nombre fini</translation>
+        <translation>%1 n&apos;est pas un nombre fini</translation>
     </message>
     <message>
         <source>%1 cannot be read as a double-precision number</source>
@@ -1524,7 +1524,7 @@
     </message>
     <message>
         <source>&quot;%1&quot; is not a number (a fraction such as &quot;3/8&quot; or an expression such as &quot;(1 + sqrt(3))/8&quot; is)</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot; n&apos;est pas un nombre (une fraction comme &quot;3/8&quot; ou une expression comme &quot;(1 + sqrt(3))/8&quot; en est un)</translation>
     </message>
 </context>
 <context>
@@ -2107,31 +2107,31 @@ Retrancher la différence %7 du coefficient de la colonne %8 (%9 → %10) pour q
     </message>
     <message>
         <source>%1 cannot be removed: an IFS of own matrices needs at least two maps</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ne peut pas être supprimée&#xa0;: un IFS de matrices personnelles nécessite au moins deux applications</translation>
     </message>
     <message>
         <source>No map was added: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Aucune application n&apos;a été ajoutée&#xa0;: %1</translation>
     </message>
     <message>
         <source>No map was removed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Aucune application n&apos;a été supprimée&#xa0;: %1</translation>
     </message>
     <message>
         <source>Save Regularity Certificate</source>
-        <translation type="unfinished"></translation>
+        <translation>Enregistrer le certificat de régularité</translation>
     </message>
     <message>
         <source>Regularity certificate (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>Certificat de régularité (*.json)</translation>
     </message>
     <message>
         <source>No certificate: the regularity of the current curve is not computed yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>Aucun certificat&#xa0;: la régularité de la courbe courante n&apos;est pas encore calculée.</translation>
     </message>
     <message>
         <source>No certificate was saved: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Aucun certificat n&apos;a été enregistré&#xa0;: %1</translation>
     </message>
 </context>
 <context>
@@ -2985,19 +2985,19 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>Remove</source>
-        <translation type="unfinished">Supprimer</translation>
+        <translation>Supprimer</translation>
     </message>
     <message>
         <source>Remove the map %1 from the IFS (one undo step)</source>
-        <translation type="unfinished"></translation>
+        <translation>Supprimer l&apos;application %1 de l&apos;IFS (une étape d&apos;annulation)</translation>
     </message>
     <message>
         <source>Add a Map</source>
-        <translation type="unfinished"></translation>
+        <translation>Ajouter une application</translation>
     </message>
     <message>
         <source>A new map S_(p+1), a copy of the last one to edit cell by cell (one undo step)</source>
-        <translation type="unfinished"></translation>
+        <translation>Une nouvelle application S_(p+1), copie de la dernière, à modifier cellule par cellule (une étape d&apos;annulation)</translation>
     </message>
 </context>
 <context>
@@ -3305,7 +3305,7 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation>%1 : %2</translation>
+        <translation>%1&#xa0;: %2</translation>
     </message>
 </context>
 <context>
@@ -3669,7 +3669,7 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation>%1 : %2</translation>
+        <translation>%1&#xa0;: %2</translation>
     </message>
     <message>
         <source>Depth</source>
@@ -3751,71 +3751,71 @@ Elle a été conservée sous le nom %2.</translation>
     <name>awb::RegularityCertificate</name>
     <message>
         <source>%1 is not a finite number</source>
-        <translation type="unfinished">%1 n’est pas un nombre fini</translation>
+        <translation>%1 n&apos;est pas un nombre fini</translation>
     </message>
     <message>
         <source>%1 is not an index</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 n&apos;est pas un indice</translation>
     </message>
     <message>
         <source>%1 has no array &quot;%2&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 n&apos;a pas de tableau &quot;%2&quot;</translation>
     </message>
     <message>
         <source>%1 is not an array of numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 n&apos;est pas un tableau de nombres</translation>
     </message>
     <message>
         <source>&quot;polytope&quot; is not an awb-invariant-polytope object</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;polytope&quot; n&apos;est pas un objet awb-invariant-polytope</translation>
     </message>
     <message>
         <source>polytope.matrices[%1] is not square</source>
-        <translation type="unfinished"></translation>
+        <translation>polytope.matrices[%1] n&apos;est pas carrée</translation>
     </message>
     <message>
         <source>polytope.lambda[%1] holds a term that is not [index, coefficient]</source>
-        <translation type="unfinished"></translation>
+        <translation>polytope.lambda[%1] contient un terme qui n&apos;est pas de la forme [indice, coefficient]</translation>
     </message>
     <message>
         <source>the regularity is not exact: no invariant polytope closed, so there is no certificate (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>la régularité n&apos;est pas exacte&#xa0;: aucun polytope invariant ne s&apos;est fermé, il n&apos;y a donc pas de certificat (%1)</translation>
     </message>
     <message>
         <source>not JSON: %1 at offset %2</source>
-        <translation type="unfinished"></translation>
+        <translation>pas du JSON&#xa0;: %1 à la position %2</translation>
     </message>
     <message>
         <source>not an attractor-workbench regularity certificate (format %1, version 1)</source>
-        <translation type="unfinished"></translation>
+        <translation>pas un certificat de régularité attractor-workbench (format %1, version 1)</translation>
     </message>
     <message>
         <source>the scheme has no difference scheme to certify: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>le schéma n&apos;a pas de schéma aux différences à certifier&#xa0;: %1</translation>
     </message>
     <message>
         <source>the certificate has %1 matrices, the scheme&apos;s analysis %2</source>
-        <translation type="unfinished"></translation>
+        <translation>le certificat a %1 matrices, l&apos;analyse du schéma %2</translation>
     </message>
     <message>
         <source>matrix %1 of the certificate is not the scheme&apos;s (the transition matrix T_%2 of its difference scheme)</source>
-        <translation type="unfinished"></translation>
+        <translation>la matrice %1 du certificat n&apos;est pas celle du schéma (la matrice de transition T_%2 de son schéma aux différences)</translation>
     </message>
     <message>
         <source>arity %1 and shift %2 do not match the scheme&apos;s (%3 and %4)</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;arité %1 et le décalage %2 ne correspondent pas à ceux du schéma (%3 et %4)</translation>
     </message>
     <message>
         <source>the claimed Hölder exponent [%1, %2] is not what the polytope proves: [%3, %4]</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;exposant de Hölder annoncé [%1, %2] n&apos;est pas celui que prouve le polytope&#xa0;: [%3, %4]</translation>
     </message>
     <message>
         <source>certificate verified: the Hölder exponent of the %1 lies in [%2, %3]; JSR in [%4, %5]</source>
-        <translation type="unfinished"></translation>
+        <translation>certificat vérifié&#xa0;: l&apos;exposant de Hölder du %1 est dans [%2, %3]&#xa0;; JSR dans [%4, %5]</translation>
     </message>
     <message>
         <source>certificate rejected: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>certificat rejeté&#xa0;: %1</translation>
     </message>
 </context>
 <context>
@@ -3862,19 +3862,19 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>r(0) = 1, r(1/16) = 2</source>
-        <translation type="unfinished"></translation>
+        <translation>r(0) = 1, r(1/16) = 2</translation>
     </message>
     <message>
         <source>C%1 (certified)</source>
-        <translation type="unfinished"></translation>
+        <translation>C%1 (certifié)</translation>
     </message>
     <message>
         <source>; C¹ for ω in (%1, %2), the ends in [%3, %4] and [%5, %6]</source>
-        <translation type="unfinished"></translation>
+        <translation>&#xa0;; C¹ pour ω dans (%1, %2), les extrémités dans [%3, %4] et [%5, %6]</translation>
     </message>
     <message>
         <source>%1 values of ω; widest interval %2 (bounds certified; the upper bound is exact for this interpolatory scheme)%3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 valeurs de ω&#xa0;; intervalle le plus large %2 (bornes certifiées&#xa0;; la borne supérieure est exacte pour ce schéma interpolant)%3</translation>
     </message>
 </context>
 <context>
@@ -3909,11 +3909,11 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>Save Certificate…</source>
-        <translation type="unfinished"></translation>
+        <translation>Enregistrer le certificat…</translation>
     </message>
     <message>
         <source>The invariant polytope that proves the exponent, as JSON: attractor-cli verify-regularity re-checks it without any search</source>
-        <translation type="unfinished"></translation>
+        <translation>Le polytope invariant qui prouve l&apos;exposant, au format JSON&#xa0;: attractor-cli verify-regularity le revérifie sans aucune recherche</translation>
     </message>
 </context>
 <context>
@@ -4230,67 +4230,67 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>mask entry %1, &quot;%2&quot;, is not a number (fractions such as 3/8 and expressions such as (1 + sqrt(3))/8 are)</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;entrée %1 du masque, &quot;%2&quot;, n&apos;est pas un nombre (les fractions comme 3/8 et les expressions comme (1 + sqrt(3))/8 en sont)</translation>
     </message>
     <message>
         <source>no sum rule: σ(z) = %1 does not divide the symbol a(z), so the scheme has no difference scheme and cannot converge</source>
-        <translation type="unfinished"></translation>
+        <translation>aucune règle de somme&#xa0;: σ(z) = %1 ne divise pas le symbole a(z), le schéma n&apos;a donc pas de schéma aux différences et ne peut pas converger</translation>
     </message>
     <message>
         <source>1 sum rule</source>
-        <translation type="unfinished"></translation>
+        <translation>1 règle de somme</translation>
     </message>
     <message>
         <source>%1 sum rules</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 règles de somme</translation>
     </message>
     <message>
         <source>%1: a(z) = σ(z)%2 b(z) / %3%2 with σ(z) = %4 and b = (%5) from z%6</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;: a(z) = σ(z)%2 b(z) / %3%2 avec σ(z) = %4 et b = (%5) à partir de z%6</translation>
     </message>
     <message>
         <source>expected a non-empty array of coefficients</source>
-        <translation type="unfinished"></translation>
+        <translation>un tableau non vide de coefficients était attendu</translation>
     </message>
     <message>
         <source>Mask</source>
-        <translation type="unfinished"></translation>
+        <translation>Masque</translation>
     </message>
     <message>
         <source>Arity N</source>
-        <translation type="unfinished"></translation>
+        <translation>Arité N</translation>
     </message>
     <message>
         <source>Each step makes N new points per old one. A new arity whose cosets the mask does not fit starts from the N-ary piecewise linear mask.</source>
-        <translation type="unfinished"></translation>
+        <translation>Chaque étape crée N nouveaux points par ancien point. Pour une nouvelle arité dont les classes résiduelles ne conviennent pas au masque, on repart du masque N-aire linéaire par morceaux.</translation>
     </message>
     <message>
         <source>Mask a_k</source>
-        <translation type="unfinished"></translation>
+        <translation>Masque a_k</translation>
     </message>
     <message>
         <source>q_n = Σ a_(n − N l) p_l. Separate the coefficients by commas (by semicolons to use decimal commas); fractions (3/8) and expressions ((1 + sqrt(3))/8) are kept as typed. Each of the N cosets a_(r + N k) must sum to 1.</source>
-        <translation type="unfinished"></translation>
+        <translation>q_n = Σ a_(n − N l) p_l. Séparez les coefficients par des virgules (par des points-virgules pour utiliser la virgule décimale)&#xa0;; les fractions (3/8) et les expressions ((1 + sqrt(3))/8) sont conservées telles que saisies. Chacune des N classes résiduelles a_(r + N k) doit avoir pour somme 1.</translation>
     </message>
     <message>
         <source>First index k</source>
-        <translation type="unfinished"></translation>
+        <translation>Premier indice k</translation>
     </message>
     <message>
         <source>The index of the mask&apos;s first coefficient: the cubic B-spline is 1/8, 1/2, 3/4, 1/2, 1/8 from k = −2</source>
-        <translation type="unfinished"></translation>
+        <translation>L&apos;indice du premier coefficient du masque&#xa0;: la B-spline cubique est 1/8, 1/2, 3/4, 1/2, 1/8 à partir de k = −2</translation>
     </message>
     <message>
         <source>Symbol</source>
-        <translation type="unfinished"></translation>
+        <translation>Symbole</translation>
     </message>
     <message>
         <source>The symbol a(z) = Σ a_k z^k divided by σ(z) = 1 + z + … + z^(N−1) as often as it goes: each factor is one sum rule (polynomials of one more degree reproduced, one more difference scheme)</source>
-        <translation type="unfinished"></translation>
+        <translation>Le symbole a(z) = Σ a_k z^k divisé par σ(z) = 1 + z + … + z^(N−1) autant de fois que possible&#xa0;: chaque facteur est une règle de somme (reproduction des polynômes d&apos;un degré de plus, un schéma aux différences de plus)</translation>
     </message>
     <message>
         <source>the symbol follows from the mask: edit the mask</source>
-        <translation type="unfinished"></translation>
+        <translation>le symbole découle du masque&#xa0;: modifiez le masque</translation>
     </message>
 </context>
 <context>
@@ -4957,119 +4957,119 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>a curve needs at least one piece</source>
-        <translation type="unfinished"></translation>
+        <translation>une courbe nécessite au moins un morceau</translation>
     </message>
     <message>
         <source>a Bézier piece needs 2 to 31 plane control points</source>
-        <translation type="unfinished"></translation>
+        <translation>un morceau de Bézier nécessite de 2 à 31 points de contrôle du plan</translation>
     </message>
     <message>
         <source>a Bézier piece</source>
-        <translation type="unfinished"></translation>
+        <translation>un morceau de Bézier</translation>
     </message>
     <message>
         <source>a Takagi image needs 2 to 31 control points</source>
-        <translation type="unfinished"></translation>
+        <translation>une image de Takagi nécessite de 2 à 31 points de contrôle</translation>
     </message>
     <message>
         <source>the control points</source>
-        <translation type="unfinished"></translation>
+        <translation>les points de contrôle</translation>
     </message>
     <message>
         <source>a Takagi image needs a finite |y| &lt;= 1</source>
-        <translation type="unfinished"></translation>
+        <translation>une image de Takagi nécessite un |y| &lt;= 1 fini</translation>
     </message>
     <message>
         <source>the Hausdorff bracket needs a nonempty set of plane points</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;encadrement de Hausdorff nécessite un ensemble non vide de points du plan</translation>
     </message>
     <message>
         <source>the point set</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;ensemble de points</translation>
     </message>
     <message>
         <source>the s.m.p. candidate&apos;s leading eigenvalue is complex (%1); the complex-polytope variant is not implemented</source>
-        <translation type="unfinished"></translation>
+        <translation>la valeur propre dominante du candidat s.m.p. est complexe (%1)&#xa0;; la variante à polytope complexe n&apos;est pas implémentée</translation>
     </message>
     <message>
         <source>the s.m.p. candidate&apos;s leading eigenvalue is not simple in modulus (not a dominant product)</source>
-        <translation type="unfinished"></translation>
+        <translation>la valeur propre dominante du candidat s.m.p. n&apos;est pas simple en module (ce n&apos;est pas un produit dominant)</translation>
     </message>
     <message>
         <source>no real leading eigenvector</source>
-        <translation type="unfinished"></translation>
+        <translation>pas de vecteur propre dominant réel</translation>
     </message>
     <message>
         <source>invariant polytope: cancelled</source>
-        <translation type="unfinished"></translation>
+        <translation>polytope invariant&#xa0;: annulé</translation>
     </message>
     <message>
         <source>invariant polytope did not close in the budget (%1 vertices)</source>
-        <translation type="unfinished"></translation>
+        <translation>le polytope invariant ne s&apos;est pas fermé dans le budget imparti (%1 sommets)</translation>
     </message>
     <message>
         <source>invariant polytope did not close within %1 vertices</source>
-        <translation type="unfinished"></translation>
+        <translation>le polytope invariant ne s&apos;est pas fermé en %1 sommets au plus</translation>
     </message>
     <message>
         <source>JSR = 0: the matrices are empty or zero</source>
-        <translation type="unfinished"></translation>
+        <translation>JSR = 0&#xa0;: les matrices sont vides ou nulles</translation>
     </message>
     <message>
         <source>every product up to length %1 has spectral radius 0: no s.m.p. candidate</source>
-        <translation type="unfinished"></translation>
+        <translation>tout produit de longueur au plus %1 a un rayon spectral nul&#xa0;: aucun candidat s.m.p.</translation>
     </message>
     <message>
         <source>the family is numerically nilpotent (every product of length L vanishes to rounding): JSR = 0, no s.m.p. to certify</source>
-        <translation type="unfinished"></translation>
+        <translation>la famille est numériquement nilpotente (tout produit de longueur L s&apos;annule aux arrondis près)&#xa0;: JSR = 0, aucun s.m.p. à certifier</translation>
     </message>
     <message>
         <source>the invariant polytope closed but its certificate failed the check: </source>
-        <translation type="unfinished"></translation>
+        <translation>le polytope invariant s&apos;est fermé mais son certificat a échoué à la vérification&#xa0;: </translation>
     </message>
     <message>
         <source>invariant polytope closed: JSR = rho(A_w)^(1/%1) for the s.m.p. w = (%2), %3 vertices</source>
-        <translation type="unfinished"></translation>
+        <translation>polytope invariant fermé&#xa0;: JSR = rho(A_w)^(1/%1) pour le s.m.p. w = (%2), %3 sommets</translation>
     </message>
     <message>
         <source>the invariant polytope&apos;s bracket contradicts the bounds; ignored</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;encadrement du polytope invariant contredit les bornes&#xa0;; ignoré</translation>
     </message>
     <message>
         <source>the parameter range [%1, %2] must be finite with from &lt; to</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;intervalle de paramètre [%1, %2] doit être fini avec from &lt; to</translation>
     </message>
     <message>
         <source>the smoothness k must be between 0 and 30, got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>la régularité k doit être comprise entre 0 et 30 (valeur reçue&#xa0;: %1)</translation>
     </message>
     <message>
         <source>the grid must have 2 to 10000 values, got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>la grille doit compter de 2 à 10000 valeurs (valeur reçue&#xa0;: %1)</translation>
     </message>
     <message>
         <source>no Sobolev exponent: the mask is zero</source>
-        <translation type="unfinished"></translation>
+        <translation>pas d&apos;exposant de Sobolev&#xa0;: le masque est nul</translation>
     </message>
     <message>
         <source>no Sobolev exponent: the symbol has no sum rule (the rules&apos; weights do not each sum to 1), so the scheme does not converge</source>
-        <translation type="unfinished"></translation>
+        <translation>pas d&apos;exposant de Sobolev&#xa0;: le symbole n&apos;a pas de règle de somme (les poids des règles n&apos;ont pas chacun pour somme 1), le schéma ne converge donc pas</translation>
     </message>
     <message>
         <source>no Sobolev exponent: the mask sums to %1, not the arity %2 (the refinement equation has no integrable solution with nonzero mean)</source>
-        <translation type="unfinished"></translation>
+        <translation>pas d&apos;exposant de Sobolev&#xa0;: la somme du masque vaut %1, et non l&apos;arité %2 (l&apos;équation de raffinement n&apos;a pas de solution intégrable de moyenne non nulle)</translation>
     </message>
     <message>
         <source>no positive Sobolev smoothness: rho = %1 &gt;= 1 (to rounding), so s_2 = %2 &lt;= 0: with stable shifts the basic limit function is in no H^s with s &gt; 0, if it is a function at all</source>
-        <translation type="unfinished"></translation>
+        <translation>pas de régularité de Sobolev positive&#xa0;: rho = %1 &gt;= 1 (aux arrondis près), donc s_2 = %2 &lt;= 0&#xa0;: avec des translatées stables, la fonction limite de base n&apos;appartient à aucun H^s avec s &gt; 0, si tant est que ce soit une fonction</translation>
     </message>
     <message>
         <source>Sobolev exponent s_2 = %1: in H^s for every s &lt; %1</source>
-        <translation type="unfinished"></translation>
+        <translation>exposant de Sobolev s_2 = %1&#xa0;: dans H^s pour tout s &lt; %1</translation>
     </message>
     <message>
         <source> (capped at the %1 sum rules; -log_N(rho) / 2 = %2)</source>
-        <translation type="unfinished"></translation>
+        <translation> (plafonné aux %1 règles de somme&#xa0;; -log_N(rho) / 2 = %2)</translation>
     </message>
 </context>
 <context>
@@ -5818,111 +5818,111 @@ Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les
     </message>
     <message>
         <source>With --item: write the certificate of the curve&apos;s exact Hölder exponent (verify-regularity checks it).</source>
-        <translation type="unfinished"></translation>
+        <translation>Avec --item&#xa0;: écrire le certificat de l&apos;exposant de Hölder exact de la courbe (verify-regularity le vérifie).</translation>
     </message>
     <message>
         <source>--certificate needs --item: the certificate is one curve&apos;s</source>
-        <translation type="unfinished"></translation>
+        <translation>--certificate nécessite --item&#xa0;: le certificat porte sur une seule courbe</translation>
     </message>
     <message>
         <source>item &apos;%1&apos; is not a subdivision curve: no regularity to certify</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;élément &apos;%1&apos; n&apos;est pas une courbe de subdivision&#xa0;: aucune régularité à certifier</translation>
     </message>
     <message>
         <source>Where a curve scheme is C^k as one of its parameters moves: the parameter intervals on which the certified Hölder exponent exceeds k, each end bracketed by bisection on certified values.</source>
-        <translation type="unfinished"></translation>
+        <translation>Où un schéma de courbe est C^k lorsque l&apos;un de ses paramètres varie&#xa0;: les intervalles de paramètre sur lesquels l&apos;exposant de Hölder certifié dépasse k, chaque extrémité étant encadrée par dichotomie sur des valeurs certifiées.</translation>
     </message>
     <message>
         <source>The project file (.awb).</source>
-        <translation type="unfinished"></translation>
+        <translation>Le fichier de projet (.awb).</translation>
     </message>
     <message>
         <source>The curve item (default: the first item with an attractor).</source>
-        <translation type="unfinished"></translation>
+        <translation>L&apos;élément courbe (par défaut&#xa0;: le premier élément ayant un attracteur).</translation>
     </message>
     <message>
         <source>omega (four-point), a or b (corner cutting).</source>
-        <translation type="unfinished"></translation>
+        <translation>omega (quatre points), a ou b (découpe des coins).</translation>
     </message>
     <message>
         <source>The start of the range.</source>
-        <translation type="unfinished"></translation>
+        <translation>Le début de l&apos;intervalle.</translation>
     </message>
     <message>
         <source>The end of the range.</source>
-        <translation type="unfinished"></translation>
+        <translation>La fin de l&apos;intervalle.</translation>
     </message>
     <message>
         <source>k: the class C^k asked for (default 1).</source>
-        <translation type="unfinished"></translation>
+        <translation>k&#xa0;: la classe C^k demandée (par défaut 1).</translation>
     </message>
     <message>
         <source>Values of the first sweep, 2 to 10000 (default 24).</source>
-        <translation type="unfinished"></translation>
+        <translation>Valeurs du premier balayage, de 2 à 10000 (par défaut 24).</translation>
     </message>
     <message>
         <source>Bracket width at which bisection stops (default 1e-6).</source>
-        <translation type="unfinished"></translation>
+        <translation>Largeur d&apos;encadrement à laquelle la dichotomie s&apos;arrête (par défaut 1e-6).</translation>
     </message>
     <message>
         <source>Seconds of joint spectral radius per value (default 0.3).</source>
-        <translation type="unfinished"></translation>
+        <translation>Secondes de calcul du rayon spectral joint par valeur (par défaut 0.3).</translation>
     </message>
     <message>
         <source>Print JSON instead of text.</source>
-        <translation type="unfinished"></translation>
+        <translation>Afficher du JSON au lieu de texte.</translation>
     </message>
     <message>
         <source>item &apos;%1&apos; is not a subdivision curve: its scheme has no parameter to move</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;élément &apos;%1&apos; n&apos;est pas une courbe de subdivision&#xa0;: son schéma n&apos;a pas de paramètre à faire varier</translation>
     </message>
     <message>
         <source>item &apos;%1&apos; (%2) has no parameter &apos;%3&apos;: omega belongs to the four-point scheme, a and b to corner cutting</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;élément &apos;%1&apos; (%2) n&apos;a pas de paramètre &apos;%3&apos;&#xa0;: omega appartient au schéma à quatre points, a et b à la découpe des coins</translation>
     </message>
     <message>
         <source>--from and --to are required</source>
-        <translation type="unfinished"></translation>
+        <translation>--from et --to sont obligatoires</translation>
     </message>
     <message>
         <source>%1: C^%2 for %3 in %4 interval(s) of [%5, %6]</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;: C^%2 pour %3 sur %4 intervalle(s) de [%5, %6]</translation>
     </message>
     <message>
         <source>%1 (the range&apos;s end)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (l&apos;extrémité de l&apos;intervalle)</translation>
     </message>
     <message>
         <source>in [%1, %2]%3</source>
-        <translation type="unfinished"></translation>
+        <translation>dans [%1, %2]%3</translation>
     </message>
     <message>
         <source> (the bounds cannot decide beyond)</source>
-        <translation type="unfinished"></translation>
+        <translation> (les bornes ne permettent pas de trancher au-delà)</translation>
     </message>
     <message>
         <source>  from %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>  de %1 à %2</translation>
     </message>
     <message>
         <source>%1 evaluations, %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 évaluations, %2 s</translation>
     </message>
     <message>
         <source>Re-check the certificate of an exact Hölder exponent, independently of the search that found it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Revérifier le certificat d&apos;un exposant de Hölder exact, indépendamment de la recherche qui l&apos;a trouvé.</translation>
     </message>
     <message>
         <source>The certificate (.json).</source>
-        <translation type="unfinished"></translation>
+        <translation>Le certificat (.json).</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished">%1 : %2</translation>
+        <translation>%1&#xa0;: %2</translation>
     </message>
     <message>
         <source>%1: larger than 64 MiB, not a certificate</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;: plus de 64 Mio, ce n&apos;est pas un certificat</translation>
     </message>
     <message>
         <source>Usage: attractor-cli &lt;command&gt; [options]
@@ -5945,7 +5945,26 @@ Commands:
 
 Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>Utilisation&#xa0;: attractor-cli &lt;commande&gt; [options]
+
+Commandes&#xa0;:
+  render     effectuer le rendu d&apos;un élément d&apos;un projet en PNG, SVG ou PDF
+  animate    effectuer le rendu des images de l&apos;animation d&apos;un élément (fichiers PNG, MP4/GIF)
+  analyse    valeurs propres, contractivité, points fixes, dimension (JSON)
+  points     les points de F^k(X0) en CSV
+  check      valider un fichier de projet
+  rewrite    charger et enregistrer un projet sous forme canonique
+  export     points (PLY), réseau ou maillage (OBJ), applications (.ifs), matrices (MATLAB)
+  polygon    le polygone de contrôle après K étapes de subdivision (JSON)
+  import     le fichier IFS d&apos;un autre outil (Fractint .ifs) comme projet
+  import-mesh  un fichier de maillage (OBJ, OFF, PLY) comme projet avec un élément maillage
+  valences   lambda, mu, verdict C1 de Reif par valence (Catmull-Clark, Loop)
+  regularity-interval  où un schéma est C^k lorsqu&apos;un paramètre varie
+  verify-regularity  revérifier le certificat d&apos;un exposant de Hölder exact
+  examples   rendre en PNG les figures intégrées de l&apos;article (000, fig. 2, 3 et 5)
+
+Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&apos;une commande.
+</translation>
     </message>
 </context>
 <context>
@@ -6998,7 +7017,7 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <name>awb::schemes</name>
     <message>
         <source>%1 is not a finite number</source>
-        <translation>%1 n’est pas un nombre fini</translation>
+        <translation>%1 n&apos;est pas un nombre fini</translation>
     </message>
     <message>
         <source>%1 = %2 &lt; 1</source>
@@ -7555,27 +7574,27 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>the arity of a mask must be between 2 and 64, got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;arité d&apos;un masque doit être comprise entre 2 et 64 (valeur reçue&#xa0;: %1)</translation>
     </message>
     <message>
         <source>a mask needs between 1 and 4096 coefficients, got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>un masque nécessite entre 1 et 4096 coefficients (valeur reçue&#xa0;: %1)</translation>
     </message>
     <message>
         <source>the mask&apos;s offset %1 is absurd</source>
-        <translation type="unfinished"></translation>
+        <translation>le décalage %1 du masque est absurde</translation>
     </message>
     <message>
         <source>mask coefficient %1 is not a finite number</source>
-        <translation type="unfinished"></translation>
+        <translation>le coefficient %1 du masque n&apos;est pas un nombre fini</translation>
     </message>
     <message>
         <source>the coefficients a_k with k = %1 mod %2 sum to %3, not 1: every coset of the mask must sum to 1 (the scheme must reproduce constants; the whole mask sums to the arity %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>les coefficients a_k avec k = %1 mod %2 ont pour somme %3, et non 1&#xa0;: chaque classe résiduelle du masque doit avoir pour somme 1 (le schéma doit reproduire les constantes&#xa0;; la somme du masque entier vaut l&apos;arité %2)</translation>
     </message>
     <message>
         <source>mask of arity %1</source>
-        <translation type="unfinished"></translation>
+        <translation>masque d&apos;arité %1</translation>
     </message>
 </context>
 <context>

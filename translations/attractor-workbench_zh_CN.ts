@@ -302,11 +302,11 @@
     </message>
     <message>
         <source>%1, Hölder regularity r = %2 (exact: invariant polytope, certificate)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1，Hölder 正则性 r = %2（精确：不变多面体，证书）</translation>
     </message>
     <message>
         <source>; Sobolev (L²) exponent s₂ = %1</source>
-        <translation type="unfinished"></translation>
+        <translation>；Sobolev（L²）指数 s₂ = %1</translation>
     </message>
 </context>
 <context>
@@ -796,7 +796,7 @@
     </message>
     <message>
         <source>Remove</source>
-        <translation>移除</translation>
+        <translation>删除</translation>
     </message>
     <message>
         <source>Remove the selected key, or the selected track with its keys</source>
@@ -1523,7 +1523,7 @@
     </message>
     <message>
         <source>&quot;%1&quot; is not a number (a fraction such as &quot;3/8&quot; or an expression such as &quot;(1 + sqrt(3))/8&quot; is)</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot; 不是数字（数字可以是分数，如 &quot;3/8&quot;，或表达式，如 &quot;(1 + sqrt(3))/8&quot;）</translation>
     </message>
 </context>
 <context>
@@ -2104,31 +2104,31 @@ Take the difference %7 from the entry in column %8 (%9 → %10) so that the row 
     </message>
     <message>
         <source>%1 cannot be removed: an IFS of own matrices needs at least two maps</source>
-        <translation type="unfinished"></translation>
+        <translation>无法删除 %1：由自定义矩阵构成的 IFS 至少需要两个映射</translation>
     </message>
     <message>
         <source>No map was added: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>未添加映射：%1</translation>
     </message>
     <message>
         <source>No map was removed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>未删除映射：%1</translation>
     </message>
     <message>
         <source>Save Regularity Certificate</source>
-        <translation type="unfinished"></translation>
+        <translation>保存正则性证书</translation>
     </message>
     <message>
         <source>Regularity certificate (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>正则性证书 (*.json)</translation>
     </message>
     <message>
         <source>No certificate: the regularity of the current curve is not computed yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>没有证书：当前曲线的正则性尚未计算。</translation>
     </message>
     <message>
         <source>No certificate was saved: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>未保存证书：%1</translation>
     </message>
 </context>
 <context>
@@ -2980,19 +2980,19 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>Remove</source>
-        <translation type="unfinished">移除</translation>
+        <translation>删除</translation>
     </message>
     <message>
         <source>Remove the map %1 from the IFS (one undo step)</source>
-        <translation type="unfinished"></translation>
+        <translation>从 IFS 中删除映射 %1（一个撤销步骤）</translation>
     </message>
     <message>
         <source>Add a Map</source>
-        <translation type="unfinished"></translation>
+        <translation>添加映射</translation>
     </message>
     <message>
         <source>A new map S_(p+1), a copy of the last one to edit cell by cell (one undo step)</source>
-        <translation type="unfinished"></translation>
+        <translation>新映射 S_(p+1)，为最后一个映射的副本，可逐个单元格编辑（一个撤销步骤）</translation>
     </message>
 </context>
 <context>
@@ -3743,71 +3743,71 @@ It was kept as %2.</source>
     <name>awb::RegularityCertificate</name>
     <message>
         <source>%1 is not a finite number</source>
-        <translation type="unfinished">%1 不是有限数</translation>
+        <translation>%1 不是有限数</translation>
     </message>
     <message>
         <source>%1 is not an index</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 不是索引</translation>
     </message>
     <message>
         <source>%1 has no array &quot;%2&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 没有数组 &quot;%2&quot;</translation>
     </message>
     <message>
         <source>%1 is not an array of numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 不是数值数组</translation>
     </message>
     <message>
         <source>&quot;polytope&quot; is not an awb-invariant-polytope object</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;polytope&quot; 不是 awb-invariant-polytope 对象</translation>
     </message>
     <message>
         <source>polytope.matrices[%1] is not square</source>
-        <translation type="unfinished"></translation>
+        <translation>polytope.matrices[%1] 不是方阵</translation>
     </message>
     <message>
         <source>polytope.lambda[%1] holds a term that is not [index, coefficient]</source>
-        <translation type="unfinished"></translation>
+        <translation>polytope.lambda[%1] 含有一个不是 [index, coefficient] 形式的项</translation>
     </message>
     <message>
         <source>the regularity is not exact: no invariant polytope closed, so there is no certificate (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>正则性不是精确的：没有不变多面体闭合，因此没有证书（%1）</translation>
     </message>
     <message>
         <source>not JSON: %1 at offset %2</source>
-        <translation type="unfinished"></translation>
+        <translation>不是 JSON：%1，位于偏移量 %2 处</translation>
     </message>
     <message>
         <source>not an attractor-workbench regularity certificate (format %1, version 1)</source>
-        <translation type="unfinished"></translation>
+        <translation>不是 attractor-workbench 正则性证书（格式 %1，版本 1）</translation>
     </message>
     <message>
         <source>the scheme has no difference scheme to certify: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>该格式没有可供认证的差分格式：%1</translation>
     </message>
     <message>
         <source>the certificate has %1 matrices, the scheme&apos;s analysis %2</source>
-        <translation type="unfinished"></translation>
+        <translation>证书包含 %1 个矩阵，而该格式的分析给出 %2 个</translation>
     </message>
     <message>
         <source>matrix %1 of the certificate is not the scheme&apos;s (the transition matrix T_%2 of its difference scheme)</source>
-        <translation type="unfinished"></translation>
+        <translation>证书的矩阵 %1 与该格式的不符（应为其差分格式的转移矩阵 T_%2）</translation>
     </message>
     <message>
         <source>arity %1 and shift %2 do not match the scheme&apos;s (%3 and %4)</source>
-        <translation type="unfinished"></translation>
+        <translation>元数 %1 和平移量 %2 与该格式的（%3 和 %4）不一致</translation>
     </message>
     <message>
         <source>the claimed Hölder exponent [%1, %2] is not what the polytope proves: [%3, %4]</source>
-        <translation type="unfinished"></translation>
+        <translation>声称的 Hölder 指数 [%1, %2] 与多面体所证明的不符：[%3, %4]</translation>
     </message>
     <message>
         <source>certificate verified: the Hölder exponent of the %1 lies in [%2, %3]; JSR in [%4, %5]</source>
-        <translation type="unfinished"></translation>
+        <translation>证书已验证：%1 的 Hölder 指数位于 [%2, %3] 内；JSR 位于 [%4, %5] 内</translation>
     </message>
     <message>
         <source>certificate rejected: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>证书被拒绝：%1</translation>
     </message>
 </context>
 <context>
@@ -3854,19 +3854,19 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>r(0) = 1, r(1/16) = 2</source>
-        <translation type="unfinished"></translation>
+        <translation>r(0) = 1, r(1/16) = 2</translation>
     </message>
     <message>
         <source>C%1 (certified)</source>
-        <translation type="unfinished"></translation>
+        <translation>C%1（已认证）</translation>
     </message>
     <message>
         <source>; C¹ for ω in (%1, %2), the ends in [%3, %4] and [%5, %6]</source>
-        <translation type="unfinished"></translation>
+        <translation>；当 ω ∈ (%1, %2) 时为 C¹，两端分别位于 [%3, %4] 和 [%5, %6] 内</translation>
     </message>
     <message>
         <source>%1 values of ω; widest interval %2 (bounds certified; the upper bound is exact for this interpolatory scheme)%3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 个 ω 值；最宽区间 %2（界已认证；对于此插值格式，上界是精确的）%3</translation>
     </message>
 </context>
 <context>
@@ -3901,11 +3901,11 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>Save Certificate…</source>
-        <translation type="unfinished"></translation>
+        <translation>保存证书…</translation>
     </message>
     <message>
         <source>The invariant polytope that proves the exponent, as JSON: attractor-cli verify-regularity re-checks it without any search</source>
-        <translation type="unfinished"></translation>
+        <translation>证明该指数的不变多面体，以 JSON 格式保存：attractor-cli verify-regularity 无需任何搜索即可重新检验它</translation>
     </message>
 </context>
 <context>
@@ -4222,67 +4222,67 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>mask entry %1, &quot;%2&quot;, is not a number (fractions such as 3/8 and expressions such as (1 + sqrt(3))/8 are)</source>
-        <translation type="unfinished"></translation>
+        <translation>掩模第 %1 项 &quot;%2&quot; 不是数字（可以是分数，如 3/8，或表达式，如 (1 + sqrt(3))/8）</translation>
     </message>
     <message>
         <source>no sum rule: σ(z) = %1 does not divide the symbol a(z), so the scheme has no difference scheme and cannot converge</source>
-        <translation type="unfinished"></translation>
+        <translation>无和规则：σ(z) = %1 不整除符号 a(z)，因此该格式没有差分格式，不能收敛</translation>
     </message>
     <message>
         <source>1 sum rule</source>
-        <translation type="unfinished"></translation>
+        <translation>1 条和规则</translation>
     </message>
     <message>
         <source>%1 sum rules</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 条和规则</translation>
     </message>
     <message>
         <source>%1: a(z) = σ(z)%2 b(z) / %3%2 with σ(z) = %4 and b = (%5) from z%6</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：a(z) = σ(z)%2 b(z) / %3%2，其中 σ(z) = %4，b = (%5) 从 z%6 起</translation>
     </message>
     <message>
         <source>expected a non-empty array of coefficients</source>
-        <translation type="unfinished"></translation>
+        <translation>应为非空的系数数组</translation>
     </message>
     <message>
         <source>Mask</source>
-        <translation type="unfinished"></translation>
+        <translation>掩模</translation>
     </message>
     <message>
         <source>Arity N</source>
-        <translation type="unfinished"></translation>
+        <translation>元数 N</translation>
     </message>
     <message>
         <source>Each step makes N new points per old one. A new arity whose cosets the mask does not fit starts from the N-ary piecewise linear mask.</source>
-        <translation type="unfinished"></translation>
+        <translation>每一步对每个旧点生成 N 个新点。若当前掩模不适合新元数的陪集，则从 N 进分段线性掩模开始。</translation>
     </message>
     <message>
         <source>Mask a_k</source>
-        <translation type="unfinished"></translation>
+        <translation>掩模 a_k</translation>
     </message>
     <message>
         <source>q_n = Σ a_(n − N l) p_l. Separate the coefficients by commas (by semicolons to use decimal commas); fractions (3/8) and expressions ((1 + sqrt(3))/8) are kept as typed. Each of the N cosets a_(r + N k) must sum to 1.</source>
-        <translation type="unfinished"></translation>
+        <translation>q_n = Σ a_(n − N l) p_l。系数之间用逗号分隔（若使用小数逗号，则用分号分隔）；分数（3/8）和表达式（(1 + sqrt(3))/8）按输入原样保留。N 个陪集 a_(r + N k) 各自之和必须为 1。</translation>
     </message>
     <message>
         <source>First index k</source>
-        <translation type="unfinished"></translation>
+        <translation>起始索引 k</translation>
     </message>
     <message>
         <source>The index of the mask&apos;s first coefficient: the cubic B-spline is 1/8, 1/2, 3/4, 1/2, 1/8 from k = −2</source>
-        <translation type="unfinished"></translation>
+        <translation>掩模首个系数的索引：三次 B 样条为 1/8, 1/2, 3/4, 1/2, 1/8，从 k = −2 开始</translation>
     </message>
     <message>
         <source>Symbol</source>
-        <translation type="unfinished"></translation>
+        <translation>符号</translation>
     </message>
     <message>
         <source>The symbol a(z) = Σ a_k z^k divided by σ(z) = 1 + z + … + z^(N−1) as often as it goes: each factor is one sum rule (polynomials of one more degree reproduced, one more difference scheme)</source>
-        <translation type="unfinished"></translation>
+        <translation>符号 a(z) = Σ a_k z^k 被 σ(z) = 1 + z + … + z^(N−1) 尽可能多次地整除：每个因子对应一条和规则（可再现的多项式次数高一次，差分格式多一个）</translation>
     </message>
     <message>
         <source>the symbol follows from the mask: edit the mask</source>
-        <translation type="unfinished"></translation>
+        <translation>符号由掩模决定：请编辑掩模</translation>
     </message>
 </context>
 <context>
@@ -4949,119 +4949,119 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>a curve needs at least one piece</source>
-        <translation type="unfinished"></translation>
+        <translation>曲线至少需要一段</translation>
     </message>
     <message>
         <source>a Bézier piece needs 2 to 31 plane control points</source>
-        <translation type="unfinished"></translation>
+        <translation>Bézier 段需要 2 到 31 个平面控制点</translation>
     </message>
     <message>
         <source>a Bézier piece</source>
-        <translation type="unfinished"></translation>
+        <translation>一个 Bézier 段</translation>
     </message>
     <message>
         <source>a Takagi image needs 2 to 31 control points</source>
-        <translation type="unfinished"></translation>
+        <translation>Takagi 图像需要 2 到 31 个控制点</translation>
     </message>
     <message>
         <source>the control points</source>
-        <translation type="unfinished"></translation>
+        <translation>控制点</translation>
     </message>
     <message>
         <source>a Takagi image needs a finite |y| &lt;= 1</source>
-        <translation type="unfinished"></translation>
+        <translation>Takagi 图像需要有限的 |y| &lt;= 1</translation>
     </message>
     <message>
         <source>the Hausdorff bracket needs a nonempty set of plane points</source>
-        <translation type="unfinished"></translation>
+        <translation>Hausdorff 区间需要非空的平面点集</translation>
     </message>
     <message>
         <source>the point set</source>
-        <translation type="unfinished"></translation>
+        <translation>点集</translation>
     </message>
     <message>
         <source>the s.m.p. candidate&apos;s leading eigenvalue is complex (%1); the complex-polytope variant is not implemented</source>
-        <translation type="unfinished"></translation>
+        <translation>s.m.p. 候选的主特征值为复数（%1）；复多面体变体尚未实现</translation>
     </message>
     <message>
         <source>the s.m.p. candidate&apos;s leading eigenvalue is not simple in modulus (not a dominant product)</source>
-        <translation type="unfinished"></translation>
+        <translation>s.m.p. 候选的主特征值按模不是单一的（不是占优乘积）</translation>
     </message>
     <message>
         <source>no real leading eigenvector</source>
-        <translation type="unfinished"></translation>
+        <translation>没有实的主特征向量</translation>
     </message>
     <message>
         <source>invariant polytope: cancelled</source>
-        <translation type="unfinished"></translation>
+        <translation>不变多面体：已取消</translation>
     </message>
     <message>
         <source>invariant polytope did not close in the budget (%1 vertices)</source>
-        <translation type="unfinished"></translation>
+        <translation>不变多面体未能在预算内闭合（%1 个顶点）</translation>
     </message>
     <message>
         <source>invariant polytope did not close within %1 vertices</source>
-        <translation type="unfinished"></translation>
+        <translation>不变多面体在 %1 个顶点内未闭合</translation>
     </message>
     <message>
         <source>JSR = 0: the matrices are empty or zero</source>
-        <translation type="unfinished"></translation>
+        <translation>JSR = 0：矩阵为空或为零</translation>
     </message>
     <message>
         <source>every product up to length %1 has spectral radius 0: no s.m.p. candidate</source>
-        <translation type="unfinished"></translation>
+        <translation>长度不超过 %1 的所有乘积的谱半径均为 0：没有 s.m.p. 候选</translation>
     </message>
     <message>
         <source>the family is numerically nilpotent (every product of length L vanishes to rounding): JSR = 0, no s.m.p. to certify</source>
-        <translation type="unfinished"></translation>
+        <translation>该矩阵族在数值上是幂零的（每个长度为 L 的乘积在舍入误差范围内为零）：JSR = 0，没有可认证的 s.m.p.</translation>
     </message>
     <message>
         <source>the invariant polytope closed but its certificate failed the check: </source>
-        <translation type="unfinished"></translation>
+        <translation>不变多面体已闭合，但其证书未通过检验：</translation>
     </message>
     <message>
         <source>invariant polytope closed: JSR = rho(A_w)^(1/%1) for the s.m.p. w = (%2), %3 vertices</source>
-        <translation type="unfinished"></translation>
+        <translation>不变多面体已闭合：对于 s.m.p. w = (%2)，JSR = rho(A_w)^(1/%1)，%3 个顶点</translation>
     </message>
     <message>
         <source>the invariant polytope&apos;s bracket contradicts the bounds; ignored</source>
-        <translation type="unfinished"></translation>
+        <translation>不变多面体的区间与界相矛盾；已忽略</translation>
     </message>
     <message>
         <source>the parameter range [%1, %2] must be finite with from &lt; to</source>
-        <translation type="unfinished"></translation>
+        <translation>参数范围 [%1, %2] 必须有限且满足 from &lt; to</translation>
     </message>
     <message>
         <source>the smoothness k must be between 0 and 30, got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>光滑度 k 必须介于 0 和 30 之间，实际为 %1</translation>
     </message>
     <message>
         <source>the grid must have 2 to 10000 values, got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>网格必须包含 2 到 10000 个值，实际为 %1</translation>
     </message>
     <message>
         <source>no Sobolev exponent: the mask is zero</source>
-        <translation type="unfinished"></translation>
+        <translation>无 Sobolev 指数：掩模为零</translation>
     </message>
     <message>
         <source>no Sobolev exponent: the symbol has no sum rule (the rules&apos; weights do not each sum to 1), so the scheme does not converge</source>
-        <translation type="unfinished"></translation>
+        <translation>无 Sobolev 指数：符号不满足和规则（各规则的权重并非各自之和为 1），因此该格式不收敛</translation>
     </message>
     <message>
         <source>no Sobolev exponent: the mask sums to %1, not the arity %2 (the refinement equation has no integrable solution with nonzero mean)</source>
-        <translation type="unfinished"></translation>
+        <translation>无 Sobolev 指数：掩模之和为 %1，而不是元数 %2（加细方程没有均值非零的可积解）</translation>
     </message>
     <message>
         <source>no positive Sobolev smoothness: rho = %1 &gt;= 1 (to rounding), so s_2 = %2 &lt;= 0: with stable shifts the basic limit function is in no H^s with s &gt; 0, if it is a function at all</source>
-        <translation type="unfinished"></translation>
+        <translation>无正的 Sobolev 光滑度：rho = %1 &gt;= 1（在舍入误差范围内），因此 s_2 = %2 &lt;= 0：在平移稳定的情况下，基本极限函数不属于任何 s &gt; 0 的 H^s（如果它确实是一个函数的话）</translation>
     </message>
     <message>
         <source>Sobolev exponent s_2 = %1: in H^s for every s &lt; %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Sobolev 指数 s_2 = %1：对所有 s &lt; %1 属于 H^s</translation>
     </message>
     <message>
         <source> (capped at the %1 sum rules; -log_N(rho) / 2 = %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>（受 %1 条和规则限制；-log_N(rho) / 2 = %2）</translation>
     </message>
 </context>
 <context>
@@ -5808,111 +5808,111 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>With --item: write the certificate of the curve&apos;s exact Hölder exponent (verify-regularity checks it).</source>
-        <translation type="unfinished"></translation>
+        <translation>配合 --item：写出该曲线精确 Hölder 指数的证书（由 verify-regularity 检验）。</translation>
     </message>
     <message>
         <source>--certificate needs --item: the certificate is one curve&apos;s</source>
-        <translation type="unfinished"></translation>
+        <translation>--certificate 需要 --item：证书属于单条曲线</translation>
     </message>
     <message>
         <source>item &apos;%1&apos; is not a subdivision curve: no regularity to certify</source>
-        <translation type="unfinished"></translation>
+        <translation>项 &apos;%1&apos; 不是细分曲线：没有可认证的正则性</translation>
     </message>
     <message>
         <source>Where a curve scheme is C^k as one of its parameters moves: the parameter intervals on which the certified Hölder exponent exceeds k, each end bracketed by bisection on certified values.</source>
-        <translation type="unfinished"></translation>
+        <translation>当曲线细分格式的某个参数变化时，确定其在何处为 C^k：即认证的 Hölder 指数大于 k 的参数区间，每个端点都通过对认证值进行二分来确定其所在区间。</translation>
     </message>
     <message>
         <source>The project file (.awb).</source>
-        <translation type="unfinished"></translation>
+        <translation>项目文件（.awb）。</translation>
     </message>
     <message>
         <source>The curve item (default: the first item with an attractor).</source>
-        <translation type="unfinished"></translation>
+        <translation>曲线项（默认：第一个带吸引子的项）。</translation>
     </message>
     <message>
         <source>omega (four-point), a or b (corner cutting).</source>
-        <translation type="unfinished"></translation>
+        <translation>omega（四点格式），a 或 b（切角格式）。</translation>
     </message>
     <message>
         <source>The start of the range.</source>
-        <translation type="unfinished"></translation>
+        <translation>范围的起点。</translation>
     </message>
     <message>
         <source>The end of the range.</source>
-        <translation type="unfinished"></translation>
+        <translation>范围的终点。</translation>
     </message>
     <message>
         <source>k: the class C^k asked for (default 1).</source>
-        <translation type="unfinished"></translation>
+        <translation>k：所要求的光滑类 C^k（默认 1）。</translation>
     </message>
     <message>
         <source>Values of the first sweep, 2 to 10000 (default 24).</source>
-        <translation type="unfinished"></translation>
+        <translation>第一轮扫描的取值个数，2 到 10000（默认 24）。</translation>
     </message>
     <message>
         <source>Bracket width at which bisection stops (default 1e-6).</source>
-        <translation type="unfinished"></translation>
+        <translation>二分停止时的区间宽度（默认 1e-6）。</translation>
     </message>
     <message>
         <source>Seconds of joint spectral radius per value (default 0.3).</source>
-        <translation type="unfinished"></translation>
+        <translation>每个取值计算联合谱半径所用的秒数（默认 0.3）。</translation>
     </message>
     <message>
         <source>Print JSON instead of text.</source>
-        <translation type="unfinished"></translation>
+        <translation>输出 JSON 而非文本。</translation>
     </message>
     <message>
         <source>item &apos;%1&apos; is not a subdivision curve: its scheme has no parameter to move</source>
-        <translation type="unfinished"></translation>
+        <translation>项 &apos;%1&apos; 不是细分曲线：其格式没有可变动的参数</translation>
     </message>
     <message>
         <source>item &apos;%1&apos; (%2) has no parameter &apos;%3&apos;: omega belongs to the four-point scheme, a and b to corner cutting</source>
-        <translation type="unfinished"></translation>
+        <translation>项 &apos;%1&apos;（%2）没有参数 &apos;%3&apos;：omega 属于四点格式，a 和 b 属于切角格式</translation>
     </message>
     <message>
         <source>--from and --to are required</source>
-        <translation type="unfinished"></translation>
+        <translation>必须指定 --from 和 --to</translation>
     </message>
     <message>
         <source>%1: C^%2 for %3 in %4 interval(s) of [%5, %6]</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：当 %3 位于 [%5, %6] 中的 %4 个区间内时为 C^%2</translation>
     </message>
     <message>
         <source>%1 (the range&apos;s end)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（范围终点）</translation>
     </message>
     <message>
         <source>in [%1, %2]%3</source>
-        <translation type="unfinished"></translation>
+        <translation>位于 [%1, %2] 内%3</translation>
     </message>
     <message>
         <source> (the bounds cannot decide beyond)</source>
-        <translation type="unfinished"></translation>
+        <translation>（超出此范围，界无法判定）</translation>
     </message>
     <message>
         <source>  from %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>  从 %1 到 %2</translation>
     </message>
     <message>
         <source>%1 evaluations, %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 次求值，%2 秒</translation>
     </message>
     <message>
         <source>Re-check the certificate of an exact Hölder exponent, independently of the search that found it.</source>
-        <translation type="unfinished"></translation>
+        <translation>独立于找到精确 Hölder 指数的那次搜索，重新检验其证书。</translation>
     </message>
     <message>
         <source>The certificate (.json).</source>
-        <translation type="unfinished"></translation>
+        <translation>证书（.json）。</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished">%1：%2</translation>
+        <translation>%1：%2</translation>
     </message>
     <message>
         <source>%1: larger than 64 MiB, not a certificate</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：大于 64 MiB，不是证书</translation>
     </message>
     <message>
         <source>Usage: attractor-cli &lt;command&gt; [options]
@@ -5935,7 +5935,26 @@ Commands:
 
 Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>用法：attractor-cli &lt;command&gt; [options]
+
+命令：
+  render     将项目中的一个项渲染为 PNG、SVG 或 PDF
+  animate    渲染一个项的动画帧（PNG 文件、MP4/GIF）
+  analyse    特征值、压缩性、不动点、维数（JSON）
+  points     以 CSV 格式输出 F^k(X0) 的点
+  check      验证项目文件
+  rewrite    加载项目并以规范形式保存
+  export     点（PLY）、网或网格（OBJ）、映射（.ifs）、矩阵（MATLAB）
+  polygon    K 步细分后的控制多边形（JSON）
+  import     将其他工具的 IFS 文件（Fractint .ifs）导入为项目
+  import-mesh  将网格文件（OBJ、OFF、PLY）导入为带网格项的项目
+  valences   每个价的 lambda、mu 及 Reif 的 C1 判定（Catmull-Clark、Loop）
+  regularity-interval  参数变化时格式在何处为 C^k
+  verify-regularity  重新检验精确 Hölder 指数的证书
+  examples   将内置的论文插图（000 Figs. 2, 3, 5）渲染为 PNG
+
+运行 &apos;attractor-cli &lt;command&gt; --help&apos; 查看某个命令的选项。
+</translation>
     </message>
 </context>
 <context>
@@ -7545,27 +7564,27 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>the arity of a mask must be between 2 and 64, got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>掩模的元数必须介于 2 和 64 之间，实际为 %1</translation>
     </message>
     <message>
         <source>a mask needs between 1 and 4096 coefficients, got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>掩模需要 1 到 4096 个系数，实际为 %1</translation>
     </message>
     <message>
         <source>the mask&apos;s offset %1 is absurd</source>
-        <translation type="unfinished"></translation>
+        <translation>掩模的偏移量 %1 不合理</translation>
     </message>
     <message>
         <source>mask coefficient %1 is not a finite number</source>
-        <translation type="unfinished"></translation>
+        <translation>掩模系数 %1 不是有限数</translation>
     </message>
     <message>
         <source>the coefficients a_k with k = %1 mod %2 sum to %3, not 1: every coset of the mask must sum to 1 (the scheme must reproduce constants; the whole mask sums to the arity %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>满足 k = %1 mod %2 的系数 a_k 之和为 %3，而不是 1：掩模的每个陪集之和都必须为 1（格式必须再现常数；整个掩模之和为元数 %2）</translation>
     </message>
     <message>
         <source>mask of arity %1</source>
-        <translation type="unfinished"></translation>
+        <translation>元数为 %1 的掩模</translation>
     </message>
 </context>
 <context>
