@@ -352,22 +352,6 @@ private:
     std::vector<std::vector<std::vector<std::pair<int, double>>>> m_lambda;
 };
 
-void checkInput(const std::vector<Mat> &A)
-{
-    if (A.empty())
-        throw InputError(coreTranslate("awb::analysis", "the joint spectral radius needs at least "
-                                                        "one matrix"));
-    const Eigen::Index L = A.front().rows();
-    for (size_t i = 0; i < A.size(); ++i) {
-        if (A[i].rows() != L || A[i].cols() != L)
-            throw InputError(formatMessage(
-                coreTranslate("awb::analysis", "the joint spectral radius needs square matrices "
-                                               "of one size; matrix %1 differs"),
-                i + 1));
-        requireFinite(A[i], formatMessage(coreTranslate("awb::analysis", "matrix %1"), i + 1));
-    }
-}
-
 double seconds(Clock::time_point t0)
 {
     return std::chrono::duration<double>(Clock::now() - t0).count();
@@ -531,7 +515,7 @@ std::string certificateJson(const PolytopeCertificate &c)
 
 PolytopeResult invariantPolytope(const std::vector<Mat> &A, const PolytopeOptions &options)
 {
-    checkInput(A);
+    requireMatrixFamily(A);
     const Clock::time_point t0 = Clock::now();
     PolytopeResult out;
     const int L = int(A.front().rows());

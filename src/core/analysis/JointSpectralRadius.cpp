@@ -307,7 +307,7 @@ double spectralRadiusOf(const Mat &M, double *margin)
     return r;
 }
 
-JsrBounds jointSpectralRadius(const std::vector<Mat> &A, const JsrOptions &options)
+void requireMatrixFamily(const std::vector<Mat> &A)
 {
     if (A.empty())
         throw InputError(coreTranslate("awb::analysis", "the joint spectral radius needs at least "
@@ -321,6 +321,12 @@ JsrBounds jointSpectralRadius(const std::vector<Mat> &A, const JsrOptions &optio
                 i + 1));
         requireFinite(A[i], formatMessage(coreTranslate("awb::analysis", "matrix %1"), i + 1));
     }
+}
+
+JsrBounds jointSpectralRadius(const std::vector<Mat> &A, const JsrOptions &options)
+{
+    requireMatrixFamily(A);
+    const Eigen::Index L = A.front().rows();
     if (L == 0) {
         JsrBounds b;
         b.upper = 0.0;

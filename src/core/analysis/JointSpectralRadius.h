@@ -51,6 +51,8 @@ struct JsrOptions {
 // non-finite entries. The bounds are valid whenever the call returns, also after a cancel or
 // a time-out (then just wider).
 JsrBounds jointSpectralRadius(const std::vector<Mat> &A, const JsrOptions &options = {});
+// The checks above, for other algorithms on the same input (InvariantPolytope.h).
+void requireMatrixFamily(const std::vector<Mat> &A);
 
 // Spectral radius of one square matrix, and a relative error margin for it: about 1e-12
 // for a well separated dominant eigenvalue, larger when the top eigenvalues cluster (a nearly

@@ -29,17 +29,6 @@ std::string ordinal(int n)
     return std::to_string(n) + suffix;
 }
 
-std::vector<double> trimmed(std::vector<double> c)
-{
-    const double scale = std::accumulate(c.begin(), c.end(), 0.0,
-                                         [](double s, double v) { return s + std::abs(v); });
-    auto tiny = [&](double v) { return std::abs(v) <= 1e-15 * scale; };
-    while (!c.empty() && tiny(c.back()))
-        c.pop_back();
-    auto first = std::find_if_not(c.begin(), c.end(), tiny);
-    c.erase(c.begin(), first);
-    return c;
-}
 
 JsrOptions jsrOptions(const RegularityOptions &o, int arity, int order, bool quotientOnly)
 {
@@ -200,9 +189,21 @@ std::string Regularity::smoothnessLabel() const
     return "C^" + std::to_string(smoothness);
 }
 
+std::vector<double> trimmedMask(std::vector<double> c)
+{
+    const double scale = std::accumulate(c.begin(), c.end(), 0.0,
+                                         [](double s, double v) { return s + std::abs(v); });
+    auto tiny = [&](double v) { return std::abs(v) <= 1e-15 * scale; };
+    while (!c.empty() && tiny(c.back()))
+        c.pop_back();
+    auto first = std::find_if_not(c.begin(), c.end(), tiny);
+    c.erase(c.begin(), first);
+    return c;
+}
+
 DifferenceMask dividedDifferenceMask(const std::vector<double> &mask, int arity, int maxOrder)
 {
-    DifferenceMask out{0, trimmed(mask)};
+    DifferenceMask out{0, trimmedMask(mask)};
     const int N = arity;
     while (out.order < maxOrder && int(out.mask.size()) >= N) {
         const std::vector<double> &p = out.mask;
@@ -225,7 +226,7 @@ DifferenceMask dividedDifferenceMask(const std::vector<double> &mask, int arity,
             break;
         for (double &v : q)
             v *= N;
-        out.mask = trimmed(q);
+        out.mask = trimmedMask(q);
         ++out.order;
         if (out.mask.empty())
             break;
@@ -265,7 +266,7 @@ Regularity maskRegularity(const std::vector<double> &mask, int arity,
                                                             "not a finite number"));
     Regularity r;
     r.arity = arity;
-    const std::vector<double> a = trimmed(mask);
+    const std::vector<double> a = trimmedMask(mask);
     double sum = 0.0, abssum = 0.0;
     for (double v : a) {
         sum += v;

@@ -15,18 +15,6 @@ namespace awb {
 
 namespace {
 
-std::vector<double> trimmedMask(std::vector<double> c)
-{
-    const double scale = std::accumulate(c.begin(), c.end(), 0.0,
-                                         [](double s, double v) { return s + std::abs(v); });
-    auto tiny = [&](double v) { return std::abs(v) <= 1e-15 * scale; };
-    while (!c.empty() && tiny(c.back()))
-        c.pop_back();
-    auto first = std::find_if_not(c.begin(), c.end(), tiny);
-    c.erase(c.begin(), first);
-    return c;
-}
-
 // An orthonormal basis (columns) of V = {(1 - z)^{2n} w(z)} inside the sequences on M indices.
 Mat complementOfPolynomials(int M, int twoN)
 {
