@@ -5852,7 +5852,7 @@ Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --he
     </message>
     <message>
         <source>omega (four-point), a or b (corner cutting).</source>
-        <translation>omega (čtyřbodové schéma), a nebo b (ořezávání rohů).</translation>
+        <translation type="vanished">omega (čtyřbodové schéma), a nebo b (ořezávání rohů).</translation>
     </message>
     <message>
         <source>The start of the range.</source>
@@ -5888,7 +5888,7 @@ Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --he
     </message>
     <message>
         <source>item &apos;%1&apos; (%2) has no parameter &apos;%3&apos;: omega belongs to the four-point scheme, a and b to corner cutting</source>
-        <translation>položka &apos;%1&apos; (%2) nemá parametr &apos;%3&apos;: omega patří ke čtyřbodovému schématu, a a b k ořezávání rohů</translation>
+        <translation type="vanished">položka &apos;%1&apos; (%2) nemá parametr &apos;%3&apos;: omega patří ke čtyřbodovému schématu, a a b k ořezávání rohů</translation>
     </message>
     <message>
         <source>--from and --to are required</source>
@@ -5975,6 +5975,30 @@ Příkazy:
 
 Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
 </translation>
+    </message>
+    <message>
+        <source>omega (four-point), a or b (corner cutting), or the name used in --mask.</source>
+        <translation>omega (čtyřbodové schéma), a nebo b (ořezávání rohů), nebo jméno použité v --mask.</translation>
+    </message>
+    <message>
+        <source>For a mask item: its coefficients with the parameter in them, e.g. &quot;-w, 0, 1/2 + w, 1, 1/2 + w, 0, -w&quot;.</source>
+        <translation>Pro položku s maskou: její koeficienty s parametrem, např. &quot;-w, 0, 1/2 + w, 1, 1/2 + w, 0, -w&quot;.</translation>
+    </message>
+    <message>
+        <source>--mask needs a mask item; &apos;%1&apos; is %2</source>
+        <translation>--mask vyžaduje položku s maskou; „%1“ je %2</translation>
+    </message>
+    <message>
+        <source>the parameter of --mask must be a name that is not a function or constant (pi, e, sqrt, ...), got &apos;%1&apos;</source>
+        <translation>parametr --mask musí být jméno, které není funkcí ani konstantou (pi, e, sqrt, ...), zadáno „%1“</translation>
+    </message>
+    <message>
+        <source>the mask &apos;%1&apos; does not contain the parameter &apos;%2&apos;</source>
+        <translation>maska „%1“ neobsahuje parametr „%2“</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; (%2) has no parameter &apos;%3&apos;: omega belongs to the four-point scheme, a and b to corner cutting; a mask item takes --mask with the parameter in its coefficients</source>
+        <translation>položka „%1“ (%2) nemá parametr „%3“: omega patří čtyřbodovému schématu, a a b ořezávání rohů; položka s maskou bere --mask s parametrem v koeficientech</translation>
     </message>
 </context>
 <context>

@@ -5842,7 +5842,7 @@ Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les
     </message>
     <message>
         <source>omega (four-point), a or b (corner cutting).</source>
-        <translation>omega (quatre points), a ou b (découpe des coins).</translation>
+        <translation type="vanished">omega (quatre points), a ou b (découpe des coins).</translation>
     </message>
     <message>
         <source>The start of the range.</source>
@@ -5878,7 +5878,7 @@ Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les
     </message>
     <message>
         <source>item &apos;%1&apos; (%2) has no parameter &apos;%3&apos;: omega belongs to the four-point scheme, a and b to corner cutting</source>
-        <translation>l&apos;élément &apos;%1&apos; (%2) n&apos;a pas de paramètre &apos;%3&apos;&#xa0;: omega appartient au schéma à quatre points, a et b à la découpe des coins</translation>
+        <translation type="vanished">l&apos;élément &apos;%1&apos; (%2) n&apos;a pas de paramètre &apos;%3&apos;&#xa0;: omega appartient au schéma à quatre points, a et b à la découpe des coins</translation>
     </message>
     <message>
         <source>--from and --to are required</source>
@@ -5965,6 +5965,30 @@ Commandes&#xa0;:
 
 Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&apos;une commande.
 </translation>
+    </message>
+    <message>
+        <source>omega (four-point), a or b (corner cutting), or the name used in --mask.</source>
+        <translation>omega (quatre points), a ou b (découpe des coins), ou le nom utilisé dans --mask.</translation>
+    </message>
+    <message>
+        <source>For a mask item: its coefficients with the parameter in them, e.g. &quot;-w, 0, 1/2 + w, 1, 1/2 + w, 0, -w&quot;.</source>
+        <translation>Pour un élément masque&#xa0;: ses coefficients contenant le paramètre, par ex. &quot;-w, 0, 1/2 + w, 1, 1/2 + w, 0, -w&quot;.</translation>
+    </message>
+    <message>
+        <source>--mask needs a mask item; &apos;%1&apos; is %2</source>
+        <translation>--mask demande un élément masque&#xa0;; «&#xa0;%1&#xa0;» est %2</translation>
+    </message>
+    <message>
+        <source>the parameter of --mask must be a name that is not a function or constant (pi, e, sqrt, ...), got &apos;%1&apos;</source>
+        <translation>le paramètre de --mask doit être un nom qui n&apos;est ni une fonction ni une constante (pi, e, sqrt, ...), reçu «&#xa0;%1&#xa0;»</translation>
+    </message>
+    <message>
+        <source>the mask &apos;%1&apos; does not contain the parameter &apos;%2&apos;</source>
+        <translation>le masque «&#xa0;%1&#xa0;» ne contient pas le paramètre «&#xa0;%2&#xa0;»</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; (%2) has no parameter &apos;%3&apos;: omega belongs to the four-point scheme, a and b to corner cutting; a mask item takes --mask with the parameter in its coefficients</source>
+        <translation>l&apos;élément «&#xa0;%1&#xa0;» (%2) n&apos;a pas de paramètre «&#xa0;%3&#xa0;»&#xa0;: omega appartient au schéma à quatre points, a et b à la découpe des coins&#xa0;; un élément masque prend --mask avec le paramètre dans ses coefficients</translation>
     </message>
 </context>
 <context>

@@ -5832,7 +5832,7 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>omega (four-point), a or b (corner cutting).</source>
-        <translation>omega（四点格式），a 或 b（切角格式）。</translation>
+        <translation type="vanished">omega（四点格式），a 或 b（切角格式）。</translation>
     </message>
     <message>
         <source>The start of the range.</source>
@@ -5868,7 +5868,7 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>item &apos;%1&apos; (%2) has no parameter &apos;%3&apos;: omega belongs to the four-point scheme, a and b to corner cutting</source>
-        <translation>项 &apos;%1&apos;（%2）没有参数 &apos;%3&apos;：omega 属于四点格式，a 和 b 属于切角格式</translation>
+        <translation type="vanished">项 &apos;%1&apos;（%2）没有参数 &apos;%3&apos;：omega 属于四点格式，a 和 b 属于切角格式</translation>
     </message>
     <message>
         <source>--from and --to are required</source>
@@ -5955,6 +5955,30 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
 
 运行 &apos;attractor-cli &lt;command&gt; --help&apos; 查看某个命令的选项。
 </translation>
+    </message>
+    <message>
+        <source>omega (four-point), a or b (corner cutting), or the name used in --mask.</source>
+        <translation>omega（四点格式）、a 或 b（切角），或 --mask 中使用的名称。</translation>
+    </message>
+    <message>
+        <source>For a mask item: its coefficients with the parameter in them, e.g. &quot;-w, 0, 1/2 + w, 1, 1/2 + w, 0, -w&quot;.</source>
+        <translation>对于掩模对象：其系数中含有该参数，例如 &quot;-w, 0, 1/2 + w, 1, 1/2 + w, 0, -w&quot;。</translation>
+    </message>
+    <message>
+        <source>--mask needs a mask item; &apos;%1&apos; is %2</source>
+        <translation>--mask 需要一个掩模对象；&apos;%1&apos; 是 %2</translation>
+    </message>
+    <message>
+        <source>the parameter of --mask must be a name that is not a function or constant (pi, e, sqrt, ...), got &apos;%1&apos;</source>
+        <translation>--mask 的参数必须是一个不是函数或常数（pi、e、sqrt 等）的名称，得到 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>the mask &apos;%1&apos; does not contain the parameter &apos;%2&apos;</source>
+        <translation>掩模 &apos;%1&apos; 不包含参数 &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; (%2) has no parameter &apos;%3&apos;: omega belongs to the four-point scheme, a and b to corner cutting; a mask item takes --mask with the parameter in its coefficients</source>
+        <translation>对象 &apos;%1&apos;（%2）没有参数 &apos;%3&apos;：omega 属于四点格式，a 和 b 属于切角；掩模对象使用 --mask 并在其系数中写入参数</translation>
     </message>
 </context>
 <context>

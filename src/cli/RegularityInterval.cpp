@@ -1,5 +1,6 @@
 // attractor-cli regularity-interval: where a curve item's scheme is C^k as one of its real
-// parameters (the four-point tension omega, a corner cutting's a or b) moves over a range --
+// parameters (the four-point tension omega, a corner cutting's a or b, a free coefficient of a
+// mask written in --mask) moves over a range --
 // the certified Hölder bounds of each member (model/SchemeRegularity, core Regularity) and
 // bisection on them (core RegularityFamily). The same computation as the window's Four-point
 // Regularity Chart bands.
@@ -17,6 +18,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 
 #include <cmath>
 
@@ -49,7 +51,12 @@ int regularityInterval(const QStringList &args)
         parser.addOptions(
             {{"item", CliTr::tr("The curve item (default: the first item with an attractor)."),
               "name"},
-             {"parameter", CliTr::tr("omega (four-point), a or b (corner cutting)."), "name"},
+             {"parameter", CliTr::tr("omega (four-point), a or b (corner cutting), or the "
+                                     "name used in --mask."),
+              "name"},
+             {"mask", CliTr::tr("For a mask item: its coefficients with the parameter in "
+                                "them, e.g. \"-w, 0, 1/2 + w, 1, 1/2 + w, 0, -w\"."),
+              "coefficients"},
              {"from", CliTr::tr("The start of the range."), "value"},
              {"to", CliTr::tr("The end of the range."), "value"},
              {"smoothness", CliTr::tr("k: the class C^k asked for (default 1)."), "k", "1"},
@@ -78,12 +85,38 @@ int regularityInterval(const QStringList &args)
             field = &SchemeSpec::a;
         else if (name == "b" && base.kind == SchemeSpec::Kind::CornerCutting)
             field = &SchemeSpec::b;
-        if (!field)
+        // A mask with a free coefficient: --mask "-w, 0, 1/2 + w, 1, 1/2 + w, 0, -w" on a mask
+        // item (its arity and first index), the parameter's name standing for its value.
+        const QString pattern = parser.value("mask");
+        const QRegularExpression variable(
+            QStringLiteral("\\b%1\\b").arg(QRegularExpression::escape(parser.value("parameter"))));
+        if (parser.isSet("mask")) {
+            if (base.kind != SchemeSpec::Kind::Mask)
+                throw Failure{CliTr::tr("--mask needs a mask item; '%1' is %2")
+                                  .arg(curve->name(),
+                                       SchemeSpec::kindNames().at(int(base.kind))),
+                              2};
+            static const QRegularExpression identifier(QStringLiteral("^[A-Za-z_]\\w*$"));
+            static const QStringList reserved{"pi", "e", "sqrt", "cbrt", "sin", "cos",
+                                              "tan", "exp", "ln"};
+            const QString p = parser.value("parameter");
+            if (!identifier.match(p).hasMatch() || reserved.contains(p))
+                throw Failure{CliTr::tr("the parameter of --mask must be a name that is not a "
+                                        "function or constant (pi, e, sqrt, ...), got '%1'")
+                                  .arg(p),
+                              2};
+            if (!pattern.contains(variable))
+                throw Failure{CliTr::tr("the mask '%1' does not contain the parameter '%2'")
+                                  .arg(pattern, p),
+                              2};
+        } else if (!field) {
             throw Failure{CliTr::tr("item '%1' (%2) has no parameter '%3': omega belongs to the "
-                                    "four-point scheme, a and b to corner cutting")
+                                    "four-point scheme, a and b to corner cutting; a mask item "
+                                    "takes --mask with the parameter in its coefficients")
                               .arg(curve->name(), SchemeSpec::kindNames().at(int(base.kind)),
                                    parser.value("parameter")),
                           2};
+        }
         if (!parser.isSet("from") || !parser.isSet("to"))
             throw Failure{CliTr::tr("--from and --to are required"), 2};
         const double from = realOption(parser, "from", -1e6, 1e6);
@@ -100,7 +133,18 @@ int regularityInterval(const QStringList &args)
         // (model/SchemeRegularity); a member that does not exist (a >= b) is not C^k.
         const auto member = [&](double t, const RegularityOptions &o) {
             SchemeSpec s = base;
-            s.*field = t;
+            if (field) {
+                s.*field = t;
+            } else {
+                QString line = pattern;
+                line.replace(variable, QStringLiteral("(%1)").arg(t, 0, 'g', 17));
+                QString why;
+                if (!s.setMaskLine(line, &why)) {
+                    Regularity none;
+                    none.message = why.toStdString();
+                    return none;  // not a member: not C^k
+                }
+            }
             return specRegularity(s, m, o);
         };
         const FamilyResult result = regularityInterval(member, from, to, k, options);

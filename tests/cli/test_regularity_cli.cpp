@@ -132,6 +132,32 @@ void TestRegularityCli::fourPointC1Interval()
     QVERIFY2(to["width"].toDouble() < 1e-4, QJsonDocument(to).toJson().constData());
     QVERIFY(from["width"].toDouble() < 1e-2);
 
+    // The same family as a mask with a free coefficient: the same bracket.
+    const QString mask = m_dir.filePath("four-point-mask.awb");
+    QFile f(mask);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(R"({"format": "attractor-workbench", "version": 1, "items": [
+        {"type": "subdivision-curve", "name": "m",
+         "scheme": {"kind": "mask", "arity": 2, "offset": -3,
+                    "mask": ["-1/16", 0, "9/16", 1, "9/16", 0, "-1/16"]},
+         "control_points": [[0, 0], [1, 2], [2, 1], [3, 3], [4, 0], [5, 1], [6, 2], [7, 0]]}]})");
+    f.close();
+    QCOMPARE(awb::test::runProgram(awb::test::cliPath(),
+                                   {"regularity-interval", mask, "--parameter", "w", "--mask",
+                                    "-w, 0, 1/2 + w, 1, 1/2 + w, 0, -w", "--from", "-0.1",
+                                    "--to", "0.3", "--grid", "17", "--budget", "0.2", "--json"},
+                                   &out, &err),
+             0);
+    const QJsonArray viaMask = QJsonDocument::fromJson(out).object()["intervals"].toArray();
+    QCOMPARE(viaMask.size(), 1);
+    QVERIFY(contains(viaMask[0].toObject()["to"].toObject(), w));
+    QCOMPARE(awb::test::runProgram(awb::test::cliPath(),
+                                   {"regularity-interval", mask, "--parameter", "sqrt", "--mask",
+                                    "sqrt", "--from", "0", "--to", "1"},
+                                   &out, &err),
+             2);
+    QVERIFY2(err.contains("not a function or constant"), err.constData());
+
     // No omega for a Chaikin curve; --from/--to required; an unknown item.
     QCOMPARE(awb::test::runProgram(awb::test::cliPath(),
                                    {"regularity-interval", file, "--parameter", "a", "--from",
