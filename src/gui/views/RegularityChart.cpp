@@ -184,13 +184,16 @@ void RegularityChart::addBands(const std::vector<Band> &bands, quint64 generatio
     auto *y = chart()->axes(Qt::Vertical).value(0);
     for (const Band &b : bands) {
         // From the axis up to k: "r > k here", tinted by class (C^1 over C^0).
-        auto *top = new QLineSeries, *bottom = new QLineSeries;
+        // QAreaSeries does not own its boundary series: they are its children, deleted with it.
+        auto *area = new QAreaSeries;
+        auto *top = new QLineSeries(area), *bottom = new QLineSeries(area);
         const double height = std::max(double(b.smoothness), 0.15);  // C^0: a strip on the axis
         top->append(b.from, height);
         top->append(b.to, height);
         bottom->append(b.from, 0.0);
         bottom->append(b.to, 0.0);
-        auto *area = new QAreaSeries(top, bottom);
+        area->setUpperSeries(top);
+        area->setLowerSeries(bottom);
         const QString sup = b.smoothness == 0 ? QStringLiteral("⁰")
                             : b.smoothness == 1 ? QStringLiteral("¹")
                                                 : QStringLiteral("^%1").arg(b.smoothness);
