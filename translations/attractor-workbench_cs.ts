@@ -5079,6 +5079,10 @@ Byla ponechána jako %2.</translation>
         <source> (capped at the %1 sum rules; -log_N(rho) / 2 = %2)</source>
         <translation> (shora omezeno počtem součtových pravidel, %1; -log_N(rho) / 2 = %2)</translation>
     </message>
+    <message>
+        <source>not analysed: the mask has %1 coefficients, the regularity analysis takes at most %2 for arity %3 (transition matrices up to 48 x 48)</source>
+        <translation>neanalyzováno: maska má %1 koeficientů, analýza regularity přijme pro aritu %3 nejvýše %2 (přechodové matice do 48 x 48)</translation>
+    </message>
 </context>
 <context>
     <name>awb::cli</name>

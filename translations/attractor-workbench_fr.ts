@@ -5071,6 +5071,10 @@ Elle a été conservée sous le nom %2.</translation>
         <source> (capped at the %1 sum rules; -log_N(rho) / 2 = %2)</source>
         <translation> (plafonné aux %1 règles de somme&#xa0;; -log_N(rho) / 2 = %2)</translation>
     </message>
+    <message>
+        <source>not analysed: the mask has %1 coefficients, the regularity analysis takes at most %2 for arity %3 (transition matrices up to 48 x 48)</source>
+        <translation>non analysé&#xa0;: le masque a %1 coefficients, l&apos;analyse de régularité en accepte au plus %2 pour l&apos;arité %3 (matrices de transition jusqu&apos;à 48 x 48)</translation>
+    </message>
 </context>
 <context>
     <name>awb::cli</name>

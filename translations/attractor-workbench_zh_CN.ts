@@ -5063,6 +5063,10 @@ It was kept as %2.</source>
         <source> (capped at the %1 sum rules; -log_N(rho) / 2 = %2)</source>
         <translation>（受 %1 条和规则限制；-log_N(rho) / 2 = %2）</translation>
     </message>
+    <message>
+        <source>not analysed: the mask has %1 coefficients, the regularity analysis takes at most %2 for arity %3 (transition matrices up to 48 x 48)</source>
+        <translation>未分析：该掩模有 %1 个系数，对于元数 %3，正则性分析最多接受 %2 个（转移矩阵最大 48 x 48）</translation>
+    </message>
 </context>
 <context>
     <name>awb::cli</name>

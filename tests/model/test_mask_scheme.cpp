@@ -11,7 +11,9 @@
 
 #include "core/schemes/Scheme.h"
 #include "model/ProjectIO.h"
+#include "model/SchemeRegularity.h"
 
+#include <QElapsedTimer>
 #include <QJsonArray>
 #include <QJsonObject>
 
@@ -29,6 +31,7 @@ private slots:
     void parametersEditTheMask();
     void switchingKindStartsFromTheCurve();
     void symbolCountsSumRules();
+    void longMasksAreNotAnalysed();
 };
 
 namespace {
@@ -278,6 +281,23 @@ void TestMaskScheme::symbolCountsSumRules()
     const QString d4 = maskSpec(
         2, "(1 + sqrt(3))/4, (3 + sqrt(3))/4, (3 - sqrt(3))/4, (1 - sqrt(3))/4", 0).symbolText();
     QVERIFY2(d4.startsWith("2 sum rules"), qPrintable(d4));
+}
+
+void TestMaskScheme::longMasksAreNotAnalysed()
+{
+    // 119 coefficients (transition matrices 118 x 118): a message, at once, not minutes.
+    QStringList line(119, QStringLiteral("0"));
+    line[0] = line[118] = QStringLiteral("1/2");
+    line[1] = QStringLiteral("1");
+    SchemeSpec s = maskSpec(2, line.join(", "), 0);
+    QVERIFY2(!s.check(), qPrintable(s.check() ? s.check()->message : QString()));
+    QElapsedTimer t;
+    t.start();
+    const Regularity r = specRegularity(s, 8);
+    QVERIFY(!r.applies);
+    QVERIFY2(QString::fromStdString(r.message).contains("the regularity analysis takes at most 49"),
+             r.message.c_str());
+    QVERIFY(t.elapsed() < 5000);
 }
 
 AWB_TEST_GUILESS_MAIN(TestMaskScheme)

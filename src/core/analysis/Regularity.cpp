@@ -276,6 +276,18 @@ Regularity maskRegularity(const std::vector<double> &mask, int arity,
         r.message = coreTranslate("awb::analysis", "no difference scheme: the mask is zero");
         return r;
     }
+    // A mask typed in may be long; the transition matrices are about (length / (N - 1))
+    // square, the Sobolev operator twice that. Past 48 the analysis would take minutes (and
+    // the division by sigma loses its accuracy): say so instead.
+    const size_t longest = 48 * size_t(arity - 1) + 1;
+    if (a.size() > longest) {
+        r.message = formatMessage(
+            coreTranslate("awb::analysis", "not analysed: the mask has %1 coefficients, the "
+                                           "regularity analysis takes at most %2 for arity %3 "
+                                           "(transition matrices up to 48 x 48)"),
+            a.size(), longest, arity);
+        return r;
+    }
     const DifferenceMask d = dividedDifferenceMask(a, arity);
     r.sumRules = d.order;
     if (d.order == 0) {
