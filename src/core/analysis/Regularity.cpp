@@ -253,8 +253,7 @@ std::vector<Mat> transitionMatrices(const std::vector<double> &mask, int arity)
     return T;
 }
 
-Regularity maskRegularity(const std::vector<double> &mask, int arity,
-                          const RegularityOptions &options)
+void requireMask(const std::vector<double> &mask, int arity)
 {
     if (arity < 2)
         throw InputError(formatMessage(
@@ -264,6 +263,12 @@ Regularity maskRegularity(const std::vector<double> &mask, int arity,
         if (!std::isfinite(v))
             throw InputError(coreTranslate("awb::analysis", "the mask has a coefficient that is "
                                                             "not a finite number"));
+}
+
+Regularity maskRegularity(const std::vector<double> &mask, int arity,
+                          const RegularityOptions &options)
+{
+    requireMask(mask, arity);
     Regularity r;
     r.arity = arity;
     const std::vector<double> a = trimmedMask(mask);

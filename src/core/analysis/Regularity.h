@@ -80,6 +80,8 @@ struct Regularity {
 
 // The mask without its leading and trailing zeros (below 1e-15 of its l1 norm).
 std::vector<double> trimmedMask(std::vector<double> mask);
+// InputError unless arity >= 2 and every coefficient is finite (the mask analyses' input).
+void requireMask(const std::vector<double> &mask, int arity);
 
 // Largest n with sigma^n | a and the quotient mask a_n = N^n a / sigma^n (coefficients from
 // the same start index as a; remainders below 1e-12 of the mask's size count as zero).

@@ -41,14 +41,7 @@ Mat complementOfPolynomials(int M, int twoN)
 SobolevRegularity sobolevRegularity(const std::vector<double> &mask, int arity)
 {
     const auto start = std::chrono::steady_clock::now();
-    if (arity < 2)
-        throw InputError(formatMessage(
-            coreTranslate("awb::analysis", "the arity of a scheme must be at least 2, got %1"),
-            arity));
-    for (double v : mask)
-        if (!std::isfinite(v))
-            throw InputError(coreTranslate("awb::analysis", "the mask has a coefficient that is "
-                                                            "not a finite number"));
+    requireMask(mask, arity);
     SobolevRegularity r;
     r.arity = arity;
     const int N = arity;

@@ -30,6 +30,7 @@ class FrameBudget;
 class Item;
 class MatrixView;
 class RegularityPanel;
+class SubdivisionCurveItem;
 class Messages;
 class Project;
 class SpectrumView;
@@ -82,6 +83,7 @@ public:
     // The certificate of the current curve's exact Hölder exponent (the Analysis dock's Save
     // Certificate), as `attractor-cli analyse --certificate` writes it; false with the reason.
     bool saveCertificate(const QString &file, QString *error = nullptr);
+    static QString regularityKey(const SubdivisionCurveItem &curve);
     int subdivisionSteps() const { return m_subdivisionSteps; }
     // Pushes the item's current data to every view and dock at once (normally deferred to the
     // event loop so that a burst of edits costs one update, and the docks to the FrameBudget).

@@ -55,6 +55,13 @@ Mat planePoints(const Ifs &ifs, const StartSet &start, int depth, const std::ato
 
 } // namespace
 
+// What the regularity depends on: the scheme (its JSON) and the number of control points.
+QString ItemController::regularityKey(const SubdivisionCurveItem &curve)
+{
+    return QString::fromUtf8(QJsonDocument(curve.scheme().toJson()).toJson())
+           + QString::number(curve.controlPoints(0).size());
+}
+
 void ItemController::setRegularityPanel(RegularityPanel *panel)
 {
     m_regularity = panel;
@@ -74,13 +81,8 @@ bool ItemController::saveCertificate(const QString &file, QString *error)
 {
     const auto *curve = qobject_cast<const SubdivisionCurveItem *>(m_item.data());
     const auto r = m_regularity ? m_regularity->result() : nullptr;
-    // The result must be the current scheme's (the panel's key is the scheme's JSON and m).
-    QJsonObject json;
-    if (curve)
-        curve->write(json);
-    const QString key = QString::fromUtf8(QJsonDocument(json["scheme"].toObject()).toJson())
-                        + QString::number(curve ? int(curve->controlPoints(0).size()) : 0);
-    if (!curve || !r || m_regularity->resultKey() != key) {
+    // The result must be the current scheme's.
+    if (!curve || !r || m_regularity->resultKey() != regularityKey(*curve)) {
         if (error)
             *error = tr("No certificate: the regularity of the current curve is not computed "
                         "yet.");
@@ -115,12 +117,8 @@ void ItemController::updateRegularity()
                                                : tr("the scheme's parameters are refused")));
         return;
     }
-    QJsonObject json;
-    curve->write(json);
     const int m = int(curve->controlPoints(0).size());
-    const QString key = QString::fromUtf8(QJsonDocument(json["scheme"].toObject()).toJson())
-                        + QString::number(m);
-    m_regularity->analyse(scheme, std::max(m, scheme->minControlPoints()), key);
+    m_regularity->analyse(scheme, std::max(m, scheme->minControlPoints()), regularityKey(*curve));
 }
 
 void ItemController::cancelAnalysis()

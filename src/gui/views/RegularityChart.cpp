@@ -23,6 +23,16 @@
 namespace awb {
 
 namespace {
+// The curve's points and the family's members: the four-point scheme's regularity as an item
+// of it has it (model/SchemeRegularity).
+Regularity fourPointRegularity(double omega, const RegularityOptions &o)
+{
+    SchemeSpec four;
+    four.kind = SchemeSpec::Kind::FourPoint;
+    four.omega = omega;
+    return specRegularity(four, 8, o);
+}
+
 QLineSeries *lineSeries(QChart *chart, const QString &name)
 {
     for (QAbstractSeries *s : chart->series())
@@ -127,10 +137,7 @@ void RegularityChart::compute(double omegaMin, double omegaMax, int count, doubl
             RegularityOptions o;
             o.timeBudget = budget;
             o.cancel = cancel;
-            SchemeSpec four;
-            four.kind = SchemeSpec::Kind::FourPoint;
-            four.omega = omega;
-            const Regularity r = specRegularity(four, 8, o);
+            const Regularity r = fourPointRegularity(omega, o);
             if (!r.applies)
                 continue;
             const Sample s{omega, r.lower, r.upper};
@@ -147,14 +154,8 @@ void RegularityChart::compute(double omegaMin, double omegaMax, int count, doubl
             f.maxBisections = 30;
             f.budgetPerValue = budget;
             f.cancel = cancel;
-            const FamilyResult family = regularityInterval(
-                [](double t, const RegularityOptions &o) {
-                    SchemeSpec four;
-                    four.kind = SchemeSpec::Kind::FourPoint;
-                    four.omega = t;
-                    return specRegularity(four, 8, o);
-                },
-                omegaMin, omegaMax, k, f);
+            const FamilyResult family =
+                regularityInterval(fourPointRegularity, omegaMin, omegaMax, k, f);
             for (const FamilyRun &run : family.runs)
                 bands.push_back({k, run.from.inner, run.from.outer, run.to.inner, run.to.outer});
         }
