@@ -16,6 +16,8 @@ PACKAGES=(
   flam3-utils  # flam3-render and flam3-genome: the judges of the .flame tests (tests/cli)
   libxkbcommon-dev xvfb xauth libgl1-mesa-dev x11-apps imagemagick fonts-dejavu-core poppler-utils
   libxtst-dev xdotool  # attractor-bench-window: pointer moves through XTest, as a person drags
+  # the Python module attractor_workbench (src/python) and its console, tests and examples
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-matplotlib
   fonts-wqy-microhei  # a CJK font: the Chinese translation on screen and in figures
   assimp-utils python3-meshio adwaita-icon-theme ffmpeg clang libclang-rt-14-dev
   # the Debian package (packaging/, scripts/package.sh, tests/packaging): icons, dpkg-shlibdeps, checks

@@ -26,6 +26,7 @@
 #include "model/SubdivisionSurfaceItem.h"
 #include "model/SubdivisionMeshItem.h"
 #include "model/MeshAnalysisJson.h"
+#include "model/ItemAnalysisJson.h"
 #include "core/mesh/MeshFiles.h"
 #include "core/mesh/MeshRefine.h"
 #include "core/ifs/SurfaceIfs.h"
@@ -50,275 +51,6 @@
 #include <sstream>
 
 namespace awb::cli {
-
-namespace {
-
-QJsonArray complexJson(Complex z) { return {z.real(), z.imag()}; }
-
-// A real matrix as numbers and as exact text ("3/8" where rational): {"values", "exact"}.
-QJsonObject matrixJson(const Mat &m)
-{
-    QJsonArray values, exact;
-    for (Eigen::Index r = 0; r < m.rows(); ++r) {
-        QJsonArray v, e;
-        for (Eigen::Index c = 0; c < m.cols(); ++c) {
-            v.append(m(r, c));
-            e.append(exactText(m(r, c)));
-        }
-        values.append(v);
-        exact.append(e);
-    }
-    return {{"values", values}, {"exact", exact}};
-}
-
-// A complex matrix as [re, im] pairs: {"values"}.
-QJsonObject matrixJson(const CMat &m)
-{
-    QJsonArray values;
-    for (Eigen::Index r = 0; r < m.rows(); ++r) {
-        QJsonArray v;
-        for (Eigen::Index c = 0; c < m.cols(); ++c)
-            v.append(complexJson(m(r, c)));
-        values.append(v);
-    }
-    return {{"values", values}};
-}
-
-QJsonArray eigenvaluesJson(const Spectrum &s)
-{
-    QJsonArray ev;
-    for (const Complex &z : s.values)
-        ev.append(complexJson(z));
-    return ev;
-}
-
-// The map matrices of analysis map i, as the Matrices dock shows them: M_i = P^-1 S_i P with
-// its blocks A_i, b_i for a lifted subdivision IFS (000 §2), the complex M_i of a complex
-// Bézier split, or the IFS map itself (A, b) where there is no S_i.
-void addMapMatrices(QJsonObject &m, const DerivedIfs &d, int i, int k)
-{
-    if (i < int(d.S.real.size()))
-        m["S"] = matrixJson(d.S.real[size_t(i)]);
-    else if (i < int(d.S.complex.size()))
-        m["S"] = matrixJson(d.S.complex[size_t(i)]);
-    if (d.subdivision && d.subdivision->lifting.invertible && i < int(d.S.real.size())) {
-        const LiftedMap l = liftMatrix(d.subdivision->lifting, d.S.real[size_t(i)]);
-        m["M"] = matrixJson(l.M);
-        m["A"] = matrixJson(l.A);
-        m["b"] = matrixJson(Mat(l.b));
-        m["eigenvalues_A"] = eigenvaluesJson(spectrum(l.A));
-    } else if (i < int(d.liftedComplex.size())) {
-        const CMat &M = d.liftedComplex[size_t(i)];
-        const Eigen::Index n = M.rows() - 1;
-        m["M"] = matrixJson(M);
-        m["A"] = matrixJson(CMat(M.topLeftCorner(n, n)));
-        m["b"] = matrixJson(CMat(M.bottomLeftCorner(1, n)));
-        m["eigenvalues_A"] = eigenvaluesJson(spectrum(CMat(M.topLeftCorner(n, n))));
-    } else if (k >= 0) {
-        m["A"] = matrixJson(d.ifs.maps[size_t(k)].A);
-        m["b"] = matrixJson(Mat(d.ifs.maps[size_t(k)].b));
-        m["eigenvalues_A"] = eigenvaluesJson(spectrum(d.ifs.effectiveLinearPart(k)));
-    }
-}
-
-// d_H(F^depth(X0), exact curve) at the item's depth (or the deepest depth under 2e6 points),
-// certified (core HausdorffBracket: the curve refined adaptively by enclosures of its exact
-// pieces, not sampled). "value" and "one_sided" are the midpoints of their brackets:
-//   value_bracket      contains d_H(F^depth(X0), C) = max of the two one-sided distances,
-//   one_sided_bracket  contains sup over the points a of dist(a, C),
-//   curve_side_bracket contains sup over the curve points c of dist(c, F^depth(X0)),
-// "width" is the largest relative width (upper - lower) / upper reached (requested 1e-3;
-// "converged" false if the budget stopped the refinement first).
-QJsonValue hausdorffToExact(const AttractorItem *item, const DerivedIfs &d)
-{
-    const auto exact = certifiedExactCurveOf(item);
-    if (!exact || d.iterate || d.ifs.views.empty() || d.ifs.size() == 0)
-        return QJsonValue::Null;
-    const StartSet start = item->coreStartSet(d);
-    int depth = item->algorithm().depth;
-    while (depth > 0 && imageCount(d.ifs, depth) * double(start.vertices.rows()) > 2e6)
-        --depth;
-    PointCollector c(d.ifs.views.front());
-    iterate(d.ifs, StartSet::points(start.vertices), depth, c);
-    const Mat pts = c.points();
-    const HausdorffBracket h = hausdorffBracket(pts, *exact->curve);
-    auto bracket = [](const DistanceBracket &b) { return QJsonArray{b.lower, b.upper}; };
-    return QJsonObject{{"depth", depth},
-                       {"points", double(pts.rows())},
-                       {"value", h.value.mid()},
-                       {"one_sided", h.oneSided.mid()},
-                       {"value_bracket", bracket(h.value)},
-                       {"one_sided_bracket", bracket(h.oneSided)},
-                       {"curve_side_bracket", bracket(h.curveToPoints)},
-                       {"width", h.width},
-                       {"converged", h.converged},
-                       {"curve", exact->label}};
-}
-
-// `regularity`, when given, receives the curve's regularity (its certificate for --certificate).
-QJsonObject analyseItem(const AttractorItem *item, Regularity *regularity = nullptr)
-{
-    QJsonObject o;
-    o["name"] = item->name();
-    o["type"] = item->type();
-    auto d = item->derivedIfs();
-    if (!d) {
-        o["error"] = item->derivedError();
-        return o;
-    }
-    if (!d->note.isEmpty())
-        o["note"] = d->note;
-    // Per map: the eigenvalues of S_i as the item defines them, contractivity of f_i, and
-    // its fixed point in the plane.
-    QJsonArray maps, subdominants;
-    double worstSub = -1;
-    // Items without subdivision matrices (an equivalent IFS of a normal-vector scheme) list
-    // the IFS's maps: "eigenvalues" are then those of the linear parts A_i.
-    const bool hasS = d->S.count() > 0;
-    const int count = hasS ? d->S.count() : d->ifs.size();
-    for (int i = 0; i < count; ++i) {
-        const Spectrum s = !hasS            ? spectrum(d->ifs.effectiveLinearPart(i))
-                           : d->S.isComplex() ? spectrum(d->S.complex[i])
-                                              : spectrum(d->S.real[i]);
-        QJsonObject m;
-        QJsonArray ev;
-        for (const Complex &z : s.values)
-            ev.append(complexJson(z));
-        m["eigenvalues"] = ev;
-        m["spectral_radius"] = s.spectralRadius;
-        const Subdominant sub = subdominant(s, hasS);
-        m["subdominant"] = [&] {
-            QJsonArray a;
-            for (const Complex &z : sub.values)
-                a.append(complexJson(z));
-            return a;
-        }();
-        m["subdominant_kind"] = QString::fromStdString(toString(sub.kind));
-        // The IFS map that is analysis map i (the IFS may use a subset of the maps).
-        int k = -1;
-        for (int j = 0; j < d->ifs.size(); ++j)
-            if (d->analysisIndex(j) == i)
-                k = j;
-        if (d->surface)
-            m["used"] = k >= 0;
-        addMapMatrices(m, *d, i, k);
-        if (k >= 0) {
-            const Contractivity c = contractivity(d->ifs.effectiveLinearPart(k));
-            m["contractive"] = c.eventuallyContractive;
-            m["contraction_norm"] = c.normFactor;
-            const auto fp = fixedPoint(d->ifs.maps[k]);
-            Mat p;
-            if (fp && !d->ifs.views.empty()) {
-                p = project(d->ifs.views.front(), Mat(*fp));
-            } else if (d->subdivision && i < int(d->S.real.size())) {
-                // No lifted fixed point (barycentric form of a singular P): the fixed weights
-                // of S_i (eigenvalue 1) applied to the control points give the same point.
-                if (const auto l = fixedWeights(d->S.real[size_t(i)]))
-                    p = *l * d->subdivision->controlPoints;
-            }
-            if (p.size() > 0) {
-                QJsonArray xy;
-                for (Eigen::Index c2 = 0; c2 < p.cols(); ++c2)
-                    xy.append(p(0, c2));
-                m["fixed_point"] = xy;
-            } else {
-                m["fixed_point"] = QJsonValue::Null;
-            }
-        }
-        maps.append(m);
-        if (sub.modulus > worstSub + 1e-12) {
-            worstSub = sub.modulus;
-            subdominants = QJsonArray();
-            for (const Complex &z : sub.values)
-                subdominants.append(complexJson(z));
-        }
-    }
-    o["maps"] = maps;
-    // A map that does not contract: whether the IFS contracts on average (the top Lyapunov
-    // exponent of its random products with the item's probabilities, core IfsCheck), which is
-    // what random iteration needs.
-    if (!d->iterate && d->ifs.size() > 0)
-        if (const IfsCheck check = checkIfs(d->ifs); !check.contractive) {
-            o["contractive_on_average"] = check.contractsOnAverage();
-            o["lyapunov_exponent"] =
-                check.lyapunov ? QJsonValue(*check.lyapunov) : QJsonValue(QJsonValue::Null);
-        }
-    o["subdominant"] = subdominants;
-    // A mesh: its extraordinary vertices and the pieces of its IFS with condensation.
-    if (const auto *mesh = qobject_cast<const SubdivisionMeshItem *>(item)) {
-        const QJsonObject m = meshAnalysisJson(*mesh);
-        for (auto it = m.begin(); it != m.end(); ++it)
-            o[it.key()] = it.value();
-    }
-    // The scheme's certified Hölder regularity (issue 16): an interval, its class C^n, how;
-    // exact with an invariant polytope's certificate where one closes (issue 32).
-    if (const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item)) {
-        const Regularity r = itemRegularity(*curve);
-        o["regularity"] = regularityJson(r);
-        if (regularity)
-            *regularity = r;
-    }
-    if (const auto *s = qobject_cast<const SubdivisionSurfaceItem *>(item)) {
-        o["kind"] = item->type();
-        o["scheme"] = SurfaceSchemeSpec::kindNames().at(int(s->scheme().kind));
-        o["layout"] = s->scheme().layout;
-        o["map_count"] = int(d->S.real.size());
-        QJsonArray used, points, lattice;
-        for (int i : s->mapsUsed())
-            used.append(i);
-        o["maps_used"] = used;
-        for (const Point &q : s->controlPoints())
-            points.append(QJsonArray{q.x, q.y, q.z});
-        o["control_points"] = points;
-        for (const LatticePoint &q : s->lattice())
-            lattice.append(QJsonArray{q.i, q.j});
-        o["lattice"] = lattice;
-        o["lifted_dimension"] = d->ifs.dim();
-    }
-    if (d->subdivision) {
-        o["lifting_invertible"] = d->subdivision->lifting.invertible;
-        if (!d->subdivision->lifting.invertible)
-            o["lifting_problem"] = QString::fromStdString(d->subdivision->lifting.reason);
-    }
-    try {
-        o["hausdorff_to_exact"] = hausdorffToExact(item, *d);
-    } catch (const InputError &e) {
-        o["hausdorff_to_exact"] = QJsonValue::Null;
-        o["hausdorff_error"] = QString::fromStdString(e.what());
-    }
-    // Box-counting dimension of the attractor at a depth giving about 2^18 points.
-    o["box_dimension"] = QJsonValue::Null;
-    try {
-        if (d->ifs.size() > 1 && !d->iterate && !d->ifs.views.empty()) {
-            const StartSet start = item->coreStartSet(*d);
-            int depth = 1;
-            while (imageCount(d->ifs, depth + 1) * start.vertices.rows() <= 300000)
-                ++depth;
-            PointCollector c(d->ifs.views.front());
-            if (d->surface) {
-                // The images of a surface's overlapping pieces coincide at lattice points:
-                // random iteration gives distinct points for the count.
-                ChaosOptions options;
-                options.samples = 300000;
-                chaosGame(d->ifs, start.vertices.row(0), options, c);
-            } else {
-                iterate(d->ifs, StartSet::points(start.vertices), depth, c);
-            }
-            const BoxDimension b = boxCountingDimension(c.points());
-            if (b.valid) {
-                o["box_dimension"] = b.dimension;
-                o["box_dimension_fit"] = QJsonObject{{"r2", b.r2},
-                                                     {"levels", QJsonArray{b.levelFrom, b.levelTo}},
-                                                     {"points", double(c.points().rows())}};
-            }
-        }
-    } catch (const InputError &e) {
-        o["box_dimension_error"] = QString::fromStdString(e.what());
-    }
-    return o;
-}
-
-} // namespace
 
 int analyse(const QStringList &args)
 {
@@ -350,7 +82,7 @@ int analyse(const QStringList &args)
         if (parser.isSet("item")) {
             const AttractorItem *item = attractorItem(project, parser.value("item"));
             Regularity regularity;
-            items.append(analyseItem(item, &regularity));
+            items.append(analyseItemJson(item, &regularity));
             if (parser.isSet("certificate")) {
                 const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item);
                 if (!curve)
@@ -367,7 +99,7 @@ int analyse(const QStringList &args)
         } else {
             for (Item *item : project.items())
                 if (auto *a = qobject_cast<AttractorItem *>(item))
-                    items.append(analyseItem(a));
+                    items.append(analyseItemJson(a));
         }
         out() << QJsonDocument(QJsonObject{{"items", items}}).toJson(QJsonDocument::Indented);
         return 0;

@@ -180,6 +180,38 @@ StartSet::Kind parseStart(const QString &text, Mat *points, int dim)
 }
 
 // The number of points F^depth(start) makes (over every view); refuses more than maxPoints.
+StartSet startOption(const AttractorItem &item, const DerivedIfs &d, const QString &text)
+{
+    if (text.startsWith("lifted:")) {
+        // Points of the lifted space, ';' between points: lifted:x,y,c1,..;x,y,c1,..
+        std::vector<std::vector<double>> lifted;
+        for (const QString &point : text.mid(7).split(';', Qt::SkipEmptyParts)) {
+            std::vector<double> p;
+            for (const QString &n : point.split(',', Qt::SkipEmptyParts)) {
+                bool ok = false;
+                p.push_back(n.trimmed().toDouble(&ok));
+                if (!ok || !std::isfinite(p.back()))
+                    throw Failure{CliTr::tr("--start: '%1' is not a finite number").arg(n)};
+            }
+            lifted.push_back(std::move(p));
+        }
+        if (lifted.empty())
+            throw Failure{CliTr::tr("--start lifted: needs at least one point")};
+        return StartSet::points(liftedStartPoints(d, lifted));
+    }
+    if (text == "vertex-limits") {
+        // The limit positions of the vertices of the mesh refined `depth` times (exact).
+        if (!d.vertexLimitStart)
+            throw Failure{CliTr::tr("--start vertex-limits needs a mesh item; '%1' "
+                                    "is a %2")
+                              .arg(item.name(), item.typeName())};
+        return StartSet::points(Mat(0, 3));
+    }
+    Mat pts;
+    const StartSet::Kind kind = parseStart(text, &pts, item.pointDimension());
+    return {kind, d.toIfsSpace(pts)};
+}
+
 double requirePointBudget(const DerivedIfs &d, const StartSet &start, int depth, double maxPoints)
 {
     // Items drawn by their own iteration (automata, meshes) say their count when they know it.

@@ -55,6 +55,10 @@ double realOption(const QCommandLineParser &parser, const QString &name, double 
 // "point:x,y", "segment:x1,y1,x2,y2", "triangle:...", "polygon:...", "points:..." (x,y,z with
 // dim 3): the kind, and the points into *points.
 StartSet::Kind parseStart(const QString &text, Mat *points, int dim = 2);
+// The start set of `--start TEXT` (points and Item.points(start=...) of the Python module):
+// what parseStart reads, "lifted:x,y,c1,..;x,y,c1,.." (points of the lifted space, 000 §2) or
+// "vertex-limits" (a mesh item's refined vertices' limit positions). Failure otherwise.
+StartSet startOption(const AttractorItem &item, const DerivedIfs &d, const QString &text);
 // The points F^depth(start) makes (Failure when more than maxPoints).
 double requirePointBudget(const DerivedIfs &d, const StartSet &start, int depth,
                           double maxPoints);

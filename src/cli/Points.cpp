@@ -95,37 +95,9 @@ int points(const QStringList &args)
                               2};
             }
         }
-        StartSet start = item->coreStartSet(*d);
-        if (parser.isSet("start") && parser.value("start").startsWith("lifted:")) {
-            // Points of the lifted space, ';' between points: lifted:x,y,c1,..;x,y,c1,..
-            std::vector<std::vector<double>> lifted;
-            for (const QString &point :
-                 parser.value("start").mid(7).split(';', Qt::SkipEmptyParts)) {
-                std::vector<double> p;
-                for (const QString &n : point.split(',', Qt::SkipEmptyParts)) {
-                    bool ok = false;
-                    p.push_back(n.trimmed().toDouble(&ok));
-                    if (!ok || !std::isfinite(p.back()))
-                        throw Failure{CliTr::tr("--start: '%1' is not a finite number").arg(n)};
-                }
-                lifted.push_back(std::move(p));
-            }
-            if (lifted.empty())
-                throw Failure{CliTr::tr("--start lifted: needs at least one point")};
-            start = StartSet::points(liftedStartPoints(*d, lifted));
-        } else if (parser.isSet("start") && parser.value("start") == "vertex-limits") {
-            // The limit positions of the vertices of the mesh refined `depth` times (exact).
-            if (!d->vertexLimitStart)
-                throw Failure{CliTr::tr("--start vertex-limits needs a mesh item; '%1' "
-                                                    "is a %2")
-                                  .arg(item->name(), item->typeName())};
-            start = StartSet::points(Mat(0, 3));
-        } else if (parser.isSet("start")) {
-            Mat pts;
-            const StartSet::Kind kind =
-                parseStart(parser.value("start"), &pts, item->pointDimension());
-            start = {kind, d->toIfsSpace(pts)};
-        }
+        const StartSet start = parser.isSet("start")
+                                   ? startOption(*item, *d, parser.value("start"))
+                                   : item->coreStartSet(*d);
         const double maxPoints = intOption(parser, "max-points", 1, 2000000000);
         requirePointBudget(*d, start, depth, maxPoints);
         out().flush();

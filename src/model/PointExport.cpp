@@ -86,6 +86,30 @@ std::uint64_t writePointsCsv(QIODevice &out, const DerivedIfs &d, const StartSet
     return written;
 }
 
+CollectedPoints collectPoints(const DerivedIfs &d, const StartSet &start, int depth,
+                              const IterationControl &control, const Address &address)
+{
+    const int columns = exportsSpacePoints(d) ? 3 : 2;
+    const double expected = exportPointCount(d, start, depth);
+    std::vector<double> coordinates;
+    CollectedPoints out;
+    if (expected > 0 && expected < 5e8) {
+        coordinates.reserve(std::size_t(expected) * std::size_t(columns));
+        out.maps.reserve(std::size_t(expected));
+        out.views.reserve(std::size_t(expected));
+    }
+    iteratePoints(d, start, depth, address, control, [&](const RowVec &p, int view, int map) {
+        for (int c = 0; c < columns; ++c)
+            coordinates.push_back(c < p.size() ? p(c) : 0.0);
+        out.maps.push_back(map);
+        out.views.push_back(view);
+    });
+    out.points = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic,
+                                                Eigen::RowMajor>>(
+        coordinates.data(), Eigen::Index(out.maps.size()), columns);
+    return out;
+}
+
 std::uint64_t writePointsPly(QIODevice &out, const QString &title, const DerivedIfs &d,
                              const StartSet &start, int depth,
                              const std::function<QColor(int)> &color,

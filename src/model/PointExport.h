@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 class QIODevice;
 
@@ -34,6 +35,17 @@ bool exportsSpacePoints(const DerivedIfs &d);
 std::uint64_t writePointsCsv(QIODevice &out, const DerivedIfs &d, const StartSet &start,
                              int depth, const IterationControl &control = {},
                              const Address &address = {});
+
+// The same points in memory (attractor_workbench's Item.points): one row per point (2 or 3
+// columns, as the CSV's coordinates), and per point its 0-based map (-1 for X0 itself) and its
+// 0-based view. Stops early, with what it has, when `control` cancels.
+struct CollectedPoints {
+    Mat points;
+    std::vector<int> maps;
+    std::vector<int> views;
+};
+CollectedPoints collectPoints(const DerivedIfs &d, const StartSet &start, int depth,
+                              const IterationControl &control = {}, const Address &address = {});
 
 // Binary little-endian PLY: x, y, z as float (z = 0 for plane points), red, green, blue of
 // `color(map)` and the 0-based map as uchar; `title` goes into a comment. Readable by MeshLab,

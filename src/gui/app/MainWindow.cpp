@@ -449,6 +449,7 @@ void MainWindow::createDocks()
                                   Qt::RightDockWidgetArea);
     tabifyDockWidget(address, animation);
     mats->raise();
+    createPythonConsole();
     // A sensible first layout: side columns wide enough for their tables and plots.
     resizeDocks({tree, props}, {200, 560}, Qt::Vertical);
     resizeDocks({spec, mats}, {420, 420}, Qt::Vertical);

@@ -42,6 +42,8 @@ class MatrixView;
 class Messages;
 class Project;
 class ProjectTreeModel;
+class PythonConsole;
+class ScriptRecorder;
 class PropertiesWidget;
 class Recovery;
 class SpectrumView;
@@ -126,6 +128,12 @@ public:
     ItemController *controller() const { return m_controller; }
     QTreeView *projectTree() const { return m_tree; }
     QAction *action(const QString &objectName) const;
+    // MainWindowPython.cpp: the Python console dock (View > Python Console) and the recording
+    // of every edit as Python (Tools > Save Recording).
+    PythonConsole *pythonConsole() const { return m_console; }
+    ScriptRecorder *recorder() const { return m_recorder; }
+    // Writes the recording as a script that replays it on the file it started from.
+    bool saveRecording(const QString &fileName, QString *error);
 
     void applyPreferences(const Preferences &preferences);
 
@@ -143,6 +151,8 @@ private:
     void createActions();
     void createMenus();
     void createDocks();
+    void createPythonConsole();
+    void saveRecordingDialog();
     void updateTitle();
     void updateActions();
     void updateRecentMenu();
@@ -218,6 +228,8 @@ private:
     PropertiesWidget *m_properties = nullptr;
     QTreeView *m_tree = nullptr;
     QUndoView *m_undoView = nullptr;
+    ScriptRecorder *m_recorder = nullptr;
+    PythonConsole *m_console = nullptr;
     FrameBudget *m_budget = nullptr;
     ItemController *m_controller = nullptr;
     QPointer<Item> m_current;

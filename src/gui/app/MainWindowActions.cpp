@@ -400,6 +400,12 @@ void MainWindow::createMenus()
             chart->compute();
     });
 
+    QMenu *tools = menuBar()->addMenu(tr("&Tools"));
+    tools->setObjectName(QStringLiteral("menuTools"));
+    tools->addAction(action(QStringLiteral("actionPythonConsole")));
+    tools->addAction(action(QStringLiteral("actionSaveRecording")));
+    tools->addAction(action(QStringLiteral("actionClearRecording")));
+
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(action(QStringLiteral("actionUserGuide")));
     help->addSeparator();

@@ -1,0 +1,26 @@
+#pragma once
+// What the files of src/python share: each defines a part of the module, and long calls run
+// with the GIL released and Ctrl+C turned into the engine's cancellation.
+
+#include "python/Conversions.h"
+#include "python/Handles.h"
+
+#include <atomic>
+#include <functional>
+
+namespace awb::python {
+
+void defineProjectClass(py::module_ &m);
+void defineItemClass(py::module_ &m);
+void defineContainers(py::module_ &m);
+
+// Runs `work` on a worker thread with the GIL released; every 50 ms the calling thread takes
+// the GIL to look for a signal (Ctrl+C), and on one sets `cancel` (which `work` passes to the
+// engine), waits for the worker and raises KeyboardInterrupt. Exceptions of `work` are
+// re-raised on the calling thread.
+void runInterruptible(const std::function<void()> &work, std::atomic<bool> &cancel);
+
+// The text of a refused edit: the model's message, or `fallback` when it gave none.
+QString refusal(const QString &message, const QString &fallback);
+
+} // namespace awb::python

@@ -1,0 +1,476 @@
+// attractor_workbench.Item: one item of a project, its inputs (name, control points,
+// parameters, any JSON field) as undoable edits, and what the application computes from them
+// (maps and spectra, points, the analysis, the regularity, figures), through the same model,
+// core and figure code as the window and attractor-cli.
+
+#include "python/Internal.h"
+
+#include "cli/CommandSupport.h"
+#include "cli/FigureOptions.h"
+#include "core/analysis/Spectrum.h"
+#include "model/AttractorItem.h"
+#include "model/ItemAddress.h"
+#include "model/ItemAnalysisJson.h"
+#include "model/PointExport.h"
+#include "model/Project.h"
+#include "model/ProjectIO.h"
+#include "model/SchemeRegularity.h"
+#include "model/SubdivisionCurveItem.h"
+
+#include <QGuiApplication>
+
+namespace awb::python {
+
+AttractorItem &ItemHandle::attractor() const
+{
+    Item &i = get();
+    auto *a = qobject_cast<AttractorItem *>(&i);
+    if (!a)
+        throw Error(QString("item '%1' is a %2: it has no attractor").arg(i.name(), i.typeName()));
+    return *a;
+}
+
+namespace {
+
+std::shared_ptr<const DerivedIfs> derivedOf(const AttractorItem &item)
+{
+    auto d = item.derivedIfs();
+    if (!d)
+        throw Error(QString("item '%1': %2").arg(item.name(), item.derivedError()));
+    return d;
+}
+
+py::array complexValues(const std::vector<Complex> &values)
+{
+    py::array_t<std::complex<double>> a(py::ssize_t(values.size()));
+    auto r = a.mutable_unchecked<1>();
+    for (size_t i = 0; i < values.size(); ++i)
+        r(py::ssize_t(i)) = values[i];
+    return a;
+}
+
+py::array rowArray(const RowVec &b)
+{
+    py::array_t<double> a(py::ssize_t(b.size()));
+    auto r = a.mutable_unchecked<1>();
+    for (Eigen::Index i = 0; i < b.size(); ++i)
+        r(i) = b(i);
+    return a;
+}
+
+// Map i of the item as the Matrices dock shows it (attractor-cli analyse's "maps").
+py::dict mapDict(const DerivedIfs &d, int i)
+{
+    py::dict m;
+    m["index"] = i;
+    if (i < int(d.S.real.size())) {
+        const Mat &S = d.S.real[size_t(i)];
+        m["S"] = toNumpy(S);
+        m["S_exact"] = exactArray(S);
+        m["eigenvalues"] = complexValues(spectrum(S).values);
+    } else if (i < int(d.S.complex.size())) {
+        m["S"] = toNumpy(d.S.complex[size_t(i)]);
+        m["eigenvalues"] = complexValues(spectrum(d.S.complex[size_t(i)]).values);
+    }
+    int k = -1;
+    for (int j = 0; j < d.ifs.size(); ++j)
+        if (d.analysisIndex(j) == i)
+            k = j;
+    if (d.subdivision && d.subdivision->lifting.invertible && i < int(d.S.real.size())) {
+        const LiftedMap l = liftMatrix(d.subdivision->lifting, d.S.real[size_t(i)]);
+        m["M"] = toNumpy(l.M);
+        m["M_exact"] = exactArray(l.M);
+        m["A"] = toNumpy(l.A);
+        m["A_exact"] = exactArray(l.A);
+        m["b"] = rowArray(l.b);
+        m["eigenvalues_A"] = complexValues(spectrum(l.A).values);
+    } else if (i < int(d.liftedComplex.size())) {
+        const CMat &M = d.liftedComplex[size_t(i)];
+        const Eigen::Index n = M.rows() - 1;
+        m["M"] = toNumpy(M);
+        m["A"] = toNumpy(CMat(M.topLeftCorner(n, n)));
+        m["b"] = toNumpy(CMat(M.bottomLeftCorner(1, n)));
+        m["eigenvalues_A"] = complexValues(spectrum(CMat(M.topLeftCorner(n, n))).values);
+    } else if (k >= 0) {
+        m["A"] = toNumpy(d.ifs.maps[size_t(k)].A);
+        m["A_exact"] = exactArray(d.ifs.maps[size_t(k)].A);
+        m["b"] = rowArray(d.ifs.maps[size_t(k)].b);
+        m["eigenvalues_A"] = complexValues(spectrum(d.ifs.effectiveLinearPart(k)).values);
+    }
+    if (!m.contains("eigenvalues") && m.contains("eigenvalues_A"))
+        m["eigenvalues"] = m["eigenvalues_A"];
+    return m;
+}
+
+// Text in figures needs a QGuiApplication; the standalone module makes one on the first
+// render (off screen without a display), never at import.
+void ensureGuiApplication()
+{
+    if (QCoreApplication::instance())
+        return;
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") && qEnvironmentVariableIsEmpty("DISPLAY"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    static int argc = 1;
+    static char name[] = "attractor_workbench";
+    static char *argv[] = {name, nullptr};
+    static auto *app = new QGuiApplication(argc, argv);
+    Q_UNUSED(app);
+}
+
+// item.update(fields): style, start set, algorithm and animation through their own undoable
+// setters (the item object stays); any other field by replacing the item with its JSON so
+// changed, in one undo step.
+void updateItem(ItemHandle &h, const QJsonObject &fields)
+{
+    Item &item = h.get();
+    if (fields.contains("type") && fields.value("type").toString() != item.type())
+        throw Error(QString("update(): an item's type cannot change (%1 to %2): add a new item")
+                        .arg(item.type(), fields.value("type").toString()));
+    if (fields.contains("children"))
+        throw Error("update(): children are items of their own: add, remove or update them");
+    const QStringList own{"style", "start_set", "algorithm", "animation", "name"};
+    bool onlyOwn = true;
+    for (auto it = fields.begin(); it != fields.end(); ++it)
+        onlyOwn = onlyOwn && (own.contains(it.key()) || it.key() == "type");
+    Project *project = item.project();
+    if (!onlyOwn) {
+        QJsonObject json = ProjectIO::itemToJson(item);
+        json.remove("children");
+        for (auto it = fields.begin(); it != fields.end(); ++it)
+            json[it.key()] = it.value();
+        const QJsonObject root{{"format", ProjectIO::formatName()},
+                               {"version", ProjectIO::formatVersion},
+                               {"items", QJsonArray{json}}};
+        ProjectData data;
+        QString why;
+        if (!ProjectIO::parseRoot(root, "update()", &data, &why))
+            throw Error(why.replace("update(): item 1", QString("update() of '%1'").arg(item.name())));
+        Item *parent = item.parentItem();
+        const int row = project->rowOf(&item);
+        CompoundEdit edit(project, QString("Update %1").arg(item.name()));
+        // The children stay: moved under the new item, then the old one removed.
+        Item *added = project->addItem(std::move(data.items.front()), parent, row + 1);
+        while (item.childCount() > 0)
+            project->moveItem(item.child(0), added, added->childCount());
+        const QString name = item.name();
+        project->removeItem(&item);
+        added->setName(name);
+        h.item = added;
+        h.name = name;
+        return;
+    }
+    CompoundEdit edit(project, QString("Update %1").arg(item.name()));
+    auto fail = [&](const QString &field, const QString &message) {
+        throw Error(QString("update() of '%1': field \"%2\": %3").arg(item.name(), field, message));
+    };
+    try {
+        if (fields.contains("style")) {
+            const StyleSpec s = ProjectIO::readStyle(FieldReader(fields["style"].toObject(), "style."));
+            if (const auto p = item.checkStyle(s))
+                fail("style", p->message);
+            item.setStyle(s);
+        }
+        if (fields.contains("animation")) {
+            QString why;
+            const AnimationSpec a =
+                readAnimation(FieldReader(fields["animation"].toObject(), "animation."));
+            if (!item.setAnimation(a, &why))
+                fail("animation", why);
+        }
+        auto *a = qobject_cast<AttractorItem *>(&item);
+        if ((fields.contains("start_set") || fields.contains("algorithm")) && !a)
+            fail(fields.contains("start_set") ? "start_set" : "algorithm",
+                 "the item has no attractor");
+        if (fields.contains("start_set")) {
+            const StartSetSpec s = ProjectIO::readStartSet(
+                FieldReader(fields["start_set"].toObject(), "start_set."), a->pointDimension());
+            if (const auto p = a->checkStartSet(s))
+                fail("start_set", p->message);
+            a->setStartSet(s);
+        }
+        if (fields.contains("algorithm")) {
+            const AlgorithmSpec s =
+                ProjectIO::readAlgorithm(FieldReader(fields["algorithm"].toObject(), "algorithm."));
+            if (const auto p = a->checkAlgorithm(s))
+                fail("algorithm", p->message);
+            a->setAlgorithm(s);
+        }
+        if (fields.contains("name")) {
+            const QString name = fields["name"].toString();
+            if (const auto p = project ? project->checkName(&item, name) : std::nullopt)
+                fail("name", p->message);
+            item.setName(name);
+        }
+    } catch (const LoadError &e) {
+        throw Error(QString("update() of '%1': field \"%2\": %3")
+                        .arg(item.name(), e.field, e.message));
+    }
+}
+
+} // namespace
+
+void defineItemClass(py::module_ &m)
+{
+    py::class_<ItemHandle>(
+        m, "Item",
+        "An item of a project (project.item(name), project.items). Its inputs are edited "
+        "undoably, one undo step each, refused with the window's message; what is computed "
+        "from them is computed by the application's own code.")
+        .def_property(
+            "name", [](const ItemHandle &h) { return toPy(h.get().name()); },
+            [](ItemHandle &h, const py::object &name) {
+                Item &item = h.get();
+                const QString n = toQString(name, "name");
+                if (item.project())
+                    if (const auto p = item.project()->checkName(&item, n))
+                        throw Error(p->message);
+                if (!item.setName(n))
+                    throw Error(QString("the name '%1' is refused").arg(n));
+                h.name = n;
+            },
+            "The item's name (unique in the project). Setting it is one undo step; items "
+            "that refer to the old name follow.")
+        .def_property_readonly(
+            "kind", [](const ItemHandle &h) { return toPy(h.get().type()); },
+            "The item's type as in the file: \"subdivision-curve\", \"fractal\", "
+            "\"eigenvalue-plot\", ...")
+        .def_property_readonly(
+            "type_name", [](const ItemHandle &h) { return toPy(h.get().typeName()); },
+            "The kind's name as the window shows it.")
+        .def_property_readonly(
+            "dimension",
+            [](const ItemHandle &h) {
+                auto *a = qobject_cast<AttractorItem *>(&h.get());
+                return a ? a->pointDimension() : 0;
+            },
+            "Coordinates of its control points: 2 (plane) or 3 (surfaces, meshes); 0 for an "
+            "item with no attractor.")
+        .def_property_readonly(
+            "parent",
+            [](const ItemHandle &h) -> py::object {
+                Item *p = h.get().parentItem();
+                return p ? py::cast(ItemHandle{h.project, p, p->name()}) : py::none();
+            },
+            "The item this one sits under (None at the top level).")
+        .def_property_readonly(
+            "children",
+            [](const ItemHandle &h) {
+                py::list l;
+                Item &item = h.get();
+                for (int i = 0; i < item.childCount(); ++i)
+                    l.append(py::cast(ItemHandle{h.project, item.child(i), item.child(i)->name()}));
+                return l;
+            },
+            "The items under this one (an eigenvalue plot under its curve).")
+        .def_property(
+            "control_points",
+            [](const ItemHandle &h) {
+                AttractorItem &a = h.attractor();
+                if (a.controlPointSetCount() == 0)
+                    throw Error(QString("item '%1' has no control points").arg(a.name()));
+                return PointsHandle{h, 0};
+            },
+            [](const ItemHandle &h, const py::object &points) {
+                py::cast(PointsHandle{h, 0}).attr("assign")(points);
+            },
+            "The control points (set 0) as a list-like view: numpy.asarray(...) is an (m, d) "
+            "array; cp[i] = [x, y] moves point i, cp.insert(i, p), del cp[i], and assigning a "
+            "whole (m, d) array are each one undo step.")
+        .def_property_readonly(
+            "point_sets",
+            [](const ItemHandle &h) {
+                AttractorItem &a = h.attractor();
+                py::list l;
+                for (int s = 0; s < a.controlPointSetCount(); ++s)
+                    l.append(py::cast(PointsHandle{h, s}));
+                return l;
+            },
+            "Every control point set (a junction curve has two), each like control_points.")
+        .def_property_readonly(
+            "parameters", [](const ItemHandle &h) { return ParametersHandle{h}; },
+            "The parameters the Properties dock edits, by the same keys (\"scheme.omega\", "
+            "\"j\", ...): a dict-like view; setting one is one undo step, refused with the "
+            "dock's message.")
+        .def_property_readonly(
+            "error",
+            [](const ItemHandle &h) -> py::object {
+                const QString e = h.get().derivedError();
+                return e.isEmpty() ? py::none() : py::object(toPy(e));
+            },
+            "Why the item's IFS cannot be computed, or None.")
+        .def(
+            "to_json", [](const ItemHandle &h) { return toPy(ProjectIO::itemToJson(h.get())); },
+            "to_json() -> dict\n\nThe item as its JSON object in the project file (children "
+            "included).")
+        .def(
+            "update",
+            [](ItemHandle &h, const py::object &fields) {
+                updateItem(h, toJsonObject(fields, "fields"));
+            },
+            py::arg("fields"),
+            "update(fields)\n\nSets fields of the item's JSON object (\"style\", \"start_set\", "
+            "\"algorithm\", \"scheme\", \"matrices\", ...), checked as a file is. One undo "
+            "step.")
+        .def(
+            "maps",
+            [](const ItemHandle &h) {
+                const auto d = derivedOf(h.attractor());
+                py::list l;
+                const int count = d->S.count() > 0 ? d->S.count() : d->ifs.size();
+                for (int i = 0; i < count; ++i)
+                    l.append(mapDict(*d, i));
+                return l;
+            },
+            "maps() -> list of dict\n\nPer map i: \"S\" (the subdivision matrix S_i), \"M\" = "
+            "P^-1 S_i P, its blocks \"A\" and \"b\" (numpy arrays; \"S_exact\", \"M_exact\", "
+            "\"A_exact\": object arrays of fractions.Fraction where the entry is a fraction, "
+            "floats elsewhere), \"eigenvalues\" of S_i and \"eigenvalues_A\" (complex arrays, "
+            "largest modulus first). Items with no S_i give the IFS's A and b.")
+        .def(
+            "points",
+            [](const ItemHandle &h, const py::object &depthArg, const py::object &startArg,
+               const py::object &addressArg, double maxPoints, bool withMaps) -> py::object {
+                AttractorItem &item = h.attractor();
+                const auto d = derivedOf(item);
+                const int depth = depthArg.is_none() ? item.algorithm().depth
+                                                     : depthArg.cast<int>();
+                if (depth < 0 || depth > 64)
+                    throw Error(QString("depth %1 is out of range 0..64").arg(depth));
+                StartSet start = item.coreStartSet(*d);
+                if (py::isinstance<py::str>(startArg)) {
+                    start = cli::startOption(item, *d, toQString(startArg, "start"));
+                } else if (!startArg.is_none()) {
+                    const Mat pts = toPoints(startArg, item.pointDimension(), "start");
+                    start = {StartSet::Kind::Points, d->toIfsSpace(pts)};
+                }
+                Address address;
+                if (!addressArg.is_none()) {
+                    QString text;
+                    if (py::isinstance<py::str>(addressArg)) {
+                        text = toQString(addressArg, "address");
+                    } else {
+                        QStringList symbols;
+                        for (const py::handle s : addressArg)
+                            symbols << QString::number(s.cast<int>());
+                        text = symbols.join(',');
+                    }
+                    address = parseItemAddress(text, *d);
+                }
+                cli::requirePointBudget(*d, start, depth, maxPoints);
+                CollectedPoints points;
+                std::atomic<bool> cancel{false};
+                IterationControl control;
+                control.cancel = &cancel;
+                runInterruptible(
+                    [&] { points = collectPoints(*d, start, depth, control, address); }, cancel);
+                py::array xy = toNumpy(points.points);
+                if (!withMaps)
+                    return xy;
+                py::array_t<int> maps(py::ssize_t(points.maps.size()));
+                std::copy(points.maps.begin(), points.maps.end(), maps.mutable_data());
+                return py::make_tuple(xy, maps);
+            },
+            py::arg("depth") = py::none(), py::arg("start") = py::none(),
+            py::arg("address") = py::none(), py::arg("max_points") = 1e8,
+            py::arg("with_maps") = false,
+            "points(depth=None, start=None, address=None, max_points=1e8, with_maps=False) -> "
+            "numpy (N, d)\n\nThe points of F^depth(X0) (attractor-cli points): depth the item's "
+            "by default; start the item's start set, or an (n, d) array of points, or a text as "
+            "--start takes (\"segment:0,0,1,0\", \"lifted:...\", \"vertex-limits\"); address "
+            "a list of 0-based maps w (the sub-copy f_w(A)). With with_maps, also each point's "
+            "0-based map applied last (-1 for X0). Ctrl+C cancels.")
+        .def(
+            "analyse",
+            [](const ItemHandle &h) {
+                AttractorItem &item = h.attractor();
+                QJsonObject o;
+                {
+                    py::gil_scoped_release release;
+                    o = analyseItemJson(&item);
+                }
+                return toPy(o);
+            },
+            "analyse() -> dict\n\nThe item's entry of `attractor-cli analyse --json`: per map "
+            "S_i, M_i, A_i, b_i, eigenvalues, spectral radius, subdominant kind, contractivity "
+            "and fixed point; the subdominant eigenvalues, the Hausdorff distance to the exact "
+            "curve, the box-counting dimension and a curve's regularity.")
+        .def(
+            "regularity",
+            [](const ItemHandle &h) {
+                auto *curve = qobject_cast<SubdivisionCurveItem *>(&h.get());
+                if (!curve)
+                    throw Error(QString("item '%1' is not a subdivision curve: no scheme "
+                                        "regularity")
+                                    .arg(h.get().name()));
+                Regularity r;
+                {
+                    py::gil_scoped_release release;
+                    r = itemRegularity(*curve);
+                }
+                return toPy(regularityJson(r));
+            },
+            "regularity() -> dict\n\nThe certified Hölder regularity of a subdivision curve's "
+            "scheme (analyse()[\"regularity\"]): \"lower\", \"upper\", \"smoothness\" (C^n), "
+            "\"exact\", \"method\", \"sobolev\", ...")
+        .def(
+            "render",
+            [](const ItemHandle &h, const py::object &path, const py::object &size,
+               const py::object &depth, const py::object &samples, const py::object &threads) {
+                AttractorItem &item = h.attractor();
+                cli::FigureOptions o;
+                if (!size.is_none()) {
+                    const auto wh = size.cast<std::pair<int, int>>();
+                    if (wh.first < 16 || wh.second < 16 || wh.first > 20000 || wh.second > 20000)
+                        throw Error(QString("size (%1, %2): each side must be 16..20000 pixels")
+                                        .arg(wh.first)
+                                        .arg(wh.second));
+                    o.width = wh.first;
+                    o.height = wh.second;
+                }
+                if (!depth.is_none()) {
+                    const int k = depth.cast<int>();
+                    if (k < 0 || k > 64)
+                        throw Error(QString("depth %1 is out of range 0..64").arg(k));
+                    o.depth = k;
+                }
+                if (!samples.is_none()) {
+                    const double n = samples.cast<double>();
+                    if (!(n >= 1 && n <= 1e11))
+                        throw Error(QString("samples %1 is out of range 1..1e11").arg(n));
+                    o.samples = std::uint64_t(n);
+                }
+                if (!threads.is_none()) {
+                    const int t = threads.cast<int>();
+                    if (t < 0 || t > 256)
+                        throw Error(QString("threads %1 is out of range 0..256").arg(t));
+                    o.threads = t;
+                }
+                const QString file = toQString(py::str(path), "path");
+                ensureGuiApplication();
+                Project &project = h.project->get();
+                {
+                    py::gil_scoped_release release;
+                    cli::renderFigure(project, &item, o, file);
+                }
+            },
+            py::arg("path"), py::arg("size") = py::none(), py::arg("depth") = py::none(),
+            py::arg("samples") = py::none(), py::arg("threads") = py::none(),
+            "render(path, size=None, depth=None, samples=None, threads=None)\n\nDraws the item "
+            "as attractor-cli render does: PNG, SVG or PDF by the suffix (.exr: the raw "
+            "density), size (width, height) in pixels (default 900 x 700), depth and samples "
+            "the item's unless given, threads 0 for all cores. The PNG and SVG carry the "
+            "project: open(path) reads it back.")
+        .def("__eq__",
+             [](const ItemHandle &a, const py::object &b) {
+                 return py::isinstance<ItemHandle>(b) && &a.get() == &b.cast<const ItemHandle &>().get();
+             })
+        .def("__hash__", [](const ItemHandle &h) { return std::hash<const void *>()(&h.get()); })
+        .def("__repr__", [](const ItemHandle &h) {
+            const Item &item = h.get();
+            return QString("<attractor_workbench.Item '%1' (%2)>")
+                .arg(item.name(), item.type())
+                .toStdString();
+        });
+}
+
+} // namespace awb::python
