@@ -29,13 +29,15 @@ field() { printf '%s\n' "$info" | sed -n "s/^$1: //p"; }
 [ "$(field Section)" = science ] || fail "Section: $(field Section)"
 [[ "$(field Maintainer)" =~ ^[^\<]+\ \<[^@\>]+@[^\>]+\>$ ]] || fail "Maintainer: $(field Maintainer)"
 [ -z "$(field Homepage)" ] || fail "Homepage given: $(field Homepage)"
-[ "$(field Suggests)" = "ffmpeg, qt6-translations-l10n, fonts-noto-cjk | fonts-wqy-microhei" ] || fail "Suggests: $(field Suggests)"
+[ "$(field Suggests)" = "ffmpeg, qt6-translations-l10n, fonts-noto-cjk | fonts-wqy-microhei, python3-matplotlib" ] \
+    || fail "Suggests: $(field Suggests)"
 depends=$(field Depends)
 for lib in libc6 libstdc++6 libqt6core6 libqt6gui6 libqt6widgets6 libqt6svg6 libqt6charts6 \
            libqt6printsupport6 libqt6opengl6 libqcustomplot2.1-qt6; do
     [[ ", $depends," == *", $lib "* || ", $depends," == *", $lib,"* ]] \
         || fail "Depends lacks $lib: $depends"
 done
+[[ ", $depends," == *", python3-numpy,"* ]] || fail "Depends lacks python3-numpy: $depends"
 [ "$(printf '%s\n' "$info" | sed -n '/^Description:/,$p' | wc -l)" -gt 5 ] \
     || fail "no long description"
 
@@ -96,6 +98,25 @@ checked=$("$bin/attractor-cli" check "$example") || fail "check exited with $?"
 [ -s "$tmp/figure.png" ] && [ "$(head -c 8 "$tmp/figure.png" | od -An -tx1 | tr -d ' ')" \
                                = 89504e470d0a1a0a ] || fail "render wrote no PNG"
 note "attractor-cli check and render ran from the extracted package"
+
+# The Python module, from the extracted dist-packages, with Debian's Python.
+module=$(ls "$root"/usr/lib/python3/dist-packages/attractor_workbench.*.so 2>/dev/null) \
+    || fail "the package lacks the Python module in /usr/lib/python3/dist-packages"
+if readelf -S "$module" | grep -q '\.debug_info'; then fail "the Python module is not stripped"; fi
+PYTHONPATH=$root/usr/lib/python3/dist-packages /usr/bin/python3 - "$example" "$tmp/py.png" <<'PY' \
+    || fail "the Python module did not run from the extracted package"
+import sys
+import attractor_workbench as awb
+project = awb.open(sys.argv[1])
+item = project.items[0]
+item.control_points[0] = [0.1, 0.0]
+assert project.can_undo
+spectrum = item.maps()[0]["eigenvalues"]
+assert abs(spectrum[0] - 1) < 1e-12, spectrum
+item.render(sys.argv[2], size=(200, 160))
+PY
+[ -s "$tmp/py.png" ] || fail "the Python module rendered no PNG"
+note "import attractor_workbench ran from the extracted package"
 
 # Desktop entry, AppStream metadata, file type.
 log=$(desktop-file-validate "$root/usr/share/applications/attractor-workbench.desktop" 2>&1) \
