@@ -2942,6 +2942,46 @@ Byla ponechána jako %2.</translation>
         <source>Projects and figures with their item (*.awb *.png *.svg);;Attractor Workbench projects (*.awb);;Exported figures (*.png *.svg);;Other tools&apos; IFS files, as a new project (*.ifs *.flame *.flam3);;All files (*)</source>
         <translation>Projekty a obrázky s položkou (*.awb *.png *.svg);;Projekty Attractor Workbench (*.awb);;Exportované obrázky (*.png *.svg);;Soubory IFS jiných nástrojů jako nový projekt (*.ifs *.flame *.flam3);;Všechny soubory (*)</translation>
     </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>&amp;Nástroje</translation>
+    </message>
+    <message>
+        <source>Python Console</source>
+        <translation>Konzole Pythonu</translation>
+    </message>
+    <message>
+        <source>Save &amp;Recording…</source>
+        <translation>Uložit &amp;záznam…</translation>
+    </message>
+    <message>
+        <source>Save the edits since the project was opened as a Python script that replays them on the file</source>
+        <translation>Uložit úpravy od otevření projektu jako skript v Pythonu, který je na souboru přehraje</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Recording</source>
+        <translation>&amp;Vymazat záznam</translation>
+    </message>
+    <message>
+        <source>Start the recording again from the document as it is now</source>
+        <translation>Začít záznam znovu od dokumentu v současném stavu</translation>
+    </message>
+    <message>
+        <source>Save Recording</source>
+        <translation>Uložit záznam</translation>
+    </message>
+    <message>
+        <source>Python scripts (*.py)</source>
+        <translation>Skripty Pythonu (*.py)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n recorded edit(s) to %1</source>
+        <translation>
+            <numerusform>Uložena %n zaznamenaná úprava do %1</numerusform>
+            <numerusform>Uloženy %n zaznamenané úpravy do %1</numerusform>
+            <numerusform>Uloženo %n zaznamenaných úprav do %1</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -3737,6 +3777,25 @@ Byla ponechána jako %2.</translation>
     </message>
 </context>
 <context>
+    <name>awb::PythonConsole</name>
+    <message>
+        <source>Python: project, item, awb (attractor_workbench) and np</source>
+        <translation>Python: project, item, awb (attractor_workbench) a np</translation>
+    </message>
+    <message>
+        <source># Python %1 console: `project` is the open document, `item` the current item, `awb` the attractor_workbench module (help(awb)). Edits are undoable; every edit made in the window is shown below as the line that makes it (Tools &gt; Save Recording).</source>
+        <translation># Konzole Pythonu %1: `project` je otevřený dokument, `item` aktuální položka, `awb` modul attractor_workbench (help(awb)). Úpravy lze vrátit zpět; každá úprava provedená v okně se níže zobrazí jako řádek, který ji provede (Nástroje &gt; Uložit záznam).</translation>
+    </message>
+    <message>
+        <source># The recording starts again, from a new project.</source>
+        <translation># Záznam začíná znovu, od nového projektu.</translation>
+    </message>
+    <message>
+        <source># The recording starts again, from %1.</source>
+        <translation># Záznam začíná znovu, od %1.</translation>
+    </message>
+</context>
+<context>
     <name>awb::Recovery</name>
     <message>
         <source>%1: cannot open: %2</source>
@@ -3947,6 +4006,21 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>does not apply: %1</source>
         <translation>nelze použít: %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ScriptRecorder</name>
+    <message>
+        <source>Undo</source>
+        <translation>Zpět</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Znovu</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>Úprava</translation>
     </message>
 </context>
 <context>

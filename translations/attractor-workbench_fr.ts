@@ -2937,6 +2937,45 @@ Elle a été conservée sous le nom %2.</translation>
         <source>Projects and figures with their item (*.awb *.png *.svg);;Attractor Workbench projects (*.awb);;Exported figures (*.png *.svg);;Other tools&apos; IFS files, as a new project (*.ifs *.flame *.flam3);;All files (*)</source>
         <translation>Projets et figures avec leur élément (*.awb *.png *.svg);;Projets Attractor Workbench (*.awb);;Figures exportées (*.png *.svg);;Fichiers IFS d’autres outils, en nouveau projet (*.ifs *.flame *.flam3);;Tous les fichiers (*)</translation>
     </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>&amp;Outils</translation>
+    </message>
+    <message>
+        <source>Python Console</source>
+        <translation>Console Python</translation>
+    </message>
+    <message>
+        <source>Save &amp;Recording…</source>
+        <translation>Enregistrer l’&amp;enregistrement…</translation>
+    </message>
+    <message>
+        <source>Save the edits since the project was opened as a Python script that replays them on the file</source>
+        <translation>Enregistrer les modifications depuis l’ouverture du projet en un script Python qui les rejoue sur le fichier</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Recording</source>
+        <translation>&amp;Effacer l’enregistrement</translation>
+    </message>
+    <message>
+        <source>Start the recording again from the document as it is now</source>
+        <translation>Recommencer l’enregistrement à partir du document tel qu’il est</translation>
+    </message>
+    <message>
+        <source>Save Recording</source>
+        <translation>Enregistrer l’enregistrement</translation>
+    </message>
+    <message>
+        <source>Python scripts (*.py)</source>
+        <translation>Scripts Python (*.py)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n recorded edit(s) to %1</source>
+        <translation>
+            <numerusform>%n modification enregistrée dans %1</numerusform>
+            <numerusform>%n modifications enregistrées dans %1</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -3729,6 +3768,25 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
 </context>
 <context>
+    <name>awb::PythonConsole</name>
+    <message>
+        <source>Python: project, item, awb (attractor_workbench) and np</source>
+        <translation>Python&#xa0;: project, item, awb (attractor_workbench) et np</translation>
+    </message>
+    <message>
+        <source># Python %1 console: `project` is the open document, `item` the current item, `awb` the attractor_workbench module (help(awb)). Edits are undoable; every edit made in the window is shown below as the line that makes it (Tools &gt; Save Recording).</source>
+        <translation># Console Python %1&#xa0;: `project` est le document ouvert, `item` l’élément courant, `awb` le module attractor_workbench (help(awb)). Les modifications peuvent être annulées&#xa0;; chaque modification faite dans la fenêtre s’affiche ci-dessous comme la ligne qui la fait (Outils &gt; Enregistrer l’enregistrement).</translation>
+    </message>
+    <message>
+        <source># The recording starts again, from a new project.</source>
+        <translation># L’enregistrement recommence, à partir d’un nouveau projet.</translation>
+    </message>
+    <message>
+        <source># The recording starts again, from %1.</source>
+        <translation># L’enregistrement recommence, à partir de %1.</translation>
+    </message>
+</context>
+<context>
     <name>awb::Recovery</name>
     <message>
         <source>%1: cannot open: %2</source>
@@ -3939,6 +3997,21 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>does not apply: %1</source>
         <translation>sans objet&#xa0;: %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ScriptRecorder</name>
+    <message>
+        <source>Undo</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Rétablir</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>Modification</translation>
     </message>
 </context>
 <context>

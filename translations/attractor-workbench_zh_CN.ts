@@ -2932,6 +2932,44 @@ It was kept as %2.</source>
         <source>Projects and figures with their item (*.awb *.png *.svg);;Attractor Workbench projects (*.awb);;Exported figures (*.png *.svg);;Other tools&apos; IFS files, as a new project (*.ifs *.flame *.flam3);;All files (*)</source>
         <translation>项目及带有对象的图形 (*.awb *.png *.svg);;Attractor Workbench 项目 (*.awb);;导出的图形 (*.png *.svg);;其他工具的 IFS 文件，作为新项目 (*.ifs *.flame *.flam3);;所有文件 (*)</translation>
     </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>工具(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Python Console</source>
+        <translation>Python 控制台</translation>
+    </message>
+    <message>
+        <source>Save &amp;Recording…</source>
+        <translation>保存录制(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>Save the edits since the project was opened as a Python script that replays them on the file</source>
+        <translation>将打开项目以来的编辑保存为 Python 脚本，可在该文件上重放</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Recording</source>
+        <translation>清除录制(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Start the recording again from the document as it is now</source>
+        <translation>从文档当前状态重新开始录制</translation>
+    </message>
+    <message>
+        <source>Save Recording</source>
+        <translation>保存录制</translation>
+    </message>
+    <message>
+        <source>Python scripts (*.py)</source>
+        <translation>Python 脚本 (*.py)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n recorded edit(s) to %1</source>
+        <translation>
+            <numerusform>已将 %n 项录制的编辑保存到 %1</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -3721,6 +3759,25 @@ It was kept as %2.</source>
     </message>
 </context>
 <context>
+    <name>awb::PythonConsole</name>
+    <message>
+        <source>Python: project, item, awb (attractor_workbench) and np</source>
+        <translation>Python：project、item、awb（attractor_workbench）和 np</translation>
+    </message>
+    <message>
+        <source># Python %1 console: `project` is the open document, `item` the current item, `awb` the attractor_workbench module (help(awb)). Edits are undoable; every edit made in the window is shown below as the line that makes it (Tools &gt; Save Recording).</source>
+        <translation># Python %1 控制台：`project` 是打开的文档，`item` 是当前项，`awb` 是 attractor_workbench 模块（help(awb)）。编辑可以撤销；在窗口中所做的每个编辑都会在下方显示为执行它的那一行（工具 &gt; 保存录制）。</translation>
+    </message>
+    <message>
+        <source># The recording starts again, from a new project.</source>
+        <translation># 录制重新开始，从新项目开始。</translation>
+    </message>
+    <message>
+        <source># The recording starts again, from %1.</source>
+        <translation># 录制重新开始，从 %1 开始。</translation>
+    </message>
+</context>
+<context>
     <name>awb::Recovery</name>
     <message>
         <source>%1: cannot open: %2</source>
@@ -3931,6 +3988,21 @@ It was kept as %2.</source>
     <message>
         <source>does not apply: %1</source>
         <translation>不适用：%1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ScriptRecorder</name>
+    <message>
+        <source>Undo</source>
+        <translation>撤销</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>重做</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>编辑</translation>
     </message>
 </context>
 <context>

@@ -113,6 +113,7 @@ void ScriptRecorder::restart()
     m_lastIsPush = false;
     m_aligned = true;
     m_baseFile = m_project->fileName();
+    emit restarted(m_baseFile);
 }
 
 std::vector<const QUndoCommand *> ScriptRecorder::commands() const
@@ -212,7 +213,14 @@ void ScriptRecorder::process()
     } else {
         const Snapshot after = take();
         const QStringList lines = diff(m_snapshot, after);
-        if (lines.isEmpty()) {
+        if (now.empty()) {
+            // The history was cleared (not undone): the script keeps its steps, the window
+            // cannot undo below this point any more.
+            if (!lines.isEmpty())
+                append(block(lines, tr("Edit")), true);
+            m_floor = 0;
+            m_lastIsPush = false;
+        } else if (lines.isEmpty()) {
             // A step that changes nothing a file holds: the script has no step for it.
             m_aligned = false;
             m_lastIsPush = false;

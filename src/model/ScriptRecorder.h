@@ -59,6 +59,8 @@ public:
 signals:
     // A new step: its lines (several lines joined by '\n').
     void recorded(const QString &lines);
+    // The recording starts again (the document was opened, cleared, or Clear Recording).
+    void restarted(const QString &baseFile);
     // The last step's lines changed (a later edit merged into the same undo step).
     void lastReplaced(const QString &lines);
 

@@ -117,6 +117,11 @@ PythonConsole::PythonConsole(Project *project, ScriptRecorder *recorder,
             onRecorded(step);
         connect(m_recorder, &ScriptRecorder::recorded, this, &PythonConsole::onRecorded);
         connect(m_recorder, &ScriptRecorder::lastReplaced, this, &PythonConsole::onLastReplaced);
+        connect(m_recorder, &ScriptRecorder::restarted, this, [this](const QString &file) {
+            show(file.isEmpty() ? tr("# The recording starts again, from a new project.")
+                                : tr("# The recording starts again, from %1.").arg(file),
+                 QStringLiteral("#6a737d"), true);
+        });
     }
 }
 
