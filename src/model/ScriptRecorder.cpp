@@ -104,7 +104,9 @@ ScriptRecorder::~ScriptRecorder() = default;
 void ScriptRecorder::restart()
 {
     m_steps.clear();
+    m_snapshot.clear();
     m_snapshot = take();
+    m_changed.clear();
     m_stepBase.clear();
     m_commands = commands();
     m_index = m_project->undoStack()->index();
@@ -129,6 +131,17 @@ ScriptRecorder::Snapshot ScriptRecorder::take() const
 {
     Snapshot s;
     for (Item *item : m_project->items()) {
+        // An item that did not change since the last snapshot keeps its entry (a large mesh
+        // is not written to JSON again on every edit of another item).
+        if (const auto old = m_snapshot.find(item);
+            old != m_snapshot.end() && !m_changed.count(item) && old->second.item == item) {
+            Entry e = old->second;
+            e.name = item->name();
+            e.parent = item->parentItem();
+            e.row = m_project->rowOf(item);
+            s[item] = std::move(e);
+            continue;
+        }
         Entry e;
         e.item = item;
         e.name = item->name();
@@ -150,8 +163,9 @@ ScriptRecorder::Snapshot ScriptRecorder::take() const
     return s;
 }
 
-void ScriptRecorder::onItemChanged(Item *)
+void ScriptRecorder::onItemChanged(Item *item)
 {
+    m_changed.insert(item);
     m_dirty = true;
 }
 
@@ -234,6 +248,7 @@ void ScriptRecorder::process()
     m_commands = now;
     m_index = index;
     m_dirty = false;
+    m_changed.clear();
 }
 
 QString ScriptRecorder::block(const QStringList &lines, const QString &text) const

@@ -23,6 +23,7 @@
 #include <QVariant>
 
 #include <map>
+#include <set>
 #include <vector>
 
 class QUndoCommand;
@@ -90,6 +91,7 @@ private:
     Project *m_project;
     Snapshot m_snapshot;      // the document after the last recorded step
     Snapshot m_stepBase;      // the document before the last recorded step (for merges)
+    std::set<const Item *> m_changed;  // items whose inputs changed since the last snapshot
     std::vector<const QUndoCommand *> m_commands;
     int m_index = 0;
     int m_floor = 0;          // the stack's index when the recording started
