@@ -9,6 +9,7 @@
 #include "core/ifs/SurfaceIfs.h"
 #include "model/AttractorItem.h"
 #include "model/ExactCurve.h"
+#include "model/MapMatrices.h"
 #include "model/MeshAnalysisJson.h"
 #include "model/NumberFormat.h"
 #include "model/SchemeRegularity.h"
@@ -53,41 +54,35 @@ QJsonObject matrixJson(const CMat &m)
     return {{"values", values}};
 }
 
-QJsonArray eigenvaluesJson(const Spectrum &s)
+QJsonArray eigenvaluesJson(const std::vector<Complex> &values)
 {
     QJsonArray ev;
-    for (const Complex &z : s.values)
+    for (const Complex &z : values)
         ev.append(complexJson(z));
     return ev;
 }
 
-// The map matrices of analysis map i, as the Matrices dock shows them: M_i = P^-1 S_i P with
-// its blocks A_i, b_i for a lifted subdivision IFS (000 §2), the complex M_i of a complex
-// Bézier split, or the IFS map itself (A, b) where there is no S_i.
-void addMapMatrices(QJsonObject &m, const DerivedIfs &d, int i, int k)
+// The map matrices of analysis map i (MapMatrices.h) as JSON.
+void addMapMatrices(QJsonObject &o, const MapMatrices &m)
 {
-    if (i < int(d.S.real.size()))
-        m["S"] = matrixJson(d.S.real[size_t(i)]);
-    else if (i < int(d.S.complex.size()))
-        m["S"] = matrixJson(d.S.complex[size_t(i)]);
-    if (d.subdivision && d.subdivision->lifting.invertible && i < int(d.S.real.size())) {
-        const LiftedMap l = liftMatrix(d.subdivision->lifting, d.S.real[size_t(i)]);
-        m["M"] = matrixJson(l.M);
-        m["A"] = matrixJson(l.A);
-        m["b"] = matrixJson(Mat(l.b));
-        m["eigenvalues_A"] = eigenvaluesJson(spectrum(l.A));
-    } else if (i < int(d.liftedComplex.size())) {
-        const CMat &M = d.liftedComplex[size_t(i)];
-        const Eigen::Index n = M.rows() - 1;
-        m["M"] = matrixJson(M);
-        m["A"] = matrixJson(CMat(M.topLeftCorner(n, n)));
-        m["b"] = matrixJson(CMat(M.bottomLeftCorner(1, n)));
-        m["eigenvalues_A"] = eigenvaluesJson(spectrum(CMat(M.topLeftCorner(n, n))));
-    } else if (k >= 0) {
-        m["A"] = matrixJson(d.ifs.maps[size_t(k)].A);
-        m["b"] = matrixJson(Mat(d.ifs.maps[size_t(k)].b));
-        m["eigenvalues_A"] = eigenvaluesJson(spectrum(d.ifs.effectiveLinearPart(k)));
-    }
+    if (m.S)
+        o["S"] = matrixJson(*m.S);
+    else if (m.complexS)
+        o["S"] = matrixJson(*m.complexS);
+    if (m.M)
+        o["M"] = matrixJson(*m.M);
+    else if (m.complexM)
+        o["M"] = matrixJson(*m.complexM);
+    if (m.A)
+        o["A"] = matrixJson(*m.A);
+    else if (m.complexA)
+        o["A"] = matrixJson(*m.complexA);
+    if (m.b)
+        o["b"] = matrixJson(Mat(*m.b));
+    else if (m.complexB)
+        o["b"] = matrixJson(*m.complexB);
+    if (m.A || m.complexA)
+        o["eigenvalues_A"] = eigenvaluesJson(m.eigenvaluesA);
 }
 
 // d_H(F^depth(X0), exact curve) at the item's depth (or the deepest depth under 2e6 points),
@@ -146,16 +141,13 @@ QJsonObject analyseItemJson(const AttractorItem *item, Regularity *regularity)
     // Items without subdivision matrices (an equivalent IFS of a normal-vector scheme) list
     // the IFS's maps: "eigenvalues" are then those of the linear parts A_i.
     const bool hasS = d->S.count() > 0;
-    const int count = hasS ? d->S.count() : d->ifs.size();
+    const int count = listedMapCount(*d);
     for (int i = 0; i < count; ++i) {
         const Spectrum s = !hasS            ? spectrum(d->ifs.effectiveLinearPart(i))
                            : d->S.isComplex() ? spectrum(d->S.complex[i])
                                               : spectrum(d->S.real[i]);
         QJsonObject m;
-        QJsonArray ev;
-        for (const Complex &z : s.values)
-            ev.append(complexJson(z));
-        m["eigenvalues"] = ev;
+        m["eigenvalues"] = eigenvaluesJson(s.values);
         m["spectral_radius"] = s.spectralRadius;
         const Subdominant sub = subdominant(s, hasS);
         m["subdominant"] = [&] {
@@ -165,14 +157,11 @@ QJsonObject analyseItemJson(const AttractorItem *item, Regularity *regularity)
             return a;
         }();
         m["subdominant_kind"] = QString::fromStdString(toString(sub.kind));
-        // The IFS map that is analysis map i (the IFS may use a subset of the maps).
-        int k = -1;
-        for (int j = 0; j < d->ifs.size(); ++j)
-            if (d->analysisIndex(j) == i)
-                k = j;
+        const MapMatrices matrices = mapMatrices(*d, i);
+        const int k = matrices.ifsMap;
         if (d->surface)
             m["used"] = k >= 0;
-        addMapMatrices(m, *d, i, k);
+        addMapMatrices(m, matrices);
         if (k >= 0) {
             const Contractivity c = contractivity(d->ifs.effectiveLinearPart(k));
             m["contractive"] = c.eventuallyContractive;

@@ -478,6 +478,22 @@ std::unique_ptr<Item> ProjectIO::copyItem(const Item &item, QString *error)
     return nullptr;
 }
 
+std::unique_ptr<Item> ProjectIO::itemFromJson(const QJsonObject &json, QString *error)
+{
+    QSet<QString> names;
+    try {
+        return readItem(json, QStringLiteral("1"), names);
+    } catch (const ItemError &e) {
+        if (error) {
+            const QString where = e.name.isEmpty() ? tr("the item") : tr("item %1").arg(quoted(e.name));
+            *error = e.error.field.isEmpty()
+                         ? QStringLiteral("%1: %2").arg(where, e.error.message)
+                         : tr("%1: field \"%2\": %3").arg(where, e.error.field, e.error.message);
+        }
+    }
+    return nullptr;
+}
+
 std::unique_ptr<Item> ProjectIO::readItem(const QJsonValue &value, const QString &label,
                                           QSet<QString> &names, bool checkAnimation)
 {

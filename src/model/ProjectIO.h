@@ -103,6 +103,11 @@ public:
     // is copied); nullptr with *error when the item does not read back.
     static std::unique_ptr<Item> copyItem(const Item &item, QString *error);
 
+    // An item (with its children) read from its JSON object as a file holds it, checked as a
+    // file is, in no project (a script's project.add(), an item replaced by its changed JSON);
+    // nullptr with *error ("item \"Koch\": field \"scheme.degree\": expected an integer").
+    static std::unique_ptr<Item> itemFromJson(const QJsonObject &json, QString *error);
+
     // ---- reading. On failure: false, and *error starts with `source` (the file name).
     static bool readFile(const QString &fileName, ProjectData *out, QString *error);
     static bool parse(const QByteArray &bytes, const QString &source, ProjectData *out,

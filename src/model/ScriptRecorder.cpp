@@ -55,18 +55,6 @@ QJsonObject withoutChildren(QJsonObject json)
     return json;
 }
 
-std::unique_ptr<Item> readAlone(const QJsonObject &json)
-{
-    const QJsonObject root{{"format", ProjectIO::formatName()},
-                           {"version", ProjectIO::formatVersion},
-                           {"items", QJsonArray{json}}};
-    ProjectData data;
-    QString why;
-    if (!ProjectIO::parseRoot(root, QString(), &data, &why) || data.items.empty())
-        return nullptr;
-    return std::move(data.items.front());
-}
-
 QString pointsLiteral(const QVariantList &points, int dim)
 {
     QStringList rows;
@@ -343,7 +331,7 @@ QStringList ScriptRecorder::itemLines(const Entry &before, const Entry &after,
         return {};
     const QString ref = QStringLiteral("project.item(%1)").arg(pyString(after.name));
     QStringList lines;
-    std::unique_ptr<Item> scratch = readAlone(start);
+    std::unique_ptr<Item> scratch = ProjectIO::itemFromJson(start, nullptr);
     bool replayed = scratch != nullptr;
     // The Properties dock's parameters, choices (which change the others) first.
     if (replayed) {

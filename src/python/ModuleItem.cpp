@@ -11,6 +11,7 @@
 #include "model/AttractorItem.h"
 #include "model/ItemAddress.h"
 #include "model/ItemAnalysisJson.h"
+#include "model/MapMatrices.h"
 #include "model/PointExport.h"
 #include "model/Project.h"
 #include "model/ProjectIO.h"
@@ -58,48 +59,43 @@ py::array rowArray(const RowVec &b)
     return a;
 }
 
-// Map i of the item as the Matrices dock shows it (attractor-cli analyse's "maps").
+// Map i of the item as the Matrices dock shows it (model/MapMatrices, as attractor-cli
+// analyse's "maps"), with numpy arrays and exact fractions.
 py::dict mapDict(const DerivedIfs &d, int i)
 {
-    py::dict m;
-    m["index"] = i;
-    if (i < int(d.S.real.size())) {
-        const Mat &S = d.S.real[size_t(i)];
-        m["S"] = toNumpy(S);
-        m["S_exact"] = exactArray(S);
-        m["eigenvalues"] = complexValues(spectrum(S).values);
-    } else if (i < int(d.S.complex.size())) {
-        m["S"] = toNumpy(d.S.complex[size_t(i)]);
-        m["eigenvalues"] = complexValues(spectrum(d.S.complex[size_t(i)]).values);
+    const MapMatrices m = mapMatrices(d, i);
+    py::dict o;
+    o["index"] = i;
+    if (m.S) {
+        o["S"] = toNumpy(*m.S);
+        o["S_exact"] = exactArray(*m.S);
+        o["eigenvalues"] = complexValues(spectrum(*m.S).values);
+    } else if (m.complexS) {
+        o["S"] = toNumpy(*m.complexS);
+        o["eigenvalues"] = complexValues(spectrum(*m.complexS).values);
     }
-    int k = -1;
-    for (int j = 0; j < d.ifs.size(); ++j)
-        if (d.analysisIndex(j) == i)
-            k = j;
-    if (d.subdivision && d.subdivision->lifting.invertible && i < int(d.S.real.size())) {
-        const LiftedMap l = liftMatrix(d.subdivision->lifting, d.S.real[size_t(i)]);
-        m["M"] = toNumpy(l.M);
-        m["M_exact"] = exactArray(l.M);
-        m["A"] = toNumpy(l.A);
-        m["A_exact"] = exactArray(l.A);
-        m["b"] = rowArray(l.b);
-        m["eigenvalues_A"] = complexValues(spectrum(l.A).values);
-    } else if (i < int(d.liftedComplex.size())) {
-        const CMat &M = d.liftedComplex[size_t(i)];
-        const Eigen::Index n = M.rows() - 1;
-        m["M"] = toNumpy(M);
-        m["A"] = toNumpy(CMat(M.topLeftCorner(n, n)));
-        m["b"] = toNumpy(CMat(M.bottomLeftCorner(1, n)));
-        m["eigenvalues_A"] = complexValues(spectrum(CMat(M.topLeftCorner(n, n))).values);
-    } else if (k >= 0) {
-        m["A"] = toNumpy(d.ifs.maps[size_t(k)].A);
-        m["A_exact"] = exactArray(d.ifs.maps[size_t(k)].A);
-        m["b"] = rowArray(d.ifs.maps[size_t(k)].b);
-        m["eigenvalues_A"] = complexValues(spectrum(d.ifs.effectiveLinearPart(k)).values);
+    if (m.M) {
+        o["M"] = toNumpy(*m.M);
+        o["M_exact"] = exactArray(*m.M);
+    } else if (m.complexM) {
+        o["M"] = toNumpy(*m.complexM);
     }
-    if (!m.contains("eigenvalues") && m.contains("eigenvalues_A"))
-        m["eigenvalues"] = m["eigenvalues_A"];
-    return m;
+    if (m.A) {
+        o["A"] = toNumpy(*m.A);
+        o["A_exact"] = exactArray(*m.A);
+    } else if (m.complexA) {
+        o["A"] = toNumpy(*m.complexA);
+    }
+    if (m.b)
+        o["b"] = rowArray(*m.b);
+    else if (m.complexB)
+        o["b"] = toNumpy(*m.complexB);
+    if (m.A || m.complexA) {
+        o["eigenvalues_A"] = complexValues(m.eigenvaluesA);
+        if (!o.contains("eigenvalues"))
+            o["eigenvalues"] = o["eigenvalues_A"];
+    }
+    return o;
 }
 
 // Text in figures needs a QGuiApplication; the standalone module makes one on the first
@@ -138,18 +134,15 @@ void updateItem(ItemHandle &h, const QJsonObject &fields)
         json.remove("children");
         for (auto it = fields.begin(); it != fields.end(); ++it)
             json[it.key()] = it.value();
-        const QJsonObject root{{"format", ProjectIO::formatName()},
-                               {"version", ProjectIO::formatVersion},
-                               {"items", QJsonArray{json}}};
-        ProjectData data;
         QString why;
-        if (!ProjectIO::parseRoot(root, "update()", &data, &why))
-            throw Error(why.replace("update(): item 1", QString("update() of '%1'").arg(item.name())));
+        std::unique_ptr<Item> replacement = ProjectIO::itemFromJson(json, &why);
+        if (!replacement)
+            throw Error(QString("update() of '%1': %2").arg(item.name(), why));
         Item *parent = item.parentItem();
         const int row = project->rowOf(&item);
         CompoundEdit edit(project, QString("Update %1").arg(item.name()));
         // The children stay: moved under the new item, then the old one removed.
-        Item *added = project->addItem(std::move(data.items.front()), parent, row + 1);
+        Item *added = project->addItem(std::move(replacement), parent, row + 1);
         while (item.childCount() > 0)
             project->moveItem(item.child(0), added, added->childCount());
         const QString name = item.name();
@@ -316,8 +309,7 @@ void defineItemClass(py::module_ &m)
             [](const ItemHandle &h) {
                 const auto d = derivedOf(h.attractor());
                 py::list l;
-                const int count = d->S.count() > 0 ? d->S.count() : d->ifs.size();
-                for (int i = 0; i < count; ++i)
+                for (int i = 0; i < listedMapCount(*d); ++i)
                     l.append(mapDict(*d, i));
                 return l;
             },

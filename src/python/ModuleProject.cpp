@@ -7,7 +7,6 @@
 #include "model/Project.h"
 #include "model/ProjectIO.h"
 
-#include <QJsonArray>
 
 namespace awb::python {
 
@@ -99,21 +98,18 @@ void defineProjectClass(py::module_ &m)
         .def(
             "add",
             [](const ProjectRef &p, const py::object &json, const py::object &parent, int index) {
-                const QJsonObject object = toJsonObject(json, "item");
-                const QJsonObject root{{"format", ProjectIO::formatName()},
-                                       {"version", ProjectIO::formatVersion},
-                                       {"items", QJsonArray{object}}};
-                ProjectData data;
                 QString why;
-                if (!ProjectIO::parseRoot(root, "add()", &data, &why))
-                    throw Error(why);
+                std::unique_ptr<Item> item =
+                    ProjectIO::itemFromJson(toJsonObject(json, "item"), &why);
+                if (!item)
+                    throw Error("add(): " + why);
                 Item *under = resolveItem(p, parent, "parent");
                 Project &project = p->get();
                 if (index < -1 || index > project.childCount(under))
                     throw Error(QString("index %1 is out of range 0..%2")
                                     .arg(index)
                                     .arg(project.childCount(under)));
-                return handleOf(p, project.addItem(std::move(data.items.front()), under, index));
+                return handleOf(p, project.addItem(std::move(item), under, index));
             },
             py::arg("item"), py::arg("parent") = py::none(), py::arg("index") = -1,
             "add(item, parent=None, index=-1) -> Item\n\nAdds an item given as its JSON object "
