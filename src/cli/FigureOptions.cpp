@@ -180,10 +180,14 @@ void writeRawDensity(const FigureSpec &spec, const std::shared_ptr<const Derived
     r.threads = spec.threads;
     AttractorDensity density;
     try {
-        density = renderAttractorDensity(r);
+        IterationControl control;
+        control.cancel = o.cancel;
+        density = renderAttractorDensity(r, control);
     } catch (const InputError &e) {
         throw Failure{QString::fromStdString(e.what())};
     }
+    if (o.cancel && o.cancel->load())
+        throw Failure{CliTr::tr("the rendering was cancelled")};
     DensityFileInfo info{r.world, caption, spec.metadata};
     QString error;
     const bool ok = suffix == QLatin1String("exr")
@@ -327,6 +331,7 @@ void renderFigure(const Project &project, AttractorItem *item, const FigureOptio
         return;
     }
     spec.metadata = figureMetadata(project, *item);
+    spec.cancel = o.cancel;
     const QString suffix = o.format.isEmpty() ? QFileInfo(outFile).suffix().toLower() : o.format;
     if (suffix == QLatin1String("exr") || o.bits == 16) {
         writeRawDensity(spec, d, depth, o, suffix, caption, outFile);
@@ -335,6 +340,11 @@ void renderFigure(const Project &project, AttractorItem *item, const FigureOptio
     QString error;
     if (!writeFigure(spec, outFile, &error, o.format))
         throw Failure{error};
+    if (o.cancel && o.cancel->load()) {
+        // An unfinished picture is not left behind as if it were the figure.
+        QFile::remove(outFile);
+        throw Failure{CliTr::tr("the rendering was cancelled")};
+    }
 }
 
 } // namespace awb::cli

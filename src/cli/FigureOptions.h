@@ -8,6 +8,7 @@
 #include <QRectF>
 #include <QString>
 
+#include <atomic>
 #include <cstdint>
 #include <optional>
 
@@ -32,6 +33,9 @@ struct FigureOptions {
     QString captionSuffix;  // e.g. an animation frame's time and values
     QString format;  // "", "png", "svg", "pdf" or "exr"
     int bits = 8;    // PNG: 8 (the figure) or 16 (the raw log density, render/DensityFile.h)
+    // Set to stop the attractor's raster early (attractor_workbench's render on Ctrl+C): the
+    // figure is then not written and renderFigure throws Failure.
+    const std::atomic<bool> *cancel = nullptr;
 };
 
 // The options of `render` that `animate` shares.

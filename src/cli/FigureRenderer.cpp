@@ -229,7 +229,9 @@ void drawRaster(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
     r.threads = spec.threads;
     // Thicken single pixels a little so that a thin curve reads at print size.
     r.dotRadius = scale > 1.5 && spec.tone.mode == Accumulation::Hits ? 1 : 0;
-    const QImage img = renderAttractorImage(r);
+    IterationControl control;
+    control.cancel = spec.cancel;
+    const QImage img = renderAttractorImage(r, nullptr, control);
     p.save();
     p.setRenderHint(QPainter::SmoothPixmapTransform);
     p.setRenderHint(QPainter::LosslessImageRendering); // PDF: no JPEG halos

@@ -13,6 +13,7 @@
 #include <QImage>
 #include <QRectF>
 #include <QString>
+#include <atomic>
 #include <functional>
 #include <vector>
 
@@ -55,6 +56,7 @@ struct FigureSpec {
     // of an animation share one, so that the attractor moves and the frame stays.
     QRectF bounds;
     FigureMetadata metadata;           // written into PNG and SVG files (the item's project)
+    const std::atomic<bool> *cancel = nullptr;  // stops the raster panels' iteration
 };
 
 // Colour of map i (by address): a qualitative palette that reads on white and in print.

@@ -93,7 +93,7 @@ CollectedPoints collectPoints(const DerivedIfs &d, const StartSet &start, int de
     const double expected = exportPointCount(d, start, depth);
     std::vector<double> coordinates;
     CollectedPoints out;
-    if (expected > 0 && expected < 5e8) {
+    if (expected > 0 && expected < 5e7) {  // more grows as it comes (and can be cancelled)
         coordinates.reserve(std::size_t(expected) * std::size_t(columns));
         out.maps.reserve(std::size_t(expected));
         out.views.reserve(std::size_t(expected));

@@ -463,7 +463,8 @@ QString ScriptRecorder::pyNumber(double v)
 {
     if (!std::isfinite(v))
         return v != v ? QStringLiteral("float(\"nan\")")
-                      : (v > 0 ? QStringLiteral("float(\"inf\")") : QStringLiteral("-float(\"inf\")"));
+                      : (v > 0 ? QStringLiteral("float(\"inf\")")
+                               : QStringLiteral("-float(\"inf\")"));
     return QString::number(v, 'g', QLocale::FloatingPointShortest);
 }
 

@@ -27,10 +27,17 @@ Project &ProjectHandle::get() const
     return *project;
 }
 
+ItemHandle::ItemHandle(ProjectRef of, Item *which)
+    : project(std::move(of)), item(which), name(which ? which->name() : QString())
+{
+}
+
 Item &ItemHandle::get() const
 {
     Project &p = project->get();
     auto *self = const_cast<ItemHandle *>(this);
+    if ((!item || item->project() != &p) && previous && previous->project() == &p)
+        self->item = previous;
     if (!item || item->project() != &p)
         self->item = p.findItem(name);
     if (!item)
@@ -96,7 +103,7 @@ py::object itemObject(const py::object &project, Item *item)
 {
     if (!item)
         return py::none();
-    ItemHandle h{project.cast<ProjectRef>(), item, item->name()};
+    ItemHandle h(project.cast<ProjectRef>(), item);
     return py::cast(h);
 }
 
@@ -122,6 +129,9 @@ void defineModule(py::module_ &m)
             raise(f.message);
         } catch (const LoadError &e) {
             raise(e.field.isEmpty() ? e.message : e.field + ": " + e.message);
+        } catch (const py::cast_error &e) {
+            PyErr_SetString(PyExc_TypeError,
+                            (std::string("an argument has the wrong type: ") + e.what()).c_str());
         }
     });
     defineContainers(m);
@@ -130,7 +140,7 @@ void defineModule(py::module_ &m)
     m.def(
         "open",
         [](const py::object &path) {
-            const QString file = toQString(py::str(path), "path");
+            const QString file = pathArg(path, "open()");
             auto handle = std::make_shared<ProjectHandle>();
             QString why;
             bool ok = false;

@@ -12,12 +12,79 @@
 
 namespace awb::python {
 
+namespace {
+
+QString typeName(const py::handle &h)
+{
+    return QString::fromStdString(py::str(py::type::of(h).attr("__name__")));
+}
+
+} // namespace
+
 QString toQString(const py::handle &h, const char *what)
 {
     if (!py::isinstance<py::str>(h))
-        throw Error(QString("%1: expected a str, got %2")
-                        .arg(what, QString::fromStdString(py::str(py::type::of(h).attr("__name__")))));
-    return QString::fromStdString(h.cast<std::string>());
+        throw py::type_error(
+            QString("%1: expected a str, got %2").arg(what, typeName(h)).toStdString());
+    Py_ssize_t size = 0;
+    const char *utf8 = PyUnicode_AsUTF8AndSize(h.ptr(), &size);
+    if (!utf8) {
+        PyErr_Clear();
+        throw Error(QString("%1: not valid text (it holds a lone surrogate)").arg(what));
+    }
+    return QString::fromUtf8(utf8, qsizetype(size));
+}
+
+QString pathArg(const py::handle &h, const char *what)
+{
+    const py::module_ os = py::module_::import("os");
+    if (!py::isinstance<py::str>(h) && !py::isinstance<py::bytes>(h)
+        && !py::hasattr(h, "__fspath__"))
+        throw py::type_error(QString("%1: expected a file name (str or os.PathLike), got %2")
+                                 .arg(what, typeName(h))
+                                 .toStdString());
+    return toQString(os.attr("fsdecode")(h), what);
+}
+
+long long intArg(const py::handle &h, const char *what, long long lo, long long hi)
+{
+    if (py::isinstance<py::bool_>(h)
+        || (!py::isinstance<py::int_>(h) && !py::hasattr(h, "__index__")))
+        throw py::type_error(QString("%1: expected a whole number, got %2")
+                                 .arg(what, typeName(h))
+                                 .toStdString());
+    // numpy integers and other objects with __index__ (a float or an array raises there)
+    const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(h.ptr()));
+    if (!index) {
+        PyErr_Clear();
+        throw py::type_error(QString("%1: expected a whole number, got %2")
+                                 .arg(what, typeName(h))
+                                 .toStdString());
+    }
+    int overflow = 0;
+    const long long v = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
+    if (overflow != 0 || v < lo || v > hi)
+        throw Error(QString("%1: %2 is out of range %3..%4")
+                        .arg(what, QString::fromStdString(py::repr(index)))
+                        .arg(lo)
+                        .arg(hi));
+    return v;
+}
+
+double realArg(const py::handle &h, const char *what, double lo, double hi)
+{
+    if (py::isinstance<py::bool_>(h) || py::isinstance<py::str>(h) || !py::hasattr(h, "__float__"))
+        throw py::type_error(
+            QString("%1: expected a number, got %2").arg(what, typeName(h)).toStdString());
+    const double v = PyFloat_AsDouble(h.ptr());
+    if (PyErr_Occurred()) {
+        PyErr_Clear();
+        throw Error(QString("%1: %2 is not a number this program can use")
+                        .arg(what, QString::fromStdString(py::repr(h))));
+    }
+    if (!std::isfinite(v) || v < lo || v > hi)
+        throw Error(QString("%1: %2 is out of range %3..%4").arg(what).arg(v).arg(lo).arg(hi));
+    return v;
 }
 
 py::str toPy(const QString &s) { return py::str(s.toStdString()); }
@@ -58,8 +125,11 @@ py::dict toPy(const QJsonObject &o)
     return d;
 }
 
-QJsonValue toJson(const py::handle &h, const QString &where)
+QJsonValue toJson(const py::handle &h, const QString &where, int depth)
 {
+    if (depth > 200)
+        throw Error(QString("%1: nested more than 200 levels deep (or a list or dict that "
+                            "holds itself)").arg(where));
     if (h.is_none())
         return QJsonValue::Null;
     if (py::isinstance<py::bool_>(h))
@@ -67,11 +137,11 @@ QJsonValue toJson(const py::handle &h, const QString &where)
     if (py::isinstance<py::str>(h))
         return toQString(h, "text");
     if (py::isinstance<py::int_>(h)) {
-        const py::int_ i = py::reinterpret_borrow<py::int_>(h);
-        const double v = py::cast<double>(i);
-        if (std::abs(v) < 9.0e15)
-            return QJsonValue(qint64(h.cast<long long>()));
-        return v;
+        int overflow = 0;
+        const long long v = PyLong_AsLongLongAndOverflow(h.ptr(), &overflow);
+        if (overflow == 0 && std::llabs(v) < 9000000000000000ll)
+            return QJsonValue(qint64(v));
+        return realArg(h, qPrintable(where), -1.7e308, 1.7e308);
     }
     if (py::isinstance<py::float_>(h)) {
         const double v = h.cast<double>();
@@ -85,17 +155,17 @@ QJsonValue toJson(const py::handle &h, const QString &where)
             if (!py::isinstance<py::str>(k))
                 throw Error(QString("%1: the keys of a dict must be str").arg(where));
             const QString key = toQString(k, "key");
-            o[key] = toJson(v, where + "." + key);
+            o[key] = toJson(v, where + "." + key, depth + 1);
         }
         return o;
     }
     if (py::isinstance<py::array>(h))
-        return toJson(h.attr("tolist")(), where);
+        return toJson(h.attr("tolist")(), where, depth + 1);
     if (py::isinstance<py::list>(h) || py::isinstance<py::tuple>(h)) {
         QJsonArray a;
         int i = 0;
         for (const py::handle e : h)
-            a.append(toJson(e, QString("%1[%2]").arg(where).arg(i++)));
+            a.append(toJson(e, QString("%1[%2]").arg(where).arg(i++), depth + 1));
         return a;
     }
     const py::module_ fractions = py::module_::import("fractions");
@@ -104,7 +174,7 @@ QJsonValue toJson(const py::handle &h, const QString &where)
         return text;
     }
     if (py::hasattr(h, "__float__") && py::hasattr(h, "dtype"))  // numpy scalars
-        return toJson(h.attr("item")(), where);
+        return toJson(h.attr("item")(), where, depth + 1);
     throw Error(QString("%1: a %2 cannot be written to a project file")
                     .arg(where, QString::fromStdString(py::str(py::type::of(h).attr("__name__")))));
 }
@@ -113,7 +183,7 @@ QJsonObject toJsonObject(const py::handle &h, const QString &where)
 {
     if (!py::isinstance<py::dict>(h))
         throw Error(QString("%1: expected a dict").arg(where));
-    return toJson(h, where).toObject();
+    return toJson(h, where, 0).toObject();
 }
 
 py::array_t<double> toNumpy(const Mat &m)
@@ -218,7 +288,12 @@ QVariant parameterFromPy(const ParameterInfo &info, const py::handle &h)
         if (py::isinstance<py::bool_>(h) || py::isinstance<py::str>(h)
             || !py::hasattr(h, "__float__"))
             throw Error(QString("%1: expected a number").arg(where));
-        const double v = py::cast<double>(h);
+        const double v = PyFloat_AsDouble(h.ptr());
+        if (PyErr_Occurred()) {
+            PyErr_Clear();
+            throw Error(QString("%1: %2 is not a number this program can use")
+                            .arg(where, QString::fromStdString(py::repr(h))));
+        }
         if (!std::isfinite(v))
             throw Error(QString("%1: %2 is not a finite number").arg(where).arg(v));
         return v;

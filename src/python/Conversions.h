@@ -26,13 +26,19 @@ namespace awb::python {
 namespace py = pybind11;
 
 QString toQString(const py::handle &h, const char *what);
+// A file name: a str or an os.PathLike (bytes decoded as the file system does).
+QString pathArg(const py::handle &h, const char *what);
+// A whole number (an int, not a bool or a float) in [lo, hi]; Error naming `what` otherwise.
+long long intArg(const py::handle &h, const char *what, long long lo, long long hi);
+// A finite number in [lo, hi].
+double realArg(const py::handle &h, const char *what, double lo, double hi);
 py::str toPy(const QString &s);
 
 py::object toPy(const QJsonValue &v);
 py::dict toPy(const QJsonObject &o);
 // Dicts, lists, tuples, str, bool, int, finite float, None, numpy arrays and scalars, and
 // fractions.Fraction (as the exact text "p/q" the files keep); `where` names the argument.
-QJsonValue toJson(const py::handle &h, const QString &where);
+QJsonValue toJson(const py::handle &h, const QString &where, int depth = 0);
 QJsonObject toJsonObject(const py::handle &h, const QString &where);
 
 py::array_t<double> toNumpy(const Mat &m);

@@ -27,6 +27,7 @@ struct Error : std::runtime_error {
 struct ProjectHandle {
     std::unique_ptr<Project> owned;  // null when borrowed
     QPointer<Project> project;
+    int openEdits = 0;  // `with project.edit()` blocks open
     ProjectHandle();
     explicit ProjectHandle(Project *borrowed);
     ~ProjectHandle();
@@ -37,9 +38,11 @@ using ProjectRef = std::shared_ptr<ProjectHandle>;
 // An item, found again by name when its object left the project (an item replaced by
 // Item.update(), or removed and brought back by undo).
 struct ItemHandle {
+    ItemHandle(ProjectRef of, Item *which);
     ProjectRef project;
     QPointer<Item> item;
     QString name;
+    QPointer<Item> previous;  // the item update() replaced (back after an undo)
     Item &get() const;
     AttractorItem &attractor() const;
 };

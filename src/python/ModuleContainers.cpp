@@ -52,12 +52,21 @@ Point toPoint(const Mat &row)
 
 QString pointRefusal(AttractorItem &a, int set)
 {
-    return QString("item '%1': the edit of point set %2 is refused (the scheme fixes the number "
-                   "of points, or the item allows %3..%4 points)")
+    return QString("item '%1': the edit of point set %2 is refused (its scheme fixes the number "
+                   "of points, or the set would have more than %3)")
         .arg(a.name())
         .arg(set)
-        .arg(1)
         .arg(a.maxPointCount(set));
+}
+
+// A Python index (negative from the end) as a point number; IndexError when out of range.
+int pythonIndex(const PointsHandle &h, const py::handle &key, bool insert = false)
+{
+    int overflow = 0;
+    const long long i = PyLong_AsLongLongAndOverflow(key.ptr(), &overflow);
+    if (overflow != 0)
+        throw py::index_error("point index out of range");
+    return pointIndex(h, py::ssize_t(i), insert);
 }
 
 // Assigns a whole point set: moves, then inserts or removes at the end, one undo step.
@@ -151,14 +160,14 @@ void defineContainers(py::module_ &m)
              [](const PointsHandle &h, const py::object &key) -> py::object {
                  py::array a = toNumpy(pointMatrix(h));
                  if (py::isinstance<py::int_>(key))
-                     return a[py::int_(pointIndex(h, key.cast<py::ssize_t>()))];
+                     return a[py::int_(pythonIndex(h, key))];
                  return a[key];
              })
         .def("__setitem__",
              [](const PointsHandle &h, const py::object &key, const py::object &value) {
                  AttractorItem &a = itemOf(h);
                  if (py::isinstance<py::int_>(key)) {
-                     const int i = pointIndex(h, key.cast<py::ssize_t>());
+                     const int i = pythonIndex(h, key);
                      const Mat p = toPoints(value, a.pointDimension(),
                                             QString("control_points[%1]").arg(i));
                      if (p.rows() != 1)
@@ -172,17 +181,17 @@ void defineContainers(py::module_ &m)
                  assignPoints(h, arr);
              })
         .def("__delitem__",
-             [](const PointsHandle &h, py::ssize_t i) {
+             [](const PointsHandle &h, const py::int_ &i) {
                  AttractorItem &a = itemOf(h);
-                 if (!a.removeControlPoint(pointIndex(h, i), h.set))
+                 if (!a.removeControlPoint(pythonIndex(h, i), h.set))
                      throw Error(pointRefusal(a, h.set));
              })
         .def(
             "insert",
-            [](const PointsHandle &h, py::ssize_t i, const py::object &value) {
+            [](const PointsHandle &h, const py::int_ &i, const py::object &value) {
                 AttractorItem &a = itemOf(h);
                 const Mat p = toPoints(value, a.pointDimension(), "insert()");
-                if (p.rows() != 1 || !a.insertControlPoint(pointIndex(h, i, true), toPoint(p),
+                if (p.rows() != 1 || !a.insertControlPoint(pythonIndex(h, i, true), toPoint(p),
                                                            h.set))
                     throw Error(pointRefusal(a, h.set));
             },
@@ -199,12 +208,28 @@ void defineContainers(py::module_ &m)
             py::arg("point"), "append(point): one undo step.")
         .def("assign", &assignPoints, py::arg("points"),
              "assign(points): the whole set, (m, d); one undo step.")
-        .def("tolist", [](const PointsHandle &h) { return toNumpy(pointMatrix(h)).attr("tolist")(); })
-        .def_property_readonly("shape",
-                               [](const PointsHandle &h) {
-                                   const Mat p = pointMatrix(h);
-                                   return py::make_tuple(p.rows(), p.cols());
-                               })
+        .def(
+            "tolist",
+            [](const PointsHandle &h) { return toNumpy(pointMatrix(h)).attr("tolist")(); },
+            "tolist() -> list of [x, y] (or [x, y, z]): the points as Python lists.")
+        .def_property_readonly(
+            "shape",
+            [](const PointsHandle &h) {
+                const Mat p = pointMatrix(h);
+                return py::make_tuple(p.rows(), p.cols());
+            },
+            "(m, d): the number of points and their coordinates.")
+        .def(
+            "__contains__",
+            [](const PointsHandle &h, const py::object &value) {
+                const Mat p = pointMatrix(h);
+                const Mat q = toPoints(value, int(p.cols()), "in");
+                for (Eigen::Index r = 0; r < p.rows(); ++r)
+                    if (q.rows() == 1 && p.row(r) == q.row(0))
+                        return true;
+                return false;
+            },
+            "[x, y] in cp: whether a point is one of the control points (exactly).")
         .def("__repr__", [](const PointsHandle &h) {
             return "ControlPoints(" + py::repr(toNumpy(pointMatrix(h))).cast<std::string>() + ")";
         });
@@ -214,13 +239,39 @@ void defineContainers(py::module_ &m)
         "An item's parameters by the Properties dock's keys, dict-like: p[key], p[key] = v (one "
         "undo step; Error with the dock's message when refused), keys(), items(), info(key). "
         "Choices read as their index and take the index or the text.")
-        .def("keys",
-             [](const ParametersHandle &h) {
-                 py::list l;
-                 for (const ParameterInfo &p : h.item.get().parameters())
-                     l.append(toPy(p.key));
-                 return l;
-             })
+        .def(
+            "keys",
+            [](const ParametersHandle &h) {
+                py::list l;
+                for (const ParameterInfo &p : h.item.get().parameters())
+                    l.append(toPy(p.key));
+                return l;
+            },
+            "keys() -> list of str: the keys, in the Properties dock's order.")
+        .def(
+            "values",
+            [](const ParametersHandle &h) {
+                py::list l;
+                Item &item = h.item.get();
+                for (const ParameterInfo &p : item.parameters())
+                    l.append(parameterToPy(p, item.parameter(p.key)));
+                return l;
+            },
+            "values() -> list: the values, in the order of keys().")
+        .def(
+            "get",
+            [](const ParametersHandle &h, const py::object &key, const py::object &fallback) {
+                if (!py::isinstance<py::str>(key))
+                    return fallback;
+                Item &item = h.item.get();
+                const QString k = toQString(key, "key");
+                for (const ParameterInfo &p : item.parameters())
+                    if (p.key == k)
+                        return parameterToPy(p, item.parameter(k));
+                return fallback;
+            },
+            py::arg("key"), py::arg("default") = py::none(),
+            "get(key, default=None): the value, or `default` when the item has no such key.")
         .def("__iter__", [](const ParametersHandle &h) {
             return py::iter(py::cast(h).attr("keys")());
         })
@@ -256,14 +307,16 @@ void defineContainers(py::module_ &m)
                      throw Error(refusal(why, QString("parameter '%1': the value is refused")
                                                   .arg(k)));
              })
-        .def("items",
-             [](const ParametersHandle &h) {
-                 py::list l;
-                 Item &item = h.item.get();
-                 for (const ParameterInfo &p : item.parameters())
-                     l.append(py::make_tuple(toPy(p.key), parameterToPy(p, item.parameter(p.key))));
-                 return l;
-             })
+        .def(
+            "items",
+            [](const ParametersHandle &h) {
+                py::list l;
+                Item &item = h.item.get();
+                for (const ParameterInfo &p : item.parameters())
+                    l.append(py::make_tuple(toPy(p.key), parameterToPy(p, item.parameter(p.key))));
+                return l;
+            },
+            "items() -> list of (key, value).")
         .def(
             "info",
             [](const ParametersHandle &h, const py::object &key) {

@@ -27,7 +27,8 @@ AttractorItem &ItemHandle::attractor() const
     Item &i = get();
     auto *a = qobject_cast<AttractorItem *>(&i);
     if (!a)
-        throw Error(QString("item '%1' is a %2: it has no attractor").arg(i.name(), i.typeName()));
+        throw Error(QString("item '%1' has no attractor (its kind: %2)")
+                        .arg(i.name(), i.typeName()));
     return *a;
 }
 
@@ -148,6 +149,7 @@ void updateItem(ItemHandle &h, const QJsonObject &fields)
         const QString name = item.name();
         project->removeItem(&item);
         added->setName(name);
+        h.previous = &item;
         h.item = added;
         h.name = name;
         return;
@@ -158,7 +160,8 @@ void updateItem(ItemHandle &h, const QJsonObject &fields)
     };
     try {
         if (fields.contains("style")) {
-            const StyleSpec s = ProjectIO::readStyle(FieldReader(fields["style"].toObject(), "style."));
+            const StyleSpec s =
+                ProjectIO::readStyle(FieldReader(fields["style"].toObject(), "style."));
             if (const auto p = item.checkStyle(s))
                 fail("style", p->message);
             item.setStyle(s);
@@ -242,7 +245,7 @@ void defineItemClass(py::module_ &m)
             "parent",
             [](const ItemHandle &h) -> py::object {
                 Item *p = h.get().parentItem();
-                return p ? py::cast(ItemHandle{h.project, p, p->name()}) : py::none();
+                return p ? py::cast(ItemHandle(h.project, p)) : py::none();
             },
             "The item this one sits under (None at the top level).")
         .def_property_readonly(
@@ -251,7 +254,7 @@ void defineItemClass(py::module_ &m)
                 py::list l;
                 Item &item = h.get();
                 for (int i = 0; i < item.childCount(); ++i)
-                    l.append(py::cast(ItemHandle{h.project, item.child(i), item.child(i)->name()}));
+                    l.append(py::cast(ItemHandle(h.project, item.child(i))));
                 return l;
             },
             "The items under this one (an eigenvalue plot under its curve).")
@@ -321,34 +324,44 @@ void defineItemClass(py::module_ &m)
         .def(
             "points",
             [](const ItemHandle &h, const py::object &depthArg, const py::object &startArg,
-               const py::object &addressArg, double maxPoints, bool withMaps) -> py::object {
+               const py::object &addressArg, const py::object &maxPoints,
+               bool withMaps) -> py::object {
                 AttractorItem &item = h.attractor();
                 const auto d = derivedOf(item);
-                const int depth = depthArg.is_none() ? item.algorithm().depth
-                                                     : depthArg.cast<int>();
-                if (depth < 0 || depth > 64)
-                    throw Error(QString("depth %1 is out of range 0..64").arg(depth));
+                const int depth = depthArg.is_none()
+                                      ? item.algorithm().depth
+                                      : int(intArg(depthArg, "points(): depth", 0, 64));
+                const double budget = realArg(maxPoints, "points(): max_points", 1, 2e9);
                 StartSet start = item.coreStartSet(*d);
                 if (py::isinstance<py::str>(startArg)) {
-                    start = cli::startOption(item, *d, toQString(startArg, "start"));
+                    start = cli::startOption(item, *d, toQString(startArg, "points(): start"));
                 } else if (!startArg.is_none()) {
-                    const Mat pts = toPoints(startArg, item.pointDimension(), "start");
+                    const Mat pts = toPoints(startArg, item.pointDimension(), "points(): start");
                     start = {StartSet::Kind::Points, d->toIfsSpace(pts)};
                 }
                 Address address;
                 if (!addressArg.is_none()) {
                     QString text;
                     if (py::isinstance<py::str>(addressArg)) {
-                        text = toQString(addressArg, "address");
+                        text = toQString(addressArg, "points(): address");
                     } else {
+                        if (!py::isinstance<py::sequence>(addressArg))
+                            throw Error("points(): address: expected a list of map numbers");
                         QStringList symbols;
                         for (const py::handle s : addressArg)
-                            symbols << QString::number(s.cast<int>());
+                            symbols << QString::number(
+                                intArg(s, "points(): address", 0, 1 << 20));
                         text = symbols.join(',');
                     }
                     address = parseItemAddress(text, *d);
                 }
-                cli::requirePointBudget(*d, start, depth, maxPoints);
+                const double n = exportPointCount(*d, start, depth);
+                if (n > budget)
+                    throw Error(QString("points(): depth %1 gives %2 points, more than "
+                                        "max_points %3")
+                                    .arg(depth)
+                                    .arg(n, 0, 'g', 4)
+                                    .arg(budget, 0, 'g', 4));
                 CollectedPoints points;
                 std::atomic<bool> cancel{false};
                 IterationControl control;
@@ -363,7 +376,7 @@ void defineItemClass(py::module_ &m)
                 return py::make_tuple(xy, maps);
             },
             py::arg("depth") = py::none(), py::arg("start") = py::none(),
-            py::arg("address") = py::none(), py::arg("max_points") = 1e8,
+            py::arg("address") = py::none(), py::arg("max_points") = py::float_(1e8),
             py::arg("with_maps") = false,
             "points(depth=None, start=None, address=None, max_points=1e8, with_maps=False) -> "
             "numpy (N, d)\n\nThe points of F^depth(X0) (attractor-cli points): depth the item's "
@@ -411,39 +424,25 @@ void defineItemClass(py::module_ &m)
                 AttractorItem &item = h.attractor();
                 cli::FigureOptions o;
                 if (!size.is_none()) {
-                    const auto wh = size.cast<std::pair<int, int>>();
-                    if (wh.first < 16 || wh.second < 16 || wh.first > 20000 || wh.second > 20000)
-                        throw Error(QString("size (%1, %2): each side must be 16..20000 pixels")
-                                        .arg(wh.first)
-                                        .arg(wh.second));
-                    o.width = wh.first;
-                    o.height = wh.second;
+                    if (!py::isinstance<py::sequence>(size) || py::isinstance<py::str>(size)
+                        || py::len(size) != 2)
+                        throw Error("render(): size: expected (width, height) in pixels");
+                    const py::sequence wh = size;
+                    o.width = int(intArg(wh[0], "render(): width", 16, 20000));
+                    o.height = int(intArg(wh[1], "render(): height", 16, 20000));
                 }
-                if (!depth.is_none()) {
-                    const int k = depth.cast<int>();
-                    if (k < 0 || k > 64)
-                        throw Error(QString("depth %1 is out of range 0..64").arg(k));
-                    o.depth = k;
-                }
-                if (!samples.is_none()) {
-                    const double n = samples.cast<double>();
-                    if (!(n >= 1 && n <= 1e11))
-                        throw Error(QString("samples %1 is out of range 1..1e11").arg(n));
-                    o.samples = std::uint64_t(n);
-                }
-                if (!threads.is_none()) {
-                    const int t = threads.cast<int>();
-                    if (t < 0 || t > 256)
-                        throw Error(QString("threads %1 is out of range 0..256").arg(t));
-                    o.threads = t;
-                }
-                const QString file = toQString(py::str(path), "path");
+                if (!depth.is_none())
+                    o.depth = int(intArg(depth, "render(): depth", 0, 64));
+                if (!samples.is_none())
+                    o.samples = std::uint64_t(realArg(samples, "render(): samples", 1, 1e11));
+                if (!threads.is_none())
+                    o.threads = int(intArg(threads, "render(): threads", 0, 256));
+                const QString file = pathArg(path, "render()");
                 ensureGuiApplication();
                 Project &project = h.project->get();
-                {
-                    py::gil_scoped_release release;
-                    cli::renderFigure(project, &item, o, file);
-                }
+                std::atomic<bool> cancel{false};
+                o.cancel = &cancel;
+                runInterruptible([&] { cli::renderFigure(project, &item, o, file); }, cancel);
             },
             py::arg("path"), py::arg("size") = py::none(), py::arg("depth") = py::none(),
             py::arg("samples") = py::none(), py::arg("threads") = py::none(),
@@ -451,10 +450,11 @@ void defineItemClass(py::module_ &m)
             "as attractor-cli render does: PNG, SVG or PDF by the suffix (.exr: the raw "
             "density), size (width, height) in pixels (default 900 x 700), depth and samples "
             "the item's unless given, threads 0 for all cores. The PNG and SVG carry the "
-            "project: open(path) reads it back.")
+            "project: open(path) reads it back. Ctrl+C cancels (no file is left).")
         .def("__eq__",
              [](const ItemHandle &a, const py::object &b) {
-                 return py::isinstance<ItemHandle>(b) && &a.get() == &b.cast<const ItemHandle &>().get();
+                 return py::isinstance<ItemHandle>(b)
+                        && &a.get() == &b.cast<const ItemHandle &>().get();
              })
         .def("__hash__", [](const ItemHandle &h) { return std::hash<const void *>()(&h.get()); })
         .def("__repr__", [](const ItemHandle &h) {

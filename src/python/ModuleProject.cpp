@@ -12,7 +12,7 @@ namespace awb::python {
 
 namespace {
 
-ItemHandle handleOf(const ProjectRef &p, Item *item) { return {p, item, item->name()}; }
+ItemHandle handleOf(const ProjectRef &p, Item *item) { return ItemHandle(p, item); }
 
 Item *resolveItem(const ProjectRef &p, const py::handle &which, const char *what)
 {
@@ -45,13 +45,18 @@ void defineProjectClass(py::module_ &m)
     py::class_<EditScope>(m, "_Edit", "What Project.edit() returns: a context manager.")
         .def("__enter__",
              [](EditScope &e) {
+                 if (e.open)
+                     throw Error("this edit block is open already");
                  e.project->get().beginCompound(e.text);
                  e.open = true;
+                 ++e.project->openEdits;
                  return &e;
              })
         .def("__exit__", [](EditScope &e, py::args) {
-            if (e.open)
+            if (e.open) {
                 e.project->get().endCompound();
+                --e.project->openEdits;
+            }
             e.open = false;
             return false;
         });
@@ -75,11 +80,15 @@ void defineProjectClass(py::module_ &m)
         .def(
             "item",
             [](const ProjectRef &p, const py::object &name) {
+                if (name.is_none())
+                    throw Error("item(): which item? give its name");
                 return handleOf(p, resolveItem(p, name, "name"));
             },
             py::arg("name"), "item(name) -> Item\n\nThe item of that name; Error if none.")
         .def("__getitem__",
              [](const ProjectRef &p, const py::object &name) {
+                 if (name.is_none())
+                     throw py::key_error("None is not an item's name");
                  return handleOf(p, resolveItem(p, name, "name"));
              })
         .def("__contains__",
@@ -150,7 +159,7 @@ void defineProjectClass(py::module_ &m)
                         throw Error("save(): the project has no file yet: give a path");
                     ok = project.save(&why);
                 } else {
-                    ok = project.saveAs(toQString(py::str(path), "path"), &why);
+                    ok = project.saveAs(pathArg(path, "save()"), &why);
                 }
                 if (!ok)
                     throw Error(why);
@@ -161,6 +170,9 @@ void defineProjectClass(py::module_ &m)
         .def(
             "undo",
             [](const ProjectRef &p) {
+                if (p->openEdits > 0)
+                    throw Error("undo() inside `with project.edit(...)`: the block becomes one "
+                                "step when it ends; undo after it");
                 QUndoStack *s = p->get().undoStack();
                 if (!s->canUndo())
                     throw Error("nothing to undo");
@@ -170,6 +182,9 @@ void defineProjectClass(py::module_ &m)
         .def(
             "redo",
             [](const ProjectRef &p) {
+                if (p->openEdits > 0)
+                    throw Error("redo() inside `with project.edit(...)`: the block becomes one "
+                                "step when it ends; redo after it");
                 QUndoStack *s = p->get().undoStack();
                 if (!s->canRedo())
                     throw Error("nothing to redo");

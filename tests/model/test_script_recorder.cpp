@@ -124,7 +124,8 @@ void TestScriptRecorder::otherFieldsGoIntoUpdate()
     style.pointSize = 4;
     QVERIFY(m_curve->setStyle(style));
     QCOMPARE(r.steps().size(), 1);
-    QVERIFY2(r.steps()[0].contains(QStringLiteral(".update({\"style\": {")), qPrintable(r.steps()[0]));
+    QVERIFY2(r.steps()[0].contains(QStringLiteral(".update({\"style\": {")),
+             qPrintable(r.steps()[0]));
     QVERIFY(r.steps()[0].contains(QStringLiteral("\"point_size\": 4")));
     // A step with no effect a file holds is not a line.
     QVERIFY(m_curve->setStyle(style) || true);
@@ -143,8 +144,9 @@ void TestScriptRecorder::openingRestarts()
     QCOMPARE(r.baseFile(), file);
     const QString script = r.script();
     QVERIFY(script.contains(QStringLiteral("import attractor_workbench as awb")));
-    QVERIFY(script.contains(QStringLiteral("project = awb.open(sys.argv[1] if len(sys.argv) > 1 else \"")
-                            + file + "\")"));
+    QVERIFY(script.contains(
+        QStringLiteral("project = awb.open(sys.argv[1] if len(sys.argv) > 1 else \"") + file
+        + "\")"));
     QVERIFY(script.contains(QStringLiteral("    project.save(sys.argv[2])")));
 }
 
