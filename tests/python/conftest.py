@@ -58,8 +58,12 @@ def run_cli(*args, check=True):
     """Runs attractor-cli with `args`; returns the CompletedProcess (text)."""
     if not CLI.exists():
         pytest.skip(f"attractor-cli not found at {CLI} (set AWB_CLI)")
+    # The sanitizer build's CLI has its own runtime linked in: not the one preloaded into
+    # Python (tests/CMakeLists.txt).
+    env = subprocess_env()
+    env.pop("LD_PRELOAD", None)
     result = subprocess.run([str(CLI), *map(str, args)], capture_output=True, text=True,
-                            env=subprocess_env(), timeout=300)
+                            env=env, timeout=300)
     if check and result.returncode != 0:
         raise AssertionError(f"attractor-cli {' '.join(map(str, args))} failed "
                              f"({result.returncode}): {result.stderr}")
