@@ -86,9 +86,67 @@ std::uint64_t writePointsCsv(QIODevice &out, const DerivedIfs &d, const StartSet
     return written;
 }
 
+namespace {
+
+// collectPoints' sink: the projected vertices of every image appended in place, with no
+// temporary matrix per image (an image is often one point: F^12 of the Koch curve's start
+// point is 16.7 million calls).
+class CollectingSink : public AttractorSink {
+public:
+    CollectingSink(const DerivedIfs &d, const Address &address, int columns,
+                   std::vector<double> &coordinates, CollectedPoints &out)
+        : m_d(d), m_address(address), m_prefix(composeAddress(d.ifs, address)),
+          m_columns(columns), m_coordinates(coordinates), m_out(out)
+    {
+    }
+    void consume(const Mat &v, StartSet::Kind, const std::uint8_t *a, int n) override
+    {
+        const int map = !m_address.empty() ? m_d.analysisIndex(m_address.front())
+                        : n > 0            ? m_d.analysisIndex(a[0])
+                                           : -1;
+        const Mat *x = &v;
+        if (!m_address.empty()) {
+            m_mapped = applyMap(m_prefix, v);
+            x = &m_mapped;
+        }
+        for (std::size_t k = 0; k < m_d.ifs.views.size(); ++k) {
+            const Projection &view = m_d.ifs.views[k];
+            const Eigen::Index inner = std::min(view.V.rows(), x->cols());
+            for (Eigen::Index r = 0; r < x->rows(); ++r) {
+                for (int c = 0; c < m_columns; ++c) {
+                    double s = 0.0;
+                    if (c < view.V.cols()) {
+                        s = view.c(c);
+                        for (Eigen::Index j = 0; j < inner; ++j)
+                            s += (*x)(r, j) * view.V(j, c);
+                    }
+                    m_coordinates.push_back(s);
+                }
+                m_out.maps.push_back(map);
+                m_out.views.push_back(int(k));
+            }
+        }
+    }
+
+private:
+    const DerivedIfs &m_d;
+    const Address &m_address;
+    AffineMap m_prefix;
+    int m_columns;
+    std::vector<double> &m_coordinates;
+    CollectedPoints &m_out;
+    Mat m_mapped;
+};
+
+} // namespace
+
 CollectedPoints collectPoints(const DerivedIfs &d, const StartSet &start, int depth,
                               const IterationControl &control, const Address &address)
 {
+    if (!address.empty() && d.iterate)
+        throw InputError(PointExportTr::tr("--address needs an item drawn by one IFS; this one "
+                                           "is drawn by an automaton")
+                             .toStdString());
     const int columns = exportsSpacePoints(d) ? 3 : 2;
     const double expected = exportPointCount(d, start, depth);
     std::vector<double> coordinates;
@@ -98,12 +156,11 @@ CollectedPoints collectPoints(const DerivedIfs &d, const StartSet &start, int de
         out.maps.reserve(std::size_t(expected));
         out.views.reserve(std::size_t(expected));
     }
-    iteratePoints(d, start, depth, address, control, [&](const RowVec &p, int view, int map) {
-        for (int c = 0; c < columns; ++c)
-            coordinates.push_back(c < p.size() ? p(c) : 0.0);
-        out.maps.push_back(map);
-        out.views.push_back(view);
-    });
+    CollectingSink sink(d, address, columns, coordinates, out);
+    if (d.iterate)
+        d.iterate(start, depth, {&sink}, control);
+    else
+        iterate(d.ifs, start, depth, sink, control);
     out.points = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic,
                                                 Eigen::RowMajor>>(
         coordinates.data(), Eigen::Index(out.maps.size()), columns);
