@@ -6,6 +6,7 @@
 #include "model/Item.h"
 #include "model/Project.h"
 #include "model/ProjectIO.h"
+#include "model/ScriptRecorder.h"
 
 
 namespace awb::python {
@@ -30,6 +31,12 @@ Item *resolveItem(const ProjectRef &p, const py::handle &which, const char *what
         throw Error(QString("no item named '%1'").arg(name));
     return item;
 }
+
+// A recording of the project's edits as Python (model/ScriptRecorder, as the console's).
+struct RecordingHandle {
+    ProjectRef project;
+    std::shared_ptr<ScriptRecorder> recorder;
+};
 
 // One undo step of everything done inside `with project.edit("text"):`.
 struct EditScope {
@@ -60,6 +67,31 @@ void defineProjectClass(py::module_ &m)
             e.open = false;
             return false;
         });
+
+    py::class_<RecordingHandle>(
+        m, "Recording",
+        "The edits of a project since record() (or restart()) as the Python lines that make "
+        "them, as the application's console records them (docs/python.md: the format).")
+        .def_property_readonly(
+            "steps",
+            [](const RecordingHandle &r) {
+                py::list l;
+                for (const QString &s : r.recorder->steps())
+                    l.append(toPy(s));
+                return l;
+            },
+            "One str per undo step (a block `with project.edit(...):` when it has several "
+            "lines).")
+        .def(
+            "script", [](const RecordingHandle &r) { return toPy(r.recorder->script()); },
+            "script() -> str: a script that replays the steps: `python3 SCRIPT [PROJECT.awb "
+            "[OUT.awb]]`.")
+        .def(
+            "restart", [](const RecordingHandle &r) { r.recorder->restart(); },
+            "restart(): forgets the steps; the project as it is now is the start.")
+        .def_property_readonly(
+            "base_file", [](const RecordingHandle &r) { return toPy(r.recorder->baseFile()); },
+            "The file the recording starts from ('' for a new project).");
 
     py::class_<ProjectHandle, ProjectRef>(
         m, "Project",
@@ -209,6 +241,13 @@ void defineProjectClass(py::module_ &m)
             py::arg("text") = "Script",
             "edit(text='Script') -> context manager\n\n`with project.edit(\"Sweep\"): ...` makes "
             "the edits of the block one undo step.")
+        .def(
+            "record",
+            [](const ProjectRef &p) {
+                return RecordingHandle{p, std::make_shared<ScriptRecorder>(&p->get())};
+            },
+            "record() -> Recording\n\nStarts recording every edit of the project (from "
+            "scripts and, in the console, from the window) as Python lines.")
         .def_property_readonly(
             "modified", [](const ProjectRef &p) { return p->get().isModified(); },
             "Whether there are edits since the last open or save.")
