@@ -1306,7 +1306,7 @@
     </message>
     <message>
         <source>cannot read %1: %2</source>
-        <translation>nelze přečíst %1: %2</translation>
+        <translation>nelze číst %1: %2</translation>
     </message>
     <message>
         <source>cannot write %1: not enough memory</source>
@@ -1915,7 +1915,7 @@
     </message>
     <message>
         <source>cannot read %1: %2</source>
-        <translation>nelze přečíst %1: %2</translation>
+        <translation>nelze číst %1: %2</translation>
     </message>
     <message>
         <source>%1 cannot be computed: %2</source>
@@ -2982,6 +2982,18 @@ Byla ponechána jako %2.</translation>
             <numerusform>Uloženo %n zaznamenaných úprav do %1</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Run Python &amp;Script…</source>
+        <translation>Spustit &amp;skript v Pythonu…</translation>
+    </message>
+    <message>
+        <source>Run a Python script on the open document, in the Python console</source>
+        <translation>Spustit skript v Pythonu na otevřeném dokumentu v konzoli Pythonu</translation>
+    </message>
+    <message>
+        <source>Run Python Script</source>
+        <translation>Spustit skript v Pythonu</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -3461,6 +3473,10 @@ Byla ponechána jako %2.</translation>
         <source>a &quot;vertex-limits&quot; start set has no points (it starts at the limit positions of the mesh&apos;s vertices)</source>
         <translation>počáteční množina &quot;vertex-limits&quot; nemá body (začíná v limitních polohách vrcholů sítě)</translation>
     </message>
+    <message>
+        <source>the item</source>
+        <translation>položka</translation>
+    </message>
 </context>
 <context>
     <name>awb::ProjectTreeModel</name>
@@ -3793,6 +3809,14 @@ Byla ponechána jako %2.</translation>
     <message>
         <source># The recording starts again, from %1.</source>
         <translation># Záznam začíná znovu, od %1.</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>nelze číst %1: %2</translation>
+    </message>
+    <message>
+        <source># Running %1</source>
+        <translation># Spouští se %1</translation>
     </message>
 </context>
 <context>
@@ -6077,6 +6101,10 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     <message>
         <source>item &apos;%1&apos; (%2) has no parameter &apos;%3&apos;: omega belongs to the four-point scheme, a and b to corner cutting; a mask item takes --mask with the parameter in its coefficients</source>
         <translation>položka „%1“ (%2) nemá parametr „%3“: omega patří čtyřbodovému schématu, a a b ořezávání rohů; položka s maskou bere --mask s parametrem v koeficientech</translation>
+    </message>
+    <message>
+        <source>the rendering was cancelled</source>
+        <translation>vykreslování bylo zrušeno</translation>
     </message>
 </context>
 <context>

@@ -2976,6 +2976,18 @@ Elle a été conservée sous le nom %2.</translation>
             <numerusform>%n modifications enregistrées dans %1</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Run Python &amp;Script…</source>
+        <translation>Exécuter un &amp;script Python…</translation>
+    </message>
+    <message>
+        <source>Run a Python script on the open document, in the Python console</source>
+        <translation>Exécuter un script Python sur le document ouvert, dans la console Python</translation>
+    </message>
+    <message>
+        <source>Run Python Script</source>
+        <translation>Exécuter un script Python</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -3453,6 +3465,10 @@ Elle a été conservée sous le nom %2.</translation>
         <source>a &quot;vertex-limits&quot; start set has no points (it starts at the limit positions of the mesh&apos;s vertices)</source>
         <translation>un ensemble initial &quot;vertex-limits&quot; n’a pas de points (il part des positions limites des sommets du maillage)</translation>
     </message>
+    <message>
+        <source>the item</source>
+        <translation>l’élément</translation>
+    </message>
 </context>
 <context>
     <name>awb::ProjectTreeModel</name>
@@ -3784,6 +3800,14 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source># The recording starts again, from %1.</source>
         <translation># L’enregistrement recommence, à partir de %1.</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>impossible de lire %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source># Running %1</source>
+        <translation># Exécution de %1</translation>
     </message>
 </context>
 <context>
@@ -6066,6 +6090,10 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     <message>
         <source>item &apos;%1&apos; (%2) has no parameter &apos;%3&apos;: omega belongs to the four-point scheme, a and b to corner cutting; a mask item takes --mask with the parameter in its coefficients</source>
         <translation>l&apos;élément «&#xa0;%1&#xa0;» (%2) n&apos;a pas de paramètre «&#xa0;%3&#xa0;»&#xa0;: omega appartient au schéma à quatre points, a et b à la découpe des coins&#xa0;; un élément masque prend --mask avec le paramètre dans ses coefficients</translation>
+    </message>
+    <message>
+        <source>the rendering was cancelled</source>
+        <translation>le rendu a été annulé</translation>
     </message>
 </context>
 <context>

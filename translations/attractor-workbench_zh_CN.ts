@@ -2970,6 +2970,18 @@ It was kept as %2.</source>
             <numerusform>已将 %n 项录制的编辑保存到 %1</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Run Python &amp;Script…</source>
+        <translation>运行 Python 脚本(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Run a Python script on the open document, in the Python console</source>
+        <translation>在 Python 控制台中对打开的文档运行 Python 脚本</translation>
+    </message>
+    <message>
+        <source>Run Python Script</source>
+        <translation>运行 Python 脚本</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -3445,6 +3457,10 @@ It was kept as %2.</source>
         <source>a &quot;vertex-limits&quot; start set has no points (it starts at the limit positions of the mesh&apos;s vertices)</source>
         <translation>&quot;vertex-limits&quot; 初始集没有点（它从网格顶点的极限位置开始）</translation>
     </message>
+    <message>
+        <source>the item</source>
+        <translation>该项</translation>
+    </message>
 </context>
 <context>
     <name>awb::ProjectTreeModel</name>
@@ -3775,6 +3791,14 @@ It was kept as %2.</source>
     <message>
         <source># The recording starts again, from %1.</source>
         <translation># 录制重新开始，从 %1 开始。</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source># Running %1</source>
+        <translation># 正在运行 %1</translation>
     </message>
 </context>
 <context>
@@ -6055,6 +6079,10 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>item &apos;%1&apos; (%2) has no parameter &apos;%3&apos;: omega belongs to the four-point scheme, a and b to corner cutting; a mask item takes --mask with the parameter in its coefficients</source>
         <translation>对象 &apos;%1&apos;（%2）没有参数 &apos;%3&apos;：omega 属于四点格式，a 和 b 属于切角；掩模对象使用 --mask 并在其系数中写入参数</translation>
+    </message>
+    <message>
+        <source>the rendering was cancelled</source>
+        <translation>渲染已取消</translation>
     </message>
 </context>
 <context>

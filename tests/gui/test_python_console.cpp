@@ -142,6 +142,28 @@ void TestPythonConsole::consoleEditsTheOpenDocument()
     QVERIFY(console->transcript().contains(QStringLiteral("SyntaxError")));
     QVERIFY(console->enter(QStringLiteral("6 * 7")));
     QVERIFY(console->transcript().endsWith(QStringLiteral("\n42")));
+
+    // Tools > Run Python Script: a file in the same namespace, one edit block, undoable.
+    const QString script = m_dir.path() + QStringLiteral("/sweep.py");
+    QFile f(script);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("import sys\n"
+            "with project.edit('Sweep'):\n"
+            "    for w in (0.05, 0.1):\n"
+            "        item.parameters['scheme.omega'] = w\n"
+            "print('swept', sys.argv[0].endswith('sweep.py'), item.parameters['scheme.omega'])\n");
+    f.close();
+    const int before2 = stack->index();
+    QVERIFY(console->runFile(script));
+    QVERIFY2(console->transcript().endsWith(QStringLiteral("swept True 0.1")),
+             qPrintable(console->transcript().right(300)));
+    QCOMPARE(stack->index(), before2 + 1);
+    QCOMPARE(item->parameter(QStringLiteral("scheme.omega")).toDouble(), 0.1);
+    stack->undo();
+    QCOMPARE(item->parameter(QStringLiteral("scheme.omega")).toDouble(), 0.0625);
+    QString error;
+    QVERIFY(!console->runFile(m_dir.path() + QStringLiteral("/missing.py"), &error));
+    QVERIFY(error.contains(QStringLiteral("missing.py")));
 }
 
 void TestPythonConsole::literalsReadBackInPython()

@@ -403,6 +403,7 @@ void MainWindow::createMenus()
     QMenu *tools = menuBar()->addMenu(tr("&Tools"));
     tools->setObjectName(QStringLiteral("menuTools"));
     tools->addAction(action(QStringLiteral("actionPythonConsole")));
+    tools->addAction(action(QStringLiteral("actionRunScript")));
     tools->addAction(action(QStringLiteral("actionSaveRecording")));
     tools->addAction(action(QStringLiteral("actionClearRecording")));
 

@@ -42,6 +42,20 @@ void MainWindow::createPythonConsole()
     save->setStatusTip(tr("Save the edits since the project was opened as a Python script "
                           "that replays them on the file"));
     connect(save, &QAction::triggered, this, &MainWindow::saveRecordingDialog);
+    auto *run = new QAction(QIcon::fromTheme(QStringLiteral("system-run")),
+                            tr("Run Python &Script…"), this);
+    run->setObjectName(QStringLiteral("actionRunScript"));
+    run->setStatusTip(tr("Run a Python script on the open document, in the Python console"));
+    connect(run, &QAction::triggered, this, [this, dock] {
+        const QString file = QFileDialog::getOpenFileName(this, tr("Run Python Script"), {},
+                                                          tr("Python scripts (*.py)"));
+        if (file.isEmpty())
+            return;
+        dock->show();
+        QString error;
+        if (!m_console->runFile(file, &error))
+            m_messages->error(this, tr("Run Python Script"), error);
+    });
     auto *clear = new QAction(tr("&Clear Recording"), this);
     clear->setObjectName(QStringLiteral("actionClearRecording"));
     clear->setStatusTip(tr("Start the recording again from the document as it is now"));

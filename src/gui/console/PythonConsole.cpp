@@ -6,6 +6,7 @@
 #include "python/Bindings.h"
 
 #include <QEvent>
+#include <QFile>
 #include <QFontDatabase>
 #include <QHBoxLayout>
 #include <QKeyEvent>
@@ -63,6 +64,26 @@ def _awb_console_run(source, globals):
         traceback.print_exception(etype, value, tb)
     finally:
         sys.stdout, sys.stderr = old
+    return out.getvalue()
+
+def _awb_console_exec(source, filename, globals):
+    import io, sys, traceback
+    out = io.StringIO()
+    old = sys.stdout, sys.stderr, sys.argv
+    sys.stdout = sys.stderr = out
+    sys.argv = [filename]
+    globals["__file__"] = filename
+    try:
+        exec(compile(source, filename, "exec"), globals)
+    except SystemExit as e:
+        if e.code not in (None, 0):
+            print("(the script exited with %r)" % (e.code,))
+    except BaseException:
+        etype, value, tb = sys.exc_info()
+        traceback.print_exception(etype, value, tb.tb_next if tb else None)
+    finally:
+        sys.stdout, sys.stderr, sys.argv = old
+        globals.pop("__file__", None)
     return out.getvalue()
 
 def _awb_console_complete(source):
@@ -244,6 +265,35 @@ void PythonConsole::onLastReplaced(const QString &lines)
     QTextCharFormat format;
     format.setForeground(QColor(QStringLiteral("#22863a")));
     c.insertText(lines, format);
+}
+
+bool PythonConsole::runFile(const QString &fileName, QString *error)
+{
+    QFile file(fileName);
+    if (!file.open(QIODevice::ReadOnly)) {
+        if (error)
+            *error = tr("cannot read %1: %2").arg(fileName, file.errorString());
+        return false;
+    }
+    const QByteArray source = file.readAll();
+    show(tr("# Running %1").arg(fileName), QStringLiteral("#6a737d"), true);
+    try {
+        startInterpreter();
+        Item *current = m_currentItem ? m_currentItem() : nullptr;
+        m_python->globals["item"] = python::itemObject(m_python->project, current);
+        const py::object out = m_python->globals["_awb_console_exec"](
+            py::bytes(source.constData(), size_t(source.size())).attr("decode")("utf-8"),
+            fileName.toStdString(), m_python->globals);
+        QString text = QString::fromStdString(out.cast<std::string>());
+        if (text.endsWith('\n'))
+            text.chop(1);
+        if (!text.isEmpty())
+            show(text, text.contains(QStringLiteral("Traceback")) ? QStringLiteral("#b31d28")
+                                                                  : QStringLiteral("#24292e"));
+    } catch (const std::exception &e) {
+        show(QString::fromUtf8(e.what()), QStringLiteral("#b31d28"));
+    }
+    return true;
 }
 
 QString PythonConsole::transcript() const

@@ -32,6 +32,9 @@ public:
     // Runs one line typed at the prompt (or a block: lines until the statement is complete),
     // as pressing Return does; returns false while a block waits for more lines.
     bool enter(const QString &line);
+    // Runs a script file in the console's namespace (`project`, `item`, `awb`; sys.argv is
+    // [file]), its output and errors shown; false (with *error) when the file cannot be read.
+    bool runFile(const QString &fileName, QString *error = nullptr);
     // The whole text shown (prompts, output, recorded lines).
     QString transcript() const;
     QLineEdit *input() const { return m_input; }
