@@ -127,21 +127,21 @@ PythonConsole::PythonConsole(Project *project, ScriptRecorder *recorder,
         m_input->clear();
         enter(line);
     });
-    show(tr("# Python %1 console: `project` is the open document, `item` the current item, "
-            "`awb` the attractor_workbench module (help(awb)). Edits are undoable; every edit "
-            "made in the window is shown below as the line that makes it (Tools > Save "
-            "Recording).")
-             .arg(QStringLiteral(PY_VERSION)),
-         QStringLiteral("#6a737d"), true);
+    print(tr("# Python %1 console: `project` is the open document, `item` the current item, "
+             "`awb` the attractor_workbench module (help(awb)). Edits are undoable; every edit "
+             "made in the window is shown below as the line that makes it (Tools > Save "
+             "Recording).")
+              .arg(QStringLiteral(PY_VERSION)),
+          QStringLiteral("#6a737d"), true);
     if (m_recorder) {
         for (const QString &step : m_recorder->steps())
             onRecorded(step);
         connect(m_recorder, &ScriptRecorder::recorded, this, &PythonConsole::onRecorded);
         connect(m_recorder, &ScriptRecorder::lastReplaced, this, &PythonConsole::onLastReplaced);
         connect(m_recorder, &ScriptRecorder::restarted, this, [this](const QString &file) {
-            show(file.isEmpty() ? tr("# The recording starts again, from a new project.")
-                                : tr("# The recording starts again, from %1.").arg(file),
-                 QStringLiteral("#6a737d"), true);
+            print(file.isEmpty() ? tr("# The recording starts again, from a new project.")
+                                 : tr("# The recording starts again, from %1.").arg(file),
+                  QStringLiteral("#6a737d"), true);
         });
     }
 }
@@ -183,8 +183,8 @@ bool PythonConsole::enter(const QString &line)
     if (!line.trimmed().isEmpty() && (m_history.isEmpty() || m_history.last() != line))
         m_history << line;
     m_historyPos = int(m_history.size());
-    show((m_pending.isEmpty() ? QStringLiteral(">>> ") : QStringLiteral("... ")) + line,
-         QStringLiteral("#1f4e9b"));
+    print((m_pending.isEmpty() ? QStringLiteral(">>> ") : QStringLiteral("... ")) + line,
+          QStringLiteral("#1f4e9b"));
     m_pending << line;
     const QString source = m_pending.join('\n');
     try {
@@ -198,7 +198,7 @@ bool PythonConsole::enter(const QString &line)
             return false;
         }
     } catch (const std::exception &e) {
-        show(QString::fromUtf8(e.what()), QStringLiteral("#b31d28"));
+        print(QString::fromUtf8(e.what()), QStringLiteral("#b31d28"));
         m_pending.clear();
         m_prompt->setText(QStringLiteral(">>>"));
         return true;
@@ -221,16 +221,16 @@ void PythonConsole::run(const QString &source)
             if (text.endsWith('\n'))
                 text.chop(1);
             if (!text.isEmpty())
-                show(text, text.contains(QStringLiteral("Traceback")) || text.contains("Error:")
-                               ? QStringLiteral("#b31d28")
-                               : QStringLiteral("#24292e"));
+                print(text, text.contains(QStringLiteral("Traceback")) || text.contains("Error:")
+                                ? QStringLiteral("#b31d28")
+                                : QStringLiteral("#24292e"));
         }
     } catch (const std::exception &e) {
-        show(QString::fromUtf8(e.what()), QStringLiteral("#b31d28"));
+        print(QString::fromUtf8(e.what()), QStringLiteral("#b31d28"));
     }
 }
 
-void PythonConsole::show(const QString &text, const QString &colour, bool italic)
+void PythonConsole::print(const QString &text, const QString &colour, bool italic)
 {
     QTextCharFormat format;
     format.setForeground(QColor(colour));
@@ -249,7 +249,7 @@ void PythonConsole::onRecorded(const QString &lines)
     QTextCursor c(m_output->document());
     c.movePosition(QTextCursor::End);
     const bool empty = m_output->document()->isEmpty();
-    show(lines, QStringLiteral("#22863a"));
+    print(lines, QStringLiteral("#22863a"));
     m_lastRecordedStart = empty ? 0 : c.position() + 1;
 }
 
@@ -276,7 +276,7 @@ bool PythonConsole::runFile(const QString &fileName, QString *error)
         return false;
     }
     const QByteArray source = file.readAll();
-    show(tr("# Running %1").arg(fileName), QStringLiteral("#6a737d"), true);
+    print(tr("# Running %1").arg(fileName), QStringLiteral("#6a737d"), true);
     try {
         startInterpreter();
         Item *current = m_currentItem ? m_currentItem() : nullptr;
@@ -288,10 +288,10 @@ bool PythonConsole::runFile(const QString &fileName, QString *error)
         if (text.endsWith('\n'))
             text.chop(1);
         if (!text.isEmpty())
-            show(text, text.contains(QStringLiteral("Traceback")) ? QStringLiteral("#b31d28")
-                                                                  : QStringLiteral("#24292e"));
+            print(text, text.contains(QStringLiteral("Traceback")) ? QStringLiteral("#b31d28")
+                                                                   : QStringLiteral("#24292e"));
     } catch (const std::exception &e) {
-        show(QString::fromUtf8(e.what()), QStringLiteral("#b31d28"));
+        print(QString::fromUtf8(e.what()), QStringLiteral("#b31d28"));
     }
     return true;
 }

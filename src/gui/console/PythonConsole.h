@@ -45,7 +45,8 @@ protected:
 private:
     void startInterpreter();
     void run(const QString &source);
-    void show(const QString &text, const QString &colour, bool italic = false);
+    // Appends `text` to the output in `colour` (not QWidget::show).
+    void print(const QString &text, const QString &colour, bool italic = false);
     void onRecorded(const QString &lines);
     void onLastReplaced(const QString &lines);
 
