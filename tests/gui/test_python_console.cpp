@@ -261,8 +261,11 @@ void TestPythonConsole::recordedSessionReplaysToTheSameFile()
     w.action(QStringLiteral("actionDelete"))->trigger();
     QCOMPARE(item->childCount(), 0);
 
-    // Every edit is in the console, as the recorder wrote it.
+    // Every edit is in the console, as the recorder wrote it, when it is first opened.
+    w.action(QStringLiteral("actionPythonConsole"))->trigger();
+    QTRY_VERIFY(w.pythonConsole()->isVisible());
     const QString transcript = w.pythonConsole()->transcript();
+    QVERIFY(transcript.contains(QStringLiteral("# The recording starts again, from ") + m_example));
     for (const QString &step : recorder->steps())
         QVERIFY2(transcript.contains(step), qPrintable(step));
     QVERIFY(recorder->steps().contains(QStringLiteral("project.undo()")));

@@ -127,23 +127,40 @@ PythonConsole::PythonConsole(Project *project, ScriptRecorder *recorder,
         m_input->clear();
         enter(line);
     });
+}
+
+void PythonConsole::begin()
+{
+    // On the first show (not at the application's start, whose New and Open would otherwise
+    // be the first things shown): the welcome, then the recording so far, then what follows.
+    if (m_begun)
+        return;
+    m_begun = true;
     print(tr("# Python %1 console: `project` is the open document, `item` the current item, "
              "`awb` the attractor_workbench module (help(awb)). Edits are undoable; every edit "
              "made in the window is shown below as the line that makes it (Tools > Save "
              "Recording).")
               .arg(QStringLiteral(PY_VERSION)),
           QStringLiteral("#6a737d"), true);
-    if (m_recorder) {
-        for (const QString &step : m_recorder->steps())
-            onRecorded(step);
-        connect(m_recorder, &ScriptRecorder::recorded, this, &PythonConsole::onRecorded);
-        connect(m_recorder, &ScriptRecorder::lastReplaced, this, &PythonConsole::onLastReplaced);
-        connect(m_recorder, &ScriptRecorder::restarted, this, [this](const QString &file) {
-            print(file.isEmpty() ? tr("# The recording starts again, from a new project.")
-                                 : tr("# The recording starts again, from %1.").arg(file),
-                  QStringLiteral("#6a737d"), true);
-        });
-    }
+    if (!m_recorder)
+        return;
+    auto started = [this](const QString &file) {
+        print(file.isEmpty() ? tr("# The recording starts again, from a new project.")
+                             : tr("# The recording starts again, from %1.").arg(file),
+              QStringLiteral("#6a737d"), true);
+    };
+    started(m_recorder->baseFile());
+    for (const QString &step : m_recorder->steps())
+        onRecorded(step);
+    connect(m_recorder, &ScriptRecorder::recorded, this, &PythonConsole::onRecorded);
+    connect(m_recorder, &ScriptRecorder::lastReplaced, this, &PythonConsole::onLastReplaced);
+    connect(m_recorder, &ScriptRecorder::restarted, this, started);
+}
+
+void PythonConsole::showEvent(QShowEvent *event)
+{
+    begin();
+    QWidget::showEvent(event);
 }
 
 PythonConsole::~PythonConsole()
@@ -180,6 +197,7 @@ void PythonConsole::startInterpreter()
 
 bool PythonConsole::enter(const QString &line)
 {
+    begin();
     if (!line.trimmed().isEmpty() && (m_history.isEmpty() || m_history.last() != line))
         m_history << line;
     m_historyPos = int(m_history.size());
@@ -276,6 +294,7 @@ bool PythonConsole::runFile(const QString &fileName, QString *error)
         return false;
     }
     const QByteArray source = file.readAll();
+    begin();
     print(tr("# Running %1").arg(fileName), QStringLiteral("#6a737d"), true);
     try {
         startInterpreter();

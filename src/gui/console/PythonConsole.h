@@ -41,8 +41,10 @@ public:
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
+    void showEvent(QShowEvent *event) override;
 
 private:
+    void begin();
     void startInterpreter();
     void run(const QString &source);
     // Appends `text` to the output in `colour` (not QWidget::show).
@@ -61,7 +63,8 @@ private:
     QStringList m_pending;  // lines of an incomplete block
     QStringList m_history;
     int m_historyPos = 0;
-    int m_lastRecordedStart = -1;  // where the last recorded step's text starts (replaceable)
+    int m_lastRecordedStart = -1;
+    bool m_begun = false;  // the welcome and the recording shown (on the first show)  // where the last recorded step's text starts (replaceable)
 };
 
 } // namespace awb
