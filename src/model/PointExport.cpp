@@ -23,6 +23,15 @@ void put(QIODevice &out, const QByteArray &bytes)
             PointExportTr::tr("cannot write the points: %1").arg(out.errorString()).toStdString());
 }
 
+// The map an image was made by last, numbered as the item numbers its maps (-1 for X0): the
+// address's first symbol when there is one.
+int lastMap(const DerivedIfs &d, const Address &address, const std::uint8_t *a, int n)
+{
+    return !address.empty() ? d.analysisIndex(address.front())
+           : n > 0          ? d.analysisIndex(a[0])
+                            : -1;
+}
+
 // Streams f_w(F^depth(X0)) (w = `address`, empty: the identity) to `visit(point row of one
 // view, view index, 0-based map or -1)`.
 template <class Visit>
@@ -34,10 +43,7 @@ void iteratePoints(const DerivedIfs &d, const StartSet &start, int depth, const 
                             "an automaton").toStdString());
     const AffineMap prefix = composeAddress(d.ifs, address);
     CallbackSink sink([&](const Mat &v, StartSet::Kind, const std::uint8_t *a, int n) {
-        // The map applied last is the address's first symbol when there is one.
-        const int map = !address.empty() ? d.analysisIndex(address.front())
-                        : n > 0          ? d.analysisIndex(a[0])
-                                         : -1;
+        const int map = lastMap(d, address, a, n);
         const Mat x = address.empty() ? v : applyMap(prefix, v);
         for (std::size_t k = 0; k < d.ifs.views.size(); ++k) {
             const Mat p = awb::project(d.ifs.views[k], x);
@@ -101,9 +107,7 @@ public:
     }
     void consume(const Mat &v, StartSet::Kind, const std::uint8_t *a, int n) override
     {
-        const int map = !m_address.empty() ? m_d.analysisIndex(m_address.front())
-                        : n > 0            ? m_d.analysisIndex(a[0])
-                                           : -1;
+        const int map = lastMap(m_d, m_address, a, n);
         const Mat *x = &v;
         if (!m_address.empty()) {
             m_mapped = applyMap(m_prefix, v);
