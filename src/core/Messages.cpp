@@ -48,9 +48,11 @@ std::string formatMessageArgs(std::string_view pattern,
     return out;
 }
 
-std::string streamedNumber(double v)
+std::string streamedNumber(double v, int digits)
 {
     std::ostringstream os;
+    os.imbue(std::locale::classic());
+    os.precision(digits);
     os << v;
     return os.str();
 }

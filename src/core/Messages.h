@@ -66,8 +66,8 @@ std::string formatMessage(std::string_view pattern, const Args &...args)
     }(detail::messageArg(args)...);
 }
 
-// The text `os << v` writes for v with the stream's default format (6 significant digits):
-// for messages that streamed their numbers.
-std::string streamedNumber(double v);
+// The text `os << v` writes for v with `digits` significant digits in the classic locale (the
+// stream's default: 6): the one number formatter of the core's messages and notes.
+std::string streamedNumber(double v, int digits = 6);
 
 } // namespace awb

@@ -23,12 +23,6 @@ constexpr double kDominance = 1e-8;     // relative gap to the second eigenvalue
 constexpr double kCoupling = 0.5;       // the complement's images use at most this of P|W
 constexpr long long kProductBudget = 1 << 15;
 
-std::string num(double v, int digits = 10)
-{
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-    return buf;
-}
 
 std::string wordText(const std::vector<int> &w)
 {
@@ -136,8 +130,8 @@ std::optional<Vec> dominantEigenvector(const std::vector<Mat> &A, const std::vec
                                                             "eigenvalue is complex (%1); the "
                                                             "complex-polytope variant is not "
                                                             "implemented"),
-                             num(ev(top).real(), 6) + (ev(top).imag() < 0 ? " - " : " + ")
-                                 + num(std::abs(ev(top).imag()), 6) + "i");
+                             streamedNumber(ev(top).real(), 6) + (ev(top).imag() < 0 ? " - " : " + ")
+                                 + streamedNumber(std::abs(ev(top).imag()), 6) + "i");
         return std::nullopt;
     }
     for (Eigen::Index i = 0; i < ev.size(); ++i)
@@ -385,7 +379,7 @@ PolytopeVerdict verifyPolytopeCertificate(const PolytopeCertificate &c, double t
         return v;
     }
     if (!(c.rhoHat > 0.0) || !std::isfinite(c.rhoHat))
-        return fail("rhoHat must be positive and finite, got " + num(c.rhoHat));
+        return fail("rhoHat must be positive and finite, got " + streamedNumber(c.rhoHat, 10));
     if (c.smp.empty())
         return fail("the s.m.p. word is empty");
     for (int i : c.smp)
@@ -395,7 +389,7 @@ PolytopeVerdict verifyPolytopeCertificate(const PolytopeCertificate &c, double t
     v.lower = certifiedLower(A, c.smp, &raw);
     if (std::abs(raw / c.rhoHat - 1.0) > tolerance)
         return fail("the s.m.p. word (" + wordText(c.smp) + ") gives rho(A_w)^(1/k) = "
-                    + num(raw, 17) + ", not rhoHat = " + num(c.rhoHat, 17));
+                    + streamedNumber(raw, 17) + ", not rhoHat = " + streamedNumber(c.rhoHat, 17));
     const Eigen::Index n = Eigen::Index(c.vertices.size());
     if (n < L)
         return fail("fewer vertices than the dimension");
@@ -452,17 +446,17 @@ PolytopeVerdict verifyPolytopeCertificate(const PolytopeCertificate &c, double t
                 v.failingVertex = int(j);
                 v.failingMap = int(i);
                 return fail("vertex " + std::to_string(j) + " under map " + std::to_string(i)
-                            + ": ||A_i v_j / rhoHat||_P <= " + num(s, 12) + " + "
-                            + num(rnorm, 3) + " / " + num(v.delta, 3) + " = " + num(bound, 12)
-                            + " > 1 + " + num(tolerance, 3));
+                            + ": ||A_i v_j / rhoHat||_P <= " + streamedNumber(s, 12) + " + "
+                            + streamedNumber(rnorm, 3) + " / " + streamedNumber(v.delta, 3) + " = " + streamedNumber(bound, 12)
+                            + " > 1 + " + streamedNumber(tolerance, 3));
             }
         }
     }
     v.ok = true;
     v.normBound = worst;
     v.upper = std::max(v.lower, c.rhoHat * worst * (1.0 + 4.0 * kEps));
-    v.message = "every A_i / rhoHat maps the polytope into itself (norm <= " + num(worst, 17)
-                + "): JSR in [" + num(v.lower, 17) + ", " + num(v.upper, 17) + "]";
+    v.message = "every A_i / rhoHat maps the polytope into itself (norm <= " + streamedNumber(worst, 17)
+                + "): JSR in [" + streamedNumber(v.lower, 17) + ", " + streamedNumber(v.upper, 17) + "]";
     return v;
 }
 
@@ -472,7 +466,7 @@ std::string certificateJson(const PolytopeCertificate &c)
     auto vec = [&](const Vec &x) {
         os << '[';
         for (Eigen::Index k = 0; k < x.size(); ++k)
-            os << (k ? ", " : "") << num(x(k), 17);
+            os << (k ? ", " : "") << streamedNumber(x(k), 17);
         os << ']';
     };
     os << "{\n  \"format\": \"awb-invariant-polytope\",\n  \"version\": 1,\n  \"matrices\": [";
@@ -492,7 +486,7 @@ std::string certificateJson(const PolytopeCertificate &c)
             s += std::to_string(c.smp[k]);
         }
         return s;
-    }() << "],\n  \"rhoHat\": " << num(c.rhoHat, 17) << ",\n  \"vertices\": [";
+    }() << "],\n  \"rhoHat\": " << streamedNumber(c.rhoHat, 17) << ",\n  \"vertices\": [";
     for (size_t j = 0; j < c.vertices.size(); ++j) {
         os << (j ? ",\n    " : "\n    ");
         vec(c.vertices[j]);
@@ -504,7 +498,7 @@ std::string certificateJson(const PolytopeCertificate &c)
             os << (i ? ", [" : "[");
             for (size_t k = 0; k < c.lambda[j][i].size(); ++k)
                 os << (k ? ", [" : "[") << c.lambda[j][i][k].first << ", "
-                   << num(c.lambda[j][i][k].second, 17) << ']';
+                   << streamedNumber(c.lambda[j][i][k].second, 17) << ']';
             os << ']';
         }
         os << ']';

@@ -73,13 +73,6 @@ bool toNumber(const std::string &text, double *value)
     return s && s.peek() == std::char_traits<char>::eof() && std::isfinite(*value);
 }
 
-std::string text(double v)
-{
-    std::ostringstream s;
-    s.imbue(std::locale::classic());
-    s << v;
-    return s.str();
-}
 
 std::string lowered(std::string s)
 {
@@ -201,7 +194,7 @@ FractintFile readFractintIfs(std::istream &in)
                     at.line, at.column, name,
                     formatMessage(coreTranslate("awb::exchange",
                                                 "map %1 has the negative probability %2"),
-                                  r + 1, text(p))};
+                                  r + 1, streamedNumber(p))};
                 break;
             }
             entry.maps.push_back(f);

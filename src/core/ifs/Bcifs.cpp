@@ -12,19 +12,14 @@ namespace awb {
 
 namespace {
 
-std::string fmt(double v)
-{
-    std::ostringstream os;
-    os.precision(6);
-    os << v;
-    return os.str();
-}
 
 // "0.696" or "0.112 ± 0.449i" (complex eigenvalues of real matrices come in pairs).
+// (Real numbers too: as streamedNumber.)
 std::string fmt(Complex z)
 {
-    return z.imag() == 0.0 ? fmt(z.real())
-                           : fmt(z.real()) + " ± " + fmt(std::abs(z.imag())) + "i";
+    return z.imag() == 0.0 ? streamedNumber(z.real())
+                           : streamedNumber(z.real()) + " ± " + streamedNumber(std::abs(z.imag()))
+                                 + "i";
 }
 
 Vec column(std::initializer_list<double> v)

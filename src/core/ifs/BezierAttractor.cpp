@@ -13,13 +13,6 @@ namespace awb {
 
 namespace {
 
-std::string num(double v)
-{
-    std::ostringstream os;
-    os.precision(6);
-    os << v;
-    return os.str();
-}
 
 void requireSplitParameter(double u)
 {
@@ -30,7 +23,7 @@ void requireSplitParameter(double u)
         throw InputError(formatMessage(
             coreTranslate("awb::ifs", "the split parameter u = %1 must lie strictly between 0 "
                                       "and 1 (002 §4: 0 < u < 1)"),
-            num(u)));
+            streamedNumber(u)));
 }
 
 // Reciprocal condition of a matrix (sigma_min / sigma_max; 0 for a zero matrix).
@@ -55,14 +48,6 @@ std::string spanWord(int d)
                             : coreTranslate("awb::ifs", "are coplanar", "points"));
 }
 
-// `os << v` with 4 significant digits, as the contraction note streams its numbers.
-std::string num4(double v)
-{
-    std::ostringstream os;
-    os.precision(4);
-    os << v;
-    return os.str();
-}
 
 } // namespace
 
@@ -158,7 +143,7 @@ std::vector<AffineMap> fractalInterpolationMaps(const Mat &data, const std::vect
         if (!std::isfinite(d[n]) || !(std::abs(d[n]) < 1.0))
             throw InputError(formatMessage(
                 coreTranslate("awb::ifs", "vertical scaling d_%1 = %2 must satisfy |d_n| < 1"),
-                n + 1, num(d[n])));
+                n + 1, streamedNumber(d[n])));
     const double x0 = data(0, 0), xN = data(N, 0), y0 = data(0, 1), yN = data(N, 1);
     const double L = xN - x0;
     std::vector<AffineMap> maps;
@@ -261,7 +246,7 @@ BezierSplit bezierSplit(const Mat &P, double u)
                                           "this degree-%2 curve to its de Casteljau pieces "
                                           "(mismatch %3): the pieces are not affine images of "
                                           "the curve in its own space"),
-                d, n, num(residual));
+                d, n, streamedNumber(residual));
         }
     }
 
@@ -302,20 +287,20 @@ BezierSplit bezierSplit(const Mat &P, double u)
     note = formatMessage(coreTranslate("awb::ifs", "map 1 has spectral radius %1, map 2 %2; %3 "
                                                    "levels shrink every piece to 1/1000 of the "
                                                    "curve"),
-                         num4(s.check.maps[0].spectralRadius),
-                         num4(s.check.maps[1].spectralRadius), s.levelsFor(1e-3));
+                         streamedNumber(s.check.maps[0].spectralRadius, 4),
+                         streamedNumber(s.check.maps[1].spectralRadius, 4), s.levelsFor(1e-3));
     if (s.nearlyNonContractive)
         note += formatMessage(
             coreTranslate("awb::ifs", ". u = %1 is close to %2: map %3 is nearly non-contractive "
                                       "and the pieces are very unequal (random iteration, or u "
                                       "nearer 1/2, converges faster)"),
-            num4(u), u < 0.5 ? "0" : "1", slowest + 1);
+            streamedNumber(u, 4), u < 0.5 ? "0" : "1", slowest + 1);
     for (size_t i = 0; i < s.check.maps.size(); ++i)
         if (s.check.maps[i].normFactor >= 1.0)
             note += formatMessage(
                 coreTranslate("awb::ifs", ". Map %1 is not a Euclidean contraction (||A||_2 = "
                                           "%2) but is eventually contractive, as 002 §5 allows"),
-                i + 1, num4(s.check.maps[i].normFactor));
+                i + 1, streamedNumber(s.check.maps[i].normFactor, 4));
     s.contractionNote = note;
     return s;
 }

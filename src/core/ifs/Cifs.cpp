@@ -16,13 +16,6 @@ namespace {
 
 constexpr int kMaxDepth = 64;
 
-std::string fmt(double v)
-{
-    std::ostringstream os;
-    os.precision(6);
-    os << v;
-    return os.str();
-}
 
 // "T" + std::to_string(i) trips GCC 12's -Wrestrict false positive at -O3; append instead.
 std::string indexed(const char *prefix, int i)
@@ -133,12 +126,12 @@ void Cifs::validate() const
                 throw InputError(formatMessage(
                     coreTranslate("awb::ifs", "row %1 of %2 sums to %3, not 1: the map does not "
                                               "keep barycentric coordinates summing to 1"),
-                    r + 1, label, fmt(sum)));
+                    r + 1, label, streamedNumber(sum)));
         }
         if (!std::isfinite(t.weight) || t.weight <= 0)
             throw InputError(formatMessage(
                 coreTranslate("awb::ifs", "the weight of %1 must be a finite number > 0, got %2"),
-                label, fmt(t.weight)));
+                label, streamedNumber(t.weight)));
     }
     for (int s = 0; s < N; ++s)
         if (outgoing(s).empty())
@@ -236,7 +229,7 @@ CifsCheck checkCifs(const Cifs &cifs, int maxCycles)
                 coreTranslate("awb::ifs", "cycle %1 has spectral radius %2 >= 1 on the "
                                           "barycentric directions: repeating it does not "
                                           "contract, so the automaton has no attractor"),
-                describePath(cifs, s, c.transitions), fmt(c.spectralRadius));
+                describePath(cifs, s, c.transitions), streamedNumber(c.spectralRadius));
         }
     }
     return check;

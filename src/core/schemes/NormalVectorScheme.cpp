@@ -14,19 +14,12 @@ namespace awb {
 
 namespace {
 
-std::string num(double v)
-{
-    std::ostringstream os;
-    os.precision(6);
-    os << v;
-    return os.str();
-}
 
 std::string list(const std::vector<double> &v)
 {
     std::string s = "(";
     for (size_t j = 0; j < v.size(); ++j)
-        s += (j ? ", " : "") + num(v[j]);
+        s += (j ? ", " : "") + streamedNumber(v[j]);
     return s + ")";
 }
 
@@ -270,7 +263,7 @@ void requireSteps(const NormalVectorScheme &s, const ControlPolygon &poly, int s
         throw InputError(formatMessage(
             coreTranslate("awb::schemes", "%1 subdivision steps of a polygon with %2 edges would "
                                           "make %3 points (at most %4); use fewer steps"),
-            steps, poly.edgeCount(), num(count), num(NormalVectorScheme::maxPoints())));
+            steps, poly.edgeCount(), streamedNumber(count), streamedNumber(NormalVectorScheme::maxPoints())));
 }
 
 } // namespace
@@ -350,20 +343,20 @@ NormalVectorAnalysis analyse(const NormalVectorScheme &s)
                                           "(the argument of 001 Theorem 1); non-rectifiable: the "
                                           "polygon length grows by a factor of at least %3 per "
                                           "step (001 Theorem 2)"),
-            num(gamma), num(out.displacementFactor), num(lenMin));
+            streamedNumber(gamma), streamedNumber(out.displacementFactor), streamedNumber(lenMin));
     else if (out.convergent)
         out.verdict = formatMessage(
             coreTranslate("awb::schemes", "convergent: every edge shrinks by a factor of at most "
                                           "%1 per step, so ||F^{k+1} - F^k|| <= %2 * %1^k * "
                                           "(longest initial edge) and F^k is a Cauchy sequence "
                                           "(the argument of 001 Theorem 1)"),
-            num(gamma), num(out.displacementFactor));
+            streamedNumber(gamma), streamedNumber(out.displacementFactor));
     else
         out.verdict = formatMessage(
             coreTranslate("awb::schemes", "not decided: the one-step edge bound is %1 >= 1, so "
                                           "the argument of 001 Theorem 1 does not apply (see the "
                                           "measured edge lengths per level)"),
-            num(gamma));
+            streamedNumber(gamma));
     return out;
 }
 
@@ -457,7 +450,7 @@ Search searchEquivalentIfs(const NormalVectorScheme &s)
             out.why = formatMessage(
                 coreTranslate("awb::schemes", "new edge %1 of the unit edge has length %2 >= 1: "
                                               "no map would contract"),
-                j + 1, num((a[j + 1] - a[j]).norm()));
+                j + 1, streamedNumber((a[j + 1] - a[j]).norm()));
             return out;
         }
     const int levels = checkLevels(p);

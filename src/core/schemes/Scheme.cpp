@@ -8,13 +8,6 @@
 namespace awb {
 
 namespace {
-std::string fmt(double v)
-{
-    std::ostringstream os;
-    os.precision(12);
-    os << v;
-    return os.str();
-}
 
 std::vector<double> linspace(double a, double b, int n)
 {
@@ -87,7 +80,7 @@ UniformScheme::UniformScheme(std::string name, int arity, std::vector<SchemeRule
             throw InputError(formatMessage(
                 coreTranslate("awb::schemes", "%1: the weights of rule %2 sum to %3, not 1 (an "
                                               "affine rule must reproduce constants)"),
-                m_name, r + 1, fmt(sum)));
+                m_name, r + 1, streamedNumber(sum, 12)));
         for (size_t j = 0; j < rule.weights.size(); ++j) {
             const int k = r - arity * (rule.offset + int(j));
             kmin = std::min(kmin, k);
@@ -199,10 +192,10 @@ UniformScheme cornerCuttingScheme(double a, double b)
     if (!std::isfinite(a) || !std::isfinite(b) || !(0.0 < a && a < b && b < 1.0))
         throw InputError(formatMessage(
             coreTranslate("awb::schemes", "corner cutting needs 0 < a < b < 1, got a = %1, b = %2"),
-            fmt(a), fmt(b)));
+            streamedNumber(a, 12), streamedNumber(b, 12)));
     // Even point 2i: parameter b on edge (p_{i-1}, p_i); odd point 2i+1: parameter a on (p_i, p_{i+1}).
     return UniformScheme(formatMessage(coreTranslate("awb::schemes", "corner cutting (%1, %2)"),
-                                       fmt(a), fmt(b)),
+                                       streamedNumber(a, 12), streamedNumber(b, 12)),
                          2,
                          {SchemeRule{-1, {1.0 - b, b}}, SchemeRule{0, {1.0 - a, a}}});
 }
@@ -220,7 +213,7 @@ UniformScheme fourPointScheme(double omega)
         throw InputError(
             coreTranslate("awb::schemes", "four-point tension omega is not a finite number"));
     return UniformScheme(formatMessage(coreTranslate("awb::schemes", "four-point (omega = %1)"),
-                                       fmt(omega)),
+                                       streamedNumber(omega, 12)),
                          2,
                          {SchemeRule{0, {1.0}},
                           SchemeRule{-1, {-omega, 0.5 + omega, 0.5 + omega, -omega}}});
@@ -269,7 +262,7 @@ UniformScheme maskScheme(int arity, const std::vector<double> &mask, int offset)
                               "the coefficients a_k with k = %1 mod %2 sum to %3, not 1: every "
                               "coset of the mask must sum to 1 (the scheme must reproduce "
                               "constants; the whole mask sums to the arity %2)"),
-                r, arity, fmt(sum)));
+                r, arity, streamedNumber(sum, 12)));
         rules.push_back(std::move(rule));
     }
     return UniformScheme(
@@ -289,14 +282,14 @@ BezierScheme::BezierScheme(int degree, double t) : m_degree(degree), m_t(t)
         throw InputError(formatMessage(
             coreTranslate("awb::schemes", "the de Casteljau split parameter t must lie strictly "
                                           "between 0 and 1, got %1"),
-            fmt(t)));
+            streamedNumber(t, 12)));
 }
 
 std::string BezierScheme::name() const
 {
     return formatMessage(
         coreTranslate("awb::schemes", "Bézier of degree %1 (de Casteljau at t = %2)"), m_degree,
-        fmt(m_t));
+        streamedNumber(m_t, 12));
 }
 
 SubdivisionMatrices BezierScheme::matrices(int m) const
@@ -390,7 +383,7 @@ MatrixScheme::MatrixScheme(std::vector<Mat> S, std::string name)
                 throw InputError(formatMessage(
                     coreTranslate("awb::schemes", "%1: matrix S_%2, row %3 sums to %4, not 1 "
                                                   "(subdivision rows are affine combinations)"),
-                    m_name, i + 1, r + 1, fmt(sum)));
+                    m_name, i + 1, r + 1, streamedNumber(sum, 12)));
         }
     }
     m_overlap = int(m);
@@ -428,7 +421,7 @@ Mat subdivide(const CurveScheme &scheme, const Mat &P, int steps)
         throw InputError(formatMessage(
             coreTranslate("awb::schemes", "classic subdivision with %1 steps would make %2 "
                                           "points; use fewer steps"),
-            steps, fmt(rows)));
+            steps, streamedNumber(rows, 12)));
     std::vector<Mat> pieces{P};
     for (int k = 0; k < steps; ++k) {
         std::vector<Mat> next;
