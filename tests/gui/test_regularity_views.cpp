@@ -17,6 +17,7 @@
 #include <QtTest>
 
 #include "TestMain.h"
+#include "model/SchemeSpec.h"
 
 #include "TestTime.h"
 
@@ -40,7 +41,7 @@ void TestRegularityViews::panelShowsCubicBSpline()
 {
     RegularityPanel panel;
     QSignalSpy done(&panel, &RegularityPanel::finished);
-    panel.analyse(std::make_shared<UniformScheme>(bsplineScheme(3)), 7, QStringLiteral("cubic"));
+    panel.analyse(SchemeSpec{}, 7, QStringLiteral("cubic"));  // the cubic B-spline
     QVERIFY(panel.isRunning() || done.count() == 1);
     QVERIFY(done.count() == 1 || done.wait(awb::test::ms(20000)));
     QVERIFY2(panel.summary().contains("C²"), qPrintable(panel.summary()));
@@ -53,7 +54,7 @@ void TestRegularityViews::panelShowsCubicBSpline()
     QCOMPARE(mathText(QStringLiteral("r = n - log_2 rho_n, (1 + .. + z^2)^3, F^k(X0)")),
              QStringLiteral("r = n − log₂ ρₙ, (1 + … + z²)³, F^k(X₀)"));
     // The same key again does not restart it.
-    panel.analyse(std::make_shared<UniformScheme>(bsplineScheme(3)), 7, QStringLiteral("cubic"));
+    panel.analyse(SchemeSpec{}, 7, QStringLiteral("cubic"));  // the cubic B-spline
     QVERIFY(!panel.isRunning());
     panel.showMessage(QStringLiteral("none"));
     QCOMPARE(panel.summary(), QStringLiteral("none"));
@@ -76,8 +77,13 @@ void TestRegularityViews::panelCancel()
         (k % 2 ? odd : even) += mask[k];
     for (size_t k = 0; k < mask.size(); ++k)
         mask[k] /= k % 2 ? odd : even;
-    panel.analyse(std::make_shared<UniformScheme>(maskScheme(2, mask, 0)), 12,
-                  QStringLiteral("w"));
+    SchemeSpec spec;
+    spec.kind = SchemeSpec::Kind::Mask;
+    spec.maskArity = 2;
+    spec.maskOffset = 0;
+    spec.mask = mask;
+    spec.maskText = QStringList(int(mask.size()), QString());
+    panel.analyse(spec, 12, QStringLiteral("w"));
     QVERIFY(panel.isRunning());
     QTest::qWait(400);
     panel.cancel();

@@ -109,16 +109,10 @@ void ItemController::updateRegularity()
         m_regularity->showMessage(tr("Regularity: only for subdivision curves"));
         return;
     }
-    const auto scheme = realScheme(curve);
-    if (!scheme) {
-        m_regularity->showMessage(tr("Regularity: does not apply (%1)")
-                                      .arg(curve->scheme().isComplex()
-                                               ? tr("complex de Casteljau parameter")
-                                               : tr("the scheme's parameters are refused")));
-        return;
-    }
-    const int m = int(curve->controlPoints(0).size());
-    m_regularity->analyse(scheme, std::max(m, scheme->minControlPoints()), regularityKey(*curve));
+    // The model's specRegularity (as analyse --json and Python): it says itself where it does
+    // not apply (a complex de Casteljau parameter, refused parameters).
+    m_regularity->analyse(curve->scheme(), int(curve->controlPoints(0).size()),
+                          regularityKey(*curve));
 }
 
 void ItemController::cancelAnalysis()

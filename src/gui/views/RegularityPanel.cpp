@@ -1,5 +1,9 @@
 #include "gui/views/RegularityPanel.h"
 
+#include "core/schemes/Scheme.h"
+#include "model/SchemeRegularity.h"
+#include "model/SchemeSpec.h"
+
 #include "core/analysis/Regularity.h"
 #include "core/schemes/Scheme.h"
 
@@ -147,14 +151,20 @@ void RegularityPanel::showMessage(const QString &message)
     m_result.reset();
 }
 
-void RegularityPanel::analyse(std::shared_ptr<const CurveScheme> scheme, int m, const QString &key)
+void RegularityPanel::analyse(const SchemeSpec &spec, int m, const QString &key)
 {
     if (key == m_key && !key.isEmpty())
         return;
     m_worker.stop();
     m_key = key;
     m_running = true;
-    m_summary->setText(tr("Regularity of %1: computing…").arg(QString::fromStdString(scheme->name())));
+    QString name = SchemeSpec::kindNames().value(int(spec.kind));
+    try {
+        if (!spec.isComplex())
+            name = QString::fromStdString(spec.makeScheme()->name());
+    } catch (const std::exception &) {
+    }
+    m_summary->setText(tr("Regularity of %1: computing…").arg(name));
     m_method->clear();
     m_result.reset();
     m_save->setVisible(false);
@@ -162,19 +172,14 @@ void RegularityPanel::analyse(std::shared_ptr<const CurveScheme> scheme, int m, 
     m_progress->setVisible(true);
     m_cancel->setVisible(true);
     const double budget = m_budget;
-    m_worker.start([this, scheme, m, budget](const std::atomic<bool> *cancel, quint64 generation) {
+    m_worker.start([this, spec, m, budget](const std::atomic<bool> *cancel, quint64 generation) {
         RegularityOptions o;
         o.timeBudget = budget;
         o.cancel = cancel;
         o.progress = [this, generation](double lo, double hi, double fraction) {
             m_worker.post([=, this] { showProgress(lo, hi, fraction, generation); });
         };
-        Regularity r;
-        try {
-            r = schemeRegularity(*scheme, m, o);
-        } catch (const std::exception &e) {
-            r.message = std::string("does not apply: ") + e.what();
-        }
+        const Regularity r = specRegularity(spec, m, o);
         m_worker.post([=, this] { showResult(r, generation); });
     });
 }

@@ -16,7 +16,7 @@ class QToolButton;
 
 namespace awb {
 
-class CurveScheme;
+struct SchemeSpec;
 struct Regularity;
 
 class RegularityPanel : public QWidget {
@@ -25,9 +25,11 @@ public:
     explicit RegularityPanel(QWidget *parent = nullptr);
     ~RegularityPanel() override;
 
-    // Starts the analysis of `scheme` with m control points unless `key` (the scheme's
-    // parameters and m) is what is shown or being computed already. Cancels a running one.
-    void analyse(std::shared_ptr<const CurveScheme> scheme, int m, const QString &key);
+    // Starts the analysis of the scheme `spec` with m control points -- the model's
+    // specRegularity(), as attractor-cli analyse and Python compute it -- unless `key` (the
+    // scheme's parameters and m) is what is shown or being computed already. Cancels a
+    // running one.
+    void analyse(const SchemeSpec &spec, int m, const QString &key);
     // No scheme to analyse (another kind of item): show why.
     void showMessage(const QString &message);
     void cancel();
