@@ -949,6 +949,142 @@
         <source>the start set &quot;vertex-limits&quot; (the limit positions of a mesh&apos;s vertices) is for mesh items only; this item: %1</source>
         <translation>počáteční množina &quot;vertex-limits&quot; (limitní polohy vrcholů sítě) je jen pro položky se sítí; tato položka: %1</translation>
     </message>
+    <message>
+        <source>Point</source>
+        <translation>Bod</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>Úsečka</translation>
+    </message>
+    <message>
+        <source>Triangle</source>
+        <translation>Trojúhelník</translation>
+    </message>
+    <message>
+        <source>Polygon</source>
+        <translation>Mnohoúhelník</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Body</translation>
+    </message>
+    <message>
+        <source>Lifted points</source>
+        <translation>Zdvižené body</translation>
+    </message>
+    <message>
+        <source>Vertex limits</source>
+        <translation>Limitní polohy vrcholů</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Druh</translation>
+    </message>
+    <message>
+        <source>Start set X0</source>
+        <translation>Počáteční množina X0</translation>
+    </message>
+    <message>
+        <source>The set X0 deterministic iteration starts from; drag its vertices in the attractor view. Lifted points are points of the lifted space of 000 §2; vertex limits, a mesh&apos;s vertices&apos; limit positions.</source>
+        <translation>Množina X0, z níž vychází deterministická iterace; její vrcholy přetáhněte v pohledu atraktoru. Zdvižené body jsou body zdviženého prostoru podle 000 §2; limitní polohy vrcholů jsou polohy, k nimž v limitě směřují vrcholy sítě.</translation>
+    </message>
+    <message>
+        <source>The item has no control points.</source>
+        <translation>Položka nemá žádné řídicí body.</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>Vrcholy</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a number.</source>
+        <translation>„%1“ není číslo.</translation>
+    </message>
+    <message>
+        <source>Lifted</source>
+        <translation>Zdvižené</translation>
+    </message>
+    <message>
+        <source>Points of the lifted space of 000 §2: x, y, then the extra coordinates of the lifting, the homogeneous 1 implied. Commas between coordinates, &apos;;&apos; between points.</source>
+        <translation>Body zdviženého prostoru podle 000 §2: x, y a poté dodatečné souřadnice zdvižení, homogenní 1 se doplní. Souřadnice oddělujte čárkami, body znakem &apos;;&apos;.</translation>
+    </message>
+    <message>
+        <source>Deterministic</source>
+        <translation>Deterministický</translation>
+    </message>
+    <message>
+        <source>Random (chaos game)</source>
+        <translation>Náhodný (hra chaosu)</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Režim</translation>
+    </message>
+    <message>
+        <source>Algorithm</source>
+        <translation>Algoritmus</translation>
+    </message>
+    <message>
+        <source>Deterministic iteration draws F^k(X0) at the depth k; random iteration plays the chaos game with the samples</source>
+        <translation>Deterministická iterace kreslí F^k(X0) v hloubce k; náhodná iterace hraje hru chaosu s daným počtem vzorků</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Hloubka</translation>
+    </message>
+    <message>
+        <source>The level k of F^k(X0): N^k images of the start set, at most 2^31</source>
+        <translation>Úroveň k v F^k(X0): N^k obrazů počáteční množiny, nejvýše 2^31</translation>
+    </message>
+    <message>
+        <source>Samples</source>
+        <translation>Vzorky</translation>
+    </message>
+    <message>
+        <source>Points of the chaos game</source>
+        <translation>Počet bodů hry chaosu</translation>
+    </message>
+    <message>
+        <source>Probabilities</source>
+        <translation>Pravděpodobnosti</translation>
+    </message>
+    <message>
+        <source>One weight per map for the chaos game; none: uniform</source>
+        <translation>Jedna váha pro každé zobrazení ve hře chaosu; žádné: rovnoměrně</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>Semínko</translation>
+    </message>
+    <message>
+        <source>The chaos game&apos;s random stream: the same seed, the same picture</source>
+        <translation>Náhodná posloupnost hry chaosu: stejné semínko, stejný obrázek</translation>
+    </message>
+    <message>
+        <source>%1 has no point set %2</source>
+        <translation>%1 nemá sadu bodů %2</translation>
+    </message>
+    <message>
+        <source>%1: its scheme fixes the number of points at %2, got %3</source>
+        <translation>%1: schéma položky pevně určuje počet bodů %2, zadáno %3</translation>
+    </message>
+    <message>
+        <source>%1: %2 points is more than the %3 a point set may have</source>
+        <translation>%1: počet bodů %2 přesahuje nejvyšší možný počet bodů v sadě (%3)</translation>
+    </message>
+    <message>
+        <source>every point must have finite coordinates</source>
+        <translation>všechny body musí mít konečné souřadnice</translation>
+    </message>
+    <message>
+        <source>Set the points of %1</source>
+        <translation>Nastavit body položky %1</translation>
+    </message>
+    <message>
+        <source>the points of %1 were refused</source>
+        <translation>body položky %1 byly odmítnuty</translation>
+    </message>
 </context>
 <context>
     <name>awb::AttractorRenderer</name>
@@ -1030,6 +1166,18 @@
         <source>BCIFS junction curve</source>
         <translation>Křivka napojení BCIFS</translation>
     </message>
+    <message>
+        <source>Left cubic</source>
+        <translation>Levá kubika</translation>
+    </message>
+    <message>
+        <source>Right quadratic</source>
+        <translation>Pravá kvadratika</translation>
+    </message>
+    <message>
+        <source>Handles</source>
+        <translation>Úchyty</translation>
+    </message>
 </context>
 <context>
     <name>awb::BezierUnionItem</name>
@@ -1039,7 +1187,7 @@
     </message>
     <message>
         <source>%1 split parameters for %2 curves</source>
-        <translation>počet parametrů dělení (%1) neodpovídá počtu křivek (%2)</translation>
+        <translation type="vanished">počet parametrů dělení (%1) neodpovídá počtu křivek (%2)</translation>
     </message>
     <message>
         <source>Change Bézier union %1</source>
@@ -1063,7 +1211,7 @@
     </message>
     <message>
         <source>missing</source>
-        <translation>chybí</translation>
+        <translation type="vanished">chybí</translation>
     </message>
     <message>
         <source>expected a non-empty array of curves {&quot;control_points&quot;: [...], &quot;u&quot;: number}</source>
@@ -1101,6 +1249,14 @@
         <source>Union of Bézier curves</source>
         <translation>Sjednocení Bézierových křivek</translation>
     </message>
+    <message>
+        <source>Curves</source>
+        <translation>Křivky</translation>
+    </message>
+    <message>
+        <source>Each curve&apos;s control points and split parameter u</source>
+        <translation>Řídicí body každé křivky a její parametr dělení u</translation>
+    </message>
 </context>
 <context>
     <name>awb::BezierUnionSpec</name>
@@ -1111,6 +1267,10 @@
     <message>
         <source>the split parameter u = %1 must satisfy 0 &lt; u &lt; 1 (002 §3)</source>
         <translation>parametr dělení u = %1 musí splňovat 0 &lt; u &lt; 1 (002 §3)</translation>
+    </message>
+    <message>
+        <source>%1 split parameters for %2 curves</source>
+        <translation>počet parametrů dělení (%1) neodpovídá počtu křivek (%2)</translation>
     </message>
 </context>
 <context>
@@ -1197,6 +1357,14 @@
         <source>Controlled IFS</source>
         <translation>Řízený IFS</translation>
     </message>
+    <message>
+        <source>Fern of gaskets (003 Fig. 4)</source>
+        <translation>Kapradina ze Sierpińského trojúhelníků (003 Fig. 4)</translation>
+    </message>
+    <message>
+        <source>Frame</source>
+        <translation>Rámec</translation>
+    </message>
 </context>
 <context>
     <name>awb::CifsSpec</name>
@@ -1225,7 +1393,7 @@
     </message>
     <message>
         <source>missing</source>
-        <translation>chybí</translation>
+        <translation type="vanished">chybí</translation>
     </message>
     <message>
         <source>expected [re, im]</source>
@@ -1245,11 +1413,15 @@
     </message>
     <message>
         <source>&quot;%1&quot; is not a valid value for %2</source>
-        <translation>„%1“ není platná hodnota pro %2</translation>
+        <translation type="vanished">„%1“ není platná hodnota pro %2</translation>
     </message>
     <message>
         <source>Complex Bézier curve</source>
         <translation>Komplexní Bézierova křivka</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>Řídicí body</translation>
     </message>
 </context>
 <context>
@@ -1403,6 +1575,62 @@
         <source>expected a vertex or face number (0-based)</source>
         <translation>očekáváno číslo vrcholu nebo stěny (číslováno od 0)</translation>
     </message>
+    <message>
+        <source>(none)</source>
+        <translation>(žádná)</translation>
+    </message>
+    <message>
+        <source>%1 (missing)</source>
+        <translation>%1 (chybí)</translation>
+    </message>
+    <message>
+        <source>(the mesh&apos;s matrices)</source>
+        <translation>(matice sítě)</translation>
+    </message>
+    <message>
+        <source>vertex %1 (n = %2)</source>
+        <translation>vrchol %1 (n = %2)</translation>
+    </message>
+    <message>
+        <source>centre of face %1 (n = %2)</source>
+        <translation>střed stěny %1 (n = %2)</translation>
+    </message>
+    <message>
+        <source>centre of face %1 (missing)</source>
+        <translation>střed stěny %1 (chybí)</translation>
+    </message>
+    <message>
+        <source>vertex %1 (missing)</source>
+        <translation>vrchol %1 (chybí)</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Zdroj</translation>
+    </message>
+    <message>
+        <source>The item whose matrices are analysed</source>
+        <translation>Položka, jejíž matice se analyzují</translation>
+    </message>
+    <message>
+        <source>Matrices</source>
+        <translation>Matice</translation>
+    </message>
+    <message>
+        <source>S_i: the subdivision matrices (their eigenvalue 1 is affine invariance); A_i: the linear parts of the lifted maps, whose subdominant eigenvalue decides the tangents; M_i: the lifted maps themselves (003 §4, 004 §2.1)</source>
+        <translation>S_i: subdivizní matice (jejich vlastní číslo 1 vyjadřuje afinní invarianci); A_i: lineární části zdvižených zobrazení, jejichž subdominantní vlastní číslo určuje tečny; M_i: samotná zdvižená zobrazení (003 §4, 004 §2.1)</translation>
+    </message>
+    <message>
+        <source>Vertex</source>
+        <translation>Vrchol</translation>
+    </message>
+    <message>
+        <source>Face</source>
+        <translation>Stěna</translation>
+    </message>
+    <message>
+        <source>For a mesh surface: the extraordinary vertex whose local subdivision matrix is analysed</source>
+        <translation>U plochy ze sítě: mimořádný vrchol, jehož lokální matice subdivize se analyzuje</translation>
+    </message>
 </context>
 <context>
     <name>awb::ExactCurve</name>
@@ -1526,6 +1754,10 @@
     <message>
         <source>&quot;%1&quot; is not a number (a fraction such as &quot;3/8&quot; or an expression such as &quot;(1 + sqrt(3))/8&quot; is)</source>
         <translation>&quot;%1&quot; není číslo (číslem je zlomek jako &quot;3/8&quot; nebo výraz jako &quot;(1 + sqrt(3))/8&quot;)</translation>
+    </message>
+    <message>
+        <source>expected true or false</source>
+        <translation>očekáváno true nebo false</translation>
     </message>
 </context>
 <context>
@@ -1898,6 +2130,26 @@
         <source>map %1 is not a map of the plane or of space like the first</source>
         <translation>zobrazení %1 není zobrazení roviny nebo prostoru stejné dimenze jako první</translation>
     </message>
+    <message>
+        <source>Maps</source>
+        <translation>Zobrazení</translation>
+    </message>
+    <message>
+        <source>x ↦ x A + b: {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]} each, or 3 x 3 and 3 numbers in space</source>
+        <translation>x ↦ x A + b: každé jako {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]}, v prostoru matice 3 x 3 a 3 čísla</translation>
+    </message>
+    <message>
+        <source>Reference points</source>
+        <translation>Referenční body</translation>
+    </message>
+    <message>
+        <source>The points the S_i are built for (S_i R = f_i(R)); none: the control points themselves</source>
+        <translation>Body, pro které se S_i sestavují (S_i R = f_i(R)); žádné: samotné řídicí body</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>Řídicí body</translation>
+    </message>
 </context>
 <context>
     <name>awb::IfsExchange</name>
@@ -1974,6 +2226,166 @@
         <source>there is not enough memory to compute it</source>
         <translation>k výpočtu není dostatek paměti</translation>
     </message>
+    <message>
+        <source>Name</source>
+        <translation>Název</translation>
+    </message>
+    <message>
+        <source>By map</source>
+        <translation>Podle zobrazení</translation>
+    </message>
+    <message>
+        <source>By address prefix</source>
+        <translation>Podle prefixu adresy</translation>
+    </message>
+    <message>
+        <source>Single colour</source>
+        <translation>Jedna barva</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Barva</translation>
+    </message>
+    <message>
+        <source>Style</source>
+        <translation>Styl</translation>
+    </message>
+    <message>
+        <source>The attractor&apos;s colours: by the map that made each point, by the first symbols of its address, or one colour</source>
+        <translation>Barvy atraktoru: podle zobrazení, které daný bod vytvořilo, podle prvních symbolů jeho adresy, nebo jedna barva</translation>
+    </message>
+    <message>
+        <source>Prefix length</source>
+        <translation>Délka prefixu</translation>
+    </message>
+    <message>
+        <source>Colour by address: how many of its first symbols pick the colour</source>
+        <translation>Barvení podle adresy: kolik prvních symbolů adresy určuje barvu</translation>
+    </message>
+    <message>
+        <source>Point size</source>
+        <translation>Velikost bodů</translation>
+    </message>
+    <message>
+        <source>Points of the attractor, in pixels</source>
+        <translation>Velikost bodů atraktoru v pixelech</translation>
+    </message>
+    <message>
+        <source>expected an array of &quot;#rrggbb&quot; strings</source>
+        <translation>očekáváno pole řetězců &quot;#rrggbb&quot;</translation>
+    </message>
+    <message>
+        <source>expected a string &quot;#rrggbb&quot;</source>
+        <translation>očekáván řetězec &quot;#rrggbb&quot;</translation>
+    </message>
+    <message>
+        <source>Palette</source>
+        <translation>Paleta</translation>
+    </message>
+    <message>
+        <source>Own colours, one per map or address prefix (&quot;#rrggbb&quot;); none: the views&apos; palette</source>
+        <translation>Vlastní barvy, jedna pro každé zobrazení nebo prefix adresy (&quot;#rrggbb&quot;); žádné: paleta pohledů</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatický</translation>
+    </message>
+    <message>
+        <source>Hits</source>
+        <translation>Zásahy</translation>
+    </message>
+    <message>
+        <source>Density</source>
+        <translation>Hustota</translation>
+    </message>
+    <message>
+        <source>Tone</source>
+        <translation>Tón</translation>
+    </message>
+    <message>
+        <source>Hits: every pixel the attractor reaches (the papers&apos; look); density: the invariant measure by log density; automatic: hits for deterministic, density for random iteration</source>
+        <translation>Zásahy: každý pixel, kam atraktor dosáhne (vzhled jako v článcích); hustota: invariantní míra jako logaritmická hustota; automatický: zásahy pro deterministickou, hustota pro náhodnou iteraci</translation>
+    </message>
+    <message>
+        <source>Gamma</source>
+        <translation>Gama</translation>
+    </message>
+    <message>
+        <source>Gamma of the density tone</source>
+        <translation>Gama tónu hustoty</translation>
+    </message>
+    <message>
+        <source>Animation</source>
+        <translation>Animace</translation>
+    </message>
+    <message>
+        <source>%1 is outside the range from %2 to %3</source>
+        <translation>%1 je mimo rozsah od %2 do %3</translation>
+    </message>
+    <message>
+        <source>%1 must be a finite number</source>
+        <translation>%1 musí být konečné číslo</translation>
+    </message>
+    <message>
+        <source>%1 must be at least %2 and at most %3, not %4</source>
+        <translation>%1 musí být nejméně %2 a nejvýše %3, ne %4</translation>
+    </message>
+    <message>
+        <source>%1 must be at least %2, not %3</source>
+        <translation>%1 musí být nejméně %2, ne %3</translation>
+    </message>
+    <message>
+        <source>%1 must be at most %2, not %3</source>
+        <translation>%1 musí být nejvýše %2, ne %3</translation>
+    </message>
+    <message>
+        <source>expected [re, im] or a number</source>
+        <translation>očekáváno [re, im] nebo číslo</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not %3</source>
+        <translation>%1: „%2“ není %3</translation>
+    </message>
+    <message>
+        <source>a JSON value (%1)</source>
+        <translation>hodnota JSON (%1)</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>číslo</translation>
+    </message>
+    <message>
+        <source>a whole number</source>
+        <translation>celé číslo</translation>
+    </message>
+    <message>
+        <source>one of %1 (or its number from 0)</source>
+        <translation>jedna z hodnot %1 (nebo její číslo od 0)</translation>
+    </message>
+    <message>
+        <source>a complex number (&quot;0.5,0.3&quot; or &quot;0.5+0.3i&quot;)</source>
+        <translation>komplexní číslo (&quot;0.5,0.3&quot; nebo &quot;0.5+0.3i&quot;)</translation>
+    </message>
+    <message>
+        <source>true or false</source>
+        <translation>true nebo false</translation>
+    </message>
+    <message>
+        <source>an item&apos;s type cannot change (%1 to %2): add a new item</source>
+        <translation>typ položky nelze změnit (%1 na %2): přidejte novou položku</translation>
+    </message>
+    <message>
+        <source>children are items of their own: add, remove or update them</source>
+        <translation>podřízené položky jsou samostatné položky: přidávejte, odebírejte nebo aktualizujte je zvlášť</translation>
+    </message>
+    <message>
+        <source>Update %1</source>
+        <translation>Aktualizovat položku %1</translation>
+    </message>
+    <message>
+        <source>%1 is shown, not edited</source>
+        <translation>%1 se jen zobrazuje, nelze upravit</translation>
+    </message>
 </context>
 <context>
     <name>awb::ItemAddress</name>
@@ -2030,15 +2442,15 @@
     </message>
     <message>
         <source>Regularity: does not apply (%1)</source>
-        <translation>Regularita: nelze použít (%1)</translation>
+        <translation type="vanished">Regularita: nelze použít (%1)</translation>
     </message>
     <message>
         <source>complex de Casteljau parameter</source>
-        <translation>komplexní de Casteljauův parametr</translation>
+        <translation type="vanished">komplexní de Casteljauův parametr</translation>
     </message>
     <message>
         <source>the scheme&apos;s parameters are refused</source>
-        <translation>parametry schématu byly odmítnuty</translation>
+        <translation type="vanished">parametry schématu byly odmítnuty</translation>
     </message>
     <message>
         <source>Changing %1 (%2, %3) from %4 to %5 makes row %2 sum to %6, not 1: the rows of a subdivision matrix are affine combinations.
@@ -2135,6 +2547,65 @@ Odečíst rozdíl %7 od prvku ve sloupci %8 (%9 → %10), aby byl součet řádk
     <message>
         <source>No certificate was saved: %1</source>
         <translation>Certifikát nebyl uložen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ItemFigure</name>
+    <message>
+        <source>the 16-bit density is written to PNG files, got &apos;%1&apos;</source>
+        <translation>16bitová hustota se zapisuje do souborů PNG, zadáno „%1“</translation>
+    </message>
+    <message>
+        <source>the raw density (.exr, 16-bit PNG) counts an attractor&apos;s points; this item&apos;s figure is a polygon</source>
+        <translation>surová hustota (.exr, 16bitové PNG) počítá body atraktoru; obrazem této položky je polygon</translation>
+    </message>
+    <message>
+        <source>the rendering was cancelled</source>
+        <translation>vykreslování bylo zrušeno</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos;: %2</source>
+        <translation>položka „%1“: %2</translation>
+    </message>
+    <message>
+        <source>depth %1 makes %2 images; at most 4e9 are rendered</source>
+        <translation>hloubka %1 dává %2 obrazů; vykresluje se nejvýše 4e9</translation>
+    </message>
+    <message>
+        <source>the raw density (.exr, 16-bit PNG) is of attractors drawn in the plane; &apos;%1&apos; is drawn in space</source>
+        <translation>surová hustota (.exr, 16bitové PNG) je pro atraktory kreslené v rovině; „%1“ se kreslí v prostoru</translation>
+    </message>
+    <message>
+        <source>the view must be azimuth and elevation in degrees with |elevation| &lt;= 90, got %1, %2</source>
+        <translation>pohled musí být azimut a elevace ve stupních s |elevace| &lt;= 90, zadáno %1, %2</translation>
+    </message>
+    <message>
+        <source>%1 random points</source>
+        <translation>%1 náhodných bodů</translation>
+    </message>
+    <message>
+        <source>F^%1(X0)</source>
+        <translation>F^%1(X0)</translation>
+    </message>
+    <message>
+        <source>, maps %1 of %2</source>
+        <translation>, zobrazení %1 z %2</translation>
+    </message>
+    <message>
+        <source>%1: %2%3 — orthographic view from azimuth %4°, elevation %5°</source>
+        <translation>%1: %2%3 — ortografický pohled z azimutu %4°, elevace %5°</translation>
+    </message>
+    <message>
+        <source>%1: %2 random points</source>
+        <translation>%1: %2 náhodných bodů</translation>
+    </message>
+    <message>
+        <source>%1: F^%2(X0)</source>
+        <translation>%1: F^%2(X0)</translation>
+    </message>
+    <message>
+        <source>%1: polygon after %2 steps</source>
+        <translation>%1: polygon po kroku %2</translation>
     </message>
 </context>
 <context>
@@ -3106,7 +3577,7 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>expected true or false</source>
-        <translation>očekáváno true nebo false</translation>
+        <translation type="vanished">očekáváno true nebo false</translation>
     </message>
     <message>
         <source>expected an array of sign rules</source>
@@ -3158,7 +3629,7 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>Position of new point %1 along the edge (001 eq. (1))</source>
-        <translation>Poloha nového bodu %1 podél hrany (001 eq. (1))</translation>
+        <translation type="vanished">Poloha nového bodu %1 podél hrany (001 eq. (1))</translation>
     </message>
     <message>
         <source>β%1</source>
@@ -3166,7 +3637,19 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>Displacement of new point %1 along the normal</source>
-        <translation>Posunutí nového bodu %1 ve směru normály</translation>
+        <translation type="vanished">Posunutí nového bodu %1 ve směru normály</translation>
+    </message>
+    <message>
+        <source>Signs of β</source>
+        <translation>Znaménka β</translation>
+    </message>
+    <message>
+        <source>How the sign of β alternates: &quot;constant&quot;, &quot;edge-alternating&quot;, &quot;level-edge-alternating&quot; or &quot;level-alternating&quot;; none, one, or one per rule</source>
+        <translation>Jak se střídá znaménko β: &quot;constant&quot;, &quot;edge-alternating&quot;, &quot;level-edge-alternating&quot; nebo &quot;level-alternating&quot;; žádné, jedno, nebo jedno pro každé pravidlo</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>Řídicí body</translation>
     </message>
 </context>
 <context>
@@ -3513,11 +3996,11 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>&amp;Name:</source>
-        <translation>&amp;Název:</translation>
+        <translation type="vanished">&amp;Název:</translation>
     </message>
     <message>
         <source>The name is empty or already taken.</source>
-        <translation>Název je prázdný nebo již použitý.</translation>
+        <translation type="vanished">Název je prázdný nebo již použitý.</translation>
     </message>
     <message>
         <source>Parameters</source>
@@ -3533,111 +4016,111 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>Start set X0</source>
-        <translation>Počáteční množina X0</translation>
+        <translation type="vanished">Počáteční množina X0</translation>
     </message>
     <message>
         <source>Point</source>
-        <translation>Bod</translation>
+        <translation type="vanished">Bod</translation>
     </message>
     <message>
         <source>Segment</source>
-        <translation>Úsečka</translation>
+        <translation type="vanished">Úsečka</translation>
     </message>
     <message>
         <source>Triangle</source>
-        <translation>Trojúhelník</translation>
+        <translation type="vanished">Trojúhelník</translation>
     </message>
     <message>
         <source>Polygon</source>
-        <translation>Mnohoúhelník</translation>
+        <translation type="vanished">Mnohoúhelník</translation>
     </message>
     <message>
         <source>Points</source>
-        <translation>Body</translation>
+        <translation type="vanished">Body</translation>
     </message>
     <message>
         <source>Lifted points</source>
-        <translation>Zdvižené body</translation>
+        <translation type="vanished">Zdvižené body</translation>
     </message>
     <message>
         <source>Kind:</source>
-        <translation>Druh:</translation>
+        <translation type="vanished">Druh:</translation>
     </message>
     <message>
         <source>Drag its vertices in the attractor view.</source>
-        <translation>Její vrcholy přetáhněte v pohledu atraktoru.</translation>
+        <translation type="vanished">Její vrcholy přetáhněte v pohledu atraktoru.</translation>
     </message>
     <message>
         <source>Points of the lifted space of 000 §2: x, y, then the extra coordinates of the lifting, the homogeneous 1 implied. Commas between coordinates, &apos;;&apos; between points.</source>
-        <translation>Body zdviženého prostoru podle 000 §2: x, y a poté dodatečné souřadnice zdvižení, homogenní 1 se doplní. Souřadnice oddělujte čárkami, body znakem &apos;;&apos;.</translation>
+        <translation type="vanished">Body zdviženého prostoru podle 000 §2: x, y a poté dodatečné souřadnice zdvižení, homogenní 1 se doplní. Souřadnice oddělujte čárkami, body znakem &apos;;&apos;.</translation>
     </message>
     <message>
         <source>Lifted:</source>
-        <translation>Zdvižené:</translation>
+        <translation type="vanished">Zdvižené:</translation>
     </message>
     <message>
         <source>The start set was refused.</source>
-        <translation>Počáteční množina byla odmítnuta.</translation>
+        <translation type="vanished">Počáteční množina byla odmítnuta.</translation>
     </message>
     <message>
         <source>The item has no control points.</source>
-        <translation>Položka nemá žádné řídicí body.</translation>
+        <translation type="vanished">Položka nemá žádné řídicí body.</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a number.</source>
-        <translation>„%1“ není číslo.</translation>
+        <translation type="vanished">„%1“ není číslo.</translation>
     </message>
     <message>
         <source>Algorithm</source>
-        <translation>Algoritmus</translation>
+        <translation type="vanished">Algoritmus</translation>
     </message>
     <message>
         <source>Deterministic</source>
-        <translation>Deterministický</translation>
+        <translation type="vanished">Deterministický</translation>
     </message>
     <message>
         <source>Random (chaos game)</source>
-        <translation>Náhodný (hra chaosu)</translation>
+        <translation type="vanished">Náhodný (hra chaosu)</translation>
     </message>
     <message>
         <source>Mode:</source>
-        <translation>Režim:</translation>
+        <translation type="vanished">Režim:</translation>
     </message>
     <message>
         <source>Depth:</source>
-        <translation>Hloubka:</translation>
+        <translation type="vanished">Hloubka:</translation>
     </message>
     <message>
         <source>Samples:</source>
-        <translation>Vzorky:</translation>
+        <translation type="vanished">Vzorky:</translation>
     </message>
     <message>
         <source>Style</source>
-        <translation>Styl</translation>
+        <translation type="vanished">Styl</translation>
     </message>
     <message>
         <source>By map</source>
-        <translation>Podle zobrazení</translation>
+        <translation type="vanished">Podle zobrazení</translation>
     </message>
     <message>
         <source>By address prefix</source>
-        <translation>Podle prefixu adresy</translation>
+        <translation type="vanished">Podle prefixu adresy</translation>
     </message>
     <message>
         <source>Single colour</source>
-        <translation>Jedna barva</translation>
+        <translation type="vanished">Jedna barva</translation>
     </message>
     <message>
         <source>Colour:</source>
-        <translation>Barva:</translation>
+        <translation type="vanished">Barva:</translation>
     </message>
     <message>
         <source>Prefix length:</source>
-        <translation>Délka prefixu:</translation>
+        <translation type="vanished">Délka prefixu:</translation>
     </message>
     <message>
         <source>Point size:</source>
-        <translation>Velikost bodu:</translation>
+        <translation type="vanished">Velikost bodu:</translation>
     </message>
     <message>
         <source>Control points</source>
@@ -3705,31 +4188,31 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>Eigenvalues</source>
-        <translation>Vlastní čísla</translation>
+        <translation type="vanished">Vlastní čísla</translation>
     </message>
     <message>
         <source>The item whose matrices are analysed</source>
-        <translation>Položka, jejíž matice se analyzují</translation>
+        <translation type="vanished">Položka, jejíž matice se analyzují</translation>
     </message>
     <message>
         <source>S_i: the subdivision matrices (their eigenvalue 1 is affine invariance); A_i: the linear parts of the lifted maps, whose subdominant eigenvalue decides the tangents; M_i: the lifted maps themselves (003 §4, 004 §2.1)</source>
-        <translation>S_i: subdivizní matice (jejich vlastní číslo 1 vyjadřuje afinní invarianci); A_i: lineární části zdvižených zobrazení, jejichž subdominantní vlastní číslo určuje tečny; M_i: samotná zdvižená zobrazení (003 §4, 004 §2.1)</translation>
+        <translation type="vanished">S_i: subdivizní matice (jejich vlastní číslo 1 vyjadřuje afinní invarianci); A_i: lineární části zdvižených zobrazení, jejichž subdominantní vlastní číslo určuje tečny; M_i: samotná zdvižená zobrazení (003 §4, 004 §2.1)</translation>
     </message>
     <message>
         <source>Source:</source>
-        <translation>Zdroj:</translation>
+        <translation type="vanished">Zdroj:</translation>
     </message>
     <message>
         <source>Matrices:</source>
-        <translation>Matice:</translation>
+        <translation type="vanished">Matice:</translation>
     </message>
     <message>
         <source>(none)</source>
-        <translation>(žádná)</translation>
+        <translation type="vanished">(žádná)</translation>
     </message>
     <message>
         <source>%1 (missing)</source>
-        <translation>%1 (chybí)</translation>
+        <translation type="vanished">%1 (chybí)</translation>
     </message>
     <message>
         <source>%1: %2</source>
@@ -3737,19 +4220,19 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>Depth</source>
-        <translation>Hloubka</translation>
+        <translation type="vanished">Hloubka</translation>
     </message>
     <message>
         <source>Samples</source>
-        <translation>Vzorky</translation>
+        <translation type="vanished">Vzorky</translation>
     </message>
     <message>
         <source>Prefix length</source>
-        <translation>Délka prefixu</translation>
+        <translation type="vanished">Délka prefixu</translation>
     </message>
     <message>
         <source>Point size</source>
-        <translation>Velikost bodů</translation>
+        <translation type="vanished">Velikost bodů</translation>
     </message>
     <message>
         <source>%1 matrices %2_i, %3 eigenvalues, plotted in the centre; click an eigenvalue to mark its map (its matrices in the Matrices dock).</source>
@@ -3757,39 +4240,39 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>Vertex limits</source>
-        <translation>Limitní polohy vrcholů</translation>
+        <translation type="vanished">Limitní polohy vrcholů</translation>
     </message>
     <message>
         <source>Vertex limits: the exact limit positions of the mesh&apos;s vertices, where its IFS with condensation starts. Drag the control points in the 3D view; click a purple diamond to analyse that extraordinary vertex.</source>
-        <translation>Limitní polohy vrcholů: přesné limitní polohy vrcholů sítě, z nichž vychází její IFS s kondenzací. Řídicí body přetáhněte ve 3D pohledu; kliknutím na fialový kosočtverec analyzujete příslušný mimořádný vrchol.</translation>
+        <translation type="vanished">Limitní polohy vrcholů: přesné limitní polohy vrcholů sítě, z nichž vychází její IFS s kondenzací. Řídicí body přetáhněte ve 3D pohledu; kliknutím na fialový kosočtverec analyzujete příslušný mimořádný vrchol.</translation>
     </message>
     <message>
         <source>For a mesh surface: the extraordinary vertex whose local subdivision matrix is analysed</source>
-        <translation>U plochy ze sítě: mimořádný vrchol, jehož lokální matice subdivize se analyzuje</translation>
+        <translation type="vanished">U plochy ze sítě: mimořádný vrchol, jehož lokální matice subdivize se analyzuje</translation>
     </message>
     <message>
         <source>Vertex:</source>
-        <translation>Vrchol:</translation>
+        <translation type="vanished">Vrchol:</translation>
     </message>
     <message>
         <source>(the mesh&apos;s matrices)</source>
-        <translation>(matice sítě)</translation>
+        <translation type="vanished">(matice sítě)</translation>
     </message>
     <message>
         <source>vertex %1 (n = %2)</source>
-        <translation>vrchol %1 (n = %2)</translation>
+        <translation type="vanished">vrchol %1 (n = %2)</translation>
     </message>
     <message>
         <source>centre of face %1 (n = %2)</source>
-        <translation>střed stěny %1 (n = %2)</translation>
+        <translation type="vanished">střed stěny %1 (n = %2)</translation>
     </message>
     <message>
         <source>centre of face %1 (missing)</source>
-        <translation>střed stěny %1 (chybí)</translation>
+        <translation type="vanished">střed stěny %1 (chybí)</translation>
     </message>
     <message>
         <source>vertex %1 (missing)</source>
-        <translation>vrchol %1 (chybí)</translation>
+        <translation type="vanished">vrchol %1 (chybí)</translation>
     </message>
 </context>
 <context>
@@ -4210,6 +4693,33 @@ Byla ponechána jako %2.</translation>
     </message>
 </context>
 <context>
+    <name>awb::StartSetText</name>
+    <message>
+        <source>&apos;%1&apos; is not a finite number</source>
+        <translation>„%1“ není konečné číslo</translation>
+    </message>
+    <message>
+        <source>a start set is written point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | vertex-limits, got &apos;%1&apos;</source>
+        <translation>počáteční množina se zapisuje point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | vertex-limits, zadáno „%1“</translation>
+    </message>
+    <message>
+        <source>a %1 needs %2 coordinates (%3 per point), got %4</source>
+        <translation>%1 potřebuje %2 souřadnic (%3 na bod), zadáno %4</translation>
+    </message>
+    <message>
+        <source>a multiple of %1</source>
+        <translation>násobek %1</translation>
+    </message>
+    <message>
+        <source>lifted: needs at least one point</source>
+        <translation>lifted: potřebuje alespoň jeden bod</translation>
+    </message>
+    <message>
+        <source>vertex-limits needs a mesh item; &apos;%1&apos; is a %2</source>
+        <translation>vertex-limits potřebuje položku sítě; „%1“ je %2</translation>
+    </message>
+</context>
+<context>
     <name>awb::StyleSpec</name>
     <message>
         <source>the density gamma must be between 0.2 and 10, got %1</source>
@@ -4396,7 +4906,19 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>the symbol follows from the mask: edit the mask</source>
-        <translation>symbol vyplývá z masky: upravte masku</translation>
+        <translation type="vanished">symbol vyplývá z masky: upravte masku</translation>
+    </message>
+    <message>
+        <source>Matrices S_i</source>
+        <translation>Matice S_i</translation>
+    </message>
+    <message>
+        <source>The subdivision matrices S_1 .. S_p, m x m with rows summing to 1; edited cell by cell in the Matrices dock</source>
+        <translation>Subdivizní matice S_1 .. S_p, rozměru m x m, součet každého řádku je 1; upravují se buňku po buňce v panelu Matice</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>Řídicí body</translation>
     </message>
 </context>
 <context>
@@ -4480,6 +5002,22 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>Attractor Workbench: item %1, %2 after %3 steps, every vertex at its limit position</source>
         <translation>Attractor Workbench: položka %1, %2 po %3 krocích, každý vrchol v limitní poloze</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>Vrcholy</translation>
+    </message>
+    <message>
+        <source>The mesh&apos;s vertices [x, y, z]: its control points</source>
+        <translation>Vrcholy sítě [x, y, z]: její řídicí body</translation>
+    </message>
+    <message>
+        <source>Faces</source>
+        <translation>Stěny</translation>
+    </message>
+    <message>
+        <source>Each face as the loop of its vertex numbers (0-based)</source>
+        <translation>Každá stěna jako cyklus čísel jejích vrcholů (číslovaných od 0)</translation>
     </message>
 </context>
 <context>
@@ -4603,6 +5141,22 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>Subdivision surface</source>
         <translation>Subdivizní plocha</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>Řídicí body</translation>
+    </message>
+    <message>
+        <source>Lattice coordinates</source>
+        <translation>Mřížové souřadnice</translation>
+    </message>
+    <message>
+        <source>Each control point&apos;s place [i, j] on the scheme&apos;s lattice</source>
+        <translation>Poloha [i, j] každého řídicího bodu na mříži schématu</translation>
+    </message>
+    <message>
+        <source>Maps used</source>
+        <translation>Použitá zobrazení</translation>
     </message>
 </context>
 <context>
@@ -5238,19 +5792,19 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>--start: &apos;%1&apos; is not a finite number</source>
-        <translation>--start: „%1“ není konečné číslo</translation>
+        <translation type="vanished">--start: „%1“ není konečné číslo</translation>
     </message>
     <message>
         <source>--start must be point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;..., got &apos;%1&apos;</source>
-        <translation>--start musí mít tvar point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;..., zadáno „%1“</translation>
+        <translation type="vanished">--start musí mít tvar point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;..., zadáno „%1“</translation>
     </message>
     <message>
         <source>--start %1 needs %2 coordinates (%3 per point), got %4</source>
-        <translation>--start %1: počet souřadnic musí být %2 (%3 na bod), zadáno %4</translation>
+        <translation type="vanished">--start %1: počet souřadnic musí být %2 (%3 na bod), zadáno %4</translation>
     </message>
     <message>
         <source>a multiple of %1</source>
-        <translation>násobek %1</translation>
+        <translation type="vanished">násobek %1</translation>
     </message>
     <message>
         <source>depth %1 gives %2 points, more than --max-points %3</source>
@@ -5322,7 +5876,7 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>depth %1 makes %2 images; at most 4e9 are rendered</source>
-        <translation>hloubka %1 dává %2 obrazů; vykresluje se nejvýše 4e9</translation>
+        <translation type="vanished">hloubka %1 dává %2 obrazů; vykresluje se nejvýše 4e9</translation>
     </message>
     <message>
         <source>--view must be AZ,EL in degrees with |EL| &lt;= 90, got &apos;%1&apos;</source>
@@ -5330,31 +5884,31 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>%1 random points</source>
-        <translation>%1 náhodných bodů</translation>
+        <translation type="vanished">%1 náhodných bodů</translation>
     </message>
     <message>
         <source>F^%1(X0)</source>
-        <translation>F^%1(X0)</translation>
+        <translation type="vanished">F^%1(X0)</translation>
     </message>
     <message>
         <source>, maps %1 of %2</source>
-        <translation>, zobrazení %1 z %2</translation>
+        <translation type="vanished">, zobrazení %1 z %2</translation>
     </message>
     <message>
         <source>%1: %2%3 — orthographic view from azimuth %4°, elevation %5°</source>
-        <translation>%1: %2%3 — ortografický pohled z azimutu %4°, elevace %5°</translation>
+        <translation type="vanished">%1: %2%3 — ortografický pohled z azimutu %4°, elevace %5°</translation>
     </message>
     <message>
         <source>%1: %2 random points</source>
-        <translation>%1: %2 náhodných bodů</translation>
+        <translation type="vanished">%1: %2 náhodných bodů</translation>
     </message>
     <message>
         <source>%1: F^%2(X0)</source>
-        <translation>%1: F^%2(X0)</translation>
+        <translation type="vanished">%1: F^%2(X0)</translation>
     </message>
     <message>
         <source>%1: polygon after %2 steps</source>
-        <translation>%1: polygon po kroku %2</translation>
+        <translation type="vanished">%1: polygon po kroku %2</translation>
     </message>
     <message>
         <source>Render an item&apos;s attractor (with its control polygons) to PNG, SVG or PDF.</source>
@@ -5514,7 +6068,7 @@ meze: %9
     </message>
     <message>
         <source>--start lifted: needs at least one point</source>
-        <translation>--start lifted: vyžaduje alespoň jeden bod</translation>
+        <translation type="vanished">--start lifted: vyžaduje alespoň jeden bod</translation>
     </message>
     <message>
         <source>cannot write to the standard output</source>
@@ -5646,7 +6200,7 @@ meze: %9
     </message>
     <message>
         <source>--start vertex-limits needs a mesh item; &apos;%1&apos; is a %2</source>
-        <translation>--start vertex-limits vyžaduje položku se sítí; „%1“ je typu %2</translation>
+        <translation type="vanished">--start vertex-limits vyžaduje položku se sítí; „%1“ je typu %2</translation>
     </message>
     <message>
         <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ).</source>
@@ -5894,15 +6448,15 @@ Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --he
     </message>
     <message>
         <source>--bits 16 writes PNG files, got &apos;%1&apos;</source>
-        <translation>--bits 16 zapisuje soubory PNG, zadáno „%1“</translation>
+        <translation type="vanished">--bits 16 zapisuje soubory PNG, zadáno „%1“</translation>
     </message>
     <message>
         <source>the raw density (.exr, --bits 16) counts an attractor&apos;s points; this item&apos;s figure is a polygon</source>
-        <translation>surová hustota (.exr, --bits 16) počítá body atraktoru; obrázek této položky je polygon</translation>
+        <translation type="vanished">surová hustota (.exr, --bits 16) počítá body atraktoru; obrázek této položky je polygon</translation>
     </message>
     <message>
         <source>the raw density (.exr, --bits 16) is of attractors drawn in the plane; &apos;%1&apos; is drawn in space</source>
-        <translation>surová hustota (.exr, --bits 16) je určena pro atraktory kreslené v rovině; „%1“ se kreslí v prostoru</translation>
+        <translation type="vanished">surová hustota (.exr, --bits 16) je určena pro atraktory kreslené v rovině; „%1“ se kreslí v prostoru</translation>
     </message>
     <message>
         <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit), or every flame of a flam3 genome (.flame, .flam3: flam3, Apophysis, JWildfire), as a fractal with control points. Non-linear variations are dropped with a warning.</source>
@@ -6057,7 +6611,7 @@ Commands:
 
 Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
 </source>
-        <translation>Použití: attractor-cli &lt;příkaz&gt; [volby]
+        <translation type="vanished">Použití: attractor-cli &lt;příkaz&gt; [volby]
 
 Příkazy:
   render     vykreslí položku projektu do PNG, SVG nebo PDF
@@ -6104,7 +6658,131 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     </message>
     <message>
         <source>the rendering was cancelled</source>
-        <translation>vykreslování bylo zrušeno</translation>
+        <translation type="vanished">vykreslování bylo zrušeno</translation>
+    </message>
+    <message>
+        <source>the project has no items</source>
+        <translation>projekt neobsahuje žádné položky</translation>
+    </message>
+    <message>
+        <source>no item called &quot;%1&quot;; the items: %2</source>
+        <translation>žádná položka se nejmenuje „%1“; položky: %2</translation>
+    </message>
+    <message>
+        <source>Set properties of an item and save the project (atomically: all of them or none), or list them. A value is typed as in the Properties dock: a number (3/8 and sqrt(3) too), a choice by its number, its word in the file or its text, true or false, a complex number as 0.5,0.3 or 0.5+0.3i; a structured value (points, matrices, a list) as JSON.</source>
+        <translation>Nastaví vlastnosti položky a uloží projekt (atomicky: buď všechny, nebo žádnou), nebo je vypíše. Hodnota se zadává stejně jako v panelu Vlastnosti: číslo (i 3/8 a sqrt(3)), volba svým číslem, svým slovem v souboru nebo svým textem, true nebo false, komplexní číslo jako 0.5,0.3 nebo 0.5+0.3i; strukturovaná hodnota (body, matice, seznam) jako JSON.</translation>
+    </message>
+    <message>
+        <source>Properties to set, in order.</source>
+        <translation>Vlastnosti, které se mají nastavit, v daném pořadí.</translation>
+    </message>
+    <message>
+        <source>The item (default: the first).</source>
+        <translation>Položka (výchozí: první).</translation>
+    </message>
+    <message>
+        <source>List the item&apos;s properties: key, type, value, range and choices.</source>
+        <translation>Vypíše vlastnosti položky: klíč, typ, hodnotu, rozsah a možnosti volby.</translation>
+    </message>
+    <message>
+        <source>With --list: as JSON.</source>
+        <translation>S --list: jako JSON.</translation>
+    </message>
+    <message>
+        <source>expected a project file; see --help</source>
+        <translation>očekáván projektový soubor; viz --help</translation>
+    </message>
+    <message>
+        <source>--list takes no key=value</source>
+        <translation>--list nepřijímá žádné key=value</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>(shown, not set)</source>
+        <translation>(jen zobrazeno, nelze nastavit)</translation>
+    </message>
+    <message>
+        <source>nothing to set: give key=value (or --list)</source>
+        <translation>není co nastavit: zadejte key=value (nebo --list)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not key=value</source>
+        <translation>„%1“ nemá tvar key=value</translation>
+    </message>
+    <message>
+        <source>render an item of a project to PNG, SVG or PDF</source>
+        <translation>vykreslí položku projektu do PNG, SVG nebo PDF</translation>
+    </message>
+    <message>
+        <source>render the frames of an item&apos;s animation (PNG files, MP4/GIF)</source>
+        <translation>vykreslí snímky animace položky (soubory PNG, MP4/GIF)</translation>
+    </message>
+    <message>
+        <source>eigenvalues, contractivity, fixed points, dimension (JSON)</source>
+        <translation>vlastní čísla, kontraktivita, pevné body, dimenze (JSON)</translation>
+    </message>
+    <message>
+        <source>the points of F^k(X0) as CSV</source>
+        <translation>body F^k(X0) jako CSV</translation>
+    </message>
+    <message>
+        <source>set an item&apos;s properties and save, or list them</source>
+        <translation>nastaví vlastnosti položky a uloží projekt, nebo je vypíše</translation>
+    </message>
+    <message>
+        <source>validate a project file</source>
+        <translation>ověří soubor projektu</translation>
+    </message>
+    <message>
+        <source>load and save a project in canonical form</source>
+        <translation>načte a uloží projekt v kanonickém tvaru</translation>
+    </message>
+    <message>
+        <source>points (PLY), a net or mesh (OBJ), maps (.ifs), matrices (MATLAB)</source>
+        <translation>body (PLY), řídicí síť nebo síť (OBJ), zobrazení (.ifs), matice (MATLAB)</translation>
+    </message>
+    <message>
+        <source>the control polygon after K subdivision steps (JSON)</source>
+        <translation>řídicí polygon po K krocích subdivize (JSON)</translation>
+    </message>
+    <message>
+        <source>another tool&apos;s IFS file (Fractint .ifs) as a project</source>
+        <translation>soubor IFS jiného nástroje (Fractint .ifs) jako projekt</translation>
+    </message>
+    <message>
+        <source>a mesh file (OBJ, OFF, PLY) as a project with a mesh item</source>
+        <translation>soubor sítě (OBJ, OFF, PLY) jako projekt s položkou sítě</translation>
+    </message>
+    <message>
+        <source>lambda, mu, Reif&apos;s C1 verdict per valence (Catmull-Clark, Loop)</source>
+        <translation>lambda, mu, Reifův verdikt C1 pro každou valenci (Catmull-Clark, Loop)</translation>
+    </message>
+    <message>
+        <source>where a scheme is C^k as a parameter moves</source>
+        <translation>kde je schéma třídy C^k při změně parametru</translation>
+    </message>
+    <message>
+        <source>re-check the certificate of an exact Hölder exponent</source>
+        <translation>znovu ověří certifikát přesného Hölderova exponentu</translation>
+    </message>
+    <message>
+        <source>render the built-in paper figures (000 Figs. 2, 3, 5) to PNG</source>
+        <translation>vykreslí vestavěné obrázky z článku (000 obr. 2, 3, 5) do PNG</translation>
+    </message>
+    <message>
+        <source>Usage: attractor-cli &lt;command&gt; [options]</source>
+        <translation>Použití: attractor-cli &lt;příkaz&gt; [volby]</translation>
+    </message>
+    <message>
+        <source>Commands:</source>
+        <translation>Příkazy:</translation>
+    </message>
+    <message>
+        <source>Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.</source>
+        <translation>Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.</translation>
     </message>
 </context>
 <context>

@@ -948,6 +948,142 @@
         <source>the start set &quot;vertex-limits&quot; (the limit positions of a mesh&apos;s vertices) is for mesh items only; this item: %1</source>
         <translation>l’ensemble initial &quot;vertex-limits&quot; (les positions limites des sommets d’un maillage) est réservé aux éléments maillage&#x202f;; cet élément&#xa0;: %1</translation>
     </message>
+    <message>
+        <source>Point</source>
+        <translation>Point</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>Segment</translation>
+    </message>
+    <message>
+        <source>Triangle</source>
+        <translation>Triangle</translation>
+    </message>
+    <message>
+        <source>Polygon</source>
+        <translation>Polygone</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Points</translation>
+    </message>
+    <message>
+        <source>Lifted points</source>
+        <translation>Points relevés</translation>
+    </message>
+    <message>
+        <source>Vertex limits</source>
+        <translation>Positions limites des sommets</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Type</translation>
+    </message>
+    <message>
+        <source>Start set X0</source>
+        <translation>Ensemble initial X0</translation>
+    </message>
+    <message>
+        <source>The set X0 deterministic iteration starts from; drag its vertices in the attractor view. Lifted points are points of the lifted space of 000 §2; vertex limits, a mesh&apos;s vertices&apos; limit positions.</source>
+        <translation>L’ensemble X0 dont part l’itération déterministe&#x202f;; faites glisser ses sommets dans la vue de l’attracteur. Les points relevés sont des points de l’espace relevé de 000 §2&#x202f;; les positions limites des sommets, celles des sommets d’un maillage.</translation>
+    </message>
+    <message>
+        <source>The item has no control points.</source>
+        <translation>L’élément n’a pas de points de contrôle.</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>Sommets</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a number.</source>
+        <translation>«&#xa0;%1&#xa0;» n’est pas un nombre.</translation>
+    </message>
+    <message>
+        <source>Lifted</source>
+        <translation>Relevés</translation>
+    </message>
+    <message>
+        <source>Points of the lifted space of 000 §2: x, y, then the extra coordinates of the lifting, the homogeneous 1 implied. Commas between coordinates, &apos;;&apos; between points.</source>
+        <translation>Points de l’espace relevé de 000 §2&#xa0;: x, y, puis les coordonnées supplémentaires du relèvement, le 1 homogène étant implicite. Des virgules entre les coordonnées, «&#x202f;;&#xa0;» entre les points.</translation>
+    </message>
+    <message>
+        <source>Deterministic</source>
+        <translation>Déterministe</translation>
+    </message>
+    <message>
+        <source>Random (chaos game)</source>
+        <translation>Aléatoire (jeu du chaos)</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Mode</translation>
+    </message>
+    <message>
+        <source>Algorithm</source>
+        <translation>Algorithme</translation>
+    </message>
+    <message>
+        <source>Deterministic iteration draws F^k(X0) at the depth k; random iteration plays the chaos game with the samples</source>
+        <translation>L’itération déterministe trace F^k(X0) à la profondeur k&#x202f;; l’itération aléatoire joue au jeu du chaos avec les échantillons</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Profondeur</translation>
+    </message>
+    <message>
+        <source>The level k of F^k(X0): N^k images of the start set, at most 2^31</source>
+        <translation>Le niveau k de F^k(X0)&#xa0;: N^k images de l’ensemble initial, au plus 2^31</translation>
+    </message>
+    <message>
+        <source>Samples</source>
+        <translation>Échantillons</translation>
+    </message>
+    <message>
+        <source>Points of the chaos game</source>
+        <translation>Nombre de points du jeu du chaos</translation>
+    </message>
+    <message>
+        <source>Probabilities</source>
+        <translation>Probabilités</translation>
+    </message>
+    <message>
+        <source>One weight per map for the chaos game; none: uniform</source>
+        <translation>Un poids par application pour le jeu du chaos&#x202f;; aucun&#xa0;: uniforme</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>Graine</translation>
+    </message>
+    <message>
+        <source>The chaos game&apos;s random stream: the same seed, the same picture</source>
+        <translation>Le flux aléatoire du jeu du chaos&#xa0;: même graine, même image</translation>
+    </message>
+    <message>
+        <source>%1 has no point set %2</source>
+        <translation>%1 n’a pas d’ensemble de points %2</translation>
+    </message>
+    <message>
+        <source>%1: its scheme fixes the number of points at %2, got %3</source>
+        <translation>%1&#xa0;: son schéma fixe le nombre de points à %2 (reçu&#xa0;: %3)</translation>
+    </message>
+    <message>
+        <source>%1: %2 points is more than the %3 a point set may have</source>
+        <translation>%1&#xa0;: %2 points, c’est plus que les %3 qu’un ensemble de points peut contenir</translation>
+    </message>
+    <message>
+        <source>every point must have finite coordinates</source>
+        <translation>tous les points doivent avoir des coordonnées finies</translation>
+    </message>
+    <message>
+        <source>Set the points of %1</source>
+        <translation>Définir les points de %1</translation>
+    </message>
+    <message>
+        <source>the points of %1 were refused</source>
+        <translation>les points de %1 ont été refusés</translation>
+    </message>
 </context>
 <context>
     <name>awb::AttractorRenderer</name>
@@ -1029,6 +1165,18 @@
         <source>BCIFS junction curve</source>
         <translation>Courbe de jonction BCIFS</translation>
     </message>
+    <message>
+        <source>Left cubic</source>
+        <translation>Cubique gauche</translation>
+    </message>
+    <message>
+        <source>Right quadratic</source>
+        <translation>Quadratique droite</translation>
+    </message>
+    <message>
+        <source>Handles</source>
+        <translation>Poignées</translation>
+    </message>
 </context>
 <context>
     <name>awb::BezierUnionItem</name>
@@ -1038,7 +1186,7 @@
     </message>
     <message>
         <source>%1 split parameters for %2 curves</source>
-        <translation>%1 paramètres de découpe pour %2 courbes</translation>
+        <translation type="vanished">%1 paramètres de découpe pour %2 courbes</translation>
     </message>
     <message>
         <source>Change Bézier union %1</source>
@@ -1062,7 +1210,7 @@
     </message>
     <message>
         <source>missing</source>
-        <translation>manquant</translation>
+        <translation type="vanished">manquant</translation>
     </message>
     <message>
         <source>expected a non-empty array of curves {&quot;control_points&quot;: [...], &quot;u&quot;: number}</source>
@@ -1100,6 +1248,14 @@
         <source>Union of Bézier curves</source>
         <translation>Union de courbes de Bézier</translation>
     </message>
+    <message>
+        <source>Curves</source>
+        <translation>Courbes</translation>
+    </message>
+    <message>
+        <source>Each curve&apos;s control points and split parameter u</source>
+        <translation>Les points de contrôle et le paramètre de découpe u de chaque courbe</translation>
+    </message>
 </context>
 <context>
     <name>awb::BezierUnionSpec</name>
@@ -1110,6 +1266,10 @@
     <message>
         <source>the split parameter u = %1 must satisfy 0 &lt; u &lt; 1 (002 §3)</source>
         <translation>le paramètre de découpe u = %1 doit vérifier 0 &lt; u &lt; 1 (002 §3)</translation>
+    </message>
+    <message>
+        <source>%1 split parameters for %2 curves</source>
+        <translation>%1 paramètres de découpe pour %2 courbes</translation>
     </message>
 </context>
 <context>
@@ -1196,6 +1356,14 @@
         <source>Controlled IFS</source>
         <translation>IFS contrôlé</translation>
     </message>
+    <message>
+        <source>Fern of gaskets (003 Fig. 4)</source>
+        <translation>Fougère de triangles de Sierpiński (003 Fig. 4)</translation>
+    </message>
+    <message>
+        <source>Frame</source>
+        <translation>Repère</translation>
+    </message>
 </context>
 <context>
     <name>awb::CifsSpec</name>
@@ -1224,7 +1392,7 @@
     </message>
     <message>
         <source>missing</source>
-        <translation>manquant</translation>
+        <translation type="vanished">manquant</translation>
     </message>
     <message>
         <source>expected [re, im]</source>
@@ -1244,11 +1412,15 @@
     </message>
     <message>
         <source>&quot;%1&quot; is not a valid value for %2</source>
-        <translation>«&#xa0;%1&#xa0;» n’est pas une valeur valide pour %2</translation>
+        <translation type="vanished">«&#xa0;%1&#xa0;» n’est pas une valeur valide pour %2</translation>
     </message>
     <message>
         <source>Complex Bézier curve</source>
         <translation>Courbe de Bézier complexe</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>Points de contrôle</translation>
     </message>
 </context>
 <context>
@@ -1402,6 +1574,62 @@
         <source>expected a vertex or face number (0-based)</source>
         <translation>numéro de sommet ou de face attendu (numéroté à partir de 0)</translation>
     </message>
+    <message>
+        <source>(none)</source>
+        <translation>(aucun)</translation>
+    </message>
+    <message>
+        <source>%1 (missing)</source>
+        <translation>%1 (manquant)</translation>
+    </message>
+    <message>
+        <source>(the mesh&apos;s matrices)</source>
+        <translation>(les matrices du maillage)</translation>
+    </message>
+    <message>
+        <source>vertex %1 (n = %2)</source>
+        <translation>sommet %1 (n = %2)</translation>
+    </message>
+    <message>
+        <source>centre of face %1 (n = %2)</source>
+        <translation>centre de la face %1 (n = %2)</translation>
+    </message>
+    <message>
+        <source>centre of face %1 (missing)</source>
+        <translation>centre de la face %1 (manquant)</translation>
+    </message>
+    <message>
+        <source>vertex %1 (missing)</source>
+        <translation>sommet %1 (manquant)</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Source</translation>
+    </message>
+    <message>
+        <source>The item whose matrices are analysed</source>
+        <translation>L’élément dont les matrices sont analysées</translation>
+    </message>
+    <message>
+        <source>Matrices</source>
+        <translation>Matrices</translation>
+    </message>
+    <message>
+        <source>S_i: the subdivision matrices (their eigenvalue 1 is affine invariance); A_i: the linear parts of the lifted maps, whose subdominant eigenvalue decides the tangents; M_i: the lifted maps themselves (003 §4, 004 §2.1)</source>
+        <translation>S_i&#xa0;: les matrices de subdivision (leur valeur propre 1 traduit l’invariance affine)&#x202f;; A_i&#xa0;: les parties linéaires des applications relevées, dont la valeur propre sous-dominante détermine les tangentes&#x202f;; M_i&#xa0;: les applications relevées elles-mêmes (003 §4, 004 §2.1)</translation>
+    </message>
+    <message>
+        <source>Vertex</source>
+        <translation>Sommet</translation>
+    </message>
+    <message>
+        <source>Face</source>
+        <translation>Face</translation>
+    </message>
+    <message>
+        <source>For a mesh surface: the extraordinary vertex whose local subdivision matrix is analysed</source>
+        <translation>Pour une surface de maillage&#xa0;: le sommet extraordinaire dont la matrice de subdivision locale est analysée</translation>
+    </message>
 </context>
 <context>
     <name>awb::ExactCurve</name>
@@ -1525,6 +1753,10 @@
     <message>
         <source>&quot;%1&quot; is not a number (a fraction such as &quot;3/8&quot; or an expression such as &quot;(1 + sqrt(3))/8&quot; is)</source>
         <translation>&quot;%1&quot; n&apos;est pas un nombre (une fraction comme &quot;3/8&quot; ou une expression comme &quot;(1 + sqrt(3))/8&quot; en est un)</translation>
+    </message>
+    <message>
+        <source>expected true or false</source>
+        <translation>true ou false attendu</translation>
     </message>
 </context>
 <context>
@@ -1895,6 +2127,26 @@
         <source>map %1 is not a map of the plane or of space like the first</source>
         <translation>l’application %1 n’est pas une application du plan ou de l’espace de même dimension que la première</translation>
     </message>
+    <message>
+        <source>Maps</source>
+        <translation>Applications</translation>
+    </message>
+    <message>
+        <source>x ↦ x A + b: {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]} each, or 3 x 3 and 3 numbers in space</source>
+        <translation>x ↦ x A + b&#xa0;: chacune sous la forme {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]}, ou 3 x 3 et 3 nombres dans l’espace</translation>
+    </message>
+    <message>
+        <source>Reference points</source>
+        <translation>Points de référence</translation>
+    </message>
+    <message>
+        <source>The points the S_i are built for (S_i R = f_i(R)); none: the control points themselves</source>
+        <translation>Les points pour lesquels les S_i sont construites (S_i R = f_i(R))&#x202f;; aucun&#xa0;: les points de contrôle eux-mêmes</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>Points de contrôle</translation>
+    </message>
 </context>
 <context>
     <name>awb::IfsExchange</name>
@@ -1971,6 +2223,166 @@
         <source>there is not enough memory to compute it</source>
         <translation>la mémoire est insuffisante pour le calculer</translation>
     </message>
+    <message>
+        <source>Name</source>
+        <translation>Nom</translation>
+    </message>
+    <message>
+        <source>By map</source>
+        <translation>Par application</translation>
+    </message>
+    <message>
+        <source>By address prefix</source>
+        <translation>Par préfixe d’adresse</translation>
+    </message>
+    <message>
+        <source>Single colour</source>
+        <translation>Couleur unique</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Couleur</translation>
+    </message>
+    <message>
+        <source>Style</source>
+        <translation>Style</translation>
+    </message>
+    <message>
+        <source>The attractor&apos;s colours: by the map that made each point, by the first symbols of its address, or one colour</source>
+        <translation>Les couleurs de l’attracteur&#xa0;: selon l’application qui a produit chaque point, selon les premiers symboles de son adresse, ou une seule couleur</translation>
+    </message>
+    <message>
+        <source>Prefix length</source>
+        <translation>Longueur du préfixe</translation>
+    </message>
+    <message>
+        <source>Colour by address: how many of its first symbols pick the colour</source>
+        <translation>Couleur par adresse&#xa0;: nombre de premiers symboles de l’adresse qui déterminent la couleur</translation>
+    </message>
+    <message>
+        <source>Point size</source>
+        <translation>Taille des points</translation>
+    </message>
+    <message>
+        <source>Points of the attractor, in pixels</source>
+        <translation>Taille des points de l’attracteur, en pixels</translation>
+    </message>
+    <message>
+        <source>expected an array of &quot;#rrggbb&quot; strings</source>
+        <translation>tableau de chaînes &quot;#rrggbb&quot; attendu</translation>
+    </message>
+    <message>
+        <source>expected a string &quot;#rrggbb&quot;</source>
+        <translation>chaîne &quot;#rrggbb&quot; attendue</translation>
+    </message>
+    <message>
+        <source>Palette</source>
+        <translation>Palette</translation>
+    </message>
+    <message>
+        <source>Own colours, one per map or address prefix (&quot;#rrggbb&quot;); none: the views&apos; palette</source>
+        <translation>Couleurs personnalisées, une par application ou préfixe d’adresse (&quot;#rrggbb&quot;)&#x202f;; aucune&#xa0;: la palette des vues</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatique</translation>
+    </message>
+    <message>
+        <source>Hits</source>
+        <translation>Impacts</translation>
+    </message>
+    <message>
+        <source>Density</source>
+        <translation>Densité</translation>
+    </message>
+    <message>
+        <source>Tone</source>
+        <translation>Rendu tonal</translation>
+    </message>
+    <message>
+        <source>Hits: every pixel the attractor reaches (the papers&apos; look); density: the invariant measure by log density; automatic: hits for deterministic, density for random iteration</source>
+        <translation>Impacts&#xa0;: chaque pixel atteint par l’attracteur (l’aspect des articles)&#x202f;; densité&#xa0;: la mesure invariante en densité logarithmique&#x202f;; automatique&#xa0;: impacts pour l’itération déterministe, densité pour l’itération aléatoire</translation>
+    </message>
+    <message>
+        <source>Gamma</source>
+        <translation>Gamma</translation>
+    </message>
+    <message>
+        <source>Gamma of the density tone</source>
+        <translation>Gamma du rendu en densité</translation>
+    </message>
+    <message>
+        <source>Animation</source>
+        <translation>Animation</translation>
+    </message>
+    <message>
+        <source>%1 is outside the range from %2 to %3</source>
+        <translation>%1 est hors de l’intervalle de %2 à %3</translation>
+    </message>
+    <message>
+        <source>%1 must be a finite number</source>
+        <translation>%1 doit être un nombre fini</translation>
+    </message>
+    <message>
+        <source>%1 must be at least %2 and at most %3, not %4</source>
+        <translation>%1 doit valoir au moins %2 et au plus %3, et non %4</translation>
+    </message>
+    <message>
+        <source>%1 must be at least %2, not %3</source>
+        <translation>%1 doit valoir au moins %2, et non %3</translation>
+    </message>
+    <message>
+        <source>%1 must be at most %2, not %3</source>
+        <translation>%1 doit valoir au plus %2, et non %3</translation>
+    </message>
+    <message>
+        <source>expected [re, im] or a number</source>
+        <translation>[re, im] ou nombre attendu</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not %3</source>
+        <translation>%1&#xa0;: «&#xa0;%2&#xa0;» n’est pas %3</translation>
+    </message>
+    <message>
+        <source>a JSON value (%1)</source>
+        <translation>une valeur JSON (%1)</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>un nombre</translation>
+    </message>
+    <message>
+        <source>a whole number</source>
+        <translation>un nombre entier</translation>
+    </message>
+    <message>
+        <source>one of %1 (or its number from 0)</source>
+        <translation>l’une des valeurs %1 (ou son numéro à partir de 0)</translation>
+    </message>
+    <message>
+        <source>a complex number (&quot;0.5,0.3&quot; or &quot;0.5+0.3i&quot;)</source>
+        <translation>un nombre complexe (&quot;0.5,0.3&quot; ou &quot;0.5+0.3i&quot;)</translation>
+    </message>
+    <message>
+        <source>true or false</source>
+        <translation>true ou false</translation>
+    </message>
+    <message>
+        <source>an item&apos;s type cannot change (%1 to %2): add a new item</source>
+        <translation>le type d’un élément ne peut pas changer (%1 en %2)&#xa0;: ajoutez un nouvel élément</translation>
+    </message>
+    <message>
+        <source>children are items of their own: add, remove or update them</source>
+        <translation>les éléments enfants sont des éléments à part entière&#xa0;: ajoutez-les, supprimez-les ou mettez-les à jour séparément</translation>
+    </message>
+    <message>
+        <source>Update %1</source>
+        <translation>Mettre à jour %1</translation>
+    </message>
+    <message>
+        <source>%1 is shown, not edited</source>
+        <translation>%1&#xa0;: affichage seul, non modifiable</translation>
+    </message>
 </context>
 <context>
     <name>awb::ItemAddress</name>
@@ -2027,15 +2439,15 @@
     </message>
     <message>
         <source>Regularity: does not apply (%1)</source>
-        <translation>Régularité&#xa0;: sans objet (%1)</translation>
+        <translation type="vanished">Régularité&#xa0;: sans objet (%1)</translation>
     </message>
     <message>
         <source>complex de Casteljau parameter</source>
-        <translation>paramètre de de Casteljau complexe</translation>
+        <translation type="vanished">paramètre de de Casteljau complexe</translation>
     </message>
     <message>
         <source>the scheme&apos;s parameters are refused</source>
-        <translation>les paramètres du schéma sont refusés</translation>
+        <translation type="vanished">les paramètres du schéma sont refusés</translation>
     </message>
     <message>
         <source>Changing %1 (%2, %3) from %4 to %5 makes row %2 sum to %6, not 1: the rows of a subdivision matrix are affine combinations.
@@ -2132,6 +2544,65 @@ Retrancher la différence %7 du coefficient de la colonne %8 (%9 → %10) pour q
     <message>
         <source>No certificate was saved: %1</source>
         <translation>Aucun certificat n&apos;a été enregistré&#xa0;: %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ItemFigure</name>
+    <message>
+        <source>the 16-bit density is written to PNG files, got &apos;%1&apos;</source>
+        <translation>la densité 16 bits s’écrit dans des fichiers PNG, reçu « %1 »</translation>
+    </message>
+    <message>
+        <source>the raw density (.exr, 16-bit PNG) counts an attractor&apos;s points; this item&apos;s figure is a polygon</source>
+        <translation>la densité brute (.exr, PNG 16 bits) compte les points d’un attracteur ; la figure de cet élément est un polygone</translation>
+    </message>
+    <message>
+        <source>the rendering was cancelled</source>
+        <translation>le rendu a été annulé</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos;: %2</source>
+        <translation>élément «&#xa0;%1&#xa0;»&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>depth %1 makes %2 images; at most 4e9 are rendered</source>
+        <translation>la profondeur %1 produit %2 images&#x202f;; 4e9 au plus sont rendues</translation>
+    </message>
+    <message>
+        <source>the raw density (.exr, 16-bit PNG) is of attractors drawn in the plane; &apos;%1&apos; is drawn in space</source>
+        <translation>la densité brute (.exr, PNG 16 bits) concerne les attracteurs tracés dans le plan ; « %1 » est tracé dans l’espace</translation>
+    </message>
+    <message>
+        <source>the view must be azimuth and elevation in degrees with |elevation| &lt;= 90, got %1, %2</source>
+        <translation>la vue doit être un azimut et une élévation en degrés avec |élévation| &lt;= 90, reçu %1, %2</translation>
+    </message>
+    <message>
+        <source>%1 random points</source>
+        <translation>%1 points aléatoires</translation>
+    </message>
+    <message>
+        <source>F^%1(X0)</source>
+        <translation>F^%1(X0)</translation>
+    </message>
+    <message>
+        <source>, maps %1 of %2</source>
+        <translation>, applications %1 sur %2</translation>
+    </message>
+    <message>
+        <source>%1: %2%3 — orthographic view from azimuth %4°, elevation %5°</source>
+        <translation>%1&#xa0;: %2%3 — vue orthographique depuis l’azimut %4°, élévation %5°</translation>
+    </message>
+    <message>
+        <source>%1: %2 random points</source>
+        <translation>%1&#xa0;: %2 points aléatoires</translation>
+    </message>
+    <message>
+        <source>%1: F^%2(X0)</source>
+        <translation>%1&#xa0;: F^%2(X0)</translation>
+    </message>
+    <message>
+        <source>%1: polygon after %2 steps</source>
+        <translation>%1&#xa0;: polygone après %2 étapes</translation>
     </message>
 </context>
 <context>
@@ -3099,7 +3570,7 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>expected true or false</source>
-        <translation>true ou false attendu</translation>
+        <translation type="vanished">true ou false attendu</translation>
     </message>
     <message>
         <source>expected an array of sign rules</source>
@@ -3151,7 +3622,7 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>Position of new point %1 along the edge (001 eq. (1))</source>
-        <translation>Position du nouveau point %1 le long de l’arête (001 éq. (1))</translation>
+        <translation type="vanished">Position du nouveau point %1 le long de l’arête (001 éq. (1))</translation>
     </message>
     <message>
         <source>β%1</source>
@@ -3159,7 +3630,19 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>Displacement of new point %1 along the normal</source>
-        <translation>Déplacement du nouveau point %1 le long de la normale</translation>
+        <translation type="vanished">Déplacement du nouveau point %1 le long de la normale</translation>
+    </message>
+    <message>
+        <source>Signs of β</source>
+        <translation>Signes de β</translation>
+    </message>
+    <message>
+        <source>How the sign of β alternates: &quot;constant&quot;, &quot;edge-alternating&quot;, &quot;level-edge-alternating&quot; or &quot;level-alternating&quot;; none, one, or one per rule</source>
+        <translation>Comment le signe de β alterne&#xa0;: &quot;constant&quot;, &quot;edge-alternating&quot;, &quot;level-edge-alternating&quot; ou &quot;level-alternating&quot;&#x202f;; aucun, un seul, ou un par règle</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>Points de contrôle</translation>
     </message>
 </context>
 <context>
@@ -3504,11 +3987,11 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>&amp;Name:</source>
-        <translation>&amp;Nom&#xa0;:</translation>
+        <translation type="vanished">&amp;Nom&#xa0;:</translation>
     </message>
     <message>
         <source>The name is empty or already taken.</source>
-        <translation>Le nom est vide ou déjà utilisé.</translation>
+        <translation type="vanished">Le nom est vide ou déjà utilisé.</translation>
     </message>
     <message>
         <source>Parameters</source>
@@ -3524,111 +4007,111 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>Start set X0</source>
-        <translation>Ensemble initial X0</translation>
+        <translation type="vanished">Ensemble initial X0</translation>
     </message>
     <message>
         <source>Point</source>
-        <translation>Point</translation>
+        <translation type="vanished">Point</translation>
     </message>
     <message>
         <source>Segment</source>
-        <translation>Segment</translation>
+        <translation type="vanished">Segment</translation>
     </message>
     <message>
         <source>Triangle</source>
-        <translation>Triangle</translation>
+        <translation type="vanished">Triangle</translation>
     </message>
     <message>
         <source>Polygon</source>
-        <translation>Polygone</translation>
+        <translation type="vanished">Polygone</translation>
     </message>
     <message>
         <source>Points</source>
-        <translation>Points</translation>
+        <translation type="vanished">Points</translation>
     </message>
     <message>
         <source>Lifted points</source>
-        <translation>Points relevés</translation>
+        <translation type="vanished">Points relevés</translation>
     </message>
     <message>
         <source>Kind:</source>
-        <translation>Type&#xa0;:</translation>
+        <translation type="vanished">Type&#xa0;:</translation>
     </message>
     <message>
         <source>Drag its vertices in the attractor view.</source>
-        <translation>Faites glisser ses sommets dans la vue de l’attracteur.</translation>
+        <translation type="vanished">Faites glisser ses sommets dans la vue de l’attracteur.</translation>
     </message>
     <message>
         <source>Points of the lifted space of 000 §2: x, y, then the extra coordinates of the lifting, the homogeneous 1 implied. Commas between coordinates, &apos;;&apos; between points.</source>
-        <translation>Points de l’espace relevé de 000 §2&#xa0;: x, y, puis les coordonnées supplémentaires du relèvement, le 1 homogène étant implicite. Des virgules entre les coordonnées, «&#x202f;;&#xa0;» entre les points.</translation>
+        <translation type="vanished">Points de l’espace relevé de 000 §2&#xa0;: x, y, puis les coordonnées supplémentaires du relèvement, le 1 homogène étant implicite. Des virgules entre les coordonnées, «&#x202f;;&#xa0;» entre les points.</translation>
     </message>
     <message>
         <source>Lifted:</source>
-        <translation>Relevés&#xa0;:</translation>
+        <translation type="vanished">Relevés&#xa0;:</translation>
     </message>
     <message>
         <source>The start set was refused.</source>
-        <translation>L’ensemble initial a été refusé.</translation>
+        <translation type="vanished">L’ensemble initial a été refusé.</translation>
     </message>
     <message>
         <source>The item has no control points.</source>
-        <translation>L’élément n’a pas de points de contrôle.</translation>
+        <translation type="vanished">L’élément n’a pas de points de contrôle.</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a number.</source>
-        <translation>«&#xa0;%1&#xa0;» n’est pas un nombre.</translation>
+        <translation type="vanished">«&#xa0;%1&#xa0;» n’est pas un nombre.</translation>
     </message>
     <message>
         <source>Algorithm</source>
-        <translation>Algorithme</translation>
+        <translation type="vanished">Algorithme</translation>
     </message>
     <message>
         <source>Deterministic</source>
-        <translation>Déterministe</translation>
+        <translation type="vanished">Déterministe</translation>
     </message>
     <message>
         <source>Random (chaos game)</source>
-        <translation>Aléatoire (jeu du chaos)</translation>
+        <translation type="vanished">Aléatoire (jeu du chaos)</translation>
     </message>
     <message>
         <source>Mode:</source>
-        <translation>Mode&#xa0;:</translation>
+        <translation type="vanished">Mode&#xa0;:</translation>
     </message>
     <message>
         <source>Depth:</source>
-        <translation>Profondeur&#xa0;:</translation>
+        <translation type="vanished">Profondeur&#xa0;:</translation>
     </message>
     <message>
         <source>Samples:</source>
-        <translation>Échantillons&#xa0;:</translation>
+        <translation type="vanished">Échantillons&#xa0;:</translation>
     </message>
     <message>
         <source>Style</source>
-        <translation>Style</translation>
+        <translation type="vanished">Style</translation>
     </message>
     <message>
         <source>By map</source>
-        <translation>Par application</translation>
+        <translation type="vanished">Par application</translation>
     </message>
     <message>
         <source>By address prefix</source>
-        <translation>Par préfixe d’adresse</translation>
+        <translation type="vanished">Par préfixe d’adresse</translation>
     </message>
     <message>
         <source>Single colour</source>
-        <translation>Couleur unique</translation>
+        <translation type="vanished">Couleur unique</translation>
     </message>
     <message>
         <source>Colour:</source>
-        <translation>Couleur&#xa0;:</translation>
+        <translation type="vanished">Couleur&#xa0;:</translation>
     </message>
     <message>
         <source>Prefix length:</source>
-        <translation>Longueur du préfixe&#xa0;:</translation>
+        <translation type="vanished">Longueur du préfixe&#xa0;:</translation>
     </message>
     <message>
         <source>Point size:</source>
-        <translation>Taille des points&#xa0;:</translation>
+        <translation type="vanished">Taille des points&#xa0;:</translation>
     </message>
     <message>
         <source>Control points</source>
@@ -3696,31 +4179,31 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>Eigenvalues</source>
-        <translation>Valeurs propres</translation>
+        <translation type="vanished">Valeurs propres</translation>
     </message>
     <message>
         <source>The item whose matrices are analysed</source>
-        <translation>L’élément dont les matrices sont analysées</translation>
+        <translation type="vanished">L’élément dont les matrices sont analysées</translation>
     </message>
     <message>
         <source>S_i: the subdivision matrices (their eigenvalue 1 is affine invariance); A_i: the linear parts of the lifted maps, whose subdominant eigenvalue decides the tangents; M_i: the lifted maps themselves (003 §4, 004 §2.1)</source>
-        <translation>S_i&#xa0;: les matrices de subdivision (leur valeur propre 1 traduit l’invariance affine)&#x202f;; A_i&#xa0;: les parties linéaires des applications relevées, dont la valeur propre sous-dominante détermine les tangentes&#x202f;; M_i&#xa0;: les applications relevées elles-mêmes (003 §4, 004 §2.1)</translation>
+        <translation type="vanished">S_i&#xa0;: les matrices de subdivision (leur valeur propre 1 traduit l’invariance affine)&#x202f;; A_i&#xa0;: les parties linéaires des applications relevées, dont la valeur propre sous-dominante détermine les tangentes&#x202f;; M_i&#xa0;: les applications relevées elles-mêmes (003 §4, 004 §2.1)</translation>
     </message>
     <message>
         <source>Source:</source>
-        <translation>Source&#xa0;:</translation>
+        <translation type="vanished">Source&#xa0;:</translation>
     </message>
     <message>
         <source>Matrices:</source>
-        <translation>Matrices&#xa0;:</translation>
+        <translation type="vanished">Matrices&#xa0;:</translation>
     </message>
     <message>
         <source>(none)</source>
-        <translation>(aucun)</translation>
+        <translation type="vanished">(aucun)</translation>
     </message>
     <message>
         <source>%1 (missing)</source>
-        <translation>%1 (manquant)</translation>
+        <translation type="vanished">%1 (manquant)</translation>
     </message>
     <message>
         <source>%1: %2</source>
@@ -3728,19 +4211,19 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>Depth</source>
-        <translation>Profondeur</translation>
+        <translation type="vanished">Profondeur</translation>
     </message>
     <message>
         <source>Samples</source>
-        <translation>Échantillons</translation>
+        <translation type="vanished">Échantillons</translation>
     </message>
     <message>
         <source>Prefix length</source>
-        <translation>Longueur du préfixe</translation>
+        <translation type="vanished">Longueur du préfixe</translation>
     </message>
     <message>
         <source>Point size</source>
-        <translation>Taille des points</translation>
+        <translation type="vanished">Taille des points</translation>
     </message>
     <message>
         <source>%1 matrices %2_i, %3 eigenvalues, plotted in the centre; click an eigenvalue to mark its map (its matrices in the Matrices dock).</source>
@@ -3748,39 +4231,39 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>Vertex limits</source>
-        <translation>Positions limites des sommets</translation>
+        <translation type="vanished">Positions limites des sommets</translation>
     </message>
     <message>
         <source>Vertex limits: the exact limit positions of the mesh&apos;s vertices, where its IFS with condensation starts. Drag the control points in the 3D view; click a purple diamond to analyse that extraordinary vertex.</source>
-        <translation>Positions limites des sommets&#xa0;: les positions limites exactes des sommets du maillage, d’où part son IFS avec condensation. Faites glisser les points de contrôle dans la vue 3D&#x202f;; cliquez sur un losange violet pour analyser ce sommet extraordinaire.</translation>
+        <translation type="vanished">Positions limites des sommets&#xa0;: les positions limites exactes des sommets du maillage, d’où part son IFS avec condensation. Faites glisser les points de contrôle dans la vue 3D&#x202f;; cliquez sur un losange violet pour analyser ce sommet extraordinaire.</translation>
     </message>
     <message>
         <source>For a mesh surface: the extraordinary vertex whose local subdivision matrix is analysed</source>
-        <translation>Pour une surface de maillage&#xa0;: le sommet extraordinaire dont la matrice de subdivision locale est analysée</translation>
+        <translation type="vanished">Pour une surface de maillage&#xa0;: le sommet extraordinaire dont la matrice de subdivision locale est analysée</translation>
     </message>
     <message>
         <source>Vertex:</source>
-        <translation>Sommet&#xa0;:</translation>
+        <translation type="vanished">Sommet&#xa0;:</translation>
     </message>
     <message>
         <source>(the mesh&apos;s matrices)</source>
-        <translation>(les matrices du maillage)</translation>
+        <translation type="vanished">(les matrices du maillage)</translation>
     </message>
     <message>
         <source>vertex %1 (n = %2)</source>
-        <translation>sommet %1 (n = %2)</translation>
+        <translation type="vanished">sommet %1 (n = %2)</translation>
     </message>
     <message>
         <source>centre of face %1 (n = %2)</source>
-        <translation>centre de la face %1 (n = %2)</translation>
+        <translation type="vanished">centre de la face %1 (n = %2)</translation>
     </message>
     <message>
         <source>centre of face %1 (missing)</source>
-        <translation>centre de la face %1 (manquant)</translation>
+        <translation type="vanished">centre de la face %1 (manquant)</translation>
     </message>
     <message>
         <source>vertex %1 (missing)</source>
-        <translation>sommet %1 (manquant)</translation>
+        <translation type="vanished">sommet %1 (manquant)</translation>
     </message>
 </context>
 <context>
@@ -4201,6 +4684,33 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
 </context>
 <context>
+    <name>awb::StartSetText</name>
+    <message>
+        <source>&apos;%1&apos; is not a finite number</source>
+        <translation>«&#xa0;%1&#xa0;» n’est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>a start set is written point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | vertex-limits, got &apos;%1&apos;</source>
+        <translation>un ensemble initial s’écrit point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | vertex-limits, reçu « %1 »</translation>
+    </message>
+    <message>
+        <source>a %1 needs %2 coordinates (%3 per point), got %4</source>
+        <translation>un %1 demande %2 coordonnées (%3 par point), reçu %4</translation>
+    </message>
+    <message>
+        <source>a multiple of %1</source>
+        <translation>un multiple de %1</translation>
+    </message>
+    <message>
+        <source>lifted: needs at least one point</source>
+        <translation>lifted: demande au moins un point</translation>
+    </message>
+    <message>
+        <source>vertex-limits needs a mesh item; &apos;%1&apos; is a %2</source>
+        <translation>vertex-limits demande un élément maillage ; « %1 » est un %2</translation>
+    </message>
+</context>
+<context>
     <name>awb::StyleSpec</name>
     <message>
         <source>the density gamma must be between 0.2 and 10, got %1</source>
@@ -4387,7 +4897,19 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>the symbol follows from the mask: edit the mask</source>
-        <translation>le symbole découle du masque&#xa0;: modifiez le masque</translation>
+        <translation type="vanished">le symbole découle du masque&#xa0;: modifiez le masque</translation>
+    </message>
+    <message>
+        <source>Matrices S_i</source>
+        <translation>Matrices S_i</translation>
+    </message>
+    <message>
+        <source>The subdivision matrices S_1 .. S_p, m x m with rows summing to 1; edited cell by cell in the Matrices dock</source>
+        <translation>Les matrices de subdivision S_1 .. S_p, de taille m x m, chaque ligne ayant pour somme 1&#x202f;; modifiables cellule par cellule dans le panneau Matrices</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>Points de contrôle</translation>
     </message>
 </context>
 <context>
@@ -4471,6 +4993,22 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>Attractor Workbench: item %1, %2 after %3 steps, every vertex at its limit position</source>
         <translation>Attractor Workbench&#xa0;: élément %1, %2 après %3 étapes, chaque sommet à sa position limite</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>Sommets</translation>
+    </message>
+    <message>
+        <source>The mesh&apos;s vertices [x, y, z]: its control points</source>
+        <translation>Les sommets du maillage [x, y, z]&#xa0;: ses points de contrôle</translation>
+    </message>
+    <message>
+        <source>Faces</source>
+        <translation>Faces</translation>
+    </message>
+    <message>
+        <source>Each face as the loop of its vertex numbers (0-based)</source>
+        <translation>Chaque face sous la forme de la boucle des numéros de ses sommets (numérotés à partir de 0)</translation>
     </message>
 </context>
 <context>
@@ -4594,6 +5132,22 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>Subdivision surface</source>
         <translation>Surface de subdivision</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>Points de contrôle</translation>
+    </message>
+    <message>
+        <source>Lattice coordinates</source>
+        <translation>Coordonnées de grille</translation>
+    </message>
+    <message>
+        <source>Each control point&apos;s place [i, j] on the scheme&apos;s lattice</source>
+        <translation>La position [i, j] de chaque point de contrôle sur la grille du schéma</translation>
+    </message>
+    <message>
+        <source>Maps used</source>
+        <translation>Applications utilisées</translation>
     </message>
 </context>
 <context>
@@ -5229,19 +5783,19 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>--start: &apos;%1&apos; is not a finite number</source>
-        <translation>--start&#xa0;: «&#xa0;%1&#xa0;» n’est pas un nombre fini</translation>
+        <translation type="vanished">--start&#xa0;: «&#xa0;%1&#xa0;» n’est pas un nombre fini</translation>
     </message>
     <message>
         <source>--start must be point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;..., got &apos;%1&apos;</source>
-        <translation>--start doit être de la forme point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... (reçu&#xa0;: «&#xa0;%1&#xa0;»)</translation>
+        <translation type="vanished">--start doit être de la forme point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... (reçu&#xa0;: «&#xa0;%1&#xa0;»)</translation>
     </message>
     <message>
         <source>--start %1 needs %2 coordinates (%3 per point), got %4</source>
-        <translation>--start %1 demande %2 coordonnées (%3 par point) (reçu&#xa0;: %4)</translation>
+        <translation type="vanished">--start %1 demande %2 coordonnées (%3 par point) (reçu&#xa0;: %4)</translation>
     </message>
     <message>
         <source>a multiple of %1</source>
-        <translation>un multiple de %1</translation>
+        <translation type="vanished">un multiple de %1</translation>
     </message>
     <message>
         <source>depth %1 gives %2 points, more than --max-points %3</source>
@@ -5313,7 +5867,7 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>depth %1 makes %2 images; at most 4e9 are rendered</source>
-        <translation>la profondeur %1 produit %2 images&#x202f;; 4e9 au plus sont rendues</translation>
+        <translation type="vanished">la profondeur %1 produit %2 images&#x202f;; 4e9 au plus sont rendues</translation>
     </message>
     <message>
         <source>--view must be AZ,EL in degrees with |EL| &lt;= 90, got &apos;%1&apos;</source>
@@ -5321,31 +5875,31 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>%1 random points</source>
-        <translation>%1 points aléatoires</translation>
+        <translation type="vanished">%1 points aléatoires</translation>
     </message>
     <message>
         <source>F^%1(X0)</source>
-        <translation>F^%1(X0)</translation>
+        <translation type="vanished">F^%1(X0)</translation>
     </message>
     <message>
         <source>, maps %1 of %2</source>
-        <translation>, applications %1 sur %2</translation>
+        <translation type="vanished">, applications %1 sur %2</translation>
     </message>
     <message>
         <source>%1: %2%3 — orthographic view from azimuth %4°, elevation %5°</source>
-        <translation>%1&#xa0;: %2%3 — vue orthographique depuis l’azimut %4°, élévation %5°</translation>
+        <translation type="vanished">%1&#xa0;: %2%3 — vue orthographique depuis l’azimut %4°, élévation %5°</translation>
     </message>
     <message>
         <source>%1: %2 random points</source>
-        <translation>%1&#xa0;: %2 points aléatoires</translation>
+        <translation type="vanished">%1&#xa0;: %2 points aléatoires</translation>
     </message>
     <message>
         <source>%1: F^%2(X0)</source>
-        <translation>%1&#xa0;: F^%2(X0)</translation>
+        <translation type="vanished">%1&#xa0;: F^%2(X0)</translation>
     </message>
     <message>
         <source>%1: polygon after %2 steps</source>
-        <translation>%1&#xa0;: polygone après %2 étapes</translation>
+        <translation type="vanished">%1&#xa0;: polygone après %2 étapes</translation>
     </message>
     <message>
         <source>Render an item&apos;s attractor (with its control polygons) to PNG, SVG or PDF.</source>
@@ -5505,7 +6059,7 @@ limites&#xa0;: %9
     </message>
     <message>
         <source>--start lifted: needs at least one point</source>
-        <translation>--start lifted&#xa0;: il faut au moins un point</translation>
+        <translation type="vanished">--start lifted&#xa0;: il faut au moins un point</translation>
     </message>
     <message>
         <source>cannot write to the standard output</source>
@@ -5637,7 +6191,7 @@ limites&#xa0;: %9
     </message>
     <message>
         <source>--start vertex-limits needs a mesh item; &apos;%1&apos; is a %2</source>
-        <translation>--start vertex-limits demande un élément maillage&#x202f;; «&#xa0;%1&#xa0;» est de type %2</translation>
+        <translation type="vanished">--start vertex-limits demande un élément maillage&#x202f;; «&#xa0;%1&#xa0;» est de type %2</translation>
     </message>
     <message>
         <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ).</source>
@@ -5883,15 +6437,15 @@ Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les
     </message>
     <message>
         <source>--bits 16 writes PNG files, got &apos;%1&apos;</source>
-        <translation>--bits 16 écrit des fichiers PNG, reçu «&#xa0;%1&#xa0;»</translation>
+        <translation type="vanished">--bits 16 écrit des fichiers PNG, reçu «&#xa0;%1&#xa0;»</translation>
     </message>
     <message>
         <source>the raw density (.exr, --bits 16) counts an attractor&apos;s points; this item&apos;s figure is a polygon</source>
-        <translation>la densité brute (.exr, --bits 16) compte les points d’un attracteur&#xa0;; la figure de cet élément est un polygone</translation>
+        <translation type="vanished">la densité brute (.exr, --bits 16) compte les points d’un attracteur&#xa0;; la figure de cet élément est un polygone</translation>
     </message>
     <message>
         <source>the raw density (.exr, --bits 16) is of attractors drawn in the plane; &apos;%1&apos; is drawn in space</source>
-        <translation>la densité brute (.exr, --bits 16) concerne les attracteurs dessinés dans le plan&#xa0;; «&#xa0;%1&#xa0;» est dessiné dans l’espace</translation>
+        <translation type="vanished">la densité brute (.exr, --bits 16) concerne les attracteurs dessinés dans le plan&#xa0;; «&#xa0;%1&#xa0;» est dessiné dans l’espace</translation>
     </message>
     <message>
         <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit), or every flame of a flam3 genome (.flame, .flam3: flam3, Apophysis, JWildfire), as a fractal with control points. Non-linear variations are dropped with a warning.</source>
@@ -6046,7 +6600,7 @@ Commands:
 
 Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
 </source>
-        <translation>Utilisation&#xa0;: attractor-cli &lt;commande&gt; [options]
+        <translation type="vanished">Utilisation&#xa0;: attractor-cli &lt;commande&gt; [options]
 
 Commandes&#xa0;:
   render     effectuer le rendu d&apos;un élément d&apos;un projet en PNG, SVG ou PDF
@@ -6093,7 +6647,131 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     </message>
     <message>
         <source>the rendering was cancelled</source>
-        <translation>le rendu a été annulé</translation>
+        <translation type="vanished">le rendu a été annulé</translation>
+    </message>
+    <message>
+        <source>the project has no items</source>
+        <translation>le projet ne contient aucun élément</translation>
+    </message>
+    <message>
+        <source>no item called &quot;%1&quot;; the items: %2</source>
+        <translation>aucun élément ne s’appelle «&#xa0;%1&#xa0;»&#x202f;; les éléments&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>Set properties of an item and save the project (atomically: all of them or none), or list them. A value is typed as in the Properties dock: a number (3/8 and sqrt(3) too), a choice by its number, its word in the file or its text, true or false, a complex number as 0.5,0.3 or 0.5+0.3i; a structured value (points, matrices, a list) as JSON.</source>
+        <translation>Définir des propriétés d’un élément et enregistrer le projet (de façon atomique&#xa0;: toutes ou aucune), ou les lister. Une valeur se saisit comme dans le panneau Propriétés&#xa0;: un nombre (3/8 et sqrt(3) aussi), un choix par son numéro, son mot dans le fichier ou son texte, true ou false, un nombre complexe sous la forme 0.5,0.3 ou 0.5+0.3i&#x202f;; une valeur structurée (points, matrices, liste) en JSON.</translation>
+    </message>
+    <message>
+        <source>Properties to set, in order.</source>
+        <translation>Propriétés à définir, dans l’ordre.</translation>
+    </message>
+    <message>
+        <source>The item (default: the first).</source>
+        <translation>L’élément (par défaut&#xa0;: le premier).</translation>
+    </message>
+    <message>
+        <source>List the item&apos;s properties: key, type, value, range and choices.</source>
+        <translation>Lister les propriétés de l’élément&#xa0;: clé, type, valeur, plage et choix possibles.</translation>
+    </message>
+    <message>
+        <source>With --list: as JSON.</source>
+        <translation>Avec --list&#xa0;: en JSON.</translation>
+    </message>
+    <message>
+        <source>expected a project file; see --help</source>
+        <translation>fichier de projet attendu&#x202f;; voir --help</translation>
+    </message>
+    <message>
+        <source>--list takes no key=value</source>
+        <translation>--list n’accepte pas de key=value</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>(shown, not set)</source>
+        <translation>(affiché, non modifiable)</translation>
+    </message>
+    <message>
+        <source>nothing to set: give key=value (or --list)</source>
+        <translation>rien à définir&#xa0;: donnez key=value (ou --list)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not key=value</source>
+        <translation>«&#xa0;%1&#xa0;» n’est pas de la forme key=value</translation>
+    </message>
+    <message>
+        <source>render an item of a project to PNG, SVG or PDF</source>
+        <translation>effectuer le rendu d&apos;un élément d&apos;un projet en PNG, SVG ou PDF</translation>
+    </message>
+    <message>
+        <source>render the frames of an item&apos;s animation (PNG files, MP4/GIF)</source>
+        <translation>effectuer le rendu des images de l&apos;animation d&apos;un élément (fichiers PNG, MP4/GIF)</translation>
+    </message>
+    <message>
+        <source>eigenvalues, contractivity, fixed points, dimension (JSON)</source>
+        <translation>valeurs propres, contractivité, points fixes, dimension (JSON)</translation>
+    </message>
+    <message>
+        <source>the points of F^k(X0) as CSV</source>
+        <translation>les points de F^k(X0) en CSV</translation>
+    </message>
+    <message>
+        <source>set an item&apos;s properties and save, or list them</source>
+        <translation>définir les propriétés d’un élément et enregistrer, ou les lister</translation>
+    </message>
+    <message>
+        <source>validate a project file</source>
+        <translation>valider un fichier de projet</translation>
+    </message>
+    <message>
+        <source>load and save a project in canonical form</source>
+        <translation>charger et enregistrer un projet sous forme canonique</translation>
+    </message>
+    <message>
+        <source>points (PLY), a net or mesh (OBJ), maps (.ifs), matrices (MATLAB)</source>
+        <translation>points (PLY), réseau ou maillage (OBJ), applications (.ifs), matrices (MATLAB)</translation>
+    </message>
+    <message>
+        <source>the control polygon after K subdivision steps (JSON)</source>
+        <translation>le polygone de contrôle après K étapes de subdivision (JSON)</translation>
+    </message>
+    <message>
+        <source>another tool&apos;s IFS file (Fractint .ifs) as a project</source>
+        <translation>le fichier IFS d&apos;un autre outil (Fractint .ifs) comme projet</translation>
+    </message>
+    <message>
+        <source>a mesh file (OBJ, OFF, PLY) as a project with a mesh item</source>
+        <translation>un fichier de maillage (OBJ, OFF, PLY) comme projet avec un élément maillage</translation>
+    </message>
+    <message>
+        <source>lambda, mu, Reif&apos;s C1 verdict per valence (Catmull-Clark, Loop)</source>
+        <translation>lambda, mu, verdict C1 de Reif par valence (Catmull-Clark, Loop)</translation>
+    </message>
+    <message>
+        <source>where a scheme is C^k as a parameter moves</source>
+        <translation>où un schéma est C^k lorsqu&apos;un paramètre varie</translation>
+    </message>
+    <message>
+        <source>re-check the certificate of an exact Hölder exponent</source>
+        <translation>revérifier le certificat d&apos;un exposant de Hölder exact</translation>
+    </message>
+    <message>
+        <source>render the built-in paper figures (000 Figs. 2, 3, 5) to PNG</source>
+        <translation>rendre en PNG les figures intégrées de l&apos;article (000, fig. 2, 3 et 5)</translation>
+    </message>
+    <message>
+        <source>Usage: attractor-cli &lt;command&gt; [options]</source>
+        <translation>Utilisation&#xa0;: attractor-cli &lt;commande&gt; [options]</translation>
+    </message>
+    <message>
+        <source>Commands:</source>
+        <translation>Commandes&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.</source>
+        <translation>Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&apos;une commande.</translation>
     </message>
 </context>
 <context>

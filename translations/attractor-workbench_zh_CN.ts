@@ -947,6 +947,142 @@
         <source>the start set &quot;vertex-limits&quot; (the limit positions of a mesh&apos;s vertices) is for mesh items only; this item: %1</source>
         <translation>初始集 &quot;vertex-limits&quot;（网格顶点的极限位置）仅适用于网格对象；此对象：%1</translation>
     </message>
+    <message>
+        <source>Point</source>
+        <translation>点</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>线段</translation>
+    </message>
+    <message>
+        <source>Triangle</source>
+        <translation>三角形</translation>
+    </message>
+    <message>
+        <source>Polygon</source>
+        <translation>多边形</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>点集</translation>
+    </message>
+    <message>
+        <source>Lifted points</source>
+        <translation>提升点</translation>
+    </message>
+    <message>
+        <source>Vertex limits</source>
+        <translation>顶点极限位置</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>类型</translation>
+    </message>
+    <message>
+        <source>Start set X0</source>
+        <translation>初始集 X0</translation>
+    </message>
+    <message>
+        <source>The set X0 deterministic iteration starts from; drag its vertices in the attractor view. Lifted points are points of the lifted space of 000 §2; vertex limits, a mesh&apos;s vertices&apos; limit positions.</source>
+        <translation>确定性迭代的初始集 X0；在吸引子视图中拖动其顶点即可修改。提升点是 000 §2 中提升空间的点；顶点极限位置是网格各顶点的极限位置。</translation>
+    </message>
+    <message>
+        <source>The item has no control points.</source>
+        <translation>该对象没有控制点。</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>顶点</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a number.</source>
+        <translation>“%1”不是数。</translation>
+    </message>
+    <message>
+        <source>Lifted</source>
+        <translation>提升点</translation>
+    </message>
+    <message>
+        <source>Points of the lifted space of 000 §2: x, y, then the extra coordinates of the lifting, the homogeneous 1 implied. Commas between coordinates, &apos;;&apos; between points.</source>
+        <translation>000 §2 提升空间中的点：先是 x、y，然后是提升的附加坐标，齐次坐标 1 隐含。坐标之间用逗号分隔，点之间用“;”分隔。</translation>
+    </message>
+    <message>
+        <source>Deterministic</source>
+        <translation>确定性</translation>
+    </message>
+    <message>
+        <source>Random (chaos game)</source>
+        <translation>随机（混沌游戏）</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>模式</translation>
+    </message>
+    <message>
+        <source>Algorithm</source>
+        <translation>算法</translation>
+    </message>
+    <message>
+        <source>Deterministic iteration draws F^k(X0) at the depth k; random iteration plays the chaos game with the samples</source>
+        <translation>确定性迭代绘制深度 k 处的 F^k(X0)；随机迭代按样本数进行混沌游戏</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>深度</translation>
+    </message>
+    <message>
+        <source>The level k of F^k(X0): N^k images of the start set, at most 2^31</source>
+        <translation>F^k(X0) 的层级 k：初始集的 N^k 个像，最多 2^31 个</translation>
+    </message>
+    <message>
+        <source>Samples</source>
+        <translation>样本数</translation>
+    </message>
+    <message>
+        <source>Points of the chaos game</source>
+        <translation>混沌游戏的点数</translation>
+    </message>
+    <message>
+        <source>Probabilities</source>
+        <translation>概率</translation>
+    </message>
+    <message>
+        <source>One weight per map for the chaos game; none: uniform</source>
+        <translation>混沌游戏中每个映射一个权重；不设置：均匀</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>随机种子</translation>
+    </message>
+    <message>
+        <source>The chaos game&apos;s random stream: the same seed, the same picture</source>
+        <translation>混沌游戏的随机数序列：种子相同，图像就相同</translation>
+    </message>
+    <message>
+        <source>%1 has no point set %2</source>
+        <translation>%1 没有点集 %2</translation>
+    </message>
+    <message>
+        <source>%1: its scheme fixes the number of points at %2, got %3</source>
+        <translation>%1：其细分格式将点数固定为 %2，实际为 %3</translation>
+    </message>
+    <message>
+        <source>%1: %2 points is more than the %3 a point set may have</source>
+        <translation>%1：%2 个点超过了一个点集最多可有的 %3 个点</translation>
+    </message>
+    <message>
+        <source>every point must have finite coordinates</source>
+        <translation>每个点的坐标都必须是有限数</translation>
+    </message>
+    <message>
+        <source>Set the points of %1</source>
+        <translation>设置 %1 的点</translation>
+    </message>
+    <message>
+        <source>the points of %1 were refused</source>
+        <translation>%1 的点被拒绝</translation>
+    </message>
 </context>
 <context>
     <name>awb::AttractorRenderer</name>
@@ -1028,6 +1164,18 @@
         <source>BCIFS junction curve</source>
         <translation>BCIFS 拼接曲线</translation>
     </message>
+    <message>
+        <source>Left cubic</source>
+        <translation>左侧三次曲线</translation>
+    </message>
+    <message>
+        <source>Right quadratic</source>
+        <translation>右侧二次曲线</translation>
+    </message>
+    <message>
+        <source>Handles</source>
+        <translation>控制柄</translation>
+    </message>
 </context>
 <context>
     <name>awb::BezierUnionItem</name>
@@ -1037,7 +1185,7 @@
     </message>
     <message>
         <source>%1 split parameters for %2 curves</source>
-        <translation>%2 条曲线却有 %1 个分割参数</translation>
+        <translation type="vanished">%2 条曲线却有 %1 个分割参数</translation>
     </message>
     <message>
         <source>Change Bézier union %1</source>
@@ -1061,7 +1209,7 @@
     </message>
     <message>
         <source>missing</source>
-        <translation>缺失</translation>
+        <translation type="vanished">缺失</translation>
     </message>
     <message>
         <source>expected a non-empty array of curves {&quot;control_points&quot;: [...], &quot;u&quot;: number}</source>
@@ -1099,6 +1247,14 @@
         <source>Union of Bézier curves</source>
         <translation>Bézier 曲线的并集</translation>
     </message>
+    <message>
+        <source>Curves</source>
+        <translation>曲线</translation>
+    </message>
+    <message>
+        <source>Each curve&apos;s control points and split parameter u</source>
+        <translation>每条曲线的控制点和分割参数 u</translation>
+    </message>
 </context>
 <context>
     <name>awb::BezierUnionSpec</name>
@@ -1109,6 +1265,10 @@
     <message>
         <source>the split parameter u = %1 must satisfy 0 &lt; u &lt; 1 (002 §3)</source>
         <translation>分割参数 u = %1 必须满足 0 &lt; u &lt; 1（002 §3）</translation>
+    </message>
+    <message>
+        <source>%1 split parameters for %2 curves</source>
+        <translation>%2 条曲线却有 %1 个分割参数</translation>
     </message>
 </context>
 <context>
@@ -1195,6 +1355,14 @@
         <source>Controlled IFS</source>
         <translation>受控 IFS</translation>
     </message>
+    <message>
+        <source>Fern of gaskets (003 Fig. 4)</source>
+        <translation>垫片蕨（003 Fig. 4）</translation>
+    </message>
+    <message>
+        <source>Frame</source>
+        <translation>框架</translation>
+    </message>
 </context>
 <context>
     <name>awb::CifsSpec</name>
@@ -1223,7 +1391,7 @@
     </message>
     <message>
         <source>missing</source>
-        <translation>缺失</translation>
+        <translation type="vanished">缺失</translation>
     </message>
     <message>
         <source>expected [re, im]</source>
@@ -1243,11 +1411,15 @@
     </message>
     <message>
         <source>&quot;%1&quot; is not a valid value for %2</source>
-        <translation>“%1”不是 %2 的有效值</translation>
+        <translation type="vanished">“%1”不是 %2 的有效值</translation>
     </message>
     <message>
         <source>Complex Bézier curve</source>
         <translation>复 Bézier 曲线</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>控制点</translation>
     </message>
 </context>
 <context>
@@ -1401,6 +1573,62 @@
         <source>expected a vertex or face number (0-based)</source>
         <translation>应为顶点或面的编号（从 0 开始）</translation>
     </message>
+    <message>
+        <source>(none)</source>
+        <translation>（无）</translation>
+    </message>
+    <message>
+        <source>%1 (missing)</source>
+        <translation>%1（缺失）</translation>
+    </message>
+    <message>
+        <source>(the mesh&apos;s matrices)</source>
+        <translation>（网格自身的矩阵）</translation>
+    </message>
+    <message>
+        <source>vertex %1 (n = %2)</source>
+        <translation>顶点 %1（n = %2）</translation>
+    </message>
+    <message>
+        <source>centre of face %1 (n = %2)</source>
+        <translation>面 %1 的中心（n = %2）</translation>
+    </message>
+    <message>
+        <source>centre of face %1 (missing)</source>
+        <translation>面 %1 的中心（缺失）</translation>
+    </message>
+    <message>
+        <source>vertex %1 (missing)</source>
+        <translation>顶点 %1（缺失）</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>来源</translation>
+    </message>
+    <message>
+        <source>The item whose matrices are analysed</source>
+        <translation>要分析其矩阵的对象</translation>
+    </message>
+    <message>
+        <source>Matrices</source>
+        <translation>矩阵</translation>
+    </message>
+    <message>
+        <source>S_i: the subdivision matrices (their eigenvalue 1 is affine invariance); A_i: the linear parts of the lifted maps, whose subdominant eigenvalue decides the tangents; M_i: the lifted maps themselves (003 §4, 004 §2.1)</source>
+        <translation>S_i：细分矩阵（其特征值 1 对应仿射不变性）；A_i：提升映射的线性部分，其次占优特征值决定切线；M_i：提升映射本身（003 §4，004 §2.1）</translation>
+    </message>
+    <message>
+        <source>Vertex</source>
+        <translation>顶点</translation>
+    </message>
+    <message>
+        <source>Face</source>
+        <translation>面</translation>
+    </message>
+    <message>
+        <source>For a mesh surface: the extraordinary vertex whose local subdivision matrix is analysed</source>
+        <translation>对于网格曲面：分析其局部细分矩阵的奇异顶点</translation>
+    </message>
 </context>
 <context>
     <name>awb::ExactCurve</name>
@@ -1524,6 +1752,10 @@
     <message>
         <source>&quot;%1&quot; is not a number (a fraction such as &quot;3/8&quot; or an expression such as &quot;(1 + sqrt(3))/8&quot; is)</source>
         <translation>&quot;%1&quot; 不是数字（数字可以是分数，如 &quot;3/8&quot;，或表达式，如 &quot;(1 + sqrt(3))/8&quot;）</translation>
+    </message>
+    <message>
+        <source>expected true or false</source>
+        <translation>应为 true 或 false</translation>
     </message>
 </context>
 <context>
@@ -1892,6 +2124,26 @@
         <source>map %1 is not a map of the plane or of space like the first</source>
         <translation>映射 %1 不是与第一个映射同维的平面映射或空间映射</translation>
     </message>
+    <message>
+        <source>Maps</source>
+        <translation>映射</translation>
+    </message>
+    <message>
+        <source>x ↦ x A + b: {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]} each, or 3 x 3 and 3 numbers in space</source>
+        <translation>x ↦ x A + b：每个映射写作 {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]}，在空间中则为 3 x 3 矩阵和 3 个数</translation>
+    </message>
+    <message>
+        <source>Reference points</source>
+        <translation>参考点</translation>
+    </message>
+    <message>
+        <source>The points the S_i are built for (S_i R = f_i(R)); none: the control points themselves</source>
+        <translation>构造 S_i 所依据的点（S_i R = f_i(R)）；不设置：即控制点本身</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>控制点</translation>
+    </message>
 </context>
 <context>
     <name>awb::IfsExchange</name>
@@ -1968,6 +2220,166 @@
         <source>there is not enough memory to compute it</source>
         <translation>内存不足，无法计算</translation>
     </message>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>By map</source>
+        <translation>按映射</translation>
+    </message>
+    <message>
+        <source>By address prefix</source>
+        <translation>按地址前缀</translation>
+    </message>
+    <message>
+        <source>Single colour</source>
+        <translation>单一颜色</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>颜色</translation>
+    </message>
+    <message>
+        <source>Style</source>
+        <translation>样式</translation>
+    </message>
+    <message>
+        <source>The attractor&apos;s colours: by the map that made each point, by the first symbols of its address, or one colour</source>
+        <translation>吸引子的颜色：按生成每个点的映射、按点地址的前几个符号，或使用单一颜色</translation>
+    </message>
+    <message>
+        <source>Prefix length</source>
+        <translation>前缀长度</translation>
+    </message>
+    <message>
+        <source>Colour by address: how many of its first symbols pick the colour</source>
+        <translation>按地址着色：由地址开头的几个符号确定颜色</translation>
+    </message>
+    <message>
+        <source>Point size</source>
+        <translation>点大小</translation>
+    </message>
+    <message>
+        <source>Points of the attractor, in pixels</source>
+        <translation>吸引子点的大小，单位为像素</translation>
+    </message>
+    <message>
+        <source>expected an array of &quot;#rrggbb&quot; strings</source>
+        <translation>应为 &quot;#rrggbb&quot; 字符串的数组</translation>
+    </message>
+    <message>
+        <source>expected a string &quot;#rrggbb&quot;</source>
+        <translation>应为字符串 &quot;#rrggbb&quot;</translation>
+    </message>
+    <message>
+        <source>Palette</source>
+        <translation>调色板</translation>
+    </message>
+    <message>
+        <source>Own colours, one per map or address prefix (&quot;#rrggbb&quot;); none: the views&apos; palette</source>
+        <translation>自定义颜色，每个映射或地址前缀一种（&quot;#rrggbb&quot;）；不设置：使用视图的调色板</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>自动</translation>
+    </message>
+    <message>
+        <source>Hits</source>
+        <translation>命中</translation>
+    </message>
+    <message>
+        <source>Density</source>
+        <translation>密度</translation>
+    </message>
+    <message>
+        <source>Tone</source>
+        <translation>色调</translation>
+    </message>
+    <message>
+        <source>Hits: every pixel the attractor reaches (the papers&apos; look); density: the invariant measure by log density; automatic: hits for deterministic, density for random iteration</source>
+        <translation>命中：吸引子到达的每个像素（论文中的效果）；密度：以对数密度显示不变测度；自动：确定性迭代用命中，随机迭代用密度</translation>
+    </message>
+    <message>
+        <source>Gamma</source>
+        <translation>Gamma</translation>
+    </message>
+    <message>
+        <source>Gamma of the density tone</source>
+        <translation>密度色调的 gamma</translation>
+    </message>
+    <message>
+        <source>Animation</source>
+        <translation>动画</translation>
+    </message>
+    <message>
+        <source>%1 is outside the range from %2 to %3</source>
+        <translation>%1 超出了 %2 到 %3 的范围</translation>
+    </message>
+    <message>
+        <source>%1 must be a finite number</source>
+        <translation>%1 必须是有限数</translation>
+    </message>
+    <message>
+        <source>%1 must be at least %2 and at most %3, not %4</source>
+        <translation>%1 必须不小于 %2 且不大于 %3，而不是 %4</translation>
+    </message>
+    <message>
+        <source>%1 must be at least %2, not %3</source>
+        <translation>%1 必须不小于 %2，而不是 %3</translation>
+    </message>
+    <message>
+        <source>%1 must be at most %2, not %3</source>
+        <translation>%1 必须不大于 %2，而不是 %3</translation>
+    </message>
+    <message>
+        <source>expected [re, im] or a number</source>
+        <translation>应为 [re, im] 或一个数</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not %3</source>
+        <translation>%1：“%2”不是 %3</translation>
+    </message>
+    <message>
+        <source>a JSON value (%1)</source>
+        <translation>JSON 值（%1）</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>数</translation>
+    </message>
+    <message>
+        <source>a whole number</source>
+        <translation>整数</translation>
+    </message>
+    <message>
+        <source>one of %1 (or its number from 0)</source>
+        <translation>%1 之一（或其从 0 开始的编号）</translation>
+    </message>
+    <message>
+        <source>a complex number (&quot;0.5,0.3&quot; or &quot;0.5+0.3i&quot;)</source>
+        <translation>复数（&quot;0.5,0.3&quot; 或 &quot;0.5+0.3i&quot;）</translation>
+    </message>
+    <message>
+        <source>true or false</source>
+        <translation>true 或 false</translation>
+    </message>
+    <message>
+        <source>an item&apos;s type cannot change (%1 to %2): add a new item</source>
+        <translation>对象的类型不能更改（%1 改为 %2）：请添加新对象</translation>
+    </message>
+    <message>
+        <source>children are items of their own: add, remove or update them</source>
+        <translation>子对象是独立的对象：请分别添加、删除或更新它们</translation>
+    </message>
+    <message>
+        <source>Update %1</source>
+        <translation>更新 %1</translation>
+    </message>
+    <message>
+        <source>%1 is shown, not edited</source>
+        <translation>%1 仅供显示，不可编辑</translation>
+    </message>
 </context>
 <context>
     <name>awb::ItemAddress</name>
@@ -2024,15 +2436,15 @@
     </message>
     <message>
         <source>Regularity: does not apply (%1)</source>
-        <translation>正则性：不适用（%1）</translation>
+        <translation type="vanished">正则性：不适用（%1）</translation>
     </message>
     <message>
         <source>complex de Casteljau parameter</source>
-        <translation>复 de Casteljau 参数</translation>
+        <translation type="vanished">复 de Casteljau 参数</translation>
     </message>
     <message>
         <source>the scheme&apos;s parameters are refused</source>
-        <translation>细分格式的参数被拒绝</translation>
+        <translation type="vanished">细分格式的参数被拒绝</translation>
     </message>
     <message>
         <source>Changing %1 (%2, %3) from %4 to %5 makes row %2 sum to %6, not 1: the rows of a subdivision matrix are affine combinations.
@@ -2129,6 +2541,65 @@ Take the difference %7 from the entry in column %8 (%9 → %10) so that the row 
     <message>
         <source>No certificate was saved: %1</source>
         <translation>未保存证书：%1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::ItemFigure</name>
+    <message>
+        <source>the 16-bit density is written to PNG files, got &apos;%1&apos;</source>
+        <translation>16 位密度写入 PNG 文件，得到的是“%1”</translation>
+    </message>
+    <message>
+        <source>the raw density (.exr, 16-bit PNG) counts an attractor&apos;s points; this item&apos;s figure is a polygon</source>
+        <translation>原始密度（.exr、16 位 PNG）统计吸引子的点；此对象的图形是多边形</translation>
+    </message>
+    <message>
+        <source>the rendering was cancelled</source>
+        <translation>渲染已取消</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos;: %2</source>
+        <translation>对象“%1”：%2</translation>
+    </message>
+    <message>
+        <source>depth %1 makes %2 images; at most 4e9 are rendered</source>
+        <translation>深度 %1 将产生 %2 个像；最多渲染 4e9 个</translation>
+    </message>
+    <message>
+        <source>the raw density (.exr, 16-bit PNG) is of attractors drawn in the plane; &apos;%1&apos; is drawn in space</source>
+        <translation>原始密度（.exr、16 位 PNG）仅适用于平面中绘制的吸引子；“%1”在空间中绘制</translation>
+    </message>
+    <message>
+        <source>the view must be azimuth and elevation in degrees with |elevation| &lt;= 90, got %1, %2</source>
+        <translation>视角必须是以度为单位的方位角和仰角，且 |仰角| &lt;= 90，得到的是 %1, %2</translation>
+    </message>
+    <message>
+        <source>%1 random points</source>
+        <translation>%1 个随机点</translation>
+    </message>
+    <message>
+        <source>F^%1(X0)</source>
+        <translation>F^%1(X0)</translation>
+    </message>
+    <message>
+        <source>, maps %1 of %2</source>
+        <translation>，使用映射 %1（共 %2 个）</translation>
+    </message>
+    <message>
+        <source>%1: %2%3 — orthographic view from azimuth %4°, elevation %5°</source>
+        <translation>%1：%2%3 — 从方位角 %4°、仰角 %5° 观察的正交视图</translation>
+    </message>
+    <message>
+        <source>%1: %2 random points</source>
+        <translation>%1：%2 个随机点</translation>
+    </message>
+    <message>
+        <source>%1: F^%2(X0)</source>
+        <translation>%1：F^%2(X0)</translation>
+    </message>
+    <message>
+        <source>%1: polygon after %2 steps</source>
+        <translation>%1：%2 步之后的多边形</translation>
     </message>
 </context>
 <context>
@@ -3092,7 +3563,7 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>expected true or false</source>
-        <translation>应为 true 或 false</translation>
+        <translation type="vanished">应为 true 或 false</translation>
     </message>
     <message>
         <source>expected an array of sign rules</source>
@@ -3144,7 +3615,7 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>Position of new point %1 along the edge (001 eq. (1))</source>
-        <translation>新点 %1 沿边的位置（001 eq. (1)）</translation>
+        <translation type="vanished">新点 %1 沿边的位置（001 eq. (1)）</translation>
     </message>
     <message>
         <source>β%1</source>
@@ -3152,7 +3623,19 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>Displacement of new point %1 along the normal</source>
-        <translation>新点 %1 沿法向的位移</translation>
+        <translation type="vanished">新点 %1 沿法向的位移</translation>
+    </message>
+    <message>
+        <source>Signs of β</source>
+        <translation>β 的符号</translation>
+    </message>
+    <message>
+        <source>How the sign of β alternates: &quot;constant&quot;, &quot;edge-alternating&quot;, &quot;level-edge-alternating&quot; or &quot;level-alternating&quot;; none, one, or one per rule</source>
+        <translation>β 符号的交替方式：&quot;constant&quot;、&quot;edge-alternating&quot;、&quot;level-edge-alternating&quot; 或 &quot;level-alternating&quot;；不设置、设置一个，或每条规则一个</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>控制点</translation>
     </message>
 </context>
 <context>
@@ -3495,11 +3978,11 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>&amp;Name:</source>
-        <translation>名称(&amp;N)：</translation>
+        <translation type="vanished">名称(&amp;N)：</translation>
     </message>
     <message>
         <source>The name is empty or already taken.</source>
-        <translation>名称为空或已被占用。</translation>
+        <translation type="vanished">名称为空或已被占用。</translation>
     </message>
     <message>
         <source>Parameters</source>
@@ -3515,111 +3998,111 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>Start set X0</source>
-        <translation>初始集 X0</translation>
+        <translation type="vanished">初始集 X0</translation>
     </message>
     <message>
         <source>Point</source>
-        <translation>点</translation>
+        <translation type="vanished">点</translation>
     </message>
     <message>
         <source>Segment</source>
-        <translation>线段</translation>
+        <translation type="vanished">线段</translation>
     </message>
     <message>
         <source>Triangle</source>
-        <translation>三角形</translation>
+        <translation type="vanished">三角形</translation>
     </message>
     <message>
         <source>Polygon</source>
-        <translation>多边形</translation>
+        <translation type="vanished">多边形</translation>
     </message>
     <message>
         <source>Points</source>
-        <translation>点集</translation>
+        <translation type="vanished">点集</translation>
     </message>
     <message>
         <source>Lifted points</source>
-        <translation>提升点</translation>
+        <translation type="vanished">提升点</translation>
     </message>
     <message>
         <source>Kind:</source>
-        <translation>类型：</translation>
+        <translation type="vanished">类型：</translation>
     </message>
     <message>
         <source>Drag its vertices in the attractor view.</source>
-        <translation>在吸引子视图中拖动其顶点。</translation>
+        <translation type="vanished">在吸引子视图中拖动其顶点。</translation>
     </message>
     <message>
         <source>Points of the lifted space of 000 §2: x, y, then the extra coordinates of the lifting, the homogeneous 1 implied. Commas between coordinates, &apos;;&apos; between points.</source>
-        <translation>000 §2 提升空间中的点：先是 x、y，然后是提升的附加坐标，齐次坐标 1 隐含。坐标之间用逗号分隔，点之间用“;”分隔。</translation>
+        <translation type="vanished">000 §2 提升空间中的点：先是 x、y，然后是提升的附加坐标，齐次坐标 1 隐含。坐标之间用逗号分隔，点之间用“;”分隔。</translation>
     </message>
     <message>
         <source>Lifted:</source>
-        <translation>提升点：</translation>
+        <translation type="vanished">提升点：</translation>
     </message>
     <message>
         <source>The start set was refused.</source>
-        <translation>初始集被拒绝。</translation>
+        <translation type="vanished">初始集被拒绝。</translation>
     </message>
     <message>
         <source>The item has no control points.</source>
-        <translation>该对象没有控制点。</translation>
+        <translation type="vanished">该对象没有控制点。</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a number.</source>
-        <translation>“%1”不是数。</translation>
+        <translation type="vanished">“%1”不是数。</translation>
     </message>
     <message>
         <source>Algorithm</source>
-        <translation>算法</translation>
+        <translation type="vanished">算法</translation>
     </message>
     <message>
         <source>Deterministic</source>
-        <translation>确定性</translation>
+        <translation type="vanished">确定性</translation>
     </message>
     <message>
         <source>Random (chaos game)</source>
-        <translation>随机（混沌游戏）</translation>
+        <translation type="vanished">随机（混沌游戏）</translation>
     </message>
     <message>
         <source>Mode:</source>
-        <translation>模式：</translation>
+        <translation type="vanished">模式：</translation>
     </message>
     <message>
         <source>Depth:</source>
-        <translation>深度：</translation>
+        <translation type="vanished">深度：</translation>
     </message>
     <message>
         <source>Samples:</source>
-        <translation>样本数：</translation>
+        <translation type="vanished">样本数：</translation>
     </message>
     <message>
         <source>Style</source>
-        <translation>样式</translation>
+        <translation type="vanished">样式</translation>
     </message>
     <message>
         <source>By map</source>
-        <translation>按映射</translation>
+        <translation type="vanished">按映射</translation>
     </message>
     <message>
         <source>By address prefix</source>
-        <translation>按地址前缀</translation>
+        <translation type="vanished">按地址前缀</translation>
     </message>
     <message>
         <source>Single colour</source>
-        <translation>单一颜色</translation>
+        <translation type="vanished">单一颜色</translation>
     </message>
     <message>
         <source>Colour:</source>
-        <translation>颜色：</translation>
+        <translation type="vanished">颜色：</translation>
     </message>
     <message>
         <source>Prefix length:</source>
-        <translation>前缀长度：</translation>
+        <translation type="vanished">前缀长度：</translation>
     </message>
     <message>
         <source>Point size:</source>
-        <translation>点大小：</translation>
+        <translation type="vanished">点大小：</translation>
     </message>
     <message>
         <source>Control points</source>
@@ -3687,31 +4170,31 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>Eigenvalues</source>
-        <translation>特征值</translation>
+        <translation type="vanished">特征值</translation>
     </message>
     <message>
         <source>The item whose matrices are analysed</source>
-        <translation>要分析其矩阵的对象</translation>
+        <translation type="vanished">要分析其矩阵的对象</translation>
     </message>
     <message>
         <source>S_i: the subdivision matrices (their eigenvalue 1 is affine invariance); A_i: the linear parts of the lifted maps, whose subdominant eigenvalue decides the tangents; M_i: the lifted maps themselves (003 §4, 004 §2.1)</source>
-        <translation>S_i：细分矩阵（其特征值 1 对应仿射不变性）；A_i：提升映射的线性部分，其次占优特征值决定切线；M_i：提升映射本身（003 §4，004 §2.1）</translation>
+        <translation type="vanished">S_i：细分矩阵（其特征值 1 对应仿射不变性）；A_i：提升映射的线性部分，其次占优特征值决定切线；M_i：提升映射本身（003 §4，004 §2.1）</translation>
     </message>
     <message>
         <source>Source:</source>
-        <translation>来源：</translation>
+        <translation type="vanished">来源：</translation>
     </message>
     <message>
         <source>Matrices:</source>
-        <translation>矩阵：</translation>
+        <translation type="vanished">矩阵：</translation>
     </message>
     <message>
         <source>(none)</source>
-        <translation>（无）</translation>
+        <translation type="vanished">（无）</translation>
     </message>
     <message>
         <source>%1 (missing)</source>
-        <translation>%1（缺失）</translation>
+        <translation type="vanished">%1（缺失）</translation>
     </message>
     <message>
         <source>%1: %2</source>
@@ -3719,19 +4202,19 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>Depth</source>
-        <translation>深度</translation>
+        <translation type="vanished">深度</translation>
     </message>
     <message>
         <source>Samples</source>
-        <translation>样本数</translation>
+        <translation type="vanished">样本数</translation>
     </message>
     <message>
         <source>Prefix length</source>
-        <translation>前缀长度</translation>
+        <translation type="vanished">前缀长度</translation>
     </message>
     <message>
         <source>Point size</source>
-        <translation>点大小</translation>
+        <translation type="vanished">点大小</translation>
     </message>
     <message>
         <source>%1 matrices %2_i, %3 eigenvalues, plotted in the centre; click an eigenvalue to mark its map (its matrices in the Matrices dock).</source>
@@ -3739,39 +4222,39 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>Vertex limits</source>
-        <translation>顶点极限位置</translation>
+        <translation type="vanished">顶点极限位置</translation>
     </message>
     <message>
         <source>Vertex limits: the exact limit positions of the mesh&apos;s vertices, where its IFS with condensation starts. Drag the control points in the 3D view; click a purple diamond to analyse that extraordinary vertex.</source>
-        <translation>顶点极限位置：网格顶点的精确极限位置，即其带凝聚集的 IFS 的起点。在 3D 视图中拖动控制点；单击紫色菱形可分析该奇异顶点。</translation>
+        <translation type="vanished">顶点极限位置：网格顶点的精确极限位置，即其带凝聚集的 IFS 的起点。在 3D 视图中拖动控制点；单击紫色菱形可分析该奇异顶点。</translation>
     </message>
     <message>
         <source>For a mesh surface: the extraordinary vertex whose local subdivision matrix is analysed</source>
-        <translation>对于网格曲面：分析其局部细分矩阵的奇异顶点</translation>
+        <translation type="vanished">对于网格曲面：分析其局部细分矩阵的奇异顶点</translation>
     </message>
     <message>
         <source>Vertex:</source>
-        <translation>顶点：</translation>
+        <translation type="vanished">顶点：</translation>
     </message>
     <message>
         <source>(the mesh&apos;s matrices)</source>
-        <translation>（网格自身的矩阵）</translation>
+        <translation type="vanished">（网格自身的矩阵）</translation>
     </message>
     <message>
         <source>vertex %1 (n = %2)</source>
-        <translation>顶点 %1（n = %2）</translation>
+        <translation type="vanished">顶点 %1（n = %2）</translation>
     </message>
     <message>
         <source>centre of face %1 (n = %2)</source>
-        <translation>面 %1 的中心（n = %2）</translation>
+        <translation type="vanished">面 %1 的中心（n = %2）</translation>
     </message>
     <message>
         <source>centre of face %1 (missing)</source>
-        <translation>面 %1 的中心（缺失）</translation>
+        <translation type="vanished">面 %1 的中心（缺失）</translation>
     </message>
     <message>
         <source>vertex %1 (missing)</source>
-        <translation>顶点 %1（缺失）</translation>
+        <translation type="vanished">顶点 %1（缺失）</translation>
     </message>
 </context>
 <context>
@@ -4192,6 +4675,33 @@ It was kept as %2.</source>
     </message>
 </context>
 <context>
+    <name>awb::StartSetText</name>
+    <message>
+        <source>&apos;%1&apos; is not a finite number</source>
+        <translation>“%1”不是有限数</translation>
+    </message>
+    <message>
+        <source>a start set is written point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | vertex-limits, got &apos;%1&apos;</source>
+        <translation>初始集的写法为 point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | vertex-limits，得到的是“%1”</translation>
+    </message>
+    <message>
+        <source>a %1 needs %2 coordinates (%3 per point), got %4</source>
+        <translation>%1 需要 %2 个坐标（每点 %3 个），得到 %4 个</translation>
+    </message>
+    <message>
+        <source>a multiple of %1</source>
+        <translation>%1 的倍数</translation>
+    </message>
+    <message>
+        <source>lifted: needs at least one point</source>
+        <translation>lifted: 至少需要一个点</translation>
+    </message>
+    <message>
+        <source>vertex-limits needs a mesh item; &apos;%1&apos; is a %2</source>
+        <translation>vertex-limits 需要网格对象；“%1”是%2</translation>
+    </message>
+</context>
+<context>
     <name>awb::StyleSpec</name>
     <message>
         <source>the density gamma must be between 0.2 and 10, got %1</source>
@@ -4378,7 +4888,19 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>the symbol follows from the mask: edit the mask</source>
-        <translation>符号由掩模决定：请编辑掩模</translation>
+        <translation type="vanished">符号由掩模决定：请编辑掩模</translation>
+    </message>
+    <message>
+        <source>Matrices S_i</source>
+        <translation>矩阵 S_i</translation>
+    </message>
+    <message>
+        <source>The subdivision matrices S_1 .. S_p, m x m with rows summing to 1; edited cell by cell in the Matrices dock</source>
+        <translation>细分矩阵 S_1 .. S_p，大小为 m x m，每行之和为 1；在“矩阵”面板中逐个单元格编辑</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>控制点</translation>
     </message>
 </context>
 <context>
@@ -4462,6 +4984,22 @@ It was kept as %2.</source>
     <message>
         <source>Attractor Workbench: item %1, %2 after %3 steps, every vertex at its limit position</source>
         <translation>Attractor Workbench：对象 %1，%2 细分 %3 步后，每个顶点都位于其极限位置</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>顶点</translation>
+    </message>
+    <message>
+        <source>The mesh&apos;s vertices [x, y, z]: its control points</source>
+        <translation>网格的顶点 [x, y, z]：即其控制点</translation>
+    </message>
+    <message>
+        <source>Faces</source>
+        <translation>面</translation>
+    </message>
+    <message>
+        <source>Each face as the loop of its vertex numbers (0-based)</source>
+        <translation>每个面表示为由其顶点编号构成的环（从 0 开始）</translation>
     </message>
 </context>
 <context>
@@ -4585,6 +5123,22 @@ It was kept as %2.</source>
     <message>
         <source>Subdivision surface</source>
         <translation>细分曲面</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>控制点</translation>
+    </message>
+    <message>
+        <source>Lattice coordinates</source>
+        <translation>格点坐标</translation>
+    </message>
+    <message>
+        <source>Each control point&apos;s place [i, j] on the scheme&apos;s lattice</source>
+        <translation>每个控制点在细分格式格点上的位置 [i, j]</translation>
+    </message>
+    <message>
+        <source>Maps used</source>
+        <translation>使用的映射</translation>
     </message>
 </context>
 <context>
@@ -5220,19 +5774,19 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>--start: &apos;%1&apos; is not a finite number</source>
-        <translation>--start：“%1”不是有限数</translation>
+        <translation type="vanished">--start：“%1”不是有限数</translation>
     </message>
     <message>
         <source>--start must be point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;..., got &apos;%1&apos;</source>
-        <translation>--start 的格式必须为 point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;...，实际为“%1”</translation>
+        <translation type="vanished">--start 的格式必须为 point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;...，实际为“%1”</translation>
     </message>
     <message>
         <source>--start %1 needs %2 coordinates (%3 per point), got %4</source>
-        <translation>--start %1 需要 %2 个坐标（每个点 %3 个），实际为 %4 个</translation>
+        <translation type="vanished">--start %1 需要 %2 个坐标（每个点 %3 个），实际为 %4 个</translation>
     </message>
     <message>
         <source>a multiple of %1</source>
-        <translation>%1 的倍数</translation>
+        <translation type="vanished">%1 的倍数</translation>
     </message>
     <message>
         <source>depth %1 gives %2 points, more than --max-points %3</source>
@@ -5304,7 +5858,7 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>depth %1 makes %2 images; at most 4e9 are rendered</source>
-        <translation>深度 %1 将产生 %2 个像；最多渲染 4e9 个</translation>
+        <translation type="vanished">深度 %1 将产生 %2 个像；最多渲染 4e9 个</translation>
     </message>
     <message>
         <source>--view must be AZ,EL in degrees with |EL| &lt;= 90, got &apos;%1&apos;</source>
@@ -5312,31 +5866,31 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>%1 random points</source>
-        <translation>%1 个随机点</translation>
+        <translation type="vanished">%1 个随机点</translation>
     </message>
     <message>
         <source>F^%1(X0)</source>
-        <translation>F^%1(X0)</translation>
+        <translation type="vanished">F^%1(X0)</translation>
     </message>
     <message>
         <source>, maps %1 of %2</source>
-        <translation>，使用映射 %1（共 %2 个）</translation>
+        <translation type="vanished">，使用映射 %1（共 %2 个）</translation>
     </message>
     <message>
         <source>%1: %2%3 — orthographic view from azimuth %4°, elevation %5°</source>
-        <translation>%1：%2%3 — 从方位角 %4°、仰角 %5° 观察的正交视图</translation>
+        <translation type="vanished">%1：%2%3 — 从方位角 %4°、仰角 %5° 观察的正交视图</translation>
     </message>
     <message>
         <source>%1: %2 random points</source>
-        <translation>%1：%2 个随机点</translation>
+        <translation type="vanished">%1：%2 个随机点</translation>
     </message>
     <message>
         <source>%1: F^%2(X0)</source>
-        <translation>%1：F^%2(X0)</translation>
+        <translation type="vanished">%1：F^%2(X0)</translation>
     </message>
     <message>
         <source>%1: polygon after %2 steps</source>
-        <translation>%1：%2 步之后的多边形</translation>
+        <translation type="vanished">%1：%2 步之后的多边形</translation>
     </message>
     <message>
         <source>Render an item&apos;s attractor (with its control polygons) to PNG, SVG or PDF.</source>
@@ -5496,7 +6050,7 @@ bounds: %9
     </message>
     <message>
         <source>--start lifted: needs at least one point</source>
-        <translation>--start lifted：至少需要一个点</translation>
+        <translation type="vanished">--start lifted：至少需要一个点</translation>
     </message>
     <message>
         <source>cannot write to the standard output</source>
@@ -5628,7 +6182,7 @@ bounds: %9
     </message>
     <message>
         <source>--start vertex-limits needs a mesh item; &apos;%1&apos; is a %2</source>
-        <translation>--start vertex-limits 需要网格对象；而“%1”的类型为 %2</translation>
+        <translation type="vanished">--start vertex-limits 需要网格对象；而“%1”的类型为 %2</translation>
     </message>
     <message>
         <source>Export an item&apos;s geometry: the attractor F^k(X0) as a PLY point cloud (with the map applied last per point), a surface item&apos;s net after k rounds of classic subdivision as an OBJ mesh, or a mesh item after k steps with every vertex at its limit position (OBJ).</source>
@@ -5872,15 +6426,15 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>--bits 16 writes PNG files, got &apos;%1&apos;</source>
-        <translation>--bits 16 只能写入 PNG 文件，实际为“%1”</translation>
+        <translation type="vanished">--bits 16 只能写入 PNG 文件，实际为“%1”</translation>
     </message>
     <message>
         <source>the raw density (.exr, --bits 16) counts an attractor&apos;s points; this item&apos;s figure is a polygon</source>
-        <translation>原始密度（.exr，--bits 16）统计的是吸引子的点；此项目的图形是多边形</translation>
+        <translation type="vanished">原始密度（.exr，--bits 16）统计的是吸引子的点；此项目的图形是多边形</translation>
     </message>
     <message>
         <source>the raw density (.exr, --bits 16) is of attractors drawn in the plane; &apos;%1&apos; is drawn in space</source>
-        <translation>原始密度（.exr，--bits 16）仅适用于在平面中绘制的吸引子；“%1”在空间中绘制</translation>
+        <translation type="vanished">原始密度（.exr，--bits 16）仅适用于在平面中绘制的吸引子；“%1”在空间中绘制</translation>
     </message>
     <message>
         <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit), or every flame of a flam3 genome (.flame, .flam3: flam3, Apophysis, JWildfire), as a fractal with control points. Non-linear variations are dropped with a warning.</source>
@@ -6035,7 +6589,7 @@ Commands:
 
 Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.
 </source>
-        <translation>用法：attractor-cli &lt;command&gt; [options]
+        <translation type="vanished">用法：attractor-cli &lt;command&gt; [options]
 
 命令：
   render     将项目中的一个项渲染为 PNG、SVG 或 PDF
@@ -6082,7 +6636,131 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>the rendering was cancelled</source>
-        <translation>渲染已取消</translation>
+        <translation type="vanished">渲染已取消</translation>
+    </message>
+    <message>
+        <source>the project has no items</source>
+        <translation>项目中没有对象</translation>
+    </message>
+    <message>
+        <source>no item called &quot;%1&quot;; the items: %2</source>
+        <translation>没有名为“%1”的对象；现有对象：%2</translation>
+    </message>
+    <message>
+        <source>Set properties of an item and save the project (atomically: all of them or none), or list them. A value is typed as in the Properties dock: a number (3/8 and sqrt(3) too), a choice by its number, its word in the file or its text, true or false, a complex number as 0.5,0.3 or 0.5+0.3i; a structured value (points, matrices, a list) as JSON.</source>
+        <translation>设置对象的属性并保存项目（原子操作：要么全部设置，要么全不设置），或列出这些属性。值的写法与“属性”面板中相同：数（也可以是 3/8 和 sqrt(3)）；选项可用其编号、其在文件中的单词或其显示文本；true 或 false；复数写作 0.5,0.3 或 0.5+0.3i；结构化的值（点、矩阵、列表）写作 JSON。</translation>
+    </message>
+    <message>
+        <source>Properties to set, in order.</source>
+        <translation>要设置的属性，按顺序设置。</translation>
+    </message>
+    <message>
+        <source>The item (default: the first).</source>
+        <translation>对象（默认：第一个）。</translation>
+    </message>
+    <message>
+        <source>List the item&apos;s properties: key, type, value, range and choices.</source>
+        <translation>列出对象的属性：键、类型、值、范围和可选项。</translation>
+    </message>
+    <message>
+        <source>With --list: as JSON.</source>
+        <translation>配合 --list：以 JSON 格式输出。</translation>
+    </message>
+    <message>
+        <source>expected a project file; see --help</source>
+        <translation>应提供项目文件；参见 --help</translation>
+    </message>
+    <message>
+        <source>--list takes no key=value</source>
+        <translation>--list 不接受 key=value</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <source>(shown, not set)</source>
+        <translation>（仅显示，不可设置）</translation>
+    </message>
+    <message>
+        <source>nothing to set: give key=value (or --list)</source>
+        <translation>没有要设置的内容：请给出 key=value（或 --list）</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not key=value</source>
+        <translation>“%1”不是 key=value 形式</translation>
+    </message>
+    <message>
+        <source>render an item of a project to PNG, SVG or PDF</source>
+        <translation>将项目中的一个项渲染为 PNG、SVG 或 PDF</translation>
+    </message>
+    <message>
+        <source>render the frames of an item&apos;s animation (PNG files, MP4/GIF)</source>
+        <translation>渲染一个项的动画帧（PNG 文件、MP4/GIF）</translation>
+    </message>
+    <message>
+        <source>eigenvalues, contractivity, fixed points, dimension (JSON)</source>
+        <translation>特征值、压缩性、不动点、维数（JSON）</translation>
+    </message>
+    <message>
+        <source>the points of F^k(X0) as CSV</source>
+        <translation>以 CSV 格式输出 F^k(X0) 的点</translation>
+    </message>
+    <message>
+        <source>set an item&apos;s properties and save, or list them</source>
+        <translation>设置对象的属性并保存，或列出这些属性</translation>
+    </message>
+    <message>
+        <source>validate a project file</source>
+        <translation>验证项目文件</translation>
+    </message>
+    <message>
+        <source>load and save a project in canonical form</source>
+        <translation>加载项目并以规范形式保存</translation>
+    </message>
+    <message>
+        <source>points (PLY), a net or mesh (OBJ), maps (.ifs), matrices (MATLAB)</source>
+        <translation>点（PLY）、网或网格（OBJ）、映射（.ifs）、矩阵（MATLAB）</translation>
+    </message>
+    <message>
+        <source>the control polygon after K subdivision steps (JSON)</source>
+        <translation>K 步细分后的控制多边形（JSON）</translation>
+    </message>
+    <message>
+        <source>another tool&apos;s IFS file (Fractint .ifs) as a project</source>
+        <translation>将其他工具的 IFS 文件（Fractint .ifs）导入为项目</translation>
+    </message>
+    <message>
+        <source>a mesh file (OBJ, OFF, PLY) as a project with a mesh item</source>
+        <translation>将网格文件（OBJ、OFF、PLY）导入为带网格项的项目</translation>
+    </message>
+    <message>
+        <source>lambda, mu, Reif&apos;s C1 verdict per valence (Catmull-Clark, Loop)</source>
+        <translation>每个价的 lambda、mu 及 Reif 的 C1 判定（Catmull-Clark、Loop）</translation>
+    </message>
+    <message>
+        <source>where a scheme is C^k as a parameter moves</source>
+        <translation>参数变化时格式在何处为 C^k</translation>
+    </message>
+    <message>
+        <source>re-check the certificate of an exact Hölder exponent</source>
+        <translation>重新检验精确 Hölder 指数的证书</translation>
+    </message>
+    <message>
+        <source>render the built-in paper figures (000 Figs. 2, 3, 5) to PNG</source>
+        <translation>将内置的论文插图（000 Figs. 2, 3, 5）渲染为 PNG</translation>
+    </message>
+    <message>
+        <source>Usage: attractor-cli &lt;command&gt; [options]</source>
+        <translation>用法：attractor-cli &lt;command&gt; [options]</translation>
+    </message>
+    <message>
+        <source>Commands:</source>
+        <translation>命令：</translation>
+    </message>
+    <message>
+        <source>Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.</source>
+        <translation>运行 &apos;attractor-cli &lt;command&gt; --help&apos; 查看某个命令的选项。</translation>
     </message>
 </context>
 <context>

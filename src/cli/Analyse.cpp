@@ -4,7 +4,7 @@
 #include "cli/CommandSupport.h"
 #include "cli/ProjectCommands.h"
 
-#include "cli/FigureRenderer.h"
+#include "render/FigureRenderer.h"
 #include "core/analysis/Geometry.h"
 #include "core/analysis/HausdorffBracket.h"
 #include "core/analysis/Spectrum.h"

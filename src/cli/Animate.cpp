@@ -4,7 +4,7 @@
 #include "cli/CommandSupport.h"
 #include "cli/ProjectCommands.h"
 
-#include "cli/FigureRenderer.h"
+#include "render/FigureRenderer.h"
 #include "core/analysis/Geometry.h"
 #include "core/analysis/Spectrum.h"
 #include "model/Animation.h"
@@ -113,7 +113,7 @@ int animate(const QStringList &args)
                 QRectF r(0, 0, -1, -1);
                 if (copy)
                     try {
-                        renderFigure(project, static_cast<AttractorItem *>(copy.get()), options,
+                        renderItemFigure(project, static_cast<AttractorItem *>(copy.get()), options,
                                      {}, &r);
                     } catch (const Failure &) {
                         // reported when the frame is drawn
@@ -145,7 +145,7 @@ int animate(const QStringList &args)
             if (!parser.isSet("no-caption-values"))
                 o.captionSuffix = " — " + animationCaption(*item, timing.frameTime(k));
             try {
-                renderFigure(project, static_cast<AttractorItem *>(copy.get()), o, file);
+                renderItemFigure(project, static_cast<AttractorItem *>(copy.get()), o, file);
             } catch (const Failure &f) {
                 throw Failure{CliTr::tr("frame %1 (t = %2 s): %3")
                                   .arg(k)

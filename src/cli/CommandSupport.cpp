@@ -1,5 +1,7 @@
 #include "cli/CommandSupport.h"
 
+#include "model/StartSetText.h"
+
 #include "model/SubdivisionMeshItem.h"
 
 #include "model/AttractorItem.h"
@@ -43,6 +45,15 @@ void load(Project &project, const QString &file)
     QString error;
     if (!project.open(file, &error))
         throw Failure{error, 1};
+}
+
+void save(Project &project, const QCommandLineParser &parser)
+{
+    QString error;
+    const QString target = parser.isSet("out") ? parser.value("out") : project.fileName();
+    if (!project.saveAs(target, &error))
+        throw Failure{error};
+    out() << target << "\n";
 }
 
 AttractorItem *attractorItem(const Project &project, const QString &name)
@@ -96,13 +107,6 @@ int intOption(const QCommandLineParser &parser, const QString &name, int lo, int
     return v;
 }
 
-// The item's project in the figure file (PNG text chunk, SVG metadata): it reopens as is.
-FigureMetadata figureMetadata(const Project &project, const Item &item)
-{
-    const QByteArray bytes = figureProjectBytes(project, item);
-    return {figurePngTexts(bytes), svgMetadataElement(bytes)};
-}
-
 // A count written as digits or in exponent form ("1e9"), whole, from lo to hi.
 std::uint64_t countOption(const QCommandLineParser &parser, const QString &name, double lo,
                           double hi)
@@ -132,84 +136,14 @@ double realOption(const QCommandLineParser &parser, const QString &name, double 
     return v;
 }
 
-// "point:x,y", "segment:x1,y1,x2,y2", "triangle:...", "polygon:...", "points:..."
-StartSet::Kind parseStart(const QString &text, Mat *points, int dim)
-{
-    const int colon = text.indexOf(':');
-    const QString kind = text.left(colon);
-    const QStringList numbers = text.mid(colon + 1).split(',', Qt::SkipEmptyParts);
-    QList<double> v;
-    for (const QString &n : numbers) {
-        bool ok = false;
-        v << n.trimmed().toDouble(&ok);
-        if (!ok || !std::isfinite(v.back()))
-            throw Failure{
-                QCoreApplication::translate("awb::cli", "--start: '%1' is not a finite number")
-                    .arg(n)};
-    }
-    const QMap<QString, int> count = {{"point", 1}, {"segment", 2}, {"triangle", 3}};
-    if (colon < 0 || !(count.contains(kind) || kind == "polygon" || kind == "points"))
-        throw Failure{QCoreApplication::translate("awb::cli",
-                                                  "--start must be point:x,y | "
-                                                  "segment:x1,y1,x2,y2 | "
-                                                  "triangle:x1,y1,x2,y2,x3,y3 | polygon:... | "
-                                                  "points:... | lifted:x,y,c1,...;..., got '%1'")
-                          .arg(text),
-                      2};
-    if (v.size() % dim || v.isEmpty()
-        || (count.contains(kind) && v.size() != dim * count[kind])
-        || (kind == "polygon" && v.size() < 3 * dim))
-        throw Failure{QCoreApplication::translate(
-                          "awb::cli", "--start %1 needs %2 coordinates (%3 per point), got %4")
-                          .arg(kind)
-                          .arg(count.contains(kind)
-                                   ? QString::number(dim * count[kind])
-                                   : QCoreApplication::translate("awb::cli", "a multiple of %1")
-                                         .arg(dim))
-                          .arg(dim)
-                          .arg(v.size())};
-    *points = Mat(v.size() / dim, dim);
-    for (int i = 0; i < v.size() / dim; ++i)
-        for (int c = 0; c < dim; ++c)
-            (*points)(i, c) = v[dim * i + c];
-    if (kind == "segment")
-        return StartSet::Kind::Polyline;
-    if (kind == "triangle" || kind == "polygon")
-        return StartSet::Kind::Polygon;
-    return StartSet::Kind::Points;
-}
-
-// The number of points F^depth(start) makes (over every view); refuses more than maxPoints.
+// The start set of --start TEXT: model/StartSetText's reading, its refusals as the option's.
 StartSet startOption(const AttractorItem &item, const DerivedIfs &d, const QString &text)
 {
-    if (text.startsWith("lifted:")) {
-        // Points of the lifted space, ';' between points: lifted:x,y,c1,..;x,y,c1,..
-        std::vector<std::vector<double>> lifted;
-        for (const QString &point : text.mid(7).split(';', Qt::SkipEmptyParts)) {
-            std::vector<double> p;
-            for (const QString &n : point.split(',', Qt::SkipEmptyParts)) {
-                bool ok = false;
-                p.push_back(n.trimmed().toDouble(&ok));
-                if (!ok || !std::isfinite(p.back()))
-                    throw Failure{CliTr::tr("--start: '%1' is not a finite number").arg(n)};
-            }
-            lifted.push_back(std::move(p));
-        }
-        if (lifted.empty())
-            throw Failure{CliTr::tr("--start lifted: needs at least one point")};
-        return StartSet::points(liftedStartPoints(d, lifted));
+    try {
+        return startSetFromText(item, d, text);
+    } catch (const StartSetTextError &e) {
+        throw Failure{QStringLiteral("--start: ") + e.message, e.malformed ? 2 : 1};
     }
-    if (text == "vertex-limits") {
-        // The limit positions of the vertices of the mesh refined `depth` times (exact).
-        if (!d.vertexLimitStart)
-            throw Failure{CliTr::tr("--start vertex-limits needs a mesh item; '%1' "
-                                    "is a %2")
-                              .arg(item.name(), item.typeName())};
-        return StartSet::points(Mat(0, 3));
-    }
-    Mat pts;
-    const StartSet::Kind kind = parseStart(text, &pts, item.pointDimension());
-    return {kind, d.toIfsSpace(pts)};
 }
 
 double requirePointBudget(const DerivedIfs &d, const StartSet &start, int depth, double maxPoints)

@@ -42,6 +42,8 @@ struct Failure {
 // Adds --help, parses, and checks the number of positional arguments (Failure otherwise).
 void parseOrFail(QCommandLineParser &parser, const QStringList &args, int positional);
 void load(Project &project, const QString &file);
+// Saves `project` atomically to --out, or over the file it was opened from; prints the file.
+void save(Project &project, const QCommandLineParser &parser);
 // The item named `name` (the first item with an attractor when empty).
 AttractorItem *attractorItem(const Project &project, const QString &name);
 std::shared_ptr<const DerivedIfs> derived(const AttractorItem *item);
@@ -52,18 +54,13 @@ MeshScheme meshSchemeOption(const QCommandLineParser &parser);
 std::uint64_t countOption(const QCommandLineParser &parser, const QString &name, double lo,
                           double hi);
 double realOption(const QCommandLineParser &parser, const QString &name, double lo, double hi);
-// "point:x,y", "segment:x1,y1,x2,y2", "triangle:...", "polygon:...", "points:..." (x,y,z with
-// dim 3): the kind, and the points into *points.
-StartSet::Kind parseStart(const QString &text, Mat *points, int dim = 2);
-// The start set of `--start TEXT` (points and Item.points(start=...) of the Python module):
-// what parseStart reads, "lifted:x,y,c1,..;x,y,c1,.." (points of the lifted space, 000 §2) or
-// "vertex-limits" (a mesh item's refined vertices' limit positions). Failure otherwise.
+// The start set of `--start TEXT` (model/StartSetText.h: point:x,y | segment:... | ... |
+// lifted:... | vertex-limits); Failure naming the option otherwise (exit 2 for a text that is
+// none of the forms).
 StartSet startOption(const AttractorItem &item, const DerivedIfs &d, const QString &text);
 // The points F^depth(start) makes (Failure when more than maxPoints).
 double requirePointBudget(const DerivedIfs &d, const StartSet &start, int depth,
                           double maxPoints);
-// The item's project in the figure file (PNG text chunk, SVG metadata): it reopens as is.
-FigureMetadata figureMetadata(const Project &project, const Item &item);
 
 // Runs a command's body: a Failure or an InputError becomes its message on stderr and the exit
 // code.

@@ -4,7 +4,7 @@
 #include "cli/CommandSupport.h"
 #include "cli/ProjectCommands.h"
 
-#include "cli/FigureRenderer.h"
+#include "render/FigureRenderer.h"
 #include "core/analysis/Geometry.h"
 #include "core/analysis/Spectrum.h"
 #include "model/Animation.h"
@@ -145,7 +145,7 @@ int exportData(const QStringList &args)
             FigureOptions o;
             readFrameOptions(parser, o);
             QRectF content;
-            renderFigure(project, item, o, QString(), &content);
+            renderItemFigure(project, item, o, QString(), &content);
             if (content.width() < 0)
                 throw Failure{CliTr::tr("'%1' has nothing to frame").arg(item->name())};
             QStringList colours;

@@ -3,7 +3,7 @@
 #include "cli/CommandSupport.h"
 #include "cli/ProjectCommands.h"
 
-#include "cli/FigureRenderer.h"
+#include "render/FigureRenderer.h"
 #include "core/analysis/Geometry.h"
 #include "core/analysis/Spectrum.h"
 #include "model/Animation.h"

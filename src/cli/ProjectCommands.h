@@ -1,6 +1,7 @@
 #pragma once
 // The commands of attractor-cli, one file each (Render.cpp, Animate.cpp, Analyse.cpp, Points.cpp,
-// Check.cpp, Rewrite.cpp, Export.cpp, Polygon.cpp, ImportMesh.cpp). Each takes the command's
+// Set.cpp, Check.cpp, Rewrite.cpp, Export.cpp, Polygon.cpp, ImportMesh.cpp, ...), listed in
+// main.cpp's table. Each takes the command's
 // arguments (argv[0] = "attractor-cli <command>") and returns the exit code:
 // 0 success, 1 bad input (file, item, option values), 2 usage error, 3 the project loads but an
 // item cannot be computed (check).
@@ -15,6 +16,10 @@ int animate(const QStringList &args);
 int analyse(const QStringList &args);
 int points(const QStringList &args);
 int check(const QStringList &args);
+// Set.cpp: an item's declared properties set (KEY=VALUE ...) and saved, or listed.
+int set(const QStringList &args);
+// Examples.cpp: the built-in paper figures rendered to PNG (no project).
+int examples(const QStringList &args);
 int rewrite(const QStringList &args);
 int exportData(const QStringList &args);
 int polygon(const QStringList &args);

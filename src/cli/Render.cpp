@@ -4,7 +4,7 @@
 #include "cli/CommandSupport.h"
 #include "cli/ProjectCommands.h"
 
-#include "cli/FigureRenderer.h"
+#include "render/FigureRenderer.h"
 #include "core/analysis/Geometry.h"
 #include "core/analysis/Spectrum.h"
 #include "model/Animation.h"
@@ -69,7 +69,7 @@ int render(const QStringList &args)
         const FigureOptions options = figureOptions(parser);
         Project project;
         load(project, parser.positionalArguments().first());
-        renderFigure(project, attractorItem(project, parser.value("item")), options,
+        renderItemFigure(project, attractorItem(project, parser.value("item")), options,
                      parser.value("out"));
         out() << parser.value("out") << "\n";
         return 0;

@@ -1,14 +1,10 @@
 // attractor-cli: the command-line face of Attractor Workbench.
 
-#include "cli/FigureRenderer.h"
-#include "cli/Gallery.h"
 #include "cli/ProjectCommands.h"
 #include "core/Messages.h"
-#include "core/analysis/Spectrum.h"
+#include "core/Types.h"
 #include "i18n/Translations.h"
-#include "render/FigureFile.h"
 
-#include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QDir>
 #include <QGuiApplication>
@@ -36,78 +32,52 @@ QTextStream &err()
     return s;
 }
 
-int runExamples(const QStringList &args)
+// The commands, one file each (ProjectCommands.h), as git's builtin table: name, body, what it
+// does, and whether its output is for programs (JSON: the core's notes stay in English).
+struct Command {
+    const char *name;
+    int (*run)(const QStringList &);
+    const char *summary;
+    bool machineOutput = false;
+};
+
+const Command commands[] = {
+    {"render", cli::render, QT_TRANSLATE_NOOP("awb::cli", "render an item of a project to PNG, SVG or PDF")},
+    {"animate", cli::animate, QT_TRANSLATE_NOOP("awb::cli", "render the frames of an item's animation (PNG files, MP4/GIF)")},
+    {"analyse", cli::analyse, QT_TRANSLATE_NOOP("awb::cli", "eigenvalues, contractivity, fixed points, dimension (JSON)"), true},
+    {"points", cli::points, QT_TRANSLATE_NOOP("awb::cli", "the points of F^k(X0) as CSV")},
+    {"set", cli::set, QT_TRANSLATE_NOOP("awb::cli", "set an item's properties and save, or list them")},
+    {"check", cli::check, QT_TRANSLATE_NOOP("awb::cli", "validate a project file")},
+    {"rewrite", cli::rewrite, QT_TRANSLATE_NOOP("awb::cli", "load and save a project in canonical form")},
+    {"export", cli::exportData, QT_TRANSLATE_NOOP("awb::cli", "points (PLY), a net or mesh (OBJ), maps (.ifs), matrices (MATLAB)")},
+    {"polygon", cli::polygon, QT_TRANSLATE_NOOP("awb::cli", "the control polygon after K subdivision steps (JSON)"), true},
+    {"import", cli::importFile, QT_TRANSLATE_NOOP("awb::cli", "another tool's IFS file (Fractint .ifs) as a project")},
+    {"import-mesh", cli::importMesh, QT_TRANSLATE_NOOP("awb::cli", "a mesh file (OBJ, OFF, PLY) as a project with a mesh item")},
+    {"valences", cli::valences, QT_TRANSLATE_NOOP("awb::cli", "lambda, mu, Reif's C1 verdict per valence (Catmull-Clark, Loop)"), true},
+    {"regularity-interval", cli::regularityInterval, QT_TRANSLATE_NOOP("awb::cli", "where a scheme is C^k as a parameter moves"), true},
+    {"verify-regularity", cli::verifyRegularity, QT_TRANSLATE_NOOP("awb::cli", "re-check the certificate of an exact Hölder exponent"), true},
+    {"examples", cli::examples, QT_TRANSLATE_NOOP("awb::cli", "render the built-in paper figures (000 Figs. 2, 3, 5) to PNG")},
+};
+
+const Command *findCommand(const QString &name)
 {
-    QCommandLineParser parser;
-    parser.setApplicationDescription(
-        Tr::tr("Render the bundled paper figures to PNG files (one row of panels per figure: the "
-               "start set, a few iterates of the Hutchinson operator, and the attractor, over the "
-               "control polygon)."));
-    parser.addHelpOption();
-    parser.addOption({"out", Tr::tr("Directory for the PNG files (created if missing)."), "dir",
-                      "gallery"});
-    parser.addOption({"list", Tr::tr("List the examples and exit.")});
-    parser.process(args);
-    const auto gallery = builtinGallery();
-    if (parser.isSet("list")) {
-        for (const auto &ex : gallery)
-            out() << ex.id << "\t" << ex.title << "\n";
-        return 0;
-    }
-    QDir dir(parser.value("out"));
-    if (!dir.mkpath(".")) {
-        err() << Tr::tr("attractor-cli: cannot create directory %1").arg(dir.path()) << "\n";
-        return 1;
-    }
-    for (const auto &ex : gallery) {
-        const SubdivisionIfs s = buildSubdivisionIfs(*ex.scheme, ex.controlPoints);
-        const IfsCheck check = checkIfs(s.ifs);
-        if (!check.contractive) {
-            err() << ex.id << ": " << QString::fromStdString(check.message) << "\n";
-            return 1;
-        }
-        FigureSpec spec;
-        spec.title = ex.title;
-        spec.ifs = &s.ifs;
-        spec.start = {ex.startKind, s.toIfsSpace(ex.start)};
-        spec.controlPolygons = {ex.controlPoints};
-        if (auto exact = ex.scheme->exactCurve(ex.controlPoints, 600))
-            spec.overlays.push_back(*exact);
-        spec.panels = {{"X0", 0}, {"F(X0)", 1}, {"F^3(X0)", 3}, {"F^6(X0)", 6},
-                       {QString("F^%1(X0)").arg(ex.depth), ex.depth}};
-        const QImage img = renderFigure(spec);
-        const QString file = dir.filePath(ex.id + ".png");
-        QString error;
-        if (!writeFigureFile(
-                file, [&](QIODevice &png, QString *) { return writePng(img, png); },
-                &error)) {
-            err() << "attractor-cli: " << error << "\n";
-            return 1;
-        }
-        out() << file << "\n";
-    }
-    return 0;
+    const QString canonical = name == QLatin1String("analyze") ? QStringLiteral("analyse") : name;
+    for (const Command &c : commands)
+        if (canonical == QLatin1String(c.name))
+            return &c;
+    return nullptr;
 }
 
 void usage()
 {
-    out() << Tr::tr("Usage: attractor-cli <command> [options]\n\n"
-                    "Commands:\n"
-                    "  render     render an item of a project to PNG, SVG or PDF\n"
-                    "  animate    render the frames of an item's animation (PNG files, MP4/GIF)\n"
-                    "  analyse    eigenvalues, contractivity, fixed points, dimension (JSON)\n"
-                    "  points     the points of F^k(X0) as CSV\n"
-                    "  check      validate a project file\n"
-                    "  rewrite    load and save a project in canonical form\n"
-                    "  export     points (PLY), a net or mesh (OBJ), maps (.ifs), matrices (MATLAB)\n"
-                    "  polygon    the control polygon after K subdivision steps (JSON)\n"
-                    "  import     another tool's IFS file (Fractint .ifs) as a project\n"
-                    "  import-mesh  a mesh file (OBJ, OFF, PLY) as a project with a mesh item\n"
-                    "  valences   lambda, mu, Reif's C1 verdict per valence (Catmull-Clark, Loop)\n"
-                    "  regularity-interval  where a scheme is C^k as a parameter moves\n"
-                    "  verify-regularity  re-check the certificate of an exact Hölder exponent\n"
-                    "  examples   render the built-in paper figures (000 Figs. 2, 3, 5) to PNG\n\n"
-                    "Run 'attractor-cli <command> --help' for the options of a command.\n");
+    out() << Tr::tr("Usage: attractor-cli <command> [options]") << "\n\n"
+          << Tr::tr("Commands:") << "\n";
+    for (const Command &c : commands)
+        out() << QStringLiteral("  %1  %2").arg(QString::fromLatin1(c.name), -10)
+                     .arg(QCoreApplication::translate("awb::cli", c.summary))
+              << "\n";
+    out() << "\n" << Tr::tr("Run 'attractor-cli <command> --help' for the options of a command.")
+          << "\n";
 }
 
 } // namespace
@@ -143,47 +113,20 @@ int main(int argc, char **argv)
         return 0;
     }
     const QString command = args[1];
-    // JSON output is for programs: the core's notes, verdicts and errors in it stay in English.
-    if (command == "analyse" || command == "analyze" || command == "polygon"
-        || command == "valences" || command == "regularity-interval"
-        || command == "verify-regularity")
+    const Command *c = findCommand(command);
+    if (!c) {
+        err() << Tr::tr("attractor-cli: unknown command '%1'").arg(command) << "\n";
+        usage();
+        return 2;
+    }
+    if (c->machineOutput)
         setMessageTranslator(nullptr);
     args.removeAt(1);
     args[0] = "attractor-cli " + command;
     try {
-        if (command == "examples")
-            return runExamples(args);
-        if (command == "render")
-            return cli::render(args);
-        if (command == "animate")
-            return cli::animate(args);
-        if (command == "analyse" || command == "analyze")
-            return cli::analyse(args);
-        if (command == "points")
-            return cli::points(args);
-        if (command == "check")
-            return cli::check(args);
-        if (command == "rewrite")
-            return cli::rewrite(args);
-        if (command == "export")
-            return cli::exportData(args);
-        if (command == "polygon")
-            return cli::polygon(args);
-        if (command == "import-mesh")
-            return cli::importMesh(args);
-        if (command == "valences")
-            return cli::valences(args);
-        if (command == "import")
-            return cli::importFile(args);
-        if (command == "regularity-interval")
-            return cli::regularityInterval(args);
-        if (command == "verify-regularity")
-            return cli::verifyRegularity(args);
+        return c->run(args);
     } catch (const InputError &e) {
         err() << "attractor-cli " << command << ": " << e.what() << "\n";
         return 1;
     }
-    err() << Tr::tr("attractor-cli: unknown command '%1'").arg(command) << "\n";
-    usage();
-    return 2;
 }

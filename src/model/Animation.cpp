@@ -47,7 +47,8 @@ std::optional<ParameterInfo> findParameter(const Item &item, const QString &key)
 bool animatable(const ParameterInfo &p)
 {
     using T = ParameterInfo::Type;
-    return p.type == T::Real || p.type == T::Integer || p.type == T::Complex;
+    return p.animatable && !p.readOnly
+           && (p.type == T::Real || p.type == T::Integer || p.type == T::Complex);
 }
 
 QString timeText(double time) { return QString::number(time, 'g', 6); }

@@ -1,6 +1,8 @@
 #include "model/AttractorItem.h"
 
 #include "model/Commands.h"
+#include "model/NumberFormat.h"
+#include "model/PointSetProperty.h"
 #include "model/Project.h"
 #include "model/ProjectIO.h"
 
@@ -17,24 +19,301 @@ MaybeProblem AttractorItem::checkStartSet(const StartSetSpec &s) const
         return Problem{"kind", tr("the start set \"vertex-limits\" (the limit positions of a "
                                   "mesh's vertices) is for mesh items only; this item: %1")
                                    .arg(typeName())};
-    return s.check();
+    if (MaybeProblem p = s.check())
+        return p;
+    // Lifted points need the lifted space's number of coordinates.
+    if (s.kind == StartSetSpec::Kind::Lifted && s != m_startSet)
+        if (const auto d = derivedIfs()) {
+            try {
+                liftedStartPoints(*d, s.lifted);
+            } catch (const InputError &e) {
+                return Problem{"points", QString::fromStdString(e.what())};
+            }
+        }
+    return std::nullopt;
 }
 
 bool AttractorItem::setStartSet(const StartSetSpec &startSet, int gesture)
 {
-    if (checkStartSet(startSet))
-        return false;
-    applyProperty(&AttractorItem::m_startSet, startSet, &AttractorItem::startSetChanged,
-                  tr("Change start set of %1").arg(name()), gesture);
-    return true;
+    return setDeclared(*this, startSet, gesture);
 }
 
 bool AttractorItem::setAlgorithm(const AlgorithmSpec &algorithm, int gesture)
 {
-    if (checkAlgorithm(algorithm))
+    return setDeclared(*this, algorithm, gesture);
+}
+
+namespace {
+
+// The start set's default points when its kind changes: taken from the control polygon so that
+// the new set lies where the curve is.
+PointList startPointsFor(StartSetSpec::Kind kind, const PointList &control)
+{
+    PointList c = control.empty() ? PointList{{0, 0}, {1, 0}, {0.5, 1}} : control;
+    const Point first = c.front(), last = c.back(), middle = c[c.size() / 2];
+    switch (kind) {
+    case StartSetSpec::Kind::Point: {
+        Point m;
+        for (const auto &p : c)
+            m = {m.x + p.x / double(c.size()), m.y + p.y / double(c.size()),
+                 m.z + p.z / double(c.size())};
+        return {m};
+    }
+    case StartSetSpec::Kind::Segment: return {first, last};
+    case StartSetSpec::Kind::Triangle:
+        if (c.size() < 3)
+            return {{0, 0}, {1, 0}, {0.5, 1}};
+        return {first, middle, last};
+    case StartSetSpec::Kind::Polygon:
+        if (c.size() < 3)
+            return {{0, 0}, {1, 0}, {0.5, 1}};
+        return c;
+    case StartSetSpec::Kind::Points: return c;
+    case StartSetSpec::Kind::Lifted: return c;
+    case StartSetSpec::Kind::VertexLimits: return {};  // mesh items
+    }
+    return c;
+}
+
+QString liftedText(const std::vector<std::vector<double>> &points)
+{
+    QStringList text;
+    for (const auto &p : points) {
+        QStringList c;
+        for (double v : p)
+            c << editableNumber(v);  // exact: the text reads back to the same point
+        text << c.join(QStringLiteral(", "));
+    }
+    return text.join(QStringLiteral("; "));
+}
+
+} // namespace
+
+const PropertyTable &AttractorItem::attractorProperties()
+{
+    static const PropertyTable table = [] {
+        Declaration<AttractorItem> d(&Item::itemProperties(), PartBase::Place::Inputs);
+        using K = StartSetSpec::Kind;
+        auto start = d.part(&AttractorItem::m_startSet, &AttractorItem::checkStartSet,
+                            &AttractorItem::startSetChanged,
+                            QT_TR_NOOP("Change start set of %1"));
+        start.checkedOnRead([](const AttractorItem &, const StartSetSpec &s) { return s.check(); },
+                            QStringLiteral("start_set"));
+        start.choice("start_set.kind", &StartSetSpec::kind, StartSetSpec::kindNames(),
+                     {QT_TR_NOOP("Point"), QT_TR_NOOP("Segment"), QT_TR_NOOP("Triangle"),
+                      QT_TR_NOOP("Polygon"), QT_TR_NOOP("Points"), QT_TR_NOOP("Lifted points"),
+                      QT_TR_NOOP("Vertex limits")})
+            .label(QT_TR_NOOP("Kind"))
+            .group(QT_TR_NOOP("Start set X0"))
+            .tip(QT_TR_NOOP("The set X0 deterministic iteration starts from; drag its vertices "
+                            "in the attractor view. Lifted points are points of the lifted "
+                            "space of 000 §2; vertex limits, a mesh's vertices' limit "
+                            "positions."))
+            // A new kind starts where the curve is: from the control points, or the
+            // centroid lifted with zero extra coordinates.
+            .onEdit([](const AttractorItem &item, StartSetSpec &s) -> MaybeProblem {
+                const PointList control =
+                    item.controlPointSetCount() ? item.controlPoints(0) : PointList{};
+                s.lifted.clear();
+                if (s.kind == K::VertexLimits) {
+                    s.points.clear();
+                    return std::nullopt;
+                }
+                if (s.kind != K::Lifted) {
+                    s.points = startPointsFor(s.kind, control);
+                    return std::nullopt;
+                }
+                const auto derived = item.derivedIfs();
+                if (!derived)
+                    return Problem{"kind", item.derivedError()};
+                if (control.empty())
+                    return Problem{"kind", tr("The item has no control points.")};
+                const Mat centroid =
+                    toMatrix(control, item.pointDimension()).colwise().mean();
+                try {
+                    const Mat X = derived->toIfsSpace(centroid);
+                    s.lifted = {std::vector<double>(X.data(), X.data() + X.size())};
+                } catch (const std::exception &e) {
+                    return Problem{"kind", QString::fromUtf8(e.what())};
+                }
+                s.points.clear();
+                return std::nullopt;
+            });
+        start
+            .structured(
+                "start_set.points", QStringLiteral("points"),
+                [](const AttractorItem &item, const StartSetSpec &s) -> QJsonValue {
+                    if (s.kind == K::VertexLimits)
+                        return QJsonArray();
+                    if (s.kind != K::Lifted)
+                        return ProjectIO::pointsToJson(s.points, item.pointDimension());
+                    QJsonArray points;
+                    for (const auto &p : s.lifted) {
+                        QJsonArray c;
+                        for (double v : p)
+                            c.append(v);
+                        points.append(c);
+                    }
+                    return points;
+                },
+                [](const AttractorItem &item, StartSetSpec &s, const QJsonValue &v,
+                   const QString &where) {
+                    if (s.kind == K::Lifted) {
+                        if (!v.isArray())
+                            throw LoadError{where, QCoreApplication::translate(
+                                                       "awb::ProjectIO",
+                                                       "expected an array of lifted points "
+                                                       "[x, y, c1, ...]")};
+                        const QJsonArray a = v.toArray();
+                        s.points.clear();
+                        s.lifted.clear();
+                        for (qsizetype i = 0; i < a.size(); ++i) {
+                            const QString at = where + QStringLiteral("[%1]").arg(i + 1);
+                            if (!a[i].isArray())
+                                throw LoadError{at, QCoreApplication::translate(
+                                                        "awb::ProjectIO",
+                                                        "expected a lifted point [x, y, c1, "
+                                                        "...]")};
+                            s.lifted.push_back(property::numbersFromJson(a[i], at));
+                        }
+                        return;
+                    }
+                    s.points = property::pointsFromJson(v, where, item.pointDimension());
+                    if (s.kind == K::VertexLimits && !s.points.empty())
+                        throw LoadError{where, QCoreApplication::translate(
+                                                   "awb::ProjectIO",
+                                                   "a \"vertex-limits\" start set has no points "
+                                                   "(it starts at the limit positions of the "
+                                                   "mesh's vertices)")};
+                })
+            .label(QT_TR_NOOP("Vertices"));
+        start
+            .text(
+                "start_set.lifted",
+                [](const AttractorItem &, const StartSetSpec &s) { return liftedText(s.lifted); },
+                [](const AttractorItem &, StartSetSpec &s, const QString &text) -> MaybeProblem {
+                    std::vector<std::vector<double>> points;
+                    for (const QString &point : text.split(';', Qt::SkipEmptyParts)) {
+                        std::vector<double> p;
+                        for (const QString &n : point.split(',', Qt::SkipEmptyParts)) {
+                            const auto v = parseNumber(n.trimmed());
+                            if (!v)
+                                return Problem{"points",
+                                               tr("'%1' is not a number.").arg(n.trimmed())};
+                            p.push_back(*v);
+                        }
+                        points.push_back(std::move(p));
+                    }
+                    // Typed lifted points make the start set lifted.
+                    s.kind = K::Lifted;
+                    s.lifted = points;
+                    s.points.clear();
+                    return std::nullopt;
+                })
+            .notSaved()
+            .label(QT_TR_NOOP("Lifted"))
+            .group(QT_TR_NOOP("Start set X0"))
+            .tip(QT_TR_NOOP("Points of the lifted space of 000 §2: x, y, then the extra "
+                            "coordinates of the lifting, the homogeneous 1 implied. Commas "
+                            "between coordinates, ';' between points."))
+            .enabledWhen([](const AttractorItem &, const StartSetSpec &s) {
+                return s.kind == K::Lifted;
+            })
+            // A mesh starts at its vertices' limits: no lifted space to type points of.
+            .shownWhen([](const AttractorItem &item, const StartSetSpec &) {
+                return !item.startsAtVertexLimits();
+            });
+
+        auto algorithm = d.part(&AttractorItem::m_algorithm, &AttractorItem::checkAlgorithm,
+                                &AttractorItem::algorithmChanged,
+                                QT_TR_NOOP("Change algorithm of %1"));
+        // The bound from the number of maps: checkLoaded(), once the maps are known.
+        algorithm.checkedOnRead(
+            [](const AttractorItem &, const AlgorithmSpec &a) { return a.check(-1); },
+            QStringLiteral("algorithm"));
+        using M = AlgorithmSpec::Mode;
+        algorithm
+            .choice("algorithm.mode", &AlgorithmSpec::mode, AlgorithmSpec::modeNames(),
+                    {QT_TR_NOOP("Deterministic"), QT_TR_NOOP("Random (chaos game)")})
+            .label(QT_TR_NOOP("Mode"))
+            .group(QT_TR_NOOP("Algorithm"))
+            .tip(QT_TR_NOOP("Deterministic iteration draws F^k(X0) at the depth k; random "
+                            "iteration plays the chaos game with the samples"));
+        algorithm.integer("algorithm.depth", &AlgorithmSpec::depth)
+            .label(QT_TR_NOOP("Depth"))
+            .group(QT_TR_NOOP("Algorithm"))
+            .tip(QT_TR_NOOP("The level k of F^k(X0): N^k images of the start set, at most 2^31"))
+            .notAnimated()
+            .enabledWhen([](const AttractorItem &, const AlgorithmSpec &a) {
+                return a.mode == M::Deterministic;
+            })
+            // The deepest level this item's maps allow: typing more is refused with that
+            // number.
+            .adjust([](const AttractorItem &item, const AlgorithmSpec &a, ParameterInfo &i) {
+                i.minimum = 0;
+                i.maximum = std::max(a.depth, AlgorithmSpec::maxDepthFor(item.mapCount()));
+            });
+        algorithm.integer("algorithm.samples", &AlgorithmSpec::samples)
+            .label(QT_TR_NOOP("Samples"))
+            .group(QT_TR_NOOP("Algorithm"))
+            .range(1, double(AlgorithmSpec::maxSamples))
+            .tip(QT_TR_NOOP("Points of the chaos game"))
+            .notAnimated()
+            .enabledWhen([](const AttractorItem &, const AlgorithmSpec &a) {
+                return a.mode == M::Random;
+            });
+        algorithm.numbers("algorithm.probabilities", &AlgorithmSpec::probabilities)
+            .label(QT_TR_NOOP("Probabilities"))
+            .tip(QT_TR_NOOP("One weight per map for the chaos game; none: uniform"));
+        algorithm.integer("algorithm.seed", &AlgorithmSpec::seed)
+            .label(QT_TR_NOOP("Seed"))
+            .group(QT_TR_NOOP("Algorithm"))
+            .range(0, double(AlgorithmSpec::maxSeed))
+            .tip(QT_TR_NOOP("The chaos game's random stream: the same seed, the same picture"))
+            .notAnimated()
+            .enabledWhen([](const AttractorItem &, const AlgorithmSpec &a) {
+                return a.mode == M::Random;
+            });
+        return d.table();
+    }();
+    return table;
+}
+
+bool AttractorItem::setControlPoints(int set, const PointList &points, QString *error)
+{
+    const auto refuse = [error](const QString &message) {
+        if (error)
+            *error = message;
         return false;
-    applyProperty(&AttractorItem::m_algorithm, algorithm, &AttractorItem::algorithmChanged,
-                  tr("Change algorithm of %1").arg(name()), gesture);
+    };
+    if (!validSet(set))
+        return refuse(tr("%1 has no point set %2").arg(name()).arg(set));
+    const int old = int(pointStorage(set).size());
+    const int n = int(points.size());
+    if (n != old && !pointCountEditable(set))
+        return refuse(tr("%1: its scheme fixes the number of points at %2, got %3")
+                          .arg(name()).arg(old).arg(n));
+    if (n > maxPointCount(set))
+        return refuse(tr("%1: %2 points is more than the %3 a point set may have")
+                          .arg(name()).arg(n).arg(maxPointCount(set)));
+    if (!allFinite(points))
+        return refuse(tr("every point must have finite coordinates"));
+    CompoundEdit edit(project(), tr("Set the points of %1").arg(name()));
+    std::map<int, Point> moves;
+    for (int i = 0; i < std::min(n, old); ++i)
+        moves[i] = points[size_t(i)];
+    if (!moves.empty() && !moveControlPoints(moves, 0, set))
+        return refuse(tr("the points of %1 were refused").arg(name()));
+    for (int i = old; i < n; ++i)
+        if (!insertControlPoint(i, points[size_t(i)], set))
+            return refuse(tr("the points of %1 were refused").arg(name()));
+    if (n < old) {
+        std::vector<int> gone;
+        for (int i = n; i < old; ++i)
+            gone.push_back(i);
+        if (!removeControlPoints(gone, set))
+            return refuse(tr("the points of %1 were refused").arg(name()));
+    }
     return true;
 }
 
@@ -239,22 +518,6 @@ Mat liftedStartPoints(const DerivedIfs &derived, const std::vector<std::vector<d
 
 // ---- files ------------------------------------------------------------------------------------
 
-void AttractorItem::write(QJsonObject &json) const
-{
-    Item::write(json);
-    json["start_set"] = ProjectIO::startSetToJson(m_startSet, pointDimension());
-    json["algorithm"] = ProjectIO::algorithmToJson(m_algorithm);
-}
-
-void AttractorItem::read(const FieldReader &fields)
-{
-    Item::read(fields);
-    if (auto s = fields.object("start_set"))
-        m_startSet = ProjectIO::readStartSet(*s, pointDimension());
-    if (auto a = fields.object("algorithm"))
-        m_algorithm = ProjectIO::readAlgorithm(*a);
-}
-
 void AttractorItem::checkLoaded(const FieldReader &fields) const
 {
     Item::checkLoaded(fields);
@@ -280,6 +543,71 @@ void AttractorItem::checkLoaded(const FieldReader &fields) const
                 fields.fail("start_set", QString::fromStdString(e.what()));
             }
         }
+}
+
+// ---- PointSetPart ------------------------------------------------------------------------------
+
+bool PointSetPart::applies(const Item &item) const
+{
+    const auto &a = static_cast<const AttractorItem &>(item);
+    return pointSet < a.controlPointSetCount() && (!present || present(a));
+}
+
+std::optional<bool> PointSetPart::setJson(Item &item, const QString &k, const QJsonValue &v,
+                                          QString *error) const
+{
+    if (k != key || !applies(item))
+        return std::nullopt;
+    auto &a = static_cast<AttractorItem &>(item);
+    try {
+        return a.setControlPoints(pointSet, property::pointsFromJson(v, key, a.pointDimension()),
+                                  error);
+    } catch (const LoadError &e) {
+        if (error)
+            *error = QStringLiteral("%1: %2").arg(e.field, e.message);
+        return false;
+    }
+}
+
+void PointSetPart::write(const Item &item, QJsonObject &json) const
+{
+    if (!applies(item))
+        return;
+    const auto &a = static_cast<const AttractorItem &>(item);
+    json[key] = ProjectIO::pointsToJson(a.controlPoints(pointSet), a.pointDimension());
+}
+
+void PointSetPart::read(Item &item, const FieldReader &fields) const
+{
+    auto &a = static_cast<AttractorItem &>(item);
+    if (!applies(item))
+        return;
+    a.pointStorage(pointSet) =
+        fields.points(key, fallback ? std::optional<PointList>(fallback(a)) : std::nullopt,
+                      a.pointDimension());
+}
+
+bool PointSetPart::transfer(const Item &from, Item &to, QString *error) const
+{
+    if (!applies(from) || !applies(to))
+        return true;
+    return static_cast<AttractorItem &>(to).setControlPoints(
+        pointSet, static_cast<const AttractorItem &>(from).controlPoints(pointSet), error);
+}
+
+void PointSetPart::describe(const Item &item, QList<PropertyDescription> &out) const
+{
+    if (!applies(item))
+        return;
+    const auto &a = static_cast<const AttractorItem &>(item);
+    PropertyDescription d;
+    d.info.key = key;
+    d.info.label = texts.label ? texts.translate(texts.label) : key;
+    d.typeName = QStringLiteral("points");
+    d.json = key;
+    d.value = ProjectIO::pointsToJson(a.controlPoints(pointSet), a.pointDimension());
+    d.scalar = false;
+    out << d;
 }
 
 } // namespace awb

@@ -80,6 +80,16 @@ public:
 
     const AlgorithmSpec &algorithm() const { return m_algorithm; }
     MaybeProblem checkAlgorithm(const AlgorithmSpec &a) const { return a.check(mapCount()); }
+    // The checks of every kind's spec: its own (`own`, its field under `prefix`), then the
+    // algorithm's depth bound with the number of maps the spec makes.
+    MaybeProblem checkWithMaps(const MaybeProblem &own, int maps, const QString &prefix = {}) const
+    {
+        if (own)
+            return Problem{prefix + own->field, own->message};
+        if (auto p = m_algorithm.check(maps))
+            return Problem{"algorithm." + p->field, p->message};
+        return std::nullopt;
+    }
     bool setAlgorithm(const AlgorithmSpec &algorithm, int gesture = 0);
 
     // The number of maps the inputs ask for, known without building the IFS (-1: unknown).
@@ -111,6 +121,9 @@ public:
     bool removeControlPoint(int index, int set = 0);
     // Removes several points as one undo step.
     bool removeControlPoints(std::vector<int> indices, int set = 0);
+    // The whole set as one undo step (moves, then inserts or removes at the end); false with
+    // *error when the count is fixed, too large, or a point is not finite.
+    bool setControlPoints(int set, const PointList &points, QString *error = nullptr);
 
     // The derived IFS, computed on first use after an edit; null when it cannot be computed,
     // with the reason in derivedError().
@@ -122,9 +135,11 @@ public:
     // Throws InputError.
     StartSet coreStartSet(const DerivedIfs &derived) const;
 
-    void write(QJsonObject &json) const override;
-    void read(const FieldReader &fields) override;
     void checkLoaded(const FieldReader &fields) const override;
+
+    // The declared start set and algorithm, after Item's (PropertyTable.h): the base of every
+    // attractor kind's declaration.
+    static const PropertyTable &attractorProperties();
 
 signals:
     void startSetChanged();
@@ -152,6 +167,7 @@ protected:
     void setInitialStartSet(const StartSetSpec &startSet) { m_startSet = startSet; }
 
 private:
+    friend class PointSetPart;  // stores the points read from a file
     friend class MoveControlPointsCommand;
     friend class InsertControlPointCommand;
     friend class RemoveControlPointCommand;

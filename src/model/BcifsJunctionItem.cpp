@@ -2,15 +2,15 @@
 
 #include "core/schemes/ControlPointFractal.h"
 #include "model/Commands.h"
+#include "model/PointSetProperty.h"
 #include "model/ProjectIO.h"
+#include "model/PropertyTable.h"
 
 #include <cmath>
 
 namespace awb {
 
 namespace {
-
-const char *const pointKeys[3] = {"left_points", "right_points", "handles"};
 
 // Passes a state's images on, written into that state's block of the item's space (the
 // concatenation of all edge states' barycentric spaces), so that one view draws them all.
@@ -96,11 +96,7 @@ int BcifsJunctionItem::controlPointSetCount() const
 
 bool BcifsJunctionItem::setSpec(const JunctionSpec &spec, int gesture)
 {
-    if (checkSpec(spec))
-        return false;
-    applyProperty(&BcifsJunctionItem::m_spec, spec, &BcifsJunctionItem::specChanged,
-                  tr("Change junction of %1").arg(name()), gesture);
-    return true;
+    return setDeclared(*this, spec, gesture);
 }
 
 DerivedIfs BcifsJunctionItem::computeIfs() const
@@ -176,108 +172,58 @@ DerivedIfs BcifsJunctionItem::computeIfs() const
     return out;
 }
 
-void BcifsJunctionItem::write(QJsonObject &json) const
+// ---- declared properties ----------------------------------------------------------------------
+
+const PropertyTable &BcifsJunctionItem::declaration()
 {
-    AttractorItem::write(json);
-    json["variant"] = JunctionSpec::variantNames().at(int(m_spec.variant));
-    if (m_spec.variant == JunctionSpec::Variant::CubicQuadratic) {
+    static const PropertyTable table = [] {
+        using V = JunctionSpec::Variant;
+        Declaration<BcifsJunctionItem> d(&AttractorItem::attractorProperties());
+        auto spec = d.part(&BcifsJunctionItem::m_spec, &BcifsJunctionItem::checkSpec,
+                           &BcifsJunctionItem::specChanged, QT_TR_NOOP("Change junction of %1"));
+        spec.checkedOnRead(
+            [](const BcifsJunctionItem &, const JunctionSpec &s) { return s.check(); });
+        spec.choice("variant", &JunctionSpec::variant, JunctionSpec::variantNames(),
+                    {QT_TR_NOOP("Cubic–quadratic (003 §4.1)"),
+                     QT_TR_NOOP("Refined, with handles (003 §5)")})
+            .label(QT_TR_NOOP("Junction"))
+            .group(QT_TR_NOOP("Junction"))
+            .required();
+        const auto cubicQuadratic = [](const JunctionSpec &s) {
+            return s.variant == V::CubicQuadratic;
+        };
+        const auto refined = [](const JunctionSpec &s) { return s.variant == V::Refined; };
         for (int i = 0; i < 8; ++i)
-            json[JunctionSpec::freeKeys()[i]] = m_spec.freeValue(i);
-    } else {
-        json["j"] = m_spec.refined.j;
-        json["r"] = m_spec.refined.r;
-    }
-    for (int set = 0; set < controlPointSetCount(); ++set)
-        json[pointKeys[set]] = ProjectIO::pointsToJson(m_points[size_t(set)]);
-}
-
-void BcifsJunctionItem::read(const FieldReader &fields)
-{
-    AttractorItem::read(fields);
-    JunctionSpec spec;
-    spec.variant = JunctionSpec::Variant(fields.choice("variant", JunctionSpec::variantNames()));
-    if (spec.variant == JunctionSpec::Variant::CubicQuadratic) {
-        for (int i = 0; i < 8; ++i)
-            *spec.freeSlot(i) = fields.number(JunctionSpec::freeKeys()[i], spec.freeValue(i));
-    } else {
-        spec.refined.j = fields.number("j", spec.refined.j);
-        spec.refined.r = fields.number("r", spec.refined.r);
-    }
-    fields.require(spec.check());
-    m_spec = spec;
-    m_points[0] = fields.points(pointKeys[0]);
-    m_points[1] = fields.points(pointKeys[1]);
-    if (spec.variant == JunctionSpec::Variant::Refined)
-        m_points[2] = fields.points(pointKeys[2]);
-}
-
-// ---- generic parameters ---------------------------------------------------------------------
-
-QList<ParameterInfo> BcifsJunctionItem::parameters() const
-{
-    using P = ParameterInfo;
-    const QString group = tr("Junction");
-    QList<ParameterInfo> list;
-    list << P::make("variant", tr("Junction"), P::Type::Choice)
-                .options({tr("Cubic–quadratic (003 §4.1)"), tr("Refined, with handles (003 §5)")})
-                .in(group);
-    if (m_spec.variant == JunctionSpec::Variant::CubicQuadratic) {
-        for (int i = 0; i < 8; ++i) {
-            const QString key = JunctionSpec::freeKeys()[i];
-            list << P::make(key, key, P::Type::Real)
-                        .slider(-0.5, 1)
-                        .in(group)
-                        .tip(i < 4 ? tr("Last column (a, b, c, d, e) of T^l; e = 1 − a − b − c "
+            spec.real(JunctionSpec::freeKeys()[i],
+                      [i](JunctionSpec &s) -> double & { return *s.freeSlot(i); })
+                .slider(-0.5, 1)
+                .group(QT_TR_NOOP("Junction"))
+                .tip(i < 4 ? QT_TR_NOOP("Last column (a, b, c, d, e) of T^l; e = 1 − a − b − c "
                                         "− d (003 §4.1)")
-                                   : tr("First column (k, l, m, n, p) of T^r; p = 1 − k − l − m "
-                                        "− n (003 §4.1)"));
-        }
-    } else {
+                           : QT_TR_NOOP("First column (k, l, m, n, p) of T^r; p = 1 − k − l − m "
+                                        "− n (003 §4.1)"))
+                .when(cubicQuadratic);
         const ParameterRange j = refinedRangeJ(), r = refinedRangeR();
-        list << P::make("j", tr("Left eigenvalue j"), P::Type::Real)
-                    .range(j.lo, j.hi).slider(j.lo, j.hi).in(group)
-                    .tip(tr("Tangent eigenvalue of T^il (003 §5)"));
-        list << P::make("r", tr("Right eigenvalue r"), P::Type::Real)
-                    .range(r.lo, r.hi).slider(r.lo, r.hi).in(group)
-                    .tip(tr("Tangent eigenvalue of T^ir (003 §5)"));
-    }
-    return list;
-}
-
-QVariant BcifsJunctionItem::parameter(const QString &key) const
-{
-    if (key == "variant")
-        return int(m_spec.variant);
-    if (key == "j")
-        return m_spec.refined.j;
-    if (key == "r")
-        return m_spec.refined.r;
-    const int i = int(JunctionSpec::freeKeys().indexOf(key));
-    return i >= 0 ? QVariant(m_spec.freeValue(i)) : QVariant();
-}
-
-bool BcifsJunctionItem::setParameter(const QString &key, const QVariant &value, int gesture,
-                                     QString *error)
-{
-    JunctionSpec next = m_spec;
-    bool ok = true;
-    const int i = int(JunctionSpec::freeKeys().indexOf(key));
-    if (key == "variant") {
-        const int v = value.toInt(&ok);
-        ok = ok && v >= 0 && v < JunctionSpec::variantNames().size();
-        if (ok)
-            next.variant = JunctionSpec::Variant(v);
-    } else if (key == "j") {
-        next.refined.j = value.toDouble(&ok);
-    } else if (key == "r") {
-        next.refined.r = value.toDouble(&ok);
-    } else if (i >= 0) {
-        *next.freeSlot(i) = value.toDouble(&ok);
-    } else {
-        return Item::setParameter(key, value, gesture, error);
-    }
-    return commitParameter(key, value, ok, checkSpec(next),
-                           [&] { return setSpec(next, gesture); }, error);
+        spec.real("j", [](JunctionSpec &s) -> double & { return s.refined.j; })
+            .label(QT_TR_NOOP("Left eigenvalue j"))
+            .group(QT_TR_NOOP("Junction"))
+            .range(j.lo, j.hi)
+            .slider(j.lo, j.hi)
+            .tip(QT_TR_NOOP("Tangent eigenvalue of T^il (003 §5)"))
+            .when(refined);
+        spec.real("r", [](JunctionSpec &s) -> double & { return s.refined.r; })
+            .label(QT_TR_NOOP("Right eigenvalue r"))
+            .group(QT_TR_NOOP("Junction"))
+            .range(r.lo, r.hi)
+            .slider(r.lo, r.hi)
+            .tip(QT_TR_NOOP("Tangent eigenvalue of T^ir (003 §5)"))
+            .when(refined);
+        declarePointSet(d, 0, QStringLiteral("left_points"), QT_TR_NOOP("Left cubic"));
+        declarePointSet(d, 1, QStringLiteral("right_points"), QT_TR_NOOP("Right quadratic"));
+        declarePointSet(d, 2, QStringLiteral("handles"), QT_TR_NOOP("Handles"));
+        return d.table();
+    }();
+    return table;
 }
 
 } // namespace awb

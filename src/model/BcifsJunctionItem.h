@@ -47,12 +47,11 @@ public:
     // Undoable; refused when checkSpec() complains. A nonzero gesture merges a slider drag.
     bool setSpec(const JunctionSpec &spec, int gesture = 0);
 
-    // "variant"; then "a", "b", "c", "d", "k", "l", "m", "n" (cubic-quadratic) or "j", "r"
-    // (refined, with sliders over their admissible ranges).
-    QList<ParameterInfo> parameters() const override;
-    QVariant parameter(const QString &key) const override;
-    bool setParameter(const QString &key, const QVariant &value, int gesture = 0,
-                      QString *error = nullptr) override;
+    // Declared: "variant"; then "a", "b", "c", "d", "k", "l", "m", "n" (cubic-quadratic) or
+    // "j", "r" (refined, with sliders over their admissible ranges); the point sets
+    // "left_points", "right_points" and (refined) "handles".
+    static const PropertyTable &declaration();
+    const PropertyTable &properties() const override { return declaration(); }
 
     // The most arcs leaving one state (the junction state: T^l, T^r, T^i): bounds the depth.
     int mapCount() const override { return 3; }
@@ -61,9 +60,6 @@ public:
     int controlPointSetCount() const override;
     // The cubic (4 points), the quadratic (3) and the handles (3) are fixed by 003 §4-5.
     bool pointCountEditable(int) const override { return false; }
-
-    void write(QJsonObject &json) const override;
-    void read(const FieldReader &fields) override;
 
 signals:
     void specChanged();

@@ -3,6 +3,7 @@
 #include "core/ifs/BezierAttractor.h"
 #include "model/Commands.h"
 #include "model/ProjectIO.h"
+#include "model/PropertyTable.h"
 
 #include <cmath>
 
@@ -31,16 +32,6 @@ Mat curveSpace(const BezierSplit &split, const Mat &X)
     return split.planar ? X : split.lifted.toIfsSpace(X);
 }
 
-bool parseCurveKey(const QString &key, int curves, int *index)
-{
-    const QStringList parts = key.split(QLatin1Char('.'));
-    if (parts.size() != 3 || parts[0] != "curves" || parts[2] != "u")
-        return false;
-    bool ok = false;
-    *index = parts[1].toInt(&ok);
-    return ok && *index >= 0 && *index < curves;
-}
-
 } // namespace
 
 // ---- BezierUnionSpec --------------------------------------------------------------------------
@@ -55,6 +46,9 @@ MaybeProblem BezierUnionSpec::check() const
 {
     if (u.empty())
         return Problem{"curves", tr("a union needs at least one curve")};
+    if (u.size() != points.size())
+        return Problem{"curves", tr("%1 split parameters for %2 curves")
+                                     .arg(u.size()).arg(points.size())};
     for (size_t i = 0; i < u.size(); ++i)
         if (!(std::isfinite(u[i]) && u[i] > 0.0 && u[i] < 1.0))
             return Problem{QStringLiteral("curves[%1].u").arg(i + 1),
@@ -70,39 +64,27 @@ int BezierUnionSpec::mapCount() const
 
 // ---- BezierUnionItem --------------------------------------------------------------------------
 
-BezierUnionItem::BezierUnionItem()
-    : AttractorItem(tr("Bézier union")),
-      m_points{{{0, 0}, {0.5, 1}, {1, 0}}, {{1, 0}, {1.5, -1}, {2, 0}}}
+BezierUnionItem::BezierUnionItem() : AttractorItem(tr("Bézier union"))
 {
     m_spec.u = {0.5, 0.5};
+    m_spec.points = {{{0, 0}, {0.5, 1}, {1, 0}}, {{1, 0}, {1.5, -1}, {2, 0}}};
 }
 
 MaybeProblem BezierUnionItem::checkSpec(const BezierUnionSpec &spec) const
 {
-    if (auto p = spec.check())
-        return p;
-    if (spec.u.size() != m_points.size())
-        return Problem{"curves", tr("%1 split parameters for %2 curves")
-                                     .arg(spec.u.size()).arg(m_points.size())};
-    if (auto p = algorithm().check(spec.mapCount()))
-        return Problem{"algorithm." + p->field, p->message};
-    return std::nullopt;
+    return checkWithMaps(spec.check(), spec.mapCount());
 }
 
 bool BezierUnionItem::setSpec(const BezierUnionSpec &spec, int gesture)
 {
-    if (checkSpec(spec))
-        return false;
-    applyProperty(&BezierUnionItem::m_spec, spec, &BezierUnionItem::specChanged,
-                  tr("Change Bézier union %1").arg(name()), gesture);
-    return true;
+    return setDeclared(*this, spec, gesture);
 }
 
 DerivedIfs BezierUnionItem::computeIfs() const
 {
     std::vector<BezierCurveSpec> curves;
-    for (size_t k = 0; k < m_points.size(); ++k)
-        curves.push_back({toMatrix(m_points[k]), m_spec.u[k]});
+    for (size_t k = 0; k < m_spec.points.size(); ++k)
+        curves.push_back({toMatrix(m_spec.points[k]), m_spec.u[k]});
     DerivedIfs out;
     if (m_spec.mode == BezierUnionSpec::Mode::Block) {
         const BezierUnion u = bezierUnion(curves);
@@ -159,93 +141,70 @@ DerivedIfs BezierUnionItem::computeIfs() const
     return out;
 }
 
-void BezierUnionItem::write(QJsonObject &json) const
-{
-    AttractorItem::write(json);
-    json["mode"] = BezierUnionSpec::modeNames().at(int(m_spec.mode));
-    QJsonArray curves;
-    for (size_t k = 0; k < m_points.size(); ++k)
-        curves.append(QJsonObject{{"control_points", ProjectIO::pointsToJson(m_points[k])},
-                                  {"u", m_spec.u[k]}});
-    json["curves"] = curves;
-}
+// ---- declared properties ----------------------------------------------------------------------
 
-void BezierUnionItem::read(const FieldReader &fields)
+const PropertyTable &BezierUnionItem::declaration()
 {
-    AttractorItem::read(fields);
-    BezierUnionSpec spec;
-    spec.mode = BezierUnionSpec::Mode(
-        fields.choice("mode", BezierUnionSpec::modeNames(), int(spec.mode)));
-    const QJsonValue v = fields.value("curves");
-    if (v.isUndefined())
-        fields.fail("curves", tr("missing"));
-    if (!v.isArray() || v.toArray().isEmpty())
-        fields.fail("curves", tr("expected a non-empty array of curves "
-                                 "{\"control_points\": [...], \"u\": number}"));
-    std::vector<PointList> points;
-    const QJsonArray list = v.toArray();
-    for (qsizetype k = 0; k < list.size(); ++k) {
-        const QString where = fields.path("curves") + QStringLiteral("[%1]").arg(k + 1);
-        if (!list[k].isObject())
-            throw LoadError{where, tr("expected an object with \"control_points\" and \"u\"")};
-        const FieldReader curve(list[k].toObject(), where + QLatin1Char('.'));
-        points.push_back(curve.points("control_points"));
-        spec.u.push_back(curve.number("u", 0.5));
-    }
-    fields.require(spec.check());
-    m_spec = spec;
-    m_points = points;
-}
-
-// ---- generic parameters ---------------------------------------------------------------------
-
-QList<ParameterInfo> BezierUnionItem::parameters() const
-{
-    using P = ParameterInfo;
-    QList<ParameterInfo> list;
-    list << P::make("mode", tr("Union"), P::Type::Choice)
-                .options({tr("Exact union (block IFS, 000 §2.2)"),
-                          tr("All maps together (dusty fractal, 002 §6)")})
-                .in(tr("Union"));
-    for (int k = 0; k < int(m_spec.u.size()); ++k)
-        list << P::make(QStringLiteral("curves.%1.u").arg(k), tr("Split parameter u"),
-                        P::Type::Real)
-                    .range(0, 1)
-                    .slider(0.01, 0.99)
-                    .in(tr("Curve %1").arg(k + 1))
-                    .tip(tr("de Casteljau split at u, 0 < u < 1 (002 eqs. (9)-(10)); the "
-                            "curve is the same for every u, the IFS is not"));
-    return list;
-}
-
-QVariant BezierUnionItem::parameter(const QString &key) const
-{
-    if (key == "mode")
-        return int(m_spec.mode);
-    int k = 0;
-    if (parseCurveKey(key, int(m_spec.u.size()), &k))
-        return m_spec.u[size_t(k)];
-    return {};
-}
-
-bool BezierUnionItem::setParameter(const QString &key, const QVariant &value, int gesture,
-                                   QString *error)
-{
-    BezierUnionSpec next = m_spec;
-    bool ok = true;
-    int k = 0;
-    if (key == "mode") {
-        const int index = value.toInt(&ok);
-        ok = ok && index >= 0 && index < BezierUnionSpec::modeNames().size();
-        if (ok)
-            next.mode = BezierUnionSpec::Mode(index);
-    } else if (parseCurveKey(key, int(m_spec.u.size()), &k)) {
-        next.u[size_t(k)] = value.toDouble(&ok);
-    } else {
-        return Item::setParameter(key, value, gesture, error);
-    }
-    return commitParameter(key, value, ok, checkSpec(next),
-                           [&] { return setSpec(next, gesture); }, error);
+    static const PropertyTable table = [] {
+        using S = BezierUnionSpec;
+        Declaration<BezierUnionItem> d(&AttractorItem::attractorProperties());
+        auto spec = d.part(&BezierUnionItem::m_spec, &BezierUnionItem::checkSpec,
+                           &BezierUnionItem::specChanged, QT_TR_NOOP("Change Bézier union %1"));
+        spec.checkedOnRead([](const BezierUnionItem &, const S &s) { return s.check(); });
+        spec.choice("mode", &S::mode, S::modeNames(),
+                    {QT_TR_NOOP("Exact union (block IFS, 000 §2.2)"),
+                     QT_TR_NOOP("All maps together (dusty fractal, 002 §6)")})
+            .label(QT_TR_NOOP("Union"))
+            .group(QT_TR_NOOP("Union"));
+        spec.structured(
+                "curves", QStringLiteral("curves"),
+                [](const BezierUnionItem &, const S &s) {
+                    QJsonArray curves;
+                    for (size_t k = 0; k < s.points.size(); ++k)
+                        curves.append(
+                            QJsonObject{{"control_points", ProjectIO::pointsToJson(s.points[k])},
+                                        {"u", s.u[k]}});
+                    return QJsonValue(curves);
+                },
+                [](const BezierUnionItem &, S &s, const QJsonValue &v, const QString &where) {
+                    if (!v.isArray() || v.toArray().isEmpty())
+                        throw LoadError{where, tr("expected a non-empty array of curves "
+                                                  "{\"control_points\": [...], \"u\": number}")};
+                    s.points.clear();
+                    s.u.clear();
+                    const QJsonArray list = v.toArray();
+                    for (qsizetype k = 0; k < list.size(); ++k) {
+                        const QString at = where + QStringLiteral("[%1]").arg(k + 1);
+                        if (!list[k].isObject())
+                            throw LoadError{at, tr("expected an object with \"control_points\" "
+                                                   "and \"u\"")};
+                        const FieldReader curve(list[k].toObject(), at + QLatin1Char('.'));
+                        s.points.push_back(curve.points("control_points"));
+                        s.u.push_back(curve.number("u", 0.5));
+                    }
+                })
+            .label(QT_TR_NOOP("Curves"))
+            .tip(QT_TR_NOOP("Each curve's control points and split parameter u"))
+            .required()
+            .elements(
+                QStringLiteral("curves.%1.u"), QT_TR_NOOP("Split parameter u"),
+                ParameterInfo::Type::Real, [](const S &s) { return int(s.u.size()); },
+                [](const S &s, int k) { return QVariant(s.u[size_t(k)]); },
+                [](S &s, int k, const QVariant &v) -> MaybeProblem {
+                    const auto x = property::toReal(v);
+                    if (!x)
+                        return Problem{"u", property::notValid(v, QStringLiteral("u"))};
+                    s.u[size_t(k)] = *x;
+                    return std::nullopt;
+                },
+                QT_TR_NOOP("Curve %1"))
+            .range(0, 1)
+            .slider(0.01, 0.99)
+            .tip(QT_TR_NOOP("de Casteljau split at u, 0 < u < 1 (002 eqs. (9)-(10)); the curve "
+                            "is the same for every u, the IFS is not"));
+        return d.table();
+    }();
+    return table;
 }
 
 } // namespace awb

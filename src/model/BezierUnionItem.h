@@ -14,10 +14,11 @@ public:
     enum class Mode { Block, Combined };
     Mode mode = Mode::Block;
     std::vector<double> u;  // one split parameter per curve, each in (0, 1)
+    std::vector<PointList> points;  // each curve's control points (point set i is curve i)
 
     bool operator==(const BezierUnionSpec &) const = default;
-    // At least one curve; every u finite and strictly between 0 and 1 (field "curves.<i>.u",
-    // 1-based like the file's messages).
+    // At least one curve, one u per curve; every u finite and strictly between 0 and 1 (field
+    // "curves[i].u", 1-based like the file's messages).
     MaybeProblem check() const;
     // Block: 2 (map i acts on every curve); combined: 2 per curve.
     int mapCount() const;
@@ -41,29 +42,24 @@ public:
     // complains. A nonzero gesture merges the steps of a slider drag.
     bool setSpec(const BezierUnionSpec &spec, int gesture = 0);
 
-    // "mode", then "curves.<i>.u" for i = 0 .. curves - 1 (0-based like the point sets).
-    QList<ParameterInfo> parameters() const override;
-    QVariant parameter(const QString &key) const override;
-    bool setParameter(const QString &key, const QVariant &value, int gesture = 0,
-                      QString *error = nullptr) override;
+    // Declared: "mode", the curves (saved as "curves", each its control points and u), shown
+    // as "curves.<i>.u" for i = 0 .. curves - 1 (0-based like the point sets).
+    static const PropertyTable &declaration();
+    const PropertyTable &properties() const override { return declaration(); }
 
     int mapCount() const override { return m_spec.mapCount(); }
     // Point set i is curve i's control points.
-    int controlPointSetCount() const override { return int(m_points.size()); }
-
-    void write(QJsonObject &json) const override;
-    void read(const FieldReader &fields) override;
+    int controlPointSetCount() const override { return int(m_spec.points.size()); }
 
 signals:
     void specChanged();
 
 protected:
     DerivedIfs computeIfs() const override;
-    PointList &pointStorage(int set) override { return m_points[size_t(set)]; }
+    PointList &pointStorage(int set) override { return m_spec.points[size_t(set)]; }
 
 private:
     BezierUnionSpec m_spec;
-    std::vector<PointList> m_points;
 };
 
 } // namespace awb

@@ -3,7 +3,9 @@
 #include "core/schemes/ControlPointFractal.h"
 #include "core/ifs/Cifs.h"
 #include "model/Commands.h"
+#include "model/PointSetProperty.h"
 #include "model/ProjectIO.h"
+#include "model/PropertyTable.h"
 
 namespace awb {
 
@@ -55,11 +57,7 @@ CifsItem::CifsItem() : AttractorItem(tr("Fern of gaskets")), m_frame(toPoints(fe
 
 bool CifsItem::setSpec(const CifsSpec &spec, int gesture)
 {
-    if (checkSpec(spec))
-        return false;
-    applyProperty(&CifsItem::m_spec, spec, &CifsItem::specChanged,
-                  tr("Change automaton of %1").arg(name()), gesture);
-    return true;
+    return setDeclared(*this, spec, gesture);
 }
 
 DerivedIfs CifsItem::computeIfs() const
@@ -97,70 +95,45 @@ DerivedIfs CifsItem::computeIfs() const
     return out;
 }
 
-void CifsItem::write(QJsonObject &json) const
-{
-    AttractorItem::write(json);
-    json["preset"] = CifsSpec::presetNames().front();
-    json["redirected"] = m_spec.redirected;
-    json["state"] = m_spec.state;
-    json["control_points"] = ProjectIO::pointsToJson(m_frame);
-}
+// ---- declared properties ----------------------------------------------------------------------
 
-void CifsItem::read(const FieldReader &fields)
+const PropertyTable &CifsItem::declaration()
 {
-    AttractorItem::read(fields);
-    fields.choice("preset", CifsSpec::presetNames());
-    CifsSpec spec;
-    spec.redirected = int(fields.integer("redirected", spec.redirected, 0, 3));
-    spec.state = CifsSpec::stateNames().at(
-        fields.choice("state", CifsSpec::stateNames(), 0));
-    fields.require(spec.check());
-    m_spec = spec;
-    m_frame = fields.points("control_points", toPoints(fernFrame()));
-}
-
-QList<ParameterInfo> CifsItem::parameters() const
-{
-    using P = ParameterInfo;
-    const QString group = tr("Automaton");
-    return {P::make("redirected", tr("Redirected arc"), P::Type::Integer)
-                .range(0, 3)
-                .slider(0, 3)
-                .in(group)
-                .tip(tr("The fern map (0 stem, 1 main frond, 2 left, 3 right leaflet) whose arc "
-                        "leads into the Sierpiński state (003 Fig. 4)")),
-            P::make("state", tr("Drawn state"), P::Type::Choice)
-                .options(CifsSpec::stateNames())
-                .in(group)
-                .tip(tr("The state whose attractor is drawn"))};
-}
-
-QVariant CifsItem::parameter(const QString &key) const
-{
-    if (key == "redirected")
-        return m_spec.redirected;
-    if (key == "state")
-        return int(CifsSpec::stateNames().indexOf(m_spec.state));
-    return {};
-}
-
-bool CifsItem::setParameter(const QString &key, const QVariant &value, int gesture,
-                            QString *error)
-{
-    CifsSpec next = m_spec;
-    bool ok = true;
-    if (key == "redirected") {
-        next.redirected = value.toInt(&ok);
-    } else if (key == "state") {
-        const int index = value.toInt(&ok);
-        ok = ok && index >= 0 && index < CifsSpec::stateNames().size();
-        if (ok)
-            next.state = CifsSpec::stateNames().at(index);
-    } else {
-        return Item::setParameter(key, value, gesture, error);
-    }
-    return commitParameter(key, value, ok, checkSpec(next),
-                           [&] { return setSpec(next, gesture); }, error);
+    static const PropertyTable table = [] {
+        Declaration<CifsItem> d(&AttractorItem::attractorProperties());
+        auto spec = d.part(&CifsItem::m_spec, &CifsItem::checkSpec, &CifsItem::specChanged,
+                           QT_TR_NOOP("Change automaton of %1"));
+        spec.checkedOnRead([](const CifsItem &, const CifsSpec &s) { return s.check(); });
+        spec.choiceBy(
+                "preset", CifsSpec::presetNames(),
+                {QT_TR_NOOP("Fern of gaskets (003 Fig. 4)")}, [](const CifsSpec &) { return 0; },
+                [](CifsSpec &, int) {})
+            .label(QT_TR_NOOP("Automaton"))
+            .group(QT_TR_NOOP("Automaton"))
+            .shownOnly()
+            .required();
+        spec.integer("redirected", &CifsSpec::redirected)
+            .label(QT_TR_NOOP("Redirected arc"))
+            .group(QT_TR_NOOP("Automaton"))
+            .range(0, 3)
+            .slider(0, 3)
+            .tip(QT_TR_NOOP("The fern map (0 stem, 1 main frond, 2 left, 3 right leaflet) whose "
+                            "arc leads into the Sierpiński state (003 Fig. 4)"));
+        spec.choiceBy(
+                "state", CifsSpec::stateNames(), {},
+                [](const CifsSpec &s) { return int(CifsSpec::stateNames().indexOf(s.state)); },
+                [](CifsSpec &s, int i) { s.state = CifsSpec::stateNames().at(i); })
+            .label(QT_TR_NOOP("Drawn state"))
+            .group(QT_TR_NOOP("Automaton"))
+            .tip(QT_TR_NOOP("The state whose attractor is drawn"))
+            .choicesFrom([](const CifsItem &, const CifsSpec &) {
+                return CifsSpec::stateNames();
+            });
+        declarePointSet(d, 0, QStringLiteral("control_points"), QT_TR_NOOP("Frame"))
+            .fallback = [](const AttractorItem &) { return toPoints(fernFrame()); };
+        return d.table();
+    }();
+    return table;
 }
 
 } // namespace awb

@@ -37,20 +37,16 @@ public:
     MaybeProblem checkSpec(const CifsSpec &spec) const { return spec.check(); }
     bool setSpec(const CifsSpec &spec, int gesture = 0);
 
-    // "redirected" (Integer 0..3), "state" (Choice of stateNames()).
-    QList<ParameterInfo> parameters() const override;
-    QVariant parameter(const QString &key) const override;
-    bool setParameter(const QString &key, const QVariant &value, int gesture = 0,
-                      QString *error = nullptr) override;
+    // Declared: "preset" (shown), "redirected" (0..3), "state" (one of stateNames()), the
+    // frame "control_points".
+    static const PropertyTable &declaration();
+    const PropertyTable &properties() const override { return declaration(); }
 
     // The fern state's four arcs: the most leaving one state, it bounds the depth.
     int mapCount() const override { return 4; }
     // The frame triangle (3 points).
     int controlPointSetCount() const override { return 1; }
     bool pointCountEditable(int) const override { return false; } // the frame triangle
-
-    void write(QJsonObject &json) const override;
-    void read(const FieldReader &fields) override;
 
 signals:
     void specChanged();

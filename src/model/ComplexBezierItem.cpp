@@ -2,7 +2,9 @@
 
 #include "core/schemes/ComplexBezier.h"
 #include "model/Commands.h"
+#include "model/PointSetProperty.h"
 #include "model/ProjectIO.h"
+#include "model/PropertyTable.h"
 
 #include <cmath>
 
@@ -13,7 +15,7 @@ ComplexBezierItem::ComplexBezierItem()
 {
 }
 
-MaybeProblem ComplexBezierItem::checkT(std::complex<double> t) const
+MaybeProblem ComplexBezierItem::checkT(const std::complex<double> &t) const
 {
     if (!std::isfinite(t.real()) || !std::isfinite(t.imag()))
         return Problem{"t", tr("the parameter t must be a finite complex number")};
@@ -22,11 +24,7 @@ MaybeProblem ComplexBezierItem::checkT(std::complex<double> t) const
 
 bool ComplexBezierItem::setT(std::complex<double> t, int gesture)
 {
-    if (checkT(t))
-        return false;
-    applyProperty(&ComplexBezierItem::m_t, t, &ComplexBezierItem::tChanged,
-                  tr("Change t of %1").arg(name()), gesture);
-    return true;
+    return setDeclared(*this, t, gesture);
 }
 
 DerivedIfs complexBezierDerivedIfs(const Mat &P, std::complex<double> t)
@@ -65,63 +63,32 @@ DerivedIfs ComplexBezierItem::computeIfs() const
     return out;
 }
 
-void ComplexBezierItem::write(QJsonObject &json) const
-{
-    AttractorItem::write(json);
-    json["t"] = QJsonArray{m_t.real(), m_t.imag()};
-    json["control_points"] = ProjectIO::pointsToJson(m_points);
-}
+// ---- declared properties ----------------------------------------------------------------------
 
-void ComplexBezierItem::read(const FieldReader &fields)
+const PropertyTable &ComplexBezierItem::declaration()
 {
-    AttractorItem::read(fields);
-    const QJsonValue t = fields.value("t");
-    if (t.isUndefined())
-        fields.fail("t", tr("missing"));
-    if (!t.isArray() || t.toArray().size() != 2)
-        fields.fail("t", tr("expected [re, im]"));
-    const std::complex<double> value{
-        FieldReader::toNumber(t.toArray()[0], fields.path("t") + "[1]"),
-        FieldReader::toNumber(t.toArray()[1], fields.path("t") + "[2]")};
-    fields.require(checkT(value));
-    m_t = value;
-    m_points = fields.points("control_points");
-}
-
-QList<ParameterInfo> ComplexBezierItem::parameters() const
-{
-    using P = ParameterInfo;
-    return {P::make("t", tr("Split parameter t"), P::Type::Complex)
-                .in(tr("Curve"))
-                .tip(tr("de Casteljau split at a complex t; inside both discs |t| < 1 and "
-                        "|1 − t| < 1 the curve is a fractal (004 §3.7, Fig. 3.3)"))};
-}
-
-QVariant ComplexBezierItem::parameter(const QString &key) const
-{
-    if (key == "t")
-        return QPointF(m_t.real(), m_t.imag());
-    return {};
-}
-
-bool ComplexBezierItem::setParameter(const QString &key, const QVariant &value, int gesture,
-                                     QString *error)
-{
-    if (key != "t")
-        return Item::setParameter(key, value, gesture, error);
-    if (!value.canConvert<QPointF>() || value.typeId() != QMetaType::QPointF) {
-        if (error)
-            *error = tr("\"%1\" is not a valid value for %2").arg(value.toString(), key);
-        return false;
-    }
-    const QPointF p = value.toPointF();
-    const std::complex<double> t{p.x(), p.y()};
-    if (const MaybeProblem problem = checkT(t)) {
-        if (error)
-            *error = problem->message;
-        return false;
-    }
-    return setT(t, gesture);
+    static const PropertyTable table = [] {
+        using Z = std::complex<double>;
+        Declaration<ComplexBezierItem> d(&AttractorItem::attractorProperties());
+        auto t = d.part(&ComplexBezierItem::m_t, &ComplexBezierItem::checkT,
+                        &ComplexBezierItem::tChanged, QT_TR_NOOP("Change t of %1"));
+        t.checkedOnRead([](const ComplexBezierItem &item, const Z &z) { return item.checkT(z); });
+        t.complex("t", [](Z &z) -> Z & { return z; })
+            .label(QT_TR_NOOP("Split parameter t"))
+            .group(QT_TR_NOOP("Curve"))
+            .tip(QT_TR_NOOP("de Casteljau split at a complex t; inside both discs |t| < 1 and "
+                            "|1 − t| < 1 the curve is a fractal (004 §3.7, Fig. 3.3)"))
+            .required()
+            .codec([](const ComplexBezierItem &, const Z &z) { return property::complexToJson(z); },
+                   [](const ComplexBezierItem &, Z &z, const QJsonValue &v, const QString &where) {
+                       if (!v.isArray() || v.toArray().size() != 2)
+                           throw LoadError{where, tr("expected [re, im]")};
+                       z = property::complexFromJson(v, where);
+                   });
+        declarePointSet(d, 0, QStringLiteral("control_points"), QT_TR_NOOP("Control points"));
+        return d.table();
+    }();
+    return table;
 }
 
 } // namespace awb

@@ -30,20 +30,15 @@ public:
     std::complex<double> t() const { return m_t; }
     // Refused only when not finite: a t outside the discs is stored, and derivedError() says
     // why there is no attractor (the user may be dragging t across the boundary).
-    MaybeProblem checkT(std::complex<double> t) const;
+    MaybeProblem checkT(const std::complex<double> &t) const;
     bool setT(std::complex<double> t, int gesture = 0);
 
-    // "t" (Complex).
-    QList<ParameterInfo> parameters() const override;
-    QVariant parameter(const QString &key) const override;
-    bool setParameter(const QString &key, const QVariant &value, int gesture = 0,
-                      QString *error = nullptr) override;
+    // Declared: "t" (complex), "control_points".
+    static const PropertyTable &declaration();
+    const PropertyTable &properties() const override { return declaration(); }
 
     int mapCount() const override { return 2; }
     int controlPointSetCount() const override { return 1; }
-
-    void write(QJsonObject &json) const override;
-    void read(const FieldReader &fields) override;
 
 signals:
     void tChanged();

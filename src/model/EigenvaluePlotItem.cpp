@@ -4,6 +4,7 @@
 #include "model/Commands.h"
 #include "model/Project.h"
 #include "model/ProjectIO.h"
+#include "model/PropertyTable.h"
 #include "model/SubdivisionMeshItem.h"
 
 #include "core/mesh/MeshAnalysis.h"
@@ -151,33 +152,193 @@ EigenvalueData EigenvaluePlotItem::compute() const
     return out;
 }
 
-void EigenvaluePlotItem::write(QJsonObject &json) const
+// ---- declared properties ----------------------------------------------------------------------
+
+namespace {
+
+// The source choices: "(none)", the project's attractor items, and a name that is no item
+// (yet), shown as it is. Spellings are the names ("" for none).
+struct SourceChoices {
+    QStringList names, texts;
+};
+
+SourceChoices sourceChoices(const EigenvaluePlotItem &plot, const QString &source)
 {
-    Item::write(json);
-    json["source"] = m_source;
-    json["matrices"] = matrixKindNames().at(int(m_matrixKind));
-    if (vertex() >= 0)
-        json["vertex"] = vertex();
-    if (face() >= 0)
-        json["face"] = face();
+    SourceChoices c;
+    c.names << QString();
+    c.texts << EigenvaluePlotItem::tr("(none)");
+    if (const Project *project = plot.project())
+        for (Item *item : project->items())
+            if (qobject_cast<AttractorItem *>(item)) {
+                c.names << item->name();
+                c.texts << item->name();
+            }
+    if (!c.names.contains(source)) {
+        c.names << source;
+        c.texts << EigenvaluePlotItem::tr("%1 (missing)").arg(source);
+    }
+    return c;
 }
 
-void EigenvaluePlotItem::read(const FieldReader &fields)
+// The mesh the plot analyses, if its source is one.
+const SubdivisionMeshItem *meshSource(const EigenvaluePlotItem &plot)
 {
-    Item::read(fields);
-    m_source = fields.string("source");
-    m_matrixKind = MatrixKind(fields.choice("matrices", matrixKindNames(), int(m_matrixKind)));
-    const auto index = [&fields](const char *key) {
-        if (!fields.has(key))
-            return -1;
-        const double x = fields.number(key);
-        if (x != std::floor(x) || x < 0 || x > 1e9)
-            fields.fail(key, tr("expected a vertex or face number (0-based)"));
-        return int(x);
-    };
-    m_vertexFace = {index("vertex"), index("face")};
-    if (m_vertexFace.second >= 0)
-        m_vertexFace.first = -1;
+    return plot.project()
+               ? qobject_cast<const SubdivisionMeshItem *>(plot.project()->findItem(plot.source()))
+               : nullptr;
+}
+
+// A mesh's choices of analysed matrices: its own, then each extraordinary vertex (and one
+// that no longer is, shown as it is).
+std::vector<std::pair<int, int>> vertexChoices(const EigenvaluePlotItem &plot, QStringList *texts)
+{
+    std::vector<std::pair<int, int>> at{{-1, -1}};
+    *texts = QStringList{EigenvaluePlotItem::tr("(the mesh's matrices)")};
+    if (const SubdivisionMeshItem *mesh = meshSource(plot))
+        for (const ExtraordinaryVertex &e : *mesh->extraordinary()) {
+            at.push_back({e.vertex >= 0 ? e.vertex : -1, e.face});
+            *texts << (e.vertex >= 0
+                           ? EigenvaluePlotItem::tr("vertex %1 (n = %2)").arg(e.vertex).arg(e.valence)
+                           : EigenvaluePlotItem::tr("centre of face %1 (n = %2)")
+                                 .arg(e.face)
+                                 .arg(e.valence));
+        }
+    const std::pair<int, int> chosen{plot.face() >= 0 ? -1 : plot.vertex(), plot.face()};
+    if (std::find(at.begin(), at.end(), chosen) == at.end()) {
+        at.push_back(chosen);
+        *texts << (plot.face() >= 0
+                       ? EigenvaluePlotItem::tr("centre of face %1 (missing)").arg(plot.face())
+                       : EigenvaluePlotItem::tr("vertex %1 (missing)").arg(plot.vertex()));
+    }
+    return at;
+}
+
+// "vertex" and "face" of the file: 0-based, absent for none.
+QJsonValue indexToJson(int i) { return i >= 0 ? QJsonValue(i) : QJsonValue(); }
+
+int indexFromJson(const QJsonValue &v, const QString &where)
+{
+    const double x = FieldReader::toNumber(v, where);
+    if (x != std::floor(x) || x < 0 || x > 1e9)
+        throw LoadError{where, EigenvaluePlotItem::tr("expected a vertex or face number (0-based)")};
+    return int(x);
+}
+
+} // namespace
+
+const PropertyTable &EigenvaluePlotItem::declaration()
+{
+    static const PropertyTable table = [] {
+        using P = EigenvaluePlotItem;
+        Declaration<P> d(&Item::itemProperties());
+        auto source = d.part<QString>(
+            [](const P &p) -> const QString & { return p.m_source; },
+            [](P &p, QString &&s) { p.m_source = std::move(s); }, nullptr,
+            [](P &p, const QString &s, int) { p.setSource(s); });
+        auto &f = source.choiceBy("source", {}, {}, nullptr, nullptr)
+                      .label(QT_TR_NOOP("Source"))
+                      .group(QT_TR_NOOP("Eigenvalues"))
+                      .tip(QT_TR_NOOP("The item whose matrices are analysed"))
+                      .required()
+                      .field();
+        f.dynamicChoices = [](const P &p, const QString &s) { return sourceChoices(p, s).texts; };
+        f.dynamicSpellings = [](const P &p, const QString &s) {
+            return sourceChoices(p, s).names;
+        };
+        f.get = [](const P &p, const QString &s) {
+            return QVariant(int(sourceChoices(p, s).names.indexOf(s)));
+        };
+        f.assign = [](const P &p, QString &s, const QVariant &v) -> MaybeProblem {
+            const QStringList names = sourceChoices(p, s).names;
+            std::optional<qint64> i = property::toWhole(v);
+            if (!i && v.typeId() == QMetaType::QString && names.contains(v.toString()))
+                i = names.indexOf(v.toString());
+            if (!i || *i < 0 || *i >= names.size())
+                return Problem{"source", property::notValid(v, QStringLiteral("source"))};
+            s = names.at(int(*i));
+            return std::nullopt;
+        };
+        // The file keeps the name, whatever the project holds.
+        f.toJson = [](const P &, const QString &s) { return QJsonValue(s); };
+        f.fromJson = [](const P &, QString &s, const QJsonValue &v, const QString &where) {
+            if (!v.isString())
+                throw LoadError{where, QCoreApplication::translate("awb::FieldReader",
+                                                                   "expected a string")};
+            s = v.toString();
+        };
+
+        auto kind = d.part<MatrixKind>(
+            [](const P &p) -> const MatrixKind & { return p.m_matrixKind; },
+            [](P &p, MatrixKind &&k) { p.m_matrixKind = k; }, nullptr,
+            [](P &p, const MatrixKind &k, int) { p.setMatrixKind(k); });
+        kind.choice("matrices", [](MatrixKind &k) -> MatrixKind & { return k; },
+                    matrixKindNames(), {})
+            .label(QT_TR_NOOP("Matrices"))
+            .group(QT_TR_NOOP("Eigenvalues"))
+            .tip(QT_TR_NOOP("S_i: the subdivision matrices (their eigenvalue 1 is affine "
+                            "invariance); A_i: the linear parts of the lifted maps, whose "
+                            "subdominant eigenvalue decides the tangents; M_i: the lifted maps "
+                            "themselves (003 §4, 004 §2.1)"))
+            .choicesFrom([](const P &, const MatrixKind &) { return matrixKindDescriptions(); });
+
+        // For a mesh source: the mesh's own matrices, or the local subdivision matrix of one
+        // of its extraordinary vertices (issue 31).
+        using VF = std::pair<int, int>;
+        auto vertex = d.part<VF>(
+            [](const P &p) -> const VF & { return p.m_vertexFace; },
+            [](P &p, VF &&v) { p.m_vertexFace = v; }, nullptr,
+            [](P &p, const VF &v, int) { p.setExtraordinary(v.first, v.second); });
+        vertex.startsFrom([](const P &) { return VF{-1, -1}; });
+        vertex.structured(
+                  "vertex", QStringLiteral("integer"),
+                  [](const P &, const VF &v) { return indexToJson(v.first); },
+                  [](const P &, VF &v, const QJsonValue &j, const QString &where) {
+                      v.first = indexFromJson(j, where);
+                  })
+            .label(QT_TR_NOOP("Vertex"))
+            .savedWhen([](const VF &v) { return v.first >= 0 || v.second < 0; })
+            .omitWhenDefault();
+        vertex.structured(
+                  "face", QStringLiteral("integer"),
+                  [](const P &, const VF &v) { return indexToJson(v.second); },
+                  [](const P &, VF &v, const QJsonValue &j, const QString &where) {
+                      v.second = indexFromJson(j, where);
+                      v.first = -1;  // a face centre, not a vertex
+                  })
+            .label(QT_TR_NOOP("Face"))
+            .omitWhenDefault();
+        auto &e = vertex.choiceBy("extraordinary", {}, {}, nullptr, nullptr)
+                      .label(QT_TR_NOOP("Vertex"))
+                      .group(QT_TR_NOOP("Eigenvalues"))
+                      .tip(QT_TR_NOOP("For a mesh surface: the extraordinary vertex whose local "
+                                      "subdivision matrix is analysed"))
+                      .notSaved()
+                      .shownWhen([](const P &p, const VF &) { return meshSource(p) != nullptr; })
+                      .field();
+        e.dynamicChoices = [](const P &p, const VF &) {
+            QStringList texts;
+            vertexChoices(p, &texts);
+            return texts;
+        };
+        e.get = [](const P &p, const VF &v) {
+            QStringList texts;
+            const auto at = vertexChoices(p, &texts);
+            const VF chosen{v.second >= 0 ? -1 : v.first, v.second};
+            return QVariant(int(std::find(at.begin(), at.end(), chosen) - at.begin()));
+        };
+        e.assign = [](const P &p, VF &v, const QVariant &value) -> MaybeProblem {
+            QStringList texts;
+            const auto at = vertexChoices(p, &texts);
+            const auto i = property::toWhole(value);
+            if (!i || *i < 0 || *i >= qint64(at.size()))
+                return Problem{"extraordinary",
+                               property::notValid(value, QStringLiteral("extraordinary"))};
+            v = at[size_t(*i)];
+            return std::nullopt;
+        };
+        return d.table();
+    }();
+    return table;
 }
 
 } // namespace awb

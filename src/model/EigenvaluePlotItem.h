@@ -58,8 +58,10 @@ public:
     QString derivedError() const override;
     QStringList references() const override { return {m_source}; }
 
-    void write(QJsonObject &json) const override;
-    void read(const FieldReader &fields) override;
+    // Declared: "source" (an item of the project, by name), "matrices" (S, A or M), and for
+    // a mesh source the extraordinary vertex (saved as "vertex" or "face").
+    static const PropertyTable &declaration();
+    const PropertyTable &properties() const override { return declaration(); }
 
 signals:
     void sourceChanged();

@@ -3,7 +3,9 @@
 #include "core/ifs/Attractor.h"
 #include "core/schemes/ControlPointFractal.h"
 #include "model/Commands.h"
+#include "model/PointSetProperty.h"
 #include "model/ProjectIO.h"
+#include "model/PropertyTable.h"
 
 #include <cmath>
 
@@ -48,21 +50,20 @@ RowVec readRow(const QJsonValue &v, int n, const QString &where)
     return out;
 }
 
-std::vector<AffineMap> readMaps(const FieldReader &fields)
+// The maps of the custom form, {"A": [[a11, a12], [a21, a22]], "b": [b1, b2]} each (or 3 x 3
+// and 3 for space), from the file's value at `where`.
+std::vector<AffineMap> readMaps(const QJsonValue &v, const QString &where)
 {
-    const QJsonValue v = fields.value("maps");
-    if (v.isUndefined())
-        fields.fail("maps", FractalItemTr::tr("missing (the custom form needs its maps)"));
     if (!v.isArray() || v.toArray().isEmpty())
-        fields.fail("maps", FractalItemTr::tr("expected a non-empty array of maps {\"A\": [[a11, a12], "
-                               "[a21, a22]], \"b\": [b1, b2]}"));
+        throw LoadError{where, FractalItemTr::tr("expected a non-empty array of maps {\"A\": "
+                                                 "[[a11, a12], [a21, a22]], \"b\": [b1, b2]}")};
     std::vector<AffineMap> maps;
     const QJsonArray list = v.toArray();
     for (qsizetype k = 0; k < list.size(); ++k) {
-        const QString where = fields.path("maps") + QStringLiteral("[%1]").arg(k + 1);
+        const QString at = where + QStringLiteral("[%1]").arg(k + 1);
         if (!list[k].isObject())
-            throw LoadError{where, FractalItemTr::tr("expected an object with \"A\" and \"b\"")};
-        const FieldReader map(list[k].toObject(), where + QLatin1Char('.'));
+            throw LoadError{at, FractalItemTr::tr("expected an object with \"A\" and \"b\"")};
+        const FieldReader map(list[k].toObject(), at + QLatin1Char('.'));
         const QJsonValue A = map.value("A");
         if (A.isUndefined())
             map.fail("A", FractalItemTr::tr("missing"));
@@ -85,6 +86,18 @@ std::vector<AffineMap> readMaps(const FieldReader &fields)
         maps.push_back(f);
     }
     return maps;
+}
+
+QJsonValue mapsToJson(const std::vector<AffineMap> &maps)
+{
+    QJsonArray list;
+    for (const AffineMap &f : maps) {
+        QJsonArray A;
+        for (Eigen::Index r = 0; r < f.A.rows(); ++r)
+            A.append(ProjectIO::rowToJson(f.A.row(r)));
+        list.append(QJsonObject{{"A", A}, {"b", ProjectIO::rowToJson(f.b)}});
+    }
+    return list;
 }
 
 } // namespace
@@ -162,20 +175,12 @@ FractalItem::FractalItem()
 
 MaybeProblem FractalItem::checkFractal(const FractalSpec &spec) const
 {
-    if (auto p = spec.check())
-        return p;
-    if (auto p = algorithm().check(spec.mapCount()))
-        return Problem{"algorithm." + p->field, p->message};
-    return std::nullopt;
+    return checkWithMaps(spec.check(), spec.mapCount());
 }
 
 bool FractalItem::setFractal(const FractalSpec &spec, int gesture)
 {
-    if (checkFractal(spec))
-        return false;
-    applyProperty(&FractalItem::m_fractal, spec, &FractalItem::fractalChanged,
-                  FractalItemTr::tr("Change fractal of %1").arg(name()), gesture);
-    return true;
+    return setDeclared(*this, spec, gesture);
 }
 
 DerivedIfs FractalItem::computeIfs() const
@@ -237,102 +242,75 @@ DerivedIfs FractalItem::computeIfs() const
     return out;
 }
 
-void FractalItem::write(QJsonObject &json) const
-{
-    AttractorItem::write(json);
-    json["preset"] = FractalSpec::presetNames().at(int(m_fractal.preset));
-    const int dim = m_fractal.dimension();
-    json["control_points"] = ProjectIO::pointsToJson(m_points, dim);
-    if (m_fractal.preset != FractalSpec::Preset::Custom)
-        return;
-    QJsonArray maps;
-    for (const AffineMap &f : m_fractal.maps) {
-        QJsonArray A;
-        for (Eigen::Index r = 0; r < f.A.rows(); ++r)
-            A.append(ProjectIO::rowToJson(f.A.row(r)));
-        maps.append(QJsonObject{{"A", A}, {"b", ProjectIO::rowToJson(f.b)}});
-    }
-    json["maps"] = maps;
-    json["weights"] = FractalSpec::weightNames().at(int(m_fractal.weights));
-    if (!m_fractal.reference.empty())
-        json["reference_points"] = ProjectIO::pointsToJson(m_fractal.reference, dim);
-}
+// ---- declared properties ----------------------------------------------------------------------
 
-void FractalItem::read(const FieldReader &fields)
+const PropertyTable &FractalItem::declaration()
 {
-    // The maps first: their dimension is that of every point, the start set's too.
-    FractalSpec spec;
-    spec.preset = FractalSpec::Preset(fields.choice("preset", FractalSpec::presetNames()));
-    if (spec.preset == FractalSpec::Preset::Custom) {
-        spec.maps = readMaps(fields);
-        spec.weights = FractalSpec::Weights(
-            fields.choice("weights", FractalSpec::weightNames(), int(spec.weights)));
-        spec.reference = fields.points("reference_points", PointList{}, spec.dimension());
-    }
-    fields.require(spec.check());
-    m_fractal = spec;
-    AttractorItem::read(fields);
-    m_points = fields.points("control_points", std::nullopt, spec.dimension());
-}
-
-// ---- generic parameters ---------------------------------------------------------------------
-
-QList<ParameterInfo> FractalItem::parameters() const
-{
-    using P = ParameterInfo;
-    const QString group = FractalItemTr::tr("Fractal");
-    QList<ParameterInfo> list;
-    list << P::make("preset", FractalItemTr::tr("Fractal"), P::Type::Choice)
-                .options({FractalItemTr::tr("Koch curve (000 §4.1)"),
-                          FractalItemTr::tr("Sierpinski triangle (000 §4.2)"),
-                          FractalItemTr::tr("Own maps")})
-                .in(group)
-                .tip(FractalItemTr::tr("The presets use the paper's printed matrices S_i"));
-    if (m_fractal.preset == FractalSpec::Preset::Custom) {
-        list << P::make("weights", FractalItemTr::tr("Affine weights"), P::Type::Choice)
-                    .options({FractalItemTr::tr("Nearest control points"), FractalItemTr::tr("Least norm (all points)")})
-                    .in(group)
-                    .tip(FractalItemTr::tr("How f_i(P_j) is written as an affine combination of the control "
+    static const PropertyTable table = [] {
+        using Preset = FractalSpec::Preset;
+        const auto custom = [](const FractalSpec &f) { return f.preset == Preset::Custom; };
+        Declaration<FractalItem> d(&AttractorItem::attractorProperties());
+        // The maps first: their dimension is that of every point, the start set's too.
+        auto fractal = d.part(&FractalItem::m_fractal, &FractalItem::checkFractal,
+                              &FractalItem::fractalChanged, QT_TR_NOOP("Change fractal of %1"));
+        fractal.checkedOnRead([](const FractalItem &, const FractalSpec &f) { return f.check(); });
+        fractal
+            .choice("preset", &FractalSpec::preset, FractalSpec::presetNames(),
+                    {QT_TR_NOOP("Koch curve (000 §4.1)"),
+                     QT_TR_NOOP("Sierpinski triangle (000 §4.2)"), QT_TR_NOOP("Own maps")})
+            .label(QT_TR_NOOP("Fractal"))
+            .group(QT_TR_NOOP("Fractal"))
+            .tip(QT_TR_NOOP("The presets use the paper's printed matrices S_i"))
+            .required()
+            // Own maps start from the preset shown, so that the picture does not jump.
+            .onEdit([](const FractalItem &item, FractalSpec &next) -> MaybeProblem {
+                if (next.preset == Preset::Custom && next.maps.empty()) {
+                    const ControlPointFractal f = presetFractal(item.m_fractal.preset);
+                    next.maps = f.classicMaps;
+                    next.reference = toPoints(f.controlPoints);
+                }
+                return std::nullopt;
+            });
+        fractal
+            .structured(
+                "maps", QStringLiteral("affine maps"),
+                [](const FractalItem &, const FractalSpec &f) { return mapsToJson(f.maps); },
+                [](const FractalItem &, FractalSpec &f, const QJsonValue &v,
+                   const QString &where) { f.maps = readMaps(v, where); })
+            .label(QT_TR_NOOP("Maps"))
+            .tip(QT_TR_NOOP("x ↦ x A + b: {\"A\": [[a11, a12], [a21, a22]], \"b\": [b1, b2]} "
+                            "each, or 3 x 3 and 3 numbers in space"))
+            .when(custom)
+            .required(QT_TR_NOOP("missing (the custom form needs its maps)"));
+        fractal
+            .choice("weights", &FractalSpec::weights, FractalSpec::weightNames(),
+                    {QT_TR_NOOP("Nearest control points"), QT_TR_NOOP("Least norm (all points)")})
+            .label(QT_TR_NOOP("Affine weights"))
+            .group(QT_TR_NOOP("Fractal"))
+            .tip(QT_TR_NOOP("How f_i(P_j) is written as an affine combination of the control "
                             "points (000 eq. (5)): nearest points keep edits local, least norm "
-                            "lets every point move the whole fractal"));
-    }
-    return list;
-}
-
-QVariant FractalItem::parameter(const QString &key) const
-{
-    if (key == "preset")
-        return int(m_fractal.preset);
-    if (key == "weights")
-        return int(m_fractal.weights);
-    return {};
-}
-
-bool FractalItem::setParameter(const QString &key, const QVariant &value, int gesture,
-                               QString *error)
-{
-    FractalSpec next = m_fractal;
-    bool ok = true;
-    const int index = value.toInt(&ok);
-    if (key == "preset") {
-        ok = ok && index >= 0 && index < FractalSpec::presetNames().size();
-        if (ok)
-            next.preset = FractalSpec::Preset(index);
-        if (ok && next.preset == FractalSpec::Preset::Custom && next.maps.empty()) {
-            // Start from the preset shown, so that the picture does not jump.
-            const ControlPointFractal f = presetFractal(m_fractal.preset);
-            next.maps = f.classicMaps;
-            next.reference = toPoints(f.controlPoints);
-        }
-    } else if (key == "weights") {
-        ok = ok && index >= 0 && index < FractalSpec::weightNames().size();
-        if (ok)
-            next.weights = FractalSpec::Weights(index);
-    } else {
-        return Item::setParameter(key, value, gesture, error);
-    }
-    return commitParameter(key, value, ok, checkFractal(next),
-                           [&] { return setFractal(next, gesture); }, error);
+                            "lets every point move the whole fractal"))
+            .when(custom);
+        // Points of the maps' dimension (the spec's, already read: not yet the item's).
+        fractal
+            .structured(
+                "reference_points", QStringLiteral("points"),
+                [](const FractalItem &, const FractalSpec &f) -> QJsonValue {
+                    return ProjectIO::pointsToJson(f.reference, f.dimension());
+                },
+                [](const FractalItem &, FractalSpec &f, const QJsonValue &v,
+                   const QString &where) {
+                    f.reference = property::pointsFromJson(v, where, f.dimension());
+                })
+            .label(QT_TR_NOOP("Reference points"))
+            .tip(QT_TR_NOOP("The points the S_i are built for (S_i R = f_i(R)); none: the "
+                            "control points themselves"))
+            .when(custom)
+            .omitWhenDefault();
+        declarePointSet(d, 0, QStringLiteral("control_points"), QT_TR_NOOP("Control points"));
+        return d.table();
+    }();
+    return table;
 }
 
 } // namespace awb

@@ -49,12 +49,11 @@ public:
     // Undoable; refused when checkFractal() complains.
     bool setFractal(const FractalSpec &spec, int gesture = 0);
 
-    // "preset" always; "weights" while the preset is custom. Choosing "custom" from a preset
-    // copies the preset's classic maps and canonical points, so the picture stays the same.
-    QList<ParameterInfo> parameters() const override;
-    QVariant parameter(const QString &key) const override;
-    bool setParameter(const QString &key, const QVariant &value, int gesture = 0,
-                      QString *error = nullptr) override;
+    // Declared: "preset" always; "maps", "weights" and "reference_points" while the preset
+    // is custom; "control_points". Choosing "custom" from a preset copies the preset's
+    // classic maps and canonical points, so the picture stays the same.
+    static const PropertyTable &declaration();
+    const PropertyTable &properties() const override { return declaration(); }
 
     int mapCount() const override { return m_fractal.mapCount(); }
     int pointDimension() const override { return m_fractal.dimension(); }
@@ -65,9 +64,6 @@ public:
     {
         return m_fractal.preset == FractalSpec::Preset::Custom && m_fractal.reference.empty();
     }
-
-    void write(QJsonObject &json) const override;
-    void read(const FieldReader &fields) override;
 
 signals:
     void fractalChanged();

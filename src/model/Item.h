@@ -23,6 +23,9 @@ namespace awb {
 
 class FieldReader;
 class Project;
+class PropertyTable;
+template <class>
+class Declaration;
 
 // A derived value computed lazily from an item's inputs, or the reason it could not be
 // computed (the core's InputError message). Owned by the item, dropped on every edit.
@@ -101,6 +104,8 @@ public:
     // when animationProblem() objects. An empty spec removes the animation.
     const AnimationSpec &animation() const { return m_animation; }
     bool setAnimation(const AnimationSpec &animation, QString *error = nullptr);
+    // animationProblem() of a spec, its field in the message; none for an empty spec.
+    MaybeProblem checkAnimation(const AnimationSpec &animation) const;
 
     // Position in the tree. Top-level items have no parent item.
     Project *project() const { return m_project; }
@@ -119,26 +124,28 @@ public:
     // Why this item's derived data cannot be computed ("" when it can, or has none).
     virtual QString derivedError() const { return {}; }
 
-    // ---- scalar parameters, generically (Parameters.h). The list may depend on the item's
-    // state (e.g. ω only while the scheme is the four-point scheme).
-    virtual QList<ParameterInfo> parameters() const { return {}; }
+    // ---- declared properties (PropertyTable.h): every input the item saves, declared once by
+    // its kind with key, type, range, texts and place in the file. The table of Item itself
+    // holds the name, the style and the animation; each kind adds its own.
+    virtual const PropertyTable &properties() const;
+    static const PropertyTable &itemProperties();
+
+    // The scalar properties that apply now, by key ("scheme.omega", "style.point_size"):
+    // the Properties dock's rows, Python's item.parameters, what animations key. The list
+    // depends on the state (ω only for the four-point scheme).
+    QList<ParameterInfo> parameters() const;
     // Invalid QVariant for an unknown key.
-    virtual QVariant parameter(const QString &key) const;
-    // Undoable, one step (edits sharing a nonzero gesture merge). False when the key is
-    // unknown or the value refused; *error then says why, in words for the user.
-    virtual bool setParameter(const QString &key, const QVariant &value, int gesture = 0,
-                              QString *error = nullptr);
+    QVariant parameter(const QString &key) const;
+    // Undoable, one step (edits sharing a nonzero gesture merge where the property merges).
+    // False when the key is unknown or the value refused; *error then says why, in words for
+    // the user.
+    bool setParameter(const QString &key, const QVariant &value, int gesture = 0,
+                      QString *error = nullptr);
 
-    // The common end of every setParameter(): refuses a value that did not parse (`parsed`
-    // false) or that `problem` objects to, with *error saying why; otherwise runs `apply`.
-    bool commitParameter(const QString &key, const QVariant &value, bool parsed,
-                         const MaybeProblem &problem, const std::function<bool()> &apply,
-                         QString *error);
-
-    // Serialization: each kind writes and reads its own fields and calls its base first.
-    // "type" and "children" are handled by ProjectIO. read() throws LoadError.
-    virtual void write(QJsonObject &json) const;
-    virtual void read(const FieldReader &fields);
+    // Serialization, from the declaration: the unknown fields, then every part. "type" and
+    // "children" are handled by ProjectIO. read() throws LoadError.
+    void write(QJsonObject &json) const;
+    void read(const FieldReader &fields);
     // Checks that need all fields read (e.g. depth against the number of maps). Throws
     // LoadError.
     virtual void checkLoaded(const FieldReader &fields) const;
@@ -179,6 +186,8 @@ private:
     friend class ProjectIO; // attaches children and unknown fields while reading
     template <class, class>
     friend class PropertyCommand;
+    template <class>
+    friend class Declaration;  // the declared parts store through applyProperty()
 
     QString m_name;
     StyleSpec m_style;

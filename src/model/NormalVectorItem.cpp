@@ -2,7 +2,9 @@
 
 #include "core/schemes/NormalVectorScheme.h"
 #include "model/Commands.h"
+#include "model/PointSetProperty.h"
 #include "model/ProjectIO.h"
+#include "model/PropertyTable.h"
 
 #include <cmath>
 
@@ -22,16 +24,6 @@ const NormalVectorPreset *findPreset(const QString &key)
         if (QString::fromStdString(p.key) == key)
             return &p;
     return nullptr;
-}
-
-// "alpha.2" -> (true, 2) within p rules.
-bool parseRuleKey(const QString &key, const QString &name, int p, int *j)
-{
-    if (!key.startsWith(name + QLatin1Char('.')))
-        return false;
-    bool ok = false;
-    *j = key.mid(name.size() + 1).toInt(&ok);
-    return ok && *j >= 0 && *j < p;
 }
 
 // The preset's rules as custom values (so that an edit starts from what is shown).
@@ -142,20 +134,12 @@ NormalVectorItem::NormalVectorItem()
 
 MaybeProblem NormalVectorItem::checkSpec(const NormalVectorSpec &spec) const
 {
-    if (auto p = spec.check())
-        return p;
-    if (auto p = algorithm().check(spec.arity()))
-        return Problem{"algorithm." + p->field, p->message};
-    return std::nullopt;
+    return checkWithMaps(spec.check(), spec.arity());
 }
 
 bool NormalVectorItem::setSpec(const NormalVectorSpec &spec, int gesture)
 {
-    if (checkSpec(spec))
-        return false;
-    applyProperty(&NormalVectorItem::m_spec, spec, &NormalVectorItem::specChanged,
-                  tr("Change normal-vector scheme of %1").arg(name()), gesture);
-    return true;
+    return setDeclared(*this, spec, gesture);
 }
 
 DerivedIfs NormalVectorItem::computeIfs() const
@@ -192,160 +176,123 @@ DerivedIfs NormalVectorItem::computeIfs() const
     return out;
 }
 
-void NormalVectorItem::write(QJsonObject &json) const
-{
-    AttractorItem::write(json);
-    json["preset"] = m_spec.preset;
-    json["steps"] = m_spec.steps;
-    json["closed"] = m_spec.closed;
-    json["control_points"] = ProjectIO::pointsToJson(m_points);
-    if (!m_spec.isCustom())
-        return;
-    QJsonArray alpha, beta, signs;
-    for (double a : m_spec.alpha)
-        alpha.append(a);
-    for (double b : m_spec.beta)
-        beta.append(b);
-    for (NormalVectorSpec::Sign s : m_spec.signs)
-        signs.append(NormalVectorSpec::signNames().at(int(s)));
-    json["alpha"] = alpha;
-    json["beta"] = beta;
-    json["normal"] = NormalVectorSpec::normalNames().at(int(m_spec.normal));
-    json["signs"] = signs;
-}
+// ---- declared properties ----------------------------------------------------------------------
 
-void NormalVectorItem::read(const FieldReader &fields)
+const PropertyTable &NormalVectorItem::declaration()
 {
-    AttractorItem::read(fields);
-    NormalVectorSpec spec;
-    spec.preset = NormalVectorSpec::presetNames().at(
-        fields.choice("preset", NormalVectorSpec::presetNames()));
-    spec.steps = int(fields.integer("steps", spec.steps, 0, NormalVectorSpec::maxSteps));
-    const QJsonValue closed = fields.value("closed");
-    if (!closed.isUndefined() && !closed.isBool())
-        fields.fail("closed", tr("expected true or false"));
-    spec.closed = closed.toBool(false);
-    if (spec.isCustom()) {
-        spec.alpha = fields.numbers("alpha");
-        spec.beta = fields.numbers("beta");
-        spec.normal = NormalVectorSpec::Normal(
-            fields.choice("normal", NormalVectorSpec::normalNames(), int(spec.normal)));
-        const QJsonValue signs = fields.value("signs");
-        if (!signs.isUndefined() && !signs.isArray())
-            fields.fail("signs", tr("expected an array of sign rules"));
-        const QJsonArray list = signs.toArray();
-        for (qsizetype i = 0; i < list.size(); ++i) {
-            const int s = int(NormalVectorSpec::signNames().indexOf(list[i].toString()));
-            if (!list[i].isString() || s < 0)
-                throw LoadError{fields.path("signs") + QStringLiteral("[%1]").arg(i + 1),
-                                tr("expected one of \"%1\"")
-                                    .arg(NormalVectorSpec::signNames().join("\", \""))};
-            spec.signs.push_back(NormalVectorSpec::Sign(s));
-        }
-    }
-    fields.require(spec.check());
-    m_spec = spec;
-    m_points = fields.points("control_points");
-}
-
-// ---- generic parameters ---------------------------------------------------------------------
-
-QList<ParameterInfo> NormalVectorItem::parameters() const
-{
-    using P = ParameterInfo;
-    const QString group = tr("Scheme");
-    QStringList presetTexts;
-    for (const NormalVectorPreset &p : presets())
-        presetTexts << QString::fromStdString(p.name);
-    presetTexts << tr("Own rules");
-    QList<ParameterInfo> list;
-    list << P::make("preset", tr("Scheme"), P::Type::Choice)
-                .options(presetTexts)
-                .in(group)
-                .tip(QString::fromStdString(normalVectorConventions()));
-    list << P::make("steps", tr("Steps"), P::Type::Integer)
-                .range(0, NormalVectorSpec::maxSteps)
-                .slider(0, 10)
-                .in(group)
-                .tip(tr("Subdivision steps of the polygon shown"));
-    list << P::make("normal", tr("Normal direction"), P::Type::Choice)
-                .options({tr("Counter-clockwise (positive)"), tr("Clockwise (negative)")})
-                .in(group);
-    list << P::make("closed", tr("Closed polygon"), P::Type::Bool).in(group);
-    const NormalVectorScheme s = m_spec.makeScheme();
-    for (int j = 0; j < s.arity(); ++j) {
-        list << P::make(QStringLiteral("alpha.%1").arg(j), tr("α%1").arg(j), P::Type::Real)
-                    .slider(0, 1)
-                    .in(tr("Rules"))
-                    .tip(tr("Position of new point %1 along the edge (001 eq. (1))").arg(j));
-        list << P::make(QStringLiteral("beta.%1").arg(j), tr("β%1").arg(j), P::Type::Real)
-                    .slider(-1, 1)
-                    .in(tr("Rules"))
-                    .tip(tr("Displacement of new point %1 along the normal").arg(j));
-    }
-    return list;
-}
-
-QVariant NormalVectorItem::parameter(const QString &key) const
-{
-    if (key == "preset")
-        return int(NormalVectorSpec::presetNames().indexOf(m_spec.preset));
-    if (key == "steps")
-        return m_spec.steps;
-    if (key == "closed")
-        return m_spec.closed;
-    const NormalVectorScheme s = m_spec.makeScheme();
-    if (key == "normal")
-        return s.normal() == NormalDirection::Negative ? 1 : 0;
-    int j = 0;
-    if (parseRuleKey(key, "alpha", s.arity(), &j))
-        return s.alpha()[size_t(j)];
-    if (parseRuleKey(key, "beta", s.arity(), &j))
-        return s.beta()[size_t(j)];
-    return {};
-}
-
-bool NormalVectorItem::setParameter(const QString &key, const QVariant &value, int gesture,
-                                    QString *error)
-{
-    NormalVectorSpec next = m_spec;
-    bool ok = true;
-    int j = 0;
-    const int p = m_spec.arity();
-    // A rule set to the value it has is no edit: a preset must not turn into "custom" for it.
-    const bool rule = key == "normal" || parseRuleKey(key, "alpha", p, &j)
-                      || parseRuleKey(key, "beta", p, &j);
-    if (rule && value.typeId() != QMetaType::QString && value == parameter(key))
-        return true;
-    if (key == "preset") {
-        const int index = value.toInt(&ok);
-        const int custom = int(NormalVectorSpec::presetNames().size()) - 1;
-        ok = ok && index >= 0 && index <= custom;
-        if (ok && index == custom)
-            copyPresetRules(next);
-        else if (ok)
-            next.preset = NormalVectorSpec::presetNames().at(index);
-    } else if (key == "steps") {
-        next.steps = value.toInt(&ok);
-    } else if (key == "closed") {
-        ok = value.typeId() == QMetaType::Bool;
-        next.closed = value.toBool();
-    } else if (key == "normal") {
-        const int index = value.toInt(&ok);
-        ok = ok && (index == 0 || index == 1);
-        copyPresetRules(next);
-        next.normal = NormalVectorSpec::Normal(index);
-    } else if (parseRuleKey(key, "alpha", p, &j)) {
-        copyPresetRules(next);
-        next.alpha[size_t(j)] = value.toDouble(&ok);
-    } else if (parseRuleKey(key, "beta", p, &j)) {
-        copyPresetRules(next);
-        next.beta[size_t(j)] = value.toDouble(&ok);
-    } else {
-        return Item::setParameter(key, value, gesture, error);
-    }
-    return commitParameter(key, value, ok, checkSpec(next),
-                           [&] { return setSpec(next, gesture); }, error);
+    static const PropertyTable table = [] {
+        using S = NormalVectorSpec;
+        const auto custom = [](const S &s) { return s.isCustom(); };
+        Declaration<NormalVectorItem> d(&AttractorItem::attractorProperties());
+        auto spec = d.part(&NormalVectorItem::m_spec, &NormalVectorItem::checkSpec,
+                           &NormalVectorItem::specChanged,
+                           QT_TR_NOOP("Change normal-vector scheme of %1"));
+        spec.checkedOnRead([](const NormalVectorItem &, const S &s) { return s.check(); });
+        spec.choiceBy(
+                "preset", S::presetNames(), {},
+                [](const S &s) { return int(S::presetNames().indexOf(s.preset)); },
+                [](S &s, int i) { s.preset = S::presetNames().at(i); })
+            .label(QT_TR_NOOP("Scheme"))
+            .group(QT_TR_NOOP("Scheme"))
+            .required()
+            .choicesFrom([](const NormalVectorItem &, const S &) {
+                QStringList texts;
+                for (const NormalVectorPreset &p : presets())
+                    texts << QString::fromStdString(p.name);
+                return texts << tr("Own rules");
+            })
+            .adjust([](const NormalVectorItem &, const S &, ParameterInfo &i) {
+                i.toolTip = QString::fromStdString(normalVectorConventions());
+            })
+            // Own rules start from the preset's.
+            .onEdit([](const NormalVectorItem &item, S &next) -> MaybeProblem {
+                if (next.isCustom() && !item.m_spec.isCustom()) {
+                    next.preset = item.m_spec.preset;
+                    copyPresetRules(next);
+                }
+                return std::nullopt;
+            });
+        spec.integer("steps", &S::steps)
+            .label(QT_TR_NOOP("Steps"))
+            .group(QT_TR_NOOP("Scheme"))
+            .range(0, S::maxSteps)
+            .slider(0, 10)
+            .tip(QT_TR_NOOP("Subdivision steps of the polygon shown"));
+        // The normal, α and β show the preset's rules; editing one makes them own rules.
+        spec.choice("normal", &S::normal, S::normalNames(),
+                    {QT_TR_NOOP("Counter-clockwise (positive)"),
+                     QT_TR_NOOP("Clockwise (negative)")})
+            .label(QT_TR_NOOP("Normal direction"))
+            .group(QT_TR_NOOP("Scheme"))
+            .savedWhen(custom)
+            .beforeEdit([](const NormalVectorItem &, S &s) { copyPresetRules(s); })
+            .field()
+            .get = [](const NormalVectorItem &, const S &s) {
+            return QVariant(s.makeScheme().normal() == NormalDirection::Negative ? 1 : 0);
+        };
+        spec.boolean("closed", &S::closed)
+            .label(QT_TR_NOOP("Closed polygon"))
+            .group(QT_TR_NOOP("Scheme"));
+        // One rule per new point: α_j along the edge, β_j along its normal.
+        const auto rules = [&spec](const char *key, std::vector<double> S::*list,
+                                   const char *label, double lo, double hi) {
+            spec.numbers(key, list)
+                .savedWhen([](const S &s) { return s.isCustom(); })
+                .required()
+                .beforeEdit([](const NormalVectorItem &, S &s) { copyPresetRules(s); })
+                .elements(
+                    QStringLiteral("%1.%2").arg(key, QStringLiteral("%1")), label,
+                    ParameterInfo::Type::Real, [](const S &s) { return s.arity(); },
+                    [list](const S &s, int j) {
+                        const NormalVectorScheme scheme = s.makeScheme();
+                        const std::vector<double> &v =
+                            list == &S::alpha ? scheme.alpha() : scheme.beta();
+                        return QVariant(v[size_t(j)]);
+                    },
+                    [list, key](S &s, int j, const QVariant &v) -> MaybeProblem {
+                        const auto x = property::toReal(v);
+                        if (!x)
+                            return Problem{QString::fromLatin1(key),
+                                           property::notValid(v, QString::fromLatin1(key))};
+                        (s.*list)[size_t(j)] = *x;
+                        return std::nullopt;
+                    },
+                    QT_TR_NOOP("Rules"))
+                .slider(lo, hi);
+        };
+        rules("alpha", &S::alpha, QT_TR_NOOP("α%1"), 0, 1);
+        rules("beta", &S::beta, QT_TR_NOOP("β%1"), -1, 1);
+        spec.structured(
+                "signs", QStringLiteral("sign rules"),
+                [](const NormalVectorItem &, const S &s) {
+                    QJsonArray signs;
+                    for (S::Sign sign : s.signs)
+                        signs.append(S::signNames().at(int(sign)));
+                    return QJsonValue(signs);
+                },
+                [](const NormalVectorItem &, S &s, const QJsonValue &v, const QString &where) {
+                    if (!v.isArray())
+                        throw LoadError{where, tr("expected an array of sign rules")};
+                    const QJsonArray list = v.toArray();
+                    s.signs.clear();
+                    for (qsizetype i = 0; i < list.size(); ++i) {
+                        const int k = int(S::signNames().indexOf(list[i].toString()));
+                        if (!list[i].isString() || k < 0)
+                            throw LoadError{where + QStringLiteral("[%1]").arg(i + 1),
+                                            tr("expected one of \"%1\"")
+                                                .arg(S::signNames().join("\", \""))};
+                        s.signs.push_back(S::Sign(k));
+                    }
+                })
+            .label(QT_TR_NOOP("Signs of β"))
+            .tip(QT_TR_NOOP("How the sign of β alternates: \"constant\", \"edge-alternating\", "
+                            "\"level-edge-alternating\" or \"level-alternating\"; none, one, or "
+                            "one per rule"))
+            .savedWhen(custom);
+        declarePointSet(d, 0, QStringLiteral("control_points"), QT_TR_NOOP("Control points"));
+        return d.table();
+    }();
+    return table;
 }
 
 } // namespace awb

@@ -55,19 +55,16 @@ public:
     // Undoable; refused when checkSpec() complains. A nonzero gesture merges a slider drag.
     bool setSpec(const NormalVectorSpec &spec, int gesture = 0);
 
-    // "preset", "steps", "normal", "closed", "alpha.<j>", "beta.<j>" (j = 0 .. p-1). Editing
-    // normal, α or β of a preset turns it into a custom scheme starting from the preset's values.
-    QList<ParameterInfo> parameters() const override;
-    QVariant parameter(const QString &key) const override;
-    bool setParameter(const QString &key, const QVariant &value, int gesture = 0,
-                      QString *error = nullptr) override;
+    // Declared: "preset", "steps", "normal", "closed", the rules "alpha.<j>", "beta.<j>"
+    // (j = 0 .. p-1; saved as the lists "alpha", "beta" with "signs" for own rules),
+    // "control_points". Editing normal, α or β of a preset turns it into own rules starting
+    // from the preset's values.
+    static const PropertyTable &declaration();
+    const PropertyTable &properties() const override { return declaration(); }
 
     int mapCount() const override { return m_spec.arity(); }
     int controlPointSetCount() const override { return 1; }
     bool controlPointSetClosed(int) const override { return m_spec.closed; }
-
-    void write(QJsonObject &json) const override;
-    void read(const FieldReader &fields) override;
 
 signals:
     void specChanged();

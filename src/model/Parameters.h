@@ -1,9 +1,9 @@
 #pragma once
-// The generic parameter interface of items (layer 2, model): every scalar parameter an item
-// kind has (ω, t, u, j, r, a..p, degree, scheme kind, ...) described once, so that the GUI's
-// properties dock, the CLI and scripts can list, read and edit them without knowing the kind.
-// Structured inputs (control points, start set, algorithm, style, matrices) have their own
-// typed setters and are not parameters.
+// The parameter view of an item's declared properties (layer 2, model; PropertyTable.h): every
+// scalar property an item kind has (ω, t, u, j, r, a..p, degree, scheme kind, the style's point
+// size, the algorithm's depth, ...) as the GUI's properties dock, the CLI and scripts list, read
+// and edit it without knowing the kind. Structured inputs (control points, matrices, faces)
+// are declared too, with their own editors, and set through their file form.
 
 #include <QCoreApplication>
 #include <QPointF>
@@ -38,6 +38,7 @@ struct ParameterInfo {
     QString group;        // heading in the properties dock ("Scheme", "Curve 2", ...)
     QString toolTip;      // what it means, with the paper reference
     bool readOnly = false;  // shown, never edited (a derived fact: the symbol's factorisation)
+    bool animatable = true;  // numbers an animation may key (not a depth, a seed, a count)
 
     bool hasSlider() const { return !std::isnan(sliderMinimum) && !std::isnan(sliderMaximum); }
 

@@ -143,8 +143,9 @@ ScriptRecorder::Snapshot ScriptRecorder::take() const
                     row += pointRow(p, a->pointDimension());
                 e.points.push_back(row);
             }
+        // The name is recorded by its own line (renames first, so later lines find the item).
         for (const ParameterInfo &p : item->parameters())
-            if (!p.readOnly)
+            if (!p.readOnly && p.key != QLatin1String("name"))
                 e.parameters[p.key] = item->parameter(p.key);
         s[item] = std::move(e);
     }

@@ -27,14 +27,13 @@ public:
     // checkScheme() complains. A nonzero gesture merges the edits of one slider drag.
     bool setScheme(const SchemeSpec &scheme, int gesture = 0);
 
-    // Parameters: "scheme.kind" always; "scheme.degree", "scheme.t", "scheme.omega",
-    // "scheme.a", "scheme.b", "scheme.arity", "scheme.mask", "scheme.offset" (and the
-    // read-only "scheme.symbol") while the kind uses them. Edits go through setScheme().
-    // Switching to "mask" or "matrices" starts from the current scheme's mask or matrices.
-    QList<ParameterInfo> parameters() const override;
-    QVariant parameter(const QString &key) const override;
-    bool setParameter(const QString &key, const QVariant &value, int gesture = 0,
-                      QString *error = nullptr) override;
+    // Declared: "scheme.kind" always; "scheme.degree", "scheme.t", "scheme.omega",
+    // "scheme.a", "scheme.b", "scheme.matrices", "scheme.arity", "scheme.mask",
+    // "scheme.offset" (and the read-only "scheme.symbol") while the kind uses them;
+    // "control_points". Switching to "mask" or "matrices" starts from the current scheme's
+    // mask or matrices.
+    static const PropertyTable &declaration();
+    const PropertyTable &properties() const override { return declaration(); }
 
     int mapCount() const override { return m_scheme.arity(); }
     int controlPointSetCount() const override { return 1; }
@@ -46,9 +45,6 @@ public:
         return m_scheme.kind != SchemeSpec::Kind::Matrices || m_scheme.matrices.empty()
                || Eigen::Index(controlPoints(0).size()) != m_scheme.matrices.front().rows();
     }
-
-    void write(QJsonObject &json) const override;
-    void read(const FieldReader &fields) override;
 
 signals:
     void schemeChanged();

@@ -7,6 +7,7 @@
 #include "core/mesh/MeshPieces.h"
 #include "core/mesh/MeshRefine.h"
 #include "model/ProjectIO.h"
+#include "model/PropertyTable.h"
 
 #include <QJsonArray>
 
@@ -65,14 +66,7 @@ SubdivisionMeshItem::~SubdivisionMeshItem() = default;
 
 bool SubdivisionMeshItem::setInputs(const MeshInputs &inputs, QString *error, int gesture)
 {
-    if (const MaybeProblem p = checkInputs(inputs)) {
-        if (error)
-            *error = p->message;
-        return false;
-    }
-    applyProperty(&SubdivisionMeshItem::m_inputs, inputs, &SubdivisionMeshItem::meshChanged,
-                  tr("Change mesh of %1").arg(name()), gesture);
-    return true;
+    return setDeclared(*this, inputs, gesture, error);
 }
 
 bool SubdivisionMeshItem::setScheme(MeshScheme scheme, QString *error)
@@ -232,109 +226,82 @@ DerivedIfs SubdivisionMeshItem::computeIfs() const
     return out;
 }
 
-// ---- files ------------------------------------------------------------------------------------
+// ---- declared properties ----------------------------------------------------------------------
+// The worked example of docs/adding-an-item-kind.md: one part (the inputs that change
+// together), four fields. Each field's declaration gives the file form, the undoable edit with
+// its refusal message, the Properties dock's row, Python's item.parameters and
+// `attractor-cli set`.
 
-void SubdivisionMeshItem::write(QJsonObject &json) const
+const PropertyTable &SubdivisionMeshItem::declaration()
 {
-    AttractorItem::write(json);
-    json["scheme"] = QJsonObject{{"kind", MeshInputs::schemeNames().at(int(m_inputs.scheme))}};
-    json["vertices"] = ProjectIO::pointsToJson(m_inputs.vertices, 3);
-    QJsonArray faces;
-    for (const auto &f : m_inputs.faces) {
-        QJsonArray loop;
-        for (int v : f)
-            loop.append(v);
-        faces.append(loop);
-    }
-    json["faces"] = faces;
-    json["colouring"] = m_inputs.levelColours ? "levels" : "maps";
-}
-
-void SubdivisionMeshItem::read(const FieldReader &fields)
-{
-    AttractorItem::read(fields);
-    MeshInputs inputs;
-    if (const auto s = fields.object("scheme"))
-        inputs.scheme = MeshScheme(s->choice("kind", MeshInputs::schemeNames(), 0));
-    inputs.vertices = fields.points("vertices", std::nullopt, 3);
-    const QJsonValue faces = fields.value("faces");
-    if (!faces.isArray())
-        fields.fail("faces", tr("expected an array of faces, each an array of vertex numbers"));
-    const QJsonArray rows = faces.toArray();
-    inputs.faces.reserve(std::size_t(rows.size()));
-    for (qsizetype k = 0; k < rows.size(); ++k) {
-        const QString where = fields.path("faces") + QStringLiteral("[%1]").arg(k + 1);
-        if (!rows[k].isArray())
-            throw LoadError{where, tr("expected a face: an array of vertex numbers (0-based)")};
-        const QJsonArray loop = rows[k].toArray();
-        std::vector<int> face;
-        for (qsizetype i = 0; i < loop.size(); ++i) {
-            const double x =
-                FieldReader::toNumber(loop[i], where + QStringLiteral("[%1]").arg(i + 1));
-            if (x != std::floor(x) || std::abs(x) > 1e9)
-                throw LoadError{where, tr("vertex numbers are whole numbers (0-based)")};
-            face.push_back(int(x));
-        }
-        inputs.faces.push_back(std::move(face));
-    }
-    inputs.levelColours = fields.choice("colouring", {"maps", "levels"}, 0) == 1;
-    fields.require(inputs.check());
-    m_inputs = std::move(inputs);
-}
-
-// ---- generic parameters -----------------------------------------------------------------------
-
-QList<ParameterInfo> SubdivisionMeshItem::parameters() const
-{
-    using P = ParameterInfo;
-    return {P::make("scheme.kind", tr("Scheme"), P::Type::Choice)
-                .options({tr("Catmull–Clark"), tr("Loop")})
-                .in(tr("Scheme"))
-                .tip(tr("Loop takes triangle meshes only")),
-            P::make("colouring", tr("Colours"), P::Type::Choice)
-                .options({tr("By map"), tr("By level around extraordinary vertices")})
-                .in(tr("Style"))
-                .tip(tr("By level: around an extraordinary vertex, the rings C, f(C), f²(C), … "
-                        "of its IFS with condensation get colours in turn"))};
-}
-
-QVariant SubdivisionMeshItem::parameter(const QString &key) const
-{
-    if (key == "scheme.kind")
-        return int(m_inputs.scheme);
-    if (key == "colouring")
-        return m_inputs.levelColours ? 1 : 0;
-    return {};
-}
-
-bool SubdivisionMeshItem::setParameter(const QString &key, const QVariant &value, int gesture,
-                                       QString *error)
-{
-    if (key == "scheme.kind") {
-        bool ok = false;
-        const int k = value.toInt(&ok);
-        ok = ok && k >= 0 && k < MeshInputs::schemeNames().size();
-        MeshInputs next = m_inputs;
-        if (ok)
-            next.scheme = MeshScheme(k);
-        MaybeProblem problem;
-        if (ok)
-            if (const MaybeProblem p = next.check())
-                problem = Problem{key, p->message};
-        return commitParameter(key, value, ok, problem,
-                               [&] { return setInputs(next, nullptr, gesture); }, error);
-    }
-    if (key == "colouring") {
-        bool ok = false;
-        const int k = value.toInt(&ok);
-        ok = ok && (k == 0 || k == 1);
-        MeshInputs next = m_inputs;
-        next.levelColours = k == 1;
-        return commitParameter(key, value, ok, std::nullopt,
-                               [&] { return next == m_inputs || setInputs(next, nullptr, gesture); },
-                               error);
-    }
-    return AttractorItem::setParameter(key, value, gesture, error);
+    static const PropertyTable table = [] {
+        using I = SubdivisionMeshItem;
+        Declaration<I> d(&AttractorItem::attractorProperties());
+        auto inputs = d.part(&I::m_inputs, &I::checkInputs, &I::meshChanged,
+                             QT_TR_NOOP("Change mesh of %1"));
+        inputs.checkedOnRead([](const I &, const MeshInputs &m) { return m.check(); });
+        inputs
+            .choice("scheme.kind", &MeshInputs::scheme, MeshInputs::schemeNames(),
+                    {QT_TR_NOOP("Catmull–Clark"), QT_TR_NOOP("Loop")})
+            .label(QT_TR_NOOP("Scheme"))
+            .group(QT_TR_NOOP("Scheme"))
+            .tip(QT_TR_NOOP("Loop takes triangle meshes only"));
+        inputs.points("vertices", &MeshInputs::vertices, [](const I &) { return 3; })
+            .label(QT_TR_NOOP("Vertices"))
+            .tip(QT_TR_NOOP("The mesh's vertices [x, y, z]: its control points"))
+            .required();
+        inputs
+            .structured(
+                "faces", QStringLiteral("faces"),
+                [](const I &, const MeshInputs &m) {
+                    QJsonArray faces;
+                    for (const auto &f : m.faces) {
+                        QJsonArray loop;
+                        for (int v : f)
+                            loop.append(v);
+                        faces.append(loop);
+                    }
+                    return QJsonValue(faces);
+                },
+                [](const I &, MeshInputs &m, const QJsonValue &v, const QString &where) {
+                    if (!v.isArray())
+                        throw LoadError{where, tr("expected an array of faces, each an array "
+                                                  "of vertex numbers")};
+                    const QJsonArray rows = v.toArray();
+                    m.faces.clear();
+                    m.faces.reserve(std::size_t(rows.size()));
+                    for (qsizetype k = 0; k < rows.size(); ++k) {
+                        const QString at = where + QStringLiteral("[%1]").arg(k + 1);
+                        if (!rows[k].isArray())
+                            throw LoadError{at, tr("expected a face: an array of vertex "
+                                                   "numbers (0-based)")};
+                        const QJsonArray loop = rows[k].toArray();
+                        std::vector<int> face;
+                        for (qsizetype i = 0; i < loop.size(); ++i) {
+                            const double x = FieldReader::toNumber(
+                                loop[i], at + QStringLiteral("[%1]").arg(i + 1));
+                            if (x != std::floor(x) || std::abs(x) > 1e9)
+                                throw LoadError{at, tr("vertex numbers are whole numbers "
+                                                       "(0-based)")};
+                            face.push_back(int(x));
+                        }
+                        m.faces.push_back(std::move(face));
+                    }
+                })
+            .label(QT_TR_NOOP("Faces"))
+            .tip(QT_TR_NOOP("Each face as the loop of its vertex numbers (0-based)"))
+            .required(QT_TR_NOOP("expected an array of faces, each an array of vertex "
+                                 "numbers"));
+        inputs
+            .choice("colouring", &MeshInputs::levelColours, {"maps", "levels"},
+                    {QT_TR_NOOP("By map"), QT_TR_NOOP("By level around extraordinary vertices")})
+            .label(QT_TR_NOOP("Colours"))
+            .group(QT_TR_NOOP("Style"))
+            .tip(QT_TR_NOOP("By level: around an extraordinary vertex, the rings C, f(C), f²(C), "
+                            "… of its IFS with condensation get colours in turn"));
+        return d.table();
+    }();
+    return table;
 }
 
 } // namespace awb

@@ -75,11 +75,10 @@ public:
     static constexpr Eigen::Index maxExportVertices = 50'000'000;
     std::string limitObj(int rounds) const;
 
-    // "scheme.kind" (0 Catmull-Clark, 1 Loop), "colouring" (0 by map, 1 by level).
-    QList<ParameterInfo> parameters() const override;
-    QVariant parameter(const QString &key) const override;
-    bool setParameter(const QString &key, const QVariant &value, int gesture = 0,
-                      QString *error = nullptr) override;
+    // Declared: "scheme.kind" (Catmull-Clark, Loop), "vertices", "faces", "colouring" (by
+    // map, by level). docs/adding-an-item-kind.md walks through this declaration.
+    static const PropertyTable &declaration();
+    const PropertyTable &properties() const override { return declaration(); }
 
     int mapCount() const override { return 4; }
     int pointDimension() const override { return 3; }
@@ -88,9 +87,6 @@ public:
     static constexpr int maxVertices = 2000000;
     int maxPointCount(int) const override { return maxVertices; }
     bool startsAtVertexLimits() const override { return true; }
-
-    void write(QJsonObject &json) const override;
-    void read(const FieldReader &fields) override;
 
 signals:
     void meshChanged();

@@ -3,6 +3,7 @@
 #include "core/ifs/SurfaceIfs.h"
 #include "model/Commands.h"
 #include "model/ProjectIO.h"
+#include "model/PropertyTable.h"
 
 #include <QJsonArray>
 #include <QMutex>
@@ -190,20 +191,12 @@ std::vector<int> SubdivisionSurfaceItem::mapsUsed() const
 
 MaybeProblem SubdivisionSurfaceItem::checkNet(const SurfaceNet &net) const
 {
-    if (auto p = net.check())
-        return p;
-    if (auto p = algorithm().check(net.usedMapCount()))
-        return Problem{"algorithm." + p->field, p->message};
-    return std::nullopt;
+    return checkWithMaps(net.check(), net.usedMapCount());
 }
 
 bool SubdivisionSurfaceItem::setNet(const SurfaceNet &net, int gesture)
 {
-    if (checkNet(net))
-        return false;
-    applyProperty(&SubdivisionSurfaceItem::m_net, net, &SubdivisionSurfaceItem::netChanged,
-                  tr("Change net of %1").arg(name()), gesture);
-    return true;
+    return setDeclared(*this, net, gesture);
 }
 
 bool SubdivisionSurfaceItem::setScheme(const SurfaceSchemeSpec &scheme)
@@ -226,14 +219,16 @@ bool SubdivisionSurfaceItem::setMapsUsed(std::vector<int> maps)
     return setNet(next);
 }
 
-bool SubdivisionSurfaceItem::setMeshRounds(int rounds, int gesture)
+MaybeProblem SubdivisionSurfaceItem::checkMeshRounds(const int &rounds) const
 {
     if (rounds < 0 || rounds > maxMeshRounds)
-        return false;
-    applyProperty(&SubdivisionSurfaceItem::m_meshRounds, rounds,
-                  &SubdivisionSurfaceItem::meshRoundsChanged,
-                  tr("Change subdivision rounds of %1").arg(name()), gesture);
-    return true;
+        return Problem{"mesh_rounds", tr("from 0 to %1 rounds").arg(maxMeshRounds)};
+    return std::nullopt;
+}
+
+bool SubdivisionSurfaceItem::setMeshRounds(int rounds, int gesture)
+{
+    return setDeclared(*this, rounds, gesture);
 }
 
 bool SurfaceCamera::valid() const
@@ -241,14 +236,16 @@ bool SurfaceCamera::valid() const
     return std::isfinite(azimuth) && std::isfinite(elevation) && std::abs(elevation) <= 90.0;
 }
 
-bool SubdivisionSurfaceItem::setCamera(const SurfaceCamera &camera, int gesture)
+MaybeProblem SubdivisionSurfaceItem::checkCamera(const SurfaceCamera &camera) const
 {
     if (!camera.valid())
-        return false;
-    applyProperty(&SubdivisionSurfaceItem::m_camera, camera,
-                  &SubdivisionSurfaceItem::cameraChanged, tr("Turn the view of %1").arg(name()),
-                  gesture);
-    return true;
+        return Problem{"elevation", tr("the elevation must be from -90 to 90 degrees")};
+    return std::nullopt;
+}
+
+bool SubdivisionSurfaceItem::setCamera(const SurfaceCamera &camera, int gesture)
+{
+    return setDeclared(*this, camera, gesture);
 }
 
 std::shared_ptr<const SurfaceIfs> SubdivisionSurfaceItem::surfaceIfs() const
@@ -294,204 +291,177 @@ DerivedIfs SubdivisionSurfaceItem::computeIfs() const
 
 // ---- files ------------------------------------------------------------------------------------
 
-void SubdivisionSurfaceItem::write(QJsonObject &json) const
-{
-    AttractorItem::write(json);
-    json["scheme"] = QJsonObject{{"kind", SurfaceSchemeSpec::kindNames().at(int(m_net.scheme.kind))},
-                                 {"layout", m_net.scheme.layout}};
-    json["control_points"] = ProjectIO::pointsToJson(m_net.points, 3);
-    QJsonArray lattice;
-    for (const LatticePoint &p : m_net.lattice)
-        lattice.append(QJsonArray{p.i, p.j});
-    json["lattice"] = lattice;
-    if (!m_net.mapsUsed.empty()) {
-        QJsonArray maps;
-        for (int i : m_net.mapsUsed)
-            maps.append(i);
-        json["maps_used"] = maps;
-    }
-    json["mesh_rounds"] = m_meshRounds;
-    json["camera"] = QJsonObject{{"azimuth", m_camera.azimuth}, {"elevation", m_camera.elevation}};
-}
+// ---- declared properties ----------------------------------------------------------------------
 
-void SubdivisionSurfaceItem::read(const FieldReader &fields)
+const PropertyTable &SubdivisionSurfaceItem::declaration()
 {
-    AttractorItem::read(fields);
-    const FieldReader s = *fields.object("scheme", true);
-    SurfaceNet net;
-    net.scheme.kind = SurfaceSchemeSpec::Kind(s.choice("kind", SurfaceSchemeSpec::kindNames()));
-    const QStringList layouts = SurfaceSchemeSpec::layoutNames(net.scheme.kind);
-    net.scheme.layout = layouts.at(s.choice("layout", layouts, 0));
-    net.points = fields.points("control_points", std::nullopt, 3);
-    const QJsonValue lattice = fields.value("lattice");
-    if (!lattice.isArray())
-        fields.fail("lattice", tr("expected an array of lattice coordinates [i, j]"));
-    const QJsonArray rows = lattice.toArray();
-    for (qsizetype k = 0; k < rows.size(); ++k) {
-        const QJsonArray ij = rows[k].toArray();
-        const QString where = fields.path("lattice") + QStringLiteral("[%1]").arg(k + 1);
-        if (!rows[k].isArray() || ij.size() != 2)
-            throw LoadError{where, tr("expected lattice coordinates [i, j]")};
-        int v[2];
-        for (int c = 0; c < 2; ++c) {
-            const double x = FieldReader::toNumber(ij[c], where + QStringLiteral("[%1]").arg(c + 1));
-            if (x != std::floor(x) || std::abs(x) > 1e6)
-                throw LoadError{where, tr("lattice coordinates are whole numbers")};
-            v[c] = int(x);
-        }
-        net.lattice.push_back({v[0], v[1]});
-    }
-    if (fields.has("maps_used")) {
-        const std::vector<double> maps = fields.numbers("maps_used");
-        if (maps.empty())
-            fields.fail("maps_used", tr("at least one map must be used (leave the field out "
-                                        "to use all)"));
-        for (double m : maps) {
-            if (m != std::floor(m) || std::abs(m) > 1e6)
-                fields.fail("maps_used", tr("map indices are whole numbers (0-based)"));
-            net.mapsUsed.push_back(int(m));
-        }
-    }
-    fields.require(net.check());
-    if (!net.mapsUsed.empty() && int(net.mapsUsed.size()) == net.layoutMapCount())
-        net.mapsUsed.clear();
-    m_net = net;
-    m_meshRounds = int(fields.integer("mesh_rounds", m_meshRounds, 0, maxMeshRounds));
-    if (const auto c = fields.object("camera")) {
-        SurfaceCamera camera;
-        camera.azimuth = c->number("azimuth", camera.azimuth);
-        camera.elevation = c->number("elevation", camera.elevation);
-        if (!camera.valid())
-            c->fail("elevation", tr("the elevation must be from -90 to 90 degrees"));
-        m_camera = camera;
-    }
-}
-
-// ---- generic parameters -----------------------------------------------------------------------
-
-QList<ParameterInfo> SubdivisionSurfaceItem::parameters() const
-{
-    using P = ParameterInfo;
-    const QString group = tr("Scheme");
-    QList<ParameterInfo> list;
-    list << P::make("scheme.kind", tr("Scheme"), P::Type::Choice)
-                .options({tr("Bicubic B-spline (Catmull–Clark)"),
-                          tr("Loop (three-direction box spline)"), tr("Kobbelt √3")})
-                .in(group)
-                .tip(tr("A new scheme starts from its own default net (000 §3)"));
-    list << P::make("scheme.layout", tr("Layout"), P::Type::Choice)
-                .options(SurfaceSchemeSpec::layoutNames(m_net.scheme.kind))
-                .in(group)
-                .tip(tr("The patch's domain and the maps covering it"));
-    const QString maps = tr("Maps");
-    const std::vector<int> used = mapsUsed();
-    for (int i = 0; i < m_net.layoutMapCount(); ++i)
-        list << P::make(QStringLiteral("maps.%1").arg(i), tr("Map %1").arg(i + 1), P::Type::Bool)
-                    .in(maps)
-                    .tip(tr("Leave maps out to draw a fractal lying on the surface (000 Fig. 9)"));
-    const QString view = tr("View");
-    list << P::make("camera.azimuth", tr("Azimuth"), P::Type::Real)
-                .slider(-180, 180)
-                .in(view)
-                .tip(tr("Direction of the orthographic camera around the z axis, in degrees"));
-    list << P::make("camera.elevation", tr("Elevation"), P::Type::Real)
-                .range(-90, 90)
-                .slider(-90, 90)
-                .in(view)
-                .tip(tr("Height of the camera above the xy plane, in degrees"));
-    list << P::make("mesh_rounds", tr("Subdivision rounds"), P::Type::Integer)
-                .range(0, maxMeshRounds)
-                .in(group)
-                .tip(tr("Rounds of classic subdivision of the net (000 Figs. 6–8, top)"));
-    return list;
-}
-
-QVariant SubdivisionSurfaceItem::parameter(const QString &key) const
-{
-    if (key == "scheme.kind")
-        return int(m_net.scheme.kind);
-    if (key == "scheme.layout")
-        return int(SurfaceSchemeSpec::layoutNames(m_net.scheme.kind).indexOf(m_net.scheme.layout));
-    if (key == "mesh_rounds")
-        return m_meshRounds;
-    if (key == "camera.azimuth")
-        return m_camera.azimuth;
-    if (key == "camera.elevation")
-        return m_camera.elevation;
-    if (key.startsWith("maps.")) {
-        bool ok = false;
-        const int i = key.mid(5).toInt(&ok);
-        if (!ok || i < 0 || i >= m_net.layoutMapCount())
-            return {};
-        const std::vector<int> used = mapsUsed();
-        return std::find(used.begin(), used.end(), i) != used.end();
-    }
-    return {};
-}
-
-bool SubdivisionSurfaceItem::setParameter(const QString &key, const QVariant &value, int gesture,
-                                          QString *error)
-{
-    bool ok = true;
-    if (key == "scheme.kind" || key == "scheme.layout") {
-        SurfaceSchemeSpec next = m_net.scheme;
-        const int k = value.toInt(&ok);
-        if (key == "scheme.kind") {
-            ok = ok && k >= 0 && k < SurfaceSchemeSpec::kindNames().size();
-            if (ok) {
-                next.kind = SurfaceSchemeSpec::Kind(k);
-                const QStringList layouts = SurfaceSchemeSpec::layoutNames(next.kind);
-                if (!layouts.contains(next.layout))
-                    next.layout = layouts.front();
-            }
-        } else {
-            const QStringList layouts = SurfaceSchemeSpec::layoutNames(next.kind);
-            ok = ok && k >= 0 && k < layouts.size();
-            if (ok)
-                next.layout = layouts.at(k);
-        }
-        const SurfaceNet net = ok ? SurfaceNet::defaultNet(next) : m_net;
-        return commitParameter(key, value, ok, checkNet(net),
-                               [&] { return next == m_net.scheme || setNet(net, gesture); }, error);
-    }
-    if (key == "camera.azimuth" || key == "camera.elevation") {
-        SurfaceCamera next = m_camera;
-        (key == "camera.azimuth" ? next.azimuth : next.elevation) = value.toDouble(&ok);
-        MaybeProblem problem;
-        if (ok && !next.valid())
-            problem = Problem{key, tr("the elevation must be from -90 to 90 degrees")};
-        return commitParameter(key, value, ok, problem,
-                               [&] { return setCamera(next, gesture); }, error);
-    }
-    if (key == "mesh_rounds") {
-        const int r = value.toInt(&ok);
-        MaybeProblem problem;
-        if (ok && (r < 0 || r > maxMeshRounds))
-            problem = Problem{"mesh_rounds", tr("from 0 to %1 rounds").arg(maxMeshRounds)};
-        return commitParameter(key, value, ok, problem, [&] { return setMeshRounds(r, gesture); }, error);
-    }
-    if (key.startsWith("maps.")) {
-        const int i = key.mid(5).toInt(&ok);
-        ok = ok && i >= 0 && i < m_net.layoutMapCount();
-        std::vector<int> used = mapsUsed();
-        if (ok) {
-            const bool on = value.toBool();
-            used.erase(std::remove(used.begin(), used.end(), i), used.end());
-            if (on)
-                used.push_back(i);
-            std::sort(used.begin(), used.end());
-        }
-        MaybeProblem problem;
-        if (ok && used.empty())
-            problem = Problem{"maps_used", tr("at least one map must stay on")};
-        SurfaceNet next = m_net;
-        next.mapsUsed = int(used.size()) == m_net.layoutMapCount() ? std::vector<int>{} : used;
-        if (ok && !problem)
-            problem = checkNet(next);
-        return commitParameter(key, value, ok, problem,
-                               [&] { return setNet(next, gesture); }, error);
-    }
-    return Item::setParameter(key, value, gesture, error);
+    static const PropertyTable table = [] {
+        using I = SubdivisionSurfaceItem;
+        using K = SurfaceSchemeSpec::Kind;
+        Declaration<I> d(&AttractorItem::attractorProperties());
+        auto net = d.part(&I::m_net, &I::checkNet, &I::netChanged,
+                          QT_TR_NOOP("Change net of %1"));
+        net.checkedOnRead([](const I &, const SurfaceNet &n) { return n.check(); });
+        // All maps in use is written as "no subset".
+        net.normalizedOnRead([](const I &, SurfaceNet &n) {
+            if (!n.mapsUsed.empty() && int(n.mapsUsed.size()) == n.layoutMapCount())
+                n.mapsUsed.clear();
+        });
+        // A new scheme or layout starts from its own default net (000 §3).
+        const auto defaultNet = [](const I &item, SurfaceNet &next) -> MaybeProblem {
+            const QStringList layouts = SurfaceSchemeSpec::layoutNames(next.scheme.kind);
+            if (!layouts.contains(next.scheme.layout))
+                next.scheme.layout = layouts.front();
+            if (next.scheme != item.m_net.scheme)
+                next = SurfaceNet::defaultNet(next.scheme);
+            return std::nullopt;
+        };
+        net.choice("scheme.kind", [](SurfaceNet &n) -> K & { return n.scheme.kind; },
+                   SurfaceSchemeSpec::kindNames(),
+                   {QT_TR_NOOP("Bicubic B-spline (Catmull–Clark)"),
+                    QT_TR_NOOP("Loop (three-direction box spline)"), QT_TR_NOOP("Kobbelt √3")})
+            .label(QT_TR_NOOP("Scheme"))
+            .group(QT_TR_NOOP("Scheme"))
+            .tip(QT_TR_NOOP("A new scheme starts from its own default net (000 §3)"))
+            .required()
+            .onEdit(defaultNet);
+        auto layout =
+            net.choiceBy(
+                   "scheme.layout", {}, {},
+                   [](const SurfaceNet &n) {
+                       return int(SurfaceSchemeSpec::layoutNames(n.scheme.kind)
+                                      .indexOf(n.scheme.layout));
+                   },
+                   [](SurfaceNet &n, int i) {
+                       n.scheme.layout = SurfaceSchemeSpec::layoutNames(n.scheme.kind).at(i);
+                   })
+                .label(QT_TR_NOOP("Layout"))
+                .group(QT_TR_NOOP("Scheme"))
+                .tip(QT_TR_NOOP("The patch's domain and the maps covering it"))
+                .whenMissing([](const I &, SurfaceNet &n) {
+                    n.scheme.layout = SurfaceSchemeSpec::layoutNames(n.scheme.kind).front();
+                })
+                .onEdit(defaultNet)
+                .choicesFrom([](const I &, const SurfaceNet &n) {
+                    return SurfaceSchemeSpec::layoutNames(n.scheme.kind);
+                });
+        net.spellingsFrom(layout, [](const I &, const SurfaceNet &n) {
+            return SurfaceSchemeSpec::layoutNames(n.scheme.kind);
+        });
+        net.points("control_points", &SurfaceNet::points, [](const I &) { return 3; })
+            .label(QT_TR_NOOP("Control points"))
+            .required();
+        net.structured(
+               "lattice", QStringLiteral("lattice points"),
+               [](const I &, const SurfaceNet &n) {
+                   QJsonArray lattice;
+                   for (const LatticePoint &p : n.lattice)
+                       lattice.append(QJsonArray{p.i, p.j});
+                   return QJsonValue(lattice);
+               },
+               [](const I &, SurfaceNet &n, const QJsonValue &v, const QString &where) {
+                   if (!v.isArray())
+                       throw LoadError{where, tr("expected an array of lattice coordinates "
+                                                 "[i, j]")};
+                   n.lattice.clear();
+                   const QJsonArray rows = v.toArray();
+                   for (qsizetype k = 0; k < rows.size(); ++k) {
+                       const QJsonArray ij = rows[k].toArray();
+                       const QString at = where + QStringLiteral("[%1]").arg(k + 1);
+                       if (!rows[k].isArray() || ij.size() != 2)
+                           throw LoadError{at, tr("expected lattice coordinates [i, j]")};
+                       int c[2];
+                       for (int q = 0; q < 2; ++q) {
+                           const double x = FieldReader::toNumber(
+                               ij[q], at + QStringLiteral("[%1]").arg(q + 1));
+                           if (x != std::floor(x) || std::abs(x) > 1e6)
+                               throw LoadError{at, tr("lattice coordinates are whole numbers")};
+                           c[q] = int(x);
+                       }
+                       n.lattice.push_back({c[0], c[1]});
+                   }
+               })
+            .label(QT_TR_NOOP("Lattice coordinates"))
+            .tip(QT_TR_NOOP("Each control point's place [i, j] on the scheme's lattice"))
+            .required(QT_TR_NOOP("expected an array of lattice coordinates [i, j]"));
+        net.structured(
+               "maps_used", QStringLiteral("map numbers"),
+               [](const I &, const SurfaceNet &n) {
+                   QJsonArray maps;
+                   for (int i : n.mapsUsed)
+                       maps.append(i);
+                   return QJsonValue(maps);
+               },
+               [](const I &, SurfaceNet &n, const QJsonValue &v, const QString &where) {
+                   const std::vector<double> maps = property::numbersFromJson(v, where);
+                   if (maps.empty())
+                       throw LoadError{where, tr("at least one map must be used (leave the "
+                                                 "field out to use all)")};
+                   n.mapsUsed.clear();
+                   for (double m : maps) {
+                       if (m != std::floor(m) || std::abs(m) > 1e6)
+                           throw LoadError{where, tr("map indices are whole numbers (0-based)")};
+                       n.mapsUsed.push_back(int(m));
+                   }
+               })
+            .label(QT_TR_NOOP("Maps used"))
+            .omitWhenDefault()
+            .elements(
+                QStringLiteral("maps.%1"), QT_TR_NOOP("Map %1"), ParameterInfo::Type::Bool,
+                [](const SurfaceNet &n) { return std::max(0, n.layoutMapCount()); },
+                [](const SurfaceNet &n, int i) {
+                    return QVariant(n.mapsUsed.empty()
+                                    || std::find(n.mapsUsed.begin(), n.mapsUsed.end(), i)
+                                           != n.mapsUsed.end());
+                },
+                [](SurfaceNet &n, int i, const QVariant &v) -> MaybeProblem {
+                    const auto on = property::toBool(v);
+                    if (!on)
+                        return Problem{"maps_used",
+                                       property::notValid(v, QStringLiteral("maps.%1").arg(i))};
+                    std::vector<int> used;
+                    for (int k = 0; k < n.layoutMapCount(); ++k)
+                        if (k == i ? *on
+                                   : n.mapsUsed.empty()
+                                         || std::find(n.mapsUsed.begin(), n.mapsUsed.end(), k)
+                                                != n.mapsUsed.end())
+                            used.push_back(k);
+                    if (used.empty())
+                        return Problem{"maps_used", tr("at least one map must stay on")};
+                    n.mapsUsed = int(used.size()) == n.layoutMapCount() ? std::vector<int>{}
+                                                                         : used;
+                    return std::nullopt;
+                },
+                QT_TR_NOOP("Maps"))
+            .tip(QT_TR_NOOP("Leave maps out to draw a fractal lying on the surface (000 Fig. 9)"));
+        auto rounds = d.part(&I::m_meshRounds, &I::checkMeshRounds, &I::meshRoundsChanged,
+                             QT_TR_NOOP("Change subdivision rounds of %1"));
+        rounds.startsFrom([](const I &) { return 3; });  // a file without it: 3 rounds
+        rounds.integer("mesh_rounds", [](int &r) -> int & { return r; })
+            .label(QT_TR_NOOP("Subdivision rounds"))
+            .group(QT_TR_NOOP("Scheme"))
+            .range(0, maxMeshRounds)
+            .tip(QT_TR_NOOP("Rounds of classic subdivision of the net (000 Figs. 6–8, top)"));
+        auto camera = d.part(&I::m_camera, &I::checkCamera, &I::cameraChanged,
+                             QT_TR_NOOP("Turn the view of %1"));
+        camera.checkedOnRead([](const I &item, const SurfaceCamera &c) {
+            return item.checkCamera(c);
+        }, QStringLiteral("camera"));
+        camera.real("camera.azimuth", &SurfaceCamera::azimuth)
+            .label(QT_TR_NOOP("Azimuth"))
+            .group(QT_TR_NOOP("View"))
+            .slider(-180, 180)
+            .tip(QT_TR_NOOP("Direction of the orthographic camera around the z axis, in "
+                            "degrees"));
+        camera.real("camera.elevation", &SurfaceCamera::elevation)
+            .label(QT_TR_NOOP("Elevation"))
+            .group(QT_TR_NOOP("View"))
+            .range(-90, 90)
+            .slider(-90, 90)
+            .tip(QT_TR_NOOP("Height of the camera above the xy plane, in degrees"));
+        return d.table();
+    }();
+    return table;
 }
 
 } // namespace awb

@@ -95,12 +95,13 @@ public:
     // Undoable; the steps of one drag (same nonzero gesture) merge.
     bool setCamera(const SurfaceCamera &camera, int gesture = 0);
 
-    // "scheme.kind", "scheme.layout", "maps.<i>" (bool, one per map), "mesh_rounds",
-    // "camera.azimuth", "camera.elevation".
-    QList<ParameterInfo> parameters() const override;
-    QVariant parameter(const QString &key) const override;
-    bool setParameter(const QString &key, const QVariant &value, int gesture = 0,
-                      QString *error = nullptr) override;
+    // Declared: "scheme.kind", "scheme.layout" (a new scheme or layout starts from its own
+    // default net), the net's "control_points" and "lattice", "maps_used" (shown as
+    // "maps.<i>" switches), "mesh_rounds", "camera.azimuth", "camera.elevation".
+    static const PropertyTable &declaration();
+    const PropertyTable &properties() const override { return declaration(); }
+    MaybeProblem checkMeshRounds(const int &rounds) const;
+    MaybeProblem checkCamera(const SurfaceCamera &camera) const;
 
     int mapCount() const override { return m_net.usedMapCount(); }
     int pointDimension() const override { return 3; }
@@ -113,8 +114,6 @@ public:
     // mesh with the lattice's faces. Throws InputError.
     LatticeMesh refinedMesh(int rounds) const;
 
-    void write(QJsonObject &json) const override;
-    void read(const FieldReader &fields) override;
 
 signals:
     void netChanged();

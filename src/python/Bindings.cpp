@@ -3,7 +3,6 @@
 #include "python/Bindings.h"
 #include "python/Internal.h"
 
-#include "cli/CommandSupport.h"
 #include "core/Types.h"
 #include "model/Item.h"
 #include "model/Project.h"
@@ -125,8 +124,6 @@ void defineModule(py::module_ &m)
                 std::rethrow_exception(p);
         } catch (const InputError &e) {
             raise(QString::fromUtf8(e.what()));
-        } catch (const cli::Failure &f) {
-            raise(f.message);
         } catch (const LoadError &e) {
             raise(e.field.isEmpty() ? e.message : e.field + ": " + e.message);
         } catch (const py::cast_error &e) {

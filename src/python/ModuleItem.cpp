@@ -5,8 +5,6 @@
 
 #include "python/Internal.h"
 
-#include "cli/CommandSupport.h"
-#include "cli/FigureOptions.h"
 #include "core/analysis/Spectrum.h"
 #include "model/AttractorItem.h"
 #include "model/ItemAddress.h"
@@ -15,8 +13,11 @@
 #include "model/PointExport.h"
 #include "model/Project.h"
 #include "model/ProjectIO.h"
+#include "model/PropertyTable.h"
 #include "model/SchemeRegularity.h"
+#include "model/StartSetText.h"
 #include "model/SubdivisionCurveItem.h"
+#include "render/ItemFigure.h"
 
 #include <QGuiApplication>
 
@@ -114,93 +115,14 @@ void ensureGuiApplication()
     Q_UNUSED(app);
 }
 
-// item.update(fields): style, start set, algorithm and animation through their own undoable
-// setters (the item object stays); any other field by replacing the item with its JSON so
-// changed, in one undo step.
+// item.update(fields): the fields as the file would have them, each changed part of the item
+// through its declared, checked setter, in one undo step (PropertyTable::update).
 void updateItem(ItemHandle &h, const QJsonObject &fields)
 {
     Item &item = h.get();
-    if (fields.contains("type") && fields.value("type").toString() != item.type())
-        throw Error(QString("update(): an item's type cannot change (%1 to %2): add a new item")
-                        .arg(item.type(), fields.value("type").toString()));
-    if (fields.contains("children"))
-        throw Error("update(): children are items of their own: add, remove or update them");
-    const QStringList own{"style", "start_set", "algorithm", "animation", "name"};
-    bool onlyOwn = true;
-    for (auto it = fields.begin(); it != fields.end(); ++it)
-        onlyOwn = onlyOwn && (own.contains(it.key()) || it.key() == "type");
-    Project *project = item.project();
-    if (!onlyOwn) {
-        QJsonObject json = ProjectIO::itemToJson(item);
-        json.remove("children");
-        for (auto it = fields.begin(); it != fields.end(); ++it)
-            json[it.key()] = it.value();
-        QString why;
-        std::unique_ptr<Item> replacement = ProjectIO::itemFromJson(json, &why);
-        if (!replacement)
-            throw Error(QString("update() of '%1': %2").arg(item.name(), why));
-        Item *parent = item.parentItem();
-        const int row = project->rowOf(&item);
-        CompoundEdit edit(project, QString("Update %1").arg(item.name()));
-        // The children stay: moved under the new item, then the old one removed.
-        Item *added = project->addItem(std::move(replacement), parent, row + 1);
-        while (item.childCount() > 0)
-            project->moveItem(item.child(0), added, added->childCount());
-        const QString name = item.name();
-        project->removeItem(&item);
-        added->setName(name);
-        h.previous = &item;
-        h.item = added;
-        h.name = name;
-        return;
-    }
-    CompoundEdit edit(project, QString("Update %1").arg(item.name()));
-    auto fail = [&](const QString &field, const QString &message) {
-        throw Error(QString("update() of '%1': field \"%2\": %3").arg(item.name(), field, message));
-    };
-    try {
-        if (fields.contains("style")) {
-            const StyleSpec s =
-                ProjectIO::readStyle(FieldReader(fields["style"].toObject(), "style."));
-            if (const auto p = item.checkStyle(s))
-                fail("style", p->message);
-            item.setStyle(s);
-        }
-        if (fields.contains("animation")) {
-            QString why;
-            const AnimationSpec a =
-                readAnimation(FieldReader(fields["animation"].toObject(), "animation."));
-            if (!item.setAnimation(a, &why))
-                fail("animation", why);
-        }
-        auto *a = qobject_cast<AttractorItem *>(&item);
-        if ((fields.contains("start_set") || fields.contains("algorithm")) && !a)
-            fail(fields.contains("start_set") ? "start_set" : "algorithm",
-                 "the item has no attractor");
-        if (fields.contains("start_set")) {
-            const StartSetSpec s = ProjectIO::readStartSet(
-                FieldReader(fields["start_set"].toObject(), "start_set."), a->pointDimension());
-            if (const auto p = a->checkStartSet(s))
-                fail("start_set", p->message);
-            a->setStartSet(s);
-        }
-        if (fields.contains("algorithm")) {
-            const AlgorithmSpec s =
-                ProjectIO::readAlgorithm(FieldReader(fields["algorithm"].toObject(), "algorithm."));
-            if (const auto p = a->checkAlgorithm(s))
-                fail("algorithm", p->message);
-            a->setAlgorithm(s);
-        }
-        if (fields.contains("name")) {
-            const QString name = fields["name"].toString();
-            if (const auto p = project ? project->checkName(&item, name) : std::nullopt)
-                fail("name", p->message);
-            item.setName(name);
-        }
-    } catch (const LoadError &e) {
-        throw Error(QString("update() of '%1': field \"%2\": %3")
-                        .arg(item.name(), e.field, e.message));
-    }
+    QString why;
+    if (!item.properties().update(item, fields, &why))
+        throw Error(QString("update() of '%1': %2").arg(item.name(), why));
 }
 
 } // namespace
@@ -334,7 +256,12 @@ void defineItemClass(py::module_ &m)
                 const double budget = realArg(maxPoints, "points(): max_points", 1, 2e9);
                 StartSet start = item.coreStartSet(*d);
                 if (py::isinstance<py::str>(startArg)) {
-                    start = cli::startOption(item, *d, toQString(startArg, "points(): start"));
+                    try {
+                        start = startSetFromText(item, *d,
+                                                 toQString(startArg, "points(): start"));
+                    } catch (const StartSetTextError &e) {
+                        throw Error(QStringLiteral("points(): start: ") + e.message);
+                    }
                 } else if (!startArg.is_none()) {
                     const Mat pts = toPoints(startArg, item.pointDimension(), "points(): start");
                     start = {StartSet::Kind::Points, d->toIfsSpace(pts)};
@@ -422,7 +349,7 @@ void defineItemClass(py::module_ &m)
             [](const ItemHandle &h, const py::object &path, const py::object &size,
                const py::object &depth, const py::object &samples, const py::object &threads) {
                 AttractorItem &item = h.attractor();
-                cli::FigureOptions o;
+                FigureOptions o;
                 if (!size.is_none()) {
                     if (!py::isinstance<py::sequence>(size) || py::isinstance<py::str>(size)
                         || py::len(size) != 2)
@@ -442,7 +369,7 @@ void defineItemClass(py::module_ &m)
                 Project &project = h.project->get();
                 std::atomic<bool> cancel{false};
                 o.cancel = &cancel;
-                runInterruptible([&] { cli::renderFigure(project, &item, o, file); }, cancel);
+                runInterruptible([&] { renderItemFigure(project, &item, o, file); }, cancel);
             },
             py::arg("path"), py::arg("size") = py::none(), py::arg("depth") = py::none(),
             py::arg("samples") = py::none(), py::arg("threads") = py::none(),

@@ -1,5 +1,6 @@
 #include "render/FigureFile.h"
 
+#include "model/FigureMetadata.h"
 #include "model/FileWriting.h"
 
 #include <QBuffer>
@@ -22,6 +23,12 @@ struct FigureFile {
 };
 
 } // namespace
+
+FigureMetadata itemFigureMetadata(const Project &project, const Item &item)
+{
+    const QByteArray bytes = figureProjectBytes(project, item);
+    return {figurePngTexts(bytes), svgMetadataElement(bytes)};
+}
 
 void addPngText(QImage &image, const FigureMetadata &metadata)
 {
@@ -82,15 +89,15 @@ bool writeFigureFile(const QString &fileName,
     return true;
 }
 
-bool writePaintedFigure(const QString &fileName, QSize size, const QString &title,
+bool writePaintedFigure(const QString &fileName, QSize size,
                         const std::function<void(QPainter &)> &paint, QString *error,
-                        const FigureMetadata &metadata, const QString &format)
+                        const PaintedFigureOptions &o)
 {
     if (QFileInfo(fileName).isDir()) {
         *error = FigureFile::tr("cannot write %1: it is a folder").arg(fileName);
         return false;
     }
-    const QString kind = format.isEmpty() ? QFileInfo(fileName).suffix().toLower() : format;
+    const QString kind = o.format.isEmpty() ? QFileInfo(fileName).suffix().toLower() : o.format;
     if (kind != "png" && kind != "svg" && kind != "pdf") {
         *error = kind.isEmpty()
                      ? FigureFile::tr("%1 has no suffix: name the format (.png, .svg or .pdf)")
@@ -99,19 +106,27 @@ bool writePaintedFigure(const QString &fileName, QSize size, const QString &titl
                            .arg(kind);
         return false;
     }
+    const auto cancelled = [&] { return o.cancelled && o.cancelled(); };
     // Each painter is declared after its device: a paint() that throws ends the painter
     // before the device goes.
     return writeFigureFile(fileName, [&](QIODevice &out, QString *) {
         if (kind == "png") {
             QImage image(size, QImage::Format_ARGB32_Premultiplied);
             image.fill(Qt::white);
+            if (o.dpi > 0) {
+                const int dpm = int(std::lround(o.dpi / 0.0254));
+                image.setDotsPerMeterX(dpm);
+                image.setDotsPerMeterY(dpm);
+            }
             QPainter p;
             if (!p.begin(&image))
                 return false;
+            if (o.antialias)
+                p.setRenderHint(QPainter::Antialiasing);
             paint(p);
             p.end();
-            addPngText(image, metadata);
-            return writePng(image, out);
+            addPngText(image, o.metadata);
+            return !cancelled() && writePng(image, out);
         }
         if (kind == "svg") {
             QByteArray svgBytes;
@@ -120,9 +135,12 @@ bool writePaintedFigure(const QString &fileName, QSize size, const QString &titl
                 QSvgGenerator svg;
                 svg.setOutputDevice(&svgBuffer);
                 svg.setSize(size);
-                svg.setViewBox(QRect(QPoint(0, 0), size));
-                svg.setTitle(title);
-                svg.setDescription("Attractor Workbench figure");
+                svg.setViewBox(o.viewBox.isEmpty() ? QRectF(QPoint(0, 0), size) : o.viewBox);
+                if (o.dpi > 0)
+                    svg.setResolution(o.dpi);
+                svg.setTitle(o.title);
+                if (o.dpi <= 0)
+                    svg.setDescription("Attractor Workbench figure");
                 QPainter p;
                 if (!p.begin(&svg))
                     return false;
@@ -130,27 +148,39 @@ bool writePaintedFigure(const QString &fileName, QSize size, const QString &titl
                 if (!p.end())
                     return false;
             }
-            return addSvgMetadata(svgBytes, metadata) && out.write(svgBytes) == svgBytes.size();
+            return !cancelled() && addSvgMetadata(svgBytes, o.metadata)
+                   && out.write(svgBytes) == svgBytes.size();
         }
         QPdfWriter pdf(&out);
-        pdf.setTitle(title);
-        pdf.setCreator("Attractor Workbench");
-        pdf.setResolution(300);
-        // A page of the figure's own proportions: width 180 mm (a journal column pair).
-        const double mm = 180.0;
-        pdf.setPageSize(QPageSize(QSizeF(mm, mm * size.height() / size.width()),
-                                  QPageSize::Millimeter));
-        pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
+        if (o.dpi > 0) {
+            // A page of the figure's size at the print resolution.
+            pdf.setResolution(o.dpi);
+            pdf.setPageLayout(QPageLayout(
+                QPageSize(QSizeF(size.width() * 72.0 / o.dpi, size.height() * 72.0 / o.dpi),
+                          QPageSize::Point),
+                QPageLayout::Portrait, QMarginsF()));
+        } else {
+            pdf.setTitle(o.title);
+            pdf.setCreator("Attractor Workbench");
+            pdf.setResolution(300);
+            // A page of the figure's own proportions: width 180 mm (a journal column pair).
+            const double mm = 180.0;
+            pdf.setPageSize(QPageSize(QSizeF(mm, mm * size.height() / size.width()),
+                                      QPageSize::Millimeter));
+            pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
+        }
         QPainter p;
         if (!p.begin(&pdf))
             return false;
-        // Scale figure pixels to the page: fonts given in pixels scale with it. Rasters stay
-        // lossless (Qt's PDF engine would store them as JPEG).
-        const double s = pdf.width() / double(size.width());
-        p.scale(s, s);
+        if (o.dpi <= 0) {
+            // Scale figure pixels to the page: fonts given in pixels scale with it.
+            const double s = pdf.width() / double(size.width());
+            p.scale(s, s);
+        }
+        // Rasters stay lossless (Qt's PDF engine would store them as JPEG).
         p.setRenderHint(QPainter::LosslessImageRendering);
         paint(p);
-        return p.end();
+        return p.end() && !cancelled();
     }, error);
 }
 

@@ -7,6 +7,7 @@
 #include <QByteArray>
 #include <QList>
 #include <QPair>
+#include <QRectF>
 #include <QSize>
 #include <QString>
 
@@ -18,6 +19,9 @@ class QPainter;
 
 namespace awb {
 
+class Item;
+class Project;
+
 // What a figure file carries besides the picture (model/FigureMetadata.h makes it: the item's
 // project, the program's version): PNG text chunks, an SVG <metadata> element.
 struct FigureMetadata {
@@ -25,12 +29,34 @@ struct FigureMetadata {
     QByteArray svgElement;
 };
 
-// `paint` draws the figure into the rectangle (0, 0, size) of the painter. False with *error
-// set when the format is unknown or the file cannot be written. `format` ("png", "svg",
-// "pdf") defaults to the file's suffix (give it for a name without one, such as /dev/full).
-bool writePaintedFigure(const QString &fileName, QSize size, const QString &title,
+// The metadata of a figure of `item`: its project (the item with the items it reads), so that
+// File > Open and every attractor-cli command open the PNG or SVG as the project it was made
+// from. Every face writes it through this one function.
+FigureMetadata itemFigureMetadata(const Project &project, const Item &item);
+
+// How a painted figure goes into its file besides its pixels.
+struct PaintedFigureOptions {
+    QString title;
+    FigureMetadata metadata;
+    QString format;  // "png", "svg", "pdf"; empty: the file's suffix
+    // A print resolution (the window's export): the PNG's dots per metre, the SVG's
+    // resolution, a PDF page of `size` at this many dots per inch. None: a PDF page 180 mm
+    // wide at 300 dpi (the command line's figures).
+    int dpi = 0;
+    // What `paint` draws into, in its own coordinates (the SVG's viewBox); empty: (0, 0, size).
+    QRectF viewBox;
+    bool antialias = false;  // the PNG painter's hint (figure painters set their own)
+    // Asked after painting: true drops the file (a cancelled export).
+    std::function<bool()> cancelled;
+};
+
+// `paint` draws the figure into the rectangle (0, 0, size) of the painter: PNG, SVG or PDF by
+// the format or the file's suffix -- the one switch of the formats, for every figure writer.
+// False with *error set when the format is unknown, the drawing was cancelled or the file
+// cannot be written (an existing file is then left as it was).
+bool writePaintedFigure(const QString &fileName, QSize size,
                         const std::function<void(QPainter &)> &paint, QString *error,
-                        const FigureMetadata &metadata = {}, const QString &format = {});
+                        const PaintedFigureOptions &options = {});
 
 // Every figure file is written through this: `write` writes the figure into `out` (a buffer
 // in memory, open for writing: Qt's image, SVG and PDF writers do not all report a failed

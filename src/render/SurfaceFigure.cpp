@@ -153,9 +153,12 @@ bool writeSurfaceFigure(const SurfaceFigureSpec &spec, const QString &fileName, 
                         const QString &format)
 {
     const QImage image = renderSurfaceFigure(spec);
-    return writePaintedFigure(fileName, image.size(), spec.caption,
-                              [&](QPainter &p) { p.drawImage(0, 0, image); }, error,
-                              spec.metadata, format);
+    PaintedFigureOptions o;
+    o.title = spec.caption;
+    o.metadata = spec.metadata;
+    o.format = format;
+    return writePaintedFigure(fileName, image.size(),
+                              [&](QPainter &p) { p.drawImage(0, 0, image); }, error, o);
 }
 
 } // namespace awb

@@ -130,10 +130,10 @@ void TestEigenvaluePlotView::propertiesEditSourceAndMatrices()
     QVERIFY(w.openFile(fig2));
     auto *plot = qobject_cast<EigenvaluePlotItem *>(w.project()->findItem(plotName));
     w.setCurrentItem(plot);
-    auto *source = qobject_cast<QComboBox *>(w.propertiesWidget()->editor("plot.source"));
-    auto *matrices = qobject_cast<QComboBox *>(w.propertiesWidget()->editor("plot.matrices"));
+    auto *source = qobject_cast<QComboBox *>(w.propertiesWidget()->editor("source"));
+    auto *matrices = qobject_cast<QComboBox *>(w.propertiesWidget()->editor("matrices"));
     QVERIFY(source && matrices);
-    QCOMPARE(source->currentData().toString(), curveName);
+    QCOMPARE(source->currentText(), curveName);
     QCOMPARE(source->count(), 2); // "(none)" and the curve; a plot is not a source
     QCOMPARE(matrices->count(), 3);
     QCOMPARE(matrices->currentIndex(), 0);
@@ -163,7 +163,7 @@ void TestEigenvaluePlotView::propertiesEditSourceAndMatrices()
     // Undo brings the source back, and the editors show it.
     stack->undo();
     QCOMPARE(plot->source(), curveName);
-    QCOMPARE(source->currentData().toString(), curveName);
+    QCOMPARE(source->currentText(), curveName);
     stack->undo();
     stack->undo();
     QCOMPARE(matrices->currentIndex(), 0);

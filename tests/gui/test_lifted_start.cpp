@@ -39,8 +39,8 @@ void TestLiftedStart::editLiftedStartPoints()
         w.project()->findItem("000 Fig. 2: cubic B-spline from a point"));
     QVERIFY(item);
     w.setCurrentItem(item);
-    auto *kind = qobject_cast<QComboBox *>(w.propertiesWidget()->editor("start.kind"));
-    auto *lifted = qobject_cast<QLineEdit *>(w.propertiesWidget()->editor("start.lifted"));
+    auto *kind = qobject_cast<QComboBox *>(w.propertiesWidget()->editor("start_set.kind"));
+    auto *lifted = qobject_cast<QLineEdit *>(w.propertiesWidget()->editor("start_set.lifted"));
     QVERIFY(kind && lifted);
     QVERIFY(!lifted->isEnabled());
     const StartSetSpec original = item->startSet();

@@ -2,7 +2,9 @@
 // Helpers shared by the tests of the item kinds (test_<kind>_item.cpp): load a project from
 // JSON text, expect a load error, and check that saving is stable.
 
+#include "model/AttractorItem.h"
 #include "model/ProjectIO.h"
+#include "model/PropertyTable.h"
 
 #include "TestProjects.h"
 
@@ -46,6 +48,23 @@ inline bool reloadsIdentically(const Project &project)
     Project again;
     again.adopt(std::move(data), {}, false);
     return again.serialize() == first;
+}
+
+// The parameters an item kind declares itself: without the name, start set, algorithm and
+// style every item has (Item::itemProperties(), AttractorItem::attractorProperties()).
+inline QList<ParameterInfo> ownParameters(const Item &item)
+{
+    const PropertyTable &base = qobject_cast<const AttractorItem *>(&item)
+                                    ? AttractorItem::attractorProperties()
+                                    : Item::itemProperties();
+    QStringList shared;
+    for (const ParameterInfo &p : base.parameters(item))
+        shared << p.key;
+    QList<ParameterInfo> own;
+    for (const ParameterInfo &p : item.parameters())
+        if (!shared.contains(p.key))
+            own << p;
+    return own;
 }
 
 } // namespace awb::test

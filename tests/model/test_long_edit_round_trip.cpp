@@ -105,7 +105,9 @@ private:
             if (params.isEmpty())
                 break;
             const ParameterInfo p = params[index(int(params.size()))];
-            const int gesture = coin(0.2) ? m_p.beginGesture() : 0;
+            // A gesture is a drag: of a slider or of the complex plane.
+            const bool draggable = p.hasSlider() || p.type == ParameterInfo::Type::Complex;
+            const int gesture = draggable && coin(0.2) ? m_p.beginGesture() : 0;
             for (int k = 0, n = gesture ? 1 + index(4) : 1; k < n; ++k)
                 item->setParameter(p.key, randomValue(*item, p), gesture);
             break;

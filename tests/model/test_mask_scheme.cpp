@@ -6,7 +6,7 @@
 // Properties dock's parameters edit it in one undo step each; switching the kind to "mask" or
 // "own matrices" starts from the scheme the curve had (a valid one).
 
-#include "TestProjects.h"
+#include "ItemKindTests.h"
 #include "TestMain.h"
 
 #include "core/schemes/Scheme.h"
@@ -201,11 +201,11 @@ void TestMaskScheme::parametersEditTheMask()
     auto *c = static_cast<SubdivisionCurveItem *>(
         project.addItem(test::curve("c", maskSpec(2, "1/8, 1/2, 3/4, 1/2, 1/8", -2), points(7))));
     QStringList keys;
-    for (const ParameterInfo &p : c->parameters())
+    for (const ParameterInfo &p : test::ownParameters(*c))
         keys << p.key;
     QCOMPARE(keys, (QStringList{"scheme.kind", "scheme.arity", "scheme.mask", "scheme.offset",
                                 "scheme.symbol"}));
-    QVERIFY(c->parameters().at(4).readOnly);
+    QVERIFY(test::ownParameters(*c).at(4).readOnly);
     QCOMPARE(c->parameter("scheme.mask").toString(), QStringLiteral("1/8, 1/2, 3/4, 1/2, 1/8"));
 
     const int steps = project.undoStack()->count();

@@ -1,7 +1,7 @@
 // The generic parameter interface (model/Parameters.h): what the properties dock and the CLI
 // use to list and edit every scalar parameter of an item, through the undo stack.
 
-#include "TestProjects.h"
+#include "ItemKindTests.h"
 #include "TestMain.h"
 
 using namespace awb;
@@ -18,7 +18,7 @@ namespace {
 QStringList keys(const Item &item)
 {
     QStringList k;
-    for (const ParameterInfo &p : item.parameters())
+    for (const ParameterInfo &p : test::ownParameters(item))
         k << p.key;
     return k;
 }
@@ -31,7 +31,7 @@ void TestParameters::listFollowsSchemeKind()
         "c", test::scheme(SchemeSpec::Kind::FourPoint),
         {{0, 0}, {1, 1}, {2, 0}, {3, 1}, {4, 0}, {5, 1}, {6, 0}})));
     QCOMPARE(keys(*c), (QStringList{"scheme.kind", "scheme.omega"}));
-    const ParameterInfo omega = c->parameters().at(1);
+    const ParameterInfo omega = test::ownParameters(*c).at(1);
     QVERIFY(omega.hasSlider());
     QCOMPARE(omega.sliderMinimum, -0.5);
     QCOMPARE(c->parameter("scheme.omega").toDouble(), 1.0 / 16);

@@ -120,16 +120,23 @@ void TestScriptRecorder::compoundIsOneBlock()
 void TestScriptRecorder::otherFieldsGoIntoUpdate()
 {
     ScriptRecorder r(m_project.get());
+    // A declared scalar (the style's point size) is a parameter line; a structured value
+    // (the palette) goes into update().
     StyleSpec style = m_curve->style();
     style.pointSize = 4;
     QVERIFY(m_curve->setStyle(style));
     QCOMPARE(r.steps().size(), 1);
-    QVERIFY2(r.steps()[0].contains(QStringLiteral(".update({\"style\": {")),
+    QVERIFY2(r.steps()[0].endsWith(QStringLiteral(".parameters[\"style.point_size\"] = 4.0")),
              qPrintable(r.steps()[0]));
-    QVERIFY(r.steps()[0].contains(QStringLiteral("\"point_size\": 4")));
+    style.colors = {"#112233", "#445566"};
+    QVERIFY(m_curve->setStyle(style));
+    QCOMPARE(r.steps().size(), 2);
+    QVERIFY2(r.steps()[1].contains(QStringLiteral(".update({\"style\": {")),
+             qPrintable(r.steps()[1]));
+    QVERIFY(r.steps()[1].contains(QStringLiteral("\"#445566\"")));
     // A step with no effect a file holds is not a line.
     QVERIFY(m_curve->setStyle(style) || true);
-    QCOMPARE(r.steps().size(), 1);
+    QCOMPARE(r.steps().size(), 2);
 }
 
 void TestScriptRecorder::openingRestarts()

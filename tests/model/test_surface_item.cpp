@@ -271,7 +271,7 @@ void TestSurfaceItem::mapsOnAndOff()
     SubdivisionSurfaceItem *s = surface(p);
     const QByteArray original = p.serialize();
     int bools = 0;
-    for (const ParameterInfo &info : s->parameters())
+    for (const ParameterInfo &info : test::ownParameters(*s))
         bools += info.type == ParameterInfo::Type::Bool;
     QCOMPARE(bools, 6);
     // 000 Fig. 9: two of the six maps off.

@@ -71,7 +71,7 @@ def _cases():
          "has no attractor"),
         # parameters
         ("parameter unknown key", lambda a, p, c, t: c.parameters["nope"], KeyError,
-         r"no parameter 'nope' \(it has: scheme.kind, scheme.omega\)"),
+         r"no parameter 'nope' \(it has: name, scheme.kind, scheme.omega, start_set.kind"),
         ("parameter set unknown key", lambda a, p, c, t: c.parameters.__setitem__("nope", 1),
          KeyError, "nope"),
         ("parameter key not a str", lambda a, p, c, t: c.parameters[3], TypeError,

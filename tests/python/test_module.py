@@ -335,9 +335,15 @@ def test_surface_control_points_are_3d(awb, examples):
 def test_parameters_dict_like(awb, four_point, curve):
     p = four_point
     params = curve.parameters
-    assert params.keys() == ["scheme.kind", "scheme.omega"]
-    assert list(params) == params.keys() and len(params) == 2
-    assert dict(params.items()) == {"scheme.kind": 4, "scheme.omega": 0.0625}
+    # The item kind's own parameters after the name, then the start set, algorithm and style
+    # every attractor item declares (docs/adding-an-item-kind.md).
+    assert params.keys()[:4] == ["name", "scheme.kind", "scheme.omega", "start_set.kind"]
+    assert {"algorithm.depth", "algorithm.mode", "style.point_size", "style.color_by"} <= set(
+        params.keys())
+    assert list(params) == params.keys() and len(params) == len(params.keys())
+    own = {k: v for k, v in params.items() if k.startswith("scheme.")}
+    assert own == {"scheme.kind": 4, "scheme.omega": 0.0625}
+    assert params["algorithm.depth"] == 12 and params["style.point_size"] == 2.0
     assert dict(params) == dict(params.items())
     assert "scheme.omega" in params and "nope" not in params and 1 not in params
     assert "Parameters(" in repr(params)

@@ -47,7 +47,6 @@
 #include <QStyle>
 #include <QLayout>
 #include <QApplication>
-#include <QBuffer>
 #include <QChartView>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -63,7 +62,6 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QPainter>
-#include <QPdfWriter>
 #include <QPrintDialog>
 #include <QPrintPreviewDialog>
 #include <QPrinter>
@@ -76,7 +74,6 @@
 #include <QSpinBox>
 #include <QStackedWidget>
 #include <QStatusBar>
-#include <QSvgGenerator>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QToolBar>
@@ -294,57 +291,18 @@ bool MainWindow::exportView(const ExportDialog::Options &options, QString *error
     const bool attractorShown = o.target == ExportDialog::Target::Attractor
                                 || o.target == ExportDialog::Target::FigureSheet;
     const auto cancelled = [&] { return attractorShown && m_attractor->exportCancelled(); };
-    // Written whole or not at all (render/FigureFile.h): a cancelled or failed export leaves
-    // an existing file as it was.
+    // The one format switch (render/FigureFile.h), at the export's print resolution; written
+    // whole or not at all: a cancelled or failed export leaves an existing file as it was.
+    PaintedFigureOptions figure;
+    figure.title = m_current ? m_current->name() : QString();
+    figure.metadata = figureMetadata();
+    figure.format = suffix;
+    figure.dpi = o.dpi;
+    figure.viewBox = target;
+    figure.antialias = true;
+    figure.cancelled = cancelled;
     QString writeError;
-    const bool ok = writeFigureFile(o.fileName, [&](QIODevice &out, QString *) {
-        if (suffix == QLatin1String("png")) {
-            QImage image(o.size, QImage::Format_ARGB32_Premultiplied);
-            image.fill(Qt::white);
-            const int dpm = int(std::lround(o.dpi / 0.0254));
-            image.setDotsPerMeterX(dpm);
-            image.setDotsPerMeterY(dpm);
-            {
-                QPainter p(&image);
-                p.setRenderHint(QPainter::Antialiasing);
-                paint(p);
-            }
-            addPngText(image, figureMetadata());
-            return !cancelled() && writePng(image, out);
-        }
-        if (suffix == QLatin1String("svg")) {
-            QByteArray bytes;
-            {
-                QBuffer buffer(&bytes);
-                QSvgGenerator svg;
-                svg.setOutputDevice(&buffer);
-                svg.setSize(o.size);
-                svg.setViewBox(target);
-                svg.setResolution(o.dpi);
-                svg.setTitle(m_current ? m_current->name() : QString());
-                QPainter p;
-                if (!p.begin(&svg))
-                    return false;
-                paint(p);
-                if (!p.end())
-                    return false;
-            }
-            return !cancelled() && addSvgMetadata(bytes, figureMetadata())
-                   && out.write(bytes) == bytes.size();
-        }
-        QPdfWriter pdf(&out);
-        pdf.setResolution(o.dpi);
-        pdf.setPageLayout(QPageLayout(
-            QPageSize(QSizeF(o.size.width() * 72.0 / o.dpi, o.size.height() * 72.0 / o.dpi),
-                      QPageSize::Point),
-            QPageLayout::Portrait, QMarginsF()));
-        QPainter p;
-        if (!p.begin(&pdf))
-            return false;
-        p.setRenderHint(QPainter::LosslessImageRendering); // rasters not as JPEG
-        paint(p);
-        return p.end() && !cancelled();
-    }, &writeError);
+    const bool ok = writePaintedFigure(o.fileName, o.size, paint, &writeError, figure);
     endExportProgress();
     if (cancelled()) {
         // No figure without its attractor (nothing was written).
@@ -361,10 +319,7 @@ bool MainWindow::exportView(const ExportDialog::Options &options, QString *error
 FigureMetadata MainWindow::figureMetadata() const
 {
     // The current item's project: the PNG or SVG reopens as this item (File > Open).
-    if (!m_current)
-        return {};
-    const QByteArray bytes = figureProjectBytes(*m_project, *m_current);
-    return {figurePngTexts(bytes), svgMetadataElement(bytes)};
+    return m_current ? itemFigureMetadata(*m_project, *m_current) : FigureMetadata{};
 }
 
 QString MainWindow::matricesLatex() const

@@ -9,6 +9,7 @@
 #include "model/EigenvaluePlotItem.h"
 #include "model/NumberFormat.h"
 #include "model/Project.h"
+#include "model/PropertyTable.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -59,36 +60,6 @@ CheckedSpinBox *wholeSpin(int lo, int hi)
     return spin;
 }
 
-// The start set's default points when its kind changes: taken from the control polygon so that
-// the new set lies where the curve is.
-PointList startPoints(StartSetSpec::Kind kind, const PointList &control)
-{
-    PointList c = control.empty() ? PointList{{0, 0}, {1, 0}, {0.5, 1}} : control;
-    const Point first = c.front(), last = c.back(), middle = c[c.size() / 2];
-    switch (kind) {
-    case StartSetSpec::Kind::Point: {
-        Point m;
-        for (const auto &p : c)
-            m = {m.x + p.x / double(c.size()), m.y + p.y / double(c.size()),
-                 m.z + p.z / double(c.size())};
-        return {m};
-    }
-    case StartSetSpec::Kind::Segment: return {first, last};
-    case StartSetSpec::Kind::Triangle:
-        if (c.size() < 3)
-            return {{0, 0}, {1, 0}, {0.5, 1}};
-        return {first, middle, last};
-    case StartSetSpec::Kind::Polygon:
-        if (c.size() < 3)
-            return {{0, 0}, {1, 0}, {0.5, 1}};
-        return c;
-    case StartSetSpec::Kind::Points: return c;
-    case StartSetSpec::Kind::Lifted: return c;  // not offered by the kind box
-    case StartSetSpec::Kind::VertexLimits: return {};  // mesh items
-    }
-    return c;
-}
-
 } // namespace
 
 PropertiesWidget::PropertiesWidget(Messages *messages, QWidget *parent)
@@ -120,7 +91,7 @@ void PropertiesWidget::setItem(Item *item)
         m_connections << connect(item, &Item::changed, this, &PropertiesWidget::onItemChanged);
     // A plot lists the project's items as sources: follow additions, removals and renames.
     if (qobject_cast<EigenvaluePlotItem *>(item) && item->project()) {
-        const auto update = [this] { updateValues(); };
+        const auto update = [this] { onItemChanged(); };
         m_connections << connect(item->project(), &Project::itemInserted, this, update);
         m_connections << connect(item->project(), &Project::itemRemoved, this, update);
         m_connections << connect(item->project(), &Project::itemChanged, this, update);
@@ -145,9 +116,10 @@ void PropertiesWidget::onItemChanged()
         // During a gesture the editor under the user's hand follows at once, the rest of the
         // dock a few times a second (FrameBudget).
         ++m_updating;
+        const Infos infos = currentInfos();
         for (const Binding &b : std::as_const(m_bindings))
             if (!m_gestureKey.isEmpty() && b.key == m_gestureKey)
-                b.update();
+                b.update(infos);
         --m_updating;
         m_budget->markDirty(m_budgetPanel);
     } else {
@@ -210,11 +182,21 @@ bool PropertiesWidget::apply(const QString &key, const QVariant &value, int gest
     return true;
 }
 
+PropertiesWidget::Infos PropertiesWidget::currentInfos() const
+{
+    Infos infos;
+    if (m_item)
+        for (const ParameterInfo &p : m_item->parameters())
+            infos.insert(p.key, p);
+    return infos;
+}
+
 void PropertiesWidget::updateValues()
 {
     ++m_updating;
+    const Infos infos = currentInfos();
     for (const Binding &b : std::as_const(m_bindings))
-        b.update();
+        b.update(infos);
     --m_updating;
 }
 
@@ -241,34 +223,10 @@ void PropertiesWidget::rebuild()
         return;
     }
 
-    auto *itemBox = new QGroupBox(m_item->typeName());
-    auto *itemForm = new QFormLayout(itemBox);
-    auto *name = new QLineEdit;
-    itemForm->addRow(tr("&Name:"), name);
-    m_editors.insert(QStringLiteral("name"), name);
-    connect(name, &QLineEdit::editingFinished, this, [this, name] {
-        if (!m_item || m_updating || name->text() == m_item->name())
-            return;
-        if (!m_item->setName(name->text())) {
-            QString why = tr("The name is empty or already taken.");
-            if (m_item->project())
-                if (auto p = m_item->project()->checkName(m_item, name->text()))
-                    why = p->message;
-            name->setText(m_item->name());
-            report(why);
-        }
-    });
-    m_bindings.append({QStringLiteral("name"), [this, name] {
-        if (!name->hasFocus()) {
-            name->setText(m_item->name());
-            name->setCursorPosition(0); // the name's start, not its tail
-            name->setToolTip(m_item->name());
-        }
-    }});
-    content->addWidget(itemBox);
-
-    // Parameters, grouped by their heading.
+    // Every declared parameter, grouped by its heading (the name under the kind's), in the
+    // declaration's order; then the editors of structured inputs beside their group.
     QMap<QString, QFormLayout *> groups;
+    QFormLayout *plotForm = nullptr;
     for (const ParameterInfo &info : m_item->parameters()) {
         m_keys << info.key;
         QFormLayout *form = groups.value(info.group);
@@ -279,11 +237,17 @@ void PropertiesWidget::rebuild()
             content->addWidget(box);
         }
         addParameter(form, info);
+        // The palette beside the point size; the plot's state under its source.
+        if (info.key == QLatin1String("style.point_size"))
+            addPaletteEditor(form);
+        if (info.key == QLatin1String("source")
+            && qobject_cast<EigenvaluePlotItem *>(m_item.data()))
+            plotForm = form;
     }
+    if (plotForm)
+        addEigenvaluePlotStatus(plotForm);
     if (qobject_cast<AttractorItem *>(m_item.data()))
-        addAttractorEditors();
-    if (qobject_cast<EigenvaluePlotItem *>(m_item.data()))
-        addEigenvaluePlotEditors();
+        addPointEditors();
     content->addStretch();
     // Scrolling the dock over an editor scrolls; it does not change the value.
     WheelGuard::guardChildren(m_content);
@@ -347,7 +311,7 @@ void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info
                         apply(key, integer ? QVariant(int(std::lround(v))) : QVariant(v),
                               *gesture);
                     });
-            m_bindings.append({key, [this, key, slider, lo, hi, steps] {
+            m_bindings.append({key, [this, key, slider, lo, hi, steps](const Infos &) {
                 if (slider->isSliderDown())
                     return;  // never move the slider under the user's hand
                 const double v = m_item->parameter(key).toDouble();
@@ -355,9 +319,20 @@ void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info
                 slider->setValue(int(std::lround((v - lo) / (hi - lo) * steps)));
             }});
         }
-        m_bindings.append({key, [this, key, spinBase, setSpin] {
+        m_bindings.append({key, [this, key, spinBase, setSpin, slider](const Infos &infos) {
             const QSignalBlocker block(spinBase);
+            if (const auto it = infos.find(key); it != infos.end()) {
+                // Bounds that follow the state (the deepest level the maps allow).
+                if (auto *whole = qobject_cast<QSpinBox *>(spinBase))
+                    whole->setRange(
+                        int(std::max(finiteOr(it->minimum, -spinLimit), -spinLimit)),
+                        int(std::min(finiteOr(it->maximum, spinLimit), spinLimit)));
+            }
             setSpin(m_item->parameter(key).toDouble());
+            const bool enabled = m_item->properties().enabled(*m_item, key);
+            spinBase->setEnabled(enabled);
+            if (slider)
+                slider->setEnabled(enabled);
         }});
         if (slider) {
             // Both must stay usable in a narrow dock: a slider squeezed to a few pixels looks
@@ -378,10 +353,22 @@ void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info
         auto *combo = compactCombo();
         combo->addItems(info.choices);
         combo->setToolTip(info.toolTip);
+        combo->setEnabled(!info.readOnly);
         connect(combo, &QComboBox::currentIndexChanged, this,
                 [this, key](int i) { apply(key, i); });
-        m_bindings.append({key, [this, key, combo] {
+        m_bindings.append({key, [this, key, combo](const Infos &infos) {
             const QSignalBlocker block(combo);
+            // Choices that follow the project (a plot's sources) or the state (a layout).
+            if (const auto it = infos.find(key); it != infos.end()) {
+                QStringList now;
+                for (int i = 0; i < combo->count(); ++i)
+                    now << combo->itemText(i);
+                if (now != it->choices) {
+                    combo->clear();
+                    combo->addItems(it->choices);
+                }
+                combo->setEnabled(!it->readOnly && m_item->properties().enabled(*m_item, key));
+            }
             combo->setCurrentIndex(m_item->parameter(key).toInt());
         }});
         m_editors.insert(key, combo);
@@ -411,7 +398,7 @@ void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info
                 [this, key, gesture](const QPointF &t) { apply(key, t, *gesture); });
         connect(plane, &ComplexPlanePicker::released, this,
                 [this, gesture] { endGesture(*gesture); *gesture = 0; });
-        m_bindings.append({key, [this, key, re, im, plane] {
+        m_bindings.append({key, [this, key, re, im, plane](const Infos &) {
             const QPointF z = m_item->parameter(key).toPointF();
             const QSignalBlocker b1(re), b2(im);
             re->setValue(z.x());
@@ -432,7 +419,7 @@ void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info
         auto *check = new QCheckBox;
         check->setToolTip(info.toolTip);
         connect(check, &QCheckBox::toggled, this, [this, key](bool on) { apply(key, on); });
-        m_bindings.append({key, [this, key, check] {
+        m_bindings.append({key, [this, key, check](const Infos &) {
             const QSignalBlocker block(check);
             check->setChecked(m_item->parameter(key).toBool());
         }});
@@ -446,7 +433,7 @@ void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info
             shown->setWordWrap(true);
             shown->setTextInteractionFlags(Qt::TextSelectableByMouse);
             shown->setToolTip(info.toolTip);
-            m_bindings.append({key, [this, key, shown] {
+            m_bindings.append({key, [this, key, shown](const Infos &) {
                 shown->setText(m_item->parameter(key).toString());
             }});
             row = shown;
@@ -461,10 +448,12 @@ void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info
             if (line->text() != m_item->parameter(key).toString())
                 apply(key, line->text());
         });
-        m_bindings.append({key, [this, key, line] {
+        m_bindings.append({key, [this, key, line](const Infos &) {
             const QSignalBlocker block(line);
             line->setText(m_item->parameter(key).toString());
-            line->setCursorPosition(0);
+            line->setCursorPosition(0);  // the text's start, not its tail
+            line->setToolTip(line->text().size() > 30 ? line->text() : QString());
+            line->setEnabled(m_item->properties().enabled(*m_item, key));
         }});
         m_editors.insert(key, line);
         row = line;
@@ -474,232 +463,6 @@ void PropertiesWidget::addParameter(QFormLayout *form, const ParameterInfo &info
     auto *label = new QLabel(info.label + QLatin1Char(':'));
     label->setToolTip(info.toolTip);
     form->addRow(label, row);
-}
-
-void PropertiesWidget::addAttractorEditors()
-{
-    auto *item = qobject_cast<AttractorItem *>(m_item.data());
-    auto *content = static_cast<QVBoxLayout *>(m_content->layout());
-
-    // ---- start set
-    auto *startBox = new QGroupBox(tr("Start set X0"));
-    auto *startForm = new QFormLayout(startBox);
-    auto *startKind = compactCombo();
-    startKind->addItems({tr("Point"), tr("Segment"), tr("Triangle"), tr("Polygon"),
-                         tr("Points"), tr("Lifted points"), tr("Vertex limits")});
-    startForm->addRow(tr("Kind:"), startKind);
-    // A mesh starts at its vertices' exact limit positions: nothing to drag or type.
-    const bool mesh = item->startsAtVertexLimits();
-    auto *dragHint = new QLabel(
-        mesh ? tr("Vertex limits: the exact limit positions of the mesh's vertices, where its "
-                  "IFS with condensation starts. Drag the control points in the 3D view; click "
-                  "a purple diamond to analyse that extraordinary vertex.")
-             : tr("Drag its vertices in the attractor view."));
-    dragHint->setWordWrap(true);
-    startForm->addRow(dragHint);
-    // Points of the lifted space (000 §2, Fig. 2 "a random homogeneous point"): typed, since
-    // the extra coordinates cannot be dragged in the plane.
-    auto *lifted = new QLineEdit;
-    lifted->setToolTip(tr("Points of the lifted space of 000 §2: x, y, then the extra "
-                          "coordinates of the lifting, the homogeneous 1 implied. Commas "
-                          "between coordinates, ';' between points."));
-    startForm->addRow(tr("Lifted:"), lifted);
-    startForm->setRowVisible(lifted, !mesh);
-    m_editors.insert(QStringLiteral("start.lifted"), lifted);
-    const auto setLifted = [this, item](const std::vector<std::vector<double>> &points) {
-        StartSetSpec s;
-        s.kind = StartSetSpec::Kind::Lifted;
-        s.points.clear();
-        s.lifted = points;
-        QString why;
-        if (const auto d = item->derivedIfs()) {
-            try {
-                liftedStartPoints(*d, points);
-            } catch (const std::exception &e) {
-                why = QString::fromUtf8(e.what());
-            }
-        } else {
-            why = item->derivedError();
-        }
-        if (why.isEmpty())
-            if (auto p = item->checkStartSet(s))
-                why = p->message;
-        if (!why.isEmpty() || !item->setStartSet(s)) {
-            report(why.isEmpty() ? tr("The start set was refused.") : why);
-            updateValues();
-        }
-    };
-    m_editors.insert(QStringLiteral("start.kind"), startKind);
-    connect(startKind, &QComboBox::currentIndexChanged, this, [this, item, setLifted](int i) {
-        if (m_updating)
-            return;
-        StartSetSpec s;
-        s.kind = StartSetSpec::Kind(i);
-        if (s.kind == StartSetSpec::Kind::VertexLimits) {
-            s.points.clear();
-            if (auto p = item->checkStartSet(s); p || !item->setStartSet(s)) {
-                report(p ? p->message : tr("The start set was refused."));
-                updateValues();
-            }
-            return;
-        }
-        if (s.kind == StartSetSpec::Kind::Lifted) {
-            // The centroid of the control points, lifted with zero extra coordinates.
-            const auto d = item->derivedIfs();
-            const PointList control = item->controlPointSetCount() ? item->controlPoints(0)
-                                                                   : PointList{};
-            if (!d || control.empty()) {
-                report(d ? tr("The item has no control points.") : item->derivedError());
-                updateValues();
-                return;
-            }
-            const int dim = item->pointDimension();
-            const Mat centroid = toMatrix(control, dim).colwise().mean();
-            Mat X;
-            try {
-                X = d->toIfsSpace(centroid);
-            } catch (const std::exception &e) {
-                report(QString::fromUtf8(e.what()));
-                updateValues();
-                return;
-            }
-            setLifted({std::vector<double>(X.data(), X.data() + X.size())});
-            return;
-        }
-        s.points = startPoints(s.kind, item->controlPointSetCount() ? item->controlPoints(0)
-                                                                    : PointList{});
-        if (auto p = item->checkStartSet(s); p || !item->setStartSet(s)) {
-            report(p ? p->message : tr("The start set was refused."));
-            updateValues();
-        }
-    });
-    connect(lifted, &QLineEdit::editingFinished, this, [this, lifted, setLifted] {
-        if (m_updating)
-            return;
-        std::vector<std::vector<double>> points;
-        for (const QString &point : lifted->text().split(';', Qt::SkipEmptyParts)) {
-            std::vector<double> p;
-            for (const QString &n : point.split(',', Qt::SkipEmptyParts)) {
-                const auto v = parseNumber(n.trimmed());
-                if (!v) {
-                    report(tr("'%1' is not a number.").arg(n.trimmed()));
-                    updateValues();
-                    return;
-                }
-                p.push_back(*v);
-            }
-            points.push_back(std::move(p));
-        }
-        setLifted(points);
-    });
-    m_bindings.append({QStringLiteral("start.kind"), [item, startKind, lifted] {
-        const QSignalBlocker block(startKind);
-        startKind->setCurrentIndex(int(item->startSet().kind));
-        const QSignalBlocker block2(lifted);
-        const bool isLifted = item->startSet().kind == StartSetSpec::Kind::Lifted;
-        QStringList text;
-        for (const auto &p : item->startSet().lifted) {
-            QStringList c;
-            for (double v : p)
-                c << QString::number(v, 'g', 12);
-            text << c.join(QStringLiteral(", "));
-        }
-        lifted->setText(isLifted ? text.join(QStringLiteral("; ")) : QString());
-        lifted->setEnabled(isLifted);
-    }});
-    content->addWidget(startBox);
-
-    // ---- algorithm
-    auto *algBox = new QGroupBox(tr("Algorithm"));
-    auto *algForm = new QFormLayout(algBox);
-    auto *mode = compactCombo();
-    mode->addItems({tr("Deterministic"), tr("Random (chaos game)")});
-    auto *depth = wholeSpin(0, AlgorithmSpec::maxDepth);
-    depth->setRefusal(refusal(tr("Depth")));
-    auto *samples = wholeSpin(1, 100'000'000);
-    samples->setSingleStep(10000);
-    samples->setRefusal(refusal(tr("Samples")));
-    algForm->addRow(tr("Mode:"), mode);
-    algForm->addRow(tr("Depth:"), depth);
-    algForm->addRow(tr("Samples:"), samples);
-    m_editors.insert(QStringLiteral("algorithm.depth"), depth);
-    const auto setAlg = [this, item](const std::function<void(AlgorithmSpec &)> &edit) {
-        if (m_updating)
-            return;
-        AlgorithmSpec a = item->algorithm();
-        edit(a);
-        if (auto p = item->checkAlgorithm(a)) {
-            updateValues();
-            report(p->message);
-            return;
-        }
-        item->setAlgorithm(a);
-    };
-    connect(mode, &QComboBox::currentIndexChanged, this,
-            [setAlg](int i) { setAlg([i](AlgorithmSpec &a) { a.mode = AlgorithmSpec::Mode(i); }); });
-    connect(depth, &QSpinBox::valueChanged, this,
-            [setAlg](int v) { setAlg([v](AlgorithmSpec &a) { a.depth = v; }); });
-    connect(samples, &QSpinBox::valueChanged, this,
-            [setAlg](int v) { setAlg([v](AlgorithmSpec &a) { a.samples = v; }); });
-    m_bindings.append({QStringLiteral("algorithm"), [item, mode, depth, samples] {
-        const QSignalBlocker b1(mode), b2(depth), b3(samples);
-        const AlgorithmSpec &a = item->algorithm();
-        // The deepest level this item's maps allow (N^k images at most 2^31): typing more is
-        // refused with that number.
-        depth->setMaximum(std::max(a.depth, AlgorithmSpec::maxDepthFor(item->mapCount())));
-        mode->setCurrentIndex(int(a.mode));
-        depth->setValue(a.depth);
-        samples->setValue(int(std::min<qint64>(a.samples, 100'000'000)));
-        depth->setEnabled(a.mode == AlgorithmSpec::Mode::Deterministic);
-        samples->setEnabled(a.mode == AlgorithmSpec::Mode::Random);
-    }});
-    content->addWidget(algBox);
-
-    // ---- style
-    auto *styleBox = new QGroupBox(tr("Style"));
-    auto *styleForm = new QFormLayout(styleBox);
-    auto *colorBy = compactCombo();
-    colorBy->addItems({tr("By map"), tr("By address prefix"), tr("Single colour")});
-    auto *prefix = wholeSpin(1, StyleSpec::maxPrefixLength);
-    prefix->setRefusal(refusal(tr("Prefix length")));
-    auto *pointSize = realSpin(0.5, StyleSpec::maxPointSize);
-    pointSize->setSingleStep(0.5);
-    pointSize->setMinimumWidth(70);
-    pointSize->setRefusal(refusal(tr("Point size")));
-    styleForm->addRow(tr("Colour:"), colorBy);
-    styleForm->addRow(tr("Prefix length:"), prefix);
-    styleForm->addRow(tr("Point size:"), pointSize);
-    addPaletteEditor(styleForm);
-    m_editors.insert(QStringLiteral("style.colorBy"), colorBy);
-    const auto setStyle = [this, item](const std::function<void(StyleSpec &)> &edit) {
-        if (m_updating)
-            return;
-        StyleSpec s = item->style();
-        edit(s);
-        if (auto p = item->checkStyle(s)) {
-            updateValues();
-            report(p->message);
-            return;
-        }
-        item->setStyle(s);
-    };
-    connect(colorBy, &QComboBox::currentIndexChanged, this, [setStyle](int i) {
-        setStyle([i](StyleSpec &s) { s.colorBy = StyleSpec::ColorBy(i); });
-    });
-    connect(prefix, &QSpinBox::valueChanged, this,
-            [setStyle](int v) { setStyle([v](StyleSpec &s) { s.prefixLength = v; }); });
-    connect(pointSize, &QDoubleSpinBox::valueChanged, this,
-            [setStyle](double v) { setStyle([v](StyleSpec &s) { s.pointSize = v; }); });
-    m_bindings.append({QStringLiteral("style"), [item, colorBy, prefix, pointSize] {
-        const QSignalBlocker b1(colorBy), b2(prefix), b3(pointSize);
-        colorBy->setCurrentIndex(int(item->style().colorBy));
-        prefix->setValue(item->style().prefixLength);
-        prefix->setEnabled(item->style().colorBy == StyleSpec::ColorBy::Address);
-        pointSize->setValue(item->style().pointSize);
-    }});
-    content->addWidget(styleBox);
-
-    addPointEditors();
 }
 
 } // namespace awb

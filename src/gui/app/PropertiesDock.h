@@ -1,11 +1,13 @@
 #pragma once
-// PropertiesDock's content: editors for everything of the current item, built generically from
-// Item::parameters() (spin boxes, a slider where the parameter has a slider range, a combo box
-// for a choice, two spin boxes for a complex number) plus the shared inputs of attractor items
-// (name, start set, algorithm, style with the map colours, control points with add / insert /
-// delete) and the source and matrices of an eigenvalue plot. Every edit goes through the item's
-// undoable setters; one slider drag is one gesture and so one undo step. A refused value is
-// reported through Messages and the editor shows the model's value again.
+// PropertiesDock's content: editors for everything of the current item, built from its declared
+// properties (Item::parameters(), model/PropertyTable.h): spin boxes, a slider where the
+// property has a slider range, a combo box for a choice, two spin boxes and a plane for a
+// complex number, a check box, a line of text -- grouped by their headings, greyed where the
+// declaration says they do not apply now. The structured inputs have their own editors: the
+// control point table with add / insert / delete, the palette button of the style. Every edit
+// goes through the item's undoable setters; one slider drag is one gesture and so one undo
+// step. A refused value is reported through Messages and the editor shows the model's value
+// again.
 #include "model/Item.h"
 #include "model/Parameters.h"
 #include <QHash>
@@ -32,12 +34,12 @@ public:
 
     void setItem(Item *item);
     Item *item() const { return m_item; }
-    // The editor of a parameter (QDoubleSpinBox, QSpinBox, QComboBox, QCheckBox, or for a
-    // complex value the real part's spin box); nullptr for an unknown key. For tests. Besides
-    // the parameters' keys: "name", "start.kind", "start.lifted", "algorithm.depth",
-    // "style.colorBy", "style.colors" (the palette button), "points" (the table),
-    // "points.set", "points.add", "points.insert", "points.delete", "plot.source",
-    // "plot.matrices".
+    // The editor of a parameter (QDoubleSpinBox, QSpinBox, QComboBox, QCheckBox, QLineEdit, or
+    // for a complex value the real part's spin box) by its declared key ("name",
+    // "start_set.kind", "algorithm.depth", "style.color_by", "source", ...); nullptr for an
+    // unknown key. For tests. Besides the parameters' keys: "style.colors" (the palette
+    // button), "points" (the table), "points.set", "points.add", "points.insert",
+    // "points.delete".
     QWidget *editor(const QString &key) const;
     QWidget *slider(const QString &key) const;
     // The colours an item without its own uses (the preferences' palette; empty: the views').
@@ -46,20 +48,23 @@ public:
     void setFrameBudget(FrameBudget *budget);
 
 private:
+    // The parameters as they are now, by key (ranges and choices may follow the state).
+    using Infos = QHash<QString, ParameterInfo>;
     struct Binding {
         QString key;
-        std::function<void()> update;  // shows the model's value
+        std::function<void(const Infos &)> update;  // shows the model's value
     };
+    Infos currentInfos() const;
     void rebuild();
     void updateValues();
     void onItemChanged();
     bool apply(const QString &key, const QVariant &value, int gesture = 0);
     void addParameter(QFormLayout *form, const ParameterInfo &info);
-    void addAttractorEditors();
-    // PropertiesEditors.cpp: the point table with its buttons, the palette button, the plot.
+    // PropertiesEditors.cpp: the point table with its buttons, the palette button, the plot's
+    // state (its eigenvalues, or why there are none).
     void addPointEditors();
     void addPaletteEditor(QFormLayout *form);
-    void addEigenvaluePlotEditors();
+    void addEigenvaluePlotStatus(QFormLayout *form);
     // The selected rows of the point table (sorted), or the current row.
     std::vector<int> selectedPointRows() const;
     void report(const QString &message);

@@ -1,6 +1,6 @@
-// PropertiesWidget: the control point table (with the point set chooser and the add / insert /
-// delete buttons and context menu), the map colour button, and the eigenvalue plot's source
-// and matrices. Point insertions and deletions go through ControlPointEdits: one undo step each.
+// PropertiesWidget: the editors of the structured inputs -- the control point table (with the
+// point set chooser and the add / insert / delete buttons and context menu), the map colour
+// button -- and the eigenvalue plot's state. Point insertions and deletions go through ControlPointEdits: one undo step each.
 #include "gui/app/PropertiesDock.h"
 
 #include "gui/app/ControlPointEdits.h"
@@ -151,7 +151,7 @@ void PropertiesWidget::addPointEditors()
     pointsLayout->addWidget(fixed);
 
     m_bindings.append({QStringLiteral("points"),
-                       [this, item, table, dim, add, insert, remove, fixed] {
+                       [this, item, table, dim, add, insert, remove, fixed](const Infos &) {
         const QSignalBlocker block(table);
         const PointList &pts = item->controlPoints(m_pointSet);
         table->setRowCount(int(pts.size()));
@@ -206,7 +206,7 @@ void PropertiesWidget::addPaletteEditor(QFormLayout *form)
         }
         item->setStyle(s); // one undo step; nothing when unchanged
     });
-    m_bindings.append({QStringLiteral("style.colors"), [item, button, shown, defaults] {
+    m_bindings.append({QStringLiteral("style.colors"), [item, button, shown, defaults](const Infos &) {
         const QList<QColor> own = shown();
         const int n = std::clamp(item->mapCount(), 1, 8);
         QList<QColor> colors;
@@ -219,93 +219,13 @@ void PropertiesWidget::addPaletteEditor(QFormLayout *form)
     form->addRow(tr("Map colours:"), button);
 }
 
-void PropertiesWidget::addEigenvaluePlotEditors()
+void PropertiesWidget::addEigenvaluePlotStatus(QFormLayout *form)
 {
     auto *plot = qobject_cast<EigenvaluePlotItem *>(m_item.data());
-    auto *content = static_cast<QVBoxLayout *>(m_content->layout());
-    auto *box = new QGroupBox(tr("Eigenvalues"));
-    auto *form = new QFormLayout(box);
-    auto *source = new QComboBox;
-    source->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    source->setMinimumContentsLength(8);
-    source->setToolTip(tr("The item whose matrices are analysed"));
-    auto *matrices = new QComboBox;
-    matrices->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    matrices->setMinimumContentsLength(8);
-    matrices->addItems(EigenvaluePlotItem::matrixKindDescriptions());
-    matrices->setToolTip(tr("S_i: the subdivision matrices (their eigenvalue 1 is affine "
-                            "invariance); A_i: the linear parts of the lifted maps, whose "
-                            "subdominant eigenvalue decides the tangents; M_i: the lifted "
-                            "maps themselves (003 §4, 004 §2.1)"));
-    // A mesh source: the mesh's own matrices, or the local subdivision matrix of one of its
-    // extraordinary vertices (issue 31).
-    auto *vertex = new QComboBox;
-    vertex->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    vertex->setMinimumContentsLength(8);
-    vertex->setToolTip(tr("For a mesh surface: the extraordinary vertex whose local "
-                          "subdivision matrix is analysed"));
     auto *status = new QLabel;
     status->setWordWrap(true);
-    form->addRow(tr("Source:"), source);
-    form->addRow(tr("Matrices:"), matrices);
-    form->addRow(tr("Vertex:"), vertex);
     form->addRow(status);
-    m_editors.insert(QStringLiteral("plot.vertex"), vertex);
-    connect(vertex, &QComboBox::currentIndexChanged, this, [this, plot, vertex](int i) {
-        if (m_updating || i < 0)
-            return;
-        const QPoint at = vertex->itemData(i).toPoint();  // (vertex, face)
-        plot->setExtraordinary(at.x(), at.y());
-    });
-    m_editors.insert(QStringLiteral("plot.source"), source);
-    m_editors.insert(QStringLiteral("plot.matrices"), matrices);
-    connect(source, &QComboBox::currentIndexChanged, this, [this, plot, source](int i) {
-        if (!m_updating && i >= 0)
-            plot->setSource(source->itemData(i).toString());
-    });
-    connect(matrices, &QComboBox::currentIndexChanged, this, [this, plot](int i) {
-        if (!m_updating && i >= 0)
-            plot->setMatrixKind(EigenvaluePlotItem::MatrixKind(i));
-    });
-    m_bindings.append({QStringLiteral("plot"), [plot, source, matrices, vertex, form, status] {
-        const QSignalBlocker b1(source), b2(matrices), b3(vertex);
-        vertex->clear();
-        const auto *mesh = plot->project() ? qobject_cast<const SubdivisionMeshItem *>(
-                                                 plot->project()->findItem(plot->source()))
-                                           : nullptr;
-        form->setRowVisible(vertex, mesh != nullptr);
-        if (mesh) {
-            vertex->addItem(tr("(the mesh's matrices)"), QPoint(-1, -1));
-            for (const ExtraordinaryVertex &e : *mesh->extraordinary())
-                vertex->addItem(
-                    e.vertex >= 0 ? tr("vertex %1 (n = %2)").arg(e.vertex).arg(e.valence)
-                                  : tr("centre of face %1 (n = %2)").arg(e.face).arg(e.valence),
-                    QPoint(e.vertex >= 0 ? e.vertex : -1, e.face));
-            const QPoint chosen(plot->face() >= 0 ? -1 : plot->vertex(), plot->face());
-            int at = vertex->findData(chosen);
-            if (at < 0) {  // not (or no longer) an extraordinary vertex: shown as it is
-                vertex->addItem(plot->face() >= 0
-                                    ? tr("centre of face %1 (missing)").arg(plot->face())
-                                    : tr("vertex %1 (missing)").arg(plot->vertex()),
-                                chosen);
-                at = vertex->count() - 1;
-            }
-            vertex->setCurrentIndex(at);
-        }
-        // Any item drawn as an attractor has matrices to analyse.
-        source->clear();
-        source->addItem(tr("(none)"), QString());
-        if (Project *project = plot->project())
-            for (Item *item : project->items())
-                if (qobject_cast<AttractorItem *>(item))
-                    source->addItem(item->name(), item->name());
-        int index = source->findData(plot->source());
-        if (index < 0) { // a name that is no item (yet): shown as it is
-            source->addItem(tr("%1 (missing)").arg(plot->source()), plot->source());
-            index = source->count() - 1;
-        }
-        source->setCurrentIndex(index);
-        matrices->setCurrentIndex(int(plot->matrixKind()));
+    m_bindings.append({QStringLiteral("plot"), [plot, status](const Infos &) {
         if (const auto data = plot->eigenvalues()) {
             std::size_t n = 0;
             for (const auto &s : data->spectra)
@@ -321,7 +241,6 @@ void PropertiesWidget::addEigenvaluePlotEditors()
                 QStringLiteral("color: %1").arg(errorTextColour(status->palette()).name()));
         }
     }});
-    content->addWidget(box);
 }
 
 } // namespace awb

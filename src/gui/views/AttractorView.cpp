@@ -5,6 +5,8 @@
 
 #include "gui/views/AttractorView.h"
 
+#include "render/AttractorBounds.h"
+
 #include "gui/views/AttractorViewDetail.h"
 
 #include "core/analysis/Spectrum.h"
@@ -282,49 +284,18 @@ std::optional<QRectF> AttractorView::contentBounds() const
         add(p);
     for (const VectorImage &im : m_hutch)
         add(im.polygon);
-    if (m_ifs && m_ifs->size() > 0 && m_start.vertices.rows() > 0) {
-        // The attractor itself: a shallow level from one start point is already close to it
-        // (each level shrinks the distance by the contraction factor).
-        try {
-            const IfsCheck check = checkIfs(*m_ifs);
-            if (!check.contractive && check.contractsOnAverage()) {
-                // Contracting on average only (a flame): the box of 99% of the invariant
-                // measure (its tails are unbounded), as `render` frames it.
-                const auto box = measureBox(*m_ifs, m_start.vertices.row(0), m_settings.seed);
-                if (box && box->first.size() >= 2)
-                    add(QPolygonF{QPointF(box->first(0), box->first(1)),
-                                  QPointF(box->second(0), box->second(1))});
-            } else if (check.contractive) {
-                int depth = 0;
-                while (depth < 40 && imageCount(*m_ifs, depth + 1) <= 20000 && m_ifs->size() > 1)
-                    ++depth;
-                BoundsSink bounds(m_ifs->views);
-                iterate(*m_ifs, StartSet::points(m_start.vertices.topRows(1)), depth, bounds);
-                if (!bounds.empty() && bounds.finite() && bounds.lo().size() >= 2)
-                    add(QPolygonF{QPointF(bounds.lo()(0), bounds.lo()(1)),
-                                  QPointF(bounds.hi()(0), bounds.hi()(1))});
-            }
-        } catch (const std::exception &) {
-            // An invalid IFS is reported by the renderer; fit to the rest.
-        }
-    } else if (m_iterate && m_ifs && !m_ifs->views.empty() && m_start.vertices.rows() > 0) {
-        // An automaton (CIFS, junction curve): its image count per level is not N^depth, so
-        // deepen until a level has a few thousand images.
-        try {
-            for (int depth = 1; depth <= 30; ++depth) {
-                BoundsSink bounds(m_ifs->views);
-                std::vector<AttractorSink *> sinks{&bounds};
-                const IterationStats stats = m_iterate(
-                    StartSet::points(m_start.vertices.topRows(1)), depth, sinks, {});
-                if (stats.images >= 4000 || depth == 30) {
-                    if (!bounds.empty() && bounds.finite() && bounds.lo().size() >= 2)
-                        add(QPolygonF{QPointF(bounds.lo()(0), bounds.lo()(1)),
-                                      QPointF(bounds.hi()(0), bounds.hi()(1))});
-                    break;
-                }
-            }
-        } catch (const std::exception &) {
-        }
+    // The attractor, framed as a figure file frames it (render/AttractorBounds.h).
+    if (m_ifs) {
+        AttractorExtent a;
+        a.ifs = m_ifs.get();
+        a.iterate = m_iterate;
+        a.start = m_start;
+        a.depth = m_settings.depth;
+        a.random = m_settings.mode == RenderRequest::Mode::Random;
+        a.samples = m_settings.samples;
+        a.seed = m_settings.seed;
+        if (const auto box = attractorBounds(a))
+            all << box->topLeft() << box->bottomRight();
     }
     return boundsOf(all);
 }

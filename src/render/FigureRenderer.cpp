@@ -1,5 +1,6 @@
-#include "cli/FigureRenderer.h"
+#include "render/FigureRenderer.h"
 
+#include "render/AttractorBounds.h"
 #include "render/CurvePaths.h"
 #include "render/FigureFile.h"
 #include "core/analysis/Spectrum.h"
@@ -77,34 +78,23 @@ QRectF contentBounds(const FigureSpec &spec)
                     hi[a] = std::max(hi[a], m(r, a));
                 }
     };
+    // The attractor as every face frames it (render/AttractorBounds.h).
     if (hasAttractor(spec)) {
-        BoundsSink bounds(viewsOf(spec));
-        int shallow = 0;
+        AttractorExtent a;
+        a.ifs = spec.ifs;
+        a.views = viewsOf(spec);
+        a.iterate = spec.iterate;
+        a.start = spec.start;
         for (const auto &p : spec.panels)
-            shallow = std::max(shallow, p.depth);
-        // Enough levels to see the attractor's extent, few enough to be instant.
-        while (shallow > 0 && imagesAt(spec, shallow) > 50000)
-            --shallow;
-        if (spec.random && !checkIfs(*spec.ifs).contractive) {
-            // Contracting on average only (a flame): the box of 99% of the measure, as the
-            // window frames it (AttractorView::contentBounds); the tails are not bounded.
-            if (const auto box = measureBox(*spec.ifs, spec.start.vertices.row(0), spec.seed))
-                grow(Mat(box->first).leftCols(2)), grow(Mat(box->second).leftCols(2));
-        } else if (spec.random) {
-            ChaosOptions opt;
-            opt.samples = std::min<std::uint64_t>(spec.samples, 20000);
-            opt.seed = spec.seed;
-            chaosGame(*spec.ifs, spec.start.vertices.row(0), opt, bounds);
-        } else if (spec.iterate) {
-            spec.iterate(spec.start, std::min(shallow, 8), {&bounds}, {});
-        } else {
-            iterate(*spec.ifs, spec.start, shallow, bounds);
+            a.depth = std::max(a.depth, p.depth);
+        a.random = spec.random;
+        a.samples = spec.samples;
+        a.seed = spec.seed;
+        if (const auto box = attractorBounds(a)) {
+            Mat corners(2, 2);
+            corners << box->left(), box->top(), box->right(), box->bottom();
+            grow(corners);
         }
-        if (!bounds.empty() && bounds.finite())
-            grow(Mat(bounds.lo()).leftCols(2)), grow(Mat(bounds.hi()).leftCols(2));
-        if (!spec.random)
-            for (const Projection &v : viewsOf(spec))
-                grow(project(v, spec.start.vertices).leftCols(2));
     }
     for (const Mat &m : spec.controlPolygons)
         grow(m);
@@ -356,9 +346,12 @@ QImage renderFigure(const FigureSpec &spec)
 bool writeFigure(const FigureSpec &spec, const QString &fileName, QString *error,
                  const QString &format)
 {
-    return writePaintedFigure(fileName, figureSize(spec), spec.title,
-                              [&](QPainter &p) { paintFigure(p, spec); }, error, spec.metadata,
-                              format);
+    PaintedFigureOptions o;
+    o.title = spec.title;
+    o.metadata = spec.metadata;
+    o.format = format;
+    return writePaintedFigure(fileName, figureSize(spec),
+                              [&](QPainter &p) { paintFigure(p, spec); }, error, o);
 }
 
 } // namespace awb
