@@ -5,7 +5,7 @@
 #include "model/Commands.h"
 #include "model/PointSetProperty.h"
 #include "model/ProjectIO.h"
-#include "model/PropertyTable.h"
+#include "model/PropertyDeclaration.h"
 
 #include <cmath>
 

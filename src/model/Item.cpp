@@ -3,7 +3,7 @@
 #include "model/Commands.h"
 #include "model/Project.h"
 #include "model/ProjectIO.h"
-#include "model/PropertyTable.h"
+#include "model/PropertyDeclaration.h"
 
 namespace awb {
 

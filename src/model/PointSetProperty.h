@@ -6,7 +6,7 @@
 // assign, item.update, attractor-cli set) through AttractorItem::setControlPoints.
 
 #include "model/AttractorItem.h"
-#include "model/PropertyTable.h"
+#include "model/PropertyDeclaration.h"
 
 namespace awb {
 

@@ -1,4 +1,4 @@
-#include "model/PropertyTable.h"
+#include "model/PropertyPart.h"
 
 #include "model/NumberFormat.h"
 #include "model/Project.h"

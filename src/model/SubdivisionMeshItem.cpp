@@ -7,7 +7,7 @@
 #include "core/mesh/MeshPieces.h"
 #include "core/mesh/MeshRefine.h"
 #include "model/ProjectIO.h"
-#include "model/PropertyTable.h"
+#include "model/PropertyDeclaration.h"
 
 #include <QJsonArray>
 

@@ -3,7 +3,7 @@
 #include "core/ifs/SurfaceIfs.h"
 #include "model/Commands.h"
 #include "model/ProjectIO.h"
-#include "model/PropertyTable.h"
+#include "model/PropertyDeclaration.h"
 
 #include <QJsonArray>
 #include <QMutex>

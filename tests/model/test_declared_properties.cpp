@@ -9,7 +9,7 @@
 
 #include "model/AttractorItem.h"
 #include "model/ItemRegistry.h"
-#include "model/PropertyTable.h"
+#include "model/PropertyPart.h"
 #include "model/SubdivisionCurveItem.h"
 #include "model/SubdivisionMeshItem.h"
 
