@@ -235,37 +235,37 @@ const PropertyTable &EigenvaluePlotItem::declaration()
             [](const P &p) -> const QString & { return p.m_source; },
             [](P &p, QString &&s) { p.m_source = std::move(s); }, nullptr,
             [](P &p, const QString &s, int) { p.setSource(s); });
-        auto &f = source.choiceBy("source", {}, {}, nullptr, nullptr)
-                      .label(QT_TR_NOOP("Source"))
-                      .group(QT_TR_NOOP("Eigenvalues"))
-                      .tip(QT_TR_NOOP("The item whose matrices are analysed"))
-                      .required()
-                      .field();
-        f.dynamicChoices = [](const P &p, const QString &s) { return sourceChoices(p, s).texts; };
-        f.dynamicSpellings = [](const P &p, const QString &s) {
-            return sourceChoices(p, s).names;
-        };
-        f.get = [](const P &p, const QString &s) {
-            return QVariant(int(sourceChoices(p, s).names.indexOf(s)));
-        };
-        f.assign = [](const P &p, QString &s, const QVariant &v) -> MaybeProblem {
-            const QStringList names = sourceChoices(p, s).names;
-            std::optional<qint64> i = property::toWhole(v);
-            if (!i && v.typeId() == QMetaType::QString && names.contains(v.toString()))
-                i = names.indexOf(v.toString());
-            if (!i || *i < 0 || *i >= names.size())
-                return Problem{"source", property::notValid(v, QStringLiteral("source"))};
-            s = names.at(int(*i));
-            return std::nullopt;
-        };
-        // The file keeps the name, whatever the project holds.
-        f.toJson = [](const P &, const QString &s) { return QJsonValue(s); };
-        f.fromJson = [](const P &, QString &s, const QJsonValue &v, const QString &where) {
-            if (!v.isString())
-                throw LoadError{where, QCoreApplication::translate("awb::FieldReader",
-                                                                   "expected a string")};
-            s = v.toString();
-        };
+        // A choice among the project's items; the file keeps the name, whatever the project
+        // holds.
+        source
+            .choiceBy(
+                "source", {}, {}, [](const QString &) { return 0; }, [](QString &, int) {})
+            .label(QT_TR_NOOP("Source"))
+            .group(QT_TR_NOOP("Eigenvalues"))
+            .tip(QT_TR_NOOP("The item whose matrices are analysed"))
+            .required()
+            .choicesFrom([](const P &p, const QString &s) { return sourceChoices(p, s).texts; })
+            .spellingsFrom([](const P &p, const QString &s) { return sourceChoices(p, s).names; })
+            .getter([](const P &p, const QString &s) {
+                return int(sourceChoices(p, s).names.indexOf(s));
+            })
+            .assigner([](const P &p, QString &s, const QVariant &v) -> MaybeProblem {
+                const QStringList names = sourceChoices(p, s).names;
+                std::optional<qint64> i = property::toWhole(v);
+                if (!i && v.typeId() == QMetaType::QString && names.contains(v.toString()))
+                    i = names.indexOf(v.toString());
+                if (!i || *i < 0 || *i >= names.size())
+                    return Problem{"source", property::notValid(v, QStringLiteral("source"))};
+                s = names.at(int(*i));
+                return std::nullopt;
+            })
+            .codec([](const P &, const QString &s) { return QJsonValue(s); },
+                   [](const P &, QString &s, const QJsonValue &v, const QString &where) {
+                       if (!v.isString())
+                           throw LoadError{where, QCoreApplication::translate(
+                                                      "awb::FieldReader", "expected a string")};
+                       s = v.toString();
+                   });
 
         auto kind = d.part<MatrixKind>(
             [](const P &p) -> const MatrixKind & { return p.m_matrixKind; },
@@ -307,35 +307,36 @@ const PropertyTable &EigenvaluePlotItem::declaration()
                   })
             .label(QT_TR_NOOP("Face"))
             .omitWhenDefault();
-        auto &e = vertex.choiceBy("extraordinary", {}, {}, nullptr, nullptr)
-                      .label(QT_TR_NOOP("Vertex"))
-                      .group(QT_TR_NOOP("Eigenvalues"))
-                      .tip(QT_TR_NOOP("For a mesh surface: the extraordinary vertex whose local "
-                                      "subdivision matrix is analysed"))
-                      .notSaved()
-                      .shownWhen([](const P &p, const VF &) { return meshSource(p) != nullptr; })
-                      .field();
-        e.dynamicChoices = [](const P &p, const VF &) {
-            QStringList texts;
-            vertexChoices(p, &texts);
-            return texts;
-        };
-        e.get = [](const P &p, const VF &v) {
-            QStringList texts;
-            const auto at = vertexChoices(p, &texts);
-            const VF chosen{v.second >= 0 ? -1 : v.first, v.second};
-            return QVariant(int(std::find(at.begin(), at.end(), chosen) - at.begin()));
-        };
-        e.assign = [](const P &p, VF &v, const QVariant &value) -> MaybeProblem {
-            QStringList texts;
-            const auto at = vertexChoices(p, &texts);
-            const auto i = property::toWhole(value);
-            if (!i || *i < 0 || *i >= qint64(at.size()))
-                return Problem{"extraordinary",
-                               property::notValid(value, QStringLiteral("extraordinary"))};
-            v = at[size_t(*i)];
-            return std::nullopt;
-        };
+        vertex
+            .choiceBy(
+                "extraordinary", {}, {}, [](const VF &) { return 0; }, [](VF &, int) {})
+            .label(QT_TR_NOOP("Vertex"))
+            .group(QT_TR_NOOP("Eigenvalues"))
+            .tip(QT_TR_NOOP("For a mesh surface: the extraordinary vertex whose local "
+                            "subdivision matrix is analysed"))
+            .notSaved()
+            .shownWhen([](const P &p, const VF &) { return meshSource(p) != nullptr; })
+            .choicesFrom([](const P &p, const VF &) {
+                QStringList texts;
+                vertexChoices(p, &texts);
+                return texts;
+            })
+            .getter([](const P &p, const VF &v) {
+                QStringList texts;
+                const auto at = vertexChoices(p, &texts);
+                const VF chosen{v.second >= 0 ? -1 : v.first, v.second};
+                return int(std::find(at.begin(), at.end(), chosen) - at.begin());
+            })
+            .assigner([](const P &p, VF &v, const QVariant &value) -> MaybeProblem {
+                QStringList texts;
+                const auto at = vertexChoices(p, &texts);
+                const auto i = property::toWhole(value);
+                if (!i || *i < 0 || *i >= qint64(at.size()))
+                    return Problem{"extraordinary",
+                                   property::notValid(value, QStringLiteral("extraordinary"))};
+                v = at[size_t(*i)];
+                return std::nullopt;
+            });
         return d.table();
     }();
     return table;

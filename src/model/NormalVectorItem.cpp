@@ -226,10 +226,9 @@ const PropertyTable &NormalVectorItem::declaration()
             .group(QT_TR_NOOP("Scheme"))
             .savedWhen(custom)
             .beforeEdit([](const NormalVectorItem &, S &s) { copyPresetRules(s); })
-            .field()
-            .get = [](const NormalVectorItem &, const S &s) {
-            return QVariant(s.makeScheme().normal() == NormalDirection::Negative ? 1 : 0);
-        };
+            .getter([](const NormalVectorItem &, const S &s) {
+                return s.makeScheme().normal() == NormalDirection::Negative ? 1 : 0;
+            });
         spec.boolean("closed", &S::closed)
             .label(QT_TR_NOOP("Closed polygon"))
             .group(QT_TR_NOOP("Scheme"));

@@ -1,19 +1,21 @@
 #pragma once
 // A part of an item kind's declared properties (PropertyTable.h): its fields, each a property
-// with its texts, its parameter view, its file form and its edit, and the template that reads,
-// writes, shows and edits them. Included by PropertyDeclaration.h (the item kinds) and by the
-// few places that store a part directly.
+// with its texts, its parameter view, its file form and its edit; what a part does with them
+// (PartCore, compiled once in PropertyPart.cpp) and where a kind's part keeps its value
+// (Part<T, Spec>). Included by PropertyDeclaration.h (the item kinds).
 
 #include "model/ProjectIO.h"
 #include "model/PropertyTable.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
+#include <QPointF>
 
 #include <climits>
 #include <cmath>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <type_traits>
 
 namespace awb {
@@ -38,8 +40,13 @@ enum class WhenMissing {
     Default,   // the field's file default is read instead
 };
 
-template <class T, class Spec>
+// One field of a part, its functions taking the part's value erased (`const void *` is a
+// `const Spec *`; PropertyDeclaration.h's builders wrap the kinds' typed functions), so that
+// the logic that reads, writes, shows and edits fields is compiled once (PropertyPart.cpp).
 struct Field {
+    using CSpec = const void *;
+    using MSpec = void *;
+
     ParameterInfo proto;   // key, type, range, slider, read-only (texts: `texts`)
     DeclaredTexts texts;
     QString typeName;      // for structured fields: "points", "matrices", ...
@@ -51,25 +58,25 @@ struct Field {
     WhenMissing missing = WhenMissing::Keep;
     const char *missingText = nullptr;  // "missing (the custom form needs its maps)"
     QJsonValue fileDefault;             // WhenMissing::Default
-    std::function<void(const T &, Spec &)> onMissing;  // a default that follows the state
+    std::function<void(const Item &, MSpec)> onMissing;  // a default that follows the state
     bool omitDefault = false;  // written only when it differs from the part's initial value
     QStringList spellings;     // a choice's file spellings, in index order
-    std::function<QStringList(const T &, const Spec &)> dynamicChoices;   // translated texts
-    std::function<QStringList(const T &, const Spec &)> dynamicSpellings;
+    std::function<QStringList(const Item &, CSpec)> dynamicChoices;   // translated texts
+    std::function<QStringList(const Item &, CSpec)> dynamicSpellings;
 
-    std::function<bool(const Spec &)> present;  // applies now (shown, saved, read)
-    std::function<bool(const Spec &)> saved;    // written now (default: whenever it applies)
-    std::function<bool(const T &, const Spec &)> visible;  // a parameter now (default: applies)
-    std::function<bool(const T &, const Spec &)> enabled;  // editable now (the dock greys it)
-    std::function<void(const T &, const Spec &, ParameterInfo &)> adjust;  // state-dependent texts
-    std::function<void(const T &, Spec &)> beforeEdit;  // e.g. a preset becomes custom rules
+    std::function<bool(CSpec)> present;  // applies now (shown, saved, read)
+    std::function<bool(CSpec)> saved;    // written now (default: whenever it applies)
+    std::function<bool(const Item &, CSpec)> visible;  // a parameter now (default: applies)
+    std::function<bool(const Item &, CSpec)> enabled;  // editable now (the dock greys it)
+    std::function<void(const Item &, CSpec, ParameterInfo &)> adjust;  // state-dependent texts
+    std::function<void(const Item &, MSpec)> beforeEdit;  // e.g. a preset becomes own rules
 
-    std::function<QVariant(const T &, const Spec &)> get;
+    std::function<QVariant(const Item &, CSpec)> get;
     // Stores `value` into the copy `next`; a Problem (with the field's key) refuses it.
-    std::function<MaybeProblem(const T &, Spec &, const QVariant &)> assign;
-    std::function<QJsonValue(const T &, const Spec &)> toJson;
-    // Reads the file's value (never undefined) into `s`; throws LoadError at `where`.
-    std::function<void(const T &, Spec &, const QJsonValue &, const QString &where)> fromJson;
+    std::function<MaybeProblem(const Item &, MSpec, const QVariant &)> assign;
+    std::function<QJsonValue(const Item &, CSpec)> toJson;
+    // Reads the file's value (never undefined) into the value; throws LoadError at `where`.
+    std::function<void(const Item &, MSpec, const QJsonValue &, const QString &where)> fromJson;
 
     // A list shown one element at a time ("alpha.0", "alpha.1", ...).
     struct Elements {
@@ -77,13 +84,28 @@ struct Field {
         const char *label = nullptr;  // "α%1"
         const char *group = nullptr;  // "Rules", or "Curve %1" (then one group per element)
         ParameterInfo::Type type = ParameterInfo::Type::Real;
-        std::function<int(const Spec &)> count;
-        std::function<QVariant(const Spec &, int)> get;
-        std::function<MaybeProblem(Spec &, int, const QVariant &)> assign;
+        std::function<int(CSpec)> count;
+        std::function<QVariant(CSpec, int)> get;
+        std::function<MaybeProblem(MSpec, int, const QVariant &)> assign;
     };
     std::optional<Elements> elements;
 
-    bool applies(const Spec &s) const { return !present || present(s); }
+    bool applies(CSpec s) const { return !present || present(s); }
+};
+
+// A part's value, owned and erased: a copy to edit, the value reading builds.
+class SpecValue {
+public:
+    virtual ~SpecValue() = default;
+    virtual void *get() = 0;
+};
+
+template <class Spec>
+class SpecValueOf final : public SpecValue {
+public:
+    explicit SpecValueOf(Spec v) : value(std::move(v)) {}
+    void *get() override { return &value; }
+    Spec value;
 };
 
 // Helpers of the templates below (PropertyTable.cpp).
@@ -125,308 +147,118 @@ std::vector<double> numbersFromJson(const QJsonValue &v, const QString &where);
 QJsonValue matricesToJson(const std::vector<Mat> &matrices);
 std::vector<Mat> matricesFromJson(const QJsonValue &v, const QString &where);
 PointList pointsFromJson(const QJsonValue &v, const QString &where, int dim);
+// A choice's index from its spelling in the file ("expected one of ..." otherwise), a truth
+// value ("expected true or false").
+int choiceFromJson(const QStringList &spellings, const QJsonValue &v, const QString &where);
+bool boolFromJson(const QJsonValue &v, const QString &where);
 // The value as a scalar parameter would give it, from its JSON form (choices by spelling).
 QVariant variantFromJson(const ParameterInfo &info, const QStringList &spellings,
                          const QJsonValue &v);
 } // namespace property
 
-// ---- a part of item kind T holding a Spec ------------------------------------------------------
+// ---- a part: the fields of one value of an item -----------------------------------------------
 
-template <class T, class Spec>
-class Part : public PartBase {
+// What every part does with its fields (PropertyPart.cpp); the typed Part<T, Spec> below says
+// where its value lives, how it is checked and how it is stored.
+class PartCore : public PartBase {
 public:
-    std::function<const Spec &(const T &)> get;
-    std::function<void(T &, Spec &&)> store;  // reading: no undo, no signal
-    // The kind's check with its messages (edits), and the undoable store (one command; edits
-    // with the same nonzero gesture merge).
-    std::function<MaybeProblem(const T &, const Spec &)> check;
-    std::function<void(T &, const Spec &, int gesture)> apply;
-    // The value's own check while reading (fields relative to `checkPath`), and where reading
-    // starts (default: Spec{}).
-    std::function<MaybeProblem(const T &, const Spec &)> checkRead;
-    QString checkPath;
-    std::function<void(const T &, Spec &)> normalizeRead;  // after the check (canonical form)
-    std::function<Spec(const T &)> initial;
     // A deque: the builders and the codecs keep references to fields declared before.
-    std::deque<Field<T, Spec>> fields;
+    std::deque<Field> fields;
+    QString checkPath;  // the JSON object the value's own check speaks of ("scheme")
+
+    // ---- what the typed part provides
+    virtual const void *valueOf(const Item &item) const = 0;
+    virtual std::unique_ptr<SpecValue> copyOf(const Item &item) const = 0;
+    virtual std::unique_ptr<SpecValue> start(const Item &item) const = 0;  // reading starts here
+    virtual void store(Item &item, SpecValue &value) const = 0;  // reading: no undo, no signal
+    virtual MaybeProblem check(const Item &item, const void *value) const = 0;  // for edits
+    virtual MaybeProblem checkRead(const Item &item, const void *value) const = 0;
+    virtual void normalizeRead(const Item &item, void *value) const = 0;
+    // One undo command; edits with the same nonzero gesture merge.
+    virtual void apply(Item &item, const void *value, int gesture) const = 0;
 
     // The checked edit: the kind's check, then one undo step. False with *error when refused.
-    bool commit(T &t, const Spec &next, int gesture, QString *error, bool checked = false) const
-    {
-        if (check && !checked)
-            if (const MaybeProblem p = check(t, next)) {
-                if (error)
-                    *error = p->message;
-                return false;
-            }
-        apply(t, next, gesture);
-        return true;
-    }
+    bool commit(Item &item, const void *next, int gesture, QString *error,
+                bool checked = false) const;
 
     // ---- PartBase
-    void parameters(const Item &item, QList<ParameterInfo> &out) const override
-    {
-        const T &t = self(item);
-        const Spec &s = get(t);
-        for (const Field<T, Spec> &f : fields) {
-            if (!f.applies(s) || (f.visible && !f.visible(t, s)))
-                continue;
-            if (f.elements) {
-                const auto &e = *f.elements;
-                for (int j = 0, n = e.count(s); j < n; ++j)
-                    out << elementInfo(f, j);
-                continue;
-            }
-            if (f.scalar)
-                out << info(t, s, f);
-        }
-    }
-
-    std::optional<QVariant> value(const Item &item, const QString &key) const override
-    {
-        const T &t = self(item);
-        const Spec &s = get(t);
-        int j = -1;
-        if (const Field<T, Spec> *f = find(t, s, key, &j))
-            return j >= 0 ? f->elements->get(s, j) : f->get(t, s);
-        return std::nullopt;
-    }
-
+    void parameters(const Item &item, QList<ParameterInfo> &out) const override;
+    std::optional<QVariant> value(const Item &item, const QString &key) const override;
     std::optional<bool> set(Item &item, const QString &key, const QVariant &v, int gesture,
-                            QString *error) const override
-    {
-        T &t = self(item);
-        const Spec &now = get(t);
-        int j = -1;
-        const Field<T, Spec> *f = find(t, now, key, &j);
-        if (!f)
-            return std::nullopt;
-        const ParameterInfo i = j >= 0 ? elementInfo(*f, j) : info(t, now, *f);
-        const auto refuse = [error](const QString &message) {
-            if (error)
-                *error = message;
-            return false;
-        };
-        // The value it has is no edit (a preset must not turn into own rules for it). A text
-        // for a number is parsed and judged, not compared.
-        if ((v.typeId() != QMetaType::QString || i.type == ParameterInfo::Type::Text)
-            && v == (j >= 0 ? f->elements->get(now, j) : f->get(t, now)))
-            return true;
-        if (i.readOnly || (j < 0 && !f->assign))
-            return refuse(QCoreApplication::translate("awb::Item",
-                                                      "%1 is shown, not edited").arg(i.label));
-        Spec next = now;
-        if (f->beforeEdit)
-            f->beforeEdit(t, next);
-        const MaybeProblem p = j >= 0 ? f->elements->assign(next, j, v) : f->assign(t, next, v);
-        if (p)
-            return refuse(p->message);
-        // The kind's own check speaks first (its words name the paper's bound); the declared
-        // range catches the rest.
-        if (check)
-            if (const MaybeProblem q = check(t, next))
-                return refuse(q->message);
-        if (const auto x = property::toReal(v);
-            x && property::numeric(i.type)
-            && (!std::isfinite(*x) || *x < i.minimum || *x > i.maximum))
-            return refuse(property::outOfRange(i, *x));
-        return commit(t, next, f->merges ? gesture : 0, error, true);
-    }
-
+                            QString *error) const override;
     std::optional<bool> setJson(Item &item, const QString &key, const QJsonValue &v,
-                                QString *error) const override
+                                QString *error) const override;
+    void write(const Item &item, QJsonObject &json) const override;
+    void read(Item &item, const FieldReader &reader) const override;
+    bool transfer(const Item &from, Item &to, QString *error) const override;
+    void describe(const Item &item, QList<PropertyDescription> &out) const override;
+    QStringList jsonKeys() const override;
+    bool enabled(const Item &item, const QString &key) const override;
+
+private:
+    // The present field `key` names (j: its element, or -1 for the field itself).
+    const Field *find(const Item &item, const void *s, const QString &key, int *j) const;
+    ParameterInfo info(const Item &item, const void *s, const Field &f) const;
+    ParameterInfo elementInfo(const Field &f, int j) const;
+};
+
+// A part of item kind T holding a Spec: where the value lives and how it is checked and stored.
+template <class T, class Spec>
+class Part final : public PartCore {
+public:
+    std::function<const Spec &(const T &)> get;
+    std::function<void(T &, Spec &&)> storeValue;  // reading: no undo, no signal
+    // The kind's check with its messages (edits), and the undoable store (one command; edits
+    // with the same nonzero gesture merge).
+    std::function<MaybeProblem(const T &, const Spec &)> checkValue;
+    std::function<void(T &, const Spec &, int gesture)> applyValue;
+    // The value's own check while reading (fields relative to `checkPath`), a canonical form
+    // after it, and where reading starts (default: Spec{}).
+    std::function<MaybeProblem(const T &, const Spec &)> checkReadValue;
+    std::function<void(const T &, Spec &)> normalizeValue;
+    std::function<Spec(const T &)> initial;
+
+    // The kinds' typed setters (setDeclared).
+    bool commitValue(T &t, const Spec &next, int gesture, QString *error) const
     {
-        T &t = self(item);
-        const Spec &now = get(t);
-        for (const Field<T, Spec> &f : fields) {
-            if (f.proto.key != key || !f.applies(now))
-                continue;
-            if (!f.fromJson || f.proto.readOnly) {
-                if (error)
-                    *error = QCoreApplication::translate("awb::Item", "%1 is shown, not edited")
-                                 .arg(f.proto.key);
-                return false;
-            }
-            Spec next = now;
-            if (f.beforeEdit)
-                f.beforeEdit(t, next);
-            try {
-                f.fromJson(t, next, v, key);
-            } catch (const LoadError &e) {
-                if (error)
-                    *error = e.field.isEmpty() ? e.message
-                                               : QStringLiteral("%1: %2").arg(e.field, e.message);
-                return false;
-            }
-            return commit(t, next, 0, error);
-        }
-        return std::nullopt;
+        return commit(t, &next, gesture, error);
     }
 
-    void write(const Item &item, QJsonObject &json) const override
+    const void *valueOf(const Item &item) const override { return &get(self(item)); }
+    std::unique_ptr<SpecValue> copyOf(const Item &item) const override
     {
-        const T &t = self(item);
-        const Spec &s = get(t);
-        std::optional<Spec> initialValue;
-        for (const Field<T, Spec> &f : fields) {
-            if (f.json.isEmpty() || !f.toJson || !f.applies(s) || (f.saved && !f.saved(s)))
-                continue;
-            const QJsonValue v = f.toJson(t, s);
-            if (f.omitDefault) {
-                if (!initialValue)
-                    initialValue = start(t);
-                if (v == f.toJson(t, *initialValue))
-                    continue;
-            }
-            property::setJsonAt(json, f.json, v);
-        }
+        return std::make_unique<SpecValueOf<Spec>>(get(self(item)));
     }
-
-    void read(Item &item, const FieldReader &reader) const override
+    std::unique_ptr<SpecValue> start(const Item &item) const override
     {
-        T &t = self(item);
-        Spec s = start(t);
-        for (const Field<T, Spec> &f : fields) {
-            // A field not saved in this state is not read either: the file's value stays
-            // one of its unknown fields, written back as it was.
-            if (f.json.isEmpty() || !f.fromJson || !f.applies(s) || (f.saved && !f.saved(s)))
-                continue;
-            const bool found = property::readAt(
-                reader, f.json, f.missing, f.texts.translate(f.missingText),
-                [&](const QJsonValue &v, const QString &where) { f.fromJson(t, s, v, where); });
-            if (!found && f.missing == WhenMissing::Default)
-                f.fromJson(t, s, f.fileDefault, reader.path(f.json));
-            if (!found && f.onMissing)
-                f.onMissing(t, s);
-        }
-        if (checkRead)
-            reader.require(checkRead(t, s), checkPath);
-        if (normalizeRead)
-            normalizeRead(t, s);
-        // The declared ranges, after the value's own check (whose words name the bound).
-        for (const Field<T, Spec> &f : fields)
-            if (!f.json.isEmpty() && f.scalar && f.applies(s)
-                && property::numeric(f.proto.type)) {
-                const double x = f.get(t, s).toDouble();
-                if (x < f.proto.minimum || x > f.proto.maximum)
-                    property::failRange(reader, f.json, f.proto, x);
-            }
-        store(t, std::move(s));
+        return std::make_unique<SpecValueOf<Spec>>(initial ? initial(self(item)) : Spec{});
     }
-
-    bool transfer(const Item &from, Item &to, QString *) const override
+    void store(Item &item, SpecValue &v) const override
     {
-        apply(self(to), get(self(from)), 0);
-        return true;
+        storeValue(self(item), std::move(*static_cast<Spec *>(v.get())));
     }
-
-    void describe(const Item &item, QList<PropertyDescription> &out) const override
+    MaybeProblem check(const Item &item, const void *v) const override
     {
-        const T &t = self(item);
-        const Spec &s = get(t);
-        for (const Field<T, Spec> &f : fields) {
-            if (!f.applies(s))
-                continue;
-            PropertyDescription d;
-            d.info = info(t, s, f);
-            d.typeName = f.scalar ? property::typeName(f.proto.type) : f.typeName;
-            d.spellings = f.dynamicSpellings ? f.dynamicSpellings(t, s) : f.spellings;
-            d.json = f.json;
-            d.value = !f.json.isEmpty() && f.toJson ? f.toJson(t, s)
-                                                    : QJsonValue::fromVariant(f.get(t, s));
-            d.scalar = f.scalar;
-            out << d;
-            if (f.elements)
-                for (int j = 0, n = f.elements->count(s); j < n; ++j) {
-                    PropertyDescription e;
-                    e.info = elementInfo(f, j);
-                    e.typeName = property::typeName(e.info.type);
-                    e.json = QString();
-                    const QVariant v = f.elements->get(s, j);
-                    e.value = v.typeId() == QMetaType::Bool ? QJsonValue(v.toBool())
-                                                             : QJsonValue(v.toDouble());
-                    out << e;
-                }
-        }
+        return checkValue ? checkValue(self(item), *static_cast<const Spec *>(v)) : std::nullopt;
     }
-
-    QStringList jsonKeys() const override
+    MaybeProblem checkRead(const Item &item, const void *v) const override
     {
-        QStringList keys;
-        for (const Field<T, Spec> &f : fields)
-            if (!f.json.isEmpty() && !keys.contains(f.json.section(QLatin1Char('.'), 0, 0)))
-                keys << f.json.section(QLatin1Char('.'), 0, 0);
-        return keys;
+        return checkReadValue ? checkReadValue(self(item), *static_cast<const Spec *>(v))
+                              : std::nullopt;
     }
-
-    bool enabled(const Item &item, const QString &key) const override
+    void normalizeRead(const Item &item, void *v) const override
     {
-        const T &t = self(item);
-        const Spec &s = get(t);
-        int j = -1;
-        const Field<T, Spec> *f = find(t, s, key, &j);
-        return f && (!f->enabled || f->enabled(t, s));
+        if (normalizeValue)
+            normalizeValue(self(item), *static_cast<Spec *>(v));
+    }
+    void apply(Item &item, const void *v, int gesture) const override
+    {
+        applyValue(self(item), *static_cast<const Spec *>(v), gesture);
     }
 
 private:
     static T &self(Item &item) { return static_cast<T &>(item); }
     static const T &self(const Item &item) { return static_cast<const T &>(item); }
-    Spec start(const T &t) const { return initial ? initial(t) : Spec{}; }
-
-    // The present field `key` names (j: its element, or -1 for the field itself).
-    const Field<T, Spec> *find(const T &t, const Spec &s, const QString &key, int *j) const
-    {
-        for (const Field<T, Spec> &f : fields) {
-            if (!f.applies(s) || (f.visible && !f.visible(t, s)))
-                continue;
-            if (f.proto.key == key && (f.scalar || !f.elements)) {
-                *j = -1;
-                return f.scalar ? &f : nullptr;
-            }
-            if (f.elements) {
-                const auto &e = *f.elements;
-                const QString head = e.key.section(QStringLiteral("%1"), 0, 0);
-                const QString tail = e.key.section(QStringLiteral("%1"), 1);
-                if (!key.startsWith(head) || !key.endsWith(tail)
-                    || key.size() <= head.size() + tail.size())
-                    continue;
-                bool ok = false;
-                const int index = key.mid(head.size(), key.size() - head.size() - tail.size())
-                                      .toInt(&ok);
-                if (ok && index >= 0 && index < e.count(s)
-                    && e.key.arg(index) == key) {
-                    *j = index;
-                    return &f;
-                }
-            }
-        }
-        return nullptr;
-    }
-
-    ParameterInfo info(const T &t, const Spec &s, const Field<T, Spec> &f) const
-    {
-        ParameterInfo i = property::translated(f.proto, f.texts);
-        if (f.dynamicChoices)
-            i.choices = f.dynamicChoices(t, s);
-        if (f.adjust)
-            f.adjust(t, s, i);
-        return i;
-    }
-
-    ParameterInfo elementInfo(const Field<T, Spec> &f, int j) const
-    {
-        const auto &e = *f.elements;
-        ParameterInfo i = property::translated(f.proto, f.texts);
-        i.key = e.key.arg(j);
-        i.type = e.type;
-        const QString label = f.texts.translate(e.label);
-        i.label = label.contains(QStringLiteral("%1")) ? label.arg(j) : label;
-        if (e.group) {
-            const QString group = f.texts.translate(e.group);
-            i.group = group.contains(QStringLiteral("%1")) ? group.arg(j + 1) : group;
-        }
-        return i;
-    }
 };
 
 } // namespace awb

@@ -264,6 +264,32 @@ PointList pointsFromJson(const QJsonValue &v, const QString &where, int dim)
     return r.points(key, std::nullopt, dim);
 }
 
+int choiceFromJson(const QStringList &spellings, const QJsonValue &v, const QString &where)
+{
+    if (!v.isString())
+        throw LoadError{where, QCoreApplication::translate("awb::FieldReader",
+                                                           "expected a string")};
+    const int i = int(spellings.indexOf(v.toString()));
+    if (i < 0) {
+        QStringList options;
+        for (const QString &n : spellings)
+            options << QStringLiteral("\"%1\"").arg(n);
+        throw LoadError{where, QCoreApplication::translate("awb::FieldReader",
+                                                           "expected one of %1, got %2")
+                                   .arg(options.join(QLatin1String(", ")),
+                                        QStringLiteral("\"%1\"").arg(v.toString()))};
+    }
+    return i;
+}
+
+bool boolFromJson(const QJsonValue &v, const QString &where)
+{
+    if (!v.isBool())
+        throw LoadError{where, QCoreApplication::translate("awb::FieldReader",
+                                                           "expected true or false")};
+    return v.toBool();
+}
+
 QVariant variantFromJson(const ParameterInfo &info, const QStringList &spellings,
                          const QJsonValue &v)
 {

@@ -345,7 +345,7 @@ const PropertyTable &SubdivisionSurfaceItem::declaration()
                 .choicesFrom([](const I &, const SurfaceNet &n) {
                     return SurfaceSchemeSpec::layoutNames(n.scheme.kind);
                 });
-        net.spellingsFrom(layout, [](const I &, const SurfaceNet &n) {
+        layout.spellingsFrom([](const I &, const SurfaceNet &n) {
             return SurfaceSchemeSpec::layoutNames(n.scheme.kind);
         });
         net.points("control_points", &SurfaceNet::points, [](const I &) { return 3; })
