@@ -4,11 +4,12 @@
 # the gallery (examples/*.awb, one per paper figure) with the CLI to build/gallery/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh --programs
-if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && [ -z "${AWB_NO_GUI:-}" ] \
-   && [ -x build/bin/attractor-workbench ]; then
+# The job builds what it runs: the window with a display, the command-line tool without one.
+if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && [ -z "${AWB_NO_GUI:-}" ]; then
+    bash scripts/setup.sh --programs
     exec ./build/bin/attractor-workbench examples/000-fig11-sierpinski-with-control-points.awb
 fi
+bash scripts/setup.sh --programs --cli-only
 out="$(pwd)/build/gallery"
 mkdir -p "$out"
 for f in examples/*.awb; do

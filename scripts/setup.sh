@@ -70,8 +70,11 @@ elif [ "$TESTS" = ON ] && grep -q '^AWB_TESTS:BOOL=OFF' build/CMakeCache.txt; th
   cmake -S . -B build -DAWB_TESTS=ON
 fi
 # `setup.sh --programs`: only the two programs (scripts/main.sh: the first picture without
-# waiting for the tests and benchmarks to compile); otherwise everything.
-if [ "${1:-}" = "--programs" ]; then
+# waiting for the tests and benchmarks to compile), `--programs --cli-only` only the
+# command-line tool (the main job without a display); otherwise everything.
+if [ "${1:-}" = "--programs" ] && [ "${2:-}" = "--cli-only" ]; then
+  cmake --build build --parallel "$(nproc)" --target attractor-cli
+elif [ "${1:-}" = "--programs" ]; then
   cmake --build build --parallel "$(nproc)" --target attractor-cli attractor-workbench
 else
   cmake --build build --parallel "$(nproc)"
