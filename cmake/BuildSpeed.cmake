@@ -5,7 +5,9 @@
 #   after `git checkout`, a second build folder of the same compiler and flags, or the next CI
 #   run on the same machine reuse the objects. Depend mode (no preprocessor run: the compiler's
 #   own -MD list) keeps a cold cache nearly free; the sloppiness lets precompiled headers be
-#   cached.
+#   cached. Paths below the checkout are hashed relative to it (base_dir, no hash of the build
+#   folder's own path): a clean checkout elsewhere -- CI's, a fresh clone -- reuses the objects
+#   an earlier build of the same sources made.
 # - lld links (when installed): several times faster than ld.bfd, which matters most for the
 #   relinks after an edit.
 # - Precompiled headers per layer (awb_precompile): Eigen for the core, Qt for the others.
@@ -22,6 +24,7 @@ if(AWB_CCACHE AND AWB_CCACHE_PROGRAM AND NOT CMAKE_CXX_COMPILER_LAUNCHER)
     set(CMAKE_CXX_COMPILER_LAUNCHER
         ${CMAKE_COMMAND} -E env CCACHE_DEPEND=1
         CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime
+        CCACHE_BASEDIR=${PROJECT_SOURCE_DIR} CCACHE_NOHASHDIR=1
         ${AWB_CCACHE_PROGRAM})
 endif()
 
