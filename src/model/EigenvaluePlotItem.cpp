@@ -194,8 +194,10 @@ std::vector<std::pair<int, int>> vertexChoices(const EigenvaluePlotItem &plot, Q
 {
     std::vector<std::pair<int, int>> at{{-1, -1}};
     *texts = QStringList{EigenvaluePlotItem::tr("(the mesh's matrices)")};
-    if (const SubdivisionMeshItem *mesh = meshSource(plot))
-        for (const ExtraordinaryVertex &e : *mesh->extraordinary()) {
+    // The list is held here: the mesh may drop its cached one while it is read.
+    const auto list = meshSource(plot) ? meshSource(plot)->extraordinary() : nullptr;
+    if (list)
+        for (const ExtraordinaryVertex &e : *list) {
             at.push_back({e.vertex >= 0 ? e.vertex : -1, e.face});
             *texts << (e.vertex >= 0
                            ? EigenvaluePlotItem::tr("vertex %1 (n = %2)").arg(e.vertex).arg(e.valence)

@@ -98,7 +98,8 @@ QJsonObject meshAnalysisJson(const SubdivisionMeshItem &item)
     o["vertex_count"] = int(item.inputs().vertices.size());
     o["face_count"] = int(item.inputs().faces.size());
     QJsonArray extraordinary;
-    for (const ExtraordinaryVertex &e : *item.extraordinary())
+    const auto vertices = item.extraordinary();  // held: the loop reads it
+    for (const ExtraordinaryVertex &e : *vertices)
         extraordinary.append(vertexJson(e, item.scheme()));
     o["extraordinary"] = extraordinary;
     o["pieces"] = piecesJson(*pieces);

@@ -14,6 +14,7 @@
 #include <QtTest>
 
 #include "TestMain.h"
+#include "TestTime.h"
 
 #include "CliRunner.h"
 
@@ -99,6 +100,12 @@ void TestRegularityCli::divergentFourPoint()
     QVERIFY(r["upper"].toDouble() <= 0.0);
 }
 
+namespace {
+// The seconds each member's certificate may take: 0.2, times the instrumented builds' slowness
+// (TestTime.h), so that the bisection reaches its tolerance there too.
+QString budget() { return QString::number(0.2 * awb::test::ms(1)); }
+} // namespace
+
 void TestRegularityCli::fourPointC1Interval()
 {
     QByteArray out, err;
@@ -106,7 +113,7 @@ void TestRegularityCli::fourPointC1Interval()
     QCOMPARE(awb::test::runProgram(awb::test::cliPath(),
                                    {"regularity-interval", file, "--parameter", "omega", "--from",
                                     "-0.1", "--to", "0.3", "--smoothness", "1", "--grid", "17",
-                                    "--budget", "0.2", "--json"},
+                                    "--budget", budget(), "--json"},
                                    &out, &err),
              0);
     const QJsonObject r = QJsonDocument::fromJson(out).object();
@@ -145,7 +152,7 @@ void TestRegularityCli::fourPointC1Interval()
     QCOMPARE(awb::test::runProgram(awb::test::cliPath(),
                                    {"regularity-interval", mask, "--parameter", "w", "--mask",
                                     "-w, 0, 1/2 + w, 1, 1/2 + w, 0, -w", "--from", "-0.1",
-                                    "--to", "0.3", "--grid", "17", "--budget", "0.2", "--json"},
+                                    "--to", "0.3", "--grid", "17", "--budget", budget(), "--json"},
                                    &out, &err),
              0);
     const QJsonArray viaMask = QJsonDocument::fromJson(out).object()["intervals"].toArray();

@@ -543,7 +543,15 @@ def test_analyse_equals_the_cli(awb, examples, file):
         cli = json.loads(run_cli("analyse", path, "--item", item.name, "--json").stdout)
         assert len(cli["items"]) == 1
         ours = json_round_trip(item.analyse())
-        assert json_diff(ours, cli["items"][0]) == [], item.name
+        theirs = cli["items"][0]
+        # A regularity that ran out of its time budget (a slow, instrumented build) stops where
+        # the clock stopped it: the two brackets must overlap, not agree to the digit.
+        a, b = ours.get("regularity", {}), theirs.get("regularity", {})
+        if not (a.get("exact") and b.get("exact")) and "lower" in a and "lower" in b:
+            assert a["lower"] <= b["upper"] and b["lower"] <= a["upper"], item.name
+            ours.pop("regularity")
+            theirs.pop("regularity")
+        assert json_diff(ours, theirs) == [], item.name
         if "box_dimension" in ours:  # the same code: exactly the same number
             assert ours["box_dimension"] == cli["items"][0]["box_dimension"]
 

@@ -116,7 +116,8 @@ void ItemController::showVertex()
     if (m_valences) {
         if (mesh) {
             std::vector<int> valences;
-            for (const ExtraordinaryVertex &e : *mesh->extraordinary())
+            const auto vertices = mesh->extraordinary();  // held: the loop reads it
+            for (const ExtraordinaryVertex &e : *vertices)
                 if (!e.boundary)
                     valences.push_back(e.valence);
             m_valences->setScheme(mesh->scheme(), std::move(valences));
