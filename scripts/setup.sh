@@ -23,6 +23,7 @@ PROGRAM_PACKAGES=(
 TEST_PACKAGES=(
   libosd-dev  # OpenSubdiv 3.5: the reference of the mesh tests (tests/core/test_mesh_opensubdiv.cpp)
   flam3-utils  # flam3-render and flam3-genome: the judges of the .flame tests (tests/cli)
+  libflam3-dev  # libflam3's apply_xform: the reference of the variations (tests/core/test_flame_variations.cpp)
   xvfb xauth x11-apps imagemagick poppler-utils
   libxtst-dev xdotool  # attractor-bench-window: pointer moves through XTest, as a person drags
   python3-pytest python3-matplotlib  # the module's tests and example scripts

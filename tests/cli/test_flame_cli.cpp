@@ -19,6 +19,7 @@
 #include <QtTest>
 
 #include "TestFiles.h"
+#include "BlockCompare.h"
 #include "TestMain.h"
 
 #include "CliRunner.h"
@@ -81,33 +82,6 @@ std::vector<double> blockAlpha(const QImage &image, int b, bool mirror = false)
             out[std::size_t(y / b) * nx + x / b] += row[x].alpha() / 65535.0 / (b * b);
     }
     return out;
-}
-
-double correlation(const std::vector<double> &a, const std::vector<double> &b)
-{
-    const double n = double(a.size());
-    double ma = 0, mb = 0;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        ma += a[i] / n, mb += b[i] / n;
-    double sab = 0, saa = 0, sbb = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        sab += (a[i] - ma) * (b[i] - mb);
-        saa += (a[i] - ma) * (a[i] - ma);
-        sbb += (b[i] - mb) * (b[i] - mb);
-    }
-    return sab / std::sqrt(saa * sbb);
-}
-
-// The share of the lit blocks (alpha mean > 0.05) of `a` that are lit in `b`.
-double litCovered(const std::vector<double> &a, const std::vector<double> &b)
-{
-    double lit = 0, both = 0;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        if (a[i] > 0.05) {
-            lit += 1;
-            both += b[i] > 0.05;
-        }
-    return lit > 0 ? both / lit : 0;
 }
 
 // flam3-render of a genome into `png` (with alpha: transparency=1).
@@ -335,6 +309,22 @@ void TestFlameCli::malformedFlames()
     QVERIFY2(QString::fromUtf8(err).contains(
                  QRegularExpression("broken.flame, line 4, column \\d+: the XML is malformed")),
              err.constData());
+
+    // Counts range-checked before anything is allocated: a symmetry kind of INT_MIN (a
+    // 234-byte file once took 1.5 GB), and more xforms than the engine iterates.
+    const QString bomb = m_dir.filePath("bomb.flame");
+    QByteArray many = "<flames><flame name=\"sym\"><symmetry kind=\"-2147483648\"/>"
+                      "<xform weight=\"1\" coefs=\"0.5 0 0 0.5 0 0\"/></flame>\n"
+                      "<flame name=\"many\">";
+    for (int k = 0; k < 300; ++k)
+        many += "<xform weight=\"1\" coefs=\"0.5 0 0 0.5 0 0\"/>\n";
+    QVERIFY(put(bomb, many + "</flame></flames>\n"));
+    QCOMPARE(run({"import", bomb, "--out", project}, nullptr, &err), 1);
+    const QString bombText = QString::fromUtf8(err);
+    QVERIFY2(bombText.contains("flame 'sym': <symmetry> needs kind=\"k\", a whole number from "
+                               "-255 to 255, got '-2147483648'"),
+             err.constData());
+    QVERIFY2(bombText.contains("flame 'many': more than 255 xforms"), err.constData());
 }
 
 void TestFlameCli::genomesRenderAsFlam3Renders_data()
@@ -379,15 +369,15 @@ void TestFlameCli::genomesRenderAsFlam3Renders()
     QCOMPARE(a.size(), QSize(400, 400));
     QCOMPARE(b.size(), QSize(400, 400));
     const auto A = blockAlpha(a, 10), B = blockAlpha(b, 10), Bm = blockAlpha(b, 10, true);
-    const double same = correlation(A, B), mirrored = correlation(A, Bm);
+    const double same = awb::test::correlation(A, B), mirrored = awb::test::correlation(A, Bm);
     qInfo("%s: correlation of 10 x 10 block alpha %.3f (mirrored %.3f); flam3's lit blocks "
           "lit in ours %.3f",
-          qPrintable(genome), same, mirrored, litCovered(A, B));
+          qPrintable(genome), same, mirrored, awb::test::litCovered(A, B, 0.05, 0.05));
     QVERIFY2(same > 0.8, qPrintable(QString::number(same)));
     QVERIFY2(same > mirrored + 0.2, qPrintable(QString::number(mirrored)));
     // flam3's density estimator (estimator_radius 9 in these genomes) spreads a sparse tail's
     // single hits over up to 9 pixels, so its lit blocks reach a little beyond ours.
-    QVERIFY(litCovered(A, B) > 0.8);
+    QVERIFY(awb::test::litCovered(A, B, 0.05, 0.05) > 0.8);
 }
 
 void TestFlameCli::liveGenomeImports()
@@ -454,7 +444,8 @@ void TestFlameCli::manyMapsAndNoAttractor()
     QCOMPARE(run({"import", dataPath("flam3-genome-no-attractor.flame"), "--out", none},
                  nullptr, &err),
              0);
-    QVERIFY2(err.contains("do not contract, not even on average (Lyapunov exponent 0.2"),
+    QVERIFY2(err.contains("do not contract, not even on average (the Lyapunov exponent of "
+                          "their products, 0.2"),
              err.constData());
     QCOMPARE(run({"analyse", none, "--json"}, &out), 0);
     const QJsonObject item = QJsonDocument::fromJson(out)["items"][0].toObject();
@@ -516,13 +507,13 @@ void TestFlameCli::exportRendersInFlam3()
     QCOMPARE(a.size(), QSize(300, 400));
     QCOMPARE(b.size(), QSize(300, 400));
     const auto A = blockAlpha(a, 10), B = blockAlpha(b, 10), Bm = blockAlpha(b, 10, true);
-    const double same = correlation(A, B), mirrored = correlation(A, Bm);
+    const double same = awb::test::correlation(A, B), mirrored = awb::test::correlation(A, Bm);
     qInfo("fern: correlation %.3f (mirrored %.3f), lit covered %.3f / %.3f", same, mirrored,
-          litCovered(A, B), litCovered(B, A));
+          awb::test::litCovered(A, B, 0.05, 0.05), awb::test::litCovered(B, A, 0.05, 0.05));
     QVERIFY2(same > 0.8, qPrintable(QString::number(same)));
     QVERIFY(same > mirrored + 0.2);
-    QVERIFY(litCovered(A, B) > 0.9);
-    QVERIFY(litCovered(B, A) > 0.9);
+    QVERIFY(awb::test::litCovered(A, B, 0.05, 0.05) > 0.9);
+    QVERIFY(awb::test::litCovered(B, A, 0.05, 0.05) > 0.9);
 }
 
 void TestFlameCli::rawDensityOut()

@@ -1,0 +1,65 @@
+#pragma once
+// The chaos game of a fractal flame (flame/Flame.h) into the engine's histogram
+// (render/Density.h), as flam3 3.1.1 plays it (flam3_iterate, rect.c): orbits restarted from a
+// random point of [-1, 1]^2 every kBatch samples and run kFuse steps before they are drawn;
+// the xform chosen by weight, or by weight times the previous xform's xaos row; a bad value
+// (flame/Variations.h) retried up to four times from flam3's random replacement, the fifth
+// drawn; the final xform drawn on every point (with its opacity as a probability) without
+// moving the orbit; the camera's rotation about the centre; a hit weighted by the xform's
+// opacity, here drawn with that probability (the same expected density in whole hits).
+//
+// A hit's label is its colour coordinate as a palette index (0..255): Density accumulation
+// colours a pixel by the palette at the hits' mean index, Hits by the smallest index that hit
+// it (flamePaletteRgb gives the labels' colours). Equal requests give equal pictures on any
+// number of threads: the samples run in the kChaosStreams streams of ifs/Random.h.
+
+#include "core/flame/Flame.h"
+#include "core/ifs/Attractor.h"
+#include "core/render/Density.h"
+
+namespace awb::flame {
+
+inline constexpr int kBatch = 10000;  // flam3's sub_batch_size
+inline constexpr int kFuse = 15;      // flam3's FUSE_27
+// The most xforms a flame may have: each is a row of the xaos table (N^2 entries) and an
+// alias table, and flam3 itself draws at most a few dozen.
+inline constexpr int kMaxXforms = 256;
+
+struct FlameRaster {
+    const Flame *flame = nullptr;
+    // The world rectangle with y up: the flame's y mirrored (flameFrame gives the flame's own).
+    RasterFrame frame;
+    Accumulation accumulation = Accumulation::Density;
+    std::uint64_t samples = 100000;
+    std::uint64_t seed = 1;
+    int threads = 1;
+};
+
+struct FlameStats {
+    std::uint64_t samples = 0;    // drawn (after the fuse)
+    std::uint64_t badValues = 0;  // flam3's badvals: replaced points
+    std::uint64_t offscreen = 0;
+    bool cancelled = false;
+};
+
+// Throws InputError naming the problem when the flame cannot be played: no xform, a weight
+// or coefficient that is not a finite number, negative weights, every weight 0, a xaos row
+// that forbids every xform, more than kMaxXforms xforms, an unknown variation.
+void checkFlame(const Flame &flame);
+
+// The picture rectangle flam3 draws (centre, scale x 2^zoom pixels per unit, size), with y up,
+// at supersample 1: flam3-render's frame of the flame.
+RasterFrame flameFrame(const Flame &flame);
+
+// The sample count flam3 draws: quality x width x height.
+double flameSamples(const Flame &flame);
+
+// Accumulates the flame into `out` (cleared first, sized to the frame's cells). Throws
+// InputError (checkFlame, the frame). Returns with stats.cancelled when control.cancel is set.
+FlameStats accumulateFlame(const FlameRaster &job, DensityImage &out,
+                           const IterationControl &control = {});
+
+// The palette as the labels' colours (256 entries).
+std::vector<Rgb8> flamePaletteRgb(const Flame &flame);
+
+} // namespace awb::flame
