@@ -11,9 +11,11 @@
 #include "model/IfsExchange.h"
 #include "model/Item.h"
 #include "model/Project.h"
+#include "model/ProjectIO.h"
 
 #include <QCommandLineParser>
 #include <QFileInfo>
+#include <QSet>
 
 namespace awb::cli {
 
@@ -54,15 +56,29 @@ int importFile(const QStringList &args)
             throw Failure{CliTr::tr("%1: no entry could be imported").arg(file)};
         Project project;
         QStringList names;
+        QSet<QString> taken;
         for (auto &item : imported.items) {
-            // Entries of one file may share a name: the project's names are unique.
+            // Entries of one file may share a name: the project's names are unique (a set of
+            // the names so far, so that a file of many entries of one name imports in linear
+            // time).
             const QString base = item->name();
             QString name = base;
-            for (int k = 2; project.findItem(name); ++k)
+            for (int k = 2; taken.contains(name); ++k)
                 name = QStringLiteral("%1 (%2)").arg(base).arg(k);
+            taken.insert(name);
             item->setName(name);
             names << project.addItem(std::move(item))->name();
         }
+        // What the import writes, the program must load: a project larger than a project file
+        // may be is refused before it is written.
+        const qsizetype bytes = ProjectIO::toBytes(ProjectIO::toJson(project)).size();
+        if (bytes > ProjectIO::maxFileBytes)
+            throw Failure{CliTr::tr("%1: its %2 entries make a project of %3 MB, more than the "
+                                    "%4 MB a project file may be")
+                              .arg(file)
+                              .arg(names.size())
+                              .arg(bytes / (1024 * 1024))
+                              .arg(ProjectIO::maxFileBytes / (1024 * 1024))};
         QString error;
         if (!project.saveAs(parser.value("out"), &error))
             throw Failure{error};

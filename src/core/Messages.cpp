@@ -1,6 +1,7 @@
 #include "core/Messages.h"
 
 #include <atomic>
+#include <charconv>
 #include <sstream>
 
 namespace awb {
@@ -46,6 +47,15 @@ std::string formatMessageArgs(std::string_view pattern,
         }
     }
     return out;
+}
+
+std::string shortestNumber(double v)
+{
+    if (v == 0)
+        return "0";  // -0 too: the files of other tools have no signed zero worth a '-'
+    char buffer[32];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, v).ptr;
+    return std::string(buffer, end);
 }
 
 std::string streamedNumber(double v, int digits)

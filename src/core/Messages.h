@@ -70,4 +70,9 @@ std::string formatMessage(std::string_view pattern, const Args &...args)
 // stream's default: 6): the one number formatter of the core's messages and notes.
 std::string streamedNumber(double v, int digits = 6);
 
+// The shortest text that reads back as exactly v (std::to_chars; "0.1", "1e-07", "-2.5"): the
+// numbers of the files written for other tools (.ifs, .flame), whose round trips are exact
+// (-0 is written "0", equal to it).
+std::string shortestNumber(double v);
+
 } // namespace awb

@@ -133,6 +133,10 @@ MaybeProblem FractalSpec::check() const
         return std::nullopt;
     if (maps.empty())
         return Problem{"maps", FractalItemTr::tr("the custom form needs at least one map")};
+    if (maps.size() > std::size_t(kMaxMaps))
+        return Problem{"maps", FractalItemTr::tr("%1 maps: at most %2 maps are supported")
+                                   .arg(maps.size())
+                                   .arg(kMaxMaps)};
     for (size_t i = 0; i < maps.size(); ++i) {
         const AffineMap &f = maps[i];
         const Eigen::Index d = maps.front().A.rows();

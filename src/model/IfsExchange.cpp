@@ -10,6 +10,8 @@
 #include <QJsonArray>
 #include <QJsonObject>
 
+#include <Eigen/QR>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -87,11 +89,15 @@ std::unique_ptr<Item> importedFractal(const FractintEntry &e, const QStringList 
 ImportedItems importFractintText(const QByteArray &text, const QString &fileName)
 {
     std::istringstream in(text.toStdString());
-    const FractintFile file = readFractintIfs(in);
+    // A file of bare rows (Fractint 10, 15) is one entry named after the file.
+    const FractintFile file =
+        readFractintIfs(in, QFileInfo(fileName).completeBaseName().toStdString());
     const std::string name = QFileInfo(fileName).fileName().toStdString();
     ImportedItems out;
     for (const FractintProblem &p : file.problems)
         out.problems << QString::fromStdString(p.describe(name));
+    for (const FractintProblem &w : file.warnings)
+        out.warnings << QString::fromStdString(w.describe(name));
     for (const FractintEntry &e : file.entries) {
         std::unique_ptr<Item> item;
         try {
@@ -133,7 +139,39 @@ ImportedItems importFractint(const QString &fileName)
     return importFractintText(readExchangeFile(fileName), fileName);
 }
 
-std::optional<FractintEntry> fractintEntryOf(const AttractorItem &item, QString *why)
+namespace {
+
+// The maps of a lifted IFS as maps of what is drawn, when its plane (or space) block is
+// decoupled: with the one view p = X V + c, each f(X) = X A + b has A V = V M for some M, and
+// then f moves p to p M + (b V + c - c M) whatever X is over p (000 §2: the drawn coordinates
+// of a lifted curve are those of the curve). nullopt when a map mixes in the free coordinates.
+std::optional<std::vector<AffineMap>> drawnMaps(const Ifs &ifs)
+{
+    if (ifs.views.size() != 1 || ifs.maps.empty())
+        return std::nullopt;
+    const Mat &V = ifs.views.front().V;
+    const RowVec &c = ifs.views.front().c;
+    const Eigen::Index k = V.cols();
+    if ((k != 2 && k != 3) || V.rows() != ifs.dim())
+        return std::nullopt;
+    const Eigen::ColPivHouseholderQR<Mat> qr(V);
+    if (qr.rank() < k)
+        return std::nullopt;
+    std::vector<AffineMap> out;
+    for (const AffineMap &f : ifs.maps) {
+        const Mat AV = f.A * V;
+        const Mat M = qr.solve(AV);
+        if ((AV - V * M).norm() > 1e-12 * std::max(1.0, AV.norm()))
+            return std::nullopt;
+        out.push_back({M, f.b * V + c - c * M});
+    }
+    return out;
+}
+
+} // namespace
+
+std::optional<FractintEntry> fractintEntryOf(const AttractorItem &item, QString *why,
+                                             const QString &format)
 {
     FractintEntry e;
     e.name = item.name().toStdString();
@@ -150,19 +188,25 @@ std::optional<FractintEntry> fractintEntryOf(const AttractorItem &item, QString 
         }
         const Ifs &ifs = d->ifs;
         const int dim = ifs.dim();
-        bool plain = (dim == 2 || dim == 3) && ifs.views.size() == 1
-                     && ifs.views.front().V.rows() == dim && ifs.views.front().V.cols() == dim
-                     && ifs.views.front().V.isIdentity(0) && ifs.views.front().c.isZero(0);
-        if (!plain) {
+        const bool plain = (dim == 2 || dim == 3) && ifs.views.size() == 1
+                           && ifs.views.front().V.rows() == dim
+                           && ifs.views.front().V.cols() == dim
+                           && ifs.views.front().V.isIdentity(0) && ifs.views.front().c.isZero(0);
+        if (plain) {
+            e.maps = ifs.maps;
+        } else if (auto drawn = drawnMaps(ifs)) {
+            e.maps = std::move(*drawn);
+        } else {
             if (why)
                 *why = ExchangeTr::tr("the IFS of %1 acts in a space of dimension %2 that is "
-                                      "drawn through a projection (000 §2): a Fractint entry "
-                                      "holds maps of the plane or of space only")
+                                      "drawn through a projection (000 §2), and its maps do not "
+                                      "act on the drawn coordinates alone: %3 holds maps of the "
+                                      "plane or of space only")
                            .arg(item.name())
-                           .arg(dim);
+                           .arg(dim)
+                           .arg(format);
             return std::nullopt;
         }
-        e.maps = ifs.maps;
     }
     e.dimension = e.maps.empty() ? 2 : e.maps.front().dim();
     const std::vector<double> &p = item.algorithm().probabilities;

@@ -46,10 +46,13 @@ ImportedItems importFractint(const QString &fileName);
 // The same from text (`fileName` names it in the messages).
 ImportedItems importFractintText(const QByteArray &text, const QString &fileName);
 
-// The entry of an item: a custom fractal's own maps, or the maps of an IFS that acts in the
-// plane or in space as drawn; nullopt with *why for anything else (a lifted subdivision IFS,
-// an automaton). The probabilities are the item's random-iteration ones (equal when it has
-// none).
-std::optional<FractintEntry> fractintEntryOf(const AttractorItem &item, QString *why);
+// The entry of an item: a custom fractal's own maps, the maps of an IFS that acts in the plane
+// or in space as drawn, or those a lifted IFS gives the drawn coordinates when they are
+// decoupled from the free ones (000 §2); nullopt with *why for anything else (an automaton, a
+// lifted IFS whose maps mix the coordinates), the message naming `format` (the file format at
+// hand). The probabilities are the item's random-iteration ones (equal when it has none).
+std::optional<FractintEntry> fractintEntryOf(const AttractorItem &item, QString *why,
+                                             const QString &format = QStringLiteral(
+                                                 "a Fractint .ifs entry"));
 
 } // namespace awb

@@ -52,6 +52,7 @@ private slots:
     void exportRoundTrip();
     void contractiveOnAverage();
     void refusals();
+    void legacyFilesAndLimits();
 
 private:
     int run(const QStringList &args, QByteArray *out = nullptr, QByteArray *err = nullptr)
@@ -224,6 +225,83 @@ void TestImportCli::refusals()
                  &out, &err),
              1);
     QVERIFY2(err.contains("drawn through a projection"), err.constData());
+    // 000 Fig. 11 (top): the Sierpinski gasket from its control points acts in a lifted space
+    // of dimension 5 whose plane block is decoupled, x' = x A + b in the plane: it goes out as
+    // its three plane maps, halvings towards the triangle's corners.
+    const QString gasket = awb::test::examplePath("000-fig11-sierpinski-with-control-points.awb");
+    const QString top = "000 Fig. 11 (top): Sierpinski gasket from its control points";
+    QCOMPARE(run({"export", gasket, "--item", top, "--format", "ifs", "--out",
+                  m_dir.filePath("g.ifs")},
+                 &out, &err),
+             0);
+    QFile g(m_dir.filePath("g.ifs"));
+    QVERIFY(g.open(QIODevice::ReadOnly));
+    std::istringstream gin(g.readAll().toStdString());
+    const FractintFile gf = readFractintIfs(gin);
+    QCOMPARE(int(gf.entries.size()), 1);
+    QCOMPARE(gf.entries[0].name, top.toStdString());
+    QCOMPARE(int(gf.entries[0].maps.size()), 3);
+    for (const AffineMap &f : gf.entries[0].maps)
+        QVERIFY((f.A - 0.5 * Mat::Identity(2, 2)).norm() < 1e-12);
+    QCOMPARE(run({"export", gasket, "--item", top, "--format", "flame", "--out",
+                  m_dir.filePath("g.flame")},
+                 &out, &err),
+             0);
+    // A 3D item is no flame: the message says so and names the format that holds it.
+    const QString tetra = m_dir.filePath("tetra.awb");
+    QCOMPARE(run({"import", write("tetra.ifs", "tetra (3D) { .5 0 0 0 .5 0 0 0 .5 0 0 0 .5 "
+                                               ".5 0 0 0 .5 0 0 0 .5 1 0 0 .5 }"),
+                  "--out", tetra},
+                 &out, &err),
+             0);
+    QCOMPARE(run({"export", tetra, "--item", "tetra", "--format", "flame", "--out",
+                  m_dir.filePath("t.flame")},
+                 &out, &err),
+             1);
+    QVERIFY2(err.contains("tetra is an IFS of space: a flam3 flame holds maps of the plane"),
+             err.constData());
+}
+
+void TestImportCli::legacyFilesAndLimits()
+{
+    QByteArray out, err;
+    // Fractint 15's one-IFS files: bare rows, one entry named after the file.
+    const QString fern = write("fern.ifs", "0 0 0 .16 0 0 .01\n.85 .04 -.04 .85 0 1.6 .85\n"
+                                           ".2 -.26 .23 .22 0 1.6 .07\n"
+                                           "-.15 .28 .26 .24 0 .44 .07\n");
+    QCOMPARE(run({"import", fern, "--out", m_dir.filePath("fern.awb")}, &out, &err), 0);
+    QVERIFY2(out.contains("1 item(s): fern"), out.constData());
+    // Probabilities that are no distribution: imported, with a warning.
+    QCOMPARE(run({"import", write("w.ifs", "low { .5 0 0 .5 0 0 .1 .5 0 0 .5 .5 0 .2 }"),
+                  "--out", m_dir.filePath("w.awb")},
+                 &out, &err),
+             0);
+    QVERIFY2(err.contains("warning: w.ifs, line 1, column 1: entry low: the probabilities sum "
+                          "to 0.3, not 1"),
+             err.constData());
+    // More maps than the engine iterates: refused at import, not written for render to refuse.
+    QByteArray many = "many {\n";
+    for (int r = 0; r < 1000; ++r)
+        many += ".01 0 0 .01 0 0 1\n";
+    QCOMPARE(run({"import", write("many.ifs", many + "}\n"), "--out",
+                  m_dir.filePath("many.awb")},
+                 &out, &err),
+             1);
+    QVERIFY2(err.contains("entry many: 1000 maps: at most 255 maps are supported"),
+             err.constData());
+    QVERIFY(!QFile::exists(m_dir.filePath("many.awb")));
+    // Names of several words come back as written.
+    QCOMPARE(run({"import", write("n.ifs", "Barnsley fern { .5 0 0 .5 0 0 .5 .5 0 0 .5 .5 0 .5 }"),
+                  "--out", m_dir.filePath("n.awb")},
+                 &out, &err),
+             0);
+    QCOMPARE(run({"export", m_dir.filePath("n.awb"), "--item", "Barnsley fern", "--format", "ifs",
+                  "--out", m_dir.filePath("n2.ifs")},
+                 &out, &err),
+             0);
+    QFile n2(m_dir.filePath("n2.ifs"));
+    QVERIFY(n2.open(QIODevice::ReadOnly));
+    QVERIFY(n2.readAll().startsWith("Barnsley fern {"));
 }
 
 AWB_TEST_MAIN(TestImportCli)

@@ -61,6 +61,11 @@ private slots:
     void malformedEntriesAreNamedWithTheirPlace();
     void writerRoundTrip();
     void controlCageIsTheAttractorsBox();
+    void bareRowsAreOneEntry();
+    void rowsThatDoNotFitTheirLinesAreRefused();
+    void probabilitiesThatAreNoDistributionAreWarned();
+    void namesOfSeveralWordsAndExactNumbersComeBack();
+    void countsAreBounded();
 };
 
 void TestFractintIfs::readsEveryWellFormedEntry()
@@ -177,6 +182,121 @@ void TestFractintIfs::controlCageIsTheAttractorsBox()
     for (AffineMap &m : grow.maps)
         m.A *= 4.0;
     QVERIFY_THROWS_EXCEPTION(InputError, fractintControlCage(grow));
+}
+
+void TestFractintIfs::bareRowsAreOneEntry()
+{
+    // Fractint 10 and 15: one IFS per file, its rows without NAME { } (e.g. Fractint 15's
+    // fern.ifs). The file is one entry named after the file; 13 numbers a row is space.
+    std::istringstream fern("  0     0    0     .16 0 0    .01\n"
+                            "  .85  .04 -.04  .85  0 1.6  .85 ; the big leaf\n"
+                            "  .2  -.26  .23  .22  0 1.6  .07\n"
+                            " -.15  .28  .26  .24  0 .44  .07\n");
+    const FractintFile f = readFractintIfs(fern, "fern");
+    QVERIFY(f.problems.empty());
+    QCOMPARE(int(f.entries.size()), 1);
+    QCOMPARE(f.entries[0].name, std::string("fern"));
+    QCOMPARE(f.entries[0].dimension, 2);
+    QCOMPARE(f.entries[0].probabilities, (std::vector<double>{.01, .85, .07, .07}));
+    QCOMPARE(fractintCoefficients(f.entries[0].maps[1]),
+             (std::vector<double>{.85, .04, -.04, .85, 0, 1.6}));
+    std::istringstream cube(".5 0 0 0 .5 0 0 0 .5 0 0 0 .5\n.5 0 0 0 .5 0 0 0 .5 1 1 1 .5\n");
+    const FractintFile c = readFractintIfs(cube, "cube");
+    QCOMPARE(int(c.entries.size()), 1);
+    QCOMPARE(c.entries[0].dimension, 3);
+    // A first line of neither 7 nor 13 numbers, and braces in a file of bare rows.
+    std::istringstream six(".5 0 0 .5 0 0\n");
+    const FractintFile g = readFractintIfs(six, "six");
+    QVERIFY(g.entries.empty());
+    QCOMPARE(int(g.problems.size()), 1);
+    QVERIFY(g.problems[0].message.find("its first line 6") != std::string::npos);
+    std::istringstream mixed(".5 0 0 .5 0 0 1\n{ .5 0 0 .5 0 0 1 }\n");
+    QVERIFY(readFractintIfs(mixed, "m").problems[0].message.find("no braces")
+            != std::string::npos);
+}
+
+void TestFractintIfs::rowsThatDoNotFitTheirLinesAreRefused()
+{
+    // Seven rows of 6 numbers are 42 numbers, six rows of 7 by count: read one per line they
+    // are refused at the second line, where the second row would begin mid-line and run on.
+    std::string six = "sixes {\n";
+    for (int r = 0; r < 7; ++r)
+        six += ".5 0 0 .5 0 0\n";
+    const FractintFile f = read(six + "}\n");
+    QVERIFY(f.entries.empty());
+    QCOMPARE(int(f.problems.size()), 1);
+    QCOMPARE(f.problems[0].line, 3);
+    QVERIFY(f.problems[0].message.find("runs on to the next line") != std::string::npos);
+    // Eight numbers a line: the second row starts mid-line too.
+    std::string eight = "eights {\n";
+    for (int r = 0; r < 7; ++r)
+        eight += ".5 0 0 .5 0 0 .5 .5\n";
+    QVERIFY(read(eight + "}\n").entries.empty());
+    // A row written over two lines, starting at its line's start, is one row.
+    const FractintFile w = read("wrapped {\n .5 0 0 .5\n 0 0 .5\n .5 0 0 .5\n .5 0 .5\n}\n");
+    QVERIFY(w.problems.empty());
+    QCOMPARE(int(w.entries.at(0).maps.size()), 2);
+}
+
+void TestFractintIfs::probabilitiesThatAreNoDistributionAreWarned()
+{
+    const FractintFile f = read("low { .5 0 0 .5 0 0 .1 .5 0 0 .5 .5 0 .2 }\n"
+                                "high { .5 0 0 .5 0 0 1 .5 0 0 .5 .5 0 2 }\n"
+                                "fine { .5 0 0 .5 0 0 .505 .5 0 0 .5 .5 0 .5 }\n");
+    QCOMPARE(int(f.entries.size()), 3);  // kept: the probabilities are weights
+    QCOMPARE(int(f.warnings.size()), 2);
+    QCOMPARE(f.warnings[0].entry, std::string("low"));
+    QVERIFY(f.warnings[0].message.find("sum to 0.3, not 1") != std::string::npos);
+    QVERIFY(f.warnings[1].message.find("sum to 3, not 1") != std::string::npos);
+}
+
+void TestFractintIfs::namesOfSeveralWordsAndExactNumbersComeBack()
+{
+    // A name of several words, on the line of its '{' or alone on the line before it.
+    const FractintFile f = read("Barnsley fern {\n 0 0 0 .16 0 0 .01 .85 .04 -.04 .85 0 1.6 .99 }\n"
+                                "maple leaf (3D)\n{ .5 0 0 0 .5 0 0 0 .5 0 0 0 1 }\n");
+    QVERIFY(f.problems.empty());
+    QCOMPARE(f.entries.at(0).name, std::string("Barnsley fern"));
+    QCOMPARE(f.entries.at(1).name, std::string("maple leaf"));
+    QCOMPARE(f.entries.at(1).dimension, 3);
+    // The writer's numbers are the shortest that read back exactly: 0.1 as "0.1", 1/3 with
+    // all its digits, 1e-300, and a random double, each bit for bit.
+    FractintEntry e = f.entries[0];
+    e.maps[0].A << 0.1, 1.0 / 3.0, -2.0 / 7.0, 1e-300;
+    e.maps[0].b << 0.123456789012345678, -3.3e17;
+    e.probabilities = {0.3, 0.7};
+    const std::string text = fractintEntryText(e);
+    QVERIFY2(text.find(" 0.1 ") != std::string::npos, text.c_str());
+    const FractintFile back = read(text);
+    QCOMPARE(back.entries.at(0).name, e.name);
+    QVERIFY(back.entries[0].maps[0].A == e.maps[0].A);
+    QVERIFY(back.entries[0].maps[0].b == e.maps[0].b);
+    QVERIFY(back.entries[0].probabilities == e.probabilities);
+}
+
+void TestFractintIfs::countsAreBounded()
+{
+    // More maps than the engine iterates (kMaxMaps): refused when read, the maps beyond the
+    // limit only counted.
+    std::string many = "many {\n";
+    for (int r = 0; r < 1000; ++r)
+        many += ".01 0 0 .01 0 0 1\n";
+    const FractintFile f = read(many + "}\n");
+    QVERIFY(f.entries.empty());
+    QVERIFY2(f.problems.at(0).message.find("1000 maps: at most 255") != std::string::npos,
+             f.problems[0].message.c_str());
+    // A million stray braces: 100 problems and a count of the rest.
+    const FractintFile g = read(std::string(1000000, '}'));
+    QCOMPARE(int(g.problems.size()), 101);
+    QVERIFY(g.problems.back().message.find("999900 more problems") != std::string::npos);
+    // More entries than one file gives.
+    std::string entries;
+    for (std::size_t k = 0; k < kMaxFractintEntries + 3; ++k)
+        entries += "e { .5 0 0 .5 0 0 1 }\n";
+    const FractintFile h = read(entries);
+    QCOMPARE(h.entries.size(), kMaxFractintEntries);
+    QVERIFY(h.problems.at(0).message.find("3 more entries after the first 4096")
+            != std::string::npos);
 }
 
 AWB_TEST_MAIN(TestFractintIfs)

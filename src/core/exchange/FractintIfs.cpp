@@ -8,13 +8,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <array>
+#include <charconv>
 #include <cstdint>
-#include <iomanip>
 #include <limits>
 #include <istream>
-#include <locale>
 #include <optional>
-#include <sstream>
 
 namespace awb {
 
@@ -26,53 +25,82 @@ struct Token {
     int line = 0, column = 0;
 };
 
-// The file as words: '{' and '}' are words of their own, ';' starts a comment, whitespace and
-// commas separate.
-std::vector<Token> tokenize(std::istream &in)
-{
-    std::vector<Token> out;
-    std::string line;
-    int number = 0;
-    while (std::getline(in, line)) {
-        ++number;
-        Token current;
-        const auto flush = [&] {
-            if (!current.text.empty())
-                out.push_back(current);
-            current = Token{};
-        };
-        for (std::size_t k = 0; k < line.size(); ++k) {
-            const char c = line[k];
-            if (c == ';')
-                break;
-            if (std::isspace(static_cast<unsigned char>(c)) || c == ',') {
-                flush();
-                continue;
-            }
-            if (c == '{' || c == '}') {
-                flush();
-                out.push_back({std::string(1, c), number, int(k) + 1});
-                continue;
-            }
-            if (current.text.empty()) {
-                current.line = number;
-                current.column = int(k) + 1;
-            }
-            current.text += c;
-        }
-        flush();
-    }
-    return out;
-}
+// The file as words, one at a time (a file of many megabytes is never held as a list of
+// words): '{' and '}' are words of their own, ';' starts a comment, whitespace and commas
+// separate.
+class Tokenizer {
+public:
+    explicit Tokenizer(std::istream &in) : m_in(in) {}
 
+    bool next(Token *token)
+    {
+        if (!m_pending.empty()) {
+            *token = std::move(m_pending.back());
+            m_pending.pop_back();
+            return true;
+        }
+        for (;;) {
+            while (m_at < m_line.size()) {
+                const char c = m_line[m_at];
+                if (c == ';') {
+                    m_at = m_line.size();
+                    break;
+                }
+                if (std::isspace(static_cast<unsigned char>(c)) || c == ',') {
+                    ++m_at;
+                    continue;
+                }
+                token->line = m_number;
+                token->column = int(m_at) + 1;
+                if (c == '{' || c == '}') {
+                    token->text.assign(1, c);
+                    ++m_at;
+                    return true;
+                }
+                const std::size_t begin = m_at;
+                while (m_at < m_line.size()) {
+                    const char d = m_line[m_at];
+                    if (d == ';' || d == ',' || d == '{' || d == '}'
+                        || std::isspace(static_cast<unsigned char>(d)))
+                        break;
+                    ++m_at;
+                }
+                token->text.assign(m_line, begin, m_at - begin);
+                return true;
+            }
+            if (!std::getline(m_in, m_line))
+                return false;
+            ++m_number;
+            m_at = 0;
+        }
+    }
+
+    // Words read ahead, given again by next() in their order.
+    void giveBack(std::vector<Token> tokens)
+    {
+        for (auto t = tokens.rbegin(); t != tokens.rend(); ++t)
+            m_pending.push_back(std::move(*t));
+    }
+
+private:
+    std::istream &m_in;
+    std::vector<Token> m_pending;  // last first
+    std::string m_line;
+    std::size_t m_at = 0;
+    int m_number = 0;
+};
+
+// A finite number in the C locale ("1", "-.04", "1.6e-3", "+2"): the whole word.
 bool toNumber(const std::string &text, double *value)
 {
-    std::istringstream s(text);
-    s.imbue(std::locale::classic());
-    s >> *value;
-    return s && s.peek() == std::char_traits<char>::eof() && std::isfinite(*value);
+    const char *first = text.data(), *last = text.data() + text.size();
+    if (first != last && *first == '+')
+        ++first;
+    if (first != last && (*first == '+' || *first == '-') && text[0] == '+')
+        return false;  // "+-1"
+    const auto [end, error] = std::from_chars(first, last, *value);
+    return error == std::errc() && end == last && std::isfinite(*value);
 }
-
 
 std::string lowered(std::string s)
 {
@@ -80,6 +108,168 @@ std::string lowered(std::string s)
         c = char(std::tolower(static_cast<unsigned char>(c)));
     return s;
 }
+
+// At most this many problems and warnings are kept (a file of a million stray '}' is one
+// problem per brace: the rest are counted in a last line).
+constexpr std::size_t kMaxReports = 100;
+
+// Where the reader records, within kMaxReports.
+struct Reports {
+    std::vector<FractintProblem> *list;
+    std::size_t dropped = 0;
+    int lastLine = 0;
+
+    void add(FractintProblem p)
+    {
+        lastLine = p.line;
+        if (list->size() < kMaxReports)
+            list->push_back(std::move(p));
+        else
+            ++dropped;
+    }
+    void close(const std::string &pattern)  // "%1 more problems"
+    {
+        if (dropped > 0)
+            list->push_back({lastLine, 1, "", formatMessage(pattern, dropped)});
+    }
+};
+
+// The rows of one entry, read number by number: at most kMaxMaps maps are kept (the engine's
+// limit), the rest only counted; a row must start at the start of a line unless it ends on the
+// line it starts on (rows of 6 or 8 numbers laid out one per line are not read as rows of 7
+// across lines).
+class RowReader {
+public:
+    RowReader(std::string name, int dimension) : m_width(dimension == 2 ? 7 : 13)
+    {
+        m_entry.name = std::move(name);
+        m_entry.dimension = dimension;
+    }
+    FractintEntry &entry() { return m_entry; }
+    std::optional<FractintProblem> &problem() { return m_problem; }
+    std::size_t numbers() const { return m_count; }
+
+    void add(const Token &t)
+    {
+        if (m_problem)
+            return;
+        double v = 0;
+        if (!toNumber(t.text, &v)) {
+            m_problem = FractintProblem{
+                t.line, t.column, m_entry.name,
+                formatMessage(coreTranslate("awb::exchange", "'%1' is not a finite number"),
+                              t.text)};
+            return;
+        }
+        const std::size_t pos = m_count % m_width;
+        const bool newLine = t.line != m_lineOfLast;
+        if (pos == 0) {
+            m_rowStart = t;
+            m_rowStartsLine = newLine;
+        } else if (newLine && !m_rowStartsLine) {
+            // This row began in the middle of a line and goes on on the next one.
+            m_problem = FractintProblem{
+                m_rowStart.line, m_rowStart.column, m_entry.name,
+                formatMessage(coreTranslate("awb::exchange",
+                                            "the row starting here runs on to the next line: "
+                                            "a %1D entry has rows of %2 numbers (the map's "
+                                            "coefficients, then its probability), one row "
+                                            "per line"),
+                              m_entry.dimension, m_width)};
+            return;
+        }
+        m_lineOfLast = t.line;
+        ++m_count;
+        if (m_entry.maps.size() >= std::size_t(kMaxMaps)) {
+            if (pos + 1 == m_width)
+                ++m_extraMaps;
+            return;
+        }
+        m_row[pos] = v;
+        if (pos + 1 == m_width)
+            completeRow();
+    }
+
+    // At the entry's '}' (or the file's end for bare rows): the last checks.
+    void finish(const Token &at)
+    {
+        if (m_problem)
+            return;
+        if (m_count == 0) {
+            m_problem = FractintProblem{at.line, at.column, m_entry.name,
+                                        coreTranslate("awb::exchange", "the entry has no maps")};
+        } else if (m_count % m_width != 0) {
+            m_problem = FractintProblem{
+                m_rowStart.line, m_rowStart.column, m_entry.name,
+                formatMessage(coreTranslate("awb::exchange",
+                                            "%1 numbers: a %2D entry has rows of %3 (the map's "
+                                            "coefficients, then its probability), %4 left over"),
+                              m_count, m_entry.dimension, m_width, m_count % m_width)};
+        } else if (m_extraMaps > 0) {
+            m_problem = FractintProblem{
+                m_entry.line, 1, m_entry.name,
+                formatMessage(coreTranslate("awb::exchange",
+                                            "%1 maps: at most %2 maps are supported"),
+                              std::size_t(kMaxMaps) + m_extraMaps, kMaxMaps)};
+        }
+    }
+
+    // A warning for probabilities that are not a distribution (they are used as weights).
+    std::optional<FractintProblem> probabilityWarning() const
+    {
+        double sum = 0;
+        for (double p : m_entry.probabilities)
+            sum += p;
+        if (std::abs(sum - 1) <= 0.01)
+            return std::nullopt;
+        return FractintProblem{
+            m_entry.line, 1, m_entry.name,
+            sum > 0 ? formatMessage(coreTranslate("awb::exchange",
+                                                  "the probabilities sum to %1, not 1: they are "
+                                                  "used as relative weights"),
+                                    streamedNumber(sum))
+                    : coreTranslate("awb::exchange",
+                                    "the probabilities are all 0: the maps are chosen with "
+                                    "equal probabilities")};
+    }
+
+private:
+    void completeRow()
+    {
+        const int d = m_entry.dimension;
+        const double *c = m_row.data();
+        AffineMap f{Mat(d, d), RowVec(d)};
+        if (d == 2) {
+            // x' = a x + b y + e, y' = c x + d y + f: the row convention's A is the transpose
+            // of [[a, b], [c, d]].
+            f.A << c[0], c[2], c[1], c[3];
+            f.b << c[4], c[5];
+        } else {
+            f.A << c[0], c[3], c[6], c[1], c[4], c[7], c[2], c[5], c[8];
+            f.b << c[9], c[10], c[11];
+        }
+        const double p = c[m_width - 1];
+        if (p < 0) {
+            m_problem = FractintProblem{
+                m_rowStart.line, m_rowStart.column, m_entry.name,
+                formatMessage(coreTranslate("awb::exchange",
+                                            "map %1 has the negative probability %2"),
+                              m_entry.maps.size() + 1, streamedNumber(p))};
+            return;
+        }
+        m_entry.maps.push_back(std::move(f));
+        m_entry.probabilities.push_back(p);
+    }
+
+    std::size_t m_width;
+    FractintEntry m_entry;
+    std::optional<FractintProblem> m_problem;
+    std::array<double, 13> m_row{};
+    std::size_t m_count = 0, m_extraMaps = 0;
+    Token m_rowStart;
+    int m_lineOfLast = 0;
+    bool m_rowStartsLine = true;
+};
 
 } // namespace
 
@@ -92,120 +282,196 @@ std::string FractintProblem::describe(const std::string &fileName) const
     return place + ": " + message;
 }
 
-FractintFile readFractintIfs(std::istream &in)
+namespace {
+
+// Fractint 10 and 15 kept one IFS per file as bare rows, without NAME { }: the whole file is
+// one entry named `name`, of rows of 7 (2D) or 13 (3D) numbers, its dimension told by the
+// first line.
+void readBareRows(Tokenizer &tokens, Token first, const std::string &name, FractintFile *file,
+                  Reports &problems)
 {
-    const std::vector<Token> tokens = tokenize(in);
+    std::vector<Token> firstLine{first};
+    Token t;
+    bool more = false;
+    while ((more = tokens.next(&t)) && t.line == first.line)
+        firstLine.push_back(t);
+    const std::size_t n = firstLine.size();
+    if (n != 7 && n != 13) {
+        problems.add({first.line, first.column, name,
+                      formatMessage(coreTranslate("awb::exchange",
+                                                  "a file of bare rows (Fractint 10 and 15: "
+                                                  "one IFS, no NAME { }) has rows of 7 (2D) or "
+                                                  "13 (3D) numbers, its first line %1"),
+                                    n)});
+        return;
+    }
+    RowReader rows(name, n == 7 ? 2 : 3);
+    rows.entry().line = first.line;
+    for (const Token &f : firstLine)
+        rows.add(f);
+    Token last = firstLine.back();
+    for (; more; more = tokens.next(&t)) {
+        if (rows.problem())
+            break;
+        if (t.text == "{" || t.text == "}") {
+            problems.add({t.line, t.column, name,
+                          coreTranslate("awb::exchange",
+                                        "a file of bare rows (Fractint 10 and 15) has no "
+                                        "braces: an entry is NAME { rows } throughout")});
+            return;
+        }
+        rows.add(t);
+        last = t;
+    }
+    rows.finish(last);
+    if (rows.problem()) {
+        problems.add(*rows.problem());
+        return;
+    }
+    file->entries.push_back(std::move(rows.entry()));
+}
+
+} // namespace
+
+FractintFile readFractintIfs(std::istream &in, const std::string &bareName)
+{
+    Tokenizer tokens(in);
     FractintFile file;
-    std::size_t k = 0;
-    while (k < tokens.size()) {
-        const Token &first = tokens[k];
-        if (first.text == "}") {
-            file.problems.push_back({first.line, first.column, "",
-                                     coreTranslate("awb::exchange", "a '}' without its '{'")});
-            ++k;
-            continue;
-        }
-        // The name is one word, maybe marked "(3D)" (apart or attached).
-        std::string name = first.text;
-        int dimension = 2;
-        std::size_t open = k + 1;
-        if (name.size() > 4 && lowered(name.substr(name.size() - 4)) == "(3d)") {
-            name.resize(name.size() - 4);
-            dimension = 3;
-        } else if (open < tokens.size() && lowered(tokens[open].text) == "(3d)") {
-            dimension = 3;
-            ++open;
-        }
-        if (first.text == "{") {
-            name.clear();
-            open = k;
-        }
-        if (open >= tokens.size() || tokens[open].text != "{") {
-            file.problems.push_back(
-                {first.line, first.column, "",
-                 formatMessage(coreTranslate("awb::exchange",
-                                             "'%1' is not followed by '{': an entry is NAME { "
-                                             "rows }"),
-                               first.text)});
-            k = k + 1;
-            continue;
-        }
-        if (name.empty())
-            name = formatMessage(coreTranslate("awb::exchange", "entry at line %1"), first.line);
-        std::size_t close = open + 1;
-        while (close < tokens.size() && tokens[close].text != "}" && tokens[close].text != "{")
-            ++close;
-        if (close >= tokens.size() || tokens[close].text != "}") {
-            const Token &at = close < tokens.size() ? tokens[close] : tokens[open];
-            file.problems.push_back(
-                {at.line, at.column, name,
-                 close < tokens.size()
-                     ? coreTranslate("awb::exchange", "a '{' inside an entry: its '}' is missing")
-                     : coreTranslate("awb::exchange", "the file ends before the entry's '}'")});
-            k = close;
-            continue;
-        }
-        // The rows: 7 (2D) or 13 (3D) numbers each.
-        const std::size_t width = dimension == 2 ? 7 : 13;
-        FractintEntry entry;
-        entry.name = name;
-        entry.dimension = dimension;
-        entry.line = first.line;
-        std::vector<double> values;
-        std::optional<FractintProblem> problem;
-        for (std::size_t t = open + 1; t < close && !problem; ++t) {
-            double v = 0;
-            if (!toNumber(tokens[t].text, &v))
-                problem = FractintProblem{
-                    tokens[t].line, tokens[t].column, name,
-                    formatMessage(coreTranslate("awb::exchange", "'%1' is not a finite number"),
-                                  tokens[t].text)};
-            values.push_back(v);
-        }
-        const std::size_t count = close - open - 1;
-        if (!problem && (count == 0 || count % width != 0)) {
-            const Token &at = count == 0 ? tokens[open] : tokens[open + 1 + count / width * width];
-            problem = FractintProblem{
-                at.line, at.column, name,
-                count == 0
-                    ? coreTranslate("awb::exchange", "the entry has no maps")
-                    : formatMessage(coreTranslate("awb::exchange",
-                                                  "%1 numbers: a %2D entry has rows of %3 "
-                                                  "(the map's coefficients, then its "
-                                                  "probability), %4 left over"),
-                                    count, dimension, width, count % width)};
-        }
-        for (std::size_t r = 0; !problem && r < count / width; ++r) {
-            const double *c = values.data() + r * width;
-            AffineMap f{Mat(dimension, dimension), RowVec(dimension)};
-            if (dimension == 2) {
-                // x' = a x + b y + e, y' = c x + d y + f: the row convention's A is the
-                // transpose of [[a, b], [c, d]].
-                f.A << c[0], c[2], c[1], c[3];
-                f.b << c[4], c[5];
-            } else {
-                f.A << c[0], c[3], c[6], c[1], c[4], c[7], c[2], c[5], c[8];
-                f.b << c[9], c[10], c[11];
-            }
-            const double p = c[width - 1];
-            if (p < 0) {
-                const Token &at = tokens[open + 1 + r * width + width - 1];
-                problem = FractintProblem{
-                    at.line, at.column, name,
-                    formatMessage(coreTranslate("awb::exchange",
-                                                "map %1 has the negative probability %2"),
-                                  r + 1, streamedNumber(p))};
+    Reports problems{&file.problems}, warnings{&file.warnings};
+    Token t;
+    if (!tokens.next(&t))
+        return file;
+    // A file whose first line is numbers without a brace is bare rows.
+    double ignored = 0;
+    if (toNumber(t.text, &ignored)) {
+        std::vector<Token> line{t};
+        Token u;
+        bool braces = false;
+        while (tokens.next(&u)) {
+            if (u.line != t.line) {
+                line.push_back(u);
                 break;
             }
-            entry.maps.push_back(f);
-            entry.probabilities.push_back(p);
+            braces = braces || u.text == "{" || u.text == "}";
+            line.push_back(u);
         }
-        if (problem)
-            file.problems.push_back(*problem);
-        else
-            file.entries.push_back(std::move(entry));
-        k = close + 1;
+        const Token first = line.front();
+        tokens.giveBack(std::vector<Token>(line.begin() + 1, line.end()));
+        if (!braces) {
+            readBareRows(tokens, first, bareName.empty() ? "ifs" : bareName, &file, problems);
+            problems.close(coreTranslate("awb::exchange", "%1 more problems"));
+            return file;
+        }
     }
+    // The words since the last entry: the name is the words on the line of its '{', or on the
+    // line before when the '{' starts its line; earlier words are strays.
+    std::vector<Token> words;
+    std::size_t excess = 0;
+    const auto stray = [&](const Token &w) {
+        problems.add({w.line, w.column, "",
+                      formatMessage(coreTranslate("awb::exchange",
+                                                  "'%1' is not followed by '{': an entry is "
+                                                  "NAME { rows }"),
+                                    w.text)});
+    };
+    bool more = true;
+    while (more) {
+        if (t.text == "}") {
+            for (const Token &w : words)
+                stray(w);
+            words.clear();
+            problems.add({t.line, t.column, "",
+                          coreTranslate("awb::exchange", "a '}' without its '{'")});
+        } else if (t.text != "{") {
+            // Words of an earlier line than this one's and its predecessor's are strays.
+            if (!words.empty() && words.back().line != t.line) {
+                const int keepFrom = words.back().line;
+                std::size_t k = 0;
+                while (k < words.size() && words[k].line < keepFrom)
+                    stray(words[k++]);
+                words.erase(words.begin(), words.begin() + std::ptrdiff_t(k));
+            }
+            if (words.size() < 64)
+                words.push_back(t);
+        } else {
+            const Token open = t;
+            std::vector<Token> nameWords;
+            for (const Token &w : words)
+                if (w.line == open.line)
+                    nameWords.push_back(w);
+            if (nameWords.empty() && !words.empty() && words.back().line == open.line - 1)
+                for (const Token &w : words)
+                    if (w.line == open.line - 1)
+                        nameWords.push_back(w);
+            for (const Token &w : words)
+                if (w.line != (nameWords.empty() ? -1 : nameWords.front().line))
+                    stray(w);
+            words.clear();
+            // The name, maybe marked "(3D)" (apart or attached).
+            int dimension = 2;
+            std::string name;
+            for (std::size_t k = 0; k < nameWords.size(); ++k) {
+                std::string w = nameWords[k].text;
+                if (k + 1 == nameWords.size() && w.size() >= 4
+                    && lowered(w.substr(w.size() - 4)) == "(3d)") {
+                    w.resize(w.size() - 4);
+                    dimension = 3;
+                }
+                if (!w.empty())
+                    name += (name.empty() ? "" : " ") + w;
+            }
+            const int line = nameWords.empty() ? open.line : nameWords.front().line;
+            if (name.empty())
+                name = formatMessage(coreTranslate("awb::exchange", "entry at line %1"), line);
+            RowReader rows(name, dimension);
+            rows.entry().line = line;
+            Token last = open;
+            bool closed = false;
+            while ((more = tokens.next(&t))) {
+                if (t.text == "}") {
+                    closed = true;
+                    break;
+                }
+                if (t.text == "{")
+                    break;
+                rows.add(t);
+                last = t;
+            }
+            if (!closed) {
+                problems.add({more ? t.line : last.line, more ? t.column : last.column, name,
+                              more ? coreTranslate("awb::exchange",
+                                                   "a '{' inside an entry: its '}' is missing")
+                                   : coreTranslate("awb::exchange",
+                                                   "the file ends before the entry's '}'")});
+                if (more)
+                    continue;  // the '{' starts the next entry's reading
+                break;
+            }
+            rows.finish(t);
+            if (rows.problem()) {
+                problems.add(*rows.problem());
+            } else {
+                if (file.entries.size() >= kMaxFractintEntries) {
+                    ++excess;
+                } else {
+                    if (const auto w = rows.probabilityWarning())
+                        warnings.add(*w);
+                    file.entries.push_back(std::move(rows.entry()));
+                }
+            }
+        }
+        more = tokens.next(&t);
+    }
+    for (const Token &w : words)
+        stray(w);
+    if (excess > 0)
+        problems.add({t.line, 1, "",
+                      formatMessage(coreTranslate("awb::exchange",
+                                                  "%1 more entries after the first %2: one "
+                                                  "file gives at most %2"),
+                                    excess, kMaxFractintEntries)});
+    problems.close(coreTranslate("awb::exchange", "%1 more problems"));
+    warnings.close(coreTranslate("awb::exchange", "%1 more warnings"));
     return file;
 }
 
@@ -225,31 +491,36 @@ std::vector<double> fractintCoefficients(const AffineMap &f)
 
 std::string fractintEntryText(const FractintEntry &entry)
 {
-    std::ostringstream out;
-    out.imbue(std::locale::classic());
     std::string name = entry.name;
-    // A name is one word before '{': no spaces, braces, commas or comment marks in it.
+    // The name is the words before '{' on its line: no braces, comment marks or commas in it,
+    // no line breaks; a last word "(3D)" would read as the mark.
     for (char &c : name)
-        if (c == '{' || c == '}' || c == ';' || c == ','
-            || std::isspace(static_cast<unsigned char>(c)))
+        if (c == '{' || c == '}' || c == ';' || c == ',')
             c = '_';
-    if (name.empty())
+        else if (std::isspace(static_cast<unsigned char>(c)))
+            c = ' ';
+    if (name.find_first_not_of(' ') == std::string::npos)
         name = "ifs";
-    out << name << (entry.dimension == 3 ? " (3D)" : "") << " {\n";
+    if (name.size() >= 4 && lowered(name.substr(name.size() - 4)) == "(3d)")
+        name += '_';
+    std::string out = name + (entry.dimension == 3 ? " (3D)" : "") + " {\n";
     for (std::size_t i = 0; i < entry.maps.size(); ++i) {
         const std::vector<double> c = fractintCoefficients(entry.maps[i]);
         if (int(c.size()) != (entry.dimension == 3 ? 12 : 6))
             throw InputError(coreTranslate("awb::exchange",
                                            "the entry's maps are not all of its dimension"));
-        out << " ";
-        for (double v : c)
-            out << " " << std::setprecision(8) << v;
+        out += ' ';
+        for (double v : c) {
+            out += ' ';
+            out += shortestNumber(v);
+        }
         const double p = i < entry.probabilities.size() ? entry.probabilities[i]
                                                         : 1.0 / double(entry.maps.size());
-        out << "  " << std::setprecision(8) << p << "\n";
+        out += "  ";
+        out += shortestNumber(p);
+        out += '\n';
     }
-    out << "}\n";
-    return out.str();
+    return out + "}\n";
 }
 
 Mat fractintControlCage(const FractintEntry &entry)

@@ -13,8 +13,11 @@
 // A 2D row a b c d e f p means x' = a x + b y + e, y' = c x + d y + f, chosen with probability
 // p; a 3D row a b c d e f g h i j k l p means x' = a x + b y + c z + j, y' = d x + e y + f z + k,
 // z' = g x + h y + i z + l. Numbers are separated by any whitespace or commas; an entry's name
-// is the one word before its '{' (and its "(3D)" mark). Plain C++, no Qt.
+// is the words before its '{' on its line (or on the line before, when the '{' starts its
+// line), less the "(3D)" mark. Fractint 10 and 15 kept one IFS per file as bare rows without
+// NAME { }: such a file is one entry. Plain C++, no Qt.
 
+#include "core/ifs/Attractor.h"
 #include "core/ifs/Ifs.h"
 
 #include <iosfwd>
@@ -43,16 +46,26 @@ struct FractintProblem {
 struct FractintFile {
     std::vector<FractintEntry> entries;  // every well-formed entry, in file order
     std::vector<FractintProblem> problems;
+    // Entries kept with a remark: probabilities that do not sum to 1 (used as weights).
+    std::vector<FractintProblem> warnings;
 };
 
-// Reads every entry; a malformed one (a row of the wrong length, a word that is no number, a
-// missing '}', a probability that is negative or not finite, no rows) is left out and named in
-// `problems` with its line and column, the others are kept.
-FractintFile readFractintIfs(std::istream &in);
+// The most entries one file gives (Fractint's largest libraries hold a few hundred); the rest
+// are counted in a problem.
+inline constexpr std::size_t kMaxFractintEntries = 4096;
 
-// One entry as text (its name as one word, the 2D or 3D rows of its maps with 8 significant
-// digits, the probabilities as given; empty probabilities: equal ones). InputError for maps
-// that are neither 2D nor 3D.
+// Reads every entry in one pass over the words (time linear in the file, memory in its
+// largest entry); a malformed one (a row of the wrong length, a row begun in the middle of a
+// line that runs on to the next, a word that is no number, a missing '}', a negative
+// probability, no rows, more than kMaxMaps maps) is left out and named in `problems` with its
+// line and column, the others are kept. At most 100 problems and 100 warnings are listed, and
+// a last line counts the rest. A file of bare rows is one entry named `bareName`.
+FractintFile readFractintIfs(std::istream &in, const std::string &bareName = "ifs");
+
+// One entry as text: its name (braces, semicolons and commas replaced by '_', line breaks by
+// spaces), the 2D or 3D rows of its maps and the probabilities as the shortest numbers that
+// read back exactly (empty probabilities: equal ones). InputError for maps that are neither 2D
+// nor 3D.
 std::string fractintEntryText(const FractintEntry &entry);
 
 // The coefficients of map `f` in Fractint's order (a b c d e f or a ... l, without p).

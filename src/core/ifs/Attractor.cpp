@@ -149,9 +149,10 @@ void checkIterateInputs(const Ifs &ifs, const StartSet &start, int depth)
             coreTranslate("awb::ifs", "start set has %1 coordinates, the IFS space has %2"),
             start.vertices.cols(), ifs.dim()));
     requireFinite(start.vertices, coreTranslate("awb::ifs", "start set"));
-    if (ifs.size() > 255)
+    if (ifs.size() > kMaxMaps)
         throw InputError(formatMessage(
-            coreTranslate("awb::ifs", "at most 255 maps are supported, got %1"), ifs.size()));
+            coreTranslate("awb::ifs", "at most %1 maps are supported, got %2"), kMaxMaps,
+            ifs.size()));
 }
 
 IterationStats iterate(const Ifs &ifs, const StartSet &start, int depth, AttractorSink &sink,
@@ -313,9 +314,10 @@ void checkChaosInputs(const Ifs &ifs, const RowVec &x0, std::uint64_t samples)
         throw InputError(formatMessage(
             coreTranslate("awb::ifs", "at most %1 random-iteration samples, got %2"),
             kMaxChaosSamples, samples));
-    if (ifs.size() > 255)
+    if (ifs.size() > kMaxMaps)
         throw InputError(formatMessage(
-            coreTranslate("awb::ifs", "at most 255 maps are supported, got %1"), ifs.size()));
+            coreTranslate("awb::ifs", "at most %1 maps are supported, got %2"), kMaxMaps,
+            ifs.size()));
 }
 
 IterationStats chaosGame(const Ifs &ifs, const RowVec &x0, const ChaosOptions &options,

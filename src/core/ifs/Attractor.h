@@ -75,6 +75,9 @@ struct ChaosOptions {
 // kChaosStreams independent streams (Random.h) share the samples, spread over the sinks (one
 // thread each), so the points drawn do not depend on the number of sinks.
 inline constexpr std::uint64_t kMaxChaosSamples = 1'000'000'000'000ULL;  // 1e12
+// The most maps an IFS may have for iteration (addresses are bytes); the readers of other
+// tools' files refuse larger ones at import.
+inline constexpr int kMaxMaps = 255;
 // Throws InputError for a bad IFS, start point or sample count.
 void checkChaosInputs(const Ifs &ifs, const RowVec &x0, std::uint64_t samples);
 IterationStats chaosGame(const Ifs &ifs, const RowVec &x0, const ChaosOptions &options,
