@@ -1905,7 +1905,7 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;: &lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number</source>
-        <translation>plamen „%1“: &lt;symmetry&gt; vyžaduje kind=&quot;k&quot;, celé číslo</translation>
+        <translation type="vanished">plamen „%1“: &lt;symmetry&gt; vyžaduje kind=&quot;k&quot;, celé číslo</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: element &lt;%2&gt; ignored</source>
@@ -2005,7 +2005,7 @@
     </message>
     <message>
         <source>%1 is an IFS of space: a flame holds maps of the plane</source>
-        <translation>%1 je IFS v prostoru: plamen obsahuje zobrazení roviny</translation>
+        <translation type="vanished">%1 je IFS v prostoru: plamen obsahuje zobrazení roviny</translation>
     </message>
     <message>
         <source>the flame&apos;s frame is empty</source>
@@ -2017,7 +2017,27 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;: its maps do not contract, not even on average (Lyapunov exponent %2 &gt;= 0), so it has no attractor; flam3 draws it only by discarding the points that escape</source>
-        <translation>plamen &apos;%1&apos;: jeho zobrazení nejsou kontraktivní, ani v průměru (Ljapunovův exponent %2 &gt;= 0), takže nemá atraktor; flam3 ho kreslí jen tak, že zahazuje body, které utíkají</translation>
+        <translation type="vanished">plamen &apos;%1&apos;: jeho zobrazení nejsou kontraktivní, ani v průměru (Ljapunovův exponent %2 &gt;= 0), takže nemá atraktor; flam3 ho kreslí jen tak, že zahazuje body, které utíkají</translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: more than %2 xforms (at most %2 maps are supported)</source>
+        <translation>plamen „%1“: více než %2 xforms (podporováno je nejvýše %2 zobrazení)</translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: &lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number from %2 to %3, got &apos;%4&apos;</source>
+        <translation>plamen „%1“: &lt;symmetry&gt; vyžaduje kind=&quot;k&quot;, celé číslo od %2 do %3, zadáno „%4“</translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: its maps do not contract, not even on average (the Lyapunov exponent of their products, %2, is not clearly negative: not below -0.001), so it may have no attractor; flam3 draws it only by discarding the points that escape</source>
+        <translation>plamen „%1“: jeho zobrazení nejsou kontrahující ani v průměru (Ljapunovův exponent jejich součinů, %2, není zřetelně záporný: není pod -0.001), takže nemusí mít atraktor; flam3 jej kreslí jen tak, že zahazuje unikající body</translation>
+    </message>
+    <message>
+        <source>a flam3 flame</source>
+        <translation>plamen flam3</translation>
+    </message>
+    <message>
+        <source>%1 is an IFS of space: a flam3 flame holds maps of the plane (export it as a Fractint .ifs entry)</source>
+        <translation>%1 je IFS prostoru: plamen flam3 obsahuje zobrazení roviny (exportujte jej jako položku Fractint .ifs)</translation>
     </message>
 </context>
 <context>
@@ -2150,6 +2170,10 @@
         <source>Control points</source>
         <translation>Řídicí body</translation>
     </message>
+    <message>
+        <source>%1 maps: at most %2 maps are supported</source>
+        <translation>%1 zobrazení: podporováno je nejvýše %2 zobrazení</translation>
+    </message>
 </context>
 <context>
     <name>awb::IfsExchange</name>
@@ -2175,7 +2199,11 @@
     </message>
     <message>
         <source>the IFS of %1 acts in a space of dimension %2 that is drawn through a projection (000 §2): a Fractint entry holds maps of the plane or of space only</source>
-        <translation>IFS položky %1 působí v prostoru dimenze %2, který se kreslí pomocí projekce (000 §2): záznam formátu Fractint obsahuje jen zobrazení roviny nebo prostoru</translation>
+        <translation type="vanished">IFS položky %1 působí v prostoru dimenze %2, který se kreslí pomocí projekce (000 §2): záznam formátu Fractint obsahuje jen zobrazení roviny nebo prostoru</translation>
+    </message>
+    <message>
+        <source>the IFS of %1 acts in a space of dimension %2 that is drawn through a projection (000 §2), and its maps do not act on the drawn coordinates alone: %3 holds maps of the plane or of space only</source>
+        <translation>IFS položky %1 působí v prostoru dimenze %2, který se kreslí projekcí (000 §2), a jeho zobrazení nepůsobí jen na kreslené souřadnice: %3 obsahuje pouze zobrazení roviny nebo prostoru</translation>
     </message>
 </context>
 <context>
@@ -6784,6 +6812,10 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
         <source>Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.</source>
         <translation>Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.</translation>
     </message>
+    <message>
+        <source>%1: its %2 entries make a project of %3 MB, more than the %4 MB a project file may be</source>
+        <translation>%1: jeho %2 položek dává projekt o %3 MB, více než %4 MB, které smí mít soubor projektu</translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>
@@ -6853,6 +6885,109 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     <message>
         <source>entry %1: random iteration leaves every bound (its maps do not contract)</source>
         <translation>záznam %1: náhodná iterace překračuje všechny meze (jeho zobrazení nejsou kontrakce)</translation>
+    </message>
+    <message>
+        <source>the row starting here runs on to the next line: a %1D entry has rows of %2 numbers (the map&apos;s coefficients, then its probability), one row per line</source>
+        <translation>řádek čísel začínající zde pokračuje na dalším řádku: položka %1D má řádky po %2 číslech (koeficienty zobrazení, pak jeho pravděpodobnost), jeden řádek na řádce</translation>
+    </message>
+    <message>
+        <source>%1 maps: at most %2 maps are supported</source>
+        <translation>%1 zobrazení: podporováno je nejvýše %2 zobrazení</translation>
+    </message>
+    <message>
+        <source>the probabilities sum to %1, not 1: they are used as relative weights</source>
+        <translation>pravděpodobnosti mají součet %1, ne 1: použijí se jako relativní váhy</translation>
+    </message>
+    <message>
+        <source>the probabilities are all 0: the maps are chosen with equal probabilities</source>
+        <translation>všechny pravděpodobnosti jsou 0: zobrazení se volí se stejnými pravděpodobnostmi</translation>
+    </message>
+    <message>
+        <source>a file of bare rows (Fractint 10 and 15: one IFS, no NAME { }) has rows of 7 (2D) or 13 (3D) numbers, its first line %1</source>
+        <translation>soubor holých řádků (Fractint 10 a 15: jeden IFS, bez NÁZEV { }) má řádky po 7 (2D) nebo 13 (3D) číslech, jeho první řádek %1</translation>
+    </message>
+    <message>
+        <source>a file of bare rows (Fractint 10 and 15) has no braces: an entry is NAME { rows } throughout</source>
+        <translation>soubor holých řádků (Fractint 10 a 15) nemá složené závorky: jinak je každá položka NÁZEV { řádky }</translation>
+    </message>
+    <message>
+        <source>%1 more problems</source>
+        <translation>%1 dalších problémů</translation>
+    </message>
+    <message>
+        <source>%1 more entries after the first %2: one file gives at most %2</source>
+        <translation>%1 dalších položek po prvních %2: jeden soubor dává nejvýše %2</translation>
+    </message>
+    <message>
+        <source>%1 more warnings</source>
+        <translation>%1 dalších varování</translation>
+    </message>
+</context>
+<context>
+    <name>awb::flame</name>
+    <message>
+        <source>%1: a coefficient is not a finite number</source>
+        <translation>%1: koeficient není konečné číslo</translation>
+    </message>
+    <message>
+        <source>%1: variation %2 does not exist</source>
+        <translation>%1: variace %2 neexistuje</translation>
+    </message>
+    <message>
+        <source>%1: the weight of variation %2 is not a finite number</source>
+        <translation>%1: váha variace %2 není konečné číslo</translation>
+    </message>
+    <message>
+        <source>%1: its variation parameters are incomplete</source>
+        <translation>%1: jeho parametry variací jsou neúplné</translation>
+    </message>
+    <message>
+        <source>%1: parameter %2 is not a finite number</source>
+        <translation>%1: parametr %2 není konečné číslo</translation>
+    </message>
+    <message>
+        <source>%1: its colour, colour speed or opacity is not a finite number</source>
+        <translation>%1: jeho barva, rychlost barvy nebo neprůhlednost není konečné číslo</translation>
+    </message>
+    <message>
+        <source>the flame has no xform</source>
+        <translation>plamen nemá žádný xform</translation>
+    </message>
+    <message>
+        <source>the flame has %1 xforms; at most %2 are drawn</source>
+        <translation>plamen má %1 xforms; kreslí se nejvýše %2</translation>
+    </message>
+    <message>
+        <source>xform %1</source>
+        <translation>xform %1</translation>
+    </message>
+    <message>
+        <source>%1: its weight %2 is not a number &gt;= 0</source>
+        <translation>%1: jeho váha %2 není číslo &gt;= 0</translation>
+    </message>
+    <message>
+        <source>%1: its xaos row has %2 entries for %3 xforms</source>
+        <translation>%1: jeho řádek xaos má %2 položek pro %3 xforms</translation>
+    </message>
+    <message>
+        <source>%1: a xaos entry is not a number &gt;= 0</source>
+        <translation>%1: položka xaos není číslo &gt;= 0</translation>
+    </message>
+    <message>
+        <source>every xform of the flame has weight 0: none is ever chosen</source>
+        <translation>každý xform plamene má váhu 0: žádný se nikdy nevybere</translation>
+    </message>
+    <message>
+        <source>xform %1: its xaos row forbids every xform, so an orbit that reaches it cannot go on</source>
+        <translation>xform %1: jeho řádek xaos zakazuje všechny xforms, takže orbita, která jej dosáhne, nemůže pokračovat</translation>
+    </message>
+    <message>
+        <source>the final xform</source>
+        <translation>závěrečný xform</translation>
+    </message>
+    <message>
+        <source>there is no flame to draw</source>
+        <translation>není žádný plamen ke kreslení</translation>
     </message>
 </context>
 <context>
@@ -6947,7 +7082,7 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     </message>
     <message>
         <source>at most 255 maps are supported, got %1</source>
-        <translation>podporováno je nejvýše 255 zobrazení, zadáno %1</translation>
+        <translation type="vanished">podporováno je nejvýše 255 zobrazení, zadáno %1</translation>
     </message>
     <message>
         <source>no sink to receive the attractor</source>
@@ -7515,6 +7650,10 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     <message>
         <source>map index %1 is out of range: the %2 layout has maps 0 to %3</source>
         <translation>index zobrazení %1 je mimo rozsah: rozložení %2 má zobrazení 0 až %3</translation>
+    </message>
+    <message>
+        <source>at most %1 maps are supported, got %2</source>
+        <translation>podporováno je nejvýše %1 zobrazení, zadáno %2</translation>
     </message>
 </context>
 <context>

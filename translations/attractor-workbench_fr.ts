@@ -1903,7 +1903,7 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;: &lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number</source>
-        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: &lt;symmetry&gt; nécessite kind=&quot;k&quot;, un nombre entier</translation>
+        <translation type="vanished">flamme «&#xa0;%1&#xa0;»&#xa0;: &lt;symmetry&gt; nécessite kind=&quot;k&quot;, un nombre entier</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: element &lt;%2&gt; ignored</source>
@@ -2002,7 +2002,7 @@
     </message>
     <message>
         <source>%1 is an IFS of space: a flame holds maps of the plane</source>
-        <translation>%1 est un IFS de l’espace&#xa0;: une flamme contient des applications du plan</translation>
+        <translation type="vanished">%1 est un IFS de l’espace&#xa0;: une flamme contient des applications du plan</translation>
     </message>
     <message>
         <source>the flame&apos;s frame is empty</source>
@@ -2014,7 +2014,27 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;: its maps do not contract, not even on average (Lyapunov exponent %2 &gt;= 0), so it has no attractor; flam3 draws it only by discarding the points that escape</source>
-        <translation>flamme &apos;%1&apos;&#xa0;: ses applications ne sont pas contractantes, pas même en moyenne (exposant de Lyapunov %2 &gt;= 0), elle n&apos;a donc pas d&apos;attracteur&#xa0;; flam3 ne la dessine qu&apos;en écartant les points qui s&apos;échappent</translation>
+        <translation type="vanished">flamme &apos;%1&apos;&#xa0;: ses applications ne sont pas contractantes, pas même en moyenne (exposant de Lyapunov %2 &gt;= 0), elle n&apos;a donc pas d&apos;attracteur&#xa0;; flam3 ne la dessine qu&apos;en écartant les points qui s&apos;échappent</translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: more than %2 xforms (at most %2 maps are supported)</source>
+        <translation>flamme « %1 » : plus de %2 xforms (au plus %2 applications sont prises en charge)</translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: &lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number from %2 to %3, got &apos;%4&apos;</source>
+        <translation>flamme « %1 » : &lt;symmetry&gt; demande kind=&quot;k&quot;, un entier de %2 à %3, reçu « %4 »</translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: its maps do not contract, not even on average (the Lyapunov exponent of their products, %2, is not clearly negative: not below -0.001), so it may have no attractor; flam3 draws it only by discarding the points that escape</source>
+        <translation>flamme « %1 » : ses applications ne sont pas contractantes, même en moyenne (l&apos;exposant de Lyapunov de leurs produits, %2, n&apos;est pas nettement négatif : pas en dessous de -0.001), elle peut donc n&apos;avoir aucun attracteur ; flam3 ne la dessine qu&apos;en écartant les points qui s&apos;échappent</translation>
+    </message>
+    <message>
+        <source>a flam3 flame</source>
+        <translation>une flamme flam3</translation>
+    </message>
+    <message>
+        <source>%1 is an IFS of space: a flam3 flame holds maps of the plane (export it as a Fractint .ifs entry)</source>
+        <translation>%1 est un IFS de l&apos;espace : une flamme flam3 contient des applications du plan (exportez-le comme entrée Fractint .ifs)</translation>
     </message>
 </context>
 <context>
@@ -2147,6 +2167,10 @@
         <source>Control points</source>
         <translation>Points de contrôle</translation>
     </message>
+    <message>
+        <source>%1 maps: at most %2 maps are supported</source>
+        <translation>%1 applications : au plus %2 applications sont prises en charge</translation>
+    </message>
 </context>
 <context>
     <name>awb::IfsExchange</name>
@@ -2172,7 +2196,11 @@
     </message>
     <message>
         <source>the IFS of %1 acts in a space of dimension %2 that is drawn through a projection (000 §2): a Fractint entry holds maps of the plane or of space only</source>
-        <translation>l’IFS de %1 agit dans un espace de dimension %2 qui est tracé au moyen d’une projection (000 §2)&#xa0;: une entrée Fractint ne contient que des applications du plan ou de l’espace</translation>
+        <translation type="vanished">l’IFS de %1 agit dans un espace de dimension %2 qui est tracé au moyen d’une projection (000 §2)&#xa0;: une entrée Fractint ne contient que des applications du plan ou de l’espace</translation>
+    </message>
+    <message>
+        <source>the IFS of %1 acts in a space of dimension %2 that is drawn through a projection (000 §2), and its maps do not act on the drawn coordinates alone: %3 holds maps of the plane or of space only</source>
+        <translation>l&apos;IFS de %1 agit dans un espace de dimension %2 dessiné par une projection (000 §2), et ses applications n&apos;agissent pas sur les seules coordonnées dessinées : %3 ne contient que des applications du plan ou de l&apos;espace</translation>
     </message>
 </context>
 <context>
@@ -6773,6 +6801,10 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
         <source>Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.</source>
         <translation>Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&apos;une commande.</translation>
     </message>
+    <message>
+        <source>%1: its %2 entries make a project of %3 MB, more than the %4 MB a project file may be</source>
+        <translation>%1 : ses %2 entrées font un projet de %3 Mo, plus que les %4 Mo permis pour un fichier de projet</translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>
@@ -6842,6 +6874,109 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     <message>
         <source>entry %1: random iteration leaves every bound (its maps do not contract)</source>
         <translation>entrée %1&#xa0;: l’itération aléatoire dépasse toute borne (ses applications ne sont pas contractantes)</translation>
+    </message>
+    <message>
+        <source>the row starting here runs on to the next line: a %1D entry has rows of %2 numbers (the map&apos;s coefficients, then its probability), one row per line</source>
+        <translation>la ligne de nombres qui commence ici se poursuit à la ligne suivante : une entrée %1D a des lignes de %2 nombres (les coefficients de l&apos;application, puis sa probabilité), une par ligne</translation>
+    </message>
+    <message>
+        <source>%1 maps: at most %2 maps are supported</source>
+        <translation>%1 applications : au plus %2 applications sont prises en charge</translation>
+    </message>
+    <message>
+        <source>the probabilities sum to %1, not 1: they are used as relative weights</source>
+        <translation>les probabilités ont pour somme %1, non 1 : elles servent de poids relatifs</translation>
+    </message>
+    <message>
+        <source>the probabilities are all 0: the maps are chosen with equal probabilities</source>
+        <translation>les probabilités sont toutes nulles : les applications sont choisies avec des probabilités égales</translation>
+    </message>
+    <message>
+        <source>a file of bare rows (Fractint 10 and 15: one IFS, no NAME { }) has rows of 7 (2D) or 13 (3D) numbers, its first line %1</source>
+        <translation>un fichier de lignes nues (Fractint 10 et 15 : un seul IFS, sans NOM { }) a des lignes de 7 (2D) ou 13 (3D) nombres, sa première ligne %1</translation>
+    </message>
+    <message>
+        <source>a file of bare rows (Fractint 10 and 15) has no braces: an entry is NAME { rows } throughout</source>
+        <translation>un fichier de lignes nues (Fractint 10 et 15) n&apos;a pas d&apos;accolades : sinon chaque entrée est NOM { lignes }</translation>
+    </message>
+    <message>
+        <source>%1 more problems</source>
+        <translation>%1 problèmes de plus</translation>
+    </message>
+    <message>
+        <source>%1 more entries after the first %2: one file gives at most %2</source>
+        <translation>%1 entrées de plus après les %2 premières : un fichier en donne au plus %2</translation>
+    </message>
+    <message>
+        <source>%1 more warnings</source>
+        <translation>%1 avertissements de plus</translation>
+    </message>
+</context>
+<context>
+    <name>awb::flame</name>
+    <message>
+        <source>%1: a coefficient is not a finite number</source>
+        <translation>%1 : un coefficient n&apos;est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>%1: variation %2 does not exist</source>
+        <translation>%1 : la variation %2 n&apos;existe pas</translation>
+    </message>
+    <message>
+        <source>%1: the weight of variation %2 is not a finite number</source>
+        <translation>%1 : le poids de la variation %2 n&apos;est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>%1: its variation parameters are incomplete</source>
+        <translation>%1 : ses paramètres de variation sont incomplets</translation>
+    </message>
+    <message>
+        <source>%1: parameter %2 is not a finite number</source>
+        <translation>%1 : le paramètre %2 n&apos;est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>%1: its colour, colour speed or opacity is not a finite number</source>
+        <translation>%1 : sa couleur, sa vitesse de couleur ou son opacité n&apos;est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>the flame has no xform</source>
+        <translation>la flamme n&apos;a aucun xform</translation>
+    </message>
+    <message>
+        <source>the flame has %1 xforms; at most %2 are drawn</source>
+        <translation>la flamme a %1 xforms ; au plus %2 sont dessinés</translation>
+    </message>
+    <message>
+        <source>xform %1</source>
+        <translation>xform %1</translation>
+    </message>
+    <message>
+        <source>%1: its weight %2 is not a number &gt;= 0</source>
+        <translation>%1 : son poids %2 n&apos;est pas un nombre &gt;= 0</translation>
+    </message>
+    <message>
+        <source>%1: its xaos row has %2 entries for %3 xforms</source>
+        <translation>%1 : sa ligne xaos a %2 entrées pour %3 xforms</translation>
+    </message>
+    <message>
+        <source>%1: a xaos entry is not a number &gt;= 0</source>
+        <translation>%1 : une entrée xaos n&apos;est pas un nombre &gt;= 0</translation>
+    </message>
+    <message>
+        <source>every xform of the flame has weight 0: none is ever chosen</source>
+        <translation>chaque xform de la flamme a un poids nul : aucun n&apos;est jamais choisi</translation>
+    </message>
+    <message>
+        <source>xform %1: its xaos row forbids every xform, so an orbit that reaches it cannot go on</source>
+        <translation>xform %1 : sa ligne xaos interdit tous les xforms, une orbite qui l&apos;atteint ne peut donc pas continuer</translation>
+    </message>
+    <message>
+        <source>the final xform</source>
+        <translation>le xform final</translation>
+    </message>
+    <message>
+        <source>there is no flame to draw</source>
+        <translation>il n&apos;y a aucune flamme à dessiner</translation>
     </message>
 </context>
 <context>
@@ -6936,7 +7071,7 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     </message>
     <message>
         <source>at most 255 maps are supported, got %1</source>
-        <translation>255 applications au plus sont prises en charge (reçu&#xa0;: %1)</translation>
+        <translation type="vanished">255 applications au plus sont prises en charge (reçu&#xa0;: %1)</translation>
     </message>
     <message>
         <source>no sink to receive the attractor</source>
@@ -7504,6 +7639,10 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     <message>
         <source>map index %1 is out of range: the %2 layout has maps 0 to %3</source>
         <translation>l’indice d’application %1 est hors limites&#xa0;: la disposition %2 a les applications 0 à %3</translation>
+    </message>
+    <message>
+        <source>at most %1 maps are supported, got %2</source>
+        <translation>au plus %1 applications sont prises en charge, reçu %2</translation>
     </message>
 </context>
 <context>

@@ -1901,7 +1901,7 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;: &lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number</source>
-        <translation>火焰分形“%1”：&lt;symmetry&gt; 需要 kind=&quot;k&quot;，其中 k 为整数</translation>
+        <translation type="vanished">火焰分形“%1”：&lt;symmetry&gt; 需要 kind=&quot;k&quot;，其中 k 为整数</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: element &lt;%2&gt; ignored</source>
@@ -1999,7 +1999,7 @@
     </message>
     <message>
         <source>%1 is an IFS of space: a flame holds maps of the plane</source>
-        <translation>%1 是空间 IFS：火焰分形只包含平面映射</translation>
+        <translation type="vanished">%1 是空间 IFS：火焰分形只包含平面映射</translation>
     </message>
     <message>
         <source>the flame&apos;s frame is empty</source>
@@ -2011,7 +2011,27 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;: its maps do not contract, not even on average (Lyapunov exponent %2 &gt;= 0), so it has no attractor; flam3 draws it only by discarding the points that escape</source>
-        <translation>火焰 &apos;%1&apos;：其映射不收缩，平均意义下也不收缩（李雅普诺夫指数 %2 &gt;= 0），因此没有吸引子；flam3 只是通过丢弃逃逸的点来绘制它</translation>
+        <translation type="vanished">火焰 &apos;%1&apos;：其映射不收缩，平均意义下也不收缩（李雅普诺夫指数 %2 &gt;= 0），因此没有吸引子；flam3 只是通过丢弃逃逸的点来绘制它</translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: more than %2 xforms (at most %2 maps are supported)</source>
+        <translation>火焰“%1”：xform 超过 %2 个（最多支持 %2 个映射）</translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: &lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number from %2 to %3, got &apos;%4&apos;</source>
+        <translation>火焰“%1”：&lt;symmetry&gt; 需要 kind=&quot;k&quot;，取值为 %2 到 %3 的整数，实际为“%4”</translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: its maps do not contract, not even on average (the Lyapunov exponent of their products, %2, is not clearly negative: not below -0.001), so it may have no attractor; flam3 draws it only by discarding the points that escape</source>
+        <translation>火焰“%1”：其映射不收缩，平均意义下也不收缩（其乘积的 Lyapunov 指数 %2 并非明显为负：不低于 -0.001），因此可能没有吸引子；flam3 只是丢弃逃逸的点来绘制它</translation>
+    </message>
+    <message>
+        <source>a flam3 flame</source>
+        <translation>flam3 火焰</translation>
+    </message>
+    <message>
+        <source>%1 is an IFS of space: a flam3 flame holds maps of the plane (export it as a Fractint .ifs entry)</source>
+        <translation>%1 是空间中的 IFS：flam3 火焰只包含平面映射（请导出为 Fractint .ifs 条目）</translation>
     </message>
 </context>
 <context>
@@ -2144,6 +2164,10 @@
         <source>Control points</source>
         <translation>控制点</translation>
     </message>
+    <message>
+        <source>%1 maps: at most %2 maps are supported</source>
+        <translation>%1 个映射：最多支持 %2 个映射</translation>
+    </message>
 </context>
 <context>
     <name>awb::IfsExchange</name>
@@ -2169,7 +2193,11 @@
     </message>
     <message>
         <source>the IFS of %1 acts in a space of dimension %2 that is drawn through a projection (000 §2): a Fractint entry holds maps of the plane or of space only</source>
-        <translation>%1 的 IFS 作用于 %2 维空间，并通过投影绘制（000 §2）：Fractint 条目只能包含平面或空间中的映射</translation>
+        <translation type="vanished">%1 的 IFS 作用于 %2 维空间，并通过投影绘制（000 §2）：Fractint 条目只能包含平面或空间中的映射</translation>
+    </message>
+    <message>
+        <source>the IFS of %1 acts in a space of dimension %2 that is drawn through a projection (000 §2), and its maps do not act on the drawn coordinates alone: %3 holds maps of the plane or of space only</source>
+        <translation>%1 的 IFS 作用于维数为 %2 的空间，经投影绘制（000 §2），且其映射并非只作用于所绘坐标：%3 只包含平面或空间的映射</translation>
     </message>
 </context>
 <context>
@@ -6762,6 +6790,10 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
         <source>Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a command.</source>
         <translation>运行 &apos;attractor-cli &lt;command&gt; --help&apos; 查看某个命令的选项。</translation>
     </message>
+    <message>
+        <source>%1: its %2 entries make a project of %3 MB, more than the %4 MB a project file may be</source>
+        <translation>%1：其 %2 个条目构成 %3 MB 的项目，超过项目文件允许的 %4 MB</translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>
@@ -6831,6 +6863,109 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>entry %1: random iteration leaves every bound (its maps do not contract)</source>
         <translation>条目 %1：随机迭代超出了所有界限（其映射不是压缩映射）</translation>
+    </message>
+    <message>
+        <source>the row starting here runs on to the next line: a %1D entry has rows of %2 numbers (the map&apos;s coefficients, then its probability), one row per line</source>
+        <translation>从此处开始的一行延续到了下一行：%1D 条目每行有 %2 个数（映射的系数，然后是其概率），每行一个映射</translation>
+    </message>
+    <message>
+        <source>%1 maps: at most %2 maps are supported</source>
+        <translation>%1 个映射：最多支持 %2 个映射</translation>
+    </message>
+    <message>
+        <source>the probabilities sum to %1, not 1: they are used as relative weights</source>
+        <translation>概率之和为 %1 而非 1：将作为相对权重使用</translation>
+    </message>
+    <message>
+        <source>the probabilities are all 0: the maps are chosen with equal probabilities</source>
+        <translation>概率全为 0：各映射以相等概率选取</translation>
+    </message>
+    <message>
+        <source>a file of bare rows (Fractint 10 and 15: one IFS, no NAME { }) has rows of 7 (2D) or 13 (3D) numbers, its first line %1</source>
+        <translation>裸行文件（Fractint 10 和 15：单个 IFS，没有 NAME { }）每行有 7 个（2D）或 13 个（3D）数，其第一行为 %1 个</translation>
+    </message>
+    <message>
+        <source>a file of bare rows (Fractint 10 and 15) has no braces: an entry is NAME { rows } throughout</source>
+        <translation>裸行文件（Fractint 10 和 15）不含花括号：否则每个条目都应为 NAME { 行 }</translation>
+    </message>
+    <message>
+        <source>%1 more problems</source>
+        <translation>另有 %1 个问题</translation>
+    </message>
+    <message>
+        <source>%1 more entries after the first %2: one file gives at most %2</source>
+        <translation>前 %2 个之后还有 %1 个条目：一个文件最多提供 %2 个</translation>
+    </message>
+    <message>
+        <source>%1 more warnings</source>
+        <translation>另有 %1 个警告</translation>
+    </message>
+</context>
+<context>
+    <name>awb::flame</name>
+    <message>
+        <source>%1: a coefficient is not a finite number</source>
+        <translation>%1：某个系数不是有限数</translation>
+    </message>
+    <message>
+        <source>%1: variation %2 does not exist</source>
+        <translation>%1：变体 %2 不存在</translation>
+    </message>
+    <message>
+        <source>%1: the weight of variation %2 is not a finite number</source>
+        <translation>%1：变体 %2 的权重不是有限数</translation>
+    </message>
+    <message>
+        <source>%1: its variation parameters are incomplete</source>
+        <translation>%1：其变体参数不完整</translation>
+    </message>
+    <message>
+        <source>%1: parameter %2 is not a finite number</source>
+        <translation>%1：参数 %2 不是有限数</translation>
+    </message>
+    <message>
+        <source>%1: its colour, colour speed or opacity is not a finite number</source>
+        <translation>%1：其颜色、颜色速度或不透明度不是有限数</translation>
+    </message>
+    <message>
+        <source>the flame has no xform</source>
+        <translation>火焰没有 xform</translation>
+    </message>
+    <message>
+        <source>the flame has %1 xforms; at most %2 are drawn</source>
+        <translation>火焰有 %1 个 xform；最多绘制 %2 个</translation>
+    </message>
+    <message>
+        <source>xform %1</source>
+        <translation>xform %1</translation>
+    </message>
+    <message>
+        <source>%1: its weight %2 is not a number &gt;= 0</source>
+        <translation>%1：其权重 %2 不是 &gt;= 0 的数</translation>
+    </message>
+    <message>
+        <source>%1: its xaos row has %2 entries for %3 xforms</source>
+        <translation>%1：其 xaos 行有 %2 项，而 xform 有 %3 个</translation>
+    </message>
+    <message>
+        <source>%1: a xaos entry is not a number &gt;= 0</source>
+        <translation>%1：某个 xaos 项不是 &gt;= 0 的数</translation>
+    </message>
+    <message>
+        <source>every xform of the flame has weight 0: none is ever chosen</source>
+        <translation>火焰的每个 xform 权重都为 0：没有任何一个会被选中</translation>
+    </message>
+    <message>
+        <source>xform %1: its xaos row forbids every xform, so an orbit that reaches it cannot go on</source>
+        <translation>xform %1：其 xaos 行禁止所有 xform，因此到达它的轨道无法继续</translation>
+    </message>
+    <message>
+        <source>the final xform</source>
+        <translation>最终 xform</translation>
+    </message>
+    <message>
+        <source>there is no flame to draw</source>
+        <translation>没有可绘制的火焰</translation>
     </message>
 </context>
 <context>
@@ -6925,7 +7060,7 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>at most 255 maps are supported, got %1</source>
-        <translation>最多支持 255 个映射，实际为 %1 个</translation>
+        <translation type="vanished">最多支持 255 个映射，实际为 %1 个</translation>
     </message>
     <message>
         <source>no sink to receive the attractor</source>
@@ -7493,6 +7628,10 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>map index %1 is out of range: the %2 layout has maps 0 to %3</source>
         <translation>映射索引 %1 超出范围：%2 布局的映射编号为 0 到 %3</translation>
+    </message>
+    <message>
+        <source>at most %1 maps are supported, got %2</source>
+        <translation>最多支持 %1 个映射，实际为 %2 个</translation>
     </message>
 </context>
 <context>

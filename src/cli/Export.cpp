@@ -141,6 +141,9 @@ int exportData(const QStringList &args)
             if (file.write(text) != text.size())
                 throw Failure{CliTr::tr("cannot write %1: %2").arg(outFile, file.errorString())};
         } else if (format == "flame") {
+            QString refused;
+            if (!flameEntryOf(*item, &refused))
+                throw Failure{refused};
             // The frame `render` draws with the same --size and --bounds.
             FigureOptions o;
             readFrameOptions(parser, o);

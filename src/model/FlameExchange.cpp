@@ -1,5 +1,6 @@
 #include "model/FlameExchange.h"
 
+#include "core/Messages.h"
 #include "core/analysis/Spectrum.h"
 #include "core/ifs/Attractor.h"
 #include "model/AttractorItem.h"
@@ -165,6 +166,14 @@ private:
                     final = x;
                 else
                     xforms.push_back(x);
+                if (int(xforms.size()) > kMaxMaps) {
+                    problem = here()
+                              + FlameTr::tr("flame '%1': more than %2 xforms (at most %2 maps "
+                                            "are supported)")
+                                    .arg(name)
+                                    .arg(kMaxMaps);
+                    break;
+                }
             } else if (tag == QLatin1String("color")) {
                 if (!readColour(palette, &problem))
                     break;
@@ -177,11 +186,17 @@ private:
                 // file flam3 wrote, which lists them already: its measure, twice the weight.
                 bool ok = false;
                 const int kind = m_xml.attributes().value(QLatin1String("kind")).toInt(&ok);
-                if (!ok || std::abs(kind) > 1000) {
+                // Range-checked before anything is added: at most |kind| xforms more, within
+                // the engine's limit of maps.
+                if (!ok || kind < -kMaxMaps || kind > kMaxMaps
+                    || int(xforms.size()) + std::abs(kind) > kMaxMaps) {
                     problem = here()
                               + FlameTr::tr("flame '%1': <symmetry> needs kind=\"k\", a whole "
-                                            "number")
-                                    .arg(name);
+                                            "number from %2 to %3, got '%4'")
+                                    .arg(name)
+                                    .arg(-kMaxMaps)
+                                    .arg(kMaxMaps)
+                                    .arg(m_xml.attributes().value(QLatin1String("kind")));
                     break;
                 }
                 addSymmetry(xforms, kind, m_xml.lineNumber(), m_xml.columnNumber());
@@ -505,9 +520,11 @@ private:
                 if (const IfsCheck check = checkIfs(d->ifs); !check.contractsOnAverage())
                     warnings << place(line, column)
                                     + FlameTr::tr("flame '%1': its maps do not contract, not "
-                                                  "even on average (Lyapunov exponent %2 >= 0), "
-                                                  "so it has no attractor; flam3 draws it only "
-                                                  "by discarding the points that escape")
+                                                  "even on average (the Lyapunov exponent of "
+                                                  "their products, %2, is not clearly negative: "
+                                                  "not below -0.001), so it may have no "
+                                                  "attractor; flam3 draws it only by discarding "
+                                                  "the points that escape")
                                           .arg(name)
                                           .arg(check.lyapunov ? *check.lyapunov : qQNaN(), 0,
                                                'g', 3);
@@ -520,9 +537,10 @@ private:
     ImportedItems m_out;
 };
 
+// The shortest text that reads back as exactly v: round trips keep every map.
 QString number(double v)
 {
-    return QString::number(v, 'g', 10);
+    return QString::fromStdString(shortestNumber(v));
 }
 
 } // namespace
@@ -537,18 +555,25 @@ ImportedItems importFlame(const QString &fileName)
     return importFlameText(readExchangeFile(fileName), fileName);
 }
 
-std::optional<QByteArray> flameOf(const AttractorItem &item, const QStringList &mapColours,
-                                  const FlameFrame &frame, QString *why)
+std::optional<FractintEntry> flameEntryOf(const AttractorItem &item, QString *why)
 {
-    const auto entry = fractintEntryOf(item, why);
-    if (!entry)
-        return std::nullopt;
-    if (entry->dimension != 2) {
+    auto entry = fractintEntryOf(item, why, FlameTr::tr("a flam3 flame"));
+    if (entry && entry->dimension != 2) {
         if (why)
-            *why = FlameTr::tr("%1 is an IFS of space: a flame holds maps of the plane")
+            *why = FlameTr::tr("%1 is an IFS of space: a flam3 flame holds maps of the plane "
+                               "(export it as a Fractint .ifs entry)")
                        .arg(item.name());
         return std::nullopt;
     }
+    return entry;
+}
+
+std::optional<QByteArray> flameOf(const AttractorItem &item, const QStringList &mapColours,
+                                  const FlameFrame &frame, QString *why)
+{
+    const auto entry = flameEntryOf(item, why);
+    if (!entry)
+        return std::nullopt;
     const QRectF w = frame.world.normalized();
     if (!(w.width() > 0) || frame.size.isEmpty() || !std::isfinite(w.width())) {
         if (why)

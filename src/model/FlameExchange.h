@@ -43,6 +43,10 @@ struct FlameFrame {
 // its colour of `mapColours` ("#rrggbb", one per map) through a 256-entry palette, framed as
 // `frame` (centre, scale in pixels per unit, size). nullopt with *why for an item that is not
 // an affine IFS of the plane.
+// The plane maps a flame of `item` would hold: fractintEntryOf's, refused (nullopt and *why)
+// for an IFS of space. The CLI asks before it frames the item.
+std::optional<FractintEntry> flameEntryOf(const AttractorItem &item, QString *why);
+
 std::optional<QByteArray> flameOf(const AttractorItem &item, const QStringList &mapColours,
                                   const FlameFrame &frame, QString *why);
 

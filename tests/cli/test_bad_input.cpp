@@ -237,6 +237,23 @@ const std::map<QString, Maker> &inputs()
                                          "; the next entry has a typo\n"
                                          "bad { .5 0 0 .5 x 0 .5 }\n");
          }},
+        {"ifs-too-many-maps", [](QDir &d, QStringList *) {
+             QByteArray text = "many {\n";
+             for (int r = 0; r < 1000; ++r)
+                 text += ".01 0 0 .01 0 0 1\n";
+             return file(d, "many.ifs", text + "}\n");
+         }},
+        {"ifs-six-a-line", [](QDir &d, QStringList *) {
+             QByteArray text = "sixes {\n";
+             for (int r = 0; r < 7; ++r)
+                 text += ".5 0 0 .5 0 0\n";
+             return file(d, "sixes.ifs", text + "}\n");
+         }},
+        {"flame-symmetry-bomb", [](QDir &d, QStringList *) {
+             return file(d, "bomb.flame", "<flame name=\"b\"><symmetry kind=\"-2147483648\"/>"
+                                          "<xform weight=\"1\" coefs=\"0.5 0 0 0.5 0 0\"/>"
+                                          "</flame>\n");
+         }},
         {"flame-coefs", [](QDir &d, QStringList *) {
              return file(d, "short.flame", "<flame name=\"cut\">\n"
                                            "  <xform weight=\"1\" linear=\"1\" "
