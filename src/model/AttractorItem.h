@@ -53,6 +53,10 @@ struct DerivedIfs {
     std::function<IterationStats(const StartSet &, int depth, const std::vector<AttractorSink *> &,
                                  const IterationControl &)>
         iterate;
+    // `iterate` only draws `ifs` another way (a random-mode fractal of space streams its chaos
+    // game to the 3D view): F^depth(start) is still awb::iterate(ifs, ...), which `points` and
+    // the point exports take, so that their --start and --depth mean what they say.
+    bool iterateDrawsIfs = false;
     // Items that start from the limit positions of their vertices (mesh items, start set kind
     // "vertex-limits"): `iterate` takes an empty start set as that start.
     bool vertexLimitStart = false;

@@ -231,6 +231,7 @@ DerivedIfs FractalItem::computeIfs() const
         const auto count = [a](int depth) {
             return std::max(1.0, double(a.samples) / std::pow(4.0, std::max(0, a.depth - depth)));
         };
+        out.iterateDrawsIfs = true;
         out.iterate = [ifs, a, count](const StartSet &start, int depth,
                                       const std::vector<AttractorSink *> &sinks,
                                       const IterationControl &control) {

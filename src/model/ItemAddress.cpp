@@ -52,7 +52,7 @@ QString parameterMeaning(const AttractorItem &item)
 
 Address parseItemAddress(const QString &text, const DerivedIfs &d)
 {
-    if (d.iterate)
+    if (d.iterate && !d.iterateDrawsIfs)
         throw InputError(ItemAddressTr::tr("this item is drawn by an automaton: its words are not addresses "
                             "of one IFS").toStdString());
     return parseAddress(text.toStdString(), d.ifs.size());
@@ -60,7 +60,7 @@ Address parseItemAddress(const QString &text, const DerivedIfs &d)
 
 std::optional<Mat> addressControlPoints(const DerivedIfs &d, const Address &w)
 {
-    if (!d.subdivision || d.iterate || d.S.real.empty())
+    if (!d.subdivision || (d.iterate && !d.iterateDrawsIfs) || d.S.real.empty())
         return std::nullopt;
     Address analysis;
     for (int symbol : w)

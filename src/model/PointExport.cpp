@@ -38,7 +38,8 @@ template <class Visit>
 void iteratePoints(const DerivedIfs &d, const StartSet &start, int depth, const Address &address,
                    const IterationControl &control, Visit &&visit)
 {
-    if (!address.empty() && d.iterate)
+    const bool own = d.iterate && !d.iterateDrawsIfs;
+    if (!address.empty() && own)
         throw InputError(PointExportTr::tr("--address needs an item drawn by one IFS; this one is drawn by "
                             "an automaton").toStdString());
     const AffineMap prefix = composeAddress(d.ifs, address);
@@ -51,7 +52,7 @@ void iteratePoints(const DerivedIfs &d, const StartSet &start, int depth, const 
                 visit(RowVec(p.row(r)), int(k), map);
         }
     });
-    if (d.iterate)
+    if (own)
         d.iterate(start, depth, {&sink}, control);
     else
         iterate(d.ifs, start, depth, sink, control);
@@ -61,7 +62,7 @@ void iteratePoints(const DerivedIfs &d, const StartSet &start, int depth, const 
 
 double exportPointCount(const DerivedIfs &d, const StartSet &start, int depth)
 {
-    if (d.iterate)
+    if (d.iterate && !d.iterateDrawsIfs)
         return d.pointCount ? d.pointCount(start, depth) * double(d.ifs.views.size()) : -1;
     return imageCount(d.ifs, depth) * double(start.vertices.rows())
            * double(d.ifs.views.size());
@@ -147,7 +148,8 @@ private:
 CollectedPoints collectPoints(const DerivedIfs &d, const StartSet &start, int depth,
                               const IterationControl &control, const Address &address)
 {
-    if (!address.empty() && d.iterate)
+    const bool own = d.iterate && !d.iterateDrawsIfs;
+    if (!address.empty() && own)
         throw InputError(PointExportTr::tr("--address needs an item drawn by one IFS; this one "
                                            "is drawn by an automaton")
                              .toStdString());
@@ -161,7 +163,7 @@ CollectedPoints collectPoints(const DerivedIfs &d, const StartSet &start, int de
         out.views.reserve(std::size_t(expected));
     }
     CollectingSink sink(d, address, columns, coordinates, out);
-    if (d.iterate)
+    if (own)
         d.iterate(start, depth, {&sink}, control);
     else
         iterate(d.ifs, start, depth, sink, control);

@@ -130,6 +130,23 @@ void TestImportCli::bundledLibrary()
     QVERIFY2(std::abs(d - std::log(3.0) / std::log(2.0)) < 0.05, qPrintable(QString::number(d)));
     QCOMPARE(run({"points", awb, "--item", "tetrahedron", "--csv"}, &out, &err), 0);
     QVERIFY2(out.startsWith("x,y,z,"), out.left(40).constData());
+    // --start and --depth mean what they say on an item of space that the 3D view draws by
+    // random iteration: F^0 of a point is the point, F^1 its four images.
+    QCOMPARE(run({"points", awb, "--item", "tetrahedron", "--csv", "--depth", "0", "--start",
+                  "point:1,2,3"},
+                 &out, &err),
+             0);
+    const QList<QByteArray> rows = out.trimmed().split('\n');
+    QCOMPARE(rows.size(), 2);
+    const QList<QByteArray> p = rows[1].split(',');
+    QVERIFY2(std::abs(p.value(0).toDouble() - 1) < 1e-9 && std::abs(p.value(1).toDouble() - 2) < 1e-9
+                 && std::abs(p.value(2).toDouble() - 3) < 1e-9,
+             rows[1].constData());
+    QCOMPARE(run({"points", awb, "--item", "tetrahedron", "--csv", "--depth", "1", "--start",
+                  "point:1,2,3"},
+                 &out, &err),
+             0);
+    QCOMPARE(out.trimmed().split('\n').size(), 5);
 }
 
 void TestImportCli::exportRoundTrip()
