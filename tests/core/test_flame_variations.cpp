@@ -490,7 +490,11 @@ void TestFlameVariations::everyVariationAsLibflam3DrawsIt()
     // distributions; each function prints its table and counts the failing variations.
     const int deterministic = testDeterministic(g, rc);
     const int random = testRandom(g, rc);
-    std::free(g.xform);  // flam3_add_xforms' realloc (clear_cp frees nothing)
+    // What flam3_add_xforms allocated (clear_cp frees nothing): the xforms and the xaos rows.
+    for (int i = 0; i < g.num_xforms - (g.final_xform_index >= 0); ++i)
+        std::free(g.chaos[i]);
+    std::free(g.chaos);
+    std::free(g.xform);
     QCOMPARE(deterministic, 0);
     QCOMPARE(random, 0);
 }
