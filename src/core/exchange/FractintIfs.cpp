@@ -290,12 +290,15 @@ namespace {
 void readBareRows(Tokenizer &tokens, Token first, const std::string &name, FractintFile *file,
                   Reports &problems)
 {
+    // The first line's numbers, at most a row of them kept (a one-line file of millions of
+    // numbers is counted, not held).
     std::vector<Token> firstLine{first};
+    std::size_t n = 1;
     Token t;
     bool more = false;
     while ((more = tokens.next(&t)) && t.line == first.line)
-        firstLine.push_back(t);
-    const std::size_t n = firstLine.size();
+        if (++n <= 13)
+            firstLine.push_back(t);
     if (n != 7 && n != 13) {
         problems.add({first.line, first.column, name,
                       formatMessage(coreTranslate("awb::exchange",
@@ -344,16 +347,15 @@ FractintFile readFractintIfs(std::istream &in, const std::string &bareName)
     // A file whose first line is numbers without a brace is bare rows.
     double ignored = 0;
     if (toNumber(t.text, &ignored)) {
+        // At most a row and one word read ahead (a bare row has 7 or 13 numbers).
         std::vector<Token> line{t};
         Token u;
         bool braces = false;
-        while (tokens.next(&u)) {
-            if (u.line != t.line) {
-                line.push_back(u);
-                break;
-            }
-            braces = braces || u.text == "{" || u.text == "}";
+        while (line.size() <= 14 && tokens.next(&u)) {
             line.push_back(u);
+            if (u.line != t.line)
+                break;
+            braces = braces || u.text == "{" || u.text == "}";
         }
         const Token first = line.front();
         tokens.giveBack(std::vector<Token>(line.begin() + 1, line.end()));
