@@ -71,16 +71,16 @@ int importFile(const QStringList &args)
         }
         // What the import writes, the program must load: a project larger than a project file
         // may be is refused before it is written.
-        const qsizetype bytes = ProjectIO::toBytes(ProjectIO::toJson(project)).size();
-        if (bytes > ProjectIO::maxFileBytes)
+        const QByteArray bytes = project.serialize();
+        if (bytes.size() > ProjectIO::maxFileBytes)
             throw Failure{CliTr::tr("%1: its %2 entries make a project of %3 MB, more than the "
                                     "%4 MB a project file may be")
                               .arg(file)
                               .arg(names.size())
-                              .arg(bytes / (1024 * 1024))
+                              .arg(bytes.size() / (1024 * 1024))
                               .arg(ProjectIO::maxFileBytes / (1024 * 1024))};
         QString error;
-        if (!project.saveAs(parser.value("out"), &error))
+        if (!ProjectIO::writeFile(parser.value("out"), bytes, &error))
             throw Failure{error};
         out() << CliTr::tr("%1: %n item(s): %2\n", nullptr, int(names.size()))
                      .arg(parser.value("out"), names.join(QStringLiteral(", ")));
