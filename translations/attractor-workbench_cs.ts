@@ -1881,11 +1881,11 @@
     <name>awb::FlameExchange</name>
     <message>
         <source>the XML is malformed: %1</source>
-        <translation>chybně utvořené XML: %1</translation>
+        <translation type="vanished">chybně utvořené XML: %1</translation>
     </message>
     <message>
         <source>%1: the file holds no &lt;flame&gt; element</source>
-        <translation>%1: soubor neobsahuje žádný prvek &lt;flame&gt;</translation>
+        <translation type="vanished">%1: soubor neobsahuje žádný prvek &lt;flame&gt;</translation>
     </message>
     <message>
         <source>%1, line %2, column %3: </source>
@@ -1897,11 +1897,11 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;, final xform</source>
-        <translation>plamen „%1“, finální xform</translation>
+        <translation type="vanished">plamen „%1“, finální xform</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;, xform %2</source>
-        <translation>plamen „%1“, xform %2</translation>
+        <translation type="vanished">plamen „%1“, xform %2</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: &lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number</source>
@@ -1909,39 +1909,39 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;: element &lt;%2&gt; ignored</source>
-        <translation>plamen „%1“: prvek &lt;%2&gt; ignorován</translation>
+        <translation type="vanished">plamen „%1“: prvek &lt;%2&gt; ignorován</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos; has no xform</source>
-        <translation>plamen „%1“ nemá žádnou xform</translation>
+        <translation type="vanished">plamen „%1“ nemá žádnou xform</translation>
     </message>
     <message>
         <source>%1=&quot;%2&quot; must be 6 finite numbers</source>
-        <translation>%1=&quot;%2&quot; musí být 6 konečných čísel</translation>
+        <translation type="vanished">%1=&quot;%2&quot; musí být 6 konečných čísel</translation>
     </message>
     <message>
         <source>weight=&quot;%1&quot; must be a finite number &gt;= 0</source>
-        <translation>weight=&quot;%1&quot; musí být konečné číslo &gt;= 0</translation>
+        <translation type="vanished">weight=&quot;%1&quot; musí být konečné číslo &gt;= 0</translation>
     </message>
     <message>
         <source>var1=&quot;%1&quot; names no variation</source>
-        <translation>var1=&quot;%1&quot; neoznačuje žádnou variaci</translation>
+        <translation type="vanished">var1=&quot;%1&quot; neoznačuje žádnou variaci</translation>
     </message>
     <message>
         <source>variation %1=&quot;%2&quot; is not a number</source>
-        <translation>variace %1=&quot;%2&quot; není číslo</translation>
+        <translation type="vanished">variace %1=&quot;%2&quot; není číslo</translation>
     </message>
     <message>
         <source>: opacity %1 not kept (every map is drawn)</source>
-        <translation>: opacity %1 nezachována (vykresluje se každé zobrazení)</translation>
+        <translation type="vanished">: opacity %1 nezachována (vykresluje se každé zobrazení)</translation>
     </message>
     <message>
         <source>: attribute %1=&quot;%2&quot; ignored</source>
-        <translation>: atribut %1=&quot;%2&quot; ignorován</translation>
+        <translation type="vanished">: atribut %1=&quot;%2&quot; ignorován</translation>
     </message>
     <message numerus="yes">
         <source>: variation %1 dropped (non-linear)</source>
-        <translation>
+        <translation type="vanished">
             <numerusform>: variace %1 vynechána (nelineární)</numerusform>
             <numerusform>: variace %1 vynechány (nelineární)</numerusform>
             <numerusform>: variace %1 vynechány (nelineární)</numerusform>
@@ -1949,39 +1949,39 @@
     </message>
     <message>
         <source>; its affine part kept as a linear map</source>
-        <translation>; její afinní část zachována jako lineární zobrazení</translation>
+        <translation type="vanished">; její afinní část zachována jako lineární zobrazení</translation>
     </message>
     <message>
         <source>: no variation given; taken as linear</source>
-        <translation>: nezadána žádná variace; použije se linear</translation>
+        <translation type="vanished">: nezadána žádná variace; použije se linear</translation>
     </message>
     <message>
         <source>%1: element &lt;%2&gt; ignored (animation)</source>
-        <translation>%1: prvek &lt;%2&gt; ignorován (animace)</translation>
+        <translation type="vanished">%1: prvek &lt;%2&gt; ignorován (animace)</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: a &lt;color&gt; needs index=&quot;0..255&quot; and rgb=&quot;r g b&quot;</source>
-        <translation>plamen „%1“: prvek &lt;color&gt; vyžaduje index=&quot;0..255&quot; a rgb=&quot;r g b&quot;</translation>
+        <translation type="vanished">plamen „%1“: prvek &lt;color&gt; vyžaduje index=&quot;0..255&quot; a rgb=&quot;r g b&quot;</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: the palette&apos;s hex digits are not whole colours of %2 digits</source>
-        <translation>plamen „%1“: hexadecimální číslice palety netvoří celé barvy po %2 číslicích</translation>
+        <translation type="vanished">plamen „%1“: hexadecimální číslice palety netvoří celé barvy po %2 číslicích</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: palette entry %2 is not hexadecimal</source>
-        <translation>plamen „%1“: záznam palety %2 není hexadecimální</translation>
+        <translation type="vanished">plamen „%1“: záznam palety %2 není hexadecimální</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: the final xform is not invertible (determinant %2): dropped</source>
-        <translation>plamen „%1“: finální xform není invertovatelná (determinant %2): vynechána</translation>
+        <translation type="vanished">plamen „%1“: finální xform není invertovatelná (determinant %2): vynechána</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its xaos (chaos) rows forbid some transitions; imported as the plain IFS of its maps, whose attractor contains the flame&apos;s</source>
-        <translation>plamen „%1“: jeho řádky xaos (chaos) zakazují některé přechody; importován jako prostý IFS jeho zobrazení, jehož atraktor obsahuje atraktor plamene</translation>
+        <translation type="vanished">plamen „%1“: jeho řádky xaos (chaos) zakazují některé přechody; importován jako prostý IFS jeho zobrazení, jehož atraktor obsahuje atraktor plamene</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its xaos (chaos) weights are dropped: the attractor is the same, its measure differs</source>
-        <translation>plamen „%1“: jeho váhy xaos (chaos) jsou vynechány: atraktor je stejný, jeho míra se liší</translation>
+        <translation type="vanished">plamen „%1“: jeho váhy xaos (chaos) jsou vynechány: atraktor je stejný, jeho míra se liší</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: every xform has weight 0</source>
@@ -2013,7 +2013,7 @@
     </message>
     <message>
         <source>: no weight given; taken as 0, as flam3 does (the map is never chosen)</source>
-        <translation>: váha není uvedena; bere se 0 jako ve flam3 (zobrazení se nikdy nevybere)</translation>
+        <translation type="vanished">: váha není uvedena; bere se 0 jako ve flam3 (zobrazení se nikdy nevybere)</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its maps do not contract, not even on average (Lyapunov exponent %2 &gt;= 0), so it has no attractor; flam3 draws it only by discarding the points that escape</source>
@@ -2021,11 +2021,11 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;: more than %2 xforms (at most %2 maps are supported)</source>
-        <translation>plamen „%1“: více než %2 xforms (podporováno je nejvýše %2 zobrazení)</translation>
+        <translation type="vanished">plamen „%1“: více než %2 xforms (podporováno je nejvýše %2 zobrazení)</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: &lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number from %2 to %3, got &apos;%4&apos;</source>
-        <translation>plamen „%1“: &lt;symmetry&gt; vyžaduje kind=&quot;k&quot;, celé číslo od %2 do %3, zadáno „%4“</translation>
+        <translation type="vanished">plamen „%1“: &lt;symmetry&gt; vyžaduje kind=&quot;k&quot;, celé číslo od %2 do %3, zadáno „%4“</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its maps do not contract, not even on average (the Lyapunov exponent of their products, %2, is not clearly negative: not below -0.001), so it may have no attractor; flam3 draws it only by discarding the points that escape</source>
@@ -2038,6 +2038,392 @@
     <message>
         <source>%1 is an IFS of space: a flam3 flame holds maps of the plane (export it as a Fractint .ifs entry)</source>
         <translation>%1 je IFS prostoru: plamen flam3 obsahuje zobrazení roviny (exportujte jej jako položku Fractint .ifs)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FlameFile</name>
+    <message>
+        <source>the XML is malformed: %1</source>
+        <translation>XML je chybně utvořené: %1</translation>
+    </message>
+    <message>
+        <source>%1: the file holds no &lt;flame&gt; element</source>
+        <translation>%1: soubor neobsahuje žádný prvek &lt;flame&gt;</translation>
+    </message>
+    <message>
+        <source>%1, line %2, column %3: </source>
+        <translation>%1, řádek %2, sloupec %3: </translation>
+    </message>
+    <message>
+        <source>flame %1</source>
+        <translation>plamen %1</translation>
+    </message>
+    <message>
+        <source>a second &lt;finalxform&gt; (flam3 allows one)</source>
+        <translation>druhý &lt;finalxform&gt; (flam3 povoluje jen jeden)</translation>
+    </message>
+    <message>
+        <source>more than %1 xforms</source>
+        <translation>více než %1 xformů</translation>
+    </message>
+    <message>
+        <source>final xform</source>
+        <translation>závěrečný xform</translation>
+    </message>
+    <message>
+        <source>xform %1</source>
+        <translation>xform %1</translation>
+    </message>
+    <message>
+        <source>element &lt;%1&gt; ignored</source>
+        <translation>prvek &lt;%1&gt; ignorován</translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: %2</source>
+        <translation>plamen „%1“: %2</translation>
+    </message>
+    <message>
+        <source>xform %1: its xaos row has %2 entries for %3 xforms; the extra ones are ignored, as flam3 does</source>
+        <translation>xform %1: jeho řádek xaos má %2 položek pro %3 xformů; nadbytečné se ignorují, stejně jako ve flam3</translation>
+    </message>
+    <message>
+        <source>%1=&quot;%2&quot; is not a finite number</source>
+        <translation>%1=&quot;%2&quot; není konečné číslo</translation>
+    </message>
+    <message>
+        <source>%1=&quot;%2&quot; must be %3 finite numbers</source>
+        <translation>%1=&quot;%2&quot; musí být konečná čísla v počtu %3</translation>
+    </message>
+    <message>
+        <source>size=&quot;%1&quot; must be two whole numbers from 1 to 32768</source>
+        <translation>size=&quot;%1&quot; musí být dvě celá čísla od 1 do 32768</translation>
+    </message>
+    <message>
+        <source>scale=&quot;%1&quot; must be positive</source>
+        <translation>scale=&quot;%1&quot; musí být kladné</translation>
+    </message>
+    <message>
+        <source>zoom=&quot;%1&quot; is beyond +-50 (a factor 2^zoom)</source>
+        <translation>zoom=&quot;%1&quot; je mimo rozsah +-50 (faktor 2^zoom)</translation>
+    </message>
+    <message>
+        <source>quality=&quot;%1&quot; must be positive</source>
+        <translation>quality=&quot;%1&quot; musí být kladné</translation>
+    </message>
+    <message>
+        <source>%1=&quot;%2&quot; must be a whole number from 1 to 64</source>
+        <translation>%1=&quot;%2&quot; musí být celé číslo od 1 do 64</translation>
+    </message>
+    <message>
+        <source>attributes not kept: %1</source>
+        <translation>nezachované atributy: %1</translation>
+    </message>
+    <message>
+        <source>weight=&quot;%1&quot; is negative</source>
+        <translation>weight=&quot;%1&quot; je záporné</translation>
+    </message>
+    <message>
+        <source>color=&quot;%1&quot; must be one or two finite numbers</source>
+        <translation>color=&quot;%1&quot; musí být jedno nebo dvě konečná čísla</translation>
+    </message>
+    <message>
+        <source>chaos=&quot;%1&quot; must be at most %2 finite numbers</source>
+        <translation>chaos=&quot;%1&quot; musí být konečná čísla, nejvýše %2</translation>
+    </message>
+    <message>
+        <source>chaos=&quot;%1&quot; has a negative entry</source>
+        <translation>chaos=&quot;%1&quot; obsahuje zápornou položku</translation>
+    </message>
+    <message>
+        <source>%1=&quot;%2&quot; must be 6 finite numbers</source>
+        <translation>%1=&quot;%2&quot; musí být 6 konečných čísel</translation>
+    </message>
+    <message>
+        <source>var1=&quot;%1&quot; names no variation</source>
+        <translation>var1=&quot;%1&quot; neoznačuje žádnou variaci</translation>
+    </message>
+    <message>
+        <source>var=&quot;...&quot; must be %1 finite numbers, one per variation</source>
+        <translation>var=&quot;...&quot; musí být konečná čísla v počtu %1, jedno pro každou variaci</translation>
+    </message>
+    <message>
+        <source>: a final xform has no weight; weight=&quot;%1&quot; ignored</source>
+        <translation>: závěrečný xform nemá váhu; weight=&quot;%1&quot; ignorováno</translation>
+    </message>
+    <message>
+        <source>: no weight given; taken as 0, as flam3 does (the xform is never chosen)</source>
+        <translation>: váha neuvedena; bere se 0, stejně jako ve flam3 (xform se nikdy nevybere)</translation>
+    </message>
+    <message>
+        <source>: no variation given: as in flam3, every point goes to post(0)</source>
+        <translation>: variace neuvedena: stejně jako ve flam3 jde každý bod na post(0)</translation>
+    </message>
+    <message>
+        <source>: attributes flam3 does not draw, ignored: %1</source>
+        <translation>: atributy, které flam3 nekreslí, ignorovány: %1</translation>
+    </message>
+    <message>
+        <source>: animation attributes not kept: %1</source>
+        <translation>: nezachované atributy animace: %1</translation>
+    </message>
+    <message>
+        <source>: element &lt;%1&gt; ignored (animation)</source>
+        <translation>: prvek &lt;%1&gt; ignorován (animace)</translation>
+    </message>
+    <message>
+        <source>a &lt;color&gt; needs index=&quot;0..255&quot; and rgb=&quot;r g b&quot;</source>
+        <translation>&lt;color&gt; vyžaduje index=&quot;0..255&quot; a rgb=&quot;r g b&quot;</translation>
+    </message>
+    <message>
+        <source>a palette of flam3&apos;s palette file (index0) is not kept</source>
+        <translation>paleta ze souboru palet flam3 (index0) se nezachovává</translation>
+    </message>
+    <message>
+        <source>the palette&apos;s hex digits are not at most 256 colours of %1 digits</source>
+        <translation>šestnáctkové číslice palety netvoří nejvýše 256 barev po %1 číslicích</translation>
+    </message>
+    <message>
+        <source>palette entry %1 is not hexadecimal</source>
+        <translation>položka palety %1 není šestnáctková</translation>
+    </message>
+    <message>
+        <source>&lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number from %1 to %2</source>
+        <translation type="vanished">&lt;symmetry&gt; vyžaduje kind=&quot;k&quot;, celé číslo od %1 do %2</translation>
+    </message>
+    <message>
+        <source>&lt;symmetry kind=&quot;%1&quot;&gt; makes more than %2 xforms</source>
+        <translation>&lt;symmetry kind=&quot;%1&quot;&gt; vytváří více než %2 xformů</translation>
+    </message>
+    <message>
+        <source>&lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number from %1 to %2, got &apos;%3&apos;</source>
+        <translation>&lt;symmetry&gt; vyžaduje kind=&quot;k&quot;, celé číslo od %1 do %2, zadáno „%3“</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FlameItem</name>
+    <message>
+        <source>expected 6 numbers in flam3&apos;s order [a, d, b, e, c, f]: x&apos; = a x + b y + c, y&apos; = d x + e y + f</source>
+        <translation>očekáváno 6 čísel v pořadí flam3 [a, d, b, e, c, f]: x&apos; = a x + b y + c, y&apos; = d x + e y + f</translation>
+    </message>
+    <message>
+        <source>expected a non-empty array of xforms</source>
+        <translation>očekáváno neprázdné pole xformů</translation>
+    </message>
+    <message>
+        <source>%1 xforms: at most %2 are drawn</source>
+        <translation>počet xformů: %1; kreslí se nejvýše %2</translation>
+    </message>
+    <message>
+        <source>expected 1536 hexadecimal digits (256 colours rrggbb), got %1</source>
+        <translation>očekáváno 1536 šestnáctkových číslic (256 barev rrggbb), obdrženo %1</translation>
+    </message>
+    <message>
+        <source>colour %1 is not hexadecimal</source>
+        <translation>barva %1 není šestnáctková</translation>
+    </message>
+    <message>
+        <source>expected 256 colours: a string of hexadecimal rrggbb, or [[r, g, b], ...] from 0 to 255</source>
+        <translation type="vanished">očekáváno 256 barev: řetězec šestnáctkových rrggbb, nebo [[r, g, b], ...] od 0 do 255</translation>
+    </message>
+    <message>
+        <source>expected [r, g, b]</source>
+        <translation>očekáváno [r, g, b]</translation>
+    </message>
+    <message>
+        <source>a channel must be from 0 to 255</source>
+        <translation type="vanished">kanál musí být od 0 do 255</translation>
+    </message>
+    <message>
+        <source>expected an xform {&quot;coefs&quot;: [...], &quot;variations&quot;: {...}, &quot;weight&quot;: w, ...}</source>
+        <translation>očekáván xform {&quot;coefs&quot;: [...], &quot;variations&quot;: {...}, &quot;weight&quot;: w, ...}</translation>
+    </message>
+    <message>
+        <source>a weight must not be negative</source>
+        <translation>váha nesmí být záporná</translation>
+    </message>
+    <message>
+        <source>flam3 has no variation of this name</source>
+        <translation>flam3 nemá variaci tohoto jména</translation>
+    </message>
+    <message>
+        <source>no variation of flam3 has this parameter</source>
+        <translation>žádná variace flam3 nemá tento parametr</translation>
+    </message>
+    <message>
+        <source>a xaos entry must not be negative</source>
+        <translation>položka xaos nesmí být záporná</translation>
+    </message>
+    <message>
+        <source>not a field of an xform (coefs, post, variations, parameters, weight, color, color_speed, opacity, animate, chaos, name)</source>
+        <translation>není pole xformu (coefs, post, variations, parameters, weight, color, color_speed, opacity, animate, chaos, name)</translation>
+    </message>
+    <message>
+        <source>Flame</source>
+        <translation>Plamen</translation>
+    </message>
+    <message>
+        <source>the scale (pixels per unit) must be positive</source>
+        <translation>měřítko (pixely na jednotku) musí být kladné</translation>
+    </message>
+    <message>
+        <source>a flame is drawn by random iteration only (its maps are not affine): choose random iteration</source>
+        <translation>plamen se kreslí pouze náhodnou iterací (jeho zobrazení nejsou afinní): zvolte náhodnou iteraci</translation>
+    </message>
+    <message>
+        <source>a flame&apos;s xforms carry their own weights (&quot;xforms&quot;): leave the algorithm&apos;s probabilities empty</source>
+        <translation>xformy plamene nesou vlastní váhy (&quot;xforms&quot;): ponechte pravděpodobnosti algoritmu prázdné</translation>
+    </message>
+    <message>
+        <source>a flame has no subdivision matrices: its maps are not affine</source>
+        <translation>plamen nemá subdivizní matice: jeho zobrazení nejsou afinní</translation>
+    </message>
+    <message>
+        <source>a fractal flame, drawn by its own chaos game as flam3 draws it; the spectra are those of the xforms&apos; affine (pre) maps, y up</source>
+        <translation>fraktální plamen, kreslený vlastní hrou chaosu tak, jak jej kreslí flam3; spektra jsou spektry afinních (pre) zobrazení xformů, y nahoru</translation>
+    </message>
+    <message>
+        <source>Change flame of %1</source>
+        <translation>Změnit plamen %1</translation>
+    </message>
+    <message>
+        <source>Xforms</source>
+        <translation>Xformy</translation>
+    </message>
+    <message>
+        <source>flam3&apos;s xforms: {&quot;coefs&quot;: [a, d, b, e, c, f], &quot;variations&quot;: {&quot;linear&quot;: 1, ...}, &quot;weight&quot;: w, &quot;color&quot;: c, ...} each</source>
+        <translation>xformy flam3: každý {&quot;coefs&quot;: [a, d, b, e, c, f], &quot;variations&quot;: {&quot;linear&quot;: 1, ...}, &quot;weight&quot;: w, &quot;color&quot;: c, ...}</translation>
+    </message>
+    <message>
+        <source>Final xform</source>
+        <translation>Závěrečný xform</translation>
+    </message>
+    <message>
+        <source>Drawn on every point without moving the orbit; null: none</source>
+        <translation>Použije se na každý kreslený bod, aniž by posunul orbitu; null: žádný</translation>
+    </message>
+    <message>
+        <source>Palette</source>
+        <translation>Paleta</translation>
+    </message>
+    <message>
+        <source>256 colours, indexed by the colour coordinate</source>
+        <translation>256 barev, indexovaných barevnou souřadnicí</translation>
+    </message>
+    <message>
+        <source>Centre x</source>
+        <translation>Střed x</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Kamera</translation>
+    </message>
+    <message>
+        <source>Centre y</source>
+        <translation>Střed y</translation>
+    </message>
+    <message>
+        <source>flam3&apos;s: y grows down the picture</source>
+        <translation>podle flam3: y roste směrem dolů obrázku</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>Měřítko</translation>
+    </message>
+    <message>
+        <source>Pixels per unit (times 2^zoom)</source>
+        <translation>Pixely na jednotku (krát 2^zoom)</translation>
+    </message>
+    <message>
+        <source>Rotation (degrees)</source>
+        <translation>Otočení (stupně)</translation>
+    </message>
+    <message>
+        <source>Zoom</source>
+        <translation>Přiblížení</translation>
+    </message>
+    <message>
+        <source>Width (pixels)</source>
+        <translation>Šířka (pixely)</translation>
+    </message>
+    <message>
+        <source>Height (pixels)</source>
+        <translation>Výška (pixely)</translation>
+    </message>
+    <message>
+        <source>Quality (samples per pixel)</source>
+        <translation>Kvalita (vzorky na pixel)</translation>
+    </message>
+    <message>
+        <source>Tone</source>
+        <translation>Tónování</translation>
+    </message>
+    <message>
+        <source>Brightness</source>
+        <translation>Jas</translation>
+    </message>
+    <message>
+        <source>Gamma</source>
+        <translation>Gama</translation>
+    </message>
+    <message>
+        <source>Gamma threshold</source>
+        <translation>Práh gamy</translation>
+    </message>
+    <message>
+        <source>Vibrancy</source>
+        <translation>Sytost</translation>
+    </message>
+    <message>
+        <source>Highlight power</source>
+        <translation>Síla světel</translation>
+    </message>
+    <message>
+        <source>flam3&apos;s: -1 leaves the highlights as they are</source>
+        <translation>podle flam3: -1 ponechá světla beze změny</translation>
+    </message>
+    <message>
+        <source>expected [r, g, b] from 0 to 1</source>
+        <translation>očekáváno [r, g, b] od 0 do 1</translation>
+    </message>
+    <message>
+        <source>Background</source>
+        <translation>Pozadí</translation>
+    </message>
+    <message>
+        <source>[r, g, b] from 0 to 1</source>
+        <translation>[r, g, b] od 0 do 1</translation>
+    </message>
+    <message>
+        <source>Supersample</source>
+        <translation>Supervzorkování</translation>
+    </message>
+    <message>
+        <source>Filter radius (pixels)</source>
+        <translation>Poloměr filtru (pixely)</translation>
+    </message>
+    <message>
+        <source>Estimator radius</source>
+        <translation>Poloměr estimátoru</translation>
+    </message>
+    <message>
+        <source>Estimator minimum</source>
+        <translation>Minimum estimátoru</translation>
+    </message>
+    <message>
+        <source>Estimator curve</source>
+        <translation>Křivka estimátoru</translation>
+    </message>
+    <message>
+        <source>Fractal flame</source>
+        <translation>Fraktální plamen</translation>
+    </message>
+    <message>
+        <source>expected 256 colours: a string of hexadecimal rrggbb, or [[r, g, b], ...] from 0 to 1</source>
+        <translation>očekáváno 256 barev: řetězec šestnáctkových rrggbb, nebo [[r, g, b], ...] od 0 do 1</translation>
+    </message>
+    <message>
+        <source>a channel must be from 0 to 1</source>
+        <translation>kanál musí být od 0 do 1</translation>
     </message>
 </context>
 <context>
@@ -2205,6 +2591,10 @@
         <source>the IFS of %1 acts in a space of dimension %2 that is drawn through a projection (000 §2), and its maps do not act on the drawn coordinates alone: %3 holds maps of the plane or of space only</source>
         <translation>IFS položky %1 působí v prostoru dimenze %2, který se kreslí projekcí (000 §2), a jeho zobrazení nepůsobí jen na kreslené souřadnice: %3 obsahuje pouze zobrazení roviny nebo prostoru</translation>
     </message>
+    <message>
+        <source>%1 is a fractal flame: its xforms are not affine maps, and %2 holds affine maps only (export it as a flam3 flame)</source>
+        <translation>%1 je fraktální plamen: jeho xformy nejsou afinní zobrazení a %2 obsahuje pouze afinní zobrazení (exportujte jej jako plamen flam3)</translation>
+    </message>
 </context>
 <context>
     <name>awb::InsertControlPointCommand</name>
@@ -2328,7 +2718,7 @@
     </message>
     <message>
         <source>Tone</source>
-        <translation>Tón</translation>
+        <translation>Tónování</translation>
     </message>
     <message>
         <source>Hits: every pixel the attractor reaches (the papers&apos; look); density: the invariant measure by log density; automatic: hits for deterministic, density for random iteration</source>
@@ -2634,6 +3024,10 @@ Odečíst rozdíl %7 od prvku ve sloupci %8 (%9 → %10), aby byl součet řádk
     <message>
         <source>%1: polygon after %2 steps</source>
         <translation>%1: polygon po kroku %2</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; is drawn by random iteration only (its maps are not affine): give --samples, not --depth</source>
+        <translation>položka „%1“ se kreslí pouze náhodnou iterací (její zobrazení nejsou afinní): zadejte --samples, ne --depth</translation>
     </message>
 </context>
 <context>
@@ -3747,6 +4141,10 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>wrote %1 points, expected %2</source>
         <translation>zapsáno %1 bodů, očekáváno %2</translation>
+    </message>
+    <message>
+        <source>this item is a fractal flame: its points come from its own chaos game, not from iterating maps (render its picture instead)</source>
+        <translation>tato položka je fraktální plamen: její body pocházejí z vlastní hry chaosu, nikoli z iterace zobrazení (vykreslete raději její obrázek)</translation>
     </message>
 </context>
 <context>

@@ -1879,15 +1879,15 @@
     <name>awb::FlameExchange</name>
     <message>
         <source>the XML is malformed: %1</source>
-        <translation>le XML est mal formé&#xa0;: %1</translation>
+        <translation type="vanished">le XML est mal formé&#xa0;: %1</translation>
     </message>
     <message>
         <source>%1: the file holds no &lt;flame&gt; element</source>
-        <translation>%1&#xa0;: le fichier ne contient aucun élément &lt;flame&gt;</translation>
+        <translation type="vanished">%1&#xa0;: le fichier ne contient aucun élément &lt;flame&gt;</translation>
     </message>
     <message>
         <source>%1, line %2, column %3: </source>
-        <translation>%1, ligne %2, colonne %3&#xa0;: </translation>
+        <translation>%1, ligne %2, colonne %3 : </translation>
     </message>
     <message>
         <source>flame %1</source>
@@ -1895,11 +1895,11 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;, final xform</source>
-        <translation>flamme «&#xa0;%1&#xa0;», xform final</translation>
+        <translation type="vanished">flamme «&#xa0;%1&#xa0;», xform final</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;, xform %2</source>
-        <translation>flamme «&#xa0;%1&#xa0;», xform %2</translation>
+        <translation type="vanished">flamme «&#xa0;%1&#xa0;», xform %2</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: &lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number</source>
@@ -1907,78 +1907,78 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;: element &lt;%2&gt; ignored</source>
-        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: élément &lt;%2&gt; ignoré</translation>
+        <translation type="vanished">flamme «&#xa0;%1&#xa0;»&#xa0;: élément &lt;%2&gt; ignoré</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos; has no xform</source>
-        <translation>la flamme «&#xa0;%1&#xa0;» n’a aucun xform</translation>
+        <translation type="vanished">la flamme «&#xa0;%1&#xa0;» n’a aucun xform</translation>
     </message>
     <message>
         <source>%1=&quot;%2&quot; must be 6 finite numbers</source>
-        <translation>%1=&quot;%2&quot; doit comporter 6 nombres finis</translation>
+        <translation type="vanished">%1=&quot;%2&quot; doit comporter 6 nombres finis</translation>
     </message>
     <message>
         <source>weight=&quot;%1&quot; must be a finite number &gt;= 0</source>
-        <translation>weight=&quot;%1&quot; doit être un nombre fini &gt;= 0</translation>
+        <translation type="vanished">weight=&quot;%1&quot; doit être un nombre fini &gt;= 0</translation>
     </message>
     <message>
         <source>var1=&quot;%1&quot; names no variation</source>
-        <translation>var1=&quot;%1&quot; ne désigne aucune variation</translation>
+        <translation type="vanished">var1=&quot;%1&quot; ne désigne aucune variation</translation>
     </message>
     <message>
         <source>variation %1=&quot;%2&quot; is not a number</source>
-        <translation>variation %1=&quot;%2&quot; n’est pas un nombre</translation>
+        <translation type="vanished">variation %1=&quot;%2&quot; n’est pas un nombre</translation>
     </message>
     <message>
         <source>: opacity %1 not kept (every map is drawn)</source>
-        <translation>&#xa0;: opacity %1 non conservée (chaque application est dessinée)</translation>
+        <translation type="vanished">&#xa0;: opacity %1 non conservée (chaque application est dessinée)</translation>
     </message>
     <message>
         <source>: attribute %1=&quot;%2&quot; ignored</source>
-        <translation>&#xa0;: attribut %1=&quot;%2&quot; ignoré</translation>
+        <translation type="vanished">&#xa0;: attribut %1=&quot;%2&quot; ignoré</translation>
     </message>
     <message numerus="yes">
         <source>: variation %1 dropped (non-linear)</source>
-        <translation>
+        <translation type="vanished">
             <numerusform>&#xa0;: variation %1 abandonnée (non linéaire)</numerusform>
             <numerusform>&#xa0;: variations %1 abandonnées (non linéaires)</numerusform>
         </translation>
     </message>
     <message>
         <source>; its affine part kept as a linear map</source>
-        <translation>&#xa0;; sa partie affine est conservée comme application linéaire</translation>
+        <translation type="vanished">&#xa0;; sa partie affine est conservée comme application linéaire</translation>
     </message>
     <message>
         <source>: no variation given; taken as linear</source>
-        <translation>&#xa0;: aucune variation indiquée&#xa0;; considérée comme linear</translation>
+        <translation type="vanished">&#xa0;: aucune variation indiquée&#xa0;; considérée comme linear</translation>
     </message>
     <message>
         <source>%1: element &lt;%2&gt; ignored (animation)</source>
-        <translation>%1&#xa0;: élément &lt;%2&gt; ignoré (animation)</translation>
+        <translation type="vanished">%1&#xa0;: élément &lt;%2&gt; ignoré (animation)</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: a &lt;color&gt; needs index=&quot;0..255&quot; and rgb=&quot;r g b&quot;</source>
-        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: un élément &lt;color&gt; nécessite index=&quot;0..255&quot; et rgb=&quot;r g b&quot;</translation>
+        <translation type="vanished">flamme «&#xa0;%1&#xa0;»&#xa0;: un élément &lt;color&gt; nécessite index=&quot;0..255&quot; et rgb=&quot;r g b&quot;</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: the palette&apos;s hex digits are not whole colours of %2 digits</source>
-        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: les chiffres hexadécimaux de la palette ne forment pas un nombre entier de couleurs de %2 chiffres</translation>
+        <translation type="vanished">flamme «&#xa0;%1&#xa0;»&#xa0;: les chiffres hexadécimaux de la palette ne forment pas un nombre entier de couleurs de %2 chiffres</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: palette entry %2 is not hexadecimal</source>
-        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: l’entrée %2 de la palette n’est pas hexadécimale</translation>
+        <translation type="vanished">flamme «&#xa0;%1&#xa0;»&#xa0;: l’entrée %2 de la palette n’est pas hexadécimale</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: the final xform is not invertible (determinant %2): dropped</source>
-        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: le xform final n’est pas inversible (déterminant %2)&#xa0;: supprimé</translation>
+        <translation type="vanished">flamme «&#xa0;%1&#xa0;»&#xa0;: le xform final n’est pas inversible (déterminant %2)&#xa0;: supprimé</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its xaos (chaos) rows forbid some transitions; imported as the plain IFS of its maps, whose attractor contains the flame&apos;s</source>
-        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: ses lignes xaos (chaos) interdisent certaines transitions&#xa0;; importée comme l’IFS simple de ses applications, dont l’attracteur contient celui de la flamme</translation>
+        <translation type="vanished">flamme «&#xa0;%1&#xa0;»&#xa0;: ses lignes xaos (chaos) interdisent certaines transitions&#xa0;; importée comme l’IFS simple de ses applications, dont l’attracteur contient celui de la flamme</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its xaos (chaos) weights are dropped: the attractor is the same, its measure differs</source>
-        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: ses poids xaos (chaos) sont abandonnés&#xa0;: l’attracteur est le même, sa mesure diffère</translation>
+        <translation type="vanished">flamme «&#xa0;%1&#xa0;»&#xa0;: ses poids xaos (chaos) sont abandonnés&#xa0;: l’attracteur est le même, sa mesure diffère</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: every xform has weight 0</source>
@@ -1990,7 +1990,7 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;: %2</source>
-        <translation>flamme «&#xa0;%1&#xa0;»&#xa0;: %2</translation>
+        <translation>flamme « %1 » : %2</translation>
     </message>
     <message>
         <source>%1: the file is larger than %2 MB</source>
@@ -2010,7 +2010,7 @@
     </message>
     <message>
         <source>: no weight given; taken as 0, as flam3 does (the map is never chosen)</source>
-        <translation>&#xa0;: aucun poids donné&#xa0;; pris égal à 0, comme le fait flam3 (l’application n’est jamais choisie)</translation>
+        <translation type="vanished">&#xa0;: aucun poids donné&#xa0;; pris égal à 0, comme le fait flam3 (l’application n’est jamais choisie)</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its maps do not contract, not even on average (Lyapunov exponent %2 &gt;= 0), so it has no attractor; flam3 draws it only by discarding the points that escape</source>
@@ -2018,11 +2018,11 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;: more than %2 xforms (at most %2 maps are supported)</source>
-        <translation>flamme « %1 » : plus de %2 xforms (au plus %2 applications sont prises en charge)</translation>
+        <translation type="vanished">flamme « %1 » : plus de %2 xforms (au plus %2 applications sont prises en charge)</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: &lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number from %2 to %3, got &apos;%4&apos;</source>
-        <translation>flamme « %1 » : &lt;symmetry&gt; demande kind=&quot;k&quot;, un entier de %2 à %3, reçu « %4 »</translation>
+        <translation type="vanished">flamme « %1 » : &lt;symmetry&gt; demande kind=&quot;k&quot;, un entier de %2 à %3, reçu « %4 »</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its maps do not contract, not even on average (the Lyapunov exponent of their products, %2, is not clearly negative: not below -0.001), so it may have no attractor; flam3 draws it only by discarding the points that escape</source>
@@ -2035,6 +2035,392 @@
     <message>
         <source>%1 is an IFS of space: a flam3 flame holds maps of the plane (export it as a Fractint .ifs entry)</source>
         <translation>%1 est un IFS de l&apos;espace : une flamme flam3 contient des applications du plan (exportez-le comme entrée Fractint .ifs)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FlameFile</name>
+    <message>
+        <source>the XML is malformed: %1</source>
+        <translation>le XML est mal formé : %1</translation>
+    </message>
+    <message>
+        <source>%1: the file holds no &lt;flame&gt; element</source>
+        <translation>%1 : le fichier ne contient aucun élément &lt;flame&gt;</translation>
+    </message>
+    <message>
+        <source>%1, line %2, column %3: </source>
+        <translation>%1, ligne %2, colonne %3 : </translation>
+    </message>
+    <message>
+        <source>flame %1</source>
+        <translation>flamme %1</translation>
+    </message>
+    <message>
+        <source>a second &lt;finalxform&gt; (flam3 allows one)</source>
+        <translation>un second &lt;finalxform&gt; (flam3 n&apos;en autorise qu&apos;un)</translation>
+    </message>
+    <message>
+        <source>more than %1 xforms</source>
+        <translation>plus de %1 xforms</translation>
+    </message>
+    <message>
+        <source>final xform</source>
+        <translation>xform final</translation>
+    </message>
+    <message>
+        <source>xform %1</source>
+        <translation>xform %1</translation>
+    </message>
+    <message>
+        <source>element &lt;%1&gt; ignored</source>
+        <translation>élément &lt;%1&gt; ignoré</translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: %2</source>
+        <translation>flamme « %1 » : %2</translation>
+    </message>
+    <message>
+        <source>xform %1: its xaos row has %2 entries for %3 xforms; the extra ones are ignored, as flam3 does</source>
+        <translation>xform %1 : sa ligne xaos a %2 entrées pour %3 xforms ; celles en trop sont ignorées, comme dans flam3</translation>
+    </message>
+    <message>
+        <source>%1=&quot;%2&quot; is not a finite number</source>
+        <translation>%1=&quot;%2&quot; n&apos;est pas un nombre fini</translation>
+    </message>
+    <message>
+        <source>%1=&quot;%2&quot; must be %3 finite numbers</source>
+        <translation>%1=&quot;%2&quot; doit contenir %3 nombres finis</translation>
+    </message>
+    <message>
+        <source>size=&quot;%1&quot; must be two whole numbers from 1 to 32768</source>
+        <translation>size=&quot;%1&quot; doit contenir deux entiers de 1 à 32768</translation>
+    </message>
+    <message>
+        <source>scale=&quot;%1&quot; must be positive</source>
+        <translation>scale=&quot;%1&quot; doit être positif</translation>
+    </message>
+    <message>
+        <source>zoom=&quot;%1&quot; is beyond +-50 (a factor 2^zoom)</source>
+        <translation>zoom=&quot;%1&quot; dépasse +-50 (un facteur 2^zoom)</translation>
+    </message>
+    <message>
+        <source>quality=&quot;%1&quot; must be positive</source>
+        <translation>quality=&quot;%1&quot; doit être positif</translation>
+    </message>
+    <message>
+        <source>%1=&quot;%2&quot; must be a whole number from 1 to 64</source>
+        <translation>%1=&quot;%2&quot; doit être un entier de 1 à 64</translation>
+    </message>
+    <message>
+        <source>attributes not kept: %1</source>
+        <translation>attributs non conservés : %1</translation>
+    </message>
+    <message>
+        <source>weight=&quot;%1&quot; is negative</source>
+        <translation>weight=&quot;%1&quot; est négatif</translation>
+    </message>
+    <message>
+        <source>color=&quot;%1&quot; must be one or two finite numbers</source>
+        <translation>color=&quot;%1&quot; doit contenir un ou deux nombres finis</translation>
+    </message>
+    <message>
+        <source>chaos=&quot;%1&quot; must be at most %2 finite numbers</source>
+        <translation>chaos=&quot;%1&quot; doit contenir au plus %2 nombres finis</translation>
+    </message>
+    <message>
+        <source>chaos=&quot;%1&quot; has a negative entry</source>
+        <translation>chaos=&quot;%1&quot; contient une valeur négative</translation>
+    </message>
+    <message>
+        <source>%1=&quot;%2&quot; must be 6 finite numbers</source>
+        <translation>%1=&quot;%2&quot; doit contenir 6 nombres finis</translation>
+    </message>
+    <message>
+        <source>var1=&quot;%1&quot; names no variation</source>
+        <translation>var1=&quot;%1&quot; ne désigne aucune variation</translation>
+    </message>
+    <message>
+        <source>var=&quot;...&quot; must be %1 finite numbers, one per variation</source>
+        <translation>var=&quot;...&quot; doit contenir %1 nombres finis, un par variation</translation>
+    </message>
+    <message>
+        <source>: a final xform has no weight; weight=&quot;%1&quot; ignored</source>
+        <translation>: un xform final n&apos;a pas de poids ; weight=&quot;%1&quot; ignoré</translation>
+    </message>
+    <message>
+        <source>: no weight given; taken as 0, as flam3 does (the xform is never chosen)</source>
+        <translation>: aucun poids donné ; pris égal à 0, comme dans flam3 (le xform n&apos;est jamais choisi)</translation>
+    </message>
+    <message>
+        <source>: no variation given: as in flam3, every point goes to post(0)</source>
+        <translation>: aucune variation donnée : comme dans flam3, chaque point va en post(0)</translation>
+    </message>
+    <message>
+        <source>: attributes flam3 does not draw, ignored: %1</source>
+        <translation>: attributs que flam3 ne dessine pas, ignorés : %1</translation>
+    </message>
+    <message>
+        <source>: animation attributes not kept: %1</source>
+        <translation>: attributs d&apos;animation non conservés : %1</translation>
+    </message>
+    <message>
+        <source>: element &lt;%1&gt; ignored (animation)</source>
+        <translation>: élément &lt;%1&gt; ignoré (animation)</translation>
+    </message>
+    <message>
+        <source>a &lt;color&gt; needs index=&quot;0..255&quot; and rgb=&quot;r g b&quot;</source>
+        <translation>un &lt;color&gt; nécessite index=&quot;0..255&quot; et rgb=&quot;r g b&quot;</translation>
+    </message>
+    <message>
+        <source>a palette of flam3&apos;s palette file (index0) is not kept</source>
+        <translation>une palette du fichier de palettes de flam3 (index0) n&apos;est pas conservée</translation>
+    </message>
+    <message>
+        <source>the palette&apos;s hex digits are not at most 256 colours of %1 digits</source>
+        <translation>les chiffres hexadécimaux de la palette ne forment pas au plus 256 couleurs de %1 chiffres</translation>
+    </message>
+    <message>
+        <source>palette entry %1 is not hexadecimal</source>
+        <translation>l&apos;entrée %1 de la palette n&apos;est pas hexadécimale</translation>
+    </message>
+    <message>
+        <source>&lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number from %1 to %2</source>
+        <translation type="vanished">&lt;symmetry&gt; nécessite kind=&quot;k&quot;, un entier de %1 à %2</translation>
+    </message>
+    <message>
+        <source>&lt;symmetry kind=&quot;%1&quot;&gt; makes more than %2 xforms</source>
+        <translation>&lt;symmetry kind=&quot;%1&quot;&gt; produit plus de %2 xforms</translation>
+    </message>
+    <message>
+        <source>&lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number from %1 to %2, got &apos;%3&apos;</source>
+        <translation>&lt;symmetry&gt; nécessite kind=&quot;k&quot;, un entier de %1 à %2, reçu « %3 »</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FlameItem</name>
+    <message>
+        <source>expected 6 numbers in flam3&apos;s order [a, d, b, e, c, f]: x&apos; = a x + b y + c, y&apos; = d x + e y + f</source>
+        <translation>6 nombres attendus dans l&apos;ordre de flam3 [a, d, b, e, c, f] : x&apos; = a x + b y + c, y&apos; = d x + e y + f</translation>
+    </message>
+    <message>
+        <source>expected a non-empty array of xforms</source>
+        <translation>tableau non vide de xforms attendu</translation>
+    </message>
+    <message>
+        <source>%1 xforms: at most %2 are drawn</source>
+        <translation>%1 xforms : au plus %2 sont dessinés</translation>
+    </message>
+    <message>
+        <source>expected 1536 hexadecimal digits (256 colours rrggbb), got %1</source>
+        <translation>1536 chiffres hexadécimaux attendus (256 couleurs rrggbb), %1 reçus</translation>
+    </message>
+    <message>
+        <source>colour %1 is not hexadecimal</source>
+        <translation>la couleur %1 n&apos;est pas hexadécimale</translation>
+    </message>
+    <message>
+        <source>expected 256 colours: a string of hexadecimal rrggbb, or [[r, g, b], ...] from 0 to 255</source>
+        <translation type="vanished">256 couleurs attendues : une chaîne de rrggbb hexadécimaux, ou [[r, g, b], ...] de 0 à 255</translation>
+    </message>
+    <message>
+        <source>expected [r, g, b]</source>
+        <translation>[r, g, b] attendu</translation>
+    </message>
+    <message>
+        <source>a channel must be from 0 to 255</source>
+        <translation type="vanished">un canal doit être compris entre 0 et 255</translation>
+    </message>
+    <message>
+        <source>expected an xform {&quot;coefs&quot;: [...], &quot;variations&quot;: {...}, &quot;weight&quot;: w, ...}</source>
+        <translation>xform attendu {&quot;coefs&quot;: [...], &quot;variations&quot;: {...}, &quot;weight&quot;: w, ...}</translation>
+    </message>
+    <message>
+        <source>a weight must not be negative</source>
+        <translation>un poids ne doit pas être négatif</translation>
+    </message>
+    <message>
+        <source>flam3 has no variation of this name</source>
+        <translation>flam3 n&apos;a aucune variation de ce nom</translation>
+    </message>
+    <message>
+        <source>no variation of flam3 has this parameter</source>
+        <translation>aucune variation de flam3 n&apos;a ce paramètre</translation>
+    </message>
+    <message>
+        <source>a xaos entry must not be negative</source>
+        <translation>une entrée xaos ne doit pas être négative</translation>
+    </message>
+    <message>
+        <source>not a field of an xform (coefs, post, variations, parameters, weight, color, color_speed, opacity, animate, chaos, name)</source>
+        <translation>pas un champ d&apos;un xform (coefs, post, variations, parameters, weight, color, color_speed, opacity, animate, chaos, name)</translation>
+    </message>
+    <message>
+        <source>Flame</source>
+        <translation>Flamme</translation>
+    </message>
+    <message>
+        <source>the scale (pixels per unit) must be positive</source>
+        <translation>l&apos;échelle (pixels par unité) doit être positive</translation>
+    </message>
+    <message>
+        <source>a flame is drawn by random iteration only (its maps are not affine): choose random iteration</source>
+        <translation>une flamme ne se dessine que par itération aléatoire (ses applications ne sont pas affines) : choisissez l&apos;itération aléatoire</translation>
+    </message>
+    <message>
+        <source>a flame&apos;s xforms carry their own weights (&quot;xforms&quot;): leave the algorithm&apos;s probabilities empty</source>
+        <translation>les xforms d&apos;une flamme portent leurs propres poids (&quot;xforms&quot;) : laissez vides les probabilités de l&apos;algorithme</translation>
+    </message>
+    <message>
+        <source>a flame has no subdivision matrices: its maps are not affine</source>
+        <translation>une flamme n&apos;a pas de matrices de subdivision : ses applications ne sont pas affines</translation>
+    </message>
+    <message>
+        <source>a fractal flame, drawn by its own chaos game as flam3 draws it; the spectra are those of the xforms&apos; affine (pre) maps, y up</source>
+        <translation>une flamme fractale, dessinée par son propre jeu du chaos comme flam3 la dessine ; les spectres sont ceux des applications affines (pre) des xforms, y vers le haut</translation>
+    </message>
+    <message>
+        <source>Change flame of %1</source>
+        <translation>Modifier la flamme de %1</translation>
+    </message>
+    <message>
+        <source>Xforms</source>
+        <translation>Xforms</translation>
+    </message>
+    <message>
+        <source>flam3&apos;s xforms: {&quot;coefs&quot;: [a, d, b, e, c, f], &quot;variations&quot;: {&quot;linear&quot;: 1, ...}, &quot;weight&quot;: w, &quot;color&quot;: c, ...} each</source>
+        <translation>xforms de flam3 : chacun {&quot;coefs&quot;: [a, d, b, e, c, f], &quot;variations&quot;: {&quot;linear&quot;: 1, ...}, &quot;weight&quot;: w, &quot;color&quot;: c, ...}</translation>
+    </message>
+    <message>
+        <source>Final xform</source>
+        <translation>Xform final</translation>
+    </message>
+    <message>
+        <source>Drawn on every point without moving the orbit; null: none</source>
+        <translation>Appliqué à chaque point dessiné sans déplacer l&apos;orbite ; null : aucun</translation>
+    </message>
+    <message>
+        <source>Palette</source>
+        <translation>Palette</translation>
+    </message>
+    <message>
+        <source>256 colours, indexed by the colour coordinate</source>
+        <translation>256 couleurs, indexées par la coordonnée de couleur</translation>
+    </message>
+    <message>
+        <source>Centre x</source>
+        <translation>Centre x</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Caméra</translation>
+    </message>
+    <message>
+        <source>Centre y</source>
+        <translation>Centre y</translation>
+    </message>
+    <message>
+        <source>flam3&apos;s: y grows down the picture</source>
+        <translation>convention de flam3 : y croît vers le bas de l&apos;image</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>Échelle</translation>
+    </message>
+    <message>
+        <source>Pixels per unit (times 2^zoom)</source>
+        <translation>Pixels par unité (fois 2^zoom)</translation>
+    </message>
+    <message>
+        <source>Rotation (degrees)</source>
+        <translation>Rotation (degrés)</translation>
+    </message>
+    <message>
+        <source>Zoom</source>
+        <translation>Zoom</translation>
+    </message>
+    <message>
+        <source>Width (pixels)</source>
+        <translation>Largeur (pixels)</translation>
+    </message>
+    <message>
+        <source>Height (pixels)</source>
+        <translation>Hauteur (pixels)</translation>
+    </message>
+    <message>
+        <source>Quality (samples per pixel)</source>
+        <translation>Qualité (échantillons par pixel)</translation>
+    </message>
+    <message>
+        <source>Tone</source>
+        <translation>Tonalité</translation>
+    </message>
+    <message>
+        <source>Brightness</source>
+        <translation>Luminosité</translation>
+    </message>
+    <message>
+        <source>Gamma</source>
+        <translation>Gamma</translation>
+    </message>
+    <message>
+        <source>Gamma threshold</source>
+        <translation>Seuil gamma</translation>
+    </message>
+    <message>
+        <source>Vibrancy</source>
+        <translation>Vibrance</translation>
+    </message>
+    <message>
+        <source>Highlight power</source>
+        <translation>Puissance des hautes lumières</translation>
+    </message>
+    <message>
+        <source>flam3&apos;s: -1 leaves the highlights as they are</source>
+        <translation>convention de flam3 : -1 laisse les hautes lumières telles quelles</translation>
+    </message>
+    <message>
+        <source>expected [r, g, b] from 0 to 1</source>
+        <translation>[r, g, b] de 0 à 1 attendu</translation>
+    </message>
+    <message>
+        <source>Background</source>
+        <translation>Arrière-plan</translation>
+    </message>
+    <message>
+        <source>[r, g, b] from 0 to 1</source>
+        <translation>[r, g, b] de 0 à 1</translation>
+    </message>
+    <message>
+        <source>Supersample</source>
+        <translation>Suréchantillonnage</translation>
+    </message>
+    <message>
+        <source>Filter radius (pixels)</source>
+        <translation>Rayon du filtre (pixels)</translation>
+    </message>
+    <message>
+        <source>Estimator radius</source>
+        <translation>Rayon de l&apos;estimateur</translation>
+    </message>
+    <message>
+        <source>Estimator minimum</source>
+        <translation>Minimum de l&apos;estimateur</translation>
+    </message>
+    <message>
+        <source>Estimator curve</source>
+        <translation>Courbe de l&apos;estimateur</translation>
+    </message>
+    <message>
+        <source>Fractal flame</source>
+        <translation>Flamme fractale</translation>
+    </message>
+    <message>
+        <source>expected 256 colours: a string of hexadecimal rrggbb, or [[r, g, b], ...] from 0 to 1</source>
+        <translation>256 couleurs attendues : une chaîne de rrggbb hexadécimaux, ou [[r, g, b], ...] de 0 à 1</translation>
+    </message>
+    <message>
+        <source>a channel must be from 0 to 1</source>
+        <translation>un canal doit être compris entre 0 et 1</translation>
     </message>
 </context>
 <context>
@@ -2202,6 +2588,10 @@
         <source>the IFS of %1 acts in a space of dimension %2 that is drawn through a projection (000 §2), and its maps do not act on the drawn coordinates alone: %3 holds maps of the plane or of space only</source>
         <translation>l&apos;IFS de %1 agit dans un espace de dimension %2 dessiné par une projection (000 §2), et ses applications n&apos;agissent pas sur les seules coordonnées dessinées : %3 ne contient que des applications du plan ou de l&apos;espace</translation>
     </message>
+    <message>
+        <source>%1 is a fractal flame: its xforms are not affine maps, and %2 holds affine maps only (export it as a flam3 flame)</source>
+        <translation>%1 est une flamme fractale : ses xforms ne sont pas des applications affines, et %2 ne contient que des applications affines (exportez-la comme flamme flam3)</translation>
+    </message>
 </context>
 <context>
     <name>awb::InsertControlPointCommand</name>
@@ -2325,7 +2715,7 @@
     </message>
     <message>
         <source>Tone</source>
-        <translation>Rendu tonal</translation>
+        <translation>Tonalité</translation>
     </message>
     <message>
         <source>Hits: every pixel the attractor reaches (the papers&apos; look); density: the invariant measure by log density; automatic: hits for deterministic, density for random iteration</source>
@@ -2631,6 +3021,10 @@ Retrancher la différence %7 du coefficient de la colonne %8 (%9 → %10) pour q
     <message>
         <source>%1: polygon after %2 steps</source>
         <translation>%1&#xa0;: polygone après %2 étapes</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; is drawn by random iteration only (its maps are not affine): give --samples, not --depth</source>
+        <translation>l&apos;élément « %1 » ne se dessine que par itération aléatoire (ses applications ne sont pas affines) : donnez --samples, pas --depth</translation>
     </message>
 </context>
 <context>
@@ -3740,6 +4134,10 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>wrote %1 points, expected %2</source>
         <translation>%1 points écrits, %2 attendus</translation>
+    </message>
+    <message>
+        <source>this item is a fractal flame: its points come from its own chaos game, not from iterating maps (render its picture instead)</source>
+        <translation>cet élément est une flamme fractale : ses points proviennent de son propre jeu du chaos, et non de l&apos;itération d&apos;applications (faites plutôt le rendu de son image)</translation>
     </message>
 </context>
 <context>

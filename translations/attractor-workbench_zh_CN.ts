@@ -1877,27 +1877,27 @@
     <name>awb::FlameExchange</name>
     <message>
         <source>the XML is malformed: %1</source>
-        <translation>XML 格式错误：%1</translation>
+        <translation type="vanished">XML 格式错误：%1</translation>
     </message>
     <message>
         <source>%1: the file holds no &lt;flame&gt; element</source>
-        <translation>%1：文件中没有 &lt;flame&gt; 元素</translation>
+        <translation type="vanished">%1：文件中没有 &lt;flame&gt; 元素</translation>
     </message>
     <message>
         <source>%1, line %2, column %3: </source>
-        <translation>%1，第 %2 行，第 %3 列：</translation>
+        <translation>%1，第 %2 行，第 %3 列: </translation>
     </message>
     <message>
         <source>flame %1</source>
-        <translation>火焰分形 %1</translation>
+        <translation>火焰 %1</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;, final xform</source>
-        <translation>火焰分形“%1”，最终 xform</translation>
+        <translation type="vanished">火焰分形“%1”，最终 xform</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;, xform %2</source>
-        <translation>火焰分形“%1”，xform %2</translation>
+        <translation type="vanished">火焰分形“%1”，xform %2</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: &lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number</source>
@@ -1905,77 +1905,77 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;: element &lt;%2&gt; ignored</source>
-        <translation>火焰分形“%1”：已忽略元素 &lt;%2&gt;</translation>
+        <translation type="vanished">火焰分形“%1”：已忽略元素 &lt;%2&gt;</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos; has no xform</source>
-        <translation>火焰分形“%1”没有 xform</translation>
+        <translation type="vanished">火焰分形“%1”没有 xform</translation>
     </message>
     <message>
         <source>%1=&quot;%2&quot; must be 6 finite numbers</source>
-        <translation>%1=&quot;%2&quot; 必须是 6 个有限数值</translation>
+        <translation type="vanished">%1=&quot;%2&quot; 必须是 6 个有限数值</translation>
     </message>
     <message>
         <source>weight=&quot;%1&quot; must be a finite number &gt;= 0</source>
-        <translation>weight=&quot;%1&quot; 必须是 &gt;= 0 的有限数值</translation>
+        <translation type="vanished">weight=&quot;%1&quot; 必须是 &gt;= 0 的有限数值</translation>
     </message>
     <message>
         <source>var1=&quot;%1&quot; names no variation</source>
-        <translation>var1=&quot;%1&quot; 不是任何变体的名称</translation>
+        <translation type="vanished">var1=&quot;%1&quot; 不是任何变体的名称</translation>
     </message>
     <message>
         <source>variation %1=&quot;%2&quot; is not a number</source>
-        <translation>变体 %1=&quot;%2&quot; 不是数值</translation>
+        <translation type="vanished">变体 %1=&quot;%2&quot; 不是数值</translation>
     </message>
     <message>
         <source>: opacity %1 not kept (every map is drawn)</source>
-        <translation>：未保留 opacity %1（所有映射均会绘制）</translation>
+        <translation type="vanished">：未保留 opacity %1（所有映射均会绘制）</translation>
     </message>
     <message>
         <source>: attribute %1=&quot;%2&quot; ignored</source>
-        <translation>：已忽略属性 %1=&quot;%2&quot;</translation>
+        <translation type="vanished">：已忽略属性 %1=&quot;%2&quot;</translation>
     </message>
     <message numerus="yes">
         <source>: variation %1 dropped (non-linear)</source>
-        <translation>
+        <translation type="vanished">
             <numerusform>：已舍弃变体 %1（非线性）</numerusform>
         </translation>
     </message>
     <message>
         <source>; its affine part kept as a linear map</source>
-        <translation>；其仿射部分保留为线性映射</translation>
+        <translation type="vanished">；其仿射部分保留为线性映射</translation>
     </message>
     <message>
         <source>: no variation given; taken as linear</source>
-        <translation>：未给出变体；按 linear 处理</translation>
+        <translation type="vanished">：未给出变体；按 linear 处理</translation>
     </message>
     <message>
         <source>%1: element &lt;%2&gt; ignored (animation)</source>
-        <translation>%1：已忽略元素 &lt;%2&gt;（动画）</translation>
+        <translation type="vanished">%1：已忽略元素 &lt;%2&gt;（动画）</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: a &lt;color&gt; needs index=&quot;0..255&quot; and rgb=&quot;r g b&quot;</source>
-        <translation>火焰分形“%1”：&lt;color&gt; 需要 index=&quot;0..255&quot; 和 rgb=&quot;r g b&quot;</translation>
+        <translation type="vanished">火焰分形“%1”：&lt;color&gt; 需要 index=&quot;0..255&quot; 和 rgb=&quot;r g b&quot;</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: the palette&apos;s hex digits are not whole colours of %2 digits</source>
-        <translation>火焰分形“%1”：调色板的十六进制数字不能分成完整的 %2 位颜色值</translation>
+        <translation type="vanished">火焰分形“%1”：调色板的十六进制数字不能分成完整的 %2 位颜色值</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: palette entry %2 is not hexadecimal</source>
-        <translation>火焰分形“%1”：调色板条目 %2 不是十六进制</translation>
+        <translation type="vanished">火焰分形“%1”：调色板条目 %2 不是十六进制</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: the final xform is not invertible (determinant %2): dropped</source>
-        <translation>火焰分形“%1”：最终 xform 不可逆（行列式 %2）：已舍弃</translation>
+        <translation type="vanished">火焰分形“%1”：最终 xform 不可逆（行列式 %2）：已舍弃</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its xaos (chaos) rows forbid some transitions; imported as the plain IFS of its maps, whose attractor contains the flame&apos;s</source>
-        <translation>火焰分形“%1”：其 xaos（chaos）行禁止了部分转移；已按其映射构成的普通 IFS 导入，该 IFS 的吸引子包含原火焰分形的吸引子</translation>
+        <translation type="vanished">火焰分形“%1”：其 xaos（chaos）行禁止了部分转移；已按其映射构成的普通 IFS 导入，该 IFS 的吸引子包含原火焰分形的吸引子</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its xaos (chaos) weights are dropped: the attractor is the same, its measure differs</source>
-        <translation>火焰分形“%1”：已舍弃其 xaos（chaos）权重：吸引子不变，但其测度不同</translation>
+        <translation type="vanished">火焰分形“%1”：已舍弃其 xaos（chaos）权重：吸引子不变，但其测度不同</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: every xform has weight 0</source>
@@ -1987,7 +1987,7 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;: %2</source>
-        <translation>火焰分形“%1”：%2</translation>
+        <translation>火焰“%1”：%2</translation>
     </message>
     <message>
         <source>%1: the file is larger than %2 MB</source>
@@ -2007,7 +2007,7 @@
     </message>
     <message>
         <source>: no weight given; taken as 0, as flam3 does (the map is never chosen)</source>
-        <translation>：未给出权重；按 flam3 的做法取 0（该映射从不被选中）</translation>
+        <translation type="vanished">：未给出权重；按 flam3 的做法取 0（该映射从不被选中）</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its maps do not contract, not even on average (Lyapunov exponent %2 &gt;= 0), so it has no attractor; flam3 draws it only by discarding the points that escape</source>
@@ -2015,11 +2015,11 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;: more than %2 xforms (at most %2 maps are supported)</source>
-        <translation>火焰“%1”：xform 超过 %2 个（最多支持 %2 个映射）</translation>
+        <translation type="vanished">火焰“%1”：xform 超过 %2 个（最多支持 %2 个映射）</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: &lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number from %2 to %3, got &apos;%4&apos;</source>
-        <translation>火焰“%1”：&lt;symmetry&gt; 需要 kind=&quot;k&quot;，取值为 %2 到 %3 的整数，实际为“%4”</translation>
+        <translation type="vanished">火焰“%1”：&lt;symmetry&gt; 需要 kind=&quot;k&quot;，取值为 %2 到 %3 的整数，实际为“%4”</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its maps do not contract, not even on average (the Lyapunov exponent of their products, %2, is not clearly negative: not below -0.001), so it may have no attractor; flam3 draws it only by discarding the points that escape</source>
@@ -2032,6 +2032,392 @@
     <message>
         <source>%1 is an IFS of space: a flam3 flame holds maps of the plane (export it as a Fractint .ifs entry)</source>
         <translation>%1 是空间中的 IFS：flam3 火焰只包含平面映射（请导出为 Fractint .ifs 条目）</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FlameFile</name>
+    <message>
+        <source>the XML is malformed: %1</source>
+        <translation>XML 格式错误：%1</translation>
+    </message>
+    <message>
+        <source>%1: the file holds no &lt;flame&gt; element</source>
+        <translation>%1：文件中没有 &lt;flame&gt; 元素</translation>
+    </message>
+    <message>
+        <source>%1, line %2, column %3: </source>
+        <translation>%1，第 %2 行，第 %3 列: </translation>
+    </message>
+    <message>
+        <source>flame %1</source>
+        <translation>火焰 %1</translation>
+    </message>
+    <message>
+        <source>a second &lt;finalxform&gt; (flam3 allows one)</source>
+        <translation>第二个 &lt;finalxform&gt;（flam3 只允许一个）</translation>
+    </message>
+    <message>
+        <source>more than %1 xforms</source>
+        <translation>超过 %1 个 xform</translation>
+    </message>
+    <message>
+        <source>final xform</source>
+        <translation>最终 xform</translation>
+    </message>
+    <message>
+        <source>xform %1</source>
+        <translation>xform %1</translation>
+    </message>
+    <message>
+        <source>element &lt;%1&gt; ignored</source>
+        <translation>已忽略元素 &lt;%1&gt;</translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: %2</source>
+        <translation>火焰“%1”：%2</translation>
+    </message>
+    <message>
+        <source>xform %1: its xaos row has %2 entries for %3 xforms; the extra ones are ignored, as flam3 does</source>
+        <translation>xform %1：其 xaos 行有 %2 项，而 xform 只有 %3 个；多余的项被忽略，与 flam3 相同</translation>
+    </message>
+    <message>
+        <source>%1=&quot;%2&quot; is not a finite number</source>
+        <translation>%1=&quot;%2&quot; 不是有限数</translation>
+    </message>
+    <message>
+        <source>%1=&quot;%2&quot; must be %3 finite numbers</source>
+        <translation>%1=&quot;%2&quot; 必须是 %3 个有限数</translation>
+    </message>
+    <message>
+        <source>size=&quot;%1&quot; must be two whole numbers from 1 to 32768</source>
+        <translation>size=&quot;%1&quot; 必须是 1 到 32768 之间的两个整数</translation>
+    </message>
+    <message>
+        <source>scale=&quot;%1&quot; must be positive</source>
+        <translation>scale=&quot;%1&quot; 必须为正数</translation>
+    </message>
+    <message>
+        <source>zoom=&quot;%1&quot; is beyond +-50 (a factor 2^zoom)</source>
+        <translation>zoom=&quot;%1&quot; 超出 +-50（系数为 2^zoom）</translation>
+    </message>
+    <message>
+        <source>quality=&quot;%1&quot; must be positive</source>
+        <translation>quality=&quot;%1&quot; 必须为正数</translation>
+    </message>
+    <message>
+        <source>%1=&quot;%2&quot; must be a whole number from 1 to 64</source>
+        <translation>%1=&quot;%2&quot; 必须是 1 到 64 之间的整数</translation>
+    </message>
+    <message>
+        <source>attributes not kept: %1</source>
+        <translation>未保留的属性：%1</translation>
+    </message>
+    <message>
+        <source>weight=&quot;%1&quot; is negative</source>
+        <translation>weight=&quot;%1&quot; 为负数</translation>
+    </message>
+    <message>
+        <source>color=&quot;%1&quot; must be one or two finite numbers</source>
+        <translation>color=&quot;%1&quot; 必须是一个或两个有限数</translation>
+    </message>
+    <message>
+        <source>chaos=&quot;%1&quot; must be at most %2 finite numbers</source>
+        <translation>chaos=&quot;%1&quot; 最多只能有 %2 个有限数</translation>
+    </message>
+    <message>
+        <source>chaos=&quot;%1&quot; has a negative entry</source>
+        <translation>chaos=&quot;%1&quot; 含有负数项</translation>
+    </message>
+    <message>
+        <source>%1=&quot;%2&quot; must be 6 finite numbers</source>
+        <translation>%1=&quot;%2&quot; 必须是 6 个有限数</translation>
+    </message>
+    <message>
+        <source>var1=&quot;%1&quot; names no variation</source>
+        <translation>var1=&quot;%1&quot; 不对应任何变体</translation>
+    </message>
+    <message>
+        <source>var=&quot;...&quot; must be %1 finite numbers, one per variation</source>
+        <translation>var=&quot;...&quot; 必须是 %1 个有限数，每个变体一个</translation>
+    </message>
+    <message>
+        <source>: a final xform has no weight; weight=&quot;%1&quot; ignored</source>
+        <translation>: 最终 xform 没有权重；已忽略 weight=&quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>: no weight given; taken as 0, as flam3 does (the xform is never chosen)</source>
+        <translation>: 未给出权重；与 flam3 相同，按 0 处理（该 xform 永远不会被选中）</translation>
+    </message>
+    <message>
+        <source>: no variation given: as in flam3, every point goes to post(0)</source>
+        <translation>: 未给出变体：与 flam3 相同，每个点都映射到 post(0)</translation>
+    </message>
+    <message>
+        <source>: attributes flam3 does not draw, ignored: %1</source>
+        <translation>: flam3 不绘制的属性，已忽略：%1</translation>
+    </message>
+    <message>
+        <source>: animation attributes not kept: %1</source>
+        <translation>: 未保留的动画属性：%1</translation>
+    </message>
+    <message>
+        <source>: element &lt;%1&gt; ignored (animation)</source>
+        <translation>: 已忽略元素 &lt;%1&gt;（动画）</translation>
+    </message>
+    <message>
+        <source>a &lt;color&gt; needs index=&quot;0..255&quot; and rgb=&quot;r g b&quot;</source>
+        <translation>&lt;color&gt; 需要 index=&quot;0..255&quot; 和 rgb=&quot;r g b&quot;</translation>
+    </message>
+    <message>
+        <source>a palette of flam3&apos;s palette file (index0) is not kept</source>
+        <translation>不保留来自 flam3 调色板文件的调色板（index0）</translation>
+    </message>
+    <message>
+        <source>the palette&apos;s hex digits are not at most 256 colours of %1 digits</source>
+        <translation>调色板的十六进制数字不构成至多 256 种各 %1 位的颜色</translation>
+    </message>
+    <message>
+        <source>palette entry %1 is not hexadecimal</source>
+        <translation>调色板第 %1 项不是十六进制</translation>
+    </message>
+    <message>
+        <source>&lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number from %1 to %2</source>
+        <translation type="vanished">&lt;symmetry&gt; 需要 kind=&quot;k&quot;，为 %1 到 %2 之间的整数</translation>
+    </message>
+    <message>
+        <source>&lt;symmetry kind=&quot;%1&quot;&gt; makes more than %2 xforms</source>
+        <translation>&lt;symmetry kind=&quot;%1&quot;&gt; 生成超过 %2 个 xform</translation>
+    </message>
+    <message>
+        <source>&lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number from %1 to %2, got &apos;%3&apos;</source>
+        <translation>&lt;symmetry&gt; 需要 kind=&quot;k&quot;，为 %1 到 %2 之间的整数，实际为“%3”</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FlameItem</name>
+    <message>
+        <source>expected 6 numbers in flam3&apos;s order [a, d, b, e, c, f]: x&apos; = a x + b y + c, y&apos; = d x + e y + f</source>
+        <translation>应为按 flam3 顺序 [a, d, b, e, c, f] 排列的 6 个数：x&apos; = a x + b y + c, y&apos; = d x + e y + f</translation>
+    </message>
+    <message>
+        <source>expected a non-empty array of xforms</source>
+        <translation>应为非空的 xform 数组</translation>
+    </message>
+    <message>
+        <source>%1 xforms: at most %2 are drawn</source>
+        <translation>%1 个 xform：最多绘制 %2 个</translation>
+    </message>
+    <message>
+        <source>expected 1536 hexadecimal digits (256 colours rrggbb), got %1</source>
+        <translation>应为 1536 个十六进制数字（256 种颜色 rrggbb），实际为 %1 个</translation>
+    </message>
+    <message>
+        <source>colour %1 is not hexadecimal</source>
+        <translation>颜色 %1 不是十六进制</translation>
+    </message>
+    <message>
+        <source>expected 256 colours: a string of hexadecimal rrggbb, or [[r, g, b], ...] from 0 to 255</source>
+        <translation type="vanished">应为 256 种颜色：十六进制 rrggbb 字符串，或取值 0 到 255 的 [[r, g, b], ...]</translation>
+    </message>
+    <message>
+        <source>expected [r, g, b]</source>
+        <translation>应为 [r, g, b]</translation>
+    </message>
+    <message>
+        <source>a channel must be from 0 to 255</source>
+        <translation type="vanished">通道值必须在 0 到 255 之间</translation>
+    </message>
+    <message>
+        <source>expected an xform {&quot;coefs&quot;: [...], &quot;variations&quot;: {...}, &quot;weight&quot;: w, ...}</source>
+        <translation>应为 xform {&quot;coefs&quot;: [...], &quot;variations&quot;: {...}, &quot;weight&quot;: w, ...}</translation>
+    </message>
+    <message>
+        <source>a weight must not be negative</source>
+        <translation>权重不能为负</translation>
+    </message>
+    <message>
+        <source>flam3 has no variation of this name</source>
+        <translation>flam3 没有此名称的变体</translation>
+    </message>
+    <message>
+        <source>no variation of flam3 has this parameter</source>
+        <translation>flam3 的任何变体都没有此参数</translation>
+    </message>
+    <message>
+        <source>a xaos entry must not be negative</source>
+        <translation>xaos 项不能为负</translation>
+    </message>
+    <message>
+        <source>not a field of an xform (coefs, post, variations, parameters, weight, color, color_speed, opacity, animate, chaos, name)</source>
+        <translation>不是 xform 的字段（coefs, post, variations, parameters, weight, color, color_speed, opacity, animate, chaos, name）</translation>
+    </message>
+    <message>
+        <source>Flame</source>
+        <translation>火焰</translation>
+    </message>
+    <message>
+        <source>the scale (pixels per unit) must be positive</source>
+        <translation>比例（每单位像素数）必须为正数</translation>
+    </message>
+    <message>
+        <source>a flame is drawn by random iteration only (its maps are not affine): choose random iteration</source>
+        <translation>火焰只能通过随机迭代绘制（其映射不是仿射的）：请选择随机迭代</translation>
+    </message>
+    <message>
+        <source>a flame&apos;s xforms carry their own weights (&quot;xforms&quot;): leave the algorithm&apos;s probabilities empty</source>
+        <translation>火焰的 xform 自带权重（&quot;xforms&quot;）：请将算法的概率留空</translation>
+    </message>
+    <message>
+        <source>a flame has no subdivision matrices: its maps are not affine</source>
+        <translation>火焰没有细分矩阵：其映射不是仿射的</translation>
+    </message>
+    <message>
+        <source>a fractal flame, drawn by its own chaos game as flam3 draws it; the spectra are those of the xforms&apos; affine (pre) maps, y up</source>
+        <translation>分形火焰，按 flam3 的方式由其自身的混沌游戏绘制；谱为各 xform 的仿射（pre）映射的谱，y 轴向上</translation>
+    </message>
+    <message>
+        <source>Change flame of %1</source>
+        <translation>更改 %1 的火焰</translation>
+    </message>
+    <message>
+        <source>Xforms</source>
+        <translation>Xform</translation>
+    </message>
+    <message>
+        <source>flam3&apos;s xforms: {&quot;coefs&quot;: [a, d, b, e, c, f], &quot;variations&quot;: {&quot;linear&quot;: 1, ...}, &quot;weight&quot;: w, &quot;color&quot;: c, ...} each</source>
+        <translation>flam3 的 xform：每个为 {&quot;coefs&quot;: [a, d, b, e, c, f], &quot;variations&quot;: {&quot;linear&quot;: 1, ...}, &quot;weight&quot;: w, &quot;color&quot;: c, ...}</translation>
+    </message>
+    <message>
+        <source>Final xform</source>
+        <translation>最终 xform</translation>
+    </message>
+    <message>
+        <source>Drawn on every point without moving the orbit; null: none</source>
+        <translation>作用于每个绘制的点，但不移动轨道；null：无</translation>
+    </message>
+    <message>
+        <source>Palette</source>
+        <translation>调色板</translation>
+    </message>
+    <message>
+        <source>256 colours, indexed by the colour coordinate</source>
+        <translation>256 种颜色，按颜色坐标索引</translation>
+    </message>
+    <message>
+        <source>Centre x</source>
+        <translation>中心 x</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>相机</translation>
+    </message>
+    <message>
+        <source>Centre y</source>
+        <translation>中心 y</translation>
+    </message>
+    <message>
+        <source>flam3&apos;s: y grows down the picture</source>
+        <translation>flam3 的约定：y 向图像下方增大</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>比例</translation>
+    </message>
+    <message>
+        <source>Pixels per unit (times 2^zoom)</source>
+        <translation>每单位像素数（乘以 2^zoom）</translation>
+    </message>
+    <message>
+        <source>Rotation (degrees)</source>
+        <translation>旋转（度）</translation>
+    </message>
+    <message>
+        <source>Zoom</source>
+        <translation>缩放</translation>
+    </message>
+    <message>
+        <source>Width (pixels)</source>
+        <translation>宽度（像素）</translation>
+    </message>
+    <message>
+        <source>Height (pixels)</source>
+        <translation>高度（像素）</translation>
+    </message>
+    <message>
+        <source>Quality (samples per pixel)</source>
+        <translation>质量（每像素采样数）</translation>
+    </message>
+    <message>
+        <source>Tone</source>
+        <translation>色调</translation>
+    </message>
+    <message>
+        <source>Brightness</source>
+        <translation>亮度</translation>
+    </message>
+    <message>
+        <source>Gamma</source>
+        <translation>伽马</translation>
+    </message>
+    <message>
+        <source>Gamma threshold</source>
+        <translation>伽马阈值</translation>
+    </message>
+    <message>
+        <source>Vibrancy</source>
+        <translation>鲜艳度</translation>
+    </message>
+    <message>
+        <source>Highlight power</source>
+        <translation>高光强度</translation>
+    </message>
+    <message>
+        <source>flam3&apos;s: -1 leaves the highlights as they are</source>
+        <translation>flam3 的约定：-1 表示保持高光不变</translation>
+    </message>
+    <message>
+        <source>expected [r, g, b] from 0 to 1</source>
+        <translation>应为取值 0 到 1 的 [r, g, b]</translation>
+    </message>
+    <message>
+        <source>Background</source>
+        <translation>背景</translation>
+    </message>
+    <message>
+        <source>[r, g, b] from 0 to 1</source>
+        <translation>[r, g, b]，取值 0 到 1</translation>
+    </message>
+    <message>
+        <source>Supersample</source>
+        <translation>超采样</translation>
+    </message>
+    <message>
+        <source>Filter radius (pixels)</source>
+        <translation>滤波半径（像素）</translation>
+    </message>
+    <message>
+        <source>Estimator radius</source>
+        <translation>估计器半径</translation>
+    </message>
+    <message>
+        <source>Estimator minimum</source>
+        <translation>估计器最小值</translation>
+    </message>
+    <message>
+        <source>Estimator curve</source>
+        <translation>估计器曲线</translation>
+    </message>
+    <message>
+        <source>Fractal flame</source>
+        <translation>分形火焰</translation>
+    </message>
+    <message>
+        <source>expected 256 colours: a string of hexadecimal rrggbb, or [[r, g, b], ...] from 0 to 1</source>
+        <translation>应为 256 种颜色：十六进制 rrggbb 字符串，或取值 0 到 1 的 [[r, g, b], ...]</translation>
+    </message>
+    <message>
+        <source>a channel must be from 0 to 1</source>
+        <translation>通道值必须在 0 到 1 之间</translation>
     </message>
 </context>
 <context>
@@ -2199,6 +2585,10 @@
         <source>the IFS of %1 acts in a space of dimension %2 that is drawn through a projection (000 §2), and its maps do not act on the drawn coordinates alone: %3 holds maps of the plane or of space only</source>
         <translation>%1 的 IFS 作用于维数为 %2 的空间，经投影绘制（000 §2），且其映射并非只作用于所绘坐标：%3 只包含平面或空间的映射</translation>
     </message>
+    <message>
+        <source>%1 is a fractal flame: its xforms are not affine maps, and %2 holds affine maps only (export it as a flam3 flame)</source>
+        <translation>%1 是分形火焰：其 xform 不是仿射映射，而 %2 只能保存仿射映射（请将其导出为 flam3 火焰）</translation>
+    </message>
 </context>
 <context>
     <name>awb::InsertControlPointCommand</name>
@@ -2330,7 +2720,7 @@
     </message>
     <message>
         <source>Gamma</source>
-        <translation>Gamma</translation>
+        <translation>伽马</translation>
     </message>
     <message>
         <source>Gamma of the density tone</source>
@@ -2628,6 +3018,10 @@ Take the difference %7 from the entry in column %8 (%9 → %10) so that the row 
     <message>
         <source>%1: polygon after %2 steps</source>
         <translation>%1：%2 步之后的多边形</translation>
+    </message>
+    <message>
+        <source>item &apos;%1&apos; is drawn by random iteration only (its maps are not affine): give --samples, not --depth</source>
+        <translation>项目“%1”只能通过随机迭代绘制（其映射不是仿射的）：请使用 --samples，而不是 --depth</translation>
     </message>
 </context>
 <context>
@@ -3733,6 +4127,10 @@ It was kept as %2.</source>
     <message>
         <source>wrote %1 points, expected %2</source>
         <translation>写入了 %1 个点，应为 %2 个</translation>
+    </message>
+    <message>
+        <source>this item is a fractal flame: its points come from its own chaos game, not from iterating maps (render its picture instead)</source>
+        <translation>此项目是分形火焰：其点来自自身的混沌游戏，而不是迭代映射（请改为渲染其图像）</translation>
     </message>
 </context>
 <context>

@@ -15,6 +15,8 @@
 #include "model/ItemAddress.h"
 #include "model/IfsExchange.h"
 #include "model/FlameExchange.h"
+#include "model/FlameFile.h"
+#include "model/FlameItem.h"
 #include "cli/FigureOptions.h"
 #include "model/NamedMatrix.h"
 #include "model/NumberFormat.h"
@@ -138,6 +140,12 @@ int exportData(const QStringList &args)
             if (!entry)
                 throw Failure{why};
             const QByteArray text = QByteArray::fromStdString(fractintEntryText(*entry));
+            if (file.write(text) != text.size())
+                throw Failure{CliTr::tr("cannot write %1: %2").arg(outFile, file.errorString())};
+        } else if (const auto *flameItem = qobject_cast<const FlameItem *>(item);
+                   flameItem && format == "flame") {
+            // The flame itself, every field flam3 draws (model/FlameFile.h).
+            const QByteArray text = flameFileText({flameItem->namedFlame()});
             if (file.write(text) != text.size())
                 throw Failure{CliTr::tr("cannot write %1: %2").arg(outFile, file.errorString())};
         } else if (format == "flame") {

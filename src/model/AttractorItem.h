@@ -6,6 +6,7 @@
 
 #include "core/ifs/Attractor.h"
 #include "core/ifs/Ifs.h"
+#include "core/render/CustomChaos.h"
 #include "model/Item.h"
 
 #include <functional>
@@ -57,6 +58,10 @@ struct DerivedIfs {
     // game to the 3D view): F^depth(start) is still awb::iterate(ifs, ...), which `points` and
     // the point exports take, so that their --start and --depth mean what they say.
     bool iterateDrawsIfs = false;
+    // Items whose random iteration is a chaos game of their own (a fractal flame's non-affine
+    // xforms): renderers play it in random mode instead of the engine's on `ifs`, which then
+    // holds only what is analysed (the affine parts).
+    CustomChaos chaos;
     // Items that start from the limit positions of their vertices (mesh items, start set kind
     // "vertex-limits"): `iterate` takes an empty start set as that start.
     bool vertexLimitStart = false;

@@ -3,15 +3,16 @@
 #include "core/Messages.h"
 #include "core/analysis/Spectrum.h"
 #include "core/ifs/Attractor.h"
+#include "core/flame/FlameChaos.h"
 #include "model/AttractorItem.h"
+#include "model/FlameFile.h"
+#include "model/FlameItem.h"
 #include "model/Item.h"
 #include "model/ProjectIO.h"
 
 #include <QColor>
 #include <QFile>
 #include <QFileInfo>
-#include <QRegularExpression>
-#include <QXmlStreamReader>
 
 #include <Eigen/LU>
 
@@ -29,55 +30,12 @@ struct FlameTr {
     Q_DECLARE_TR_FUNCTIONS(awb::FlameExchange)
 };
 
-// flam3 3.1.1's variations (variations.c, flam3_variation_names), in its order: the index of
-// the old `var` and `var1` attributes.
-const QStringList &variationNames()
+// Row convention (Ifs.h: x |-> x A + b) of a flame's affine map, in the flame's orientation.
+AffineMap rowAffine(const flame::Affine2 &m)
 {
-    static const QStringList names = QStringLiteral(
-        "linear sinusoidal spherical swirl horseshoe polar handkerchief heart disc spiral "
-        "hyperbolic diamond ex julia bent waves fisheye popcorn exponential power cosine rings "
-        "fan blob pdj fan2 rings2 eyefish bubble cylinder perspective noise julian juliascope "
-        "blur gaussian_blur radial_blur pie ngon curl rectangles arch tangent square rays "
-        "blade secant2 twintrian cross disc2 super_shape flower conic parabola bent2 bipolar "
-        "boarders butterfly cell cpow curve edisc elliptic escher foci lazysusan loonie "
-        "pre_blur modulus oscilloscope polar2 popcorn2 scry separation split splits stripes "
-        "wedge wedge_julia wedge_sph whorl waves2 exp log sin cos tan sec csc cot sinh cosh "
-        "tanh sech csch coth auger flux mobius").split(QLatin1Char(' '));
-    return names;
-}
-
-// Attributes of an xform that do not change its map: colour, animation, the plot switch.
-bool drawingAttribute(QStringView name)
-{
-    static const QStringList names{"color",  "color_speed", "symmetry",         "animate",
-                                   "name",   "var_color",   "motion_frequency", "motion_function",
-                                   "opacity", "plotmode"};
-    return names.contains(name);
-}
-
-// Exactly `n` finite numbers separated by whitespace.
-bool readNumbers(QStringView text, int n, double *out)
-{
-    const auto parts = text.split(QLatin1Char(' '), Qt::SkipEmptyParts);
-    if (parts.size() != n)
-        return false;
-    for (int i = 0; i < n; ++i) {
-        bool ok = false;
-        out[i] = parts[i].trimmed().toDouble(&ok);
-        if (!ok || !std::isfinite(out[i]))
-            return false;
-    }
-    return true;
-}
-
-// Row convention (Ifs.h: x |-> x A + b) of flam3's c[3][2]: rows x, y, 1.
-AffineMap affineOf(const double c[6])
-{
-    AffineMap f;
-    f.A.resize(2, 2);
-    f.A << c[0], c[1], c[2], c[3];
-    f.b.resize(2);
-    f.b << c[4], c[5];
+    AffineMap f{Mat(2, 2), RowVec(2)};
+    f.A << m.a, m.d, m.b, m.e;
+    f.b << m.c, m.f;
     return f;
 }
 
@@ -100,425 +58,101 @@ AffineMap composed(const AffineMap &pre, double w, const AffineMap &post)
     return f;
 }
 
-struct Xform {
-    AffineMap map;  // in the flame's orientation
-    double weight = 0;
-    double colour = 0;
-    std::vector<double> chaos;
-    qint64 line = 0, column = 0;
-};
+// An xform that is an affine map: the linear variation alone, every point it gives drawn.
+bool affineXform(const flame::FlameXform &x)
+{
+    return x.variations.size() == 1 && x.variations.front().id == 0 && x.opacity == 1;
+}
 
-class FlameReader {
-public:
-    FlameReader(const QByteArray &text, const QString &fileName)
-        : m_xml(text), m_file(QFileInfo(fileName).fileName())
-    {}
+AffineMap xformMap(const flame::FlameXform &x)
+{
+    return composed(rowAffine(x.pre), x.variations.front().weight, rowAffine(x.post));
+}
 
-    ImportedItems read()
-    {
-        int index = 0;
-        while (!m_xml.atEnd()) {
-            m_xml.readNext();
-            if (m_xml.isStartElement() && m_xml.name() == QLatin1String("flame"))
-                readFlame(++index);
-        }
-        if (m_xml.hasError())
-            m_out.problems << place(m_xml.lineNumber(), m_xml.columnNumber())
-                                  + FlameTr::tr("the XML is malformed: %1")
-                                        .arg(m_xml.errorString());
-        else if (index == 0)
-            m_out.problems << FlameTr::tr("%1: the file holds no <flame> element").arg(m_file);
-        return std::move(m_out);
-    }
-
-private:
-    QString place(qint64 line, qint64 column) const
-    {
-        return FlameTr::tr("%1, line %2, column %3: ").arg(m_file).arg(line).arg(column);
-    }
-    QString here() const { return place(m_xml.lineNumber(), m_xml.columnNumber()); }
-
-    // Reads one <flame> to its end; a malformed part leaves the whole flame out.
-    void readFlame(int index)
-    {
-        const qint64 line = m_xml.lineNumber(), column = m_xml.columnNumber();
-        QString name = m_xml.attributes().value(QLatin1String("name")).toString().trimmed();
-        if (name.isEmpty())
-            name = FlameTr::tr("flame %1").arg(index);
-        m_flame = name;
-        std::vector<Xform> xforms;
-        std::optional<Xform> final;
-        std::map<int, QColor> palette;
-        QString problem;
-        QStringList warnings;
-        int written = 0;  // the <xform> elements so far (symmetry adds others)
-        while (m_xml.readNextStartElement()) {
-            const QStringView tag = m_xml.name();
-            if (tag == QLatin1String("xform") || tag == QLatin1String("finalxform")) {
-                const bool isFinal = tag == QLatin1String("finalxform");
-                Xform x;
-                const QString where =
-                    isFinal ? FlameTr::tr("flame '%1', final xform").arg(name)
-                            : FlameTr::tr("flame '%1', xform %2").arg(name).arg(++written);
-                if (!readXform(x, where, isFinal, &problem, &warnings))
-                    break;
-                if (isFinal)
-                    final = x;
-                else
-                    xforms.push_back(x);
-                if (int(xforms.size()) > kMaxMaps) {
-                    problem = here()
-                              + FlameTr::tr("flame '%1': more than %2 xforms (at most %2 maps "
-                                            "are supported)")
-                                    .arg(name)
-                                    .arg(kMaxMaps);
-                    break;
-                }
-            } else if (tag == QLatin1String("color")) {
-                if (!readColour(palette, &problem))
-                    break;
-                m_xml.skipCurrentElement();
-            } else if (tag == QLatin1String("palette") || tag == QLatin1String("colors")) {
-                if (!readPalette(palette, &problem))
-                    break;
-            } else if (tag == QLatin1String("symmetry")) {
-                // flam3's parser adds the symmetry's xforms (flam3_add_symmetry), also to a
-                // file flam3 wrote, which lists them already: its measure, twice the weight.
-                bool ok = false;
-                const int kind = m_xml.attributes().value(QLatin1String("kind")).toInt(&ok);
-                // Range-checked before anything is added: at most |kind| xforms more, within
-                // the engine's limit of maps.
-                if (!ok || kind < -kMaxMaps || kind > kMaxMaps
-                    || int(xforms.size()) + std::abs(kind) > kMaxMaps) {
-                    problem = here()
-                              + FlameTr::tr("flame '%1': <symmetry> needs kind=\"k\", a whole "
-                                            "number from %2 to %3, got '%4'")
-                                    .arg(name)
-                                    .arg(-kMaxMaps)
-                                    .arg(kMaxMaps)
-                                    .arg(m_xml.attributes().value(QLatin1String("kind")));
-                    break;
-                }
-                addSymmetry(xforms, kind, m_xml.lineNumber(), m_xml.columnNumber());
-                m_xml.skipCurrentElement();
-            } else if (tag == QLatin1String("edit")) {
-                m_xml.skipCurrentElement();  // the genome's history: no geometry
-            } else {
-                warnings << here()
-                                + FlameTr::tr("flame '%1': element <%2> ignored")
-                                      .arg(name, tag.toString());
-                m_xml.skipCurrentElement();
-            }
-        }
-        if (m_xml.hasError())
-            return;  // read() names it
-        if (problem.isEmpty() && xforms.empty())
-            problem = place(line, column) + FlameTr::tr("flame '%1' has no xform").arg(name);
-        if (!problem.isEmpty()) {
-            m_out.problems << problem;
-            // The rest of the flame is skipped: its end tag closes it.
-            while (!m_xml.atEnd()
-                   && !(m_xml.isEndElement() && m_xml.name() == QLatin1String("flame")))
-                m_xml.readNext();
-            return;
-        }
-        buildItem(name, xforms, final, palette, warnings, line, column);
-    }
-
-    // flam3 3.1.1's flam3_add_symmetry: kind < 0 adds the reflection x |-> -x first; |kind|
-    // >= 2 the rotations by 2 pi j / |kind|, j = 1 .. |kind| - 1 (cosines and sines rounded
-    // to 6 decimals as flam3 does), each with weight 1.
-    static void addSymmetry(std::vector<Xform> &xforms, int kind, qint64 line, qint64 column)
-    {
-        auto add = [&](double c00, double c01, double colour) {
-            Xform x;
-            const double c[6] = {c00, c01, -c01, c00, 0, 0};
-            x.map = affineOf(c);
-            x.weight = 1;
-            x.colour = colour;
-            x.line = line;
-            x.column = column;
-            xforms.push_back(x);
-        };
-        if (kind == 0 || kind == 1)
-            return;
-        if (kind < 0) {
-            Xform x;
-            const double c[6] = {-1, 0, 0, 1, 0, 0};
-            x.map = affineOf(c);
-            x.weight = 1;
-            x.colour = 1;
-            x.line = line;
-            x.column = column;
-            xforms.push_back(x);
-            kind = -kind;
-        }
-        auto round6 = [](double v) {
-            v *= 1e6;
-            if (v < 0)
-                v -= 1.0;
-            return 1e-6 * double(int(v + 0.5));
-        };
-        const double a = 2 * M_PI / kind;
-        for (int j = 1; j < kind; ++j)
-            add(round6(std::cos(j * a)), round6(std::sin(j * a)),
-                kind < 3 ? 0.0 : (j - 1.0) / (kind - 2.0));
-    }
-
-    bool readXform(Xform &x, const QString &where, bool isFinal, QString *problem,
-                   QStringList *warnings)
-    {
-        x.line = m_xml.lineNumber();
-        x.column = m_xml.columnNumber();
-        const QString at = here();
-        double pre[6] = {1, 0, 0, 1, 0, 0}, post[6] = {1, 0, 0, 1, 0, 0};
-        double linear = 0;
-        bool anyVariation = false;
-        QStringList dropped;
-        std::vector<double> variations;  // the `var` attribute's list
-        // flam3 gives an xform without a weight the weight 0 (initialize_xforms): it is never
-        // chosen. So do we, and say so.
-        x.weight = 0;
-        bool weighted = false;
-        for (const QXmlStreamAttribute &a : m_xml.attributes()) {
-            const QStringView key = a.name();
-            const QString value = a.value().toString().simplified();
-            auto fail = [&](const QString &why) {
-                *problem = at + where + QStringLiteral(": ") + why;
-                return false;
-            };
-            if (key == QLatin1String("coefs") || key == QLatin1String("post")) {
-                if (!readNumbers(value, 6, key == QLatin1String("coefs") ? pre : post))
-                    return fail(FlameTr::tr("%1=\"%2\" must be 6 finite numbers")
-                                    .arg(key.toString(), value));
-            } else if (key == QLatin1String("weight")) {
-                weighted = true;
-                bool ok = false;
-                x.weight = value.toDouble(&ok);
-                if (!ok || !std::isfinite(x.weight) || x.weight < 0)
-                    return fail(FlameTr::tr("weight=\"%1\" must be a finite number >= 0")
-                                    .arg(value));
-            } else if (key == QLatin1String("color")) {
-                x.colour = value.section(QLatin1Char(' '), 0, 0).toDouble();
-            } else if (key == QLatin1String("chaos")) {
-                for (const QString &v : value.split(QLatin1Char(' '), Qt::SkipEmptyParts))
-                    x.chaos.push_back(v.toDouble());
-            } else if (key == QLatin1String("var1")) {
-                const int j = value.toInt();
-                variations.assign(std::size_t(variationNames().size()), 0.0);
-                if (j < 0 || j >= variationNames().size())
-                    return fail(FlameTr::tr("var1=\"%1\" names no variation").arg(value));
-                variations[std::size_t(j)] = 1;
-            } else if (key == QLatin1String("var")) {
-                variations.clear();
-                for (const QString &v : value.split(QLatin1Char(' '), Qt::SkipEmptyParts))
-                    variations.push_back(v.toDouble());
-            } else if (variationNames().contains(key)) {
-                bool ok = false;
-                const double w = value.toDouble(&ok);
-                if (!ok || !std::isfinite(w))
-                    return fail(FlameTr::tr("variation %1=\"%2\" is not a number")
-                                    .arg(key.toString(), value));
-                anyVariation = true;
-                if (key == QLatin1String("linear"))
-                    linear += w;
-                else if (w != 0)
-                    dropped << QStringLiteral("%1 (%2)").arg(key.toString(), value);
-            } else if (drawingAttribute(key)) {
-                if (key == QLatin1String("opacity") && value.toDouble() != 1.0)
-                    *warnings << at + where
-                                     + FlameTr::tr(": opacity %1 not kept (every map is drawn)")
-                                           .arg(value);
-            } else {
-                // A variation's parameter (blob_low, julian_power, ...): part of a dropped
-                // variation, or of none; anything else is named.
-                const int cut = int(key.indexOf(QLatin1Char('_')));
-                bool parameter = false;
-                for (int k = cut; k > 0 && !parameter;
-                     k = int(key.left(k).lastIndexOf(QLatin1Char('_'))))
-                    parameter = variationNames().contains(key.left(k));
-                if (!parameter)
-                    *warnings << at + where
-                                     + FlameTr::tr(": attribute %1=\"%2\" ignored")
-                                           .arg(key.toString(), value);
-            }
-        }
-        for (std::size_t j = 0; j < variations.size() && j < std::size_t(variationNames().size());
-             ++j) {
-            anyVariation = anyVariation || variations[j] != 0;
-            if (j == 0)
-                linear += variations[j];
-            else if (variations[j] != 0)
-                dropped << QStringLiteral("%1 (%2)")
-                               .arg(variationNames()[int(j)])
-                               .arg(variations[j]);
-        }
-        if (!weighted && !isFinal)
-            *warnings << at + where
-                             + FlameTr::tr(": no weight given; taken as 0, as flam3 does (the "
-                                           "map is never chosen)");
-        if (!dropped.isEmpty())
-            *warnings << at + where
-                             + FlameTr::tr(": variation %1 dropped (non-linear)", nullptr,
-                                           int(dropped.size()))
-                                   .arg(dropped.join(QStringLiteral(", ")))
-                             + (linear == 0 ? FlameTr::tr("; its affine part kept as a linear map")
-                                            : QString());
-        else if (!anyVariation)
-            *warnings << at + where + FlameTr::tr(": no variation given; taken as linear");
-        if (linear == 0)
-            linear = 1;
-        x.map = composed(affineOf(pre), linear, affineOf(post));
-        // Child elements (<motion>: an animation's change of the xform) are not kept.
-        while (m_xml.readNextStartElement()) {
-            *warnings << here()
-                             + FlameTr::tr("%1: element <%2> ignored (animation)")
-                                   .arg(where, m_xml.name().toString());
-            m_xml.skipCurrentElement();
-        }
-        return true;
-    }
-
-    bool readColour(std::map<int, QColor> &palette, QString *problem)
-    {
-        const QString at = here();
-        const auto attributes = m_xml.attributes();
-        bool ok = false;
-        const int index = attributes.value(QLatin1String("index")).toInt(&ok);
-        double rgb[3];
-        if (!ok || index < 0 || index > 255
-            || !readNumbers(attributes.value(QLatin1String("rgb")).toString().simplified(), 3,
-                            rgb)) {
-            *problem = at + FlameTr::tr("flame '%1': a <color> needs index=\"0..255\" and "
-                                        "rgb=\"r g b\"")
-                                .arg(m_flame);
+// A flame that is the IFS of its maps post(w pre(x)): every xform affine, no xaos row that
+// forbids or reweights a transition, and a final xform, if any, affine and invertible (the
+// picture is then F(A), the attractor of the conjugates F f_i F^-1). It is imported as a
+// fractal with control points, whose maps are analysed exactly; every other flame as a flame
+// item, drawn by flam3's chaos game (model/FlameItem.h).
+bool affineFlame(const flame::Flame &f)
+{
+    for (const flame::FlameXform &x : f.xforms) {
+        if (!affineXform(x))
             return false;
-        }
-        palette[index] = QColor(std::clamp(int(std::lround(rgb[0])), 0, 255),
-                                std::clamp(int(std::lround(rgb[1])), 0, 255),
-                                std::clamp(int(std::lround(rgb[2])), 0, 255));
-        return true;
-    }
-
-    // <palette count="256" format="RGB"> hex </palette>, or the old <colors count
-    // data="00rrggbb...">.
-    bool readPalette(std::map<int, QColor> &palette, QString *problem)
-    {
-        const QString at = here();
-        const bool old = m_xml.name() == QLatin1String("colors");
-        QString hex = old ? m_xml.attributes().value(QLatin1String("data")).toString() : QString();
-        const QString text = m_xml.readElementText(QXmlStreamReader::SkipChildElements);
-        if (!old)
-            hex = text;
-        hex.remove(QRegularExpression(QStringLiteral("\\s")));
-        const int width = old ? 8 : 6;
-        if (hex.size() % width != 0) {
-            *problem = at + FlameTr::tr("flame '%1': the palette's hex digits are not whole "
-                                        "colours of %2 digits")
-                                .arg(m_flame)
-                                .arg(width);
-            return false;
-        }
-        for (int i = 0; i * width < hex.size() && i < 256; ++i) {
-            bool ok = false;
-            const uint v = hex.mid(i * width + width - 6, 6).toUInt(&ok, 16);
-            if (!ok) {
-                *problem = at + FlameTr::tr("flame '%1': palette entry %2 is not hexadecimal")
-                                    .arg(m_flame)
-                                    .arg(i);
+        for (std::size_t j = 0; j < f.xforms.size(); ++j)
+            if (x.xaosTo(j) != 1.0)
                 return false;
-            }
-            palette[i] = QColor::fromRgb(QRgb(v));
-        }
-        return true;
     }
+    if (f.finalXform) {
+        if (!affineXform(*f.finalXform))
+            return false;
+        const AffineMap F = xformMap(*f.finalXform);
+        if (!(std::abs(F.A.determinant()) > 1e-12 * std::max(1.0, F.A.squaredNorm())))
+            return false;
+    }
+    return true;
+}
 
-    void buildItem(const QString &name, const std::vector<Xform> &xforms,
-                   const std::optional<Xform> &final, const std::map<int, QColor> &palette,
-                   QStringList warnings, qint64 line, qint64 column)
-    {
-        FractintEntry e;
-        e.name = name.toStdString();
-        e.dimension = 2;
-        e.line = int(line);
-        // The final xform F is drawn on every point: the picture is F(A), the attractor of
-        // the conjugates F f_i F^-1 when F is invertible.
-        std::optional<AffineMap> F, Finv;
-        if (final) {
-            const double det = final->map.A.determinant();
-            if (std::abs(det) > 1e-12 * std::max(1.0, final->map.A.squaredNorm())) {
-                F = final->map;
-                Finv = AffineMap{};
-                Finv->A = F->A.inverse();
-                Finv->b = -F->b * Finv->A;
-            } else {
-                warnings << place(final->line, final->column)
-                                + FlameTr::tr("flame '%1': the final xform is not invertible "
-                                              "(determinant %2): dropped")
-                                      .arg(name)
-                                      .arg(det);
-            }
+QString place(const QString &file, qint64 line, qint64 column)
+{
+    return FlameTr::tr("%1, line %2, column %3: ").arg(file).arg(line).arg(column);
+}
+
+// An affine flame as a fractal with control points, or a problem.
+void importAffineFlame(const FlameRead &r, const QString &name, const QString &file,
+                       ImportedItems &out)
+{
+    const flame::Flame &flame = r.flame;
+    FractintEntry e;
+    e.name = name.toStdString();
+    e.dimension = 2;
+    e.line = int(r.line);
+    std::optional<AffineMap> F, Finv;
+    if (flame.finalXform) {
+        F = xformMap(*flame.finalXform);
+        Finv = AffineMap{};
+        Finv->A = F->A.inverse();
+        Finv->b = -F->b * Finv->A;
+    }
+    QStringList colours;
+    for (const flame::FlameXform &x : flame.xforms) {
+        const AffineMap m = xformMap(x);
+        AffineMap f = m;
+        if (F) {
+            f.A = Finv->A * m.A * F->A;
+            f.b = Finv->b * m.A * F->A + m.b * F->A + F->b;
         }
-        bool forbids = false, reweights = false;
-        QStringList colours;
-        for (const Xform &x : xforms) {
-            AffineMap f = x.map;
-            if (F) {
-                f.A = Finv->A * x.map.A * F->A;
-                f.b = Finv->b * x.map.A * F->A + x.map.b * F->A + F->b;
-            }
-            e.maps.push_back(mirrored(f));
-            e.probabilities.push_back(x.weight);
-            for (std::size_t j = 0; j < x.chaos.size() && j < xforms.size(); ++j) {
-                forbids = forbids || x.chaos[j] == 0;
-                reweights = reweights || (x.chaos[j] != 0 && x.chaos[j] != 1);
-            }
-            if (!palette.empty()) {
-                const int index = std::clamp(int(x.colour * 255.0 + 0.5), 0, 255);
-                auto it = palette.lower_bound(index);
-                if (it == palette.end())
-                    it = std::prev(it);
-                colours << it->second.name();
-            }
-        }
-        if (forbids)
-            warnings << place(line, column)
-                            + FlameTr::tr("flame '%1': its xaos (chaos) rows forbid some "
-                                          "transitions; imported as the plain IFS of its maps, "
-                                          "whose attractor contains the flame's")
-                                  .arg(name);
-        else if (reweights)
-            warnings << place(line, column)
-                            + FlameTr::tr("flame '%1': its xaos (chaos) weights are dropped: "
-                                          "the attractor is the same, its measure differs")
-                                  .arg(name);
-        double total = 0;
-        for (double p : e.probabilities)
-            total += p;
-        if (!(total > 0)) {
-            m_out.problems << place(line, column)
-                                  + FlameTr::tr("flame '%1': every xform has weight 0").arg(name);
-            return;
-        }
-        try {
-            m_out.items.push_back(importedFractal(e, colours, 1000000));
-        } catch (const LoadError &error) {
-            m_out.problems << place(line, column)
-                                  + FlameTr::tr("flame '%1': %2 (%3)")
-                                        .arg(name, error.message, error.field);
-            return;
-        } catch (const std::exception &error) {
-            m_out.problems << place(line, column)
-                                  + FlameTr::tr("flame '%1': %2")
-                                        .arg(name, QString::fromUtf8(error.what()));
-            return;
-        }
-        // flam3 draws any genome, discarding the points that escape; an IFS that does not even
-        // contract on average has no attractor, and the user hears it here, not at the render.
-        if (const auto *item = dynamic_cast<const AttractorItem *>(m_out.items.back().get()))
-            if (const auto d = item->derivedIfs(); d && d->ifs.size() > 0)
-                if (const IfsCheck check = checkIfs(d->ifs); !check.contractsOnAverage())
-                    warnings << place(line, column)
+        e.maps.push_back(mirrored(f));
+        e.probabilities.push_back(x.weight);
+        const flame::FlameColour &c =
+            flame.palette[std::size_t(std::clamp(int(x.colour * 255.0 + 0.5), 0, 255))];
+        colours << QColor::fromRgbF(float(c.r), float(c.g), float(c.b)).name();
+    }
+    double total = 0;
+    for (double p : e.probabilities)
+        total += p;
+    if (!(total > 0)) {
+        out.problems << place(file, r.line, r.column)
+                            + FlameTr::tr("flame '%1': every xform has weight 0").arg(name);
+        return;
+    }
+    try {
+        out.items.push_back(importedFractal(e, colours, 1000000));
+    } catch (const LoadError &error) {
+        out.problems << place(file, r.line, r.column)
+                            + FlameTr::tr("flame '%1': %2 (%3)").arg(name, error.message, error.field);
+        return;
+    } catch (const std::exception &error) {
+        out.problems << place(file, r.line, r.column)
+                            + FlameTr::tr("flame '%1': %2").arg(name, QString::fromUtf8(error.what()));
+        return;
+    }
+    // flam3 draws any genome, discarding the points that escape; an IFS that does not even
+    // contract on average has no attractor, and the user hears it here, not at the render.
+    if (const auto *item = dynamic_cast<const AttractorItem *>(out.items.back().get()))
+        if (const auto d = item->derivedIfs(); d && d->ifs.size() > 0)
+            if (const IfsCheck check = checkIfs(d->ifs); !check.contractsOnAverage())
+                out.warnings << place(file, r.line, r.column)
                                     + FlameTr::tr("flame '%1': its maps do not contract, not "
                                                   "even on average (the Lyapunov exponent of "
                                                   "their products, %2, is not clearly negative: "
@@ -528,14 +162,29 @@ private:
                                           .arg(name)
                                           .arg(check.lyapunov ? *check.lyapunov : qQNaN(), 0,
                                                'g', 3);
-        m_out.warnings << warnings;
-    }
+}
 
-    QXmlStreamReader m_xml;
-    QString m_file;
-    QString m_flame;
-    ImportedItems m_out;
-};
+// Any other flame as a flame item: everything flam3 draws is kept.
+void importFlameItem(const FlameRead &r, const QString &name, const QString &file,
+                     ImportedItems &out)
+{
+    auto item = std::make_unique<FlameItem>();
+    item->setName(name);
+    const flame::Flame f = canonicalFlame(r.flame);
+    QString error;
+    if (!item->setFlame(f, 0, &error)) {
+        out.problems << place(file, r.line, r.column)
+                            + FlameTr::tr("flame '%1': %2").arg(name, error);
+        return;
+    }
+    AlgorithmSpec algorithm = item->algorithm();
+    // flam3's sample count (quality x width x height), within what one picture takes.
+    algorithm.samples = qint64(std::clamp(flame::flameSamples(f), 1e5, 1e8));
+    // Unused in random mode, but still bounded by the number of maps.
+    algorithm.depth = std::min(algorithm.depth, AlgorithmSpec::maxDepthFor(int(f.xforms.size())));
+    item->setAlgorithm(algorithm);
+    out.items.push_back(std::move(item));
+}
 
 // The shortest text that reads back as exactly v: round trips keep every map.
 QString number(double v)
@@ -547,7 +196,22 @@ QString number(double v)
 
 ImportedItems importFlameText(const QByteArray &text, const QString &fileName)
 {
-    return FlameReader(text, fileName).read();
+    const FlameFileRead read = readFlameText(text, fileName);
+    const QString file = QFileInfo(fileName).fileName();
+    ImportedItems out;
+    out.problems = read.problems;
+    out.warnings = read.warnings;
+    for (std::size_t k = 0; k < read.flames.size(); ++k) {
+        const FlameRead &r = read.flames[k];
+        QString name = QString::fromStdString(r.flame.name).trimmed();
+        if (name.isEmpty())
+            name = FlameTr::tr("flame %1").arg(k + 1);
+        if (affineFlame(r.flame))
+            importAffineFlame(r, name, file, out);
+        else
+            importFlameItem(r, name, file, out);
+    }
+    return out;
 }
 
 ImportedItems importFlame(const QString &fileName)

@@ -2,6 +2,7 @@
 
 #include "core/ifs/Attractor.h"
 #include "model/AttractorItem.h"
+#include "model/FlameItem.h"
 #include "model/FractalItem.h"
 #include "model/ProjectIO.h"
 
@@ -175,6 +176,13 @@ std::optional<FractintEntry> fractintEntryOf(const AttractorItem &item, QString 
 {
     FractintEntry e;
     e.name = item.name().toStdString();
+    if (dynamic_cast<const FlameItem *>(&item)) {
+        if (why)
+            *why = ExchangeTr::tr("%1 is a fractal flame: its xforms are not affine maps, and %2 "
+                                  "holds affine maps only (export it as a flam3 flame)")
+                       .arg(item.name(), format);
+        return std::nullopt;
+    }
     const auto *fractal = dynamic_cast<const FractalItem *>(&item);
     if (fractal && fractal->fractal().preset == FractalSpec::Preset::Custom) {
         e.maps = fractal->fractal().maps;

@@ -162,11 +162,15 @@ QJsonObject analyseItemJson(const AttractorItem *item, Regularity *regularity)
         if (d->surface)
             m["used"] = k >= 0;
         addMapMatrices(m, matrices);
-        if (k >= 0) {
+        // A flame's affine part says nothing of how its xform contracts, nor where it is fixed.
+        if (d->chaos)
+            m["affine_part"] = true;
+        if (k >= 0 && !d->chaos) {
             const Contractivity c = contractivity(d->ifs.effectiveLinearPart(k));
             m["contractive"] = c.eventuallyContractive;
             m["contraction_norm"] = c.normFactor;
-            const auto fp = fixedPoint(d->ifs.maps[k]);
+            // A flame's affine part has a fixed point that its xform does not have.
+            const auto fp = d->chaos ? std::nullopt : fixedPoint(d->ifs.maps[k]);
             Mat p;
             if (fp && !d->ifs.views.empty()) {
                 p = project(d->ifs.views.front(), Mat(*fp));
@@ -197,7 +201,15 @@ QJsonObject analyseItemJson(const AttractorItem *item, Regularity *regularity)
     // A map that does not contract: whether the IFS contracts on average (the top Lyapunov
     // exponent of its random products with the item's probabilities, core IfsCheck), which is
     // what random iteration needs.
-    if (!d->iterate && d->ifs.size() > 0)
+    if (d->chaos) {
+        // Its own chaos game (a flame): the maps above are its affine parts; whether it
+        // contracts on average is the exponent along its own orbit.
+        o["contractive_on_average"] =
+            d->chaos.lyapunov ? QJsonValue(*d->chaos.lyapunov < -1e-3) : QJsonValue();
+        o["lyapunov_exponent"] =
+            d->chaos.lyapunov ? QJsonValue(*d->chaos.lyapunov) : QJsonValue(QJsonValue::Null);
+        o["lyapunov_of"] = QStringLiteral("orbit");
+    } else if (!d->iterate && d->ifs.size() > 0)
         if (const IfsCheck check = checkIfs(d->ifs); !check.contractive) {
             o["contractive_on_average"] = check.contractsOnAverage();
             o["lyapunov_exponent"] =

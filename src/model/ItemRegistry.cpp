@@ -5,6 +5,7 @@
 #include "model/CifsItem.h"
 #include "model/ComplexBezierItem.h"
 #include "model/EigenvaluePlotItem.h"
+#include "model/FlameItem.h"
 #include "model/FractalItem.h"
 #include "model/NormalVectorItem.h"
 #include "model/SubdivisionCurveItem.h"
@@ -22,6 +23,7 @@ ItemRegistry::ItemRegistry()
     add<BezierUnionItem>();
     add<NormalVectorItem>();
     add<ComplexBezierItem>();
+    add<FlameItem>();
     add<CifsItem>();
     add<BcifsJunctionItem>();
     add<SubdivisionSurfaceItem>();

@@ -58,6 +58,17 @@ void iteratePoints(const DerivedIfs &d, const StartSet &start, int depth, const 
         iterate(d.ifs, start, depth, sink, control);
 }
 
+// A flame's points come from its own chaos game: F^depth of its affine parts is another set.
+void requireIteratedPoints(const DerivedIfs &d)
+{
+    if (d.chaos)
+        throw InputError(QCoreApplication::translate(
+                             "awb::PointExport",
+                             "this item is a fractal flame: its points come from its own chaos "
+                             "game, not from iterating maps (render its picture instead)")
+                             .toStdString());
+}
+
 } // namespace
 
 double exportPointCount(const DerivedIfs &d, const StartSet &start, int depth)
@@ -76,6 +87,7 @@ bool exportsSpacePoints(const DerivedIfs &d)
 std::uint64_t writePointsCsv(QIODevice &out, const DerivedIfs &d, const StartSet &start,
                              int depth, const IterationControl &control, const Address &address)
 {
+    requireIteratedPoints(d);
     put(out, exportsSpacePoints(d) ? "x,y,z,map,view\n" : "x,y,map,view\n");
     QByteArray buffer;
     std::uint64_t written = 0;
@@ -148,6 +160,7 @@ private:
 CollectedPoints collectPoints(const DerivedIfs &d, const StartSet &start, int depth,
                               const IterationControl &control, const Address &address)
 {
+    requireIteratedPoints(d);
     const bool own = d.iterate && !d.iterateDrawsIfs;
     if (!address.empty() && own)
         throw InputError(PointExportTr::tr("--address needs an item drawn by one IFS; this one "
@@ -178,6 +191,7 @@ std::uint64_t writePointsPly(QIODevice &out, const QString &title, const Derived
                              const std::function<QColor(int)> &color,
                              const IterationControl &control)
 {
+    requireIteratedPoints(d);
     const double n = exportPointCount(d, start, depth);
     if (n < 0)
         throw InputError(QCoreApplication::translate("awb::PointExport",

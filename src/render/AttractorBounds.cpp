@@ -27,6 +27,11 @@ double imagesAt(const AttractorExtent &a, int depth)
 
 std::optional<QRectF> attractorBounds(const AttractorExtent &a)
 {
+    if (a.chaos.frame) {
+        // Its own frame (a flame's camera): its points are not those of `ifs`.
+        const auto &[x0, y0, x1, y1] = *a.chaos.frame;
+        return QRectF(x0, y0, x1 - x0, y1 - y0);
+    }
     if (!a.ifs || (!a.iterate && a.ifs->size() == 0) || a.start.vertices.rows() == 0)
         return std::nullopt;
     const std::vector<Projection> &views = a.views.empty() ? a.ifs->views : a.views;

@@ -7,6 +7,7 @@
 // bounded).
 
 #include "core/ifs/Attractor.h"
+#include "core/render/CustomChaos.h"
 
 #include <QRectF>
 
@@ -23,6 +24,8 @@ struct AttractorExtent {
     std::function<IterationStats(const StartSet &, int, const std::vector<AttractorSink *> &,
                                  const IterationControl &)>
         iterate;
+    // A chaos game of the item's own (a flame): its frame, when it has one, is the extent.
+    CustomChaos chaos;
     StartSet start;
     int depth = 0;     // the level drawn (the bounds use at most it)
     bool random = false;

@@ -82,6 +82,15 @@ int threadsFor(const RenderRequest &r)
 
 void checkRenderRequest(const RenderRequest &r)
 {
+    if (r.chaos) {
+        // Its own chaos game: no start set, no contraction of `ifs` to check (a flame's
+        // variations, not its affine parts, decide where its points go).
+        if (r.mode != RenderRequest::Mode::Random)
+            throw InputError("this item is drawn by random iteration only");
+        if (r.size.width() < 1 || r.size.height() < 1)
+            throw InputError("the image is empty");
+        return;
+    }
     if (!r.ifs || (r.ifs->size() == 0 && !r.iterate))
         throw InputError("there is no IFS to draw");
     if (r.ifs->views.empty())
@@ -117,6 +126,19 @@ bool accumulatePicture(const RenderRequest &r, int depth, std::uint64_t samples,
     while (frame.supersample > 1 && 8.0 * frame.cellsX() * frame.cellsY() > 256.0 * (1 << 20))
         --frame.supersample;
     frame.validate();
+    if (r.chaos) {
+        // Its own chaos game, its own colours (a flame's palette, labels 0..255).
+        colours.prefix = 1;
+        colours.labelColours = r.chaos.colours;
+        ChaosJob job;
+        job.frame = frame;
+        job.accumulation = r.tone.mode;
+        job.samples = samples;
+        job.seed = r.seed;
+        job.threads = threadsFor(r);
+        stats = r.chaos.run(job, density, control);
+        return !(stats.cancelled || (control.cancel && control.cancel->load()));
+    }
     const int maps = std::max(1, r.ifs->size());
     colours = colourTable(r, colourPrefix(r, depth, maps), maps);
     if (r.iterate) {

@@ -6,6 +6,7 @@
 // (core/render/Density.h). Layer: render (QtGui, no widgets).
 
 #include "core/ifs/Attractor.h"
+#include "core/render/CustomChaos.h"
 #include "core/render/Density.h"
 
 #include <QColor>
@@ -46,6 +47,9 @@ struct RenderRequest {
 
     std::shared_ptr<const Ifs> ifs;   // with `iterate`: only its views are used
     CustomIterate iterate;            // set for automata: deterministic depth only
+    // Set for items with a chaos game of their own (a flame): random mode plays it, in its own
+    // colours, instead of the engine's on `ifs`.
+    CustomChaos chaos;
     StartSet start;                 // in the IFS space (n x D)
     Mode mode = Mode::Deterministic;
     int depth = 10;                 // deterministic: F^depth(start)

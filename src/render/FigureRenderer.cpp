@@ -42,7 +42,7 @@ IterationStats runIterate(const FigureSpec &spec, int depth, const std::vector<A
 
 bool hasAttractor(const FigureSpec &spec)
 {
-    return spec.iterate || (spec.ifs && spec.ifs->size() > 0);
+    return spec.iterate || spec.chaos || (spec.ifs && spec.ifs->size() > 0);
 }
 
 double imagesAt(const FigureSpec &spec, int depth)
@@ -84,6 +84,7 @@ QRectF contentBounds(const FigureSpec &spec)
         a.ifs = spec.ifs;
         a.views = viewsOf(spec);
         a.iterate = spec.iterate;
+        a.chaos = spec.chaos;
         a.start = spec.start;
         for (const auto &p : spec.panels)
             a.depth = std::max(a.depth, p.depth);
@@ -205,6 +206,7 @@ void drawRaster(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
     ifs->views = viewsOf(spec);
     r.ifs = ifs;
     r.iterate = spec.iterate;
+    r.chaos = spec.chaos;
     r.start = spec.start;
     r.mode = spec.random ? RenderRequest::Mode::Random : RenderRequest::Mode::Deterministic;
     r.depth = depth;
@@ -311,7 +313,9 @@ void paintFigure(QPainter &p, const FigureSpec &spec)
                              c < spec.polygonsClosed.size() && spec.polygonsClosed[c]);
             }
             const int depth = spec.panels[i].depth;
-            if (hasAttractor(spec)) {
+            if (spec.chaos) {
+                drawRaster(p, spec, f, depth);  // its own chaos game: the raster path only
+            } else if (hasAttractor(spec)) {
                 if (imagesAt(spec, depth) <= kVectorLimit)
                     drawVector(p, spec, f, depth);
                 else if (!drawCurvePaths(p, spec, f, depth))

@@ -35,6 +35,7 @@ struct FigureSpec {
     const Ifs *ifs = nullptr;          // maps (may be empty when `iterate` or `polygon` is set)
     std::vector<Projection> views;     // how IFS points are drawn (defaults to ifs->views)
     IterateFn iterate;                 // custom deterministic iteration (automata)
+    CustomChaos chaos;                 // a chaos game of the item's own (a flame), random only
     StartSet start;
     bool random = false;               // chaos game instead of deterministic iteration
     std::uint64_t samples = 200000;

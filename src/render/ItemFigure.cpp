@@ -45,6 +45,7 @@ void writeRawDensity(const FigureSpec &spec, const std::shared_ptr<const Derived
     RenderRequest r;
     r.ifs = std::shared_ptr<const Ifs>(d, &d->ifs);
     r.iterate = d->iterate;
+    r.chaos = d->chaos;
     r.start = spec.start;
     r.mode = spec.random ? RenderRequest::Mode::Random : RenderRequest::Mode::Deterministic;
     r.depth = depth;
@@ -82,6 +83,7 @@ void renderItemFigure(const Project &project, AttractorItem *item, const FigureO
     FigureSpec spec;
     spec.ifs = &d->ifs;
     spec.iterate = d->iterate;
+    spec.chaos = d->chaos;
     spec.random = o.samples || (alg.mode == AlgorithmSpec::Mode::Random && !o.depth);
     spec.samples = o.samples ? *o.samples : std::uint64_t(alg.samples);
     spec.seed = std::uint64_t(alg.seed);
@@ -96,6 +98,10 @@ void renderItemFigure(const Project &project, AttractorItem *item, const FigureO
     if (o.threads > 0)
         spec.threads = o.threads;
     const int depth = o.depth ? *o.depth : alg.depth;
+    if (d->chaos && !spec.random)
+        fail(FigureTr::tr("item '%1' is drawn by random iteration only (its maps are not "
+                          "affine): give --samples, not --depth")
+                 .arg(item->name()));
     if (d->ifs.size() > 0 && !spec.random && !d->iterate) {
         const IfsCheck check = checkIfs(d->ifs);
         if (!check.contractive)

@@ -263,11 +263,12 @@ const std::map<QString, Maker> &inputs()
              return file(d, "unclosed.flame", "<flames>\n<flame name=\"a\">\n"
                                               "<xform coefs=\"1 0 0 1 0 0\">\n</flame>\n");
          }},
-        {"flame-non-linear", [](QDir &d, QStringList *) {
+        {"flame-foreign-variation", [](QDir &d, QStringList *) {
              return file(d, "swirl.flame",
                          "<flame name=\"s\">\n"
                          "  <xform weight=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 0 0\"/>\n"
-                         "  <xform weight=\"1\" swirl=\"0.7\" coefs=\"0.5 0 0 0.5 1 0\"/>\n"
+                         "  <xform weight=\"1\" swirl=\"0.7\" spherical3D=\"0.3\" "
+                         "coefs=\"0.5 0 0 0.5 1 0\"/>\n"
                          "</flame>\n");
          }},
         // ---- numbers

@@ -1,10 +1,14 @@
 // libFuzzer target of flam3 genomes (issue 34): any bytes through importFlameText
 // (model/FlameExchange.h). Reading never throws: every flame is imported or named as a problem
 // with its place, every loss is a warning with its place. An imported flame is a custom
-// fractal of affine maps of the plane with finite coefficients and probabilities; written back
-// by flameOf and read again, it has as many maps with the same coefficients (to the writer's
-// 10 digits).
+// fractal of affine maps of the plane with finite coefficients and probabilities -- written
+// back by flameOf and read again, it has as many maps with the same coefficients -- or a flame
+// item (issue 45) whose flame the core can play; written back by flameFileText and read again,
+// that flame is the same, number for number.
+#include "core/flame/FlameChaos.h"
 #include "model/FlameExchange.h"
+#include "model/FlameFile.h"
+#include "model/FlameItem.h"
 #include "model/FractalItem.h"
 
 #include <QByteArray>
@@ -45,9 +49,33 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     // The round trip costs a cage (6000 steps of random iteration) per flame: the first few.
     int checked = 0;
     for (const auto &item : imported.items) {
+        if (const auto *flameItem = qobject_cast<const awb::FlameItem *>(item.get())) {
+            try {
+                awb::flame::checkFlame(flameItem->flame());
+            } catch (...) {
+                fail("a flame item the core cannot play");
+            }
+            if (checked++ >= 3)
+                continue;
+            const QByteArray text = awb::flameFileText({flameItem->namedFlame()});
+            const awb::FlameFileRead back = awb::readFlameText(text, QStringLiteral("back.flame"));
+            if (back.flames.size() != 1 || !back.problems.isEmpty())
+                fail("a written flame item does not come back");
+            // The palette goes out as flam3 writes it, channels times 255: back within 1e-12.
+            awb::flame::Flame again = awb::canonicalFlame(back.flames.front().flame);
+            for (std::size_t i = 0; i < again.palette.size(); ++i) {
+                const auto &a = again.palette[i], &b = flameItem->flame().palette[i];
+                if (!near(a.r, b.r) || !near(a.g, b.g) || !near(a.b, b.b))
+                    fail("a palette colour changed on the way back");
+            }
+            again.palette = flameItem->flame().palette;
+            if (again != flameItem->flame())
+                fail("a written flame item comes back changed");
+            continue;
+        }
         const auto *fractal = qobject_cast<const awb::FractalItem *>(item.get());
         if (!fractal)
-            fail("an imported flame that is not a fractal item");
+            fail("an imported flame that is neither a fractal nor a flame item");
         const auto &maps = fractal->fractal().maps;
         if (maps.empty())
             fail("a flame without maps");

@@ -9,6 +9,7 @@
 #include "gui/views/SpectrumView.h"
 #include "render/DensityFile.h"
 #include "gui/app/Messages.h"
+#include "model/FlameItem.h"
 #include "model/FractalItem.h"
 #include "model/Project.h"
 
@@ -106,7 +107,9 @@ void TestExchangeWindow::exportItemAs()
 
 void TestExchangeWindow::flamesInAndOut()
 {
-    // Two flames, one undo step; the dropped variation is named for the window to show.
+    // Two flames, one undo step: an affine one becomes a fractal, one with a non-linear
+    // variation (julia) a flame item; what flam3 does not draw (JWildfire's spherical3D) is
+    // named for the window to show.
     RecordingMessages messages;
     MainWindow w(&messages, m_dir.filePath("recovery"));
     w.resize(900, 700);
@@ -116,7 +119,7 @@ void TestExchangeWindow::flamesInAndOut()
                            "<flame name=\"halves\"><xform weight=\"1\" linear=\"1\" "
                            "coefs=\"0.5 0 0 0.5 0 0\"/>\n"
                            "<xform weight=\"1\" linear=\"1\" julia=\"0.2\" "
-                           "coefs=\"0.5 0 0 0.5 0.5 0.5\"/></flame>\n"
+                           "spherical3D=\"0.1\" coefs=\"0.5 0 0 0.5 0.5 0.5\"/></flame>\n"
                            "<flame name=\"thirds\"><xform weight=\"1\" linear=\"1\" "
                            "coefs=\"0.3 0 0 0.3 0 0\"/><xform weight=\"2\" linear=\"1\" "
                            "coefs=\"0.3 0 0 0.3 0.7 0\"/></flame>\n</flames>\n");
@@ -126,9 +129,18 @@ void TestExchangeWindow::flamesInAndOut()
     QVERIFY(problems.isEmpty());
     QCOMPARE(warnings.size(), 1);
     QVERIFY2(warnings[0].startsWith("two.flame, line 3, column ")
-                 && warnings[0].contains("flame 'halves', xform 2: variation julia (0.2) dropped"),
+                 && warnings[0].contains("flame 'halves': xform 2: attributes flam3 does not "
+                                         "draw, ignored: spherical3D"),
              qPrintable(warnings[0]));
     QCOMPARE(w.project()->childCount(), before + 2);
+    auto *halves = qobject_cast<FlameItem *>(w.project()->findItem("halves"));
+    QVERIFY(halves);
+    QCOMPARE(halves->flame().xforms[1].variations.size(), std::size_t(2));  // linear, julia
+    // The window draws it by its own chaos game, without a problem to report.
+    w.setCurrentItem(halves);
+    w.controller()->refreshNow();
+    QVERIFY(QTest::qWaitFor([&] { return !w.attractorView()->isRendering(); }, 20000));
+    QVERIFY2(w.attractorView()->lastError().isEmpty(), qPrintable(w.attractorView()->lastError()));
     auto *thirds = qobject_cast<FractalItem *>(w.project()->findItem("thirds"));
     QVERIFY(thirds);
     QCOMPARE(thirds->algorithm().probabilities, (std::vector<double>{1.0, 2.0}));

@@ -205,7 +205,8 @@ private slots:
             << project(R"({"type": "teapot", "name": "t"})")
             << "item 1 (\"t\"): field \"type\": unknown item type \"teapot\"; this version "
                "knows subdivision-curve, eigenvalue-plot, fractal, bezier-union, normal-vector, "
-               "complex-bezier, cifs, bcifs-junction, subdivision-surface, subdivision-mesh";
+               "complex-bezier, flame, cifs, bcifs-junction, subdivision-surface, "
+               "subdivision-mesh";
         QTest::newRow("missing field")
             << project(R"({"type": "subdivision-curve", "name": "a",
                            "scheme": {"kind": "chaikin"}})")
@@ -421,7 +422,7 @@ private slots:
                     QVERIFY2(a->derivedIfs(), qPrintable(a->derivedError()));
             ++examples;
         }
-        QCOMPARE(examples, 14);
+        QCOMPARE(examples, 15);
     }
 };
 

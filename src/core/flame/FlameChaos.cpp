@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 namespace awb::flame {
@@ -210,6 +211,51 @@ FlameStats runStream(const Xforms &xf, const Choice &choice, const Plot &plot,
 }
 
 } // namespace
+
+FlameLyapunov flameLyapunov(const Flame &f, std::uint64_t steps, std::uint64_t seed)
+{
+    checkFlame(f);
+    const Xforms xf(f);
+    const Choice choice(f);
+    Xoshiro256 rng(seed, 0);
+    FlameLyapunov out;
+    double p[2] = {2.0 * uniform01(rng) - 1.0, 2.0 * uniform01(rng) - 1.0};
+    double v[2] = {std::sqrt(0.5), std::sqrt(0.5)};
+    double sum = 0;
+    int last = 0;
+    for (std::uint64_t i = 0; i < steps + std::uint64_t(kFuse); ++i) {
+        const int fn = choice.rows[std::size_t(choice.xaos ? last : 0)].pick(rng.next());
+        last = fn + 1;
+        const XformMap &m = xf.maps[std::size_t(fn)];
+        Xoshiro256 twin = rng;  // the displaced point takes the same random numbers
+        const double h = 1e-7 * std::max(1.0, std::hypot(p[0], p[1]));
+        const double pd[2] = {p[0] + h * v[0], p[1] + h * v[1]};
+        double q[2], qd[2];
+        const bool ok = m.apply(p, q, rng);
+        const bool okd = m.apply(pd, qd, twin);
+        p[0] = q[0];
+        p[1] = q[1];
+        if (!ok || !okd) {
+            ++out.badValues;
+            continue;
+        }
+        const double dx = qd[0] - q[0], dy = qd[1] - q[1];
+        const double d = std::hypot(dx, dy);
+        if (!std::isfinite(d))
+            continue;
+        if (i >= std::uint64_t(kFuse)) {
+            // A map that collapses the direction (d = 0) contracts it by at least 1e-16.
+            sum += std::log(std::max(d / h, 1e-16));
+            ++out.steps;
+        }
+        if (d > 0) {
+            v[0] = dx / d;
+            v[1] = dy / d;
+        }
+    }
+    out.exponent = out.steps ? sum / double(out.steps) : std::numeric_limits<double>::quiet_NaN();
+    return out;
+}
 
 void checkFlame(const Flame &flame)
 {

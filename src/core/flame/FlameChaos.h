@@ -59,6 +59,21 @@ double flameSamples(const Flame &flame);
 FlameStats accumulateFlame(const FlameRaster &job, DensityImage &out,
                            const IterationControl &control = {});
 
+// The top Lyapunov exponent of the flame's chaos game along one orbit (Benettin's method): the
+// mean log of how much one step stretches a small displacement, renormalised every step, the
+// xforms chosen as the chaos game chooses them (weights, xaos), a random variation's twin point
+// drawn with the same random numbers. Negative: nearby orbits converge (the game contracts on
+// average, so its picture is an attractor's); the affine parts' spectra cannot say this, since
+// the variations bend the maps. `steps` after flam3's 15 fuse steps; bad values (flam3's
+// replaced points) carry no derivative and are counted. Throws InputError (checkFlame).
+struct FlameLyapunov {
+    double exponent = 0;        // per step, natural log
+    std::uint64_t steps = 0;    // steps that gave a derivative
+    std::uint64_t badValues = 0;
+};
+FlameLyapunov flameLyapunov(const Flame &flame, std::uint64_t steps = 20000,
+                            std::uint64_t seed = 1);
+
 // The palette as the labels' colours (256 entries).
 std::vector<Rgb8> flamePaletteRgb(const Flame &flame);
 

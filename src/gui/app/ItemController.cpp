@@ -365,7 +365,10 @@ void ItemController::showSpectrum()
     const bool contractive = std::all_of(spectra.begin(), spectra.end(), [](const auto &m) {
         return m.contractivity.eventuallyContractive;
     });
-    if (!contractive && d && d->ifs.size() > 0 && !d->iterate && focusedSpectra().isEmpty()) {
+    if (d && d->chaos) {
+        lyapunov = d->chaos.lyapunov;  // a flame: along its own orbit
+    } else if (!contractive && d && d->ifs.size() > 0 && !d->iterate
+               && focusedSpectra().isEmpty()) {
         try {
             lyapunov = checkIfs(d->ifs).lyapunov;
         } catch (const std::exception &) {
@@ -552,9 +555,9 @@ void ItemController::refreshViews()
             problem = d->note;
     } else {
         try {
-            if (d->ifs.size() > 0 || d->iterate)
+            if (d->ifs.size() > 0 || d->iterate || d->chaos)
                 m_attractor->setIfs(std::make_shared<const Ifs>(d->ifs), item->coreStartSet(*d),
-                                    d->iterate);
+                                    d->iterate, d->chaos);
             else // a polygon figure (normal-vector curve without an equivalent IFS)
                 m_attractor->setIfs(nullptr, StartSet{});
         } catch (const std::exception &e) {

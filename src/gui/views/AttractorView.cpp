@@ -132,10 +132,11 @@ AttractorView::AttractorView(QWidget *parent) : QWidget(parent)
 AttractorView::~AttractorView() = default;
 
 void AttractorView::setIfs(std::shared_ptr<const Ifs> ifs, const StartSet &start,
-                           CustomIterate iterate)
+                           CustomIterate iterate, CustomChaos chaos)
 {
     m_ifs = std::move(ifs);
     m_iterate = std::move(iterate);
+    m_chaos = std::move(chaos);
     m_start = start;
     if (!m_ifs) {
         // Nothing to draw: a picture of the previous IFS would be wrong.
@@ -289,6 +290,7 @@ std::optional<QRectF> AttractorView::contentBounds() const
         AttractorExtent a;
         a.ifs = m_ifs.get();
         a.iterate = m_iterate;
+        a.chaos = m_chaos;
         a.start = m_start;
         a.depth = m_settings.depth;
         a.random = m_settings.mode == RenderRequest::Mode::Random;
@@ -430,6 +432,7 @@ RenderRequest AttractorView::renderRequest(const QRectF &world, QSize size,
     RenderRequest r;
     r.ifs = m_ifs;
     r.iterate = m_iterate;
+    r.chaos = m_chaos;
     r.start = m_start;
     r.mode = m_settings.mode;
     r.depth = m_settings.depth;

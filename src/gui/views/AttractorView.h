@@ -49,9 +49,11 @@ public:
 
     // ---- data (plain core types; the view keeps copies, the owner stays the document) ----
     // The IFS and its start set X0 (in the IFS space; drawn through the IFS's first view).
-    // `iterate` draws automata (CIFS states): then only the views of `ifs` are used.
+    // `iterate` draws automata (CIFS states): then only the views of `ifs` are used. `chaos`
+    // draws an item with a chaos game of its own (a flame; random mode only): its picture and
+    // frame are the chaos game's, `ifs` is not drawn.
     void setIfs(std::shared_ptr<const Ifs> ifs, const StartSet &start,
-                CustomIterate iterate = {});
+                CustomIterate iterate = {}, CustomChaos chaos = {});
     void setStartSet(const StartSet &start);
     // Control points m x 2 (one per row), drawn as the control polygon; empty to hide.
     void setControlPoints(const Mat &points, bool closed = false);
@@ -315,6 +317,7 @@ private:
 
     std::shared_ptr<const Ifs> m_ifs;
     CustomIterate m_iterate;
+    CustomChaos m_chaos;
     StartSet m_start;
     std::vector<QPointF> m_startPlane;
     std::vector<QPointF> m_control;          // all sets, flat

@@ -16,8 +16,8 @@ void AttractorView::updateHutchinson()
 {
     m_hutch.clear();
     m_hutchTooMany = false;
-    if (m_hutchStep < 0 || !m_ifs)
-        return;
+    if (m_hutchStep < 0 || !m_ifs || m_chaos)
+        return;  // a flame's images are not those of its affine parts
     m_hutchTooMany = !vectorImages(m_hutchStep, kMaxHutchinsonVertices, &m_hutch);
 }
 

@@ -215,7 +215,7 @@ bool AttractorView::paintCurvePaths(QPainter &p, const Mapping &m) const
 {
     // Automata (m_iterate) emit their images in no useful order: they get a raster.
     if (m_settings.mode != RenderRequest::Mode::Deterministic
-        || m_start.kind != StartSet::Kind::Polyline || m_iterate || !m_ifs
+        || m_start.kind != StartSet::Kind::Polyline || m_iterate || m_chaos || !m_ifs
         || m_ifs->size() == 0 || m_ifs->views.empty() || !m_error.isEmpty())
         return false;
     // Past this many images the iteration itself takes seconds; a raster is as good on paper.

@@ -1,0 +1,85 @@
+#pragma once
+// flam3-render as the judge of the flame tests (Debian flam3-utils, installed by
+// scripts/setup.sh): a genome rendered by flam3 and by attractor-cli in the same frame, the two
+// pictures compared by block means of alpha (BlockCompare.h).
+
+#include <QImage>
+#include <QProcess>
+#include <QProcessEnvironment>
+#include <QRegularExpression>
+#include <QString>
+
+#include "TestTime.h"
+
+#include <vector>
+
+namespace awb::test {
+
+// A flame's frame as attractor-cli's --bounds: the world rectangle before render's 6% padding,
+// so that the padded frame is the flame's (centre, size / scale; y mirrored).
+inline QString boundsOfFlame(const QByteArray &flame, int *width, int *height)
+{
+    auto attribute = [&](const char *name) {
+        const QRegularExpression re(QStringLiteral("<flame [^>]*\\b%1=\"([^\"]+)\"").arg(name));
+        return re.match(QString::fromUtf8(flame)).captured(1).split(' ');
+    };
+    const QStringList size = attribute("size"), centre = attribute("center");
+    const double scale = attribute("scale").value(0).toDouble();
+    *width = size.value(0).toInt();
+    *height = size.value(1).toInt();
+    const double W = *width / scale, H = *height / scale;
+    const double cx = centre.value(0).toDouble(), cy = -centre.value(1).toDouble();
+    // Padding adds 0.06 of the larger side on each side.
+    const double w0 = W >= H ? W / 1.12 : W - 0.12 * H / 1.12;
+    const double h0 = W >= H ? H - 0.12 * w0 : H / 1.12;
+    return QStringLiteral("%1,%2,%3,%4")
+        .arg(cx - w0 / 2, 0, 'g', 17)
+        .arg(cy - h0 / 2, 0, 'g', 17)
+        .arg(cx + w0 / 2, 0, 'g', 17)
+        .arg(cy + h0 / 2, 0, 'g', 17);
+}
+
+// The picture's alpha in blocks of b x b pixels (their means), row by row; `mirror` flips it
+// upside down first.
+inline std::vector<double> blockAlpha(const QImage &image, int b, bool mirror = false)
+{
+    const QImage a = image.convertToFormat(QImage::Format_RGBA64);
+    const int nx = a.width() / b, ny = a.height() / b;
+    std::vector<double> out(std::size_t(nx) * ny, 0.0);
+    for (int y = 0; y < ny * b; ++y) {
+        const auto *row =
+            reinterpret_cast<const QRgba64 *>(a.constScanLine(mirror ? a.height() - 1 - y : y));
+        for (int x = 0; x < nx * b; ++x)
+            out[std::size_t(y / b) * nx + x / b] += row[x].alpha() / 65535.0 / (b * b);
+    }
+    return out;
+}
+
+// flam3-render of a genome into `png` (with alpha: transparency=1).
+inline bool flam3Render(const QString &flame, const QString &png, QString *why)
+{
+    QProcess p;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("format", "png");
+    env.insert("transparency", "1");
+    env.insert("out", png);
+    env.insert("nthreads", "2");
+    p.setProcessEnvironment(env);
+    p.setStandardInputFile(flame);
+    p.start("flam3-render", {});
+    if (!p.waitForFinished(awb::test::ms(300000)) || p.exitCode() != 0) {
+        *why = QString::fromUtf8(p.readAllStandardError());
+        return false;
+    }
+    return true;
+}
+
+// A genome with its quality (samples per pixel) raised, as flam3-render should draw it.
+inline QByteArray withQuality(QByteArray flame, int quality)
+{
+    return QString::fromUtf8(flame)
+        .replace(QRegularExpression("quality=\"[^\"]*\""), QStringLiteral("quality=\"%1\"").arg(quality))
+        .toUtf8();
+}
+
+} // namespace awb::test
