@@ -178,8 +178,9 @@ void importFlameItem(const FlameRead &r, const QString &name, const QString &fil
         return;
     }
     AlgorithmSpec algorithm = item->algorithm();
-    // flam3's sample count (quality x width x height), within what one picture takes.
-    algorithm.samples = qint64(std::clamp(flame::flameSamples(f), 1e5, 1e8));
+    // flam3's sample count (quality x width x height), within what one picture takes: at least
+    // 2e6, since flam3-genome's thumbnails (quality 1, 100 x 100) would look like dust.
+    algorithm.samples = qint64(std::clamp(flame::flameSamples(f), 2e6, 1e8));
     // Unused in random mode, but still bounded by the number of maps.
     algorithm.depth = std::min(algorithm.depth, AlgorithmSpec::maxDepthFor(int(f.xforms.size())));
     item->setAlgorithm(algorithm);
