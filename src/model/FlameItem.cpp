@@ -428,8 +428,7 @@ const PropertyTable &FlameItem::declaration()
                  v.finalXform->weight = 0;
              })
             .label(QT_TR_NOOP("Final xform"))
-            .tip(QT_TR_NOOP("Drawn on every point without moving the orbit; null: none"))
-            .omitWhenDefault();  // none: not written (and read whenever it is there)
+            .tip(QT_TR_NOOP("Drawn on every point without moving the orbit; null: none"));
         f.structured(
              "palette", QStringLiteral("palette"),
              [](const I &, const Flame &v) { return paletteToJson(v); },
