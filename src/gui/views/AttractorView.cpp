@@ -244,7 +244,8 @@ void AttractorView::updateStartPlane()
 {
     m_startPlane.clear();
     const Mat &X = m_start.vertices;
-    if (X.rows() == 0)
+    // A chaos game of its own (a flame) starts from random points: no start set to show.
+    if (X.rows() == 0 || m_chaos)
         return;
     Mat plane;
     if (m_ifs && !m_ifs->views.empty() && X.cols() == m_ifs->dim())

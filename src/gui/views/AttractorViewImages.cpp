@@ -54,7 +54,9 @@ bool AttractorView::randomVectorImages(std::size_t maxVertices,
     out->clear();
     if (!m_ifs || m_start.vertices.rows() == 0)
         return true;
-    if (double(m_settings.samples) * double(m_ifs->views.size()) > double(maxVertices))
+    // A flame's points are its own chaos game's, not the engine's on its affine parts: the
+    // raster only.
+    if (m_chaos || double(m_settings.samples) * double(m_ifs->views.size()) > double(maxVertices))
         return false;
     const RenderSettings &s = m_settings;
     const int maps = m_ifs->size();
