@@ -7214,6 +7214,10 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
         <source>%1: its %2 entries make a project of %3 MB, more than the %4 MB a project file may be</source>
         <translation>%1: jeho %2 položek dává projekt o %3 MB, více než %4 MB, které smí mít soubor projektu</translation>
     </message>
+    <message>
+        <source>%1: %2: note: its chaos game does not contract on average (the Lyapunov exponent along its orbit is %3): flam3 draws it by discarding the points that escape</source>
+        <translation>%1: %2: poznámka: jeho chaos game nekontrahuje v průměru (Ljapunovův exponent podél jeho orbity je %3): flam3 ji kreslí tak, že zahazuje body, které uniknou</translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>

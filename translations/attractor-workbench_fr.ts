@@ -7203,6 +7203,10 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
         <source>%1: its %2 entries make a project of %3 MB, more than the %4 MB a project file may be</source>
         <translation>%1 : ses %2 entrées font un projet de %3 Mo, plus que les %4 Mo permis pour un fichier de projet</translation>
     </message>
+    <message>
+        <source>%1: %2: note: its chaos game does not contract on average (the Lyapunov exponent along its orbit is %3): flam3 draws it by discarding the points that escape</source>
+        <translation>%1&#xa0;: %2&#xa0;: note&#xa0;: son jeu du chaos ne contracte pas en moyenne (l’exposant de Lyapunov le long de son orbite vaut %3)&#xa0;: flam3 le dessine en écartant les points qui s’échappent</translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>

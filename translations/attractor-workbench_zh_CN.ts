@@ -7192,6 +7192,10 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
         <source>%1: its %2 entries make a project of %3 MB, more than the %4 MB a project file may be</source>
         <translation>%1：其 %2 个条目构成 %3 MB 的项目，超过项目文件允许的 %4 MB</translation>
     </message>
+    <message>
+        <source>%1: %2: note: its chaos game does not contract on average (the Lyapunov exponent along its orbit is %3): flam3 draws it by discarding the points that escape</source>
+        <translation>%1：%2：注意：其混沌游戏平均而言不收缩（沿其轨道的李雅普诺夫指数为 %3）：flam3 通过丢弃逃逸的点来绘制它</translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>
