@@ -11,15 +11,12 @@
 #include "model/ProjectIO.h"
 
 #include <QColor>
-#include <QFile>
 #include <QFileInfo>
 
 #include <Eigen/LU>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <map>
 #include <optional>
 
 namespace awb {
