@@ -153,7 +153,9 @@ QJsonValue toJson(const py::handle &h, const QString &where, int depth)
         QJsonObject o;
         for (auto [k, v] : py::reinterpret_borrow<py::dict>(h)) {
             if (!py::isinstance<py::str>(k))
-                throw Error(QString("%1: the keys of a dict must be str").arg(where));
+                throw py::type_error(QString("%1: the keys of a dict must be str, got %2")
+                                         .arg(where, typeName(k))
+                                         .toStdString());
             const QString key = toQString(k, "key");
             o[key] = toJson(v, where + "." + key, depth + 1);
         }
@@ -175,14 +177,16 @@ QJsonValue toJson(const py::handle &h, const QString &where, int depth)
     }
     if (py::hasattr(h, "__float__") && py::hasattr(h, "dtype"))  // numpy scalars
         return toJson(h.attr("item")(), where, depth + 1);
-    throw Error(QString("%1: a %2 cannot be written to a project file")
-                    .arg(where, QString::fromStdString(py::str(py::type::of(h).attr("__name__")))));
+    throw py::type_error(QString("%1: a %2 cannot be written to a project file")
+                             .arg(where, typeName(h))
+                             .toStdString());
 }
 
 QJsonObject toJsonObject(const py::handle &h, const QString &where)
 {
     if (!py::isinstance<py::dict>(h))
-        throw Error(QString("%1: expected a dict").arg(where));
+        throw py::type_error(
+            QString("%1: expected a dict, got %2").arg(where, typeName(h)).toStdString());
     return toJson(h, where, 0).toObject();
 }
 
@@ -234,9 +238,16 @@ Mat toPoints(const py::handle &h, int dim, const QString &where)
         a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(h);
     } catch (const py::error_already_set &) {
     }
-    if (!a)
-        throw Error(QString("%1: expected points as a numpy array or a list of [x, y%2]")
-                        .arg(where, dim == 3 ? ", z" : ""));
+    if (!a) {
+        const QString text =
+            QString("%1: expected points as a numpy array or a list of [x, y%2], got %3")
+                .arg(where, dim == 3 ? ", z" : "", typeName(h));
+        // Not a sequence at all: the wrong type; a list that is not one of points: a value.
+        if (py::isinstance<py::list>(h) || py::isinstance<py::tuple>(h)
+            || py::isinstance<py::array>(h))
+            throw Error(text);
+        throw py::type_error(text.toStdString());
+    }
     if (a.ndim() == 1 && a.shape(0) == dim)
         a = a.reshape({py::ssize_t(1), py::ssize_t(dim)});
     if (a.ndim() != 2 || a.shape(1) != dim)
@@ -287,7 +298,8 @@ QVariant parameterFromPy(const ParameterInfo &info, const py::handle &h)
     auto number = [&]() -> double {
         if (py::isinstance<py::bool_>(h) || py::isinstance<py::str>(h)
             || !py::hasattr(h, "__float__"))
-            throw Error(QString("%1: expected a number").arg(where));
+            throw py::type_error(
+                QString("%1: expected a number, got %2").arg(where, typeName(h)).toStdString());
         const double v = PyFloat_AsDouble(h.ptr());
         if (PyErr_Occurred()) {
             PyErr_Clear();
@@ -326,7 +338,9 @@ QVariant parameterFromPy(const ParameterInfo &info, const py::handle &h)
     }
     case T::Complex: {
         if (!py::hasattr(h, "__complex__") && !py::hasattr(h, "__float__"))
-            throw Error(QString("%1: expected a complex number").arg(where));
+            throw py::type_error(QString("%1: expected a complex number, got %2")
+                                     .arg(where, typeName(h))
+                                     .toStdString());
         const Py_complex z = PyComplex_AsCComplex(h.ptr());
         if (PyErr_Occurred())
             throw py::error_already_set();
@@ -336,7 +350,9 @@ QVariant parameterFromPy(const ParameterInfo &info, const py::handle &h)
     }
     case T::Bool:
         if (!py::isinstance<py::bool_>(h))
-            throw Error(QString("%1: expected True or False").arg(where));
+            throw py::type_error(QString("%1: expected True or False, got %2")
+                                     .arg(where, typeName(h))
+                                     .toStdString());
         return h.cast<bool>();
     case T::Text:
         return toQString(h, "text");
