@@ -26,8 +26,10 @@ int importFile(const QStringList &args)
         parser.setApplicationDescription(CliTr::tr(
             "Make a project of another tool's IFS file: every entry of a Fractint .ifs file (2D "
             "and 3D, the format of Fractint, xfractint and the IFS Construction Kit), or every "
-            "flame of a flam3 genome (.flame, .flam3: flam3, Apophysis, JWildfire), as a "
-            "fractal with control points. Non-linear variations are dropped with a warning."));
+            "flame of a flam3 genome (.flame, .flam3: flam3, Apophysis, JWildfire): a flame of "
+            "affine maps as a fractal with control points, any other as a fractal flame item "
+            "drawn by flam3's chaos game (a variation this program does not know is named in "
+            "a warning)."));
         parser.addPositionalArgument("file",
                                      CliTr::tr("The file to import (.ifs, .flame, .flam3)."));
         parser.addOptions({{"out", CliTr::tr("The project file to write (.awb)."), "file"}});

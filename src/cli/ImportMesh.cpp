@@ -61,6 +61,12 @@ int importMesh(const QStringList &args)
                      .arg(mesh.faces.size())
                      .arg(extraordinary.size())
                      .arg(MeshInputs::schemeNames().at(int(scheme)));
+        if (!parser.isSet("scheme") && suggestedScheme(mesh) != scheme)
+            err() << CliTr::tr("attractor-cli: note: all %1 faces are triangles; --scheme loop "
+                               "keeps them triangles (Catmull-Clark makes each one three quads "
+                               "around a new valence-3 vertex)")
+                         .arg(mesh.faces.size())
+                  << "\n";
         if (!added->derivedError().isEmpty())
             err() << CliTr::tr("attractor-cli: note: %1").arg(added->derivedError()) << "\n";
         return 0;

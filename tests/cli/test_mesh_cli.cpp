@@ -286,6 +286,24 @@ void TestMeshCli::badFilesAreRefusedByName()
     QVERIFY(refuse("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 3 4\n", "obj")
                 .contains("oriented inconsistently"));
     QVERIFY(!QFile::exists(awb));  // nothing written for a refused file
+    // An all-triangle mesh imported without --scheme: a note proposes Loop (issue 47); with a
+    // scheme chosen, no note.
+    {
+        const QString tetra = m_dir.filePath("tetra.obj");
+        QFile f(tetra);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
+        f.close();
+        err.clear();
+        QCOMPARE(run({"import-mesh", tetra, "--out", awb}, &out, &err), 0);
+        QVERIFY2(err.contains("all 4 faces are triangles; --scheme loop"), err.constData());
+        err.clear();
+        QCOMPARE(run({"import-mesh", tetra, "--out", awb, "--scheme", "catmull-clark"}, &out,
+                     &err),
+                 0);
+        QVERIFY2(!err.contains("triangles"), err.constData());
+        QFile::remove(awb);
+    }
     QCOMPARE(run({"import-mesh", m_dir.filePath("bad.obj")}, &out, &err), 2);  // no --out
     QCOMPARE(run({"import-mesh", m_dir.filePath("nothing.obj"), "--out", awb}, &out, &err), 1);
     // A mesh item's start set in the plane's terms is refused for other items.

@@ -33,6 +33,14 @@ std::string toString(MeshScheme scheme)
 
 int regularValence(MeshScheme scheme) { return scheme == MeshScheme::Loop ? 6 : 4; }
 
+MeshScheme suggestedScheme(const Mesh &mesh)
+{
+    const bool triangles =
+        !mesh.faces.empty() && std::all_of(mesh.faces.begin(), mesh.faces.end(),
+                                           [](const auto &f) { return f.size() == 3; });
+    return triangles ? MeshScheme::Loop : MeshScheme::CatmullClark;
+}
+
 MeshTopology::MeshTopology(int vertexCount, const std::vector<std::vector<int>> &faces)
     : m_faces(faces), m_faceEdges(faces.size()), m_rings(std::size_t(std::max(vertexCount, 0)))
 {

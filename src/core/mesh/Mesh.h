@@ -26,6 +26,10 @@ struct Mesh {
     std::vector<std::vector<int>> faces;  // vertex loops, 0-based, counter-clockwise from outside
 };
 
+// The scheme made for the mesh: Loop when every face is a triangle (Catmull-Clark would make
+// each triangle three quads around a new valence-3 vertex), Catmull-Clark otherwise.
+MeshScheme suggestedScheme(const Mesh &mesh);
+
 // The connectivity of a mesh's faces. The constructor refuses, with an InputError naming the
 // problem (and the faces or vertices concerned), what subdivision cannot take: no faces, a face
 // of fewer than three vertices or one that lists a vertex twice, an index out of range, an edge
