@@ -10,25 +10,12 @@
 #include <cmath>
 #include <numeric>
 #include <optional>
-#include <sstream>
 
 namespace awb {
 
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-std::string ordinal(int n)
-{
-    const int t = n % 100;
-    const char *suffix = (t >= 11 && t <= 13) ? "th"
-                         : n % 10 == 1        ? "st"
-                         : n % 10 == 2        ? "nd"
-                         : n % 10 == 3        ? "rd"
-                                              : "th";
-    return std::to_string(n) + suffix;
-}
-
 
 JsrOptions jsrOptions(const RegularityOptions &o, int arity, int order, bool quotientOnly)
 {
@@ -150,28 +137,37 @@ std::string polytopeSummary(const Regularity &r)
 {
     if (!r.exact)
         return {};
-    std::ostringstream os;
-    os << "; exact by the invariant polytope algorithm (Guglielmi & Protasov 2013): s.m.p. (";
+    std::string smp;
     for (size_t k = 0; k < r.smp.size(); ++k)
-        os << (k ? " " : "") << "T_" << r.smp[k];
-    os << "), " << r.certificate->vertices.size() << " vertices";
-    return os.str();
+        smp += (k ? " T_" : "T_") + std::to_string(r.smp[k]);
+    return formatMessage(coreTranslate("awb::analysis",
+                                       "; exact by the invariant polytope algorithm (Guglielmi & "
+                                       "Protasov 2013): s.m.p. (%1), %2 vertices"),
+                         smp, r.certificate->vertices.size());
 }
 
 std::string jsrSummary(const JsrBounds &b, int count, Eigen::Index size)
 {
-    std::ostringstream os;
-    os << "JSR of " << count << " matrices " << size << " x " << size;
+    std::string s = formatMessage(coreTranslate("awb::analysis", "JSR of %1 matrices %2 x %2"),
+                                  count, size);
     if (b.norm == "invariant polytope")
-        return os.str();  // polytopeSummary says how
-    os << ": lower bound "
-       << "max rho(product)^(1/k) over all products up to length " << b.enumerated;
+        return s;  // polytopeSummary says how
+    s += formatMessage(coreTranslate("awb::analysis", ": lower bound max rho(product)^(1/k) "
+                                                      "over all products up to length %1"),
+                       b.enumerated);
     if (b.depth > b.enumerated)
-        os << " and the branch's products up to length " << b.depth;
-    os << ", upper bound " << (b.depth > 0 ? "by Gripenberg's branch and bound (1996) " : "")
-       << "in the " << b.norm << (b.converged ? " (equal to the lower bound)" : "") << ", "
-       << b.nodes << " products";
-    return os.str();
+        s += formatMessage(
+            coreTranslate("awb::analysis", " and the branch's products up to length %1"),
+            b.depth);
+    s += formatMessage(b.depth > 0
+                           ? coreTranslate("awb::analysis", ", upper bound by Gripenberg's "
+                                                            "branch and bound (1996) in the %1")
+                           : coreTranslate("awb::analysis", ", upper bound in the %1"),
+                       b.norm);
+    if (b.converged)
+        s += coreTranslate("awb::analysis", " (equal to the lower bound)");
+    s += formatMessage(coreTranslate("awb::analysis", ", %1 products"), b.nodes);
+    return s;
 }
 
 } // namespace
@@ -338,16 +334,17 @@ Regularity maskRegularity(const std::vector<double> &mask, int arity,
                                                   "basic limit function are stable (not checked "
                                                   "for this mask). ");
     fillBounds(r, double(d.order), double(d.order));
-    const std::string nth = ordinal(d.order);
-    std::ostringstream m;
-    m << "r = n - log_" << arity << " rho_n with n = " << d.order
-      << " (a(z) has the factor (" << (arity == 2 ? std::string("1 + z")
-                                    : "1 + .. + z^" + std::to_string(arity - 1))
-      << ")^" << d.order
-      << "), rho_n the joint spectral radius of the transition matrices of the " << nth
-      << " divided-difference mask (Daubechies & Lagarias 1992, Rioul 1992); "
-      << jsrSummary(r.jsr, arity, r.transition.front().rows()) << polytopeSummary(r);
-    r.method = m.str();
+    const std::string factor =
+        arity == 2 ? std::string("1 + z") : "1 + .. + z^" + std::to_string(arity - 1);
+    r.method = formatMessage(coreTranslate("awb::analysis",
+                                           "r = n - log_%1 rho_n with n = %2 (a(z) has the "
+                                           "factor (%3)^%2), rho_n the joint spectral radius of "
+                                           "the transition matrices of the divided-difference "
+                                           "mask of order %2 (Daubechies & Lagarias 1992, Rioul "
+                                           "1992); %4%5"),
+                             arity, d.order, factor,
+                             jsrSummary(r.jsr, arity, r.transition.front().rows()),
+                             polytopeSummary(r));
     if (const SobolevRegularity sob = sobolevRegularity(a, arity); sob.applies)
         r.sobolev = sob.exponent;
     return r;
@@ -482,12 +479,12 @@ Regularity matrixRegularity(const std::vector<Mat> &S, const RegularityOptions &
                                                                 "join). "),
                                  joined - 1, joined);
     fillBounds(r, 0.0, double(joined));
-    std::ostringstream os;
-    os << "r = -log_" << N << " rho with rho the joint spectral radius of S_1..S_" << N
-       << " on the quotient by the control vectors of the polynomials of degree < " << n
-       << " that they generate (Micchelli & Prautzsch 1989); "
-       << jsrSummary(r.jsr, N, m - n) << polytopeSummary(r);
-    r.method = os.str();
+    r.method = formatMessage(coreTranslate("awb::analysis",
+                                           "r = -log_%1 rho with rho the joint spectral radius "
+                                           "of S_1..S_%1 on the quotient by the control vectors "
+                                           "of the polynomials of degree < %2 that they "
+                                           "generate (Micchelli & Prautzsch 1989); %3%4"),
+                             N, n, jsrSummary(r.jsr, N, m - n), polytopeSummary(r));
     return r;
 }
 

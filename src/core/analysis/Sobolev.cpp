@@ -9,7 +9,6 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <sstream>
 
 namespace awb {
 
@@ -144,14 +143,15 @@ SobolevRegularity sobolevRegularity(const std::vector<double> &mask, int arity)
         r.message += formatMessage(coreTranslate("awb::analysis", " (capped at the %1 sum rules; "
                                                                   "-log_N(rho) / 2 = %2)"),
                                    n, streamedNumber(raw));
-    std::ostringstream m;
-    m << "s_2 = -log_" << N << "(rho) / 2 with rho the spectral radius of the transition "
-      << "operator (T v)_i = sum_j b_{" << N << "i - j} v_j of the autocorrelation b_k = (1/" << N
-      << ") sum_j a_j a_{j+k} on [-" << L << ", " << L << "], restricted to the " << (M - 2 * n)
-      << "-dimensional invariant subspace orthogonal to the polynomials of degree < " << 2 * n
-      << " (Eirola 1992, Villemoes 1994, Jia 1999); exact for stable integer shifts, a lower "
-      << "bound otherwise (Ron & Shen 2000); rounding margin " << r.margin;
-    r.method = m.str();
+    r.method = formatMessage(
+        coreTranslate("awb::analysis",
+                      "s_2 = -log_%1(rho) / 2 with rho the spectral radius of the transition "
+                      "operator (T v)_i = sum_j b_{%1i - j} v_j of the autocorrelation b_k = "
+                      "(1/%1) sum_j a_j a_{j+k} on [-%2, %2], restricted to the %3-dimensional "
+                      "invariant subspace orthogonal to the polynomials of degree < %4 (Eirola "
+                      "1992, Villemoes 1994, Jia 1999); exact for stable integer shifts, a lower "
+                      "bound otherwise (Ron & Shen 2000); rounding margin %5"),
+        N, L, M - 2 * n, 2 * n, streamedNumber(r.margin));
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
 }
