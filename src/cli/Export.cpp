@@ -142,15 +142,10 @@ int exportData(const QStringList &args)
             const QByteArray text = QByteArray::fromStdString(fractintEntryText(*entry));
             if (file.write(text) != text.size())
                 throw Failure{CliTr::tr("cannot write %1: %2").arg(outFile, file.errorString())};
-        } else if (const auto *flameItem = qobject_cast<const FlameItem *>(item);
-                   flameItem && format == "flame") {
-            // The flame itself, every field flam3 draws (model/FlameFile.h).
-            const QByteArray text = flameFileText({flameItem->namedFlame()});
-            if (file.write(text) != text.size())
-                throw Failure{CliTr::tr("cannot write %1: %2").arg(outFile, file.errorString())};
         } else if (format == "flame") {
             QString refused;
-            if (!flameEntryOf(*item, &refused))
+            // A flame item is written whole (flameOf); other items need a frame first.
+            if (!qobject_cast<const FlameItem *>(item) && !flameEntryOf(*item, &refused))
                 throw Failure{refused};
             // The frame `render` draws with the same --size and --bounds.
             FigureOptions o;

@@ -233,6 +233,10 @@ std::optional<FractintEntry> flameEntryOf(const AttractorItem &item, QString *wh
 std::optional<QByteArray> flameOf(const AttractorItem &item, const QStringList &mapColours,
                                   const FlameFrame &frame, QString *why)
 {
+    // A flame item is written as it is: every field flam3 draws (model/FlameFile.h), its own
+    // camera and palette.
+    if (const auto *flame = qobject_cast<const FlameItem *>(&item))
+        return flameFileText({flame->namedFlame()});
     const auto entry = flameEntryOf(item, why);
     if (!entry)
         return std::nullopt;
@@ -261,9 +265,12 @@ std::optional<QByteArray> flameOf(const AttractorItem &item, const QStringList &
                .arg(frame.size.height())
                .arg(number(w.center().x()), number(-w.center().y()), number(scale))
                .toUtf8();
+    // color_speed 1: a point takes the colour of the last map applied, as the window colours
+    // by map (with flam3's usual 0.5 the colours of successive maps mix: issue 47's fern
+    // showed one frond in another colour in flam3-render).
     for (int i = 0; i < n; ++i) {
         const AffineMap f = mirrored(entry->maps[std::size_t(i)]);
-        out += QStringLiteral("   <xform weight=\"%1\" color=\"%2\" color_speed=\"0.5\" "
+        out += QStringLiteral("   <xform weight=\"%1\" color=\"%2\" color_speed=\"1\" "
                               "linear=\"1\" coefs=\"%3 %4 %5 %6 %7 %8\" opacity=\"1\"/>\n")
                    .arg(number(entry->probabilities[std::size_t(i)]),
                         number(entryOf[std::size_t(i)] / 255.0), number(f.A(0, 0)),

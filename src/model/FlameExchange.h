@@ -38,15 +38,17 @@ struct FlameFrame {
     QSize size;
 };
 
-// The item as a flam3 genome (one <flame> in <flames>): its affine maps of the plane as
-// xforms with the linear variation, weights = the random iteration's probabilities, each map
-// its colour of `mapColours` ("#rrggbb", one per map) through a 256-entry palette, framed as
-// `frame` (centre, scale in pixels per unit, size). nullopt with *why for an item that is not
-// an affine IFS of the plane.
 // The plane maps a flame of `item` would hold: fractintEntryOf's, refused (nullopt and *why)
 // for an IFS of space. The CLI asks before it frames the item.
 std::optional<FractintEntry> flameEntryOf(const AttractorItem &item, QString *why);
 
+// The item as a flam3 genome (one <flame> in <flames>). A flame item: itself, every field
+// (its own camera and palette; `mapColours` and `frame` unused). Any other: its affine maps of
+// the plane as xforms with the linear variation, weights = the random iteration's
+// probabilities, each map its colour of `mapColours` ("#rrggbb", one per map) through a
+// 256-entry palette, framed as `frame` (centre, scale in pixels per unit, size). nullopt with
+// *why for an item that is neither a flame nor an affine IFS of the plane. The window's
+// Export Item As and `attractor-cli export --format flame` both write this.
 std::optional<QByteArray> flameOf(const AttractorItem &item, const QStringList &mapColours,
                                   const FlameFrame &frame, QString *why);
 

@@ -11,6 +11,9 @@
 
 #include "TestTime.h"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <vector>
 
 namespace awb::test {
@@ -53,6 +56,58 @@ inline std::vector<double> blockAlpha(const QImage &image, int b, bool mirror = 
             out[std::size_t(y / b) * nx + x / b] += row[x].alpha() / 65535.0 / (b * b);
     }
     return out;
+}
+
+// The mean colour of each b x b block, as chromaticity (r, g, b) / (r + g + b), and its lit
+// weight (the sum of r + g + b): brightness, gamma and alpha differ between two renderers, the
+// hue of what is drawn must not.
+struct BlockChroma {
+    std::vector<std::array<double, 3>> chroma;
+    std::vector<double> weight;
+};
+inline BlockChroma blockChroma(const QImage &image, int b)
+{
+    const QImage a = image.convertToFormat(QImage::Format_RGBA64);
+    const int nx = a.width() / b, ny = a.height() / b;
+    BlockChroma out;
+    out.chroma.assign(std::size_t(nx) * ny, {0.0, 0.0, 0.0});
+    out.weight.assign(std::size_t(nx) * ny, 0.0);
+    for (int y = 0; y < ny * b; ++y) {
+        const auto *row = reinterpret_cast<const QRgba64 *>(a.constScanLine(y));
+        for (int x = 0; x < nx * b; ++x) {
+            auto &c = out.chroma[std::size_t(y / b) * nx + x / b];
+            c[0] += row[x].red();
+            c[1] += row[x].green();
+            c[2] += row[x].blue();
+        }
+    }
+    for (std::size_t k = 0; k < out.chroma.size(); ++k) {
+        auto &c = out.chroma[k];
+        const double sum = c[0] + c[1] + c[2];
+        out.weight[k] = sum;
+        if (sum > 0)
+            for (double &v : c)
+                v /= sum;
+    }
+    return out;
+}
+
+// The mean L1 distance of the chromaticities of the blocks lit in both (each more than
+// `lit` of the brightest block's weight).
+inline double chromaDistance(const BlockChroma &a, const BlockChroma &b, double lit = 0.05)
+{
+    const double ma = *std::max_element(a.weight.begin(), a.weight.end());
+    const double mb = *std::max_element(b.weight.begin(), b.weight.end());
+    double sum = 0;
+    int n = 0;
+    for (std::size_t k = 0; k < a.weight.size() && k < b.weight.size(); ++k) {
+        if (a.weight[k] <= lit * ma || b.weight[k] <= lit * mb)
+            continue;
+        for (int c = 0; c < 3; ++c)
+            sum += std::abs(a.chroma[k][c] - b.chroma[k][c]);
+        ++n;
+    }
+    return n ? sum / n : 2.0;
 }
 
 // flam3-render of a genome into `png` (with alpha: transparency=1).

@@ -456,6 +456,11 @@ void TestFlameCli::exportRendersInFlam3()
     QVERIFY(same > mirrored + 0.2);
     QVERIFY(awb::test::litCovered(A, B, 0.05, 0.05) > 0.9);
     QVERIFY(awb::test::litCovered(B, A, 0.05, 0.05) > 0.9);
+    // In the same colours: each map's points in its colour (issue 47: with flam3's usual
+    // color_speed 0.5 one frond came out in a mix of two maps' colours).
+    const double hue = chromaDistance(blockChroma(a, 10), blockChroma(b, 10));
+    qInfo("fern: mean chromaticity distance %.3f", hue);
+    QVERIFY2(hue < 0.15, qPrintable(QString::number(hue)));
 }
 
 void TestFlameCli::rawDensityOut()
