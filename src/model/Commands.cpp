@@ -65,7 +65,9 @@ void MoveItemCommand::undo()
 MoveControlPointsCommand::MoveControlPointsCommand(AttractorItem *item, int set,
                                                    const std::map<int, Point> &to,
                                                    int gesture)
-    : QUndoCommand(tr("Move %n control points of %1", nullptr, int(to.size()))
+    // English has no numerus translation file: the singular is its own message.
+    : QUndoCommand((to.size() == 1 ? tr("Move a control point of %1")
+                                   : tr("Move %n control points of %1", nullptr, int(to.size())))
                        .arg(item->name())),
       m_item(item), m_set(set), m_gesture(gesture)
 {

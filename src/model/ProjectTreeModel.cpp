@@ -147,7 +147,9 @@ bool ProjectTreeModel::moveRows(const QModelIndex &sourceParent, int sourceRow, 
     int row = destinationChild;
     if (from == to && destinationChild > sourceRow)
         row -= count;
-    CompoundEdit edit(m_project, tr("Move %n items", nullptr, int(items.size())));
+    CompoundEdit edit(m_project, items.size() == 1
+                                     ? tr("Move %1").arg(items.front()->name())
+                                     : tr("Move %n items", nullptr, int(items.size())));
     // Moving down a list, place the last item first so the others do not shift its target.
     if (from == to && row > sourceRow) {
         for (int k = count - 1; k >= 0; --k)

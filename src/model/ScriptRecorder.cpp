@@ -79,7 +79,10 @@ ScriptRecorder::ScriptRecorder(Project *project, QObject *parent)
     connect(project, &Project::itemInserted, this, structural);
     connect(project, &Project::itemRemoved, this, structural);
     connect(project, &Project::itemMoved, this, structural);
-    connect(project, &Project::reset, this, &ScriptRecorder::restart);
+    connect(project, &Project::reset, this, [this] {
+        m_origin.clear();
+        restart();
+    });
     connect(project, &Project::gestureActiveChanged, this, [this](bool active) {
         if (!active && m_dirty)
             process();
@@ -102,8 +105,14 @@ void ScriptRecorder::restart()
     m_dirty = false;
     m_lastIsPush = false;
     m_aligned = true;
-    m_baseFile = m_project->fileName();
+    m_baseFile = m_project->fileName().isEmpty() ? m_origin : m_project->fileName();
     emit restarted(m_baseFile);
+}
+
+void ScriptRecorder::setOrigin(const QString &file)
+{
+    m_origin = file;
+    restart();
 }
 
 std::vector<const QUndoCommand *> ScriptRecorder::commands() const

@@ -50,6 +50,9 @@ public:
     QString script() const;
     // Forgets the steps and takes the document as it is now as the start.
     void restart();
+    // The document was opened as a copy of `file` (an example of the gallery): the recording
+    // starts from that file, as the script's default, until another document replaces it.
+    void setOrigin(const QString &file);
 
     // Python literals, shared with the tests: a string, a number (shortest text that reads
     // back to the same double), a JSON value (dicts, lists, True, None).
@@ -66,6 +69,7 @@ signals:
     void lastReplaced(const QString &lines);
 
 private:
+    QString m_origin;
     struct Entry {
         QPointer<Item> item;
         QString name;

@@ -218,11 +218,16 @@ DerivedIfs SubdivisionMeshItem::computeIfs() const
     }
     out.A.unavailable = tr("a mesh has no single lifted space: each of its pieces is lifted "
                            "over its own control net");
-    out.note = tr("%1 pieces of %2 kinds after %3 isolating steps (docs/mathematics.md, "
-                  "\"Extraordinary vertices\")")
-                   .arg(pieces->roots.size())
-                   .arg(pieces->types.size())
-                   .arg(pieces->steps);
+    out.note = pieces->steps == 1
+                   ? tr("%1 pieces of %2 kinds after one step that isolates the extraordinary "
+                        "vertices")
+                         .arg(pieces->roots.size())
+                         .arg(pieces->types.size())
+                   : tr("%1 pieces of %2 kinds after %3 steps that isolate the extraordinary "
+                        "vertices")
+                         .arg(pieces->roots.size())
+                         .arg(pieces->types.size())
+                         .arg(pieces->steps);
     return out;
 }
 
@@ -295,7 +300,8 @@ const PropertyTable &SubdivisionMeshItem::declaration()
         inputs
             .choice("colouring", &MeshInputs::levelColours, {"maps", "levels"},
                     {QT_TR_NOOP("By map"), QT_TR_NOOP("By level around extraordinary vertices")})
-            .label(QT_TR_NOOP("Colours"))
+            // Not "Colour(s)": the style's "Colour" (by map, by address, single) is beside it.
+            .label(QT_TR_NOOP("Pieces coloured"))
             .group(QT_TR_NOOP("Style"))
             .tip(QT_TR_NOOP("By level: around an extraordinary vertex, the rings C, f(C), f²(C), "
                             "… of its IFS with condensation get colours in turn"));

@@ -8,6 +8,7 @@
 #include "model/FractalItem.h"
 #include "model/ItemRegistry.h"
 #include "model/Project.h"
+#include "model/ProjectIO.h"
 #include "model/ScriptRecorder.h"
 #include "model/SubdivisionCurveItem.h"
 
@@ -155,6 +156,23 @@ void TestScriptRecorder::openingRestarts()
         QStringLiteral("project = awb.open(sys.argv[1] if len(sys.argv) > 1 else \"") + file
         + "\")"));
     QVERIFY(script.contains(QStringLiteral("    project.save(sys.argv[2])")));
+
+    // An example opened as a copy (no file name; issue 47): the recording's default is the
+    // example, also after Clear Recording; the next document forgets it.
+    ProjectData data;
+    QString error;
+    QVERIFY2(ProjectIO::readFile(file, &data, &error), qPrintable(error));
+    m_project->adopt(std::move(data), QString(), false);
+    QCOMPARE(r.baseFile(), QString());
+    r.setOrigin(file);
+    QCOMPARE(r.baseFile(), file);
+    QVERIFY(r.script().contains(QStringLiteral("else \"") + file + "\")"));
+    QVERIFY(r.script().contains(QStringLiteral("the edits of \"") + file + "\""));
+    r.restart();
+    QCOMPARE(r.baseFile(), file);
+    m_project->clear();
+    QCOMPARE(r.baseFile(), QString());
+    QVERIFY(r.script().contains(QStringLiteral("else awb.Project()")));
 }
 
 void TestScriptRecorder::literals()

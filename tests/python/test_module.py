@@ -273,7 +273,7 @@ def test_control_points_list_like(awb, four_point, curve):
     steps = 0
     cp[0] = [0.5, -0.5]
     steps += 1
-    assert cp[0].tolist() == [0.5, -0.5] and p.undo_text.startswith("Move 1 control points")
+    assert cp[0].tolist() == [0.5, -0.5] and p.undo_text.startswith("Move a control point of")
     cp[2] = np.array([3.0, 3.0])
     steps += 1
     cp.insert(1, [0.75, 0.25])
