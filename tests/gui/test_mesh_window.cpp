@@ -208,7 +208,7 @@ void TestMeshWindow::extraordinaryVertexInTheWindow()
             free = free && QPointF::dotProduct(d, d) > 14.0 * 14.0;
         }
         const QPointF at = view->markerScreen(k);
-        free = free && view->rect().contains(at.toPoint());
+        free = free && view->rect().contains(at.toPoint()) && view->markerFacing(k);
         if (free)
             chosen = k;
     }
@@ -216,6 +216,36 @@ void TestMeshWindow::extraordinaryVertexInTheWindow()
     QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->markerScreen(chosen).toPoint());
     QCOMPARE(w.controller()->focusedVertex(), chosen);
     QCOMPARE(view->selectedMarker(), chosen);
+    // Issue 47: markers on the far side of the closed surface are hidden (not clickable
+    // through it); the seen ones are exactly those whose outward normal faces the viewer.
+    int hiddenCount = 0;
+    for (int k = 0; k < view->markerCount(); ++k) {
+        const ExtraordinaryVertex &e = (*list)[std::size_t(k)];
+        const Eigen::Vector3d centre = e.limit.transpose() / std::max(1e-12, e.limit.norm());
+        // Starting meshes are centred at the origin: the outward normal points away from it.
+        QVERIFY2(e.normal.dot(centre) > 0.5, qPrintable(QString::number(k)));
+        hiddenCount += view->markerFacing(k) ? 0 : 1;
+    }
+    QVERIFY2(hiddenCount >= 1 && hiddenCount < view->markerCount(),
+             qPrintable(QString::number(hiddenCount)));
+    // A click on a marker selects its vertex even where a control point lies under it (the
+    // view zoomed far out: every handle and marker within a few pixels); the point stays.
+    view->zoomBy(0.08);
+    int other = -1;
+    for (int k = 0; k < view->markerCount() && other < 0; ++k)
+        if (k != chosen && view->markerFacing(k)
+            && (*list)[std::size_t(k)].valence == valence)
+            other = k;
+    QVERIFY(other >= 0);
+    const std::vector<Point> before = item->controlPoints(0);
+    const int stepsBefore = w.project()->undoStack()->count();
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->markerScreen(other).toPoint());
+    QCOMPARE(w.controller()->focusedVertex(), other);
+    QVERIFY(item->controlPoints(0) == before);
+    QCOMPARE(w.project()->undoStack()->count(), stepsBefore);
+    view->zoomBy(1 / 0.08);
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->markerScreen(chosen).toPoint());
+    QCOMPARE(w.controller()->focusedVertex(), chosen);
     w.controller()->refreshNow();
     // Spectrum dock: the eigenvalues of the vertex's local subdivision matrix, lambda marked.
     const QList<MapSpectrum> maps = w.spectrumView()->maps();

@@ -154,6 +154,17 @@ void TestSurfaceView::cameraMovesTheFigure()
     QVERIFY(drawnPixels(view.renderImage(QSize(300, 240), false)) > drawnPixels(before));
     view.resetCamera();
     QVERIFY((view.controlPointScreen(0) - handle).manhattanLength() < 1.0);
+    // The wheel zooms about the cursor (issue 47): a net point under it stays there while
+    // the others move away from it.
+    const QPointF far = view.controlPointScreen(int(item->controlPoints(0).size()) - 1);
+    QWheelEvent wheel(handle, view.mapToGlobal(handle), QPoint(), QPoint(0, 240), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(&view, &wheel);
+    QVERIFY2((view.controlPointScreen(0) - handle).manhattanLength() < 0.01,
+             qPrintable(QStringLiteral("%1 %2").arg(view.controlPointScreen(0).x())
+                            .arg(view.controlPointScreen(0).y())));
+    const QPointF farAfter = view.controlPointScreen(int(item->controlPoints(0).size()) - 1);
+    QVERIFY(QLineF(handle, farAfter).length() > 1.3 * QLineF(handle, far).length());
 }
 
 void TestSurfaceView::mainWindowShowsSurfaces()

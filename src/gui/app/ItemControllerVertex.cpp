@@ -14,6 +14,8 @@
 #include "gui/views/VertexPanel.h"
 #include "model/EigenvaluePlotItem.h"
 #include "model/Project.h"
+
+#include <set>
 #include "model/SubdivisionMeshItem.h"
 
 namespace awb {
@@ -93,13 +95,32 @@ QList<NamedMatrix> ItemController::focusedMatrices() const
 void ItemController::showMeshMarkers(const SubdivisionMeshItem *mesh)
 {
     const auto list = mesh->extraordinary();
+    // A closed mesh (every edge between two faces) hides the markers on its far side; an open
+    // one shows its back, so its markers always show.
+    const auto pieces = mesh->pieces();  // the topology's identity: recomputed when it changes
+    if (m_closedMeshKey != pieces.get()) {
+        m_closedMeshKey = pieces.get();
+        m_closedMesh = true;
+        const Mesh m = mesh->mesh();
+        std::set<std::pair<int, int>> edges;
+        for (const auto &f : m.faces)
+            for (std::size_t k = 0; k < f.size(); ++k)
+                edges.insert({f[k], f[(k + 1) % f.size()]});
+        for (const auto &[a, b] : edges)
+            m_closedMesh = m_closedMesh && edges.count({b, a});
+    }
+    const bool closed = m_closedMesh;
     std::vector<SurfaceView::Marker> markers;
     markers.reserve(list->size());
     for (const ExtraordinaryVertex &e : *list) {
         if (e.limit.size() != 3)
             continue;
+        const bool normal = closed && e.normal.size() == 3 && e.normal.norm() > 0.5;
         markers.push_back({QVector3D(float(e.limit(0)), float(e.limit(1)), float(e.limit(2))),
-                           QString::number(e.valence)});
+                           QString::number(e.valence),
+                           normal ? QVector3D(float(e.normal(0)), float(e.normal(1)),
+                                              float(e.normal(2)))
+                                  : QVector3D()});
     }
     // One marker per entry, in the list's order (the focus is an index into it).
     if (markers.size() != list->size())

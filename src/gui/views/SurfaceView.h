@@ -22,6 +22,7 @@
 #include "gui/views/AttractorRenderer.h"
 #include "gui/views/ThreadInbox.h"
 
+#include <optional>
 #include <QElapsedTimer>
 #include <QImage>
 #include <QMatrix4x4>
@@ -108,7 +109,9 @@ public:
     // Orbit by screen pixels (turntable: horizontal turns about z, vertical tilts).
     void orbit(double dxPixels, double dyPixels);
     void pan(double dxPixels, double dyPixels);
-    void zoomBy(double factor);
+    // Zooms by `factor` about the view centre, or keeping the point under `anchor` (the
+    // mouse wheel's cursor) where it is.
+    void zoomBy(double factor, std::optional<QPointF> anchor = std::nullopt);
     // Frames the net, the start set and the mesh from the default direction.
     void resetCamera();
     // The direction resetCamera() looks from (the item's saved camera, degrees); a new
@@ -128,10 +131,16 @@ public:
     struct Marker {
         QVector3D at;
         QString label;
+        // The outward unit normal of a closed surface at `at`: the marker is hidden behind the
+        // surface when it faces away from the viewer (faded, no label, not clickable). Zero
+        // (an open surface, whose back is seen, or no normal): always shown.
+        QVector3D normal;
     };
     void setMarkers(std::vector<Marker> markers);
     int markerCount() const { return int(m_markers.size()); }
     QPointF markerScreen(int i) const;
+    // Whether marker i faces the viewer (see Marker::normal).
+    bool markerFacing(int i) const;
     void setSelectedMarker(int index);
     int selectedMarker() const { return m_selectedMarker; }
     QPointF startVertexScreen(int i) const;

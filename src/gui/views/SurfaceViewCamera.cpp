@@ -113,6 +113,25 @@ QPointF SurfaceView::startVertexScreen(int i) const
     return toScreen(vec(Eigen::Vector3d(m_start3.row(i).transpose())));
 }
 
+bool SurfaceView::markerFacing(int i) const
+{
+    if (i < 0 || i >= markerCount())
+        return false;
+    const Marker &m = m_markers[std::size_t(i)];
+    if (m.normal.isNull())
+        return true;
+    // Toward the eye: the view direction (orthographic), or from the point to the eye.
+    const OrthoCamera &c = m_camera.ortho;
+    Eigen::Vector3d toward = c.toward();
+    if (m_camera.perspective && m_useGl) {
+        const double t = std::tan(0.5 * m_camera.fieldOfView * degree);
+        const Eigen::Vector3d eye = c.centre + c.toward() * (c.halfHeight / t);
+        toward = (eye - vec(m.at)).normalized();
+    }
+    // A little past the silhouette still counts as seen: the marker sits on the rim.
+    return vec(m.normal).dot(toward) > -0.05;
+}
+
 QPointF SurfaceView::markerScreen(int i) const
 {
     if (i < 0 || i >= markerCount())
@@ -221,9 +240,16 @@ void SurfaceView::pan(double dx, double dy)
     cameraMoved();
 }
 
-void SurfaceView::zoomBy(double factor)
+void SurfaceView::zoomBy(double factor, std::optional<QPointF> anchor)
 {
-    m_camera.ortho.halfHeight /= std::clamp(factor, 1e-3, 1e3);
+    factor = std::clamp(factor, 1e-3, 1e3);
+    if (anchor) {
+        // The point under the anchor (at the depth of the centre) stays under it.
+        const QPointF offset = *anchor - QRectF(rect()).center();
+        m_camera.ortho.centre += (1.0 - 1.0 / factor)
+                                 * vec(screenDelta(offset, vec(m_camera.ortho.centre)));
+    }
+    m_camera.ortho.halfHeight /= factor;
     m_cameraSet = true;
     cameraMoved();
 }

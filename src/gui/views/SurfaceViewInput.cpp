@@ -62,6 +62,8 @@ int SurfaceView::hitMarker(const QPointF &screen) const
     int best = -1;
     double bestDistance = hitRadius * hitRadius;
     for (int i = 0; i < markerCount(); ++i) {
+        if (!markerFacing(i))
+            continue;  // behind the surface: not clickable through it
         const QPointF d = markerScreen(i) - screen;
         const double dd = QPointF::dotProduct(d, d);
         if (dd <= bestDistance) {
@@ -99,6 +101,9 @@ void SurfaceView::mousePressEvent(QMouseEvent *event)
         else
             s = -1;
     }
+    // A marker under the press: a click (no drag) selects its vertex, also when a control point
+    // lies under it too (its drag still moves the point).
+    m_drag.marker = hitMarker(pos);
     if (c >= 0) {
         m_drag.kind = DragKind::ControlPoint;
         m_drag.index = c;
@@ -116,7 +121,6 @@ void SurfaceView::mousePressEvent(QMouseEvent *event)
         emit startVertexPressed(s);
     } else {
         m_drag.kind = DragKind::Orbit;
-        m_drag.marker = hitMarker(pos);
     }
     update();
 }
@@ -176,9 +180,11 @@ void SurfaceView::mouseReleaseEvent(QMouseEvent *event)
         m_settle.stop();
         m_moving = false;
     }
+    const bool click = (drag.last - drag.press).manhattanLength() < 3;
     if (drag.kind == DragKind::Orbit && drag.last != drag.press)
         emit cameraTurned(m_camera.ortho.azimuth, m_camera.ortho.elevation);
-    else if (drag.kind == DragKind::Orbit && drag.marker >= 0) {
+    else if ((drag.kind == DragKind::Orbit || drag.kind == DragKind::ControlPoint) && click
+             && drag.marker >= 0) {
         setSelectedMarker(drag.marker);
         emit markerClicked(drag.marker);
     }
@@ -189,7 +195,7 @@ void SurfaceView::mouseReleaseEvent(QMouseEvent *event)
 void SurfaceView::wheelEvent(QWheelEvent *event)
 {
     // 15 degrees of a wheel notch (120 units) zoom by 1.2.
-    zoomBy(std::pow(1.2, event->angleDelta().y() / 120.0));
+    zoomBy(std::pow(1.2, event->angleDelta().y() / 120.0), event->position());
     event->accept();
 }
 

@@ -6,6 +6,7 @@
 #include "gui/views/FrameLog.h"
 #include "gui/views/SurfaceGLWindow.h"
 
+#include <QFontMetricsF>
 #include <QPainter>
 #include <QPainterPath>
 #include <QResizeEvent>
@@ -282,10 +283,51 @@ void SurfaceView::paintOverlay(QPainter &p, const QMatrix4x4 &mvp, const QRectF 
                                                                   .pixelSize() * unit))));
         font.setBold(true);
         p.setFont(font);
-        for (int i = 0; i < markerCount(); ++i) {
+        const QFontMetricsF fm(font);
+        // Markers behind a closed surface first, faded and unlabelled; then the seen ones,
+        // the selected one last (on top). Hundreds of markers (a car, a scanned mesh) get
+        // smaller diamonds, and a label only where it does not cover another (issue 47:
+        // "a carpet of diamonds with stacked labels").
+        std::vector<int> hidden, seen;
+        for (int i = 0; i < markerCount(); ++i)
+            (markerFacing(i) ? seen : hidden).push_back(i);
+        std::stable_partition(seen.begin(), seen.end(),
+                              [this](int i) { return i != m_selectedMarker; });
+        const double size = seen.size() > 60 ? 0.8 : 1.25;
+        for (int i : hidden) {
+            const QPointF c = project(mvp, target, m_markers[std::size_t(i)].at);
+            const double r = 0.8 * handleRadius * unit;
+            QPolygonF diamond;
+            diamond << c + QPointF(0, -r) << c + QPointF(r, 0) << c + QPointF(0, r)
+                    << c + QPointF(-r, 0);
+            p.setPen(QPen(QColor(60, 20, 90, 70), 1.0 * unit));
+            p.setBrush(Qt::NoBrush);
+            p.drawPolygon(diamond);
+        }
+        std::vector<QRectF> labelled;
+        // The selected marker's label is placed first: it always shows.
+        std::vector<int> order = seen;
+        std::stable_partition(order.begin(), order.end(),
+                              [this](int i) { return i == m_selectedMarker; });
+        std::vector<char> showLabel(std::size_t(markerCount()), 0);
+        for (int i : order) {
+            const Marker &m = m_markers[std::size_t(i)];
+            if (m.label.isEmpty())
+                continue;
+            const QPointF c = project(mvp, target, m.at);
+            const double r = size * handleRadius * unit;
+            const QRectF box = fm.boundingRect(m.label).translated(c + QPointF(r + 2 * unit, -r))
+                                   .adjusted(-2 * unit, -2 * unit, 2 * unit, 2 * unit);
+            if (std::any_of(labelled.begin(), labelled.end(),
+                            [&](const QRectF &b) { return b.intersects(box); }))
+                continue;
+            labelled.push_back(box);
+            showLabel[std::size_t(i)] = 1;
+        }
+        for (int i : seen) {
             const Marker &m = m_markers[std::size_t(i)];
             const QPointF c = project(mvp, target, m.at);
-            const double r = 1.25 * handleRadius * unit;
+            const double r = size * handleRadius * unit;
             const bool selected = i == m_selectedMarker;
             QPolygonF diamond;
             diamond << c + QPointF(0, -r) << c + QPointF(r, 0) << c + QPointF(0, r)
@@ -293,7 +335,7 @@ void SurfaceView::paintOverlay(QPainter &p, const QMatrix4x4 &mvp, const QRectF 
             p.setPen(QPen(selected ? QColor(120, 20, 0) : QColor(60, 20, 90), 1.2 * unit));
             p.setBrush(selected ? QColor(240, 90, 30) : QColor(150, 90, 210));
             p.drawPolygon(diamond);
-            if (m.label.isEmpty())
+            if (!showLabel[std::size_t(i)])
                 continue;
             const QPointF at = c + QPointF(r + 2 * unit, -r);
             // A white halo keeps the label legible over the shaded surface.
