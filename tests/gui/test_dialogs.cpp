@@ -3,6 +3,7 @@
 // their ranges and defaults, and the labels, buddies, tooltips and tab order are in place.
 
 #include "gui/app/Dialogs.h"
+#include "gui/app/Messages.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -71,6 +72,7 @@ private slots:
     void preferencesWidgetsChangePreferences();
     void preferencesColourButtons();
     void preferencesLabelsAndTabOrder();
+    void longMessageFitsTheScreen();
 };
 
 void TestDialogs::exportRoundTrip_data()
@@ -344,6 +346,32 @@ void TestDialogs::preferencesLabelsAndTabOrder()
                             "colourButton5", "colourButton6", "defaultsButton",
                             "autosaveSpin"};
     QCOMPARE(focusOrder(child<QWidget>(dialog, "depthSpin"), order), order);
+}
+
+// The warnings of a flame pack (issue 47: one per flame, a box 2 144 px tall whose OK button
+// was off a 1 000 px screen): the box shows the first lines and keeps every line in its
+// scrollable details; a short text is shown whole.
+void TestDialogs::longMessageFitsTheScreen()
+{
+    QStringList lines;
+    for (int i = 0; i < 300; ++i)
+        lines << QStringLiteral("flame %1 \"Pack %1\": variation 'julia3D' is unknown; dropped")
+                     .arg(i);
+    const QString text = lines.join(QLatin1Char('\n'));
+    std::unique_ptr<QMessageBox> box(
+        Messages::makeBox(QMessageBox::Information, nullptr, QStringLiteral("Import"), text));
+    QCOMPARE(box->detailedText(), text);
+    QVERIFY(box->text().startsWith(lines.first()));
+    QVERIFY(box->text().contains(QStringLiteral("288 more lines")));
+    QVERIFY(!box->text().contains(lines.last()));
+    box->show();
+    QVERIFY2(box->height() < 600, qPrintable(QString::number(box->height())));
+    box->close();
+    std::unique_ptr<QMessageBox> small(
+        Messages::makeBox(QMessageBox::Critical, nullptr, QStringLiteral("Open"),
+                          QStringLiteral("one line")));
+    QCOMPARE(small->text(), QStringLiteral("one line"));
+    QVERIFY(small->detailedText().isEmpty());
 }
 
 AWB_TEST_MAIN(TestDialogs)

@@ -158,6 +158,16 @@ void TestExchangeWindow::flamesInAndOut()
     QVERIFY2(text.contains("coefs=\"0.3 0 0 0.3 0.7 0\"") && text.contains("weight=\"2\""),
              text.constData());
     QVERIFY(text.contains("<color index=\"255\""));
+    // A flame item out as itself, every field (issue 47's trial: the window refused it,
+    // naming the flam3 flame it was asked to write).
+    w.setCurrentItem(w.project()->findItem("halves"));
+    const QString halvesOut = m_dir.filePath("halves.flame");
+    QVERIFY2(w.exportItemAs(halvesOut, &error), qPrintable(error));
+    QFile h(halvesOut);
+    QVERIFY(h.open(QIODevice::ReadOnly));
+    const QByteArray flameText = h.readAll();
+    QVERIFY2(flameText.contains("julia=") && flameText.contains("name=\"halves\""),
+             flameText.constData());
 
     // A flame with flam3's symmetry: a reflection (spectral radius 1) among its maps. The
     // Spectrum panel says that the IFS contracts on average instead of refusing it.

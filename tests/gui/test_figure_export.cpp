@@ -9,6 +9,8 @@
 #include "../model/Fig2Example.h"
 
 #include "gui/app/FigureSheet.h"
+#include "gui/app/ItemController.h"
+#include "gui/views/MatrixView.h"
 #include "model/AttractorItem.h"
 #include "model/FigureMetadata.h"
 #include "model/NamedMatrix.h"
@@ -18,6 +20,7 @@
 #include <QFile>
 #include <QImage>
 #include <QImageReader>
+#include <QPainter>
 #include <QPdfWriter>
 #include <QProcess>
 #include <QRegularExpression>
@@ -263,6 +266,31 @@ void TestFigureExport::sheetMatricesAreAtLeast8pt()
     QCOMPARE(sheet.matricesShown(), 4);
     const double points = sheet.matrixFontPixels() * 72.0 / 300.0;
     QVERIFY2(points >= 8.0, qPrintable(QString::number(points)));
+
+    // A mesh's five 16 x 16 and 19 x 19 matrices: every one drawn as a heat map, in a
+    // picture as in print (issue 47: "… and 1 more: see the Matri…" instead).
+    QVERIFY(shown.window.openFile(QStringLiteral(AWB_TEST_SOURCE_DIR "/examples/mesh-cube-catmull-clark.awb")));
+    Item *mesh = shown.window.project()->child(0);
+    shown.window.setCurrentItem(mesh);
+    shown.window.controller()->refreshNow();
+    const int matrices = shown.window.matrixView()->matrixCount();
+    QVERIFY2(matrices >= 5, qPrintable(QString::number(matrices)));
+    FigureSheet meshSheet(mesh, shown.window.attractorView(), shown.window.spectrumView(),
+                          shown.window.surfaceView());
+    QVERIFY2(meshSheet.writePdf(dir.filePath("mesh-sheet.pdf"), &error), qPrintable(error));
+    QCOMPARE(meshSheet.matricesShown(), matrices);
+    QImage picture(1800, 1350, QImage::Format_RGB32);
+    picture.fill(Qt::white);
+    {
+        QPainter p(&picture);
+        meshSheet.paint(&p, QRectF(picture.rect()));
+    }
+    QCOMPARE(meshSheet.matricesShown(), matrices);
+    // A margin: nothing drawn in the outer 1% of the picture.
+    for (int y = 0; y < picture.height(); ++y)
+        for (int x : {0, 5, 10, picture.width() - 11, picture.width() - 1})
+            QVERIFY2(picture.pixel(x, y) == qRgb(255, 255, 255),
+                     qPrintable(QStringLiteral("%1, %2").arg(x).arg(y)));
 }
 
 // A PNG export carries the item's project (and the version) in PNG text chunks, as flam3 keeps

@@ -52,7 +52,7 @@ void TestRegularityViews::panelShowsCubicBSpline()
     QVERIFY2(panel.method().contains("log₂ ρₙ") && panel.method().contains("(1 + z)⁴"),
              qPrintable(panel.method()));
     QCOMPARE(mathText(QStringLiteral("r = n - log_2 rho_n, (1 + .. + z^2)^3, F^k(X0)")),
-             QStringLiteral("r = n − log₂ ρₙ, (1 + … + z²)³, F^k(X₀)"));
+             QStringLiteral("r = n − log₂ ρₙ, (1 + … + z²)³, Fᵏ(X₀)"));
     // The same key again does not restart it.
     panel.analyse(SchemeSpec{}, 7, QStringLiteral("cubic"));  // the cubic B-spline
     QVERIFY(!panel.isRunning());

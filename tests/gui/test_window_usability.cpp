@@ -3,15 +3,18 @@
 // undo text changes; at 1000 x 650 the attractor view gets most of the width and long notes are
 // readable; points export as CSV and PLY; the map colours are chosen in a dialog (undoable);
 // Help > User Guide shows the bundled guide.
+#include "gui/app/ExampleGallery.h"
 #include "gui/app/ItemController.h"
 #include "gui/app/MainWindow.h"
 #include "gui/app/Messages.h"
 #include "gui/app/PaletteDialog.h"
 #include "gui/app/PointExportDialog.h"
 #include "gui/app/PropertiesDock.h"
+#include "gui/app/StatusText.h"
 #include "gui/app/UserGuideDialog.h"
 #include "gui/views/AnalysisCharts.h"
 #include "gui/views/AttractorView.h"
+#include "gui/views/RegularityPanel.h"
 #include "model/Project.h"
 #include "model/SubdivisionCurveItem.h"
 #include "model/SubdivisionSurfaceItem.h"
@@ -22,8 +25,11 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
 #include <QMenu>
 #include <QMenuBar>
 #include <QPushButton>
@@ -39,6 +45,7 @@
 
 #include "TestTime.h"
 
+#include "ImageCompare.h"
 #include "WindowTestSupport.h"
 
 using namespace awb;
@@ -81,6 +88,7 @@ private slots:
     void userGuideShowsShortcutsAndExamples();
     void damagedRecoveryCopyIsKeptAside();
     void examplesOutputsAndShortcuts();
+    void everyShortcutIsBoundOnce();
 
 private:
     QTemporaryDir m_dir;
@@ -209,9 +217,27 @@ void TestWindowUsability::smallWindowGivesTheViewMostOfTheWidth()
     auto *label = w.findChild<QLabel *>(QStringLiteral("problemLabel"));
     QVERIFY(label);
     QCOMPARE(w.width(), 1000);
-    QVERIFY(label->toolTip() == problem || label->text() == problem);
+    QVERIFY(label->toolTip() == mathText(problem) || label->text() == mathText(problem));
     QCOMPARE(w.analysisCharts()->note(), problem);
     QVERIFY(w.centralWidget()->width() >= 500);
+    // The status bar cuts at a word, never mid-word, and writes formulas as the papers do
+    // (issue 47: "‖F^{k+1} − F^k‖ <= … Cauchy s…" for the dragon).
+    const QString verdict = QStringLiteral(
+        "convergent: every edge shrinks by a factor of at most 0.707107 per step, so "
+        "||F^{k+1} - F^k|| <= 0.5 * 0.707107^k * (longest initial edge) and F^k is a Cauchy "
+        "sequence (the argument of 001 Theorem 1)");
+    const QString math = mathText(verdict);
+    QVERIFY2(math.contains(QStringLiteral("‖Fᵏ⁺¹ − Fᵏ‖ ≤ 0.5 · 0.707107ᵏ")), qPrintable(math));
+    const QFontMetrics fm(label->font());
+    for (int width : {120, 300, 517, 800}) {
+        const QString cut = elidedAtWord(fm, math, width);
+        QVERIFY2(fm.horizontalAdvance(cut) <= width, qPrintable(cut));
+        QVERIFY2(cut.endsWith(QStringLiteral(" …")), qPrintable(cut));
+        const QString kept = cut.chopped(2);
+        QVERIFY2(math.startsWith(kept), qPrintable(cut));
+        QVERIFY2(!math.at(kept.size()).isLetterOrNumber(), qPrintable(cut));
+    }
+    QCOMPARE(elidedAtWord(fm, math, 100000), math);
 }
 
 void TestWindowUsability::exportPointsCsvAndPly()
@@ -338,11 +364,46 @@ void TestWindowUsability::examplesOutputsAndShortcuts()
     auto *menu = w.findChild<QMenu *>(QStringLiteral("menuExamples"));
     QVERIFY(menu);
     QMetaObject::invokeMethod(menu, "aboutToShow");
-    QVERIFY2(menu->actions().size() >= 30, qPrintable(QString::number(menu->actions().size())));
-    bool found = false;
+    // The gallery first, then one submenu per paper (and meshes, the rest): no menu taller
+    // than a screen (issue 47: 42 entries in one).
+    QCOMPARE(menu->actions().first(), w.action(QStringLiteral("actionExampleGallery")));
+    QList<QAction *> entries;
     for (QAction *a : menu->actions())
+        if (a->menu()) {
+            QVERIFY2(a->menu()->actions().size() <= 16,
+                     qPrintable(a->text() + QString::number(a->menu()->actions().size())));
+            entries += a->menu()->actions();
+        }
+    QVERIFY2(entries.size() >= 40, qPrintable(QString::number(entries.size())));
+    bool found = false;
+    for (QAction *a : entries)
         found = found || a->text().startsWith(QStringLiteral("000 Fig. 2: cubic B-spline"));
     QVERIFY(found);
+    // The gallery: every example with its thumbnail (drawn in the background, as the CLI
+    // renders), a filter, and Open opens a copy.
+    {
+        ExampleGallery gallery(examples, &w);
+        gallery.show();
+        QVERIFY2(gallery.list()->count() >= 40, qPrintable(QString::number(gallery.list()->count())));
+        QTRY_VERIFY_WITH_TIMEOUT(gallery.thumbnailsReady() >= 3, test::ms(60000));
+        // The first example's thumbnail is in the cache: its figure, without its caption.
+        const QImage thumb(ExampleGallery::thumbnailFile(
+            gallery.list()->item(0)->data(Qt::UserRole).toString()));
+        QCOMPARE(thumb.size(), QSize(240, 180));
+        QVERIFY2(test::drawnPixels(thumb) > 300, qPrintable(QString::number(test::drawnPixels(thumb))));
+        gallery.filter()->setText(QStringLiteral("koch 000"));
+        int shown = 0;
+        for (int row = 0; row < gallery.list()->count(); ++row)
+            shown += gallery.list()->item(row)->isHidden() ? 0 : 1;
+        QCOMPARE(shown, 1);
+        for (int row = 0; row < gallery.list()->count(); ++row)
+            if (!gallery.list()->item(row)->isHidden())
+                gallery.list()->setCurrentRow(row);
+        gallery.accept();
+        QCOMPARE(gallery.result(), int(QDialog::Accepted));
+        QVERIFY2(gallery.chosenFile().endsWith(QStringLiteral("000-fig10-koch-with-control-points.awb")),
+                 qPrintable(gallery.chosenFile()));
+    }
     // An example opens as a copy: no file name, not modified; saving asks where.
     QVERIFY(w.openExample(examples + QStringLiteral("/000-fig11-sierpinski-with-control-points.awb")));
     QCOMPARE(w.project()->fileName(), QString());
@@ -369,6 +430,39 @@ void TestWindowUsability::examplesOutputsAndShortcuts()
     // A writable project folder: beside the project, "<project>-<item>.png".
     const QString png = w.outputPath(QStringLiteral("png"));
     QVERIFY2(png.startsWith(readOnly + QStringLiteral("/fig11-")), qPrintable(png));
+    // An example opened with File > Open from the gallery's folder (writable in a source
+    // tree): its figures go to the documents, not among the examples (issue 47).
+    QVERIFY(w.openFile(examples + QStringLiteral("/000-fig11-sierpinski-with-control-points.awb")));
+    const QString inDocuments = w.outputPath(QStringLiteral("png"));
+    QVERIFY2(inDocuments.startsWith(documents), qPrintable(inDocuments));
+}
+
+// No key is bound to two actions of the window: Qt then triggers neither ("Ambiguous shortcut
+// overload", issue 47: Ctrl+Shift+P was Print Preview's and the Python Console's). The console's
+// key is the one the README and docs/python.md give.
+void TestWindowUsability::everyShortcutIsBoundOnce()
+{
+    test::ShownWindow shown(m_recovery);
+    QHash<QString, QString> owner;
+    QStringList clashes;
+    for (QAction *a : shown.window.findChildren<QAction *>()) {
+        for (const QKeySequence &key : a->shortcuts()) {
+            const QString k = key.toString(QKeySequence::PortableText);
+            const QString name = a->objectName().isEmpty() ? a->text() : a->objectName();
+            if (owner.contains(k) && owner.value(k) != name)
+                clashes << k + QStringLiteral(": ") + owner.value(k) + QStringLiteral(", ") + name;
+            owner.insert(k, name);
+        }
+    }
+    QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(QStringLiteral("; "))));
+    QAction *console = shown.window.action(QStringLiteral("actionPythonConsole"));
+    QVERIFY(console);
+    QCOMPARE(console->shortcut(), QKeySequence(QStringLiteral("Ctrl+Shift+P")));
+    auto *dock = shown.window.findChild<QDockWidget *>(QStringLiteral("dockPython"));
+    QVERIFY(dock);
+    QVERIFY(!dock->isVisible());
+    QTest::keyClick(&shown.window, Qt::Key_P, Qt::ControlModifier | Qt::ShiftModifier);
+    QTRY_VERIFY(dock->isVisible());
 }
 
 // A crashed session left a recovery copy that is itself damaged: the next start offers it,

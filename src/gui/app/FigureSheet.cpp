@@ -155,10 +155,12 @@ QList<FigureSheet::MatrixBlock> FigureSheet::matrixBlocks() const
     return blocks;
 }
 
-void FigureSheet::paint(QPainter *painter, const QRectF &page) const
+void FigureSheet::paint(QPainter *painter, const QRectF &area) const
 {
     painter->save();
-    const double unit = page.width() / 100.0;  // 1% of the page width
+    const double unit = area.width() / 100.0;  // 1% of the page width
+    // A margin on every side: a picture has none of its own (a printer's page adds its own).
+    const QRectF page = area.adjusted(1.5 * unit, 1.5 * unit, -1.5 * unit, -1.5 * unit);
     QFont title = painter->font();
     title.setPixelSize(std::max(8, int(unit * 1.8)));
     title.setBold(true);
@@ -198,22 +200,25 @@ void FigureSheet::paint(QPainter *painter, const QRectF &page) const
     else if (m_attractor)
         m_attractor->renderTo(painter, figure.adjusted(1, 1, -1, -1),
                               AttractorView::Framing::FitContents);
+    const double rightX = figure.right() + unit * 2;
+    // A focused vertex's characteristic map: at the foot of the right column, beside its
+    // matrix, never over the surface (issue 47: the inset covered the picture).
+    double columnBottom = page.bottom();
     if (m_characteristic && !m_characteristic->map().cells.empty()) {
-        const double w = 0.38 * std::min(figure.width(), figure.height());
-        const QRectF inset(figure.right() - w - unit * 0.5, figure.bottom() - w - unit * 0.5, w,
-                           w);
+        const double w = std::min(page.right() - rightX, 0.3 * (page.bottom() - top));
+        const QRectF inset(page.right() - w, page.bottom() - w, w, w);
         m_characteristic->paintMap(*painter, inset);
         painter->setPen(QPen(Qt::gray, 0));
         painter->setBrush(Qt::NoBrush);
         painter->drawRect(inset);
+        columnBottom = inset.top() - unit;
     }
-    const double rightX = figure.right() + unit * 2;
     QFont mono = body;
     mono.setFamily(QStringLiteral("monospace"));
     mono.setStyleHint(QFont::TypeWriter);
     // The spectrum takes half the column, less when the matrices need the room to stay at
     // 8 pt or more.
-    const double column = page.bottom() - top;
+    const double column = columnBottom - top;
     MatrixLayout layout;
     double share = 0.5;
     for (const double s : {0.5, 0.42, 0.35}) {
@@ -236,6 +241,8 @@ FigureSheet::MatrixLayout FigureSheet::layoutMatrices(QPainter *painter, const Q
     // The matrices flow into columns, each matrix kept whole, at the largest size from the
     // body text's down to 8 pt (a journal's smallest legible size). What does not fit at 8 pt
     // is named in a last line instead of shrinking everything into dust.
+    // Heat maps (large matrices) then shrink further, to cells of a fifth of a line: they are
+    // pictures, not text.
     MatrixLayout layout;
     layout.box = box;
     layout.blocks = matrixBlocks();
@@ -243,7 +250,8 @@ FigureSheet::MatrixLayout FigureSheet::layoutMatrices(QPainter *painter, const Q
         return layout;
     const double dpi = std::max(1, painter->device()->logicalDpiY());
     const int minPx = std::max(1, int(std::ceil(8.0 / 72.0 * dpi)));
-    for (int px = std::max(minPx, mono.pixelSize());; --px) {
+    double cellShare = 0.5;
+    for (int px = std::max(minPx, mono.pixelSize());;) {
         mono.setPixelSize(px);
         const QFontMetricsF fm(mono, painter->device());
         const double line = fm.lineSpacing(), gap = fm.horizontalAdvance(QStringLiteral("MM"));
@@ -251,7 +259,8 @@ FigureSheet::MatrixLayout FigureSheet::layoutMatrices(QPainter *painter, const Q
         layout.at.clear();
         double x = box.left(), y = box.top(), columnWidth = 0;
         // A heat map's cell: half a line high (19 x 19 cells are 9.5 lines square).
-        const double cell = 0.5 * line;
+        const double cell = cellShare * line;
+        layout.cell = cell;
         for (const MatrixBlock &block : std::as_const(layout.blocks)) {
             double w = 0;
             for (const QString &l : block.lines)
@@ -274,7 +283,13 @@ FigureSheet::MatrixLayout FigureSheet::layoutMatrices(QPainter *painter, const Q
             y += h + 0.6 * line;
         }
         layout.shown = int(layout.at.size());
-        if (layout.shown == layout.blocks.size() || px <= minPx)
+        if (layout.shown == layout.blocks.size())
+            break;
+        if (px > minPx)
+            --px;
+        else if (cellShare > 0.2)
+            cellShare -= 0.05;
+        else
             break;
     }
     return layout;
@@ -296,7 +311,7 @@ void FigureSheet::paintMatrices(QPainter *painter, const MatrixLayout &layout) c
                           Qt::AlignLeft | Qt::AlignTop, block.lines.join(QLatin1Char('\n')));
         if (block.heat.size() > 0) {
             // The colour of each entry on the Matrices dock's scale, a hairline frame.
-            const double cell = 0.5 * fm.lineSpacing();
+            const double cell = layout.cell;
             const double largest = std::max(1e-300, block.heat.cwiseAbs().maxCoeff());
             const QPointF origin = at + QPointF(0, textHeight);
             for (Eigen::Index r = 0; r < block.heat.rows(); ++r)
@@ -314,10 +329,16 @@ void FigureSheet::paintMatrices(QPainter *painter, const MatrixLayout &layout) c
     if (layout.shown < layout.blocks.size()) {
         const QString note = tr("… and %n more: see the Matrices dock, or copy them as LaTeX.",
                                 nullptr, int(layout.blocks.size()) - layout.shown);
+        // In the text's font, not the matrices' typewriter one: it is a sentence.
+        QFont text = layout.font;
+        text.setFamily(QFont().family());
+        text.setStyleHint(QFont::SansSerif);
+        painter->setFont(text);
+        const QFontMetricsF tm(text, painter->device());
         painter->drawText(QRectF(box.left(), box.bottom() - fm.lineSpacing(), box.width(),
                                  fm.lineSpacing()),
                           Qt::AlignLeft | Qt::AlignVCenter,
-                          fm.elidedText(note, Qt::ElideRight, box.width()));
+                          tm.elidedText(note, Qt::ElideRight, box.width()));
     }
     m_matrixFontPixels = layout.font.pixelSize();
     m_matricesShown = layout.shown;

@@ -75,6 +75,7 @@ private:
         QList<MatrixBlock> blocks;
         QList<QPointF> at;
         int shown = 0;
+        double cell = 0;  // a heat map's cell in device pixels
     };
     MatrixLayout layoutMatrices(QPainter *painter, const QRectF &box, QFont mono) const;
     void paintMatrices(QPainter *painter, const MatrixLayout &layout) const;

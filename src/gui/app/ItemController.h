@@ -138,6 +138,8 @@ signals:
     void problemChanged(const QString &problem);
     // An edit from a view was refused by the item (the message says why).
     void editRefused(const QString &message);
+    // Something the user asked for was done (a file written): one line for the status bar.
+    void notice(const QString &message);
     void analysisStarted();
     void analysisProgress(double fraction);
     void analysisFinished(bool cancelled);
@@ -217,6 +219,9 @@ private:
     int m_highlightedMap = -1;
     QList<QColor> m_palette;
     QString m_problem;
+    // Whether the drawn mesh is closed (its far-side markers hide), for the topology at key.
+    const void *m_closedMeshKey = nullptr;
+    bool m_closedMesh = false;
     ThreadInbox m_inbox{this}; // the analysis' results; declared before m_worker: outlives it
     std::thread m_worker;
     std::atomic<bool> m_cancel{false};

@@ -71,8 +71,12 @@ void ItemController::setRegularityPanel(RegularityPanel *panel)
             m_item ? m_item->name() + QStringLiteral(".certificate.json") : QString(),
             tr("Regularity certificate (*.json)"));
         QString why;
-        if (!file.isEmpty() && !saveCertificate(file, &why))
+        if (file.isEmpty())
+            return;
+        if (!saveCertificate(file, &why))
             emit editRefused(why);
+        else
+            emit notice(tr("Saved the regularity certificate to %1").arg(file));
     });
     updateRegularity();
 }

@@ -85,6 +85,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <numeric>
 #include <cmath>
 
 // Resources of a static library are only registered when asked for (outside any namespace).
@@ -403,6 +404,9 @@ void MainWindow::createViews()
     connect(m_controller, &ItemController::editRefused, this, [this](const QString &message) {
         m_messages->error(this, tr("Edit refused"), message);
     });
+    connect(m_controller, &ItemController::notice, this, [this](const QString &message) {
+        statusBar()->showMessage(message, 10000);
+    });
     connect(m_attractor, &AttractorView::cursorMoved, this, [this](const QPointF &w) {
         // The address under the cursor is sampled from the IFS, which a drag changes on every
         // move: during gestures the readout shows the coordinates only.
@@ -452,8 +456,10 @@ void MainWindow::createDocks()
     createPythonConsole();
     // A sensible first layout: side columns wide enough for their tables and plots.
     resizeDocks({tree, props}, {200, 560}, Qt::Vertical);
-    resizeDocks({spec, mats}, {420, 420}, Qt::Vertical);
-    resizeDocks({props, spec}, {320, 350}, Qt::Horizontal);
+    // The right column: the Spectrum above, the Matrices / Analysis tabs below with the larger
+    // share (a mesh's Vertex and Valences tabs need it: issue 47).
+    resizeDocks({spec, mats}, {360, 480}, Qt::Vertical);
+    resizeDocks({props, spec}, {320, 420}, Qt::Horizontal);
 }
 
 void MainWindow::applyPreferences(const Preferences &preferences)
@@ -569,14 +575,15 @@ void MainWindow::updateCentralView()
 void MainWindow::showProblem(const QString &problem)
 {
     m_problem = problem;
-    const QString first = problem.section(QLatin1Char('\n'), 0, 0);
+    // The core's formulas as the papers write them; cut at a word, the whole in the tooltip.
+    const QString first = mathText(problem.section(QLatin1Char('\n'), 0, 0));
     // Before the first layout the label has no width yet: half the status bar's.
     const int room = m_problemLabel->width() > 40 ? m_problemLabel->width()
                                                   : statusBar()->width() / 2;
-    m_problemLabel->setText(m_problemLabel->fontMetrics().elidedText(first, Qt::ElideRight,
-                                                                      std::max(40, room)));
+    m_problemLabel->setText(elidedAtWord(m_problemLabel->fontMetrics(), first,
+                                         std::max(40, room)));
     m_problemLabel->setToolTip(problem.size() > first.size() || m_problemLabel->text() != first
-                                   ? problem
+                                   ? mathText(problem)
                                    : QString());
     m_charts->setNote(problem);
 }
@@ -616,6 +623,7 @@ void MainWindow::shareWidthWithDocks()
     // proportion, so that the central view gets about 54% of the width; the docks' minimum
     // sizes still apply.
     QDockWidget *columns[2] = {nullptr, nullptr};
+    int columnMinimum[2] = {0, 0};  // the widest minimum of the column's docks
     for (QDockWidget *d : std::as_const(m_docks)) {
         if (!d->isVisible() || d->isFloating())
             continue;
@@ -623,22 +631,38 @@ void MainWindow::shareWidthWithDocks()
         const int side = area == Qt::LeftDockWidgetArea ? 0
                          : area == Qt::RightDockWidgetArea ? 1
                                                           : -1;
-        if (side >= 0 && !columns[side])
+        if (side < 0)
+            continue;
+        if (!columns[side])
             columns[side] = d;
+        columnMinimum[side] = std::max({columnMinimum[side], d->minimumSizeHint().width(),
+                                        d->layout() ? d->layout()->minimumSize().width() : 0});
     }
     int docks = 0;
     for (QDockWidget *d : columns)
         docks += d ? d->width() : 0;
     if (docks <= 0)
         return;
-    const double scale = 0.46 * total / docks;
+    // The docks' share: 46% of a small window, half of a large one (the Properties' editors
+    // and the right column's plots need their widths more than the view needs the last 4%).
+    const double share = total >= 1300 ? 0.5 : 0.46;
+    const double scale = share * total / docks;
     QList<QDockWidget *> list;
-    QList<int> widths;
-    for (QDockWidget *d : columns)
-        if (d) {
+    QList<int> widths, minimum;
+    for (int side = 0; side < 2; ++side)
+        if (QDockWidget *d = columns[side]) {
             list << d;
-            widths << std::max(d->minimumSizeHint().width(), int(d->width() * scale));
+            minimum << columnMinimum[side];
+            widths << std::max(minimum.back(), int(d->width() * scale));
         }
+    // A column held at its minimum leaves the other above its share: take the excess back from
+    // the columns that can give it, the right one (plots, wider by default) first.
+    int excess = int(std::accumulate(widths.begin(), widths.end(), 0) - share * total);
+    for (qsizetype k = list.size() - 1; k >= 0 && excess > 0; --k) {
+        const int give = std::min(excess, widths[k] - minimum[k]);
+        widths[k] -= give;
+        excess -= give;
+    }
     resizeDocks(list, widths, Qt::Horizontal);
 }
 

@@ -73,6 +73,8 @@ public:
     // false, with the reader's or the mesh's message in *error, when it is refused (nothing
     // added).
     bool importMesh(const QString &fileName, MeshScheme scheme, QString *error = nullptr);
+    bool importMesh(const QString &fileName, const Mesh &mesh, MeshScheme scheme,
+                    QString *error = nullptr);
     // File > Import…: another tool's IFS file (Fractint .ifs, flam3 .flame/.flam3: every entry
     // or flame an item, all in one undo step) or a mesh (importMesh). False with *error when
     // nothing could be imported; entries left out are listed in *problems, what was imported
@@ -157,6 +159,7 @@ private:
     void updateActions();
     void updateRecentMenu();
     void fillExamplesMenu();
+    void exampleGalleryDialog();
     void addRecentFile(const QString &fileName);
     // Asks to save unsaved changes; false when the user cancels.
     bool maybeSave();

@@ -110,6 +110,9 @@ void MainWindow::createActions()
          });
     make(QStringLiteral("actionOpen"), tr("&Open…"), QStringLiteral("document-open"),
          QKeySequence::Open, &MainWindow::openDialog);
+    make(QStringLiteral("actionExampleGallery"), tr("&Gallery…"), QStringLiteral("folder-pictures"),
+         QKeySequence(), &MainWindow::exampleGalleryDialog)
+        ->setStatusTip(tr("The examples as thumbnails: the papers' figures, meshes, masks"));
     make(QStringLiteral("actionImport"), tr("&Import…"), QStringLiteral("document-import"),
          QKeySequence(tr("Ctrl+I")), &MainWindow::importDialog);
     make(QStringLiteral("actionExportItemAs"), tr("Export &Item As…"),
@@ -130,7 +133,8 @@ void MainWindow::createActions()
     make(QStringLiteral("actionPrint"), tr("&Print…"), QStringLiteral("document-print"),
          QKeySequence::Print, &MainWindow::print);
     make(QStringLiteral("actionPrintPreview"), tr("Print Pre&view…"),
-         QStringLiteral("document-print-preview"), QKeySequence(tr("Ctrl+Shift+P")),
+         // Ctrl+Shift+P is View > Python Console's (README, docs/python.md).
+         QStringLiteral("document-print-preview"), QKeySequence(tr("Ctrl+Alt+P")),
          &MainWindow::printPreview);
     make(QStringLiteral("actionPrintPdf"), tr("Print to P&DF…"), QStringLiteral("document-export"),
          QKeySequence(), [this] {

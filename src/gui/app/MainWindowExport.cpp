@@ -96,10 +96,12 @@ void MainWindow::endExportProgress()
 QString MainWindow::outputPath(const QString &suffix) const
 {
     // The project's folder is where its figures belong, unless it cannot be written to (an
-    // installed example): then the user's documents.
+    // installed example) or is the gallery's own folder (an example opened with File > Open
+    // from a source tree): then the user's documents.
     const QFileInfo project(m_project->fileName());
     QString dir = project.absolutePath();
-    if (m_project->fileName().isEmpty() || !QFileInfo(dir).isWritable())
+    if (m_project->fileName().isEmpty() || !QFileInfo(dir).isWritable()
+        || QFileInfo(dir).canonicalFilePath() == QFileInfo(examplesDirectory()).canonicalFilePath())
         dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
     if (dir.isEmpty())
         dir = QDir::homePath();
@@ -343,7 +345,7 @@ void MainWindow::exportDialog()
     if (!exportView(o, &error))
         m_messages->error(this, tr("Export"), error);
     else
-        statusBar()->showMessage(tr("Exported %1").arg(o.fileName), 4000);
+        statusBar()->showMessage(tr("Exported the figure to %1").arg(o.fileName), 10000);
     m_lastExport = o.fileName;
 }
 

@@ -4,6 +4,7 @@
 #include "gui/app/MainWindow.h"
 #include "gui/app/AddressPanel.h"
 #include "gui/app/AnimationPanel.h"
+#include "gui/app/ExampleGallery.h"
 #include "gui/app/FigureSheet.h"
 #include "gui/app/FrameBudget.h"
 #include "gui/app/StatusText.h"
@@ -33,6 +34,7 @@
 #include "model/ProjectIO.h"
 #include "model/ProjectTreeModel.h"
 #include "model/Recovery.h"
+#include "model/ScriptRecorder.h"
 #include "model/SubdivisionCurveItem.h"
 #include "model/SubdivisionSurfaceItem.h"
 #include "core/ifs/SurfaceIfs.h"
@@ -51,6 +53,8 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QMap>
+#include <QMenu>
 #include <QDir>
 #include <QRegularExpression>
 #include <QResizeEvent>
@@ -321,32 +325,55 @@ QString MainWindow::examplesDirectory()
 void MainWindow::fillExamplesMenu()
 {
     m_examplesMenu->clear();
+    // The submenus of the last time (children of the menu, not owned by its actions).
+    qDeleteAll(m_examplesMenu->findChildren<QMenu *>(QString(), Qt::FindDirectChildrenOnly));
     const QDir dir(examplesDirectory());
     const QStringList files = dir.entryList({QStringLiteral("*.awb")}, QDir::Files, QDir::Name);
     if (files.isEmpty()) {
         m_examplesMenu->addAction(tr("No examples installed"))->setEnabled(false);
         return;
     }
-    // One entry per paper figure, named by its first item (the figure's caption).
+    // The gallery first (thumbnails, a filter); then one short submenu per paper and one for
+    // the rest, so that no menu is taller than the screen (issue 47: 42 entries in one).
+    m_examplesMenu->addAction(action(QStringLiteral("actionExampleGallery")));
+    m_examplesMenu->addSeparator();
+    const QMap<QString, QString> papers{
+        {QStringLiteral("000"), tr("000 Schaefer, Levin, Goldman: Subdivision Schemes and Attractors")},
+        {QStringLiteral("001"), tr("001 Li et al.: Normal Vector Based Subdivision")},
+        {QStringLiteral("002"), tr("002 John: All Bézier Curves Are Attractors")},
+        {QStringLiteral("003"), tr("003 BCIFS Junction Curves")},
+        {QStringLiteral("004"), tr("004 Ptáčková: Fractals and Splines")},
+        {QStringLiteral("mesh"), tr("Meshes")}};
+    QMap<QString, QMenu *> menus;
     for (const QString &file : files) {
         const QString path = dir.filePath(file);
-        QString title = QFileInfo(file).completeBaseName();
-        QFile f(path);
-        if (f.open(QIODevice::ReadOnly)) {
-            const QJsonArray items =
-                QJsonDocument::fromJson(f.read(1 << 20)).object().value(QStringLiteral("items")).toArray();
-            const QString name = items.isEmpty() ? QString()
-                                                 : items.first().toObject().value(QStringLiteral("name")).toString();
-            if (!name.isEmpty())
-                title = name.size() > 90 ? name.left(88) + QStringLiteral("…") : name;
-        }
-        QAction *a = m_examplesMenu->addAction(title);
+        const QString prefix = file.section(QLatin1Char('-'), 0, 0);
+        const QString group = papers.contains(prefix) ? prefix : QString();
+        QMenu *&menu = menus[group];
+        if (!menu)
+            menu = new QMenu(group.isEmpty() ? tr("Masks, Animations and Other Tools' Files")
+                                             : papers.value(group),
+                             m_examplesMenu);
+        menu->setToolTipsVisible(true);  // each entry's file
+        QAction *a = menu->addAction(ExampleGallery::exampleTitle(path));
         a->setToolTip(path);
         connect(a, &QAction::triggered, this, [this, path] {
             if (maybeSave())
                 openExample(path);
         });
     }
+    for (auto it = menus.begin(); it != menus.end(); ++it)
+        if (!it.key().isEmpty())
+            m_examplesMenu->addMenu(it.value());
+    if (QMenu *rest = menus.value(QString()))
+        m_examplesMenu->addMenu(rest);
+}
+
+void MainWindow::exampleGalleryDialog()
+{
+    ExampleGallery gallery(examplesDirectory(), this);
+    if (gallery.exec() == QDialog::Accepted && !gallery.chosenFile().isEmpty() && maybeSave())
+        openExample(gallery.chosenFile());
 }
 
 bool MainWindow::openExample(const QString &fileName)
@@ -359,6 +386,9 @@ bool MainWindow::openExample(const QString &fileName)
     }
     // A copy without a file: saving asks where (installed examples are read-only).
     m_project->adopt(std::move(data), QString(), false);
+    // A recording made on the copy replays on the example by default.
+    if (m_recorder)
+        m_recorder->setOrigin(QFileInfo(fileName).absoluteFilePath());
     updateTitle();
     selectFirstItem();
     statusBar()->showMessage(tr("Opened the example %1 (a copy: Save As keeps it)")

@@ -126,13 +126,26 @@ void MainWindow::deleteItem()
 
 bool MainWindow::importMesh(const QString &fileName, MeshScheme scheme, QString *error)
 {
+    Mesh mesh;
+    try {
+        mesh = readMesh(QFile::encodeName(fileName).toStdString());
+    } catch (const std::exception &e) {  // the reader's message names the file and the place
+        if (error)
+            *error = QString::fromStdString(e.what());
+        return false;
+    }
+    return importMesh(fileName, mesh, scheme, error);
+}
+
+bool MainWindow::importMesh(const QString &fileName, const Mesh &mesh, MeshScheme scheme,
+                            QString *error)
+{
     QString why;
     auto item = std::make_unique<SubdivisionMeshItem>();
     try {
-        const Mesh mesh = readMesh(QFile::encodeName(fileName).toStdString());
         if (!item->setMesh(mesh, scheme, &why))
             why = QFileInfo(fileName).fileName() + QStringLiteral(": ") + why;
-    } catch (const std::exception &e) {  // the reader's message names the file and the place
+    } catch (const std::exception &e) {
         why = QString::fromStdString(e.what());
     }
     if (!why.isEmpty()) {
@@ -159,16 +172,31 @@ void MainWindow::importMeshDialog()
 
 void MainWindow::importMeshFile(const QString &file)
 {
+    // Read first: a file that cannot be read is said before any question, and the question
+    // proposes the scheme made for the mesh.
+    Mesh mesh;
+    try {
+        mesh = readMesh(QFile::encodeName(file).toStdString());
+    } catch (const std::exception &e) {
+        m_messages->error(this, tr("Import Mesh"), QString::fromStdString(e.what()));
+        return;
+    }
     const QStringList schemes{tr("Catmull–Clark (any polygons)"), tr("Loop (triangles only)")};
+    const bool triangles = suggestedScheme(mesh) == MeshScheme::Loop;
+    const QString label =
+        triangles ? tr("All %1 faces are triangles: Loop keeps them triangles (Catmull–Clark "
+                       "would make each one three quads around a new valence-3 vertex).\n\n"
+                       "Subdivision scheme:")
+                        .arg(mesh.faces.size())
+                  : tr("Subdivision scheme:");
     bool ok = false;
-    const QString chosen = QInputDialog::getItem(this, tr("Import Mesh"),
-                                                 tr("Subdivision scheme:"), schemes, 0, false,
-                                                 &ok);
+    const QString chosen = QInputDialog::getItem(this, tr("Import Mesh"), label, schemes,
+                                                 triangles ? 1 : 0, false, &ok);
     if (!ok)
         return;
     QString error;
-    if (!importMesh(file, chosen == schemes[1] ? MeshScheme::Loop : MeshScheme::CatmullClark,
-                    &error))
+    if (!importMesh(file, mesh,
+                    chosen == schemes[1] ? MeshScheme::Loop : MeshScheme::CatmullClark, &error))
         m_messages->error(this, tr("Import Mesh"), error);
 }
 

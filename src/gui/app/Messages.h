@@ -12,6 +12,13 @@ namespace awb {
 
 class Messages {
 public:
+    // The box Messages shows for a text (not shown): a long text -- the warnings of a flame
+    // pack, hundreds of lines -- keeps its first lines in the box and the whole in the
+    // scrollable "Show Details…" part, so that the box fits the screen and its buttons stay on
+    // it (issue 47).
+    static QMessageBox *makeBox(QMessageBox::Icon icon, QWidget *parent, const QString &title,
+                                const QString &text);
+
     virtual ~Messages() = default;
     virtual void error(QWidget *parent, const QString &title, const QString &text);
     virtual void information(QWidget *parent, const QString &title, const QString &text);

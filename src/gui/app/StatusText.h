@@ -5,7 +5,12 @@
 // the whole window. This widget reserves a width, elides what does not fit and only repaints.
 #include <QWidget>
 
+class QFontMetrics;
+
 namespace awb {
+
+// `text` in at most `width` pixels, cut at the end of a word (never mid-word) with "…".
+QString elidedAtWord(const QFontMetrics &fm, const QString &text, int width);
 
 class StatusText : public QWidget {
     Q_OBJECT

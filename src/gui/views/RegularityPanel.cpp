@@ -49,6 +49,34 @@ QString mathText(const QString &ascii)
     s.replace(QStringLiteral(" - "), QStringLiteral(" − "));
     s.replace(QStringLiteral(" .. "), QStringLiteral(" … "));
     s.replace(QStringLiteral("X0"), QStringLiteral("X₀"));
+    s.replace(QStringLiteral("||"), QStringLiteral("‖"));
+    s.replace(QStringLiteral(" <= "), QStringLiteral(" ≤ "));
+    s.replace(QStringLiteral(" >= "), QStringLiteral(" ≥ "));
+    s.replace(QStringLiteral(" * "), QStringLiteral(" · "));
+    // ^{k+1} -> ᵏ⁺¹ where every character has a superscript (else left as written).
+    static const QString supFrom = QStringLiteral("0123456789+-kn()");
+    static const QString supTo = QStringLiteral("⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻ᵏⁿ⁽⁾");
+    for (qsizetype at = s.indexOf(QStringLiteral("^{")); at >= 0;
+         at = s.indexOf(QStringLiteral("^{"), at + 1)) {
+        const qsizetype end = s.indexOf(QLatin1Char('}'), at);
+        if (end < 0)
+            break;
+        QString sup;
+        for (QChar c : s.mid(at + 2, end - at - 2)) {
+            const qsizetype k = supFrom.indexOf(c);
+            if (k < 0) {
+                sup.clear();
+                break;
+            }
+            sup += supTo.at(k);
+        }
+        if (!sup.isEmpty())
+            s.replace(at, end - at + 1, sup);
+    }
+    // F^k: a letter exponent after a capital or a closing bracket.
+    for (qsizetype at = s.indexOf(QStringLiteral("^k")); at >= 0;
+         at = s.indexOf(QStringLiteral("^k"), at))
+        s.replace(at, 2, QStringLiteral("ᵏ"));
     QString out;
     for (int i = 0; i < s.size(); ++i) {
         // log_2 -> log₂, z^3 -> z³, ^(1/k) -> ^(1/k) (left as it is: no superscript slash)

@@ -164,9 +164,18 @@ QString VertexPanel::verdictHtml(const ExtraordinaryVertex &e, MeshScheme scheme
     const double l = e.subdominant, m = e.subsubdominant;
     QString numbers =
         tr("λ₁ = 1, λ = %1, μ = %2, λ² = %3").arg(number(l), number(m), number(l * l));
-    if (!e.boundary)
-        numbers += tr(" (λ in closed form: %1)")
-                       .arg(number(closedFormSubdominant(scheme, e.valence)));
+    if (!e.boundary) {
+        // The formula itself, with n put in, and what it gives (Stam 1998 for Catmull-Clark).
+        const QString n = QString::number(e.valence);
+        const QString form = scheme == MeshScheme::Loop
+            ? QStringLiteral("3/8 + cos(2π/%1)/4").arg(n)
+            : QStringLiteral("(5 + cos(2π/%1) + cos(π/%1)·√(2(9 + cos(2π/%1))))/16").arg(n);
+        // One line: a formula broken across lines reads as two.
+        numbers += tr("; in closed form λ = %1 = %2")
+                       .arg(QStringLiteral("<span style=\"white-space: nowrap\">%1</span>")
+                                .arg(form.toHtmlEscaped()),
+                            number(closedFormSubdominant(scheme, e.valence)));
+    }
     html += QStringLiteral("<p>%1</p>").arg(numbers);
     if (e.boundary || !interior) {
         html += QStringLiteral("<p>%1</p>").arg(
@@ -276,12 +285,15 @@ QString VertexPanel::verdictText() const { return m_text->toPlainText(); }
 void VertexPanel::resizeEvent(QResizeEvent *event)
 {
     QWidget::resizeEvent(event);
+    // The map is square: beside the text it takes its height (at most 45% of the width), the
+    // text the rest; above the text, its width (at most 45% of the height). A narrow dock
+    // thus keeps the verdict readable instead of a wrapped column (issue 47).
     const Qt::Orientation wanted = width() > 1.3 * height() ? Qt::Horizontal : Qt::Vertical;
-    if (m_split->orientation() != wanted) {
-        m_split->setOrientation(wanted);
-        const int total = wanted == Qt::Horizontal ? m_split->width() : m_split->height();
-        m_split->setSizes({total / 2, total - total / 2});
-    }
+    m_split->setOrientation(wanted);
+    const int total = wanted == Qt::Horizontal ? m_split->width() : m_split->height();
+    const int across = wanted == Qt::Horizontal ? m_split->height() : m_split->width();
+    const int map = std::min(across, int(0.45 * total));
+    m_split->setSizes({total - map, map});
 }
 
 // ---- the valence chart ------------------------------------------------------------------------
@@ -325,8 +337,42 @@ const std::vector<VertexSpectrum> &ValenceChart::table() const { return m_table;
 void ValenceChart::resizeEvent(QResizeEvent *event)
 {
     QWidget::resizeEvent(event);
-    // Side by side in a wide panel, one above the other in a tall one.
-    m_split->setOrientation(width() > 1.2 * height() ? Qt::Horizontal : Qt::Vertical);
+    // Side by side when each chart gets a width of about its height, else one above the other.
+    m_split->setOrientation(width() > 1.8 * height() ? Qt::Horizontal : Qt::Vertical);
+    fitToSize();
+}
+
+void ValenceChart::fitToSize()
+{
+    if (!m_drawn)
+        return;
+    const bool sideBySide = m_split->orientation() == Qt::Horizontal;
+    const int cw = sideBySide ? width() / 2 : width();
+    const int ch = sideBySide ? height() : height() / 2;
+    const bool roomy = cw >= 330 && ch >= 200;
+    const QString scheme = schemeName(*m_drawn);
+    m_byValence->chart()->setTitle(roomy ? tr("λ, μ, λ² against n (%1)").arg(scheme)
+                                         : tr("λ, μ, λ² (%1)").arg(scheme));
+    m_curvature->chart()->setTitle(tr("μ against λ²"));
+    for (QChartView *view : {m_byValence, m_curvature}) {
+        QChart *chart = view->chart();
+        // Without room the legend's names are cut to "μ…": the tooltip names the lines then.
+        chart->legend()->setVisible(roomy);
+        for (QAbstractAxis *a : chart->axes()) {
+            auto *axis = qobject_cast<QValueAxis *>(a);
+            if (!axis)
+                continue;
+            const bool horizontal = a->orientation() == Qt::Horizontal;
+            const int room = horizontal ? cw : ch;
+            if (axis->tickType() == QValueAxis::TicksDynamic)
+                axis->setTickInterval(room > 520 ? 1 : room > 300 ? 2 : 4);
+            else
+                axis->setTickCount(std::clamp(room / 55, 3, 6));
+            axis->setLabelFormat(room > 300 ? QStringLiteral("%.2f") : QStringLiteral("%.1f"));
+            if (horizontal && axis->tickType() == QValueAxis::TicksDynamic)
+                axis->setLabelFormat(QStringLiteral("%.0f"));
+        }
+    }
 }
 
 void ValenceChart::showEvent(QShowEvent *event)
@@ -395,7 +441,7 @@ void ValenceChart::rebuild()
     x->setRange(kFrom - 0.5, kTo + 0.5);
     x->setTickType(QValueAxis::TicksDynamic);
     x->setTickAnchor(0);
-    x->setTickInterval(width() > 700 ? 1 : 2);
+    x->setTickInterval(2);  // fitToSize() sets it for the chart's width
     x->setLabelFormat(QStringLiteral("%.0f"));
     auto *y = new QValueAxis;
     y->setRange(0, std::ceil(top * 10 + 0.5) / 10);
@@ -445,6 +491,7 @@ void ValenceChart::rebuild()
         s->attachAxis(cx);
         s->attachAxis(cy);
     }
+    fitToSize();
 }
 
 } // namespace awb

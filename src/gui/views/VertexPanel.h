@@ -109,6 +109,10 @@ protected:
     void showEvent(QShowEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
 
+    // The charts' titles, legends and ticks as laid out for their current size: full where
+    // there is room, shorter and sparser in a small dock (issue 47: "… … …", "μ… n… t…").
+    void fitToSize();
+
 private:
     void rebuild();
 
