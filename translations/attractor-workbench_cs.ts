@@ -1659,6 +1659,25 @@
     </message>
 </context>
 <context>
+    <name>awb::ExampleGallery</name>
+    <message>
+        <source>Open Example</source>
+        <translation>Otevřít příklad</translation>
+    </message>
+    <message>
+        <source>One project per figure of the papers, and examples of meshes, masks and animations. An example opens as a copy: Save As keeps it.</source>
+        <translation>Jeden projekt pro každý obrázek z článků a k tomu příklady sítí, masek a animací. Příklad se otevře jako kopie: Uložit jako ji zachová.</translation>
+    </message>
+    <message>
+        <source>Filter: a paper (003), a figure, a word (Koch, mesh)…</source>
+        <translation>Filtr: článek (003), obrázek, slovo (Koch, mesh)…</translation>
+    </message>
+    <message>
+        <source>No examples installed</source>
+        <translation>Žádné příklady nejsou nainstalovány</translation>
+    </message>
+</context>
+<context>
     <name>awb::ExportDialog</name>
     <message>
         <source>Export Figure</source>
@@ -2966,6 +2985,10 @@ Odečíst rozdíl %7 od prvku ve sloupci %8 (%9 → %10), aby byl součet řádk
         <source>No certificate was saved: %1</source>
         <translation>Certifikát nebyl uložen: %1</translation>
     </message>
+    <message>
+        <source>Saved the regularity certificate to %1</source>
+        <translation>Certifikát regularity uložen do %1</translation>
+    </message>
 </context>
 <context>
     <name>awb::ItemFigure</name>
@@ -3144,8 +3167,8 @@ Odečíst rozdíl %7 od prvku ve sloupci %8 (%9 → %10), aby byl součet řádk
         <translation>Ná&amp;hled tisku…</translation>
     </message>
     <message>
-        <source>Ctrl+Shift+P</source>
-        <translation>Ctrl+Shift+P</translation>
+        <source>Ctrl+Alt+P</source>
+        <translation>Ctrl+Alt+P</translation>
     </message>
     <message>
         <source>Print to P&amp;DF…</source>
@@ -3497,7 +3520,7 @@ Odečíst rozdíl %7 od prvku ve sloupci %8 (%9 → %10), aby byl součet řádk
     </message>
     <message>
         <source>Exported %1</source>
-        <translation>Exportováno: %1</translation>
+        <translation type="vanished">Exportováno: %1</translation>
     </message>
     <message>
         <source>About Attractor Workbench</source>
@@ -3887,6 +3910,54 @@ Byla ponechána jako %2.</translation>
         <source>Run Python Script</source>
         <translation>Spustit skript v Pythonu</translation>
     </message>
+    <message>
+        <source>&amp;Gallery…</source>
+        <translation>&amp;Galerie…</translation>
+    </message>
+    <message>
+        <source>The examples as thumbnails: the papers&apos; figures, meshes, masks</source>
+        <translation>Příklady jako náhledy: obrázky z článků, sítě, masky</translation>
+    </message>
+    <message>
+        <source>Exported the figure to %1</source>
+        <translation>Obrázek exportován do %1</translation>
+    </message>
+    <message>
+        <source>000 Schaefer, Levin, Goldman: Subdivision Schemes and Attractors</source>
+        <translation>000 Schaefer, Levin, Goldman: Subdivizní schémata a atraktory</translation>
+    </message>
+    <message>
+        <source>001 Li et al.: Normal Vector Based Subdivision</source>
+        <translation>001 Li a kol.: Subdivize založená na normálových vektorech</translation>
+    </message>
+    <message>
+        <source>002 John: All Bézier Curves Are Attractors</source>
+        <translation>002 John: Všechny Bézierovy křivky jsou atraktory</translation>
+    </message>
+    <message>
+        <source>003 BCIFS Junction Curves</source>
+        <translation>003 Křivky napojení BCIFS</translation>
+    </message>
+    <message>
+        <source>004 Ptáčková: Fractals and Splines</source>
+        <translation>004 Ptáčková: Fraktály a spliny</translation>
+    </message>
+    <message>
+        <source>Meshes</source>
+        <translation>Sítě</translation>
+    </message>
+    <message>
+        <source>Masks, Animations and Other Tools&apos; Files</source>
+        <translation>Masky, animace a soubory jiných programů</translation>
+    </message>
+    <message>
+        <source>All %1 faces are triangles: Loop keeps them triangles (Catmull–Clark would make each one three quads around a new valence-3 vertex).
+
+Subdivision scheme:</source>
+        <translation>Všechny stěny (%1) jsou trojúhelníky: Loop je zachová jako trojúhelníky (Catmull–Clark by z každé udělal tři čtyřúhelníky kolem nového vrcholu valence 3).
+
+Schéma subdivize:</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -3962,6 +4033,17 @@ Byla ponechána jako %2.</translation>
     </message>
 </context>
 <context>
+    <name>awb::Messages</name>
+    <message>
+        <source>… and %1 more lines: Show Details… lists them all.</source>
+        <translation>… a dalších řádků: %1. Všechny je vypíše tlačítko „Ukázat podrobnosti…“.</translation>
+    </message>
+    <message>
+        <source>Show Details… shows the whole text.</source>
+        <translation>Celý text zobrazí tlačítko „Ukázat podrobnosti…“.</translation>
+    </message>
+</context>
+<context>
     <name>awb::MoveControlPointsCommand</name>
     <message numerus="yes">
         <source>Move %n control points of %1</source>
@@ -3970,6 +4052,10 @@ Byla ponechána jako %2.</translation>
             <numerusform>Přesunout %n řídicí body položky %1</numerusform>
             <numerusform>Přesunout %n řídicích bodů položky %1</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Move a control point of %1</source>
+        <translation>Přesunout řídicí bod položky %1</translation>
     </message>
 </context>
 <context>
@@ -4404,6 +4490,10 @@ Byla ponechána jako %2.</translation>
             <numerusform>Přesunout %n položky</numerusform>
             <numerusform>Přesunout %n položek</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Move %1</source>
+        <translation>Přesunout %1</translation>
     </message>
 </context>
 <context>
@@ -5363,7 +5453,7 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>%1 pieces of %2 kinds after %3 isolating steps (docs/mathematics.md, &quot;Extraordinary vertices&quot;)</source>
-        <translation>%1 částí %2 druhů po %3 izolačních krocích (docs/mathematics.md, &quot;Extraordinary vertices&quot;)</translation>
+        <translation type="vanished">%1 částí %2 druhů po %3 izolačních krocích (docs/mathematics.md, &quot;Extraordinary vertices&quot;)</translation>
     </message>
     <message>
         <source>expected an array of faces, each an array of vertex numbers</source>
@@ -5395,7 +5485,7 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source>Colours</source>
-        <translation>Barvy</translation>
+        <translation type="vanished">Barvy</translation>
     </message>
     <message>
         <source>By map</source>
@@ -5444,6 +5534,18 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>Each face as the loop of its vertex numbers (0-based)</source>
         <translation>Každá stěna jako cyklus čísel jejích vrcholů (číslovaných od 0)</translation>
+    </message>
+    <message>
+        <source>%1 pieces of %2 kinds after %3 steps that isolate the extraordinary vertices</source>
+        <translation>Počet částí %1, počet druhů %2, počet kroků izolujících mimořádné vrcholy %3</translation>
+    </message>
+    <message>
+        <source>%1 pieces of %2 kinds after one step that isolates the extraordinary vertices</source>
+        <translation>Počet částí %1, počet druhů %2 po jednom kroku izolujícím mimořádné vrcholy</translation>
+    </message>
+    <message>
+        <source>Pieces coloured</source>
+        <translation>Obarvení částí</translation>
     </message>
 </context>
 <context>
@@ -5731,6 +5833,10 @@ Byla ponechána jako %2.</translation>
         <source>μ</source>
         <translation>μ</translation>
     </message>
+    <message>
+        <source>λ, μ, λ² (%1)</source>
+        <translation>λ, μ, λ² (%1)</translation>
+    </message>
 </context>
 <context>
     <name>awb::VertexPanel</name>
@@ -5780,7 +5886,7 @@ Byla ponechána jako %2.</translation>
     </message>
     <message>
         <source> (λ in closed form: %1)</source>
-        <translation> (λ v uzavřeném tvaru: %1)</translation>
+        <translation type="vanished"> (λ v uzavřeném tvaru: %1)</translation>
     </message>
     <message>
         <source>Reif&apos;s criterion is decided here for interior vertices only: a boundary vertex follows the crease rules, whose analysis needs the boundary&apos;s own characteristic map.</source>
@@ -5829,6 +5935,10 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>New Eigenvalue Plot</source>
         <translation>Nový graf vlastních čísel</translation>
+    </message>
+    <message>
+        <source>; in closed form λ = %1 = %2</source>
+        <translation>; v uzavřeném tvaru λ = %1 = %2</translation>
     </message>
 </context>
 <context>
@@ -6160,6 +6270,50 @@ Byla ponechána jako %2.</translation>
     <message>
         <source>not analysed: the mask has %1 coefficients, the regularity analysis takes at most %2 for arity %3 (transition matrices up to 48 x 48)</source>
         <translation>neanalyzováno: maska má %1 koeficientů, analýza regularity přijme pro aritu %3 nejvýše %2 (přechodové matice do 48 x 48)</translation>
+    </message>
+    <message>
+        <source>; exact by the invariant polytope algorithm (Guglielmi &amp; Protasov 2013): s.m.p. (%1), %2 vertices</source>
+        <translation>; přesně algoritmem invariantního polytopu (Guglielmi &amp; Protasov 2013): s.m.p. (%1), vrcholů: %2</translation>
+    </message>
+    <message>
+        <source>JSR of %1 matrices %2 x %2</source>
+        <translation>JSR %1 matic %2 x %2</translation>
+    </message>
+    <message>
+        <source>: lower bound max rho(product)^(1/k) over all products up to length %1</source>
+        <translation>: dolní mez max rho(product)^(1/k) přes všechny součiny do délky %1</translation>
+    </message>
+    <message>
+        <source> and the branch&apos;s products up to length %1</source>
+        <translation> a součiny větvení do délky %1</translation>
+    </message>
+    <message>
+        <source>, upper bound by Gripenberg&apos;s branch and bound (1996) in the %1</source>
+        <translation>, horní mez Gripenbergovou metodou větví a mezí (1996) v %1</translation>
+    </message>
+    <message>
+        <source>, upper bound in the %1</source>
+        <translation>, horní mez v %1</translation>
+    </message>
+    <message>
+        <source> (equal to the lower bound)</source>
+        <translation> (rovná se dolní mezi)</translation>
+    </message>
+    <message>
+        <source>, %1 products</source>
+        <translation>, součinů: %1</translation>
+    </message>
+    <message>
+        <source>r = n - log_%1 rho_n with n = %2 (a(z) has the factor (%3)^%2), rho_n the joint spectral radius of the transition matrices of the divided-difference mask of order %2 (Daubechies &amp; Lagarias 1992, Rioul 1992); %4%5</source>
+        <translation>r = n - log_%1 rho_n, kde n = %2 (a(z) má faktor (%3)^%2) a rho_n je společný spektrální poloměr přechodových matic masky poměrných diferencí řádu %2 (Daubechies &amp; Lagarias 1992, Rioul 1992); %4%5</translation>
+    </message>
+    <message>
+        <source>r = -log_%1 rho with rho the joint spectral radius of S_1..S_%1 on the quotient by the control vectors of the polynomials of degree &lt; %2 that they generate (Micchelli &amp; Prautzsch 1989); %3%4</source>
+        <translation>r = -log_%1 rho, kde rho je společný spektrální poloměr S_1..S_%1 na faktorprostoru podle řídicích vektorů, které generují polynomy stupně &lt; %2 (Micchelli &amp; Prautzsch 1989); %3%4</translation>
+    </message>
+    <message>
+        <source>s_2 = -log_%1(rho) / 2 with rho the spectral radius of the transition operator (T v)_i = sum_j b_{%1i - j} v_j of the autocorrelation b_k = (1/%1) sum_j a_j a_{j+k} on [-%2, %2], restricted to the %3-dimensional invariant subspace orthogonal to the polynomials of degree &lt; %4 (Eirola 1992, Villemoes 1994, Jia 1999); exact for stable integer shifts, a lower bound otherwise (Ron &amp; Shen 2000); rounding margin %5</source>
+        <translation>s_2 = -log_%1(rho) / 2, kde rho je spektrální poloměr přechodového operátoru (T v)_i = sum_j b_{%1i - j} v_j autokorelace b_k = (1/%1) sum_j a_j a_{j+k} na [-%2, %2], zúženého na invariantní podprostor dimenze %3 ortogonální k polynomům stupně &lt; %4 (Eirola 1992, Villemoes 1994, Jia 1999); přesná hodnota při stabilních celočíselných posunech, jinak dolní mez (Ron &amp; Shen 2000); rezerva na zaokrouhlení %5</translation>
     </message>
 </context>
 <context>
@@ -6886,7 +7040,7 @@ Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --he
     </message>
     <message>
         <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit), or every flame of a flam3 genome (.flame, .flam3: flam3, Apophysis, JWildfire), as a fractal with control points. Non-linear variations are dropped with a warning.</source>
-        <translation>Vytvořit projekt ze souboru IFS jiného nástroje: každý záznam souboru Fractint .ifs (2D i 3D, formát programů Fractint, xfractint a IFS Construction Kit) nebo každý plamen genomu flam3 (.flame, .flam3: flam3, Apophysis, JWildfire) se stane fraktálem s řídicími body. Nelineární variace se vynechají s varováním.</translation>
+        <translation type="vanished">Vytvořit projekt ze souboru IFS jiného nástroje: každý záznam souboru Fractint .ifs (2D i 3D, formát programů Fractint, xfractint a IFS Construction Kit) nebo každý plamen genomu flam3 (.flame, .flam3: flam3, Apophysis, JWildfire) se stane fraktálem s řídicími body. Nelineární variace se vynechají s varováním.</translation>
     </message>
     <message>
         <source>The file to import (.ifs, .flame, .flam3).</source>
@@ -7217,6 +7371,14 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     <message>
         <source>%1: %2: note: its chaos game does not contract on average (the Lyapunov exponent along its orbit is %3): flam3 draws it by discarding the points that escape</source>
         <translation>%1: %2: poznámka: jeho chaos game nekontrahuje v průměru (Ljapunovův exponent podél jeho orbity je %3): flam3 ji kreslí tak, že zahazuje body, které uniknou</translation>
+    </message>
+    <message>
+        <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit), or every flame of a flam3 genome (.flame, .flam3: flam3, Apophysis, JWildfire): a flame of affine maps as a fractal with control points, any other as a fractal flame item drawn by flam3&apos;s chaos game (a variation this program does not know is named in a warning).</source>
+        <translation>Vytvoří projekt ze souboru IFS jiného programu: každý záznam souboru .ifs formátu Fractint (2D i 3D; formát programů Fractint, xfractint a IFS Construction Kit) nebo každý plamen genomu flam3 (.flame, .flam3: flam3, Apophysis, JWildfire): plamen z afinních zobrazení jako fraktál s řídicími body, každý jiný jako položka „fraktální plamen“, kterou kreslí hra chaosu programu flam3 (variace, kterou tento program nezná, je uvedena jménem ve varování).</translation>
+    </message>
+    <message>
+        <source>attractor-cli: note: all %1 faces are triangles; --scheme loop keeps them triangles (Catmull-Clark makes each one three quads around a new valence-3 vertex)</source>
+        <translation>attractor-cli: poznámka: všechny stěny (%1) jsou trojúhelníky; --scheme loop je zachová jako trojúhelníky (Catmull-Clark z každé udělá tři čtyřúhelníky kolem nového vrcholu valence 3)</translation>
     </message>
 </context>
 <context>

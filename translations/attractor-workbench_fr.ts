@@ -1658,6 +1658,25 @@
     </message>
 </context>
 <context>
+    <name>awb::ExampleGallery</name>
+    <message>
+        <source>Open Example</source>
+        <translation>Ouvrir un exemple</translation>
+    </message>
+    <message>
+        <source>One project per figure of the papers, and examples of meshes, masks and animations. An example opens as a copy: Save As keeps it.</source>
+        <translation>Un projet par figure des articles, ainsi que des exemples de maillages, de masques et d’animations. Un exemple s’ouvre sous forme de copie&#xa0;: «&#xa0;Enregistrer sous&#xa0;» la conserve.</translation>
+    </message>
+    <message>
+        <source>Filter: a paper (003), a figure, a word (Koch, mesh)…</source>
+        <translation>Filtrer&#xa0;: un article (003), une figure, un mot (Koch, mesh)…</translation>
+    </message>
+    <message>
+        <source>No examples installed</source>
+        <translation>Aucun exemple installé</translation>
+    </message>
+</context>
+<context>
     <name>awb::ExportDialog</name>
     <message>
         <source>Export Figure</source>
@@ -2963,6 +2982,10 @@ Retrancher la différence %7 du coefficient de la colonne %8 (%9 → %10) pour q
         <source>No certificate was saved: %1</source>
         <translation>Aucun certificat n&apos;a été enregistré&#xa0;: %1</translation>
     </message>
+    <message>
+        <source>Saved the regularity certificate to %1</source>
+        <translation>Certificat de régularité enregistré dans %1</translation>
+    </message>
 </context>
 <context>
     <name>awb::ItemFigure</name>
@@ -3141,8 +3164,8 @@ Retrancher la différence %7 du coefficient de la colonne %8 (%9 → %10) pour q
         <translation>&amp;Aperçu avant impression…</translation>
     </message>
     <message>
-        <source>Ctrl+Shift+P</source>
-        <translation>Ctrl+Shift+P</translation>
+        <source>Ctrl+Alt+P</source>
+        <translation>Ctrl+Alt+P</translation>
     </message>
     <message>
         <source>Print to P&amp;DF…</source>
@@ -3493,7 +3516,7 @@ Retrancher la différence %7 du coefficient de la colonne %8 (%9 → %10) pour q
     </message>
     <message>
         <source>Exported %1</source>
-        <translation>Exporté&#xa0;: %1</translation>
+        <translation type="vanished">Exporté&#xa0;: %1</translation>
     </message>
     <message>
         <source>About Attractor Workbench</source>
@@ -3881,6 +3904,54 @@ Elle a été conservée sous le nom %2.</translation>
         <source>Run Python Script</source>
         <translation>Exécuter un script Python</translation>
     </message>
+    <message>
+        <source>&amp;Gallery…</source>
+        <translation>&amp;Galerie…</translation>
+    </message>
+    <message>
+        <source>The examples as thumbnails: the papers&apos; figures, meshes, masks</source>
+        <translation>Les exemples sous forme de vignettes&#xa0;: figures des articles, maillages, masques</translation>
+    </message>
+    <message>
+        <source>Exported the figure to %1</source>
+        <translation>Figure exportée vers %1</translation>
+    </message>
+    <message>
+        <source>000 Schaefer, Levin, Goldman: Subdivision Schemes and Attractors</source>
+        <translation>000 Schaefer, Levin, Goldman&#xa0;: Schémas de subdivision et attracteurs</translation>
+    </message>
+    <message>
+        <source>001 Li et al.: Normal Vector Based Subdivision</source>
+        <translation>001 Li et al.&#xa0;: Subdivision fondée sur les vecteurs normaux</translation>
+    </message>
+    <message>
+        <source>002 John: All Bézier Curves Are Attractors</source>
+        <translation>002 John&#xa0;: Toutes les courbes de Bézier sont des attracteurs</translation>
+    </message>
+    <message>
+        <source>003 BCIFS Junction Curves</source>
+        <translation>003 Courbes de jonction BCIFS</translation>
+    </message>
+    <message>
+        <source>004 Ptáčková: Fractals and Splines</source>
+        <translation>004 Ptáčková&#xa0;: Fractales et splines</translation>
+    </message>
+    <message>
+        <source>Meshes</source>
+        <translation>Maillages</translation>
+    </message>
+    <message>
+        <source>Masks, Animations and Other Tools&apos; Files</source>
+        <translation>Masques, animations et fichiers d’autres outils</translation>
+    </message>
+    <message>
+        <source>All %1 faces are triangles: Loop keeps them triangles (Catmull–Clark would make each one three quads around a new valence-3 vertex).
+
+Subdivision scheme:</source>
+        <translation>Les %1 faces sont toutes des triangles&#xa0;: Loop les conserve en triangles (Catmull–Clark ferait de chacune trois quadrilatères autour d’un nouveau sommet de valence 3).
+
+Schéma de subdivision&#xa0;:</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -3956,6 +4027,17 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
 </context>
 <context>
+    <name>awb::Messages</name>
+    <message>
+        <source>… and %1 more lines: Show Details… lists them all.</source>
+        <translation>… et %1 lignes de plus&#xa0;: «&#xa0;Montrer les détails…&#xa0;» les affiche toutes.</translation>
+    </message>
+    <message>
+        <source>Show Details… shows the whole text.</source>
+        <translation>«&#xa0;Montrer les détails…&#xa0;» affiche le texte complet.</translation>
+    </message>
+</context>
+<context>
     <name>awb::MoveControlPointsCommand</name>
     <message numerus="yes">
         <source>Move %n control points of %1</source>
@@ -3963,6 +4045,10 @@ Elle a été conservée sous le nom %2.</translation>
             <numerusform>Déplacer %n point de contrôle de %1</numerusform>
             <numerusform>Déplacer %n points de contrôle de %1</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Move a control point of %1</source>
+        <translation>Déplacer un point de contrôle de %1</translation>
     </message>
 </context>
 <context>
@@ -4395,6 +4481,10 @@ Elle a été conservée sous le nom %2.</translation>
             <numerusform>Déplacer %n élément</numerusform>
             <numerusform>Déplacer %n éléments</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Move %1</source>
+        <translation>Déplacer %1</translation>
     </message>
 </context>
 <context>
@@ -5354,7 +5444,7 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>%1 pieces of %2 kinds after %3 isolating steps (docs/mathematics.md, &quot;Extraordinary vertices&quot;)</source>
-        <translation>%1 morceaux de %2 types après %3 étapes d’isolement (docs/mathematics.md, &quot;Extraordinary vertices&quot;)</translation>
+        <translation type="vanished">%1 morceaux de %2 types après %3 étapes d’isolement (docs/mathematics.md, &quot;Extraordinary vertices&quot;)</translation>
     </message>
     <message>
         <source>expected an array of faces, each an array of vertex numbers</source>
@@ -5386,7 +5476,7 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source>Colours</source>
-        <translation>Couleurs</translation>
+        <translation type="vanished">Couleurs</translation>
     </message>
     <message>
         <source>By map</source>
@@ -5435,6 +5525,18 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>Each face as the loop of its vertex numbers (0-based)</source>
         <translation>Chaque face sous la forme de la boucle des numéros de ses sommets (numérotés à partir de 0)</translation>
+    </message>
+    <message>
+        <source>%1 pieces of %2 kinds after %3 steps that isolate the extraordinary vertices</source>
+        <translation>%1 morceaux de %2 types après %3 étapes qui isolent les sommets extraordinaires</translation>
+    </message>
+    <message>
+        <source>%1 pieces of %2 kinds after one step that isolates the extraordinary vertices</source>
+        <translation>%1 morceaux de %2 types après une étape qui isole les sommets extraordinaires</translation>
+    </message>
+    <message>
+        <source>Pieces coloured</source>
+        <translation>Coloration des morceaux</translation>
     </message>
 </context>
 <context>
@@ -5722,6 +5824,10 @@ Elle a été conservée sous le nom %2.</translation>
         <source>μ</source>
         <translation>μ</translation>
     </message>
+    <message>
+        <source>λ, μ, λ² (%1)</source>
+        <translation>λ, μ, λ² (%1)</translation>
+    </message>
 </context>
 <context>
     <name>awb::VertexPanel</name>
@@ -5771,7 +5877,7 @@ Elle a été conservée sous le nom %2.</translation>
     </message>
     <message>
         <source> (λ in closed form: %1)</source>
-        <translation> (λ sous forme close&#xa0;: %1)</translation>
+        <translation type="vanished"> (λ sous forme close&#xa0;: %1)</translation>
     </message>
     <message>
         <source>Reif&apos;s criterion is decided here for interior vertices only: a boundary vertex follows the crease rules, whose analysis needs the boundary&apos;s own characteristic map.</source>
@@ -5820,6 +5926,10 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>New Eigenvalue Plot</source>
         <translation>Nouveau diagramme des valeurs propres</translation>
+    </message>
+    <message>
+        <source>; in closed form λ = %1 = %2</source>
+        <translation>; sous forme close λ = %1 = %2</translation>
     </message>
 </context>
 <context>
@@ -6151,6 +6261,50 @@ Elle a été conservée sous le nom %2.</translation>
     <message>
         <source>not analysed: the mask has %1 coefficients, the regularity analysis takes at most %2 for arity %3 (transition matrices up to 48 x 48)</source>
         <translation>non analysé&#xa0;: le masque a %1 coefficients, l&apos;analyse de régularité en accepte au plus %2 pour l&apos;arité %3 (matrices de transition jusqu&apos;à 48 x 48)</translation>
+    </message>
+    <message>
+        <source>; exact by the invariant polytope algorithm (Guglielmi &amp; Protasov 2013): s.m.p. (%1), %2 vertices</source>
+        <translation>; résultat exact par l’algorithme du polytope invariant (Guglielmi &amp; Protasov 2013)&#xa0;: s.m.p. (%1), %2&#xa0;sommets</translation>
+    </message>
+    <message>
+        <source>JSR of %1 matrices %2 x %2</source>
+        <translation>JSR de %1 matrices %2 x %2</translation>
+    </message>
+    <message>
+        <source>: lower bound max rho(product)^(1/k) over all products up to length %1</source>
+        <translation>: borne inférieure max rho(product)^(1/k) sur tous les produits de longueur au plus %1</translation>
+    </message>
+    <message>
+        <source> and the branch&apos;s products up to length %1</source>
+        <translation> et les produits du branchement jusqu’à la longueur %1</translation>
+    </message>
+    <message>
+        <source>, upper bound by Gripenberg&apos;s branch and bound (1996) in the %1</source>
+        <translation>, borne supérieure par la méthode de séparation et évaluation de Gripenberg (1996) dans la %1</translation>
+    </message>
+    <message>
+        <source>, upper bound in the %1</source>
+        <translation>, borne supérieure dans la %1</translation>
+    </message>
+    <message>
+        <source> (equal to the lower bound)</source>
+        <translation> (égale à la borne inférieure)</translation>
+    </message>
+    <message>
+        <source>, %1 products</source>
+        <translation>, %1&#xa0;produits</translation>
+    </message>
+    <message>
+        <source>r = n - log_%1 rho_n with n = %2 (a(z) has the factor (%3)^%2), rho_n the joint spectral radius of the transition matrices of the divided-difference mask of order %2 (Daubechies &amp; Lagarias 1992, Rioul 1992); %4%5</source>
+        <translation>r = n - log_%1 rho_n, où n = %2 (a(z) admet le facteur (%3)^%2) et rho_n est le rayon spectral joint des matrices de transition du masque des différences divisées d’ordre %2 (Daubechies &amp; Lagarias 1992, Rioul 1992)&#x202f;; %4%5</translation>
+    </message>
+    <message>
+        <source>r = -log_%1 rho with rho the joint spectral radius of S_1..S_%1 on the quotient by the control vectors of the polynomials of degree &lt; %2 that they generate (Micchelli &amp; Prautzsch 1989); %3%4</source>
+        <translation>r = -log_%1 rho, où rho est le rayon spectral joint de S_1..S_%1 sur le quotient par les vecteurs de contrôle qui engendrent les polynômes de degré &lt; %2 (Micchelli &amp; Prautzsch 1989)&#x202f;; %3%4</translation>
+    </message>
+    <message>
+        <source>s_2 = -log_%1(rho) / 2 with rho the spectral radius of the transition operator (T v)_i = sum_j b_{%1i - j} v_j of the autocorrelation b_k = (1/%1) sum_j a_j a_{j+k} on [-%2, %2], restricted to the %3-dimensional invariant subspace orthogonal to the polynomials of degree &lt; %4 (Eirola 1992, Villemoes 1994, Jia 1999); exact for stable integer shifts, a lower bound otherwise (Ron &amp; Shen 2000); rounding margin %5</source>
+        <translation>s_2 = -log_%1(rho) / 2, où rho est le rayon spectral de l’opérateur de transition (T v)_i = sum_j b_{%1i - j} v_j de l’autocorrélation b_k = (1/%1) sum_j a_j a_{j+k} sur [-%2, %2], restreint au sous-espace invariant de dimension %3 orthogonal aux polynômes de degré &lt; %4 (Eirola 1992, Villemoes 1994, Jia 1999)&#x202f;; exact pour des translatés entiers stables, borne inférieure sinon (Ron &amp; Shen 2000)&#x202f;; marge d’arrondi %5</translation>
     </message>
 </context>
 <context>
@@ -6875,7 +7029,7 @@ Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les
     </message>
     <message>
         <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit), or every flame of a flam3 genome (.flame, .flam3: flam3, Apophysis, JWildfire), as a fractal with control points. Non-linear variations are dropped with a warning.</source>
-        <translation>Créer un projet à partir du fichier IFS d’un autre outil&#xa0;: chaque entrée d’un fichier .ifs de Fractint (2D et 3D, le format de Fractint, de xfractint et de l’IFS Construction Kit), ou chaque flamme d’un génome flam3 (.flame, .flam3&#xa0;: flam3, Apophysis, JWildfire), devient une fractale avec des points de contrôle. Les variations non linéaires sont abandonnées avec un avertissement.</translation>
+        <translation type="vanished">Créer un projet à partir du fichier IFS d’un autre outil&#xa0;: chaque entrée d’un fichier .ifs de Fractint (2D et 3D, le format de Fractint, de xfractint et de l’IFS Construction Kit), ou chaque flamme d’un génome flam3 (.flame, .flam3&#xa0;: flam3, Apophysis, JWildfire), devient une fractale avec des points de contrôle. Les variations non linéaires sont abandonnées avec un avertissement.</translation>
     </message>
     <message>
         <source>The file to import (.ifs, .flame, .flam3).</source>
@@ -7206,6 +7360,14 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     <message>
         <source>%1: %2: note: its chaos game does not contract on average (the Lyapunov exponent along its orbit is %3): flam3 draws it by discarding the points that escape</source>
         <translation>%1&#xa0;: %2&#xa0;: note&#xa0;: son jeu du chaos ne contracte pas en moyenne (l’exposant de Lyapunov le long de son orbite vaut %3)&#xa0;: flam3 le dessine en écartant les points qui s’échappent</translation>
+    </message>
+    <message>
+        <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit), or every flame of a flam3 genome (.flame, .flam3: flam3, Apophysis, JWildfire): a flame of affine maps as a fractal with control points, any other as a fractal flame item drawn by flam3&apos;s chaos game (a variation this program does not know is named in a warning).</source>
+        <translation>Créer un projet à partir du fichier IFS d’un autre outil&#xa0;: chaque entrée d’un fichier .ifs de Fractint (2D et 3D, le format de Fractint, de xfractint et de l’IFS Construction Kit), ou chaque flamme d’un génome flam3 (.flame, .flam3&#xa0;: flam3, Apophysis, JWildfire)&#xa0;: une flamme d’applications affines devient une fractale avec des points de contrôle, toute autre flamme un élément flamme fractale dessiné par le jeu du chaos de flam3 (une variation que ce programme ne connaît pas est nommée dans un avertissement).</translation>
+    </message>
+    <message>
+        <source>attractor-cli: note: all %1 faces are triangles; --scheme loop keeps them triangles (Catmull-Clark makes each one three quads around a new valence-3 vertex)</source>
+        <translation>attractor-cli&#xa0;: note&#xa0;: les %1 faces sont toutes des triangles&#x202f;; --scheme loop les conserve en triangles (Catmull-Clark fait de chacune trois quadrilatères autour d’un nouveau sommet de valence 3)</translation>
     </message>
 </context>
 <context>

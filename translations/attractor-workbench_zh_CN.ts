@@ -1657,6 +1657,25 @@
     </message>
 </context>
 <context>
+    <name>awb::ExampleGallery</name>
+    <message>
+        <source>Open Example</source>
+        <translation>打开示例</translation>
+    </message>
+    <message>
+        <source>One project per figure of the papers, and examples of meshes, masks and animations. An example opens as a copy: Save As keeps it.</source>
+        <translation>论文中的每幅插图各对应一个项目，另有网格、掩模和动画的示例。示例以副本形式打开：“另存为”可将其保留。</translation>
+    </message>
+    <message>
+        <source>Filter: a paper (003), a figure, a word (Koch, mesh)…</source>
+        <translation>筛选：论文（003）、插图、单词（Koch、mesh）…</translation>
+    </message>
+    <message>
+        <source>No examples installed</source>
+        <translation>未安装示例</translation>
+    </message>
+</context>
+<context>
     <name>awb::ExportDialog</name>
     <message>
         <source>Export Figure</source>
@@ -2960,6 +2979,10 @@ Take the difference %7 from the entry in column %8 (%9 → %10) so that the row 
         <source>No certificate was saved: %1</source>
         <translation>未保存证书：%1</translation>
     </message>
+    <message>
+        <source>Saved the regularity certificate to %1</source>
+        <translation>已将正则性证书保存到 %1</translation>
+    </message>
 </context>
 <context>
     <name>awb::ItemFigure</name>
@@ -3138,8 +3161,8 @@ Take the difference %7 from the entry in column %8 (%9 → %10) so that the row 
         <translation>打印预览(&amp;V)…</translation>
     </message>
     <message>
-        <source>Ctrl+Shift+P</source>
-        <translation>Ctrl+Shift+P</translation>
+        <source>Ctrl+Alt+P</source>
+        <translation>Ctrl+Alt+P</translation>
     </message>
     <message>
         <source>Print to P&amp;DF…</source>
@@ -3489,7 +3512,7 @@ Take the difference %7 from the entry in column %8 (%9 → %10) so that the row 
     </message>
     <message>
         <source>Exported %1</source>
-        <translation>已导出 %1</translation>
+        <translation type="vanished">已导出 %1</translation>
     </message>
     <message>
         <source>About Attractor Workbench</source>
@@ -3875,6 +3898,54 @@ It was kept as %2.</source>
         <source>Run Python Script</source>
         <translation>运行 Python 脚本</translation>
     </message>
+    <message>
+        <source>&amp;Gallery…</source>
+        <translation>图库(&amp;G)…</translation>
+    </message>
+    <message>
+        <source>The examples as thumbnails: the papers&apos; figures, meshes, masks</source>
+        <translation>以缩略图显示示例：论文插图、网格、掩模</translation>
+    </message>
+    <message>
+        <source>Exported the figure to %1</source>
+        <translation>已将图形导出到 %1</translation>
+    </message>
+    <message>
+        <source>000 Schaefer, Levin, Goldman: Subdivision Schemes and Attractors</source>
+        <translation>000 Schaefer、Levin、Goldman：细分格式与吸引子</translation>
+    </message>
+    <message>
+        <source>001 Li et al.: Normal Vector Based Subdivision</source>
+        <translation>001 Li 等：基于法向量的细分</translation>
+    </message>
+    <message>
+        <source>002 John: All Bézier Curves Are Attractors</source>
+        <translation>002 John：所有 Bézier 曲线都是吸引子</translation>
+    </message>
+    <message>
+        <source>003 BCIFS Junction Curves</source>
+        <translation>003 BCIFS 拼接曲线</translation>
+    </message>
+    <message>
+        <source>004 Ptáčková: Fractals and Splines</source>
+        <translation>004 Ptáčková：分形与样条</translation>
+    </message>
+    <message>
+        <source>Meshes</source>
+        <translation>网格</translation>
+    </message>
+    <message>
+        <source>Masks, Animations and Other Tools&apos; Files</source>
+        <translation>掩模、动画及其他工具的文件</translation>
+    </message>
+    <message>
+        <source>All %1 faces are triangles: Loop keeps them triangles (Catmull–Clark would make each one three quads around a new valence-3 vertex).
+
+Subdivision scheme:</source>
+        <translation>全部 %1 个面都是三角形：Loop 会保持其为三角形（Catmull–Clark 会把每个面变成围绕一个新的 3 价顶点的三个四边形）。
+
+细分格式：</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -3950,12 +4021,27 @@ It was kept as %2.</source>
     </message>
 </context>
 <context>
+    <name>awb::Messages</name>
+    <message>
+        <source>… and %1 more lines: Show Details… lists them all.</source>
+        <translation>… 还有 %1 行：“显示详情…”会将其全部列出。</translation>
+    </message>
+    <message>
+        <source>Show Details… shows the whole text.</source>
+        <translation>“显示详情…”可显示全文。</translation>
+    </message>
+</context>
+<context>
     <name>awb::MoveControlPointsCommand</name>
     <message numerus="yes">
         <source>Move %n control points of %1</source>
         <translation>
             <numerusform>移动 %1 的 %n 个控制点</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Move a control point of %1</source>
+        <translation>移动 %1 的一个控制点</translation>
     </message>
 </context>
 <context>
@@ -4386,6 +4472,10 @@ It was kept as %2.</source>
         <translation>
             <numerusform>移动 %n 个对象</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Move %1</source>
+        <translation>移动 %1</translation>
     </message>
 </context>
 <context>
@@ -5345,7 +5435,7 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>%1 pieces of %2 kinds after %3 isolating steps (docs/mathematics.md, &quot;Extraordinary vertices&quot;)</source>
-        <translation>经过 %3 步隔离后共有 %1 个曲面片，分属 %2 种类型（docs/mathematics.md，&quot;Extraordinary vertices&quot;）</translation>
+        <translation type="vanished">经过 %3 步隔离后共有 %1 个曲面片，分属 %2 种类型（docs/mathematics.md，&quot;Extraordinary vertices&quot;）</translation>
     </message>
     <message>
         <source>expected an array of faces, each an array of vertex numbers</source>
@@ -5377,7 +5467,7 @@ It was kept as %2.</source>
     </message>
     <message>
         <source>Colours</source>
-        <translation>颜色</translation>
+        <translation type="vanished">颜色</translation>
     </message>
     <message>
         <source>By map</source>
@@ -5426,6 +5516,18 @@ It was kept as %2.</source>
     <message>
         <source>Each face as the loop of its vertex numbers (0-based)</source>
         <translation>每个面表示为由其顶点编号构成的环（从 0 开始）</translation>
+    </message>
+    <message>
+        <source>%1 pieces of %2 kinds after %3 steps that isolate the extraordinary vertices</source>
+        <translation>经过 %3 步隔离奇异顶点的细分后，共有 %1 个曲面片，分属 %2 种类型</translation>
+    </message>
+    <message>
+        <source>%1 pieces of %2 kinds after one step that isolates the extraordinary vertices</source>
+        <translation>经过一步隔离奇异顶点的细分后，共有 %1 个曲面片，分属 %2 种类型</translation>
+    </message>
+    <message>
+        <source>Pieces coloured</source>
+        <translation>曲面片着色</translation>
     </message>
 </context>
 <context>
@@ -5713,6 +5815,10 @@ It was kept as %2.</source>
         <source>μ</source>
         <translation>μ</translation>
     </message>
+    <message>
+        <source>λ, μ, λ² (%1)</source>
+        <translation>λ、μ、λ²（%1）</translation>
+    </message>
 </context>
 <context>
     <name>awb::VertexPanel</name>
@@ -5762,7 +5868,7 @@ It was kept as %2.</source>
     </message>
     <message>
         <source> (λ in closed form: %1)</source>
-        <translation>（λ 的闭式值：%1）</translation>
+        <translation type="vanished">（λ 的闭式值：%1）</translation>
     </message>
     <message>
         <source>Reif&apos;s criterion is decided here for interior vertices only: a boundary vertex follows the crease rules, whose analysis needs the boundary&apos;s own characteristic map.</source>
@@ -5811,6 +5917,10 @@ It was kept as %2.</source>
     <message>
         <source>New Eigenvalue Plot</source>
         <translation>新建特征值图</translation>
+    </message>
+    <message>
+        <source>; in closed form λ = %1 = %2</source>
+        <translation>; 闭式为 λ = %1 = %2</translation>
     </message>
 </context>
 <context>
@@ -6142,6 +6252,50 @@ It was kept as %2.</source>
     <message>
         <source>not analysed: the mask has %1 coefficients, the regularity analysis takes at most %2 for arity %3 (transition matrices up to 48 x 48)</source>
         <translation>未分析：该掩模有 %1 个系数，对于元数 %3，正则性分析最多接受 %2 个（转移矩阵最大 48 x 48）</translation>
+    </message>
+    <message>
+        <source>; exact by the invariant polytope algorithm (Guglielmi &amp; Protasov 2013): s.m.p. (%1), %2 vertices</source>
+        <translation>; 由不变多面体算法（Guglielmi &amp; Protasov 2013）得到精确值：s.m.p. (%1)，%2 个顶点</translation>
+    </message>
+    <message>
+        <source>JSR of %1 matrices %2 x %2</source>
+        <translation>%1 个 %2 x %2 矩阵的 JSR</translation>
+    </message>
+    <message>
+        <source>: lower bound max rho(product)^(1/k) over all products up to length %1</source>
+        <translation>: 下界 max rho(product)^(1/k)，取遍长度不超过 %1 的所有乘积</translation>
+    </message>
+    <message>
+        <source> and the branch&apos;s products up to length %1</source>
+        <translation> 以及分支中长度不超过 %1 的乘积</translation>
+    </message>
+    <message>
+        <source>, upper bound by Gripenberg&apos;s branch and bound (1996) in the %1</source>
+        <translation>, 上界由 Gripenberg 分支定界法（1996）在 %1 下求得</translation>
+    </message>
+    <message>
+        <source>, upper bound in the %1</source>
+        <translation>, 上界在 %1 下求得</translation>
+    </message>
+    <message>
+        <source> (equal to the lower bound)</source>
+        <translation> (等于下界)</translation>
+    </message>
+    <message>
+        <source>, %1 products</source>
+        <translation>, %1 个乘积</translation>
+    </message>
+    <message>
+        <source>r = n - log_%1 rho_n with n = %2 (a(z) has the factor (%3)^%2), rho_n the joint spectral radius of the transition matrices of the divided-difference mask of order %2 (Daubechies &amp; Lagarias 1992, Rioul 1992); %4%5</source>
+        <translation>r = n - log_%1 rho_n，其中 n = %2（a(z) 含因子 (%3)^%2），rho_n 为 %2 阶差商掩模的转移矩阵的联合谱半径（Daubechies &amp; Lagarias 1992，Rioul 1992）；%4%5</translation>
+    </message>
+    <message>
+        <source>r = -log_%1 rho with rho the joint spectral radius of S_1..S_%1 on the quotient by the control vectors of the polynomials of degree &lt; %2 that they generate (Micchelli &amp; Prautzsch 1989); %3%4</source>
+        <translation>r = -log_%1 rho，其中 rho 为 S_1..S_%1 在商空间上的联合谱半径，该商空间是模去生成次数 &lt; %2 的多项式的控制向量所得（Micchelli &amp; Prautzsch 1989）；%3%4</translation>
+    </message>
+    <message>
+        <source>s_2 = -log_%1(rho) / 2 with rho the spectral radius of the transition operator (T v)_i = sum_j b_{%1i - j} v_j of the autocorrelation b_k = (1/%1) sum_j a_j a_{j+k} on [-%2, %2], restricted to the %3-dimensional invariant subspace orthogonal to the polynomials of degree &lt; %4 (Eirola 1992, Villemoes 1994, Jia 1999); exact for stable integer shifts, a lower bound otherwise (Ron &amp; Shen 2000); rounding margin %5</source>
+        <translation>s_2 = -log_%1(rho) / 2，其中 rho 为自相关 b_k = (1/%1) sum_j a_j a_{j+k} 的转移算子 (T v)_i = sum_j b_{%1i - j} v_j 在 [-%2, %2] 上、限制于与次数 &lt; %4 的多项式正交的 %3 维不变子空间时的谱半径（Eirola 1992，Villemoes 1994，Jia 1999）；整数平移稳定时为精确值，否则为下界（Ron &amp; Shen 2000）；舍入余量 %5</translation>
     </message>
 </context>
 <context>
@@ -6864,7 +7018,7 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit), or every flame of a flam3 genome (.flame, .flam3: flam3, Apophysis, JWildfire), as a fractal with control points. Non-linear variations are dropped with a warning.</source>
-        <translation>将其他工具的 IFS 文件生成项目：Fractint .ifs 文件中的每个条目（2D 和 3D，即 Fractint、xfractint 和 IFS Construction Kit 的格式），或 flam3 基因组（.flame、.flam3：flam3、Apophysis、JWildfire）中的每个火焰分形，都会成为带控制点的分形。非线性变体将被舍弃并给出警告。</translation>
+        <translation type="vanished">将其他工具的 IFS 文件生成项目：Fractint .ifs 文件中的每个条目（2D 和 3D，即 Fractint、xfractint 和 IFS Construction Kit 的格式），或 flam3 基因组（.flame、.flam3：flam3、Apophysis、JWildfire）中的每个火焰分形，都会成为带控制点的分形。非线性变体将被舍弃并给出警告。</translation>
     </message>
     <message>
         <source>The file to import (.ifs, .flame, .flam3).</source>
@@ -7195,6 +7349,14 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>%1: %2: note: its chaos game does not contract on average (the Lyapunov exponent along its orbit is %3): flam3 draws it by discarding the points that escape</source>
         <translation>%1：%2：注意：其混沌游戏平均而言不收缩（沿其轨道的李雅普诺夫指数为 %3）：flam3 通过丢弃逃逸的点来绘制它</translation>
+    </message>
+    <message>
+        <source>Make a project of another tool&apos;s IFS file: every entry of a Fractint .ifs file (2D and 3D, the format of Fractint, xfractint and the IFS Construction Kit), or every flame of a flam3 genome (.flame, .flam3: flam3, Apophysis, JWildfire): a flame of affine maps as a fractal with control points, any other as a fractal flame item drawn by flam3&apos;s chaos game (a variation this program does not know is named in a warning).</source>
+        <translation>由其他工具的 IFS 文件创建项目：Fractint .ifs 文件中的每个条目（2D 和 3D，即 Fractint、xfractint 和 IFS Construction Kit 所用的格式），或 flam3 基因组（.flame、.flam3：flam3、Apophysis、JWildfire）中的每个火焰：由仿射映射构成的火焰导入为带控制点的分形，其他火焰导入为由 flam3 的混沌游戏绘制的分形火焰对象（本程序不认识的变体会在警告中列出其名称）。</translation>
+    </message>
+    <message>
+        <source>attractor-cli: note: all %1 faces are triangles; --scheme loop keeps them triangles (Catmull-Clark makes each one three quads around a new valence-3 vertex)</source>
+        <translation>attractor-cli：注意：全部 %1 个面都是三角形；--scheme loop 会保持其为三角形（Catmull-Clark 会把每个面变成围绕一个新的 3 价顶点的三个四边形）</translation>
     </message>
 </context>
 <context>
