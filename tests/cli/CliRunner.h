@@ -2,6 +2,7 @@
 // Running attractor-cli from the CLI tests: the executable (AWB_BIN_DIR), the bundled examples
 // (AWB_SOURCE_DIR) and a run with captured output and exit code (-1 on a crash or time-out).
 
+#include "TestPaths.h"
 #include "TestTime.h"
 
 #include <QCoreApplication>
@@ -19,7 +20,7 @@ inline QString cliPath()
 
 inline QString examplePath(const QString &name)
 {
-    return qEnvironmentVariable("AWB_SOURCE_DIR", QString(AWB_TEST_SOURCE_DIR)) + "/examples/"
+    return awb::test::sourceDir() + "/examples/"
            + name;
 }
 

@@ -6,6 +6,7 @@
 // must have its row. Files an input marks as kept must come out of the command unchanged (a
 // failed write never truncates an existing file).
 
+#include "TestPaths.h"
 #include "CliRunner.h"
 
 #include <QBuffer>
@@ -39,11 +40,6 @@ struct Row {
     int line = 0;
 };
 
-QString sourceDir()
-{
-    return qEnvironmentVariable("AWB_SOURCE_DIR", QString(AWB_TEST_SOURCE_DIR));
-}
-
 QByteArray readBytes(const QString &path)
 {
     QFile f(path);
@@ -59,7 +55,7 @@ bool writeBytes(const QString &path, const QByteArray &bytes)
 // The rows of the table: | `id` | what | `command` | exit | `answer` |
 QList<Row> tableRows(QString *error)
 {
-    QFile f(sourceDir() + "/docs/bad-input.md");
+    QFile f(awb::test::sourceDir() + "/docs/bad-input.md");
     if (!f.open(QIODevice::ReadOnly)) {
         *error = "cannot read docs/bad-input.md";
         return {};

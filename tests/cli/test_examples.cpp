@@ -1,6 +1,7 @@
 // The examples gallery (examples/*.awb): every example loads, validates, analyses, renders to a
 // real image and round-trips byte-identically; papers' numbers come out of `analyse`.
 
+#include "TestPaths.h"
 #include <QDir>
 #include <QImage>
 #include <QJsonArray>
@@ -31,7 +32,7 @@ private:
     }
     QString examples() const
     {
-        return qEnvironmentVariable("AWB_SOURCE_DIR", QString(AWB_TEST_SOURCE_DIR)) + "/examples";
+        return awb::test::sourceDir() + "/examples";
     }
     int run(const QStringList &args, QByteArray *out = nullptr, QByteArray *err = nullptr)
     {

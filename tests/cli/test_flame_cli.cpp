@@ -7,6 +7,7 @@
 // non-linear variations dropped with a warning, malformed flames with line and column, and the
 // raw density out (.exr float counts, 16-bit PNG) are checked on small hand-made files.
 
+#include "TestPaths.h"
 #include <QFile>
 #include <QImage>
 #include <QJsonArray>
@@ -42,7 +43,7 @@ bool put(const QString &path, const QByteArray &text)
 
 QString dataPath(const QString &name)
 {
-    return qEnvironmentVariable("AWB_SOURCE_DIR", QString(AWB_TEST_SOURCE_DIR))
+    return awb::test::sourceDir()
            + "/tests/cli/data/" + name;
 }
 

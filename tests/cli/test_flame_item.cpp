@@ -8,6 +8,7 @@
 // as a .flame and imported again it is the same item; `check`, `analyse`, and the refusals of
 // what a flame is not (iterated points, a Fractint entry, deterministic depth) name the reason.
 
+#include "TestPaths.h"
 #include <QDir>
 #include <QFile>
 #include <QImage>
@@ -30,7 +31,7 @@ namespace {
 
 QString flamesDir()
 {
-    return qEnvironmentVariable("AWB_SOURCE_DIR", QString(AWB_TEST_SOURCE_DIR))
+    return awb::test::sourceDir()
            + "/tests/cli/data/flames";
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Runs attractor-workbench in batch mode (offscreen) with a scratch home, so that settings and
 // autosave copies never touch the user's; shared by the batch-mode tests.
+#include "TestPaths.h"
 #include <QCoreApplication>
 #include <QProcess>
 #include <QString>
@@ -37,7 +38,7 @@ public:
     }
     static QString example(const QString &name)
     {
-        return qEnvironmentVariable("AWB_SOURCE_DIR", AWB_TEST_SOURCE_DIR) + "/examples/" + name;
+        return awb::test::sourceDir() + "/examples/" + name;
     }
 
 private:

@@ -3,6 +3,7 @@
 // picture, the characteristic map): rasterisation details, thread scheduling and GL drivers
 // differ, the figure must not. AWB_REGENERATE_REFERENCES=1 writes the references anew.
 
+#include "TestPaths.h"
 #include <QDir>
 #include <QFileInfo>
 #include <QImage>
@@ -45,7 +46,7 @@ inline ImageDiff compare(const QImage &a0, const QImage &b0)
 
 inline QImage reference(const QString &name, const QImage &actual)
 {
-    const QString file = QStringLiteral(AWB_TEST_SOURCE_DIR "/tests/gui/data/") + name;
+    const QString file = (awb::test::sourceDir() + QStringLiteral("/tests/gui/data/")) + name;
     if (qEnvironmentVariableIntValue("AWB_REGENERATE_REFERENCES")) {
         QDir().mkpath(QFileInfo(file).path());
         actual.save(file);

@@ -2,6 +2,7 @@
 // current item; a frame (slider, Play) is drawn in the views -- attractor, spectrum, matrices --
 // while the document stays as it is; Set Key and Remove are undoable; Stop returns the views
 // to the item.
+#include "TestPaths.h"
 #include "gui/app/AnimationPanel.h"
 #include "gui/app/ItemController.h"
 #include "gui/app/MainWindow.h"
@@ -34,7 +35,7 @@ const QString levy = QStringLiteral("Complex de Casteljau t on a circle through 
 
 QString examplePath()
 {
-    return qEnvironmentVariable("AWB_SOURCE_DIR", QStringLiteral(AWB_TEST_SOURCE_DIR))
+    return awb::test::sourceDir()
            + QStringLiteral("/examples/animation-four-point-omega-and-complex-t.awb");
 }
 

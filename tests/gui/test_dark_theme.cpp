@@ -2,6 +2,7 @@
 // note, the highlighted map's matrices, a refused value's message — stay legible. Each is drawn
 // under Fusion with a dark palette and the contrast between its background and its text pixels
 // is measured (WCAG 4.5 for body text). AWB_SCREENSHOT_DIR=folder keeps the window's picture.
+#include "TestPaths.h"
 #include "gui/app/MainWindow.h"
 #include "gui/views/AnalysisCharts.h"
 #include "gui/views/MatrixView.h"
@@ -80,7 +81,7 @@ private slots:
         QTemporaryDir recovery;
         test::ShownWindow w(recovery.path(), QSize(1280, 800));
         QVERIFY(w.exposed);
-        QVERIFY(w.window.openFile(QStringLiteral(AWB_TEST_SOURCE_DIR)
+        QVERIFY(w.window.openFile(awb::test::sourceDir()
                                   + QStringLiteral("/examples/000-fig05-four-point-from-segment.awb")));
         QVERIFY(test::waitForFinalImage(w.window.findChild<AttractorView *>()));
 

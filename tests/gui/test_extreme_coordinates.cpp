@@ -4,6 +4,7 @@
 // test instead of hanging it; it opens with the view saying why nothing is drawn, draws, or is
 // refused with the CLI's message. And the grid's line counts are bounded for any extent.
 
+#include "TestPaths.h"
 #include "gui/app/ItemController.h"
 #include "gui/app/MainWindow.h"
 #include "gui/views/AttractorView.h"
@@ -71,7 +72,7 @@ private:
 // 000 Fig. 11 (top) with control point p4's y (and more) replaced.
 QJsonObject gasket()
 {
-    QFile f(QStringLiteral(AWB_TEST_SOURCE_DIR)
+    QFile f(awb::test::sourceDir()
             + QStringLiteral("/examples/000-fig11-sierpinski-with-control-points.awb"));
     if (!f.open(QIODevice::ReadOnly))
         return {};
@@ -221,7 +222,7 @@ private slots:
     void surfacesOpen()
     {
         QFETCH(double, z);
-        QFile in(QStringLiteral(AWB_TEST_SOURCE_DIR)
+        QFile in(awb::test::sourceDir()
                  + QStringLiteral("/examples/000-fig07-box-spline-hexagon.awb"));
         QVERIFY(in.open(QIODevice::ReadOnly));
         QJsonObject root = QJsonDocument::fromJson(in.readAll()).object();

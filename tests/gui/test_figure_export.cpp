@@ -4,6 +4,7 @@
 // matrices as LaTeX with exact fractions, options to hide the grid and the control points and
 // to crop; and the batch mode's --export-figure that makes all of it testable offscreen.
 
+#include "TestPaths.h"
 #include "BatchRunner.h"
 #include "WindowTestSupport.h"
 #include "../model/Fig2Example.h"
@@ -269,7 +270,7 @@ void TestFigureExport::sheetMatricesAreAtLeast8pt()
 
     // A mesh's five 16 x 16 and 19 x 19 matrices: every one drawn as a heat map, in a
     // picture as in print (issue 47: "… and 1 more: see the Matri…" instead).
-    QVERIFY(shown.window.openFile(QStringLiteral(AWB_TEST_SOURCE_DIR "/examples/mesh-cube-catmull-clark.awb")));
+    QVERIFY(shown.window.openFile((awb::test::sourceDir() + QStringLiteral("/examples/mesh-cube-catmull-clark.awb"))));
     Item *mesh = shown.window.project()->child(0);
     shown.window.setCurrentItem(mesh);
     shown.window.controller()->refreshNow();

@@ -3,6 +3,7 @@
 // window: a drag of a control point leaves the Matrices dock alone until the pause or the
 // release, then brings it up to date.
 
+#include "TestPaths.h"
 #include "gui/app/FrameBudget.h"
 #include "gui/app/ItemController.h"
 #include "gui/app/MainWindow.h"
@@ -112,7 +113,7 @@ private slots:
         QTemporaryDir recovery;
         test::ShownWindow shown(recovery.path(), QSize(1400, 900));
         MainWindow &w = shown.window;
-        QVERIFY(w.openFile(QStringLiteral(AWB_TEST_SOURCE_DIR)
+        QVERIFY(w.openFile(awb::test::sourceDir()
                            + QStringLiteral("/examples/000-fig11-sierpinski-with-control-points.awb")));
         auto *item = qobject_cast<AttractorItem *>(w.currentItem());
         QVERIFY(item);

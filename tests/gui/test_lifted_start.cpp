@@ -2,6 +2,7 @@
 // point in five dimensions"): choosing "Lifted points" lifts the control points' centroid,
 // typed coordinates are checked against the lifted dimension, and each edit is one undo step.
 
+#include "TestPaths.h"
 #include "gui/app/MainWindow.h"
 #include "gui/app/Messages.h"
 #include "gui/app/PropertiesDock.h"
@@ -32,7 +33,7 @@ void TestLiftedStart::editLiftedStartPoints()
     MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
-    const QString file = qEnvironmentVariable("AWB_SOURCE_DIR", QString(AWB_TEST_SOURCE_DIR))
+    const QString file = awb::test::sourceDir()
                          + "/examples/000-fig02-cubic-bspline-from-point.awb";
     QVERIFY(w.openFile(file));
     auto *item = qobject_cast<AttractorItem *>(

@@ -1,6 +1,7 @@
 // The main window end to end: opening projects fills every view, a mouse drag of a control
 // point is one undo step that undo reverts pixel for pixel, properties edits are undoable and
 // reach every view. Printing, export and files: test_main_window_files.cpp.
+#include "TestPaths.h"
 #include "MainWindowTests.h"
 #include "TestMain.h"
 
@@ -61,7 +62,7 @@ void TestMainWindow::openingFillsEveryView()
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
     QStringList files{m_file};
-    const QDir examples(QStringLiteral(AWB_TEST_SOURCE_DIR "/examples"));
+    const QDir examples((awb::test::sourceDir() + QStringLiteral("/examples")));
     for (const QString &f : examples.entryList({QStringLiteral("*.awb")}, QDir::Files))
         files << examples.filePath(f);
     for (const QString &file : std::as_const(files)) {
@@ -189,7 +190,7 @@ void TestMainWindow::everyPointSetIsShownAndDraggable()
     w.resize(1300, 850);
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
-    QVERIFY(w.openFile(QStringLiteral(AWB_TEST_SOURCE_DIR "/examples/002-fig03-union-p3.awb")));
+    QVERIFY(w.openFile((awb::test::sourceDir() + QStringLiteral("/examples/002-fig03-union-p3.awb"))));
     auto *item = qobject_cast<AttractorItem *>(w.project()->child(0));
     QVERIFY(item && item->controlPointSetCount() == 2);
     w.setCurrentItem(item);
@@ -407,7 +408,7 @@ void TestMainWindow::dragTInTheComplexPlane()
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
     QVERIFY(w.openFile(
-        QStringLiteral(AWB_TEST_SOURCE_DIR "/examples/004-fig3.9-example-3.7.3-takagi-image.awb")));
+        (awb::test::sourceDir() + QStringLiteral("/examples/004-fig3.9-example-3.7.3-takagi-image.awb"))));
     Item *item = w.project()->child(0);
     w.setCurrentItem(item);
     w.controller()->refreshNow();
@@ -473,7 +474,7 @@ void TestMainWindow::takagiDistanceChart()
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
     QVERIFY(w.openFile(
-        QStringLiteral(AWB_TEST_SOURCE_DIR "/examples/004-fig3.9-example-3.7.3-takagi-image.awb")));
+        (awb::test::sourceDir() + QStringLiteral("/examples/004-fig3.9-example-3.7.3-takagi-image.awb"))));
     w.setCurrentItem(w.project()->child(0));
     QTest::qWait(300); // the analysis starts after a quiet moment
     QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->analysisRunning(), awb::test::ms(30000));

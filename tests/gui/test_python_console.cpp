@@ -3,6 +3,7 @@
 // in the window is recorded as the Python line that makes it, and Tools > Save Recording
 // writes a script that replays the session on the original file to the same bytes as the
 // window's save.
+#include "TestPaths.h"
 #include "gui/app/MainWindow.h"
 #include "gui/app/Messages.h"
 #include "gui/app/PropertiesDock.h"
@@ -77,7 +78,7 @@ void TestPythonConsole::initTestCase()
     test::useTestSettings("test-python-console");
     m_recovery = m_dir.path() + QStringLiteral("/recovery");
     m_example = m_dir.path() + QStringLiteral("/four-point.awb");
-    QVERIFY(QFile::copy(QStringLiteral(AWB_TEST_SOURCE_DIR)
+    QVERIFY(QFile::copy(awb::test::sourceDir()
                             + QStringLiteral("/examples/000-fig05-four-point-from-segment.awb"),
                         m_example));
     QFile::setPermissions(m_example, QFile::ReadOwner | QFile::WriteOwner);

@@ -2,6 +2,7 @@
 // no message is left unfinished, every translation keeps its source's placeholders, and the
 // main window and the core speak the language. Fails until the translators' work is merged.
 
+#include "TestPaths.h"
 #include "i18n/TsFile.h"
 #include "gui/WindowTestSupport.h"
 
@@ -22,7 +23,7 @@ namespace {
 
 QString tsPath(const QString &code)
 {
-    return QStringLiteral(AWB_TEST_SOURCE_DIR "/translations/attractor-workbench_%1.ts").arg(code);
+    return (awb::test::sourceDir() + QStringLiteral("/translations/attractor-workbench_%1.ts")).arg(code);
 }
 
 // %1..%9 (also as %L1) and %n, sorted: a translation may reorder them, not drop or add any.

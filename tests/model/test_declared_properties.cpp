@@ -4,6 +4,7 @@
 // undo and redo take back to the same bytes; describe() shows what the file holds; update()
 // and setText() (attractor-cli set) go through the same declaration.
 
+#include "TestPaths.h"
 #include "ItemKindTests.h"
 #include "TestMain.h"
 
@@ -22,7 +23,7 @@ namespace {
 
 QStringList exampleFiles()
 {
-    QDir dir(QStringLiteral(AWB_TEST_SOURCE_DIR) + "/examples");
+    QDir dir(awb::test::sourceDir() + "/examples");
     QStringList files;
     for (const QString &f : dir.entryList({"*.awb"}, QDir::Files, QDir::Name))
         files << dir.filePath(f);
@@ -214,7 +215,7 @@ void TestDeclaredProperties::updateGoesThroughTheParts()
 {
     Project p;
     QString error;
-    QVERIFY(p.open(QStringLiteral(AWB_TEST_SOURCE_DIR)
+    QVERIFY(p.open(awb::test::sourceDir()
                        + "/examples/000-fig05-four-point-from-segment.awb",
                    &error));
     Item *curve = p.items().front();
@@ -252,7 +253,7 @@ void TestDeclaredProperties::setTextReadsWhatAUserTypes()
 {
     Project p;
     QString error;
-    QVERIFY(p.open(QStringLiteral(AWB_TEST_SOURCE_DIR) + "/examples/004-fig2.2-decasteljau-cubic.awb",
+    QVERIFY(p.open(awb::test::sourceDir() + "/examples/004-fig2.2-decasteljau-cubic.awb",
                    &error));
     Item *item = p.items().front();
     const PropertyTable &t = item->properties();

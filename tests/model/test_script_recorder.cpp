@@ -3,6 +3,7 @@
 // step, a compound edit one `with project.edit(...)` block, undo and redo are recorded as
 // such, and what no finer line says goes into one item.update({...}). (The replay of a
 // recording through Python: gui/test_python_console.)
+#include "TestPaths.h"
 #include "TestMain.h"
 
 #include "model/FractalItem.h"
@@ -37,7 +38,7 @@ private:
 void TestScriptRecorder::init()
 {
     m_project = std::make_unique<Project>();
-    QVERIFY(m_project->open(QStringLiteral(AWB_TEST_SOURCE_DIR)
+    QVERIFY(m_project->open(awb::test::sourceDir()
                             + QStringLiteral("/examples/000-fig05-four-point-from-segment.awb")));
     m_curve = qobject_cast<SubdivisionCurveItem *>(m_project->child(0));
     QVERIFY(m_curve);
@@ -145,7 +146,7 @@ void TestScriptRecorder::openingRestarts()
     ScriptRecorder r(m_project.get());
     QVERIFY(m_curve->moveControlPoint(3, Point{3.25, 0.5, 0}));
     QCOMPARE(r.steps().size(), 1);
-    const QString file = QStringLiteral(AWB_TEST_SOURCE_DIR)
+    const QString file = awb::test::sourceDir()
                          + QStringLiteral("/examples/000-fig10-koch-with-control-points.awb");
     QVERIFY(m_project->open(file));
     QVERIFY(r.steps().isEmpty());

@@ -2,6 +2,7 @@
 // as attractors (000 §3), their file form, the messages for bad nets, undo of every edit, and
 // the derived IFS against the core.
 
+#include "TestPaths.h"
 #include "ItemKindTests.h"
 
 #include "core/analysis/Geometry.h"
@@ -341,7 +342,7 @@ void TestSurfaceItem::examplesLieOnTheirLimitSurface()
     Project p;
     QString error;
     const QString path =
-        qEnvironmentVariable("AWB_SOURCE_DIR", QString(AWB_TEST_SOURCE_DIR)) + "/examples/" + file;
+        awb::test::sourceDir() + "/examples/" + file;
     QVERIFY2(p.open(path, &error), qPrintable(error));
     for (Item *item : p.items()) {
         auto *s = dynamic_cast<SubdivisionSurfaceItem *>(item);

@@ -4,6 +4,7 @@
 // or - for a field it does not read (kept and written back for a later version) - keep the
 // value exactly. A known field must never take a wrong type silently (coerced or dropped).
 
+#include "TestPaths.h"
 #include "model/Project.h"
 #include "model/ProjectIO.h"
 
@@ -21,11 +22,6 @@
 using namespace awb;
 
 namespace {
-
-QString sourceDir()
-{
-    return qEnvironmentVariable("AWB_SOURCE_DIR", QString(AWB_TEST_SOURCE_DIR));
-}
 
 // A path into a JSON document: object keys and array indices.
 using Path = QList<QVariant>;
@@ -105,12 +101,12 @@ class TestWrongTypes : public QObject {
 private slots:
     void everyFieldRefusesEveryWrongType()
     {
-        const QStringList files = QDir(sourceDir() + "/examples").entryList({"*.awb"});
+        const QStringList files = QDir(awb::test::sourceDir() + "/examples").entryList({"*.awb"});
         QVERIFY(files.size() > 20);
         int cases = 0, refused = 0, kept = 0;
         QStringList failures;
         for (const QString &name : files) {
-            QFile f(sourceDir() + "/examples/" + name);
+            QFile f(awb::test::sourceDir() + "/examples/" + name);
             QVERIFY(f.open(QIODevice::ReadOnly));
             const QJsonObject root = QJsonDocument::fromJson(f.readAll()).object();
             QList<Path> paths;

@@ -303,6 +303,8 @@ bool MainWindow::offerRecovery()
     return false;
 }
 
+QString sourceTreeExamples();  // generated (src/gui/CMakeLists.txt)
+
 QString MainWindow::examplesDirectory()
 {
     // AWB_EXAMPLES_DIR, the installed data folder (beside the program: /usr/bin ->
@@ -315,7 +317,7 @@ QString MainWindow::examplesDirectory()
                       + QStringLiteral("/../share/attractor-workbench/examples");
     for (const QString &d : QStandardPaths::standardLocations(QStandardPaths::GenericDataLocation))
         candidates << d + QStringLiteral("/attractor-workbench/examples");
-    candidates << QStringLiteral(AWB_SOURCE_EXAMPLES);
+    candidates << sourceTreeExamples();
     for (const QString &c : candidates)
         if (QDir(c).exists() && !QDir(c).entryList({QStringLiteral("*.awb")}).isEmpty())
             return QDir(c).canonicalPath();
