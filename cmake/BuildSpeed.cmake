@@ -7,7 +7,9 @@
 #   own -MD list) keeps a cold cache nearly free; the sloppiness lets precompiled headers be
 #   cached. Paths below the checkout are hashed relative to it (base_dir, no hash of the build
 #   folder's own path): a clean checkout elsewhere -- CI's, a fresh clone -- reuses the objects
-#   an earlier build of the same sources made.
+#   an earlier build of the same sources made. So no compile definition may hold a path of the
+#   checkout (tests/TestPaths.h); Qt6::Test's own two (QT_TESTCASE_SOURCEDIR and _BUILDDIR,
+#   used by QFINDTESTDATA only, which no test uses) are left out of the hash.
 # - lld links (when installed): several times faster than ld.bfd, which matters most for the
 #   relinks after an edit.
 # - Precompiled headers per layer (awb_precompile): Eigen for the core, Qt for the others.
@@ -25,6 +27,7 @@ if(AWB_CCACHE AND AWB_CCACHE_PROGRAM AND NOT CMAKE_CXX_COMPILER_LAUNCHER)
         ${CMAKE_COMMAND} -E env CCACHE_DEPEND=1
         CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime
         CCACHE_BASEDIR=${PROJECT_SOURCE_DIR} CCACHE_NOHASHDIR=1
+        CCACHE_IGNOREOPTIONS=-DQT_TESTCASE_*
         ${AWB_CCACHE_PROGRAM})
 endif()
 
