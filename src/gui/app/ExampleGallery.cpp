@@ -166,8 +166,9 @@ ExampleGallery::ExampleGallery(const QString &directory, QWidget *parent) : QDia
     const QIcon empty = placeholder();
     for (const QString &name : dir.entryList({QStringLiteral("*.awb")}, QDir::Files, QDir::Name)) {
         const QString path = dir.filePath(name);
-        auto *item = new QListWidgetItem(empty, exampleTitle(path), m_list);
-        item->setToolTip(QStringLiteral("%1\n%2").arg(exampleTitle(path), name));
+        const QString title = exampleTitle(path);
+        auto *item = new QListWidgetItem(empty, title, m_list);
+        item->setToolTip(QStringLiteral("%1\n%2").arg(title, name));
         item->setData(Qt::UserRole, path);
         item->setTextAlignment(Qt::AlignHCenter | Qt::AlignTop);
         m_files << path;

@@ -431,8 +431,7 @@ void ValenceChart::rebuild()
         if (std::binary_search(m_marked.begin(), m_marked.end(), s.valence))
             own->append(s.valence, s.subdominant);
     }
-    QChart *chart = m_byValence->chart();
-    chart->setTitle(tr("λ, μ, λ² against n (%1)").arg(schemeName(*m_scheme)));
+    QChart *chart = m_byValence->chart();  // titled by fitToSize() for its size
     m_byValence->setToolTip(tr("The subdominant eigenvalue λ, the next modulus μ and λ² of "
                                "the local subdivision matrix at an interior vertex of valence "
                                "n; the purple dots are this mesh's valences"));
@@ -474,7 +473,6 @@ void ValenceChart::rebuild()
     diagonal->append(0, 0);
     diagonal->append(hi, hi);
     QChart *c = m_curvature->chart();
-    c->setTitle(tr("μ against λ²"));
     m_curvature->setToolTip(tr("Below the diagonal (μ < λ²) the curvature at the vertex is "
                                "zero, on it bounded, above it unbounded (for generic data)"));
     auto *cx = new QValueAxis, *cy = new QValueAxis;
