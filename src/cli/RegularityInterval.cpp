@@ -11,6 +11,7 @@
 #include "core/analysis/RegularityFamily.h"
 #include "model/AttractorItem.h"
 #include "model/Project.h"
+#include "model/SchemeFamily.h"
 #include "model/SchemeRegularity.h"
 #include "model/SubdivisionCurveItem.h"
 
@@ -18,9 +19,9 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QRegularExpression>
 
 #include <cmath>
+#include <optional>
 
 namespace awb::cli {
 
@@ -77,46 +78,16 @@ int regularityInterval(const QStringList &args)
                                     "parameter to move")
                               .arg(parser.value("item"))};
         const QString name = parser.value("parameter").toLower();
-        const SchemeSpec base = curve->scheme();
-        double SchemeSpec::*field = nullptr;
-        if (name == "omega" && base.kind == SchemeSpec::Kind::FourPoint)
-            field = &SchemeSpec::omega;
-        else if (name == "a" && base.kind == SchemeSpec::Kind::CornerCutting)
-            field = &SchemeSpec::a;
-        else if (name == "b" && base.kind == SchemeSpec::Kind::CornerCutting)
-            field = &SchemeSpec::b;
-        // A mask with a free coefficient: --mask "-w, 0, 1/2 + w, 1, 1/2 + w, 0, -w" on a mask
-        // item (its arity and first index), the parameter's name standing for its value.
-        const QString pattern = parser.value("mask");
-        const QRegularExpression variable(
-            QStringLiteral("\\b%1\\b").arg(QRegularExpression::escape(parser.value("parameter"))));
-        if (parser.isSet("mask")) {
-            if (base.kind != SchemeSpec::Kind::Mask)
-                throw Failure{CliTr::tr("--mask needs a mask item; '%1' is %2")
-                                  .arg(curve->name(),
-                                       SchemeSpec::kindNames().at(int(base.kind))),
-                              2};
-            static const QRegularExpression identifier(QStringLiteral("^[A-Za-z_]\\w*$"));
-            static const QStringList reserved{"pi", "e", "sqrt", "cbrt", "sin", "cos",
-                                              "tan", "exp", "ln"};
-            const QString p = parser.value("parameter");
-            if (!identifier.match(p).hasMatch() || reserved.contains(p))
-                throw Failure{CliTr::tr("the parameter of --mask must be a name that is not a "
-                                        "function or constant (pi, e, sqrt, ...), got '%1'")
-                                  .arg(p),
-                              2};
-            if (!pattern.contains(variable))
-                throw Failure{CliTr::tr("the mask '%1' does not contain the parameter '%2'")
-                                  .arg(pattern, p),
-                              2};
-        } else if (!field) {
-            throw Failure{CliTr::tr("item '%1' (%2) has no parameter '%3': omega belongs to the "
-                                    "four-point scheme, a and b to corner cutting; a mask item "
-                                    "takes --mask with the parameter in its coefficients")
-                              .arg(curve->name(), SchemeSpec::kindNames().at(int(base.kind)),
-                                   parser.value("parameter")),
-                          2};
-        }
+        // The item's scheme with the parameter moved (model/SchemeFamily): the same members
+        // as the regularity atlas and the window's chart.
+        const std::optional<SchemeFamily> family = [&]() -> std::optional<SchemeFamily> {
+            try {
+                return SchemeFamily::ofItem(*curve, {parser.value("parameter")},
+                                            parser.value("mask"));
+            } catch (const InputError &e) {
+                throw Failure{QString::fromStdString(e.what()), 2};
+            }
+        }();
         if (!parser.isSet("from") || !parser.isSet("to"))
             throw Failure{CliTr::tr("--from and --to are required"), 2};
         const double from = realOption(parser, "from", -1e6, 1e6);
@@ -126,26 +97,8 @@ int regularityInterval(const QStringList &args)
         options.grid = intOption(parser, "grid", 2, 10000);
         options.tolerance = realOption(parser, "tolerance", 1e-15, 1e6);
         options.budgetPerValue = realOption(parser, "budget", 1e-3, 600);
-        const int m = int(curve->controlPoints(0).size());
-        // Each member: the item's scheme with the parameter set; the item's own regularity
-        // (model/SchemeRegularity) on a copy of the item, so nothing is computed another way.
-        // Each member: the item's scheme with the parameter moved, analysed as the item's own
-        // (model/SchemeRegularity); a member that does not exist (a >= b) is not C^k.
         const auto member = [&](double t, const RegularityOptions &o) {
-            SchemeSpec s = base;
-            if (field) {
-                s.*field = t;
-            } else {
-                QString line = pattern;
-                line.replace(variable, QStringLiteral("(%1)").arg(t, 0, 'g', 17));
-                QString why;
-                if (!s.setMaskLine(line, &why)) {
-                    Regularity none;
-                    none.message = why.toStdString();
-                    return none;  // not a member: not C^k
-                }
-            }
-            return specRegularity(s, m, o);
+            return family->regularity({t}, o);
         };
         const FamilyResult result = regularityInterval(member, from, to, k, options);
 

@@ -98,6 +98,10 @@ public:
             m_out.cancelled = true;
             return true;
         }
+        if (m_opt.maxNodes > 0 && m_out.nodes >= m_opt.maxNodes) {
+            m_out.workSpent = true;
+            return true;
+        }
         if (elapsed() > m_opt.timeBudget) {
             m_out.timedOut = true;
             return true;

@@ -34,6 +34,7 @@ struct JsrBounds {
     bool converged = false;       // the branch and bound closed: upper within tolerance
     bool cancelled = false;
     bool timedOut = false;
+    bool workSpent = false;       // stopped at JsrOptions::maxNodes (deterministic)
     double seconds = 0.0;
 };
 
@@ -42,6 +43,9 @@ struct JsrOptions {
     double tolerance = 1e-9;          // stop when upper <= lower * (1 + tolerance)
     int maxLength = 1000;              // longest product in the branch and bound
     long long maxFrontier = 200000;   // live products at one depth, at most
+    // Stop after about this many products (0: no limit). A budget of work, not of time: the
+    // same bounds on every machine (the regularity atlas's rows are reproducible this way).
+    long long maxNodes = 0;
     const std::atomic<bool> *cancel = nullptr;  // set from another thread to stop early
     // Called now and then with the current bounds and the fraction of the budget spent.
     std::function<void(const JsrBounds &, double fraction)> progress;

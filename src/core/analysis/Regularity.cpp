@@ -21,6 +21,7 @@ JsrOptions jsrOptions(const RegularityOptions &o, int arity, int order, bool quo
 {
     JsrOptions j;
     j.timeBudget = o.timeBudget;
+    j.maxNodes = o.maxProducts;
     j.cancel = o.cancel;
     if (o.progress) {
         // rho -> r = n - log_N rho (masks) or -log_N rho (quotient maps).
@@ -67,6 +68,9 @@ void fillBounds(Regularity &r, double shift, double cap)
     else if (r.jsr.timedOut)
         notes += coreTranslate("awb::analysis", "time budget spent; the bounds are those "
                                                 "reached. ");
+    else if (r.jsr.workSpent)
+        notes += coreTranslate("awb::analysis", "work budget spent; the bounds are those "
+                                                "reached. ");
     r.notes = notes + r.notes;
 }
 
@@ -78,8 +82,11 @@ void applyPolytope(Regularity &r, const RegularityOptions &o)
     const double budget = o.polytopeBudget < 0 ? 0.5 * o.timeBudget : o.polytopeBudget;
     if (budget <= 0 || r.jsr.cancelled || (o.cancel && o.cancel->load()))
         return;
+    if (o.maxProducts > 0)
+        return;  // by work: polytopeFirst already ran it to its vertex limit
     PolytopeOptions p;
     p.timeBudget = budget;
+    p.maxVertices = o.maxPolytopeVertices;
     p.cancel = o.cancel;
     const PolytopeResult pr = invariantPolytope(r.transition, p);
     r.polytopeNote = pr.message;
@@ -110,7 +117,9 @@ bool polytopeFirst(Regularity &r, const RegularityOptions &o, int arity, double 
     if (budget <= 0 || (o.cancel && o.cancel->load()))
         return false;
     PolytopeOptions p;
-    p.timeBudget = std::min(0.2, budget);
+    // By time: a moment first, the rest after the bounds. By work: once, to the vertex limit.
+    p.timeBudget = o.maxProducts > 0 ? budget : std::min(0.2, budget);
+    p.maxVertices = o.maxPolytopeVertices;
     p.cancel = o.cancel;
     const PolytopeResult pr = invariantPolytope(r.transition, p);
     if (!pr.closed)

@@ -38,6 +38,12 @@ struct RegularityOptions {
     // on the same matrices; 0 skips it, negative means half of timeBudget (so a caller's time
     // grows by at most half). When it closes, rho_n is exact (a certificate).
     double polytopeBudget = -1.0;
+    // A budget of work instead of time (0: time only): the branch and bound stops after this
+    // many products and the polytope at `maxPolytopeVertices`, both run once, so the bounds are
+    // the same on every machine. timeBudget then only guards against a runaway evaluation
+    // (jsr.timedOut says it fired, and the result is no longer reproducible).
+    long long maxProducts = 0;
+    int maxPolytopeVertices = 2000;
     const std::atomic<bool> *cancel = nullptr;  // set from another thread to stop early
     // The current bounds (regularity and JSR) and the fraction of the budget spent.
     std::function<void(double lower, double upper, double fraction)> progress;
