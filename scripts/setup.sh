@@ -16,6 +16,7 @@ PROGRAM_PACKAGES=(
   libxkbcommon-dev libgl1-mesa-dev fonts-dejavu-core adwaita-icon-theme
   # the Python module attractor_workbench (src/python) and the window's console
   python3-dev pybind11-dev python3-numpy
+  python3-distributed  # Dask: the regularity atlas and huge renders on a cluster (issue 48)
   fonts-wqy-microhei  # a CJK font: the Chinese translation on screen and in figures
 )
 # What the tests, the sanitizers, the fuzzers, the benchmarks and the package checks need

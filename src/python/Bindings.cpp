@@ -134,6 +134,7 @@ void defineModule(py::module_ &m)
     defineContainers(m);
     defineItemClass(m);
     defineProjectClass(m);
+    defineAtlas(m);
     m.def(
         "open",
         [](const py::object &path) {

@@ -13,6 +13,7 @@ namespace awb::python {
 void defineProjectClass(py::module_ &m);
 void defineItemClass(py::module_ &m);
 void defineContainers(py::module_ &m);
+void defineAtlas(py::module_ &m);
 
 // Runs `work` on a worker thread with the GIL released; every 50 ms the calling thread takes
 // the GIL to look for a signal (Ctrl+C), and on one sets `cancel` (which `work` passes to the

@@ -29,7 +29,7 @@ field() { printf '%s\n' "$info" | sed -n "s/^$1: //p"; }
 [ "$(field Section)" = science ] || fail "Section: $(field Section)"
 [[ "$(field Maintainer)" =~ ^[^\<]+\ \<[^@\>]+@[^\>]+\>$ ]] || fail "Maintainer: $(field Maintainer)"
 [ -z "$(field Homepage)" ] || fail "Homepage given: $(field Homepage)"
-[ "$(field Suggests)" = "ffmpeg, qt6-translations-l10n, fonts-noto-cjk | fonts-wqy-microhei, python3-matplotlib" ] \
+[ "$(field Suggests)" = "ffmpeg, qt6-translations-l10n, fonts-noto-cjk | fonts-wqy-microhei, python3-matplotlib, python3-distributed" ] \
     || fail "Suggests: $(field Suggests)"
 depends=$(field Depends)
 for lib in libc6 libstdc++6 libqt6core6 libqt6gui6 libqt6widgets6 libqt6svg6 libqt6charts6 \
@@ -100,8 +100,10 @@ checked=$("$bin/attractor-cli" check "$example") || fail "check exited with $?"
 note "attractor-cli check and render ran from the extracted package"
 
 # The Python module, from the extracted dist-packages, with Debian's Python.
-module=$(ls "$root"/usr/lib/python3/dist-packages/attractor_workbench.*.so 2>/dev/null) \
+module=$(ls "$root"/usr/lib/python3/dist-packages/attractor_workbench/_native.*.so 2>/dev/null) \
     || fail "the package lacks the Python module in /usr/lib/python3/dist-packages"
+[ -f "$root/usr/lib/python3/dist-packages/attractor_workbench/atlas.py" ] \
+    || fail "the package lacks attractor_workbench/atlas.py"
 if readelf -S "$module" | grep -q '\.debug_info'; then fail "the Python module is not stripped"; fi
 PYTHONPATH=$root/usr/lib/python3/dist-packages /usr/bin/python3 - "$example" "$tmp/py.png" <<'PY' \
     || fail "the Python module did not run from the extracted package"
@@ -114,6 +116,7 @@ assert project.can_undo
 spectrum = item.maps()[0]["eigenvalues"]
 assert abs(spectrum[0] - 1) < 1e-12, spectrum
 item.render(sys.argv[2], size=(200, 160))
+from attractor_workbench import atlas  # the Dask parts import (python3-distributed)
 PY
 [ -s "$tmp/py.png" ] || fail "the Python module rendered no PNG"
 note "import attractor_workbench ran from the extracted package"

@@ -39,8 +39,8 @@ BSPLINE_FILE = EXAMPLES / "000-fig02-cubic-bspline-from-point.awb"
 
 
 def module_path():
-    """Where the imported module lives (for subprocesses: their PYTHONPATH)."""
-    return str(Path(attractor_workbench.__file__).resolve().parent)
+    """Where the imported package lives (for subprocesses: their PYTHONPATH)."""
+    return str(Path(attractor_workbench.__file__).resolve().parents[1])
 
 
 def subprocess_env():

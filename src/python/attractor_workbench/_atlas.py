@@ -1,0 +1,299 @@
+"""The regularity atlas of a family of schemes, on this machine or a Dask cluster (issue 48).
+
+The plan (AtlasPlan, the core's RegularityAtlas) hands out batches of parameter points; each
+point is one certified joint-spectral-radius computation of the family's member
+(Family.evaluate, the same code as `attractor-cli regularity-interval` and the window). This
+file only moves the points: to Dask workers as tasks of a few points each, or one after another
+in this process. Each point runs under a budget of work, not time, so the rows are the same
+wherever they ran; a worker lost mid-run changes nothing (Dask runs its tasks elsewhere).
+"""
+
+import json
+import math
+import os
+import signal
+import sys
+import time
+
+from . import _native
+
+__all__ = ["parse_grid", "run_atlas", "main"]
+
+IN_PROCESS = "in-process"
+
+
+def parse_grid(texts):
+    """["w=0:0.25:26", "v=-0.02:0.02:11"] -> {"w": (0.0, 0.25, 26), ...} (ValueError on a typo)."""
+    grid = {}
+    for text in texts:
+        name, sep, spec = text.partition("=")
+        parts = spec.split(":")
+        if not sep or not name.strip() or len(parts) != 3:
+            raise ValueError(f"--grid '{text}': expected NAME=FROM:TO:COUNT, e.g. w=0:0.25:26")
+        try:
+            lo, hi, count = float(parts[0]), float(parts[1]), int(parts[2])
+        except ValueError:
+            raise ValueError(f"--grid '{text}': FROM and TO must be numbers and COUNT a whole "
+                             f"number") from None
+        if name.strip() in grid:
+            raise ValueError(f"--grid: the parameter '{name.strip()}' is given twice")
+        grid[name.strip()] = (lo, hi, count)
+    if not 1 <= len(grid) <= 2:
+        raise ValueError(f"an atlas has one or two parameters (--grid), got {len(grid)}")
+    return grid
+
+
+def _evaluate_chunk(family, points, options):
+    """A task: the rows of a few points (runs on a worker)."""
+    return [family.evaluate(p, options) for p in points]
+
+
+class _Bar:
+    """A progress bar on a terminal (stderr), or JSON lines (for the window), or nothing."""
+
+    def __init__(self, mode, stream=sys.stderr):
+        self.mode = mode
+        self.stream = stream
+        self.last = 0.0
+
+    def __call__(self, event):
+        if self.mode == "jsonl":
+            print(json.dumps(event), file=sys.stdout, flush=True)
+        elif self.mode == "bar" and event["event"] == "progress":
+            now = time.monotonic()
+            if now - self.last < 0.1 and event["done"] < event["total"]:
+                return
+            self.last = now
+            width = 30
+            filled = int(width * event["done"] / max(1, event["total"]))
+            self.stream.write(f"\ratlas: round {event['round']} "
+                              f"[{'#' * filled}{'.' * (width - filled)}] "
+                              f"{event['done']}/{event['total']} points, "
+                              f"{event['rows']} in all, {event['elapsed']:.1f} s ")
+            if event["done"] == event["total"]:
+                self.stream.write("\n")
+            self.stream.flush()
+
+
+def _client_for(client, workers):
+    """(client, owned cluster or None): an existing client, one to an address, or a local one."""
+    if client is not None and not isinstance(client, str):
+        return client, None
+    try:
+        from dask.distributed import Client, LocalCluster
+    except ImportError:
+        raise RuntimeError("the atlas on a cluster needs Dask (Debian: python3-distributed); "
+                           "without it, run it in this process (--in-process, or "
+                           "client=\"in-process\")") from None
+    if isinstance(client, str):
+        return Client(client, timeout="20s"), None
+    n = workers or os.cpu_count() or 1
+    cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                           dashboard_address=None, silence_logs=40)
+    return Client(cluster), cluster
+
+
+def _worker_count(client):
+    try:
+        return max(1, len(client.scheduler_info().get("workers", {})))
+    except Exception:  # noqa: BLE001 - the count only sizes the tasks
+        return 1
+
+
+def run_atlas(item, grid, client=None, *, parameters=None, mask=None, smoothness=1,
+              progress=None, workers=None, on_batch=None, **options):
+    """The atlas of `item`'s family over `grid` (see attractor_workbench.atlas)."""
+    if isinstance(grid, (list, tuple)):
+        grid = parse_grid(grid)
+    names = list(grid)
+    family = item if isinstance(item, _native.Family) else _native.Family(
+        item, parameters or names, mask)
+    if list(family.parameters) != names:
+        raise _native.Error(f"the grid's parameters {names} are not the family's "
+                            f"{list(family.parameters)}")
+    opts = dict(options)
+    opts["smoothness"] = smoothness
+    plan = _native.AtlasPlan([(n, *grid[n]) for n in names], opts)
+    opts = plan.options
+    report = progress if callable(progress) else _Bar(progress or "none")
+    start = time.monotonic()
+    in_process = isinstance(client, str) and client == IN_PROCESS
+    cluster = None
+    futures = []
+    scheduler = IN_PROCESS
+    count = 1
+    if not in_process:
+        client, cluster = _client_for(client, workers)
+        scheduler = client.scheduler.address
+        count = _worker_count(client)
+    try:
+        rows_so_far = 0
+        while True:
+            batch = plan.next_batch()
+            if not batch:
+                break
+            report({"event": "round", "round": plan.round, "points": len(batch)})
+            done = 0
+
+            def tick(new_rows):
+                nonlocal done
+                done += len(new_rows)
+                report({"event": "progress", "round": plan.round, "done": done,
+                        "total": len(batch), "rows": rows_so_far + done,
+                        "elapsed": time.monotonic() - start, "new": new_rows})
+
+            if in_process:
+                rows = []
+                for p in batch:
+                    rows.append(family.evaluate(p, opts))
+                    tick(rows[-1:])
+            else:
+                from dask.distributed import as_completed
+                count = _worker_count(client)
+                # A few tasks per worker and round: each task a handful of points, so the
+                # scheduler's ~1 ms per task stays small beside the points' work.
+                size = max(1, min(64, math.ceil(len(batch) / (4 * count))))
+                chunks = [batch[i:i + size] for i in range(0, len(batch), size)]
+                futures = client.map(_evaluate_chunk, [family] * len(chunks), chunks,
+                                     [opts] * len(chunks), pure=False, retries=2)
+                index = {f.key: i for i, f in enumerate(futures)}
+                results = [None] * len(chunks)
+                for future in as_completed(futures):
+                    results[index[future.key]] = future.result()
+                    tick(results[index[future.key]])
+                futures = []
+                rows = [row for chunk in results for row in chunk]
+            plan.accept(rows)
+            rows_so_far += len(rows)
+            if on_batch:
+                on_batch(plan)
+    except BaseException:
+        if futures:
+            try:
+                client.cancel(futures, force=True)
+            except Exception:  # noqa: BLE001 - the cluster may be gone already
+                pass
+        raise
+    finally:
+        if cluster is not None:
+            client.close()
+            cluster.close()
+    rows = plan.rows()
+    result = {
+        "family": family.to_json(),
+        "axes": [{"name": n, "from": a, "to": b, "count": c} for n, a, b, c in plan.axes],
+        "smoothness": smoothness,
+        "options": opts,
+        "rows": rows,
+        "runs": plan.runs(),
+        "points": len(rows),
+        "rounds": plan.round,
+        "seconds": time.monotonic() - start,
+        "scheduler": scheduler,
+        "workers": count,
+    }
+    report({"event": "done", "points": len(rows), "seconds": result["seconds"]})
+    return result
+
+
+def _arguments(argv):
+    import argparse
+    p = argparse.ArgumentParser(
+        prog="python3 -m attractor_workbench.atlas",
+        description="The certified regularity atlas of a curve item's family of schemes over "
+                    "a grid of one or two parameters, refined where C^k changes; on a local "
+                    "Dask cluster of this machine's cores, or on the cluster at --scheduler.")
+    p.add_argument("project", help="the project file (.awb)")
+    p.add_argument("--item", help="the curve item (default: the first subdivision curve)")
+    p.add_argument("--grid", action="append", required=True, metavar="NAME=FROM:TO:COUNT",
+                   help="a parameter's grid, e.g. w=0:0.25:26; twice for two parameters")
+    p.add_argument("--mask", help="for a mask item: its coefficients with the parameters in "
+                                  "them, e.g. \"v, 0, w, 0, 1/2 - w - v, 1, 1/2 - w - v, 0, w, "
+                                  "0, v\"")
+    p.add_argument("--smoothness", type=int, default=1, metavar="K",
+                   help="the class C^K asked for (default 1)")
+    p.add_argument("--tolerance", type=float, default=1e-6,
+                   help="one parameter: a boundary's bracket width (default 1e-6)")
+    p.add_argument("--refine", type=int, default=3,
+                   help="two parameters: levels of refinement at the boundaries (default 3)")
+    p.add_argument("--work", type=float, default=1e5,
+                   help="joint-spectral-radius products per point (default 1e5)")
+    where = p.add_mutually_exclusive_group()
+    where.add_argument("--scheduler", metavar="ADDRESS",
+                       help="a running Dask scheduler, e.g. tcp://host:8786")
+    where.add_argument("--workers", type=int, metavar="K",
+                       help="a local cluster of K worker processes (default: the cores)")
+    where.add_argument("--in-process", action="store_true",
+                       help="no cluster: every point in this process, one after another")
+    p.add_argument("--json", metavar="OUT", required=True,
+                   help="where the result goes (JSON; - for standard output)")
+    p.add_argument("--progress", choices=["bar", "jsonl", "none"],
+                   help="a bar on the terminal (default when stderr is one), JSON lines on "
+                        "standard output (for the window), or none")
+    return p.parse_args(argv)
+
+
+def _fail(message, code=2):
+    print(f"atlas: {message}", file=sys.stderr)
+    return code
+
+
+def main(argv=None):
+    args = _arguments(sys.argv[1:] if argv is None else argv)
+    if args.workers is not None and not 1 <= args.workers <= 1024:
+        return _fail(f"--workers must be 1 to 1024, got {args.workers}")
+    try:
+        grid = parse_grid(args.grid)
+    except ValueError as e:
+        return _fail(str(e))
+    try:
+        project = _native.open(args.project)
+    except _native.Error as e:
+        return _fail(str(e), 1)
+    if args.item:
+        try:
+            item = project.item(args.item)
+        except _native.Error:
+            item = None
+        if item is None:
+            return _fail(f"no item '{args.item}' in {args.project}")
+    else:
+        item = next((i for i in project.items if i.kind == "subdivision-curve"), None)
+        if item is None:
+            return _fail(f"{args.project} has no subdivision curve")
+    progress = args.progress or ("bar" if sys.stderr.isatty() else "none")
+    # The window stops a run with SIGTERM: as Ctrl+C, the cluster's tasks are cancelled.
+    signal.signal(signal.SIGTERM, signal.default_int_handler)
+    client = IN_PROCESS if args.in_process else args.scheduler
+    try:
+        result = run_atlas(item, grid, client=client, mask=args.mask,
+                           smoothness=args.smoothness, progress=progress,
+                           workers=args.workers, tolerance=args.tolerance,
+                           refine=args.refine, work=args.work)
+    except KeyboardInterrupt:
+        return _fail("cancelled; the cluster's tasks were cancelled", 130)
+    except (_native.Error, RuntimeError, OSError) as e:
+        return _fail(str(e), 1)
+    result["project"] = os.path.abspath(args.project)
+    result["item"] = item.name
+    text = json.dumps(result, indent=1)
+    if args.json == "-":
+        print(text)
+    else:
+        with open(args.json, "w", encoding="utf-8") as f:
+            f.write(text + "\n")
+    if progress != "jsonl":
+        for run in result["runs"]:
+            a, b = run["from"], run["to"]
+            print(f"atlas: C^{args.smoothness} from {_end(a)} to {_end(b)}", file=sys.stderr)
+        print(f"atlas: {result['points']} points in {result['rounds']} rounds, "
+              f"{result['seconds']:.1f} s on {result['workers']} worker(s) "
+              f"({result['scheduler']})", file=sys.stderr)
+    return 0
+
+
+def _end(b):
+    if b["range_end"]:
+        return f"{b['inner']:.10g} (the grid's end)"
+    lo, hi = sorted((b["inner"], b["outer"]))
+    return f"[{lo:.10g}, {hi:.10g}]"
