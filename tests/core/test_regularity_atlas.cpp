@@ -140,7 +140,7 @@ private slots:
         o.refineLevels = 1;
         o.work = 20000;
         AtlasPlan plan({{"w", -0.5, 0.0, 3}, {"v", -0.02, 0.02, 3}}, o);
-        const auto rows = run(plan, sixPoint, false, 2);
+        const auto rows = run(plan, sixPoint);
         QVERIFY(plan.finished());
         QVERIFY(rows.size() > 9);    // refined somewhere
         QCOMPARE(plan.round(), 2);   // the grid, then one level

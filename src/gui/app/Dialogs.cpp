@@ -7,6 +7,8 @@
 #include <QFileDialog>
 #include <QSettings>
 
+#include <algorithm>
+
 namespace awb {
 
 Preferences Preferences::load()
@@ -17,6 +19,9 @@ Preferences Preferences::load()
     p.maxRenderDepth = s.value(QStringLiteral("preferences/maxRenderDepth"), 0).toInt();
     p.autosaveSeconds =
         s.value(QStringLiteral("preferences/autosaveSeconds"), p.autosaveSeconds).toInt();
+    p.daskScheduler = s.value(QStringLiteral("preferences/daskScheduler")).toString().trimmed();
+    p.atlasWorkers =
+        std::clamp(s.value(QStringLiteral("preferences/atlasWorkers"), 0).toInt(), 0, 256);
     for (const QString &c : s.value(QStringLiteral("preferences/palette")).toStringList())
         if (QColor(c).isValid())
             p.palette.append(QColor(c));
@@ -29,6 +34,8 @@ void Preferences::save() const
     s.setValue(QStringLiteral("preferences/defaultDepth"), defaultDepth);
     s.setValue(QStringLiteral("preferences/maxRenderDepth"), maxRenderDepth);
     s.setValue(QStringLiteral("preferences/autosaveSeconds"), autosaveSeconds);
+    s.setValue(QStringLiteral("preferences/daskScheduler"), daskScheduler);
+    s.setValue(QStringLiteral("preferences/atlasWorkers"), atlasWorkers);
     QStringList names;
     for (const QColor &c : palette)
         names << c.name();
@@ -89,6 +96,8 @@ PreferencesDialog::PreferencesDialog(const Preferences &initial, QWidget *parent
     m_ui->depthSpin->setValue(initial.defaultDepth);
     m_ui->maxDepthSpin->setValue(initial.maxRenderDepth);
     m_ui->autosaveSpin->setValue(initial.autosaveSeconds);
+    m_ui->schedulerEdit->setText(initial.daskScheduler);
+    m_ui->workersSpin->setValue(initial.atlasWorkers);
     const QList<QToolButton *> buttons = colourButtons();
     for (int i = 0; i < buttons.size(); ++i) {
         connect(buttons[i], &QToolButton::clicked, this, [this, i] {
@@ -136,6 +145,8 @@ Preferences PreferencesDialog::preferences() const
     p.maxRenderDepth = m_ui->maxDepthSpin->value();
     p.palette = m_palette;
     p.autosaveSeconds = m_ui->autosaveSpin->value();
+    p.daskScheduler = m_ui->schedulerEdit->text().trimmed();
+    p.atlasWorkers = m_ui->workersSpin->value();
     return p;
 }
 

@@ -25,6 +25,8 @@ struct Preferences {
     int maxRenderDepth = 0;          // caps the drawn depth (0: no cap)
     QList<QColor> palette;           // empty: the views' defaults
     int autosaveSeconds = 30;
+    QString daskScheduler;           // the Regularity Atlas's cluster; empty: a local one
+    int atlasWorkers = 0;            // its local cluster's workers (0: one per core)
     static Preferences load();
     void save() const;
 };

@@ -19,6 +19,7 @@
 #include "gui/views/AttractorRenderer.h"
 #include "gui/views/AttractorView.h"
 #include "gui/views/MatrixView.h"
+#include "gui/app/RegularityAtlasWindow.h"
 #include "gui/views/RegularityChart.h"
 #include "gui/views/RegularityPanel.h"
 #include "gui/views/SpectrumView.h"
@@ -402,6 +403,26 @@ void MainWindow::createMenus()
         chart->raise();
         if (chart->samples().empty() && !chart->isRunning())
             chart->compute();
+    });
+    // Issue 48: the certified regularity of the selected curve's family over a grid of one or
+    // two parameters, computed by the Python module on a Dask cluster.
+    QAction *atlas = m_viewMenu->addAction(tr("Regularity &Atlas…"));
+    atlas->setObjectName(QStringLiteral("actionRegularityAtlas"));
+    atlas->setStatusTip(tr("Where the selected curve's family of schemes is C^k, over one or "
+                           "two of its parameters (on a Dask cluster)"));
+    connect(atlas, &QAction::triggered, this, [this] {
+        auto *window = findChild<RegularityAtlasWindow *>();
+        if (!window) {
+            window = new RegularityAtlasWindow(project(), this);
+            window->setWindowFlag(Qt::Window);
+        }
+        auto *curve = qobject_cast<SubdivisionCurveItem *>(currentItem());
+        if (curve && curve != window->item() && !window->isRunning())
+            window->setItem(curve);
+        else if (!window->item())
+            window->setItem(nullptr);
+        window->show();
+        window->raise();
     });
 
     QMenu *tools = menuBar()->addMenu(tr("&Tools"));
