@@ -135,6 +135,7 @@ void defineModule(py::module_ &m)
     defineItemClass(m);
     defineProjectClass(m);
     defineAtlas(m);
+    defineDensity(m);
     m.def(
         "open",
         [](const py::object &path) {

@@ -14,6 +14,9 @@ void defineProjectClass(py::module_ &m);
 void defineItemClass(py::module_ &m);
 void defineContainers(py::module_ &m);
 void defineAtlas(py::module_ &m);
+void defineDensity(py::module_ &m);  // after defineItemClass
+// Text in figures needs a QGuiApplication: made on the first render, never at import.
+void ensureGuiApplication();
 
 // Runs `work` on a worker thread with the GIL released; every 50 ms the calling thread takes
 // the GIL to look for a signal (Ctrl+C), and on one sets `cancel` (which `work` passes to the

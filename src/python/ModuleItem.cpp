@@ -100,6 +100,8 @@ py::dict mapDict(const DerivedIfs &d, int i)
     return o;
 }
 
+} // namespace
+
 // Text in figures needs a QGuiApplication; the standalone module makes one on the first
 // render (off screen without a display), never at import.
 void ensureGuiApplication()
@@ -114,6 +116,8 @@ void ensureGuiApplication()
     static auto *app = new QGuiApplication(argc, argv);
     Q_UNUSED(app);
 }
+
+namespace {
 
 // item.update(fields): the fields as the file would have them, each changed part of the item
 // through its declared, checked setter, in one undo step (PropertyTable::update).

@@ -63,6 +63,10 @@ void writeRawDensity(const FigureSpec &spec, const std::shared_ptr<const Derived
     if (o.cancel && o.cancel->load())
         fail(FigureTr::tr("the rendering was cancelled"));
     DensityFileInfo info{r.world, caption, spec.metadata};
+    if (o.rawDensity) {
+        *o.rawDensity = RawDensity{density, info};
+        return;
+    }
     QString error;
     const bool ok = suffix == QLatin1String("exr")
                         ? writeDensityExr(outFile, density, info, &error)
@@ -86,7 +90,7 @@ void renderItemFigure(const Project &project, AttractorItem *item, const FigureO
     spec.chaos = d->chaos;
     spec.random = o.samples || (alg.mode == AlgorithmSpec::Mode::Random && !o.depth);
     spec.samples = o.samples ? *o.samples : std::uint64_t(alg.samples);
-    spec.seed = std::uint64_t(alg.seed);
+    spec.seed = o.seed ? *o.seed : std::uint64_t(alg.seed);
     spec.tone.mode =
         o.tone == "density" || (o.tone.isEmpty() && item->style().densityTone(spec.random))
             ? Accumulation::Density
@@ -208,7 +212,7 @@ void renderItemFigure(const Project &project, AttractorItem *item, const FigureO
     spec.metadata = itemFigureMetadata(project, *item);
     spec.cancel = o.cancel;
     const QString suffix = o.format.isEmpty() ? QFileInfo(outFile).suffix().toLower() : o.format;
-    if (suffix == QLatin1String("exr") || o.bits == 16) {
+    if (suffix == QLatin1String("exr") || o.bits == 16 || o.rawDensity) {
         writeRawDensity(spec, d, depth, o, suffix, caption, outFile);
         return;
     }

@@ -13,7 +13,14 @@
 #include <optional>
 #include <utility>
 
+#include "render/DensityFile.h"
+
 namespace awb {
+
+struct RawDensity {
+    AttractorDensity density;
+    DensityFileInfo info;   // the frame's world rectangle, caption and project
+};
 
 class AttractorItem;
 class Project;
@@ -22,6 +29,7 @@ struct FigureOptions {
     int width = 900, height = 700;
     std::optional<int> depth;               // default: the item's
     std::optional<std::uint64_t> samples;   // random iteration with this many points
+    std::optional<std::uint64_t> seed;      // its seed (default: the item's)
     QString tone;  // "", "hits" or "density"
     std::optional<double> gamma;
     double vibrancy = 1.0;
@@ -37,6 +45,10 @@ struct FigureOptions {
     // Set to stop the attractor's raster early (Python's render on Ctrl+C): the figure is then
     // not written and renderItemFigure throws.
     const std::atomic<bool> *cancel = nullptr;
+    // Set: the raw density (format "exr") is returned here instead of written to a file --
+    // one chunk of a render split over a cluster's workers (python/attractor_workbench/
+    // render.py), whose sum the module writes with writeDensityExr / writeDensityPng16.
+    struct RawDensity *rawDensity = nullptr;
 };
 
 // Draws `item` (of `project`, or a copy of one of its items: an animation frame) and writes

@@ -14,6 +14,7 @@ import io
 import json
 import math
 import os
+import socket
 import subprocess
 import sys
 from pathlib import Path
@@ -148,3 +149,42 @@ def child_python():
                               capture_output=True, text=True, env=subprocess_env(),
                               timeout=timeout, cwd=cwd)
     return run
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@pytest.fixture(scope="session")
+def scheduler(tmp_path_factory):
+    """A real Dask scheduler and two single-threaded workers (separate processes): a client."""
+    distributed = pytest.importorskip("distributed", reason="python3-distributed is missing")
+    port = free_port()
+    address = f"tcp://127.0.0.1:{port}"
+    env = subprocess_env()
+    env.pop("LD_PRELOAD", None)
+    logs = tmp_path_factory.mktemp("dask")
+    procs = [subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_scheduler",
+                               "--host", "127.0.0.1", "--port", str(port),
+                               "--dashboard-address", ":0", "--no-show"],
+                              env=env, stdout=subprocess.DEVNULL,
+                              stderr=open(logs / "scheduler.log", "w"))]
+    for n in range(2):
+        procs.append(subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_worker",
+                                       address, "--nthreads", "1", "--nworkers", "1",
+                                       "--no-dashboard", "--name", f"w{n}"],
+                                      env=env, stdout=subprocess.DEVNULL,
+                                      stderr=open(logs / f"worker{n}.log", "w")))
+    client = distributed.Client(address, timeout="30s")
+    client.wait_for_workers(2, timeout=60)
+    yield client
+    client.close()
+    for p in procs:
+        p.terminate()
+    for p in procs:
+        try:
+            p.wait(timeout=20)
+        except subprocess.TimeoutExpired:
+            p.kill()

@@ -8,7 +8,6 @@ cluster; Ctrl+C cancels the cluster's tasks. The schedulers and workers are real
 import json
 import os
 import signal
-import socket
 import subprocess
 import sys
 import time
@@ -17,7 +16,7 @@ import pytest
 
 from conftest import FOUR_POINT, FOUR_POINT_FILE, subprocess_env
 
-distributed = pytest.importorskip("distributed", reason="python3-distributed is not installed")
+pytest.importorskip("distributed", reason="python3-distributed is not installed")
 
 SIX_POINT_MASK = "v, 0, w, 0, 1/2 - w - v, 1, 1/2 - w - v, 0, w, 0, v"
 
@@ -27,44 +26,6 @@ def omega_star():
     for _ in range(50):
         w -= (32 * w ** 3 + 4 * w - 1) / (96 * w * w + 4)
     return w
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-@pytest.fixture(scope="module")
-def scheduler(tmp_path_factory):
-    """A real Dask scheduler and two single-threaded workers (separate processes)."""
-    port = free_port()
-    address = f"tcp://127.0.0.1:{port}"
-    env = subprocess_env()
-    env.pop("LD_PRELOAD", None)
-    logs = tmp_path_factory.mktemp("dask")
-    procs = [subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_scheduler",
-                               "--host", "127.0.0.1", "--port", str(port),
-                               "--dashboard-address", ":0", "--no-show"],
-                              env=env, stdout=subprocess.DEVNULL,
-                              stderr=open(logs / "scheduler.log", "w"))]
-    for n in range(2):
-        procs.append(subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_worker",
-                                       address, "--nthreads", "1", "--nworkers", "1",
-                                       "--no-dashboard", "--name", f"w{n}"],
-                                      env=env, stdout=subprocess.DEVNULL,
-                                      stderr=open(logs / f"worker{n}.log", "w")))
-    client = distributed.Client(address, timeout="30s")
-    client.wait_for_workers(2, timeout=60)
-    yield client
-    client.close()
-    for p in procs:
-        p.terminate()
-    for p in procs:
-        try:
-            p.wait(timeout=20)
-        except subprocess.TimeoutExpired:
-            p.kill()
 
 
 def summary(result):
@@ -103,6 +64,7 @@ def test_four_point_region_is_zero_to_omega_star(four_point_in_process):
 @pytest.mark.subprocess
 def test_same_rows_on_a_cluster_with_a_worker_killed(awb, scheduler, four_point_in_process):
     item = awb.open(FOUR_POINT_FILE).item(FOUR_POINT)
+    scheduler.wait_for_workers(2, timeout=60)
     pids = scheduler.run(os.getpid)
     assert len(pids) == 2
     killed = []
@@ -133,6 +95,7 @@ def test_six_point_plane_on_the_cluster(awb, scheduler, tmp_path):
                         "control_points": [[0, 0], [1, 2], [2, 1], [3, 3], [4, 0], [5, 1],
                                            [6, 2], [7, 0], [8, 1], [9, 0], [10, 2], [11, 1]]})
     grid = {"w": (-0.5, 0.0, 3), "v": (-0.02, 0.02, 3)}
+    scheduler.wait_for_workers(2, timeout=60)
     result = awb.atlas(item, grid, client=scheduler, mask=SIX_POINT_MASK, refine=1, work=2e4)
     assert result["rounds"] == 2 and result["points"] > 9
     assert result["runs"] == []   # two parameters: a map, not intervals
@@ -176,6 +139,7 @@ def run_module(*args, timeout=120):
 
 @pytest.mark.subprocess
 def test_command_line(tmp_path, scheduler):
+    scheduler.wait_for_workers(2, timeout=60)
     out = tmp_path / "atlas.json"
     done = run_module(FOUR_POINT_FILE, "--item", FOUR_POINT, "--grid", "omega=0.1:0.25:7",
                       "--tolerance", "1e-4", "--scheduler", scheduler.scheduler.address,

@@ -26,3 +26,18 @@ def atlas(item, grid, client=None, *, parameters=None, mask=None, smoothness=1, 
     from ._atlas import run_atlas
     return run_atlas(item, grid, client=client, parameters=parameters, mask=mask,
                      smoothness=smoothness, progress=progress, **options)
+
+
+def render_density(item, samples, out=None, client=None, **options):
+    """render_density(item, samples, out=None, client=None, *, size=(900, 700), seed=None,
+    chunks=None) -> dict
+
+    A random-iteration render of `samples` points split into chunks over a Dask cluster
+    (`client`: a Client; None starts a local cluster; "in-process" renders here). Each chunk
+    is Item.density from its own seed; the sum (float64, in chunk order) is the same wherever
+    the chunks ran. Returns {"rgba", "world", "chunks", "samples", "seed", "seconds",
+    "workers", "scheduler"}; with `out` (.exr, .png) it is also written as render("F.exr")
+    writes. See attractor_workbench.render.
+    """
+    from ._render import run_render
+    return run_render(item, samples, out, client=client, **options)

@@ -16,11 +16,9 @@ import sys
 import time
 
 from . import _native
+from ._cluster import IN_PROCESS, Bar, Session
 
 __all__ = ["parse_grid", "run_atlas", "main"]
-
-IN_PROCESS = "in-process"
-
 
 def parse_grid(texts):
     """["w=0:0.25:26", "v=-0.02:0.02:11"] -> {"w": (0.0, 0.25, 26), ...} (ValueError on a typo)."""
@@ -48,58 +46,6 @@ def _evaluate_chunk(family, points, options):
     return [family.evaluate(p, options) for p in points]
 
 
-class _Bar:
-    """A progress bar on a terminal (stderr), or JSON lines (for the window), or nothing."""
-
-    def __init__(self, mode, stream=sys.stderr):
-        self.mode = mode
-        self.stream = stream
-        self.last = 0.0
-
-    def __call__(self, event):
-        if self.mode == "jsonl":
-            print(json.dumps(event), file=sys.stdout, flush=True)
-        elif self.mode == "bar" and event["event"] == "progress":
-            now = time.monotonic()
-            if now - self.last < 0.1 and event["done"] < event["total"]:
-                return
-            self.last = now
-            width = 30
-            filled = int(width * event["done"] / max(1, event["total"]))
-            self.stream.write(f"\ratlas: round {event['round']} "
-                              f"[{'#' * filled}{'.' * (width - filled)}] "
-                              f"{event['done']}/{event['total']} points, "
-                              f"{event['rows']} in all, {event['elapsed']:.1f} s ")
-            if event["done"] == event["total"]:
-                self.stream.write("\n")
-            self.stream.flush()
-
-
-def _client_for(client, workers):
-    """(client, owned cluster or None): an existing client, one to an address, or a local one."""
-    if client is not None and not isinstance(client, str):
-        return client, None
-    try:
-        from dask.distributed import Client, LocalCluster
-    except ImportError:
-        raise RuntimeError("the atlas on a cluster needs Dask (Debian: python3-distributed); "
-                           "without it, run it in this process (--in-process, or "
-                           "client=\"in-process\")") from None
-    if isinstance(client, str):
-        return Client(client, timeout="20s"), None
-    n = workers or os.cpu_count() or 1
-    cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                           dashboard_address=None, silence_logs=40)
-    return Client(cluster), cluster
-
-
-def _worker_count(client):
-    try:
-        return max(1, len(client.scheduler_info().get("workers", {})))
-    except Exception:  # noqa: BLE001 - the count only sizes the tasks
-        return 1
-
-
 def run_atlas(item, grid, client=None, *, parameters=None, mask=None, smoothness=1,
               progress=None, workers=None, on_batch=None, **options):
     """The atlas of `item`'s family over `grid` (see attractor_workbench.atlas)."""
@@ -115,18 +61,9 @@ def run_atlas(item, grid, client=None, *, parameters=None, mask=None, smoothness
     opts["smoothness"] = smoothness
     plan = _native.AtlasPlan([(n, *grid[n]) for n in names], opts)
     opts = plan.options
-    report = progress if callable(progress) else _Bar(progress or "none")
+    report = progress if callable(progress) else Bar(progress or "none")
     start = time.monotonic()
-    in_process = isinstance(client, str) and client == IN_PROCESS
-    cluster = None
-    futures = []
-    scheduler = IN_PROCESS
-    count = 1
-    if not in_process:
-        client, cluster = _client_for(client, workers)
-        scheduler = client.scheduler.address
-        count = _worker_count(client)
-    try:
+    with Session(client, workers) as session:
         rows_so_far = 0
         while True:
             batch = plan.next_batch()
@@ -142,42 +79,32 @@ def run_atlas(item, grid, client=None, *, parameters=None, mask=None, smoothness
                         "total": len(batch), "rows": rows_so_far + done,
                         "elapsed": time.monotonic() - start, "new": new_rows})
 
-            if in_process:
+            if session.in_process:
                 rows = []
                 for p in batch:
                     rows.append(family.evaluate(p, opts))
                     tick(rows[-1:])
             else:
                 from dask.distributed import as_completed
-                count = _worker_count(client)
                 # A few tasks per worker and round: each task a handful of points, so the
                 # scheduler's ~1 ms per task stays small beside the points' work.
-                size = max(1, min(64, math.ceil(len(batch) / (4 * count))))
+                size = max(1, min(64, math.ceil(len(batch) / (4 * session.workers()))))
                 chunks = [batch[i:i + size] for i in range(0, len(batch), size)]
-                futures = client.map(_evaluate_chunk, [family] * len(chunks), chunks,
-                                     [opts] * len(chunks), pure=False, retries=2)
-                index = {f.key: i for i, f in enumerate(futures)}
+                session.futures = session.client.map(
+                    _evaluate_chunk, [family] * len(chunks), chunks, [opts] * len(chunks),
+                    pure=False, retries=2)
+                index = {f.key: i for i, f in enumerate(session.futures)}
                 results = [None] * len(chunks)
-                for future in as_completed(futures):
+                for future in as_completed(session.futures):
                     results[index[future.key]] = future.result()
                     tick(results[index[future.key]])
-                futures = []
+                session.futures = []
                 rows = [row for chunk in results for row in chunk]
             plan.accept(rows)
             rows_so_far += len(rows)
             if on_batch:
                 on_batch(plan)
-    except BaseException:
-        if futures:
-            try:
-                client.cancel(futures, force=True)
-            except Exception:  # noqa: BLE001 - the cluster may be gone already
-                pass
-        raise
-    finally:
-        if cluster is not None:
-            client.close()
-            cluster.close()
+        scheduler, count = session.scheduler, session.workers()
     rows = plan.rows()
     result = {
         "family": family.to_json(),
