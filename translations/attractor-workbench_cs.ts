@@ -289,6 +289,30 @@
         <source> s</source>
         <translation> s</translation>
     </message>
+    <message>
+        <source>Dask &amp;scheduler:</source>
+        <translation>&amp;Plánovač Dask:</translation>
+    </message>
+    <message>
+        <source>The address of a running Dask scheduler (tcp://host:8786) on which the Regularity Atlas computes; empty: a local cluster of this machine&apos;s cores.</source>
+        <translation>Adresa běžícího plánovače Dask (tcp://host:8786), na kterém Atlas regularity počítá; prázdné: místní cluster z jader tohoto počítače.</translation>
+    </message>
+    <message>
+        <source>a local cluster of this machine</source>
+        <translation>místní cluster tohoto počítače</translation>
+    </message>
+    <message>
+        <source>&amp;Local workers:</source>
+        <translation>&amp;Místní pracovní procesy:</translation>
+    </message>
+    <message>
+        <source>Worker processes of the local Dask cluster (the Regularity Atlas without a scheduler address).</source>
+        <translation>Pracovní procesy místního clusteru Dask (Atlas regularity bez adresy plánovače).</translation>
+    </message>
+    <message>
+        <source>one per core</source>
+        <translation>jeden na jádro</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>
@@ -901,6 +925,93 @@
     <message>
         <source>&quot;%1&quot;: expected %2 numbers</source>
         <translation>„%1“: očekávaný počet čísel je %2</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AtlasPlot</name>
+    <message>
+        <source>upper bound on r</source>
+        <translation>horní mez r</translation>
+    </message>
+    <message>
+        <source>lower bound on r (certified)</source>
+        <translation>dolní mez r (certifikovaná)</translation>
+    </message>
+    <message>
+        <source>Hölder exponent r</source>
+        <translation>Hölderův exponent r</translation>
+    </message>
+    <message>
+        <source>Shaded: certified C&lt;sup&gt;%1&lt;/sup&gt; (lower bound &amp;gt; %1). %2 points.</source>
+        <translation>Vystínováno: certifikovaně C&lt;sup&gt;%1&lt;/sup&gt; (dolní mez &amp;gt; %1). Bodů: %2.</translation>
+    </message>
+    <message>
+        <source>not certified C⁰</source>
+        <translation>necertifikováno C⁰</translation>
+    </message>
+    <message>
+        <source>C⁰</source>
+        <translation>C⁰</translation>
+    </message>
+    <message>
+        <source>C¹</source>
+        <translation>C¹</translation>
+    </message>
+    <message>
+        <source>C²</source>
+        <translation>C²</translation>
+    </message>
+    <message>
+        <source>C³ or more</source>
+        <translation>C³ nebo více</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&quot;color:#c83c14&quot;&gt;□&lt;/span&gt; the bounds cannot tell C&lt;sup&gt;%1&lt;/sup&gt;; white: no member. %2 points.</source>
+        <translation>&lt;span style=&quot;color:#c83c14&quot;&gt;□&lt;/span&gt; meze nerozhodnou o C&lt;sup&gt;%1&lt;/sup&gt;; bílá: žádný člen. Bodů: %2.</translation>
+    </message>
+    <message>
+        <source>no member here: %1</source>
+        <translation>zde žádný člen: %1</translation>
+    </message>
+    <message>
+        <source>C^∞ (a polynomial piece)</source>
+        <translation>C^∞ (polynomiální úsek)</translation>
+    </message>
+    <message>
+        <source>Hölder exponent r in [%1, %2]%3</source>
+        <translation>Hölderův exponent r v [%1, %2]%3</translation>
+    </message>
+    <message>
+        <source>, exact (invariant polytope)</source>
+        <translation>, přesně (invariantní polytop)</translation>
+    </message>
+    <message>
+        <source>certified C^%1</source>
+        <translation>certifikovaně C^%1</translation>
+    </message>
+    <message>
+        <source>C^%1 as asked: yes</source>
+        <translation>Požadované C^%1: ano</translation>
+    </message>
+    <message>
+        <source>C^%1 as asked: certified no</source>
+        <translation>Požadované C^%1: certifikovaně ne</translation>
+    </message>
+    <message>
+        <source>C^%1 as asked: the bounds cannot tell</source>
+        <translation>Požadované C^%1: meze nerozhodnou</translation>
+    </message>
+    <message>
+        <source>Sobolev exponent s₂ = %1</source>
+        <translation>Sobolevův exponent s₂ = %1</translation>
+    </message>
+    <message>
+        <source>stopped by the safety clock: may differ on another machine</source>
+        <translation>zastaveno bezpečnostním časovým limitem: na jiném počítači se může lišit</translation>
+    </message>
+    <message>
+        <source>Click to add an item with these parameters.</source>
+        <translation>Kliknutím přidáte položku s těmito parametry.</translation>
     </message>
 </context>
 <context>
@@ -3958,6 +4069,14 @@ Subdivision scheme:</source>
 
 Schéma subdivize:</translation>
     </message>
+    <message>
+        <source>Regularity &amp;Atlas…</source>
+        <translation>&amp;Atlas regularity…</translation>
+    </message>
+    <message>
+        <source>Where the selected curve&apos;s family of schemes is C^k, over one or two of its parameters (on a Dask cluster)</source>
+        <translation>Kde je rodina schémat vybrané křivky C^k, v závislosti na jednom nebo dvou jejích parametrech (na clusteru Dask)</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -4838,6 +4957,217 @@ Schéma subdivize:</translation>
     </message>
 </context>
 <context>
+    <name>awb::RegularityAtlasWindow</name>
+    <message>
+        <source>Regularity Atlas</source>
+        <translation>Atlas regularity</translation>
+    </message>
+    <message>
+        <source>Item:</source>
+        <translation>Položka:</translation>
+    </message>
+    <message>
+        <source>The mask with the parameters written into it, e.g. &quot;v, 0, w, 0, 1/2 - w - v, 1, 1/2 - w - v, 0, w, 0, v&quot; (the six-point family).</source>
+        <translation>Maska s vepsanými parametry, např. „v, 0, w, 0, 1/2 - w - v, 1, 1/2 - w - v, 0, w, 0, v“ (šestibodová rodina).</translation>
+    </message>
+    <message>
+        <source>&amp;Mask:</source>
+        <translation>&amp;Maska:</translation>
+    </message>
+    <message>
+        <source>The parameter&apos;s name: omega, a, b, or a name in the mask.</source>
+        <translation>Název parametru: omega, a, b nebo název v masce.</translation>
+    </message>
+    <message>
+        <source>Grid values, both ends included.</source>
+        <translation>Hodnoty mřížky, včetně obou krajních.</translation>
+    </message>
+    <message>
+        <source>from</source>
+        <translation>od</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>do</translation>
+    </message>
+    <message>
+        <source>values</source>
+        <translation>hodnot</translation>
+    </message>
+    <message>
+        <source>&amp;Second parameter:</source>
+        <translation>&amp;Druhý parametr:</translation>
+    </message>
+    <message>
+        <source>&amp;Parameter:</source>
+        <translation>&amp;Parametr:</translation>
+    </message>
+    <message>
+        <source>The class the atlas refines around: its C^k boundaries.</source>
+        <translation>Třída, kolem jejíchž hranic C^k atlas zjemňuje.</translation>
+    </message>
+    <message>
+        <source>One parameter: each boundary&apos;s bracket narrows to this width.</source>
+        <translation>Jeden parametr: interval kolem každé hranice se zúží na tuto šířku.</translation>
+    </message>
+    <message>
+        <source>Two parameters: how many times a cell whose corners disagree is split.</source>
+        <translation>Dva parametry: kolikrát se rozdělí buňka, jejíž rohy se neshodují.</translation>
+    </message>
+    <message>
+        <source>Class:</source>
+        <translation>Třída:</translation>
+    </message>
+    <message>
+        <source>Tolerance:</source>
+        <translation>Tolerance:</translation>
+    </message>
+    <message>
+        <source>Refinement levels:</source>
+        <translation>Úrovně zjemnění:</translation>
+    </message>
+    <message>
+        <source>Atlas:</source>
+        <translation>Atlas:</translation>
+    </message>
+    <message numerus="yes">
+        <source>A local Dask cluster (%n worker(s))</source>
+        <translation>
+            <numerusform>Místní cluster Dask (%n pracovní proces)</numerusform>
+            <numerusform>Místní cluster Dask (%n pracovní procesy)</numerusform>
+            <numerusform>Místní cluster Dask (%n pracovních procesů)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The Dask scheduler named in Preferences (none set)</source>
+        <translation>Plánovač Dask zadaný v Předvolbách (není nastaven)</translation>
+    </message>
+    <message>
+        <source>The Dask scheduler at %1</source>
+        <translation>Plánovač Dask na %1</translation>
+    </message>
+    <message>
+        <source>This machine, one process (no Dask)</source>
+        <translation>Tento počítač, jeden proces (bez Dask)</translation>
+    </message>
+    <message>
+        <source>&amp;Run on:</source>
+        <translation>&amp;Spustit na:</translation>
+    </message>
+    <message>
+        <source>&amp;Compute</source>
+        <translation>&amp;Vypočítat</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušit</translation>
+    </message>
+    <message>
+        <source>(none: select a subdivision curve)</source>
+        <translation>(žádná: vyberte subdivizní křivku)</translation>
+    </message>
+    <message>
+        <source>Write the parameters&apos; names into the mask (&quot;v, 0, w, 0, 1/2 - w - v, 1, …&quot;), give their ranges, and Compute.</source>
+        <translation>Zapište názvy parametrů do masky („v, 0, w, 0, 1/2 - w - v, 1, …“), zadejte jejich rozsahy a klikněte na Vypočítat.</translation>
+    </message>
+    <message>
+        <source>Give the parameters&apos; ranges and Compute: each point is a certified joint spectral radius, computed by python3 -m attractor_workbench.atlas.</source>
+        <translation>Zadejte rozsahy parametrů a klikněte na Vypočítat: každý bod je certifikovaný společný spektrální poloměr, vypočtený pomocí python3 -m attractor_workbench.atlas.</translation>
+    </message>
+    <message>
+        <source>Select a subdivision curve first: the atlas moves its scheme&apos;s parameters.</source>
+        <translation>Nejprve vyberte subdivizní křivku: atlas mění parametry jejího schématu.</translation>
+    </message>
+    <message>
+        <source>No Dask scheduler is set: name one in Edit &gt; Preferences, or run on a local cluster.</source>
+        <translation>Není nastaven žádný plánovač Dask: zadejte jej v Úpravy &gt; Předvolby, nebo spusťte na místním clusteru.</translation>
+    </message>
+    <message>
+        <source>Could not write the project for the atlas: %1</source>
+        <translation>Projekt pro atlas nelze zapsat: %1</translation>
+    </message>
+    <message>
+        <source>Computing in one process…</source>
+        <translation>Výpočet v jednom procesu…</translation>
+    </message>
+    <message>
+        <source>Starting the Dask cluster…</source>
+        <translation>Spouštění clusteru Dask…</translation>
+    </message>
+    <message>
+        <source>Cancelling: the cluster&apos;s tasks are being cancelled…</source>
+        <translation>Rušení: úlohy clusteru se ruší…</translation>
+    </message>
+    <message>
+        <source>Round 1: the grid&apos;s %1 points…</source>
+        <translation>Kolo 1: body mřížky (%1)…</translation>
+    </message>
+    <message>
+        <source>Round %1: %2 points where the class changes…</source>
+        <translation>Kolo %1: body, kde se mění třída (%2)…</translation>
+    </message>
+    <message>
+        <source>Round %1: %2 of %3 points; %4 in all, %5 s</source>
+        <translation>Kolo %1: %2 z %3 bodů; celkem %4, %5 s</translation>
+    </message>
+    <message>
+        <source>from %1 to %2</source>
+        <translation>od %1 do %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n point(s) in %1 round(s), %2 s on %3 worker(s) (%4).</source>
+        <translation>
+            <numerusform>%n bod, kol: %1, %2 s, pracovních procesů: %3 (%4).</numerusform>
+            <numerusform>%n body, kol: %1, %2 s, pracovních procesů: %3 (%4).</numerusform>
+            <numerusform>%n bodů, kol: %1, %2 s, pracovních procesů: %3 (%4).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nowhere certified C^%1.</source>
+        <translation>Nikde certifikovaně C^%1.</translation>
+    </message>
+    <message>
+        <source>C^%1 %2.</source>
+        <translation>C^%1 %2.</translation>
+    </message>
+    <message>
+        <source>The atlas gave no rows.</source>
+        <translation>Atlas nevrátil žádné řádky.</translation>
+    </message>
+    <message>
+        <source>Cancelled; the points computed so far are shown.</source>
+        <translation>Zrušeno; zobrazeny jsou dosud vypočtené body.</translation>
+    </message>
+    <message>
+        <source>could not start %1: %2</source>
+        <translation>nelze spustit %1: %2</translation>
+    </message>
+    <message>
+        <source>exit code %1</source>
+        <translation>návratový kód %1</translation>
+    </message>
+    <message>
+        <source>The atlas failed: %1</source>
+        <translation>Atlas selhal: %1</translation>
+    </message>
+    <message>
+        <source>Add an item with %1</source>
+        <translation>Přidat položku s %1</translation>
+    </message>
+    <message>
+        <source>Added &quot;%1&quot; (Edit &gt; Undo removes it).</source>
+        <translation>Přidána položka „%1“ (odebere ji Úpravy &gt; Zpět).</translation>
+    </message>
+    <message>
+        <source>the scheme refuses these parameters</source>
+        <translation>schéma tyto parametry odmítá</translation>
+    </message>
+    <message>
+        <source>No item added: %1</source>
+        <translation>Žádná položka nebyla přidána: %1</translation>
+    </message>
+</context>
+<context>
     <name>awb::RegularityCertificate</name>
     <message>
         <source>%1 is not a finite number</source>
@@ -5018,6 +5348,49 @@ Schéma subdivize:</translation>
     <message>
         <source>Remove %1</source>
         <translation>Odstranit %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SchemeFamily</name>
+    <message>
+        <source>a family has one or two parameters, got %1</source>
+        <translation>rodina má jeden nebo dva parametry, zadáno: %1</translation>
+    </message>
+    <message>
+        <source>the two parameters have the same name &apos;%1&apos;</source>
+        <translation>oba parametry mají stejný název „%1“</translation>
+    </message>
+    <message>
+        <source>a mask with parameters needs a mask item; this one is %1</source>
+        <translation>maska s parametry vyžaduje položku typu maska; tato je %1</translation>
+    </message>
+    <message>
+        <source>the parameter of a mask must be a name that is not a function or constant (pi, e, sqrt, ...), got &apos;%1&apos;</source>
+        <translation>parametrem masky musí být název, který není funkcí ani konstantou (pi, e, sqrt, ...), zadáno: „%1“</translation>
+    </message>
+    <message>
+        <source>the mask &apos;%1&apos; does not contain the parameter &apos;%2&apos;</source>
+        <translation>maska „%1“ neobsahuje parametr „%2“</translation>
+    </message>
+    <message>
+        <source>the scheme (%1) has no parameter &apos;%2&apos;: omega belongs to the four-point scheme, a and b to corner cutting; a mask item takes a mask with the parameter in its coefficients</source>
+        <translation>schéma (%1) nemá parametr „%2“: omega patří ke čtyřbodovému schématu, a a b k ořezávání rohů; položka typu maska přijímá masku s parametrem v koeficientech</translation>
+    </message>
+    <message>
+        <source>expected %1 parameter values, got %2</source>
+        <translation>očekávaný počet hodnot parametrů: %1, zadáno: %2</translation>
+    </message>
+    <message>
+        <source>expected a list of names</source>
+        <translation>očekáván seznam názvů</translation>
+    </message>
+    <message>
+        <source>family: %1: %2</source>
+        <translation>rodina: %1: %2</translation>
+    </message>
+    <message>
+        <source>an atlas row has no value of &apos;%1&apos;</source>
+        <translation>řádek atlasu nemá hodnotu „%1“</translation>
     </message>
 </context>
 <context>
@@ -6315,6 +6688,74 @@ Schéma subdivize:</translation>
         <source>s_2 = -log_%1(rho) / 2 with rho the spectral radius of the transition operator (T v)_i = sum_j b_{%1i - j} v_j of the autocorrelation b_k = (1/%1) sum_j a_j a_{j+k} on [-%2, %2], restricted to the %3-dimensional invariant subspace orthogonal to the polynomials of degree &lt; %4 (Eirola 1992, Villemoes 1994, Jia 1999); exact for stable integer shifts, a lower bound otherwise (Ron &amp; Shen 2000); rounding margin %5</source>
         <translation>s_2 = -log_%1(rho) / 2, kde rho je spektrální poloměr přechodového operátoru (T v)_i = sum_j b_{%1i - j} v_j autokorelace b_k = (1/%1) sum_j a_j a_{j+k} na [-%2, %2], zúženého na invariantní podprostor dimenze %3 ortogonální k polynomům stupně &lt; %4 (Eirola 1992, Villemoes 1994, Jia 1999); přesná hodnota při stabilních celočíselných posunech, jinak dolní mez (Ron &amp; Shen 2000); rezerva na zaokrouhlení %5</translation>
     </message>
+    <message>
+        <source>work budget spent; the bounds are those reached. </source>
+        <translation>rozpočet práce vyčerpán; meze jsou ty dosažené. </translation>
+    </message>
+    <message>
+        <source>an atlas has one or two parameters, got %1</source>
+        <translation>atlas má jeden nebo dva parametry, zadáno: %1</translation>
+    </message>
+    <message>
+        <source>a parameter of the atlas has no name</source>
+        <translation>parametr atlasu nemá název</translation>
+    </message>
+    <message>
+        <source>the range of %1, [%2, %3], must be finite with from &lt; to</source>
+        <translation>rozsah %1, [%2, %3], musí být konečný a „od“ &lt; „do“</translation>
+    </message>
+    <message>
+        <source>the grid of %1 must have 2 to %2 values, got %3</source>
+        <translation>mřížka %1 musí mít 2 až %2 hodnot, zadáno: %3</translation>
+    </message>
+    <message>
+        <source>the two parameters of the atlas have the same name %1</source>
+        <translation>oba parametry atlasu mají stejný název %1</translation>
+    </message>
+    <message>
+        <source>the tolerance must be a positive number</source>
+        <translation>tolerance musí být kladné číslo</translation>
+    </message>
+    <message>
+        <source>the sections per round must be 1 to 64</source>
+        <translation>počet úseků na kolo musí být 1 až 64</translation>
+    </message>
+    <message>
+        <source>the rounds must be 0 to 64</source>
+        <translation>počet kol musí být 0 až 64</translation>
+    </message>
+    <message>
+        <source>the refinement levels must be 0 to 10, got %1</source>
+        <translation>počet úrovní zjemnění musí být 0 až 10, zadáno: %1</translation>
+    </message>
+    <message>
+        <source>the work per point must be 1000 to 1e11 products</source>
+        <translation>práce na bod musí být 1000 až 1e11 součinů</translation>
+    </message>
+    <message>
+        <source>the polytope vertices must be 0 to 100000</source>
+        <translation>počet vrcholů polytopu musí být 0 až 100000</translation>
+    </message>
+    <message>
+        <source>the safety time must be 0 to 86400 s</source>
+        <translation>bezpečnostní čas musí být 0 až 86400 s</translation>
+    </message>
+    <message>
+        <source>a grid of %1 x %2 points is more than the atlas&apos;s 1e6</source>
+        <translation>mřížka %1 x %2 bodů překračuje limit atlasu 1e6</translation>
+    </message>
+    <message>
+        <source>the atlas&apos;s previous batch has no rows yet</source>
+        <translation>předchozí dávka atlasu zatím nemá žádné řádky</translation>
+    </message>
+    <message>
+        <source>the atlas expected %1 rows, got %2</source>
+        <translation>očekávaný počet řádků atlasu: %1, přijato: %2</translation>
+    </message>
+    <message>
+        <source>a row of the atlas does not belong to its batch</source>
+        <translation>řádek atlasu nepatří do své dávky</translation>
+    </message>
 </context>
 <context>
     <name>awb::cli</name>
@@ -7222,19 +7663,19 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     </message>
     <message>
         <source>--mask needs a mask item; &apos;%1&apos; is %2</source>
-        <translation>--mask vyžaduje položku s maskou; „%1“ je %2</translation>
+        <translation type="vanished">--mask vyžaduje položku s maskou; „%1“ je %2</translation>
     </message>
     <message>
         <source>the parameter of --mask must be a name that is not a function or constant (pi, e, sqrt, ...), got &apos;%1&apos;</source>
-        <translation>parametr --mask musí být jméno, které není funkcí ani konstantou (pi, e, sqrt, ...), zadáno „%1“</translation>
+        <translation type="vanished">parametr --mask musí být jméno, které není funkcí ani konstantou (pi, e, sqrt, ...), zadáno „%1“</translation>
     </message>
     <message>
         <source>the mask &apos;%1&apos; does not contain the parameter &apos;%2&apos;</source>
-        <translation>maska „%1“ neobsahuje parametr „%2“</translation>
+        <translation type="vanished">maska „%1“ neobsahuje parametr „%2“</translation>
     </message>
     <message>
         <source>item &apos;%1&apos; (%2) has no parameter &apos;%3&apos;: omega belongs to the four-point scheme, a and b to corner cutting; a mask item takes --mask with the parameter in its coefficients</source>
-        <translation>položka „%1“ (%2) nemá parametr „%3“: omega patří čtyřbodovému schématu, a a b ořezávání rohů; položka s maskou bere --mask s parametrem v koeficientech</translation>
+        <translation type="vanished">položka „%1“ (%2) nemá parametr „%3“: omega patří čtyřbodovému schématu, a a b ořezávání rohů; položka s maskou bere --mask s parametrem v koeficientech</translation>
     </message>
     <message>
         <source>the rendering was cancelled</source>

@@ -289,6 +289,30 @@
         <source> s</source>
         <translation> s</translation>
     </message>
+    <message>
+        <source>Dask &amp;scheduler:</source>
+        <translation>&amp;Ordonnanceur Dask :</translation>
+    </message>
+    <message>
+        <source>The address of a running Dask scheduler (tcp://host:8786) on which the Regularity Atlas computes; empty: a local cluster of this machine&apos;s cores.</source>
+        <translation>L&apos;adresse d&apos;un ordonnanceur Dask en cours d&apos;exécution (tcp://host:8786) sur lequel l&apos;Atlas de régularité effectue ses calculs ; vide : un cluster local utilisant les cœurs de cette machine.</translation>
+    </message>
+    <message>
+        <source>a local cluster of this machine</source>
+        <translation>un cluster local de cette machine</translation>
+    </message>
+    <message>
+        <source>&amp;Local workers:</source>
+        <translation>Processus de calcul &amp;locaux :</translation>
+    </message>
+    <message>
+        <source>Worker processes of the local Dask cluster (the Regularity Atlas without a scheduler address).</source>
+        <translation>Processus de calcul du cluster Dask local (l&apos;Atlas de régularité sans adresse d&apos;ordonnanceur).</translation>
+    </message>
+    <message>
+        <source>one per core</source>
+        <translation>un par cœur</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>
@@ -901,6 +925,93 @@
     <message>
         <source>&quot;%1&quot;: expected %2 numbers</source>
         <translation>«&#xa0;%1&#xa0;»&#xa0;: %2 nombres attendus</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AtlasPlot</name>
+    <message>
+        <source>upper bound on r</source>
+        <translation>borne supérieure de r</translation>
+    </message>
+    <message>
+        <source>lower bound on r (certified)</source>
+        <translation>borne inférieure de r (certifiée)</translation>
+    </message>
+    <message>
+        <source>Hölder exponent r</source>
+        <translation>Exposant de Hölder r</translation>
+    </message>
+    <message>
+        <source>Shaded: certified C&lt;sup&gt;%1&lt;/sup&gt; (lower bound &amp;gt; %1). %2 points.</source>
+        <translation>Ombré : C&lt;sup&gt;%1&lt;/sup&gt; certifié (borne inférieure &amp;gt; %1). %2 points.</translation>
+    </message>
+    <message>
+        <source>not certified C⁰</source>
+        <translation>C⁰ non certifié</translation>
+    </message>
+    <message>
+        <source>C⁰</source>
+        <translation>C⁰</translation>
+    </message>
+    <message>
+        <source>C¹</source>
+        <translation>C¹</translation>
+    </message>
+    <message>
+        <source>C²</source>
+        <translation>C²</translation>
+    </message>
+    <message>
+        <source>C³ or more</source>
+        <translation>C³ ou plus</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&quot;color:#c83c14&quot;&gt;□&lt;/span&gt; the bounds cannot tell C&lt;sup&gt;%1&lt;/sup&gt;; white: no member. %2 points.</source>
+        <translation>&lt;span style=&quot;color:#c83c14&quot;&gt;□&lt;/span&gt; les bornes ne permettent pas de trancher C&lt;sup&gt;%1&lt;/sup&gt; ; blanc : aucun membre. %2 points.</translation>
+    </message>
+    <message>
+        <source>no member here: %1</source>
+        <translation>aucun membre ici : %1</translation>
+    </message>
+    <message>
+        <source>C^∞ (a polynomial piece)</source>
+        <translation>C^∞ (un morceau polynomial)</translation>
+    </message>
+    <message>
+        <source>Hölder exponent r in [%1, %2]%3</source>
+        <translation>Exposant de Hölder r dans [%1, %2]%3</translation>
+    </message>
+    <message>
+        <source>, exact (invariant polytope)</source>
+        <translation>, exact (polytope invariant)</translation>
+    </message>
+    <message>
+        <source>certified C^%1</source>
+        <translation>C^%1 certifié</translation>
+    </message>
+    <message>
+        <source>C^%1 as asked: yes</source>
+        <translation>C^%1 demandé : oui</translation>
+    </message>
+    <message>
+        <source>C^%1 as asked: certified no</source>
+        <translation>C^%1 demandé : non (certifié)</translation>
+    </message>
+    <message>
+        <source>C^%1 as asked: the bounds cannot tell</source>
+        <translation>C^%1 demandé : les bornes ne permettent pas de trancher</translation>
+    </message>
+    <message>
+        <source>Sobolev exponent s₂ = %1</source>
+        <translation>Exposant de Sobolev s₂ = %1</translation>
+    </message>
+    <message>
+        <source>stopped by the safety clock: may differ on another machine</source>
+        <translation>arrêté par la limite de temps de sécurité : peut différer sur une autre machine</translation>
+    </message>
+    <message>
+        <source>Click to add an item with these parameters.</source>
+        <translation>Cliquez pour ajouter un élément avec ces paramètres.</translation>
     </message>
 </context>
 <context>
@@ -3952,6 +4063,14 @@ Subdivision scheme:</source>
 
 Schéma de subdivision&#xa0;:</translation>
     </message>
+    <message>
+        <source>Regularity &amp;Atlas…</source>
+        <translation>&amp;Atlas de régularité…</translation>
+    </message>
+    <message>
+        <source>Where the selected curve&apos;s family of schemes is C^k, over one or two of its parameters (on a Dask cluster)</source>
+        <translation>Où la famille de schémas de la courbe sélectionnée est C^k, selon un ou deux de ses paramètres (sur un cluster Dask)</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -4829,6 +4948,215 @@ Schéma de subdivision&#xa0;:</translation>
     </message>
 </context>
 <context>
+    <name>awb::RegularityAtlasWindow</name>
+    <message>
+        <source>Regularity Atlas</source>
+        <translation>Atlas de régularité</translation>
+    </message>
+    <message>
+        <source>Item:</source>
+        <translation>Élément :</translation>
+    </message>
+    <message>
+        <source>The mask with the parameters written into it, e.g. &quot;v, 0, w, 0, 1/2 - w - v, 1, 1/2 - w - v, 0, w, 0, v&quot; (the six-point family).</source>
+        <translation>Le masque avec les paramètres écrits dedans, p. ex. « v, 0, w, 0, 1/2 - w - v, 1, 1/2 - w - v, 0, w, 0, v » (la famille à six points).</translation>
+    </message>
+    <message>
+        <source>&amp;Mask:</source>
+        <translation>&amp;Masque :</translation>
+    </message>
+    <message>
+        <source>The parameter&apos;s name: omega, a, b, or a name in the mask.</source>
+        <translation>Le nom du paramètre : omega, a, b, ou un nom figurant dans le masque.</translation>
+    </message>
+    <message>
+        <source>Grid values, both ends included.</source>
+        <translation>Valeurs de la grille, bornes incluses.</translation>
+    </message>
+    <message>
+        <source>from</source>
+        <translation>de</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>à</translation>
+    </message>
+    <message>
+        <source>values</source>
+        <translation>valeurs</translation>
+    </message>
+    <message>
+        <source>&amp;Second parameter:</source>
+        <translation>&amp;Second paramètre :</translation>
+    </message>
+    <message>
+        <source>&amp;Parameter:</source>
+        <translation>&amp;Paramètre :</translation>
+    </message>
+    <message>
+        <source>The class the atlas refines around: its C^k boundaries.</source>
+        <translation>La classe autour de laquelle l&apos;atlas affine : ses frontières C^k.</translation>
+    </message>
+    <message>
+        <source>One parameter: each boundary&apos;s bracket narrows to this width.</source>
+        <translation>Un paramètre : l&apos;intervalle encadrant chaque frontière se resserre jusqu&apos;à cette largeur.</translation>
+    </message>
+    <message>
+        <source>Two parameters: how many times a cell whose corners disagree is split.</source>
+        <translation>Deux paramètres : nombre de fois qu&apos;une cellule dont les coins ne concordent pas est subdivisée.</translation>
+    </message>
+    <message>
+        <source>Class:</source>
+        <translation>Classe :</translation>
+    </message>
+    <message>
+        <source>Tolerance:</source>
+        <translation>Tolérance :</translation>
+    </message>
+    <message>
+        <source>Refinement levels:</source>
+        <translation>Niveaux de raffinement :</translation>
+    </message>
+    <message>
+        <source>Atlas:</source>
+        <translation>Atlas :</translation>
+    </message>
+    <message numerus="yes">
+        <source>A local Dask cluster (%n worker(s))</source>
+        <translation>
+            <numerusform>Un cluster Dask local (%n processus de calcul)</numerusform>
+            <numerusform>Un cluster Dask local (%n processus de calcul)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The Dask scheduler named in Preferences (none set)</source>
+        <translation>L&apos;ordonnanceur Dask indiqué dans les Préférences (aucun défini)</translation>
+    </message>
+    <message>
+        <source>The Dask scheduler at %1</source>
+        <translation>L&apos;ordonnanceur Dask à %1</translation>
+    </message>
+    <message>
+        <source>This machine, one process (no Dask)</source>
+        <translation>Cette machine, un seul processus (sans Dask)</translation>
+    </message>
+    <message>
+        <source>&amp;Run on:</source>
+        <translation>&amp;Exécuter sur :</translation>
+    </message>
+    <message>
+        <source>&amp;Compute</source>
+        <translation>&amp;Calculer</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>(none: select a subdivision curve)</source>
+        <translation>(aucune : sélectionnez une courbe de subdivision)</translation>
+    </message>
+    <message>
+        <source>Write the parameters&apos; names into the mask (&quot;v, 0, w, 0, 1/2 - w - v, 1, …&quot;), give their ranges, and Compute.</source>
+        <translation>Écrivez les noms des paramètres dans le masque (« v, 0, w, 0, 1/2 - w - v, 1, … »), indiquez leurs plages, puis cliquez sur Calculer.</translation>
+    </message>
+    <message>
+        <source>Give the parameters&apos; ranges and Compute: each point is a certified joint spectral radius, computed by python3 -m attractor_workbench.atlas.</source>
+        <translation>Indiquez les plages des paramètres et cliquez sur Calculer : chaque point est un rayon spectral joint certifié, calculé par python3 -m attractor_workbench.atlas.</translation>
+    </message>
+    <message>
+        <source>Select a subdivision curve first: the atlas moves its scheme&apos;s parameters.</source>
+        <translation>Sélectionnez d&apos;abord une courbe de subdivision : l&apos;atlas fait varier les paramètres de son schéma.</translation>
+    </message>
+    <message>
+        <source>No Dask scheduler is set: name one in Edit &gt; Preferences, or run on a local cluster.</source>
+        <translation>Aucun ordonnanceur Dask n&apos;est défini : indiquez-en un dans Édition &gt; Préférences, ou exécutez sur un cluster local.</translation>
+    </message>
+    <message>
+        <source>Could not write the project for the atlas: %1</source>
+        <translation>Impossible d&apos;écrire le projet pour l&apos;atlas : %1</translation>
+    </message>
+    <message>
+        <source>Computing in one process…</source>
+        <translation>Calcul dans un seul processus…</translation>
+    </message>
+    <message>
+        <source>Starting the Dask cluster…</source>
+        <translation>Démarrage du cluster Dask…</translation>
+    </message>
+    <message>
+        <source>Cancelling: the cluster&apos;s tasks are being cancelled…</source>
+        <translation>Annulation : les tâches du cluster sont en cours d&apos;annulation…</translation>
+    </message>
+    <message>
+        <source>Round 1: the grid&apos;s %1 points…</source>
+        <translation>Tour 1 : les %1 points de la grille…</translation>
+    </message>
+    <message>
+        <source>Round %1: %2 points where the class changes…</source>
+        <translation>Tour %1 : %2 points où la classe change…</translation>
+    </message>
+    <message>
+        <source>Round %1: %2 of %3 points; %4 in all, %5 s</source>
+        <translation>Tour %1 : %2 points sur %3 ; %4 au total, %5 s</translation>
+    </message>
+    <message>
+        <source>from %1 to %2</source>
+        <translation>de %1 à %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n point(s) in %1 round(s), %2 s on %3 worker(s) (%4).</source>
+        <translation>
+            <numerusform>%n point en %1 tour(s), %2 s sur %3 processus de calcul (%4).</numerusform>
+            <numerusform>%n points en %1 tour(s), %2 s sur %3 processus de calcul (%4).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nowhere certified C^%1.</source>
+        <translation>Nulle part certifié C^%1.</translation>
+    </message>
+    <message>
+        <source>C^%1 %2.</source>
+        <translation>C^%1 %2.</translation>
+    </message>
+    <message>
+        <source>The atlas gave no rows.</source>
+        <translation>L&apos;atlas n&apos;a renvoyé aucune ligne.</translation>
+    </message>
+    <message>
+        <source>Cancelled; the points computed so far are shown.</source>
+        <translation>Annulé ; les points calculés jusqu&apos;ici sont affichés.</translation>
+    </message>
+    <message>
+        <source>could not start %1: %2</source>
+        <translation>impossible de démarrer %1 : %2</translation>
+    </message>
+    <message>
+        <source>exit code %1</source>
+        <translation>code de sortie %1</translation>
+    </message>
+    <message>
+        <source>The atlas failed: %1</source>
+        <translation>L&apos;atlas a échoué : %1</translation>
+    </message>
+    <message>
+        <source>Add an item with %1</source>
+        <translation>Ajouter un élément avec %1</translation>
+    </message>
+    <message>
+        <source>Added &quot;%1&quot; (Edit &gt; Undo removes it).</source>
+        <translation>« %1 » ajouté (Édition &gt; Annuler le retire).</translation>
+    </message>
+    <message>
+        <source>the scheme refuses these parameters</source>
+        <translation>le schéma refuse ces paramètres</translation>
+    </message>
+    <message>
+        <source>No item added: %1</source>
+        <translation>Aucun élément ajouté : %1</translation>
+    </message>
+</context>
+<context>
     <name>awb::RegularityCertificate</name>
     <message>
         <source>%1 is not a finite number</source>
@@ -5009,6 +5337,49 @@ Schéma de subdivision&#xa0;:</translation>
     <message>
         <source>Remove %1</source>
         <translation>Supprimer %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SchemeFamily</name>
+    <message>
+        <source>a family has one or two parameters, got %1</source>
+        <translation>une famille a un ou deux paramètres ; obtenu : %1</translation>
+    </message>
+    <message>
+        <source>the two parameters have the same name &apos;%1&apos;</source>
+        <translation>les deux paramètres portent le même nom « %1 »</translation>
+    </message>
+    <message>
+        <source>a mask with parameters needs a mask item; this one is %1</source>
+        <translation>un masque avec paramètres nécessite un élément masque ; celui-ci est %1</translation>
+    </message>
+    <message>
+        <source>the parameter of a mask must be a name that is not a function or constant (pi, e, sqrt, ...), got &apos;%1&apos;</source>
+        <translation>le paramètre d&apos;un masque doit être un nom qui n&apos;est ni une fonction ni une constante (pi, e, sqrt, ...) ; obtenu : « %1 »</translation>
+    </message>
+    <message>
+        <source>the mask &apos;%1&apos; does not contain the parameter &apos;%2&apos;</source>
+        <translation>le masque « %1 » ne contient pas le paramètre « %2 »</translation>
+    </message>
+    <message>
+        <source>the scheme (%1) has no parameter &apos;%2&apos;: omega belongs to the four-point scheme, a and b to corner cutting; a mask item takes a mask with the parameter in its coefficients</source>
+        <translation>le schéma (%1) n&apos;a pas de paramètre « %2 » : omega appartient au schéma à quatre points, a et b à la découpe des coins ; un élément masque prend un masque dont les coefficients contiennent le paramètre</translation>
+    </message>
+    <message>
+        <source>expected %1 parameter values, got %2</source>
+        <translation>%1 valeurs de paramètre attendues ; obtenu : %2</translation>
+    </message>
+    <message>
+        <source>expected a list of names</source>
+        <translation>une liste de noms est attendue</translation>
+    </message>
+    <message>
+        <source>family: %1: %2</source>
+        <translation>famille : %1 : %2</translation>
+    </message>
+    <message>
+        <source>an atlas row has no value of &apos;%1&apos;</source>
+        <translation>une ligne de l&apos;atlas n&apos;a pas de valeur pour « %1 »</translation>
     </message>
 </context>
 <context>
@@ -6306,6 +6677,74 @@ Schéma de subdivision&#xa0;:</translation>
         <source>s_2 = -log_%1(rho) / 2 with rho the spectral radius of the transition operator (T v)_i = sum_j b_{%1i - j} v_j of the autocorrelation b_k = (1/%1) sum_j a_j a_{j+k} on [-%2, %2], restricted to the %3-dimensional invariant subspace orthogonal to the polynomials of degree &lt; %4 (Eirola 1992, Villemoes 1994, Jia 1999); exact for stable integer shifts, a lower bound otherwise (Ron &amp; Shen 2000); rounding margin %5</source>
         <translation>s_2 = -log_%1(rho) / 2, où rho est le rayon spectral de l’opérateur de transition (T v)_i = sum_j b_{%1i - j} v_j de l’autocorrélation b_k = (1/%1) sum_j a_j a_{j+k} sur [-%2, %2], restreint au sous-espace invariant de dimension %3 orthogonal aux polynômes de degré &lt; %4 (Eirola 1992, Villemoes 1994, Jia 1999)&#x202f;; exact pour des translatés entiers stables, borne inférieure sinon (Ron &amp; Shen 2000)&#x202f;; marge d’arrondi %5</translation>
     </message>
+    <message>
+        <source>work budget spent; the bounds are those reached. </source>
+        <translation>budget de calcul épuisé ; les bornes sont celles atteintes. </translation>
+    </message>
+    <message>
+        <source>an atlas has one or two parameters, got %1</source>
+        <translation>un atlas a un ou deux paramètres ; obtenu : %1</translation>
+    </message>
+    <message>
+        <source>a parameter of the atlas has no name</source>
+        <translation>un paramètre de l&apos;atlas n&apos;a pas de nom</translation>
+    </message>
+    <message>
+        <source>the range of %1, [%2, %3], must be finite with from &lt; to</source>
+        <translation>la plage de %1, [%2, %3], doit être finie avec « de » &lt; « à »</translation>
+    </message>
+    <message>
+        <source>the grid of %1 must have 2 to %2 values, got %3</source>
+        <translation>la grille de %1 doit avoir de 2 à %2 valeurs ; obtenu : %3</translation>
+    </message>
+    <message>
+        <source>the two parameters of the atlas have the same name %1</source>
+        <translation>les deux paramètres de l&apos;atlas portent le même nom %1</translation>
+    </message>
+    <message>
+        <source>the tolerance must be a positive number</source>
+        <translation>la tolérance doit être un nombre positif</translation>
+    </message>
+    <message>
+        <source>the sections per round must be 1 to 64</source>
+        <translation>le nombre de sections par tour doit être compris entre 1 et 64</translation>
+    </message>
+    <message>
+        <source>the rounds must be 0 to 64</source>
+        <translation>le nombre de tours doit être compris entre 0 et 64</translation>
+    </message>
+    <message>
+        <source>the refinement levels must be 0 to 10, got %1</source>
+        <translation>le nombre de niveaux de raffinement doit être compris entre 0 et 10 ; obtenu : %1</translation>
+    </message>
+    <message>
+        <source>the work per point must be 1000 to 1e11 products</source>
+        <translation>le travail par point doit être compris entre 1000 et 1e11 produits</translation>
+    </message>
+    <message>
+        <source>the polytope vertices must be 0 to 100000</source>
+        <translation>le nombre de sommets du polytope doit être compris entre 0 et 100000</translation>
+    </message>
+    <message>
+        <source>the safety time must be 0 to 86400 s</source>
+        <translation>le temps de sécurité doit être compris entre 0 et 86400 s</translation>
+    </message>
+    <message>
+        <source>a grid of %1 x %2 points is more than the atlas&apos;s 1e6</source>
+        <translation>une grille de %1 x %2 points dépasse le maximum de l&apos;atlas (1e6)</translation>
+    </message>
+    <message>
+        <source>the atlas&apos;s previous batch has no rows yet</source>
+        <translation>le lot précédent de l&apos;atlas n&apos;a encore aucune ligne</translation>
+    </message>
+    <message>
+        <source>the atlas expected %1 rows, got %2</source>
+        <translation>l&apos;atlas attendait %1 lignes ; obtenu : %2</translation>
+    </message>
+    <message>
+        <source>a row of the atlas does not belong to its batch</source>
+        <translation>une ligne de l&apos;atlas n&apos;appartient pas à son lot</translation>
+    </message>
 </context>
 <context>
     <name>awb::cli</name>
@@ -7211,19 +7650,19 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     </message>
     <message>
         <source>--mask needs a mask item; &apos;%1&apos; is %2</source>
-        <translation>--mask demande un élément masque&#xa0;; «&#xa0;%1&#xa0;» est %2</translation>
+        <translation type="vanished">--mask demande un élément masque&#xa0;; «&#xa0;%1&#xa0;» est %2</translation>
     </message>
     <message>
         <source>the parameter of --mask must be a name that is not a function or constant (pi, e, sqrt, ...), got &apos;%1&apos;</source>
-        <translation>le paramètre de --mask doit être un nom qui n&apos;est ni une fonction ni une constante (pi, e, sqrt, ...), reçu «&#xa0;%1&#xa0;»</translation>
+        <translation type="vanished">le paramètre de --mask doit être un nom qui n&apos;est ni une fonction ni une constante (pi, e, sqrt, ...), reçu «&#xa0;%1&#xa0;»</translation>
     </message>
     <message>
         <source>the mask &apos;%1&apos; does not contain the parameter &apos;%2&apos;</source>
-        <translation>le masque «&#xa0;%1&#xa0;» ne contient pas le paramètre «&#xa0;%2&#xa0;»</translation>
+        <translation type="vanished">le masque «&#xa0;%1&#xa0;» ne contient pas le paramètre «&#xa0;%2&#xa0;»</translation>
     </message>
     <message>
         <source>item &apos;%1&apos; (%2) has no parameter &apos;%3&apos;: omega belongs to the four-point scheme, a and b to corner cutting; a mask item takes --mask with the parameter in its coefficients</source>
-        <translation>l&apos;élément «&#xa0;%1&#xa0;» (%2) n&apos;a pas de paramètre «&#xa0;%3&#xa0;»&#xa0;: omega appartient au schéma à quatre points, a et b à la découpe des coins&#xa0;; un élément masque prend --mask avec le paramètre dans ses coefficients</translation>
+        <translation type="vanished">l&apos;élément «&#xa0;%1&#xa0;» (%2) n&apos;a pas de paramètre «&#xa0;%3&#xa0;»&#xa0;: omega appartient au schéma à quatre points, a et b à la découpe des coins&#xa0;; un élément masque prend --mask avec le paramètre dans ses coefficients</translation>
     </message>
     <message>
         <source>the rendering was cancelled</source>

@@ -289,6 +289,30 @@
         <source> s</source>
         <translation> s</translation>
     </message>
+    <message>
+        <source>Dask &amp;scheduler:</source>
+        <translation>Dask 调度器(&amp;S)：</translation>
+    </message>
+    <message>
+        <source>The address of a running Dask scheduler (tcp://host:8786) on which the Regularity Atlas computes; empty: a local cluster of this machine&apos;s cores.</source>
+        <translation>正则性图谱进行计算所用的、正在运行的 Dask 调度器地址（tcp://host:8786）；留空：由本机各核心组成的本地集群。</translation>
+    </message>
+    <message>
+        <source>a local cluster of this machine</source>
+        <translation>本机上的本地集群</translation>
+    </message>
+    <message>
+        <source>&amp;Local workers:</source>
+        <translation>本地工作进程(&amp;L)：</translation>
+    </message>
+    <message>
+        <source>Worker processes of the local Dask cluster (the Regularity Atlas without a scheduler address).</source>
+        <translation>本地 Dask 集群的工作进程数（未设置调度器地址时的正则性图谱）。</translation>
+    </message>
+    <message>
+        <source>one per core</source>
+        <translation>每个核心一个</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>
@@ -901,6 +925,93 @@
     <message>
         <source>&quot;%1&quot;: expected %2 numbers</source>
         <translation>“%1”：应为 %2 个数</translation>
+    </message>
+</context>
+<context>
+    <name>awb::AtlasPlot</name>
+    <message>
+        <source>upper bound on r</source>
+        <translation>r 的上界</translation>
+    </message>
+    <message>
+        <source>lower bound on r (certified)</source>
+        <translation>r 的下界（已证明）</translation>
+    </message>
+    <message>
+        <source>Hölder exponent r</source>
+        <translation>Hölder 指数 r</translation>
+    </message>
+    <message>
+        <source>Shaded: certified C&lt;sup&gt;%1&lt;/sup&gt; (lower bound &amp;gt; %1). %2 points.</source>
+        <translation>阴影：已证明为 C&lt;sup&gt;%1&lt;/sup&gt;（下界 &amp;gt; %1）。共 %2 个点。</translation>
+    </message>
+    <message>
+        <source>not certified C⁰</source>
+        <translation>未证明为 C⁰</translation>
+    </message>
+    <message>
+        <source>C⁰</source>
+        <translation>C⁰</translation>
+    </message>
+    <message>
+        <source>C¹</source>
+        <translation>C¹</translation>
+    </message>
+    <message>
+        <source>C²</source>
+        <translation>C²</translation>
+    </message>
+    <message>
+        <source>C³ or more</source>
+        <translation>C³ 或更高</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&quot;color:#c83c14&quot;&gt;□&lt;/span&gt; the bounds cannot tell C&lt;sup&gt;%1&lt;/sup&gt;; white: no member. %2 points.</source>
+        <translation>&lt;span style=&quot;color:#c83c14&quot;&gt;□&lt;/span&gt; 上下界无法判定是否为 C&lt;sup&gt;%1&lt;/sup&gt;；白色：无成员。共 %2 个点。</translation>
+    </message>
+    <message>
+        <source>no member here: %1</source>
+        <translation>此处无成员：%1</translation>
+    </message>
+    <message>
+        <source>C^∞ (a polynomial piece)</source>
+        <translation>C^∞（多项式片段）</translation>
+    </message>
+    <message>
+        <source>Hölder exponent r in [%1, %2]%3</source>
+        <translation>Hölder 指数 r 位于 [%1, %2]%3</translation>
+    </message>
+    <message>
+        <source>, exact (invariant polytope)</source>
+        <translation>，精确（不变多面体）</translation>
+    </message>
+    <message>
+        <source>certified C^%1</source>
+        <translation>已证明为 C^%1</translation>
+    </message>
+    <message>
+        <source>C^%1 as asked: yes</source>
+        <translation>所要求的 C^%1：是</translation>
+    </message>
+    <message>
+        <source>C^%1 as asked: certified no</source>
+        <translation>所要求的 C^%1：已证明不是</translation>
+    </message>
+    <message>
+        <source>C^%1 as asked: the bounds cannot tell</source>
+        <translation>所要求的 C^%1：上下界无法判定</translation>
+    </message>
+    <message>
+        <source>Sobolev exponent s₂ = %1</source>
+        <translation>Sobolev 指数 s₂ = %1</translation>
+    </message>
+    <message>
+        <source>stopped by the safety clock: may differ on another machine</source>
+        <translation>被安全计时器中止：在其他机器上结果可能不同</translation>
+    </message>
+    <message>
+        <source>Click to add an item with these parameters.</source>
+        <translation>单击以添加具有这些参数的项。</translation>
     </message>
 </context>
 <context>
@@ -3946,6 +4057,14 @@ Subdivision scheme:</source>
 
 细分格式：</translation>
     </message>
+    <message>
+        <source>Regularity &amp;Atlas…</source>
+        <translation>正则性图谱(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Where the selected curve&apos;s family of schemes is C^k, over one or two of its parameters (on a Dask cluster)</source>
+        <translation>所选曲线的细分格式族在其一个或两个参数上何处为 C^k（在 Dask 集群上计算）</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -4820,6 +4939,213 @@ Subdivision scheme:</source>
     </message>
 </context>
 <context>
+    <name>awb::RegularityAtlasWindow</name>
+    <message>
+        <source>Regularity Atlas</source>
+        <translation>正则性图谱</translation>
+    </message>
+    <message>
+        <source>Item:</source>
+        <translation>项：</translation>
+    </message>
+    <message>
+        <source>The mask with the parameters written into it, e.g. &quot;v, 0, w, 0, 1/2 - w - v, 1, 1/2 - w - v, 0, w, 0, v&quot; (the six-point family).</source>
+        <translation>写入了参数的掩模，例如“v, 0, w, 0, 1/2 - w - v, 1, 1/2 - w - v, 0, w, 0, v”（六点格式族）。</translation>
+    </message>
+    <message>
+        <source>&amp;Mask:</source>
+        <translation>掩模(&amp;M)：</translation>
+    </message>
+    <message>
+        <source>The parameter&apos;s name: omega, a, b, or a name in the mask.</source>
+        <translation>参数名：omega、a、b，或掩模中的某个名称。</translation>
+    </message>
+    <message>
+        <source>Grid values, both ends included.</source>
+        <translation>网格取值，包含两端。</translation>
+    </message>
+    <message>
+        <source>from</source>
+        <translation>从</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>到</translation>
+    </message>
+    <message>
+        <source>values</source>
+        <translation>个值</translation>
+    </message>
+    <message>
+        <source>&amp;Second parameter:</source>
+        <translation>第二个参数(&amp;S)：</translation>
+    </message>
+    <message>
+        <source>&amp;Parameter:</source>
+        <translation>参数(&amp;P)：</translation>
+    </message>
+    <message>
+        <source>The class the atlas refines around: its C^k boundaries.</source>
+        <translation>图谱围绕其 C^k 边界进行细化的类。</translation>
+    </message>
+    <message>
+        <source>One parameter: each boundary&apos;s bracket narrows to this width.</source>
+        <translation>单参数：每条边界所在的区间收窄到此宽度。</translation>
+    </message>
+    <message>
+        <source>Two parameters: how many times a cell whose corners disagree is split.</source>
+        <translation>双参数：角点结果不一致的单元被细分的次数。</translation>
+    </message>
+    <message>
+        <source>Class:</source>
+        <translation>类：</translation>
+    </message>
+    <message>
+        <source>Tolerance:</source>
+        <translation>容差：</translation>
+    </message>
+    <message>
+        <source>Refinement levels:</source>
+        <translation>细化层数：</translation>
+    </message>
+    <message>
+        <source>Atlas:</source>
+        <translation>图谱：</translation>
+    </message>
+    <message numerus="yes">
+        <source>A local Dask cluster (%n worker(s))</source>
+        <translation>
+            <numerusform>本地 Dask 集群（%n 个工作进程）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The Dask scheduler named in Preferences (none set)</source>
+        <translation>首选项中指定的 Dask 调度器（未设置）</translation>
+    </message>
+    <message>
+        <source>The Dask scheduler at %1</source>
+        <translation>位于 %1 的 Dask 调度器</translation>
+    </message>
+    <message>
+        <source>This machine, one process (no Dask)</source>
+        <translation>本机，单进程（不使用 Dask）</translation>
+    </message>
+    <message>
+        <source>&amp;Run on:</source>
+        <translation>运行于(&amp;R)：</translation>
+    </message>
+    <message>
+        <source>&amp;Compute</source>
+        <translation>计算(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>(none: select a subdivision curve)</source>
+        <translation>（无：请选择一条细分曲线）</translation>
+    </message>
+    <message>
+        <source>Write the parameters&apos; names into the mask (&quot;v, 0, w, 0, 1/2 - w - v, 1, …&quot;), give their ranges, and Compute.</source>
+        <translation>将参数名写入掩模（“v, 0, w, 0, 1/2 - w - v, 1, …”），给出其取值范围，然后单击“计算”。</translation>
+    </message>
+    <message>
+        <source>Give the parameters&apos; ranges and Compute: each point is a certified joint spectral radius, computed by python3 -m attractor_workbench.atlas.</source>
+        <translation>给出参数的取值范围并单击“计算”：每个点都是一个经认证的联合谱半径，由 python3 -m attractor_workbench.atlas 计算。</translation>
+    </message>
+    <message>
+        <source>Select a subdivision curve first: the atlas moves its scheme&apos;s parameters.</source>
+        <translation>请先选择一条细分曲线：图谱会改变其格式的参数。</translation>
+    </message>
+    <message>
+        <source>No Dask scheduler is set: name one in Edit &gt; Preferences, or run on a local cluster.</source>
+        <translation>未设置 Dask 调度器：请在“编辑 &gt; 首选项”中指定一个，或在本地集群上运行。</translation>
+    </message>
+    <message>
+        <source>Could not write the project for the atlas: %1</source>
+        <translation>无法为图谱写入项目：%1</translation>
+    </message>
+    <message>
+        <source>Computing in one process…</source>
+        <translation>正在单进程中计算…</translation>
+    </message>
+    <message>
+        <source>Starting the Dask cluster…</source>
+        <translation>正在启动 Dask 集群…</translation>
+    </message>
+    <message>
+        <source>Cancelling: the cluster&apos;s tasks are being cancelled…</source>
+        <translation>正在取消：正在取消集群的任务…</translation>
+    </message>
+    <message>
+        <source>Round 1: the grid&apos;s %1 points…</source>
+        <translation>第 1 轮：网格的 %1 个点…</translation>
+    </message>
+    <message>
+        <source>Round %1: %2 points where the class changes…</source>
+        <translation>第 %1 轮：类发生变化处的 %2 个点…</translation>
+    </message>
+    <message>
+        <source>Round %1: %2 of %3 points; %4 in all, %5 s</source>
+        <translation>第 %1 轮：%2/%3 个点；共 %4 个，%5 秒</translation>
+    </message>
+    <message>
+        <source>from %1 to %2</source>
+        <translation>从 %1 到 %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n point(s) in %1 round(s), %2 s on %3 worker(s) (%4).</source>
+        <translation>
+            <numerusform>%n 个点，%1 轮，%2 秒，%3 个工作进程（%4）。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nowhere certified C^%1.</source>
+        <translation>没有任何位置被证明为 C^%1。</translation>
+    </message>
+    <message>
+        <source>C^%1 %2.</source>
+        <translation>C^%1：%2。</translation>
+    </message>
+    <message>
+        <source>The atlas gave no rows.</source>
+        <translation>图谱未返回任何行。</translation>
+    </message>
+    <message>
+        <source>Cancelled; the points computed so far are shown.</source>
+        <translation>已取消；显示目前已计算的点。</translation>
+    </message>
+    <message>
+        <source>could not start %1: %2</source>
+        <translation>无法启动 %1：%2</translation>
+    </message>
+    <message>
+        <source>exit code %1</source>
+        <translation>退出代码 %1</translation>
+    </message>
+    <message>
+        <source>The atlas failed: %1</source>
+        <translation>图谱计算失败：%1</translation>
+    </message>
+    <message>
+        <source>Add an item with %1</source>
+        <translation>添加参数为 %1 的项</translation>
+    </message>
+    <message>
+        <source>Added &quot;%1&quot; (Edit &gt; Undo removes it).</source>
+        <translation>已添加“%1”（“编辑 &gt; 撤销”可将其移除）。</translation>
+    </message>
+    <message>
+        <source>the scheme refuses these parameters</source>
+        <translation>该格式不接受这些参数</translation>
+    </message>
+    <message>
+        <source>No item added: %1</source>
+        <translation>未添加任何项：%1</translation>
+    </message>
+</context>
+<context>
     <name>awb::RegularityCertificate</name>
     <message>
         <source>%1 is not a finite number</source>
@@ -5000,6 +5326,49 @@ Subdivision scheme:</source>
     <message>
         <source>Remove %1</source>
         <translation>移除 %1</translation>
+    </message>
+</context>
+<context>
+    <name>awb::SchemeFamily</name>
+    <message>
+        <source>a family has one or two parameters, got %1</source>
+        <translation>格式族应有一个或两个参数，实际为 %1</translation>
+    </message>
+    <message>
+        <source>the two parameters have the same name &apos;%1&apos;</source>
+        <translation>两个参数同名“%1”</translation>
+    </message>
+    <message>
+        <source>a mask with parameters needs a mask item; this one is %1</source>
+        <translation>带参数的掩模需要一个掩模项；此项为 %1</translation>
+    </message>
+    <message>
+        <source>the parameter of a mask must be a name that is not a function or constant (pi, e, sqrt, ...), got &apos;%1&apos;</source>
+        <translation>掩模的参数必须是一个既非函数也非常数（pi, e, sqrt, ...）的名称，实际为“%1”</translation>
+    </message>
+    <message>
+        <source>the mask &apos;%1&apos; does not contain the parameter &apos;%2&apos;</source>
+        <translation>掩模“%1”不包含参数“%2”</translation>
+    </message>
+    <message>
+        <source>the scheme (%1) has no parameter &apos;%2&apos;: omega belongs to the four-point scheme, a and b to corner cutting; a mask item takes a mask with the parameter in its coefficients</source>
+        <translation>格式（%1）没有参数“%2”：omega 属于四点格式，a 和 b 属于割角格式；掩模项接受系数中含有该参数的掩模</translation>
+    </message>
+    <message>
+        <source>expected %1 parameter values, got %2</source>
+        <translation>应有 %1 个参数值，实际为 %2 个</translation>
+    </message>
+    <message>
+        <source>expected a list of names</source>
+        <translation>应为名称列表</translation>
+    </message>
+    <message>
+        <source>family: %1: %2</source>
+        <translation>格式族：%1：%2</translation>
+    </message>
+    <message>
+        <source>an atlas row has no value of &apos;%1&apos;</source>
+        <translation>图谱的某一行没有“%1”的值</translation>
     </message>
 </context>
 <context>
@@ -6297,6 +6666,74 @@ Subdivision scheme:</source>
         <source>s_2 = -log_%1(rho) / 2 with rho the spectral radius of the transition operator (T v)_i = sum_j b_{%1i - j} v_j of the autocorrelation b_k = (1/%1) sum_j a_j a_{j+k} on [-%2, %2], restricted to the %3-dimensional invariant subspace orthogonal to the polynomials of degree &lt; %4 (Eirola 1992, Villemoes 1994, Jia 1999); exact for stable integer shifts, a lower bound otherwise (Ron &amp; Shen 2000); rounding margin %5</source>
         <translation>s_2 = -log_%1(rho) / 2，其中 rho 为自相关 b_k = (1/%1) sum_j a_j a_{j+k} 的转移算子 (T v)_i = sum_j b_{%1i - j} v_j 在 [-%2, %2] 上、限制于与次数 &lt; %4 的多项式正交的 %3 维不变子空间时的谱半径（Eirola 1992，Villemoes 1994，Jia 1999）；整数平移稳定时为精确值，否则为下界（Ron &amp; Shen 2000）；舍入余量 %5</translation>
     </message>
+    <message>
+        <source>work budget spent; the bounds are those reached. </source>
+        <translation>计算预算已用尽；给出的是已达到的上下界。</translation>
+    </message>
+    <message>
+        <source>an atlas has one or two parameters, got %1</source>
+        <translation>图谱应有一个或两个参数，实际为 %1</translation>
+    </message>
+    <message>
+        <source>a parameter of the atlas has no name</source>
+        <translation>图谱的某个参数没有名称</translation>
+    </message>
+    <message>
+        <source>the range of %1, [%2, %3], must be finite with from &lt; to</source>
+        <translation>%1 的范围 [%2, %3] 必须有限，且“从” &lt; “到”</translation>
+    </message>
+    <message>
+        <source>the grid of %1 must have 2 to %2 values, got %3</source>
+        <translation>%1 的网格必须有 2 到 %2 个值，实际为 %3</translation>
+    </message>
+    <message>
+        <source>the two parameters of the atlas have the same name %1</source>
+        <translation>图谱的两个参数同名 %1</translation>
+    </message>
+    <message>
+        <source>the tolerance must be a positive number</source>
+        <translation>容差必须为正数</translation>
+    </message>
+    <message>
+        <source>the sections per round must be 1 to 64</source>
+        <translation>每轮的分段数必须为 1 到 64</translation>
+    </message>
+    <message>
+        <source>the rounds must be 0 to 64</source>
+        <translation>轮数必须为 0 到 64</translation>
+    </message>
+    <message>
+        <source>the refinement levels must be 0 to 10, got %1</source>
+        <translation>细化层数必须为 0 到 10，实际为 %1</translation>
+    </message>
+    <message>
+        <source>the work per point must be 1000 to 1e11 products</source>
+        <translation>每个点的计算量必须为 1000 到 1e11 次乘积</translation>
+    </message>
+    <message>
+        <source>the polytope vertices must be 0 to 100000</source>
+        <translation>多面体顶点数必须为 0 到 100000</translation>
+    </message>
+    <message>
+        <source>the safety time must be 0 to 86400 s</source>
+        <translation>安全时限必须为 0 到 86400 秒</translation>
+    </message>
+    <message>
+        <source>a grid of %1 x %2 points is more than the atlas&apos;s 1e6</source>
+        <translation>%1 x %2 个点的网格超过了图谱的上限 1e6</translation>
+    </message>
+    <message>
+        <source>the atlas&apos;s previous batch has no rows yet</source>
+        <translation>图谱的上一批次还没有任何行</translation>
+    </message>
+    <message>
+        <source>the atlas expected %1 rows, got %2</source>
+        <translation>图谱应有 %1 行，实际为 %2 行</translation>
+    </message>
+    <message>
+        <source>a row of the atlas does not belong to its batch</source>
+        <translation>图谱的某一行不属于其批次</translation>
+    </message>
 </context>
 <context>
     <name>awb::cli</name>
@@ -7200,19 +7637,19 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>--mask needs a mask item; &apos;%1&apos; is %2</source>
-        <translation>--mask 需要一个掩模对象；&apos;%1&apos; 是 %2</translation>
+        <translation type="vanished">--mask 需要一个掩模对象；&apos;%1&apos; 是 %2</translation>
     </message>
     <message>
         <source>the parameter of --mask must be a name that is not a function or constant (pi, e, sqrt, ...), got &apos;%1&apos;</source>
-        <translation>--mask 的参数必须是一个不是函数或常数（pi、e、sqrt 等）的名称，得到 &apos;%1&apos;</translation>
+        <translation type="vanished">--mask 的参数必须是一个不是函数或常数（pi、e、sqrt 等）的名称，得到 &apos;%1&apos;</translation>
     </message>
     <message>
         <source>the mask &apos;%1&apos; does not contain the parameter &apos;%2&apos;</source>
-        <translation>掩模 &apos;%1&apos; 不包含参数 &apos;%2&apos;</translation>
+        <translation type="vanished">掩模 &apos;%1&apos; 不包含参数 &apos;%2&apos;</translation>
     </message>
     <message>
         <source>item &apos;%1&apos; (%2) has no parameter &apos;%3&apos;: omega belongs to the four-point scheme, a and b to corner cutting; a mask item takes --mask with the parameter in its coefficients</source>
-        <translation>对象 &apos;%1&apos;（%2）没有参数 &apos;%3&apos;：omega 属于四点格式，a 和 b 属于切角；掩模对象使用 --mask 并在其系数中写入参数</translation>
+        <translation type="vanished">对象 &apos;%1&apos;（%2）没有参数 &apos;%3&apos;：omega 属于四点格式，a 和 b 属于切角；掩模对象使用 --mask 并在其系数中写入参数</translation>
     </message>
     <message>
         <source>the rendering was cancelled</source>
