@@ -1,4 +1,6 @@
-// The raw density of an item's figure as a numpy array, and the file of a summed one (issue 48):
+// What a Dask cluster renders (issue 48): the frames of an animation, each drawn as
+// `attractor-cli animate --frame K` draws it (attractor_workbench/animate.py), and
+// the raw density of an item's figure as a numpy array, and the file of a summed one:
 // what attractor_workbench/render.py splits over a Dask cluster. Item.density() renders one
 // chunk -- the figure's frame, `samples` points from `seed` -- through renderItemFigure, the
 // path of `attractor-cli render --out F.exr`; write_density() writes a sum of chunks with the
@@ -6,16 +8,37 @@
 
 #include "python/Internal.h"
 
+#include "model/Animation.h"
 #include "model/AttractorItem.h"
 #include "model/Project.h"
 #include "render/FigureFile.h"
 #include "render/ItemFigure.h"
 
+#include <QFile>
 #include <QFileInfo>
+#include <QTemporaryDir>
 
 #include <cstring>
 
 namespace awb::python {
+
+namespace {
+
+// The item as it is at `time` seconds of its animation (an animated copy; the item itself
+// when time is None). Error when the item has no animation or the copy cannot be made.
+std::unique_ptr<Item> frameItem(AttractorItem &a, const py::object &time)
+{
+    const double t = realArg(time, "time", 0, AnimationSpec::maxDuration);
+    if (a.animation().isEmpty())
+        throw Error(QString("item '%1' has no animation").arg(a.name()));
+    QString error;
+    std::unique_ptr<Item> copy = animatedCopy(a, t, &error);
+    if (!copy)
+        throw Error(QString("t = %1 s: %2").arg(t).arg(error));
+    return copy;
+}
+
+} // namespace
 
 void defineDensity(py::module_ &m)
 {
@@ -23,6 +46,80 @@ void defineDensity(py::module_ &m)
     item.def_property_readonly(
         "project", [](const ItemHandle &h) { return h.project; },
         "The Project the item belongs to.");
+    item.def(
+        "animation_times",
+        [](const ItemHandle &h, const py::object &fps) {
+            AttractorItem &a = h.attractor();
+            if (a.animation().isEmpty())
+                throw Error(QString("item '%1' has no animation").arg(a.name()));
+            AnimationSpec timing = a.animation();
+            if (!fps.is_none())
+                timing.fps = realArg(fps, "animation_times(): fps", 1, AnimationSpec::maxFps);
+            py::list times;
+            for (int k = 0; k < timing.frameCount(); ++k)
+                times.append(timing.frameTime(k));
+            return times;
+        },
+        py::arg("fps") = py::none(),
+        "animation_times(fps=None) -> list\n\nThe times (s) of the frames of the item's "
+        "animation, at `fps` frames per second (default: the animation's), as attractor-cli "
+        "animate numbers them.");
+    item.def(
+        "frame",
+        [](const ItemHandle &h, const py::object &time, const py::object &size,
+           const py::object &bounds, const py::object &measure) -> py::object {
+            AttractorItem &a = h.attractor();
+            std::unique_ptr<Item> copy = frameItem(a, time);
+            FigureOptions o;
+            if (!size.is_none()) {
+                const py::sequence wh = size.cast<py::sequence>();
+                if (py::len(wh) != 2)
+                    throw Error("frame(): size: expected (width, height) in pixels");
+                o.width = int(intArg(wh[0], "frame(): width", 16, 20000));
+                o.height = int(intArg(wh[1], "frame(): height", 16, 20000));
+            }
+            if (!bounds.is_none()) {
+                const py::sequence b = bounds.cast<py::sequence>();
+                if (py::len(b) != 4)
+                    throw Error("frame(): bounds: expected (x0, y0, x1, y1)");
+                o.bounds = QRectF(QPointF(realArg(b[0], "frame(): x0", -1e300, 1e300),
+                                          realArg(b[1], "frame(): y0", -1e300, 1e300)),
+                                  QPointF(realArg(b[2], "frame(): x1", -1e300, 1e300),
+                                          realArg(b[3], "frame(): y1", -1e300, 1e300)));
+            }
+            const double t = realArg(time, "time", 0, AnimationSpec::maxDuration);
+            o.captionSuffix = " — " + animationCaption(a, t);
+            ensureGuiApplication();
+            Project &project = h.project->get();
+            auto *frame = static_cast<AttractorItem *>(copy.get());
+            if (py::cast<bool>(measure)) {
+                QRectF r;
+                {
+                    py::gil_scoped_release release;
+                    renderItemFigure(project, frame, o, QString(), &r);
+                }
+                if (!r.isValid())
+                    return py::none();
+                return py::make_tuple(r.left(), r.top(), r.right(), r.bottom());
+            }
+            QTemporaryDir dir;
+            const QString file = dir.filePath(QStringLiteral("frame.png"));
+            std::atomic<bool> cancel{false};
+            o.cancel = &cancel;
+            runInterruptible([&] { renderItemFigure(project, frame, o, file); }, cancel);
+            QFile f(file);
+            if (!f.open(QIODevice::ReadOnly))
+                throw Error("frame(): the frame was not written");
+            const QByteArray png = f.readAll();
+            return py::bytes(png.constData(), size_t(png.size()));
+        },
+        py::arg("time"), py::arg("size") = py::none(), py::arg("bounds") = py::none(),
+        py::arg("measure") = false,
+        "frame(time, size=None, bounds=None, measure=False) -> bytes\n\nThe PNG of the "
+        "item's animation at `time` seconds, drawn as attractor-cli animate draws a frame "
+        "(the time and values in the caption) in `bounds` (x0, y0, x1, y1; default: fitted). "
+        "With measure=True: the frame's content rectangle instead (None for a surface), whose "
+        "union over the frames gives an animation one framing.");
     item.def(
         "density",
         [](const ItemHandle &h, const py::object &size, const py::object &samples,

@@ -95,3 +95,42 @@ def test_command_line(tmp_path, scheduler):
     bad = run_module(EXAMPLES / "000-fig06-bicubic-patch.awb", "--samples", "1e5",
                      "--in-process", "--out", tmp_path / "x.exr")
     assert bad.returncode == 1 and "drawn in space" in bad.stderr, bad.stderr
+
+
+ANIMATION = EXAMPLES / "animation-four-point-omega-and-complex-t.awb"
+
+
+@pytest.mark.subprocess
+def test_animation_frames_on_a_cluster(awb, scheduler, tmp_path):
+    """The frames attractor-cli animate draws, the same files from the cluster."""
+    scheduler.wait_for_workers(2, timeout=60)
+    project = awb.open(ANIMATION)
+    item = next(i for i in project.items if i.to_json().get("animation", {}).get("tracks"))
+    times = item.animation_times(fps=2)
+    here = awb.animate_frames(item, tmp_path / "here", client="in-process", fps=2,
+                              size=(240, 180))
+    there = awb.animate_frames(item, tmp_path / "there", client=scheduler, fps=2,
+                               size=(240, 180))
+    assert here["frames"] == there["frames"] == len(times) >= 3
+    assert here["bounds"] == there["bounds"]
+    names = sorted(os.listdir(tmp_path / "here"))
+    assert names == sorted(os.listdir(tmp_path / "there"))
+    assert names[0] == "frame-0000.png"
+    for name in names:
+        assert (tmp_path / "here" / name).read_bytes() == (tmp_path / "there" / name).read_bytes()
+    # Frame 1 is attractor-cli animate's frame 1 with the same framing, pixel for pixel.
+    x0, y0, x1, y1 = here["bounds"]
+    cli = tmp_path / "cli.png"
+    env = subprocess_env()
+    env.pop("LD_PRELOAD", None)
+    done = subprocess.run([os.environ.get("AWB_CLI") or str(EXAMPLES.parent / "build" / "bin" /
+                                                            "attractor-cli"),
+                           "animate", ANIMATION, "--item", item.name, "--fps", "2", "--frame",
+                           "1", "--size", "240x180", "--bounds", f"{x0},{y0},{x1},{y1}",
+                           "--out", cli], capture_output=True, text=True, env=env, timeout=120)
+    assert done.returncode == 0, done.stderr
+    mine = awb.open(tmp_path / "here" / "frame-0001.png").items[0].to_json()
+    theirs = awb.open(cli).items[0].to_json()
+    assert mine == theirs   # the same animated copy inside both PNGs
+    with pytest.raises(awb.Error, match="has no animation"):
+        awb.open(SIERPINSKI).items[0].animation_times()

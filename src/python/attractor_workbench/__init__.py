@@ -29,10 +29,9 @@ def atlas(item, grid, client=None, *, parameters=None, mask=None, smoothness=1, 
 
 
 def render_density(item, samples, out=None, client=None, **options):
-    """render_density(item, samples, out=None, client=None, *, size=(900, 700), seed=None,
-    chunks=None) -> dict
+    """render_density(item, samples, out=None, client=None, **options) -> dict
 
-    A random-iteration render of `samples` points split into chunks over a Dask cluster
+    Options: size=(900, 700), seed=None (the item's), chunks=None. A random-iteration render of `samples` points split into chunks over a Dask cluster
     (`client`: a Client; None starts a local cluster; "in-process" renders here). Each chunk
     is Item.density from its own seed; the sum (float64, in chunk order) is the same wherever
     the chunks ran. Returns {"rgba", "world", "chunks", "samples", "seed", "seconds",
@@ -41,3 +40,15 @@ def render_density(item, samples, out=None, client=None, **options):
     """
     from ._render import run_render
     return run_render(item, samples, out, client=client, **options)
+
+
+def animate_frames(item, out_dir, client=None, **options):
+    """animate_frames(item, out_dir, client=None, **options) -> dict
+
+    Options: fps=None (the animation's), size=(900, 700), bounds=None (the union). The frames of `item`'s animation drawn on a Dask cluster (`client`: a Client; None starts
+    a local cluster; "in-process" draws here), written as frame-0000.png, ... into `out_dir`:
+    the frames attractor-cli animate draws, in the one framing of their union. Returns
+    {"frames", "bounds", "seconds", "workers", "scheduler"}. See attractor_workbench.animate.
+    """
+    from ._animate import run_animate
+    return run_animate(item, out_dir, client=client, **options)

@@ -86,9 +86,11 @@ def run_atlas(item, grid, client=None, *, parameters=None, mask=None, smoothness
                     tick(rows[-1:])
             else:
                 from dask.distributed import as_completed
-                # A few tasks per worker and round: each task a handful of points, so the
-                # scheduler's ~1 ms per task stays small beside the points' work.
-                size = max(1, min(64, math.ceil(len(batch) / (4 * session.workers()))))
+                # A few tasks per worker and round, each a handful of points: the scheduler's
+                # ~1 ms per task stays small beside the points' work, and a cancelled run
+                # leaves each worker at most 8 points to finish (a running task cannot be
+                # stopped).
+                size = max(1, min(8, math.ceil(len(batch) / (4 * session.workers()))))
                 chunks = [batch[i:i + size] for i in range(0, len(batch), size)]
                 session.futures = session.client.map(
                     _evaluate_chunk, [family] * len(chunks), chunks, [opts] * len(chunks),
