@@ -9,12 +9,11 @@ and the framing: the same files wherever they were drawn.
 import json
 import math
 import os
-import signal
 import sys
 import time
 
 from . import _native
-from ._cluster import Bar, IN_PROCESS, Session
+from ._cluster import Bar, Session, add_where_arguments, failer, where_of
 from ._render import _item
 
 __all__ = ["run_animate", "main"]
@@ -92,25 +91,16 @@ def main(argv=None):
     p.add_argument("--out", required=True, help="the folder of the frames (made if missing)")
     p.add_argument("--fps", type=float, help="frames per second (default: the animation's)")
     p.add_argument("--size", default="900x700", help="WIDTHxHEIGHT pixels (default 900x700)")
-    where = p.add_mutually_exclusive_group()
-    where.add_argument("--scheduler", metavar="ADDRESS", help="a running Dask scheduler")
-    where.add_argument("--workers", type=int, metavar="K", help="a local cluster of K workers")
-    where.add_argument("--in-process", action="store_true", help="no cluster: in this process")
-    p.add_argument("--progress", choices=["bar", "jsonl", "none"])
+    add_where_arguments(p, "frame")
     args = p.parse_args(sys.argv[1:] if argv is None else argv)
-
-    def fail(message, code=2):
-        print(f"animate: {message}", file=sys.stderr)
-        return code
-
+    fail = failer("animate")
     try:
         size = _size(args.size)
+        client, progress = where_of(args)
     except ValueError as e:
         return fail(str(e))
     if args.fps is not None and not (math.isfinite(args.fps) and 1 <= args.fps <= 120):
         return fail(f"--fps must be 1 to 120, got {args.fps}")
-    if args.workers is not None and not 1 <= args.workers <= 1024:
-        return fail(f"--workers must be 1 to 1024, got {args.workers}")
     if os.path.exists(args.out) and not os.path.isdir(args.out):
         return fail(f"--out '{args.out}' is a file; the frames go into a folder")
     try:
@@ -126,9 +116,6 @@ def main(argv=None):
     except (_native.Error, StopIteration):
         return fail(f"no item '{args.item}' in {args.project}" if args.item
                     else f"{args.project} has no animated item")
-    progress = args.progress or ("bar" if sys.stderr.isatty() else "none")
-    signal.signal(signal.SIGTERM, signal.default_int_handler)
-    client = IN_PROCESS if args.in_process else args.scheduler
     try:
         result = run_animate(item, args.out, client=client, fps=args.fps, size=size,
                              workers=args.workers, progress=progress)

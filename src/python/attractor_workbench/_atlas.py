@@ -11,12 +11,11 @@ wherever they ran; a worker lost mid-run changes nothing (Dask runs its tasks el
 import json
 import math
 import os
-import signal
 import sys
 import time
 
 from . import _native
-from ._cluster import IN_PROCESS, Bar, Session
+from ._cluster import IN_PROCESS, Bar, Session, add_where_arguments, failer, where_of
 
 __all__ = ["parse_grid", "run_atlas", "main"]
 
@@ -147,32 +146,20 @@ def _arguments(argv):
                    help="two parameters: levels of refinement at the boundaries (default 3)")
     p.add_argument("--work", type=float, default=1e5,
                    help="joint-spectral-radius products per point (default 1e5)")
-    where = p.add_mutually_exclusive_group()
-    where.add_argument("--scheduler", metavar="ADDRESS",
-                       help="a running Dask scheduler, e.g. tcp://host:8786")
-    where.add_argument("--workers", type=int, metavar="K",
-                       help="a local cluster of K worker processes (default: the cores)")
-    where.add_argument("--in-process", action="store_true",
-                       help="no cluster: every point in this process, one after another")
+    add_where_arguments(p)
     p.add_argument("--json", metavar="OUT", required=True,
                    help="where the result goes (JSON; - for standard output)")
-    p.add_argument("--progress", choices=["bar", "jsonl", "none"],
-                   help="a bar on the terminal (default when stderr is one), JSON lines on "
-                        "standard output (for the window), or none")
     return p.parse_args(argv)
 
 
-def _fail(message, code=2):
-    print(f"atlas: {message}", file=sys.stderr)
-    return code
+_fail = failer("atlas")
 
 
 def main(argv=None):
     args = _arguments(sys.argv[1:] if argv is None else argv)
-    if args.workers is not None and not 1 <= args.workers <= 1024:
-        return _fail(f"--workers must be 1 to 1024, got {args.workers}")
     try:
         grid = parse_grid(args.grid)
+        client, progress = where_of(args)
     except ValueError as e:
         return _fail(str(e))
     try:
@@ -190,10 +177,6 @@ def main(argv=None):
         item = next((i for i in project.items if i.kind == "subdivision-curve"), None)
         if item is None:
             return _fail(f"{args.project} has no subdivision curve")
-    progress = args.progress or ("bar" if sys.stderr.isatty() else "none")
-    # The window stops a run with SIGTERM: as Ctrl+C, the cluster's tasks are cancelled.
-    signal.signal(signal.SIGTERM, signal.default_int_handler)
-    client = IN_PROCESS if args.in_process else args.scheduler
     try:
         result = run_atlas(item, grid, client=client, mask=args.mask,
                            smoothness=args.smoothness, progress=progress,

@@ -5,6 +5,7 @@ here schedules work itself: Dask does, and reruns the tasks of a lost worker els
 
 import json
 import os
+import signal
 import sys
 import time
 
@@ -98,3 +99,35 @@ class Session:
                 self.client.close()
                 self.cluster.close()
         return False
+
+
+def add_where_arguments(parser, unit="point"):
+    """--scheduler | --workers | --in-process, and --progress: the same in every command."""
+    where = parser.add_mutually_exclusive_group()
+    where.add_argument("--scheduler", metavar="ADDRESS",
+                       help="a running Dask scheduler, e.g. tcp://host:8786")
+    where.add_argument("--workers", type=int, metavar="K",
+                       help="a local cluster of K worker processes (default: one per core)")
+    where.add_argument("--in-process", action="store_true",
+                       help=f"no cluster: every {unit} in this process, one after another")
+    parser.add_argument("--progress", choices=["bar", "jsonl", "none"],
+                        help="a bar on the terminal (default when stderr is one), JSON lines "
+                             "on standard output (for a program: the window), or none")
+
+
+def where_of(args):
+    """(client, progress) of the parsed arguments; ValueError for a bad --workers. SIGTERM
+    (the window's Cancel) then stops the run as Ctrl+C does."""
+    if args.workers is not None and not 1 <= args.workers <= 1024:
+        raise ValueError(f"--workers must be 1 to 1024, got {args.workers}")
+    signal.signal(signal.SIGTERM, signal.default_int_handler)
+    progress = args.progress or ("bar" if sys.stderr.isatty() else "none")
+    return (IN_PROCESS if args.in_process else args.scheduler), progress
+
+
+def failer(command):
+    """fail(message, code=2): the command's message on stderr, and its exit status."""
+    def fail(message, code=2):
+        print(f"{command}: {message}", file=sys.stderr)
+        return code
+    return fail

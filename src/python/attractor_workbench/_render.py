@@ -14,7 +14,6 @@ import hashlib
 import json
 import math
 import os
-import signal
 import sys
 import tempfile
 import time
@@ -22,7 +21,7 @@ import time
 import numpy as np
 
 from . import _native
-from ._cluster import IN_PROCESS, Bar, Session
+from ._cluster import Bar, Session, add_where_arguments, failer, where_of
 
 __all__ = ["chunk_plan", "run_render", "main"]
 
@@ -161,16 +160,9 @@ def main(argv=None):
     p.add_argument("--seed", type=int, help="the seed of chunk 0 (default: the item's)")
     p.add_argument("--chunks", type=int,
                    help=f"how many chunks (default: one per {CHUNK_SAMPLES:g} samples)")
-    where = p.add_mutually_exclusive_group()
-    where.add_argument("--scheduler", metavar="ADDRESS", help="a running Dask scheduler")
-    where.add_argument("--workers", type=int, metavar="K", help="a local cluster of K workers")
-    where.add_argument("--in-process", action="store_true", help="no cluster: in this process")
-    p.add_argument("--progress", choices=["bar", "jsonl", "none"])
+    add_where_arguments(p, "chunk")
     args = p.parse_args(sys.argv[1:] if argv is None else argv)
-
-    def fail(message, code=2):
-        print(f"render: {message}", file=sys.stderr)
-        return code
+    fail = failer("render")
 
     try:
         samples = float(args.samples)
@@ -181,12 +173,11 @@ def main(argv=None):
     try:
         size = _size(args.size)
         chunk_plan(samples, args.seed or 0, args.chunks)
+        client, progress = where_of(args)
     except ValueError as e:
         return fail(str(e))
     if os.path.splitext(args.out)[1].lower() not in (".exr", ".png"):
         return fail(f"--out '{args.out}': the density is written to .exr or .png")
-    if args.workers is not None and not 1 <= args.workers <= 1024:
-        return fail(f"--workers must be 1 to 1024, got {args.workers}")
     try:
         project = _native.open(args.project)
     except _native.Error as e:
@@ -197,9 +188,6 @@ def main(argv=None):
     except (_native.Error, StopIteration):
         return fail(f"no item '{args.item}' in {args.project}" if args.item
                     else f"{args.project} has no item to render")
-    progress = args.progress or ("bar" if sys.stderr.isatty() else "none")
-    signal.signal(signal.SIGTERM, signal.default_int_handler)
-    client = IN_PROCESS if args.in_process else args.scheduler
     try:
         result = run_render(item, int(samples), args.out, client=client, size=size,
                             seed=args.seed, chunks=args.chunks, workers=args.workers,
