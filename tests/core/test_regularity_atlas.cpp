@@ -109,7 +109,9 @@ private slots:
         QVERIFY(std::abs(star - 0.19273) < 5e-6);
         const AtlasBoundary &to = runs[0].to;
         QVERIFY2(to.inner < star + 1e-9 && std::abs(to.outer - to.inner) <= 2e-6,
-                 qPrintable(QString("[%1, %2]").arg(to.inner, 0, 'g', 12).arg(to.outer, 0, 'g', 12)));
+                 qPrintable(QString("[%1, %2]")
+                                .arg(to.inner, 0, 'g', 12)
+                                .arg(to.outer, 0, 'g', 12)));
         QVERIFY2(std::abs(to.inner - star) < 1e-5,
                  qPrintable(QString("%1 vs %2").arg(to.inner, 0, 'g', 12).arg(star, 0, 'g', 12)));
         // The grid rows first: every omega in (0, omega*) certified C^1, beyond it not.
@@ -197,7 +199,8 @@ private slots:
         QVERIFY(r.applies);
         QCOMPARE(r.smoothness, 2);
         QCOMPARE(r.verdict, 1);
-        QVERIFY2(r.lower > 2.8 && r.upper < 2.84, qPrintable(QString("[%1, %2]").arg(r.lower).arg(r.upper)));
+        QVERIFY2(r.lower > 2.8 && r.upper < 2.84,
+                 qPrintable(QString("[%1, %2]").arg(r.lower).arg(r.upper)));
     }
 
     void refusesBadGrids()

@@ -3,7 +3,6 @@
 #include "gui/app/Dialogs.h"
 #include "gui/views/AtlasPlot.h"
 #include "gui/views/ThemeColours.h"
-#include "model/NumberFormat.h"
 #include "model/Project.h"
 #include "model/ProjectIO.h"
 #include "model/SchemeFamily.h"
@@ -78,7 +77,8 @@ QString paramsText(const QStringList &names, const std::vector<double> &params)
 {
     QStringList where;
     for (int a = 0; a < names.size() && size_t(a) < params.size(); ++a)
-        where << QStringLiteral("%1 = %2").arg(names[a], QString::number(params[size_t(a)], 'g', 10));
+        where << QStringLiteral("%1 = %2").arg(names[a],
+                                               QString::number(params[size_t(a)], 'g', 10));
     return where.join(QStringLiteral(", "));
 }
 
@@ -302,8 +302,9 @@ void RegularityAtlasWindow::updateForm()
 {
     const bool mask = m_item && m_item->scheme().kind == SchemeSpec::Kind::Mask;
     m_mask->setEnabled(mask && !isRunning());
-    for (QWidget *w : {static_cast<QWidget *>(m_fields[1].name), static_cast<QWidget *>(m_fields[1].from),
-                       static_cast<QWidget *>(m_fields[1].to), static_cast<QWidget *>(m_fields[1].count)})
+    const AxisFields &second = m_fields[1];
+    for (QWidget *w : std::initializer_list<QWidget *>{second.name, second.from, second.to,
+                                                       second.count})
         w->setEnabled(m_second->isChecked() && !isRunning());
     m_tolerance->setEnabled(!m_second->isChecked());
     m_refine->setEnabled(m_second->isChecked());
@@ -317,8 +318,8 @@ QString RegularityAtlasWindow::pythonProgram()
     if (!chosen.isEmpty())
         return chosen;
     // Debian's Python, which has python3-distributed and the package's dist-packages.
-    return QFileInfo::exists(QStringLiteral("/usr/bin/python3")) ? QStringLiteral("/usr/bin/python3")
-                                                                 : QStringLiteral("python3");
+    const QString debian = QStringLiteral("/usr/bin/python3");
+    return QFileInfo::exists(debian) ? debian : QStringLiteral("python3");
 }
 
 QString RegularityAtlasWindow::modulePath()
@@ -349,8 +350,8 @@ QString RegularityAtlasWindow::statusText() const
 void RegularityAtlasWindow::showStatus(const QString &text, bool error)
 {
     m_status->setText(text);
-    m_status->setStyleSheet(error ? QStringLiteral("color: %1").arg(errorTextColour(palette()).name())
-                                  : QString());
+    m_status->setStyleSheet(
+        error ? QStringLiteral("color: %1").arg(errorTextColour(palette()).name()) : QString());
 }
 
 bool RegularityAtlasWindow::start()

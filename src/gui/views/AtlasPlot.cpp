@@ -283,8 +283,8 @@ QString AtlasPlot::rowText(const AtlasRow &r) const
 {
     QStringList where;
     for (size_t a = 0; a < m_axes.size() && a < r.params.size(); ++a)
-        where << QStringLiteral("%1 = %2")
-                     .arg(QString::fromStdString(m_axes[a].name), QString::number(r.params[a], 'g', 10));
+        where << QStringLiteral("%1 = %2").arg(QString::fromStdString(m_axes[a].name),
+                                               QString::number(r.params[a], 'g', 10));
     QString text = where.join(QStringLiteral(", "));
     if (!r.applies)
         return text + "\n" + tr("no member here: %1").arg(QString::fromStdString(r.message));
