@@ -6756,6 +6756,14 @@ Schéma subdivize:</translation>
         <source>a row of the atlas does not belong to its batch</source>
         <translation>řádek atlasu nepatří do své dávky</translation>
     </message>
+    <message>
+        <source>map %1 is not contractive: its map of the plane has spectral radius %2 &gt;= 1 (%3 in the lifted space of its control points), so the IFS has no attractor (the iteration does not converge)</source>
+        <translation>zobrazení %1 není kontraktivní: jeho zobrazení roviny má spektrální poloměr %2 &gt;= 1 (%3 ve zvednutém prostoru jeho řídicích bodů), takže IFS nemá atraktor (iterace nekonverguje)</translation>
+    </message>
+    <message>
+        <source>map %1 is not contractive in the lifted space of its control points (spectral radius %3 &gt;= 1), although its map of the plane contracts (spectral radius %2): the lifted iteration does not converge</source>
+        <translation>zobrazení %1 není kontraktivní ve zvednutém prostoru svých řídicích bodů (spektrální poloměr %3 &gt;= 1), ačkoli jeho zobrazení roviny je kontraktivní (spektrální poloměr %2): zvednutá iterace nekonverguje</translation>
+    </message>
 </context>
 <context>
     <name>awb::cli</name>

@@ -6745,6 +6745,14 @@ Schéma de subdivision&#xa0;:</translation>
         <source>a row of the atlas does not belong to its batch</source>
         <translation>une ligne de l&apos;atlas n&apos;appartient pas à son lot</translation>
     </message>
+    <message>
+        <source>map %1 is not contractive: its map of the plane has spectral radius %2 &gt;= 1 (%3 in the lifted space of its control points), so the IFS has no attractor (the iteration does not converge)</source>
+        <translation>l&apos;application %1 n&apos;est pas contractante : son application du plan a un rayon spectral %2 &gt;= 1 (%3 dans l&apos;espace relevé de ses points de contrôle), donc l&apos;IFS n&apos;a pas d&apos;attracteur (l&apos;itération ne converge pas)</translation>
+    </message>
+    <message>
+        <source>map %1 is not contractive in the lifted space of its control points (spectral radius %3 &gt;= 1), although its map of the plane contracts (spectral radius %2): the lifted iteration does not converge</source>
+        <translation>l&apos;application %1 n&apos;est pas contractante dans l&apos;espace relevé de ses points de contrôle (rayon spectral %3 &gt;= 1), bien que son application du plan soit contractante (rayon spectral %2) : l&apos;itération relevée ne converge pas</translation>
+    </message>
 </context>
 <context>
     <name>awb::cli</name>

@@ -6734,6 +6734,14 @@ Subdivision scheme:</source>
         <source>a row of the atlas does not belong to its batch</source>
         <translation>图谱的某一行不属于其批次</translation>
     </message>
+    <message>
+        <source>map %1 is not contractive: its map of the plane has spectral radius %2 &gt;= 1 (%3 in the lifted space of its control points), so the IFS has no attractor (the iteration does not converge)</source>
+        <translation>映射 %1 不是压缩的：它在平面上的映射的谱半径为 %2 &gt;= 1（在其控制点的提升空间中为 %3），因此该 IFS 没有吸引子（迭代不收敛）</translation>
+    </message>
+    <message>
+        <source>map %1 is not contractive in the lifted space of its control points (spectral radius %3 &gt;= 1), although its map of the plane contracts (spectral radius %2): the lifted iteration does not converge</source>
+        <translation>映射 %1 在其控制点的提升空间中不是压缩的（谱半径 %3 &gt;= 1），尽管它在平面上的映射是压缩的（谱半径 %2）：提升空间中的迭代不收敛</translation>
+    </message>
 </context>
 <context>
     <name>awb::cli</name>

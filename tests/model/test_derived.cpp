@@ -3,6 +3,9 @@
 // (including a complex Bézier parameter). Eigenvalue plots follow their source.
 
 #include "TestProjects.h"
+#include "model/ProjectIO.h"
+
+#include <QJsonDocument>
 
 #include "core/ifs/Attractor.h"
 #include "core/schemes/Curves.h"
@@ -264,6 +267,33 @@ private slots:
         auto point = curve("point", s, {{1, 1}, {1, 1}, {1, 1}});
         QVERIFY(!point->derivedIfs());
         QVERIFY2(point->derivedError().contains("coincide"), qPrintable(point->derivedError()));
+    }
+
+    // Issue 45: a Fractint map x -> 1.5 x imported as a fractal with control points is not
+    // contractive; the message names the plane map's spectral radius 1.5, not only the
+    // lifted space's (where the lifting's own coordinate scales by 2).
+    void notContractiveNamesThePlaneMap()
+    {
+        QString why;
+        std::unique_ptr<Item> item = ProjectIO::itemFromJson(
+            QJsonDocument::fromJson(R"({"type": "fractal", "name": "expand", "preset": "custom",
+                "maps": [{"A": [[1.5, 0], [0, 1.5]], "b": [0, 0]},
+                         {"A": [[0.5, 0], [0, 0.5]], "b": [0.5, 0]}],
+                "control_points": [[0, -20], [380, -20], [380, 20], [0, 20]],
+                "weights": "nearest"})")
+                .object(),
+            &why);
+        QVERIFY2(item, qPrintable(why));
+        const auto d = static_cast<AttractorItem *>(item.get())->derivedIfs();
+        QVERIFY(d);
+        QCOMPARE(d->ifs.space, std::string("lifted"));
+        const IfsCheck check = checkIfs(d->ifs);
+        QVERIFY(!check.contractive);
+        QVERIFY2(QString::fromStdString(check.message)
+                     .startsWith("map 1 is not contractive: its map of the plane has spectral "
+                                 "radius 1.5 >= 1 (2 in the lifted space of its control points)"),
+                 check.message.c_str());
+        QCOMPARE(check.maps[0].spectralRadius, 2.0);
     }
 
     void eigenvaluePlots()

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <sstream>
 
 namespace awb {
@@ -284,19 +285,64 @@ std::optional<RowVec> fixedWeights(const Mat &S)
     return RowVec(l.transpose());
 }
 
+namespace {
+
+// The linear part of `A` in the plane of `view`: Q with A V = V Q, when the plane coordinates
+// of an image depend on the plane coordinates alone (a fractal with control points: the
+// lifted map's plane block is x' = x A + b, decoupled from the lifting's coordinates).
+std::optional<Mat> planeLinearPart(const Mat &A, const Projection &view)
+{
+    const Mat &V = view.V;
+    if (V.rows() != A.rows() || V.cols() == 0 || V.cols() >= V.rows())
+        return std::nullopt;
+    Eigen::ColPivHouseholderQR<Mat> qr(V);
+    if (qr.rank() < V.cols())
+        return std::nullopt;
+    const Mat AV = A * V;
+    const Mat Q = qr.solve(AV);
+    if ((V * Q - AV).norm() > 1e-9 * std::max(1.0, AV.norm()))
+        return std::nullopt;
+    return Q;
+}
+
+} // namespace
+
 IfsCheck checkIfs(const Ifs &ifs)
 {
     ifs.validate();
     IfsCheck out;
     for (int i = 0; i < ifs.size(); ++i) {
         out.maps.push_back(contractivity(ifs.effectiveLinearPart(i)));
-        if (out.contractive && !out.maps.back().eventuallyContractive) {
-            out.contractive = false;
+        if (!out.contractive || out.maps.back().eventuallyContractive)
+            continue;
+        out.contractive = false;
+        const double rho = out.maps.back().spectralRadius;
+        // In a lifted space the user's map is the plane's: name its spectral radius when it
+        // differs from the lifted one (x -> 1.5 x whose lifting scales by 2).
+        const std::optional<Mat> plane =
+            ifs.views.empty() ? std::nullopt : planeLinearPart(ifs.maps[size_t(i)].A,
+                                                               ifs.views.front());
+        const double planeRho = plane ? contractivity(*plane).spectralRadius : rho;
+        if (plane && std::abs(planeRho - rho) > 1e-9 * std::max(1.0, rho)) {
+            out.message = formatMessage(
+                planeRho >= 1
+                    ? coreTranslate("awb::analysis", "map %1 is not contractive: its map of the "
+                                                     "plane has spectral radius %2 >= 1 (%3 in "
+                                                     "the lifted space of its control points), "
+                                                     "so the IFS has no attractor (the iteration "
+                                                     "does not converge)")
+                    : coreTranslate("awb::analysis", "map %1 is not contractive in the lifted "
+                                                     "space of its control points (spectral "
+                                                     "radius %3 >= 1), although its map of the "
+                                                     "plane contracts (spectral radius %2): the "
+                                                     "lifted iteration does not converge"),
+                i + 1, streamedNumber(planeRho), streamedNumber(rho));
+        } else {
             out.message = formatMessage(
                 coreTranslate("awb::analysis", "map %1 is not contractive: the spectral radius "
                                                "of its linear part is %2 >= 1, so the IFS has no "
                                                "attractor (the iteration does not converge)"),
-                i + 1, streamedNumber(out.maps.back().spectralRadius));
+                i + 1, streamedNumber(rho));
         }
     }
     if (!out.contractive && ifs.size() > 0) {
