@@ -5,8 +5,14 @@
 #include "python/Conversions.h"
 #include "python/Handles.h"
 
+#include <QRectF>
+
 #include <atomic>
 #include <functional>
+
+namespace awb {
+struct FigureOptions;
+}
 
 namespace awb::python {
 
@@ -15,6 +21,10 @@ void defineItemClass(py::module_ &m);
 void defineContainers(py::module_ &m);
 void defineAtlas(py::module_ &m);
 void defineDensity(py::module_ &m);  // after defineItemClass
+// Figure arguments of the item's render(), frame() and density(): (width, height) into `o`
+// (None leaves it), and a rectangle (x0, y0, x1, y1); Error naming `function` otherwise.
+void figureSizeArg(const py::object &size, const char *function, FigureOptions &o);
+QRectF rectArg(const py::object &rect, const char *function, const char *what);
 // Text in figures needs a QGuiApplication: made on the first render, never at import.
 void ensureGuiApplication();
 

@@ -40,6 +40,32 @@ std::unique_ptr<Item> frameItem(AttractorItem &a, const py::object &time)
 
 } // namespace
 
+void figureSizeArg(const py::object &size, const char *function, FigureOptions &o)
+{
+    if (size.is_none())
+        return;
+    if (!py::isinstance<py::sequence>(size) || py::isinstance<py::str>(size) || py::len(size) != 2)
+        throw Error(QString("%1: size: expected (width, height) in pixels").arg(function));
+    const py::sequence wh = size;
+    const QByteArray width = QByteArray(function) + ": width";
+    const QByteArray height = QByteArray(function) + ": height";
+    o.width = int(intArg(wh[0], width.constData(), 16, 20000));
+    o.height = int(intArg(wh[1], height.constData(), 16, 20000));
+}
+
+QRectF rectArg(const py::object &rect, const char *function, const char *what)
+{
+    if (!py::isinstance<py::sequence>(rect) || py::isinstance<py::str>(rect) || py::len(rect) != 4)
+        throw Error(QString("%1: %2: expected (x0, y0, x1, y1)").arg(function, what));
+    const py::sequence r = rect;
+    double v[4];
+    for (int k = 0; k < 4; ++k) {
+        const QByteArray name = QByteArray(function) + ": " + what;
+        v[k] = realArg(r[k], name.constData(), -1e300, 1e300);
+    }
+    return QRectF(QPointF(v[0], v[1]), QPointF(v[2], v[3]));
+}
+
 void defineDensity(py::module_ &m)
 {
     auto item = py::reinterpret_borrow<py::class_<ItemHandle>>(m.attr("Item"));
@@ -71,22 +97,9 @@ void defineDensity(py::module_ &m)
             AttractorItem &a = h.attractor();
             std::unique_ptr<Item> copy = frameItem(a, time);
             FigureOptions o;
-            if (!size.is_none()) {
-                const py::sequence wh = size.cast<py::sequence>();
-                if (py::len(wh) != 2)
-                    throw Error("frame(): size: expected (width, height) in pixels");
-                o.width = int(intArg(wh[0], "frame(): width", 16, 20000));
-                o.height = int(intArg(wh[1], "frame(): height", 16, 20000));
-            }
-            if (!bounds.is_none()) {
-                const py::sequence b = bounds.cast<py::sequence>();
-                if (py::len(b) != 4)
-                    throw Error("frame(): bounds: expected (x0, y0, x1, y1)");
-                o.bounds = QRectF(QPointF(realArg(b[0], "frame(): x0", -1e300, 1e300),
-                                          realArg(b[1], "frame(): y0", -1e300, 1e300)),
-                                  QPointF(realArg(b[2], "frame(): x1", -1e300, 1e300),
-                                          realArg(b[3], "frame(): y1", -1e300, 1e300)));
-            }
+            figureSizeArg(size, "frame()", o);
+            if (!bounds.is_none())
+                o.bounds = rectArg(bounds, "frame()", "bounds");
             const double t = realArg(time, "time", 0, AnimationSpec::maxDuration);
             o.captionSuffix = " — " + animationCaption(a, t);
             ensureGuiApplication();
@@ -126,30 +139,16 @@ void defineDensity(py::module_ &m)
            const py::object &seed, const py::object &threads, const py::object &bounds) {
             AttractorItem &a = h.attractor();
             FigureOptions o;
-            if (!size.is_none()) {
-                if (!py::isinstance<py::sequence>(size) || py::isinstance<py::str>(size) ||
-                    py::len(size) != 2)
-                    throw Error("density(): size: expected (width, height) in pixels");
-                const py::sequence wh = size;
-                o.width = int(intArg(wh[0], "density(): width", 16, 20000));
-                o.height = int(intArg(wh[1], "density(): height", 16, 20000));
-            }
+            figureSizeArg(size, "density()", o);
             o.samples = std::uint64_t(realArg(samples, "density(): samples", 1, 1e12));
             if (!seed.is_none())
                 o.seed = std::uint64_t(intArg(seed, "density(): seed", 0, (1LL << 62)));
             if (!threads.is_none())
                 o.threads = int(intArg(threads, "density(): threads", 0, 256));
             if (!bounds.is_none()) {
-                const py::sequence b = bounds.cast<py::sequence>();
-                if (py::len(b) != 4)
-                    throw Error("density(): bounds: expected (x0, y0, x1, y1)");
-                const double x0 = realArg(b[0], "density(): x0", -1e300, 1e300);
-                const double y0 = realArg(b[1], "density(): y0", -1e300, 1e300);
-                const double x1 = realArg(b[2], "density(): x1", -1e300, 1e300);
-                const double y1 = realArg(b[3], "density(): y1", -1e300, 1e300);
-                if (!(x1 > x0) || !(y1 > y0))
+                o.bounds = rectArg(bounds, "density()", "bounds");
+                if (!(o.bounds.width() > 0) || !(o.bounds.height() > 0))
                     throw Error("density(): bounds: expected x0 < x1 and y0 < y1");
-                o.bounds = QRectF(QPointF(x0, y0), QPointF(x1, y1));
             }
             o.format = QStringLiteral("exr");
             RawDensity raw;
@@ -188,9 +187,6 @@ void defineDensity(py::module_ &m)
             const QString file = pathArg(path, "write_density()");
             if (rgba.ndim() != 3 || rgba.shape(2) != 4 || rgba.shape(0) < 1 || rgba.shape(1) < 1)
                 throw Error("write_density(): rgba: expected an array (height, width, 4)");
-            const py::sequence wd = world.cast<py::sequence>();
-            if (py::len(wd) != 4)
-                throw Error("write_density(): world: expected (x0, y0, x1, y1)");
             RawDensity raw;
             raw.density.frame.height = int(rgba.shape(0));
             raw.density.frame.width = int(rgba.shape(1));
@@ -201,11 +197,7 @@ void defineDensity(py::module_ &m)
                     throw Error("write_density(): rgba has a negative or non-finite value");
                 raw.density.rgba[i] = float(src[i]);
             }
-            const QPointF a(realArg(wd[0], "write_density(): x0", -1e300, 1e300),
-                            realArg(wd[1], "write_density(): y0", -1e300, 1e300));
-            const QPointF b(realArg(wd[2], "write_density(): x1", -1e300, 1e300),
-                            realArg(wd[3], "write_density(): y1", -1e300, 1e300));
-            raw.info.world = QRectF(a, b);
+            raw.info.world = rectArg(world, "write_density()", "world");
             raw.info.what = caption.is_none() ? QString() : toQString(caption, "caption");
             raw.info.metadata = itemFigureMetadata(h.project->get(), h.get());
             const QString suffix = QFileInfo(file).suffix().toLower();

@@ -354,14 +354,7 @@ void defineItemClass(py::module_ &m)
                const py::object &depth, const py::object &samples, const py::object &threads) {
                 AttractorItem &item = h.attractor();
                 FigureOptions o;
-                if (!size.is_none()) {
-                    if (!py::isinstance<py::sequence>(size) || py::isinstance<py::str>(size)
-                        || py::len(size) != 2)
-                        throw Error("render(): size: expected (width, height) in pixels");
-                    const py::sequence wh = size;
-                    o.width = int(intArg(wh[0], "render(): width", 16, 20000));
-                    o.height = int(intArg(wh[1], "render(): height", 16, 20000));
-                }
+                figureSizeArg(size, "render()", o);
                 if (!depth.is_none())
                     o.depth = int(intArg(depth, "render(): depth", 0, 64));
                 if (!samples.is_none())

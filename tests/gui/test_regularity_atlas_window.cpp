@@ -50,8 +50,8 @@ private slots:
         QStandardPaths::setTestModeEnabled(true);
         if (qEnvironmentVariableIsSet("AWB_PYTHON_UNUSABLE"))
             QSKIP("the Python module cannot run in this build");
-        if (RegularityAtlasWindow::modulePath().isEmpty())
-            QSKIP("the package attractor_workbench is not built beside the tests");
+        QVERIFY2(!RegularityAtlasWindow::modulePath().isEmpty(),
+                 "the package attractor_workbench is not built beside the tests");
         QSettings().remove(QStringLiteral("preferences"));
     }
 

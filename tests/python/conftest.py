@@ -160,7 +160,7 @@ def free_port():
 @pytest.fixture(scope="session")
 def scheduler(tmp_path_factory):
     """A real Dask scheduler and two single-threaded workers (separate processes): a client."""
-    distributed = pytest.importorskip("distributed", reason="python3-distributed is missing")
+    import distributed   # python3-distributed, installed by scripts/setup.sh
     port = free_port()
     address = f"tcp://127.0.0.1:{port}"
     env = subprocess_env()

@@ -16,7 +16,6 @@ import pytest
 
 from conftest import FOUR_POINT, FOUR_POINT_FILE, subprocess_env
 
-pytest.importorskip("distributed", reason="python3-distributed is not installed")
 
 SIX_POINT_MASK = "v, 0, w, 0, 1/2 - w - v, 1, 1/2 - w - v, 0, w, 0, v"
 

@@ -13,7 +13,6 @@ import pytest
 
 from conftest import EXAMPLES, subprocess_env
 
-pytest.importorskip("distributed", reason="python3-distributed is not installed")
 
 SIERPINSKI = EXAMPLES / "000-fig11-sierpinski-with-control-points.awb"
 

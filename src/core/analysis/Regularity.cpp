@@ -194,6 +194,13 @@ std::string Regularity::smoothnessLabel() const
     return "C^" + std::to_string(smoothness);
 }
 
+int smoothnessVerdict(bool applies, double lower, double upper, int k)
+{
+    if (!applies || upper < k)
+        return -1;
+    return lower > k ? 1 : 0;
+}
+
 std::vector<double> trimmedMask(std::vector<double> c)
 {
     const double scale = std::accumulate(c.begin(), c.end(), 0.0,

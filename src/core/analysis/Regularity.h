@@ -85,6 +85,12 @@ struct Regularity {
 };
 
 // The mask without its leading and trailing zeros (below 1e-15 of its l1 norm).
+// The verdict on "C^k" from certified bounds [lower, upper] on the Hölder exponent: +1
+// certified (lower > k), -1 certified not (upper < k, or no member: applies false), 0 the
+// bounds cannot tell (r = k, or too close within the budget). regularity-interval and the
+// regularity atlas decide with it.
+int smoothnessVerdict(bool applies, double lower, double upper, int k);
+
 std::vector<double> trimmedMask(std::vector<double> mask);
 // InputError unless arity >= 2 and every coefficient is finite (the mask analyses' input).
 void requireMask(const std::vector<double> &mask, int arity);

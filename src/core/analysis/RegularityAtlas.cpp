@@ -23,13 +23,7 @@ void require(bool ok, const std::string &message)
 
 int atlasVerdict(const AtlasRow &row, int k)
 {
-    if (!row.applies)
-        return -1;
-    if (row.lower > k)
-        return 1;
-    if (row.upper < k)
-        return -1;
-    return 0;
+    return smoothnessVerdict(row.applies, row.lower, row.upper, k);
 }
 
 RegularityOptions atlasRegularityOptions(const AtlasOptions &options)

@@ -35,13 +35,7 @@ public:
         ++m_done;
         if (m_options.progress)
             m_options.progress(m_out.samples, std::min(1.0, m_done / m_expected));
-        if (!r.applies)
-            return -1;
-        if (s.lower > m_k)
-            return 1;
-        if (s.upper < m_k)
-            return -1;
-        return 0;
+        return smoothnessVerdict(r.applies, s.lower, s.upper, m_k);
     }
 
     bool cancelled() const { return m_options.cancel && m_options.cancel->load(); }
