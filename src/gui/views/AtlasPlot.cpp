@@ -6,6 +6,7 @@
 #include <QHelpEvent>
 #include <QLabel>
 #include <QMouseEvent>
+#include <QTimer>
 #include <QToolTip>
 #include <QVBoxLayout>
 
@@ -122,7 +123,15 @@ void AtlasPlot::addRows(const std::vector<AtlasRow> &rows,
     m_rows.insert(m_rows.end(), rows.begin(), rows.end());
     m_cellSizes.insert(m_cellSizes.end(), cells.begin(), cells.end());
     m_cellSizes.resize(m_rows.size());
-    redraw();
+    // Rows arrive a task at a time, thousands of them in a large atlas: the chart is drawn
+    // again at most ten times a second, not once per task.
+    if (!m_redrawPending) {
+        m_redrawPending = true;
+        QTimer::singleShot(100, this, [this] {
+            if (m_redrawPending)
+                redraw();
+        });
+    }
 }
 
 void AtlasPlot::finish(const std::vector<AtlasRow> &rows,
@@ -138,6 +147,7 @@ void AtlasPlot::finish(const std::vector<AtlasRow> &rows,
 
 void AtlasPlot::redraw()
 {
+    m_redrawPending = false;
     m_plot->clearGraphs();
     m_plot->clearItems();
     m_cells->rects.clear();

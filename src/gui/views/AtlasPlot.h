@@ -64,6 +64,7 @@ private:
     std::vector<AtlasRow> m_rows;
     std::vector<std::vector<double>> m_cellSizes;
     std::vector<AtlasRun> m_runs;
+    bool m_redrawPending = false;
 };
 
 } // namespace awb
