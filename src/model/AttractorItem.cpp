@@ -251,7 +251,7 @@ const PropertyTable &AttractorItem::attractorProperties()
             // number.
             .adjust([](const AttractorItem &item, const AlgorithmSpec &a, ParameterInfo &i) {
                 i.minimum = 0;
-                i.maximum = std::max(a.depth, AlgorithmSpec::maxDepthFor(item.mapCount()));
+                i.maximum = std::max(a.depth, AlgorithmSpec::maxDepthFor(item.branching()));
             });
         algorithm.integer("algorithm.samples", &AlgorithmSpec::samples)
             .label(QT_TR_NOOP("Samples"))
@@ -532,7 +532,7 @@ void AttractorItem::checkLoaded(const FieldReader &fields) const
                             : tr("point set %1 has %2 points; an item takes at most %3 per set")
                                   .arg(set + 1).arg(n).arg(maxControlPoints));
     }
-    fields.require(m_algorithm.check(mapCount()), "algorithm");
+    fields.require(m_algorithm.check(branching()), "algorithm");
     fields.require(checkStartSet(m_startSet), "start_set");
     // Lifted start points must have the lifted space's number of coordinates.
     if (m_startSet.kind == StartSetSpec::Kind::Lifted)

@@ -88,7 +88,7 @@ public:
     bool setStartSet(const StartSetSpec &startSet, int gesture = 0);
 
     const AlgorithmSpec &algorithm() const { return m_algorithm; }
-    MaybeProblem checkAlgorithm(const AlgorithmSpec &a) const { return a.check(mapCount()); }
+    MaybeProblem checkAlgorithm(const AlgorithmSpec &a) const { return a.check(branching()); }
     // The checks of every kind's spec: its own (`own`, its field under `prefix`), then the
     // algorithm's depth bound with the number of maps the spec makes.
     MaybeProblem checkWithMaps(const MaybeProblem &own, int maps, const QString &prefix = {}) const
@@ -103,6 +103,9 @@ public:
 
     // The number of maps the inputs ask for, known without building the IFS (-1: unknown).
     virtual int mapCount() const = 0;
+    // The most images one image makes per level, which bounds the depth: the maps, or the
+    // most arcs leaving one state of an automaton (CifsItem).
+    virtual int branching() const { return mapCount(); }
     // Coordinates of control points and start-set vertices: 2 (plane curves) or 3 (surfaces).
     virtual int pointDimension() const { return 2; }
     // Whether points may be inserted into or removed from point set `set` (a surface's net is

@@ -146,6 +146,9 @@ public:
     // "children" are handled by ProjectIO. read() throws LoadError.
     void write(QJsonObject &json) const;
     void read(const FieldReader &fields);
+    // The fields of a file written by an older version, in this version's form (ProjectIO
+    // reads these); the default keeps them as they are.
+    virtual QJsonObject upgradedFields(const QJsonObject &json) const { return json; }
     // Checks that need all fields read (e.g. depth against the number of maps). Throws
     // LoadError.
     virtual void checkLoaded(const FieldReader &fields) const;

@@ -3,6 +3,9 @@
 
 #include "model/ItemAnalysisJson.h"
 
+#include "model/AutomatonAnalysisJson.h"
+#include "model/CifsItem.h"
+
 #include "core/analysis/Geometry.h"
 #include "core/analysis/HausdorffBracket.h"
 #include "core/analysis/Spectrum.h"
@@ -127,6 +130,9 @@ QJsonObject analyseItemJson(const AttractorItem *item, Regularity *regularity)
     QJsonObject o;
     o["name"] = item->name();
     o["type"] = item->type();
+    // An automaton's contraction, also when it has no attractor (issue 46).
+    if (const auto *cifs = qobject_cast<const CifsItem *>(item))
+        o["automaton"] = automatonAnalysisJson(*cifs);
     auto d = item->derivedIfs();
     if (!d) {
         o["error"] = item->derivedError();

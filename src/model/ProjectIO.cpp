@@ -499,15 +499,18 @@ std::unique_ptr<Item> ProjectIO::readItem(const QJsonValue &value, const QString
 {
     if (!value.isObject())
         throw ItemError{label, {}, {{}, tr("expected an object")}};
-    const FieldReader r(value.toObject());
+    const FieldReader head(value.toObject());
     QString name;
     try {
-        name = r.string("name");
-        const QString type = r.string("type");
+        name = head.string("name");
+        const QString type = head.string("type");
         std::unique_ptr<Item> item = ItemRegistry::instance().create(type);
         if (!item)
-            r.fail("type", tr("unknown item type %1; this version knows %2")
-                               .arg(quoted(type), ItemRegistry::instance().types().join(", ")));
+            head.fail("type", tr("unknown item type %1; this version knows %2")
+                                  .arg(quoted(type), ItemRegistry::instance().types().join(", ")));
+        const FieldReader r(item->upgradedFields(value.toObject()));
+        r.string("name");
+        r.string("type");
         item->read(r);
         item->checkLoaded(r);
         if (checkAnimation)

@@ -1,0 +1,25 @@
+#pragma once
+// What `attractor-cli analyse --json`, Python's Item.analyse(), the Analysis dock and the
+// printed sheet say of an automaton item (layer 2, model): for a controlled IFS (CifsItem) its
+// constrained joint spectral radius, exact where an invariant polytope of the lifted arcs
+// closes, the spectra of its simple cycles and the Lyapunov exponent of random iteration
+// (core/analysis/CifsAnalysis.h).
+
+#include <QJsonObject>
+#include <QStringList>
+
+namespace awb {
+
+class CifsItem;
+
+// {"states", "arcs", "constrained_jsr": {"lower", "upper", "exact", "word", "method",
+// "lifted_dimension"}, "cycles": [{"path", "arcs", "eigenvalues", "spectral_radius",
+// "per_arc"}], "cycles_complete", "lyapunov_exponent", "contractive",
+// "contractive_on_average"}; {"error": why} for an automaton that cannot be analysed.
+QJsonObject automatonAnalysisJson(const CifsItem &item);
+
+// The same in a few lines for people: the radius and how it is known, the Lyapunov exponent,
+// the cycles (the first `cycles` of them; 0: none).
+QStringList automatonSummary(const CifsItem &item, int cycles = 0);
+
+} // namespace awb
