@@ -98,7 +98,12 @@ QStringList automatonSummary(const CifsItem &item, int cycles)
     const auto a = item.automatonAnalysis(&error);
     if (!a)
         return {error};
-    const CifsSpec &s = item.spec();
+    return automatonSummary(item.spec(), *a, cycles);
+}
+
+QStringList automatonSummary(const CifsSpec &s, const CifsAnalysis &analysis, int cycles)
+{
+    const CifsAnalysis *a = &analysis;
     QStringList lines;
     if (a->exact())
         lines << tr("constrained JSR ρ = %1 exactly (invariant polytope; extremal cycle %2)")

@@ -11,6 +11,8 @@
 namespace awb {
 
 class CifsItem;
+struct CifsAnalysis;
+struct CifsSpec;
 
 // {"states", "arcs", "constrained_jsr": {"lower", "upper", "exact", "word", "method",
 // "lifted_dimension"}, "cycles": [{"path", "arcs", "eigenvalues", "spectral_radius",
@@ -21,5 +23,7 @@ QJsonObject automatonAnalysisJson(const CifsItem &item);
 // The same in a few lines for people: the radius and how it is known, the Lyapunov exponent,
 // the cycles (the first `cycles` of them; 0: none).
 QStringList automatonSummary(const CifsItem &item, int cycles = 0);
+// The same of an analysis computed elsewhere (the window's worker thread).
+QStringList automatonSummary(const CifsSpec &spec, const CifsAnalysis &analysis, int cycles);
 
 } // namespace awb

@@ -439,24 +439,48 @@ DerivedIfs CifsItem::computeIfs() const
         throw InputError(tr("a controlled IFS draws its arcs by their own weights (\"arcs\"): "
                             "leave the algorithm's probabilities empty")
                              .toStdString());
-    const auto cifs = std::make_shared<const Cifs>(m_spec.toCore());
-    const CifsCheck check = checkCifs(*cifs);  // validates: a state without arcs, ...
-    if (!check.contractive)
-        throw InputError(check.message);
     std::vector<int> drawn;
     if (m_spec.drawn == CifsSpec::allStates)
-        for (int q = 0; q < int(cifs->states.size()); ++q)
+        for (int q = 0; q < int(m_spec.states.size()); ++q)
             drawn.push_back(q);
     else
         drawn.push_back(m_spec.stateIndex(m_spec.drawn));
+    Cifs core = m_spec.toCore();
+    // A state being built (no arc leaves it yet) that the drawn states do not reach does not
+    // stop the picture: it gets a collapsing self-loop after the real arcs (whose indices, the
+    // addresses and colours, stay), never walked.
+    std::vector<bool> reached(core.states.size(), false), leaves(core.states.size(), false);
+    std::vector<int> queue = drawn;
+    for (int q : drawn)
+        reached[size_t(q)] = true;
+    for (const CifsTransition &t : core.transitions)
+        leaves[size_t(t.from)] = true;
+    while (!queue.empty()) {
+        const int q = queue.back();
+        queue.pop_back();
+        for (const CifsTransition &t : core.transitions)
+            if (t.from == q && !reached[size_t(t.to)]) {
+                reached[size_t(t.to)] = true;
+                queue.push_back(t.to);
+            }
+    }
+    for (int q = 0; q < int(core.states.size()); ++q)
+        if (!reached[size_t(q)] && !leaves[size_t(q)]) {
+            const int n = core.states[size_t(q)].dim();
+            core.addTransition("-", q, q, Mat::Constant(n, n, 1.0 / n));
+        }
+    const auto cifs = std::make_shared<const Cifs>(std::move(core));
+    const CifsCheck check = checkCifs(*cifs);  // validates: a drawn state without arcs, ...
+    if (!check.contractive)
+        throw InputError(check.message);
     const auto stacking = std::make_shared<const Stacking>(stackingOf(*cifs));
     DerivedIfs out;
     bool square = true;
-    for (const CifsTransition &t : cifs->transitions)
-        square = square && t.S.rows() == t.S.cols();
-    for (const CifsTransition &t : cifs->transitions)
+    for (const CifsArcSpec &a : m_spec.arcs)
+        square = square && a.S.rows() == a.S.cols();
+    for (const CifsArcSpec &a : m_spec.arcs)
         if (square)
-            out.S.real.push_back(t.S);
+            out.S.real.push_back(a.S);
     if (!square)
         out.S.unavailable = tr("arcs between states of different dimensions have rectangular "
                                "matrices: see the automaton's analysis");

@@ -229,15 +229,21 @@ void TestCifsItem::editsAreOneUndoStepEach()
         [&] { QCOMPARE(fern->controlPointSetCount(), 3); },
         [&] { QCOMPARE(fern->controlPointSetCount(), 2); });
     QVERIFY(fern->setSpec(s));
-    // The new state has no arc: the item says so and keeps its inputs.
+    // The new state has no arc yet: the fern, which does not reach it, is still drawn; drawn
+    // itself (all states), the item says why it cannot be.
+    QVERIFY2(fern->derivedIfs(), qPrintable(fern->derivedError()));
+    QCOMPARE(fern->derivedIfs()->S.count(), 7);
+    QVERIFY(fern->setParameter("state", CifsSpec::allStates));
     QVERIFY(!fern->derivedIfs());
-    QVERIFY2(fern->derivedError().contains("S1"), qPrintable(fern->derivedError()));
+    QVERIFY2(fern->derivedError().contains("'S1' has no outgoing arc"),
+             qPrintable(fern->derivedError()));
     CifsSpec t = fern->spec();
     t.arcs.push_back({t.freshArcName(), 2, 2, CifsSpec::defaultArcMatrix(2, 2, 0), 1.0});
     test::roundTrip(
         p, [&] { QVERIFY(fern->setSpec(t)); },
         [&] { QVERIFY2(fern->derivedIfs(), qPrintable(fern->derivedError())); },
         [&] { QVERIFY(!fern->derivedIfs()); });
+    QVERIFY(fern->setParameter("state", "Fern"));
     // The drawn state through the declared choice; a state's control point by the point set.
     test::roundTrip(
         p, [&] { QVERIFY(fern->setParameter("state", "Sierpinski")); },

@@ -122,17 +122,22 @@ CifsAnalysis analyseCifs(const Cifs &cifs, const CifsAnalysisOptions &options)
         JsrOptions jo;
         jo.timeBudget = options.timeBudget;
         jo.tolerance = 1e-9;
+        jo.cancel = options.cancel;
         a.bounds = jointSpectralRadius(lifted.matrices, jo);
         // The simple cycles are admissible products too (rounding aside: the polytope and
         // the branch and bound certify theirs).
         PolytopeOptions po;
         po.timeBudget = options.timeBudget;
         po.maxVertices = 1000;
+        po.cancel = options.cancel;
         a.polytope = invariantPolytope(lifted.matrices, po);
     } else if (lifted.dimension == 0) {
         a.bounds.upper = 0.0;
         a.bounds.converged = true;
     }
+    a.cancelled = options.cancel && options.cancel->load();
+    if (a.cancelled)
+        return a;
     // The drawn state of most items is state 0; a path from there meets what it can reach.
     a.lyapunovState = 0;
     if (options.lyapunovSteps > 0)

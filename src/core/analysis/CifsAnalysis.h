@@ -55,6 +55,7 @@ struct CifsAnalysisOptions {
     int maxCycles = 2000;         // simple cycles listed, at most
     long long lyapunovSteps = 200000;  // steps of the random path for the exponent
     std::uint64_t seed = 1;
+    const std::atomic<bool> *cancel = nullptr;  // set from another thread to stop early
 };
 
 struct CifsAnalysis {
@@ -74,6 +75,7 @@ struct CifsAnalysis {
     std::optional<double> lyapunov;
     int lyapunovState = 0;           // where the path started
     bool contractive() const { return upper() < 1.0; }
+    bool cancelled = false;
 };
 
 // Validates first (Cifs::validate()'s InputError). When the lifted space has more than

@@ -13,6 +13,8 @@
 #include "model/NumberFormat.h"
 #include "gui/views/SpectrumView.h"
 #include "model/AttractorItem.h"
+#include "model/AutomatonAnalysisJson.h"
+#include "model/CifsItem.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -110,6 +112,9 @@ QStringList FigureSheet::caption() const
                        : tr("samples = %1").arg(a->algorithm().samples));
     }
     lines << params.join(QStringLiteral(";  "));
+    // An automaton: what it contracts by (issue 46), one line each.
+    if (const auto *cifs = qobject_cast<const CifsItem *>(m_item))
+        lines << automatonSummary(*cifs, 0);
     return lines;
 }
 

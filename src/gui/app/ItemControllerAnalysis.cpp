@@ -7,9 +7,12 @@
 
 #include "core/analysis/Geometry.h"
 #include "core/analysis/HausdorffBracket.h"
+#include "core/analysis/Spectrum.h"
 #include "core/ifs/Attractor.h"
 #include "core/schemes/Scheme.h"
+#include "gui/app/FrameBudget.h"
 #include "gui/views/AnalysisCharts.h"
+#include "gui/views/AttractorView.h"
 #include "gui/views/RegularityPanel.h"
 #include "model/AttractorItem.h"
 #include "model/ExactCurve.h"

@@ -10,6 +10,7 @@
 #include "gui/app/PaletteDialog.h"
 #include "gui/app/PointExportDialog.h"
 #include "gui/app/PropertiesDock.h"
+#include "gui/app/AutomatonPanel.h"
 #include "gui/app/UserGuideDialog.h"
 #include "gui/app/WheelGuard.h"
 #include "gui/views/AnalysisCharts.h"
@@ -174,6 +175,7 @@ MainWindow::~MainWindow()
 {
     // The controller and the properties read the items: unbind before the project goes.
     m_animation->setItem(nullptr);
+    m_automaton->setItem(nullptr);
     m_controller->setItem(nullptr);
     m_properties->setItem(nullptr);
     // The project (a member) dies before the child widgets: detach the views that read it.
@@ -255,6 +257,13 @@ void MainWindow::createViews()
     // Address dock selects a sub-copy.
     m_address = new AddressPanel(m_controller, m_attractor);
     m_address->setObjectName(QStringLiteral("addressPanel"));
+    // A controlled IFS's automaton (issue 46): its graph and editor; its analysis is a tab of
+    // the Analysis dock.
+    m_automaton = new AutomatonPanel;
+    m_automaton->setObjectName(QStringLiteral("automatonPanel"));
+    m_charts->tabs()->addTab(m_automaton->analysisView(), tr("Automaton"));
+    connect(m_automaton, &AutomatonPanel::problem, this,
+            [this](const QString &message) { statusBar()->showMessage(message, 8000); });
     // Parameter animation (issue 16): keys of the current item, and its frames in the views.
     m_animation = new AnimationPanel;
     m_animation->setObjectName(QStringLiteral("animationPanel"));
@@ -452,6 +461,9 @@ void MainWindow::createDocks()
     QDockWidget *animation = dock(QStringLiteral("dockAnimation"), tr("Animation"), m_animation,
                                   Qt::RightDockWidgetArea);
     tabifyDockWidget(address, animation);
+    QDockWidget *automaton = dock(QStringLiteral("dockAutomaton"), tr("Automaton"), m_automaton,
+                                  Qt::RightDockWidgetArea);
+    tabifyDockWidget(animation, automaton);
     mats->raise();
     createPythonConsole();
     // A sensible first layout: side columns wide enough for their tables and plots.
@@ -476,6 +488,7 @@ void MainWindow::setCurrentItem(Item *item)
     m_current = item;
     m_controller->setItem(item);
     m_animation->setItem(item);
+    m_automaton->setItem(item);
     m_spectrum->setHighlightedMap(-1);
     m_matrices->setHighlightedMap(-1);
     updateCentralView();

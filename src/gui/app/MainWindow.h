@@ -31,6 +31,7 @@ namespace awb {
 
 class AddressPanel;
 class AnimationPanel;
+class AutomatonPanel;
 class AnalysisCharts;
 class AttractorView;
 class Item;
@@ -126,6 +127,7 @@ public:
     ValenceChart *valenceChart() const { return m_valenceChart; }
     AddressPanel *addressPanel() const { return m_address; }
     AnimationPanel *animationPanel() const { return m_animation; }
+    AutomatonPanel *automatonPanel() const { return m_automaton; }
     PropertiesWidget *propertiesWidget() const { return m_properties; }
     ItemController *controller() const { return m_controller; }
     QTreeView *projectTree() const { return m_tree; }
@@ -228,6 +230,7 @@ private:
     ValenceChart *m_valenceChart = nullptr;
     AddressPanel *m_address = nullptr;
     AnimationPanel *m_animation = nullptr;
+    AutomatonPanel *m_automaton = nullptr;
     PropertiesWidget *m_properties = nullptr;
     QTreeView *m_tree = nullptr;
     QUndoView *m_undoView = nullptr;
