@@ -5,12 +5,15 @@
 #include "core/ifs/Attractor.h"
 #include "core/flame/FlameChaos.h"
 #include "model/AttractorItem.h"
+#include "model/CifsItem.h"
+#include "core/ifs/Cifs.h"
 #include "model/FlameFile.h"
 #include "model/FlameItem.h"
 #include "model/Item.h"
 #include "model/ProjectIO.h"
 
 #include <QColor>
+#include <QJsonArray>
 #include <QFileInfo>
 
 #include <Eigen/LU>
@@ -161,6 +164,148 @@ void importAffineFlame(const FlameRead &r, const QString &name, const QString &f
                                                'g', 3);
 }
 
+// A flame whose xforms are all affine but whose xaos rows restrict which xform may follow which
+// (and whose final xform, if any, is affine): the controlled IFS it is (issue 46). State j holds
+// the points just drawn by xform j, A_j = f_j(union of A_i over the xforms i that may precede
+// j), so state j's arcs lead to those i, each carrying f_j. All states share one frame
+// triangle around flam3's camera, the maps written in its barycentric coordinates; a final
+// xform F, affine, moves the frame: F(lambda P) = lambda F(P). The arcs' weights make the
+// item's random iteration (a path drawn backwards from each state) the time reversal of
+// flam3's chain: P(i before j) = pi_i P(j | i) / pi_j with pi flam3's stationary law, so the
+// two draw the same measure, not only the same set.
+bool linearXaosFlame(const flame::Flame &f)
+{
+    for (const flame::FlameXform &x : f.xforms)
+        if (!affineXform(x))
+            return false;
+    return !f.finalXform || affineXform(*f.finalXform);
+}
+
+void importXaosFlame(const FlameRead &r, const QString &name, const QString &file,
+                     ImportedItems &out)
+{
+    const flame::Flame &f = r.flame;
+    const int n = int(f.xforms.size());
+    // flam3's chain: P(j | i) = w_j xaos(i, j) / sum_k w_k xaos(i, k).
+    Mat P = Mat::Zero(n, n);
+    for (int i = 0; i < n; ++i) {
+        double z = 0;
+        for (int j = 0; j < n; ++j)
+            z += (P(i, j) = std::max(0.0, f.xforms[size_t(j)].weight)
+                            * std::max(0.0, f.xforms[size_t(i)].xaosTo(size_t(j))));
+        if (z > 0)
+            P.row(i) /= z;
+    }
+    // Its stationary law, by the lazy chain (it converges for periodic chains too).
+    RowVec pi = RowVec::Constant(n, 1.0 / n);
+    for (int k = 0; k < 4000; ++k)
+        pi = 0.5 * (pi + pi * P);
+    // The states that keep an arc: an xform no other may precede is never drawn again.
+    std::vector<bool> alive(size_t(n), true);
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (int j = 0; j < n; ++j) {
+            if (!alive[size_t(j)])
+                continue;
+            bool arc = false;
+            for (int i = 0; i < n && !arc; ++i)
+                arc = alive[size_t(i)] && P(i, j) > 0;
+            if (!arc) {
+                alive[size_t(j)] = false;
+                changed = true;
+            }
+        }
+    }
+    if (std::none_of(alive.begin(), alive.end(), [](bool a) { return a; })) {
+        out.problems << place(file, r.line, r.column)
+                            + FlameTr::tr("flame '%1': its xaos rows let no xform follow another")
+                                  .arg(name);
+        return;
+    }
+    const RasterFrame camera = flame::flameFrame(f);
+    // The frame: a triangle holding the camera's rectangle (y up, the application's).
+    const double w = camera.x1 - camera.x0, h = camera.y1 - camera.y0;
+    Mat frame(3, 2);
+    frame << camera.x0 - w / 2, camera.y0, camera.x1 + w / 2, camera.y0,
+        (camera.x0 + camera.x1) / 2, camera.y1 + h;
+    Mat drawnFrame = frame;
+    if (f.finalXform) {
+        const AffineMap F = mirrored(xformMap(*f.finalXform));
+        drawnFrame = (frame * F.A).rowwise() + F.b;
+    }
+    QJsonArray points;
+    for (Eigen::Index k = 0; k < drawnFrame.rows(); ++k)
+        points.append(QJsonArray{drawnFrame(k, 0), drawnFrame(k, 1)});
+    const auto stateName = [&](int j) {
+        const QString own = QString::fromStdString(f.xforms[size_t(j)].name).trimmed();
+        return own.isEmpty() || own == CifsSpec::allStates ? QStringLiteral("x%1").arg(j + 1)
+                                                           : own;
+    };
+    QJsonArray states, arcs, colours;
+    for (int j = 0; j < n; ++j)
+        if (alive[size_t(j)])
+            states.append(QJsonObject{{"name", stateName(j)}, {"control_points", points}});
+    for (int j = 0; j < n; ++j) {
+        if (!alive[size_t(j)])
+            continue;
+        Mat S;
+        try {
+            S = barycentricMatrix(mirrored(xformMap(f.xforms[size_t(j)])), frame, frame);
+        } catch (const InputError &e) {
+            out.problems << place(file, r.line, r.column)
+                                + FlameTr::tr("flame '%1': %2").arg(name, QString::fromUtf8(e.what()));
+            return;
+        }
+        QJsonArray rows;
+        for (Eigen::Index k = 0; k < S.rows(); ++k)
+            rows.append(QJsonArray{S(k, 0), S(k, 1), S(k, 2)});
+        const flame::FlameColour &c = f.palette[std::size_t(
+            std::clamp(int(f.xforms[size_t(j)].colour * 255.0 + 0.5), 0, 255))];
+        for (int i = 0; i < n; ++i)
+            if (alive[size_t(i)] && P(i, j) > 0) {
+                arcs.append(QJsonObject{{"name", stateName(j) + " after " + stateName(i)},
+                                        {"from", stateName(j)},
+                                        {"to", stateName(i)},
+                                        {"matrix", rows},
+                                        {"weight", std::max(1e-300, pi(i) * P(i, j))}});
+                colours.append(QColor::fromRgbF(float(c.r), float(c.g), float(c.b)).name());
+            }
+    }
+    if (arcs.size() > kMaxMaps) {
+        out.problems << place(file, r.line, r.column)
+                            + FlameTr::tr("flame '%1': its xaos rows make %2 arcs between its "
+                                          "xforms, more than the %3 a controlled IFS may have")
+                                  .arg(name).arg(arcs.size()).arg(kMaxMaps);
+        return;
+    }
+    const QJsonObject json{
+        {"type", "cifs"},
+        {"name", name},
+        {"states", states},
+        {"arcs", arcs},
+        {"state", CifsSpec::allStates},
+        {"algorithm",
+         QJsonObject{{"mode", "random"},
+                     {"samples", qint64(std::clamp(flame::flameSamples(f), 2e6, 2e7))},
+                     {"seed", 1},
+                     {"depth", 6}}},
+        {"style", QJsonObject{{"color_by", "map"}, {"colors", colours}}}};
+    try {
+        auto item = std::make_unique<CifsItem>();
+        const FieldReader fields(json, QString());
+        item->read(fields);
+        item->checkLoaded(fields);
+        item->setName(name);
+        if (!item->derivedIfs())
+            out.warnings << place(file, r.line, r.column)
+                                + FlameTr::tr("flame '%1': %2").arg(name, item->derivedError());
+        out.items.push_back(std::move(item));
+    } catch (const LoadError &error) {
+        out.problems << place(file, r.line, r.column)
+                            + FlameTr::tr("flame '%1': %2 (%3)").arg(name, error.message, error.field);
+    }
+}
+
 // Any other flame as a flame item: everything flam3 draws is kept.
 void importFlameItem(const FlameRead &r, const QString &name, const QString &file,
                      ImportedItems &out)
@@ -206,6 +351,8 @@ ImportedItems importFlameText(const QByteArray &text, const QString &fileName)
             name = FlameTr::tr("flame %1").arg(k + 1);
         if (affineFlame(r.flame))
             importAffineFlame(r, name, file, out);
+        else if (linearXaosFlame(r.flame))
+            importXaosFlame(r, name, file, out);
         else
             importFlameItem(r, name, file, out);
     }

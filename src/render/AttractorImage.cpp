@@ -139,7 +139,9 @@ bool accumulatePicture(const RenderRequest &r, int depth, std::uint64_t samples,
         stats = r.chaos.run(job, density, control);
         return !(stats.cancelled || (control.cancel && control.cancel->load()));
     }
-    const int maps = std::max(1, r.ifs->size());
+    // An automaton's address symbols are its arcs, up to the byte's range: colour them all
+    // (its `ifs` has no maps).
+    const int maps = r.iterate ? kMaxMaps : std::max(1, r.ifs->size());
     colours = colourTable(r, colourPrefix(r, depth, maps), maps);
     if (r.iterate) {
         // An automaton: its own iteration into the engine's rasteriser, one sink per thread.
