@@ -1,7 +1,11 @@
 #include "model/AutomatonAnalysisJson.h"
 
 #include "core/analysis/CifsAnalysis.h"
+#include "core/analysis/JointSpectralRadius.h"
+#include "core/analysis/Spectrum.h"
+#include "core/ifs/Bcifs.h"
 #include "core/ifs/Cifs.h"
+#include "model/BcifsJunctionItem.h"
 #include "model/CifsItem.h"
 #include "model/NumberFormat.h"
 
@@ -26,16 +30,6 @@ QJsonArray arcNames(const CifsSpec &s, const std::vector<int> &arcs)
     return out;
 }
 
-// w = r^k with r shortest: a product's spectral radius per letter is its root's.
-std::vector<int> primitiveRoot(const std::vector<int> &w)
-{
-    const size_t n = w.size();
-    for (size_t p = 1; p < n; ++p)
-        if (n % p == 0 && std::equal(w.begin() + std::ptrdiff_t(p), w.end(), w.begin()))
-            return {w.begin(), w.begin() + std::ptrdiff_t(p)};
-    return w;
-}
-
 QString pathText(const CifsSpec &s, int from, const std::vector<int> &arcs)
 {
     QString out = s.states.at(size_t(from)).name;
@@ -47,7 +41,92 @@ QString pathText(const CifsSpec &s, int from, const std::vector<int> &arcs)
 
 QString number(double x) { return QString::number(x, 'g', 10); }
 
+QJsonArray rowsJson(const Mat &M)
+{
+    QJsonArray rows;
+    for (Eigen::Index r = 0; r < M.rows(); ++r) {
+        QJsonArray row;
+        for (Eigen::Index c = 0; c < M.cols(); ++c)
+            row.append(M(r, c));
+        rows.append(row);
+    }
+    return rows;
+}
+
+QJsonValue complexJson(const Complex &z)
+{
+    return std::abs(z.imag()) <= 1e-12 * std::max(1.0, std::abs(z.real()))
+               ? QJsonValue(z.real())
+               : QJsonValue(QJsonArray{z.real(), z.imag()});
+}
+
+// Eigenvalues and (right, column convention) eigenvectors of a square matrix: the eigenvalue
+// 1's vector scaled to sum 1 (a barycentric fixed point), the others to unit length with their
+// largest component positive.
+QJsonObject spectrumJson(const Mat &T)
+{
+    const Spectrum s = spectrum(T);
+    QJsonArray values, vectors;
+    for (size_t k = 0; k < s.values.size(); ++k) {
+        values.append(complexJson(s.values[k]));
+        CVec v = s.vectors[k];
+        const Complex sum = v.sum();
+        if (std::abs(s.values[k] - Complex(1.0)) < 1e-9 && std::abs(sum) > 1e-9) {
+            v /= sum;
+        } else {
+            Eigen::Index big = 0;
+            v.cwiseAbs().maxCoeff(&big);
+            v *= std::abs(v(big)) / v(big) / v.norm();
+        }
+        QJsonArray vector;
+        for (Eigen::Index i = 0; i < v.size(); ++i)
+            vector.append(complexJson(v(i)));
+        vectors.append(vector);
+    }
+    return {{"eigenvalues", values}, {"eigenvectors", vectors}};
+}
+
+QJsonObject squareJson(const Mat &T)
+{
+    QJsonObject o = spectrumJson(T);
+    o["matrix"] = rowsJson(T);
+    return o;
+}
+
+// T^l = [[V^l; 0] | X] and T^r = [Y | [0; V^r]] with one free column each (003 §4.1, §5).
+QJsonObject blockJson(const Mat &T, bool left)
+{
+    const Eigen::Index n = T.cols() - 1;
+    const Mat V = left ? Mat(T.topLeftCorner(n, n)) : Mat(T.bottomRightCorner(n, n));
+    QJsonObject block = spectrumJson(V);
+    block["matrix"] = rowsJson(V);
+    return {{"matrix", rowsJson(T)}, {"block", block}};
+}
+
 } // namespace
+
+QJsonObject junctionAnalysisJson(const BcifsJunctionItem &item)
+{
+    QJsonObject o;
+    o["convention"] = QStringLiteral("columns (003): T v = lambda v, T = S^T");
+    try {
+        if (item.spec().variant == JunctionSpec::Variant::CubicQuadratic) {
+            const JunctionMatrices m = cubicQuadraticMatrices(item.spec().free);
+            o["T_i"] = squareJson(m.Ti);
+            o["T_l"] = blockJson(m.Tl, true);
+            o["T_r"] = blockJson(m.Tr, false);
+        } else {
+            const RefinedMatrices m = refinedMatrices(item.spec().refined);
+            o["T_il"] = squareJson(m.Til);
+            o["T_ir"] = squareJson(m.Tir);
+            o["T_l"] = blockJson(m.Tl, true);
+            o["T_r"] = blockJson(m.Tr, false);
+        }
+    } catch (const std::exception &e) {
+        o["error"] = QString::fromStdString(e.what());
+    }
+    return o;
+}
 
 QJsonObject automatonAnalysisJson(const CifsItem &item)
 {
@@ -63,7 +142,9 @@ QJsonObject automatonAnalysisJson(const CifsItem &item)
     jsr["lower"] = a->lower();
     jsr["upper"] = std::isfinite(a->upper()) ? QJsonValue(a->upper()) : QJsonValue();
     jsr["exact"] = a->exact();
-    jsr["word"] = arcNames(s, primitiveRoot(a->exact() ? a->polytope.smp : a->bounds.product));
+    const std::vector<int> root = primitiveRoot(a->exact() ? a->polytope.smp : a->bounds.product);
+    jsr["word"] = root.size() <= 24 ? QJsonValue(arcNames(s, root)) : QJsonValue();
+    jsr["word_length"] = int(root.size());
     jsr["method"] = a->exact()
                         ? QStringLiteral("invariant polytope of the lifted arcs")
                         : QStringLiteral("cycles and Gripenberg's branch and bound on the lifted "
@@ -77,11 +158,19 @@ QJsonObject automatonAnalysisJson(const CifsItem &item)
         QJsonArray values;
         for (const Complex &z : c.eigenvalues)
             values.append(QJsonArray{z.real(), z.imag()});
-        cycles.append(QJsonObject{{"path", pathText(s, c.state, c.arcs)},
-                                  {"arcs", arcNames(s, c.arcs)},
-                                  {"eigenvalues", values},
-                                  {"spectral_radius", c.spectralRadius},
-                                  {"per_arc", c.perArc}});
+        QJsonObject cycle{{"path", pathText(s, c.state, c.arcs)},
+                          {"arcs", arcNames(s, c.arcs)},
+                          {"eigenvalues", values},
+                          {"spectral_radius", c.spectralRadius},
+                          {"per_arc", c.perArc}};
+        // The cycle's product in 003's column form T = (S_{t_m} .. S_{t_1})^T, whole: its
+        // eigenvalue 1 and fixed point too.
+        Mat M = Mat::Identity(Eigen::Index(s.states[size_t(c.state)].points.size()),
+                              Eigen::Index(s.states[size_t(c.state)].points.size()));
+        for (int t : c.arcs)
+            M = (s.arcs[size_t(t)].S * M).eval();
+        cycle["product"] = squareJson(M.transpose());
+        cycles.append(cycle);
     }
     o["cycles"] = cycles;
     o["cycles_complete"] = a->cyclesComplete;

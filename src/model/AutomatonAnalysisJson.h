@@ -10,6 +10,7 @@
 
 namespace awb {
 
+class BcifsJunctionItem;
 class CifsItem;
 struct CifsAnalysis;
 struct CifsSpec;
@@ -19,6 +20,12 @@ struct CifsSpec;
 // "per_arc"}], "cycles_complete", "lyapunov_exponent", "contractive",
 // "contractive_on_average"}; {"error": why} for an automaton that cannot be analysed.
 QJsonObject automatonAnalysisJson(const CifsItem &item);
+
+// A junction (003 §4.1, §5): the matrices in 003's column convention with their spectra --
+// "T_i" (cubic-quadratic; "T_il", "T_ir" refined) with eigenvalues and eigenvectors (T v =
+// lambda v; the eigenvalue 1's scaled to sum 1, the others to unit length), and "T_l", "T_r"
+// with their vertex blocks V^l (top left) and V^r (bottom right) and the blocks' spectra.
+QJsonObject junctionAnalysisJson(const BcifsJunctionItem &item);
 
 // The same in a few lines for people: the radius and how it is known, the Lyapunov exponent,
 // the cycles (the first `cycles` of them; 0: none).

@@ -4,6 +4,9 @@
 #include "model/ItemAnalysisJson.h"
 
 #include "model/AutomatonAnalysisJson.h"
+#include "model/BcifsJunctionItem.h"
+#include "model/BezierUnionItem.h"
+#include "core/analysis/InvariantPolytope.h"
 #include "model/CifsItem.h"
 
 #include "core/analysis/Geometry.h"
@@ -122,6 +125,39 @@ QJsonValue hausdorffToExact(const AttractorItem *item, const DerivedIfs &d)
                        {"curve", exact->label}};
 }
 
+// The JSR of the maps' linear parts (on the directions the iteration moves in): Gripenberg's
+// bounds, exact where an invariant polytope closes (the regularity analysis's two routes).
+QJsonObject jointSpectralRadiusJson(const Ifs &ifs)
+{
+    std::vector<Mat> A;
+    for (int i = 0; i < ifs.size(); ++i)
+        A.push_back(ifs.effectiveLinearPart(i));
+    JsrOptions jo;
+    jo.timeBudget = 1.0;
+    const JsrBounds b = jointSpectralRadius(A, jo);
+    PolytopeOptions po;
+    po.timeBudget = 1.0;
+    const PolytopeResult p = invariantPolytope(A, po);
+    const bool exact = p.closed;
+    // The product of the lower bound, 1-based; a long one (the branch and bound's deepest,
+    // not a cycle worth naming) only by its length.
+    const std::vector<int> root = primitiveRoot(exact ? p.smp : b.product);
+    QJsonArray word;
+    for (int k : root)
+        word.append(k + 1);
+    QJsonObject o{{"lower", exact ? p.lower : b.lower},
+                  {"upper", exact ? p.upper : b.upper},
+                  {"exact", exact},
+                  {"word", root.size() <= 24 ? QJsonValue(word) : QJsonValue()},
+                  {"word_length", int(root.size())},
+                  {"method", exact ? QStringLiteral("invariant polytope (certified)")
+                                   : QStringLiteral("Gripenberg's branch and bound")}};
+    if (!exact && !p.message.empty())
+        o["polytope"] = QString::fromStdString(p.message);
+    o["contractive"] = (exact ? p.upper : b.upper) < 1.0;
+    return o;
+}
+
 } // namespace
 
 // `regularity`, when given, receives the curve's regularity (its certificate for --certificate).
@@ -133,6 +169,8 @@ QJsonObject analyseItemJson(const AttractorItem *item, Regularity *regularity)
     // An automaton's contraction, also when it has no attractor (issue 46).
     if (const auto *cifs = qobject_cast<const CifsItem *>(item))
         o["automaton"] = automatonAnalysisJson(*cifs);
+    if (const auto *junction = qobject_cast<const BcifsJunctionItem *>(item))
+        o["junction"] = junctionAnalysisJson(*junction);
     auto d = item->derivedIfs();
     if (!d) {
         o["error"] = item->derivedError();
@@ -222,6 +260,10 @@ QJsonObject analyseItemJson(const AttractorItem *item, Regularity *regularity)
                 check.lyapunov ? QJsonValue(*check.lyapunov) : QJsonValue(QJsonValue::Null);
         }
     o["subdominant"] = subdominants;
+    // A union of Bézier curves (002 §6): its maps need not contract one by one, only jointly;
+    // the joint spectral radius of their linear parts says whether they do (issue 46).
+    if (qobject_cast<const BezierUnionItem *>(item) && d->ifs.size() > 0)
+        o["joint_spectral_radius"] = jointSpectralRadiusJson(d->ifs);
     // A mesh: its extraordinary vertices and the pieces of its IFS with condensation.
     if (const auto *mesh = qobject_cast<const SubdivisionMeshItem *>(item)) {
         const QJsonObject m = meshAnalysisJson(*mesh);

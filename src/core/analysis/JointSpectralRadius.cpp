@@ -374,4 +374,13 @@ JsrBounds jointSpectralRadius(const std::vector<Mat> &A, const JsrOptions &optio
     return out;
 }
 
+std::vector<int> primitiveRoot(const std::vector<int> &w)
+{
+    const std::size_t n = w.size();
+    for (std::size_t p = 1; p < n; ++p)
+        if (n % p == 0 && std::equal(w.begin() + std::ptrdiff_t(p), w.end(), w.begin()))
+            return {w.begin(), w.begin() + std::ptrdiff_t(p)};
+    return w;
+}
+
 } // namespace awb

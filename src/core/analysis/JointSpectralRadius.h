@@ -62,5 +62,8 @@ void requireMatrixFamily(const std::vector<Mat> &A);
 // for a well separated dominant eigenvalue, larger when the top eigenvalues cluster (a nearly
 // defective eigenvalue moves by ~ sqrt(eps)).
 double spectralRadiusOf(const Mat &M, double *margin = nullptr);
+// The shortest word r with w = r^k (a product's spectral radius per letter is its root's): the
+// lower bound's product is often a long power.
+std::vector<int> primitiveRoot(const std::vector<int> &w);
 
 } // namespace awb
