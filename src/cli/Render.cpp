@@ -37,6 +37,8 @@
 #include <QTemporaryDir>
 
 #include <QCommandLineParser>
+#include "model/ComplexBezierItem.h"
+
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -61,7 +63,11 @@ int render(const QStringList &args)
         parser.addOptions({{"item", CliTr::tr("The item to render (default: the first with an "
                                            "attractor)."),
                             "name"},
-                           {"out", CliTr::tr("Output file: .png, .svg, .pdf or .exr."), "file"}});
+                           {"out", CliTr::tr("Output file: .png, .svg, .pdf or .exr."), "file"},
+                           {"scaled", CliTr::tr("A complex Bézier curve of t = 1/2 + iy in the "
+                                                "scaled coordinates g(z, 1/(2y)) of 004 Thm "
+                                                "3.7.3, where it approaches the Takagi graph "
+                                                "(the item's \"scaled\", for this figure)")}});
         parser.addOptions(figureOptionList());
         parseOrFail(parser, args, 1);
         if (!parser.isSet("out"))
@@ -69,8 +75,18 @@ int render(const QStringList &args)
         const FigureOptions options = figureOptions(parser);
         Project project;
         load(project, parser.positionalArguments().first());
-        renderItemFigure(project, attractorItem(project, parser.value("item")), options,
-                     parser.value("out"));
+        AttractorItem *item = attractorItem(project, parser.value("item"));
+        if (parser.isSet("scaled")) {
+            auto *curve = qobject_cast<ComplexBezierItem *>(item);
+            if (!curve || !curve->scaledApplies())
+                throw Failure{CliTr::tr("--scaled draws a complex Bézier curve of t = 1/2 + iy "
+                                        "(y ≠ 0) with control points on the real axis; '%1' is "
+                                        "not one")
+                                  .arg(item->name()),
+                              2};
+            curve->setScaled(true);
+        }
+        renderItemFigure(project, item, options, parser.value("out"));
         out() << parser.value("out") << "\n";
         return 0;
     });

@@ -6,6 +6,7 @@
 #include "model/ProjectIO.h"
 #include "model/PropertyDeclaration.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace awb {
@@ -52,6 +53,19 @@ DerivedIfs complexBezierDerivedIfs(const Mat &P, std::complex<double> t)
     return out;
 }
 
+bool ComplexBezierItem::scaledApplies() const
+{
+    if (std::abs(m_t.real() - 0.5) > 1e-12 || std::abs(m_t.imag()) < 1e-12)
+        return false;
+    return std::all_of(m_points.begin(), m_points.end(),
+                       [](const Point &p) { return p.y == 0.0; });
+}
+
+bool ComplexBezierItem::setScaled(bool scaled)
+{
+    return setDeclared(*this, scaled, 0);
+}
+
 DerivedIfs ComplexBezierItem::computeIfs() const
 {
     DerivedIfs out = complexBezierDerivedIfs(toMatrix(m_points), m_t);
@@ -60,6 +74,24 @@ DerivedIfs ComplexBezierItem::computeIfs() const
     if (!report.hyperbolic)
         throw InputError(report.message);
     applyAlgorithm(out.ifs);
+    if (m_scaled && scaledApplies()) {
+        // g(z, 1/(2y)): the views' imaginary (second) coordinate divided by 2y. The control
+        // points and the start set lie on the real axis, which g keeps.
+        const double k = 1.0 / (2.0 * m_t.imag());
+        for (Projection &v : out.ifs.views) {
+            v.V.col(1) *= k;
+            v.c(1) *= k;
+        }
+        out.note = tr("Scaled coordinates g(z, 1/(2y)) = Re z + i Im z / (2y), y = %1 (004 "
+                      "eq. (3.40)): as y → 0 the curve approaches the Takagi graph x + i T(x) "
+                      "(Thm 3.7.3, Figs. 3.6–3.8). %2")
+                       .arg(m_t.imag(), 0, 'g', 6)
+                       .arg(out.note);
+    } else if (m_scaled) {
+        out.note = tr("Scaled coordinates apply to t = 1/2 + iy with y ≠ 0 and control points "
+                      "on the real axis (004 Thm 3.7.3); drawn unscaled. %1")
+                       .arg(out.note);
+    }
     return out;
 }
 
@@ -85,6 +117,21 @@ const PropertyTable &ComplexBezierItem::declaration()
                            throw LoadError{where, tr("expected [re, im]")};
                        z = property::complexFromJson(v, where);
                    });
+        auto scaled = d.part(&ComplexBezierItem::m_scaled, &ComplexBezierItem::checkScaled,
+                             &ComplexBezierItem::scaledChanged,
+                             QT_TR_NOOP("Change scaled coordinates of %1"));
+        scaled.boolean("scaled", [](bool &b) -> bool & { return b; })
+            .label(QT_TR_NOOP("Scaled coordinates g(z, 1/(2y))"))
+            .group(QT_TR_NOOP("Curve"))
+            .tip(QT_TR_NOOP("Draw Re z + i Im z / (2y) for t = 1/2 + iy: the coordinates of "
+                            "004 Thm 3.7.3 and Figs. 3.6–3.8, where the curve approaches the "
+                            "Takagi graph"))
+            .fileDefault(false)
+            .omitWhenDefault()
+            .notAnimated()
+            .enabledWhen([](const ComplexBezierItem &item, const bool &) {
+                return item.scaledApplies();
+            });
         declarePointSet(d, 0, QStringLiteral("control_points"), QT_TR_NOOP("Control points"));
         return d.table();
     }();

@@ -33,7 +33,16 @@ public:
     MaybeProblem checkT(const std::complex<double> &t) const;
     bool setT(std::complex<double> t, int gesture = 0);
 
-    // Declared: "t" (complex), "control_points".
+    // 004 eq. (3.40): drawn in the scaled coordinates g(z, 1/(2y)) = Re z + i Im z / (2y) of
+    // Thm 3.7.3 and Figs. 3.6-3.8, where the curves of t = 1/2 + iy approach the Takagi graph.
+    // Applies when Re t = 1/2, y != 0 and the control points lie on the real axis (they are
+    // then drawn as they are); otherwise the note says why the picture is not scaled.
+    bool scaled() const { return m_scaled; }
+    bool scaledApplies() const;
+    bool setScaled(bool scaled);
+    MaybeProblem checkScaled(const bool &) const { return std::nullopt; }
+
+    // Declared: "t" (complex), "scaled", "control_points".
     static const PropertyTable &declaration();
     const PropertyTable &properties() const override { return declaration(); }
 
@@ -42,6 +51,7 @@ public:
 
 signals:
     void tChanged();
+    void scaledChanged();
 
 protected:
     DerivedIfs computeIfs() const override;
@@ -49,6 +59,7 @@ protected:
 
 private:
     std::complex<double> m_t{0.5, 0.5};
+    bool m_scaled = false;
     PointList m_points;
 };
 

@@ -83,8 +83,16 @@ std::optional<ExactCurve> exactCurveOf(const Item *item, int samples)
 {
     samples = std::max(samples, 2);
     try {
-        if (const auto *cb = qobject_cast<const ComplexBezierItem *>(item))
-            return complexBezierCurve(cb->t(), toMatrix(cb->controlPoints()), samples);
+        if (const auto *cb = qobject_cast<const ComplexBezierItem *>(item)) {
+            auto c = complexBezierCurve(cb->t(), toMatrix(cb->controlPoints()), samples);
+            if (c && cb->scaled() && cb->scaledApplies()) {
+                // In g(z, 1/(2y)) the image x + 2iy T(x) of the segment [0, 1] is the Takagi
+                // graph itself; other real control points are an affine image of it.
+                c->points.col(1) /= 2.0 * cb->t().imag();
+                c->label = ExactCurveTr::tr("Takagi graph x + i T(x), scaled (004 Thm 3.7.3)");
+            }
+            return c;
+        }
         const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item);
         if (!curve)
             return std::nullopt;
@@ -105,7 +113,10 @@ std::optional<CertifiedExactCurve> certifiedExactCurveOf(const Item *item)
 {
     try {
         if (const auto *cb = qobject_cast<const ComplexBezierItem *>(item))
-            return complexCertified(cb->t(), toMatrix(cb->controlPoints()));
+            // The certified distance is of the unscaled curves (g is not an isometry).
+            return cb->scaled() && cb->scaledApplies()
+                       ? std::nullopt
+                       : complexCertified(cb->t(), toMatrix(cb->controlPoints()));
         const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item);
         if (!curve)
             return std::nullopt;

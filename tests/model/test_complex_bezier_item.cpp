@@ -6,6 +6,8 @@
 
 #include "core/schemes/ComplexBezier.h"
 #include "model/ComplexBezierItem.h"
+#include "model/ExactCurve.h"
+#include "TestPaths.h"
 #include "TestMain.h"
 
 using namespace awb;
@@ -33,6 +35,7 @@ private slots:
     void notHyperbolicIsReported();
     void parameterEditsUndo();
     void refusedParameterValues();
+    void scaledCoordinatesApproachTakagi();
     void badFilesNameTheField_data();
     void badFilesNameTheField();
 };
@@ -103,8 +106,9 @@ void TestComplexBezierItem::parameterEditsUndo()
     Project p;
     QVERIFY(test::load(p, levyJson));
     ComplexBezierItem *c = item(p, "Lévy");
-    QCOMPARE(test::ownParameters(*c).size(), 1);
+    QCOMPARE(test::ownParameters(*c).size(), 2);  // t and the scaled coordinates
     QCOMPARE(test::ownParameters(*c).at(0).type, ParameterInfo::Type::Complex);
+    QCOMPARE(test::ownParameters(*c).at(1).type, ParameterInfo::Type::Bool);
     QCOMPARE(c->parameter("t").toPointF(), QPointF(0.5, 0.5));
     test::roundTrip(
         p,
@@ -115,6 +119,62 @@ void TestComplexBezierItem::parameterEditsUndo()
         },
         [&] { QCOMPARE(c->t(), std::complex<double>(0.5, 0.25)); },
         [&] { QCOMPARE(c->t(), std::complex<double>(0.5, 0.5)); });
+}
+
+// Takagi's function T(x) = sum over n of dist(2^n x, Z) / 2^n (to 2^-40), recomputed here.
+double takagiSum(double x)
+{
+    double sum = 0, scale = 1;
+    for (int n = 0; n < 40; ++n, scale *= 0.5) {
+        const double u = x / scale;
+        sum += std::abs(u - std::round(u)) * scale;
+    }
+    return sum;
+}
+
+// 004 Thm 3.7.3 and Figs. 3.6-3.8 (examples/004-fig3.6-3.8-takagi-scaled.awb): in the scaled
+// coordinates g(z, 1/(2y)) the curve of t = 1/2 + iy with control points 0, 1 approaches the
+// Takagi graph x + i T(x) as y -> 0; at y = 2^-10 it is incident with it (Fig. 3.8).
+void TestComplexBezierItem::scaledCoordinatesApproachTakagi()
+{
+    Project p;
+    QString error;
+    QVERIFY2(p.open(awb::test::sourceDir() + "/examples/004-fig3.6-3.8-takagi-scaled.awb", &error),
+             qPrintable(error));
+    QCOMPARE(p.childCount(), 4);
+    std::vector<double> gaps;
+    for (int k = 0; k < 4; ++k) {
+        auto *c = qobject_cast<ComplexBezierItem *>(p.child(k));
+        QVERIFY(c && c->scaled() && c->scaledApplies());
+        const auto d = c->derivedIfs();
+        QVERIFY2(d, qPrintable(c->derivedError()));
+        QVERIFY(d->note.startsWith("Scaled coordinates"));
+        PointCollector points(d->ifs.views.front());
+        iterate(d->ifs, c->coreStartSet(*d), 12, points);
+        const Mat X = points.points();
+        double gap = 0;  // the largest vertical distance to the graph
+        for (Eigen::Index r = 0; r < X.rows(); ++r)
+            if (X(r, 0) >= 0 && X(r, 0) <= 1)
+                gap = std::max(gap, std::abs(X(r, 1) - takagiSum(X(r, 0))));
+        gaps.push_back(gap);
+        // The exact curve the view overlays is the graph itself, scaled.
+        const auto exact = exactCurveOf(c, 257);
+        QVERIFY(exact);
+        for (Eigen::Index r = 0; r < exact->points.rows(); ++r)
+            QVERIFY(std::abs(exact->points(r, 1) - takagiSum(exact->points(r, 0))) < 1e-9);
+        // Not an isometry: no certified distance in these coordinates.
+        QVERIFY(!certifiedExactCurveOf(c));
+    }
+    qInfo("largest vertical gap to the Takagi graph: y = 1/2 %g, 1/4 %g, 1/8 %g, 2^-10 %g",
+          gaps[0], gaps[1], gaps[2], gaps[3]);
+    QVERIFY(gaps[0] > gaps[1] && gaps[1] > gaps[2] && gaps[2] > gaps[3]);
+    QVERIFY(gaps[3] < 0.01);  // Fig. 3.8: "we can only see T"
+    QVERIFY(gaps[1] > 0.05);  // Fig. 3.7: y = 1/4 still makes crunodes
+    // Off the Takagi family the option is kept but does nothing, and the note says why.
+    auto *c = qobject_cast<ComplexBezierItem *>(p.child(1));
+    QVERIFY(c->setParameter("t", QPointF(0.4, 0.25)));
+    QVERIFY(!c->scaledApplies());
+    QVERIFY2(c->derivedIfs()->note.contains("drawn unscaled"), qPrintable(c->derivedIfs()->note));
 }
 
 void TestComplexBezierItem::refusedParameterValues()
