@@ -1224,6 +1224,247 @@
     </message>
 </context>
 <context>
+    <name>awb::AutomatonAnalysis</name>
+    <message>
+        <source>every long path contracts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>some path does not contract</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not decided</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>constrained JSR ρ = %1 exactly (invariant polytope, extremal cycle %2): %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>constrained JSR ρ in [%1, %2]: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lyapunov exponent of random iteration %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>contracts on average</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>does not contract on average</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cycle %1: ρ = %2 (%3 per arc); eigenvalues %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>… and %1 more cycles</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>awb::AutomatonGraph</name>
+    <message>
+        <source>Automaton graph</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No states</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 pts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State %1: %2 control points%3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, drawn</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Arc %1: %2 → %3 (maps the space of %3 into %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>awb::AutomatonPanel</name>
+    <message>
+        <source>Select a controlled IFS item to see and edit its automaton (Items &gt; Add &gt; Controlled IFS, or the example 003 Fig. 5).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drawn:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The state whose attractor is drawn, or the union of all</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add State</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The new state&apos;s number of control points: the dimension of its barycentric space (3: a frame triangle)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove State</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add Arc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A new arc leaving the selected state (into itself; pick its target below)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove Arc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Click a state or an arc to edit it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Arc name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From → to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The arc&apos;s relative probability among the arcs leaving its state (random iteration)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Matrix S (rows sum to 1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plane affine map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Piece of a curve scheme</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S: a row per control point of the target state, a column per control point of the source; numbers like 1/3 are read exactly</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply Matrix</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply Affine Map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>x ↦ x A + b, taking the target state&apos;s frame triangle into the plane of the source&apos;s; kept as its matrix</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bézier (de Casteljau at 1/2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Uniform B-spline</source>
+        <translation type="unfinished">Uniformní B-spline</translation>
+    </message>
+    <message>
+        <source>End-interpolating B-spline</source>
+        <translation type="unfinished">B-spline interpolující koncové body</translation>
+    </message>
+    <message>
+        <source>Chaikin</source>
+        <translation type="unfinished">Chaikin</translation>
+    </message>
+    <message>
+        <source>Four-point</source>
+        <translation type="unfinished">Čtyřbodové</translation>
+    </message>
+    <message>
+        <source>Scheme</source>
+        <translation type="unfinished">Schéma</translation>
+    </message>
+    <message>
+        <source>Degree</source>
+        <translation type="unfinished">Stupeň</translation>
+    </message>
+    <message>
+        <source>Piece S_i, i =</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply Scheme Piece</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The analysis of a controlled IFS item: its constrained joint spectral radius, its cycles&apos; spectra and the Lyapunov exponent of random iteration.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All states</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Analysing the automaton…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Automaton of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 control points (its barycentric space), %2 arcs leave it, %3 arrive. Drag its control points in the attractor view.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S is %1 × %2: a row per point of %3, a column per point of %4. It maps the space of %3 into that of %4.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no controlled IFS item is selected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>row %1, column %2 of the matrix is not a number: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>awb::BcifsJunctionItem</name>
     <message>
         <source>Junction</source>
@@ -1434,7 +1675,7 @@
     </message>
     <message>
         <source>the frame needs exactly 3 points, got %1</source>
-        <translation>rámec vyžaduje přesně 3 body, zadáno %1</translation>
+        <translation type="vanished">rámec vyžaduje přesně 3 body, zadáno %1</translation>
     </message>
     <message>
         <source>a controlled IFS has no single lifted IFS</source>
@@ -1442,7 +1683,7 @@
     </message>
     <message>
         <source>Arc T%1 of the fern leads into the Sierpiński state (003 §2.2, Fig. 4).</source>
-        <translation>Hrana T%1 kapradiny vede do Sierpińského stavu (003 §2.2, Fig. 4).</translation>
+        <translation type="vanished">Hrana T%1 kapradiny vede do Sierpińského stavu (003 §2.2, Fig. 4).</translation>
     </message>
     <message>
         <source>Automaton</source>
@@ -1450,11 +1691,11 @@
     </message>
     <message>
         <source>Redirected arc</source>
-        <translation>Přesměrovaná hrana</translation>
+        <translation type="vanished">Přesměrovaná hrana</translation>
     </message>
     <message>
         <source>The fern map (0 stem, 1 main frond, 2 left, 3 right leaflet) whose arc leads into the Sierpiński state (003 Fig. 4)</source>
-        <translation>Zobrazení kapradiny (0 stonek, 1 hlavní list, 2 levý, 3 pravý lístek), jehož hrana vede do Sierpińského stavu (003 Fig. 4)</translation>
+        <translation type="vanished">Zobrazení kapradiny (0 stonek, 1 hlavní list, 2 levý, 3 pravý lístek), jehož hrana vede do Sierpińského stavu (003 Fig. 4)</translation>
     </message>
     <message>
         <source>Drawn state</source>
@@ -1462,7 +1703,7 @@
     </message>
     <message>
         <source>The state whose attractor is drawn</source>
-        <translation>Stav, jehož atraktor se kreslí</translation>
+        <translation type="vanished">Stav, jehož atraktor se kreslí</translation>
     </message>
     <message>
         <source>Controlled IFS</source>
@@ -1470,22 +1711,206 @@
     </message>
     <message>
         <source>Fern of gaskets (003 Fig. 4)</source>
-        <translation>Kapradina ze Sierpińského trojúhelníků (003 Fig. 4)</translation>
+        <translation type="vanished">Kapradina ze Sierpińského trojúhelníků (003 Fig. 4)</translation>
     </message>
     <message>
         <source>Frame</source>
-        <translation>Rámec</translation>
+        <translation type="vanished">Rámec</translation>
+    </message>
+    <message>
+        <source>a controlled IFS draws its arcs by their own weights (&quot;arcs&quot;): leave the algorithm&apos;s probabilities empty</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>arcs between states of different dimensions have rectangular matrices: see the automaton&apos;s analysis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The union of the attractors of the automaton&apos;s %1 states (003 §2.2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The attractor of state %1 of the automaton (003 §2.2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>States</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Each state&apos;s name and control points (its barycentric space)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Arcs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Each arc&apos;s states and matrix S (a row per point of the state it leads to, rows summing to 1) and weight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The state whose attractor is drawn, or the union of all</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
     <name>awb::CifsSpec</name>
     <message>
         <source>the redirected fern arc must be 0 … 3 (T0 … T3), got %1</source>
-        <translation>přesměrovaná hrana kapradiny musí být 0 … 3 (T0 … T3), zadáno %1</translation>
+        <translation type="vanished">přesměrovaná hrana kapradiny musí být 0 … 3 (T0 … T3), zadáno %1</translation>
     </message>
     <message>
         <source>no state &quot;%1&quot;; the states are &quot;%2&quot;</source>
-        <translation>stav „%1“ neexistuje; stavy jsou „%2“</translation>
+        <translation type="vanished">stav „%1“ neexistuje; stavy jsou „%2“</translation>
+    </message>
+    <message>
+        <source>expected a matrix: a non-empty array of rows</source>
+        <translation type="unfinished">očekávána matice: neprázdné pole řádků</translation>
+    </message>
+    <message>
+        <source>a %1 x %2 matrix: a state has at most %3 points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected a row of %1 numbers, like row 1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no state %1; the states are %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished">žádné</translation>
+    </message>
+    <message>
+        <source>expected a state&apos;s name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>missing: give the arc&apos;s map as &quot;matrix&quot;, &quot;columns&quot;, &quot;affine&quot; or &quot;scheme&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give the arc&apos;s map one way, not as %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> and </source>
+        <translation type="unfinished"> a </translation>
+    </message>
+    <message>
+        <source>a plane affine map needs both states to have 3 control points (a frame triangle): %1 has %2, %3 has %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A must be 2 x 2 and b two numbers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected a curve scheme, as a curve item&apos;s &quot;scheme&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a scheme&apos;s matrix is square: %1 has %2 points, %3 has %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an automaton needs at least one state</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 states: at most %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a state needs a name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; names all states; call the state otherwise</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>two states are called %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a state needs 1 to %1 control points, got %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>state %1 has a control point that is not finite</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 arcs: at most %2 (addresses are bytes)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an arc needs a name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>two arcs are called %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>arc %1 leads between states that do not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>arc %1 has a %2 x %3 matrix; from %4 (%5 points) to %6 (%7 points) it must be %7 x %5: a row per point of %6</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>arc %1 has a matrix entry that is not finite</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>row %1 of arc %2 sums to %3, not 1: the map would not keep barycentric coordinates</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the weight of arc %1 must be a number &gt; 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no state %1 to draw; the states are %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected a non-empty array of states {&quot;name&quot;: text, &quot;control_points&quot;: [...]}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected an object with &quot;name&quot; and &quot;control_points&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown field of a state</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected an array of arcs {&quot;name&quot;, &quot;from&quot;, &quot;to&quot;, &quot;matrix&quot;}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected an object with &quot;from&quot;, &quot;to&quot; and the arc&apos;s map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown field of an arc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All states</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1533,6 +1958,26 @@
     <message>
         <source>Control points</source>
         <translation>Řídicí body</translation>
+    </message>
+    <message>
+        <source>Scaled coordinates g(z, 1/(2y)) = Re z + i Im z / (2y), y = %1 (004 eq. (3.40)): as y → 0 the curve approaches the Takagi graph x + i T(x) (Thm 3.7.3, Figs. 3.6–3.8). %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scaled coordinates apply to t = 1/2 + iy with y ≠ 0 and control points on the real axis (004 Thm 3.7.3); drawn unscaled. %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change scaled coordinates of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scaled coordinates g(z, 1/(2y))</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Draw Re z + i Im z / (2y) for t = 1/2 + iy: the coordinates of 004 Thm 3.7.3 and Figs. 3.6–3.8, where the curve approaches the Takagi graph</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1756,6 +2201,10 @@
     <message>
         <source>exact curve: %1</source>
         <translation>přesná křivka: %1</translation>
+    </message>
+    <message>
+        <source>Takagi graph x + i T(x), scaled (004 Thm 3.7.3)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2168,6 +2617,14 @@
     <message>
         <source>%1 is an IFS of space: a flam3 flame holds maps of the plane (export it as a Fractint .ifs entry)</source>
         <translation>%1 je IFS prostoru: plamen flam3 obsahuje zobrazení roviny (exportujte jej jako položku Fractint .ifs)</translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: its xaos rows let no xform follow another</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flame &apos;%1&apos;: its xaos rows make %2 arcs between its xforms, more than the %3 a controlled IFS may have</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4076,6 +4533,10 @@ Schéma subdivize:</translation>
     <message>
         <source>Where the selected curve&apos;s family of schemes is C^k, over one or two of its parameters (on a Dask cluster)</source>
         <translation>Kde je rodina schémat vybrané křivky C^k, v závislosti na jednom nebo dvou jejích parametrech (na clusteru Dask)</translation>
+    </message>
+    <message>
+        <source>Automaton</source>
+        <translation type="unfinished">Automat</translation>
     </message>
 </context>
 <context>
@@ -7829,6 +8290,14 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
         <source>attractor-cli: note: all %1 faces are triangles; --scheme loop keeps them triangles (Catmull-Clark makes each one three quads around a new valence-3 vertex)</source>
         <translation>attractor-cli: poznámka: všechny stěny (%1) jsou trojúhelníky; --scheme loop je zachová jako trojúhelníky (Catmull-Clark z každé udělá tři čtyřúhelníky kolem nového vrcholu valence 3)</translation>
     </message>
+    <message>
+        <source>A complex Bézier curve of t = 1/2 + iy in the scaled coordinates g(z, 1/(2y)) of 004 Thm 3.7.3, where it approaches the Takagi graph (the item&apos;s &quot;scaled&quot;, for this figure)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--scaled draws a complex Bézier curve of t = 1/2 + iy (y ≠ 0) with control points on the real axis; &apos;%1&apos; is not one</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>
@@ -8667,6 +9136,10 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     <message>
         <source>at most %1 maps are supported, got %2</source>
         <translation>podporováno je nejvýše %1 zobrazení, zadáno %2</translation>
+    </message>
+    <message>
+        <source>the barycentric part needs a non-empty matrix</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

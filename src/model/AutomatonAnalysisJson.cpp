@@ -19,7 +19,9 @@ namespace awb {
 
 namespace {
 
-QString tr(const char *text) { return QCoreApplication::translate("awb::AutomatonAnalysis", text); }
+struct AutomatonTr {
+    Q_DECLARE_TR_FUNCTIONS(awb::AutomatonAnalysis)
+};
 
 QJsonArray arcNames(const CifsSpec &s, const std::vector<int> &arcs)
 {
@@ -194,36 +196,39 @@ QStringList automatonSummary(const CifsSpec &s, const CifsAnalysis &analysis, in
 {
     const CifsAnalysis *a = &analysis;
     QStringList lines;
+    const QString verdict = a->contractive() ? AutomatonTr::tr("every long path contracts")
+                            : a->lower() >= 1 ? AutomatonTr::tr("some path does not contract")
+                                              : AutomatonTr::tr("not decided");
     if (a->exact())
-        lines << tr("constrained JSR ρ = %1 exactly (invariant polytope; extremal cycle %2)")
+        lines << AutomatonTr::tr("constrained JSR ρ = %1 exactly (invariant polytope, extremal cycle %2): "
+                       "%3")
                      .arg(number(a->lower()),
                           a->polytope.smp.empty()
                               ? QString()
                               : pathText(s, s.arcs[size_t(a->polytope.smp.front())].from,
-                                         a->polytope.smp));
+                                         a->polytope.smp),
+                          verdict);
     else
-        lines << tr("constrained JSR ρ in [%1, %2]")
+        lines << AutomatonTr::tr("constrained JSR ρ in [%1, %2]: %3")
                      .arg(number(a->lower()),
-                          std::isfinite(a->upper()) ? number(a->upper()) : QStringLiteral("∞"));
-    lines.back() += a->contractive() ? tr(": every long path contracts")
-                    : a->lower() >= 1 ? tr(": some path does not contract")
-                                      : tr(": not decided");
+                          std::isfinite(a->upper()) ? number(a->upper()) : QStringLiteral("∞"),
+                          verdict);
     if (a->lyapunov)
-        lines << tr("Lyapunov exponent of random iteration %1 (%2)")
+        lines << AutomatonTr::tr("Lyapunov exponent of random iteration %1 (%2)")
                      .arg(QString::number(*a->lyapunov, 'g', 4),
-                          *a->lyapunov < 0 ? tr("contracts on average")
-                                           : tr("does not contract on average"));
+                          *a->lyapunov < 0 ? AutomatonTr::tr("contracts on average")
+                                           : AutomatonTr::tr("does not contract on average"));
     for (int k = 0; k < std::min(cycles, int(a->cycles.size())); ++k) {
         const CifsCycle &c = a->cycles[size_t(k)];
         QStringList values;
         for (const Complex &z : c.eigenvalues)
             values << formatComplex(z, 4);
-        lines << tr("cycle %1: ρ = %2 (%3 per arc); eigenvalues %4")
+        lines << AutomatonTr::tr("cycle %1: ρ = %2 (%3 per arc); eigenvalues %4")
                      .arg(pathText(s, c.state, c.arcs), QString::number(c.spectralRadius, 'g', 6),
                           QString::number(c.perArc, 'g', 6), values.join(QStringLiteral(", ")));
     }
     if (cycles > 0 && int(a->cycles.size()) > cycles)
-        lines << tr("… and %1 more cycles").arg(a->cycles.size() - size_t(cycles));
+        lines << AutomatonTr::tr("… and %1 more cycles").arg(a->cycles.size() - size_t(cycles));
     return lines;
 }
 

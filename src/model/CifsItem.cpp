@@ -579,24 +579,24 @@ const PropertyTable &CifsItem::declaration()
                 [](const CifsItem &, S &s, const QJsonValue &v, const QString &where) {
                     const QJsonArray list = v.toArray();
                     if (!v.isArray() || list.isEmpty())
-                        throw LoadError{where, S::tr("expected a non-empty array of states "
+                        throw LoadError{where, CifsSpec::tr("expected a non-empty array of states "
                                                      "{\"name\": text, \"control_points\": "
                                                      "[...]}")};
                     if (list.size() > S::maxStates)
-                        throw LoadError{where, S::tr("%1 states: at most %2")
+                        throw LoadError{where, CifsSpec::tr("%1 states: at most %2")
                                                    .arg(list.size()).arg(S::maxStates)};
                     std::vector<CifsStateSpec> states;
                     for (qsizetype k = 0; k < list.size(); ++k) {
                         const QString at = where + QStringLiteral("[%1]").arg(k + 1);
                         if (!list[k].isObject())
-                            throw LoadError{at, S::tr("expected an object with \"name\" and "
+                            throw LoadError{at, CifsSpec::tr("expected an object with \"name\" and "
                                                       "\"control_points\"")};
                         const FieldReader state(list[k].toObject(), at + QLatin1Char('.'));
                         CifsStateSpec q;
                         q.name = state.string("name");
                         q.points = state.points("control_points");
                         if (const QJsonObject rest = state.unread(); !rest.isEmpty())
-                            state.fail(rest.begin().key(), S::tr("unknown field of a state"));
+                            state.fail(rest.begin().key(), CifsSpec::tr("unknown field of a state"));
                         states.push_back(std::move(q));
                     }
                     // The arcs' sizes follow the states: a new list of states keeps the arcs
@@ -625,17 +625,17 @@ const PropertyTable &CifsItem::declaration()
                 [](const CifsItem &, S &s, const QJsonValue &v, const QString &where) {
                     const QJsonArray list = v.toArray();
                     if (!v.isArray())
-                        throw LoadError{where, S::tr("expected an array of arcs {\"name\", "
+                        throw LoadError{where, CifsSpec::tr("expected an array of arcs {\"name\", "
                                                      "\"from\", \"to\", \"matrix\"}")};
                     if (list.size() > kMaxMaps)
-                        throw LoadError{where, S::tr("%1 arcs: at most %2 (addresses are "
+                        throw LoadError{where, CifsSpec::tr("%1 arcs: at most %2 (addresses are "
                                                      "bytes)")
                                                    .arg(list.size()).arg(kMaxMaps)};
                     std::vector<CifsArcSpec> arcs;
                     for (qsizetype k = 0; k < list.size(); ++k) {
                         const QString at = where + QStringLiteral("[%1]").arg(k + 1);
                         if (!list[k].isObject())
-                            throw LoadError{at, S::tr("expected an object with \"from\", "
+                            throw LoadError{at, CifsSpec::tr("expected an object with \"from\", "
                                                       "\"to\" and the arc's map")};
                         const QJsonObject o = list[k].toObject();
                         const FieldReader arc(o, at + QLatin1Char('.'));
@@ -649,7 +649,7 @@ const PropertyTable &CifsItem::declaration()
                         a.S = cifsArcMatrixFromJson(o, s.states[size_t(a.from)],
                                                     s.states[size_t(a.to)], at + QLatin1Char('.'));
                         if (const QJsonObject rest = arc.unread(); !rest.isEmpty())
-                            arc.fail(rest.begin().key(), S::tr("unknown field of an arc"));
+                            arc.fail(rest.begin().key(), CifsSpec::tr("unknown field of an arc"));
                         arcs.push_back(std::move(a));
                     }
                     s.arcs = std::move(arcs);
@@ -676,7 +676,7 @@ const PropertyTable &CifsItem::declaration()
                 return s.stateNames() << S::allStates;
             })
             .choicesFrom([](const CifsItem &, const S &s) {
-                return s.stateNames() << S::tr("All states");
+                return s.stateNames() << CifsSpec::tr("All states");
             });
         return d.table();
     }();

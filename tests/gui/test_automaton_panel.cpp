@@ -13,7 +13,9 @@
 
 #include <QComboBox>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QPushButton>
+#include <QTemporaryDir>
 #include <QSignalSpy>
 #include <QTextBrowser>
 #include <QUndoStack>
@@ -91,6 +93,15 @@ private slots:
         QSignalSpy analysed(panel, &AutomatonPanel::analysed);
         QVERIFY(panel->setDrawn(CifsSpec::allStates));
         QVERIFY2(item->derivedIfs(), qPrintable(item->derivedError()));
+        // One step per edit: add state, 2 arcs, ends, map, drawn; undone and redone whole.
+        QCOMPARE(w.project()->undoStack()->index(), steps + 6);
+        const CifsSpec built = item->spec();
+        while (w.project()->undoStack()->index() > steps)
+            w.project()->undoStack()->undo();
+        QVERIFY(item->spec() == CifsSpec::fernOfGaskets(2));
+        while (w.project()->undoStack()->canRedo())
+            w.project()->undoStack()->redo();
+        QVERIFY(item->spec() == built);
         QVERIFY(test::waitForFinalImage(w.attractorView()));
         auto *drawn = panel->findChild<QComboBox *>(QStringLiteral("automatonDrawn"));
         QCOMPARE(drawn->currentText(), QString("All states"));
@@ -105,21 +116,34 @@ private slots:
         const FigureSheet sheet(item, w.attractorView(), nullptr, nullptr);
         QVERIFY2(sheet.caption().join('\n').contains("constrained JSR"),
                  qPrintable(sheet.caption().join('\n')));
+        // Saved, reopened and printed as the user left it.
+        QTemporaryDir dir;
+        const QString file = dir.filePath("own-automaton.awb");
+        QVERIFY(w.saveFile(file));
+        const CifsSpec saved = item->spec();
+        QVERIFY(w.openFile(file));
+        auto *reopened = qobject_cast<CifsItem *>(w.project()->child(0));
+        QVERIFY(reopened);
+        QVERIFY(reopened->spec() == saved);
+        QString printError;
+        QVERIFY2(w.printToPdf(dir.filePath("own-automaton.pdf"), &printError),
+                 qPrintable(printError));
+        QVERIFY(QFileInfo(dir.filePath("own-automaton.pdf")).size() > 1000);
+        QVERIFY(w.openFile(file)); // the edits below go on in this window's project
+        item = qobject_cast<CifsItem *>(w.project()->child(0));
+        w.setCurrentItem(item);
+        QCOMPARE(panel->item(), item);
         // A wrong edit is refused with its reason and leaves no step.
         const int before = w.project()->undoStack()->count();
         QVERIFY(!panel->renameState(0, QStringLiteral("Sierpinski"), &error));
         QVERIFY2(error.contains("two states"), qPrintable(error));
         QCOMPARE(w.project()->undoStack()->count(), before);
-        // Removing the segment state removes its arcs.
+        // Removing the segment state removes its arcs: one step, undone.
         QVERIFY(panel->removeState(2));
         QCOMPARE(item->spec().states.size(), size_t(2));
         QCOMPARE(item->spec().arcs.size(), size_t(6));
-        // One step per edit: add state, 2 arcs, ends, map, drawn, remove.
-        QCOMPARE(w.project()->undoStack()->count(), steps + 7);
-        while (w.project()->undoStack()->index() > steps)
-            w.project()->undoStack()->undo();
-        QVERIFY(item->spec() == CifsSpec::fernOfGaskets(2));
-        QCOMPARE(graph->selectedArc(), -1);
+        w.project()->undoStack()->undo();
+        QVERIFY(item->spec() == saved);
     }
 
     void otherItemsExplainThePanel()

@@ -324,6 +324,34 @@ def test_point_sets(awb, examples):
     assert item.point_sets[1][0].tolist() == old.tolist()
 
 
+def test_an_automaton_of_ones_own(awb, examples):
+    """A controlled IFS built from Python (issue 46): states, arcs in the file's forms, one
+    undo step per update; its analysis carries the constrained JSR of the admissible paths."""
+    p = awb.open(examples / "003-fig05-fern-of-sierpinski-gaskets.awb")
+    item = p.items[0]
+    assert item.kind == "cifs" and len(item.point_sets) == 2  # the fern of gaskets
+    steps = p.undo_text
+    item.update({"states": [{"name": "A", "control_points": [[0, 0], [1, 0]]},
+                            {"name": "B", "control_points": [[0, 1], [1, 1]]}],
+                 "arcs": [{"name": "c", "from": "A", "to": "A", "matrix": [[0.5, 0.5], [0, 1]]},
+                          {"name": "a", "from": "A", "to": "B", "matrix": [[1.6, -0.6], [0, 1]]},
+                          {"name": "b", "from": "B", "to": "A", "columns": [[0.4, 0], [0.6, 1]]}],
+                 "state": "all"})
+    assert p.undo_text != steps
+    assert [len(s) for s in item.point_sets] == [2, 2]
+    a = item.analyse()["automaton"]
+    jsr = a["constrained_jsr"]
+    # a = 1.6 expands, but every return through B multiplies by ab = 0.64: rho = 0.8
+    assert jsr["lower"] <= 0.8 + 1e-9 <= jsr["upper"] + 2e-9 and jsr["upper"] < 0.8 + 1e-6
+    assert a["contractive"] and len(a["cycles"]) == 2
+    xy = item.points(depth=6)
+    assert xy.shape[1] == 2 and len(xy) > 0
+    with pytest.raises(awb.Error, match="no state"):
+        item.update({"arcs": [{"from": "A", "to": "C", "matrix": [[1, 0], [0, 1]]}]})
+    p.undo()
+    assert item.to_json()["states"][0]["name"] == "Fern"
+
+
 def test_surface_control_points_are_3d(awb, examples):
     item = awb.open(examples / "000-fig06-bicubic-patch.awb").items[0]
     assert item.dimension == 3 and np.asarray(item.control_points).shape == (16, 3)
