@@ -11,7 +11,10 @@
 
 #include "TestMain.h"
 
+#include <QElapsedTimer>
+
 #include <cmath>
+#include <string>
 
 using namespace awb;
 
@@ -50,6 +53,7 @@ private slots:
     void fernOfGasketsIsTheLargerOfItsLoops();
     void cyclesCarryTheirSpectra();
     void lyapunovMatchesItsClosedForm();
+    void exponentiallyManyPathsStayBounded();
 };
 
 void TestCifsAnalysis::arcLinearPartOfSquareMatricesIsTheBarycentricPart()
@@ -165,6 +169,42 @@ void TestCifsAnalysis::lyapunovMatchesItsClosedForm()
     const double weighted = (std::log(0.5) + 2 * std::log(1.6) + 2 * std::log(0.4)) / 5.0;
     QVERIFY2(std::abs(*q.lyapunov - weighted) < 0.01,
              qPrintable(QStringLiteral("%1 against %2").arg(*q.lyapunov).arg(weighted)));
+}
+
+void TestCifsAnalysis::exponentiallyManyPathsStayBounded()
+{
+    // 31 layers of 2 states, each joined to both of the next (2^31 simple paths), the last
+    // layer into a state 0 that only loops: one cycle, but a walk over all paths would take
+    // hours. The analysis ends, says its list may be incomplete, and still bounds rho_G.
+    Cifs c;
+    Mat P(2, 2);
+    P << 0, 0, 1, 0;
+    // Names appended, not concatenated: GCC 12 warns falsely on "x" + std::to_string at -O3.
+    const auto name = [](const char *prefix, int k) {
+        std::string n(prefix);
+        n += std::to_string(k);
+        return n;
+    };
+    for (int q = 0; q < 63; ++q)
+        c.addState(name("q", q), P);
+    c.addTransition("loop", 0, 0, segmentMap(0.5));
+    for (int layer = 0; layer < 31; ++layer)
+        for (int a = 0; a < 2; ++a) {
+            const int from = 1 + 2 * layer + a;
+            if (layer == 30) {
+                c.addTransition(name("back", a), from, 0, segmentMap(0.5));
+                continue;
+            }
+            for (int b = 0; b < 2; ++b)
+                c.addTransition(name("t", 2 * from + b), from, 1 + 2 * (layer + 1) + b,
+                                segmentMap(0.5));
+        }
+    QElapsedTimer timer;
+    timer.start();
+    const CifsAnalysis r = analyseCifs(c);
+    QVERIFY(timer.elapsed() < 60000);
+    QVERIFY(!r.cyclesComplete);
+    QVERIFY(r.upper() <= 0.5 + 1e-6 && r.lower() >= 0.5 - 1e-9);
 }
 
 AWB_TEST_APPLESS_MAIN(TestCifsAnalysis)

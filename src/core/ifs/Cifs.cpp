@@ -172,14 +172,23 @@ Mat pathProduct(const Cifs &cifs, int from, const std::vector<int> &path)
     return M;
 }
 
-// Simple cycles, each once: it starts at its lowest state and visits only higher ones.
+// Simple cycles, each once: it starts at its lowest state and visits only higher ones. The
+// simple paths of a graph can be exponentially many even where its cycles are few (a layered
+// automaton from a file): the walk stops after a bounded number of steps too, then
+// `complete` is false.
+constexpr long long kMaxCycleSteps = 2'000'000;
+
 void enumerateCycles(const Cifs &cifs, const std::vector<std::vector<int>> &out, int start,
                      int state, std::vector<int> &path, std::vector<bool> &onPath,
-                     int maxCycles, CifsCheck &check)
+                     int maxCycles, CifsCheck &check, long long &steps)
 {
     for (int t : out[state]) {
         if (!check.complete)
             return;
+        if (++steps > kMaxCycleSteps) {
+            check.complete = false;
+            return;
+        }
         const int q = cifs.transitions[t].to;
         if (q == start) {
             if (int(check.cycles.size()) >= maxCycles) {
@@ -192,7 +201,7 @@ void enumerateCycles(const Cifs &cifs, const std::vector<std::vector<int>> &out,
         } else if (q > start && !onPath[q]) {
             onPath[q] = true;
             path.push_back(t);
-            enumerateCycles(cifs, out, start, q, path, onPath, maxCycles, check);
+            enumerateCycles(cifs, out, start, q, path, onPath, maxCycles, check, steps);
             path.pop_back();
             onPath[q] = false;
         }
@@ -217,8 +226,9 @@ CifsCheck checkCifs(const Cifs &cifs, int maxCycles)
     const int N = int(cifs.states.size());
     std::vector<bool> onPath(N, false);
     std::vector<int> path;
+    long long steps = 0;
     for (int s = 0; s < N && check.complete; ++s)
-        enumerateCycles(cifs, out, s, s, path, onPath, maxCycles, check);
+        enumerateCycles(cifs, out, s, s, path, onPath, maxCycles, check, steps);
     for (CycleCheck &c : check.cycles) {
         const int s = cifs.transitions[c.transitions.front()].from;
         const Mat M = pathProduct(cifs, s, c.transitions);

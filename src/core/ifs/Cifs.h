@@ -76,7 +76,7 @@ struct CycleCheck {
 struct CifsCheck {
     std::vector<CycleCheck> cycles;
     bool contractive = true;  // all enumerated cycles have spectral radius < 1
-    bool complete = true;     // false when more than maxCycles simple cycles exist
+    bool complete = true;     // false past maxCycles simple cycles, or 2e6 steps of the walk
     std::string message;      // names the first offending cycle; empty when contractive
 };
 // Validates first (InputError as in Cifs::validate()).
