@@ -1227,241 +1227,245 @@
     <name>awb::AutomatonAnalysis</name>
     <message>
         <source>every long path contracts</source>
-        <translation type="unfinished"></translation>
+        <translation>každá dlouhá cesta je kontraktivní</translation>
     </message>
     <message>
         <source>some path does not contract</source>
-        <translation type="unfinished"></translation>
+        <translation>některá cesta není kontraktivní</translation>
     </message>
     <message>
         <source>not decided</source>
-        <translation type="unfinished"></translation>
+        <translation>nerozhodnuto</translation>
     </message>
     <message>
         <source>constrained JSR ρ = %1 exactly (invariant polytope, extremal cycle %2): %3</source>
-        <translation type="unfinished"></translation>
+        <translation>omezený společný spektrální poloměr ρ = %1 přesně (invariantní polytop, extremální cyklus %2): %3</translation>
     </message>
     <message>
         <source>constrained JSR ρ in [%1, %2]: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>omezený společný spektrální poloměr ρ v [%1, %2]: %3</translation>
     </message>
     <message>
         <source>Lyapunov exponent of random iteration %1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ljapunovův exponent náhodné iterace %1 (%2)</translation>
     </message>
     <message>
         <source>contracts on average</source>
-        <translation type="unfinished"></translation>
+        <translation>v průměru kontraktivní</translation>
     </message>
     <message>
         <source>does not contract on average</source>
-        <translation type="unfinished"></translation>
+        <translation>v průměru není kontraktivní</translation>
     </message>
     <message>
         <source>cycle %1: ρ = %2 (%3 per arc); eigenvalues %4</source>
-        <translation type="unfinished"></translation>
+        <translation>cyklus %1: ρ = %2 (%3 na hranu); vlastní čísla %4</translation>
     </message>
     <message>
         <source>… and %1 more cycles</source>
-        <translation type="unfinished"></translation>
+        <translation>… a dalších %1 cyklů</translation>
     </message>
 </context>
 <context>
     <name>awb::AutomatonGraph</name>
     <message>
         <source>Automaton graph</source>
-        <translation type="unfinished"></translation>
+        <translation>Graf automatu</translation>
     </message>
     <message>
         <source>No states</source>
-        <translation type="unfinished"></translation>
+        <translation>Žádné stavy</translation>
     </message>
     <message>
         <source>%1 pts</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 b.</translation>
     </message>
     <message>
         <source>State %1: %2 control points%3</source>
-        <translation type="unfinished"></translation>
+        <translation>Stav %1: počet řídicích bodů %2%3</translation>
     </message>
     <message>
         <source>, drawn</source>
-        <translation type="unfinished"></translation>
+        <translation>, vykreslený</translation>
     </message>
     <message>
         <source>Arc %1: %2 → %3 (maps the space of %3 into %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Hrana %1: %2 → %3 (zobrazuje prostor stavu %3 do prostoru stavu %2)</translation>
     </message>
 </context>
 <context>
     <name>awb::AutomatonPanel</name>
     <message>
         <source>Select a controlled IFS item to see and edit its automaton (Items &gt; Add &gt; Controlled IFS, or the example 003 Fig. 5).</source>
-        <translation type="unfinished"></translation>
+        <translation type="vanished">Vyberte položku řízeného IFS, abyste viděli a mohli upravit její automat (Položky &gt; Přidat &gt; Řízený IFS, nebo příklad 003 Fig. 5).</translation>
     </message>
     <message>
         <source>Drawn:</source>
-        <translation type="unfinished"></translation>
+        <translation>Vykreslit:</translation>
     </message>
     <message>
         <source>The state whose attractor is drawn, or the union of all</source>
-        <translation type="unfinished"></translation>
+        <translation>Stav, jehož atraktor se vykresluje, nebo sjednocení všech</translation>
     </message>
     <message>
         <source>Add State</source>
-        <translation type="unfinished"></translation>
+        <translation>Přidat stav</translation>
     </message>
     <message>
         <source> points</source>
-        <translation type="unfinished"></translation>
+        <translation> bodů</translation>
     </message>
     <message>
         <source>The new state&apos;s number of control points: the dimension of its barycentric space (3: a frame triangle)</source>
-        <translation type="unfinished"></translation>
+        <translation>Počet řídicích bodů nového stavu: dimenze jeho barycentrického prostoru (3: rámcový trojúhelník)</translation>
     </message>
     <message>
         <source>Remove State</source>
-        <translation type="unfinished"></translation>
+        <translation>Odebrat stav</translation>
     </message>
     <message>
         <source>Add Arc</source>
-        <translation type="unfinished"></translation>
+        <translation>Přidat hranu</translation>
     </message>
     <message>
         <source>A new arc leaving the selected state (into itself; pick its target below)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nová hrana vycházející z vybraného stavu (do něj samého; cíl vyberte níže)</translation>
     </message>
     <message>
         <source>Remove Arc</source>
-        <translation type="unfinished"></translation>
+        <translation>Odebrat hranu</translation>
     </message>
     <message>
         <source>Click a state or an arc to edit it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Kliknutím na stav nebo hranu je upravíte.</translation>
     </message>
     <message>
         <source>State name</source>
-        <translation type="unfinished"></translation>
+        <translation>Název stavu</translation>
     </message>
     <message>
         <source>Arc name</source>
-        <translation type="unfinished"></translation>
+        <translation>Název hrany</translation>
     </message>
     <message>
         <source>From → to</source>
-        <translation type="unfinished"></translation>
+        <translation>Odkud → kam</translation>
     </message>
     <message>
         <source>The arc&apos;s relative probability among the arcs leaving its state (random iteration)</source>
-        <translation type="unfinished"></translation>
+        <translation>Relativní pravděpodobnost hrany mezi hranami vycházejícími z jejího stavu (náhodná iterace)</translation>
     </message>
     <message>
         <source>Weight</source>
-        <translation type="unfinished"></translation>
+        <translation>Váha</translation>
     </message>
     <message>
         <source>Matrix S (rows sum to 1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Matice S (součty řádků jsou 1)</translation>
     </message>
     <message>
         <source>Plane affine map</source>
-        <translation type="unfinished"></translation>
+        <translation>Afinní zobrazení roviny</translation>
     </message>
     <message>
         <source>Piece of a curve scheme</source>
-        <translation type="unfinished"></translation>
+        <translation>Úsek schématu křivky</translation>
     </message>
     <message>
         <source>Map</source>
-        <translation type="unfinished"></translation>
+        <translation>Zobrazení</translation>
     </message>
     <message>
         <source>S: a row per control point of the target state, a column per control point of the source; numbers like 1/3 are read exactly</source>
-        <translation type="unfinished"></translation>
+        <translation>S: jeden řádek pro každý řídicí bod cílového stavu, jeden sloupec pro každý řídicí bod zdrojového stavu; čísla jako 1/3 se načítají přesně</translation>
     </message>
     <message>
         <source>Apply Matrix</source>
-        <translation type="unfinished"></translation>
+        <translation>Použít matici</translation>
     </message>
     <message>
         <source>Apply Affine Map</source>
-        <translation type="unfinished"></translation>
+        <translation>Použít afinní zobrazení</translation>
     </message>
     <message>
         <source>x ↦ x A + b, taking the target state&apos;s frame triangle into the plane of the source&apos;s; kept as its matrix</source>
-        <translation type="unfinished"></translation>
+        <translation>x ↦ x A + b, převádí rámcový trojúhelník cílového stavu do roviny rámcového trojúhelníku zdrojového stavu; uloží se jako jeho matice</translation>
     </message>
     <message>
         <source>Bézier (de Casteljau at 1/2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Bézier (de Casteljau v 1/2)</translation>
     </message>
     <message>
         <source>Uniform B-spline</source>
-        <translation type="unfinished">Uniformní B-spline</translation>
+        <translation>Uniformní B-spline</translation>
     </message>
     <message>
         <source>End-interpolating B-spline</source>
-        <translation type="unfinished">B-spline interpolující koncové body</translation>
+        <translation>B-spline interpolující koncové body</translation>
     </message>
     <message>
         <source>Chaikin</source>
-        <translation type="unfinished">Chaikin</translation>
+        <translation>Chaikin</translation>
     </message>
     <message>
         <source>Four-point</source>
-        <translation type="unfinished">Čtyřbodové</translation>
+        <translation>Čtyřbodové</translation>
     </message>
     <message>
         <source>Scheme</source>
-        <translation type="unfinished">Schéma</translation>
+        <translation>Schéma</translation>
     </message>
     <message>
         <source>Degree</source>
-        <translation type="unfinished">Stupeň</translation>
+        <translation>Stupeň</translation>
     </message>
     <message>
         <source>Piece S_i, i =</source>
-        <translation type="unfinished"></translation>
+        <translation>Úsek S_i, i =</translation>
     </message>
     <message>
         <source>Apply Scheme Piece</source>
-        <translation type="unfinished"></translation>
+        <translation>Použít úsek schématu</translation>
     </message>
     <message>
         <source>The analysis of a controlled IFS item: its constrained joint spectral radius, its cycles&apos; spectra and the Lyapunov exponent of random iteration.</source>
-        <translation type="unfinished"></translation>
+        <translation>Analýza položky řízeného IFS: její omezený společný spektrální poloměr, spektra jejích cyklů a Ljapunovův exponent náhodné iterace.</translation>
     </message>
     <message>
         <source>All states</source>
-        <translation type="unfinished"></translation>
+        <translation>Všechny stavy</translation>
     </message>
     <message>
         <source>Analysing the automaton…</source>
-        <translation type="unfinished"></translation>
+        <translation>Analyzuje se automat…</translation>
     </message>
     <message>
         <source>Automaton of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Automat položky %1</translation>
     </message>
     <message>
         <source>%1 control points (its barycentric space), %2 arcs leave it, %3 arrive. Drag its control points in the attractor view.</source>
-        <translation type="unfinished"></translation>
+        <translation>Řídicí body: %1 (jeho barycentrický prostor), vycházející hrany: %2, přicházející hrany: %3. Jeho řídicí body můžete přetahovat v pohledu atraktoru.</translation>
     </message>
     <message>
         <source>S is %1 × %2: a row per point of %3, a column per point of %4. It maps the space of %3 into that of %4.</source>
-        <translation type="unfinished"></translation>
+        <translation>S má rozměr %1 × %2: jeden řádek pro každý bod stavu %3, jeden sloupec pro každý bod stavu %4. Zobrazuje prostor stavu %3 do prostoru stavu %4.</translation>
     </message>
     <message>
         <source>no controlled IFS item is selected</source>
-        <translation type="unfinished"></translation>
+        <translation>není vybrána žádná položka řízeného IFS</translation>
     </message>
     <message>
         <source>row %1, column %2 of the matrix is not a number: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>řádek %1, sloupec %2 matice není číslo: %3</translation>
     </message>
     <message>
         <source>%1 is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 není číslo</translation>
+    </message>
+    <message>
+        <source>Select a controlled IFS item to see and edit its automaton (Item &gt; Add &gt; Controlled IFS, or the example 003 Fig. 5).</source>
+        <translation>Vyberte položku řízeného IFS, abyste viděli a mohli upravit její automat (Položka &gt; Přidat &gt; Řízený IFS, nebo příklad 003 Fig. 5).</translation>
     </message>
 </context>
 <context>
@@ -1719,39 +1723,39 @@
     </message>
     <message>
         <source>a controlled IFS draws its arcs by their own weights (&quot;arcs&quot;): leave the algorithm&apos;s probabilities empty</source>
-        <translation type="unfinished"></translation>
+        <translation>řízený IFS losuje své hrany podle jejich vlastních vah (&quot;arcs&quot;): pravděpodobnosti algoritmu ponechte prázdné</translation>
     </message>
     <message>
         <source>arcs between states of different dimensions have rectangular matrices: see the automaton&apos;s analysis</source>
-        <translation type="unfinished"></translation>
+        <translation>hrany mezi stavy různých dimenzí mají obdélníkové matice: viz analýzu automatu</translation>
     </message>
     <message>
         <source>The union of the attractors of the automaton&apos;s %1 states (003 §2.2).</source>
-        <translation type="unfinished"></translation>
+        <translation>Sjednocení atraktorů %1 stavů automatu (003 §2.2).</translation>
     </message>
     <message>
         <source>The attractor of state %1 of the automaton (003 §2.2).</source>
-        <translation type="unfinished"></translation>
+        <translation>Atraktor stavu %1 automatu (003 §2.2).</translation>
     </message>
     <message>
         <source>States</source>
-        <translation type="unfinished"></translation>
+        <translation>Stavy</translation>
     </message>
     <message>
         <source>Each state&apos;s name and control points (its barycentric space)</source>
-        <translation type="unfinished"></translation>
+        <translation>Název a řídicí body každého stavu (jeho barycentrický prostor)</translation>
     </message>
     <message>
         <source>Arcs</source>
-        <translation type="unfinished"></translation>
+        <translation>Hrany</translation>
     </message>
     <message>
         <source>Each arc&apos;s states and matrix S (a row per point of the state it leads to, rows summing to 1) and weight</source>
-        <translation type="unfinished"></translation>
+        <translation>Stavy, matice S (jeden řádek pro každý bod stavu, do kterého hrana vede, součty řádků jsou 1) a váha každé hrany</translation>
     </message>
     <message>
         <source>The state whose attractor is drawn, or the union of all</source>
-        <translation type="unfinished"></translation>
+        <translation>Stav, jehož atraktor se vykresluje, nebo sjednocení všech</translation>
     </message>
 </context>
 <context>
@@ -1766,151 +1770,151 @@
     </message>
     <message>
         <source>expected a matrix: a non-empty array of rows</source>
-        <translation type="unfinished">očekávána matice: neprázdné pole řádků</translation>
+        <translation>očekávána matice: neprázdné pole řádků</translation>
     </message>
     <message>
         <source>a %1 x %2 matrix: a state has at most %3 points</source>
-        <translation type="unfinished"></translation>
+        <translation>matice %1 x %2: stav má nejvýše %3 bodů</translation>
     </message>
     <message>
         <source>expected a row of %1 numbers, like row 1</source>
-        <translation type="unfinished"></translation>
+        <translation>očekáván řádek s %1 čísly, jako řádek 1</translation>
     </message>
     <message>
         <source>no state %1; the states are %2</source>
-        <translation type="unfinished"></translation>
+        <translation>stav %1 neexistuje; stavy jsou %2</translation>
     </message>
     <message>
         <source>none</source>
-        <translation type="unfinished">žádné</translation>
+        <translation>žádné</translation>
     </message>
     <message>
         <source>expected a state&apos;s name</source>
-        <translation type="unfinished"></translation>
+        <translation>očekáván název stavu</translation>
     </message>
     <message>
         <source>missing: give the arc&apos;s map as &quot;matrix&quot;, &quot;columns&quot;, &quot;affine&quot; or &quot;scheme&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>chybí: zadejte zobrazení hrany jako &quot;matrix&quot;, &quot;columns&quot;, &quot;affine&quot; nebo &quot;scheme&quot;</translation>
     </message>
     <message>
         <source>give the arc&apos;s map one way, not as %1</source>
-        <translation type="unfinished"></translation>
+        <translation>zadejte zobrazení hrany jedním způsobem, ne jako %1</translation>
     </message>
     <message>
         <source> and </source>
-        <translation type="unfinished"> a </translation>
+        <translation> a </translation>
     </message>
     <message>
         <source>a plane affine map needs both states to have 3 control points (a frame triangle): %1 has %2, %3 has %4</source>
-        <translation type="unfinished"></translation>
+        <translation>afinní zobrazení roviny vyžaduje, aby oba stavy měly 3 řídicí body (rámcový trojúhelník): %1 má %2, %3 má %4</translation>
     </message>
     <message>
         <source>expected {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]}</source>
-        <translation type="unfinished"></translation>
+        <translation>očekáváno {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]}</translation>
     </message>
     <message>
         <source>A must be 2 x 2 and b two numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>A musí mít rozměr 2 x 2 a b musí být dvě čísla</translation>
     </message>
     <message>
         <source>expected a curve scheme, as a curve item&apos;s &quot;scheme&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>očekáváno schéma křivky, jako &quot;scheme&quot; položky křivky</translation>
     </message>
     <message>
         <source>a scheme&apos;s matrix is square: %1 has %2 points, %3 has %4</source>
-        <translation type="unfinished"></translation>
+        <translation>matice schématu je čtvercová: %1 má %2 bodů, %3 má %4</translation>
     </message>
     <message>
         <source>an automaton needs at least one state</source>
-        <translation type="unfinished"></translation>
+        <translation>automat potřebuje alespoň jeden stav</translation>
     </message>
     <message>
         <source>%1 states: at most %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 stavů: nejvýše %2</translation>
     </message>
     <message>
         <source>a state needs a name</source>
-        <translation type="unfinished"></translation>
+        <translation>stav musí mít název</translation>
     </message>
     <message>
         <source>&quot;%1&quot; names all states; call the state otherwise</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot; označuje všechny stavy; pojmenujte stav jinak</translation>
     </message>
     <message>
         <source>two states are called %1</source>
-        <translation type="unfinished"></translation>
+        <translation>dva stavy se jmenují %1</translation>
     </message>
     <message>
         <source>a state needs 1 to %1 control points, got %2</source>
-        <translation type="unfinished"></translation>
+        <translation>stav potřebuje 1 až %1 řídicích bodů, zadáno %2</translation>
     </message>
     <message>
         <source>state %1 has a control point that is not finite</source>
-        <translation type="unfinished"></translation>
+        <translation>stav %1 má řídicí bod, který není konečný</translation>
     </message>
     <message>
         <source>%1 arcs: at most %2 (addresses are bytes)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 hran: nejvýše %2 (adresy jsou bajty)</translation>
     </message>
     <message>
         <source>an arc needs a name</source>
-        <translation type="unfinished"></translation>
+        <translation>hrana musí mít název</translation>
     </message>
     <message>
         <source>two arcs are called %1</source>
-        <translation type="unfinished"></translation>
+        <translation>dvě hrany se jmenují %1</translation>
     </message>
     <message>
         <source>arc %1 leads between states that do not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>hrana %1 vede mezi stavy, které neexistují</translation>
     </message>
     <message>
         <source>arc %1 has a %2 x %3 matrix; from %4 (%5 points) to %6 (%7 points) it must be %7 x %5: a row per point of %6</source>
-        <translation type="unfinished"></translation>
+        <translation>hrana %1 má matici %2 x %3; ze stavu %4 (%5 bodů) do stavu %6 (%7 bodů) musí mít rozměr %7 x %5: jeden řádek pro každý bod stavu %6</translation>
     </message>
     <message>
         <source>arc %1 has a matrix entry that is not finite</source>
-        <translation type="unfinished"></translation>
+        <translation>hrana %1 má prvek matice, který není konečný</translation>
     </message>
     <message>
         <source>row %1 of arc %2 sums to %3, not 1: the map would not keep barycentric coordinates</source>
-        <translation type="unfinished"></translation>
+        <translation>součet řádku %1 hrany %2 je %3, nikoli 1: zobrazení by nezachovávalo barycentrické souřadnice</translation>
     </message>
     <message>
         <source>the weight of arc %1 must be a number &gt; 0</source>
-        <translation type="unfinished"></translation>
+        <translation>váha hrany %1 musí být číslo &gt; 0</translation>
     </message>
     <message>
         <source>no state %1 to draw; the states are %2</source>
-        <translation type="unfinished"></translation>
+        <translation>stav %1 k vykreslení neexistuje; stavy jsou %2</translation>
     </message>
     <message>
         <source>expected a non-empty array of states {&quot;name&quot;: text, &quot;control_points&quot;: [...]}</source>
-        <translation type="unfinished"></translation>
+        <translation>očekáváno neprázdné pole stavů {&quot;name&quot;: text, &quot;control_points&quot;: [...]}</translation>
     </message>
     <message>
         <source>expected an object with &quot;name&quot; and &quot;control_points&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>očekáván objekt s &quot;name&quot; a &quot;control_points&quot;</translation>
     </message>
     <message>
         <source>unknown field of a state</source>
-        <translation type="unfinished"></translation>
+        <translation>neznámé pole stavu</translation>
     </message>
     <message>
         <source>expected an array of arcs {&quot;name&quot;, &quot;from&quot;, &quot;to&quot;, &quot;matrix&quot;}</source>
-        <translation type="unfinished"></translation>
+        <translation>očekáváno pole hran {&quot;name&quot;, &quot;from&quot;, &quot;to&quot;, &quot;matrix&quot;}</translation>
     </message>
     <message>
         <source>expected an object with &quot;from&quot;, &quot;to&quot; and the arc&apos;s map</source>
-        <translation type="unfinished"></translation>
+        <translation>očekáván objekt s &quot;from&quot;, &quot;to&quot; a zobrazením hrany</translation>
     </message>
     <message>
         <source>unknown field of an arc</source>
-        <translation type="unfinished"></translation>
+        <translation>neznámé pole hrany</translation>
     </message>
     <message>
         <source>All states</source>
-        <translation type="unfinished"></translation>
+        <translation>Všechny stavy</translation>
     </message>
 </context>
 <context>
@@ -1961,23 +1965,23 @@
     </message>
     <message>
         <source>Scaled coordinates g(z, 1/(2y)) = Re z + i Im z / (2y), y = %1 (004 eq. (3.40)): as y → 0 the curve approaches the Takagi graph x + i T(x) (Thm 3.7.3, Figs. 3.6–3.8). %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Škálované souřadnice g(z, 1/(2y)) = Re z + i Im z / (2y), y = %1 (004 eq. (3.40)): pro y → 0 se křivka blíží grafu Takagiho funkce x + i T(x) (Thm 3.7.3, Figs. 3.6–3.8). %2</translation>
     </message>
     <message>
         <source>Scaled coordinates apply to t = 1/2 + iy with y ≠ 0 and control points on the real axis (004 Thm 3.7.3); drawn unscaled. %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Škálované souřadnice platí pro t = 1/2 + iy s y ≠ 0 a řídicími body na reálné ose (004 Thm 3.7.3); vykresleno bez škálování. %1</translation>
     </message>
     <message>
         <source>Change scaled coordinates of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Změnit škálované souřadnice položky %1</translation>
     </message>
     <message>
         <source>Scaled coordinates g(z, 1/(2y))</source>
-        <translation type="unfinished"></translation>
+        <translation>Škálované souřadnice g(z, 1/(2y))</translation>
     </message>
     <message>
         <source>Draw Re z + i Im z / (2y) for t = 1/2 + iy: the coordinates of 004 Thm 3.7.3 and Figs. 3.6–3.8, where the curve approaches the Takagi graph</source>
-        <translation type="unfinished"></translation>
+        <translation>Vykreslit Re z + i Im z / (2y) pro t = 1/2 + iy: souřadnice z 004 Thm 3.7.3 a Figs. 3.6–3.8, v nichž se křivka blíží grafu Takagiho funkce</translation>
     </message>
 </context>
 <context>
@@ -2204,7 +2208,7 @@
     </message>
     <message>
         <source>Takagi graph x + i T(x), scaled (004 Thm 3.7.3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Graf Takagiho funkce x + i T(x), škálovaný (004 Thm 3.7.3)</translation>
     </message>
 </context>
 <context>
@@ -2620,11 +2624,11 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;: its xaos rows let no xform follow another</source>
-        <translation type="unfinished"></translation>
+        <translation>plamen &apos;%1&apos;: jeho řádky xaos nedovolují, aby po kterékoli xform následovala jiná</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its xaos rows make %2 arcs between its xforms, more than the %3 a controlled IFS may have</source>
-        <translation type="unfinished"></translation>
+        <translation>plamen &apos;%1&apos;: jeho řádky xaos vytvářejí mezi jeho xform %2 hran, více než %3, které smí mít řízený IFS</translation>
     </message>
 </context>
 <context>
@@ -4536,7 +4540,7 @@ Schéma subdivize:</translation>
     </message>
     <message>
         <source>Automaton</source>
-        <translation type="unfinished">Automat</translation>
+        <translation>Automat</translation>
     </message>
 </context>
 <context>
@@ -8292,11 +8296,11 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     </message>
     <message>
         <source>A complex Bézier curve of t = 1/2 + iy in the scaled coordinates g(z, 1/(2y)) of 004 Thm 3.7.3, where it approaches the Takagi graph (the item&apos;s &quot;scaled&quot;, for this figure)</source>
-        <translation type="unfinished"></translation>
+        <translation>Komplexní Bézierova křivka pro t = 1/2 + iy ve škálovaných souřadnicích g(z, 1/(2y)) z 004 Thm 3.7.3, v nichž se blíží grafu Takagiho funkce (pro tento obrázek &quot;scaled&quot; položky)</translation>
     </message>
     <message>
         <source>--scaled draws a complex Bézier curve of t = 1/2 + iy (y ≠ 0) with control points on the real axis; &apos;%1&apos; is not one</source>
-        <translation type="unfinished"></translation>
+        <translation>--scaled vykresluje komplexní Bézierovu křivku pro t = 1/2 + iy (y ≠ 0) s řídicími body na reálné ose; &apos;%1&apos; taková není</translation>
     </message>
 </context>
 <context>
@@ -9139,7 +9143,7 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     </message>
     <message>
         <source>the barycentric part needs a non-empty matrix</source>
-        <translation type="unfinished"></translation>
+        <translation>barycentrická část vyžaduje neprázdnou matici</translation>
     </message>
 </context>
 <context>

@@ -1226,241 +1226,245 @@
     <name>awb::AutomatonAnalysis</name>
     <message>
         <source>every long path contracts</source>
-        <translation type="unfinished"></translation>
+        <translation>tout chemin long est contractant</translation>
     </message>
     <message>
         <source>some path does not contract</source>
-        <translation type="unfinished"></translation>
+        <translation>un chemin n&apos;est pas contractant</translation>
     </message>
     <message>
         <source>not decided</source>
-        <translation type="unfinished"></translation>
+        <translation>non décidé</translation>
     </message>
     <message>
         <source>constrained JSR ρ = %1 exactly (invariant polytope, extremal cycle %2): %3</source>
-        <translation type="unfinished"></translation>
+        <translation>rayon spectral joint contraint ρ = %1 exactement (polytope invariant, cycle extrémal %2) : %3</translation>
     </message>
     <message>
         <source>constrained JSR ρ in [%1, %2]: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>rayon spectral joint contraint ρ dans [%1, %2] : %3</translation>
     </message>
     <message>
         <source>Lyapunov exponent of random iteration %1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>exposant de Lyapunov de l&apos;itération aléatoire %1 (%2)</translation>
     </message>
     <message>
         <source>contracts on average</source>
-        <translation type="unfinished"></translation>
+        <translation>contractant en moyenne</translation>
     </message>
     <message>
         <source>does not contract on average</source>
-        <translation type="unfinished"></translation>
+        <translation>non contractant en moyenne</translation>
     </message>
     <message>
         <source>cycle %1: ρ = %2 (%3 per arc); eigenvalues %4</source>
-        <translation type="unfinished"></translation>
+        <translation>cycle %1 : ρ = %2 (%3 par arc) ; valeurs propres %4</translation>
     </message>
     <message>
         <source>… and %1 more cycles</source>
-        <translation type="unfinished"></translation>
+        <translation>… et %1 cycles de plus</translation>
     </message>
 </context>
 <context>
     <name>awb::AutomatonGraph</name>
     <message>
         <source>Automaton graph</source>
-        <translation type="unfinished"></translation>
+        <translation>Graphe de l&apos;automate</translation>
     </message>
     <message>
         <source>No states</source>
-        <translation type="unfinished"></translation>
+        <translation>Aucun état</translation>
     </message>
     <message>
         <source>%1 pts</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 pts</translation>
     </message>
     <message>
         <source>State %1: %2 control points%3</source>
-        <translation type="unfinished"></translation>
+        <translation>État %1 : %2 points de contrôle%3</translation>
     </message>
     <message>
         <source>, drawn</source>
-        <translation type="unfinished"></translation>
+        <translation>, tracé</translation>
     </message>
     <message>
         <source>Arc %1: %2 → %3 (maps the space of %3 into %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Arc %1 : %2 → %3 (envoie l&apos;espace de %3 dans celui de %2)</translation>
     </message>
 </context>
 <context>
     <name>awb::AutomatonPanel</name>
     <message>
         <source>Select a controlled IFS item to see and edit its automaton (Items &gt; Add &gt; Controlled IFS, or the example 003 Fig. 5).</source>
-        <translation type="unfinished"></translation>
+        <translation type="vanished">Sélectionnez un élément IFS contrôlé pour voir et modifier son automate (Éléments &gt; Ajouter &gt; IFS contrôlé, ou l&apos;exemple 003 Fig. 5).</translation>
     </message>
     <message>
         <source>Drawn:</source>
-        <translation type="unfinished"></translation>
+        <translation>Tracé :</translation>
     </message>
     <message>
         <source>The state whose attractor is drawn, or the union of all</source>
-        <translation type="unfinished"></translation>
+        <translation>L&apos;état dont l&apos;attracteur est tracé, ou l&apos;union de tous</translation>
     </message>
     <message>
         <source>Add State</source>
-        <translation type="unfinished"></translation>
+        <translation>Ajouter un état</translation>
     </message>
     <message>
         <source> points</source>
-        <translation type="unfinished"></translation>
+        <translation> points</translation>
     </message>
     <message>
         <source>The new state&apos;s number of control points: the dimension of its barycentric space (3: a frame triangle)</source>
-        <translation type="unfinished"></translation>
+        <translation>Le nombre de points de contrôle du nouvel état : la dimension de son espace barycentrique (3 : un triangle de repère)</translation>
     </message>
     <message>
         <source>Remove State</source>
-        <translation type="unfinished"></translation>
+        <translation>Supprimer l&apos;état</translation>
     </message>
     <message>
         <source>Add Arc</source>
-        <translation type="unfinished"></translation>
+        <translation>Ajouter un arc</translation>
     </message>
     <message>
         <source>A new arc leaving the selected state (into itself; pick its target below)</source>
-        <translation type="unfinished"></translation>
+        <translation>Un nouvel arc partant de l&apos;état sélectionné (vers lui-même ; choisissez sa cible ci-dessous)</translation>
     </message>
     <message>
         <source>Remove Arc</source>
-        <translation type="unfinished"></translation>
+        <translation>Supprimer l&apos;arc</translation>
     </message>
     <message>
         <source>Click a state or an arc to edit it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Cliquez sur un état ou un arc pour le modifier.</translation>
     </message>
     <message>
         <source>State name</source>
-        <translation type="unfinished"></translation>
+        <translation>Nom de l&apos;état</translation>
     </message>
     <message>
         <source>Arc name</source>
-        <translation type="unfinished"></translation>
+        <translation>Nom de l&apos;arc</translation>
     </message>
     <message>
         <source>From → to</source>
-        <translation type="unfinished"></translation>
+        <translation>De → à</translation>
     </message>
     <message>
         <source>The arc&apos;s relative probability among the arcs leaving its state (random iteration)</source>
-        <translation type="unfinished"></translation>
+        <translation>La probabilité relative de l&apos;arc parmi les arcs partant de son état (itération aléatoire)</translation>
     </message>
     <message>
         <source>Weight</source>
-        <translation type="unfinished"></translation>
+        <translation>Poids</translation>
     </message>
     <message>
         <source>Matrix S (rows sum to 1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Matrice S (lignes de somme 1)</translation>
     </message>
     <message>
         <source>Plane affine map</source>
-        <translation type="unfinished"></translation>
+        <translation>Application affine du plan</translation>
     </message>
     <message>
         <source>Piece of a curve scheme</source>
-        <translation type="unfinished"></translation>
+        <translation>Morceau d&apos;un schéma de courbe</translation>
     </message>
     <message>
         <source>Map</source>
-        <translation type="unfinished"></translation>
+        <translation>Application</translation>
     </message>
     <message>
         <source>S: a row per control point of the target state, a column per control point of the source; numbers like 1/3 are read exactly</source>
-        <translation type="unfinished"></translation>
+        <translation>S : une ligne par point de contrôle de l&apos;état cible, une colonne par point de contrôle de l&apos;état source ; les nombres comme 1/3 sont lus exactement</translation>
     </message>
     <message>
         <source>Apply Matrix</source>
-        <translation type="unfinished"></translation>
+        <translation>Appliquer la matrice</translation>
     </message>
     <message>
         <source>Apply Affine Map</source>
-        <translation type="unfinished"></translation>
+        <translation>Appliquer l&apos;application affine</translation>
     </message>
     <message>
         <source>x ↦ x A + b, taking the target state&apos;s frame triangle into the plane of the source&apos;s; kept as its matrix</source>
-        <translation type="unfinished"></translation>
+        <translation>x ↦ x A + b, envoyant le triangle de repère de l&apos;état cible dans le plan de celui de l&apos;état source ; conservée sous forme de sa matrice</translation>
     </message>
     <message>
         <source>Bézier (de Casteljau at 1/2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Bézier (de Casteljau en 1/2)</translation>
     </message>
     <message>
         <source>Uniform B-spline</source>
-        <translation type="unfinished">B-spline uniforme</translation>
+        <translation>B-spline uniforme</translation>
     </message>
     <message>
         <source>End-interpolating B-spline</source>
-        <translation type="unfinished">B-spline interpolant les extrémités</translation>
+        <translation>B-spline interpolant les extrémités</translation>
     </message>
     <message>
         <source>Chaikin</source>
-        <translation type="unfinished">Chaikin</translation>
+        <translation>Chaikin</translation>
     </message>
     <message>
         <source>Four-point</source>
-        <translation type="unfinished">Quatre points</translation>
+        <translation>Quatre points</translation>
     </message>
     <message>
         <source>Scheme</source>
-        <translation type="unfinished">Schéma</translation>
+        <translation>Schéma</translation>
     </message>
     <message>
         <source>Degree</source>
-        <translation type="unfinished">Degré</translation>
+        <translation>Degré</translation>
     </message>
     <message>
         <source>Piece S_i, i =</source>
-        <translation type="unfinished"></translation>
+        <translation>Morceau S_i, i =</translation>
     </message>
     <message>
         <source>Apply Scheme Piece</source>
-        <translation type="unfinished"></translation>
+        <translation>Appliquer le morceau de schéma</translation>
     </message>
     <message>
         <source>The analysis of a controlled IFS item: its constrained joint spectral radius, its cycles&apos; spectra and the Lyapunov exponent of random iteration.</source>
-        <translation type="unfinished"></translation>
+        <translation>L&apos;analyse d&apos;un élément IFS contrôlé : son rayon spectral joint contraint, les spectres de ses cycles et l&apos;exposant de Lyapunov de l&apos;itération aléatoire.</translation>
     </message>
     <message>
         <source>All states</source>
-        <translation type="unfinished"></translation>
+        <translation>Tous les états</translation>
     </message>
     <message>
         <source>Analysing the automaton…</source>
-        <translation type="unfinished"></translation>
+        <translation>Analyse de l&apos;automate…</translation>
     </message>
     <message>
         <source>Automaton of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Automate de %1</translation>
     </message>
     <message>
         <source>%1 control points (its barycentric space), %2 arcs leave it, %3 arrive. Drag its control points in the attractor view.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 points de contrôle (son espace barycentrique), %2 arcs en partent, %3 y arrivent. Faites glisser ses points de contrôle dans la vue de l&apos;attracteur.</translation>
     </message>
     <message>
         <source>S is %1 × %2: a row per point of %3, a column per point of %4. It maps the space of %3 into that of %4.</source>
-        <translation type="unfinished"></translation>
+        <translation>S est de taille %1 × %2 : une ligne par point de %3, une colonne par point de %4. Elle envoie l&apos;espace de %3 dans celui de %4.</translation>
     </message>
     <message>
         <source>no controlled IFS item is selected</source>
-        <translation type="unfinished"></translation>
+        <translation>aucun élément IFS contrôlé n&apos;est sélectionné</translation>
     </message>
     <message>
         <source>row %1, column %2 of the matrix is not a number: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>la ligne %1, colonne %2 de la matrice n&apos;est pas un nombre : %3</translation>
     </message>
     <message>
         <source>%1 is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 n&apos;est pas un nombre</translation>
+    </message>
+    <message>
+        <source>Select a controlled IFS item to see and edit its automaton (Item &gt; Add &gt; Controlled IFS, or the example 003 Fig. 5).</source>
+        <translation>Sélectionnez un élément IFS contrôlé pour voir et modifier son automate (Élément &gt; Ajouter &gt; IFS contrôlé, ou l&apos;exemple 003 Fig. 5).</translation>
     </message>
 </context>
 <context>
@@ -1718,39 +1722,39 @@
     </message>
     <message>
         <source>a controlled IFS draws its arcs by their own weights (&quot;arcs&quot;): leave the algorithm&apos;s probabilities empty</source>
-        <translation type="unfinished"></translation>
+        <translation>un IFS contrôlé tire ses arcs selon leurs propres poids (&quot;arcs&quot;) : laissez vides les probabilités de l&apos;algorithme</translation>
     </message>
     <message>
         <source>arcs between states of different dimensions have rectangular matrices: see the automaton&apos;s analysis</source>
-        <translation type="unfinished"></translation>
+        <translation>les arcs entre des états de dimensions différentes ont des matrices rectangulaires : voir l&apos;analyse de l&apos;automate</translation>
     </message>
     <message>
         <source>The union of the attractors of the automaton&apos;s %1 states (003 §2.2).</source>
-        <translation type="unfinished"></translation>
+        <translation>L&apos;union des attracteurs des %1 états de l&apos;automate (003 §2.2).</translation>
     </message>
     <message>
         <source>The attractor of state %1 of the automaton (003 §2.2).</source>
-        <translation type="unfinished"></translation>
+        <translation>L&apos;attracteur de l&apos;état %1 de l&apos;automate (003 §2.2).</translation>
     </message>
     <message>
         <source>States</source>
-        <translation type="unfinished"></translation>
+        <translation>États</translation>
     </message>
     <message>
         <source>Each state&apos;s name and control points (its barycentric space)</source>
-        <translation type="unfinished"></translation>
+        <translation>Le nom et les points de contrôle de chaque état (son espace barycentrique)</translation>
     </message>
     <message>
         <source>Arcs</source>
-        <translation type="unfinished"></translation>
+        <translation>Arcs</translation>
     </message>
     <message>
         <source>Each arc&apos;s states and matrix S (a row per point of the state it leads to, rows summing to 1) and weight</source>
-        <translation type="unfinished"></translation>
+        <translation>Les états, la matrice S (une ligne par point de l&apos;état vers lequel il mène, lignes de somme 1) et le poids de chaque arc</translation>
     </message>
     <message>
         <source>The state whose attractor is drawn, or the union of all</source>
-        <translation type="unfinished"></translation>
+        <translation>L&apos;état dont l&apos;attracteur est tracé, ou l&apos;union de tous</translation>
     </message>
 </context>
 <context>
@@ -1765,151 +1769,151 @@
     </message>
     <message>
         <source>expected a matrix: a non-empty array of rows</source>
-        <translation type="unfinished">matrice attendue&#xa0;: un tableau non vide de lignes</translation>
+        <translation>matrice attendue : un tableau non vide de lignes</translation>
     </message>
     <message>
         <source>a %1 x %2 matrix: a state has at most %3 points</source>
-        <translation type="unfinished"></translation>
+        <translation>une matrice %1 x %2 : un état a au plus %3 points</translation>
     </message>
     <message>
         <source>expected a row of %1 numbers, like row 1</source>
-        <translation type="unfinished"></translation>
+        <translation>ligne de %1 nombres attendue, comme la ligne 1</translation>
     </message>
     <message>
         <source>no state %1; the states are %2</source>
-        <translation type="unfinished"></translation>
+        <translation>aucun état %1 ; les états sont %2</translation>
     </message>
     <message>
         <source>none</source>
-        <translation type="unfinished"></translation>
+        <translation>aucun</translation>
     </message>
     <message>
         <source>expected a state&apos;s name</source>
-        <translation type="unfinished"></translation>
+        <translation>nom d&apos;état attendu</translation>
     </message>
     <message>
         <source>missing: give the arc&apos;s map as &quot;matrix&quot;, &quot;columns&quot;, &quot;affine&quot; or &quot;scheme&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>manquant : donnez l&apos;application de l&apos;arc sous la forme &quot;matrix&quot;, &quot;columns&quot;, &quot;affine&quot; ou &quot;scheme&quot;</translation>
     </message>
     <message>
         <source>give the arc&apos;s map one way, not as %1</source>
-        <translation type="unfinished"></translation>
+        <translation>donnez l&apos;application de l&apos;arc d&apos;une seule façon, pas comme %1</translation>
     </message>
     <message>
         <source> and </source>
-        <translation type="unfinished"> et </translation>
+        <translation> et </translation>
     </message>
     <message>
         <source>a plane affine map needs both states to have 3 control points (a frame triangle): %1 has %2, %3 has %4</source>
-        <translation type="unfinished"></translation>
+        <translation>une application affine du plan exige que les deux états aient 3 points de contrôle (un triangle de repère) : %1 en a %2, %3 en a %4</translation>
     </message>
     <message>
         <source>expected {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]}</source>
-        <translation type="unfinished"></translation>
+        <translation>attendu : {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]}</translation>
     </message>
     <message>
         <source>A must be 2 x 2 and b two numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>A doit être 2 x 2 et b deux nombres</translation>
     </message>
     <message>
         <source>expected a curve scheme, as a curve item&apos;s &quot;scheme&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>schéma de courbe attendu, comme le &quot;scheme&quot; d&apos;un élément courbe</translation>
     </message>
     <message>
         <source>a scheme&apos;s matrix is square: %1 has %2 points, %3 has %4</source>
-        <translation type="unfinished"></translation>
+        <translation>la matrice d&apos;un schéma est carrée : %1 a %2 points, %3 en a %4</translation>
     </message>
     <message>
         <source>an automaton needs at least one state</source>
-        <translation type="unfinished"></translation>
+        <translation>un automate nécessite au moins un état</translation>
     </message>
     <message>
         <source>%1 states: at most %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 états : au plus %2</translation>
     </message>
     <message>
         <source>a state needs a name</source>
-        <translation type="unfinished"></translation>
+        <translation>un état doit avoir un nom</translation>
     </message>
     <message>
         <source>&quot;%1&quot; names all states; call the state otherwise</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot; désigne tous les états ; nommez l&apos;état autrement</translation>
     </message>
     <message>
         <source>two states are called %1</source>
-        <translation type="unfinished"></translation>
+        <translation>deux états s&apos;appellent %1</translation>
     </message>
     <message>
         <source>a state needs 1 to %1 control points, got %2</source>
-        <translation type="unfinished"></translation>
+        <translation>un état nécessite de 1 à %1 points de contrôle, reçu %2</translation>
     </message>
     <message>
         <source>state %1 has a control point that is not finite</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;état %1 a un point de contrôle qui n&apos;est pas fini</translation>
     </message>
     <message>
         <source>%1 arcs: at most %2 (addresses are bytes)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 arcs : au plus %2 (les adresses sont des octets)</translation>
     </message>
     <message>
         <source>an arc needs a name</source>
-        <translation type="unfinished"></translation>
+        <translation>un arc doit avoir un nom</translation>
     </message>
     <message>
         <source>two arcs are called %1</source>
-        <translation type="unfinished"></translation>
+        <translation>deux arcs s&apos;appellent %1</translation>
     </message>
     <message>
         <source>arc %1 leads between states that do not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;arc %1 relie des états qui n&apos;existent pas</translation>
     </message>
     <message>
         <source>arc %1 has a %2 x %3 matrix; from %4 (%5 points) to %6 (%7 points) it must be %7 x %5: a row per point of %6</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;arc %1 a une matrice %2 x %3 ; de %4 (%5 points) à %6 (%7 points), elle doit être %7 x %5 : une ligne par point de %6</translation>
     </message>
     <message>
         <source>arc %1 has a matrix entry that is not finite</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;arc %1 a un coefficient de matrice qui n&apos;est pas fini</translation>
     </message>
     <message>
         <source>row %1 of arc %2 sums to %3, not 1: the map would not keep barycentric coordinates</source>
-        <translation type="unfinished"></translation>
+        <translation>la ligne %1 de l&apos;arc %2 a pour somme %3, et non 1 : l&apos;application ne conserverait pas les coordonnées barycentriques</translation>
     </message>
     <message>
         <source>the weight of arc %1 must be a number &gt; 0</source>
-        <translation type="unfinished"></translation>
+        <translation>le poids de l&apos;arc %1 doit être un nombre &gt; 0</translation>
     </message>
     <message>
         <source>no state %1 to draw; the states are %2</source>
-        <translation type="unfinished"></translation>
+        <translation>aucun état %1 à tracer ; les états sont %2</translation>
     </message>
     <message>
         <source>expected a non-empty array of states {&quot;name&quot;: text, &quot;control_points&quot;: [...]}</source>
-        <translation type="unfinished"></translation>
+        <translation>tableau non vide d&apos;états attendu {&quot;name&quot;: texte, &quot;control_points&quot;: [...]}</translation>
     </message>
     <message>
         <source>expected an object with &quot;name&quot; and &quot;control_points&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>objet attendu avec &quot;name&quot; et &quot;control_points&quot;</translation>
     </message>
     <message>
         <source>unknown field of a state</source>
-        <translation type="unfinished"></translation>
+        <translation>champ inconnu d&apos;un état</translation>
     </message>
     <message>
         <source>expected an array of arcs {&quot;name&quot;, &quot;from&quot;, &quot;to&quot;, &quot;matrix&quot;}</source>
-        <translation type="unfinished"></translation>
+        <translation>tableau d&apos;arcs attendu {&quot;name&quot;, &quot;from&quot;, &quot;to&quot;, &quot;matrix&quot;}</translation>
     </message>
     <message>
         <source>expected an object with &quot;from&quot;, &quot;to&quot; and the arc&apos;s map</source>
-        <translation type="unfinished"></translation>
+        <translation>objet attendu avec &quot;from&quot;, &quot;to&quot; et l&apos;application de l&apos;arc</translation>
     </message>
     <message>
         <source>unknown field of an arc</source>
-        <translation type="unfinished"></translation>
+        <translation>champ inconnu d&apos;un arc</translation>
     </message>
     <message>
         <source>All states</source>
-        <translation type="unfinished"></translation>
+        <translation>Tous les états</translation>
     </message>
 </context>
 <context>
@@ -1960,23 +1964,23 @@
     </message>
     <message>
         <source>Scaled coordinates g(z, 1/(2y)) = Re z + i Im z / (2y), y = %1 (004 eq. (3.40)): as y → 0 the curve approaches the Takagi graph x + i T(x) (Thm 3.7.3, Figs. 3.6–3.8). %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Coordonnées mises à l&apos;échelle g(z, 1/(2y)) = Re z + i Im z / (2y), y = %1 (004 eq. (3.40)) : quand y → 0, la courbe tend vers le graphe de Takagi x + i T(x) (Thm 3.7.3, Figs. 3.6–3.8). %2</translation>
     </message>
     <message>
         <source>Scaled coordinates apply to t = 1/2 + iy with y ≠ 0 and control points on the real axis (004 Thm 3.7.3); drawn unscaled. %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Les coordonnées mises à l&apos;échelle s&apos;appliquent à t = 1/2 + iy avec y ≠ 0 et des points de contrôle sur l&apos;axe réel (004 Thm 3.7.3) ; tracé sans mise à l&apos;échelle. %1</translation>
     </message>
     <message>
         <source>Change scaled coordinates of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Modifier les coordonnées mises à l&apos;échelle de %1</translation>
     </message>
     <message>
         <source>Scaled coordinates g(z, 1/(2y))</source>
-        <translation type="unfinished"></translation>
+        <translation>Coordonnées mises à l&apos;échelle g(z, 1/(2y))</translation>
     </message>
     <message>
         <source>Draw Re z + i Im z / (2y) for t = 1/2 + iy: the coordinates of 004 Thm 3.7.3 and Figs. 3.6–3.8, where the curve approaches the Takagi graph</source>
-        <translation type="unfinished"></translation>
+        <translation>Tracer Re z + i Im z / (2y) pour t = 1/2 + iy : les coordonnées de 004 Thm 3.7.3 et des Figs. 3.6–3.8, où la courbe tend vers le graphe de Takagi</translation>
     </message>
 </context>
 <context>
@@ -2203,7 +2207,7 @@
     </message>
     <message>
         <source>Takagi graph x + i T(x), scaled (004 Thm 3.7.3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Graphe de Takagi x + i T(x), mis à l&apos;échelle (004 Thm 3.7.3)</translation>
     </message>
 </context>
 <context>
@@ -2291,7 +2295,7 @@
     </message>
     <message>
         <source>expected a matrix: a non-empty array of rows</source>
-        <translation>matrice attendue&#xa0;: un tableau non vide de lignes</translation>
+        <translation>matrice attendue : un tableau non vide de lignes</translation>
     </message>
     <message>
         <source>expected a row: a non-empty array of numbers</source>
@@ -2617,11 +2621,11 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;: its xaos rows let no xform follow another</source>
-        <translation type="unfinished"></translation>
+        <translation>flamme &apos;%1&apos; : ses lignes xaos ne permettent à aucune xform d&apos;en suivre une autre</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its xaos rows make %2 arcs between its xforms, more than the %3 a controlled IFS may have</source>
-        <translation type="unfinished"></translation>
+        <translation>flamme &apos;%1&apos; : ses lignes xaos créent %2 arcs entre ses xforms, plus que les %3 qu&apos;un IFS contrôlé peut avoir</translation>
     </message>
 </context>
 <context>
@@ -4530,7 +4534,7 @@ Schéma de subdivision&#xa0;:</translation>
     </message>
     <message>
         <source>Automaton</source>
-        <translation type="unfinished">Automate</translation>
+        <translation>Automate</translation>
     </message>
 </context>
 <context>
@@ -5933,7 +5937,7 @@ Schéma de subdivision&#xa0;:</translation>
     </message>
     <message>
         <source>none</source>
-        <translation>aucune</translation>
+        <translation>aucun</translation>
     </message>
     <message>
         <source>No subdominant eigenvalue: the map is constant.</source>
@@ -8279,11 +8283,11 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     </message>
     <message>
         <source>A complex Bézier curve of t = 1/2 + iy in the scaled coordinates g(z, 1/(2y)) of 004 Thm 3.7.3, where it approaches the Takagi graph (the item&apos;s &quot;scaled&quot;, for this figure)</source>
-        <translation type="unfinished"></translation>
+        <translation>Une courbe de Bézier complexe pour t = 1/2 + iy dans les coordonnées mises à l&apos;échelle g(z, 1/(2y)) de 004 Thm 3.7.3, où elle tend vers le graphe de Takagi (le &quot;scaled&quot; de l&apos;élément, pour cette figure)</translation>
     </message>
     <message>
         <source>--scaled draws a complex Bézier curve of t = 1/2 + iy (y ≠ 0) with control points on the real axis; &apos;%1&apos; is not one</source>
-        <translation type="unfinished"></translation>
+        <translation>--scaled trace une courbe de Bézier complexe pour t = 1/2 + iy (y ≠ 0) avec des points de contrôle sur l&apos;axe réel ; &apos;%1&apos; n&apos;en est pas une</translation>
     </message>
 </context>
 <context>
@@ -9126,7 +9130,7 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     </message>
     <message>
         <source>the barycentric part needs a non-empty matrix</source>
-        <translation type="unfinished"></translation>
+        <translation>la partie barycentrique nécessite une matrice non vide</translation>
     </message>
 </context>
 <context>

@@ -1225,241 +1225,245 @@
     <name>awb::AutomatonAnalysis</name>
     <message>
         <source>every long path contracts</source>
-        <translation type="unfinished"></translation>
+        <translation>每条长路径都是压缩的</translation>
     </message>
     <message>
         <source>some path does not contract</source>
-        <translation type="unfinished"></translation>
+        <translation>存在不压缩的路径</translation>
     </message>
     <message>
         <source>not decided</source>
-        <translation type="unfinished"></translation>
+        <translation>未判定</translation>
     </message>
     <message>
         <source>constrained JSR ρ = %1 exactly (invariant polytope, extremal cycle %2): %3</source>
-        <translation type="unfinished"></translation>
+        <translation>受约束的联合谱半径 ρ = %1（精确值；不变多面体，极值回路 %2）：%3</translation>
     </message>
     <message>
         <source>constrained JSR ρ in [%1, %2]: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>受约束的联合谱半径 ρ 位于 [%1, %2]：%3</translation>
     </message>
     <message>
         <source>Lyapunov exponent of random iteration %1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>随机迭代的李雅普诺夫指数 %1（%2）</translation>
     </message>
     <message>
         <source>contracts on average</source>
-        <translation type="unfinished"></translation>
+        <translation>平均而言是压缩的</translation>
     </message>
     <message>
         <source>does not contract on average</source>
-        <translation type="unfinished"></translation>
+        <translation>平均而言不是压缩的</translation>
     </message>
     <message>
         <source>cycle %1: ρ = %2 (%3 per arc); eigenvalues %4</source>
-        <translation type="unfinished"></translation>
+        <translation>回路 %1：ρ = %2（每条弧 %3）；特征值 %4</translation>
     </message>
     <message>
         <source>… and %1 more cycles</source>
-        <translation type="unfinished"></translation>
+        <translation>…以及另外 %1 个回路</translation>
     </message>
 </context>
 <context>
     <name>awb::AutomatonGraph</name>
     <message>
         <source>Automaton graph</source>
-        <translation type="unfinished"></translation>
+        <translation>自动机图</translation>
     </message>
     <message>
         <source>No states</source>
-        <translation type="unfinished"></translation>
+        <translation>无状态</translation>
     </message>
     <message>
         <source>%1 pts</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 个点</translation>
     </message>
     <message>
         <source>State %1: %2 control points%3</source>
-        <translation type="unfinished"></translation>
+        <translation>状态 %1：%2 个控制点%3</translation>
     </message>
     <message>
         <source>, drawn</source>
-        <translation type="unfinished"></translation>
+        <translation>，已绘制</translation>
     </message>
     <message>
         <source>Arc %1: %2 → %3 (maps the space of %3 into %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>弧 %1：%2 → %3（将 %3 的空间映射到 %2 的空间）</translation>
     </message>
 </context>
 <context>
     <name>awb::AutomatonPanel</name>
     <message>
         <source>Select a controlled IFS item to see and edit its automaton (Items &gt; Add &gt; Controlled IFS, or the example 003 Fig. 5).</source>
-        <translation type="unfinished"></translation>
+        <translation type="vanished">选择一个受控IFS项即可查看并编辑其自动机（项 &gt; 添加 &gt; 受控IFS，或示例 003 Fig. 5）。</translation>
     </message>
     <message>
         <source>Drawn:</source>
-        <translation type="unfinished"></translation>
+        <translation>绘制：</translation>
     </message>
     <message>
         <source>The state whose attractor is drawn, or the union of all</source>
-        <translation type="unfinished"></translation>
+        <translation>要绘制其吸引子的状态，或所有状态的并</translation>
     </message>
     <message>
         <source>Add State</source>
-        <translation type="unfinished"></translation>
+        <translation>添加状态</translation>
     </message>
     <message>
         <source> points</source>
-        <translation type="unfinished"></translation>
+        <translation> 个点</translation>
     </message>
     <message>
         <source>The new state&apos;s number of control points: the dimension of its barycentric space (3: a frame triangle)</source>
-        <translation type="unfinished"></translation>
+        <translation>新状态的控制点个数：其重心空间的维数（3：框架三角形）</translation>
     </message>
     <message>
         <source>Remove State</source>
-        <translation type="unfinished"></translation>
+        <translation>删除状态</translation>
     </message>
     <message>
         <source>Add Arc</source>
-        <translation type="unfinished"></translation>
+        <translation>添加弧</translation>
     </message>
     <message>
         <source>A new arc leaving the selected state (into itself; pick its target below)</source>
-        <translation type="unfinished"></translation>
+        <translation>从所选状态出发的新弧（指向其自身；请在下方选择其目标）</translation>
     </message>
     <message>
         <source>Remove Arc</source>
-        <translation type="unfinished"></translation>
+        <translation>删除弧</translation>
     </message>
     <message>
         <source>Click a state or an arc to edit it.</source>
-        <translation type="unfinished"></translation>
+        <translation>单击状态或弧即可对其进行编辑。</translation>
     </message>
     <message>
         <source>State name</source>
-        <translation type="unfinished"></translation>
+        <translation>状态名称</translation>
     </message>
     <message>
         <source>Arc name</source>
-        <translation type="unfinished"></translation>
+        <translation>弧名称</translation>
     </message>
     <message>
         <source>From → to</source>
-        <translation type="unfinished"></translation>
+        <translation>从 → 到</translation>
     </message>
     <message>
         <source>The arc&apos;s relative probability among the arcs leaving its state (random iteration)</source>
-        <translation type="unfinished"></translation>
+        <translation>该弧在从其状态出发的各弧中的相对概率（随机迭代）</translation>
     </message>
     <message>
         <source>Weight</source>
-        <translation type="unfinished"></translation>
+        <translation>权重</translation>
     </message>
     <message>
         <source>Matrix S (rows sum to 1)</source>
-        <translation type="unfinished"></translation>
+        <translation>矩阵 S（各行之和为 1）</translation>
     </message>
     <message>
         <source>Plane affine map</source>
-        <translation type="unfinished"></translation>
+        <translation>平面仿射映射</translation>
     </message>
     <message>
         <source>Piece of a curve scheme</source>
-        <translation type="unfinished"></translation>
+        <translation>曲线细分格式的片段</translation>
     </message>
     <message>
         <source>Map</source>
-        <translation type="unfinished"></translation>
+        <translation>映射</translation>
     </message>
     <message>
         <source>S: a row per control point of the target state, a column per control point of the source; numbers like 1/3 are read exactly</source>
-        <translation type="unfinished"></translation>
+        <translation>S：目标状态的每个控制点对应一行，源状态的每个控制点对应一列；1/3 这样的数按精确值读取</translation>
     </message>
     <message>
         <source>Apply Matrix</source>
-        <translation type="unfinished"></translation>
+        <translation>应用矩阵</translation>
     </message>
     <message>
         <source>Apply Affine Map</source>
-        <translation type="unfinished"></translation>
+        <translation>应用仿射映射</translation>
     </message>
     <message>
         <source>x ↦ x A + b, taking the target state&apos;s frame triangle into the plane of the source&apos;s; kept as its matrix</source>
-        <translation type="unfinished"></translation>
+        <translation>x ↦ x A + b，将目标状态的框架三角形映射到源状态框架三角形所在的平面；以其矩阵形式保存</translation>
     </message>
     <message>
         <source>Bézier (de Casteljau at 1/2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Bézier（在 1/2 处的 de Casteljau 算法）</translation>
     </message>
     <message>
         <source>Uniform B-spline</source>
-        <translation type="unfinished">均匀 B 样条</translation>
+        <translation>均匀 B 样条</translation>
     </message>
     <message>
         <source>End-interpolating B-spline</source>
-        <translation type="unfinished">端点插值 B 样条</translation>
+        <translation>端点插值 B 样条</translation>
     </message>
     <message>
         <source>Chaikin</source>
-        <translation type="unfinished">Chaikin</translation>
+        <translation>Chaikin</translation>
     </message>
     <message>
         <source>Four-point</source>
-        <translation type="unfinished">四点</translation>
+        <translation>四点格式</translation>
     </message>
     <message>
         <source>Scheme</source>
-        <translation type="unfinished">细分格式</translation>
+        <translation>细分格式</translation>
     </message>
     <message>
         <source>Degree</source>
-        <translation type="unfinished">次数</translation>
+        <translation>次数</translation>
     </message>
     <message>
         <source>Piece S_i, i =</source>
-        <translation type="unfinished"></translation>
+        <translation>片段 S_i, i =</translation>
     </message>
     <message>
         <source>Apply Scheme Piece</source>
-        <translation type="unfinished"></translation>
+        <translation>应用细分格式片段</translation>
     </message>
     <message>
         <source>The analysis of a controlled IFS item: its constrained joint spectral radius, its cycles&apos; spectra and the Lyapunov exponent of random iteration.</source>
-        <translation type="unfinished"></translation>
+        <translation>受控IFS项的分析：其受约束的联合谱半径、各回路的谱以及随机迭代的李雅普诺夫指数。</translation>
     </message>
     <message>
         <source>All states</source>
-        <translation type="unfinished"></translation>
+        <translation>所有状态</translation>
     </message>
     <message>
         <source>Analysing the automaton…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在分析自动机…</translation>
     </message>
     <message>
         <source>Automaton of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 的自动机</translation>
     </message>
     <message>
         <source>%1 control points (its barycentric space), %2 arcs leave it, %3 arrive. Drag its control points in the attractor view.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 个控制点（其重心空间），%2 条弧从它出发，%3 条弧到达它。可在吸引子视图中拖动其控制点。</translation>
     </message>
     <message>
         <source>S is %1 × %2: a row per point of %3, a column per point of %4. It maps the space of %3 into that of %4.</source>
-        <translation type="unfinished"></translation>
+        <translation>S 为 %1 × %2 矩阵：%3 的每个点对应一行，%4 的每个点对应一列。它将 %3 的空间映射到 %4 的空间。</translation>
     </message>
     <message>
         <source>no controlled IFS item is selected</source>
-        <translation type="unfinished"></translation>
+        <translation>未选中任何受控IFS项</translation>
     </message>
     <message>
         <source>row %1, column %2 of the matrix is not a number: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>矩阵第 %1 行第 %2 列不是数字：%3</translation>
     </message>
     <message>
         <source>%1 is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 不是数字</translation>
+    </message>
+    <message>
+        <source>Select a controlled IFS item to see and edit its automaton (Item &gt; Add &gt; Controlled IFS, or the example 003 Fig. 5).</source>
+        <translation>选择一个受控 IFS 项即可查看并编辑其自动机（对象 &gt; 添加 &gt; 受控 IFS，或示例 003 Fig. 5）。</translation>
     </message>
 </context>
 <context>
@@ -1717,39 +1721,39 @@
     </message>
     <message>
         <source>a controlled IFS draws its arcs by their own weights (&quot;arcs&quot;): leave the algorithm&apos;s probabilities empty</source>
-        <translation type="unfinished"></translation>
+        <translation>受控IFS按各弧自身的权重（&quot;arcs&quot;）抽取弧：请将算法的概率留空</translation>
     </message>
     <message>
         <source>arcs between states of different dimensions have rectangular matrices: see the automaton&apos;s analysis</source>
-        <translation type="unfinished"></translation>
+        <translation>连接不同维数状态的弧具有矩形矩阵：请参见自动机的分析</translation>
     </message>
     <message>
         <source>The union of the attractors of the automaton&apos;s %1 states (003 §2.2).</source>
-        <translation type="unfinished"></translation>
+        <translation>自动机 %1 个状态的吸引子之并（003 §2.2）。</translation>
     </message>
     <message>
         <source>The attractor of state %1 of the automaton (003 §2.2).</source>
-        <translation type="unfinished"></translation>
+        <translation>自动机状态 %1 的吸引子（003 §2.2）。</translation>
     </message>
     <message>
         <source>States</source>
-        <translation type="unfinished"></translation>
+        <translation>状态</translation>
     </message>
     <message>
         <source>Each state&apos;s name and control points (its barycentric space)</source>
-        <translation type="unfinished"></translation>
+        <translation>每个状态的名称和控制点（其重心空间）</translation>
     </message>
     <message>
         <source>Arcs</source>
-        <translation type="unfinished"></translation>
+        <translation>弧</translation>
     </message>
     <message>
         <source>Each arc&apos;s states and matrix S (a row per point of the state it leads to, rows summing to 1) and weight</source>
-        <translation type="unfinished"></translation>
+        <translation>每条弧的状态、矩阵 S（其所指向状态的每个点对应一行，各行之和为 1）以及权重</translation>
     </message>
     <message>
         <source>The state whose attractor is drawn, or the union of all</source>
-        <translation type="unfinished"></translation>
+        <translation>要绘制其吸引子的状态，或所有状态的并</translation>
     </message>
 </context>
 <context>
@@ -1764,151 +1768,151 @@
     </message>
     <message>
         <source>expected a matrix: a non-empty array of rows</source>
-        <translation type="unfinished">应为矩阵：由行组成的非空数组</translation>
+        <translation>应为矩阵：由行组成的非空数组</translation>
     </message>
     <message>
         <source>a %1 x %2 matrix: a state has at most %3 points</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 x %2 矩阵：一个状态最多有 %3 个点</translation>
     </message>
     <message>
         <source>expected a row of %1 numbers, like row 1</source>
-        <translation type="unfinished"></translation>
+        <translation>应为包含 %1 个数的行，与第 1 行一样</translation>
     </message>
     <message>
         <source>no state %1; the states are %2</source>
-        <translation type="unfinished"></translation>
+        <translation>没有状态 %1；现有状态为 %2</translation>
     </message>
     <message>
         <source>none</source>
-        <translation type="unfinished">无</translation>
+        <translation>无</translation>
     </message>
     <message>
         <source>expected a state&apos;s name</source>
-        <translation type="unfinished"></translation>
+        <translation>应为状态名称</translation>
     </message>
     <message>
         <source>missing: give the arc&apos;s map as &quot;matrix&quot;, &quot;columns&quot;, &quot;affine&quot; or &quot;scheme&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>缺失：请以 &quot;matrix&quot;、&quot;columns&quot;、&quot;affine&quot; 或 &quot;scheme&quot; 给出弧的映射</translation>
     </message>
     <message>
         <source>give the arc&apos;s map one way, not as %1</source>
-        <translation type="unfinished"></translation>
+        <translation>请只用一种方式给出弧的映射，不要同时使用 %1</translation>
     </message>
     <message>
         <source> and </source>
-        <translation type="unfinished"> 和 </translation>
+        <translation> 和 </translation>
     </message>
     <message>
         <source>a plane affine map needs both states to have 3 control points (a frame triangle): %1 has %2, %3 has %4</source>
-        <translation type="unfinished"></translation>
+        <translation>平面仿射映射要求两个状态都有 3 个控制点（框架三角形）：%1 有 %2 个，%3 有 %4 个</translation>
     </message>
     <message>
         <source>expected {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]}</source>
-        <translation type="unfinished"></translation>
+        <translation>应为 {&quot;A&quot;: [[a11, a12], [a21, a22]], &quot;b&quot;: [b1, b2]}</translation>
     </message>
     <message>
         <source>A must be 2 x 2 and b two numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>A 必须为 2 x 2，b 必须为两个数</translation>
     </message>
     <message>
         <source>expected a curve scheme, as a curve item&apos;s &quot;scheme&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>应为曲线细分格式，与曲线项的 &quot;scheme&quot; 相同</translation>
     </message>
     <message>
         <source>a scheme&apos;s matrix is square: %1 has %2 points, %3 has %4</source>
-        <translation type="unfinished"></translation>
+        <translation>细分格式的矩阵是方阵：%1 有 %2 个点，%3 有 %4 个</translation>
     </message>
     <message>
         <source>an automaton needs at least one state</source>
-        <translation type="unfinished"></translation>
+        <translation>自动机至少需要一个状态</translation>
     </message>
     <message>
         <source>%1 states: at most %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 个状态：最多 %2 个</translation>
     </message>
     <message>
         <source>a state needs a name</source>
-        <translation type="unfinished"></translation>
+        <translation>状态必须有名称</translation>
     </message>
     <message>
         <source>&quot;%1&quot; names all states; call the state otherwise</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot; 表示所有状态；请为该状态另取名称</translation>
     </message>
     <message>
         <source>two states are called %1</source>
-        <translation type="unfinished"></translation>
+        <translation>有两个状态都名为 %1</translation>
     </message>
     <message>
         <source>a state needs 1 to %1 control points, got %2</source>
-        <translation type="unfinished"></translation>
+        <translation>状态需要 1 至 %1 个控制点，实际为 %2 个</translation>
     </message>
     <message>
         <source>state %1 has a control point that is not finite</source>
-        <translation type="unfinished"></translation>
+        <translation>状态 %1 含有非有限的控制点</translation>
     </message>
     <message>
         <source>%1 arcs: at most %2 (addresses are bytes)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 条弧：最多 %2 条（地址为字节）</translation>
     </message>
     <message>
         <source>an arc needs a name</source>
-        <translation type="unfinished"></translation>
+        <translation>弧必须有名称</translation>
     </message>
     <message>
         <source>two arcs are called %1</source>
-        <translation type="unfinished"></translation>
+        <translation>有两条弧都名为 %1</translation>
     </message>
     <message>
         <source>arc %1 leads between states that do not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>弧 %1 连接的状态不存在</translation>
     </message>
     <message>
         <source>arc %1 has a %2 x %3 matrix; from %4 (%5 points) to %6 (%7 points) it must be %7 x %5: a row per point of %6</source>
-        <translation type="unfinished"></translation>
+        <translation>弧 %1 的矩阵为 %2 x %3；从 %4（%5 个点）到 %6（%7 个点），它必须为 %7 x %5：%6 的每个点对应一行</translation>
     </message>
     <message>
         <source>arc %1 has a matrix entry that is not finite</source>
-        <translation type="unfinished"></translation>
+        <translation>弧 %1 的矩阵含有非有限的元素</translation>
     </message>
     <message>
         <source>row %1 of arc %2 sums to %3, not 1: the map would not keep barycentric coordinates</source>
-        <translation type="unfinished"></translation>
+        <translation>弧 %2 第 %1 行之和为 %3 而不是 1：该映射将无法保持重心坐标</translation>
     </message>
     <message>
         <source>the weight of arc %1 must be a number &gt; 0</source>
-        <translation type="unfinished"></translation>
+        <translation>弧 %1 的权重必须是 &gt; 0 的数</translation>
     </message>
     <message>
         <source>no state %1 to draw; the states are %2</source>
-        <translation type="unfinished"></translation>
+        <translation>没有可绘制的状态 %1；现有状态为 %2</translation>
     </message>
     <message>
         <source>expected a non-empty array of states {&quot;name&quot;: text, &quot;control_points&quot;: [...]}</source>
-        <translation type="unfinished"></translation>
+        <translation>应为非空的状态数组 {&quot;name&quot;: 文本, &quot;control_points&quot;: [...]}</translation>
     </message>
     <message>
         <source>expected an object with &quot;name&quot; and &quot;control_points&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>应为包含 &quot;name&quot; 和 &quot;control_points&quot; 的对象</translation>
     </message>
     <message>
         <source>unknown field of a state</source>
-        <translation type="unfinished"></translation>
+        <translation>状态的未知字段</translation>
     </message>
     <message>
         <source>expected an array of arcs {&quot;name&quot;, &quot;from&quot;, &quot;to&quot;, &quot;matrix&quot;}</source>
-        <translation type="unfinished"></translation>
+        <translation>应为弧数组 {&quot;name&quot;, &quot;from&quot;, &quot;to&quot;, &quot;matrix&quot;}</translation>
     </message>
     <message>
         <source>expected an object with &quot;from&quot;, &quot;to&quot; and the arc&apos;s map</source>
-        <translation type="unfinished"></translation>
+        <translation>应为包含 &quot;from&quot;、&quot;to&quot; 和弧的映射的对象</translation>
     </message>
     <message>
         <source>unknown field of an arc</source>
-        <translation type="unfinished"></translation>
+        <translation>弧的未知字段</translation>
     </message>
     <message>
         <source>All states</source>
-        <translation type="unfinished"></translation>
+        <translation>所有状态</translation>
     </message>
 </context>
 <context>
@@ -1959,23 +1963,23 @@
     </message>
     <message>
         <source>Scaled coordinates g(z, 1/(2y)) = Re z + i Im z / (2y), y = %1 (004 eq. (3.40)): as y → 0 the curve approaches the Takagi graph x + i T(x) (Thm 3.7.3, Figs. 3.6–3.8). %2</source>
-        <translation type="unfinished"></translation>
+        <translation>缩放坐标 g(z, 1/(2y)) = Re z + i Im z / (2y)，y = %1（004 eq. (3.40)）：当 y → 0 时，曲线趋近高木函数图像 x + i T(x)（Thm 3.7.3，Figs. 3.6–3.8）。%2</translation>
     </message>
     <message>
         <source>Scaled coordinates apply to t = 1/2 + iy with y ≠ 0 and control points on the real axis (004 Thm 3.7.3); drawn unscaled. %1</source>
-        <translation type="unfinished"></translation>
+        <translation>缩放坐标仅适用于 t = 1/2 + iy（y ≠ 0）且控制点位于实轴上的情形（004 Thm 3.7.3）；按未缩放方式绘制。%1</translation>
     </message>
     <message>
         <source>Change scaled coordinates of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>更改 %1 的缩放坐标</translation>
     </message>
     <message>
         <source>Scaled coordinates g(z, 1/(2y))</source>
-        <translation type="unfinished"></translation>
+        <translation>缩放坐标 g(z, 1/(2y))</translation>
     </message>
     <message>
         <source>Draw Re z + i Im z / (2y) for t = 1/2 + iy: the coordinates of 004 Thm 3.7.3 and Figs. 3.6–3.8, where the curve approaches the Takagi graph</source>
-        <translation type="unfinished"></translation>
+        <translation>对 t = 1/2 + iy 绘制 Re z + i Im z / (2y)：即 004 Thm 3.7.3 和 Figs. 3.6–3.8 中的坐标，曲线在该坐标下趋近高木函数图像</translation>
     </message>
 </context>
 <context>
@@ -2202,7 +2206,7 @@
     </message>
     <message>
         <source>Takagi graph x + i T(x), scaled (004 Thm 3.7.3)</source>
-        <translation type="unfinished"></translation>
+        <translation>经缩放的高木函数图像 x + i T(x)（004 Thm 3.7.3）</translation>
     </message>
 </context>
 <context>
@@ -2614,11 +2618,11 @@
     </message>
     <message>
         <source>flame &apos;%1&apos;: its xaos rows let no xform follow another</source>
-        <translation type="unfinished"></translation>
+        <translation>火焰 &apos;%1&apos;：其 xaos 行不允许任何 xform 跟随在另一个 xform 之后</translation>
     </message>
     <message>
         <source>flame &apos;%1&apos;: its xaos rows make %2 arcs between its xforms, more than the %3 a controlled IFS may have</source>
-        <translation type="unfinished"></translation>
+        <translation>火焰 &apos;%1&apos;：其 xaos 行在其各 xform 之间产生 %2 条弧，超过了受控IFS所允许的 %3 条</translation>
     </message>
 </context>
 <context>
@@ -4524,7 +4528,7 @@ Subdivision scheme:</source>
     </message>
     <message>
         <source>Automaton</source>
-        <translation type="unfinished">自动机</translation>
+        <translation>自动机</translation>
     </message>
 </context>
 <context>
@@ -6118,7 +6122,7 @@ Subdivision scheme:</source>
     </message>
     <message>
         <source>Four-point</source>
-        <translation>四点</translation>
+        <translation>四点格式</translation>
     </message>
     <message>
         <source>Bézier (de Casteljau)</source>
@@ -8266,11 +8270,11 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>A complex Bézier curve of t = 1/2 + iy in the scaled coordinates g(z, 1/(2y)) of 004 Thm 3.7.3, where it approaches the Takagi graph (the item&apos;s &quot;scaled&quot;, for this figure)</source>
-        <translation type="unfinished"></translation>
+        <translation>t = 1/2 + iy 时的复 Bézier 曲线，采用 004 Thm 3.7.3 的缩放坐标 g(z, 1/(2y))，在该坐标下它趋近高木函数图像（即此图中该项的 &quot;scaled&quot;）</translation>
     </message>
     <message>
         <source>--scaled draws a complex Bézier curve of t = 1/2 + iy (y ≠ 0) with control points on the real axis; &apos;%1&apos; is not one</source>
-        <translation type="unfinished"></translation>
+        <translation>--scaled 绘制 t = 1/2 + iy（y ≠ 0）且控制点位于实轴上的复 Bézier 曲线；&apos;%1&apos; 不是这样的曲线</translation>
     </message>
 </context>
 <context>
@@ -9113,7 +9117,7 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>the barycentric part needs a non-empty matrix</source>
-        <translation type="unfinished"></translation>
+        <translation>重心部分需要非空矩阵</translation>
     </message>
 </context>
 <context>

@@ -6,6 +6,7 @@
 // item (issue 45) whose flame the core can play; written back by flameFileText and read again,
 // that flame is the same, number for number.
 #include "core/flame/FlameChaos.h"
+#include "model/CifsItem.h"
 #include "model/FlameExchange.h"
 #include "model/FlameFile.h"
 #include "model/FlameItem.h"
@@ -73,9 +74,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
                 fail("a written flame item comes back changed");
             continue;
         }
+        // A linear flame with xaos: a controlled IFS whose matrices are finite and stochastic.
+        if (const auto *cifs = qobject_cast<const awb::CifsItem *>(item.get())) {
+            if (cifs->spec().check())
+                fail("an imported automaton its own check refuses");
+            if (cifs->spec().arcs.empty() || cifs->spec().states.empty())
+                fail("an imported automaton without states or arcs");
+            continue;
+        }
         const auto *fractal = qobject_cast<const awb::FractalItem *>(item.get());
         if (!fractal)
-            fail("an imported flame that is neither a fractal nor a flame item");
+            fail("an imported flame that is neither a fractal, an automaton nor a flame item");
         const auto &maps = fractal->fractal().maps;
         if (maps.empty())
             fail("a flame without maps");

@@ -62,7 +62,7 @@ AutomatonPanel::AutomatonPanel(QWidget *parent)
 {
     auto *layout = new QVBoxLayout(this);
     m_intro = new QLabel(tr("Select a controlled IFS item to see and edit its automaton "
-                            "(Items > Add > Controlled IFS, or the example 003 Fig. 5)."));
+                            "(Item > Add > Controlled IFS, or the example 003 Fig. 5)."));
     m_intro->setWordWrap(true);
     layout->addWidget(m_intro);
     m_body = new QWidget;
