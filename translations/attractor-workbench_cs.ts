@@ -8302,6 +8302,10 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
         <source>--scaled draws a complex Bézier curve of t = 1/2 + iy (y ≠ 0) with control points on the real axis; &apos;%1&apos; is not one</source>
         <translation>--scaled vykresluje komplexní Bézierovu křivku pro t = 1/2 + iy (y ≠ 0) s řídicími body na reálné ose; &apos;%1&apos; taková není</translation>
     </message>
+    <message>
+        <source>attractor-cli: warning: %1</source>
+        <translation>attractor-cli: varování: %1</translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>
@@ -9415,6 +9419,14 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     <message>
         <source>face %1 has %2 sides; faces of more than %3 sides are not supported</source>
         <translation>stěna %1 má %2 stran; stěny s více než %3 stranami nejsou podporovány</translation>
+    </message>
+    <message>
+        <source>%1, line %2: the OpenSubdiv tag &apos;t %3&apos; is not applied: this version subdivides without creases, corners, holes or boundary rules, so the surface differs from OpenSubdiv&apos;s where it acts</source>
+        <translation>%1, řádek %2: značka OpenSubdiv &apos;t %3&apos; se neuplatní: tato verze dělí síť bez ostrých hran, rohů, děr a okrajových pravidel, takže se plocha tam, kde značka působí, liší od plochy OpenSubdiv</translation>
+    </message>
+    <message>
+        <source>%1, lines %2 to %3: %4 OpenSubdiv tags &apos;t %5&apos; are not applied: this version subdivides without creases, corners, holes or boundary rules, so the surface differs from OpenSubdiv&apos;s where they act</source>
+        <translation>%1, řádky %2 až %3: značky OpenSubdiv &apos;t %5&apos; (%4) se neuplatní: tato verze dělí síť bez ostrých hran, rohů, děr a okrajových pravidel, takže se plocha tam, kde působí, liší od plochy OpenSubdiv</translation>
     </message>
 </context>
 <context>

@@ -8289,6 +8289,10 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
         <source>--scaled draws a complex Bézier curve of t = 1/2 + iy (y ≠ 0) with control points on the real axis; &apos;%1&apos; is not one</source>
         <translation>--scaled trace une courbe de Bézier complexe pour t = 1/2 + iy (y ≠ 0) avec des points de contrôle sur l&apos;axe réel ; &apos;%1&apos; n&apos;en est pas une</translation>
     </message>
+    <message>
+        <source>attractor-cli: warning: %1</source>
+        <translation>attractor-cli&#xa0;: avertissement&#xa0;: %1</translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>
@@ -9402,6 +9406,14 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     <message>
         <source>face %1 has %2 sides; faces of more than %3 sides are not supported</source>
         <translation>la face %1 a %2 côtés&#x202f;; les faces de plus de %3 côtés ne sont pas prises en charge</translation>
+    </message>
+    <message>
+        <source>%1, line %2: the OpenSubdiv tag &apos;t %3&apos; is not applied: this version subdivides without creases, corners, holes or boundary rules, so the surface differs from OpenSubdiv&apos;s where it acts</source>
+        <translation>%1, ligne %2&#xa0;: l&apos;étiquette OpenSubdiv &apos;t %3&apos; n&apos;est pas appliquée&#xa0;: cette version subdivise sans arêtes vives, coins, trous ni règles de bord, donc la surface diffère de celle d&apos;OpenSubdiv là où elle agit</translation>
+    </message>
+    <message>
+        <source>%1, lines %2 to %3: %4 OpenSubdiv tags &apos;t %5&apos; are not applied: this version subdivides without creases, corners, holes or boundary rules, so the surface differs from OpenSubdiv&apos;s where they act</source>
+        <translation>%1, lignes %2 à %3&#xa0;: %4 étiquettes OpenSubdiv &apos;t %5&apos; ne sont pas appliquées&#xa0;: cette version subdivise sans arêtes vives, coins, trous ni règles de bord, donc la surface diffère de celle d&apos;OpenSubdiv là où elles agissent</translation>
     </message>
 </context>
 <context>

@@ -8276,6 +8276,10 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
         <source>--scaled draws a complex Bézier curve of t = 1/2 + iy (y ≠ 0) with control points on the real axis; &apos;%1&apos; is not one</source>
         <translation>--scaled 绘制 t = 1/2 + iy（y ≠ 0）且控制点位于实轴上的复 Bézier 曲线；&apos;%1&apos; 不是这样的曲线</translation>
     </message>
+    <message>
+        <source>attractor-cli: warning: %1</source>
+        <translation>attractor-cli：警告：%1</translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>
@@ -9389,6 +9393,14 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>face %1 has %2 sides; faces of more than %3 sides are not supported</source>
         <translation>面 %1 有 %2 条边；不支持多于 %3 条边的面</translation>
+    </message>
+    <message>
+        <source>%1, line %2: the OpenSubdiv tag &apos;t %3&apos; is not applied: this version subdivides without creases, corners, holes or boundary rules, so the surface differs from OpenSubdiv&apos;s where it acts</source>
+        <translation>%1，第 %2 行：OpenSubdiv 标签 &apos;t %3&apos; 未被应用：此版本细分时不考虑折痕、角点、孔洞和边界规则，因此在其作用处曲面与 OpenSubdiv 的不同</translation>
+    </message>
+    <message>
+        <source>%1, lines %2 to %3: %4 OpenSubdiv tags &apos;t %5&apos; are not applied: this version subdivides without creases, corners, holes or boundary rules, so the surface differs from OpenSubdiv&apos;s where they act</source>
+        <translation>%1，第 %2 至 %3 行：%4 个 OpenSubdiv 标签 &apos;t %5&apos; 未被应用：此版本细分时不考虑折痕、角点、孔洞和边界规则，因此在其作用处曲面与 OpenSubdiv 的不同</translation>
     </message>
 </context>
 <context>

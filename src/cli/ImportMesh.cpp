@@ -35,11 +35,15 @@ int importMesh(const QStringList &args)
         const MeshScheme scheme = meshSchemeOption(parser);
         const QString file = parser.positionalArguments().first();
         Mesh mesh;
+        std::vector<std::string> notes;  // what the file holds that the mesh does not keep
         try {
-            mesh = readMesh(QFile::encodeName(file).toStdString());
+            mesh = readMesh(QFile::encodeName(file).toStdString(), &notes);
         } catch (const InputError &e) {  // the message names the file and the place
             throw Failure{QString::fromStdString(e.what())};
         }
+        for (const std::string &n : notes)
+            err() << CliTr::tr("attractor-cli: warning: %1").arg(QString::fromStdString(n))
+                  << "\n";
         Project project;
         auto item = std::make_unique<SubdivisionMeshItem>();
         QString error;

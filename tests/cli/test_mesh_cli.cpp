@@ -114,6 +114,18 @@ void TestMeshCli::importKeepsTheFilesNumbering()
     QByteArray out, err;
     QCOMPARE(run({"import-mesh", path, "--out", project}, &out, &err), 0);
     QVERIFY2(out.contains("8 vertices, 6 faces, 8 extraordinary vertices"), out.constData());
+    // A cube of OpenSubdiv's with a crease tag: imported, and the unapplied tag is said.
+    if (file.endsWith(".obj")) {
+        QFile tagged(path + ".tagged.obj");
+        QVERIFY(tagged.open(QIODevice::WriteOnly));
+        tagged.write(text + "t crease 2/1/0 0 1 10\n");
+        tagged.close();
+        QCOMPARE(run({"import-mesh", path + ".tagged.obj", "--out", project + ".t.awb"}, &out,
+                     &err),
+                 0);
+        QVERIFY2(err.contains("warning:") && err.contains("'t crease' is not applied"),
+                 err.constData());
+    }
     const QJsonObject a = analyse(project);
     QCOMPARE(a["kind"].toString(), QString("subdivision-mesh"));
     QCOMPARE(a["vertex_count"].toInt(), 8);

@@ -184,6 +184,7 @@ private slots:
     void readsCubes();
     void objRelativeIndicesAcrossVertices();
     void objFaceOfMoreThan255Vertices();
+    void objTagsAreNamedNotDropped();
     void writeObjReadsBackTheSameDoubles();
     void readsAFileByPath();
     void refusals_data();
@@ -251,6 +252,30 @@ void TestMeshFiles::objRelativeIndicesAcrossVertices()
                         MeshFormat::Obj);
     QCOMPARE(m.vertices.rows(), Eigen::Index(4));
     QCOMPARE(m.faces, (std::vector<std::vector<int>>{{0, 1, 2}, {0, 2, 3}, {0, 3, 2}}));
+}
+
+void TestMeshFiles::objTagsAreNamedNotDropped()
+{
+    // OpenSubdiv's regression shapes tag sharp features on `t` lines (issue 44): the mesh is
+    // read, and every tag the mesh does not keep is named with its lines, once per tag name.
+    std::istringstream in("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n"
+                          "t crease 2/1/0 0 1 10\nt crease 2/1/0 1 2 2.5\n"
+                          "t corner 1/1/0 3 10\nt interpolateboundary 1/0/0 1\n");
+    std::vector<std::string> notes;
+    const Mesh m = readMesh(in, MeshFormat::Obj, "shape.obj", &notes);
+    QCOMPARE(m.faces.size(), std::size_t(1));
+    QCOMPARE(int(notes.size()), 3);
+    QVERIFY2(notes[0].find("shape.obj, lines 6 to 7: 2 OpenSubdiv tags 't crease' are not "
+                           "applied") == 0,
+             notes[0].c_str());
+    QVERIFY2(notes[1].find("shape.obj, line 8: the OpenSubdiv tag 't corner'") == 0,
+             notes[1].c_str());
+    QVERIFY2(notes[2].find("'t interpolateboundary'") != std::string::npos, notes[2].c_str());
+    // Without tags, no note.
+    std::istringstream plain("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n");
+    notes.clear();
+    readMesh(plain, MeshFormat::Obj, "plain.obj", &notes);
+    QVERIFY(notes.empty());
 }
 
 void TestMeshFiles::objFaceOfMoreThan255Vertices()

@@ -65,8 +65,41 @@ bool cornerVertex(std::string_view w, long long &v)
     return parse(part[0], v) && v != 0;
 }
 
-Mesh readObj(std::string_view text, const std::string &name)
+// OpenSubdiv's tag lines (its regression shapes' `t name intcount/floatcount/stringcount ...`):
+// per tag name, how many and the first and last line.
+struct TagLines {
+    std::string name;
+    long long count = 0;
+    std::size_t first = 0, last = 0;
+};
+
+void noteTags(const std::vector<TagLines> &tags, const std::string &name,
+              std::vector<std::string> *notes)
 {
+    if (!notes)
+        return;
+    for (const TagLines &t : tags)
+        notes->push_back(
+            t.count == 1
+                ? formatMessage(coreTranslate("awb::mesh",
+                                              "%1, line %2: the OpenSubdiv tag 't %3' is not "
+                                              "applied: this version subdivides without "
+                                              "creases, corners, holes or boundary rules, so "
+                                              "the surface differs from OpenSubdiv's where it "
+                                              "acts"),
+                                name, t.first, t.name)
+                : formatMessage(coreTranslate("awb::mesh",
+                                              "%1, lines %2 to %3: %4 OpenSubdiv tags 't %5' "
+                                              "are not applied: this version subdivides without "
+                                              "creases, corners, holes or boundary rules, so "
+                                              "the surface differs from OpenSubdiv's where "
+                                              "they act"),
+                                name, t.first, t.last, t.count, t.name));
+}
+
+Mesh readObj(std::string_view text, const std::string &name, std::vector<std::string> *notes)
+{
+    std::vector<TagLines> tags;
     std::vector<double> xyz;            // 3 per vertex
     std::vector<int> corners;           // per face
     std::vector<std::size_t> faceLines; // per face
@@ -76,6 +109,20 @@ Mesh readObj(std::string_view text, const std::string &name)
     Lines lines(text);
     for (std::string_view line; lines.next(line); kept.push_back('\n')) {
         const Words w = words(line);
+        if (!w.empty() && w[0] == "t") {
+            const std::string tag(w.size() > 1 ? w[1] : std::string_view("?"));
+            auto it = std::find_if(tags.begin(), tags.end(),
+                                   [&](const TagLines &t) { return t.name == tag; });
+            if (it == tags.end() && tags.size() < 64) {
+                tags.push_back({tag, 0, lines.number(), lines.number()});
+                it = tags.end() - 1;
+            }
+            if (it != tags.end()) {
+                ++it->count;
+                it->last = lines.number();
+            }
+            continue;
+        }
         if (w.empty() || (w[0] != "v" && w[0] != "f"))
             continue;
         const auto where = [&] { return atLine(name, lines.number()); };
@@ -150,6 +197,7 @@ Mesh readObj(std::string_view text, const std::string &name)
         throw std::logic_error(name + ": tinyobjloader and the line scan read different meshes");
     mesh.vertices = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
         xyz.data(), Eigen::Index(vertexCount), 3);
+    noteTags(tags, name, notes);
     return mesh;
 }
 
@@ -257,16 +305,17 @@ MeshFormat meshFormatForPath(const std::string &path)
            shown(path.substr(dot)), path);
 }
 
-Mesh readMesh(const std::string &path)
+Mesh readMesh(const std::string &path, std::vector<std::string> *notes)
 {
     const MeshFormat format = meshFormatForPath(path);
     std::ifstream in(path, std::ios::binary);
     if (!in)
         refuse(coreTranslate("awb::mesh", "cannot open %1"), path);
-    return readMesh(in, format, path);
+    return readMesh(in, format, path, notes);
 }
 
-Mesh readMesh(std::istream &in, MeshFormat format, const std::string &name)
+Mesh readMesh(std::istream &in, MeshFormat format, const std::string &name,
+              std::vector<std::string> *notes)
 {
     const std::string bytes((std::istreambuf_iterator<char>(in)),
                             std::istreambuf_iterator<char>());
@@ -283,7 +332,7 @@ Mesh readMesh(std::istream &in, MeshFormat format, const std::string &name)
         refuse(coreTranslate("awb::mesh", "%1: a NUL byte: not a text file"),
                atLine(name, lines.number()));
     }
-    return format == MeshFormat::Obj ? readObj(bytes, name) : readOff(bytes, name);
+    return format == MeshFormat::Obj ? readObj(bytes, name, notes) : readOff(bytes, name);
 }
 
 void writeObj(std::ostream &out, const Mesh &mesh, const std::string &comment)

@@ -20,6 +20,7 @@
 
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 namespace awb {
 
@@ -31,11 +32,16 @@ std::string toString(MeshFormat format);
 // extension otherwise.
 MeshFormat meshFormatForPath(const std::string &path);
 
-// The mesh of the file at `path`, in the format of its extension.
-Mesh readMesh(const std::string &path);
+// The mesh of the file at `path`, in the format of its extension. `notes`, when given, receives
+// what the file holds that the mesh does not keep, one sentence each naming the file and the
+// lines: OpenSubdiv's OBJ tag lines (`t crease ...`, `t corner`, `t hole`,
+// `t interpolateboundary`, ...: sharp features this version does not apply yet, issue 44). A
+// caller shows them; nothing a file says is dropped without a word.
+Mesh readMesh(const std::string &path, std::vector<std::string> *notes = nullptr);
 // The mesh of `in`, read to its end (open it in binary mode for a binary PLY); `name` stands for
 // the file in messages.
-Mesh readMesh(std::istream &in, MeshFormat format, const std::string &name);
+Mesh readMesh(std::istream &in, MeshFormat format, const std::string &name,
+              std::vector<std::string> *notes = nullptr);
 
 // Writes `mesh` as OBJ: each line of `comment` as a `# ` line, then `v x y z` with 17
 // significant digits (readMesh gives the same doubles back) and `f i j k ...` 1-based. A mesh

@@ -175,8 +175,9 @@ void MainWindow::importMeshFile(const QString &file)
     // Read first: a file that cannot be read is said before any question, and the question
     // proposes the scheme made for the mesh.
     Mesh mesh;
+    std::vector<std::string> notes;  // what the file holds that the mesh does not keep
     try {
-        mesh = readMesh(QFile::encodeName(file).toStdString());
+        mesh = readMesh(QFile::encodeName(file).toStdString(), &notes);
     } catch (const std::exception &e) {
         m_messages->error(this, tr("Import Mesh"), QString::fromStdString(e.what()));
         return;
@@ -196,8 +197,21 @@ void MainWindow::importMeshFile(const QString &file)
         return;
     QString error;
     if (!importMesh(file, mesh,
-                    chosen == schemes[1] ? MeshScheme::Loop : MeshScheme::CatmullClark, &error))
+                    chosen == schemes[1] ? MeshScheme::Loop : MeshScheme::CatmullClark, &error)) {
         m_messages->error(this, tr("Import Mesh"), error);
+        return;
+    }
+    if (!notes.empty()) {
+        // Said once the window shows the new item, as the other imports' losses are.
+        QStringList list;
+        for (const std::string &n : notes)
+            list << QString::fromStdString(n);
+        const QString text = tr("Imported with these losses:") + QStringLiteral("\n\n")
+                             + list.join(QLatin1Char('\n'));
+        QMetaObject::invokeMethod(
+            this, [this, text] { m_messages->information(this, tr("Import Mesh"), text); },
+            Qt::QueuedConnection);
+    }
 }
 
 bool MainWindow::exportMesh(const QString &fileName, int rounds, QString *error)
