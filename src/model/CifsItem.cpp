@@ -599,9 +599,12 @@ const PropertyTable &CifsItem::declaration()
                             state.fail(rest.begin().key(), CifsSpec::tr("unknown field of a state"));
                         states.push_back(std::move(q));
                     }
-                    // The arcs' sizes follow the states: a new list of states keeps the arcs
-                    // only where they still fit (the check then names the first misfit).
+                    // The arcs stay as they are: where they no longer fit the new states, the
+                    // check names the first misfit (give "arcs" in the same update). The drawn
+                    // state stays when it still exists, else it is the first.
                     s.states = std::move(states);
+                    if (s.drawn != S::allStates && s.stateIndex(s.drawn) < 0)
+                        s.drawn = s.states.front().name;
                 })
             .label(QT_TR_NOOP("States"))
             .group(QT_TR_NOOP("Automaton"))

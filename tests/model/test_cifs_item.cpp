@@ -66,6 +66,7 @@ private slots:
     void randomIterationLandsOnTheAttractor();
     void editsAreOneUndoStepEach();
     void refusedEditsNameTheProblem();
+    void theFirstStateIsDrawnByDefault();
     void badFilesNameTheField_data();
     void badFilesNameTheField();
 };
@@ -296,6 +297,9 @@ void TestCifsItem::badFilesNameTheField_data()
     };
     const QByteArray tri = R"("states": [{"name": "T", "control_points": [[0,0],[1,0],[0,1]]}])";
     QTest::newRow("states missing") << x(R"("state": "Fern")") << R"(field "states": missing)";
+    QTest::newRow("arc into the void")
+        << x(tri + R"(, "arcs": [{"from": "T", "to": "T", "matrix": [[1, 0], [0, 1]]}])")
+        << R"(field "arcs[1].matrix": arc "t1" has a 2 x 2 matrix)";
     QTest::newRow("old preset unknown")
         << x(R"("preset": "fern")") << R"(field "states": missing)";
     QTest::newRow("state unknown")
@@ -318,6 +322,29 @@ void TestCifsItem::badFilesNameTheField_data()
     QTest::newRow("frame not finite")
         << x(R"("preset": "fern-sierpinski", "control_points": [[0, 0], [1, NaN], [0, 1]])")
         << R"(NaN)";
+}
+
+void TestCifsItem::theFirstStateIsDrawnByDefault()
+{
+    Project p;
+    QString error;
+    QVERIFY2(test::load(p, R"({"type": "cifs", "name": "x",
+        "states": [{"name": "T", "control_points": [[0, 0], [1, 0], [0, 1]]}],
+        "arcs": [{"from": "T", "to": "T", "matrix": [[1, 0, 0], [0.5, 0.5, 0], [0.5, 0, 0.5]]},
+                 {"from": "T", "to": "T", "matrix": [[0.5, 0.5, 0], [0, 1, 0], [0, 0.5, 0.5]]}]})",
+                        &error),
+             qPrintable(error));
+    CifsItem *c = cifsItem(p, "x");
+    QCOMPARE(c->spec().drawn, QString("T"));
+    QVERIFY2(c->derivedIfs(), qPrintable(c->derivedError()));
+    // New states without the drawn one: the first is drawn.
+    QVERIFY(c->properties().setJson(
+        *c, "states",
+        QJsonArray{QJsonObject{{"name", "U"},
+                               {"control_points", QJsonArray{QJsonArray{0, 0}, QJsonArray{1, 0},
+                                                             QJsonArray{0, 1}}}}},
+        &error));
+    QCOMPARE(c->spec().drawn, QString("U"));
 }
 
 void TestCifsItem::badFilesNameTheField()
