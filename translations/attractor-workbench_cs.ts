@@ -9330,7 +9330,7 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     </message>
     <message>
         <source>%1: unknown PLY header line &apos;%2&apos;</source>
-        <translation>%1: neznámý řádek hlavičky PLY „%2“</translation>
+        <translation type="vanished">%1: neznámý řádek hlavičky PLY „%2“</translation>
     </message>
     <message>
         <source>%1: the PLY header has no format line</source>
@@ -9427,6 +9427,22 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     <message>
         <source>%1, lines %2 to %3: %4 OpenSubdiv tags &apos;t %5&apos; are not applied: this version subdivides without creases, corners, holes or boundary rules, so the surface differs from OpenSubdiv&apos;s where they act</source>
         <translation>%1, řádky %2 až %3: značky OpenSubdiv &apos;t %5&apos; (%4) se neuplatní: tato verze dělí síť bez ostrých hran, rohů, děr a okrajových pravidel, takže se plocha tam, kde působí, liší od plochy OpenSubdiv</translation>
+    </message>
+    <message>
+        <source>%1: UTF-16 text of an odd number of bytes</source>
+        <translation>%1: text v UTF-16 o lichém počtu bajtů</translation>
+    </message>
+    <message>
+        <source>%1: invalid UTF-16 text (a lone surrogate)</source>
+        <translation>%1: neplatný text v UTF-16 (osamocená náhradní hodnota)</translation>
+    </message>
+    <message>
+        <source>%1: malformed PLY header line &apos;%2&apos;</source>
+        <translation>%1: chybný řádek hlavičky PLY &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>%1: header line &apos;%2&apos; is not PLY 1.0&apos;s: skipped</source>
+        <translation>%1: řádek hlavičky &apos;%2&apos; nepatří do PLY 1.0: přeskočen</translation>
     </message>
 </context>
 <context>

@@ -9317,7 +9317,7 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     </message>
     <message>
         <source>%1: unknown PLY header line &apos;%2&apos;</source>
-        <translation>%1&#xa0;: ligne d’en-tête PLY inconnue «&#xa0;%2&#xa0;»</translation>
+        <translation type="vanished">%1&#xa0;: ligne d’en-tête PLY inconnue «&#xa0;%2&#xa0;»</translation>
     </message>
     <message>
         <source>%1: the PLY header has no format line</source>
@@ -9414,6 +9414,22 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     <message>
         <source>%1, lines %2 to %3: %4 OpenSubdiv tags &apos;t %5&apos; are not applied: this version subdivides without creases, corners, holes or boundary rules, so the surface differs from OpenSubdiv&apos;s where they act</source>
         <translation>%1, lignes %2 à %3&#xa0;: %4 étiquettes OpenSubdiv &apos;t %5&apos; ne sont pas appliquées&#xa0;: cette version subdivise sans arêtes vives, coins, trous ni règles de bord, donc la surface diffère de celle d&apos;OpenSubdiv là où elles agissent</translation>
+    </message>
+    <message>
+        <source>%1: UTF-16 text of an odd number of bytes</source>
+        <translation>%1&#xa0;: texte UTF-16 d&apos;un nombre impair d&apos;octets</translation>
+    </message>
+    <message>
+        <source>%1: invalid UTF-16 text (a lone surrogate)</source>
+        <translation>%1&#xa0;: texte UTF-16 invalide (un substitut isolé)</translation>
+    </message>
+    <message>
+        <source>%1: malformed PLY header line &apos;%2&apos;</source>
+        <translation>%1&#xa0;: ligne d&apos;en-tête PLY mal formée &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>%1: header line &apos;%2&apos; is not PLY 1.0&apos;s: skipped</source>
+        <translation>%1&#xa0;: la ligne d&apos;en-tête &apos;%2&apos; n&apos;est pas du PLY 1.0&#xa0;: ignorée</translation>
     </message>
 </context>
 <context>

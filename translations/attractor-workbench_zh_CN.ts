@@ -9304,7 +9304,7 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>%1: unknown PLY header line &apos;%2&apos;</source>
-        <translation>%1：未知的 PLY 文件头行“%2”</translation>
+        <translation type="vanished">%1：未知的 PLY 文件头行“%2”</translation>
     </message>
     <message>
         <source>%1: the PLY header has no format line</source>
@@ -9401,6 +9401,22 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>%1, lines %2 to %3: %4 OpenSubdiv tags &apos;t %5&apos; are not applied: this version subdivides without creases, corners, holes or boundary rules, so the surface differs from OpenSubdiv&apos;s where they act</source>
         <translation>%1，第 %2 至 %3 行：%4 个 OpenSubdiv 标签 &apos;t %5&apos; 未被应用：此版本细分时不考虑折痕、角点、孔洞和边界规则，因此在其作用处曲面与 OpenSubdiv 的不同</translation>
+    </message>
+    <message>
+        <source>%1: UTF-16 text of an odd number of bytes</source>
+        <translation>%1：UTF-16 文本的字节数为奇数</translation>
+    </message>
+    <message>
+        <source>%1: invalid UTF-16 text (a lone surrogate)</source>
+        <translation>%1：无效的 UTF-16 文本（孤立的代理项）</translation>
+    </message>
+    <message>
+        <source>%1: malformed PLY header line &apos;%2&apos;</source>
+        <translation>%1：格式错误的 PLY 头行 &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>%1: header line &apos;%2&apos; is not PLY 1.0&apos;s: skipped</source>
+        <translation>%1：头行 &apos;%2&apos; 不属于 PLY 1.0：已跳过</translation>
     </message>
 </context>
 <context>

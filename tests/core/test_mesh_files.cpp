@@ -185,6 +185,7 @@ private slots:
     void objRelativeIndicesAcrossVertices();
     void objFaceOfMoreThan255Vertices();
     void objTagsAreNamedNotDropped();
+    void byteOrderMarksAndForeignHeaderLines();
     void writeObjReadsBackTheSameDoubles();
     void readsAFileByPath();
     void refusals_data();
@@ -276,6 +277,37 @@ void TestMeshFiles::objTagsAreNamedNotDropped()
     notes.clear();
     readMesh(plain, MeshFormat::Obj, "plain.obj", &notes);
     QVERIFY(notes.empty());
+}
+
+void TestMeshFiles::byteOrderMarksAndForeignHeaderLines()
+{
+    // Windows editors write a byte-order mark; UTF-16 text is read as what it encodes.
+    const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    const Mesh utf8 = read("\xEF\xBB\xBF" + obj, MeshFormat::Obj);
+    QCOMPARE(utf8.faces.size(), std::size_t(1));
+    for (const bool little : {true, false}) {
+        std::string utf16 = little ? "\xFF\xFE" : "\xFE\xFF";
+        for (char c : obj) {
+            utf16.push_back(little ? c : '\0');
+            utf16.push_back(little ? '\0' : c);
+        }
+        const Mesh m = read(utf16, MeshFormat::Obj);
+        QCOMPARE(m.vertices.rows(), Eigen::Index(3));
+        QCOMPARE(m.vertices(1, 0), 1.0);
+    }
+    QVERIFY(refusal("\xFF\xFEv\0 \0" "0", MeshFormat::Obj).contains("odd number of bytes"));
+    // A header line of an exporter's own: skipped, and said.
+    std::istringstream ply("ply\nformat ascii 1.0\nexporter_version 3.2\nelement vertex 3\n"
+                           "property float x\nproperty float y\nproperty float z\n"
+                           "element face 1\nproperty list uchar int vertex_indices\n"
+                           "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    std::vector<std::string> notes;
+    const Mesh m = readMesh(ply, MeshFormat::Ply, "x.ply", &notes);
+    QCOMPARE(m.faces.size(), std::size_t(1));
+    QCOMPARE(int(notes.size()), 1);
+    QVERIFY2(notes[0] == "x.ply, line 3: header line 'exporter_version 3.2' is not PLY 1.0's: "
+                         "skipped",
+             notes[0].c_str());
 }
 
 void TestMeshFiles::objFaceOfMoreThan255Vertices()
@@ -429,8 +461,8 @@ void TestMeshFiles::refusals_data()
         "line 2: unsupported PLY format");
     row("ply type", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float128 x\n", ply,
         "line 4: unknown PLY property type 'float128'");
-    row("ply header line", "ply\nformat ascii 1.0\nelemental vertex 1\n", ply,
-        "line 3: unknown PLY header line 'elemental vertex 1'");
+    row("ply header line", "ply\nformat ascii 1.0\nelement vertex\n", ply,
+        "line 3: malformed PLY header line 'element vertex'");
     row("ply count", "ply\nformat ascii 1.0\nelement vertex 1000000000000\n", ply,
         "line 3: '1000000000000' is not a valid count");
     row("ply absurd claim", "ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\n"

@@ -305,6 +305,54 @@ MeshFormat meshFormatForPath(const std::string &path)
            shown(path.substr(dot)), path);
 }
 
+namespace {
+
+// The UTF-16 text after a byte-order mark (FF FE little, FE FF big endian) as UTF-8. InputError
+// for an odd length or a lone surrogate.
+std::string utf16ToUtf8(const std::string &bytes, const std::string &name)
+{
+    if (bytes.size() % 2 != 0)
+        refuse(coreTranslate("awb::mesh", "%1: UTF-16 text of an odd number of bytes"), name);
+    const bool little = bytes[0] == '\xFF';
+    const auto unit = [&](std::size_t i) {
+        const auto a = static_cast<unsigned char>(bytes[i]);
+        const auto b = static_cast<unsigned char>(bytes[i + 1]);
+        return little ? std::uint32_t(a | (b << 8)) : std::uint32_t((a << 8) | b);
+    };
+    std::string out;
+    out.reserve(bytes.size() / 2);
+    for (std::size_t i = 2; i < bytes.size(); i += 2) {
+        std::uint32_t c = unit(i);
+        if (c >= 0xD800 && c < 0xDC00 && i + 3 < bytes.size()) {
+            const std::uint32_t low = unit(i + 2);
+            if (low >= 0xDC00 && low < 0xE000) {
+                c = 0x10000 + ((c - 0xD800) << 10) + (low - 0xDC00);
+                i += 2;
+            }
+        }
+        if (c >= 0xD800 && c < 0xE000)
+            refuse(coreTranslate("awb::mesh", "%1: invalid UTF-16 text (a lone surrogate)"), name);
+        if (c < 0x80) {
+            out.push_back(char(c));
+        } else if (c < 0x800) {
+            out.push_back(char(0xC0 | (c >> 6)));
+            out.push_back(char(0x80 | (c & 0x3F)));
+        } else if (c < 0x10000) {
+            out.push_back(char(0xE0 | (c >> 12)));
+            out.push_back(char(0x80 | ((c >> 6) & 0x3F)));
+            out.push_back(char(0x80 | (c & 0x3F)));
+        } else {
+            out.push_back(char(0xF0 | (c >> 18)));
+            out.push_back(char(0x80 | ((c >> 12) & 0x3F)));
+            out.push_back(char(0x80 | ((c >> 6) & 0x3F)));
+            out.push_back(char(0x80 | (c & 0x3F)));
+        }
+    }
+    return out;
+}
+
+} // namespace
+
 Mesh readMesh(const std::string &path, std::vector<std::string> *notes)
 {
     const MeshFormat format = meshFormatForPath(path);
@@ -317,14 +365,20 @@ Mesh readMesh(const std::string &path, std::vector<std::string> *notes)
 Mesh readMesh(std::istream &in, MeshFormat format, const std::string &name,
               std::vector<std::string> *notes)
 {
-    const std::string bytes((std::istreambuf_iterator<char>(in)),
-                            std::istreambuf_iterator<char>());
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (in.bad())
         refuse(coreTranslate("awb::mesh", "cannot read %1"), name);
+    // A byte-order mark (editors on Windows write one): UTF-8's is dropped, UTF-16 is read as
+    // the text it encodes.
+    if (bytes.size() >= 3 && bytes.compare(0, 3, "\xEF\xBB\xBF") == 0)
+        bytes.erase(0, 3);
+    else if (bytes.size() >= 2 && (bytes.compare(0, 2, "\xFF\xFE") == 0
+                                   || bytes.compare(0, 2, "\xFE\xFF") == 0))
+        bytes = utf16ToUtf8(bytes, name);
     if (bytes.find_first_not_of(" \t\r\n\f\v") == std::string::npos)
         refuse(coreTranslate("awb::mesh", "%1 is empty"), name);
     if (format == MeshFormat::Ply)
-        return readPly(bytes, name);
+        return readPly(bytes, name, notes);
     if (const std::size_t nul = bytes.find('\0'); nul != std::string::npos) {
         Lines lines(std::string_view(bytes).substr(0, nul + 1));
         for (std::string_view line; lines.next(line);) {

@@ -14,7 +14,10 @@
 //   OFF  ASCII, header OFF or [ST][C][N]OFF (or none), `#` comments, extra columns ignored.
 //   PLY  ascii, binary_little_endian and binary_big_endian 1.0: element vertex with x, y, z of
 //        any numeric type, element face with the list vertex_indices (or vertex_index); other
-//        properties and elements are skipped.
+//        properties and elements are skipped, and header lines of other keywords (an
+//        exporter's own) with a note.
+// Text files may start with a byte-order mark: UTF-8's is dropped, UTF-16 (either order) is
+// read as the text it encodes.
 
 #include "core/mesh/Mesh.h"
 

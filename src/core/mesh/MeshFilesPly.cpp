@@ -74,7 +74,8 @@ void readPlyProperty(const Words &w, std::vector<PlyElement> &elements, const st
     elements.back().properties.push_back(std::move(p));
 }
 
-PlyHeader readPlyHeader(std::string_view text, const std::string &name)
+PlyHeader readPlyHeader(std::string_view text, const std::string &name,
+                        std::vector<std::string> *notes)
 {
     Lines lines(text);
     std::string_view line;
@@ -112,9 +113,15 @@ PlyHeader readPlyHeader(std::string_view text, const std::string &name)
             h.elements.push_back({std::string(w[1]), count, {}});
         } else if (w[0] == "property" && (w.size() == 3 || (w.size() == 5 && w[1] == "list"))) {
             readPlyProperty(w, h.elements, where);
-        } else {
-            refuse(coreTranslate("awb::mesh", "%1: unknown PLY header line '%2'"), where,
+        } else if (w[0] == "format" || w[0] == "element" || w[0] == "property") {
+            refuse(coreTranslate("awb::mesh", "%1: malformed PLY header line '%2'"), where,
                    shown(line));
+        } else if (notes) {
+            // Not PLY 1.0's (an exporter's own keyword): other readers skip it, so does this
+            // one, and says so.
+            notes->push_back(formatMessage(
+                coreTranslate("awb::mesh", "%1: header line '%2' is not PLY 1.0's: skipped"),
+                where, shown(line)));
         }
     }
     if (!format)
@@ -281,9 +288,9 @@ private:
 
 } // namespace
 
-Mesh readPly(std::string_view text, const std::string &name)
+Mesh readPly(std::string_view text, const std::string &name, std::vector<std::string> *notes)
 {
-    const PlyHeader h = readPlyHeader(text, name);
+    const PlyHeader h = readPlyHeader(text, name, notes);
     const long long vertexCount = h.elements[std::size_t(h.vertex)].count;
     PlyData data(text, h, name);
     const auto where = [&] { return data.where(); };

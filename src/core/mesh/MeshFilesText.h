@@ -154,6 +154,7 @@ inline void requireMesh(long long vertices, std::size_t faces, const std::string
 }
 
 // The PLY reader (MeshFilesPly.cpp).
-Mesh readPly(std::string_view text, const std::string &name);
+// `notes` (may be null) receives the header lines it skips.
+Mesh readPly(std::string_view text, const std::string &name, std::vector<std::string> *notes);
 
 } // namespace awb::meshtext
