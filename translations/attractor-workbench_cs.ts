@@ -9444,6 +9444,14 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
         <source>%1: header line &apos;%2&apos; is not PLY 1.0&apos;s: skipped</source>
         <translation>%1: řádek hlavičky &apos;%2&apos; nepatří do PLY 1.0: přeskočen</translation>
     </message>
+    <message>
+        <source>%1 problems, the first %2: %3</source>
+        <translation>%1 problémů, prvních %2: %3</translation>
+    </message>
+    <message>
+        <source>%1 problems: %2</source>
+        <translation>%1 problémů: %2</translation>
+    </message>
 </context>
 <context>
     <name>awb::render</name>

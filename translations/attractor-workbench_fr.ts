@@ -9431,6 +9431,14 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
         <source>%1: header line &apos;%2&apos; is not PLY 1.0&apos;s: skipped</source>
         <translation>%1&#xa0;: la ligne d&apos;en-tête &apos;%2&apos; n&apos;est pas du PLY 1.0&#xa0;: ignorée</translation>
     </message>
+    <message>
+        <source>%1 problems, the first %2: %3</source>
+        <translation>%1 problèmes, les %2 premiers&#xa0;: %3</translation>
+    </message>
+    <message>
+        <source>%1 problems: %2</source>
+        <translation>%1 problèmes&#xa0;: %2</translation>
+    </message>
 </context>
 <context>
     <name>awb::render</name>

@@ -9418,6 +9418,14 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
         <source>%1: header line &apos;%2&apos; is not PLY 1.0&apos;s: skipped</source>
         <translation>%1：头行 &apos;%2&apos; 不属于 PLY 1.0：已跳过</translation>
     </message>
+    <message>
+        <source>%1 problems, the first %2: %3</source>
+        <translation>%1 个问题，前 %2 个：%3</translation>
+    </message>
+    <message>
+        <source>%1 problems: %2</source>
+        <translation>%1 个问题：%2</translation>
+    </message>
 </context>
 <context>
     <name>awb::render</name>

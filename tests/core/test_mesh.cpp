@@ -330,6 +330,21 @@ void TestMesh::badMeshesAreRefusedByName()
              qPrintable(refusal(bow, cc)));
     QVERIFY(refusal(cubeMesh(), cc).isEmpty());
     QVERIFY(refusal(icosahedronMesh(), MeshScheme::Loop).isEmpty());
+    // Every fault of a kind at once (issue 44: a real file's six bowties were one per run).
+    m = cubeMesh();
+    m.faces[1] = {1, 9, 2, 5};
+    m.faces[3] = {2, 6, 11, 3};
+    QCOMPARE(refusal(m, cc),
+             QStringLiteral("2 problems: face 1 refers to vertex 9, but the mesh has 8 vertices "
+                            "(0 to 7); face 3 refers to vertex 11, but the mesh has 8 vertices "
+                            "(0 to 7)"));
+    m = cubeMesh();
+    for (int f : {0, 2, 4})  // half the faces turned over: many edges run twice one way
+        std::reverse(m.faces[std::size_t(f)].begin(), m.faces[std::size_t(f)].end());
+    const QString many = refusal(m, cc);
+    QVERIFY2(many.contains(QRegularExpression("^\\d+ problems(, the first 5)?: faces ")),
+             qPrintable(many));
+    QVERIFY(many.count(QStringLiteral("oriented inconsistently")) >= 2);
 }
 
 AWB_TEST_MAIN(TestMesh)

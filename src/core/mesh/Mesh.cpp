@@ -11,6 +11,39 @@ namespace awb {
 
 namespace {
 
+// The problems of one phase of the checks, all of them counted, the first few kept: a mesh
+// is refused with every fault of that phase at once, not one per run (issue 44).
+class Problems {
+public:
+    void add(std::string message)
+    {
+        ++m_count;
+        if (m_kept.size() < 5)
+            m_kept.push_back(std::move(message));
+    }
+    // Throws InputError when there is any.
+    void raise() const
+    {
+        if (m_count == 0)
+            return;
+        if (m_count == 1)
+            throw InputError(m_kept.front());
+        std::string list;
+        for (const std::string &m : m_kept)
+            list += (list.empty() ? "" : "; ") + m;
+        throw InputError(m_count > (long long)(m_kept.size())
+                             ? formatMessage(coreTranslate("awb::mesh",
+                                                           "%1 problems, the first %2: %3"),
+                                             m_count, m_kept.size(), list)
+                             : formatMessage(coreTranslate("awb::mesh", "%1 problems: %2"),
+                                             m_count, list));
+    }
+
+private:
+    std::vector<std::string> m_kept;
+    long long m_count = 0;
+};
+
 std::string faceList(const std::vector<int> &faces)
 {
     std::string s;
@@ -48,24 +81,30 @@ MeshTopology::MeshTopology(int vertexCount, const std::vector<std::vector<int>> 
         throw InputError(coreTranslate("awb::mesh", "the mesh has no vertices"));
     if (faces.empty())
         throw InputError(coreTranslate("awb::mesh", "the mesh has no faces"));
+    Problems problems;
     for (std::size_t f = 0; f < faces.size(); ++f) {
         const auto &loop = faces[f];
         if (loop.size() < 3)
-            throw InputError(formatMessage(
+            problems.add(formatMessage(
                 coreTranslate("awb::mesh", "face %1 has %2 vertices; a face needs at least 3"), f,
                 loop.size()));
+        bool inRange = true;
         for (int v : loop)
-            if (v < 0 || v >= vertexCount)
-                throw InputError(formatMessage(
+            if (v < 0 || v >= vertexCount) {
+                problems.add(formatMessage(
                     coreTranslate("awb::mesh", "face %1 refers to vertex %2, but the mesh has %3 "
                                                "vertices (0 to %4)"),
                     f, v, vertexCount, vertexCount - 1));
+                inRange = false;
+            }
         std::vector<int> sorted = loop;
         std::sort(sorted.begin(), sorted.end());
-        if (auto it = std::adjacent_find(sorted.begin(), sorted.end()); it != sorted.end())
-            throw InputError(
+        if (auto it = std::adjacent_find(sorted.begin(), sorted.end());
+            inRange && it != sorted.end())
+            problems.add(
                 formatMessage(coreTranslate("awb::mesh", "face %1 lists vertex %2 twice"), f, *it));
     }
+    problems.raise();
     // Half-edges a -> b of each face, and the faces on each undirected edge.
     std::unordered_map<std::uint64_t, int> halfEdge;  // (a, b) -> face
     std::map<std::pair<int, int>, std::vector<int>> facesOf;
@@ -78,22 +117,24 @@ MeshTopology::MeshTopology(int vertexCount, const std::vector<std::vector<int>> 
     }
     for (const auto &[ab, on] : facesOf)
         if (on.size() > 2)
-            throw InputError(formatMessage(
+            problems.add(formatMessage(
                 coreTranslate("awb::mesh", "edge (%1, %2) is non-manifold: faces %3 meet there"),
                 ab.first, ab.second, faceList(on)));
+    problems.raise();
     for (std::size_t f = 0; f < faces.size(); ++f) {
         const auto &loop = faces[f];
         for (std::size_t k = 0; k < loop.size(); ++k) {
             const int a = loop[k], b = loop[(k + 1) % loop.size()];
             const auto [it, added] = halfEdge.emplace(key(a, b), int(f));
             if (!added)
-                throw InputError(formatMessage(
+                problems.add(formatMessage(
                     coreTranslate("awb::mesh",
                                   "faces %1 and %2 are oriented inconsistently: both run from "
                                   "vertex %3 to vertex %4 (turn one of them over)"),
                     it->second, f, a, b));
         }
     }
+    problems.raise();
     // Edges, numbered in the order the faces first name them.
     std::unordered_map<std::uint64_t, int> edgeOf;
     for (std::size_t f = 0; f < faces.size(); ++f) {
@@ -159,12 +200,13 @@ MeshTopology::MeshTopology(int vertexCount, const std::vector<std::vector<int>> 
                 break;
         }
         if (ring.faces.size() != out.size())
-            throw InputError(formatMessage(
+            problems.add(formatMessage(
                 coreTranslate("awb::mesh", "vertex %1 is non-manifold: its %2 faces do not form "
                                            "one fan around it"),
                 v,
                 out.size()));
     }
+    problems.raise();
 }
 
 int MeshTopology::findEdge(int a, int b) const
