@@ -6778,6 +6778,14 @@ Schéma subdivize:</translation>
         <source>; in closed form λ = %1 = %2</source>
         <translation>; v uzavřeném tvaru λ = %1 = %2</translation>
     </message>
+    <message>
+        <source>No spectrum: %1.</source>
+        <translation>Bez spektra: %1.</translation>
+    </message>
+    <message>
+        <source>Limit position (%1, %2, %3).</source>
+        <translation>Limitní poloha (%1, %2, %3).</translation>
+    </message>
 </context>
 <context>
     <name>awb::analysis</name>
@@ -9451,6 +9459,10 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     <message>
         <source>%1 problems: %2</source>
         <translation>%1 problémů: %2</translation>
+    </message>
+    <message>
+        <source>the ring analysis takes interior valences 3 to 64; this vertex has %1</source>
+        <translation>analýza okolí bere vnitřní valence 3 až 64; tento vrchol má %1</translation>
     </message>
 </context>
 <context>

@@ -6767,6 +6767,14 @@ Schéma de subdivision&#xa0;:</translation>
         <source>; in closed form λ = %1 = %2</source>
         <translation>; sous forme close λ = %1 = %2</translation>
     </message>
+    <message>
+        <source>No spectrum: %1.</source>
+        <translation>Pas de spectre&#xa0;: %1.</translation>
+    </message>
+    <message>
+        <source>Limit position (%1, %2, %3).</source>
+        <translation>Position limite (%1, %2, %3).</translation>
+    </message>
 </context>
 <context>
     <name>awb::analysis</name>
@@ -9438,6 +9446,10 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     <message>
         <source>%1 problems: %2</source>
         <translation>%1 problèmes&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>the ring analysis takes interior valences 3 to 64; this vertex has %1</source>
+        <translation>l&apos;analyse de l&apos;anneau prend les valences intérieures de 3 à 64&#xa0;; ce sommet a %1</translation>
     </message>
 </context>
 <context>

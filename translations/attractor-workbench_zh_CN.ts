@@ -6756,6 +6756,14 @@ Subdivision scheme:</source>
         <source>; in closed form λ = %1 = %2</source>
         <translation>; 闭式为 λ = %1 = %2</translation>
     </message>
+    <message>
+        <source>No spectrum: %1.</source>
+        <translation>无谱：%1。</translation>
+    </message>
+    <message>
+        <source>Limit position (%1, %2, %3).</source>
+        <translation>极限位置 (%1, %2, %3)。</translation>
+    </message>
 </context>
 <context>
     <name>awb::analysis</name>
@@ -9425,6 +9433,10 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>%1 problems: %2</source>
         <translation>%1 个问题：%2</translation>
+    </message>
+    <message>
+        <source>the ring analysis takes interior valences 3 to 64; this vertex has %1</source>
+        <translation>环分析只接受 3 到 64 的内部价数；此顶点的价数为 %1</translation>
     </message>
 </context>
 <context>

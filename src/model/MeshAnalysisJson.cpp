@@ -45,8 +45,10 @@ QJsonObject vertexJson(const ExtraordinaryVertex &e, MeshScheme scheme)
                                          : QJsonValue(QString::fromStdString(e.curvature));
     // Inside: the ring of every point within two faces; on the boundary: the vertex piece's
     // net (its S_0), and the verdicts are not decided there.
-    if (!e.boundary)
+    if (!e.boundary && ringAnalysable(e.valence))
         o["characteristic_map"] = characteristicJson(*sharedVertexSpectrum(scheme, e.valence));
+    if (!e.note.empty())
+        o["note"] = QString::fromStdString(e.note);
     o["ring"] = QString::fromStdString(e.ring);
     o["ring_size"] = e.ringSize;
     if (e.limit.size() == 3) {

@@ -39,6 +39,7 @@ private slots:
     void exportObjIsTheRefinedMeshAtItsLimit();
     void badFilesAreRefusedByName();
     void valencesTableIsTheWindowsTable();
+    void interiorValenceTwoIsImportedAndSaid();
 
 private:
     int run(const QStringList &args, QByteArray *out = nullptr, QByteArray *err = nullptr)
@@ -325,6 +326,27 @@ void TestMeshCli::badFilesAreRefusedByName()
                  &out, &err),
              1);
     QVERIFY2(err.contains("needs a mesh item"), err.constData());
+}
+
+// OpenSubdiv draws interior vertices of valence 2 (its catmark_val2 shapes): imported, and
+// the vertices listed with the reason their ring is not analysed (issue 44) -- not refused
+// with a message that names neither file nor vertex.
+void TestMeshCli::interiorValenceTwoIsImportedAndSaid()
+{
+    const QString obj = m_dir.filePath("pillow.obj");
+    QFile f(obj);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("v 0 0 0.1\nv 1 0 -0.2\nv 1.1 1 0.3\nv 0 0.9 0\nf 1 2 3 4\nf 4 3 2 1\n");
+    f.close();
+    const QString project = m_dir.filePath("pillow.awb");
+    QByteArray out, err;
+    QCOMPARE(run({"import-mesh", obj, "--out", project}, &out, &err), 0);
+    QVERIFY2(out.contains("4 extraordinary vertices"), out.constData());
+    const QJsonArray e = analyse(project)["extraordinary"].toArray();
+    QCOMPARE(e.size(), 4);
+    QCOMPARE(e[0].toObject()["valence"].toInt(), 2);
+    QVERIFY(e[0].toObject()["note"].toString().contains("valences 3 to 64"));
+    QCOMPARE(run({"check", project}, &out, &err), 0);
 }
 
 AWB_TEST_MAIN(TestMeshCli)

@@ -102,7 +102,13 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
                          .first;
             limitAndNormal(it->second, net, outward[root.vertex], e);
         }
-        if (!e.boundary) {
+        if (!e.boundary && !ringAnalysable(e.valence)) {
+            e.ring = "none";
+            e.note = formatMessage(
+                coreTranslate("awb::mesh", "the ring analysis takes interior valences 3 to 64; "
+                                           "this vertex has %1"),
+                e.valence);
+        } else if (!e.boundary) {
             const auto shared = sharedVertexSpectrum(pieces.scheme, e.valence);
             const VertexSpectrum &s = *shared;
             e.ring = "ring";

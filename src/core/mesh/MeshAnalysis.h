@@ -32,6 +32,8 @@ struct ExtraordinaryVertex {
     std::string curvature;
     RowVec limit;   // 1 x 3
     RowVec normal;  // 1 x 3, unit (zero when the tangents are parallel)
+    // Why the ring was not analysed (an interior valence of 2, or above 64), or "".
+    std::string note;
 };
 
 // Interior vertices of valence != 4 (Catmull-Clark) or != 6 (Loop), boundary vertices of two

@@ -67,6 +67,8 @@ struct VertexSpectrum {
 // Catmull-Clark, triangles for Loop: the case after one step of any mesh). InputError for
 // n < 3 or n > 64.
 VertexSpectrum interiorVertexSpectrum(MeshScheme scheme, int valence);
+// Whether interiorVertexSpectrum takes this valence (3 to 64).
+inline bool ringAnalysable(int valence) { return valence >= 3 && valence <= 64; }
 
 // The characteristic map of `Q` (see CharacteristicMap above).
 CharacteristicMap checkCharacteristicMap(MeshScheme scheme, int valence, const Mat &Q);

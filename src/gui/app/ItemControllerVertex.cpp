@@ -156,7 +156,7 @@ void ItemController::showVertex()
         return;
     }
     std::optional<VertexSpectrum> interior;
-    if (!e->boundary)
+    if (!e->boundary && ringAnalysable(e->valence))
         interior = *sharedVertexSpectrum(mesh->scheme(), e->valence);
     QString where = focusedVertexName();
     if (!where.isEmpty())

@@ -156,6 +156,17 @@ QString VertexPanel::verdictHtml(const ExtraordinaryVertex &e, MeshScheme scheme
                              .arg(e.boundary ? tr("on the boundary") : tr("interior"),
                                   schemeName(scheme));
     QString html = QStringLiteral("<p><b>%1</b> — %2</p>").arg(where.toHtmlEscaped(), kind);
+    if (!e.note.empty()) {
+        // Not analysed (an interior valence of 2, or above 64): say so, and the limit only.
+        html += QStringLiteral("<p>%1</p>").arg(
+            tr("No spectrum: %1.").arg(QString::fromStdString(e.note)).toHtmlEscaped());
+        if (e.limit.size() == 3)
+            html += QStringLiteral("<p>%1</p>").arg(tr("Limit position (%1, %2, %3).")
+                                                        .arg(number(e.limit(0)),
+                                                             number(e.limit(1)),
+                                                             number(e.limit(2))));
+        return html;
+    }
     const QString ring =
         e.boundary ? tr("Local subdivision matrix S: %1 × %1 (the net of the vertex's piece).")
                    : tr("Local subdivision matrix S: %1 × %1 (the vertex and every point "
