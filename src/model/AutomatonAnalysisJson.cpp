@@ -155,8 +155,14 @@ QJsonObject automatonAnalysisJson(const CifsItem &item)
         jsr["polytope"] = QString::fromStdString(a->polytope.message);
     jsr["lifted_dimension"] = liftedArcs(s.toCore()).dimension;
     o["constrained_jsr"] = jsr;
+    // The report is sized by what it says, not by the automaton: at most 200 cycles, the
+    // first 20 with their whole product (a 64-point state's is 4096 numbers and 64
+    // eigenvectors), then the count.
+    constexpr std::size_t listed = 200, withProduct = 20;
     QJsonArray cycles;
     for (const CifsCycle &c : a->cycles) {
+        if (std::size_t(cycles.size()) == listed)
+            break;
         QJsonArray values;
         for (const Complex &z : c.eigenvalues)
             values.append(QJsonArray{z.real(), z.imag()});
@@ -165,6 +171,10 @@ QJsonObject automatonAnalysisJson(const CifsItem &item)
                           {"eigenvalues", values},
                           {"spectral_radius", c.spectralRadius},
                           {"per_arc", c.perArc}};
+        if (std::size_t(cycles.size()) >= withProduct) {
+            cycles.append(cycle);
+            continue;
+        }
         // The cycle's product in 003's column form T = (S_{t_m} .. S_{t_1})^T, whole: its
         // eigenvalue 1 and fixed point too.
         Mat M = Mat::Identity(Eigen::Index(s.states[size_t(c.state)].points.size()),
@@ -175,7 +185,8 @@ QJsonObject automatonAnalysisJson(const CifsItem &item)
         cycles.append(cycle);
     }
     o["cycles"] = cycles;
-    o["cycles_complete"] = a->cyclesComplete;
+    o["cycle_count"] = int(a->cycles.size());
+    o["cycles_complete"] = a->cyclesComplete && a->cycles.size() <= listed;
     o["lyapunov_exponent"] = a->lyapunov ? QJsonValue(*a->lyapunov) : QJsonValue();
     o["lyapunov_from"] = s.states.at(size_t(a->lyapunovState)).name;
     o["contractive"] = a->contractive();

@@ -470,7 +470,9 @@ DerivedIfs CifsItem::computeIfs() const
             core.addTransition("-", q, q, Mat::Constant(n, n, 1.0 / n));
         }
     const auto cifs = std::make_shared<const Cifs>(std::move(core));
-    const CifsCheck check = checkCifs(*cifs);  // validates: a drawn state without arcs, ...
+    // Validates (a drawn state without arcs, ...); 2000 cycles at most, each a spectrum of up
+    // to 64 x 64: a hostile file costs a second, not minutes.
+    const CifsCheck check = checkCifs(*cifs, 2000);
     if (!check.contractive)
         throw InputError(check.message);
     const auto stacking = std::make_shared<const Stacking>(stackingOf(*cifs));
