@@ -91,7 +91,7 @@ AutomatonPanel::AutomatonPanel(QWidget *parent)
 
     m_graph = new AutomatonGraph;
     m_graph->setObjectName(QStringLiteral("automatonGraph"));
-    m_graph->setMinimumHeight(200);
+    m_graph->setMinimumHeight(280);
     body->addWidget(m_graph, 3);
     connect(m_graph, &AutomatonGraph::stateClicked, this, [this] { showSelection(); });
     connect(m_graph, &AutomatonGraph::arcClicked, this, [this] { showSelection(); });

@@ -6,6 +6,7 @@
 #include <QPainterPath>
 #include <QToolTip>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -73,7 +74,7 @@ void AutomatonGraph::selectArc(int arc)
 double AutomatonGraph::radius() const
 {
     // Room for the loops outside the states' ellipse.
-    return kStateRadius + 72.0;
+    return kStateRadius + 56.0;
 }
 
 QPointF AutomatonGraph::stateCentre(int s) const
@@ -84,8 +85,9 @@ QPointF AutomatonGraph::stateCentre(int s) const
         return centre;
     // On an ellipse filling the widget, the first state at the top, the others clockwise; two
     // states side by side.
-    const double rx = std::max(kStateRadius, width() / 2.0 - radius());
-    const double ry = std::max(kStateRadius, height() / 2.0 - radius());
+    // At least two discs apart vertically, so that the top and bottom states never touch.
+    const double rx = std::max(2.0 * kStateRadius, width() / 2.0 - radius());
+    const double ry = std::max(2.0 * kStateRadius, height() / 2.0 - radius());
     if (n == 2)
         return centre + QPointF((s == 0 ? -1 : 1) * rx, 0);
     const double a = -std::numbers::pi / 2 + 2 * std::numbers::pi * s / n;
@@ -192,7 +194,10 @@ void AutomatonGraph::paintEvent(QPaintEvent *)
         const QString label = m_arcs[size_t(t)].name;
         const QFontMetricsF fm(small);
         const double w = fm.horizontalAdvance(label) + 4, h = fm.height();
-        const QRectF at(c.label.x() - w / 2, c.label.y() - h / 2, w, h);
+        QRectF at(c.label.x() - w / 2, c.label.y() - h / 2, w, h);
+        // Kept inside the widget: a side state's loop label would be cut at the edge.
+        at.moveLeft(std::clamp(at.left(), 0.0, std::max(0.0, width() - at.width())));
+        at.moveTop(std::clamp(at.top(), 0.0, std::max(0.0, height() - at.height())));
         p.setPen(Qt::NoPen);
         p.setBrush(pal.color(QPalette::Base));
         p.drawRect(at);
