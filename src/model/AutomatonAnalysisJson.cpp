@@ -8,6 +8,7 @@
 #include "model/BcifsJunctionItem.h"
 #include "model/CifsItem.h"
 #include "model/NumberFormat.h"
+#include "model/PropertyPart.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -43,17 +44,7 @@ QString pathText(const CifsSpec &s, int from, const std::vector<int> &arcs)
 
 QString number(double x) { return QString::number(x, 'g', 10); }
 
-QJsonArray rowsJson(const Mat &M)
-{
-    QJsonArray rows;
-    for (Eigen::Index r = 0; r < M.rows(); ++r) {
-        QJsonArray row;
-        for (Eigen::Index c = 0; c < M.cols(); ++c)
-            row.append(M(r, c));
-        rows.append(row);
-    }
-    return rows;
-}
+QJsonValue rowsJson(const Mat &M) { return property::matricesToJson({M}).toArray().first(); }
 
 QJsonValue complexJson(const Complex &z)
 {

@@ -12,25 +12,6 @@ namespace awb {
 
 namespace {
 
-// Passes a state's images on, written into that state's block of the item's space (the
-// concatenation of all edge states' barycentric spaces), so that one view draws them all.
-class BlockSink : public AttractorSink {
-public:
-    BlockSink(AttractorSink &target, int dim) : m_target(target), m_dim(dim) {}
-    int offset = 0;
-    void consume(const Mat &vertices, StartSet::Kind kind, const std::uint8_t *address,
-                 int length) override
-    {
-        Mat Y = Mat::Zero(vertices.rows(), m_dim);
-        Y.middleCols(offset, vertices.cols()) = vertices;
-        m_target.consume(Y, kind, address, length);
-    }
-
-private:
-    AttractorSink &m_target;
-    int m_dim;
-};
-
 } // namespace
 
 // ---- JunctionSpec -----------------------------------------------------------------------------
@@ -126,17 +107,11 @@ DerivedIfs BcifsJunctionItem::computeIfs() const
 
     // The item's space: the edge states' barycentric spaces side by side; one view draws a
     // point of state s (zero outside its block) at lambda_s P_s.
-    std::vector<int> offsets;
-    int D = 0;
-    for (const CifsState &s : cifs->states) {
-        offsets.push_back(D);
-        D += s.dim();
-    }
-    Mat V(D, 2);
-    for (size_t s = 0; s < cifs->states.size(); ++s)
-        V.middleRows(offsets[s], cifs->states[s].dim()) = cifs->states[s].controlPoints;
+    const CifsStacking stacking = stackingOf(*cifs);
+    const std::vector<int> offsets = stacking.offsets;
+    const int D = stacking.dimension;
     out.ifs.space = "cifs states";
-    out.ifs.views.push_back({V, RowVec::Zero(2)});
+    out.ifs.views.push_back({stacking.points, RowVec::Zero(2)});
     out.toIfsSpace = [cifs, offsets, D](const Mat &X) {
         Mat Y(X.rows(), D);
         for (size_t s = 0; s < cifs->states.size(); ++s)
@@ -154,7 +129,7 @@ DerivedIfs BcifsJunctionItem::computeIfs() const
         for (int s = 0; s < count; ++s)
             starts.push_back({start.kind, start.vertices.middleCols(offsets[size_t(s)],
                                                                     cifs->states[s].dim())});
-        BlockSink sink(*sinks.front(), D);
+        StackedSink sink(*sinks.front(), D);
         IterationStats total;
         for (int s = 0; s < count && !total.cancelled; ++s) {
             IterationControl part{control.cancel, {}};

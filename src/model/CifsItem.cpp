@@ -16,23 +16,9 @@ namespace awb {
 
 namespace {
 
-PointList toPoints(const Mat &P)
-{
-    PointList out;
-    for (Eigen::Index r = 0; r < P.rows(); ++r)
-        out.push_back({P(r, 0), P(r, 1)});
-    return out;
-}
-
 QString quoted(const QString &s) { return QStringLiteral("\"%1\"").arg(s); }
 
-QJsonValue matrixToJson(const Mat &M)
-{
-    QJsonArray rows;
-    for (Eigen::Index r = 0; r < M.rows(); ++r)
-        rows.append(ProjectIO::rowToJson(M.row(r)));
-    return rows;
-}
+QJsonValue matrixToJson(const Mat &M) { return property::matricesToJson({M}).toArray().first(); }
 
 Mat matrixFromJson(const QJsonValue &v, const QString &where)
 {
@@ -73,14 +59,6 @@ int stateFromJson(const CifsSpec &s, const QJsonValue &v, const QString &where)
         && v.toDouble() <= double(s.states.size()))
         return int(v.toDouble()) - 1;
     throw LoadError{where, CifsSpec::tr("expected a state's name")};
-}
-
-Mat planeRows(const PointList &points)
-{
-    Mat P(Eigen::Index(points.size()), 2);
-    for (size_t i = 0; i < points.size(); ++i)
-        P.row(Eigen::Index(i)) << points[i].x, points[i].y;
-    return P;
 }
 
 } // namespace
@@ -130,8 +108,8 @@ Mat cifsArcMatrixFromJson(const QJsonObject &arc, const CifsStateSpec &from,
         if (A.rows() != 2 || A.cols() != 2 || b.cols() != 2)
             throw LoadError{at, CifsSpec::tr("A must be 2 x 2 and b two numbers")};
         try {
-            return barycentricMatrix(AffineMap{A, RowVec(b.row(0))}, planeRows(to.points),
-                                     planeRows(from.points));
+            return barycentricMatrix(AffineMap{A, RowVec(b.row(0))}, toMatrix(to.points),
+                                     toMatrix(from.points));
         } catch (const InputError &e) {
             throw LoadError{at, QString::fromStdString(e.what())};
         }
@@ -260,7 +238,7 @@ Cifs CifsSpec::toCore() const
 {
     Cifs c;
     for (const CifsStateSpec &s : states)
-        c.addState(s.name.toStdString(), planeRows(s.points));
+        c.addState(s.name.toStdString(), toMatrix(s.points));
     for (const CifsArcSpec &a : arcs)
         c.addTransition(a.name.toStdString(), a.from, a.to, a.S, a.weight);
     return c;
@@ -271,7 +249,7 @@ CifsSpec CifsSpec::fernOfGaskets(int redirected)
     const Cifs core = fernSierpinskiCifs(redirected);
     CifsSpec s;
     for (const CifsState &q : core.states)
-        s.states.push_back({QString::fromStdString(q.name), toPoints(q.controlPoints)});
+        s.states.push_back({QString::fromStdString(q.name), toPointList(q.controlPoints)});
     for (const CifsTransition &t : core.transitions)
         s.arcs.push_back({QString::fromStdString(t.name), t.from, t.to, t.S, t.weight});
     s.drawn = s.states.front().name;
@@ -387,52 +365,6 @@ QJsonObject CifsItem::upgradedFields(const QJsonObject &json) const
     return out;
 }
 
-namespace {
-
-// Points of the drawn state's space in the item's stacked space (every state's barycentric
-// coordinates side by side, drawn by the stacked control points), and back.
-struct Stacking {
-    std::vector<int> offsets;
-    int dimension = 0;
-    Mat points;  // dimension x 2
-};
-
-Stacking stackingOf(const Cifs &c)
-{
-    Stacking s;
-    for (const CifsState &q : c.states) {
-        s.offsets.push_back(s.dimension);
-        s.dimension += q.dim();
-    }
-    s.points = Mat::Zero(s.dimension, 2);
-    for (size_t q = 0; q < c.states.size(); ++q)
-        s.points.middleRows(s.offsets[q], c.states[q].dim()) = c.states[q].controlPoints;
-    return s;
-}
-
-// Emits a state's points (rows of its space) into the stacked space.
-class StackingSink : public AttractorSink {
-public:
-    StackingSink(AttractorSink &inner, int offset, int dimension)
-        : m_inner(inner), m_offset(offset), m_dimension(dimension)
-    {
-    }
-    void consume(const Mat &v, StartSet::Kind kind, const std::uint8_t *address,
-                 int length) override
-    {
-        m_buffer.setZero(v.rows(), m_dimension);
-        m_buffer.middleCols(m_offset, v.cols()) = v;
-        m_inner.consume(m_buffer, kind, address, length);
-    }
-
-private:
-    AttractorSink &m_inner;
-    int m_offset, m_dimension;
-    Mat m_buffer;
-};
-
-} // namespace
-
 DerivedIfs CifsItem::computeIfs() const
 {
     if (!algorithm().probabilities.empty())
@@ -475,7 +407,7 @@ DerivedIfs CifsItem::computeIfs() const
     const CifsCheck check = checkCifs(*cifs, 2000);
     if (!check.contractive)
         throw InputError(check.message);
-    const auto stacking = std::make_shared<const Stacking>(stackingOf(*cifs));
+    const auto stacking = std::make_shared<const CifsStacking>(stackingOf(*cifs));
     DerivedIfs out;
     bool square = true;
     for (const CifsArcSpec &a : m_spec.arcs)
@@ -519,8 +451,8 @@ DerivedIfs CifsItem::computeIfs() const
                 ChaosOptions o;
                 o.samples = std::uint64_t(count(depth) / double(drawn.size())) + 1;
                 o.seed = std::uint64_t(a.seed) + k;
-                StackingSink sink(*sinks.front(), stacking->offsets[size_t(drawn[k])],
-                                  stacking->dimension);
+                StackedSink sink(*sinks.front(), stacking->dimension);
+                sink.offset = stacking->offsets[size_t(drawn[k])];
                 const IterationStats s = chaosGame(*cifs, drawn[k], o, sink, control);
                 stats.images += s.images;
                 stats.cancelled = s.cancelled;
@@ -541,7 +473,8 @@ DerivedIfs CifsItem::computeIfs() const
             starts.push_back({start.kind, leastNormWeightsOfRows(s.controlPoints, plane)});
         IterationStats stats;
         for (int q : drawn) {
-            StackingSink sink(*sinks.front(), stacking->offsets[size_t(q)], stacking->dimension);
+            StackedSink sink(*sinks.front(), stacking->dimension);
+            sink.offset = stacking->offsets[size_t(q)];
             const IterationStats s = iterate(*cifs, q, starts, depth, sink, control);
             stats.images += s.images;
             if ((stats.cancelled = s.cancelled))

@@ -349,6 +349,28 @@ std::vector<StartSet> controlPolygonStarts(const Cifs &cifs)
     return out;
 }
 
+CifsStacking stackingOf(const Cifs &cifs)
+{
+    CifsStacking s;
+    for (const CifsState &q : cifs.states) {
+        s.offsets.push_back(s.dimension);
+        s.dimension += q.dim();
+    }
+    const Eigen::Index d = cifs.states.empty() ? 2 : cifs.states.front().controlPoints.cols();
+    s.points = Mat::Zero(s.dimension, d);
+    for (std::size_t q = 0; q < cifs.states.size(); ++q)
+        s.points.middleRows(s.offsets[q], cifs.states[q].dim()) = cifs.states[q].controlPoints;
+    return s;
+}
+
+void StackedSink::consume(const Mat &vertices, StartSet::Kind kind, const std::uint8_t *address,
+                          int length)
+{
+    m_buffer.setZero(vertices.rows(), m_dim);
+    m_buffer.middleCols(offset, vertices.cols()) = vertices;
+    m_target.consume(m_buffer, kind, address, length);
+}
+
 double pathCount(const Cifs &cifs, int state, int depth)
 {
     const int N = int(cifs.states.size());

@@ -96,6 +96,30 @@ std::vector<StartSet> attractorSeeds(const Cifs &cifs);
 // The simplex vertices of every state (the identity, drawn as its control polygon).
 std::vector<StartSet> controlPolygonStarts(const Cifs &cifs);
 
+// The stacked space of an automaton item: every state's barycentric coordinates side by side
+// (state s in columns offsets[s] .. offsets[s] + n_s - 1), drawn by the stacked control points
+// (dimension x d), so that one view draws the points of every state.
+struct CifsStacking {
+    std::vector<int> offsets;
+    int dimension = 0;
+    Mat points;
+};
+CifsStacking stackingOf(const Cifs &cifs);
+
+// Passes a state's images on, written into that state's block of the stacked space.
+class StackedSink : public AttractorSink {
+public:
+    StackedSink(AttractorSink &target, int dimension) : m_target(target), m_dim(dimension) {}
+    int offset = 0;  // the block of the state being drawn
+    void consume(const Mat &vertices, StartSet::Kind kind, const std::uint8_t *address,
+                 int length) override;
+
+private:
+    AttractorSink &m_target;
+    int m_dim;
+    Mat m_buffer;
+};
+
 // Number of paths of length `depth` leaving `state` (as a double, it may be huge).
 double pathCount(const Cifs &cifs, int state, int depth);
 
