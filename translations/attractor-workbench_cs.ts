@@ -6385,6 +6385,110 @@ Schéma subdivize:</translation>
         <source>Pieces coloured</source>
         <translation>Obarvení částí</translation>
     </message>
+    <message>
+        <source>expected an array, each entry %1</source>
+        <translation>očekáváno pole, v němž je každá položka %1</translation>
+    </message>
+    <message>
+        <source>expected %1</source>
+        <translation>očekáváno: %1</translation>
+    </message>
+    <message>
+        <source>vertex and face numbers are whole numbers (0-based)</source>
+        <translation>čísla vrcholů a stěn jsou celá čísla (číslovaná od 0)</translation>
+    </message>
+    <message>
+        <source>a sharpness is a number of 0 or more (10 or more: infinitely sharp)</source>
+        <translation>ostrost je číslo 0 nebo větší (10 a více: nekonečně ostré)</translation>
+    </message>
+    <message>
+        <source>a crease: [first vertex, second vertex, sharpness]</source>
+        <translation>ostrá hrana ve tvaru [první vrchol, druhý vrchol, ostrost]</translation>
+    </message>
+    <message>
+        <source>Creases</source>
+        <translation>Ostré hrany</translation>
+    </message>
+    <message>
+        <source>Sharp features</source>
+        <translation>Ostré prvky</translation>
+    </message>
+    <message>
+        <source>Sharp edges as [first vertex, second vertex, sharpness]: sharp for that many levels (10 or more: for ever), as OpenSubdiv&apos;s creases</source>
+        <translation>Ostré hrany ve tvaru [první vrchol, druhý vrchol, ostrost]: zůstávají ostré po daný počet úrovní dělení (10 a více: navždy), jako ostré hrany (creases) v OpenSubdiv</translation>
+    </message>
+    <message>
+        <source>a corner: [vertex, sharpness]</source>
+        <translation>roh ve tvaru [vrchol, ostrost]</translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation>Rohy</translation>
+    </message>
+    <message>
+        <source>Sharp vertices as [vertex, sharpness]: the surface passes through them while the sharpness lasts</source>
+        <translation>Ostré vrcholy ve tvaru [vrchol, ostrost]: plocha jimi prochází, dokud jejich ostrost trvá</translation>
+    </message>
+    <message>
+        <source>a face number (0-based)</source>
+        <translation>číslo stěny (číslováno od 0)</translation>
+    </message>
+    <message>
+        <source>Holes</source>
+        <translation>Díry</translation>
+    </message>
+    <message>
+        <source>Faces (0-based) left out of the surface; they still shape their neighbours</source>
+        <translation>Stěny (číslované od 0) vynechané z plochy; tvar sousedních stěn přesto dál ovlivňují</translation>
+    </message>
+    <message>
+        <source>None (faces at the boundary are left out)</source>
+        <translation>Žádná (stěny na hranici se vynechají)</translation>
+    </message>
+    <message>
+        <source>Edges</source>
+        <translation>Hrany</translation>
+    </message>
+    <message>
+        <source>Edges and corners</source>
+        <translation>Hrany a rohy</translation>
+    </message>
+    <message>
+        <source>Boundary</source>
+        <translation>Hranice</translation>
+    </message>
+    <message>
+        <source>How the boundary is interpolated (OpenSubdiv&apos;s VtxBoundaryInterpolation): with corners, a vertex of one face is a corner of the surface</source>
+        <translation>Jak se interpoluje hranice (VtxBoundaryInterpolation v OpenSubdiv): s rohy se vrchol, který patří jen jedné stěně, stává rohem plochy</translation>
+    </message>
+    <message>
+        <source>Uniform</source>
+        <translation>Rovnoměrná</translation>
+    </message>
+    <message>
+        <source>Chaikin</source>
+        <translation>Chaikin</translation>
+    </message>
+    <message>
+        <source>Crease method</source>
+        <translation>Metoda ostrých hran</translation>
+    </message>
+    <message>
+        <source>How a semi-sharp crease decays: by 1 per level, or Chaikin&apos;s average with its neighbours</source>
+        <translation>Jak ubývá ostrost poloostré hrany: o 1 na každé úrovni, nebo Chaikinovým průměrováním se sousedními hranami</translation>
+    </message>
+    <message>
+        <source>Smooth triangles</source>
+        <translation>Hladké trojúhelníky</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>Trojúhelníky</translation>
+    </message>
+    <message>
+        <source>Catmull–Clark&apos;s edge points next to triangles: as for any face, or OpenSubdiv&apos;s smoother weights</source>
+        <translation>Hranové body schématu Catmull–Clark vedle trojúhelníků: stejně jako u kterékoli jiné stěny, nebo s hladšími vahami z OpenSubdiv</translation>
+    </message>
 </context>
 <context>
     <name>awb::SubdivisionSurfaceItem</name>
@@ -6700,7 +6804,7 @@ Schéma subdivize:</translation>
     </message>
     <message>
         <source>valence %1, %2, %3</source>
-        <translation>valence %1, %2, %3</translation>
+        <translation type="vanished">valence %1, %2, %3</translation>
     </message>
     <message>
         <source>on the boundary</source>
@@ -6728,7 +6832,7 @@ Schéma subdivize:</translation>
     </message>
     <message>
         <source>Reif&apos;s criterion is decided here for interior vertices only: a boundary vertex follows the crease rules, whose analysis needs the boundary&apos;s own characteristic map.</source>
-        <translation>Reifovo kritérium se zde rozhoduje jen pro vnitřní vrcholy: hraniční vrchol se řídí pravidly pro ostré hrany, jejichž analýza vyžaduje vlastní charakteristické zobrazení hranice.</translation>
+        <translation type="vanished">Reifovo kritérium se zde rozhoduje jen pro vnitřní vrcholy: hraniční vrchol se řídí pravidly pro ostré hrany, jejichž analýza vyžaduje vlastní charakteristické zobrazení hranice.</translation>
     </message>
     <message>
         <source>spectral condition 1 &gt; λ₂ = λ₃ &gt; |λ₄|, λ real</source>
@@ -6785,6 +6889,30 @@ Schéma subdivize:</translation>
     <message>
         <source>Limit position (%1, %2, %3).</source>
         <translation>Limitní poloha (%1, %2, %3).</translation>
+    </message>
+    <message>
+        <source>a dart (one sharp edge ends here)</source>
+        <translation>šipka (končí zde jedna ostrá hrana)</translation>
+    </message>
+    <message>
+        <source>on a crease</source>
+        <translation>na ostré hraně</translation>
+    </message>
+    <message>
+        <source>a corner</source>
+        <translation>roh</translation>
+    </message>
+    <message>
+        <source>smooth</source>
+        <translation>hladký</translation>
+    </message>
+    <message>
+        <source>valence %1, %2, %3, %4</source>
+        <translation>valence %1, %2, %3, %4</translation>
+    </message>
+    <message>
+        <source>Reif&apos;s criterion is decided here for smooth interior vertices only: a boundary vertex or a sharp feature follows the crease rules, whose analysis needs the half-ring&apos;s own characteristic map.</source>
+        <translation>Reifovo kritérium se zde rozhoduje jen pro hladké vnitřní vrcholy: hraniční vrchol nebo ostrý prvek se řídí pravidly pro ostré hrany, jejichž analýza vyžaduje vlastní charakteristické zobrazení polovičního prstence.</translation>
     </message>
 </context>
 <context>
@@ -8314,6 +8442,12 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
         <source>attractor-cli: warning: %1</source>
         <translation>attractor-cli: varování: %1</translation>
     </message>
+    <message>
+        <source>  sharp features: %1 creases, %2 corners, %3 holes; boundary %4, crease method %5, triangles %6
+</source>
+        <translation>  ostré prvky: ostré hrany %1, rohy %2, díry %3; hranice %4, metoda ostrých hran %5, trojúhelníky %6
+</translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>
@@ -9430,11 +9564,11 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     </message>
     <message>
         <source>%1, line %2: the OpenSubdiv tag &apos;t %3&apos; is not applied: this version subdivides without creases, corners, holes or boundary rules, so the surface differs from OpenSubdiv&apos;s where it acts</source>
-        <translation>%1, řádek %2: značka OpenSubdiv &apos;t %3&apos; se neuplatní: tato verze dělí síť bez ostrých hran, rohů, děr a okrajových pravidel, takže se plocha tam, kde značka působí, liší od plochy OpenSubdiv</translation>
+        <translation type="vanished">%1, řádek %2: značka OpenSubdiv &apos;t %3&apos; se neuplatní: tato verze dělí síť bez ostrých hran, rohů, děr a okrajových pravidel, takže se plocha tam, kde značka působí, liší od plochy OpenSubdiv</translation>
     </message>
     <message>
         <source>%1, lines %2 to %3: %4 OpenSubdiv tags &apos;t %5&apos; are not applied: this version subdivides without creases, corners, holes or boundary rules, so the surface differs from OpenSubdiv&apos;s where they act</source>
-        <translation>%1, řádky %2 až %3: značky OpenSubdiv &apos;t %5&apos; (%4) se neuplatní: tato verze dělí síť bez ostrých hran, rohů, děr a okrajových pravidel, takže se plocha tam, kde působí, liší od plochy OpenSubdiv</translation>
+        <translation type="vanished">%1, řádky %2 až %3: značky OpenSubdiv &apos;t %5&apos; (%4) se neuplatní: tato verze dělí síť bez ostrých hran, rohů, děr a okrajových pravidel, takže se plocha tam, kde působí, liší od plochy OpenSubdiv</translation>
     </message>
     <message>
         <source>%1: UTF-16 text of an odd number of bytes</source>
@@ -9463,6 +9597,94 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     <message>
         <source>the ring analysis takes interior valences 3 to 64; this vertex has %1</source>
         <translation>analýza okolí bere vnitřní valence 3 až 64; tento vrchol má %1</translation>
+    </message>
+    <message>
+        <source>%1, lines %2 to %3: %4 more OpenSubdiv tag lines of other names are not applied either</source>
+        <translation>%1, řádky %2 až %3: dalších %4 řádků značek OpenSubdiv jiných jmen se také neuplatní</translation>
+    </message>
+    <message>
+        <source>%1: %2 header lines that are not PLY 1.0&apos;s, the first &apos;%3&apos;, are skipped</source>
+        <translation>%1: %2 řádků hlavičky, které nepatří do PLY 1.0 (první &apos;%3&apos;), je přeskočeno</translation>
+    </message>
+    <message>
+        <source>the crease on vertices %1 and %2 has sharpness %3; a sharpness is a number of 0 or more</source>
+        <translation>ostrá hrana na vrcholech %1 a %2 má ostrost %3; ostrost je číslo 0 nebo větší</translation>
+    </message>
+    <message>
+        <source>a crease names vertices %1 and %2, but no edge joins them</source>
+        <translation>ostrá hrana uvádí vrcholy %1 a %2, ale žádná hrana je nespojuje</translation>
+    </message>
+    <message>
+        <source>a corner names vertex %1, but the mesh has %2 vertices (0 to %3)</source>
+        <translation>roh uvádí vrchol %1, ale počet vrcholů sítě je %2 (0 až %3)</translation>
+    </message>
+    <message>
+        <source>the corner at vertex %1 has sharpness %2; a sharpness is a number of 0 or more</source>
+        <translation>roh ve vrcholu %1 má ostrost %2; ostrost je číslo 0 nebo větší</translation>
+    </message>
+    <message>
+        <source>a hole names face %1, but the mesh has %2 faces (0 to %3)</source>
+        <translation>díra uvádí stěnu %1, ale počet stěn sítě je %2 (0 až %3)</translation>
+    </message>
+    <message>
+        <source>%1, line %2: the OpenSubdiv tag &apos;t %3&apos; is not applied (this version applies crease, corner, hole, interpolateboundary, creasemethod and smoothtriangles), so the surface differs from OpenSubdiv&apos;s where it acts</source>
+        <translation>%1, řádek %2: značka OpenSubdiv &apos;t %3&apos; se neuplatní (tato verze uplatňuje crease, corner, hole, interpolateboundary, creasemethod a smoothtriangles), takže se plocha tam, kde značka působí, liší od plochy z OpenSubdiv</translation>
+    </message>
+    <message>
+        <source>%1, lines %2 to %3: %4 OpenSubdiv tags &apos;t %5&apos; are not applied (this version applies crease, corner, hole, interpolateboundary, creasemethod and smoothtriangles), so the surface differs from OpenSubdiv&apos;s where they act</source>
+        <translation>%1, řádky %2 až %3: značky OpenSubdiv &apos;t %5&apos; (celkem %4) se neuplatní (tato verze uplatňuje crease, corner, hole, interpolateboundary, creasemethod a smoothtriangles), takže se plocha tam, kde tyto značky působí, liší od plochy z OpenSubdiv</translation>
+    </message>
+    <message>
+        <source>%1: the tag &apos;t %2&apos; needs its counts as ints/floats/strings (like 2/1/0), got &apos;%3&apos;</source>
+        <translation>%1: značka &apos;t %2&apos; vyžaduje počty ve tvaru ints/floats/strings (např. 2/1/0), zadáno „%3“</translation>
+    </message>
+    <message>
+        <source>%1: the tag &apos;t %2&apos; announces %3 values but has %4</source>
+        <translation>%1: značka &apos;t %2&apos; ohlašuje počet hodnot %3, ale obsahuje jich %4</translation>
+    </message>
+    <message>
+        <source>%1: the tag &apos;t %2&apos; needs %3</source>
+        <translation>%1: značka &apos;t %2&apos; vyžaduje %3</translation>
+    </message>
+    <message>
+        <source>%1: the tag &apos;t %2&apos; names vertex %3, but the file has %4 vertices (tags count from 0: 0 to %5)</source>
+        <translation>%1: značka &apos;t %2&apos; uvádí vrchol %3, ale počet vrcholů v souboru je %4 (značky číslují od 0: 0 až %5)</translation>
+    </message>
+    <message>
+        <source>%1: the hole names face %2, but the file has %3 faces (0 to %4)</source>
+        <translation>%1: díra uvádí stěnu %2, ale počet stěn v souboru je %3 (0 až %4)</translation>
+    </message>
+    <message>
+        <source>Chaikin&apos;s creases last %1 more levels here; the mesh would have more than %2 faces (use the uniform crease method)</source>
+        <translation>počet úrovní, po které zde Chaikinovy ostré hrany ještě přetrvají: %1; síť by měla více než %2 stěn (použijte rovnoměrnou metodu ostrých hran)</translation>
+    </message>
+    <message>
+        <source>the semi-sharp features last %1 levels; the mesh would have more than %2 faces before its limit positions can be taken</source>
+        <translation>počet úrovní, po které přetrvají poloostré prvky: %1; než by bylo možné určit limitní polohy, měla by síť více než %2 stěn</translation>
+    </message>
+    <message>
+        <source>pairs of vertices and one sharpness, or one per pair</source>
+        <translation>dvojice vrcholů a jednu ostrost, nebo jednu ostrost pro každou dvojici</translation>
+    </message>
+    <message>
+        <source>vertices and one sharpness, or one per vertex</source>
+        <translation>vrcholy a jednu ostrost, nebo jednu ostrost pro každý vrchol</translation>
+    </message>
+    <message>
+        <source>the faces it makes holes</source>
+        <translation>stěny, z nichž udělá díry</translation>
+    </message>
+    <message>
+        <source>one whole number: 0 none, 1 edge and corner, 2 edge only</source>
+        <translation>jedno celé číslo: 0 žádná, 1 hrany a rohy, 2 jen hrany</translation>
+    </message>
+    <message>
+        <source>one word: normal or chaikin</source>
+        <translation>jedno slovo: normal nebo chaikin</translation>
+    </message>
+    <message>
+        <source>one word: catmark or smooth</source>
+        <translation>jedno slovo: catmark nebo smooth</translation>
     </message>
 </context>
 <context>

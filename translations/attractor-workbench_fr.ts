@@ -6374,6 +6374,110 @@ Schéma de subdivision&#xa0;:</translation>
         <source>Pieces coloured</source>
         <translation>Coloration des morceaux</translation>
     </message>
+    <message>
+        <source>expected an array, each entry %1</source>
+        <translation>tableau attendu, chaque entrée étant %1</translation>
+    </message>
+    <message>
+        <source>expected %1</source>
+        <translation>attendu : %1</translation>
+    </message>
+    <message>
+        <source>vertex and face numbers are whole numbers (0-based)</source>
+        <translation>les numéros de sommets et de faces sont des entiers (numérotés à partir de 0)</translation>
+    </message>
+    <message>
+        <source>a sharpness is a number of 0 or more (10 or more: infinitely sharp)</source>
+        <translation>une netteté est un nombre positif ou nul (10 ou plus : infiniment vive)</translation>
+    </message>
+    <message>
+        <source>a crease: [first vertex, second vertex, sharpness]</source>
+        <translation>une arête vive sous la forme [premier sommet, second sommet, netteté]</translation>
+    </message>
+    <message>
+        <source>Creases</source>
+        <translation>Arêtes vives</translation>
+    </message>
+    <message>
+        <source>Sharp features</source>
+        <translation>Éléments vifs</translation>
+    </message>
+    <message>
+        <source>Sharp edges as [first vertex, second vertex, sharpness]: sharp for that many levels (10 or more: for ever), as OpenSubdiv&apos;s creases</source>
+        <translation>Arêtes vives sous la forme [premier sommet, second sommet, netteté] : vives pendant autant de niveaux (10 ou plus : pour toujours), comme les arêtes vives (creases) d’OpenSubdiv</translation>
+    </message>
+    <message>
+        <source>a corner: [vertex, sharpness]</source>
+        <translation>un coin sous la forme [sommet, netteté]</translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation>Coins</translation>
+    </message>
+    <message>
+        <source>Sharp vertices as [vertex, sharpness]: the surface passes through them while the sharpness lasts</source>
+        <translation>Sommets vifs sous la forme [sommet, netteté] : la surface passe par ces sommets tant que dure leur netteté</translation>
+    </message>
+    <message>
+        <source>a face number (0-based)</source>
+        <translation>un numéro de face (numéroté à partir de 0)</translation>
+    </message>
+    <message>
+        <source>Holes</source>
+        <translation>Trous</translation>
+    </message>
+    <message>
+        <source>Faces (0-based) left out of the surface; they still shape their neighbours</source>
+        <translation>Faces (numérotées à partir de 0) exclues de la surface ; elles influent toujours sur la forme de leurs voisines</translation>
+    </message>
+    <message>
+        <source>None (faces at the boundary are left out)</source>
+        <translation>Aucun (les faces du bord sont omises)</translation>
+    </message>
+    <message>
+        <source>Edges</source>
+        <translation>Arêtes</translation>
+    </message>
+    <message>
+        <source>Edges and corners</source>
+        <translation>Arêtes et coins</translation>
+    </message>
+    <message>
+        <source>Boundary</source>
+        <translation>Bord</translation>
+    </message>
+    <message>
+        <source>How the boundary is interpolated (OpenSubdiv&apos;s VtxBoundaryInterpolation): with corners, a vertex of one face is a corner of the surface</source>
+        <translation>Mode d’interpolation du bord (VtxBoundaryInterpolation d’OpenSubdiv) : avec les coins, un sommet qui n’appartient qu’à une seule face devient un coin de la surface</translation>
+    </message>
+    <message>
+        <source>Uniform</source>
+        <translation>Uniforme</translation>
+    </message>
+    <message>
+        <source>Chaikin</source>
+        <translation>Chaikin</translation>
+    </message>
+    <message>
+        <source>Crease method</source>
+        <translation>Méthode des arêtes vives</translation>
+    </message>
+    <message>
+        <source>How a semi-sharp crease decays: by 1 per level, or Chaikin&apos;s average with its neighbours</source>
+        <translation>Décroissance d’une arête semi-vive : de 1 par niveau, ou par la moyenne de Chaikin avec ses voisines</translation>
+    </message>
+    <message>
+        <source>Smooth triangles</source>
+        <translation>Triangles lisses</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>Triangles</translation>
+    </message>
+    <message>
+        <source>Catmull–Clark&apos;s edge points next to triangles: as for any face, or OpenSubdiv&apos;s smoother weights</source>
+        <translation>Points d’arête de Catmull–Clark voisins de triangles : comme pour toute autre face, ou avec les poids plus lisses d’OpenSubdiv</translation>
+    </message>
 </context>
 <context>
     <name>awb::SubdivisionSurfaceItem</name>
@@ -6689,7 +6793,7 @@ Schéma de subdivision&#xa0;:</translation>
     </message>
     <message>
         <source>valence %1, %2, %3</source>
-        <translation>valence %1, %2, %3</translation>
+        <translation type="vanished">valence %1, %2, %3</translation>
     </message>
     <message>
         <source>on the boundary</source>
@@ -6717,7 +6821,7 @@ Schéma de subdivision&#xa0;:</translation>
     </message>
     <message>
         <source>Reif&apos;s criterion is decided here for interior vertices only: a boundary vertex follows the crease rules, whose analysis needs the boundary&apos;s own characteristic map.</source>
-        <translation>Le critère de Reif n’est évalué ici que pour les sommets intérieurs&#xa0;: un sommet de bord suit les règles d’arête vive, dont l’analyse demande l’application caractéristique propre au bord.</translation>
+        <translation type="vanished">Le critère de Reif n’est évalué ici que pour les sommets intérieurs&#xa0;: un sommet de bord suit les règles d’arête vive, dont l’analyse demande l’application caractéristique propre au bord.</translation>
     </message>
     <message>
         <source>spectral condition 1 &gt; λ₂ = λ₃ &gt; |λ₄|, λ real</source>
@@ -6774,6 +6878,30 @@ Schéma de subdivision&#xa0;:</translation>
     <message>
         <source>Limit position (%1, %2, %3).</source>
         <translation>Position limite (%1, %2, %3).</translation>
+    </message>
+    <message>
+        <source>a dart (one sharp edge ends here)</source>
+        <translation>un dard (une seule arête vive s’y termine)</translation>
+    </message>
+    <message>
+        <source>on a crease</source>
+        <translation>sur une arête vive</translation>
+    </message>
+    <message>
+        <source>a corner</source>
+        <translation>un coin</translation>
+    </message>
+    <message>
+        <source>smooth</source>
+        <translation>lisse</translation>
+    </message>
+    <message>
+        <source>valence %1, %2, %3, %4</source>
+        <translation>valence %1, %2, %3, %4</translation>
+    </message>
+    <message>
+        <source>Reif&apos;s criterion is decided here for smooth interior vertices only: a boundary vertex or a sharp feature follows the crease rules, whose analysis needs the half-ring&apos;s own characteristic map.</source>
+        <translation>Le critère de Reif n’est évalué ici que pour les sommets intérieurs lisses : un sommet de bord ou un élément vif suit les règles d’arête vive, dont l’analyse demande l’application caractéristique propre au demi-anneau.</translation>
     </message>
 </context>
 <context>
@@ -8301,6 +8429,12 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
         <source>attractor-cli: warning: %1</source>
         <translation>attractor-cli&#xa0;: avertissement&#xa0;: %1</translation>
     </message>
+    <message>
+        <source>  sharp features: %1 creases, %2 corners, %3 holes; boundary %4, crease method %5, triangles %6
+</source>
+        <translation>  éléments vifs : arêtes vives %1, coins %2, trous %3 ; bord %4, méthode des arêtes vives %5, triangles %6
+</translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>
@@ -9417,11 +9551,11 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     </message>
     <message>
         <source>%1, line %2: the OpenSubdiv tag &apos;t %3&apos; is not applied: this version subdivides without creases, corners, holes or boundary rules, so the surface differs from OpenSubdiv&apos;s where it acts</source>
-        <translation>%1, ligne %2&#xa0;: l&apos;étiquette OpenSubdiv &apos;t %3&apos; n&apos;est pas appliquée&#xa0;: cette version subdivise sans arêtes vives, coins, trous ni règles de bord, donc la surface diffère de celle d&apos;OpenSubdiv là où elle agit</translation>
+        <translation type="vanished">%1, ligne %2&#xa0;: l&apos;étiquette OpenSubdiv &apos;t %3&apos; n&apos;est pas appliquée&#xa0;: cette version subdivise sans arêtes vives, coins, trous ni règles de bord, donc la surface diffère de celle d&apos;OpenSubdiv là où elle agit</translation>
     </message>
     <message>
         <source>%1, lines %2 to %3: %4 OpenSubdiv tags &apos;t %5&apos; are not applied: this version subdivides without creases, corners, holes or boundary rules, so the surface differs from OpenSubdiv&apos;s where they act</source>
-        <translation>%1, lignes %2 à %3&#xa0;: %4 étiquettes OpenSubdiv &apos;t %5&apos; ne sont pas appliquées&#xa0;: cette version subdivise sans arêtes vives, coins, trous ni règles de bord, donc la surface diffère de celle d&apos;OpenSubdiv là où elles agissent</translation>
+        <translation type="vanished">%1, lignes %2 à %3&#xa0;: %4 étiquettes OpenSubdiv &apos;t %5&apos; ne sont pas appliquées&#xa0;: cette version subdivise sans arêtes vives, coins, trous ni règles de bord, donc la surface diffère de celle d&apos;OpenSubdiv là où elles agissent</translation>
     </message>
     <message>
         <source>%1: UTF-16 text of an odd number of bytes</source>
@@ -9450,6 +9584,94 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     <message>
         <source>the ring analysis takes interior valences 3 to 64; this vertex has %1</source>
         <translation>l&apos;analyse de l&apos;anneau prend les valences intérieures de 3 à 64&#xa0;; ce sommet a %1</translation>
+    </message>
+    <message>
+        <source>%1, lines %2 to %3: %4 more OpenSubdiv tag lines of other names are not applied either</source>
+        <translation>%1, lignes %2 à %3&#xa0;: %4 autres lignes d&apos;étiquettes OpenSubdiv d&apos;autres noms ne sont pas appliquées non plus</translation>
+    </message>
+    <message>
+        <source>%1: %2 header lines that are not PLY 1.0&apos;s, the first &apos;%3&apos;, are skipped</source>
+        <translation>%1&#xa0;: %2 lignes d&apos;en-tête qui ne sont pas du PLY 1.0, la première &apos;%3&apos;, sont ignorées</translation>
+    </message>
+    <message>
+        <source>the crease on vertices %1 and %2 has sharpness %3; a sharpness is a number of 0 or more</source>
+        <translation>l’arête vive sur les sommets %1 et %2 a une netteté de %3 ; une netteté est un nombre positif ou nul</translation>
+    </message>
+    <message>
+        <source>a crease names vertices %1 and %2, but no edge joins them</source>
+        <translation>une arête vive désigne les sommets %1 et %2, mais aucune arête ne les relie</translation>
+    </message>
+    <message>
+        <source>a corner names vertex %1, but the mesh has %2 vertices (0 to %3)</source>
+        <translation>un coin désigne le sommet %1, mais le maillage a %2 sommets (de 0 à %3)</translation>
+    </message>
+    <message>
+        <source>the corner at vertex %1 has sharpness %2; a sharpness is a number of 0 or more</source>
+        <translation>le coin au sommet %1 a une netteté de %2 ; une netteté est un nombre positif ou nul</translation>
+    </message>
+    <message>
+        <source>a hole names face %1, but the mesh has %2 faces (0 to %3)</source>
+        <translation>un trou désigne la face %1, mais le maillage a %2 faces (de 0 à %3)</translation>
+    </message>
+    <message>
+        <source>%1, line %2: the OpenSubdiv tag &apos;t %3&apos; is not applied (this version applies crease, corner, hole, interpolateboundary, creasemethod and smoothtriangles), so the surface differs from OpenSubdiv&apos;s where it acts</source>
+        <translation>%1, ligne %2 : la balise OpenSubdiv &apos;t %3&apos; n’est pas appliquée (cette version applique crease, corner, hole, interpolateboundary, creasemethod et smoothtriangles) ; la surface diffère donc de celle d’OpenSubdiv là où cette balise agit</translation>
+    </message>
+    <message>
+        <source>%1, lines %2 to %3: %4 OpenSubdiv tags &apos;t %5&apos; are not applied (this version applies crease, corner, hole, interpolateboundary, creasemethod and smoothtriangles), so the surface differs from OpenSubdiv&apos;s where they act</source>
+        <translation>%1, lignes %2 à %3 : %4 balises OpenSubdiv &apos;t %5&apos; ne sont pas appliquées (cette version applique crease, corner, hole, interpolateboundary, creasemethod et smoothtriangles) ; la surface diffère donc de celle d’OpenSubdiv là où ces balises agissent</translation>
+    </message>
+    <message>
+        <source>%1: the tag &apos;t %2&apos; needs its counts as ints/floats/strings (like 2/1/0), got &apos;%3&apos;</source>
+        <translation>%1 : la balise &apos;t %2&apos; demande le nombre de ses valeurs sous la forme ints/floats/strings (par exemple 2/1/0), reçu « %3 »</translation>
+    </message>
+    <message>
+        <source>%1: the tag &apos;t %2&apos; announces %3 values but has %4</source>
+        <translation>%1 : la balise &apos;t %2&apos; annonce %3 valeurs mais en contient %4</translation>
+    </message>
+    <message>
+        <source>%1: the tag &apos;t %2&apos; needs %3</source>
+        <translation>%1 : la balise &apos;t %2&apos; demande %3</translation>
+    </message>
+    <message>
+        <source>%1: the tag &apos;t %2&apos; names vertex %3, but the file has %4 vertices (tags count from 0: 0 to %5)</source>
+        <translation>%1 : la balise &apos;t %2&apos; désigne le sommet %3, mais le fichier a %4 sommets (les balises numérotent à partir de 0 : de 0 à %5)</translation>
+    </message>
+    <message>
+        <source>%1: the hole names face %2, but the file has %3 faces (0 to %4)</source>
+        <translation>%1 : le trou désigne la face %2, mais le fichier a %3 faces (de 0 à %4)</translation>
+    </message>
+    <message>
+        <source>Chaikin&apos;s creases last %1 more levels here; the mesh would have more than %2 faces (use the uniform crease method)</source>
+        <translation>les arêtes vives de Chaikin durent ici encore %1 niveaux ; le maillage aurait plus de %2 faces (utilisez la méthode uniforme des arêtes vives)</translation>
+    </message>
+    <message>
+        <source>the semi-sharp features last %1 levels; the mesh would have more than %2 faces before its limit positions can be taken</source>
+        <translation>les éléments semi-vifs durent %1 niveaux ; le maillage aurait plus de %2 faces avant que ses positions limites puissent être calculées</translation>
+    </message>
+    <message>
+        <source>pairs of vertices and one sharpness, or one per pair</source>
+        <translation>des paires de sommets et une netteté, ou une netteté par paire</translation>
+    </message>
+    <message>
+        <source>vertices and one sharpness, or one per vertex</source>
+        <translation>des sommets et une netteté, ou une netteté par sommet</translation>
+    </message>
+    <message>
+        <source>the faces it makes holes</source>
+        <translation>les faces dont elle fait des trous</translation>
+    </message>
+    <message>
+        <source>one whole number: 0 none, 1 edge and corner, 2 edge only</source>
+        <translation>un nombre entier : 0 aucune, 1 arêtes et coins, 2 arêtes seulement</translation>
+    </message>
+    <message>
+        <source>one word: normal or chaikin</source>
+        <translation>un mot : normal ou chaikin</translation>
+    </message>
+    <message>
+        <source>one word: catmark or smooth</source>
+        <translation>un mot : catmark ou smooth</translation>
     </message>
 </context>
 <context>

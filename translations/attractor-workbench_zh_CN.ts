@@ -6363,6 +6363,110 @@ Subdivision scheme:</source>
         <source>Pieces coloured</source>
         <translation>曲面片着色</translation>
     </message>
+    <message>
+        <source>expected an array, each entry %1</source>
+        <translation>应为数组，每个条目为%1</translation>
+    </message>
+    <message>
+        <source>expected %1</source>
+        <translation>应为%1</translation>
+    </message>
+    <message>
+        <source>vertex and face numbers are whole numbers (0-based)</source>
+        <translation>顶点和面的编号必须是整数（从 0 开始）</translation>
+    </message>
+    <message>
+        <source>a sharpness is a number of 0 or more (10 or more: infinitely sharp)</source>
+        <translation>锐度是大于或等于 0 的数（10 及以上：无限锐利）</translation>
+    </message>
+    <message>
+        <source>a crease: [first vertex, second vertex, sharpness]</source>
+        <translation>折痕，格式为 [第一个顶点, 第二个顶点, 锐度]</translation>
+    </message>
+    <message>
+        <source>Creases</source>
+        <translation>折痕</translation>
+    </message>
+    <message>
+        <source>Sharp features</source>
+        <translation>尖锐特征</translation>
+    </message>
+    <message>
+        <source>Sharp edges as [first vertex, second vertex, sharpness]: sharp for that many levels (10 or more: for ever), as OpenSubdiv&apos;s creases</source>
+        <translation>尖锐边，格式为 [第一个顶点, 第二个顶点, 锐度]：在相应层数内保持尖锐（10 及以上：始终尖锐），与 OpenSubdiv 的折痕（crease）相同</translation>
+    </message>
+    <message>
+        <source>a corner: [vertex, sharpness]</source>
+        <translation>角点，格式为 [顶点, 锐度]</translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation>角点</translation>
+    </message>
+    <message>
+        <source>Sharp vertices as [vertex, sharpness]: the surface passes through them while the sharpness lasts</source>
+        <translation>尖锐顶点，格式为 [顶点, 锐度]：在锐度持续期间，曲面经过这些顶点</translation>
+    </message>
+    <message>
+        <source>a face number (0-based)</source>
+        <translation>面编号（从 0 开始）</translation>
+    </message>
+    <message>
+        <source>Holes</source>
+        <translation>孔洞</translation>
+    </message>
+    <message>
+        <source>Faces (0-based) left out of the surface; they still shape their neighbours</source>
+        <translation>从曲面中略去的面（编号从 0 开始）；它们仍会影响相邻面的形状</translation>
+    </message>
+    <message>
+        <source>None (faces at the boundary are left out)</source>
+        <translation>无（略去边界上的面）</translation>
+    </message>
+    <message>
+        <source>Edges</source>
+        <translation>边</translation>
+    </message>
+    <message>
+        <source>Edges and corners</source>
+        <translation>边和角点</translation>
+    </message>
+    <message>
+        <source>Boundary</source>
+        <translation>边界</translation>
+    </message>
+    <message>
+        <source>How the boundary is interpolated (OpenSubdiv&apos;s VtxBoundaryInterpolation): with corners, a vertex of one face is a corner of the surface</source>
+        <translation>边界的插值方式（OpenSubdiv 的 VtxBoundaryInterpolation）：选择含角点时，只属于一个面的顶点成为曲面的角点</translation>
+    </message>
+    <message>
+        <source>Uniform</source>
+        <translation>均匀</translation>
+    </message>
+    <message>
+        <source>Chaikin</source>
+        <translation>Chaikin</translation>
+    </message>
+    <message>
+        <source>Crease method</source>
+        <translation>折痕方法</translation>
+    </message>
+    <message>
+        <source>How a semi-sharp crease decays: by 1 per level, or Chaikin&apos;s average with its neighbours</source>
+        <translation>半锐折痕的锐度如何衰减：每层减 1，或按 Chaikin 方法与相邻折痕取平均</translation>
+    </message>
+    <message>
+        <source>Smooth triangles</source>
+        <translation>平滑三角形</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>三角形</translation>
+    </message>
+    <message>
+        <source>Catmull–Clark&apos;s edge points next to triangles: as for any face, or OpenSubdiv&apos;s smoother weights</source>
+        <translation>Catmull–Clark 中与三角形相邻的边点：与其他任何面相同，或采用 OpenSubdiv 更平滑的权重</translation>
+    </message>
 </context>
 <context>
     <name>awb::SubdivisionSurfaceItem</name>
@@ -6678,7 +6782,7 @@ Subdivision scheme:</source>
     </message>
     <message>
         <source>valence %1, %2, %3</source>
-        <translation>价 %1，%2，%3</translation>
+        <translation type="vanished">价 %1，%2，%3</translation>
     </message>
     <message>
         <source>on the boundary</source>
@@ -6706,7 +6810,7 @@ Subdivision scheme:</source>
     </message>
     <message>
         <source>Reif&apos;s criterion is decided here for interior vertices only: a boundary vertex follows the crease rules, whose analysis needs the boundary&apos;s own characteristic map.</source>
-        <translation>此处仅对内部顶点判定 Reif 判据：边界顶点遵循折痕规则，其分析需要边界自身的特征映射。</translation>
+        <translation type="vanished">此处仅对内部顶点判定 Reif 判据：边界顶点遵循折痕规则，其分析需要边界自身的特征映射。</translation>
     </message>
     <message>
         <source>spectral condition 1 &gt; λ₂ = λ₃ &gt; |λ₄|, λ real</source>
@@ -6763,6 +6867,30 @@ Subdivision scheme:</source>
     <message>
         <source>Limit position (%1, %2, %3).</source>
         <translation>极限位置 (%1, %2, %3)。</translation>
+    </message>
+    <message>
+        <source>a dart (one sharp edge ends here)</source>
+        <translation>飞镖点（一条尖锐边在此终止）</translation>
+    </message>
+    <message>
+        <source>on a crease</source>
+        <translation>位于折痕上</translation>
+    </message>
+    <message>
+        <source>a corner</source>
+        <translation>角点</translation>
+    </message>
+    <message>
+        <source>smooth</source>
+        <translation>光滑</translation>
+    </message>
+    <message>
+        <source>valence %1, %2, %3, %4</source>
+        <translation>价 %1，%2，%3，%4</translation>
+    </message>
+    <message>
+        <source>Reif&apos;s criterion is decided here for smooth interior vertices only: a boundary vertex or a sharp feature follows the crease rules, whose analysis needs the half-ring&apos;s own characteristic map.</source>
+        <translation>此处仅对光滑的内部顶点判定 Reif 判据：边界顶点或尖锐特征遵循折痕规则，其分析需要半环自身的特征映射。</translation>
     </message>
 </context>
 <context>
@@ -8288,6 +8416,12 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
         <source>attractor-cli: warning: %1</source>
         <translation>attractor-cli：警告：%1</translation>
     </message>
+    <message>
+        <source>  sharp features: %1 creases, %2 corners, %3 holes; boundary %4, crease method %5, triangles %6
+</source>
+        <translation>  尖锐特征：%1 条折痕，%2 个角点，%3 个孔洞；边界 %4，折痕方法 %5，三角形 %6
+</translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>
@@ -9404,11 +9538,11 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>%1, line %2: the OpenSubdiv tag &apos;t %3&apos; is not applied: this version subdivides without creases, corners, holes or boundary rules, so the surface differs from OpenSubdiv&apos;s where it acts</source>
-        <translation>%1，第 %2 行：OpenSubdiv 标签 &apos;t %3&apos; 未被应用：此版本细分时不考虑折痕、角点、孔洞和边界规则，因此在其作用处曲面与 OpenSubdiv 的不同</translation>
+        <translation type="vanished">%1，第 %2 行：OpenSubdiv 标签 &apos;t %3&apos; 未被应用：此版本细分时不考虑折痕、角点、孔洞和边界规则，因此在其作用处曲面与 OpenSubdiv 的不同</translation>
     </message>
     <message>
         <source>%1, lines %2 to %3: %4 OpenSubdiv tags &apos;t %5&apos; are not applied: this version subdivides without creases, corners, holes or boundary rules, so the surface differs from OpenSubdiv&apos;s where they act</source>
-        <translation>%1，第 %2 至 %3 行：%4 个 OpenSubdiv 标签 &apos;t %5&apos; 未被应用：此版本细分时不考虑折痕、角点、孔洞和边界规则，因此在其作用处曲面与 OpenSubdiv 的不同</translation>
+        <translation type="vanished">%1，第 %2 至 %3 行：%4 个 OpenSubdiv 标签 &apos;t %5&apos; 未被应用：此版本细分时不考虑折痕、角点、孔洞和边界规则，因此在其作用处曲面与 OpenSubdiv 的不同</translation>
     </message>
     <message>
         <source>%1: UTF-16 text of an odd number of bytes</source>
@@ -9437,6 +9571,94 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>the ring analysis takes interior valences 3 to 64; this vertex has %1</source>
         <translation>环分析只接受 3 到 64 的内部价数；此顶点的价数为 %1</translation>
+    </message>
+    <message>
+        <source>%1, lines %2 to %3: %4 more OpenSubdiv tag lines of other names are not applied either</source>
+        <translation>%1，第 %2 至 %3 行：另有 %4 行其他名称的 OpenSubdiv 标签同样未被应用</translation>
+    </message>
+    <message>
+        <source>%1: %2 header lines that are not PLY 1.0&apos;s, the first &apos;%3&apos;, are skipped</source>
+        <translation>%1：已跳过 %2 行不属于 PLY 1.0 的头行，第一行为 &apos;%3&apos;</translation>
+    </message>
+    <message>
+        <source>the crease on vertices %1 and %2 has sharpness %3; a sharpness is a number of 0 or more</source>
+        <translation>顶点 %1 和 %2 上的折痕锐度为 %3；锐度应为大于或等于 0 的数</translation>
+    </message>
+    <message>
+        <source>a crease names vertices %1 and %2, but no edge joins them</source>
+        <translation>折痕指定了顶点 %1 和 %2，但没有边连接这两个顶点</translation>
+    </message>
+    <message>
+        <source>a corner names vertex %1, but the mesh has %2 vertices (0 to %3)</source>
+        <translation>角点指定了顶点 %1，但网格共有 %2 个顶点（0 到 %3）</translation>
+    </message>
+    <message>
+        <source>the corner at vertex %1 has sharpness %2; a sharpness is a number of 0 or more</source>
+        <translation>顶点 %1 处的角点锐度为 %2；锐度应为大于或等于 0 的数</translation>
+    </message>
+    <message>
+        <source>a hole names face %1, but the mesh has %2 faces (0 to %3)</source>
+        <translation>孔洞指定了面 %1，但网格共有 %2 个面（0 到 %3）</translation>
+    </message>
+    <message>
+        <source>%1, line %2: the OpenSubdiv tag &apos;t %3&apos; is not applied (this version applies crease, corner, hole, interpolateboundary, creasemethod and smoothtriangles), so the surface differs from OpenSubdiv&apos;s where it acts</source>
+        <translation>%1，第 %2 行：未应用 OpenSubdiv 标签 &apos;t %3&apos;（此版本应用 crease、corner、hole、interpolateboundary、creasemethod 和 smoothtriangles），因此在该标签起作用之处，曲面与 OpenSubdiv 的结果不同</translation>
+    </message>
+    <message>
+        <source>%1, lines %2 to %3: %4 OpenSubdiv tags &apos;t %5&apos; are not applied (this version applies crease, corner, hole, interpolateboundary, creasemethod and smoothtriangles), so the surface differs from OpenSubdiv&apos;s where they act</source>
+        <translation>%1，第 %2 至 %3 行：未应用 %4 个 OpenSubdiv 标签 &apos;t %5&apos;（此版本应用 crease、corner、hole、interpolateboundary、creasemethod 和 smoothtriangles），因此在这些标签起作用之处，曲面与 OpenSubdiv 的结果不同</translation>
+    </message>
+    <message>
+        <source>%1: the tag &apos;t %2&apos; needs its counts as ints/floats/strings (like 2/1/0), got &apos;%3&apos;</source>
+        <translation>%1：标签 &apos;t %2&apos; 的计数应写成 ints/floats/strings 的形式（如 2/1/0），实际为“%3”</translation>
+    </message>
+    <message>
+        <source>%1: the tag &apos;t %2&apos; announces %3 values but has %4</source>
+        <translation>%1：标签 &apos;t %2&apos; 声明了 %3 个值，但实际有 %4 个</translation>
+    </message>
+    <message>
+        <source>%1: the tag &apos;t %2&apos; needs %3</source>
+        <translation>%1：标签 &apos;t %2&apos; 需要%3</translation>
+    </message>
+    <message>
+        <source>%1: the tag &apos;t %2&apos; names vertex %3, but the file has %4 vertices (tags count from 0: 0 to %5)</source>
+        <translation>%1：标签 &apos;t %2&apos; 指定了顶点 %3，但文件共有 %4 个顶点（标签从 0 开始计数：0 到 %5）</translation>
+    </message>
+    <message>
+        <source>%1: the hole names face %2, but the file has %3 faces (0 to %4)</source>
+        <translation>%1：孔洞指定了面 %2，但文件共有 %3 个面（0 到 %4）</translation>
+    </message>
+    <message>
+        <source>Chaikin&apos;s creases last %1 more levels here; the mesh would have more than %2 faces (use the uniform crease method)</source>
+        <translation>此处 Chaikin 折痕还将持续 %1 层；网格将超过 %2 个面（请使用均匀折痕方法）</translation>
+    </message>
+    <message>
+        <source>the semi-sharp features last %1 levels; the mesh would have more than %2 faces before its limit positions can be taken</source>
+        <translation>半锐特征持续 %1 层；在能够求得极限位置之前，网格将超过 %2 个面</translation>
+    </message>
+    <message>
+        <source>pairs of vertices and one sharpness, or one per pair</source>
+        <translation>若干顶点对及一个锐度，或每对顶点各一个锐度</translation>
+    </message>
+    <message>
+        <source>vertices and one sharpness, or one per vertex</source>
+        <translation>若干顶点及一个锐度，或每个顶点各一个锐度</translation>
+    </message>
+    <message>
+        <source>the faces it makes holes</source>
+        <translation>要设为孔洞的面</translation>
+    </message>
+    <message>
+        <source>one whole number: 0 none, 1 edge and corner, 2 edge only</source>
+        <translation>一个整数：0 表示无，1 表示边和角点，2 表示仅边</translation>
+    </message>
+    <message>
+        <source>one word: normal or chaikin</source>
+        <translation>一个单词：normal 或 chaikin</translation>
+    </message>
+    <message>
+        <source>one word: catmark or smooth</source>
+        <translation>一个单词：catmark 或 smooth</translation>
     </message>
 </context>
 <context>

@@ -65,6 +65,15 @@ int importMesh(const QStringList &args)
                      .arg(mesh.faces.size())
                      .arg(extraordinary.size())
                      .arg(MeshInputs::schemeNames().at(int(scheme)));
+        if (!mesh.tags.empty())
+            out() << CliTr::tr("  sharp features: %1 creases, %2 corners, %3 holes; boundary "
+                               "%4, crease method %5, triangles %6\n")
+                         .arg(mesh.tags.edges.size())
+                         .arg(mesh.tags.vertices.size())
+                         .arg(mesh.tags.holes.size())
+                         .arg(QString::fromStdString(toString(mesh.tags.options.boundary)),
+                              QString::fromStdString(toString(mesh.tags.options.creaseMethod)),
+                              QString::fromStdString(toString(mesh.tags.options.triangles)));
         if (!parser.isSet("scheme") && suggestedScheme(mesh) != scheme)
             err() << CliTr::tr("attractor-cli: note: all %1 faces are triangles; --scheme loop "
                                "keeps them triangles (Catmull-Clark makes each one three quads "

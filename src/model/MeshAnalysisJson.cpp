@@ -34,6 +34,7 @@ QJsonObject vertexJson(const ExtraordinaryVertex &e, MeshScheme scheme)
         o["face"] = e.face;
     o["valence"] = e.valence;
     o["boundary"] = e.boundary;
+    o["rule"] = QString::fromStdString(e.rule);
     QJsonArray ev;
     for (const Complex &z : e.eigenvalues)
         ev.append(QJsonArray{z.real(), z.imag()});
@@ -43,9 +44,9 @@ QJsonObject vertexJson(const ExtraordinaryVertex &e, MeshScheme scheme)
     o["c1"] = e.c1 ? QJsonValue(*e.c1) : QJsonValue(QJsonValue::Null);
     o["curvature"] = e.curvature.empty() ? QJsonValue(QJsonValue::Null)
                                          : QJsonValue(QString::fromStdString(e.curvature));
-    // Inside: the ring of every point within two faces; on the boundary: the vertex piece's
-    // net (its S_0), and the verdicts are not decided there.
-    if (!e.boundary && ringAnalysable(e.valence))
+    // Smooth inside: the ring of every point within two faces; on the boundary and at sharp
+    // features: the vertex piece's net (its S_0), and the verdicts are not decided there.
+    if (e.smoothInterior() && ringAnalysable(e.valence))
         o["characteristic_map"] = characteristicJson(*sharedVertexSpectrum(scheme, e.valence));
     if (!e.note.empty())
         o["note"] = QString::fromStdString(e.note);
@@ -71,6 +72,7 @@ QJsonObject piecesJson(const MeshPieces &pieces)
                       {"roots", type.roots}};
         if (vertex) {
             o["valence"] = type.valence;
+            o["rule"] = QString::fromStdString(toString(type.rule));
             o["settles_in"] = settledType(pieces, int(t));
         }
         QJsonArray maps;

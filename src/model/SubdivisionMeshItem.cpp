@@ -24,7 +24,7 @@ const QStringList &MeshInputs::schemeNames()
     return names;
 }
 
-Mesh MeshInputs::mesh() const { return {toMatrix(vertices, 3), faces}; }
+Mesh MeshInputs::mesh() const { return {toMatrix(vertices, 3), faces, tags}; }
 
 MaybeProblem MeshInputs::check() const
 {
@@ -41,10 +41,65 @@ MaybeProblem MeshInputs::check() const
     } catch (const InputError &e) {
         const QString message = QString::fromStdString(e.what());
         const bool aboutVertices = message.startsWith("vertex") && message.contains("finite");
-        return Problem{aboutVertices || vertices.empty() ? "vertices" : "faces", message};
+        // The tags' problems name their field (Mesh.cpp's applyTags words).
+        const QString field = message.contains("a crease") || message.contains("the crease")
+                                  ? "creases"
+                              : message.contains("a corner") || message.contains("the corner")
+                                  ? "corners"
+                              : message.contains("a hole") ? "holes"
+                              : aboutVertices || vertices.empty() ? "vertices"
+                                                                  : "faces";
+        return Problem{field, message};
     }
     return std::nullopt;
 }
+
+// ---- the sharp features' file form -----------------------------------------------------------
+
+namespace {
+
+// An array of rows of `width` numbers (width 1: plain numbers).
+QList<QList<double>> tagRows(const QJsonValue &v, const QString &where, int width,
+                             const QString &what)
+{
+    if (!v.isArray())
+        throw LoadError{where, SubdivisionMeshItem::tr("expected an array, each entry %1")
+                                   .arg(what)};
+    QList<QList<double>> rows;
+    const QJsonArray array = v.toArray();
+    for (qsizetype k = 0; k < array.size(); ++k) {
+        const QString at = where + QStringLiteral("[%1]").arg(k + 1);
+        QList<double> row;
+        if (width == 1) {
+            row.append(FieldReader::toNumber(array[k], at));
+        } else {
+            if (!array[k].isArray() || array[k].toArray().size() != width)
+                throw LoadError{at, SubdivisionMeshItem::tr("expected %1").arg(what)};
+            for (const QJsonValue &x : array[k].toArray())
+                row.append(FieldReader::toNumber(x, at));
+        }
+        rows.append(row);
+    }
+    return rows;
+}
+
+int wholeIn(double x, const QString &where)
+{
+    if (x != std::floor(x) || std::abs(x) > 1e9)
+        throw LoadError{where, SubdivisionMeshItem::tr("vertex and face numbers are whole "
+                                                       "numbers (0-based)")};
+    return int(x);
+}
+
+float sharpnessIn(double x, const QString &where)
+{
+    if (!(x >= 0.0) || !std::isfinite(x))
+        throw LoadError{where, SubdivisionMeshItem::tr("a sharpness is a number of 0 or more "
+                                                       "(10 or more: infinitely sharp)")};
+    return float(x);
+}
+
+} // namespace
 
 // ---- SubdivisionMeshItem ----------------------------------------------------------------------
 
@@ -82,6 +137,7 @@ bool SubdivisionMeshItem::setMesh(const Mesh &mesh, MeshScheme scheme, QString *
     next.scheme = scheme;
     next.vertices = toPointList(mesh.vertices);
     next.faces = mesh.faces;
+    next.tags = mesh.tags;
     return setInputs(next, error);
 }
 
@@ -133,6 +189,7 @@ std::string SubdivisionMeshItem::limitObj(int rounds) const
                              .toStdString());
     Mesh refined = refineMesh(mesh, m_inputs.scheme, rounds);
     refined.vertices = limitPositions(refined, m_inputs.scheme);
+    refined.tags = {};  // the points are on the limit surface: not a control mesh to crease
     std::ostringstream text;
     writeObj(text, refined,
              tr("Attractor Workbench: item %1, %2 after %3 steps, every vertex at its limit "
@@ -163,12 +220,14 @@ DerivedIfs SubdivisionMeshItem::computeIfs() const
     std::shared_ptr<const MeshPieces> pieces;
     {
         std::lock_guard<std::mutex> lock(m_piecesMutex);
-        if (!m_pieces || m_piecesFaces != m_inputs.faces || m_piecesScheme != m_inputs.scheme) {
+        if (!m_pieces || m_piecesFaces != m_inputs.faces || m_piecesScheme != m_inputs.scheme
+            || !(m_piecesTags == m_inputs.tags)) {
             m_pieces.reset();
             m_pieces = std::make_shared<const MeshPieces>(
                 buildMeshPieces(m_inputs.mesh(), m_inputs.scheme));
             m_piecesFaces = m_inputs.faces;
             m_piecesScheme = m_inputs.scheme;
+            m_piecesTags = m_inputs.tags;
         }
         pieces = m_pieces;
     }
@@ -297,6 +356,101 @@ const PropertyTable &SubdivisionMeshItem::declaration()
             .tip(QT_TR_NOOP("Each face as the loop of its vertex numbers (0-based)"))
             .required(QT_TR_NOOP("expected an array of faces, each an array of vertex "
                                  "numbers"));
+        // Sharp features (issue 44), each written only when the mesh has it.
+        inputs
+            .structured(
+                "creases", QStringLiteral("creases"),
+                [](const I &, const MeshInputs &m) {
+                    QJsonArray out;
+                    for (const SharpEdge &e : m.tags.edges)
+                        out.append(QJsonArray{e.a, e.b, double(e.sharpness)});
+                    return QJsonValue(out);
+                },
+                [](const I &, MeshInputs &m, const QJsonValue &v, const QString &where) {
+                    m.tags.edges.clear();
+                    for (const QList<double> &row : tagRows(v, where, 3, tr("a crease: [first "
+                                                                             "vertex, second "
+                                                                             "vertex, sharpness]")))
+                        m.tags.edges.push_back({wholeIn(row[0], where), wholeIn(row[1], where),
+                                                sharpnessIn(row[2], where)});
+                })
+            .label(QT_TR_NOOP("Creases"))
+            .group(QT_TR_NOOP("Sharp features"))
+            .tip(QT_TR_NOOP("Sharp edges as [first vertex, second vertex, sharpness]: sharp for "
+                            "that many levels (10 or more: for ever), as OpenSubdiv's creases"))
+            .omitWhenDefault();
+        inputs
+            .structured(
+                "corners", QStringLiteral("corners"),
+                [](const I &, const MeshInputs &m) {
+                    QJsonArray out;
+                    for (const SharpVertex &c : m.tags.vertices)
+                        out.append(QJsonArray{c.vertex, double(c.sharpness)});
+                    return QJsonValue(out);
+                },
+                [](const I &, MeshInputs &m, const QJsonValue &v, const QString &where) {
+                    m.tags.vertices.clear();
+                    for (const QList<double> &row :
+                         tagRows(v, where, 2, tr("a corner: [vertex, sharpness]")))
+                        m.tags.vertices.push_back(
+                            {wholeIn(row[0], where), sharpnessIn(row[1], where)});
+                })
+            .label(QT_TR_NOOP("Corners"))
+            .group(QT_TR_NOOP("Sharp features"))
+            .tip(QT_TR_NOOP("Sharp vertices as [vertex, sharpness]: the surface passes through "
+                            "them while the sharpness lasts"))
+            .omitWhenDefault();
+        inputs
+            .structured(
+                "holes", QStringLiteral("numbers"),
+                [](const I &, const MeshInputs &m) {
+                    QJsonArray out;
+                    for (int f : m.tags.holes)
+                        out.append(f);
+                    return QJsonValue(out);
+                },
+                [](const I &, MeshInputs &m, const QJsonValue &v, const QString &where) {
+                    m.tags.holes.clear();
+                    for (const QList<double> &row :
+                         tagRows(v, where, 1, tr("a face number (0-based)")))
+                        m.tags.holes.push_back(wholeIn(row[0], where));
+                })
+            .label(QT_TR_NOOP("Holes"))
+            .group(QT_TR_NOOP("Sharp features"))
+            .tip(QT_TR_NOOP("Faces (0-based) left out of the surface; they still shape their "
+                            "neighbours"))
+            .omitWhenDefault();
+        inputs
+            .choice(
+                "boundary", [](auto &m) -> auto & { return m.tags.options.boundary; },
+                {"none", "edge-only", "edge-and-corner"},
+                {QT_TR_NOOP("None (faces at the boundary are left out)"), QT_TR_NOOP("Edges"),
+                 QT_TR_NOOP("Edges and corners")})
+            .label(QT_TR_NOOP("Boundary"))
+            .group(QT_TR_NOOP("Sharp features"))
+            .tip(QT_TR_NOOP("How the boundary is interpolated (OpenSubdiv's "
+                            "VtxBoundaryInterpolation): with corners, a vertex of one face is a "
+                            "corner of the surface"))
+            .omitWhenDefault();
+        inputs
+            .choice(
+                "crease-method", [](auto &m) -> auto & { return m.tags.options.creaseMethod; },
+                {"uniform", "chaikin"}, {QT_TR_NOOP("Uniform"), QT_TR_NOOP("Chaikin")})
+            .label(QT_TR_NOOP("Crease method"))
+            .group(QT_TR_NOOP("Sharp features"))
+            .tip(QT_TR_NOOP("How a semi-sharp crease decays: by 1 per level, or Chaikin's "
+                            "average with its neighbours"))
+            .omitWhenDefault();
+        inputs
+            .choice(
+                "triangles", [](auto &m) -> auto & { return m.tags.options.triangles; },
+                {"catmark", "smooth"},
+                {QT_TR_NOOP("Catmull–Clark"), QT_TR_NOOP("Smooth triangles")})
+            .label(QT_TR_NOOP("Triangles"))
+            .group(QT_TR_NOOP("Sharp features"))
+            .tip(QT_TR_NOOP("Catmull–Clark's edge points next to triangles: as for any face, or "
+                            "OpenSubdiv's smoother weights"))
+            .omitWhenDefault();
         inputs
             .choice("colouring", &MeshInputs::levelColours, {"maps", "levels"},
                     {QT_TR_NOOP("By map"), QT_TR_NOOP("By level around extraordinary vertices")})

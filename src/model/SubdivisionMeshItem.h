@@ -24,6 +24,9 @@ public:
     MeshScheme scheme = MeshScheme::CatmullClark;
     PointList vertices;
     std::vector<std::vector<int>> faces;
+    // Sharp features and rule options (creases, corners, holes, boundary, crease method,
+    // triangles: core/mesh/MeshTags.h), as OpenSubdiv takes them.
+    MeshTags tags;
     // Colours: by map (false), or the neighbourhoods of extraordinary vertices by level
     // (C, f(C), f^2(C), ... in turn; MeshStart::levelAddresses).
     bool levelColours = false;
@@ -75,8 +78,9 @@ public:
     static constexpr Eigen::Index maxExportVertices = 50'000'000;
     std::string limitObj(int rounds) const;
 
-    // Declared: "scheme.kind" (Catmull-Clark, Loop), "vertices", "faces", "colouring" (by
-    // map, by level). docs/adding-an-item-kind.md walks through this declaration.
+    // Declared: "scheme.kind" (Catmull-Clark, Loop), "vertices", "faces", the sharp features
+    // "creases" ([a, b, sharpness] each), "corners" ([vertex, sharpness]), "holes" (faces),
+    // the options "boundary", "crease-method", "triangles", and "colouring" (by map, by level). docs/adding-an-item-kind.md walks through this declaration.
     static const PropertyTable &declaration();
     const PropertyTable &properties() const override { return declaration(); }
 
@@ -101,6 +105,7 @@ private:
     mutable std::mutex m_piecesMutex;
     mutable std::shared_ptr<const MeshPieces> m_pieces;
     mutable std::vector<std::vector<int>> m_piecesFaces;
+    mutable MeshTags m_piecesTags;
     mutable MeshScheme m_piecesScheme = MeshScheme::CatmullClark;
     // extraordinary() for m_extraordinaryOf.
     mutable std::shared_ptr<const std::vector<ExtraordinaryVertex>> m_extraordinary;

@@ -115,17 +115,24 @@ void TestMeshCli::importKeepsTheFilesNumbering()
     QByteArray out, err;
     QCOMPARE(run({"import-mesh", path, "--out", project}, &out, &err), 0);
     QVERIFY2(out.contains("8 vertices, 6 faces, 8 extraordinary vertices"), out.constData());
-    // A cube of OpenSubdiv's with a crease tag: imported, and the unapplied tag is said.
+    // A cube of OpenSubdiv's with tags: the crease and the corner are the item's, the tag this
+    // version does not apply is said.
     if (file.endsWith(".obj")) {
         QFile tagged(path + ".tagged.obj");
         QVERIFY(tagged.open(QIODevice::WriteOnly));
-        tagged.write(text + "t crease 2/1/0 0 1 10\n");
+        tagged.write(text + "t crease 2/1/0 0 1 10\nt corner 1/1/0 2 2.5\n"
+                            "t vertexedit 1/0/0 0\n");
         tagged.close();
         QCOMPARE(run({"import-mesh", path + ".tagged.obj", "--out", project + ".t.awb"}, &out,
                      &err),
                  0);
-        QVERIFY2(err.contains("warning:") && err.contains("'t crease' is not applied"),
+        QVERIFY2(out.contains("sharp features: 1 creases, 1 corners, 0 holes"), out.constData());
+        QVERIFY2(err.contains("warning:") && err.contains("'t vertexedit' is not applied"),
                  err.constData());
+        QFile saved(project + ".t.awb");
+        QVERIFY(saved.open(QIODevice::ReadOnly));
+        const QByteArray json = saved.readAll();
+        QVERIFY2(json.contains("\"creases\"") && json.contains("\"corners\""), json.constData());
     }
     const QJsonObject a = analyse(project);
     QCOMPARE(a["kind"].toString(), QString("subdivision-mesh"));

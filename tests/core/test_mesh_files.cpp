@@ -57,7 +57,7 @@ usemtl blue
 f 2 7 3 6
 f 4 8 1 5
 l 1 2
-t crease 2/1/0 1 2 3.0
+t crease 2/1/0 1 6 3.0
 f 2 6 8 4
 f 7 5 1 3
 )";
@@ -257,21 +257,82 @@ void TestMeshFiles::objRelativeIndicesAcrossVertices()
 
 void TestMeshFiles::objTagsAreNamedNotDropped()
 {
-    // OpenSubdiv's regression shapes tag sharp features on `t` lines (issue 44): the mesh is
-    // read, and every tag the mesh does not keep is named with its lines, once per tag name.
+    // OpenSubdiv's regression shapes tag sharp features on `t` lines (issue 44): the six kinds it
+    // applies become the mesh's tags, as its regression reader reads them (vertices from 0, a
+    // negative sharpness is 0, interpolateboundary 1 is edge-and-corner); the others are named
+    // with their lines, once per tag name.
     std::istringstream in("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n"
-                          "t crease 2/1/0 0 1 10\nt crease 2/1/0 1 2 2.5\n"
-                          "t corner 1/1/0 3 10\nt interpolateboundary 1/0/0 1\n");
+                          "t crease 2/1/0 0 1 10\nt crease 4/2/0 1 2 2 3 2.5 -1\n"
+                          "t corner 1/1/0 3 10\nt interpolateboundary 1/0/0 1\n"
+                          "t creasemethod 0/0/1 chaikin\nt smoothtriangles 0/0/1 smooth\n"
+                          "t hole 1/0/0 0\nt vertexedit 1/0/0 0\nt vertexedit 1/0/0 1\n");
     std::vector<std::string> notes;
     const Mesh m = readMesh(in, MeshFormat::Obj, "shape.obj", &notes);
     QCOMPARE(m.faces.size(), std::size_t(1));
-    QCOMPARE(int(notes.size()), 3);
-    QVERIFY2(notes[0].find("shape.obj, lines 6 to 7: 2 OpenSubdiv tags 't crease' are not "
+    QCOMPARE(m.tags.edges, (std::vector<SharpEdge>{{0, 1, 10.0f}, {1, 2, 2.5f}, {2, 3, 0.0f}}));
+    QCOMPARE(m.tags.vertices, (std::vector<SharpVertex>{{3, 10.0f}}));
+    QCOMPARE(m.tags.holes, std::vector<int>{0});
+    QVERIFY(m.tags.options.boundary == BoundaryInterpolation::EdgeAndCorner);
+    QVERIFY(m.tags.options.creaseMethod == CreaseMethod::Chaikin);
+    QVERIFY(m.tags.options.triangles == TriangleSubdivision::Smooth);
+    QCOMPARE(int(notes.size()), 1);
+    QVERIFY2(notes[0].find("shape.obj, lines 13 to 14: 2 OpenSubdiv tags 't vertexedit' are not "
                            "applied") == 0,
              notes[0].c_str());
-    QVERIFY2(notes[1].find("shape.obj, line 8: the OpenSubdiv tag 't corner'") == 0,
-             notes[1].c_str());
-    QVERIFY2(notes[2].find("'t interpolateboundary'") != std::string::npos, notes[2].c_str());
+    // Written and read back: the same tags.
+    std::ostringstream out;
+    writeObj(out, m, "");
+    std::istringstream back(out.str());
+    QVERIFY(readMesh(back, MeshFormat::Obj, "back.obj").tags == m.tags);
+    // A tag that names what the file does not have, or that is not a tag, is refused with its
+    // line.
+    const auto refusal = [](const std::string &text) {
+        std::istringstream file("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n" + text);
+        try {
+            readMesh(file, MeshFormat::Obj, "bad.obj");
+        } catch (const InputError &e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    QCOMPARE(refusal("t crease 2/1/0 0 3 2\n"),
+             std::string("bad.obj, line 5: the tag 't crease' names vertex 3, but the file has 3 "
+                         "vertices (tags count from 0: 0 to 2)"));
+    QCOMPARE(refusal("t hole 1/0/0 1\n"),
+             std::string("bad.obj, line 5: the hole names face 1, but the file has 1 faces (0 "
+                         "to 0)"));
+    QCOMPARE(refusal("t crease 2/1/0 0 1\n"),
+             std::string("bad.obj, line 5: the tag 't crease' announces 3 values but has 2"));
+    QCOMPARE(refusal("t corner 1-1-0 0 1\n"),
+             std::string("bad.obj, line 5: the tag 't corner' needs its counts as "
+                         "ints/floats/strings (like 2/1/0), got '1-1-0'"));
+    QCOMPARE(refusal("t interpolateboundary 1/0/0 7\n"),
+             std::string("bad.obj, line 5: the tag 't interpolateboundary' needs one whole "
+                         "number: 0 none, 1 edge and corner, 2 edge only"));
+    QCOMPARE(refusal("t crease 2/1/0 0 1 nan\n"),
+             std::string("bad.obj, line 5: 'nan' is not a number"));
+    // A crease on two vertices that no edge joins: checkMesh names it (with every other fault).
+    Mesh diagonal = m;
+    diagonal.tags = {};
+    diagonal.tags.edges = {{0, 2, 1.0f}, {1, 3, 1.0f}};
+    try {
+        checkMesh(diagonal, MeshScheme::CatmullClark);
+        QFAIL("accepted");
+    } catch (const InputError &e) {
+        QCOMPARE(std::string(e.what()),
+                 std::string("2 problems: a crease names vertices 0 and 2, but no edge joins "
+                             "them; a crease names vertices 1 and 3, but no edge joins them"));
+    }
+    // A file of many tag names gets 16 notes and one for the rest, not one per name.
+    std::string many = "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n";
+    for (int k = 0; k < 40; ++k)
+        many += "t tag" + std::to_string(k) + " 0/0/0\n";
+    std::istringstream manyTags(many);
+    notes.clear();
+    readMesh(manyTags, MeshFormat::Obj, "many.obj", &notes);
+    QCOMPARE(int(notes.size()), 17);
+    QVERIFY2(notes.back().find("24 more OpenSubdiv tag lines of other names") != std::string::npos,
+             notes.back().c_str());
     // Without tags, no note.
     std::istringstream plain("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n");
     notes.clear();
@@ -297,6 +358,16 @@ void TestMeshFiles::byteOrderMarksAndForeignHeaderLines()
     }
     QVERIFY(refusal("\xFF\xFEv\0 \0" "0", MeshFormat::Obj).contains("odd number of bytes"));
     // A header line of an exporter's own: skipped, and said.
+    std::istringstream junk("ply\nformat ascii 1.0\nx 1\ny 2\nz 3\nelement vertex 3\n"
+                            "property float x\nproperty float y\nproperty float z\n"
+                            "element face 1\nproperty list uchar int vertex_indices\n"
+                            "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    std::vector<std::string> junkNotes;
+    readMesh(junk, MeshFormat::Ply, "j.ply", &junkNotes);
+    QCOMPARE(int(junkNotes.size()), 1);  // one note for all, not one per line
+    QVERIFY2(junkNotes[0] == "j.ply, line 3: 3 header lines that are not PLY 1.0's, the first "
+                             "'x 1', are skipped",
+             junkNotes[0].c_str());
     std::istringstream ply("ply\nformat ascii 1.0\nexporter_version 3.2\nelement vertex 3\n"
                            "property float x\nproperty float y\nproperty float z\n"
                            "element face 1\nproperty list uchar int vertex_indices\n"

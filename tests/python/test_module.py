@@ -742,3 +742,35 @@ def test_measure_import_and_points_time(capsys, record_property):
     with capsys.disabled():
         print("\n[timing] " + line)
     assert int(n) == 2 * 2 ** 12
+
+
+def test_sharp_features_of_a_mesh(awb, examples):
+    """OpenSubdiv's creases and corners on a mesh item (issue 44): its file form, one undo step
+    each, the rule of each vertex in the analysis, and a crease that names no edge refused."""
+    p = awb.open(examples / "mesh-cube-catmull-clark.awb")
+    cube = p.items[0]
+    assert "creases" not in cube.to_json()
+    before = cube.analyse()["extraordinary"]
+    assert {v["rule"] for v in before} == {"smooth"}
+    faces = cube.to_json()["faces"]
+    a, b = faces[0][0], faces[0][1]
+    c = faces[1][2]
+    cube.update({"creases": [[a, b, 10]], "corners": [[c, 10]]})
+    assert cube.to_json()["creases"] == [[a, b, 10]]
+    rules = {v["vertex"]: v["rule"] for v in cube.analyse()["extraordinary"]}
+    assert rules[a] == "dart" and rules[b] == "dart" and rules[c] == "corner"
+    # A corner of sharpness 2.5 lasts three levels: the rule once it has ended is smooth, and
+    # the limit is between the smooth one and the vertex itself.
+    corner = [v for v in cube.analyse()["extraordinary"] if v["vertex"] == c][0]
+    cube.update({"corners": [[c, 2.5]]})
+    semi = [v for v in cube.analyse()["extraordinary"] if v["vertex"] == c][0]
+    assert semi["rule"] == "smooth"
+    vertex = np.array(cube.control_points[c])
+    assert np.allclose(corner["limit"], vertex)
+    assert 0 < np.linalg.norm(np.array(semi["limit"]) - vertex) < np.linalg.norm(
+        np.array(before[[v["vertex"] for v in before].index(c)]["limit"]) - vertex)
+    p.undo()
+    with pytest.raises(awb.Error, match="no edge joins them"):
+        cube.update({"creases": [[faces[0][0], faces[0][2], 1]]})
+    p.undo()
+    assert "creases" not in cube.to_json()

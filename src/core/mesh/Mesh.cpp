@@ -233,6 +233,176 @@ std::vector<int> MeshTopology::extraordinaryVertices(MeshScheme scheme) const
     return out;
 }
 
+std::vector<float> MeshTopology::ringSharpness(int v) const
+{
+    const auto &edges = ring(v).edges;
+    std::vector<float> out(edges.size());
+    for (std::size_t k = 0; k < edges.size(); ++k)
+        out[k] = edgeSharpness(edges[k]);
+    return out;
+}
+
+int MeshTopology::sharpEdgeCount(int v) const
+{
+    int count = 0;
+    for (int e : ring(v).edges)
+        count += crease::isSharp(edgeSharpness(e)) ? 1 : 0;
+    return count;
+}
+
+VertexRule MeshTopology::rule(int v) const
+{
+    return crease::vertexRule(vertexSharpness(v), sharpEdgeCount(v));
+}
+
+void MeshTopology::applySharpness(const MeshSharpness &s)
+{
+    m_options = s.options;
+    m_edgeSharpness.clear();
+    m_vertexSharpness.clear();
+    m_holes.clear();
+    bool anyEdge = false;
+    for (std::size_t f = 0; f < s.faceEdges.size() && f < m_faces.size(); ++f)
+        for (std::size_t k = 0; k < s.faceEdges[f].size() && k < m_faceEdges[f].size(); ++k) {
+            const float value = s.faceEdges[f][k];
+            const int e = m_faceEdges[f][k];
+            if (!crease::isSharp(value) || m_edges[std::size_t(e)].boundary())
+                continue;
+            if (!anyEdge)
+                m_edgeSharpness.assign(m_edges.size(), kSharpnessSmooth);
+            anyEdge = true;
+            m_edgeSharpness[std::size_t(e)] = std::max(m_edgeSharpness[std::size_t(e)], value);
+        }
+    for (std::size_t v = 0; v < s.vertices.size() && v < m_rings.size(); ++v)
+        if (crease::isSharp(s.vertices[v])) {
+            m_vertexSharpness.resize(m_rings.size(), kSharpnessSmooth);
+            m_vertexSharpness[v] = s.vertices[v];
+        }
+    for (std::size_t f = 0; f < s.holes.size() && f < m_faces.size(); ++f)
+        if (s.holes[f]) {
+            m_holes.resize(m_faces.size(), 0);
+            m_holes[f] = 1;
+        }
+}
+
+MeshSharpness MeshTopology::sharpness() const
+{
+    MeshSharpness s;
+    s.options = m_options;
+    s.vertices = m_vertexSharpness;
+    s.holes = m_holes;
+    if (!m_edgeSharpness.empty()) {
+        s.faceEdges.resize(m_faces.size());
+        for (std::size_t f = 0; f < m_faces.size(); ++f)
+            for (int e : m_faceEdges[f])
+                s.faceEdges[f].push_back(m_edgeSharpness[std::size_t(e)]);
+    }
+    return s;
+}
+
+namespace {
+
+// The tags of `mesh` on its topology, checked, with OpenSubdiv's boundary options applied.
+void applyTags(MeshTopology &t, const Mesh &mesh)
+{
+    const MeshTags &tags = mesh.tags;
+    Problems problems;
+    const auto badSharpness = [](float s) { return !(s >= 0.0f); };  // NaN or negative
+    MeshSharpness s;
+    s.options = tags.options;
+    if (!tags.edges.empty())
+        s.faceEdges.resize(std::size_t(t.faceCount()));
+    for (int f = 0; f < t.faceCount() && !tags.edges.empty(); ++f)
+        s.faceEdges[std::size_t(f)].assign(t.faceEdges(f).size(), kSharpnessSmooth);
+    for (const SharpEdge &tag : tags.edges) {
+        const int e = t.findEdge(tag.a, tag.b);
+        if (badSharpness(tag.sharpness))
+            problems.add(formatMessage(
+                coreTranslate("awb::mesh", "the crease on vertices %1 and %2 has sharpness %3; "
+                                           "a sharpness is a number of 0 or more"),
+                tag.a, tag.b, streamedNumber(double(tag.sharpness))));
+        else if (e < 0)
+            problems.add(formatMessage(
+                coreTranslate("awb::mesh",
+                              "a crease names vertices %1 and %2, but no edge joins them"),
+                tag.a, tag.b));
+        else
+            for (int f : t.edge(e).face)
+                if (f >= 0) {
+                    const auto &edges = t.faceEdges(f);
+                    const auto k = std::size_t(std::find(edges.begin(), edges.end(), e)
+                                               - edges.begin());
+                    s.faceEdges[std::size_t(f)][k] = tag.sharpness;
+                }
+    }
+    for (const SharpVertex &tag : tags.vertices) {
+        if (tag.vertex < 0 || tag.vertex >= t.vertexCount())
+            problems.add(formatMessage(
+                coreTranslate("awb::mesh", "a corner names vertex %1, but the mesh has %2 "
+                                           "vertices (0 to %3)"),
+                tag.vertex, t.vertexCount(), t.vertexCount() - 1));
+        else if (badSharpness(tag.sharpness))
+            problems.add(formatMessage(
+                coreTranslate("awb::mesh", "the corner at vertex %1 has sharpness %2; a "
+                                           "sharpness is a number of 0 or more"),
+                tag.vertex, streamedNumber(double(tag.sharpness))));
+        else {
+            s.vertices.resize(std::size_t(t.vertexCount()), kSharpnessSmooth);
+            s.vertices[std::size_t(tag.vertex)] = tag.sharpness;
+        }
+    }
+    for (int f : tags.holes) {
+        if (f < 0 || f >= t.faceCount())
+            problems.add(formatMessage(
+                coreTranslate("awb::mesh",
+                              "a hole names face %1, but the mesh has %2 faces (0 to %3)"),
+                f, t.faceCount(), t.faceCount() - 1));
+        else {
+            s.holes.resize(std::size_t(t.faceCount()), 0);
+            s.holes[std::size_t(f)] = 1;
+        }
+    }
+    problems.raise();
+    t.applySharpness(s);
+    // OpenSubdiv's boundary options (Far::TopologyRefinerFactory): "none" makes the faces at a
+    // boundary vertex holes unless its boundary edges are tagged infinitely sharp;
+    // "edge-and-corner" makes a boundary vertex of one face infinitely sharp.
+    const auto tagged = [&](int e) {
+        const auto &edge = t.edge(e);
+        const int f = edge.face[0];
+        const auto &edges = t.faceEdges(f);
+        const auto k = std::size_t(std::find(edges.begin(), edges.end(), e) - edges.begin());
+        return s.faceEdges.empty() ? kSharpnessSmooth : s.faceEdges[std::size_t(f)][k];
+    };
+    bool changed = false;
+    for (int v = 0; v < t.vertexCount(); ++v) {
+        const auto &ring = t.ring(v);
+        if (!ring.boundary)
+            continue;
+        if (tags.options.boundary == BoundaryInterpolation::EdgeAndCorner
+            && ring.faces.size() == 1) {
+            s.vertices.resize(std::size_t(t.vertexCount()), kSharpnessSmooth);
+            s.vertices[std::size_t(v)] = kSharpnessInfinite;
+            changed = true;
+        }
+        if (tags.options.boundary == BoundaryInterpolation::None) {
+            bool exclude = false;
+            for (int e : ring.edges)
+                exclude = exclude || (t.edge(e).boundary() && !crease::isInfinite(tagged(e)));
+            if (exclude) {
+                s.holes.resize(std::size_t(t.faceCount()), 0);
+                for (int f : ring.faces)
+                    s.holes[std::size_t(f)] = 1;
+                changed = true;
+            }
+        }
+    }
+    if (changed)
+        t.applySharpness(s);
+}
+
+} // namespace
+
 MeshTopology checkMesh(const Mesh &mesh, MeshScheme scheme)
 {
     if (mesh.vertices.rows() == 0)
@@ -255,7 +425,10 @@ MeshTopology checkMesh(const Mesh &mesh, MeshScheme scheme)
                                   "face %1 has %2 vertices; Loop subdivision takes triangles only"),
                     f,
                     mesh.faces[f].size()));
-    return MeshTopology(int(mesh.vertices.rows()), mesh.faces);
+    MeshTopology topology(int(mesh.vertices.rows()), mesh.faces);
+    if (!mesh.tags.empty())
+        applyTags(topology, mesh);
+    return topology;
 }
 
 } // namespace awb

@@ -3,12 +3,15 @@
 // connectivity subdivision needs. The mesh room of the core keeps OpenSubdiv's separation:
 //   Mesh.h            the topology (OpenSubdiv's Vtr): edges, boundaries, the ordered ring of
 //                     every vertex, and the checks that refuse what is not a 2-manifold;
+//   MeshTags.h        the sharp features and options (Sdc::Crease, Sdc::Options): creases,
+//                     corners, holes, boundary interpolation, crease method;
 //   MeshRules.h       the scheme rules (Sdc): the weights of Catmull-Clark and Loop;
 //   MeshRefine.h      the refinement of data (Far): stencils of one step, limit stencils;
 //   VertexSpectrum.h  the local subdivision matrix of a vertex and its eigenvalues.
 // Qt-free. Doubles throughout.
 
 #include "core/Types.h"
+#include "core/mesh/MeshTags.h"
 
 #include <string>
 #include <vector>
@@ -24,6 +27,18 @@ int regularValence(MeshScheme scheme);
 struct Mesh {
     Mat vertices;                         // n x 3, one point per row
     std::vector<std::vector<int>> faces;  // vertex loops, 0-based, counter-clockwise from outside
+    MeshTags tags;                        // sharp features and options (none by default)
+};
+
+// Sharp features laid on the faces of a topology, so that they survive a renumbering of the
+// vertices: one sharpness per face edge (edge k of a face joins its corners k and k + 1), one
+// per vertex, a hole flag per face. An empty vector stands for all smooth / no hole.
+struct MeshSharpness {
+    MeshOptions options;
+    std::vector<std::vector<float>> faceEdges;
+    std::vector<float> vertices;
+    std::vector<char> holes;
+    bool sharp() const { return !faceEdges.empty() || !vertices.empty(); }
 };
 
 // The scheme made for the mesh: Loop when every face is a triangle (Catmull-Clark would make
@@ -74,16 +89,50 @@ public:
     // Loop; a corner of one face takes the crease rule and is not listed), in vertex order.
     std::vector<int> extraordinaryVertices(MeshScheme scheme) const;
 
+    // Sharp features, as OpenSubdiv's Vtr level keeps them: a boundary edge is infinitely sharp;
+    // the rest is what applySharpness() set (all smooth, no hole, default options otherwise).
+    const MeshOptions &options() const { return m_options; }
+    float edgeSharpness(int e) const
+    {
+        return edge(e).boundary() ? kSharpnessInfinite
+               : m_edgeSharpness.empty() ? kSharpnessSmooth
+                                         : m_edgeSharpness[std::size_t(e)];
+    }
+    float vertexSharpness(int v) const
+    {
+        return m_vertexSharpness.empty() ? kSharpnessSmooth : m_vertexSharpness[std::size_t(v)];
+    }
+    bool hole(int f) const { return !m_holes.empty() && m_holes[std::size_t(f)]; }
+    // Any semi-sharp or interior sharp edge, or sharp vertex.
+    bool hasSharpness() const { return !m_edgeSharpness.empty() || !m_vertexSharpness.empty(); }
+    bool hasHoles() const { return !m_holes.empty(); }
+    // The sharpness of the edges at v, in the ring's order.
+    std::vector<float> ringSharpness(int v) const;
+    int sharpEdgeCount(int v) const;
+    VertexRule rule(int v) const;
+    // Lays `s` on the faces (their count must be the topology's); an edge named by both of its
+    // faces takes the larger value.
+    void applySharpness(const MeshSharpness &s);
+    // The features as laid on the faces (for a walk that renumbers them).
+    MeshSharpness sharpness() const;
+
 private:
     std::vector<std::vector<int>> m_faces;
     std::vector<std::vector<int>> m_faceEdges;
     std::vector<Edge> m_edges;
     std::vector<Ring> m_rings;
+    MeshOptions m_options;
+    std::vector<float> m_edgeSharpness;    // empty: all smooth
+    std::vector<float> m_vertexSharpness;  // empty: all smooth
+    std::vector<char> m_holes;             // empty: none
 };
 
 // The checks of a mesh for a scheme, beyond MeshTopology's: vertices with three finite
-// coordinates, and triangles only for Loop. Throws InputError naming the problem; returns the
-// mesh's topology.
+// coordinates, triangles only for Loop, and tags that name edges, vertices and faces of the mesh
+// with sharpness values that are numbers >= 0. Throws InputError naming the problems; returns
+// the mesh's topology with its tags applied as OpenSubdiv's TopologyRefinerFactory applies them
+// (boundary "edge-and-corner": a boundary vertex of one face is infinitely sharp; "none": the
+// faces at a boundary vertex are holes unless its boundary edges are tagged infinitely sharp).
 MeshTopology checkMesh(const Mesh &mesh, MeshScheme scheme);
 
 } // namespace awb

@@ -94,6 +94,7 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
             net = c.S * net;
             t = c.type;
         }
+        e.rule = toString(pieces.types[std::size_t(settled >= 0 ? settled : t)].rule);
         if (settled >= 0) {
             auto it = left.find(settled);
             if (it == left.end())
@@ -102,13 +103,13 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
                          .first;
             limitAndNormal(it->second, net, outward[root.vertex], e);
         }
-        if (!e.boundary && !ringAnalysable(e.valence)) {
+        if (e.smoothInterior() && !ringAnalysable(e.valence)) {
             e.ring = "none";
             e.note = formatMessage(
                 coreTranslate("awb::mesh", "the ring analysis takes interior valences 3 to 64; "
                                            "this vertex has %1"),
                 e.valence);
-        } else if (!e.boundary) {
+        } else if (e.smoothInterior()) {
             const auto shared = sharedVertexSpectrum(pieces.scheme, e.valence);
             const VertexSpectrum &s = *shared;
             e.ring = "ring";

@@ -18,16 +18,24 @@ struct ExtraordinaryVertex {
     int face = -1;    // a Catmull-Clark face that is not a quad, whose centre this is, or -1
     int valence = 0;
     bool boundary = false;
-    // The matrix analysed: inside, the ring of every point within two faces (6n + 1 points for
-    // Catmull-Clark, 3n + 1 for Loop, VertexSpectrum); on the boundary, the vertex piece's net.
+    // Its rule once its semi-sharp features have ended (MeshTags.h): "smooth", "dart" (one
+    // sharp edge), "crease" (two), "corner" (more, or a sharp vertex); a boundary vertex is a
+    // crease or corner.
+    std::string rule = "smooth";
+    // A smooth interior vertex: the ring analysis (VertexSpectrum.h) applies; elsewhere the
+    // vertex piece's own S.
+    bool smoothInterior() const { return !boundary && rule == "smooth"; }
+    // The matrix analysed: at a smooth interior vertex, the ring of every point within two faces
+    // (6n + 1 points for Catmull-Clark, 3n + 1 for Loop, VertexSpectrum); on the boundary and at
+    // sharp features, the vertex piece's net.
     std::string ring;
     int ringSize = 0;
     Mat S;                             // that matrix: ringSize x ringSize
     std::vector<Complex> eigenvalues;  // by modulus, largest first
     double subdominant = 0.0;          // lambda
     double subsubdominant = 0.0;       // mu: the largest modulus below lambda
-    // Inside: Reif's criterion (spectral and characteristic map) and mu against lambda^2.
-    // On the boundary: not decided (nullopt, "").
+    // Smooth inside: Reif's criterion (spectral and characteristic map) and mu against
+    // lambda^2. On the boundary and at sharp features: not decided (nullopt, "").
     std::optional<bool> c1;
     std::string curvature;
     RowVec limit;   // 1 x 3

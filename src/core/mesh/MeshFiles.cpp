@@ -65,8 +65,9 @@ bool cornerVertex(std::string_view w, long long &v)
     return parse(part[0], v) && v != 0;
 }
 
-// OpenSubdiv's tag lines (its regression shapes' `t name intcount/floatcount/stringcount ...`):
-// per tag name, how many and the first and last line.
+// OpenSubdiv's tag lines (its regression shapes' `t name intcount/floatcount/stringcount ...`)
+// that this reader does not apply (vertexedit, edgeedit, the face-varying options, ...): per tag
+// name, how many and the first and last line.
 struct TagLines {
     std::string name;
     long long count = 0;
@@ -80,26 +81,166 @@ void noteTags(const std::vector<TagLines> &tags, const std::string &name,
         return;
     for (const TagLines &t : tags)
         notes->push_back(
-            t.count == 1
+            t.name.empty()
+                ? formatMessage(coreTranslate("awb::mesh",
+                                              "%1, lines %2 to %3: %4 more OpenSubdiv tag lines "
+                                              "of other names are not applied either"),
+                                name, t.first, t.last, t.count)
+            : t.count == 1
                 ? formatMessage(coreTranslate("awb::mesh",
                                               "%1, line %2: the OpenSubdiv tag 't %3' is not "
-                                              "applied: this version subdivides without "
-                                              "creases, corners, holes or boundary rules, so "
-                                              "the surface differs from OpenSubdiv's where it "
-                                              "acts"),
+                                              "applied (this version applies crease, corner, "
+                                              "hole, interpolateboundary, creasemethod and "
+                                              "smoothtriangles), so the surface differs from "
+                                              "OpenSubdiv's where it acts"),
                                 name, t.first, t.name)
                 : formatMessage(coreTranslate("awb::mesh",
                                               "%1, lines %2 to %3: %4 OpenSubdiv tags 't %5' "
-                                              "are not applied: this version subdivides without "
-                                              "creases, corners, holes or boundary rules, so "
-                                              "the surface differs from OpenSubdiv's where "
-                                              "they act"),
+                                              "are not applied (this version applies crease, "
+                                              "corner, hole, interpolateboundary, creasemethod "
+                                              "and smoothtriangles), so the surface differs "
+                                              "from OpenSubdiv's where they act"),
                                 name, t.first, t.last, t.count, t.name));
+}
+
+// A tag line of one of the kinds applied, parsed: its place and arguments.
+struct ObjTag {
+    std::size_t line = 0;
+    std::string name;
+    std::vector<long long> ints;
+    std::vector<float> floats;
+    std::vector<std::string> strings;
+};
+
+bool appliedTag(std::string_view name)
+{
+    for (const char *known : {"crease", "corner", "hole", "interpolateboundary", "creasemethod",
+                              "smoothtriangles"})
+        if (name == known)
+            return true;
+    return false;
+}
+
+// `t name i/f/s ints floats strings`, as OpenSubdiv's Shape::tag::parseTag reads it: the
+// counts must match the words that follow.
+template<class Where>
+ObjTag parseTag(const Words &w, std::size_t line, const Where &where)
+{
+    ObjTag tag;
+    tag.line = line;
+    tag.name = std::string(w[1]);
+    long long count[3] = {0, 0, 0};
+    const std::string_view counts = w.size() > 2 ? w[2] : std::string_view();
+    std::size_t at = 0;
+    for (int k = 0; k < 3; ++k) {
+        const std::size_t slash = k < 2 ? counts.find('/', at) : counts.size();
+        if (slash == npos || !parse(counts.substr(at, slash - at), count[k]) || count[k] < 0)
+            refuse(coreTranslate("awb::mesh", "%1: the tag 't %2' needs its counts as "
+                                              "ints/floats/strings (like 2/1/0), got '%3'"),
+                   where(), tag.name, shown(counts));
+        at = slash + 1;
+    }
+    if ((long long)w.size() != 3 + count[0] + count[1] + count[2])
+        refuse(coreTranslate("awb::mesh",
+                             "%1: the tag 't %2' announces %3 values but has %4"),
+               where(), tag.name, count[0] + count[1] + count[2],
+               static_cast<long long>(w.size()) - 3);
+    std::size_t k = 3;
+    for (long long i = 0; i < count[0]; ++i, ++k) {
+        long long v = 0;
+        if (!parse(w[k], v))
+            refuse(coreTranslate("awb::mesh", "%1: '%2' is not a whole number"), where(),
+                   shown(w[k]));
+        tag.ints.push_back(v);
+    }
+    for (long long i = 0; i < count[1]; ++i, ++k) {
+        double x = 0;
+        if (!parse(w[k], x) || std::isnan(x))
+            refuse(coreTranslate("awb::mesh", "%1: '%2' is not a number"), where(), shown(w[k]));
+        tag.floats.push_back(float(x));
+    }
+    for (long long i = 0; i < count[2]; ++i, ++k)
+        tag.strings.emplace_back(w[k]);
+    return tag;
+}
+
+// The applied tags on the mesh, checked against its vertex and face counts: OpenSubdiv's
+// regression reader's meaning (far_utils.h): a crease takes vertex pairs and one sharpness or
+// one per pair, a corner vertices and one sharpness or one per vertex, a negative sharpness is
+// 0; interpolateboundary 0 none, 1 edge-and-corner, 2 edge-only; creasemethod normal or
+// chaikin; smoothtriangles catmark or smooth.
+void applyTags(const std::vector<ObjTag> &tags, Mesh &mesh, const std::string &name)
+{
+    const long long vertices = mesh.vertices.rows();
+    const long long faces = static_cast<long long>(mesh.faces.size());
+    for (const ObjTag &tag : tags) {
+        const auto where = [&] { return atLine(name, tag.line); };
+        const auto need = [&](bool ok, const std::string &what) {
+            if (!ok)
+                refuse(coreTranslate("awb::mesh", "%1: the tag 't %2' needs %3"), where(),
+                       tag.name, what);
+        };
+        const auto sharpness = [&](std::size_t k) {
+            const float s = tag.floats.size() > 1 ? tag.floats[k] : tag.floats[0];
+            return std::max(0.0f, s);
+        };
+        const auto vertex = [&](long long v) {
+            if (v < 0 || v >= vertices)  // tags count vertices from 0, as OpenSubdiv does
+                refuse(coreTranslate("awb::mesh", "%1: the tag 't %2' names vertex %3, but the "
+                                                  "file has %4 vertices (tags count from 0: 0 "
+                                                  "to %5)"),
+                       where(), tag.name, v, vertices, vertices - 1);
+            return int(v);
+        };
+        if (tag.name == "crease") {
+            need(tag.ints.size() >= 2 && tag.ints.size() % 2 == 0
+                     && (tag.floats.size() == 1 || tag.floats.size() == tag.ints.size() / 2),
+                 coreTranslate("awb::mesh", "pairs of vertices and one sharpness, or one per pair"));
+            for (std::size_t j = 0; j + 1 < tag.ints.size(); j += 2)
+                mesh.tags.edges.push_back(
+                    {vertex(tag.ints[j]), vertex(tag.ints[j + 1]), sharpness(j / 2)});
+        } else if (tag.name == "corner") {
+            need(!tag.ints.empty()
+                     && (tag.floats.size() == 1 || tag.floats.size() == tag.ints.size()),
+                 coreTranslate("awb::mesh", "vertices and one sharpness, or one per vertex"));
+            for (std::size_t j = 0; j < tag.ints.size(); ++j)
+                mesh.tags.vertices.push_back({vertex(tag.ints[j]), sharpness(j)});
+        } else if (tag.name == "hole") {
+            need(!tag.ints.empty(), coreTranslate("awb::mesh", "the faces it makes holes"));
+            for (long long f : tag.ints) {
+                if (f < 0 || f >= faces)
+                    refuse(coreTranslate("awb::mesh", "%1: the hole names face %2, but the "
+                                                      "file has %3 faces (0 to %4)"),
+                           where(), f, faces, faces - 1);
+                mesh.tags.holes.push_back(int(f));
+            }
+        } else if (tag.name == "interpolateboundary") {
+            need(tag.ints.size() == 1 && tag.ints[0] >= 0 && tag.ints[0] <= 2,
+                 coreTranslate("awb::mesh", "one whole number: 0 none, 1 edge and corner, 2 edge only"));
+            mesh.tags.options.boundary = tag.ints[0] == 0   ? BoundaryInterpolation::None
+                                         : tag.ints[0] == 1 ? BoundaryInterpolation::EdgeAndCorner
+                                                            : BoundaryInterpolation::EdgeOnly;
+        } else if (tag.name == "creasemethod") {
+            need(tag.strings.size() == 1
+                     && (tag.strings[0] == "normal" || tag.strings[0] == "chaikin"),
+                 coreTranslate("awb::mesh", "one word: normal or chaikin"));
+            mesh.tags.options.creaseMethod =
+                tag.strings[0] == "chaikin" ? CreaseMethod::Chaikin : CreaseMethod::Uniform;
+        } else if (tag.name == "smoothtriangles") {
+            need(tag.strings.size() == 1
+                     && (tag.strings[0] == "catmark" || tag.strings[0] == "smooth"),
+                 coreTranslate("awb::mesh", "one word: catmark or smooth"));
+            mesh.tags.options.triangles = tag.strings[0] == "smooth"
+                                              ? TriangleSubdivision::Smooth
+                                              : TriangleSubdivision::Catmark;
+        }
+    }
 }
 
 Mesh readObj(std::string_view text, const std::string &name, std::vector<std::string> *notes)
 {
     std::vector<TagLines> tags;
+    std::vector<ObjTag> applied;
     std::vector<double> xyz;            // 3 per vertex
     std::vector<int> corners;           // per face
     std::vector<std::size_t> faceLines; // per face
@@ -109,18 +250,29 @@ Mesh readObj(std::string_view text, const std::string &name, std::vector<std::st
     Lines lines(text);
     for (std::string_view line; lines.next(line); kept.push_back('\n')) {
         const Words w = words(line);
+        if (!w.empty() && w[0] == "t" && w.size() > 1 && appliedTag(w[1])) {
+            applied.push_back(
+                parseTag(w, lines.number(), [&] { return atLine(name, lines.number()); }));
+            continue;
+        }
         if (!w.empty() && w[0] == "t") {
             const std::string tag(w.size() > 1 ? w[1] : std::string_view("?"));
             auto it = std::find_if(tags.begin(), tags.end(),
                                    [&](const TagLines &t) { return t.name == tag; });
-            if (it == tags.end() && tags.size() < 64) {
-                tags.push_back({tag, 0, lines.number(), lines.number()});
-                it = tags.end() - 1;
+            // OpenSubdiv names seven kinds; past 16 names, the rest share one note (the entry
+            // of empty name), not one each.
+            if (it == tags.end()) {
+                const bool full = tags.size() >= 16;
+                it = full ? std::find_if(tags.begin(), tags.end(),
+                                         [](const TagLines &t) { return t.name.empty(); })
+                          : tags.end();
+                if (it == tags.end()) {
+                    tags.push_back({full ? std::string() : tag, 0, lines.number(), 0});
+                    it = tags.end() - 1;
+                }
             }
-            if (it != tags.end()) {
-                ++it->count;
-                it->last = lines.number();
-            }
+            ++it->count;
+            it->last = lines.number();
             continue;
         }
         if (w.empty() || (w[0] != "v" && w[0] != "f"))
@@ -197,6 +349,7 @@ Mesh readObj(std::string_view text, const std::string &name, std::vector<std::st
         throw std::logic_error(name + ": tinyobjloader and the line scan read different meshes");
     mesh.vertices = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
         xyz.data(), Eigen::Index(vertexCount), 3);
+    applyTags(applied, mesh, name);
     noteTags(tags, name, notes);
     return mesh;
 }
@@ -440,6 +593,31 @@ void writeObj(std::ostream &out, const Mesh &mesh, const std::string &comment)
             text.append(" ").append(std::to_string(v + 1));
         text.push_back('\n');
     }
+    // The sharp features as OpenSubdiv's tag lines (vertices and faces counted from 0).
+    const MeshTags &tags = mesh.tags;
+    const auto sharpness = [](float s) { return shortestNumber(double(s)); };
+    for (const SharpEdge &e : tags.edges) {
+        text.append("t crease 2/1/0 ").append(std::to_string(e.a)).append(" ");
+        text.append(std::to_string(e.b)).append(" ").append(sharpness(e.sharpness)).append("\n");
+    }
+    for (const SharpVertex &c : tags.vertices) {
+        text.append("t corner 1/1/0 ").append(std::to_string(c.vertex)).append(" ");
+        text.append(sharpness(c.sharpness)).append("\n");
+    }
+    if (!tags.holes.empty()) {
+        text.append("t hole ").append(std::to_string(tags.holes.size())).append("/0/0");
+        for (int f : tags.holes)
+            text.append(" ").append(std::to_string(f));
+        text.append("\n");
+    }
+    if (tags.options.boundary != BoundaryInterpolation::EdgeOnly)
+        text.append("t interpolateboundary 1/0/0 ")
+            .append(tags.options.boundary == BoundaryInterpolation::None ? "0" : "1")
+            .append("\n");
+    if (tags.options.creaseMethod == CreaseMethod::Chaikin)
+        text.append("t creasemethod 0/0/1 chaikin\n");
+    if (tags.options.triangles == TriangleSubdivision::Smooth)
+        text.append("t smoothtriangles 0/0/1 smooth\n");
     flush(0);
 }
 

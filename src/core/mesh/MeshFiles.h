@@ -35,11 +35,13 @@ std::string toString(MeshFormat format);
 // extension otherwise.
 MeshFormat meshFormatForPath(const std::string &path);
 
-// The mesh of the file at `path`, in the format of its extension. `notes`, when given, receives
-// what the file holds that the mesh does not keep, one sentence each naming the file and the
-// lines: OpenSubdiv's OBJ tag lines (`t crease ...`, `t corner`, `t hole`,
-// `t interpolateboundary`, ...: sharp features this version does not apply yet, issue 44). A
-// caller shows them; nothing a file says is dropped without a word.
+// The mesh of the file at `path`, in the format of its extension. OBJ's OpenSubdiv tag lines
+// (its regression shapes' `t crease 2/1/0 a b s`, `t corner`, `t hole`,
+// `t interpolateboundary`, `t creasemethod`, `t smoothtriangles`; vertices and faces counted
+// from 0) become the mesh's tags (MeshTags.h), read as OpenSubdiv's regression reader reads
+// them. `notes`, when given, receives what the file holds that the mesh does not keep, one
+// sentence each naming the file and the lines: the tags of other names (vertexedit, edgeedit,
+// face-varying options). A caller shows them; nothing a file says is dropped without a word.
 Mesh readMesh(const std::string &path, std::vector<std::string> *notes = nullptr);
 // The mesh of `in`, read to its end (open it in binary mode for a binary PLY); `name` stands for
 // the file in messages.
@@ -47,7 +49,8 @@ Mesh readMesh(std::istream &in, MeshFormat format, const std::string &name,
               std::vector<std::string> *notes = nullptr);
 
 // Writes `mesh` as OBJ: each line of `comment` as a `# ` line, then `v x y z` with 17
-// significant digits (readMesh gives the same doubles back) and `f i j k ...` 1-based. A mesh
+// significant digits (readMesh gives the same doubles back), `f i j k ...` 1-based, and the
+// mesh's tags as OpenSubdiv's `t` lines. A mesh
 // that readMesh would refuse (no vertices or faces, coordinates that are not finite numbers,
 // faces of fewer than 3 vertices or with an index out of range) is an InputError, and nothing is
 // written. The caller checks `out`'s state.

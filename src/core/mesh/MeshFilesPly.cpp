@@ -84,6 +84,8 @@ PlyHeader readPlyHeader(std::string_view text, const std::string &name,
                name);
     PlyHeader h;
     bool format = false;
+    long long skipped = 0;
+    std::string firstSkipped, firstSkippedLine;
     for (;;) {
         if (!lines.next(line))
             refuse(coreTranslate("awb::mesh", "%1: the PLY header has no end_header line"), name);
@@ -116,14 +118,24 @@ PlyHeader readPlyHeader(std::string_view text, const std::string &name,
         } else if (w[0] == "format" || w[0] == "element" || w[0] == "property") {
             refuse(coreTranslate("awb::mesh", "%1: malformed PLY header line '%2'"), where,
                    shown(line));
-        } else if (notes) {
+        } else {
             // Not PLY 1.0's (an exporter's own keyword): other readers skip it, so does this
-            // one, and says so.
-            notes->push_back(formatMessage(
-                coreTranslate("awb::mesh", "%1: header line '%2' is not PLY 1.0's: skipped"),
-                where, shown(line)));
+            // one, and says so below, once.
+            if (skipped++ == 0) {
+                firstSkipped = where;
+                firstSkippedLine = shown(line);
+            }
         }
     }
+    if (notes && skipped == 1)
+        notes->push_back(formatMessage(
+            coreTranslate("awb::mesh", "%1: header line '%2' is not PLY 1.0's: skipped"),
+            firstSkipped, firstSkippedLine));
+    else if (notes && skipped > 1)
+        notes->push_back(formatMessage(
+            coreTranslate("awb::mesh", "%1: %2 header lines that are not PLY 1.0's, the first "
+                                       "'%3', are skipped"),
+            firstSkipped, skipped, firstSkippedLine));
     if (!format)
         refuse(coreTranslate("awb::mesh", "%1: the PLY header has no format line"), name);
     h.dataOffset = lines.offset();

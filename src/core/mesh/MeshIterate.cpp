@@ -100,6 +100,8 @@ private:
     void descend(int type, int level, int depth)
     {
         const MeshPieceType &t = m_pieces.types[std::size_t(type)];
+        if (t.hole)
+            return;
         const double *net = m_nets[std::size_t(level)].data();
         if (depth == 0) {
             emit(t, type, net, level);
@@ -211,6 +213,8 @@ int outputsOf(const MeshPieceType &t, const MeshStart &start)
 double PointCounts::operator()(int type, int depth)
 {
     const MeshPieceType &t = m_pieces.types[std::size_t(type)];
+    if (t.hole)
+        return 0.0;
     if (depth == 0)
         return outputsOf(t, m_start);
     const auto it = m_memo.find({type, depth});
@@ -271,7 +275,7 @@ IterationStats iterateMesh(const MeshPieces &pieces, const Mat &inputVertices,
     if (sinks.empty())
         return {};
     IterationStats stats;
-    Mesh input{inputVertices, pieces.inputFaces};
+    Mesh input{inputVertices, pieces.inputFaces, pieces.inputTags};
     if (depth < pieces.steps && start.kind != MeshStart::Kind::Points) {
         // Below the isolation steps the pieces do not exist yet: the refined mesh itself.
         const Mesh refined = refineMesh(input, pieces.scheme, depth);

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <climits>
+#include <cstring>
+#include <functional>
 #include <map>
 #include <numeric>
 #include <unordered_map>
@@ -41,7 +43,19 @@ struct Walk {
     std::vector<std::vector<int>> faces;
     int coreCount = 0;
     std::vector<int> key;
+    // The sharp features met, in the walk's numbers (MeshTopology::sharpness's layout).
+    MeshSharpness sharpness;
+    bool semiSharp = false;  // a feature that is still semi-sharp: the piece is in its prelude
 };
+
+// A sharpness in a key: its float's bits (exact, as the rules use it).
+int keyOf(float s)
+{
+    int bits = 0;
+    static_assert(sizeof bits == sizeof s);
+    std::memcpy(&bits, &s, sizeof bits);
+    return bits;
+}
 
 Walk walk(const MeshTopology &t, const Seed &seed)
 {
@@ -54,6 +68,7 @@ Walk walk(const MeshTopology &t, const Seed &seed)
             w.order.push_back(x);
         return it->second;
     };
+    const bool sharp = t.hasSharpness(), holes = t.hasHoles();
     const auto addFace = [&](int g, int corner) {
         region.insert(g);
         const auto &loop = t.face(g);
@@ -65,6 +80,20 @@ Walk walk(const MeshTopology &t, const Seed &seed)
             w.key.push_back(ids.back());
         }
         w.faces.push_back(std::move(ids));
+        if (sharp) {
+            std::vector<float> edges;
+            for (int i = 0; i < m; ++i) {
+                const int e = t.faceEdges(g)[std::size_t((corner + i) % m)];
+                edges.push_back(t.edge(e).boundary() ? kSharpnessSmooth : t.edgeSharpness(e));
+                w.key.push_back(keyOf(edges.back()));
+                w.semiSharp = w.semiSharp || crease::isSemiSharp(edges.back());
+            }
+            w.sharpness.faceEdges.push_back(std::move(edges));
+        }
+        if (holes) {
+            w.sharpness.holes.push_back(t.hole(g) ? 1 : 0);
+            w.key.push_back(t.hole(g) ? 1 : 0);
+        }
     };
     w.key.push_back(seed.vertex ? 1 : 0);
     if (seed.vertex) {
@@ -108,6 +137,15 @@ Walk walk(const MeshTopology &t, const Seed &seed)
     w.key.push_back(-1);
     for (int c = 0; c < w.coreCount; ++c)
         w.key.push_back(t.onBoundary(w.order[std::size_t(c)]) ? 1 : 0);
+    w.sharpness.options = t.options();
+    if (sharp) {
+        w.key.push_back(-2);
+        for (int x : w.order) {
+            w.sharpness.vertices.push_back(t.vertexSharpness(x));
+            w.key.push_back(keyOf(w.sharpness.vertices.back()));
+            w.semiSharp = w.semiSharp || crease::isSemiSharp(w.sharpness.vertices.back());
+        }
+    }
     return w;
 }
 
@@ -176,10 +214,36 @@ Split splitFans(int n, std::vector<std::vector<int>> faces)
     return s;
 }
 
+// A vertex whose neighbourhood is not that of a regular face piece: an interior vertex of
+// valence != 4 (Catmull-Clark) or 6 (Loop), a boundary vertex of valence != 3 or 4 (a corner of
+// one face included, unless it is infinitely sharp: OpenSubdiv's regular corner patch), and
+// every vertex on a sharp feature other than a regular crease (OpenSubdiv's: two sharp edges
+// opposite each other at a regular vertex).
 bool irregular(const MeshTopology &t, int v, MeshScheme scheme)
 {
     const int n = t.valence(v), inner = regularValence(scheme);
-    return n > 0 && n != (t.onBoundary(v) ? inner / 2 + 1 : inner);
+    if (n == 0)
+        return false;
+    const auto &ring = t.ring(v);
+    if (!t.hasSharpness())
+        return n != (ring.boundary ? inner / 2 + 1 : inner);
+    if (ring.boundary && ring.faces.size() == 1)  // regular only as an infinitely sharp corner
+        return !crease::isInfinite(t.vertexSharpness(v)) || t.sharpEdgeCount(v) != 2;
+    const VertexRule rule = t.rule(v);
+    if (ring.boundary)
+        return rule != VertexRule::Crease || n != inner / 2 + 1;
+    if (n != inner)
+        return true;
+    if (rule == VertexRule::Smooth)
+        return false;
+    if (rule != VertexRule::Crease)
+        return true;
+    const auto sharp = [&](int k) { return crease::isSharp(t.edgeSharpness(ring.edges[std::size_t(k)])); };
+    const int half = inner / 2;
+    for (int k = 0; k < half; ++k)
+        if (sharp(k) != sharp(k + half))
+            return true;
+    return false;
 }
 
 // No face with two irregular corners, and only quads (Catmull-Clark).
@@ -219,6 +283,7 @@ public:
         if (seed.vertex) {
             type.valence = t.valence(seed.id);
             type.boundary = t.onBoundary(seed.id);
+            type.rule = t.rule(seed.id);
         } else {
             for (int c = 0; c < w.coreCount; ++c)
                 type.boundary = type.boundary || t.onBoundary(w.order[std::size_t(c)]);
@@ -230,7 +295,9 @@ public:
         const int id = int(types.size());
         types.push_back(std::move(type));
         m_byKey.emplace(std::move(w.key), id);
-        m_pending.push_back({id, std::move(w.faces)});
+        if (w.semiSharp)
+            m_prelude.push_back(id);
+        m_pending.push_back({id, std::move(w.faces), std::move(w.sharpness)});
         return id;
     }
 
@@ -249,7 +316,24 @@ private:
     struct Pending {
         int type;
         std::vector<std::vector<int>> faces;  // the neighbourhood in the type's local numbers
+        MeshSharpness sharpness;              // its sharp features, in the same numbers
     };
+
+    // A topology of split faces with the sharp features `s` (vertices in the unsplit numbers).
+    static MeshTopology splitTopology(const Split &split, MeshSharpness s)
+    {
+        MeshTopology t(int(split.copyOf.size()), split.faces);
+        if (!s.vertices.empty()) {
+            std::vector<float> vertices(split.copyOf.size());
+            for (std::size_t i = 0; i < vertices.size(); ++i) {
+                const auto from = std::size_t(split.copyOf[i]);  // beyond: new points, smooth
+                vertices[i] = from < s.vertices.size() ? s.vertices[from] : kSharpnessSmooth;
+            }
+            s.vertices = std::move(vertices);
+        }
+        t.applySharpness(s);
+        return t;
+    }
 
     // The limit stencils and the maps of a new type, from its neighbourhood refined once.
     void complete(const Pending &p)
@@ -258,7 +342,7 @@ private:
         const bool vertex = types[std::size_t(p.type)].kind == MeshPieceType::Kind::Vertex;
         const int coreCount = int(types[std::size_t(p.type)].corners.size());
         const Split s0 = splitFans(m, p.faces);
-        const MeshTopology t(int(s0.copyOf.size()), s0.faces);
+        const MeshTopology t = splitTopology(s0, p.sharpness);
         const std::vector<MeshStencil> limit = limitStencils(t, m_scheme);
         Mat limits = Mat::Zero(coreCount, m);
         for (int c = 0; c < coreCount; ++c)
@@ -267,7 +351,7 @@ private:
 
         const Refinement r = refineTopology(t, m_scheme);
         const Split s1 = splitFans(int(r.stencils.size()), r.faces);
-        const MeshTopology t1(int(s1.copyOf.size()), s1.faces);
+        const MeshTopology t1 = splitTopology(s1, r.sharpness);
         const int nv = t.vertexCount();
         // The first child face of face f in r.faces (refineTopology's order).
         std::vector<int> firstChild(std::size_t(t.faceCount()));
@@ -293,10 +377,18 @@ private:
             faceChildren(0, 0);
         }
         std::vector<MeshPieceType::Child> children;
+        // Where each corner goes: (child, its corner) with the corner's vertex point.
+        std::vector<std::pair<int, int>> cornerChild(std::size_t(coreCount), {-1, -1});
         for (const Seed &seed : seeds) {
             std::vector<int> net;
             MeshPieceType::Child child;
             child.type = typeOf(t1, seed, &net);
+            for (std::size_t j = 0; j < net.size(); ++j) {
+                const int c = s1.copyOf[std::size_t(net[j])];
+                if (c < coreCount && cornerChild[std::size_t(c)].first < 0
+                    && j < types[std::size_t(child.type)].corners.size())
+                    cornerChild[std::size_t(c)] = {int(children.size()), int(j)};
+            }
             child.S = Mat::Zero(Eigen::Index(net.size()), m);
             for (std::size_t i = 0; i < net.size(); ++i)
                 for (const auto &[q, w] : r.stencils[std::size_t(s1.copyOf[std::size_t(net[i])])])
@@ -306,11 +398,62 @@ private:
         MeshPieceType &type = types[std::size_t(p.type)];
         type.limits = std::move(limits);
         type.children = std::move(children);
+        // A hole draws nothing (its children, holes too, stay for the limits of its corners).
+        if (type.kind == MeshPieceType::Kind::Face && t.hole(0)) {
+            type.faces.clear();
+            type.hole = true;
+        } else if (type.kind == MeshPieceType::Kind::Vertex && t.hasHoles()) {
+            std::vector<std::vector<int>> kept;
+            for (std::size_t f = 0; f < type.faces.size(); ++f)
+                if (!t.hole(int(f)))
+                    kept.push_back(type.faces[f]);
+            type.faces = std::move(kept);
+        }
+        m_cornerChild[p.type] = std::move(cornerChild);
     }
+
+public:
+    // The limit stencils of the types in their prelude (a semi-sharp feature in their net): a
+    // corner's limit is its vertex point's limit in the child that holds it, down to the
+    // stationary types, whose limits the rules give.
+    void preludeLimits()
+    {
+        std::vector<char> done(types.size(), 1);
+        for (int id : m_prelude)
+            done[std::size_t(id)] = 0;
+        std::function<void(int, int)> settle = [&](int id, int depth) {
+            if (done[std::size_t(id)])
+                return;
+            if (depth > 64)
+                throw std::logic_error("mesh pieces: a prelude that does not end");
+            MeshPieceType &type = types[std::size_t(id)];
+            const auto &where = m_cornerChild.at(id);
+            for (std::size_t c = 0; c < where.size(); ++c) {
+                const auto [k, j] = where[c];
+                if (k < 0)
+                    continue;  // not reached: every corner is a child's corner
+                const MeshPieceType::Child &child = type.children[std::size_t(k)];
+                settle(child.type, depth + 1);
+                const MeshPieceType &below = types[std::size_t(child.type)];
+                // The child's corner j is its net's place j when j is among its corners.
+                if (j < below.limits.rows())
+                    type.limits.row(Eigen::Index(c)) = below.limits.row(j) * child.S;
+                else
+                    type.limits.row(Eigen::Index(c)) = child.S.row(j);  // not reached
+            }
+            done[std::size_t(id)] = 1;
+        };
+        for (int id : m_prelude)
+            settle(id, 0);
+    }
+
+private:
 
     MeshScheme m_scheme;
     std::map<std::vector<int>, int> m_byKey;
     std::vector<Pending> m_pending;
+    std::vector<int> m_prelude;
+    std::map<int, std::vector<std::pair<int, int>>> m_cornerChild;
 };
 
 } // namespace
@@ -359,9 +502,22 @@ MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
         out.origin[std::size_t(v)] = v;
     }
     std::vector<std::vector<int>> faces = mesh.faces;
-    while (!isolated(t, scheme)) {
-        if (out.steps == kMaxSteps)  // not reached: two steps isolate every vertex
+    out.inputTags = mesh.tags;
+    // Chaikin's rule takes a semi-sharp edge's neighbours beyond a piece's net: the semi-sharp
+    // features are refined away on the whole mesh first (uniform creasing keeps them in the
+    // pieces, whose types then have a prelude).
+    const auto chaikinPrelude = [&] {
+        return t.options().creaseMethod == CreaseMethod::Chaikin && preludeLevels(t) > 0;
+    };
+    while (!isolated(t, scheme) || chaikinPrelude()) {
+        if (out.steps >= kMaxSteps && !chaikinPrelude())  // not reached: two steps isolate
             throw InputError(coreTranslate("awb::mesh", "the irregular vertices do not separate"));
+        if ((long long)t.faceCount() * 4 > kMaxPreludeFaces)
+            throw InputError(formatMessage(
+                coreTranslate("awb::mesh",
+                              "Chaikin's creases last %1 more levels here; the mesh would have "
+                              "more than %2 faces (use the uniform crease method)"),
+                preludeLevels(t), kMaxPreludeFaces));
         const Refinement r = refineTopology(t, scheme);
         const int nv = t.vertexCount(), ne = t.edgeCount();
         std::vector<MeshStencil> isolation;
@@ -376,7 +532,7 @@ MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
         out.isolation = std::move(isolation);
         out.origin = std::move(origin);
         faces = r.faces;
-        t = MeshTopology(int(out.isolation.size()), faces);
+        t = refinedTopology(r);
         ++out.steps;
     }
     out.isolatedFaces = faces;
@@ -386,7 +542,7 @@ MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
         bool regular = true;
         for (int v : t.face(f))
             regular = regular && !irregular(t, v, scheme);
-        if (!regular)
+        if (!regular || t.hole(f))
             continue;
         MeshPieceRoot root;
         root.face = f;
@@ -402,6 +558,7 @@ MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
         out.roots.push_back(std::move(root));
     }
     builder.run();
+    builder.preludeLimits();
     out.types = std::move(builder.types);
     for (MeshPieceType &type : out.types) {
         type.limitRows = SparseRows::of(type.limits);
@@ -422,7 +579,7 @@ Mat isolatedPositions(const MeshPieces &pieces, const Mat &inputVertices)
 
 int settledType(const MeshPieces &pieces, int type)
 {
-    for (int step = 0; step < 8; ++step) {
+    for (int step = 0; step < 16; ++step) {
         const MeshPieceType &t = pieces.types[std::size_t(type)];
         if (t.kind != MeshPieceType::Kind::Vertex || t.children.empty())
             return -1;

@@ -67,6 +67,7 @@ struct MeshPieceType {
     // pieces: 0, and whether a corner is on the boundary.
     int valence = 0;
     bool boundary = false;
+    VertexRule rule = VertexRule::Smooth;  // vertex pieces: the vertex's rule at this level
     // The piece's output vertices: for a face, its corners; for a vertex piece, every corner of
     // its faces (v first). `corners` holds their places in the net, `limits` (corners x net)
     // their limit stencils.
@@ -87,7 +88,8 @@ struct MeshPieceType {
         SparseRows leaf;
     };
     std::vector<Child> children;
-    int roots = 0;  // pieces of the isolated mesh of this type
+    int roots = 0;      // pieces of the isolated mesh of this type
+    bool hole = false;  // a face that is a hole: nothing drawn, at any depth
 };
 
 struct MeshPieceRoot {
@@ -102,7 +104,8 @@ struct MeshPieces {
     int inputVertexCount = 0;
     int inputFaceCount = 0;
     std::vector<std::vector<int>> inputFaces;
-    int steps = 0;  // isolation steps L
+    MeshTags inputTags;
+    int steps = 0;  // isolation steps L (and, with Chaikin creases, the levels they last)
     // The isolated mesh's vertices as stencils on the input's (vertex v < inputVertexCount is
     // the input's vertex v at every level), and its faces.
     std::vector<MeshStencil> isolation;
@@ -124,7 +127,7 @@ MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme);
 Mat isolatedPositions(const MeshPieces &pieces, const Mat &inputVertices);
 
 // The type reached from vertex type t by following child 0 until a type maps to itself (after
-// at most one step); its S_0 is the local subdivision matrix of the vertex's ring. -1 when the
+// at most one step, or past a semi-sharp prelude of at most 10); its S_0 is the local subdivision matrix of the vertex's ring. -1 when the
 // chain does not settle, or for a face type.
 int settledType(const MeshPieces &pieces, int type);
 

@@ -2,9 +2,12 @@
 
 #include "core/Messages.h"
 #include "core/mesh/MeshRules.h"
+#include "core/mesh/MeshTags.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
+#include <stdexcept>
 
 namespace awb {
 
@@ -32,32 +35,35 @@ void addFaceCentroid(MeshStencil &s, const std::vector<int> &face, double weight
         s.emplace_back(v, weight / double(face.size()));
 }
 
-// The two boundary neighbours of a boundary vertex.
-std::pair<int, int> boundaryNeighbours(const MeshTopology &t, int v)
+// The other ends of the first and last sharp edges at v (its crease when it has two).
+std::pair<int, int> creaseEnds(const MeshTopology &t, int v, const std::vector<float> &sharpness)
 {
-    const auto &ring = t.ring(v);
-    return {t.otherEnd(ring.edges.front(), v), t.otherEnd(ring.edges.back(), v)};
+    const auto &edges = t.ring(v).edges;
+    std::size_t first = 0, last = edges.size() - 1;
+    while (first < last && !crease::isSharp(sharpness[first]))
+        ++first;
+    while (last > first && !crease::isSharp(sharpness[last]))
+        --last;
+    return {t.otherEnd(edges[first], v), t.otherEnd(edges[last], v)};
 }
 
-// The vertex point of a vertex of no face (itself) or on the boundary (the crease rule), the
-// same in both schemes; nullopt inside.
-std::optional<MeshStencil> creaseVertex(const MeshTopology &t, int v)
+MeshStencil creaseMask(int v, std::pair<int, int> ends, double self, double neighbour)
 {
-    const auto &ring = t.ring(v);
-    if (ring.edges.empty())
-        return MeshStencil{{v, 1.0}};
-    if (!ring.boundary)
-        return std::nullopt;
-    const auto [a, b] = boundaryNeighbours(t, v);
-    return merged({{v, kCreaseSelf}, {a, kCreaseNeighbour}, {b, kCreaseNeighbour}});
+    return merged({{v, self}, {ends.first, neighbour}, {ends.second, neighbour}});
 }
 
-MeshStencil catmarkVertex(const MeshTopology &t, int v)
+// The smooth vertex point of an interior vertex.
+MeshStencil smoothVertex(const MeshTopology &t, int v, MeshScheme scheme)
 {
-    if (auto s = creaseVertex(t, v))
-        return *s;
     const auto &ring = t.ring(v);
     const int n = int(ring.edges.size());
+    if (scheme == MeshScheme::Loop) {
+        const double beta = loopBeta(n);
+        MeshStencil s{{v, 1.0 - n * beta}};
+        for (int e : ring.edges)
+            s.emplace_back(t.otherEnd(e, v), beta);
+        return merged(std::move(s));
+    }
     MeshStencil s{{v, catmarkVertexSelf(n)}};
     for (int e : ring.edges)
         s.emplace_back(t.otherEnd(e, v), catmarkVertexRing(n));
@@ -66,17 +72,49 @@ MeshStencil catmarkVertex(const MeshTopology &t, int v)
     return merged(std::move(s));
 }
 
-MeshStencil loopVertex(const MeshTopology &t, int v)
+// The vertex point of v under `rule` with edge sharpness `sharpness` around it.
+MeshStencil ruleVertex(const MeshTopology &t, int v, MeshScheme scheme, VertexRule rule,
+                       const std::vector<float> &sharpness)
 {
-    if (auto s = creaseVertex(t, v))
-        return *s;
+    switch (rule) {
+    case VertexRule::Smooth:
+    case VertexRule::Dart:
+        return smoothVertex(t, v, scheme);
+    case VertexRule::Crease:
+        return creaseMask(v, creaseEnds(t, v, sharpness), kCreaseSelf, kCreaseNeighbour);
+    case VertexRule::Corner:
+        break;
+    }
+    return MeshStencil{{v, 1.0}};
+}
+
+// The vertex point, as Sdc::Scheme::ComputeVertexVertexMask: the rule of the vertex, and where
+// a semi-sharp feature ends at this level, that rule blended with the next level's.
+MeshStencil vertexPoint(const MeshTopology &t, int v, MeshScheme scheme)
+{
     const auto &ring = t.ring(v);
-    const int n = int(ring.edges.size());
-    const double beta = loopBeta(n);
-    MeshStencil s{{v, 1.0 - n * beta}};
-    for (int e : ring.edges)
-        s.emplace_back(t.otherEnd(e, v), beta);
-    return merged(std::move(s));
+    if (ring.edges.empty())
+        return MeshStencil{{v, 1.0}};
+    const std::vector<float> parent = t.ringSharpness(v);
+    const float parentVertex = t.vertexSharpness(v);
+    const VertexRule pRule = crease::vertexRule(parentVertex, parent);
+    if (pRule == VertexRule::Smooth || pRule == VertexRule::Dart)
+        return smoothVertex(t, v, scheme);
+    MeshStencil mask = ruleVertex(t, v, scheme, pRule, parent);
+    if (!t.hasSharpness())
+        return mask;
+    const CreaseMethod method = t.options().creaseMethod;
+    const std::vector<float> child = crease::subdivideAroundVertex(parent, method);
+    const float childVertex = crease::decrement(parentVertex);
+    const VertexRule cRule = crease::vertexRule(childVertex, child);
+    if (cRule == pRule)
+        return mask;
+    const double w = crease::fractionalWeight(parentVertex, childVertex, parent, child, method);
+    for (auto &entry : mask)
+        entry.second *= w;
+    for (const auto &[p, u] : ruleVertex(t, v, scheme, cRule, child))
+        mask.emplace_back(p, (1.0 - w) * u);
+    return merged(std::move(mask));
 }
 
 // The corner of triangle f opposite edge e.
@@ -89,33 +127,132 @@ int opposite(const MeshTopology &t, int f, int e)
     return edge.v[0];
 }
 
-MeshStencil edgePoint(const MeshTopology &t, int e, MeshScheme scheme)
+MeshStencil smoothEdge(const MeshTopology &t, int e, MeshScheme scheme)
 {
     const auto &edge = t.edge(e);
-    if (edge.boundary())
-        return merged({{edge.v[0], 0.5}, {edge.v[1], 0.5}});
     if (scheme == MeshScheme::Loop)
         return merged({{edge.v[0], 0.375},
                        {edge.v[1], 0.375},
                        {opposite(t, edge.face[0], e), 0.125},
                        {opposite(t, edge.face[1], e), 0.125}});
-    MeshStencil s{{edge.v[0], 0.25}, {edge.v[1], 0.25}};
-    addFaceCentroid(s, t.face(edge.face[0]), 0.25);
-    addFaceCentroid(s, t.face(edge.face[1]), 0.25);
+    // OpenSubdiv's "smooth triangles": 0.47 toward a triangle's centre instead of 1/4.
+    double face = 0.25;
+    if (t.options().triangles == TriangleSubdivision::Smooth) {
+        const bool tri0 = t.face(edge.face[0]).size() == 3, tri1 = t.face(edge.face[1]).size() == 3;
+        if (tri0 || tri1)
+            face = 0.5 * ((tri0 ? 0.470 : 0.25) + (tri1 ? 0.470 : 0.25));
+    }
+    const double vertex = 0.5 * (1.0 - 2.0 * face);
+    MeshStencil s{{edge.v[0], vertex}, {edge.v[1], vertex}};
+    addFaceCentroid(s, t.face(edge.face[0]), face);
+    addFaceCentroid(s, t.face(edge.face[1]), face);
     return merged(std::move(s));
 }
 
-// The limit stencil of v, when every face at v is a quad (Catmull-Clark) or v is on the
-// boundary, of no face, or in a Loop mesh; nullopt otherwise.
+// The sharpness one level down of the half of edge e at its end v.
+float childHalf(const MeshTopology &t, int e, int v)
+{
+    const float s = t.edgeSharpness(e);
+    if (t.options().creaseMethod == CreaseMethod::Uniform || !crease::isSemiSharp(s))
+        return crease::decrement(s);
+    const auto &edges = t.ring(v).edges;
+    const auto k = std::size_t(std::find(edges.begin(), edges.end(), e) - edges.begin());
+    return crease::subdivideAroundVertex(t.ringSharpness(v), CreaseMethod::Chaikin)[k];
+}
+
+// The edge point, as Sdc::Scheme::ComputeEdgeVertexMask: the midpoint of a sharp edge whose
+// halves stay sharp, the smooth rule of a smooth edge, and the two blended by the sharpness of
+// an edge that becomes smooth at this level.
+MeshStencil edgePoint(const MeshTopology &t, int e, MeshScheme scheme)
+{
+    const auto &edge = t.edge(e);
+    const float s = t.edgeSharpness(e);
+    if (!crease::isSharp(s))
+        return smoothEdge(t, e, scheme);
+    MeshStencil mid{{edge.v[0], 0.5}, {edge.v[1], 0.5}};
+    if (edge.boundary() || crease::isInfinite(s)
+        || (crease::isSharp(childHalf(t, e, edge.v[0]))
+            && crease::isSharp(childHalf(t, e, edge.v[1]))))
+        return merged(std::move(mid));
+    const double w = s;
+    MeshStencil mask = smoothEdge(t, e, scheme);
+    for (auto &entry : mask)
+        entry.second *= 1.0 - w;
+    for (const auto &[p, u] : mid)
+        mask.emplace_back(p, w * u);
+    return merged(std::move(mask));
+}
+
+// The exact limit of a dart (one sharp edge ends at v): the left eigenvector for eigenvalue 1
+// of the subdivision matrix of its invariant neighbourhood -- v, its edge neighbours and (for
+// Catmull-Clark) the far corners of its quads -- built from the rules themselves. (The smooth
+// limit mask that OpenSubdiv's Limit() applies there ignores that the sharp edge's point is
+// its midpoint: an approximation that shrinks with the level.) nullopt for Catmull-Clark with a
+// face at v that is not a quad (taken after one step). With semi-sharp edges at v (before the
+// prelude's end) it is the fixed point of this level's rules, not yet the limit.
+std::optional<MeshStencil> dartLimit(const MeshTopology &t, int v, MeshScheme scheme)
+{
+    const auto &ring = t.ring(v);
+    std::vector<int> points{v};
+    std::vector<MeshStencil> rows{vertexPoint(t, v, scheme)};
+    for (int e : ring.edges) {
+        points.push_back(t.otherEnd(e, v));
+        rows.push_back(edgePoint(t, e, scheme));
+    }
+    if (scheme == MeshScheme::CatmullClark)
+        for (int f : ring.faces) {
+            const auto &face = t.face(f);
+            if (face.size() != 4)
+                return std::nullopt;
+            const int corner = int(std::find(face.begin(), face.end(), v) - face.begin());
+            points.push_back(face[std::size_t(corner + 2) % 4]);
+            MeshStencil centre;
+            addFaceCentroid(centre, face, 1.0);
+            rows.push_back(merged(std::move(centre)));
+        }
+    const int m = int(points.size());
+    Mat S = Mat::Zero(m, m);
+    for (int i = 0; i < m; ++i)
+        for (const auto &[p, w] : rows[std::size_t(i)]) {
+            const auto it = std::find(points.begin(), points.end(), p);
+            if (it == points.end())  // the rules' stencils stay in the neighbourhood
+                throw std::logic_error("dart limit: a stencil leaves the neighbourhood");
+            S(i, Eigen::Index(it - points.begin())) += w;
+        }
+    // l^T S = l^T, sum l = 1: the null space of (S - I)^T with the sum as one more equation.
+    Mat A(m + 1, m);
+    A.topRows(m) = (S - Mat::Identity(m, m)).transpose();
+    A.row(m).setOnes();
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(m + 1);
+    b(m) = 1.0;
+    const Eigen::VectorXd l = A.colPivHouseholderQr().solve(b);
+    MeshStencil s;
+    for (int i = 0; i < m; ++i)
+        if (l(i) != 0.0)
+            s.emplace_back(points[std::size_t(i)], l(i));
+    return merged(std::move(s));
+}
+
+// The limit stencil of v by its rule (Sdc::Scheme::ComputeVertexLimitMask): smooth vertices
+// the smooth mask (when every face at v is a quad for Catmull-Clark; nullopt otherwise), darts
+// their exact limit (above), crease vertices the crease mask, corners and vertices of no face
+// stay.
 std::optional<MeshStencil> directLimit(const MeshTopology &t, int v, MeshScheme scheme)
 {
     const auto &ring = t.ring(v);
     if (ring.edges.empty())
         return MeshStencil{{v, 1.0}};
-    if (ring.boundary) {
-        const auto [a, b] = boundaryNeighbours(t, v);
-        return merged(
-            {{v, kCreaseLimitSelf}, {a, kCreaseLimitNeighbour}, {b, kCreaseLimitNeighbour}});
+    const std::vector<float> sharpness = t.ringSharpness(v);
+    switch (crease::vertexRule(t.vertexSharpness(v), sharpness)) {
+    case VertexRule::Crease:
+        return creaseMask(v, creaseEnds(t, v, sharpness), kCreaseLimitSelf,
+                          kCreaseLimitNeighbour);
+    case VertexRule::Corner:
+        return MeshStencil{{v, 1.0}};
+    case VertexRule::Dart:
+        return dartLimit(t, v, scheme);
+    case VertexRule::Smooth:
+        break;
     }
     const int n = int(ring.edges.size());
     if (scheme == MeshScheme::Loop) {
@@ -136,6 +273,50 @@ std::optional<MeshStencil> directLimit(const MeshTopology &t, int v, MeshScheme 
         s.emplace_back(face[std::size_t(corner + 2) % 4], catmarkLimitDiagonal(n));
     }
     return merged(std::move(s));
+}
+
+// The sharp features of the refined mesh of r (faces in refineTopology's order).
+MeshSharpness childSharpness(const MeshTopology &t, MeshScheme scheme)
+{
+    MeshSharpness out;
+    out.options = t.options();
+    const int nf = t.faceCount();
+    if (t.hasHoles())
+        for (int f = 0; f < nf; ++f)
+            for (std::size_t k = 0, c = scheme == MeshScheme::Loop ? 4 : t.face(f).size(); k < c;
+                 ++k)
+                out.holes.push_back(t.hole(f) ? 1 : 0);
+    if (!t.hasSharpness())
+        return out;
+    out.vertices.resize(std::size_t(t.vertexCount()));
+    for (int v = 0; v < t.vertexCount(); ++v)
+        out.vertices[std::size_t(v)] = crease::decrement(t.vertexSharpness(v));
+    // The child sharpness of every half edge, around each vertex at once.
+    std::vector<std::vector<float>> around(std::size_t(t.vertexCount()));
+    for (int v = 0; v < t.vertexCount(); ++v)
+        around[std::size_t(v)] =
+            crease::subdivideAroundVertex(t.ringSharpness(v), t.options().creaseMethod);
+    const auto half = [&](int e, int v) {
+        const auto &edges = t.ring(v).edges;
+        const auto k = std::size_t(std::find(edges.begin(), edges.end(), e) - edges.begin());
+        return around[std::size_t(v)][k];
+    };
+    for (int f = 0; f < nf; ++f) {
+        const auto &c = t.face(f);
+        const auto &e = t.faceEdges(f);
+        const std::size_t k = c.size();
+        if (scheme == MeshScheme::CatmullClark) {
+            for (std::size_t i = 0; i < k; ++i)  // {v_i, e_i, f, e_(i-1)}
+                out.faceEdges.push_back({half(e[i], c[i]), kSharpnessSmooth, kSharpnessSmooth,
+                                         half(e[(i + k - 1) % k], c[i])});
+        } else {  // {c0, e0, e2}, {c1, e1, e0}, {c2, e2, e1}, {e0, e1, e2}
+            for (std::size_t i = 0; i < 3; ++i)
+                out.faceEdges.push_back(
+                    {half(e[i], c[i]), kSharpnessSmooth, half(e[(i + 2) % 3], c[i])});
+            out.faceEdges.push_back({kSharpnessSmooth, kSharpnessSmooth, kSharpnessSmooth});
+        }
+    }
+    return out;
 }
 
 } // namespace
@@ -162,7 +343,7 @@ Refinement refineTopology(const MeshTopology &t, MeshScheme scheme)
                     f, t.face(f).size()));
     r.stencils.reserve(std::size_t(nv + ne + (scheme == MeshScheme::CatmullClark ? nf : 0)));
     for (int v = 0; v < nv; ++v)
-        r.stencils.push_back(scheme == MeshScheme::Loop ? loopVertex(t, v) : catmarkVertex(t, v));
+        r.stencils.push_back(vertexPoint(t, v, scheme));
     for (int e = 0; e < ne; ++e)
         r.stencils.push_back(edgePoint(t, e, scheme));
     const auto edgeChild = [nv](int e) { return nv + e; };
@@ -191,7 +372,15 @@ Refinement refineTopology(const MeshTopology &t, MeshScheme scheme)
             r.faces.push_back({e0, e1, e2});
         }
     }
+    r.sharpness = childSharpness(t, scheme);
     return r;
+}
+
+MeshTopology refinedTopology(const Refinement &r)
+{
+    MeshTopology child(int(r.stencils.size()), r.faces);
+    child.applySharpness(r.sharpness);
+    return child;
 }
 
 Mat applyStencils(const std::vector<MeshStencil> &stencils, const Mat &data)
@@ -207,13 +396,17 @@ Mesh refineMesh(const Mesh &mesh, MeshScheme scheme, int steps)
 {
     MeshTopology t = checkMesh(mesh, scheme);
     Mesh m = mesh;
+    m.tags = {};
     for (int k = 0; k < steps; ++k) {
-        if (k > 0)
-            t = MeshTopology(int(m.vertices.rows()), m.faces);
         Refinement r = refineTopology(t, scheme);
         m.vertices = applyStencils(r.stencils, m.vertices);
+        t = refinedTopology(r);
         m.faces = std::move(r.faces);
     }
+    if (steps > 0 && (t.hasSharpness() || t.hasHoles() || !(t.options() == MeshOptions{})))
+        m.tags = tagsOf(t);
+    else if (steps == 0)
+        m.tags = mesh.tags;
     return m;
 }
 
@@ -231,16 +424,63 @@ std::vector<MeshStencil> limitStencils(const MeshTopology &t, MeshScheme scheme)
         return out;
     // After one step every face at a vertex point is a quad; the vertex keeps its number.
     const Refinement r = refineTopology(t, scheme);
-    const MeshTopology child(int(r.stencils.size()), r.faces);
+    const MeshTopology child = refinedTopology(r);
     for (int v : later)
         out[std::size_t(v)] = composeStencils(*directLimit(child, v, scheme), r.stencils);
     return out;
 }
 
+MeshTags tagsOf(const MeshTopology &t)
+{
+    MeshTags tags;
+    tags.options = t.options();
+    if (t.hasSharpness()) {
+        for (int e = 0; e < t.edgeCount(); ++e)
+            if (!t.edge(e).boundary() && crease::isSharp(t.edgeSharpness(e)))
+                tags.edges.push_back({t.edge(e).v[0], t.edge(e).v[1], t.edgeSharpness(e)});
+        for (int v = 0; v < t.vertexCount(); ++v)
+            if (crease::isSharp(t.vertexSharpness(v)))
+                tags.vertices.push_back({v, t.vertexSharpness(v)});
+    }
+    for (int f = 0; f < t.faceCount() && t.hasHoles(); ++f)
+        if (t.hole(f))
+            tags.holes.push_back(f);
+    return tags;
+}
+
+int preludeLevels(const MeshTopology &t)
+{
+    if (!t.hasSharpness())
+        return 0;
+    float top = 0.0f;
+    for (int e = 0; e < t.edgeCount(); ++e)
+        if (crease::isSemiSharp(t.edgeSharpness(e)))
+            top = std::max(top, t.edgeSharpness(e));
+    for (int v = 0; v < t.vertexCount(); ++v)
+        if (crease::isSemiSharp(t.vertexSharpness(v)))
+            top = std::max(top, t.vertexSharpness(v));
+    return int(std::ceil(top));
+}
+
 Mat limitPositions(const Mesh &mesh, MeshScheme scheme)
 {
-    const MeshTopology t = checkMesh(mesh, scheme);
-    return applyStencils(limitStencils(t, scheme), mesh.vertices);
+    MeshTopology t = checkMesh(mesh, scheme);
+    // Past the semi-sharp features (vertex v keeps its number at every level).
+    Mat points = mesh.vertices;
+    for (int level = 0, levels = preludeLevels(t); level < levels; ++level) {
+        if ((long long)t.faceCount() * 4 > kMaxPreludeFaces)
+            throw InputError(formatMessage(
+                coreTranslate("awb::mesh",
+                              "the semi-sharp features last %1 levels; the mesh would have "
+                              "more than %2 faces before its limit positions can be taken"),
+                levels, kMaxPreludeFaces));
+        const Refinement r = refineTopology(t, scheme);
+        points = applyStencils(r.stencils, points);
+        t = refinedTopology(r);
+    }
+    std::vector<MeshStencil> limits = limitStencils(t, scheme);
+    limits.resize(std::size_t(mesh.vertices.rows()));
+    return applyStencils(limits, points);
 }
 
 } // namespace awb

@@ -21,14 +21,24 @@ using MeshStencil = std::vector<std::pair<int, double>>;
 struct Refinement {
     std::vector<std::vector<int>> faces;  // of the refined mesh, counter-clockwise
     std::vector<MeshStencil> stencils;    // one per point of the refined mesh (numbered as above)
+    MeshSharpness sharpness;              // its sharp features one level down (MeshTags.h)
 };
 
 // `outer` (over the points of a refinement) as a stencil over the old points, given the
 // refinement's stencils `inner`.
 MeshStencil composeStencils(const MeshStencil &outer, const std::vector<MeshStencil> &inner);
 
-// One step on a topology (checked: triangles only for Loop; InputError otherwise).
+// One step on a topology (checked: triangles only for Loop; InputError otherwise), with the
+// rules of its sharp features as OpenSubdiv 3.5 applies them (Sdc::Scheme's masks with the
+// rule of each vertex and edge, semi-sharp features blended where they end).
 Refinement refineTopology(const MeshTopology &topology, MeshScheme scheme);
+
+// The topology of the refined mesh, with its sharp features.
+MeshTopology refinedTopology(const Refinement &refinement);
+
+// The tags that give `topology`'s sharp features back (interior edges and vertices of nonzero
+// sharpness, holes, options).
+MeshTags tagsOf(const MeshTopology &topology);
 
 // rows of data (one per old point) -> one row per stencil.
 Mat applyStencils(const std::vector<MeshStencil> &stencils, const Mat &data);
@@ -37,11 +47,17 @@ Mat applyStencils(const std::vector<MeshStencil> &stencils, const Mat &data);
 Mesh refineMesh(const Mesh &mesh, MeshScheme scheme, int steps = 1);
 
 // The limit position of every vertex of the topology as a stencil on its vertices: the masks of
-// MeshRules.h; for a Catmull-Clark vertex next to a face that is not a quad, the mask of its
+// MeshRules.h by each vertex's rule at this level (as OpenSubdiv's PrimvarRefiner::Limit: a
+// semi-sharp feature counts as sharp; limitPositions() refines past them first); for a Catmull-Clark vertex next to a face that is not a quad, the mask of its
 // point after one step composed with that step. A vertex of no face stays where it is.
 std::vector<MeshStencil> limitStencils(const MeshTopology &topology, MeshScheme scheme);
 
-// The limit positions of the mesh's vertices (n x 3).
+// The limit positions of the mesh's vertices (n x 3): the limit stencils after the levels
+// that its semi-sharp features last (at most 10; InputError when that mesh would pass
+// kMaxPreludeFaces faces).
+constexpr long long kMaxPreludeFaces = 4000000;
+// The levels the semi-sharp features of `topology` last (0 when none).
+int preludeLevels(const MeshTopology &topology);
 Mat limitPositions(const Mesh &mesh, MeshScheme scheme);
 
 } // namespace awb

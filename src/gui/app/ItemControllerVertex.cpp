@@ -139,7 +139,7 @@ void ItemController::showVertex()
             std::vector<int> valences;
             const auto vertices = mesh->extraordinary();  // held: the loop reads it
             for (const ExtraordinaryVertex &e : *vertices)
-                if (!e.boundary)
+                if (e.smoothInterior())
                     valences.push_back(e.valence);
             m_valences->setScheme(mesh->scheme(), std::move(valences));
         } else {
@@ -156,7 +156,7 @@ void ItemController::showVertex()
         return;
     }
     std::optional<VertexSpectrum> interior;
-    if (!e->boundary && ringAnalysable(e->valence))
+    if (e->smoothInterior() && ringAnalysable(e->valence))
         interior = *sharedVertexSpectrum(mesh->scheme(), e->valence);
     QString where = focusedVertexName();
     if (!where.isEmpty())

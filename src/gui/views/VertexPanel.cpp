@@ -151,9 +151,13 @@ QString VertexPanel::verdictHtml(const ExtraordinaryVertex &e, MeshScheme scheme
                                  const std::optional<VertexSpectrum> &interior,
                                  const QString &where)
 {
-    const QString kind = tr("valence %1, %2, %3")
+    const QString rule = e.rule == "dart"     ? tr("a dart (one sharp edge ends here)")
+                         : e.rule == "crease" ? tr("on a crease")
+                         : e.rule == "corner" ? tr("a corner")
+                                              : tr("smooth");
+    const QString kind = tr("valence %1, %2, %3, %4")
                              .arg(e.valence)
-                             .arg(e.boundary ? tr("on the boundary") : tr("interior"),
+                             .arg(e.boundary ? tr("on the boundary") : tr("interior"), rule,
                                   schemeName(scheme));
     QString html = QStringLiteral("<p><b>%1</b> — %2</p>").arg(where.toHtmlEscaped(), kind);
     if (!e.note.empty()) {
@@ -168,14 +172,15 @@ QString VertexPanel::verdictHtml(const ExtraordinaryVertex &e, MeshScheme scheme
         return html;
     }
     const QString ring =
-        e.boundary ? tr("Local subdivision matrix S: %1 × %1 (the net of the vertex's piece).")
+        !e.smoothInterior()
+            ? tr("Local subdivision matrix S: %1 × %1 (the net of the vertex's piece).")
                    : tr("Local subdivision matrix S: %1 × %1 (the vertex and every point "
                         "within two faces of it).");
     html += QStringLiteral("<p>%1</p>").arg(ring.arg(e.ringSize));
     const double l = e.subdominant, m = e.subsubdominant;
     QString numbers =
         tr("λ₁ = 1, λ = %1, μ = %2, λ² = %3").arg(number(l), number(m), number(l * l));
-    if (!e.boundary) {
+    if (e.smoothInterior()) {
         // The formula itself, with n put in, and what it gives (Stam 1998 for Catmull-Clark).
         const QString n = QString::number(e.valence);
         const QString form = scheme == MeshScheme::Loop
@@ -188,11 +193,11 @@ QString VertexPanel::verdictHtml(const ExtraordinaryVertex &e, MeshScheme scheme
                             number(closedFormSubdominant(scheme, e.valence)));
     }
     html += QStringLiteral("<p>%1</p>").arg(numbers);
-    if (e.boundary || !interior) {
+    if (!e.smoothInterior() || !interior) {
         html += QStringLiteral("<p>%1</p>").arg(
-            tr("Reif's criterion is decided here for interior vertices only: a boundary "
-               "vertex follows the crease rules, whose analysis needs the boundary's own "
-               "characteristic map."));
+            tr("Reif's criterion is decided here for smooth interior vertices only: a "
+               "boundary vertex or a sharp feature follows the crease rules, whose analysis "
+               "needs the half-ring's own characteristic map."));
     } else {
         const VertexSpectrum &s = *interior;
         const CharacteristicMap &c = s.characteristic;

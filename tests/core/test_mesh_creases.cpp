@@ -1,0 +1,295 @@
+// Sharp features against OpenSubdiv 3.5 (issue 44): creases (semi-sharp and infinite), corners,
+// holes, the three boundary interpolations, uniform and Chaikin creasing, smooth triangles.
+// - OpenSubdiv's own regression shapes (tests/core/data/opensubdiv: the small ones of its
+//   regression/shapes, as OBJ with their `t` lines) read by our reader: the points of levels 1
+//   and 2 equal OpenSubdiv's; where the semi-sharp features end within 3 levels, the limit
+//   positions of the input vertices equal OpenSubdiv's limits at that level, and the mesh's IFS
+//   (pieces with a prelude) gives the limits of OpenSubdiv's refined vertices there.
+// - Random sharp features on open meshes of every valence, both schemes: levels 1 to 3, limits,
+//   and the IFS against our own refinement where OpenSubdiv's limit is not yet the limit.
+// Tolerance: 1e-9 of the bounding box's diagonal (the rules are the same; OpenSubdiv keeps
+// sharpness as float, and so do we).
+
+#include "core/mesh/Mesh.h"
+#include "core/mesh/MeshFiles.h"
+#include "core/mesh/MeshIterate.h"
+#include "core/mesh/MeshPieces.h"
+#include "core/mesh/MeshRefine.h"
+
+#include <QDir>
+#include <QtTest>
+
+#include "OpenSubdivReference.h"
+#include "PointSets.h"
+#include "TestMain.h"
+#include "TestPaths.h"
+
+#include <random>
+
+using namespace awb;
+using namespace awb::test;
+
+namespace {
+
+Mat ifsLimits(const Mesh &mesh, MeshScheme scheme, int depth)
+{
+    const MeshPieces pieces = buildMeshPieces(mesh, scheme);
+    std::vector<RowVec> rows;
+    CallbackSink sink([&](const Mat &v, StartSet::Kind, const std::uint8_t *, int) {
+        for (Eigen::Index r = 0; r < v.rows(); ++r)
+            rows.push_back(v.row(r));
+    });
+    iterateMesh(pieces, mesh.vertices, {}, depth, {&sink});
+    Mat out(Eigen::Index(rows.size()), 3);
+    for (std::size_t r = 0; r < rows.size(); ++r)
+        out.row(Eigen::Index(r)) = rows[r];
+    return out;
+}
+
+int preludeOf(const Mesh &mesh, MeshScheme scheme)
+{
+    return preludeLevels(checkMesh(mesh, scheme));
+}
+
+// The largest differences of our refinement from OpenSubdiv's at `levels`: the input vertices'
+// points, all points (as sets).
+std::pair<double, double> refinementDifference(const Mesh &mesh, MeshScheme scheme, int levels)
+{
+    const OsdResult reference = openSubdiv(mesh, scheme, levels);
+    const Mesh ours = refineMesh(mesh, scheme, levels);
+    if (ours.vertices.rows() != reference.points.rows())
+        return {INFINITY, INFINITY};
+    const Eigen::Index n = mesh.vertices.rows();
+    const double first =
+        (ours.vertices.topRows(n) - reference.points.topRows(n)).rowwise().norm().maxCoeff();
+    return {first, setDistance(ours.vertices, reference.points)};
+}
+
+// The input vertices that are darts once the semi-sharp features have ended (after `prelude`
+// levels): there OpenSubdiv's Limit() applies the smooth mask, which is not the limit.
+std::vector<char> dartsAfter(const Mesh &mesh, MeshScheme scheme, int prelude)
+{
+    const MeshTopology t = checkMesh(refineMesh(mesh, scheme, prelude), scheme);
+    std::vector<char> dart(std::size_t(mesh.vertices.rows()), 0);
+    for (int v = 0; v < int(dart.size()); ++v)
+        dart[std::size_t(v)] = t.valence(v) > 0 && t.rule(v) == VertexRule::Dart;
+    return dart;
+}
+
+// Our limits against OpenSubdiv's after `prelude` levels: equal at every vertex but the darts;
+// at the darts OpenSubdiv's Limit() after prelude + k levels converges to ours (its error at
+// least halves in 3 levels). Returns a failure message, or an empty string.
+QString compareLimits(const Mesh &mesh, MeshScheme scheme, int prelude, double tol)
+{
+    const Mat ours = limitPositions(mesh, scheme);
+    const std::vector<char> dart = dartsAfter(mesh, scheme, prelude);
+    const Eigen::Index n = mesh.vertices.rows();
+    const OsdResult reference = openSubdiv(mesh, scheme, prelude);
+    double worst = 0, dartBefore = 0;
+    for (Eigen::Index v = 0; v < n; ++v) {
+        const double d = (ours.row(v) - reference.limits.row(v)).norm();
+        (dart[std::size_t(v)] ? dartBefore : worst) = std::max(dart[std::size_t(v)] ? dartBefore
+                                                                                    : worst,
+                                                               d);
+    }
+    if (worst >= tol)
+        return QStringLiteral("limits after %1 levels: %2").arg(prelude).arg(worst);
+    if (dartBefore == 0 || mesh.faces.size() > 100)
+        return {};
+    const OsdResult deeper = openSubdiv(mesh, scheme, prelude + 3);
+    double dartAfter = 0;
+    for (Eigen::Index v = 0; v < n; ++v)
+        if (dart[std::size_t(v)])
+            dartAfter = std::max(dartAfter, (ours.row(v) - deeper.limits.row(v)).norm());
+    if (!(dartAfter < 0.5 * dartBefore))
+        return QStringLiteral("darts: OpenSubdiv's limit mask %1 from ours after %2 levels, "
+                              "%3 after %4")
+            .arg(dartBefore)
+            .arg(prelude)
+            .arg(dartAfter)
+            .arg(prelude + 3);
+    qInfo("darts: OpenSubdiv's Limit() is %.3g from the exact limit after %d levels, %.3g "
+          "after %d",
+          dartBefore, prelude, dartAfter, prelude + 3);
+    return {};
+}
+
+} // namespace
+
+class TestMeshCreases : public QObject {
+    Q_OBJECT
+private slots:
+    void regressionShapes_data();
+    void regressionShapes();
+    void randomSharpFeatures_data();
+    void randomSharpFeatures();
+    void semiSharpPiecesHaveAPrelude();
+};
+
+void TestMeshCreases::regressionShapes_data()
+{
+    QTest::addColumn<QString>("path");
+    const QDir dir(sourceDir() + "/tests/core/data/opensubdiv");
+    const QStringList files = dir.entryList({"*.obj"}, QDir::Files, QDir::Name);
+    QVERIFY(files.size() >= 40);
+    for (const QString &f : files)
+        QTest::newRow(qPrintable(f)) << dir.filePath(f);
+}
+
+void TestMeshCreases::regressionShapes()
+{
+    QFETCH(QString, path);
+    const MeshScheme scheme = QFileInfo(path).fileName().startsWith("loop_")
+                                  ? MeshScheme::Loop
+                                  : MeshScheme::CatmullClark;
+    std::vector<std::string> notes;
+    const Mesh mesh = readMesh(path.toStdString(), &notes);
+    // Only the tags this version does not apply are notes (hierarchical edits, face-varying
+    // data's options).
+    for (const std::string &note : notes)
+        QVERIFY2(note.find("vertexedit") != std::string::npos
+                     || note.find("edgeedit") != std::string::npos
+                     || note.find("facevarying") != std::string::npos,
+                 note.c_str());
+    const double tol = 1e-9 * diagonal(mesh.vertices);
+    const int levels = mesh.faces.size() <= 24 ? 3 : 2;
+    for (int level = 1; level <= levels; ++level) {
+        const auto [first, all] = refinementDifference(mesh, scheme, level);
+        QVERIFY2(first < tol && all < tol,
+                 qPrintable(QStringLiteral("level %1: vertices %2, all points %3 (tolerance %4)")
+                                .arg(level)
+                                .arg(first)
+                                .arg(all)
+                                .arg(tol)));
+    }
+    // Limits where OpenSubdiv's are the limit: past the semi-sharp features.
+    const int prelude = std::max(preludeOf(mesh, scheme), 1);
+    if (prelude > 3)
+        return;
+    const QString limits = compareLimits(mesh, scheme, prelude, tol);
+    QVERIFY2(limits.isEmpty(), qPrintable(limits));
+    if (prelude > 2)
+        return;
+    // The IFS's vertex limits at depth `prelude` are OpenSubdiv's limits of that level, but at
+    // the darts (of that level: OpenSubdiv's mask is not the limit there). Every OpenSubdiv
+    // limit of a vertex of a face that is not a hole, but the darts', is an IFS point; without
+    // darts, every IFS point is one of OpenSubdiv's.
+    const OsdResult reference = openSubdiv(mesh, scheme, prelude);
+    const Mesh refined = refineMesh(mesh, scheme, prelude);
+    const std::vector<char> darts = dartsAfter(refined, scheme, 0);
+    const bool anyDart = std::find(darts.begin(), darts.end(), 1) != darts.end();
+    const bool whole = mesh.tags.holes.empty()
+                       && mesh.tags.options.boundary != BoundaryInterpolation::None;
+    const Mat ifs = ifsLimits(mesh, scheme, prelude);
+    const double cell = 1e-6 * diagonal(reference.limits);
+    std::vector<Eigen::Index> kept;
+    for (Eigen::Index r = 0; r < reference.limits.rows(); ++r)
+        if (!darts[std::size_t(r)])
+            kept.push_back(r);
+    const double back =
+        whole ? directedDistance(reference.limits(kept, Eigen::all), ifs, cell, 2) : 0.0;
+    const double into = anyDart ? 0.0 : directedDistance(ifs, reference.limits, cell, 2);
+    QVERIFY2(into < tol && back < tol,
+             qPrintable(QStringLiteral("the IFS at depth %1: %2 from OpenSubdiv's limits, "
+                                       "theirs %3 from the IFS's")
+                            .arg(prelude)
+                            .arg(into)
+                            .arg(back)));
+}
+
+void TestMeshCreases::randomSharpFeatures_data()
+{
+    QTest::addColumn<int>("valence");
+    QTest::addColumn<bool>("loop");
+    QTest::addColumn<int>("seed");
+    for (bool loop : {false, true})
+        for (int n = 3; n <= 7; ++n)
+            for (int seed = 0; seed < 3; ++seed)
+                QTest::addRow("%s, valence %d, seed %d", loop ? "Loop" : "Catmull-Clark", n, seed)
+                    << n << loop << seed;
+}
+
+void TestMeshCreases::randomSharpFeatures()
+{
+    QFETCH(int, valence);
+    QFETCH(bool, loop);
+    QFETCH(int, seed);
+    std::mt19937 random(std::uint32_t(7000 + 100 * seed + valence + 17 * loop));
+    const MeshScheme scheme = loop ? MeshScheme::Loop : MeshScheme::CatmullClark;
+    Mesh mesh = star(valence, 3, loop, random);
+    const MeshTopology plain = checkMesh(mesh, scheme);
+    std::uniform_real_distribution<double> chance(0.0, 1.0);
+    const float edgeValues[] = {0.4f, 1.0f, 1.6f, 2.5f, 10.0f};
+    const float cornerValues[] = {0.7f, 2.0f, 10.0f};
+    for (int e = 0; e < plain.edgeCount(); ++e)
+        if (!plain.edge(e).boundary() && chance(random) < 0.3)
+            mesh.tags.edges.push_back({plain.edge(e).v[0], plain.edge(e).v[1],
+                                       edgeValues[random() % 5]});
+    for (int v = 0; v < plain.vertexCount(); ++v)
+        if (chance(random) < 0.08)
+            mesh.tags.vertices.push_back({v, cornerValues[random() % 3]});
+    mesh.tags.options.boundary = BoundaryInterpolation(random() % 3);
+    mesh.tags.options.creaseMethod = seed == 1 ? CreaseMethod::Chaikin : CreaseMethod::Uniform;
+    if (!loop && seed == 2)
+        mesh.tags.options.triangles = TriangleSubdivision::Smooth;
+    if (seed == 2)
+        mesh.tags.holes.push_back(int(random() % mesh.faces.size()));
+    const double tol = 1e-9 * diagonal(mesh.vertices);
+    for (int level = 1; level <= 3; ++level) {
+        const auto [first, all] = refinementDifference(mesh, scheme, level);
+        QVERIFY2(first < tol && all < tol,
+                 qPrintable(QStringLiteral("level %1: vertices %2, all points %3")
+                                .arg(level)
+                                .arg(first)
+                                .arg(all)));
+    }
+    const int prelude = std::max(preludeOf(mesh, scheme), 1);
+    QVERIFY(prelude <= 3);
+    const QString limits = compareLimits(mesh, scheme, prelude, tol);
+    QVERIFY2(limits.isEmpty(), qPrintable(limits));
+    // The IFS at depth 1 against the limits of our level 1 (its semi-sharp features still
+    // ahead: OpenSubdiv's Limit() would take them as sharp).
+    const Mesh level1 = refineMesh(mesh, scheme, 1);
+    const Mat ours = limitPositions(level1, scheme);
+    const Mat ifs = ifsLimits(mesh, scheme, 1);
+    const double d = std::max(directedDistance(ifs, ours, 1e-6 * diagonal(ours), 2),
+                              seed == 2 || mesh.tags.options.boundary == BoundaryInterpolation::None
+                                  ? 0.0
+                                  : directedDistance(ours, ifs, 1e-6 * diagonal(ours), 2));
+    QVERIFY2(d < tol, qPrintable(QStringLiteral("the IFS at depth 1: %1").arg(d)));
+}
+
+void TestMeshCreases::semiSharpPiecesHaveAPrelude()
+{
+    // catmark_cube_creases1's semi-sharp creases (sharpness up to 3 by its tags): piece types
+    // whose vertex chain settles only after the prelude, and a limit that differs from the
+    // uncreased cube's by a visible amount (the crease is there).
+    const Mesh mesh =
+        readMesh((sourceDir() + "/tests/core/data/opensubdiv/catmark_cube_creases1.obj")
+                     .toStdString());
+    QVERIFY(!mesh.tags.edges.empty());
+    const MeshPieces pieces = buildMeshPieces(mesh, MeshScheme::CatmullClark);
+    int longest = 0;
+    for (std::size_t t = 0; t < pieces.types.size(); ++t) {
+        if (pieces.types[t].kind != MeshPieceType::Kind::Vertex)
+            continue;
+        int chain = 0;
+        for (int type = int(t); pieces.types[std::size_t(type)].children.front().type != type;
+             type = pieces.types[std::size_t(type)].children.front().type)
+            ++chain;
+        longest = std::max(longest, chain);
+        QVERIFY(settledType(pieces, int(t)) >= 0);
+    }
+    QVERIFY2(longest >= 2, qPrintable(QString::number(longest)));
+    Mesh smooth = mesh;
+    smooth.tags = {};
+    const double moved = (limitPositions(mesh, MeshScheme::CatmullClark)
+                          - limitPositions(smooth, MeshScheme::CatmullClark))
+                             .rowwise()
+                             .norm()
+                             .maxCoeff();
+    QVERIFY2(moved > 0.01 * diagonal(mesh.vertices), qPrintable(QString::number(moved)));
+}
+
+AWB_TEST_MAIN(TestMeshCreases)
+#include "test_mesh_creases.moc"
