@@ -4542,6 +4542,54 @@ Schéma subdivize:</translation>
         <source>Automaton</source>
         <translation>Automat</translation>
     </message>
+    <message>
+        <source>Edge %1–%2: sharpness %3 (Item &gt; Crease Edge… changes it)</source>
+        <translation>Hrana %1–%2: ostrost %3 (změní ji Položka &gt; Ostrá hrana…)</translation>
+    </message>
+    <message>
+        <source>&amp;Crease Edge…</source>
+        <translation>&amp;Ostrá hrana…</translation>
+    </message>
+    <message>
+        <source>The sharpness of the mesh edge clicked in the 3D view</source>
+        <translation>Ostrost hrany sítě, na kterou jste klikli ve 3D pohledu</translation>
+    </message>
+    <message>
+        <source>Sharpen &amp;Vertex…</source>
+        <translation>Zostřit &amp;vrchol…</translation>
+    </message>
+    <message>
+        <source>The corner sharpness of the mesh vertex clicked in the 3D view</source>
+        <translation>Ostrost rohu ve vrcholu sítě, na který jste klikli ve 3D pohledu</translation>
+    </message>
+    <message>
+        <source>Sharp features belong to mesh surfaces: choose one first</source>
+        <translation>Ostré prvky patří plochám ze sítí: nejdříve jednu vyberte</translation>
+    </message>
+    <message>
+        <source>Click an edge of the control mesh in the 3D view first</source>
+        <translation>Nejdříve klikněte ve 3D pohledu na hranu řídicí sítě</translation>
+    </message>
+    <message>
+        <source>Click a vertex of the control mesh in the 3D view first</source>
+        <translation>Nejdříve klikněte ve 3D pohledu na vrchol řídicí sítě</translation>
+    </message>
+    <message>
+        <source>Crease Edge</source>
+        <translation>Ostrá hrana</translation>
+    </message>
+    <message>
+        <source>Sharpness of the edge from vertex %1 to vertex %2 (0: smooth; the crease rules for that many levels; 10: for ever):</source>
+        <translation>Ostrost hrany z vrcholu %1 do vrcholu %2 (0: hladká; pravidla ostré hrany po tolik úrovní; 10: navždy):</translation>
+    </message>
+    <message>
+        <source>Sharpen Vertex</source>
+        <translation>Zostřit vrchol</translation>
+    </message>
+    <message>
+        <source>Sharpness of vertex %1 (0: smooth; a corner for that many levels; 10: for ever):</source>
+        <translation>Ostrost vrcholu %1 (0: hladký; roh po tolik úrovní; 10: navždy):</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>

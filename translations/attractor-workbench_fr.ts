@@ -4536,6 +4536,54 @@ Schéma de subdivision&#xa0;:</translation>
         <source>Automaton</source>
         <translation>Automate</translation>
     </message>
+    <message>
+        <source>Edge %1–%2: sharpness %3 (Item &gt; Crease Edge… changes it)</source>
+        <translation>Arête %1–%2 : netteté %3 (Élément &gt; Arête vive… la change)</translation>
+    </message>
+    <message>
+        <source>&amp;Crease Edge…</source>
+        <translation>&amp;Arête vive…</translation>
+    </message>
+    <message>
+        <source>The sharpness of the mesh edge clicked in the 3D view</source>
+        <translation>La netteté de l’arête du maillage cliquée dans la vue 3D</translation>
+    </message>
+    <message>
+        <source>Sharpen &amp;Vertex…</source>
+        <translation>Rendre le &amp;sommet vif…</translation>
+    </message>
+    <message>
+        <source>The corner sharpness of the mesh vertex clicked in the 3D view</source>
+        <translation>La netteté de coin du sommet du maillage cliqué dans la vue 3D</translation>
+    </message>
+    <message>
+        <source>Sharp features belong to mesh surfaces: choose one first</source>
+        <translation>Les éléments vifs appartiennent aux surfaces de maillage : choisissez-en une d’abord</translation>
+    </message>
+    <message>
+        <source>Click an edge of the control mesh in the 3D view first</source>
+        <translation>Cliquez d’abord sur une arête du maillage de contrôle dans la vue 3D</translation>
+    </message>
+    <message>
+        <source>Click a vertex of the control mesh in the 3D view first</source>
+        <translation>Cliquez d’abord sur un sommet du maillage de contrôle dans la vue 3D</translation>
+    </message>
+    <message>
+        <source>Crease Edge</source>
+        <translation>Arête vive</translation>
+    </message>
+    <message>
+        <source>Sharpness of the edge from vertex %1 to vertex %2 (0: smooth; the crease rules for that many levels; 10: for ever):</source>
+        <translation>Netteté de l’arête du sommet %1 au sommet %2 (0 : lisse ; les règles d’arête vive pendant autant de niveaux ; 10 : pour toujours) :</translation>
+    </message>
+    <message>
+        <source>Sharpen Vertex</source>
+        <translation>Rendre le sommet vif</translation>
+    </message>
+    <message>
+        <source>Sharpness of vertex %1 (0: smooth; a corner for that many levels; 10: for ever):</source>
+        <translation>Netteté du sommet %1 (0 : lisse ; un coin pendant autant de niveaux ; 10 : pour toujours) :</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>

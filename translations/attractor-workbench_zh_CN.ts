@@ -4530,6 +4530,54 @@ Subdivision scheme:</source>
         <source>Automaton</source>
         <translation>自动机</translation>
     </message>
+    <message>
+        <source>Edge %1–%2: sharpness %3 (Item &gt; Crease Edge… changes it)</source>
+        <translation>边 %1–%2：锐度 %3（可用“对象 &gt; 折痕边…”更改）</translation>
+    </message>
+    <message>
+        <source>&amp;Crease Edge…</source>
+        <translation>折痕边(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>The sharpness of the mesh edge clicked in the 3D view</source>
+        <translation>在三维视图中点击的网格边的锐度</translation>
+    </message>
+    <message>
+        <source>Sharpen &amp;Vertex…</source>
+        <translation>锐化顶点(&amp;V)…</translation>
+    </message>
+    <message>
+        <source>The corner sharpness of the mesh vertex clicked in the 3D view</source>
+        <translation>在三维视图中点击的网格顶点的角点锐度</translation>
+    </message>
+    <message>
+        <source>Sharp features belong to mesh surfaces: choose one first</source>
+        <translation>尖锐特征属于网格曲面：请先选择一个</translation>
+    </message>
+    <message>
+        <source>Click an edge of the control mesh in the 3D view first</source>
+        <translation>请先在三维视图中点击控制网格的一条边</translation>
+    </message>
+    <message>
+        <source>Click a vertex of the control mesh in the 3D view first</source>
+        <translation>请先在三维视图中点击控制网格的一个顶点</translation>
+    </message>
+    <message>
+        <source>Crease Edge</source>
+        <translation>折痕边</translation>
+    </message>
+    <message>
+        <source>Sharpness of the edge from vertex %1 to vertex %2 (0: smooth; the crease rules for that many levels; 10: for ever):</source>
+        <translation>从顶点 %1 到顶点 %2 的边的锐度（0：光滑；在这么多层内使用折痕规则；10：永久）：</translation>
+    </message>
+    <message>
+        <source>Sharpen Vertex</source>
+        <translation>锐化顶点</translation>
+    </message>
+    <message>
+        <source>Sharpness of vertex %1 (0: smooth; a corner for that many levels; 10: for ever):</source>
+        <translation>顶点 %1 的锐度（0：光滑；在这么多层内为角点；10：永久）：</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>

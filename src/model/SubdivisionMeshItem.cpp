@@ -11,6 +11,7 @@
 
 #include <QJsonArray>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -139,6 +140,57 @@ bool SubdivisionMeshItem::setMesh(const Mesh &mesh, MeshScheme scheme, QString *
     next.faces = mesh.faces;
     next.tags = mesh.tags;
     return setInputs(next, error);
+}
+
+bool SubdivisionMeshItem::setEdgeSharpness(int a, int b, float sharpness, QString *error)
+{
+    if (!(sharpness >= 0.0f) || !std::isfinite(sharpness)) {
+        if (error)
+            *error = tr("a sharpness is a number of 0 or more (10 or more: infinitely sharp)");
+        return false;
+    }
+    MeshInputs next = m_inputs;
+    auto &edges = next.tags.edges;
+    const auto same = [a, b](const SharpEdge &e) {
+        return (e.a == a && e.b == b) || (e.a == b && e.b == a);
+    };
+    edges.erase(std::remove_if(edges.begin(), edges.end(), same), edges.end());
+    if (sharpness > 0.0f)
+        edges.push_back({a, b, sharpness});
+    return next == m_inputs || setInputs(next, error);
+}
+
+bool SubdivisionMeshItem::setVertexSharpness(int v, float sharpness, QString *error)
+{
+    if (!(sharpness >= 0.0f) || !std::isfinite(sharpness)) {
+        if (error)
+            *error = tr("a sharpness is a number of 0 or more (10 or more: infinitely sharp)");
+        return false;
+    }
+    MeshInputs next = m_inputs;
+    auto &vertices = next.tags.vertices;
+    vertices.erase(std::remove_if(vertices.begin(), vertices.end(),
+                                  [v](const SharpVertex &c) { return c.vertex == v; }),
+                   vertices.end());
+    if (sharpness > 0.0f)
+        vertices.push_back({v, sharpness});
+    return next == m_inputs || setInputs(next, error);
+}
+
+float SubdivisionMeshItem::edgeSharpness(int a, int b) const
+{
+    for (const SharpEdge &e : m_inputs.tags.edges)
+        if ((e.a == a && e.b == b) || (e.a == b && e.b == a))
+            return e.sharpness;
+    return kSharpnessSmooth;
+}
+
+float SubdivisionMeshItem::vertexSharpness(int v) const
+{
+    for (const SharpVertex &c : m_inputs.tags.vertices)
+        if (c.vertex == v)
+            return c.sharpness;
+    return kSharpnessSmooth;
 }
 
 std::shared_ptr<const MeshPieces> SubdivisionMeshItem::pieces() const

@@ -59,6 +59,13 @@ public:
     bool setScheme(MeshScheme scheme, QString *error = nullptr);
     // A new mesh (an import, a starting mesh), with its scheme.
     bool setMesh(const Mesh &mesh, MeshScheme scheme, QString *error = nullptr);
+    // The sharpness of the edge joining a and b (0: smooth, the crease removed; 10 or more:
+    // infinitely sharp), or of vertex v (a corner while it lasts): one undo step each, refused
+    // when no edge joins a and b or v is not a vertex. The current values: 0 when untagged.
+    bool setEdgeSharpness(int a, int b, float sharpness, QString *error = nullptr);
+    bool setVertexSharpness(int v, float sharpness, QString *error = nullptr);
+    float edgeSharpness(int a, int b) const;
+    float vertexSharpness(int v) const;
 
     // The pieces of the mesh's IFS: they depend on the faces and the scheme only, so moving a
     // vertex keeps them. Null when the mesh is refused (derivedError() says why).

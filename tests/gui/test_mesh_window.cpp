@@ -22,6 +22,7 @@
 #include <QAction>
 #include <QFile>
 #include <QPainter>
+#include <QSignalSpy>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -44,6 +45,7 @@ private slots:
     void extraordinaryVertexInTheWindow_data();
     void extraordinaryVertexInTheWindow();
     void exportMeshWritesTheLimitMesh();
+    void creaseAnEdgeByClickingIt();
 
 private:
     QString write(const QString &name, const QByteArray &text)
@@ -325,6 +327,77 @@ void TestMeshWindow::exportMeshWritesTheLimitMesh()
     QVERIFY(!w.exportMesh(out, 9, &error));
     QVERIFY2(error.contains("0 to 8"), qPrintable(error));
     QVERIFY(w.findChild<QAction *>("actionExportMesh"));
+}
+
+void TestMeshWindow::creaseAnEdgeByClickingIt()
+{
+    // Issue 44: a click on an edge of the control mesh selects it, Item > Crease Edge… (its
+    // function here, without the dialog) makes it infinitely sharp in one undo step, the view
+    // draws the crease, and the analysis sees the darts at its ends; a click on a vertex and
+    // Sharpen Vertex… make a corner.
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.filePath("recovery"));
+    w.resize(1200, 800);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    std::ostringstream obj;
+    writeObj(obj, cubeMesh(), "a cube");
+    QString error;
+    QVERIFY2(w.importMesh(write("cube.obj", QByteArray::fromStdString(obj.str())),
+                          MeshScheme::CatmullClark, &error),
+             qPrintable(error));
+    auto *item = qobject_cast<SubdivisionMeshItem *>(w.project()->findItem("cube"));
+    QVERIFY(item);
+    w.setCurrentItem(item);
+    SurfaceView *view = w.surfaceView();
+    QTRY_VERIFY_WITH_TIMEOUT(view->isVisible() && !view->isRendering() && view->mesh().size() > 0,
+                             awb::test::ms(30000));
+    // Nothing selected: the action says what to do.
+    QVERIFY(!w.setSelectedEdgeSharpness(10, &error));
+    QVERIFY2(error.contains("Click an edge"), qPrintable(error));
+    // The midpoint of the first face's first edge, on screen; a click there (no drag).
+    const int a = item->inputs().faces[0][0], b = item->inputs().faces[0][1];
+    const QPoint mid = ((view->controlPointScreen(a) + view->controlPointScreen(b)) / 2).toPoint();
+    QSignalSpy clicked(view, &SurfaceView::netEdgeClicked);
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, mid);
+    QCOMPARE(clicked.count(), 1);
+    QCOMPARE(view->selectedNetEdge(), (std::pair<int, int>{std::min(a, b), std::max(a, b)}));
+    const int steps = w.project()->undoStack()->count();
+    QVERIFY2(w.setSelectedEdgeSharpness(10, &error), qPrintable(error));
+    QCOMPARE(w.project()->undoStack()->count(), steps + 1);
+    QCOMPARE(item->edgeSharpness(a, b), 10.0f);
+    QCOMPARE(int(item->inputs().tags.edges.size()), 1);
+    int darts = 0;
+    for (const ExtraordinaryVertex &e : *item->extraordinary())
+        darts += e.rule == "dart" ? 1 : 0;
+    QCOMPARE(darts, 2);
+    // The crease is drawn (once the views refresh): the pixels along the edge turn the crease
+    // colour.
+    const auto creaseDrawn = [&] {
+        const QImage shot = view->grab().toImage();
+        for (int dx = -3; dx <= 3; ++dx)
+            for (int dy = -3; dy <= 3; ++dy) {
+                const QColor c = shot.pixelColor(mid + QPoint(dx, dy));
+                if (c.red() > 150 && c.green() < 140 && c.blue() < 90)
+                    return true;
+            }
+        return false;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(creaseDrawn(), awb::test::ms(10000));
+    // Smooth again (0 removes it), and undone back to the crease.
+    QVERIFY(w.setSelectedEdgeSharpness(0, &error));
+    QVERIFY(item->inputs().tags.edges.empty());
+    w.project()->undoStack()->undo();
+    QCOMPARE(item->edgeSharpness(a, b), 10.0f);
+    // A vertex: pressed and released on it (no move), then a corner of sharpness 2.
+    const QPoint at = view->controlPointScreen(a).toPoint();
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, at);
+    QCOMPARE(view->selectedControlPoint(), a);
+    QCOMPARE(view->selectedNetEdge().first, -1);
+    QVERIFY2(w.setSelectedVertexSharpness(2, &error), qPrintable(error));
+    QCOMPARE(item->vertexSharpness(a), 2.0f);
+    QVERIFY(!w.setSelectedVertexSharpness(-1, &error));
+    QVERIFY2(error.contains("0 or more"), qPrintable(error));
 }
 
 AWB_TEST_MAIN(TestMeshWindow)

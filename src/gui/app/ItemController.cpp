@@ -426,6 +426,7 @@ void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
     m_surface->setControlPointsEditable(item == m_item.data()); // a plot's source is only shown
     const Mat P = toMatrix(item->controlPoints(0), 3);
     std::vector<std::vector<int>> faces;
+    std::vector<SharpEdge> sharp;
     Mat mesh;
     std::vector<std::vector<int>> meshFaces;
     OwnIteration own;
@@ -433,6 +434,7 @@ void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
         // The control mesh, and the pieces' own iteration (its identity: the derived data,
         // recomputed on every edit).
         faces = meshItem->inputs().faces;
+        sharp = meshItem->inputs().tags.edges;
         showMeshMarkers(meshItem);
         own.iterate = d.iterate;
         own.pointCount = d.pointCount;
@@ -453,7 +455,7 @@ void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
     }
     if (!qobject_cast<const SubdivisionMeshItem *>(item))
         m_surface->setMarkers({});
-    m_surface->setControlNet(P, faces);
+    m_surface->setControlNet(P, faces, std::move(sharp));
     m_surface->setRefinedNet(mesh, meshFaces);
     m_surface->setStartVertices(toMatrix(item->startSet().points, 3));
     try {

@@ -279,6 +279,17 @@ void MainWindow::createViews()
             t->selectRow(index);
     });
 
+    // A click on a net edge of a mesh: its sharpness, and how to change it (issue 44).
+    connect(m_surface, &SurfaceView::netEdgeClicked, this, [this](int a, int b) {
+        if (const auto *mesh = qobject_cast<const SubdivisionMeshItem *>(currentItem()))
+            statusBar()->showMessage(
+                tr("Edge %1–%2: sharpness %3 (Item > Crease Edge… changes it)")
+                    .arg(a)
+                    .arg(b)
+                    .arg(double(mesh->edgeSharpness(a, b))),
+                8000);
+    });
+
     // Status bar: cursor position, problems, long-work progress with a cancel button.
     // Set on every mouse move: a readout that never lays out the window again.
     m_cursorLabel = new StatusText(QStringLiteral("x = −0.123456, y = −0.123456   "
@@ -519,6 +530,9 @@ void MainWindow::updateActions()
     const bool hasItem = m_current != nullptr;
     action(QStringLiteral("actionDuplicate"))->setEnabled(hasItem);
     action(QStringLiteral("actionDelete"))->setEnabled(hasItem);
+    const bool mesh = qobject_cast<SubdivisionMeshItem *>(m_current.data()) != nullptr;
+    action(QStringLiteral("actionCreaseEdge"))->setEnabled(mesh);
+    action(QStringLiteral("actionSharpenVertex"))->setEnabled(mesh);
     action(QStringLiteral("actionRevert"))
         ->setEnabled(!m_project->fileName().isEmpty() && m_project->isModified());
     for (const char *name : {"actionPrint", "actionPrintPreview", "actionPrintPdf"})

@@ -48,6 +48,7 @@ class ScriptRecorder;
 class PropertiesWidget;
 class Recovery;
 class SpectrumView;
+class SubdivisionMeshItem;
 class SurfaceView;
 class ValenceChart;
 class VertexPanel;
@@ -65,6 +66,13 @@ public:
     Project *project() const { return m_project.get(); }
     Item *currentItem() const;
     void setCurrentItem(Item *item);
+
+    // MainWindowSharpFeatures.cpp (issue 44): the sharpness of the net edge or the control
+    // point selected in the 3D view of the current mesh item (Item > Crease Edge…, Item >
+    // Sharpen Vertex…): one undo step; false with *error saying why (no mesh item, nothing
+    // selected, a refused value).
+    bool setSelectedEdgeSharpness(double sharpness, QString *error = nullptr);
+    bool setSelectedVertexSharpness(double sharpness, QString *error = nullptr);
 
     // A new project with one cubic B-spline item: the window is never empty.
     void newProject();
@@ -203,6 +211,10 @@ private:
     void importDialog();
     void exportItemAsDialog();
     void exportMeshDialog();
+    void creaseEdgeDialog();
+    void sharpenVertexDialog();
+    // The current item as a mesh item, or null with *error saying so.
+    SubdivisionMeshItem *currentMesh(QString *error) const;
     // MainWindowExport.cpp: the printed sheet of the current item (with a mesh's focused
     // vertex: its matrix and characteristic map).
     FigureSheet figureSheet() const;

@@ -122,6 +122,12 @@ void MainWindow::createActions()
          QStringLiteral("document-import"), QKeySequence(), &MainWindow::importMeshDialog);
     make(QStringLiteral("actionExportMesh"), tr("Export &Mesh…"),
          QStringLiteral("document-export"), QKeySequence(), &MainWindow::exportMeshDialog);
+    make(QStringLiteral("actionCreaseEdge"), tr("&Crease Edge…"), QString(), QKeySequence(),
+         &MainWindow::creaseEdgeDialog)
+        ->setStatusTip(tr("The sharpness of the mesh edge clicked in the 3D view"));
+    make(QStringLiteral("actionSharpenVertex"), tr("Sharpen &Vertex…"), QString(),
+         QKeySequence(), &MainWindow::sharpenVertexDialog)
+        ->setStatusTip(tr("The corner sharpness of the mesh vertex clicked in the 3D view"));
     make(QStringLiteral("actionSave"), tr("&Save"), QStringLiteral("document-save"),
          QKeySequence::Save, &MainWindow::save);
     make(QStringLiteral("actionSaveAs"), tr("Save &As…"), QStringLiteral("document-save-as"),
@@ -366,6 +372,9 @@ void MainWindow::createMenus()
     }
     itemMenu->addAction(action(QStringLiteral("actionDuplicate")));
     itemMenu->addAction(action(QStringLiteral("actionDelete")));
+    itemMenu->addSeparator();
+    itemMenu->addAction(action(QStringLiteral("actionCreaseEdge")));
+    itemMenu->addAction(action(QStringLiteral("actionSharpenVertex")));
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(action(QStringLiteral("actionZoomIn")));

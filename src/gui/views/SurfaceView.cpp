@@ -153,10 +153,14 @@ void SurfaceView::setIfs(std::shared_ptr<const Ifs> ifs, const StartSet &start,
     dataChanged();
 }
 
-void SurfaceView::setControlNet(const Mat &points, const std::vector<std::vector<int>> &faces)
+void SurfaceView::setControlNet(const Mat &points, const std::vector<std::vector<int>> &faces,
+                                std::vector<SharpEdge> sharp)
 {
     m_net = points.cols() == 3 ? points : Mat();
     m_netFaces = faces;
+    m_sharpEdges = std::move(sharp);
+    if (m_selectedEdge.second >= m_net.rows())
+        m_selectedEdge = {-1, -1};
     if (m_selected >= m_net.rows())
         m_selected = -1;
     update();

@@ -17,6 +17,7 @@
 //    same frames faster (bench/bench_window.cpp measures both: AWB_GL=1 forces GL).
 // The overlays (net, handles, axes, box) are painted with QPainter through the same projection.
 
+#include "core/mesh/MeshTags.h"
 #include "core/render/SurfaceMesh.h"
 #include "core/render/SurfaceRaster.h"
 #include "gui/views/AttractorRenderer.h"
@@ -82,8 +83,10 @@ public:
     // Items drawn by their own iteration (mesh items) add `own` (core/render/SurfaceMesh.h).
     void setIfs(std::shared_ptr<const Ifs> ifs, const StartSet &start,
                 std::vector<int> colourIndex = {}, OwnIteration own = {});
-    // The control net: points n x 3 and faces (index lists); empty to hide.
-    void setControlNet(const Mat &points, const std::vector<std::vector<int>> &faces);
+    // The control net: points n x 3 and faces (index lists); empty to hide. `sharp`: its sharp
+    // edges (a mesh's creases, issue 44) as vertex pairs with their sharpness, drawn over it.
+    void setControlNet(const Mat &points, const std::vector<std::vector<int>> &faces,
+                       std::vector<SharpEdge> sharp = {});
     // The start-set vertices (n x 3, drawn and draggable as handles).
     void setStartVertices(const Mat &points);
     // The subdivided net after k rounds (n x 3 with faces): the classic route beside the IFS.
@@ -125,6 +128,10 @@ public:
     int controlPointCount() const { return int(m_net.rows()); }
     // The control point picked last by a click (-1: none); drawn highlighted.
     int selectedControlPoint() const { return m_selected; }
+    // The net edge picked last by a click on it, as its two vertices ({-1, -1}: none); drawn
+    // highlighted. A click on a control point clears it, and the other way round.
+    std::pair<int, int> selectedNetEdge() const { return m_selectedEdge; }
+    void setSelectedNetEdge(int a, int b);
     // Marked points with a label (the extraordinary vertices of a mesh at their limit
     // positions, labelled with their valence): drawn over the surface, one of them selected; a
     // click on one (press and release without moving) reports markerClicked.
@@ -180,6 +187,9 @@ signals:
     void startVertexDragged(int index, const QVector3D &world);
     void startVertexReleased(int index, const QVector3D &start, const QVector3D &end);
     void markerClicked(int index);
+    // A click (no drag) on an edge of the control net, away from its points (issue 44: the
+    // edge to crease).
+    void netEdgeClicked(int a, int b);
     void cameraChanged();
     // The user turned the view (the end of an orbit drag, an arrow key): the direction the
     // document may keep (the item's camera, which exports and the CLI use), in degrees.
@@ -249,6 +259,8 @@ private:
     // ---- SurfaceViewInput.cpp
     int hit(const Mat &points, const QPointF &screen) const;
     int hitMarker(const QPointF &screen) const;
+    // The net edge nearest to `screen` within the hit radius, or {-1, -1}.
+    std::pair<int, int> hitEdge(const QPointF &screen) const;
     void logInput(const char *kind, const QMouseEvent *event);
     void setViewCursor(Qt::CursorShape shape);
 
@@ -273,6 +285,7 @@ private:
     std::vector<Marker> m_markers;
     int m_selectedMarker = -1;
     std::vector<std::vector<int>> m_netFaces, m_refinedFaces;
+    std::vector<SharpEdge> m_sharpEdges;
     RenderSettings m_settings;
     std::uint32_t m_hidden = 0;
     bool m_editable = true;
@@ -310,6 +323,7 @@ private:
     std::size_t m_framePrimitives = 0;
     Drag m_drag;
     int m_selected = -1;
+    std::pair<int, int> m_selectedEdge{-1, -1};
     // Frame log: the last pointer position (global) and the handles written last.
     QPoint m_inputGlobal;
     std::vector<QPoint> m_loggedHandles;

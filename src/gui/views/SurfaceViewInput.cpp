@@ -74,6 +74,44 @@ int SurfaceView::hitMarker(const QPointF &screen) const
     return best;
 }
 
+std::pair<int, int> SurfaceView::hitEdge(const QPointF &screen) const
+{
+    std::pair<int, int> best{-1, -1};
+    double bestDistance = hitRadius * hitRadius;
+    const auto at = [&](int i) {
+        return toScreen(QVector3D(float(m_net(i, 0)), float(m_net(i, 1)), float(m_net(i, 2))));
+    };
+    for (const auto &f : m_netFaces)
+        for (std::size_t k = 0; k < f.size(); ++k) {
+            const int a = f[k], b = f[(k + 1) % f.size()];
+            if (a < 0 || b < 0 || a >= m_net.rows() || b >= m_net.rows())
+                continue;
+            const QPointF p = at(a), q = at(b), d = q - p;
+            const double length = QPointF::dotProduct(d, d);
+            const double t = length > 0 ? std::clamp(QPointF::dotProduct(screen - p, d) / length,
+                                                     0.0, 1.0)
+                                        : 0.0;
+            const QPointF off = p + t * d - screen;
+            const double dd = QPointF::dotProduct(off, off);
+            if (dd < bestDistance) {
+                bestDistance = dd;
+                best = {std::min(a, b), std::max(a, b)};
+            }
+        }
+    return best;
+}
+
+void SurfaceView::setSelectedNetEdge(int a, int b)
+{
+    m_selectedEdge = a >= 0 && b >= 0 ? std::pair{std::min(a, b), std::max(a, b)}
+                                      : std::pair{-1, -1};
+    if (m_selectedEdge.first >= 0)
+        m_selected = -1;
+    update();
+    if (m_glWindow)
+        m_glWindow->update();
+}
+
 void SurfaceView::mousePressEvent(QMouseEvent *event)
 {
     logInput("press", event);
@@ -108,6 +146,7 @@ void SurfaceView::mousePressEvent(QMouseEvent *event)
         m_drag.kind = DragKind::ControlPoint;
         m_drag.index = c;
         m_selected = c;
+        m_selectedEdge = {-1, -1};
         m_drag.startWorld = m_drag.currentWorld = QVector3D(
             float(m_net(c, 0)), float(m_net(c, 1)), float(m_net(c, 2)));
         m_cameraSet = true; // the view must not refit under the user's hand
@@ -187,6 +226,13 @@ void SurfaceView::mouseReleaseEvent(QMouseEvent *event)
              && drag.marker >= 0) {
         setSelectedMarker(drag.marker);
         emit markerClicked(drag.marker);
+    } else if (drag.kind == DragKind::Orbit && click && m_editable
+               && isLayerVisible(Layer::ControlNet)) {
+        const auto [a, b] = hitEdge(drag.press);
+        if (a >= 0) {
+            setSelectedNetEdge(a, b);
+            emit netEdgeClicked(a, b);
+        }
     }
     update();
     requestFrame();

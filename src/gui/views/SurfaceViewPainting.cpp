@@ -14,6 +14,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <unordered_set>
 
 namespace awb {
 
@@ -214,17 +216,22 @@ void SurfaceView::paintOverlay(QPainter &p, const QMatrix4x4 &mvp, const QRectF 
                 path.moveTo(at(points, i));
                 path.lineTo(at(points, j));
             }
-        // Edges with i > j that have no partner (the border) must still be drawn.
+        // Edges with i > j that have no partner (the border) must still be drawn. (The
+        // partners by a set of directed edges: a scan of every face per edge was quadratic, a
+        // minute per paint for a production mesh.)
+        std::unordered_set<std::uint64_t> directed;
+        const auto key = [](int a, int b) {
+            return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
+        };
+        for (const auto &f : list)
+            for (std::size_t k = 0; k < f.size(); ++k)
+                directed.insert(key(f[k], f[(k + 1) % f.size()]));
         for (const auto &f : list)
             for (std::size_t k = 0; k < f.size(); ++k) {
                 const int i = f[k], j = f[(k + 1) % f.size()];
                 if (i <= j || i >= points.rows() || j < 0)
                     continue;
-                bool shared = false;
-                for (const auto &g : list)
-                    for (std::size_t l = 0; l < g.size() && !shared; ++l)
-                        shared = g[l] == j && g[(l + 1) % g.size()] == i;
-                if (!shared) {
+                if (!directed.count(key(j, i))) {
                     path.moveTo(at(points, i));
                     path.lineTo(at(points, j));
                 }
@@ -269,6 +276,23 @@ void SurfaceView::paintOverlay(QPainter &p, const QMatrix4x4 &mvp, const QRectF 
         faces(m_refined, m_refinedFaces, QPen(QColor(120, 120, 120, 150), 0.8 * unit));
     if (isLayerVisible(Layer::ControlNet) && m_net.rows() > 0) {
         faces(m_net, m_netFaces, QPen(QColor(40, 40, 40, 200), 1.2 * unit));
+        // The selected edge: a wide halo under its crease, if it has one.
+        if (const auto [a, b] = m_selectedEdge;
+            a >= 0 && b >= 0 && a < m_net.rows() && b < m_net.rows()) {
+            p.setPen(QPen(QColor(40, 110, 230), 6.0 * unit));
+            p.drawLine(at(m_net, a), at(m_net, b));
+        }
+        // Sharp edges over the net: infinitely sharp ones solid, semi-sharp ones dashed, in the
+        // colour of creases in modelling tools.
+        for (const SharpEdge &e : m_sharpEdges) {
+            if (e.a < 0 || e.b < 0 || e.a >= m_net.rows() || e.b >= m_net.rows()
+                || !(e.sharpness > 0.0f))
+                continue;
+            const bool infinite = e.sharpness >= kSharpnessInfinite;
+            p.setPen(QPen(QColor(225, 90, 20), (infinite ? 3.0 : 2.4) * unit,
+                          infinite ? Qt::SolidLine : Qt::DashLine));
+            p.drawLine(at(m_net, e.a), at(m_net, e.b));
+        }
         p.setPen(QPen(QColor(30, 30, 30), 1.2 * unit));
         for (int i = 0; i < m_net.rows(); ++i) {
             const bool active = (m_drag.kind == DragKind::ControlPoint && m_drag.index == i)
