@@ -285,21 +285,6 @@ void MeshTopology::applySharpness(const MeshSharpness &s)
         }
 }
 
-MeshSharpness MeshTopology::sharpness() const
-{
-    MeshSharpness s;
-    s.options = m_options;
-    s.vertices = m_vertexSharpness;
-    s.holes = m_holes;
-    if (!m_edgeSharpness.empty()) {
-        s.faceEdges.resize(m_faces.size());
-        for (std::size_t f = 0; f < m_faces.size(); ++f)
-            for (int e : m_faceEdges[f])
-                s.faceEdges[f].push_back(m_edgeSharpness[std::size_t(e)]);
-    }
-    return s;
-}
-
 namespace {
 
 // The tags of `mesh` on its topology, checked, with OpenSubdiv's boundary options applied.

@@ -113,8 +113,6 @@ public:
     // Lays `s` on the faces (their count must be the topology's); an edge named by both of its
     // faces takes the larger value.
     void applySharpness(const MeshSharpness &s);
-    // The features as laid on the faces (for a walk that renumbers them).
-    MeshSharpness sharpness() const;
 
 private:
     std::vector<std::vector<int>> m_faces;

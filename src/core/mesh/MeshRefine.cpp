@@ -95,6 +95,12 @@ MeshStencil vertexPoint(const MeshTopology &t, int v, MeshScheme scheme)
     const auto &ring = t.ring(v);
     if (ring.edges.empty())
         return MeshStencil{{v, 1.0}};
+    if (!t.hasSharpness())  // the common case, without a vector per vertex: only the boundary
+        return ring.boundary ? creaseMask(v,
+                                          {t.otherEnd(ring.edges.front(), v),
+                                           t.otherEnd(ring.edges.back(), v)},
+                                          kCreaseSelf, kCreaseNeighbour)
+                             : smoothVertex(t, v, scheme);
     const std::vector<float> parent = t.ringSharpness(v);
     const float parentVertex = t.vertexSharpness(v);
     const VertexRule pRule = crease::vertexRule(parentVertex, parent);
@@ -242,17 +248,25 @@ std::optional<MeshStencil> directLimit(const MeshTopology &t, int v, MeshScheme 
     const auto &ring = t.ring(v);
     if (ring.edges.empty())
         return MeshStencil{{v, 1.0}};
-    const std::vector<float> sharpness = t.ringSharpness(v);
-    switch (crease::vertexRule(t.vertexSharpness(v), sharpness)) {
-    case VertexRule::Crease:
-        return creaseMask(v, creaseEnds(t, v, sharpness), kCreaseLimitSelf,
-                          kCreaseLimitNeighbour);
-    case VertexRule::Corner:
-        return MeshStencil{{v, 1.0}};
-    case VertexRule::Dart:
-        return dartLimit(t, v, scheme);
-    case VertexRule::Smooth:
-        break;
+    if (!t.hasSharpness()) {  // the common case, without a vector per vertex
+        if (ring.boundary)
+            return creaseMask(v,
+                              {t.otherEnd(ring.edges.front(), v),
+                               t.otherEnd(ring.edges.back(), v)},
+                              kCreaseLimitSelf, kCreaseLimitNeighbour);
+    } else {
+        const std::vector<float> sharpness = t.ringSharpness(v);
+        switch (crease::vertexRule(t.vertexSharpness(v), sharpness)) {
+        case VertexRule::Crease:
+            return creaseMask(v, creaseEnds(t, v, sharpness), kCreaseLimitSelf,
+                              kCreaseLimitNeighbour);
+        case VertexRule::Corner:
+            return MeshStencil{{v, 1.0}};
+        case VertexRule::Dart:
+            return dartLimit(t, v, scheme);
+        case VertexRule::Smooth:
+            break;
+        }
     }
     const int n = int(ring.edges.size());
     if (scheme == MeshScheme::Loop) {
