@@ -134,7 +134,7 @@ EigenvalueData EigenvaluePlotItem::compute() const
             throw InputError(toStd(tr("an extraordinary vertex has its local subdivision "
                                       "matrix S only")));
         out.matrices = AnalysisMatrices{};
-        out.matrices.real.push_back(e->S);
+        out.matrices.real.push_back(e->S());
     }
     const AnalysisMatrices &matrices = out.matrices;
     if (matrices.count() == 0)

@@ -8,6 +8,9 @@
 
 #include <QJsonArray>
 
+#include <map>
+#include <tuple>
+
 namespace awb {
 
 namespace {
@@ -25,18 +28,19 @@ QJsonObject characteristicJson(const VertexSpectrum &s)
             {"cells", int(m.cells.size())}};
 }
 
-QJsonObject vertexJson(const ExtraordinaryVertex &e, MeshScheme scheme)
+// What the matrix of an extraordinary vertex says, the same for every vertex of its kind.
+QJsonObject kindJson(const ExtraordinaryVertex &e, MeshScheme scheme)
 {
     QJsonObject o;
-    if (e.vertex >= 0)
-        o["vertex"] = e.vertex;
-    else
-        o["face"] = e.face;
     o["valence"] = e.valence;
     o["boundary"] = e.boundary;
     o["rule"] = QString::fromStdString(e.rule);
+    // Smooth inside: the ring of every point within two faces; on the boundary and at sharp
+    // features: the vertex piece's net (its S_0), and the verdicts are not decided there.
+    o["ring"] = QString::fromStdString(e.ring);
+    o["ring_size"] = e.ringSize;
     QJsonArray ev;
-    for (const Complex &z : e.eigenvalues)
+    for (const Complex &z : e.eigenvalues())
         ev.append(QJsonArray{z.real(), z.imag()});
     o["eigenvalues"] = ev;
     o["subdominant"] = e.subdominant;
@@ -44,14 +48,24 @@ QJsonObject vertexJson(const ExtraordinaryVertex &e, MeshScheme scheme)
     o["c1"] = e.c1 ? QJsonValue(*e.c1) : QJsonValue(QJsonValue::Null);
     o["curvature"] = e.curvature.empty() ? QJsonValue(QJsonValue::Null)
                                          : QJsonValue(QString::fromStdString(e.curvature));
-    // Smooth inside: the ring of every point within two faces; on the boundary and at sharp
-    // features: the vertex piece's net (its S_0), and the verdicts are not decided there.
     if (e.smoothInterior() && ringAnalysable(e.valence))
         o["characteristic_map"] = characteristicJson(*sharedVertexSpectrum(scheme, e.valence));
     if (!e.note.empty())
         o["note"] = QString::fromStdString(e.note);
-    o["ring"] = QString::fromStdString(e.ring);
-    o["ring_size"] = e.ringSize;
+    return o;
+}
+
+// A vertex: where it is, and its kind (an index into "vertex_kinds").
+QJsonObject vertexJson(const ExtraordinaryVertex &e, int kind)
+{
+    QJsonObject o;
+    if (e.vertex >= 0)
+        o["vertex"] = e.vertex;
+    else
+        o["face"] = e.face;
+    o["kind"] = kind;
+    o["valence"] = e.valence;
+    o["rule"] = QString::fromStdString(e.rule);
     if (e.limit.size() == 3) {
         o["limit"] = ProjectIO::rowToJson(e.limit);
         o["normal"] = ProjectIO::rowToJson(e.normal);
@@ -101,11 +115,32 @@ QJsonObject meshAnalysisJson(const SubdivisionMeshItem &item)
     o["scheme"] = MeshInputs::schemeNames().at(int(item.scheme()));
     o["vertex_count"] = int(item.inputs().vertices.size());
     o["face_count"] = int(item.inputs().faces.size());
-    QJsonArray extraordinary;
+    // The vertices, and their kinds once each: a mesh of a million faces has hundreds of
+    // thousands of extraordinary vertices and a few kinds (the output's size is what it says).
+    QJsonArray extraordinary, kinds;
+    std::vector<int> counts;
+    std::map<std::tuple<const AnalysedMatrix *, int, bool, std::string, std::string>, int> kindOf;
     const auto vertices = item.extraordinary();  // held: the loop reads it
-    for (const ExtraordinaryVertex &e : *vertices)
-        extraordinary.append(vertexJson(e, item.scheme()));
+    for (const ExtraordinaryVertex &e : *vertices) {
+        const auto [it, added] = kindOf.emplace(
+            std::make_tuple(e.matrix.get(), e.valence, e.boundary, e.rule, e.note),
+            int(kinds.size()));
+        if (added) {
+            QJsonObject kind = kindJson(e, item.scheme());
+            kind["index"] = it->second;
+            kinds.append(kind);
+            counts.push_back(0);
+        }
+        ++counts[std::size_t(it->second)];
+        extraordinary.append(vertexJson(e, it->second));
+    }
+    for (auto &&kind : kinds) {  // how many vertices each kind has
+        QJsonObject k = kind.toObject();
+        k["vertices"] = counts[std::size_t(k["index"].toInt())];
+        kind = k;
+    }
     o["extraordinary"] = extraordinary;
+    o["vertex_kinds"] = kinds;
     o["pieces"] = piecesJson(*pieces);
     return o;
 }

@@ -139,13 +139,19 @@ void TestMeshCli::importKeepsTheFilesNumbering()
     QCOMPARE(a["vertex_count"].toInt(), 8);
     const QJsonArray e = a["extraordinary"].toArray();
     QCOMPARE(e.size(), 8);
+    const QJsonArray kinds = a["vertex_kinds"].toArray();
+    QCOMPARE(kinds.size(), 1);
+    const QJsonObject three = kinds[0].toObject();
+    QCOMPARE(three["valence"].toInt(), 3);
+    QCOMPARE(three["vertices"].toInt(), 8);
+    QVERIFY(std::abs(three["subdominant"].toDouble() - 0.4100970508) < 1e-9);
+    QCOMPARE(three["curvature"].toString(), QString("zero"));
+    QVERIFY(three["c1"].toBool());
     for (int k = 0; k < 8; ++k) {
         const QJsonObject v = e[k].toObject();
         QCOMPARE(v["vertex"].toInt(), k);  // the file's own numbers
         QCOMPARE(v["valence"].toInt(), 3);
-        QVERIFY(std::abs(v["subdominant"].toDouble() - 0.4100970508) < 1e-9);
-        QCOMPARE(v["curvature"].toString(), QString("zero"));
-        QVERIFY(v["c1"].toBool());
+        QCOMPARE(v["kind"].toInt(), 0);
     }
     // Vertex 5 is the corner (1, 1, 1): its limit is (1/2, 1/2, 1/2).
     const QJsonArray limit = e[5].toObject()["limit"].toArray();
@@ -206,7 +212,9 @@ void TestMeshCli::analyseListsTheExtraordinaryVertices()
     QCOMPARE(e.size(), 12);
     const double lambda = 3.0 / 8 + std::cos(2 * M_PI / 5) / 4;
     for (const QJsonValue &v : e) {
-        const QJsonObject o = v.toObject();
+        QCOMPARE(v.toObject()["valence"].toInt(), 5);
+        const QJsonObject o =
+            ico["vertex_kinds"].toArray()[v.toObject()["kind"].toInt()].toObject();
         QCOMPARE(o["valence"].toInt(), 5);
         QVERIFY(std::abs(o["subdominant"].toDouble() - lambda) < 1e-12);
         QCOMPARE(o["eigenvalues"].toArray().size(), 16);  // the ring: 3n + 1
@@ -275,8 +283,11 @@ void TestMeshCli::valencesTableIsTheWindowsTable()
     QCOMPARE(run({"valences", "--from", "2"}, &out, &err), 1);
     QVERIFY2(err.contains("--from must be a whole number from 3 to 64"), err.constData());
     // The extraordinary vertices of analyse carry the same check.
-    const QJsonObject v = analyse(importMesh(cubeMesh(), "catmull-clark", "cube-v"))
-                              ["extraordinary"].toArray()[0].toObject();
+    const QJsonObject cube = analyse(importMesh(cubeMesh(), "catmull-clark", "cube-v"));
+    const QJsonObject v = cube["vertex_kinds"]
+                              .toArray()[cube["extraordinary"].toArray()[0].toObject()["kind"]
+                                             .toInt()]
+                              .toObject();
     QVERIFY(v["characteristic_map"].toObject()["regular"].toBool());
     QCOMPARE(v["characteristic_map"].toObject()["winding"].toInt(), 1);
 }
@@ -352,7 +363,10 @@ void TestMeshCli::interiorValenceTwoIsImportedAndSaid()
     const QJsonArray e = analyse(project)["extraordinary"].toArray();
     QCOMPARE(e.size(), 4);
     QCOMPARE(e[0].toObject()["valence"].toInt(), 2);
-    QVERIFY(e[0].toObject()["note"].toString().contains("valences 3 to 64"));
+    const QJsonObject kind = analyse(project)["vertex_kinds"]
+                                 .toArray()[e[0].toObject()["kind"].toInt()]
+                                 .toObject();
+    QVERIFY(kind["note"].toString().contains("valences 3 to 64"));
     QCOMPARE(run({"check", project}, &out, &err), 0);
 }
 

@@ -258,10 +258,17 @@ void TestMeshItem::analysisJson()
     QCOMPARE(centre["face"].toInt(), 1);
     QVERIFY(!centre.contains("vertex"));
     QCOMPARE(centre["valence"].toInt(), 5);
-    QVERIFY(std::abs(centre["subdominant"].toDouble() - 0.549988) < 1e-6);
-    QCOMPARE(centre["eigenvalues"].toArray().size(), 31);  // the ring: 6n + 1
-    QCOMPARE(centre["curvature"].toString(), QString("unbounded"));
-    QVERIFY(centre["c1"].toBool());
+    // Its kind (the matrix and what it says, once for every vertex that shares it).
+    const QJsonArray kinds = o["vertex_kinds"].toArray();
+    QCOMPARE(kinds.size(), 2);  // valence 3, valence 5
+    const QJsonObject five = kinds[centre["kind"].toInt()].toObject();
+    QCOMPARE(five["valence"].toInt(), 5);
+    QCOMPARE(five["vertices"].toInt(), 2);
+    QVERIFY(std::abs(five["subdominant"].toDouble() - 0.549988) < 1e-6);
+    QCOMPARE(five["eigenvalues"].toArray().size(), 31);  // the ring: 6n + 1
+    QCOMPARE(five["curvature"].toString(), QString("unbounded"));
+    QVERIFY(five["c1"].toBool());
+    QCOMPARE(kinds[e[0].toObject()["kind"].toInt()].toObject()["vertices"].toInt(), 10);
     // One step makes the pentagons' centres vertices, next to the valence-3 corners; a second
     // separates them.
     QCOMPARE(o["pieces"].toObject()["isolation_steps"].toInt(), 2);

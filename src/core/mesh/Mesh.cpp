@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <unordered_map>
 
 namespace awb {
 
@@ -52,11 +50,6 @@ std::string faceList(const std::vector<int> &faces)
     return s;
 }
 
-std::uint64_t key(int a, int b)
-{
-    return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
-}
-
 } // namespace
 
 std::string toString(MeshScheme scheme)
@@ -74,16 +67,19 @@ MeshScheme suggestedScheme(const Mesh &mesh)
     return triangles ? MeshScheme::Loop : MeshScheme::CatmullClark;
 }
 
-MeshTopology::MeshTopology(int vertexCount, const std::vector<std::vector<int>> &faces)
-    : m_faces(faces), m_faceEdges(faces.size()), m_rings(std::size_t(std::max(vertexCount, 0)))
+MeshTopology::MeshTopology(int vertexCount, std::vector<std::vector<int>> faces)
+    : m_faces(std::move(faces)), m_faceEdges(m_faces.size()),
+      m_rings(std::size_t(std::max(vertexCount, 0)))
 {
     if (vertexCount <= 0)
         throw InputError(coreTranslate("awb::mesh", "the mesh has no vertices"));
-    if (faces.empty())
+    if (m_faces.empty())
         throw InputError(coreTranslate("awb::mesh", "the mesh has no faces"));
     Problems problems;
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-        const auto &loop = faces[f];
+    std::size_t halfEdges = 0;
+    for (std::size_t f = 0; f < m_faces.size(); ++f) {
+        const auto &loop = m_faces[f];
+        halfEdges += loop.size();
         if (loop.size() < 3)
             problems.add(formatMessage(
                 coreTranslate("awb::mesh", "face %1 has %2 vertices; a face needs at least 3"), f,
@@ -97,114 +93,167 @@ MeshTopology::MeshTopology(int vertexCount, const std::vector<std::vector<int>> 
                     f, v, vertexCount, vertexCount - 1));
                 inRange = false;
             }
-        std::vector<int> sorted = loop;
-        std::sort(sorted.begin(), sorted.end());
-        if (auto it = std::adjacent_find(sorted.begin(), sorted.end());
-            inRange && it != sorted.end())
+        if (!inRange)
+            continue;
+        int twice = -1;
+        if (loop.size() <= 16) {  // no allocation for the usual faces
+            for (std::size_t i = 0; i < loop.size(); ++i)
+                for (std::size_t j = i + 1; j < loop.size(); ++j)
+                    if (loop[i] == loop[j] && (twice < 0 || loop[i] < twice))
+                        twice = loop[i];
+        } else {
+            std::vector<int> sorted = loop;
+            std::sort(sorted.begin(), sorted.end());
+            if (auto it = std::adjacent_find(sorted.begin(), sorted.end()); it != sorted.end())
+                twice = *it;
+        }
+        if (twice >= 0)
             problems.add(
-                formatMessage(coreTranslate("awb::mesh", "face %1 lists vertex %2 twice"), f, *it));
+                formatMessage(coreTranslate("awb::mesh", "face %1 lists vertex %2 twice"), f, twice));
     }
     problems.raise();
-    // Half-edges a -> b of each face, and the faces on each undirected edge.
-    std::unordered_map<std::uint64_t, int> halfEdge;  // (a, b) -> face
-    std::map<std::pair<int, int>, std::vector<int>> facesOf;
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-        const auto &loop = faces[f];
-        for (std::size_t k = 0; k < loop.size(); ++k) {
-            const int a = loop[k], b = loop[(k + 1) % loop.size()];
-            facesOf[{std::min(a, b), std::max(a, b)}].push_back(int(f));
+    // Half-edge h = first[f] + k runs from corner k of face f to corner k + 1; the half-edges
+    // leaving each vertex, in face order (compressed rows: OpenSubdiv's vertex-edge relation).
+    // Every lookup is a scan of one vertex's few half-edges: no hash of edges.
+    const std::size_t nf = m_faces.size(), nv = m_rings.size();
+    std::vector<int> first(nf + 1, 0), halfFace(halfEdges), halfCorner(halfEdges);
+    for (std::size_t f = 0; f < nf; ++f) {
+        first[f + 1] = first[f] + int(m_faces[f].size());
+        for (int k = 0; k < int(m_faces[f].size()); ++k) {
+            halfFace[std::size_t(first[f] + k)] = int(f);
+            halfCorner[std::size_t(first[f] + k)] = k;
         }
     }
-    for (const auto &[ab, on] : facesOf)
-        if (on.size() > 2)
+    const auto from = [&](int h) {
+        return m_faces[std::size_t(halfFace[std::size_t(h)])][std::size_t(halfCorner[std::size_t(h)])];
+    };
+    const auto to = [&](int h) {
+        const auto &loop = m_faces[std::size_t(halfFace[std::size_t(h)])];
+        return loop[(std::size_t(halfCorner[std::size_t(h)]) + 1) % loop.size()];
+    };
+    std::vector<int> outStart(nv + 1, 0), outHalf(halfEdges);
+    for (const auto &loop : m_faces)
+        for (int v : loop)
+            ++outStart[std::size_t(v) + 1];
+    for (std::size_t v = 0; v < nv; ++v)
+        outStart[v + 1] += outStart[v];
+    {
+        std::vector<int> fill(outStart.begin(), outStart.end() - 1);
+        for (int h = 0; h < int(halfEdges); ++h)
+            outHalf[std::size_t(fill[std::size_t(from(h))]++)] = h;
+    }
+    // The first half-edge a -> b (in face order), or -1.
+    const auto findHalf = [&](int a, int b) {
+        for (int i = outStart[std::size_t(a)]; i < outStart[std::size_t(a) + 1]; ++i)
+            if (to(outHalf[std::size_t(i)]) == b)
+                return outHalf[std::size_t(i)];
+        return -1;
+    };
+    // Edges of three or more faces, each named once (by its first half-edge), in the order of
+    // their vertex pairs.
+    std::vector<std::pair<std::pair<int, int>, std::vector<int>>> nonManifold;
+    for (int h = 0; h < int(halfEdges); ++h) {
+        const int a = from(h), b = to(h);
+        std::vector<int> on;
+        int firstHalf = h;
+        for (const int x : {a, b})
+            for (int i = outStart[std::size_t(x)]; i < outStart[std::size_t(x) + 1]; ++i) {
+                const int g = outHalf[std::size_t(i)];
+                if (to(g) == (x == a ? b : a)) {
+                    on.push_back(halfFace[std::size_t(g)]);
+                    firstHalf = std::min(firstHalf, g);
+                }
+            }
+        if (on.size() > 2 && firstHalf == h) {
+            std::sort(on.begin(), on.end());
+            nonManifold.push_back({{std::min(a, b), std::max(a, b)}, std::move(on)});
+        }
+    }
+    std::sort(nonManifold.begin(), nonManifold.end());
+    for (const auto &[ab, on] : nonManifold)
+        problems.add(formatMessage(
+            coreTranslate("awb::mesh", "edge (%1, %2) is non-manifold: faces %3 meet there"),
+            ab.first, ab.second, faceList(on)));
+    problems.raise();
+    std::vector<int> twin(halfEdges, -1);
+    for (int h = 0; h < int(halfEdges); ++h) {
+        const int a = from(h), b = to(h);
+        const int earlier = findHalf(a, b);
+        if (earlier != h)
             problems.add(formatMessage(
-                coreTranslate("awb::mesh", "edge (%1, %2) is non-manifold: faces %3 meet there"),
-                ab.first, ab.second, faceList(on)));
-    problems.raise();
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-        const auto &loop = faces[f];
-        for (std::size_t k = 0; k < loop.size(); ++k) {
-            const int a = loop[k], b = loop[(k + 1) % loop.size()];
-            const auto [it, added] = halfEdge.emplace(key(a, b), int(f));
-            if (!added)
-                problems.add(formatMessage(
-                    coreTranslate("awb::mesh",
-                                  "faces %1 and %2 are oriented inconsistently: both run from "
-                                  "vertex %3 to vertex %4 (turn one of them over)"),
-                    it->second, f, a, b));
-        }
+                coreTranslate("awb::mesh",
+                              "faces %1 and %2 are oriented inconsistently: both run from "
+                              "vertex %3 to vertex %4 (turn one of them over)"),
+                halfFace[std::size_t(earlier)], halfFace[std::size_t(h)], a, b));
+        twin[std::size_t(h)] = findHalf(b, a);
     }
     problems.raise();
     // Edges, numbered in the order the faces first name them.
-    std::unordered_map<std::uint64_t, int> edgeOf;
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-        const auto &loop = faces[f];
+    std::vector<int> edgeOfHalf(halfEdges, -1);
+    m_edges.reserve(halfEdges / 2 + 1);
+    for (std::size_t f = 0; f < nf; ++f) {
+        const auto &loop = m_faces[f];
+        m_faceEdges[f].resize(loop.size());
         for (std::size_t k = 0; k < loop.size(); ++k) {
-            const int a = loop[k], b = loop[(k + 1) % loop.size()];
-            const std::uint64_t id = key(std::min(a, b), std::max(a, b));
-            auto it = edgeOf.find(id);
-            if (it == edgeOf.end()) {
-                Edge e;
-                e.v[0] = a;
-                e.v[1] = b;
-                e.face[0] = int(f);
-                it = edgeOf.emplace(id, int(m_edges.size())).first;
-                m_edges.push_back(e);
+            const int h = first[f] + int(k), t = twin[std::size_t(h)];
+            int e;
+            if (t >= 0 && t < h) {
+                e = edgeOfHalf[std::size_t(t)];
+                m_edges[std::size_t(e)].face[1] = int(f);
             } else {
-                m_edges[std::size_t(it->second)].face[1] = int(f);
+                Edge edge;
+                edge.v[0] = loop[k];
+                edge.v[1] = loop[(k + 1) % loop.size()];
+                edge.face[0] = int(f);
+                e = int(m_edges.size());
+                m_edges.push_back(edge);
             }
-            m_faceEdges[f].push_back(it->second);
+            edgeOfHalf[std::size_t(h)] = e;
+            m_faceEdges[f][k] = e;
         }
     }
     // The ring of each vertex, counter-clockwise: in a face ... a -> v -> b ..., the face lies
     // between edge (v, b) and edge (v, a) turning counter-clockwise; the next face is the one
-    // with the half-edge v -> a.
-    std::vector<std::vector<std::pair<int, int>>> outgoing(m_rings.size());  // (face, corner)
-    for (std::size_t f = 0; f < faces.size(); ++f)
-        for (std::size_t k = 0; k < faces[f].size(); ++k)
-            outgoing[std::size_t(faces[f][k])].emplace_back(int(f), int(k));
-    for (std::size_t v = 0; v < m_rings.size(); ++v) {
-        const auto &out = outgoing[v];
-        if (out.empty())
+    // with the half-edge v -> a, the twin of a -> v.
+    const auto previous = [&](int h) {
+        const int f = halfFace[std::size_t(h)], k = halfCorner[std::size_t(h)];
+        const int n = int(m_faces[std::size_t(f)].size());
+        return first[std::size_t(f)] + (k + n - 1) % n;
+    };
+    for (std::size_t v = 0; v < nv; ++v) {
+        const int begin = outStart[v], end = outStart[v + 1];
+        if (begin == end)
             continue;
         Ring &ring = m_rings[v];
         // Start at a boundary half-edge v -> b (no b -> v) when there is one.
-        std::pair<int, int> start = out.front();
-        for (const auto &[f, k] : out) {
-            const auto &loop = faces[std::size_t(f)];
-            const int b = loop[(std::size_t(k) + 1) % loop.size()];
-            if (!halfEdge.count(key(b, int(v)))) {
-                start = {f, k};
+        int start = outHalf[std::size_t(begin)];
+        for (int i = begin; i < end; ++i)
+            if (twin[std::size_t(outHalf[std::size_t(i)])] < 0) {
+                start = outHalf[std::size_t(i)];
                 ring.boundary = true;
                 break;
             }
-        }
-        std::pair<int, int> at = start;
+        ring.edges.reserve(std::size_t(end - begin + 1));
+        ring.faces.reserve(std::size_t(end - begin));
+        int at = start;
         for (;;) {
-            const auto [f, k] = at;
-            const auto &loop = faces[std::size_t(f)];
-            const std::size_t n = loop.size();
-            ring.edges.push_back(m_faceEdges[std::size_t(f)][std::size_t(k)]);
-            ring.faces.push_back(f);
-            const int a = loop[(std::size_t(k) + n - 1) % n];
-            const auto next = halfEdge.find(key(int(v), a));
-            if (next == halfEdge.end()) {  // edge (v, a) is on the boundary: the fan ends
-                ring.edges.push_back(m_faceEdges[std::size_t(f)][(std::size_t(k) + n - 1) % n]);
+            ring.edges.push_back(edgeOfHalf[std::size_t(at)]);
+            ring.faces.push_back(halfFace[std::size_t(at)]);
+            const int back = previous(at);
+            const int next = twin[std::size_t(back)];
+            if (next < 0) {  // edge (v, a) is on the boundary: the fan ends
+                ring.edges.push_back(edgeOfHalf[std::size_t(back)]);
                 break;
             }
-            const int g = next->second;
-            const auto &gl = faces[std::size_t(g)];
-            const int corner = int(std::find(gl.begin(), gl.end(), int(v)) - gl.begin());
-            at = {g, corner};
+            at = next;
             if (at == start)
                 break;
         }
-        if (ring.faces.size() != out.size())
+        if (int(ring.faces.size()) != end - begin)
             problems.add(formatMessage(
                 coreTranslate("awb::mesh", "vertex %1 is non-manifold: its %2 faces do not form "
                                            "one fan around it"),
-                v,
-                out.size()));
+                v, end - begin));
     }
     problems.raise();
 }

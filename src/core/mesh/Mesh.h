@@ -53,7 +53,7 @@ MeshScheme suggestedScheme(const Mesh &mesh);
 // A vertex of no face is allowed (it stays where it is).
 class MeshTopology {
 public:
-    MeshTopology(int vertexCount, const std::vector<std::vector<int>> &faces);
+    MeshTopology(int vertexCount, std::vector<std::vector<int>> faces);
 
     struct Edge {
         int v[2] = {-1, -1};

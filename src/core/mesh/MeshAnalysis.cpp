@@ -48,6 +48,18 @@ void limitAndNormal(const LeftVectors &v, const Mat &net, const Eigen::Vector3d 
 
 } // namespace
 
+const Mat &ExtraordinaryVertex::S() const
+{
+    static const Mat none;
+    return matrix ? matrix->S : none;
+}
+
+const std::vector<Complex> &ExtraordinaryVertex::eigenvalues() const
+{
+    static const std::vector<Complex> none;
+    return matrix ? matrix->eigenvalues : none;
+}
+
 std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
                                                        const Mat &inputVertices)
 {
@@ -67,6 +79,8 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
                 it->second += (a - p).cross(b - p);
             }
     std::vector<ExtraordinaryVertex> vertices, faces;
+    std::map<int, std::shared_ptr<const AnalysedMatrix>> ringMatrices;   // by valence
+    std::map<int, std::shared_ptr<const AnalysedMatrix>> pieceMatrices;  // by settled type
     for (const MeshPieceRoot &root : pieces.roots) {
         if (root.vertex < 0)
             continue;
@@ -114,8 +128,10 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
             const VertexSpectrum &s = *shared;
             e.ring = "ring";
             e.ringSize = int(s.S.rows());
-            e.S = s.S;
-            e.eigenvalues = s.eigenvalues;
+            auto &matrix = ringMatrices[e.valence];
+            if (!matrix)
+                matrix = std::make_shared<const AnalysedMatrix>(AnalysedMatrix{s.S, s.eigenvalues});
+            e.matrix = matrix;
             e.subdominant = s.subdominant;
             e.subsubdominant = s.subsubdominant;
             e.c1 = s.c1;
@@ -124,13 +140,17 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
             const Mat &S = pieces.types[std::size_t(settled)].children.front().S;
             e.ring = "piece";
             e.ringSize = int(S.rows());
-            e.S = S;
-            e.eigenvalues = spectrum(S, 1e-9).values;
-            if (e.eigenvalues.size() > 1)
-                e.subdominant = std::abs(e.eigenvalues[1]);
-            for (std::size_t k = 2; k < e.eigenvalues.size(); ++k)
-                if (std::abs(e.eigenvalues[k]) < e.subdominant - 1e-9) {
-                    e.subsubdominant = std::abs(e.eigenvalues[k]);
+            auto &matrix = pieceMatrices[settled];
+            if (!matrix)
+                matrix = std::make_shared<const AnalysedMatrix>(
+                    AnalysedMatrix{S, spectrum(S, 1e-9).values});
+            e.matrix = matrix;
+            const auto &values = matrix->eigenvalues;
+            if (values.size() > 1)
+                e.subdominant = std::abs(values[1]);
+            for (std::size_t k = 2; k < values.size(); ++k)
+                if (std::abs(values[k]) < e.subdominant - 1e-9) {
+                    e.subsubdominant = std::abs(values[k]);
                     break;
                 }
         }
@@ -140,7 +160,8 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
               [](const auto &a, const auto &b) { return a.vertex < b.vertex; });
     std::sort(faces.begin(), faces.end(),
               [](const auto &a, const auto &b) { return a.face < b.face; });
-    vertices.insert(vertices.end(), faces.begin(), faces.end());
+    vertices.insert(vertices.end(), std::make_move_iterator(faces.begin()),
+                    std::make_move_iterator(faces.end()));
     return vertices;
 }
 

@@ -7,11 +7,19 @@
 #include "core/mesh/MeshPieces.h"
 
 #include <complex>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace awb {
+
+// A matrix analysed and its spectrum, shared by every vertex of the same kind (a mesh of a
+// million faces has hundreds of thousands of extraordinary vertices and a few kinds).
+struct AnalysedMatrix {
+    Mat S;
+    std::vector<Complex> eigenvalues;  // by modulus, largest first
+};
 
 struct ExtraordinaryVertex {
     int vertex = -1;  // the input's vertex, or -1
@@ -30,8 +38,10 @@ struct ExtraordinaryVertex {
     // sharp features, the vertex piece's net.
     std::string ring;
     int ringSize = 0;
-    Mat S;                             // that matrix: ringSize x ringSize
-    std::vector<Complex> eigenvalues;  // by modulus, largest first
+    std::shared_ptr<const AnalysedMatrix> matrix;  // none when not analysed
+    // That matrix, ringSize x ringSize (empty when not analysed), and its eigenvalues.
+    const Mat &S() const;
+    const std::vector<Complex> &eigenvalues() const;
     double subdominant = 0.0;          // lambda
     double subsubdominant = 0.0;       // mu: the largest modulus below lambda
     // Smooth inside: Reif's criterion (spectral and characteristic map) and mu against

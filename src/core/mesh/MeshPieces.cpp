@@ -57,20 +57,53 @@ int keyOf(float s)
     return bits;
 }
 
+// The walk's marks on the vertices and faces, reused from walk to walk (a mesh of a million
+// faces has as many pieces; a hash per walk was a quarter of their time): a mark is valid when
+// its stamp is the walk's.
+struct WalkMarks {
+    std::vector<unsigned> vertexStamp, faceStamp;
+    std::vector<int> local;  // vertex -> its number in the walk
+    unsigned stamp = 0;
+
+    // Stamps only grow, so the marks of earlier walks, on any topology, are never valid.
+    void begin(const MeshTopology &t)
+    {
+        if (stamp == UINT_MAX) {
+            std::fill(vertexStamp.begin(), vertexStamp.end(), 0u);
+            std::fill(faceStamp.begin(), faceStamp.end(), 0u);
+            stamp = 0;
+        }
+        if (vertexStamp.size() < std::size_t(t.vertexCount())) {
+            vertexStamp.resize(std::size_t(t.vertexCount()), 0u);
+            local.resize(std::size_t(t.vertexCount()), 0);
+        }
+        if (faceStamp.size() < std::size_t(t.faceCount()))
+            faceStamp.resize(std::size_t(t.faceCount()), 0u);
+        ++stamp;
+    }
+    // The walk's number of vertex x, or -1.
+    int find(int x) const
+    {
+        return vertexStamp[std::size_t(x)] == stamp ? local[std::size_t(x)] : -1;
+    }
+};
+
 Walk walk(const MeshTopology &t, const Seed &seed)
 {
     Walk w;
-    std::unordered_map<int, int> local;
-    std::unordered_set<int> region;
+    thread_local WalkMarks marks;
+    marks.begin(t);
     const auto add = [&](int x) {
-        const auto [it, added] = local.emplace(x, int(w.order.size()));
-        if (added)
+        if (marks.vertexStamp[std::size_t(x)] != marks.stamp) {
+            marks.vertexStamp[std::size_t(x)] = marks.stamp;
+            marks.local[std::size_t(x)] = int(w.order.size());
             w.order.push_back(x);
-        return it->second;
+        }
+        return marks.local[std::size_t(x)];
     };
     const bool sharp = t.hasSharpness(), holes = t.hasHoles();
     const auto addFace = [&](int g, int corner) {
-        region.insert(g);
+        marks.faceStamp[std::size_t(g)] = marks.stamp;
         const auto &loop = t.face(g);
         const int m = int(loop.size());
         std::vector<int> ids;
@@ -121,16 +154,16 @@ Walk walk(const MeshTopology &t, const Seed &seed)
         if (!ring.boundary) {
             int best = INT_MAX;
             for (int k = 0; k < int(ring.edges.size()); ++k) {
-                const auto it = local.find(t.otherEnd(ring.edges[std::size_t(k)], u));
-                if (it != local.end() && it->second < best) {
-                    best = it->second;
+                const int at = marks.find(t.otherEnd(ring.edges[std::size_t(k)], u));
+                if (at >= 0 && at < best) {
+                    best = at;
                     s = k;
                 }
             }
         }
         for (int i = 0; i < F; ++i) {
             const int g = ring.faces[std::size_t((s + i) % F)];
-            if (!region.count(g))
+            if (marks.faceStamp[std::size_t(g)] != marks.stamp)
                 addFace(g, cornerOf(t.face(g), u));
         }
     }

@@ -73,13 +73,13 @@ QList<MapSpectrum> ItemController::focusedSpectra() const
 {
     std::shared_ptr<const std::vector<ExtraordinaryVertex>> list;
     const ExtraordinaryVertex *e = focused(&list);
-    if (!e || e->S.size() == 0)
+    if (!e || e->S().size() == 0)
         return {};
     MapSpectrum m;
     m.label = tr("S at %1 (n = %2)").arg(focusedVertexName()).arg(e->valence);
-    m.spectrum = spectrum(e->S);
+    m.spectrum = spectrum(e->S());
     m.subdominant = subdominant(m.spectrum, true);
-    m.contractivity = stochasticContractivity(e->S);
+    m.contractivity = stochasticContractivity(e->S());
     return {m};
 }
 
@@ -87,9 +87,9 @@ QList<NamedMatrix> ItemController::focusedMatrices() const
 {
     std::shared_ptr<const std::vector<ExtraordinaryVertex>> list;
     const ExtraordinaryVertex *e = focused(&list);
-    if (!e || e->S.size() == 0)
+    if (!e || e->S().size() == 0)
         return {};
-    return {NamedMatrix(tr("S at %1 (n = %2)").arg(focusedVertexName()).arg(e->valence), e->S)};
+    return {NamedMatrix(tr("S at %1 (n = %2)").arg(focusedVertexName()).arg(e->valence), e->S())};
 }
 
 void ItemController::showMeshMarkers(const SubdivisionMeshItem *mesh)
