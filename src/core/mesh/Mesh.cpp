@@ -124,69 +124,76 @@ MeshTopology::MeshTopology(int vertexCount, std::vector<std::vector<int>> faces)
             halfCorner[std::size_t(first[f] + k)] = k;
         }
     }
-    const auto from = [&](int h) {
-        return m_faces[std::size_t(halfFace[std::size_t(h)])][std::size_t(halfCorner[std::size_t(h)])];
-    };
-    const auto to = [&](int h) {
-        const auto &loop = m_faces[std::size_t(halfFace[std::size_t(h)])];
-        return loop[(std::size_t(halfCorner[std::size_t(h)]) + 1) % loop.size()];
-    };
+    std::vector<int> halfFrom(halfEdges), halfTo(halfEdges);
+    for (std::size_t f = 0; f < nf; ++f) {
+        const auto &loop = m_faces[f];
+        for (std::size_t k = 0; k < loop.size(); ++k) {
+            halfFrom[std::size_t(first[f]) + k] = loop[k];
+            halfTo[std::size_t(first[f]) + k] = loop[(k + 1) % loop.size()];
+        }
+    }
     std::vector<int> outStart(nv + 1, 0), outHalf(halfEdges);
-    for (const auto &loop : m_faces)
-        for (int v : loop)
-            ++outStart[std::size_t(v) + 1];
+    for (int v : halfFrom)
+        ++outStart[std::size_t(v) + 1];
     for (std::size_t v = 0; v < nv; ++v)
         outStart[v + 1] += outStart[v];
     {
         std::vector<int> fill(outStart.begin(), outStart.end() - 1);
         for (int h = 0; h < int(halfEdges); ++h)
-            outHalf[std::size_t(fill[std::size_t(from(h))]++)] = h;
+            outHalf[std::size_t(fill[std::size_t(halfFrom[std::size_t(h)])]++)] = h;
     }
-    // The first half-edge a -> b (in face order), or -1.
-    const auto findHalf = [&](int a, int b) {
-        for (int i = outStart[std::size_t(a)]; i < outStart[std::size_t(a) + 1]; ++i)
-            if (to(outHalf[std::size_t(i)]) == b)
-                return outHalf[std::size_t(i)];
-        return -1;
-    };
-    // Edges of three or more faces, each named once (by its first half-edge), in the order of
-    // their vertex pairs.
+    // For each half-edge a -> b: the first a -> b (in face order), the first b -> a (its twin,
+    // or -1), and how many faces the edge joins.
+    std::vector<int> earliest(halfEdges), twin(halfEdges, -1);
     std::vector<std::pair<std::pair<int, int>, std::vector<int>>> nonManifold;
     for (int h = 0; h < int(halfEdges); ++h) {
-        const int a = from(h), b = to(h);
-        std::vector<int> on;
-        int firstHalf = h;
-        for (const int x : {a, b})
-            for (int i = outStart[std::size_t(x)]; i < outStart[std::size_t(x) + 1]; ++i) {
-                const int g = outHalf[std::size_t(i)];
-                if (to(g) == (x == a ? b : a)) {
-                    on.push_back(halfFace[std::size_t(g)]);
-                    firstHalf = std::min(firstHalf, g);
-                }
+        const int a = halfFrom[std::size_t(h)], b = halfTo[std::size_t(h)];
+        int same = -1, opposite = -1, count = 0, firstHalf = h;
+        for (int i = outStart[std::size_t(a)]; i < outStart[std::size_t(a) + 1]; ++i) {
+            const int g = outHalf[std::size_t(i)];
+            if (halfTo[std::size_t(g)] == b) {
+                same = same < 0 ? g : same;
+                ++count;
+                firstHalf = std::min(firstHalf, g);
             }
-        if (on.size() > 2 && firstHalf == h) {
+        }
+        for (int i = outStart[std::size_t(b)]; i < outStart[std::size_t(b) + 1]; ++i) {
+            const int g = outHalf[std::size_t(i)];
+            if (halfTo[std::size_t(g)] == a) {
+                opposite = opposite < 0 ? g : opposite;
+                ++count;
+                firstHalf = std::min(firstHalf, g);
+            }
+        }
+        earliest[std::size_t(h)] = same;
+        twin[std::size_t(h)] = opposite;
+        if (count > 2 && firstHalf == h) {  // named once, by its first half-edge
+            std::vector<int> on;
+            for (const int x : {a, b})
+                for (int i = outStart[std::size_t(x)]; i < outStart[std::size_t(x) + 1]; ++i) {
+                    const int g = outHalf[std::size_t(i)];
+                    if (halfTo[std::size_t(g)] == (x == a ? b : a))
+                        on.push_back(halfFace[std::size_t(g)]);
+                }
             std::sort(on.begin(), on.end());
             nonManifold.push_back({{std::min(a, b), std::max(a, b)}, std::move(on)});
         }
     }
+    // Edges of three or more faces, in the order of their vertex pairs.
     std::sort(nonManifold.begin(), nonManifold.end());
     for (const auto &[ab, on] : nonManifold)
         problems.add(formatMessage(
             coreTranslate("awb::mesh", "edge (%1, %2) is non-manifold: faces %3 meet there"),
             ab.first, ab.second, faceList(on)));
     problems.raise();
-    std::vector<int> twin(halfEdges, -1);
-    for (int h = 0; h < int(halfEdges); ++h) {
-        const int a = from(h), b = to(h);
-        const int earlier = findHalf(a, b);
-        if (earlier != h)
+    for (int h = 0; h < int(halfEdges); ++h)
+        if (earliest[std::size_t(h)] != h)
             problems.add(formatMessage(
                 coreTranslate("awb::mesh",
                               "faces %1 and %2 are oriented inconsistently: both run from "
                               "vertex %3 to vertex %4 (turn one of them over)"),
-                halfFace[std::size_t(earlier)], halfFace[std::size_t(h)], a, b));
-        twin[std::size_t(h)] = findHalf(b, a);
-    }
+                halfFace[std::size_t(earliest[std::size_t(h)])], halfFace[std::size_t(h)],
+                halfFrom[std::size_t(h)], halfTo[std::size_t(h)]));
     problems.raise();
     // Edges, numbered in the order the faces first name them.
     std::vector<int> edgeOfHalf(halfEdges, -1);

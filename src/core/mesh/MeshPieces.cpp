@@ -88,7 +88,9 @@ struct WalkMarks {
     }
 };
 
-Walk walk(const MeshTopology &t, const Seed &seed)
+// Without `faces`, only the net and the key (enough to find a known type; a mesh of a million
+// faces has as many pieces and a few types): no list per face.
+Walk walk(const MeshTopology &t, const Seed &seed, bool faces = true)
 {
     Walk w;
     thread_local WalkMarks marks;
@@ -106,13 +108,11 @@ Walk walk(const MeshTopology &t, const Seed &seed)
         marks.faceStamp[std::size_t(g)] = marks.stamp;
         const auto &loop = t.face(g);
         const int m = int(loop.size());
-        std::vector<int> ids;
         w.key.push_back(m);
-        for (int i = 0; i < m; ++i) {
-            ids.push_back(add(loop[std::size_t((corner + i) % m)]));
-            w.key.push_back(ids.back());
-        }
-        w.faces.push_back(std::move(ids));
+        for (int i = 0; i < m; ++i)
+            w.key.push_back(add(loop[std::size_t((corner + i) % m)]));
+        if (faces)
+            w.faces.emplace_back(w.key.end() - m, w.key.end());
         if (sharp) {
             std::vector<float> edges;
             for (int i = 0; i < m; ++i) {
@@ -302,10 +302,13 @@ public:
     // The type of the piece `seed` of `t` (new types are completed by run()); *net its net.
     int typeOf(const MeshTopology &t, const Seed &seed, std::vector<int> *net)
     {
-        Walk w = walk(t, seed);
-        *net = w.order;
-        if (const auto it = m_byKey.find(w.key); it != m_byKey.end())
+        Walk w = walk(t, seed, false);
+        if (const auto it = m_byKey.find(w.key); it != m_byKey.end()) {
+            *net = std::move(w.order);
             return it->second;
+        }
+        w = walk(t, seed);
+        *net = w.order;
         if (int(types.size()) >= kMaxTypes)
             throw InputError(formatMessage(
                 coreTranslate("awb::mesh", "the mesh has more than %1 kinds of neighbourhood"),

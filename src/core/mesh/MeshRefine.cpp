@@ -15,18 +15,19 @@ namespace {
 
 using namespace meshrules;
 
-// Sums weights of the same point (sorted by point).
+// Sums weights of the same point (sorted by point), in place.
 MeshStencil merged(MeshStencil s)
 {
     std::sort(s.begin(), s.end());
-    MeshStencil out;
-    for (const auto &[p, w] : s) {
-        if (!out.empty() && out.back().first == p)
-            out.back().second += w;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        if (n > 0 && s[n - 1].first == s[i].first)
+            s[n - 1].second += s[i].second;
         else
-            out.emplace_back(p, w);
+            s[n++] = s[i];
     }
-    return out;
+    s.resize(n);
+    return s;
 }
 
 void addFaceCentroid(MeshStencil &s, const std::vector<int> &face, double weight)
@@ -337,11 +338,36 @@ MeshSharpness childSharpness(const MeshTopology &t, MeshScheme scheme)
 
 MeshStencil composeStencils(const MeshStencil &outer, const std::vector<MeshStencil> &inner)
 {
-    MeshStencil s;
+    // A sum per point met, on marks reused from call to call (the isolation of a mesh of a
+    // million faces composes a million stencils): the products are summed in the order met.
+    thread_local std::vector<double> sum;
+    thread_local std::vector<unsigned> stamp;
+    thread_local unsigned current = 0;
+    thread_local std::vector<int> met;
+    if (++current == 0) {
+        std::fill(stamp.begin(), stamp.end(), 0u);
+        current = 1;
+    }
+    met.clear();
     for (const auto &[p, w] : outer)
-        for (const auto &[q, u] : inner[std::size_t(p)])
-            s.emplace_back(q, w * u);
-    return merged(std::move(s));
+        for (const auto &[q, u] : inner[std::size_t(p)]) {
+            if (std::size_t(q) >= stamp.size()) {
+                stamp.resize(std::size_t(q) + 1, 0u);
+                sum.resize(std::size_t(q) + 1);
+            }
+            if (stamp[std::size_t(q)] != current) {
+                stamp[std::size_t(q)] = current;
+                sum[std::size_t(q)] = 0.0;
+                met.push_back(q);
+            }
+            sum[std::size_t(q)] += w * u;
+        }
+    std::sort(met.begin(), met.end());
+    MeshStencil s;
+    s.reserve(met.size());
+    for (int q : met)
+        s.emplace_back(q, sum[std::size_t(q)]);
+    return s;
 }
 
 Refinement refineTopology(const MeshTopology &t, MeshScheme scheme)
