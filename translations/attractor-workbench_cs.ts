@@ -4590,6 +4590,34 @@ Schéma subdivize:</translation>
         <source>Sharpness of vertex %1 (0: smooth; a corner for that many levels; 10: for ever):</source>
         <translation>Ostrost vrcholu %1 (0: hladký; roh po tolik úrovní; 10: navždy):</translation>
     </message>
+    <message>
+        <source>Not repaired: %1</source>
+        <translation>Neopraveno: %1</translation>
+    </message>
+    <message>
+        <source>%1
+
+Repair the mesh? These changes are well defined:
+
+%2</source>
+        <translation>%1
+
+Opravit síť? Tyto změny jsou jednoznačně definované:
+
+%2</translation>
+    </message>
+    <message>
+        <source>Even repaired: %1</source>
+        <translation>Ani po opravě: %1</translation>
+    </message>
+    <message>
+        <source>Repaired: %1</source>
+        <translation>Opraveno: %1</translation>
+    </message>
+    <message>
+        <source>Imported with these losses and changes:</source>
+        <translation>Importováno s těmito ztrátami a změnami:</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -8496,6 +8524,26 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
         <translation>  ostré prvky: ostré hrany %1, rohy %2, díry %3; hranice %4, metoda ostrých hran %5, trojúhelníky %6
 </translation>
     </message>
+    <message>
+        <source>Repair what is well defined before the checks: weld boundary vertices at the same position, turn flipped faces over, split vertices whose faces form several fans, name repeated vertices once; say each change.</source>
+        <translation>Před kontrolami opravit, co je jednoznačně definované: svařit hraniční vrcholy ve stejné poloze, otočit převrácené stěny, rozdělit vrcholy, jejichž stěny tvoří několik vějířů, opakované vrcholy uvést jen jednou; každou změnu vypsat.</translation>
+    </message>
+    <message>
+        <source>repaired: %1</source>
+        <translation>opraveno: %1</translation>
+    </message>
+    <message>
+        <source>attractor-cli: not repaired: %1</source>
+        <translation>attractor-cli: neopraveno: %1</translation>
+    </message>
+    <message>
+        <source>repaired: nothing needed repair</source>
+        <translation>opraveno: nebylo co opravovat</translation>
+    </message>
+    <message>
+        <source> (--repair would weld %1 vertices, turn %2 faces over and split %3 vertices)</source>
+        <translation> (--repair by svařil %1 vrcholů, otočil %2 stěn a rozdělil %3 vrcholů)</translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>
@@ -9733,6 +9781,42 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     <message>
         <source>one word: catmark or smooth</source>
         <translation>jedno slovo: catmark nebo smooth</translation>
+    </message>
+    <message>
+        <source> and %1 more</source>
+        <translation> a %1 dalších</translation>
+    </message>
+    <message>
+        <source>%1 faces named a vertex twice in a row and now name it once (faces %2)</source>
+        <translation>%1 stěn uvádělo vrchol dvakrát za sebou a nyní ho uvádí jednou (stěny %2)</translation>
+    </message>
+    <message>
+        <source>%1 faces were left with fewer than three vertices and were removed (faces %2; the later faces move up)</source>
+        <translation>%1 stěn mělo méně než tři vrcholy a bylo odstraněno (stěny %2; další stěny se posouvají)</translation>
+    </message>
+    <message>
+        <source>%1 boundary vertices at the position of another were welded into it (vertices %2; they stay, used by no face)</source>
+        <translation>%1 hraničních vrcholů v poloze jiného vrcholu bylo do něj svařeno (vrcholy %2; zůstávají, nepoužívá je žádná stěna)</translation>
+    </message>
+    <message>
+        <source>%1 faces were turned over to the orientation of the surface they belong to (faces %2)</source>
+        <translation>%1 stěn bylo otočeno podle orientace plochy, k níž patří (stěny %2)</translation>
+    </message>
+    <message>
+        <source>the surface of face %1 cannot be oriented (it is a Möbius band or contains one): left as it is</source>
+        <translation>plochu stěny %1 nelze orientovat (je to Möbiova páska nebo ji obsahuje): ponechána beze změny</translation>
+    </message>
+    <message>
+        <source>%1 vertices whose faces formed several fans were split, one vertex per fan (vertices %2; the %3 new vertices are numbered from %4)</source>
+        <translation>%1 vrcholů, jejichž stěny tvořily několik vějířů, bylo rozděleno, jeden vrchol na vějíř (vrcholy %2; %3 nových vrcholů má čísla od %4)</translation>
+    </message>
+    <message>
+        <source>(%1, %2)</source>
+        <translation>(%1, %2)</translation>
+    </message>
+    <message>
+        <source>%1 edges join three or more faces (%2): no choice of sheets is canonical, so they are not repaired</source>
+        <translation>%1 hran spojuje tři nebo více stěn (%2): žádná volba listů není kanonická, proto nejsou opraveny</translation>
     </message>
 </context>
 <context>

@@ -4584,6 +4584,34 @@ Schéma de subdivision&#xa0;:</translation>
         <source>Sharpness of vertex %1 (0: smooth; a corner for that many levels; 10: for ever):</source>
         <translation>Netteté du sommet %1 (0 : lisse ; un coin pendant autant de niveaux ; 10 : pour toujours) :</translation>
     </message>
+    <message>
+        <source>Not repaired: %1</source>
+        <translation>Non réparé : %1</translation>
+    </message>
+    <message>
+        <source>%1
+
+Repair the mesh? These changes are well defined:
+
+%2</source>
+        <translation>%1
+
+Réparer le maillage ? Ces modifications sont bien définies :
+
+%2</translation>
+    </message>
+    <message>
+        <source>Even repaired: %1</source>
+        <translation>Même réparé : %1</translation>
+    </message>
+    <message>
+        <source>Repaired: %1</source>
+        <translation>Réparé : %1</translation>
+    </message>
+    <message>
+        <source>Imported with these losses and changes:</source>
+        <translation>Importé avec ces pertes et modifications :</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -8483,6 +8511,26 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
         <translation>  éléments vifs : arêtes vives %1, coins %2, trous %3 ; bord %4, méthode des arêtes vives %5, triangles %6
 </translation>
     </message>
+    <message>
+        <source>Repair what is well defined before the checks: weld boundary vertices at the same position, turn flipped faces over, split vertices whose faces form several fans, name repeated vertices once; say each change.</source>
+        <translation>Réparer ce qui est bien défini avant les vérifications : souder les sommets de bord à la même position, retourner les faces inversées, scinder les sommets dont les faces forment plusieurs éventails, ne nommer qu&apos;une fois les sommets répétés ; dire chaque modification.</translation>
+    </message>
+    <message>
+        <source>repaired: %1</source>
+        <translation>réparé : %1</translation>
+    </message>
+    <message>
+        <source>attractor-cli: not repaired: %1</source>
+        <translation>attractor-cli : non réparé : %1</translation>
+    </message>
+    <message>
+        <source>repaired: nothing needed repair</source>
+        <translation>réparé : rien à réparer</translation>
+    </message>
+    <message>
+        <source> (--repair would weld %1 vertices, turn %2 faces over and split %3 vertices)</source>
+        <translation> (--repair souderait %1 sommets, retournerait %2 faces et scinderait %3 sommets)</translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>
@@ -9720,6 +9768,42 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     <message>
         <source>one word: catmark or smooth</source>
         <translation>un mot : catmark ou smooth</translation>
+    </message>
+    <message>
+        <source> and %1 more</source>
+        <translation> et %1 de plus</translation>
+    </message>
+    <message>
+        <source>%1 faces named a vertex twice in a row and now name it once (faces %2)</source>
+        <translation>%1 faces nommaient un sommet deux fois de suite et ne le nomment plus qu&apos;une fois (faces %2)</translation>
+    </message>
+    <message>
+        <source>%1 faces were left with fewer than three vertices and were removed (faces %2; the later faces move up)</source>
+        <translation>%1 faces avaient moins de trois sommets et ont été supprimées (faces %2 ; les faces suivantes remontent)</translation>
+    </message>
+    <message>
+        <source>%1 boundary vertices at the position of another were welded into it (vertices %2; they stay, used by no face)</source>
+        <translation>%1 sommets de bord à la position d&apos;un autre y ont été soudés (sommets %2 ; ils restent, utilisés par aucune face)</translation>
+    </message>
+    <message>
+        <source>%1 faces were turned over to the orientation of the surface they belong to (faces %2)</source>
+        <translation>%1 faces ont été retournées selon l&apos;orientation de la surface à laquelle elles appartiennent (faces %2)</translation>
+    </message>
+    <message>
+        <source>the surface of face %1 cannot be oriented (it is a Möbius band or contains one): left as it is</source>
+        <translation>la surface de la face %1 n&apos;est pas orientable (c&apos;est un ruban de Möbius ou elle en contient un) : laissée telle quelle</translation>
+    </message>
+    <message>
+        <source>%1 vertices whose faces formed several fans were split, one vertex per fan (vertices %2; the %3 new vertices are numbered from %4)</source>
+        <translation>%1 sommets dont les faces formaient plusieurs éventails ont été scindés, un sommet par éventail (sommets %2 ; les %3 nouveaux sommets sont numérotés à partir de %4)</translation>
+    </message>
+    <message>
+        <source>(%1, %2)</source>
+        <translation>(%1, %2)</translation>
+    </message>
+    <message>
+        <source>%1 edges join three or more faces (%2): no choice of sheets is canonical, so they are not repaired</source>
+        <translation>%1 arêtes joignent trois faces ou plus (%2) : aucun choix de feuillets n&apos;est canonique, elles ne sont donc pas réparées</translation>
     </message>
 </context>
 <context>

@@ -4578,6 +4578,34 @@ Subdivision scheme:</source>
         <source>Sharpness of vertex %1 (0: smooth; a corner for that many levels; 10: for ever):</source>
         <translation>顶点 %1 的锐度（0：光滑；在这么多层内为角点；10：永久）：</translation>
     </message>
+    <message>
+        <source>Not repaired: %1</source>
+        <translation>未修复：%1</translation>
+    </message>
+    <message>
+        <source>%1
+
+Repair the mesh? These changes are well defined:
+
+%2</source>
+        <translation>%1
+
+修复该网格？以下更改是明确定义的：
+
+%2</translation>
+    </message>
+    <message>
+        <source>Even repaired: %1</source>
+        <translation>修复后仍然：%1</translation>
+    </message>
+    <message>
+        <source>Repaired: %1</source>
+        <translation>已修复：%1</translation>
+    </message>
+    <message>
+        <source>Imported with these losses and changes:</source>
+        <translation>导入时有以下损失和更改：</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -8470,6 +8498,26 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
         <translation>  尖锐特征：%1 条折痕，%2 个角点，%3 个孔洞；边界 %4，折痕方法 %5，三角形 %6
 </translation>
     </message>
+    <message>
+        <source>Repair what is well defined before the checks: weld boundary vertices at the same position, turn flipped faces over, split vertices whose faces form several fans, name repeated vertices once; say each change.</source>
+        <translation>在检查之前修复明确定义的问题：焊接位置相同的边界顶点，翻转反向的面，拆分其面构成多个扇形的顶点，重复的顶点只保留一次；逐条说明每个更改。</translation>
+    </message>
+    <message>
+        <source>repaired: %1</source>
+        <translation>已修复：%1</translation>
+    </message>
+    <message>
+        <source>attractor-cli: not repaired: %1</source>
+        <translation>attractor-cli：未修复：%1</translation>
+    </message>
+    <message>
+        <source>repaired: nothing needed repair</source>
+        <translation>已修复：无需修复</translation>
+    </message>
+    <message>
+        <source> (--repair would weld %1 vertices, turn %2 faces over and split %3 vertices)</source>
+        <translation>（--repair 将焊接 %1 个顶点，翻转 %2 个面并拆分 %3 个顶点）</translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>
@@ -9707,6 +9755,42 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>one word: catmark or smooth</source>
         <translation>一个单词：catmark 或 smooth</translation>
+    </message>
+    <message>
+        <source> and %1 more</source>
+        <translation> 以及另外 %1 个</translation>
+    </message>
+    <message>
+        <source>%1 faces named a vertex twice in a row and now name it once (faces %2)</source>
+        <translation>%1 个面连续两次列出同一顶点，现在只列出一次（面 %2）</translation>
+    </message>
+    <message>
+        <source>%1 faces were left with fewer than three vertices and were removed (faces %2; the later faces move up)</source>
+        <translation>%1 个面剩余不到三个顶点，已被删除（面 %2；后面的面依次前移）</translation>
+    </message>
+    <message>
+        <source>%1 boundary vertices at the position of another were welded into it (vertices %2; they stay, used by no face)</source>
+        <translation>%1 个边界顶点与另一顶点位置相同，已焊接到该顶点（顶点 %2；它们保留，但不被任何面使用）</translation>
+    </message>
+    <message>
+        <source>%1 faces were turned over to the orientation of the surface they belong to (faces %2)</source>
+        <translation>%1 个面已翻转为其所属曲面的定向（面 %2）</translation>
+    </message>
+    <message>
+        <source>the surface of face %1 cannot be oriented (it is a Möbius band or contains one): left as it is</source>
+        <translation>面 %1 所在的曲面不可定向（它是或包含莫比乌斯带）：保持原样</translation>
+    </message>
+    <message>
+        <source>%1 vertices whose faces formed several fans were split, one vertex per fan (vertices %2; the %3 new vertices are numbered from %4)</source>
+        <translation>%1 个顶点的面构成多个扇形，已拆分为每个扇形一个顶点（顶点 %2；%3 个新顶点从 %4 开始编号）</translation>
+    </message>
+    <message>
+        <source>(%1, %2)</source>
+        <translation>（%1, %2）</translation>
+    </message>
+    <message>
+        <source>%1 edges join three or more faces (%2): no choice of sheets is canonical, so they are not repaired</source>
+        <translation>%1 条边连接三个或更多面（%2）：没有规范的分片选择，因此不予修复</translation>
     </message>
 </context>
 <context>

@@ -6,6 +6,7 @@
 
 #include "core/mesh/MeshAnalysis.h"
 #include "core/mesh/MeshFiles.h"
+#include "core/mesh/MeshRepair.h"
 #include "model/Project.h"
 #include "model/SubdivisionMeshItem.h"
 
@@ -28,7 +29,11 @@ int importMesh(const QStringList &args)
               "scheme", "catmull-clark"},
              {"out", CliTr::tr("The project file to write (.awb)."), "file"},
              {"name", CliTr::tr("The item's name (default: the file's base name)."),
-              "name"}});
+              "name"},
+             {"repair", CliTr::tr("Repair what is well defined before the checks: weld "
+                                  "boundary vertices at the same position, turn flipped faces "
+                                  "over, split vertices whose faces form several fans, name "
+                                  "repeated vertices once; say each change.")}});
         parseOrFail(parser, args, 1);
         if (!parser.isSet("out"))
             throw Failure{CliTr::tr("--out FILE (the project to write) is required"), 2};
@@ -44,11 +49,34 @@ int importMesh(const QStringList &args)
         for (const std::string &n : notes)
             err() << CliTr::tr("attractor-cli: warning: %1").arg(QString::fromStdString(n))
                   << "\n";
+        if (parser.isSet("repair")) {
+            MeshRepairReport report;
+            mesh = repairMesh(mesh, &report);
+            for (const std::string &c : report.changes)
+                out() << CliTr::tr("repaired: %1").arg(QString::fromStdString(c)) << "\n";
+            for (const std::string &c : report.unrepaired)
+                err() << CliTr::tr("attractor-cli: not repaired: %1")
+                             .arg(QString::fromStdString(c))
+                      << "\n";
+            if (!report.changed())
+                out() << CliTr::tr("repaired: nothing needed repair") << "\n";
+        }
         Project project;
         auto item = std::make_unique<SubdivisionMeshItem>();
         QString error;
-        if (!item->setMesh(mesh, scheme, &error))
+        if (!item->setMesh(mesh, scheme, &error)) {
+            MeshRepairReport report;
+            if (!parser.isSet("repair")) {
+                repairMesh(mesh, &report);
+                if (report.changed())
+                    error += CliTr::tr(" (--repair would weld %1 vertices, turn %2 faces over "
+                                       "and split %3 vertices)")
+                                 .arg(report.weldedVertices)
+                                 .arg(report.turnedFaces)
+                                 .arg(report.splitVertices);
+            }
             throw Failure{QStringLiteral("%1: %2").arg(file, error)};
+        }
         const QString name =
             parser.isSet("name") ? parser.value("name") : QFileInfo(file).completeBaseName();
         if (!name.isEmpty() && !item->setName(name))

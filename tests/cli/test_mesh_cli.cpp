@@ -38,6 +38,7 @@ private slots:
     void analyseListsTheExtraordinaryVertices();
     void exportObjIsTheRefinedMeshAtItsLimit();
     void badFilesAreRefusedByName();
+    void repairSaysWhatItChanged();
     void valencesTableIsTheWindowsTable();
     void interiorValenceTwoIsImportedAndSaid();
 
@@ -290,6 +291,43 @@ void TestMeshCli::valencesTableIsTheWindowsTable()
                               .toObject();
     QVERIFY(v["characteristic_map"].toObject()["regular"].toBool());
     QCOMPARE(v["characteristic_map"].toObject()["winding"].toInt(), 1);
+}
+
+void TestMeshCli::repairSaysWhatItChanged()
+{
+    // A 2 x 2 grid of quads, one turned over, and a bowtie vertex joining a triangle at a
+    // corner: refused, naming the faces, with the hint; --repair turns, splits and says so.
+    const QString obj = m_dir.filePath("flipped.obj");
+    QFile f(obj);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nv 0 2 0\nv 1 2 0\n"
+            "v 2 2 0\nv 3 3 0\nv 2 3 0\n"
+            "f 1 2 5 4\nf 2 3 6 5\nf 4 5 8 7\nf 5 8 9 6\nf 9 10 11\n");
+    f.close();
+    const QString project = m_dir.filePath("flipped.awb");
+    QByteArray out, err;
+    QCOMPARE(run({"import-mesh", obj, "--out", project}, &out, &err), 1);
+    QVERIFY2(err.contains("oriented inconsistently")
+                 && err.contains("--repair would weld 0 vertices, turn 1 faces over and split 1 "
+                                 "vertices"),
+             err.constData());
+    QCOMPARE(run({"import-mesh", obj, "--out", project, "--repair"}, &out, &err), 0);
+    QVERIFY2(out.contains("repaired: 1 faces were turned over to the orientation of the surface "
+                          "they belong to (faces 3)")
+                 && out.contains("repaired: 1 vertices whose faces formed several fans were "
+                                 "split, one vertex per fan (vertices 8; the 1 new vertices are "
+                                 "numbered from 11)")
+                 && out.contains("12 vertices, 5 faces"),
+             out.constData());
+    QCOMPARE(run({"check", project}, &out, &err), 0);
+    // A sound mesh: nothing to repair, said.
+    const QString cube = m_dir.filePath("cube.obj");
+    {
+        std::ofstream file(QFile::encodeName(cube).toStdString());
+        writeObj(file, cubeMesh(), "");
+    }
+    QCOMPARE(run({"import-mesh", cube, "--out", project, "--repair"}, &out, &err), 0);
+    QVERIFY2(out.contains("repaired: nothing needed repair"), out.constData());
 }
 
 void TestMeshCli::badFilesAreRefusedByName()

@@ -20,6 +20,10 @@
 #include "model/SubdivisionMeshItem.h"
 
 #include <QAction>
+#include <QApplication>
+#include <QInputDialog>
+#include <QMessageBox>
+#include <QTimer>
 #include <QFile>
 #include <QPainter>
 #include <QSignalSpy>
@@ -41,6 +45,7 @@ class TestMeshWindow : public QObject {
 private slots:
     void importAddsOneUndoableItem();
     void refusedFileChangesNothing();
+    void refusedMeshIsRepairedOnRequest();
     void startingMeshes();
     void extraordinaryVertexInTheWindow_data();
     void extraordinaryVertexInTheWindow();
@@ -103,6 +108,48 @@ void TestMeshWindow::refusedFileChangesNothing()
     QVERIFY2(error.contains("triangles only"), qPrintable(error));
     QCOMPARE(w.project()->childCount(), before);
     QCOMPARE(w.project()->undoStack()->count(), 0);
+}
+
+void TestMeshWindow::refusedMeshIsRepairedOnRequest()
+{
+    // Two triangles that meet at one vertex only (a bowtie):
+    // File > Import Mesh says why the mesh is refused and offers the repairs; No changes
+    // nothing, Yes imports the repaired mesh and says what was changed.
+    const QString file = write("bowtie.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\n"
+                                             "f 1 2 3\nf 1 4 5\n");
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.filePath("recovery"));
+    const int before = w.project()->childCount();
+    const auto acceptScheme = [] {
+        QTimer::singleShot(0, [] {  // the scheme question is modal: take its default, Loop
+            auto *dialog = qobject_cast<QInputDialog *>(QApplication::activeModalWidget());
+            QVERIFY(dialog);
+            QCOMPARE(dialog->textValue(), QStringLiteral("Loop (triangles only)"));
+            dialog->accept();
+        });
+    };
+    messages.answer = QMessageBox::No;
+    acceptScheme();
+    w.importMeshFile(file);
+    QCOMPARE(messages.questions.size(), 1);
+    QVERIFY2(messages.questions[0].contains("vertex 0 is non-manifold")
+                 && messages.questions[0].contains("Repair the mesh?")
+                 && messages.questions[0].contains("split, one vertex per fan (vertices 0;"),
+             qPrintable(messages.questions[0]));
+    QCOMPARE(w.project()->childCount(), before);
+    QVERIFY(messages.errors.isEmpty());
+    messages.answer = QMessageBox::Yes;
+    acceptScheme();
+    w.importMeshFile(file);
+    QCOMPARE(w.project()->childCount(), before + 1);
+    const auto *item = qobject_cast<const SubdivisionMeshItem *>(
+        w.project()->child(w.project()->childCount() - 1));
+    QVERIFY(item);
+    QCOMPARE(item->inputs().vertices.size(), std::size_t(6));  // vertex 0 and its copy, 5
+    QCOMPARE(item->inputs().faces[1][0], 5);
+    QCoreApplication::processEvents();  // the note of what was changed comes queued
+    QVERIFY2(messages.infos.join('\n').contains("Repaired:"), qPrintable(messages.infos.join('\n')));
+    QCOMPARE(w.project()->undoStack()->count(), 1);
 }
 
 void TestMeshWindow::startingMeshes()

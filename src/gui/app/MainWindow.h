@@ -82,6 +82,9 @@ public:
     // false, with the reader's or the mesh's message in *error, when it is refused (nothing
     // added).
     bool importMesh(const QString &fileName, MeshScheme scheme, QString *error = nullptr);
+    // File > Import Mesh after the file dialog: asks for the scheme, imports the mesh file, and
+    // when the mesh is refused offers the well-defined repairs (MeshRepair.h).
+    void importMeshFile(const QString &file);
     bool importMesh(const QString &fileName, const Mesh &mesh, MeshScheme scheme,
                     QString *error = nullptr);
     // File > Import…: another tool's IFS file (Fractint .ifs, flam3 .flame/.flam3: every entry
@@ -204,8 +207,6 @@ private:
     // Mesh surface (the starting meshes), File > Import Mesh.
     void addMeshMenu(QMenu *add, const QString &title);
     void importMeshDialog();
-    // Asks for the scheme and imports the mesh file (Import Mesh, Import).
-    void importMeshFile(const QString &file);
     // importIfs with what was left out or lost shown in a message; false when nothing came.
     bool importReporting(const QString &file, bool replace);
     void importDialog();

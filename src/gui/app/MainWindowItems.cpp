@@ -7,6 +7,7 @@
 #include "core/ifs/SurfaceIfs.h"
 #include "core/mesh/MeshExamples.h"
 #include "core/mesh/MeshFiles.h"
+#include "core/mesh/MeshRepair.h"
 #include "gui/app/ItemController.h"
 #include "gui/app/Messages.h"
 #include "model/EigenvaluePlotItem.h"
@@ -195,18 +196,42 @@ void MainWindow::importMeshFile(const QString &file)
                                                  triangles ? 1 : 0, false, &ok);
     if (!ok)
         return;
+    const MeshScheme scheme = chosen == schemes[1] ? MeshScheme::Loop : MeshScheme::CatmullClark;
     QString error;
-    if (!importMesh(file, mesh,
-                    chosen == schemes[1] ? MeshScheme::Loop : MeshScheme::CatmullClark, &error)) {
-        m_messages->error(this, tr("Import Mesh"), error);
-        return;
+    if (!importMesh(file, mesh, scheme, &error)) {
+        // Refused: offer the repairs that are well defined (MeshRepair.h), saying what they
+        // would change, and import the repaired mesh on Yes.
+        MeshRepairReport report;
+        const Mesh repaired = repairMesh(mesh, &report);
+        if (!report.changed()) {
+            m_messages->error(this, tr("Import Mesh"), error);
+            return;
+        }
+        QStringList changes;
+        for (const std::string &c : report.changes)
+            changes << QStringLiteral("• ") + QString::fromStdString(c);
+        for (const std::string &c : report.unrepaired)
+            changes << QStringLiteral("• ") + tr("Not repaired: %1").arg(QString::fromStdString(c));
+        const auto answer = m_messages->question(
+            this, tr("Import Mesh"),
+            tr("%1\n\nRepair the mesh? These changes are well defined:\n\n%2")
+                .arg(error, changes.join(QLatin1Char('\n'))),
+            QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes);
+        if (answer != QMessageBox::Yes)
+            return;
+        if (!importMesh(file, repaired, scheme, &error)) {
+            m_messages->error(this, tr("Import Mesh"), tr("Even repaired: %1").arg(error));
+            return;
+        }
+        for (const std::string &c : report.changes)
+            notes.push_back(tr("Repaired: %1").arg(QString::fromStdString(c)).toStdString());
     }
     if (!notes.empty()) {
         // Said once the window shows the new item, as the other imports' losses are.
         QStringList list;
         for (const std::string &n : notes)
             list << QString::fromStdString(n);
-        const QString text = tr("Imported with these losses:") + QStringLiteral("\n\n")
+        const QString text = tr("Imported with these losses and changes:") + QStringLiteral("\n\n")
                              + list.join(QLatin1Char('\n'));
         QMetaObject::invokeMethod(
             this, [this, text] { m_messages->information(this, tr("Import Mesh"), text); },
