@@ -3,8 +3,10 @@
 // (core/mesh/MeshFiles.h). An InputError is a refusal, as it should be; any other exception, a
 // crash, a hang or an allocation beyond libFuzzer's limit is a bug. A mesh read must hold what
 // the reader promises (n x 3 finite coordinates, faces of 3 or more vertices in range), read
-// back the same from writeObj, and go through checkMesh's topology (InputError allowed).
+// back the same from writeObj, and go through checkMesh's topology (InputError allowed), as
+// its repairs (repairMesh) do.
 #include "core/mesh/MeshFiles.h"
+#include "core/mesh/MeshRepair.h"
 
 #include <cmath>
 #include <cstdint>
@@ -60,6 +62,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
         fail("writeObj and readMesh do not give the mesh back");
     try {
         awb::checkMesh(mesh, awb::MeshScheme::CatmullClark);
+    } catch (const awb::InputError &) {
+    }
+    // The repairs (MeshRepair.h) keep every index in range and every face of 3 or more
+    // vertices, and only add vertices; their result goes through the checks as any mesh.
+    awb::MeshRepairReport report;
+    const awb::Mesh repaired = awb::repairMesh(mesh, &report);
+    if (repaired.vertices.rows() != n + report.addedVertices)
+        fail("the repairs changed the vertex count otherwise than by their splits");
+    for (const auto &face : repaired.faces) {
+        if (face.size() < 3)
+            fail("a repaired face of fewer than 3 vertices");
+        for (int v : face)
+            if (v < 0 || v >= repaired.vertices.rows())
+                fail("a repaired vertex index out of range");
+    }
+    try {
+        awb::checkMesh(repaired, awb::MeshScheme::CatmullClark);
     } catch (const awb::InputError &) {
     }
     return 0;
