@@ -728,51 +728,8 @@ Mesh diagonalGrid() { return diagonalGridMesh(20, 20, 1); }
 // (80 000 triangles, interior valence 6) under Catmull-Clark, whose every face centre becomes a
 // valence-3 vertex; a UV sphere of 64 segments and 32 rings, triangles at its two valence-64
 // poles.
-Mesh torusTriangles()
-{
-    const int n = 200, m = 200;
-    Mesh mesh;
-    mesh.vertices.resize(n * m, 3);
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < m; ++j) {
-            const double u = 2 * M_PI * i / n, v = 2 * M_PI * j / m;
-            mesh.vertices.row(i * m + j) << (3 + std::cos(v)) * std::cos(u),
-                (3 + std::cos(v)) * std::sin(u), std::sin(v);
-        }
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < m; ++j) {
-            const int a = i * m + j, b = ((i + 1) % n) * m + j, c = ((i + 1) % n) * m + (j + 1) % m,
-                      d = i * m + (j + 1) % m;
-            mesh.faces.push_back({a, b, c});
-            mesh.faces.push_back({a, c, d});
-        }
-    return mesh;
-}
-
-Mesh uvSphere()
-{
-    const int segments = 64, rings = 32;
-    Mesh mesh;
-    mesh.vertices.resize(2 + (rings - 1) * segments, 3);
-    mesh.vertices.row(0) << 0, 0, 1;
-    const auto at = [&](int ring, int s) { return 1 + (ring - 1) * segments + s % segments; };
-    for (int k = 1; k < rings; ++k)
-        for (int s = 0; s < segments; ++s) {
-            const double th = M_PI * k / rings, ph = 2 * M_PI * s / segments;
-            mesh.vertices.row(at(k, s)) << std::sin(th) * std::cos(ph),
-                std::sin(th) * std::sin(ph), std::cos(th);
-        }
-    const int south = int(mesh.vertices.rows()) - 1;
-    mesh.vertices.row(south) << 0, 0, -1;
-    for (int s = 0; s < segments; ++s) {
-        mesh.faces.push_back({0, at(1, s), at(1, s + 1)});
-        mesh.faces.push_back({at(rings - 1, s), south, at(rings - 1, s + 1)});
-    }
-    for (int k = 1; k + 1 < rings; ++k)
-        for (int s = 0; s < segments; ++s)
-            mesh.faces.push_back({at(k, s), at(k + 1, s), at(k + 1, s + 1), at(k, s + 1)});
-    return mesh;
-}
+Mesh torusTriangles() { return torusMesh(200, 200, true); }
+Mesh uvSphere() { return uvSphereMesh(64, 32); }
 
 int usage(const char *argv0)
 {

@@ -7898,7 +7898,7 @@ meze: %9
     </message>
     <message>
         <source>attractor-cli: note: %1</source>
-        <translation>attractor-cli: poznámka: %1</translation>
+        <translation type="vanished">attractor-cli: poznámka: %1</translation>
     </message>
     <message>
         <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2) | vertex-limits (a mesh item: the limit positions of the vertices of the mesh refined k times; default: the item&apos;s).</source>
@@ -8542,7 +8542,27 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     </message>
     <message>
         <source> (--repair would weld %1 vertices, turn %2 faces over and split %3 vertices)</source>
-        <translation> (--repair by svařil %1 vrcholů, otočil %2 stěn a rozdělil %3 vrcholů)</translation>
+        <translation type="vanished"> (--repair by svařil %1 vrcholů, otočil %2 stěn a rozdělil %3 vrcholů)</translation>
+    </message>
+    <message>
+        <source>name repeated vertices once in %1 faces</source>
+        <translation>uvést opakované vrcholy jen jednou v %1 stěnách</translation>
+    </message>
+    <message>
+        <source>weld %1 vertices</source>
+        <translation>svařit %1 vrcholů</translation>
+    </message>
+    <message>
+        <source>turn %1 faces over</source>
+        <translation>otočit %1 stěn</translation>
+    </message>
+    <message>
+        <source>split %1 vertices</source>
+        <translation>rozdělit %1 vrcholů</translation>
+    </message>
+    <message>
+        <source> (--repair would %1)</source>
+        <translation> (--repair by mohl %1)</translation>
     </message>
 </context>
 <context>

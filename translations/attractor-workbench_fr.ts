@@ -7887,7 +7887,7 @@ limites&#xa0;: %9
     </message>
     <message>
         <source>attractor-cli: note: %1</source>
-        <translation>attractor-cli&#xa0;: note&#xa0;: %1</translation>
+        <translation type="vanished">attractor-cli&#xa0;: note&#xa0;: %1</translation>
     </message>
     <message>
         <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2) | vertex-limits (a mesh item: the limit positions of the vertices of the mesh refined k times; default: the item&apos;s).</source>
@@ -8529,7 +8529,27 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     </message>
     <message>
         <source> (--repair would weld %1 vertices, turn %2 faces over and split %3 vertices)</source>
-        <translation> (--repair souderait %1 sommets, retournerait %2 faces et scinderait %3 sommets)</translation>
+        <translation type="vanished"> (--repair souderait %1 sommets, retournerait %2 faces et scinderait %3 sommets)</translation>
+    </message>
+    <message>
+        <source>name repeated vertices once in %1 faces</source>
+        <translation>nommer une seule fois les sommets répétés dans %1 faces</translation>
+    </message>
+    <message>
+        <source>weld %1 vertices</source>
+        <translation>souder %1 sommets</translation>
+    </message>
+    <message>
+        <source>turn %1 faces over</source>
+        <translation>retourner %1 faces</translation>
+    </message>
+    <message>
+        <source>split %1 vertices</source>
+        <translation>scinder %1 sommets</translation>
+    </message>
+    <message>
+        <source> (--repair would %1)</source>
+        <translation> (--repair permettrait de %1)</translation>
     </message>
 </context>
 <context>

@@ -7876,7 +7876,7 @@ bounds: %9
     </message>
     <message>
         <source>attractor-cli: note: %1</source>
-        <translation>attractor-cli：注意：%1</translation>
+        <translation type="vanished">attractor-cli：注意：%1</translation>
     </message>
     <message>
         <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2) | vertex-limits (a mesh item: the limit positions of the vertices of the mesh refined k times; default: the item&apos;s).</source>
@@ -8516,7 +8516,27 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source> (--repair would weld %1 vertices, turn %2 faces over and split %3 vertices)</source>
-        <translation>（--repair 将焊接 %1 个顶点，翻转 %2 个面并拆分 %3 个顶点）</translation>
+        <translation type="vanished">（--repair 将焊接 %1 个顶点，翻转 %2 个面并拆分 %3 个顶点）</translation>
+    </message>
+    <message>
+        <source>name repeated vertices once in %1 faces</source>
+        <translation>在 %1 个面中将重复的顶点只保留一次</translation>
+    </message>
+    <message>
+        <source>weld %1 vertices</source>
+        <translation>焊接 %1 个顶点</translation>
+    </message>
+    <message>
+        <source>turn %1 faces over</source>
+        <translation>翻转 %1 个面</translation>
+    </message>
+    <message>
+        <source>split %1 vertices</source>
+        <translation>拆分 %1 个顶点</translation>
+    </message>
+    <message>
+        <source> (--repair would %1)</source>
+        <translation>（--repair 将会：%1）</translation>
     </message>
 </context>
 <context>

@@ -68,12 +68,18 @@ int importMesh(const QStringList &args)
             MeshRepairReport report;
             if (!parser.isSet("repair")) {
                 repairMesh(mesh, &report);
-                if (report.changed())
-                    error += CliTr::tr(" (--repair would weld %1 vertices, turn %2 faces over "
-                                       "and split %3 vertices)")
-                                 .arg(report.weldedVertices)
-                                 .arg(report.turnedFaces)
-                                 .arg(report.splitVertices);
+                QStringList would;
+                if (report.collapsedFaces + report.removedFaces > 0)
+                    would << CliTr::tr("name repeated vertices once in %1 faces")
+                                 .arg(report.collapsedFaces + report.removedFaces);
+                if (report.weldedVertices > 0)
+                    would << CliTr::tr("weld %1 vertices").arg(report.weldedVertices);
+                if (report.turnedFaces > 0)
+                    would << CliTr::tr("turn %1 faces over").arg(report.turnedFaces);
+                if (report.splitVertices > 0)
+                    would << CliTr::tr("split %1 vertices").arg(report.splitVertices);
+                if (!would.isEmpty())
+                    error += CliTr::tr(" (--repair would %1)").arg(would.join(QStringLiteral(", ")));
             }
             throw Failure{QStringLiteral("%1: %2").arg(file, error)};
         }
@@ -83,6 +89,10 @@ int importMesh(const QStringList &args)
             throw Failure{CliTr::tr("'%1' cannot be an item's name").arg(name), 2};
         SubdivisionMeshItem *added = static_cast<SubdivisionMeshItem *>(
             project.addItem(std::move(item)));
+        // What check and every command would refuse (a valence above the pieces' limit, a
+        // prelude too long) is refused here, before a project is written.
+        if (!added->derivedError().isEmpty())
+            throw Failure{QStringLiteral("%1: %2").arg(file, added->derivedError())};
         if (!project.saveAs(parser.value("out"), &error))
             throw Failure{error};
         const auto extraordinary = added->extraordinary();
@@ -108,8 +118,6 @@ int importMesh(const QStringList &args)
                                "around a new valence-3 vertex)")
                          .arg(mesh.faces.size())
                   << "\n";
-        if (!added->derivedError().isEmpty())
-            err() << CliTr::tr("attractor-cli: note: %1").arg(added->derivedError()) << "\n";
         return 0;
     });
 }

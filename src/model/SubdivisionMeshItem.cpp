@@ -308,13 +308,23 @@ DerivedIfs SubdivisionMeshItem::computeIfs() const
         return meshPointCount(*pieces, startOf(start), depth);
     };
     // The matrices shown: the local subdivision matrix of the first extraordinary vertex (its
-    // piece's map 0, once settled), then the 4 maps of the first patch that maps to itself.
+    // piece's map 0, once settled) whose valence is at most 64 -- the analysis of a pole of
+    // valence 360 (a 721 x 721 matrix) takes a minute; the first of any valence when none is --
+    // then the 4 maps of the first patch that maps to itself.
+    const Mat *shown = nullptr, *first = nullptr;
     for (const MeshPieceRoot &root : pieces->roots)
         if (const int settled = root.vertex >= 0 ? settledType(*pieces, root.type) : -1;
             settled >= 0) {
-            out.S.real.push_back(pieces->types[std::size_t(settled)].children.front().S);
-            break;
+            const MeshPieceType &type = pieces->types[std::size_t(settled)];
+            first = first ? first : &type.children.front().S;
+            if (type.valence <= 64) {
+                shown = &type.children.front().S;
+                break;
+            }
         }
+    shown = shown ? shown : first;
+    if (shown)
+        out.S.real.push_back(*shown);
     for (const MeshPieceType &type : pieces->types) {
         if (type.kind != MeshPieceType::Kind::Face || type.children.empty())
             continue;

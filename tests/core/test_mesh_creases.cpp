@@ -11,6 +11,7 @@
 // sharpness as float, and so do we).
 
 #include "core/mesh/Mesh.h"
+#include "core/mesh/MeshExamples.h"
 #include "core/mesh/MeshFiles.h"
 #include "core/mesh/MeshIterate.h"
 #include "core/mesh/MeshPieces.h"
@@ -126,6 +127,7 @@ private slots:
     void randomSharpFeatures();
     void semiSharpPiecesHaveAPrelude();
     void valenceTwoLimitIsWhereRefinementGoes();
+    void polesOfValence360();
 };
 
 void TestMeshCreases::regressionShapes_data()
@@ -315,6 +317,26 @@ void TestMeshCreases::valenceTwoLimitIsWhereRefinementGoes()
     // And the IFS draws that limit.
     const Mat ifs = ifsLimits(pillow, MeshScheme::CatmullClark, 0);
     QVERIFY(directedDistance(ours, ifs, 1e-9, 2) < 1e-9);
+}
+
+void TestMeshCreases::polesOfValence360()
+{
+    // A UV sphere of 360 segments and 3 rings: two poles of valence 360 (triangles around
+    // them, quads between). Under Catmull-Clark its limits, and the IFS's vertex limits after
+    // one step, are OpenSubdiv's.
+    const Mesh sphere = uvSphereMesh(360, 3);
+    const double tol = 1e-9 * diagonal(sphere.vertices);
+    // After one step (every face a quad: OpenSubdiv's limit masks are exact from there).
+    const OsdResult level1 = openSubdiv(sphere, MeshScheme::CatmullClark, 1);
+    const Mat ours = limitPositions(refineMesh(sphere, MeshScheme::CatmullClark, 1),
+                                    MeshScheme::CatmullClark);
+    const double cell = 1e-6 * diagonal(level1.limits);  // the numberings differ: by position
+    QCOMPARE(ours.rows(), level1.limits.rows());
+    QVERIFY(directedDistance(ours, level1.limits, cell, 2) < tol);
+    QVERIFY(directedDistance(level1.limits, ours, cell, 2) < tol);
+    const Mat ifs = ifsLimits(sphere, MeshScheme::CatmullClark, 1);
+    QVERIFY(directedDistance(ifs, level1.limits, cell, 2) < tol);
+    QVERIFY(directedDistance(level1.limits, ifs, cell, 2) < tol);
 }
 
 AWB_TEST_MAIN(TestMeshCreases)

@@ -85,7 +85,7 @@ void TestMeshPieces::vertexLimitsAreExactlyTheRefinedLimits_data()
     QTest::newRow("open grid, Catmull-Clark") << gridMesh(4, 3, false) << cc << 3;
     QTest::newRow("open grid, Loop") << gridMesh(4, 3, true) << loop << 3;
     QTest::newRow("one quad, Catmull-Clark") << gridMesh(1, 1, false) << cc << 3;
-    QTest::newRow("one triangle, Loop") << Mesh{gridMesh(1, 1, true).vertices, {{0, 1, 3}}}
+    QTest::newRow("one triangle, Loop") << Mesh{gridMesh(1, 1, true).vertices, {{0, 1, 3}}, {}}
                                         << loop << 3;
     for (unsigned seed : {1u, 2u, 3u}) {
         const Mesh m = jittered(diagonalGridMesh(5, 4, seed), seed);
@@ -244,19 +244,21 @@ void TestMeshPieces::badInputIsRefusedByName()
     flat.kind = MeshStart::Kind::Points;
     flat.points = StartSet::points(Mat::Zero(1, 2));
     QVERIFY(refusal(m.vertices, flat, 2).contains("coordinates"));
-    // A vertex of valence 65.
+    // A fan whose centre has valence 514 (513 triangles, open): above the pieces' limit.
     Mesh fan;
-    fan.vertices = Mat::Zero(67, 3);
-    for (int k = 0; k < 65; ++k) {
-        fan.vertices.row(k + 1) << std::cos(k * 0.09), std::sin(k * 0.09), 0;
+    const int count = 513;
+    fan.vertices = Mat::Zero(count + 2, 3);
+    for (int k = 0; k <= count; ++k)
+        fan.vertices.row(k + 1) << std::cos(k * 0.012), std::sin(k * 0.012), 0;
+    for (int k = 0; k < count; ++k)
         fan.faces.push_back({0, k + 1, k + 2});
-    }
-    fan.vertices.row(66) << 1, 0.1, 0;
     try {
         buildMeshPieces(fan, MeshScheme::Loop);
-        QFAIL("a vertex of valence 66 was taken");
+        QFAIL("a vertex of valence 514 was taken");
     } catch (const InputError &e) {
-        QVERIFY(QString(e.what()).contains("valences above 64 are not supported"));
+        QVERIFY2(QString(e.what()).contains("vertex 0 has 514 edges; valences above 512 are not "
+                                            "supported"),
+                 e.what());
     }
 }
 

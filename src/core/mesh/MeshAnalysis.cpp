@@ -4,9 +4,13 @@
 #include "core/mesh/VertexSpectrum.h"
 
 #include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <Eigen/QR>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <optional>
 
 namespace awb {
 
@@ -19,8 +23,36 @@ struct LeftVectors {
     RowVec limit, tangentA, tangentB;
 };
 
-LeftVectors leftVectors(const Mat &S)
+// A basis of the left eigenspace of S for the eigenvalue `value` (real, of multiplicity
+// `count`), by inverse iteration with a shift just beside it: one LU of S^T - shift I, a few
+// solves (the big matrices of high valences, where a full eigendecomposition takes seconds).
+Mat leftEigenspace(const Mat &S, double value, int count)
 {
+    const Eigen::Index n = S.rows();
+    const double shift = value + 1e-9 * std::max(1.0, std::abs(value));
+    const Eigen::PartialPivLU<Mat> lu(Mat(S.transpose()) - shift * Mat::Identity(n, n));
+    Mat x = Mat::Zero(n, count);
+    for (int k = 0; k < count; ++k)  // fixed, distinct starting vectors: the same on every run
+        for (Eigen::Index i = 0; i < n; ++i)
+            x(i, k) = 1.0 + std::sin(double((k + 1) * (i + 1)));
+    for (int step = 0; step < 3; ++step) {
+        x = lu.solve(x);
+        x = Eigen::HouseholderQR<Mat>(x).householderQ() * Mat::Identity(n, count);
+    }
+    return x;
+}
+
+LeftVectors leftVectors(const Mat &S, std::optional<double> subdominant = std::nullopt)
+{
+    if (subdominant && S.rows() > 200) {
+        LeftVectors out;
+        out.limit = leftEigenspace(S, 1.0, 1).col(0).transpose();
+        out.limit /= out.limit.sum();
+        const Mat tangents = leftEigenspace(S, *subdominant, 2);
+        out.tangentA = tangents.col(0).transpose();
+        out.tangentB = tangents.col(1).transpose();
+        return out;
+    }
     const Spectrum left = spectrum(Mat(S.transpose()), 1e-9);  // by modulus, largest first
     LeftVectors out;
     out.limit = left.vectors[0].real().transpose();
@@ -111,10 +143,16 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
         e.rule = toString(pieces.types[std::size_t(settled >= 0 ? settled : t)].rule);
         if (settled >= 0) {
             auto it = left.find(settled);
-            if (it == left.end())
-                it = left.emplace(settled, leftVectors(
-                                               pieces.types[std::size_t(settled)].children[0].S))
-                         .first;
+            if (it == left.end()) {
+                // A smooth interior vertex: its subdominant eigenvalue in closed form (double,
+                // the tangent plane), and for a high valence the eigenvectors of those two
+                // eigenvalues alone.
+                const MeshPieceType &type = pieces.types[std::size_t(settled)];
+                std::optional<double> lambda;
+                if (!type.boundary && type.rule == VertexRule::Smooth)
+                    lambda = closedFormSubdominant(pieces.scheme, type.valence);
+                it = left.emplace(settled, leftVectors(type.children[0].S, lambda)).first;
+            }
             limitAndNormal(it->second, net, outward[root.vertex], e);
         }
         if (e.smoothInterior() && !ringAnalysable(e.valence)) {

@@ -134,6 +134,53 @@ Mesh gridMesh(int w, int h, bool triangles)
     return m;
 }
 
+Mesh uvSphereMesh(int segments, int rings)
+{
+    Mesh mesh;
+    mesh.vertices.resize(2 + (rings - 1) * segments, 3);
+    mesh.vertices.row(0) << 0, 0, 1;
+    const auto at = [&](int ring, int k) { return 1 + (ring - 1) * segments + k % segments; };
+    for (int ring = 1; ring < rings; ++ring)
+        for (int k = 0; k < segments; ++k) {
+            const double th = M_PI * ring / rings, ph = 2 * M_PI * k / segments;
+            mesh.vertices.row(at(ring, k)) << std::sin(th) * std::cos(ph),
+                std::sin(th) * std::sin(ph), std::cos(th);
+        }
+    const int south = int(mesh.vertices.rows()) - 1;
+    mesh.vertices.row(south) << 0, 0, -1;
+    for (int k = 0; k < segments; ++k) {
+        mesh.faces.push_back({0, at(1, k), at(1, k + 1)});
+        for (int ring = 1; ring + 1 < rings; ++ring)
+            mesh.faces.push_back({at(ring, k), at(ring + 1, k), at(ring + 1, k + 1), at(ring, k + 1)});
+        mesh.faces.push_back({at(rings - 1, k), south, at(rings - 1, k + 1)});
+    }
+    return mesh;
+}
+
+Mesh torusMesh(int n, int m, bool triangles)
+{
+    Mesh mesh;
+    mesh.vertices.resize(n * m, 3);
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < m; ++j) {
+            const double u = 2 * M_PI * i / n, v = 2 * M_PI * j / m;
+            mesh.vertices.row(i * m + j) << (3 + std::cos(v)) * std::cos(u),
+                (3 + std::cos(v)) * std::sin(u), std::sin(v);
+        }
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < m; ++j) {
+            const int a = i * m + j, b = ((i + 1) % n) * m + j, c = ((i + 1) % n) * m + (j + 1) % m,
+                      d = i * m + (j + 1) % m;
+            if (triangles) {
+                mesh.faces.push_back({a, b, c});
+                mesh.faces.push_back({a, c, d});
+            } else {
+                mesh.faces.push_back({a, b, c, d});
+            }
+        }
+    return mesh;
+}
+
 Mesh diagonalGridMesh(int w, int h, unsigned seed)
 {
     Mesh m = gridVertices(w, h);

@@ -23,6 +23,12 @@ Mesh gridMesh(int w, int h, bool triangles);
 // on every machine), z bumped: interior valences 4 to 8.
 Mesh diagonalGridMesh(int w, int h, unsigned seed);
 
+// A UV sphere of radius 1: `segments` meridians, `rings` bands, triangles around its two poles
+// (valence `segments`), quads between; faces counter-clockwise from outside.
+Mesh uvSphereMesh(int segments, int rings);
+// A torus (radii 3 and 1) of n x m quads, or each split in two triangles (interior valence 6).
+Mesh torusMesh(int n, int m, bool triangles);
+
 // Turns every face of a mesh around its centre outward (convex polyhedra).
 void orientOutward(Mesh &mesh);
 

@@ -15,7 +15,7 @@ namespace awb {
 
 namespace {
 
-constexpr int kMaxValence = 64;
+constexpr int kMaxValence = 512;
 constexpr int kMaxTypes = 4096;
 constexpr int kMaxSteps = 3;
 
