@@ -95,11 +95,7 @@ private slots:
     {
         AtlasOptions o;
         o.smoothness = 1;
-        // The instrumented builds (scripts/sanitize.sh sets AWB_TEST_TIME_SCALE) look for memory
-        // errors and races, not digits: the boundary to 1e-4 there (29 s under AddressSanitizer
-        // to 1e-6), to 1e-6 in the normal suite.
-        o.tolerance = qEnvironmentVariableIntValue("AWB_TEST_TIME_SCALE") > 1 ? 1e-4 : 1e-6;
-        const double tol = o.tolerance;
+        o.tolerance = 1e-6;
         AtlasPlan plan({{"omega", 0.0, 0.25, 26}}, o);
         const std::vector<AtlasRow> rows = run(plan, fourPoint);
         QVERIFY(plan.finished());
@@ -108,15 +104,15 @@ private slots:
         // omega = 0 is piecewise linear: r = 1 exactly, so C^1 is not certified there (the
         // bounds touch k), and every positive grid value up to omega* is.
         QCOMPARE(runs[0].from.outer, 0.0);
-        QVERIFY(runs[0].from.inner > 0.0 && runs[0].from.inner <= tol + 1e-12);
+        QVERIFY(runs[0].from.inner > 0.0 && runs[0].from.inner <= 1e-6 + 1e-12);
         const double star = omegaStar();
         QVERIFY(std::abs(star - 0.19273) < 5e-6);
         const AtlasBoundary &to = runs[0].to;
-        QVERIFY2(to.inner < star + 1e-9 && std::abs(to.outer - to.inner) <= 2 * tol,
+        QVERIFY2(to.inner < star + 1e-9 && std::abs(to.outer - to.inner) <= 2e-6,
                  qPrintable(QString("[%1, %2]")
                                 .arg(to.inner, 0, 'g', 12)
                                 .arg(to.outer, 0, 'g', 12)));
-        QVERIFY2(std::abs(to.inner - star) < 10 * tol,
+        QVERIFY2(std::abs(to.inner - star) < 1e-5,
                  qPrintable(QString("%1 vs %2").arg(to.inner, 0, 'g', 12).arg(star, 0, 'g', 12)));
         // The grid rows first: every omega in (0, omega*) certified C^1, beyond it not.
         for (const AtlasRow &r : rows) {
