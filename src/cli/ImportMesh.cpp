@@ -65,8 +65,8 @@ int importMesh(const QStringList &args)
         auto item = std::make_unique<SubdivisionMeshItem>();
         QString error;
         if (!item->setMesh(mesh, scheme, &error)) {
-            MeshRepairReport report;
-            if (!parser.isSet("repair")) {
+            if (!parser.isSet("repair")) {  // say what --repair would change
+                MeshRepairReport report;
                 repairMesh(mesh, &report);
                 QStringList would;
                 if (report.collapsedFaces + report.removedFaces > 0)

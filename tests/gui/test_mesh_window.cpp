@@ -106,6 +106,16 @@ void TestMeshWindow::refusedFileChangesNothing()
     QVERIFY(!w.importMesh(write("quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n"),
                           MeshScheme::Loop, &error));
     QVERIFY2(error.contains("triangles only"), qPrintable(error));
+    // A fan whose centre has valence 514: refused at import, as the CLI refuses it.
+    Mesh fan;
+    fan.vertices = Mat::Zero(515, 3);
+    for (int k = 0; k <= 513; ++k)
+        fan.vertices.row(k + 1) << std::cos(k * 0.012), std::sin(k * 0.012), 0;
+    for (int k = 0; k < 513; ++k)
+        fan.faces.push_back({0, k + 1, k + 2});
+    QVERIFY(!w.importMesh("fan.obj", fan, MeshScheme::Loop, &error));
+    QVERIFY2(error.contains("fan.obj: vertex 0 has 514 edges; valences above 512"),
+             qPrintable(error));
     QCOMPARE(w.project()->childCount(), before);
     QCOMPARE(w.project()->undoStack()->count(), 0);
 }

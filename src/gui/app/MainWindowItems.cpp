@@ -144,7 +144,9 @@ bool MainWindow::importMesh(const QString &fileName, const Mesh &mesh, MeshSchem
     QString why;
     auto item = std::make_unique<SubdivisionMeshItem>();
     try {
-        if (!item->setMesh(mesh, scheme, &why))
+        // What every view and command would refuse (a valence above the pieces' limit, a
+        // prelude too long) is refused here, as attractor-cli import-mesh refuses it.
+        if (!item->setMesh(mesh, scheme, &why) || !(why = item->derivedError()).isEmpty())
             why = QFileInfo(fileName).fileName() + QStringLiteral(": ") + why;
     } catch (const std::exception &e) {
         why = QString::fromStdString(e.what());
