@@ -4618,6 +4618,26 @@ Opravit síť? Tyto změny jsou jednoznačně definované:
         <source>Imported with these losses and changes:</source>
         <translation>Importováno s těmito ztrátami a změnami:</translation>
     </message>
+    <message>
+        <source>The mesh is %1.
+
+Repair it instead? These changes are well defined:
+
+%2
+
+No imports it as it is.</source>
+        <translation>Síť je %1.
+
+Má se místo toho opravit? Tyto změny jsou dobře definované:
+
+%2
+
+Ne ji importuje tak, jak je.</translation>
+    </message>
+    <message>
+        <source>The mesh is %1.</source>
+        <translation>Síť je %1.</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -7864,7 +7884,7 @@ meze: %9
     </message>
     <message>
         <source>Make a project of a mesh file (OBJ, OFF, PLY ASCII or binary): one subdivision-mesh item with the file&apos;s vertices, in its numbering, and its polygons.</source>
-        <translation>Vytvoří projekt ze souboru sítě (OBJ, OFF, PLY ASCII nebo binární): jednu položku subdivision-mesh s vrcholy souboru v jeho číslování a s jeho polygony.</translation>
+        <translation type="vanished">Vytvoří projekt ze souboru sítě (OBJ, OFF, PLY ASCII nebo binární): jednu položku subdivision-mesh s vrcholy souboru v jeho číslování a s jeho polygony.</translation>
     </message>
     <message>
         <source>The mesh file.</source>
@@ -8526,7 +8546,7 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     </message>
     <message>
         <source>Repair what is well defined before the checks: weld boundary vertices at the same position, turn flipped faces over, split vertices whose faces form several fans, name repeated vertices once; say each change.</source>
-        <translation>Před kontrolami opravit, co je jednoznačně definované: svařit hraniční vrcholy ve stejné poloze, otočit převrácené stěny, rozdělit vrcholy, jejichž stěny tvoří několik vějířů, opakované vrcholy uvést jen jednou; každou změnu vypsat.</translation>
+        <translation type="vanished">Před kontrolami opravit, co je jednoznačně definované: svařit hraniční vrcholy ve stejné poloze, otočit převrácené stěny, rozdělit vrcholy, jejichž stěny tvoří několik vějířů, opakované vrcholy uvést jen jednou; každou změnu vypsat.</translation>
     </message>
     <message>
         <source>repaired: %1</source>
@@ -8563,6 +8583,18 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     <message>
         <source> (--repair would %1)</source>
         <translation> (--repair by mohl %1)</translation>
+    </message>
+    <message>
+        <source>Make a project of a mesh file (OBJ, OFF, PLY ASCII or binary): one subdivision-mesh item with the file&apos;s vertices, in its numbering, and its polygons. A non-manifold mesh (edges of three or more faces, faces of opposite orientations, vertices whose faces form several fans) is drawn as OpenSubdiv draws it, with a note.</source>
+        <translation>Vytvoří projekt ze souboru sítě (OBJ, OFF, PLY ASCII nebo binární): jednu položku subdivizní sítě s vrcholy souboru v jeho číslování a s jeho polygony. Nevarietní síť (hrany tří a více stěn, stěny opačné orientace, vrcholy, jejichž stěny tvoří několik vějířů) se kreslí tak, jak ji kreslí OpenSubdiv, s poznámkou.</translation>
+    </message>
+    <message>
+        <source>Repair what is well defined before the checks: weld boundary vertices at the same position, turn flipped faces over, split vertices whose faces form several fans, name repeated vertices once; say each change (the mesh is then drawn as the repaired surface, not as OpenSubdiv draws the original).</source>
+        <translation>Před kontrolami opraví, co je dobře definované: svaří okrajové vrcholy na stejné pozici, otočí převrácené stěny, rozdělí vrcholy, jejichž stěny tvoří několik vějířů, opakované vrcholy uvede jednou; každou změnu oznámí (síť se pak kreslí jako opravená plocha, ne tak, jak OpenSubdiv kreslí původní).</translation>
+    </message>
+    <message>
+        <source>attractor-cli: note: the mesh is %1%2</source>
+        <translation>attractor-cli: poznámka: síť je %1%2</translation>
     </message>
 </context>
 <context>
@@ -9836,7 +9868,31 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     </message>
     <message>
         <source>%1 edges join three or more faces (%2): no choice of sheets is canonical, so they are not repaired</source>
-        <translation>%1 hran spojuje tři nebo více stěn (%2): žádná volba listů není kanonická, proto nejsou opraveny</translation>
+        <translation type="vanished">%1 hran spojuje tři nebo více stěn (%2): žádná volba listů není kanonická, proto nejsou opraveny</translation>
+    </message>
+    <message>
+        <source>%1 edges join three or more faces (%2): no choice of sheets is canonical, so they are not repaired; they are drawn as OpenSubdiv draws them, as infinitely sharp creases</source>
+        <translation>%1 hran spojuje tři nebo více stěn (%2): žádná volba listů není kanonická, proto se neopravují; kreslí se tak, jak je kreslí OpenSubdiv, jako nekonečně ostré hrany</translation>
+    </message>
+    <message>
+        <source>%1(%2, %3)</source>
+        <translation>%1(%2, %3)</translation>
+    </message>
+    <message>
+        <source>the vertices as corners</source>
+        <translation>vrcholy jako rohy</translation>
+    </message>
+    <message>
+        <source>%1 of the vertices as corners, the others on the creases</source>
+        <translation>%1 vrcholů jako rohy, ostatní na ostrých hranách</translation>
+    </message>
+    <message>
+        <source>non-manifold: %1 vertices (%2), drawn as OpenSubdiv draws them: %3</source>
+        <translation>nevarietní: %1 vrcholů (%2), kreslené tak, jak je kreslí OpenSubdiv: %3</translation>
+    </message>
+    <message>
+        <source>non-manifold: %1 edges (%2) and %3 vertices (%4), drawn as OpenSubdiv draws them: the edges as infinitely sharp creases, %5</source>
+        <translation>nevarietní: %1 hran (%2) a %3 vrcholů (%4), kreslené tak, jak je kreslí OpenSubdiv: hrany jako nekonečně ostré hrany, %5</translation>
     </message>
 </context>
 <context>

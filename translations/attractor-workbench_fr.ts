@@ -4612,6 +4612,26 @@ Réparer le maillage ? Ces modifications sont bien définies :
         <source>Imported with these losses and changes:</source>
         <translation>Importé avec ces pertes et modifications :</translation>
     </message>
+    <message>
+        <source>The mesh is %1.
+
+Repair it instead? These changes are well defined:
+
+%2
+
+No imports it as it is.</source>
+        <translation>Le maillage est %1.
+
+Le réparer plutôt ? Ces modifications sont bien définies :
+
+%2
+
+Non l’importe tel quel.</translation>
+    </message>
+    <message>
+        <source>The mesh is %1.</source>
+        <translation>Le maillage est %1.</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -7853,7 +7873,7 @@ limites&#xa0;: %9
     </message>
     <message>
         <source>Make a project of a mesh file (OBJ, OFF, PLY ASCII or binary): one subdivision-mesh item with the file&apos;s vertices, in its numbering, and its polygons.</source>
-        <translation>Créer un projet à partir d’un fichier de maillage (OBJ, OFF, PLY ASCII ou binaire)&#xa0;: un élément subdivision-mesh avec les sommets du fichier, dans sa numérotation, et ses polygones.</translation>
+        <translation type="vanished">Créer un projet à partir d’un fichier de maillage (OBJ, OFF, PLY ASCII ou binaire)&#xa0;: un élément subdivision-mesh avec les sommets du fichier, dans sa numérotation, et ses polygones.</translation>
     </message>
     <message>
         <source>The mesh file.</source>
@@ -8513,7 +8533,7 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     </message>
     <message>
         <source>Repair what is well defined before the checks: weld boundary vertices at the same position, turn flipped faces over, split vertices whose faces form several fans, name repeated vertices once; say each change.</source>
-        <translation>Réparer ce qui est bien défini avant les vérifications : souder les sommets de bord à la même position, retourner les faces inversées, scinder les sommets dont les faces forment plusieurs éventails, ne nommer qu&apos;une fois les sommets répétés ; dire chaque modification.</translation>
+        <translation type="vanished">Réparer ce qui est bien défini avant les vérifications : souder les sommets de bord à la même position, retourner les faces inversées, scinder les sommets dont les faces forment plusieurs éventails, ne nommer qu&apos;une fois les sommets répétés ; dire chaque modification.</translation>
     </message>
     <message>
         <source>repaired: %1</source>
@@ -8550,6 +8570,18 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     <message>
         <source> (--repair would %1)</source>
         <translation> (--repair permettrait de %1)</translation>
+    </message>
+    <message>
+        <source>Make a project of a mesh file (OBJ, OFF, PLY ASCII or binary): one subdivision-mesh item with the file&apos;s vertices, in its numbering, and its polygons. A non-manifold mesh (edges of three or more faces, faces of opposite orientations, vertices whose faces form several fans) is drawn as OpenSubdiv draws it, with a note.</source>
+        <translation>Crée un projet à partir d’un fichier de maillage (OBJ, OFF, PLY ASCII ou binaire) : un élément maillage de subdivision avec les sommets du fichier, dans sa numérotation, et ses polygones. Un maillage non variété (arêtes de trois faces ou plus, faces d’orientations opposées, sommets dont les faces forment plusieurs éventails) est dessiné comme OpenSubdiv le dessine, avec une note.</translation>
+    </message>
+    <message>
+        <source>Repair what is well defined before the checks: weld boundary vertices at the same position, turn flipped faces over, split vertices whose faces form several fans, name repeated vertices once; say each change (the mesh is then drawn as the repaired surface, not as OpenSubdiv draws the original).</source>
+        <translation>Répare ce qui est bien défini avant les vérifications : soude les sommets de bord à la même position, retourne les faces inversées, scinde les sommets dont les faces forment plusieurs éventails, nomme une seule fois les sommets répétés ; indique chaque modification (le maillage est alors dessiné comme la surface réparée, et non comme OpenSubdiv dessine l’original).</translation>
+    </message>
+    <message>
+        <source>attractor-cli: note: the mesh is %1%2</source>
+        <translation>attractor-cli: note : le maillage est %1%2</translation>
     </message>
 </context>
 <context>
@@ -9823,7 +9855,31 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     </message>
     <message>
         <source>%1 edges join three or more faces (%2): no choice of sheets is canonical, so they are not repaired</source>
-        <translation>%1 arêtes joignent trois faces ou plus (%2) : aucun choix de feuillets n&apos;est canonique, elles ne sont donc pas réparées</translation>
+        <translation type="vanished">%1 arêtes joignent trois faces ou plus (%2) : aucun choix de feuillets n&apos;est canonique, elles ne sont donc pas réparées</translation>
+    </message>
+    <message>
+        <source>%1 edges join three or more faces (%2): no choice of sheets is canonical, so they are not repaired; they are drawn as OpenSubdiv draws them, as infinitely sharp creases</source>
+        <translation>%1 arêtes joignent trois faces ou plus (%2) : aucun choix de nappes n’est canonique, elles ne sont donc pas réparées ; elles sont dessinées comme OpenSubdiv les dessine, en plis infiniment vifs</translation>
+    </message>
+    <message>
+        <source>%1(%2, %3)</source>
+        <translation>%1(%2, %3)</translation>
+    </message>
+    <message>
+        <source>the vertices as corners</source>
+        <translation>les sommets en coins</translation>
+    </message>
+    <message>
+        <source>%1 of the vertices as corners, the others on the creases</source>
+        <translation>%1 des sommets en coins, les autres sur les plis</translation>
+    </message>
+    <message>
+        <source>non-manifold: %1 vertices (%2), drawn as OpenSubdiv draws them: %3</source>
+        <translation>non variété : %1 sommets (%2), dessinés comme OpenSubdiv les dessine : %3</translation>
+    </message>
+    <message>
+        <source>non-manifold: %1 edges (%2) and %3 vertices (%4), drawn as OpenSubdiv draws them: the edges as infinitely sharp creases, %5</source>
+        <translation>non variété : %1 arêtes (%2) et %3 sommets (%4), dessinés comme OpenSubdiv les dessine : les arêtes en plis infiniment vifs, %5</translation>
     </message>
 </context>
 <context>

@@ -4606,6 +4606,26 @@ Repair the mesh? These changes are well defined:
         <source>Imported with these losses and changes:</source>
         <translation>导入时有以下损失和更改：</translation>
     </message>
+    <message>
+        <source>The mesh is %1.
+
+Repair it instead? These changes are well defined:
+
+%2
+
+No imports it as it is.</source>
+        <translation>该网格为%1。
+
+改为修复它吗？以下修改是明确定义的：
+
+%2
+
+选择“否”则按原样导入。</translation>
+    </message>
+    <message>
+        <source>The mesh is %1.</source>
+        <translation>该网格为%1。</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -7842,7 +7862,7 @@ bounds: %9
     </message>
     <message>
         <source>Make a project of a mesh file (OBJ, OFF, PLY ASCII or binary): one subdivision-mesh item with the file&apos;s vertices, in its numbering, and its polygons.</source>
-        <translation>由网格文件（OBJ、OFF、PLY ASCII 或二进制）创建项目：其中包含一个 subdivision-mesh 对象，带有文件中的顶点（保留文件的编号）及其多边形。</translation>
+        <translation type="vanished">由网格文件（OBJ、OFF、PLY ASCII 或二进制）创建项目：其中包含一个 subdivision-mesh 对象，带有文件中的顶点（保留文件的编号）及其多边形。</translation>
     </message>
     <message>
         <source>The mesh file.</source>
@@ -8500,7 +8520,7 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>Repair what is well defined before the checks: weld boundary vertices at the same position, turn flipped faces over, split vertices whose faces form several fans, name repeated vertices once; say each change.</source>
-        <translation>在检查之前修复明确定义的问题：焊接位置相同的边界顶点，翻转反向的面，拆分其面构成多个扇形的顶点，重复的顶点只保留一次；逐条说明每个更改。</translation>
+        <translation type="vanished">在检查之前修复明确定义的问题：焊接位置相同的边界顶点，翻转反向的面，拆分其面构成多个扇形的顶点，重复的顶点只保留一次；逐条说明每个更改。</translation>
     </message>
     <message>
         <source>repaired: %1</source>
@@ -8537,6 +8557,18 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source> (--repair would %1)</source>
         <translation>（--repair 将会：%1）</translation>
+    </message>
+    <message>
+        <source>Make a project of a mesh file (OBJ, OFF, PLY ASCII or binary): one subdivision-mesh item with the file&apos;s vertices, in its numbering, and its polygons. A non-manifold mesh (edges of three or more faces, faces of opposite orientations, vertices whose faces form several fans) is drawn as OpenSubdiv draws it, with a note.</source>
+        <translation>由网格文件（OBJ、OFF、ASCII 或二进制 PLY）创建项目：一个细分网格项，包含文件的顶点（保持其编号）和多边形。非流形网格（三个或更多面共享的边、方向相反的面、其面形成多个扇形的顶点）按 OpenSubdiv 的方式绘制，并附注说明。</translation>
+    </message>
+    <message>
+        <source>Repair what is well defined before the checks: weld boundary vertices at the same position, turn flipped faces over, split vertices whose faces form several fans, name repeated vertices once; say each change (the mesh is then drawn as the repaired surface, not as OpenSubdiv draws the original).</source>
+        <translation>在检查之前修复明确定义的问题：焊接位置相同的边界顶点，翻转朝向相反的面，拆分其面形成多个扇形的顶点，重复的顶点只列一次；说明每处修改（此后网格按修复后的曲面绘制，而不是按 OpenSubdiv 绘制原网格的方式）。</translation>
+    </message>
+    <message>
+        <source>attractor-cli: note: the mesh is %1%2</source>
+        <translation>attractor-cli: 注意：该网格为%1%2</translation>
     </message>
 </context>
 <context>
@@ -9810,7 +9842,31 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>%1 edges join three or more faces (%2): no choice of sheets is canonical, so they are not repaired</source>
-        <translation>%1 条边连接三个或更多面（%2）：没有规范的分片选择，因此不予修复</translation>
+        <translation type="vanished">%1 条边连接三个或更多面（%2）：没有规范的分片选择，因此不予修复</translation>
+    </message>
+    <message>
+        <source>%1 edges join three or more faces (%2): no choice of sheets is canonical, so they are not repaired; they are drawn as OpenSubdiv draws them, as infinitely sharp creases</source>
+        <translation>%1 条边连接三个或更多面（%2）：没有规范的分层选择，因此不修复；它们按 OpenSubdiv 的方式绘制，作为无限尖锐的折痕</translation>
+    </message>
+    <message>
+        <source>%1(%2, %3)</source>
+        <translation>%1(%2, %3)</translation>
+    </message>
+    <message>
+        <source>the vertices as corners</source>
+        <translation>顶点作为角点</translation>
+    </message>
+    <message>
+        <source>%1 of the vertices as corners, the others on the creases</source>
+        <translation>其中 %1 个顶点作为角点，其余位于折痕上</translation>
+    </message>
+    <message>
+        <source>non-manifold: %1 vertices (%2), drawn as OpenSubdiv draws them: %3</source>
+        <translation>非流形：%1 个顶点（%2），按 OpenSubdiv 的方式绘制：%3</translation>
+    </message>
+    <message>
+        <source>non-manifold: %1 edges (%2) and %3 vertices (%4), drawn as OpenSubdiv draws them: the edges as infinitely sharp creases, %5</source>
+        <translation>非流形：%1 条边（%2）和 %3 个顶点（%4），按 OpenSubdiv 的方式绘制：边作为无限尖锐的折痕，%5</translation>
     </message>
 </context>
 <context>

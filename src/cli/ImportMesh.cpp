@@ -7,6 +7,7 @@
 #include "core/mesh/MeshAnalysis.h"
 #include "core/mesh/MeshFiles.h"
 #include "core/mesh/MeshRepair.h"
+#include "core/mesh/MeshSheets.h"
 #include "model/Project.h"
 #include "model/SubdivisionMeshItem.h"
 
@@ -21,7 +22,9 @@ int importMesh(const QStringList &args)
         QCommandLineParser parser;
         parser.setApplicationDescription(CliTr::tr(
             "Make a project of a mesh file (OBJ, OFF, PLY ASCII or binary): one subdivision-mesh "
-            "item with the file's vertices, in its numbering, and its polygons."));
+            "item with the file's vertices, in its numbering, and its polygons. A non-manifold "
+            "mesh (edges of three or more faces, faces of opposite orientations, vertices whose "
+            "faces form several fans) is drawn as OpenSubdiv draws it, with a note."));
         parser.addPositionalArgument("mesh", CliTr::tr("The mesh file."));
         parser.addOptions(
             {{"scheme", CliTr::tr("catmull-clark (any polygons, the default) or loop "
@@ -33,7 +36,8 @@ int importMesh(const QStringList &args)
              {"repair", CliTr::tr("Repair what is well defined before the checks: weld "
                                   "boundary vertices at the same position, turn flipped faces "
                                   "over, split vertices whose faces form several fans, name "
-                                  "repeated vertices once; say each change.")}});
+                                  "repeated vertices once; say each change (the mesh is then drawn as the repaired "
+                                  "surface, not as OpenSubdiv draws the original).")}});
         parseOrFail(parser, args, 1);
         if (!parser.isSet("out"))
             throw Failure{CliTr::tr("--out FILE (the project to write) is required"), 2};
@@ -61,28 +65,36 @@ int importMesh(const QStringList &args)
             if (!report.changed())
                 out() << CliTr::tr("repaired: nothing needed repair") << "\n";
         }
+        // What --repair would change, as " (--repair would ...)", or nothing.
+        const auto wouldRepair = [&] {
+            if (parser.isSet("repair"))
+                return QString();
+            MeshRepairReport report;
+            repairMesh(mesh, &report);
+            QStringList would;
+            if (report.collapsedFaces + report.removedFaces > 0)
+                would << CliTr::tr("name repeated vertices once in %1 faces")
+                             .arg(report.collapsedFaces + report.removedFaces);
+            if (report.weldedVertices > 0)
+                would << CliTr::tr("weld %1 vertices").arg(report.weldedVertices);
+            if (report.turnedFaces > 0)
+                would << CliTr::tr("turn %1 faces over").arg(report.turnedFaces);
+            if (report.splitVertices > 0)
+                would << CliTr::tr("split %1 vertices").arg(report.splitVertices);
+            return would.isEmpty()
+                       ? QString()
+                       : CliTr::tr(" (--repair would %1)").arg(would.join(QStringLiteral(", ")));
+        };
         Project project;
         auto item = std::make_unique<SubdivisionMeshItem>();
         QString error;
-        if (!item->setMesh(mesh, scheme, &error)) {
-            if (!parser.isSet("repair")) {  // say what --repair would change
-                MeshRepairReport report;
-                repairMesh(mesh, &report);
-                QStringList would;
-                if (report.collapsedFaces + report.removedFaces > 0)
-                    would << CliTr::tr("name repeated vertices once in %1 faces")
-                                 .arg(report.collapsedFaces + report.removedFaces);
-                if (report.weldedVertices > 0)
-                    would << CliTr::tr("weld %1 vertices").arg(report.weldedVertices);
-                if (report.turnedFaces > 0)
-                    would << CliTr::tr("turn %1 faces over").arg(report.turnedFaces);
-                if (report.splitVertices > 0)
-                    would << CliTr::tr("split %1 vertices").arg(report.splitVertices);
-                if (!would.isEmpty())
-                    error += CliTr::tr(" (--repair would %1)").arg(would.join(QStringLiteral(", ")));
-            }
-            throw Failure{QStringLiteral("%1: %2").arg(file, error)};
-        }
+        if (!item->setMesh(mesh, scheme, &error))
+            throw Failure{QStringLiteral("%1: %2%3").arg(file, error, wouldRepair())};
+        // A non-manifold mesh is drawn as OpenSubdiv draws it (MeshSheets.h): said.
+        if (const auto sheets = manifoldSheets(mesh))
+            err() << CliTr::tr("attractor-cli: note: the mesh is %1%2")
+                         .arg(QString::fromStdString(describe(*sheets)), wouldRepair())
+                  << "\n";
         const QString name =
             parser.isSet("name") ? parser.value("name") : QFileInfo(file).completeBaseName();
         if (!name.isEmpty() && !item->setName(name))

@@ -6,6 +6,7 @@
 #include "core/mesh/MeshIterate.h"
 #include "core/mesh/MeshPieces.h"
 #include "core/mesh/MeshRefine.h"
+#include "core/mesh/MeshSheets.h"
 #include "model/ProjectIO.h"
 #include "model/PropertyDeclaration.h"
 
@@ -38,7 +39,7 @@ MaybeProblem MeshInputs::check() const
                                     .arg(faces.size())
                                     .arg(2 * SubdivisionMeshItem::maxVertices)};
     try {
-        checkMesh(mesh(), scheme);
+        checkDrawnMesh(mesh(), scheme);
     } catch (const InputError &e) {
         const QString message = QString::fromStdString(e.what());
         const bool aboutVertices = message.startsWith("vertex") && message.contains("finite");

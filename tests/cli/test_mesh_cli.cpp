@@ -41,6 +41,7 @@ private slots:
     void repairSaysWhatItChanged();
     void valencesTableIsTheWindowsTable();
     void interiorValenceTwoIsImportedAndSaid();
+    void nonManifoldIsImportedAsOpenSubdivDrawsIt();
 
 private:
     int run(const QStringList &args, QByteArray *out = nullptr, QByteArray *err = nullptr)
@@ -296,7 +297,8 @@ void TestMeshCli::valencesTableIsTheWindowsTable()
 void TestMeshCli::repairSaysWhatItChanged()
 {
     // A 2 x 2 grid of quads, one turned over, and a bowtie vertex joining a triangle at a
-    // corner: refused, naming the faces, with the hint; --repair turns, splits and says so.
+    // corner: imported as OpenSubdiv draws it (the flipped face's edges and the bowtie sharp),
+    // with a note and the hint; --repair turns, splits and says so.
     const QString obj = m_dir.filePath("flipped.obj");
     QFile f(obj);
     QVERIFY(f.open(QIODevice::WriteOnly));
@@ -306,10 +308,12 @@ void TestMeshCli::repairSaysWhatItChanged()
     f.close();
     const QString project = m_dir.filePath("flipped.awb");
     QByteArray out, err;
-    QCOMPARE(run({"import-mesh", obj, "--out", project}, &out, &err), 1);
-    QVERIFY2(err.contains("oriented inconsistently")
+    QCOMPARE(run({"import-mesh", obj, "--out", project}, &out, &err), 0);
+    QVERIFY2(err.contains("note: the mesh is non-manifold: 2 edges ((4, 5), (4, 7)) and 4 "
+                          "vertices (4, 5, 7, 8), drawn as OpenSubdiv draws them")
                  && err.contains("(--repair would turn 1 faces over, split 1 vertices)"),
              err.constData());
+    QCOMPARE(run({"check", project}, &out, &err), 0);
     QCOMPARE(run({"import-mesh", obj, "--out", project, "--repair"}, &out, &err), 0);
     QVERIFY2(out.contains("repaired: 1 faces were turned over to the orientation of the surface "
                           "they belong to (faces 3)")
@@ -348,11 +352,6 @@ void TestMeshCli::badFilesAreRefusedByName()
     QVERIFY(refuse("this is not a mesh\n", "off").contains("bad.off"));
     QVERIFY(refuse("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 4 3\n", "obj", {"--scheme", "loop"})
                 .contains("triangles only"));
-    // Three triangles on the edge (1, 2): non-manifold.
-    QVERIFY(refuse("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nf 1 2 3\nf 2 4 3\nf 3 2 5\n", "obj")
-                .contains("non-manifold"));
-    QVERIFY(refuse("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 3 4\n", "obj")
-                .contains("oriented inconsistently"));
     QVERIFY(!QFile::exists(awb));  // nothing written for a refused file
     // An all-triangle mesh imported without --scheme: a note proposes Loop (issue 47); with a
     // scheme chosen, no note.
@@ -405,6 +404,44 @@ void TestMeshCli::interiorValenceTwoIsImportedAndSaid()
                                  .toObject();
     QVERIFY(kind["note"].toString().contains("valences 3 to 64"));
     QCOMPARE(run({"check", project}, &out, &err), 0);
+}
+
+void TestMeshCli::nonManifoldIsImportedAsOpenSubdivDrawsIt()
+{
+    // Three triangles on the edge (1, 2), a fin: imported with a note, checked, drawn. The
+    // edge is infinitely sharp and its ends, which have one boundary edge each, are corners
+    // (OpenSubdiv's rule): their limits are the points themselves; the depth-3 points contain
+    // the edge's points, sampled as a straight crease between two corners.
+    const QString obj = m_dir.filePath("fin.obj");
+    QFile f(obj);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nf 1 2 3\nf 2 4 3\nf 3 2 5\n");
+    f.close();
+    const QString project = m_dir.filePath("fin.awb");
+    QByteArray out, err;
+    QCOMPARE(run({"import-mesh", obj, "--out", project, "--scheme", "loop"}, &out, &err), 0);
+    QVERIFY2(err.contains("note: the mesh is non-manifold: 1 edges ((1, 2)) and 2 vertices (1, "
+                          "2), drawn as OpenSubdiv draws them: the edges as infinitely sharp "
+                          "creases, the vertices as corners"),
+             err.constData());
+    QVERIFY2(!err.contains("--repair would"), err.constData());  // nothing it can repair
+    QCOMPARE(run({"check", project}, &out, &err), 0);
+    QCOMPARE(run({"points", project, "--item", "fin", "--depth", "3", "--start", "vertex-limits",
+                  "--csv"},
+                 &out, &err),
+             0);
+    const QList<QByteArray> lines = out.trimmed().split('\n');
+    int onEdge = 0;
+    bool cornerB = false, cornerC = false;
+    for (qsizetype l = 1; l < lines.size(); ++l) {
+        const QList<QByteArray> c = lines[l].split(',');
+        const double x = c[0].toDouble(), y = c[1].toDouble(), z = c[2].toDouble();
+        onEdge += std::abs(x + y - 1) < 1e-12 && std::abs(z) < 1e-12 && x > -1e-12 && y > -1e-12;
+        cornerB = cornerB || (std::abs(x - 1) < 1e-12 && std::abs(y) < 1e-12 && std::abs(z) < 1e-12);
+        cornerC = cornerC || (std::abs(x) < 1e-12 && std::abs(y - 1) < 1e-12 && std::abs(z) < 1e-12);
+    }
+    QVERIFY(cornerB && cornerC);
+    QVERIFY2(onEdge >= 3 * 9, qPrintable(QString::number(onEdge)));  // 9 per face at depth 3
 }
 
 AWB_TEST_MAIN(TestMeshCli)

@@ -122,9 +122,10 @@ void TestMeshWindow::refusedFileChangesNothing()
 
 void TestMeshWindow::refusedMeshIsRepairedOnRequest()
 {
-    // Two triangles that meet at one vertex only (a bowtie):
-    // File > Import Mesh says why the mesh is refused and offers the repairs; No changes
-    // nothing, Yes imports the repaired mesh and says what was changed.
+    // Two triangles that meet at one vertex only (a bowtie): File > Import Mesh says how the
+    // mesh would be drawn (as OpenSubdiv draws it: the vertex a corner) and offers the repair
+    // instead; Cancel changes nothing, No imports it as it is and says so, Yes imports the
+    // repaired mesh and says what was changed.
     const QString file = write("bowtie.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\n"
                                              "f 1 2 3\nf 1 4 5\n");
     RecordingMessages messages;
@@ -138,28 +139,41 @@ void TestMeshWindow::refusedMeshIsRepairedOnRequest()
             dialog->accept();
         });
     };
-    messages.answer = QMessageBox::No;
+    messages.answer = QMessageBox::Cancel;
     acceptScheme();
     w.importMeshFile(file);
     QCOMPARE(messages.questions.size(), 1);
-    QVERIFY2(messages.questions[0].contains("vertex 0 is non-manifold")
-                 && messages.questions[0].contains("Repair the mesh?")
+    QVERIFY2(messages.questions[0].contains("The mesh is non-manifold: 1 vertices (0), "
+                                            "drawn as OpenSubdiv draws them: the vertices "
+                                            "as corners")
+                 && messages.questions[0].contains("Repair it instead?")
                  && messages.questions[0].contains("split, one vertex per fan (vertices 0;"),
              qPrintable(messages.questions[0]));
     QCOMPARE(w.project()->childCount(), before);
     QVERIFY(messages.errors.isEmpty());
-    messages.answer = QMessageBox::Yes;
+    messages.answer = QMessageBox::No;
     acceptScheme();
     w.importMeshFile(file);
     QCOMPARE(w.project()->childCount(), before + 1);
+    const auto *asIs = qobject_cast<const SubdivisionMeshItem *>(
+        w.project()->child(w.project()->childCount() - 1));
+    QVERIFY(asIs);
+    QCOMPARE(asIs->inputs().vertices.size(), std::size_t(5));
+    QCoreApplication::processEvents();  // the note comes queued
+    QVERIFY2(messages.infos.join('\n').contains("The mesh is non-manifold"),
+             qPrintable(messages.infos.join('\n')));
+    messages.answer = QMessageBox::Yes;
+    acceptScheme();
+    w.importMeshFile(file);
+    QCOMPARE(w.project()->childCount(), before + 2);
     const auto *item = qobject_cast<const SubdivisionMeshItem *>(
         w.project()->child(w.project()->childCount() - 1));
     QVERIFY(item);
     QCOMPARE(item->inputs().vertices.size(), std::size_t(6));  // vertex 0 and its copy, 5
     QCOMPARE(item->inputs().faces[1][0], 5);
-    QCoreApplication::processEvents();  // the note of what was changed comes queued
+    QCoreApplication::processEvents();
     QVERIFY2(messages.infos.join('\n').contains("Repaired:"), qPrintable(messages.infos.join('\n')));
-    QCOMPARE(w.project()->undoStack()->count(), 1);
+    QCOMPARE(w.project()->undoStack()->count(), 2);
 }
 
 void TestMeshWindow::startingMeshes()

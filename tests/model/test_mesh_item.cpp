@@ -7,6 +7,8 @@
 #include "core/mesh/MeshAnalysis.h"
 #include "core/mesh/MeshExamples.h"
 #include "core/mesh/MeshPieces.h"
+#include "core/mesh/MeshRefine.h"
+#include "core/mesh/MeshSheets.h"
 #include "model/EigenvaluePlotItem.h"
 #include "model/MeshAnalysisJson.h"
 #include "model/PointExport.h"
@@ -58,6 +60,7 @@ private slots:
     void fileFormatRoundTrip();
     void badMeshesNameTheProblem_data();
     void badMeshesNameTheProblem();
+    void nonManifoldMeshesAreDrawnAsOpenSubdivDrawsThem();
     void movingAVertexIsOneUndoStepAndKeepsThePieces();
     void schemeChangeIsOneUndoStep();
     void vertexLimitsStartIsExact();
@@ -130,18 +133,8 @@ void TestMeshItem::badMeshesNameTheProblem_data()
     auto outOfRange = cube;
     outOfRange[2][1] = 8;
     QTest::newRow("index out of range") << faces(outOfRange) << "refers to vertex 8";
-    auto repeated = cube;
-    repeated[1][2] = repeated[1][0];
-    QTest::newRow("repeated vertex") << faces(repeated) << "twice";
     QTest::newRow("two vertices") << faces({{0, 1}}) << "needs at least 3";
     QTest::newRow("no faces") << faces({}) << "no faces";
-    auto flipped = cube;
-    std::reverse(flipped[3].begin(), flipped[3].end());
-    QTest::newRow("inconsistent orientation") << faces(flipped) << "oriented inconsistently";
-    // A fourth face on one edge: three quads share edge (0, 1) with the cube's own two.
-    auto fins = cube;
-    fins.push_back({0, 1, 7, 6});
-    QTest::newRow("non-manifold edge") << faces(fins) << "non-manifold";
     QTest::newRow("Loop on quads")
         << meshJson([](QJsonObject &j) { j["scheme"] = QJsonObject{{"kind", "loop"}}; })
         << "Loop subdivision takes triangles only";
@@ -163,6 +156,39 @@ void TestMeshItem::badMeshesNameTheProblem()
     QFETCH(QString, words);
     const QString error = test::loadError(json);
     QVERIFY2(error.contains(words), qPrintable(error));
+}
+
+void TestMeshItem::nonManifoldMeshesAreDrawnAsOpenSubdivDrawsThem()
+{
+    // What the topology alone refuses, drawn as OpenSubdiv draws it (MeshSheets.h): a face
+    // turned over (its edges become infinitely sharp, its corners corners), a fin on an edge of
+    // the cube (three faces on edge (0, 1)), a face that names a vertex twice. Each loads; its
+    // non-manifold vertices are corners, so their limits are the control points themselves.
+    const std::vector<std::vector<int>> cube = cubeMesh().faces;
+    auto flipped = cube;
+    std::reverse(flipped[3].begin(), flipped[3].end());
+    auto fins = cube;
+    fins.push_back({0, 1, 7, 6});
+    auto repeated = cube;
+    repeated[1][2] = repeated[1][0];
+    for (const auto &faces : {flipped, fins, repeated}) {
+        Project p;
+        QString error;
+        QVERIFY2(test::load(p, meshJson([&](QJsonObject &j) { j["faces"] = facesJson(faces); }),
+                            &error),
+                 qPrintable(error));
+        const SubdivisionMeshItem *item = meshItem(p);
+        QVERIFY(item);
+        QVERIFY2(item->derivedIfs(), qPrintable(item->derivedError()));
+        const Mesh mesh = item->inputs().mesh();
+        const auto sheets = manifoldSheets(mesh);
+        QVERIFY(sheets);
+        const Mat limits = limitPositions(mesh, MeshScheme::CatmullClark);
+        for (int v : sheets->vertices)
+            if (std::find(sheets->creaseVertices.begin(), sheets->creaseVertices.end(), v)
+                == sheets->creaseVertices.end())
+                QVERIFY((limits.row(v) - mesh.vertices.row(v)).norm() < 1e-15);
+    }
 }
 
 void TestMeshItem::movingAVertexIsOneUndoStepAndKeepsThePieces()

@@ -3,6 +3,8 @@
 // connectivity subdivision needs. The mesh room of the core keeps OpenSubdiv's separation:
 //   Mesh.h            the topology (OpenSubdiv's Vtr): edges, boundaries, the ordered ring of
 //                     every vertex, and the checks that refuse what is not a 2-manifold;
+//   MeshSheets.h      a non-manifold mesh as OpenSubdiv draws it: manifold sheets whose cuts
+//                     carry its sharpness, so that everything below applies;
 //   MeshTags.h        the sharp features and options (Sdc::Crease, Sdc::Options): creases,
 //                     corners, holes, boundary interpolation, crease method;
 //   MeshRules.h       the scheme rules (Sdc): the weights of Catmull-Clark and Loop;
@@ -50,7 +52,9 @@ MeshScheme suggestedScheme(const Mesh &mesh);
 // of fewer than three vertices or one that lists a vertex twice, an index out of range, an edge
 // shared by three or more faces (non-manifold), two faces that run along their common edge in
 // the same direction (inconsistent orientation), and a vertex whose faces form separate fans.
-// A vertex of no face is allowed (it stays where it is).
+// A vertex of no face is allowed (it stays where it is). The mesh room's entry points
+// (refineMesh, limitPositions, buildMeshPieces) take a non-manifold mesh through its manifold
+// sheets (MeshSheets.h) first, as OpenSubdiv draws it.
 class MeshTopology {
 public:
     MeshTopology(int vertexCount, std::vector<std::vector<int>> faces);

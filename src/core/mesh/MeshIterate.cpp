@@ -2,11 +2,13 @@
 
 #include "core/Messages.h"
 #include "core/Threads.h"
+#include "core/mesh/MeshSheets.h"
 #include "core/schemes/ControlPointFractal.h"
 
 #include <atomic>
 #include <cmath>
 #include <map>
+#include <optional>
 
 namespace awb {
 
@@ -232,7 +234,12 @@ double PointCounts::operator()(int type, int depth)
 double meshPointCount(const MeshPieces &pieces, const MeshStart &start, int depth)
 {
     if (depth < pieces.steps && start.kind != MeshStart::Kind::Points) {
-        MeshTopology t(pieces.inputVertexCount, pieces.inputFaces);
+        // The input's topology, or its sheets' when it is non-manifold (MeshSheets.h).
+        const Mesh input{Mat::Zero(pieces.inputVertexCount, 3), pieces.inputFaces,
+                         pieces.inputTags};
+        const std::optional<ManifoldSheets> sheets = manifoldSheets(input);
+        const Mesh &drawn = sheets ? sheets->mesh : input;
+        MeshTopology t(int(drawn.vertices.rows()), drawn.faces);
         int count = t.vertexCount();
         for (int k = 0; k < depth; ++k) {
             Refinement r = refineTopology(t, pieces.scheme);

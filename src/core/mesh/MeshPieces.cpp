@@ -1,6 +1,7 @@
 #include "core/mesh/MeshPieces.h"
 
 #include "core/Messages.h"
+#include "core/mesh/MeshSheets.h"
 
 #include <algorithm>
 #include <climits>
@@ -506,7 +507,9 @@ SparseRows SparseRows::of(const Mat &m)
     return r;
 }
 
-MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
+namespace {
+
+MeshPieces buildManifoldPieces(const Mesh &mesh, MeshScheme scheme)
 {
     MeshTopology t = checkMesh(mesh, scheme);
     MeshPieces out;
@@ -604,6 +607,40 @@ MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
     }
     for (const MeshPieceRoot &root : out.roots)
         ++out.types[std::size_t(root.type)].roots;
+    return out;
+}
+
+} // namespace
+
+MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
+{
+    const std::optional<ManifoldSheets> sheets = manifoldSheets(mesh);
+    if (!sheets)
+        return buildManifoldPieces(mesh, scheme);
+    // The pieces of the sheets, on the input's vertices: a copy is its vertex.
+    MeshPieces out = buildManifoldPieces(sheets->mesh, scheme);
+    const int n = int(mesh.vertices.rows());
+    const auto inputVertex = [&](int v) { return v < n ? v : sheets->original[std::size_t(v)]; };
+    for (MeshStencil &stencil : out.isolation) {
+        for (auto &[p, w] : stencil)
+            p = inputVertex(p);
+        std::sort(stencil.begin(), stencil.end(),
+                  [](const auto &a, const auto &b) { return a.first < b.first; });
+        std::size_t kept = 0;
+        for (std::size_t i = 0; i < stencil.size(); ++i)
+            if (kept > 0 && stencil[kept - 1].first == stencil[i].first)
+                stencil[kept - 1].second += stencil[i].second;
+            else
+                stencil[kept++] = stencil[i];
+        stencil.resize(kept);
+    }
+    for (int &o : out.origin)
+        if (o >= n)
+            o = inputVertex(o);
+    std::erase_if(out.loneVertices, [&](int v) { return v >= n; });
+    out.inputVertexCount = n;
+    out.inputFaces = mesh.faces;
+    out.inputTags = mesh.tags;
     return out;
 }
 

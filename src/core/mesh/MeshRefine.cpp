@@ -2,6 +2,7 @@
 
 #include "core/Messages.h"
 #include "core/mesh/MeshRules.h"
+#include "core/mesh/MeshSheets.h"
 #include "core/mesh/MeshTags.h"
 
 #include <algorithm>
@@ -432,8 +433,14 @@ Mat applyStencils(const std::vector<MeshStencil> &stencils, const Mat &data)
     return out;
 }
 
-Mesh refineMesh(const Mesh &mesh, MeshScheme scheme, int steps)
+Mesh refineMesh(const Mesh &input, MeshScheme scheme, int steps)
 {
+    if (steps == 0) {
+        checkDrawnMesh(input, scheme);
+        return input;
+    }
+    const std::optional<ManifoldSheets> sheets = manifoldSheets(input);
+    const Mesh &mesh = sheets ? sheets->mesh : input;
     MeshTopology t = checkMesh(mesh, scheme);
     Mesh m = mesh;
     m.tags = {};
@@ -443,10 +450,8 @@ Mesh refineMesh(const Mesh &mesh, MeshScheme scheme, int steps)
         t = refinedTopology(r);
         m.faces = std::move(r.faces);
     }
-    if (steps > 0 && (t.hasSharpness() || t.hasHoles() || !(t.options() == MeshOptions{})))
+    if (t.hasSharpness() || t.hasHoles() || !(t.options() == MeshOptions{}))
         m.tags = tagsOf(t);
-    else if (steps == 0)
-        m.tags = mesh.tags;
     return m;
 }
 
@@ -502,8 +507,11 @@ int preludeLevels(const MeshTopology &t)
     return int(std::ceil(top));
 }
 
-Mat limitPositions(const Mesh &mesh, MeshScheme scheme)
+Mat limitPositions(const Mesh &input, MeshScheme scheme)
 {
+    // A vertex's copies in the sheets of a non-manifold mesh share its limit.
+    const std::optional<ManifoldSheets> sheets = manifoldSheets(input);
+    const Mesh &mesh = sheets ? sheets->mesh : input;
     MeshTopology t = checkMesh(mesh, scheme);
     // Past the semi-sharp features (vertex v keeps its number at every level).
     Mat points = mesh.vertices;
@@ -519,7 +527,7 @@ Mat limitPositions(const Mesh &mesh, MeshScheme scheme)
         t = refinedTopology(r);
     }
     std::vector<MeshStencil> limits = limitStencils(t, scheme);
-    limits.resize(std::size_t(mesh.vertices.rows()));
+    limits.resize(std::size_t(input.vertices.rows()));
     return applyStencils(limits, points);
 }
 

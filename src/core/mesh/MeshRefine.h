@@ -43,7 +43,9 @@ MeshTags tagsOf(const MeshTopology &topology);
 // rows of data (one per old point) -> one row per stencil.
 Mat applyStencils(const std::vector<MeshStencil> &stencils, const Mat &data);
 
-// The mesh after `steps` steps (checked by checkMesh first).
+// The mesh after `steps` steps (checked by checkMesh first). A non-manifold mesh is refined as
+// its manifold sheets (MeshSheets.h): a vertex on a non-manifold edge or vertex appears once
+// per sheet, at one position, and the sharp features carry OpenSubdiv's rules there.
 Mesh refineMesh(const Mesh &mesh, MeshScheme scheme, int steps = 1);
 
 // The limit position of every vertex of the topology as a stencil on its vertices: the masks of
@@ -52,7 +54,8 @@ Mesh refineMesh(const Mesh &mesh, MeshScheme scheme, int steps = 1);
 // point after one step composed with that step. A vertex of no face stays where it is.
 std::vector<MeshStencil> limitStencils(const MeshTopology &topology, MeshScheme scheme);
 
-// The limit positions of the mesh's vertices (n x 3): the limit stencils after the levels
+// The limit positions of the mesh's vertices (n x 3; a non-manifold mesh's from its sheets,
+// MeshSheets.h): the limit stencils after the levels
 // that its semi-sharp features last (at most 10; InputError when that mesh would pass
 // kMaxPreludeFaces faces).
 constexpr long long kMaxPreludeFaces = 4000000;

@@ -426,7 +426,8 @@ void sayNonManifoldEdges(const Mesh &m, MeshRepairReport &r)
         list += formatMessage(coreTranslate("awb::mesh", " and %1 more"), count - int(edges.size()));
     r.unrepaired.push_back(formatMessage(
         coreTranslate("awb::mesh", "%1 edges join three or more faces (%2): no choice of sheets "
-                                   "is canonical, so they are not repaired"),
+                                   "is canonical, so they are not repaired; they are drawn as "
+                                   "OpenSubdiv draws them, as infinitely sharp creases"),
         count, list));
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// Repairs of a mesh that the topology refuses (issue 44: `import-mesh --repair`, and the
-// question File > Import Mesh asks when a mesh is refused), each only where it is well defined:
+// Repairs of a non-manifold or refused mesh (issue 44: `import-mesh --repair`, and the
+// question File > Import Mesh asks), each only where it is well defined:
 //   - a face that names the same vertex twice in a row names it once (a face left with fewer
 //     than three vertices is removed);
 //   - boundary vertices at exactly the same position are welded, one group at a time, when the
@@ -11,7 +11,8 @@
 //   - a vertex whose faces form several fans (a "bowtie") becomes one vertex per fan: the first
 //     keeps the number, the others are appended, at the same position.
 // Edges of three or more faces are not repaired (no choice of sheets is canonical); they are
-// said. The vertices keep their numbers (a welded vertex stays, used by no face), tags follow
+// said, and drawn as OpenSubdiv draws them (MeshSheets.h), as every unrepaired non-manifold
+// mesh is: the repairs are the user's choice of another surface. The vertices keep their numbers (a welded vertex stays, used by no face), tags follow
 // the vertices and faces they name. Qt-free.
 
 #include "core/mesh/Mesh.h"

@@ -8,6 +8,7 @@
 #include "core/mesh/MeshExamples.h"
 #include "core/mesh/MeshFiles.h"
 #include "core/mesh/MeshRepair.h"
+#include "core/mesh/MeshSheets.h"
 #include "gui/app/ItemController.h"
 #include "gui/app/Messages.h"
 #include "model/EigenvaluePlotItem.h"
@@ -199,6 +200,46 @@ void MainWindow::importMeshFile(const QString &file)
     if (!ok)
         return;
     const MeshScheme scheme = chosen == schemes[1] ? MeshScheme::Loop : MeshScheme::CatmullClark;
+    // A non-manifold mesh is drawn as OpenSubdiv draws it (MeshSheets.h); where the repairs
+    // would make it manifold instead (flipped faces, bowties, seams), the user chooses.
+    std::optional<ManifoldSheets> sheets;
+    try {
+        sheets = manifoldSheets(mesh);
+    } catch (const std::exception &) {  // a bad tag: importMesh names it below
+    }
+    if (sheets) {
+        MeshRepairReport report;
+        const Mesh repaired = repairMesh(mesh, &report);
+        const QString drawn = QString::fromStdString(describe(*sheets));
+        if (report.changed()) {
+            QStringList changes;
+            for (const std::string &c : report.changes)
+                changes << QStringLiteral("• ") + QString::fromStdString(c);
+            const auto answer = m_messages->question(
+                this, tr("Import Mesh"),
+                tr("The mesh is %1.\n\nRepair it instead? These changes are well defined:\n\n"
+                   "%2\n\nNo imports it as it is.")
+                    .arg(drawn, changes.join(QLatin1Char('\n'))),
+                QMessageBox::Yes | QMessageBox::No | QMessageBox::Cancel, QMessageBox::Yes);
+            if (answer == QMessageBox::Cancel)
+                return;
+            if (answer == QMessageBox::Yes) {
+                mesh = repaired;
+                for (const std::string &c : report.changes)
+                    notes.push_back(
+                        tr("Repaired: %1").arg(QString::fromStdString(c)).toStdString());
+                sheets = std::nullopt;
+                try {
+                    sheets = manifoldSheets(mesh);
+                } catch (const std::exception &) {
+                }
+            }
+        }
+        if (sheets)
+            notes.push_back(tr("The mesh is %1.")
+                                .arg(QString::fromStdString(describe(*sheets)))
+                                .toStdString());
+    }
     QString error;
     if (!importMesh(file, mesh, scheme, &error)) {
         // Refused: offer the repairs that are well defined (MeshRepair.h), saying what they
