@@ -7008,7 +7008,59 @@ Ne ji importuje tak, jak je.</translation>
     </message>
     <message>
         <source>Reif&apos;s criterion is decided here for smooth interior vertices only: a boundary vertex or a sharp feature follows the crease rules, whose analysis needs the half-ring&apos;s own characteristic map.</source>
-        <translation>Reifovo kritérium se zde rozhoduje jen pro hladké vnitřní vrcholy: hraniční vrchol nebo ostrý prvek se řídí pravidly pro ostré hrany, jejichž analýza vyžaduje vlastní charakteristické zobrazení polovičního prstence.</translation>
+        <translation type="vanished">Reifovo kritérium se zde rozhoduje jen pro hladké vnitřní vrcholy: hraniční vrchol nebo ostrý prvek se řídí pravidly pro ostré hrany, jejichž analýza vyžaduje vlastní charakteristické zobrazení polovičního prstence.</translation>
+    </message>
+    <message>
+        <source>Reif&apos;s criterion sector by sector (Zorin 2000): each run of faces between sharp edges, with the eigenvalues whose eigenvectors do not vanish on it, on the canonical star of this neighbourhood:</source>
+        <translation>Reifovo kritérium po sektorech (Zorin 2000): každý úsek stěn mezi ostrými hranami s vlastními čísly, jejichž vlastní vektory na něm nemizí, na kanonické hvězdě tohoto okolí:</translation>
+    </message>
+    <message>
+        <source>face %1</source>
+        <translation>stěna %1</translation>
+    </message>
+    <message>
+        <source>faces %1–%2</source>
+        <translation>stěny %1–%2</translation>
+    </message>
+    <message>
+        <source>%1: λ₁ = %2, λ₂ = %3, μ = %4</source>
+        <translation>%1: λ₁ = %2, λ₂ = %3, μ = %4</translation>
+    </message>
+    <message>
+        <source>; C¹, curvature %1</source>
+        <translation>; C¹, křivost %1</translation>
+    </message>
+    <message>
+        <source>; not C¹: %1</source>
+        <translation>; není C¹: %1</translation>
+    </message>
+    <message>
+        <source>; %1</source>
+        <translation>; %1</translation>
+    </message>
+    <message>
+        <source>Verdict: the limit surface is C¹ on every sector up to the creases (for generic data).</source>
+        <translation>Verdikt: limitní plocha je C¹ na každém sektoru až k ostrým hranám (pro generická data).</translation>
+    </message>
+    <message>
+        <source>Verdict: C¹ is not established on every sector.</source>
+        <translation>Verdikt: C¹ není na každém sektoru prokázáno.</translation>
+    </message>
+    <message>
+        <source>Reif&apos;s criterion is decided for valences 3 to 64: this vertex is outside them.</source>
+        <translation>Reifovo kritérium se rozhoduje pro valence 3 až 64: tento vrchol je mimo ně.</translation>
+    </message>
+    <message>
+        <source>zero (μ &lt; λ₂²)</source>
+        <translation>nulová (μ &lt; λ₂²)</translation>
+    </message>
+    <message>
+        <source>bounded (μ = λ₂²)</source>
+        <translation>omezená (μ = λ₂²)</translation>
+    </message>
+    <message>
+        <source>unbounded (μ &gt; λ₂²)</source>
+        <translation>neomezená (μ &gt; λ₂²)</translation>
     </message>
 </context>
 <context>
@@ -9893,6 +9945,26 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     <message>
         <source>non-manifold: %1 edges (%2) and %3 vertices (%4), drawn as OpenSubdiv draws them: the edges as infinitely sharp creases, %5</source>
         <translation>nevarietní: %1 hran (%2) a %3 vrcholů (%4), kreslené tak, jak je kreslí OpenSubdiv: hrany jako nekonečně ostré hrany, %5</translation>
+    </message>
+    <message>
+        <source>its largest eigenvalues below 1 are not real and positive</source>
+        <translation>jeho největší vlastní čísla menší než 1 nejsou reálná a kladná</translation>
+    </message>
+    <message>
+        <source>%1 is a defective eigenvalue (a Jordan block) among the two largest: Reif&apos;s criterion takes them diagonalizable (not decided)</source>
+        <translation>%1 je defektní vlastní číslo (Jordanův blok) mezi dvěma největšími: Reifovo kritérium předpokládá diagonalizovatelnost (nerozhodnuto)</translation>
+    </message>
+    <message>
+        <source>lambda2 = lambda3 = %1: the tangent plane is not determined by the two largest</source>
+        <translation>lambda2 = lambda3 = %1: tečná rovina není určena dvěma největšími</translation>
+    </message>
+    <message>
+        <source>its characteristic map is not regular</source>
+        <translation>jeho charakteristické zobrazení není regulární</translation>
+    </message>
+    <message>
+        <source>its characteristic map is not injective</source>
+        <translation>jeho charakteristické zobrazení není prosté</translation>
     </message>
 </context>
 <context>

@@ -6997,7 +6997,59 @@ Non l’importe tel quel.</translation>
     </message>
     <message>
         <source>Reif&apos;s criterion is decided here for smooth interior vertices only: a boundary vertex or a sharp feature follows the crease rules, whose analysis needs the half-ring&apos;s own characteristic map.</source>
-        <translation>Le critère de Reif n’est évalué ici que pour les sommets intérieurs lisses : un sommet de bord ou un élément vif suit les règles d’arête vive, dont l’analyse demande l’application caractéristique propre au demi-anneau.</translation>
+        <translation type="vanished">Le critère de Reif n’est évalué ici que pour les sommets intérieurs lisses : un sommet de bord ou un élément vif suit les règles d’arête vive, dont l’analyse demande l’application caractéristique propre au demi-anneau.</translation>
+    </message>
+    <message>
+        <source>Reif&apos;s criterion sector by sector (Zorin 2000): each run of faces between sharp edges, with the eigenvalues whose eigenvectors do not vanish on it, on the canonical star of this neighbourhood:</source>
+        <translation>Critère de Reif secteur par secteur (Zorin 2000) : chaque suite de faces entre arêtes vives, avec les valeurs propres dont les vecteurs propres ne s’y annulent pas, sur l’étoile canonique de ce voisinage :</translation>
+    </message>
+    <message>
+        <source>face %1</source>
+        <translation>face %1</translation>
+    </message>
+    <message>
+        <source>faces %1–%2</source>
+        <translation>faces %1–%2</translation>
+    </message>
+    <message>
+        <source>%1: λ₁ = %2, λ₂ = %3, μ = %4</source>
+        <translation>%1 : λ₁ = %2, λ₂ = %3, μ = %4</translation>
+    </message>
+    <message>
+        <source>; C¹, curvature %1</source>
+        <translation> ; C¹, courbure %1</translation>
+    </message>
+    <message>
+        <source>; not C¹: %1</source>
+        <translation> ; pas C¹ : %1</translation>
+    </message>
+    <message>
+        <source>; %1</source>
+        <translation> ; %1</translation>
+    </message>
+    <message>
+        <source>Verdict: the limit surface is C¹ on every sector up to the creases (for generic data).</source>
+        <translation>Verdict : la surface limite est C¹ sur chaque secteur jusqu’aux plis (pour des données génériques).</translation>
+    </message>
+    <message>
+        <source>Verdict: C¹ is not established on every sector.</source>
+        <translation>Verdict : C¹ n’est pas établi sur chaque secteur.</translation>
+    </message>
+    <message>
+        <source>Reif&apos;s criterion is decided for valences 3 to 64: this vertex is outside them.</source>
+        <translation>Le critère de Reif est décidé pour les valences 3 à 64 : ce sommet est en dehors.</translation>
+    </message>
+    <message>
+        <source>zero (μ &lt; λ₂²)</source>
+        <translation>nulle (μ &lt; λ₂²)</translation>
+    </message>
+    <message>
+        <source>bounded (μ = λ₂²)</source>
+        <translation>bornée (μ = λ₂²)</translation>
+    </message>
+    <message>
+        <source>unbounded (μ &gt; λ₂²)</source>
+        <translation>non bornée (μ &gt; λ₂²)</translation>
     </message>
 </context>
 <context>
@@ -9880,6 +9932,26 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     <message>
         <source>non-manifold: %1 edges (%2) and %3 vertices (%4), drawn as OpenSubdiv draws them: the edges as infinitely sharp creases, %5</source>
         <translation>non variété : %1 arêtes (%2) et %3 sommets (%4), dessinés comme OpenSubdiv les dessine : les arêtes en plis infiniment vifs, %5</translation>
+    </message>
+    <message>
+        <source>its largest eigenvalues below 1 are not real and positive</source>
+        <translation>ses plus grandes valeurs propres inférieures à 1 ne sont pas réelles et positives</translation>
+    </message>
+    <message>
+        <source>%1 is a defective eigenvalue (a Jordan block) among the two largest: Reif&apos;s criterion takes them diagonalizable (not decided)</source>
+        <translation>%1 est une valeur propre défective (un bloc de Jordan) parmi les deux plus grandes : le critère de Reif les suppose diagonalisables (non décidé)</translation>
+    </message>
+    <message>
+        <source>lambda2 = lambda3 = %1: the tangent plane is not determined by the two largest</source>
+        <translation>lambda2 = lambda3 = %1 : le plan tangent n’est pas déterminé par les deux plus grandes</translation>
+    </message>
+    <message>
+        <source>its characteristic map is not regular</source>
+        <translation>son application caractéristique n’est pas régulière</translation>
+    </message>
+    <message>
+        <source>its characteristic map is not injective</source>
+        <translation>son application caractéristique n’est pas injective</translation>
     </message>
 </context>
 <context>

@@ -6986,7 +6986,59 @@ No imports it as it is.</source>
     </message>
     <message>
         <source>Reif&apos;s criterion is decided here for smooth interior vertices only: a boundary vertex or a sharp feature follows the crease rules, whose analysis needs the half-ring&apos;s own characteristic map.</source>
-        <translation>此处仅对光滑的内部顶点判定 Reif 判据：边界顶点或尖锐特征遵循折痕规则，其分析需要半环自身的特征映射。</translation>
+        <translation type="vanished">此处仅对光滑的内部顶点判定 Reif 判据：边界顶点或尖锐特征遵循折痕规则，其分析需要半环自身的特征映射。</translation>
+    </message>
+    <message>
+        <source>Reif&apos;s criterion sector by sector (Zorin 2000): each run of faces between sharp edges, with the eigenvalues whose eigenvectors do not vanish on it, on the canonical star of this neighbourhood:</source>
+        <translation>逐扇区的 Reif 判据（Zorin 2000）：尖锐边之间的每一段面，取其特征向量在其上不为零的特征值，在该邻域的标准星形上计算：</translation>
+    </message>
+    <message>
+        <source>face %1</source>
+        <translation>面 %1</translation>
+    </message>
+    <message>
+        <source>faces %1–%2</source>
+        <translation>面 %1–%2</translation>
+    </message>
+    <message>
+        <source>%1: λ₁ = %2, λ₂ = %3, μ = %4</source>
+        <translation>%1：λ₁ = %2，λ₂ = %3，μ = %4</translation>
+    </message>
+    <message>
+        <source>; C¹, curvature %1</source>
+        <translation>；C¹，曲率%1</translation>
+    </message>
+    <message>
+        <source>; not C¹: %1</source>
+        <translation>；非 C¹：%1</translation>
+    </message>
+    <message>
+        <source>; %1</source>
+        <translation>；%1</translation>
+    </message>
+    <message>
+        <source>Verdict: the limit surface is C¹ on every sector up to the creases (for generic data).</source>
+        <translation>结论：极限曲面在每个扇区上直到折痕处都是 C¹ 的（对一般数据）。</translation>
+    </message>
+    <message>
+        <source>Verdict: C¹ is not established on every sector.</source>
+        <translation>结论：并非每个扇区都确立了 C¹。</translation>
+    </message>
+    <message>
+        <source>Reif&apos;s criterion is decided for valences 3 to 64: this vertex is outside them.</source>
+        <translation>Reif 判据仅对价 3 到 64 判定：该顶点不在此范围内。</translation>
+    </message>
+    <message>
+        <source>zero (μ &lt; λ₂²)</source>
+        <translation>为零（μ &lt; λ₂²）</translation>
+    </message>
+    <message>
+        <source>bounded (μ = λ₂²)</source>
+        <translation>有界（μ = λ₂²）</translation>
+    </message>
+    <message>
+        <source>unbounded (μ &gt; λ₂²)</source>
+        <translation>无界（μ &gt; λ₂²）</translation>
     </message>
 </context>
 <context>
@@ -9867,6 +9919,26 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>non-manifold: %1 edges (%2) and %3 vertices (%4), drawn as OpenSubdiv draws them: the edges as infinitely sharp creases, %5</source>
         <translation>非流形：%1 条边（%2）和 %3 个顶点（%4），按 OpenSubdiv 的方式绘制：边作为无限尖锐的折痕，%5</translation>
+    </message>
+    <message>
+        <source>its largest eigenvalues below 1 are not real and positive</source>
+        <translation>其小于 1 的最大特征值不是正实数</translation>
+    </message>
+    <message>
+        <source>%1 is a defective eigenvalue (a Jordan block) among the two largest: Reif&apos;s criterion takes them diagonalizable (not decided)</source>
+        <translation>%1 是两个最大特征值中的亏损特征值（若尔当块）：Reif 判据假定其可对角化（未判定）</translation>
+    </message>
+    <message>
+        <source>lambda2 = lambda3 = %1: the tangent plane is not determined by the two largest</source>
+        <translation>lambda2 = lambda3 = %1：切平面不由两个最大特征值确定</translation>
+    </message>
+    <message>
+        <source>its characteristic map is not regular</source>
+        <translation>其特征映射不正则</translation>
+    </message>
+    <message>
+        <source>its characteristic map is not injective</source>
+        <translation>其特征映射不是单射</translation>
     </message>
 </context>
 <context>

@@ -36,7 +36,8 @@ QJsonObject kindJson(const ExtraordinaryVertex &e, MeshScheme scheme)
     o["boundary"] = e.boundary;
     o["rule"] = QString::fromStdString(e.rule);
     // Smooth inside: the ring of every point within two faces; on the boundary and at sharp
-    // features: the vertex piece's net (its S_0), and the verdicts are not decided there.
+    // features: the vertex piece's net (its S_0), and the verdicts sector by sector ("sectors",
+    // on the canonical star of the neighbourhood, VertexSpectrum.h).
     o["ring"] = QString::fromStdString(e.ring);
     o["ring_size"] = e.ringSize;
     QJsonArray ev;
@@ -50,6 +51,25 @@ QJsonObject kindJson(const ExtraordinaryVertex &e, MeshScheme scheme)
                                          : QJsonValue(QString::fromStdString(e.curvature));
     if (e.smoothInterior() && ringAnalysable(e.valence))
         o["characteristic_map"] = characteristicJson(*sharedVertexSpectrum(scheme, e.valence));
+    if (e.sharp) {
+        QJsonArray sectors;
+        for (const SectorVerdict &v : e.sharp->sectors) {
+            QJsonObject j{{"first_face", v.firstFace},
+                          {"faces", v.faces},
+                          {"lambda1", v.lambda1},
+                          {"lambda2", v.lambda2},
+                          {"mu", v.mu},
+                          {"spectral", v.spectral},
+                          {"regular", v.regular},
+                          {"injective", v.injective},
+                          {"c1", v.decided ? QJsonValue(v.c1()) : QJsonValue(QJsonValue::Null)},
+                          {"curvature", QString::fromStdString(v.curvature)}};
+            if (!v.reason.empty())
+                j["reason"] = QString::fromStdString(v.reason);
+            sectors.append(j);
+        }
+        o["sectors"] = sectors;
+    }
     if (!e.note.empty())
         o["note"] = QString::fromStdString(e.note);
     return o;

@@ -17,8 +17,10 @@
 #include "core/mesh/MeshFiles.h"
 #include "core/mesh/MeshIterate.h"
 #include "core/mesh/MeshPieces.h"
+#include "core/mesh/MeshAnalysis.h"
 #include "core/mesh/MeshRefine.h"
 #include "core/mesh/MeshSheets.h"
+#include "core/mesh/VertexSpectrum.h"
 
 #include <QDir>
 #include <QtTest>
@@ -146,6 +148,8 @@ private slots:
     void semiSharpPiecesHaveAPrelude();
     void valenceTwoLimitIsWhereRefinementGoes();
     void polesOfValence360();
+    void smoothStarThroughTheSectorPathIsTheInteriorAnalysis();
+    void sharpVerticesSectorBySector();
 };
 
 void TestMeshCreases::regressionShapes_data()
@@ -367,6 +371,96 @@ void TestMeshCreases::polesOfValence360()
     const Mat ifs = ifsLimits(sphere, MeshScheme::CatmullClark, 1);
     QVERIFY(directedDistance(ifs, level1.limits, cell, 2) < tol);
     QVERIFY(directedDistance(level1.limits, ifs, cell, 2) < tol);
+}
+
+void TestMeshCreases::smoothStarThroughTheSectorPathIsTheInteriorAnalysis()
+{
+    // The sector-by-sector analysis of a star with nothing sharp is the interior analysis of
+    // VertexSpectrum: one sector, the whole disk, lambda1 = lambda2 = lambda, mu, the
+    // characteristic map's verdicts and the curvature, both schemes, valences 3 to 8.
+    for (MeshScheme scheme : {MeshScheme::CatmullClark, MeshScheme::Loop})
+        for (int n = 3; n <= 8; ++n) {
+            const VertexSpectrum inside = interiorVertexSpectrum(scheme, n);
+            const SharpVertexSpectrum star =
+                sharpVertexSpectrum(scheme, {n, false, std::vector<char>(std::size_t(n), 0), false});
+            QVERIFY(star.rule == VertexRule::Smooth);
+            QCOMPARE(int(star.sectors.size()), 1);
+            const SectorVerdict &v = star.sectors.front();
+            QVERIFY(std::abs(v.lambda1 - inside.subdominant) < 1e-12);
+            QVERIFY(std::abs(v.lambda2 - inside.subdominant) < 1e-12);
+            QVERIFY(std::abs(v.mu - inside.subsubdominant) < 1e-12);
+            QCOMPARE(v.c1(), inside.c1);
+            QVERIFY(star.c1 == inside.c1);
+            QCOMPARE(QString::fromStdString(v.curvature), QString::fromStdString(inside.curvature));
+        }
+}
+
+void TestMeshCreases::sharpVerticesSectorBySector()
+{
+    // The regular crease (a straight crease through a regular vertex) and the regular boundary
+    // vertex: every sector's tangent plane from lambda1 = lambda2 = 1/2 (along and across),
+    // mu = 1/4 = lambda^2, C1 with bounded curvature.
+    const struct {
+        MeshScheme scheme;
+        SharpNeighbourhood star;
+        VertexRule rule;
+        int sectors;
+    } regular[] = {
+        {MeshScheme::CatmullClark, {4, false, {1, 0, 1, 0}, false}, VertexRule::Crease, 2},
+        {MeshScheme::CatmullClark, {3, true, {1, 0, 1}, false}, VertexRule::Crease, 1},
+        {MeshScheme::Loop, {6, false, {1, 0, 0, 1, 0, 0}, false}, VertexRule::Crease, 2},
+        {MeshScheme::Loop, {4, true, {1, 0, 0, 1}, false}, VertexRule::Crease, 1},
+    };
+    for (const auto &c : regular) {
+        const SharpVertexSpectrum s = sharpVertexSpectrum(c.scheme, c.star);
+        QVERIFY(s.rule == c.rule);
+        QCOMPARE(int(s.sectors.size()), c.sectors);
+        for (const SectorVerdict &v : s.sectors) {
+            QVERIFY2(std::abs(v.lambda1 - 0.5) < 1e-12 && std::abs(v.lambda2 - 0.5) < 1e-12,
+                     qPrintable(QString("%1 %2").arg(v.lambda1).arg(v.lambda2)));
+            QVERIFY2(std::abs(v.mu - 0.25) < 1e-12, qPrintable(QString::number(v.mu)));
+            QVERIFY2(v.c1(), v.reason.c_str());
+            QCOMPARE(QString::fromStdString(v.curvature), QString("bounded"));
+        }
+        QVERIFY(s.c1.value_or(false));
+    }
+    // The same sectors on real meshes: every sector's lambda1 and lambda2 are eigenvalues of
+    // the vertex piece's own matrix (two constructions of the local matrix: the canonical star
+    // and the mesh's piece), at OpenSubdiv's regression shapes with creases, darts, corners and
+    // boundaries, both schemes.
+    int checked = 0;
+    for (const char *name : {"catmark_cube_corner4.obj", "catmark_cubes_infsharp.obj",
+                             "catmark_inf_crease0.obj", "catmark_inf_crease1.obj",
+                             "catmark_dart_edgeonly.obj", "catmark_hole_test3.obj",
+                             "loop_cubes_infsharp.obj", "loop_icos_infsharp.obj"}) {
+        const Mesh mesh = readMesh(
+            (sourceDir() + "/tests/core/data/opensubdiv/" + name).toStdString());
+        const MeshScheme scheme = QByteArray(name).startsWith("loop_") ? MeshScheme::Loop
+                                                                      : MeshScheme::CatmullClark;
+        const MeshPieces pieces = buildMeshPieces(mesh, scheme);
+        for (const ExtraordinaryVertex &e : extraordinaryVertices(pieces, mesh.vertices)) {
+            if (!e.sharp)
+                continue;
+            QCOMPARE(QString::fromStdString(toString(e.sharp->rule)),
+                     QString::fromStdString(e.rule));
+            for (const SectorVerdict &v : e.sharp->sectors)
+                for (double lambda : {v.lambda1, v.lambda2}) {
+                    double nearest = INFINITY;
+                    for (const Complex &z : e.eigenvalues())
+                        nearest = std::min(nearest, std::abs(z - lambda));
+                    QVERIFY2(nearest < 1e-7, qPrintable(QString("%1: vertex %2 (%3, valence %4): "
+                                                                "lambda %5 is no eigenvalue of "
+                                                                "its piece")
+                                                            .arg(name)
+                                                            .arg(e.vertex)
+                                                            .arg(e.rule.c_str())
+                                                            .arg(e.valence)
+                                                            .arg(lambda)));
+                    ++checked;
+                }
+        }
+    }
+    QVERIFY2(checked >= 20, qPrintable(QString::number(checked)));
 }
 
 AWB_TEST_MAIN(TestMeshCreases)

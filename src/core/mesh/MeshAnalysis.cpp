@@ -191,6 +191,19 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
                     e.subsubdominant = std::abs(values[k]);
                     break;
                 }
+            // Reif's criterion sector by sector, on the canonical star of this neighbourhood.
+            const MeshPieceType &type = pieces.types[std::size_t(settled)];
+            SharpNeighbourhood star;
+            star.valence = type.valence;
+            star.boundary = type.boundary;
+            for (float sharpness : type.ringSharpness)
+                star.sharpEdges.push_back(crease::isInfinite(sharpness) ? 1 : 0);
+            star.sharpVertex = crease::isInfinite(type.vertexSharpness);
+            if (ringAnalysable(star.valence) && int(star.sharpEdges.size()) == star.valence) {
+                e.sharp = sharedSharpVertexSpectrum(pieces.scheme, star);
+                e.c1 = e.sharp->c1;
+                e.curvature = e.sharp->curvature;
+            }
         }
         (e.vertex >= 0 ? vertices : faces).push_back(std::move(e));
     }

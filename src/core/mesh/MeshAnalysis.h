@@ -5,6 +5,7 @@
 // the vertex piece's net, MeshPieces.h).
 
 #include "core/mesh/MeshPieces.h"
+#include "core/mesh/VertexSpectrum.h"
 
 #include <complex>
 #include <memory>
@@ -45,9 +46,12 @@ struct ExtraordinaryVertex {
     double subdominant = 0.0;          // lambda
     double subsubdominant = 0.0;       // mu: the largest modulus below lambda
     // Smooth inside: Reif's criterion (spectral and characteristic map) and mu against
-    // lambda^2. On the boundary and at sharp features: not decided (nullopt, "").
+    // lambda^2. On the boundary and at sharp features: the same sector by sector, on the
+    // canonical star of the vertex's neighbourhood (`sharp`, VertexSpectrum.h); not decided
+    // (nullopt, "") above valence 64.
     std::optional<bool> c1;
     std::string curvature;
+    std::shared_ptr<const SharpVertexSpectrum> sharp;  // on the boundary, at sharp features
     RowVec limit;   // 1 x 3
     RowVec normal;  // 1 x 3, unit (zero when the tangents are parallel)
     // Why the ring was not analysed (an interior valence of 2, or above 64), or "".

@@ -320,6 +320,8 @@ public:
             type.valence = t.valence(seed.id);
             type.boundary = t.onBoundary(seed.id);
             type.rule = t.rule(seed.id);
+            type.ringSharpness = t.ringSharpness(seed.id);
+            type.vertexSharpness = t.vertexSharpness(seed.id);
         } else {
             for (int c = 0; c < w.coreCount; ++c)
                 type.boundary = type.boundary || t.onBoundary(w.order[std::size_t(c)]);

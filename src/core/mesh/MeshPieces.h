@@ -68,6 +68,10 @@ struct MeshPieceType {
     int valence = 0;
     bool boundary = false;
     VertexRule rule = VertexRule::Smooth;  // vertex pieces: the vertex's rule at this level
+    // Vertex pieces: the sharpness of its edges in the order of its ring (MeshTopology::Ring;
+    // boundary edges infinite) and its own, at this level.
+    std::vector<float> ringSharpness;
+    float vertexSharpness = 0.0f;
     // The piece's output vertices: for a face, its corners; for a vertex piece, every corner of
     // its faces (v first). `corners` holds their places in the net, `limits` (corners x net)
     // their limit stencils.

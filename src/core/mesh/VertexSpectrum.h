@@ -14,6 +14,7 @@
 
 #include <complex>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -85,5 +86,56 @@ std::shared_ptr<const VertexSpectrum> sharedVertexSpectrum(MeshScheme scheme, in
 
 // The valence explorer's table (issue 31): the spectra of n = from ... to.
 std::vector<VertexSpectrum> valenceSpectra(MeshScheme scheme, int from, int to);
+
+// ---- On the boundary and at sharp features (issue 44) -----------------------------------------
+
+// A vertex on the boundary or with infinitely sharp features, as a canonical star: its valence
+// (edges), whether its fan is open (a boundary vertex: edges 0 and valence - 1 are the
+// boundary), which of its edges are infinitely sharp in ring order (boundary edges included),
+// and whether the vertex itself is (a corner tag). The creases go on straight through the star.
+struct SharpNeighbourhood {
+    int valence = 0;
+    bool boundary = false;
+    std::vector<char> sharpEdges;
+    bool sharpVertex = false;
+    auto operator<=>(const SharpNeighbourhood &) const = default;
+};
+
+// Reif's criterion sector by sector (Zorin 2000; Biermann, Levin and Zorin 2000): a sector is a
+// run of faces between two sharp edges, or the whole disk around an interior vertex with fewer
+// than two. Its eigenvalues are those of S whose eigenvectors do not vanish on it: the limit
+// there is C1 for generic data (up to the creases, which are the sector's boundary) when the
+// two largest below 1 are real and positive, lambda1 >= lambda2 > |lambda3|, and the
+// characteristic map of their eigenvectors is regular and injective on the sector (a wedge:
+// its boundary's image a simple curve). Curvature: mu against lambda2^2, as inside.
+struct SectorVerdict {
+    int firstFace = 0;  // in ring order
+    int faces = 0;
+    double lambda1 = 0.0, lambda2 = 0.0, mu = 0.0;
+    bool spectral = false, regular = false, injective = false;
+    // False where lambda1 = lambda2 has a Jordan block (the criterion does not apply).
+    bool decided = true;
+    bool c1() const { return decided && spectral && regular && injective; }
+    std::string reason;     // why not C1, or ""
+    std::string curvature;  // "zero", "bounded", "unbounded"
+    CharacteristicMap map;  // when spectral
+};
+
+struct SharpVertexSpectrum {
+    MeshScheme scheme = MeshScheme::CatmullClark;
+    SharpNeighbourhood neighbourhood;
+    VertexRule rule = VertexRule::Smooth;
+    Mat S;                             // the ring's, as VertexSpectrum's
+    std::vector<Complex> eigenvalues;  // by modulus, largest first
+    std::vector<SectorVerdict> sectors;
+    std::optional<bool> c1;            // every sector; nothing when one is not decided
+    std::string curvature;             // the worst sector's
+};
+
+// InputError for a valence outside 3 to 64 or a sharpEdges of another length.
+SharpVertexSpectrum sharpVertexSpectrum(MeshScheme scheme, const SharpNeighbourhood &star);
+// Computed once per (scheme, neighbourhood) in the process and shared (thread-safe).
+std::shared_ptr<const SharpVertexSpectrum> sharedSharpVertexSpectrum(
+    MeshScheme scheme, const SharpNeighbourhood &star);
 
 } // namespace awb

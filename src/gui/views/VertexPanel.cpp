@@ -193,11 +193,36 @@ QString VertexPanel::verdictHtml(const ExtraordinaryVertex &e, MeshScheme scheme
                             number(closedFormSubdominant(scheme, e.valence)));
     }
     html += QStringLiteral("<p>%1</p>").arg(numbers);
-    if (!e.smoothInterior() || !interior) {
+    if (e.sharp) {
+        // Sector by sector, on the canonical star of this neighbourhood (VertexSpectrum.h).
         html += QStringLiteral("<p>%1</p>").arg(
-            tr("Reif's criterion is decided here for smooth interior vertices only: a "
-               "boundary vertex or a sharp feature follows the crease rules, whose analysis "
-               "needs the half-ring's own characteristic map."));
+            tr("Reif's criterion sector by sector (Zorin 2000): each run of faces between sharp "
+               "edges, with the eigenvalues whose eigenvectors do not vanish on it, on the "
+               "canonical star of this neighbourhood:"));
+        html += QStringLiteral("<ul>");
+        for (const SectorVerdict &v : e.sharp->sectors) {
+            const QString faces = v.faces == 1
+                                      ? tr("face %1").arg(v.firstFace)
+                                      : tr("faces %1–%2").arg(v.firstFace).arg(v.firstFace + v.faces - 1);
+            QString line = tr("%1: λ₁ = %2, λ₂ = %3, μ = %4")
+                               .arg(faces, number(v.lambda1), number(v.lambda2), number(v.mu));
+            const QString curvature = v.curvature == "zero"      ? tr("zero (μ < λ₂²)")
+                                      : v.curvature == "bounded" ? tr("bounded (μ = λ₂²)")
+                                                                 : tr("unbounded (μ > λ₂²)");
+            line += v.c1()       ? tr("; C¹, curvature %1").arg(curvature)
+                    : v.decided ? tr("; not C¹: %1").arg(QString::fromStdString(v.reason))
+                                : tr("; %1").arg(QString::fromStdString(v.reason));
+            html += QStringLiteral("<li>%1 %2</li>").arg(mark(v.c1()), line.toHtmlEscaped());
+        }
+        html += QStringLiteral("</ul><p><b>%1</b></p>")
+                    .arg(e.sharp->c1.value_or(false)
+                             ? tr("Verdict: the limit surface is C¹ on every sector up to the "
+                                  "creases (for generic data).")
+                             : tr("Verdict: C¹ is not established on every sector."));
+    } else if (!e.smoothInterior() || !interior) {
+        html += QStringLiteral("<p>%1</p>").arg(
+            tr("Reif's criterion is decided for valences 3 to 64: this vertex is outside "
+               "them."));
     } else {
         const VertexSpectrum &s = *interior;
         const CharacteristicMap &c = s.characteristic;
@@ -276,8 +301,15 @@ void VertexPanel::setVertex(const ExtraordinaryVertex &vertex, MeshScheme scheme
 {
     m_has = true;
     m_text->setHtml(verdictHtml(vertex, scheme, interior, where));
+    const SectorVerdict *sector = nullptr;  // the first sector whose map is drawn, a failed one first
+    if (vertex.sharp)
+        for (const SectorVerdict &v : vertex.sharp->sectors)
+            if (v.spectral && (!sector || (sector->c1() && !v.c1())))
+                sector = &v;
     if (interior && interior->spectralC1)
         m_map->setMap(interior->characteristic, vertex.valence);
+    else if (sector)
+        m_map->setMap(sector->map, vertex.valence);
     else
         m_map->setMap({}, 0);
     m_plot->setEnabled(true);
