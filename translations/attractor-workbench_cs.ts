@@ -4638,6 +4638,26 @@ Ne ji importuje tak, jak je.</translation>
         <source>The mesh is %1.</source>
         <translation>Síť je %1.</translation>
     </message>
+    <message>
+        <source>Face %1: a hole (Item &gt; Toggle Hole fills it)</source>
+        <translation>Stěna %1: díra (Položka &gt; Přepnout díru ji vyplní)</translation>
+    </message>
+    <message>
+        <source>Face %1 (Item &gt; Toggle Hole makes it a hole)</source>
+        <translation>Stěna %1 (Položka &gt; Přepnout díru z ní udělá díru)</translation>
+    </message>
+    <message>
+        <source>Toggle &amp;Hole</source>
+        <translation>Přepnout &amp;díru</translation>
+    </message>
+    <message>
+        <source>Make the mesh face clicked in the 3D view a hole, or fill it</source>
+        <translation>Udělá ze stěny sítě kliknuté ve 3D pohledu díru, nebo ji vyplní</translation>
+    </message>
+    <message>
+        <source>Click inside a face of the control mesh in the 3D view first</source>
+        <translation>Nejprve klikněte dovnitř stěny řídicí sítě ve 3D pohledu</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -6584,6 +6604,10 @@ Ne ji importuje tak, jak je.</translation>
     <message>
         <source>Catmull–Clark&apos;s edge points next to triangles: as for any face, or OpenSubdiv&apos;s smoother weights</source>
         <translation>Hranové body schématu Catmull–Clark vedle trojúhelníků: stejně jako u kterékoli jiné stěny, nebo s hladšími vahami z OpenSubdiv</translation>
+    </message>
+    <message>
+        <source>face %1: the mesh has %2 faces (0 to %3)</source>
+        <translation>stěna %1: síť má %2 stěn (0 až %3)</translation>
     </message>
 </context>
 <context>
@@ -9965,6 +9989,18 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     <message>
         <source>its characteristic map is not injective</source>
         <translation>jeho charakteristické zobrazení není prosté</translation>
+    </message>
+    <message>
+        <source>%1: %2 crease tags name an edge tagged before (the first: %3 %4): each edge keeps its last sharpness, as OpenSubdiv applies them</source>
+        <translation>%1: %2 značek ostré hrany jmenuje hranu označenou již dříve (první: %3 %4): každá hrana si ponechá poslední ostrost, jak je OpenSubdiv aplikuje</translation>
+    </message>
+    <message>
+        <source>%1: %2 corner tags name a vertex tagged before (the first: %3): each vertex keeps its last sharpness, as OpenSubdiv applies them</source>
+        <translation>%1: %2 značek rohu jmenuje vrchol označený již dříve (první: %3): každý vrchol si ponechá poslední ostrost, jak je OpenSubdiv aplikuje</translation>
+    </message>
+    <message>
+        <source>%1: %2 hole tags name a face made a hole before</source>
+        <translation>%1: %2 značek díry jmenuje stěnu, která již díra je</translation>
     </message>
 </context>
 <context>

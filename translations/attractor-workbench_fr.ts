@@ -4632,6 +4632,26 @@ Non l’importe tel quel.</translation>
         <source>The mesh is %1.</source>
         <translation>Le maillage est %1.</translation>
     </message>
+    <message>
+        <source>Face %1: a hole (Item &gt; Toggle Hole fills it)</source>
+        <translation>Face %1 : un trou (Élément &gt; Basculer le trou le remplit)</translation>
+    </message>
+    <message>
+        <source>Face %1 (Item &gt; Toggle Hole makes it a hole)</source>
+        <translation>Face %1 (Élément &gt; Basculer le trou en fait un trou)</translation>
+    </message>
+    <message>
+        <source>Toggle &amp;Hole</source>
+        <translation>Basculer le &amp;trou</translation>
+    </message>
+    <message>
+        <source>Make the mesh face clicked in the 3D view a hole, or fill it</source>
+        <translation>Fait de la face du maillage cliquée dans la vue 3D un trou, ou la remplit</translation>
+    </message>
+    <message>
+        <source>Click inside a face of the control mesh in the 3D view first</source>
+        <translation>Cliquez d’abord à l’intérieur d’une face du maillage de contrôle dans la vue 3D</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -6573,6 +6593,10 @@ Non l’importe tel quel.</translation>
     <message>
         <source>Catmull–Clark&apos;s edge points next to triangles: as for any face, or OpenSubdiv&apos;s smoother weights</source>
         <translation>Points d’arête de Catmull–Clark voisins de triangles : comme pour toute autre face, ou avec les poids plus lisses d’OpenSubdiv</translation>
+    </message>
+    <message>
+        <source>face %1: the mesh has %2 faces (0 to %3)</source>
+        <translation>face %1 : le maillage a %2 faces (0 à %3)</translation>
     </message>
 </context>
 <context>
@@ -9952,6 +9976,18 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     <message>
         <source>its characteristic map is not injective</source>
         <translation>son application caractéristique n’est pas injective</translation>
+    </message>
+    <message>
+        <source>%1: %2 crease tags name an edge tagged before (the first: %3 %4): each edge keeps its last sharpness, as OpenSubdiv applies them</source>
+        <translation>%1 : %2 étiquettes de pli nomment une arête déjà étiquetée (la première : %3 %4) : chaque arête garde sa dernière netteté, comme OpenSubdiv les applique</translation>
+    </message>
+    <message>
+        <source>%1: %2 corner tags name a vertex tagged before (the first: %3): each vertex keeps its last sharpness, as OpenSubdiv applies them</source>
+        <translation>%1 : %2 étiquettes de coin nomment un sommet déjà étiqueté (le premier : %3) : chaque sommet garde sa dernière netteté, comme OpenSubdiv les applique</translation>
+    </message>
+    <message>
+        <source>%1: %2 hole tags name a face made a hole before</source>
+        <translation>%1 : %2 étiquettes de trou nomment une face déjà trouée</translation>
     </message>
 </context>
 <context>

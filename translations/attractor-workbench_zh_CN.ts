@@ -4626,6 +4626,26 @@ No imports it as it is.</source>
         <source>The mesh is %1.</source>
         <translation>该网格为%1。</translation>
     </message>
+    <message>
+        <source>Face %1: a hole (Item &gt; Toggle Hole fills it)</source>
+        <translation>面 %1：孔（对象 &gt; 切换孔 会将其填上）</translation>
+    </message>
+    <message>
+        <source>Face %1 (Item &gt; Toggle Hole makes it a hole)</source>
+        <translation>面 %1（对象 &gt; 切换孔 会将其设为孔）</translation>
+    </message>
+    <message>
+        <source>Toggle &amp;Hole</source>
+        <translation>切换孔(&amp;H)</translation>
+    </message>
+    <message>
+        <source>Make the mesh face clicked in the 3D view a hole, or fill it</source>
+        <translation>将在三维视图中点击的网格面设为孔，或将其填上</translation>
+    </message>
+    <message>
+        <source>Click inside a face of the control mesh in the 3D view first</source>
+        <translation>请先在三维视图中点击控制网格的一个面内部</translation>
+    </message>
 </context>
 <context>
     <name>awb::MatrixHeatMap</name>
@@ -6562,6 +6582,10 @@ No imports it as it is.</source>
     <message>
         <source>Catmull–Clark&apos;s edge points next to triangles: as for any face, or OpenSubdiv&apos;s smoother weights</source>
         <translation>Catmull–Clark 中与三角形相邻的边点：与其他任何面相同，或采用 OpenSubdiv 更平滑的权重</translation>
+    </message>
+    <message>
+        <source>face %1: the mesh has %2 faces (0 to %3)</source>
+        <translation>面 %1：网格有 %2 个面（0 到 %3）</translation>
     </message>
 </context>
 <context>
@@ -9939,6 +9963,18 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>its characteristic map is not injective</source>
         <translation>其特征映射不是单射</translation>
+    </message>
+    <message>
+        <source>%1: %2 crease tags name an edge tagged before (the first: %3 %4): each edge keeps its last sharpness, as OpenSubdiv applies them</source>
+        <translation>%1：%2 个折痕标签指向之前已标记的边（第一个：%3 %4）：每条边保留最后的锐度，与 OpenSubdiv 的应用方式相同</translation>
+    </message>
+    <message>
+        <source>%1: %2 corner tags name a vertex tagged before (the first: %3): each vertex keeps its last sharpness, as OpenSubdiv applies them</source>
+        <translation>%1：%2 个角点标签指向之前已标记的顶点（第一个：%3）：每个顶点保留最后的锐度，与 OpenSubdiv 的应用方式相同</translation>
+    </message>
+    <message>
+        <source>%1: %2 hole tags name a face made a hole before</source>
+        <translation>%1：%2 个孔标签指向之前已设为孔的面</translation>
     </message>
 </context>
 <context>

@@ -186,6 +186,30 @@ float SubdivisionMeshItem::edgeSharpness(int a, int b) const
     return kSharpnessSmooth;
 }
 
+bool SubdivisionMeshItem::setHole(int face, bool hole, QString *error)
+{
+    if (face < 0 || face >= int(m_inputs.faces.size())) {
+        if (error)
+            *error = tr("face %1: the mesh has %2 faces (0 to %3)")
+                         .arg(face)
+                         .arg(m_inputs.faces.size())
+                         .arg(int(m_inputs.faces.size()) - 1);
+        return false;
+    }
+    MeshInputs next = m_inputs;
+    auto &holes = next.tags.holes;
+    holes.erase(std::remove(holes.begin(), holes.end(), face), holes.end());
+    if (hole)
+        holes.push_back(face);
+    return next == m_inputs || setInputs(next, error);
+}
+
+bool SubdivisionMeshItem::isHole(int face) const
+{
+    const auto &holes = m_inputs.tags.holes;
+    return std::find(holes.begin(), holes.end(), face) != holes.end();
+}
+
 float SubdivisionMeshItem::vertexSharpness(int v) const
 {
     for (const SharpVertex &c : m_inputs.tags.vertices)

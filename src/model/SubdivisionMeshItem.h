@@ -66,6 +66,10 @@ public:
     bool setVertexSharpness(int v, float sharpness, QString *error = nullptr);
     float edgeSharpness(int a, int b) const;
     float vertexSharpness(int v) const;
+    // Face f made a hole (refined with the others, drawn as nothing: OpenSubdiv's hole tag) or
+    // filled again: one undo step, refused when f is not a face.
+    bool setHole(int face, bool hole, QString *error = nullptr);
+    bool isHole(int face) const;
 
     // The pieces of the mesh's IFS: they depend on the faces and the scheme only, so moving a
     // vertex keeps them. Null when the mesh is refused (derivedError() says why).

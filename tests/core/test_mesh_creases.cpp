@@ -150,6 +150,7 @@ private slots:
     void polesOfValence360();
     void smoothStarThroughTheSectorPathIsTheInteriorAnalysis();
     void sharpVerticesSectorBySector();
+    void repeatedTagsKeepTheLastAsOpenSubdiv();
 };
 
 void TestMeshCreases::regressionShapes_data()
@@ -174,6 +175,7 @@ void TestMeshCreases::regressionShapes()
     // data's options).
     for (const std::string &note : notes)
         QVERIFY2(note.find("vertexedit") != std::string::npos
+                     || note.find("name an edge tagged before") != std::string::npos
                      || note.find("edgeedit") != std::string::npos
                      || note.find("facevarying") != std::string::npos,
                  note.c_str());
@@ -461,6 +463,38 @@ void TestMeshCreases::sharpVerticesSectorBySector()
         }
     }
     QVERIFY2(checked >= 20, qPrintable(QString::number(checked)));
+}
+
+void TestMeshCreases::repeatedTagsKeepTheLastAsOpenSubdiv()
+{
+    // OpenSubdiv's own catmark_inf_crease0 tags edge (11, 16) twice; its factory assigns the
+    // sharpness in order, so the last wins. Merged at reading, and said.
+    MeshTags tags;
+    tags.edges = {{0, 1, 2.0f}, {2, 3, 1.0f}, {1, 0, 5.0f}, {3, 2, 0.5f}};
+    tags.vertices = {{4, 1.0f}, {4, 3.0f}};
+    tags.holes = {7, 7, 8};
+    const RepeatedTags r = mergeRepeatedTags(tags);
+    QCOMPARE(r.edges, 2);
+    QCOMPARE(r.vertices, 1);
+    QCOMPARE(r.holes, 1);
+    QVERIFY((r.firstEdge == SharpEdge{1, 0, 5.0f}));
+    QVERIFY((tags.edges == std::vector<SharpEdge>{{0, 1, 5.0f}, {2, 3, 0.5f}}));
+    QVERIFY((tags.vertices == std::vector<SharpVertex>{{4, 3.0f}}));
+    QVERIFY((tags.holes == std::vector<int>{7, 8}));
+    std::vector<std::string> notes;
+    const Mesh mesh = readMesh(
+        (sourceDir() + "/tests/core/data/opensubdiv/catmark_inf_crease0.obj").toStdString(),
+        &notes);
+    bool said = false;
+    for (const std::string &n : notes)
+        said = said
+               || n.find("1 crease tags name an edge tagged before (the first: 11 16)")
+                      != std::string::npos;
+    QVERIFY(said);
+    for (std::size_t i = 0; i < mesh.tags.edges.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            QVERIFY(std::minmax(mesh.tags.edges[i].a, mesh.tags.edges[i].b)
+                    != std::minmax(mesh.tags.edges[j].a, mesh.tags.edges[j].b));
 }
 
 AWB_TEST_MAIN(TestMeshCreases)

@@ -6,6 +6,7 @@
 #include "core/mesh/MeshAnalysis.h"
 #include "core/mesh/MeshExamples.h"
 #include "core/mesh/MeshFiles.h"
+#include "core/mesh/MeshPieces.h"
 #include "core/mesh/VertexSpectrum.h"
 #include "gui/app/ItemController.h"
 #include "gui/views/AnalysisCharts.h"
@@ -51,6 +52,7 @@ private slots:
     void extraordinaryVertexInTheWindow();
     void exportMeshWritesTheLimitMesh();
     void creaseAnEdgeByClickingIt();
+    void aClickedFaceBecomesAHole();
 
 private:
     QString write(const QString &name, const QByteArray &text)
@@ -469,6 +471,64 @@ void TestMeshWindow::creaseAnEdgeByClickingIt()
     QCOMPARE(item->vertexSharpness(a), 2.0f);
     QVERIFY(!w.setSelectedVertexSharpness(-1, &error));
     QVERIFY2(error.contains("0 or more"), qPrintable(error));
+}
+
+void TestMeshWindow::aClickedFaceBecomesAHole()
+{
+    // Issue 44: a click inside a face of the control mesh (away from its edges and points)
+    // selects the front face there; Item > Toggle Hole (its function here) makes it a hole in
+    // one undo step, and fills it again; the hole leaves the surface (fewer pieces drawn).
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.filePath("recovery"));
+    w.resize(1200, 800);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    std::ostringstream obj;
+    writeObj(obj, cubeMesh(), "a cube");
+    QString error;
+    QVERIFY2(w.importMesh(write("cube.obj", QByteArray::fromStdString(obj.str())),
+                          MeshScheme::CatmullClark, &error),
+             qPrintable(error));
+    auto *item = qobject_cast<SubdivisionMeshItem *>(w.project()->findItem("cube"));
+    QVERIFY(item);
+    w.setCurrentItem(item);
+    SurfaceView *view = w.surfaceView();
+    QTRY_VERIFY_WITH_TIMEOUT(view->isVisible() && !view->isRendering() && view->mesh().size() > 0,
+                             awb::test::ms(30000));
+    QVERIFY(!w.toggleSelectedHole(&error));
+    QVERIFY2(error.contains("Click inside a face"), qPrintable(error));
+    // The centre on screen of each face in turn: the first click that selects that very face
+    // (a face seen from the front).
+    QSignalSpy clicked(view, &SurfaceView::netFaceClicked);
+    int face = -1;
+    for (int f = 0; f < int(item->inputs().faces.size()) && face < 0; ++f) {
+        QPointF centre;
+        for (int v : item->inputs().faces[std::size_t(f)])
+            centre += view->controlPointScreen(v) / double(item->inputs().faces[std::size_t(f)].size());
+        QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, centre.toPoint());
+        if (view->selectedNetFace() == f)
+            face = f;
+    }
+    QVERIFY(face >= 0);
+    QVERIFY(clicked.count() >= 1);
+    QCOMPARE(clicked.last().at(0).toInt(), face);
+    const int steps = w.project()->undoStack()->count();
+    const auto points = [&] {
+        const auto d = item->derivedIfs();
+        return d ? d->pointCount(item->coreStartSet(*d), 3) : 0.0;
+    };
+    const double before = points();
+    QVERIFY2(w.toggleSelectedHole(&error), qPrintable(error));
+    QCOMPARE(w.project()->undoStack()->count(), steps + 1);
+    QVERIFY(item->isHole(face));
+    QCOMPARE(item->inputs().tags.holes, std::vector<int>{face});
+    QVERIFY2(points() < before, qPrintable(QString("%1 of %2").arg(points()).arg(before)));
+    QVERIFY(w.toggleSelectedHole(&error));
+    QVERIFY(!item->isHole(face));
+    w.project()->undoStack()->undo();
+    QVERIFY(item->isHole(face));
+    QVERIFY(!item->setHole(99, true, &error));
+    QVERIFY2(error.contains("face 99: the mesh has 6 faces"), qPrintable(error));
 }
 
 AWB_TEST_MAIN(TestMeshWindow)

@@ -351,6 +351,24 @@ Mesh readObj(std::string_view text, const std::string &name, std::vector<std::st
         xyz.data(), Eigen::Index(vertexCount), 3);
     applyTags(applied, mesh, name);
     noteTags(tags, name, notes);
+    // A feature tagged twice is one feature, its last sharpness OpenSubdiv's: merged, said.
+    const RepeatedTags repeated = mergeRepeatedTags(mesh.tags);
+    if (notes && repeated.edges > 0)
+        notes->push_back(formatMessage(
+            coreTranslate("awb::mesh", "%1: %2 crease tags name an edge tagged before (the "
+                                       "first: %3 %4): each edge keeps its last sharpness, as "
+                                       "OpenSubdiv applies them"),
+            name, repeated.edges, repeated.firstEdge.a, repeated.firstEdge.b));
+    if (notes && repeated.vertices > 0)
+        notes->push_back(formatMessage(
+            coreTranslate("awb::mesh", "%1: %2 corner tags name a vertex tagged before (the "
+                                       "first: %3): each vertex keeps its last sharpness, as "
+                                       "OpenSubdiv applies them"),
+            name, repeated.vertices, repeated.firstVertex));
+    if (notes && repeated.holes > 0)
+        notes->push_back(formatMessage(
+            coreTranslate("awb::mesh", "%1: %2 hole tags name a face made a hole before"), name,
+            repeated.holes));
     return mesh;
 }
 

@@ -194,17 +194,17 @@ std::optional<ManifoldSheets> manifoldSheets(const Mesh &mesh)
         return std::make_pair(lo, hi);
     };
     // The user's edge sharpness by vertex pair (the larger of repeated tags).
+    // The user's sharpness of an edge: its last tag's, as OpenSubdiv assigns them in order.
+    const auto byKey = [](const auto &x, const auto &y) { return x.first < y.first; };
     std::vector<std::pair<std::uint64_t, float>> userEdges;
     for (const SharpEdge &tag : mesh.tags.edges)
         userEdges.push_back({edgeKey(tag.a, tag.b), tag.sharpness});
-    std::sort(userEdges.begin(), userEdges.end());
+    std::stable_sort(userEdges.begin(), userEdges.end(), byKey);
     const auto userSharpness = [&](int a, int b) {
-        const auto it = std::lower_bound(userEdges.begin(), userEdges.end(),
-                                         std::pair<std::uint64_t, float>{edgeKey(a, b), -1e30f});
-        float s = kSharpnessSmooth;
-        for (auto i = it; i != userEdges.end() && i->first == edgeKey(a, b); ++i)
-            s = std::max(s, i->second);
-        return s;
+        auto it = std::upper_bound(userEdges.begin(), userEdges.end(),
+                                   std::pair<std::uint64_t, float>{edgeKey(a, b), 0.0f}, byKey);
+        return it != userEdges.begin() && (it - 1)->first == edgeKey(a, b) ? (it - 1)->second
+                                                                            : kSharpnessSmooth;
     };
     // Every sheet edge of an input edge with its sharpness: infinite on a non-manifold edge.
     std::vector<std::pair<std::uint64_t, float>> sheetEdges;
@@ -229,10 +229,10 @@ std::optional<ManifoldSheets> manifoldSheets(const Mesh &mesh)
             sheetEdges.push_back({edgeKey(vertexOf[std::size_t(e)],
                                           vertexOf[std::size_t(h.next(e))]),
                                   kSharpnessInfinite});
-    std::sort(sheetEdges.begin(), sheetEdges.end());
+    std::stable_sort(sheetEdges.begin(), sheetEdges.end(), byKey);
     for (std::size_t i = 0; i < sheetEdges.size(); ++i) {
         if (i + 1 < sheetEdges.size() && sheetEdges[i + 1].first == sheetEdges[i].first)
-            continue;  // the last of a pair is the largest
+            continue;  // the last assigned wins (a non-manifold edge's infinity comes last)
         const std::uint64_t key = sheetEdges[i].first;
         out.mesh.tags.edges.push_back({int(key >> 32), int(key & 0xffffffffu),
                                        sheetEdges[i].second});
@@ -243,9 +243,8 @@ std::optional<ManifoldSheets> manifoldSheets(const Mesh &mesh)
     for (const SharpVertex &tag : mesh.tags.vertices) {
         if (!(tag.sharpness >= 0.0f))  // checkMesh names it
             out.mesh.tags.vertices.push_back(tag);
-        else
-            vertexSharpness[std::size_t(tag.vertex)] =
-                std::max(vertexSharpness[std::size_t(tag.vertex)], tag.sharpness);
+        else  // the last tag of a vertex wins, as in OpenSubdiv
+            vertexSharpness[std::size_t(tag.vertex)] = tag.sharpness;
     }
     for (const auto &[key, e] : byEdge)
         if (nonManifold[std::size_t(e)]

@@ -1,6 +1,56 @@
 #include "core/mesh/MeshTags.h"
 
+#include <algorithm>
+#include <map>
+#include <set>
+
 namespace awb {
+
+RepeatedTags mergeRepeatedTags(MeshTags &tags)
+{
+    RepeatedTags out;
+    {
+        std::map<std::pair<int, int>, std::size_t> at;  // edge -> its place in `kept`
+        std::vector<SharpEdge> kept;
+        for (const SharpEdge &e : tags.edges) {
+            const auto key = std::minmax(e.a, e.b);
+            const auto [it, added] = at.try_emplace({key.first, key.second}, kept.size());
+            if (added) {
+                kept.push_back(e);
+                continue;
+            }
+            if (out.edges++ == 0)
+                out.firstEdge = e;
+            kept[it->second].sharpness = e.sharpness;
+        }
+        tags.edges = std::move(kept);
+    }
+    {
+        std::map<int, std::size_t> at;
+        std::vector<SharpVertex> kept;
+        for (const SharpVertex &v : tags.vertices) {
+            const auto [it, added] = at.try_emplace(v.vertex, kept.size());
+            if (added) {
+                kept.push_back(v);
+                continue;
+            }
+            if (out.vertices++ == 0)
+                out.firstVertex = v.vertex;
+            kept[it->second].sharpness = v.sharpness;
+        }
+        tags.vertices = std::move(kept);
+    }
+    std::set<int> seen;
+    std::vector<int> holes;
+    for (int f : tags.holes) {
+        if (seen.insert(f).second)
+            holes.push_back(f);
+        else
+            ++out.holes;
+    }
+    tags.holes = std::move(holes);
+    return out;
+}
 
 std::string toString(BoundaryInterpolation value)
 {

@@ -60,6 +60,17 @@ struct MeshTags {
     bool operator==(const MeshTags &) const = default;
 };
 
+// Tags that name an edge, a vertex or a hole already named, merged as OpenSubdiv applies them
+// (in order: the last sharpness wins; a hole twice is one hole), each kept at its first place.
+// Returns what was merged: counts, and the first repeated edge and vertex.
+struct RepeatedTags {
+    int edges = 0, vertices = 0, holes = 0;
+    SharpEdge firstEdge;
+    int firstVertex = -1;
+    int count() const { return edges + vertices + holes; }
+};
+RepeatedTags mergeRepeatedTags(MeshTags &tags);
+
 // "none", "edge-only", "edge-and-corner"; "uniform", "chaikin"; "catmark", "smooth".
 std::string toString(BoundaryInterpolation value);
 std::string toString(CreaseMethod value);

@@ -427,6 +427,7 @@ void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
     const Mat P = toMatrix(item->controlPoints(0), 3);
     std::vector<std::vector<int>> faces;
     std::vector<SharpEdge> sharp;
+    std::vector<int> holes;
     Mat mesh;
     std::vector<std::vector<int>> meshFaces;
     OwnIteration own;
@@ -435,6 +436,7 @@ void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
         // recomputed on every edit).
         faces = meshItem->inputs().faces;
         sharp = meshItem->inputs().tags.edges;
+        holes = meshItem->inputs().tags.holes;
         showMeshMarkers(meshItem);
         own.iterate = d.iterate;
         own.pointCount = d.pointCount;
@@ -455,7 +457,7 @@ void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
     }
     if (!qobject_cast<const SubdivisionMeshItem *>(item))
         m_surface->setMarkers({});
-    m_surface->setControlNet(P, faces, std::move(sharp));
+    m_surface->setControlNet(P, faces, std::move(sharp), std::move(holes));
     m_surface->setRefinedNet(mesh, meshFaces);
     m_surface->setStartVertices(toMatrix(item->startSet().points, 3));
     try {

@@ -290,6 +290,15 @@ void MainWindow::createViews()
                 8000);
     });
 
+    // A click inside a net face of a mesh: whether it is a hole, and how to change it.
+    connect(m_surface, &SurfaceView::netFaceClicked, this, [this](int f) {
+        if (const auto *mesh = qobject_cast<const SubdivisionMeshItem *>(currentItem()))
+            statusBar()->showMessage(
+                mesh->isHole(f) ? tr("Face %1: a hole (Item > Toggle Hole fills it)").arg(f)
+                                : tr("Face %1 (Item > Toggle Hole makes it a hole)").arg(f),
+                8000);
+    });
+
     // Status bar: cursor position, problems, long-work progress with a cancel button.
     // Set on every mouse move: a readout that never lays out the window again.
     m_cursorLabel = new StatusText(QStringLiteral("x = −0.123456, y = −0.123456   "
@@ -533,6 +542,7 @@ void MainWindow::updateActions()
     const bool mesh = qobject_cast<SubdivisionMeshItem *>(m_current.data()) != nullptr;
     action(QStringLiteral("actionCreaseEdge"))->setEnabled(mesh);
     action(QStringLiteral("actionSharpenVertex"))->setEnabled(mesh);
+    action(QStringLiteral("actionToggleHole"))->setEnabled(mesh);
     action(QStringLiteral("actionRevert"))
         ->setEnabled(!m_project->fileName().isEmpty() && m_project->isModified());
     for (const char *name : {"actionPrint", "actionPrintPreview", "actionPrintPdf"})

@@ -73,6 +73,8 @@ public:
     // selected, a refused value).
     bool setSelectedEdgeSharpness(double sharpness, QString *error = nullptr);
     bool setSelectedVertexSharpness(double sharpness, QString *error = nullptr);
+    // Item > Toggle Hole: the net face selected in the 3D view made a hole, or filled again.
+    bool toggleSelectedHole(QString *error = nullptr);
 
     // A new project with one cubic B-spline item: the window is never empty.
     void newProject();
@@ -214,6 +216,7 @@ private:
     void exportMeshDialog();
     void creaseEdgeDialog();
     void sharpenVertexDialog();
+    void toggleHoleAction();
     // The current item as a mesh item, or null with *error saying so.
     SubdivisionMeshItem *currentMesh(QString *error) const;
     // MainWindowExport.cpp: the printed sheet of the current item (with a mesh's focused

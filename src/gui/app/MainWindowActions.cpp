@@ -128,6 +128,9 @@ void MainWindow::createActions()
     make(QStringLiteral("actionSharpenVertex"), tr("Sharpen &Vertex…"), QString(),
          QKeySequence(), &MainWindow::sharpenVertexDialog)
         ->setStatusTip(tr("The corner sharpness of the mesh vertex clicked in the 3D view"));
+    make(QStringLiteral("actionToggleHole"), tr("Toggle &Hole"), QString(), QKeySequence(),
+         &MainWindow::toggleHoleAction)
+        ->setStatusTip(tr("Make the mesh face clicked in the 3D view a hole, or fill it"));
     make(QStringLiteral("actionSave"), tr("&Save"), QStringLiteral("document-save"),
          QKeySequence::Save, &MainWindow::save);
     make(QStringLiteral("actionSaveAs"), tr("Save &As…"), QStringLiteral("document-save-as"),
@@ -375,6 +378,7 @@ void MainWindow::createMenus()
     itemMenu->addSeparator();
     itemMenu->addAction(action(QStringLiteral("actionCreaseEdge")));
     itemMenu->addAction(action(QStringLiteral("actionSharpenVertex")));
+    itemMenu->addAction(action(QStringLiteral("actionToggleHole")));
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(action(QStringLiteral("actionZoomIn")));

@@ -1,8 +1,9 @@
 // MainWindow: the sharp features of a mesh item edited in the window (issue 44). A click on an
-// edge of the control net in the 3D view selects it (a click on a control point, the point);
-// Item > Crease Edge… and Item > Sharpen Vertex… ask for the sharpness, 0 to take it away, 10
-// or more for an infinitely sharp crease or corner, and store it as one undo step. The same
-// edits as the item's "creases" and "corners" (the file, Python's update(), attractor-cli set).
+// edge of the control net in the 3D view selects it (a click on a control point, the point; a
+// click inside a face, the face); Item > Crease Edge… and Item > Sharpen Vertex… ask for the
+// sharpness, 0 to take it away, 10 or more for an infinitely sharp crease or corner, and Item >
+// Toggle Hole makes the face a hole or fills it; each is one undo step. The same edits as the
+// item's "creases", "corners" and "holes" (the file, Python's update(), attractor-cli set).
 
 #include "gui/app/MainWindow.h"
 
@@ -49,6 +50,27 @@ bool MainWindow::setSelectedVertexSharpness(double sharpness, QString *error)
         return false;
     }
     return mesh->setVertexSharpness(v, float(sharpness), error);
+}
+
+bool MainWindow::toggleSelectedHole(QString *error)
+{
+    SubdivisionMeshItem *mesh = currentMesh(error);
+    if (!mesh)
+        return false;
+    const int f = m_surface->selectedNetFace();
+    if (f < 0) {
+        if (error)
+            *error = tr("Click inside a face of the control mesh in the 3D view first");
+        return false;
+    }
+    return mesh->setHole(f, !mesh->isHole(f), error);
+}
+
+void MainWindow::toggleHoleAction()
+{
+    QString error;
+    if (!toggleSelectedHole(&error))
+        statusBar()->showMessage(error, 8000);
 }
 
 namespace {

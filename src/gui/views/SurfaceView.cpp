@@ -154,11 +154,14 @@ void SurfaceView::setIfs(std::shared_ptr<const Ifs> ifs, const StartSet &start,
 }
 
 void SurfaceView::setControlNet(const Mat &points, const std::vector<std::vector<int>> &faces,
-                                std::vector<SharpEdge> sharp)
+                                std::vector<SharpEdge> sharp, std::vector<int> holes)
 {
     m_net = points.cols() == 3 ? points : Mat();
     m_netFaces = faces;
     m_sharpEdges = std::move(sharp);
+    m_holes = std::move(holes);
+    if (m_selectedFace >= int(m_netFaces.size()))
+        m_selectedFace = -1;
     if (m_selectedEdge.second >= m_net.rows())
         m_selectedEdge = {-1, -1};
     if (m_selected >= m_net.rows())

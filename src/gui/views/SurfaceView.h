@@ -86,7 +86,7 @@ public:
     // The control net: points n x 3 and faces (index lists); empty to hide. `sharp`: its sharp
     // edges (a mesh's creases, issue 44) as vertex pairs with their sharpness, drawn over it.
     void setControlNet(const Mat &points, const std::vector<std::vector<int>> &faces,
-                       std::vector<SharpEdge> sharp = {});
+                       std::vector<SharpEdge> sharp = {}, std::vector<int> holes = {});
     // The start-set vertices (n x 3, drawn and draggable as handles).
     void setStartVertices(const Mat &points);
     // The subdivided net after k rounds (n x 3 with faces): the classic route beside the IFS.
@@ -132,6 +132,10 @@ public:
     // highlighted. A click on a control point clears it, and the other way round.
     std::pair<int, int> selectedNetEdge() const { return m_selectedEdge; }
     void setSelectedNetEdge(int a, int b);
+    // The net face picked last by a click inside it, away from its edges and points (-1:
+    // none; the front one where faces overlap on screen); drawn outlined. Holes are hatched.
+    int selectedNetFace() const { return m_selectedFace; }
+    void setSelectedNetFace(int face);
     // Marked points with a label (the extraordinary vertices of a mesh at their limit
     // positions, labelled with their valence): drawn over the surface, one of them selected; a
     // click on one (press and release without moving) reports markerClicked.
@@ -190,6 +194,8 @@ signals:
     // A click (no drag) on an edge of the control net, away from its points (issue 44: the
     // edge to crease).
     void netEdgeClicked(int a, int b);
+    // A click (no drag) inside a face of the control net (issue 44: the face to make a hole).
+    void netFaceClicked(int face);
     void cameraChanged();
     // The user turned the view (the end of an orbit drag, an arrow key): the direction the
     // document may keep (the item's camera, which exports and the CLI use), in degrees.
@@ -286,6 +292,7 @@ private:
     int m_selectedMarker = -1;
     std::vector<std::vector<int>> m_netFaces, m_refinedFaces;
     std::vector<SharpEdge> m_sharpEdges;
+    int hitFace(const QPointF &screen) const;
     RenderSettings m_settings;
     std::uint32_t m_hidden = 0;
     bool m_editable = true;
@@ -324,6 +331,8 @@ private:
     Drag m_drag;
     int m_selected = -1;
     std::pair<int, int> m_selectedEdge{-1, -1};
+    int m_selectedFace = -1;
+    std::vector<int> m_holes;  // faces of the net that are holes
     // Frame log: the last pointer position (global) and the handles written last.
     QPoint m_inputGlobal;
     std::vector<QPoint> m_loggedHandles;

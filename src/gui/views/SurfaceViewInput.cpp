@@ -8,11 +8,13 @@
 #include "gui/views/SurfaceGLWindow.h"
 
 #include <QKeyEvent>
+#include <QPolygonF>
 #include <QMouseEvent>
 #include <QWheelEvent>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace awb {
 
@@ -101,12 +103,58 @@ std::pair<int, int> SurfaceView::hitEdge(const QPointF &screen) const
     return best;
 }
 
+int SurfaceView::hitFace(const QPointF &screen) const
+{
+    // The faces whose outline on screen holds the point; of those the nearest the eye (by its
+    // centre: the net's faces are small and seldom cross).
+    const Eigen::Vector3d toward = m_camera.ortho.toward();
+    int best = -1;
+    double nearest = -std::numeric_limits<double>::infinity();
+    for (std::size_t f = 0; f < m_netFaces.size(); ++f) {
+        const auto &loop = m_netFaces[f];
+        QPolygonF outline;
+        Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+        bool inside = loop.size() >= 3;
+        for (int v : loop) {
+            if (v < 0 || v >= m_net.rows()) {
+                inside = false;
+                break;
+            }
+            outline << toScreen(QVector3D(float(m_net(v, 0)), float(m_net(v, 1)),
+                                          float(m_net(v, 2))));
+            centre += m_net.row(v).transpose();
+        }
+        if (!inside || !outline.containsPoint(screen, Qt::OddEvenFill))
+            continue;
+        const double depth = (centre / double(loop.size())).dot(toward);
+        if (depth > nearest) {
+            nearest = depth;
+            best = int(f);
+        }
+    }
+    return best;
+}
+
+void SurfaceView::setSelectedNetFace(int face)
+{
+    m_selectedFace = face >= 0 && face < int(m_netFaces.size()) ? face : -1;
+    if (m_selectedFace >= 0) {
+        m_selected = -1;
+        m_selectedEdge = {-1, -1};
+    }
+    update();
+    if (m_glWindow)
+        m_glWindow->update();
+}
+
 void SurfaceView::setSelectedNetEdge(int a, int b)
 {
     m_selectedEdge = a >= 0 && b >= 0 ? std::pair{std::min(a, b), std::max(a, b)}
                                       : std::pair{-1, -1};
-    if (m_selectedEdge.first >= 0)
+    if (m_selectedEdge.first >= 0) {
         m_selected = -1;
+        m_selectedFace = -1;
+    }
     update();
     if (m_glWindow)
         m_glWindow->update();
@@ -147,6 +195,7 @@ void SurfaceView::mousePressEvent(QMouseEvent *event)
         m_drag.index = c;
         m_selected = c;
         m_selectedEdge = {-1, -1};
+        m_selectedFace = -1;
         m_drag.startWorld = m_drag.currentWorld = QVector3D(
             float(m_net(c, 0)), float(m_net(c, 1)), float(m_net(c, 2)));
         m_cameraSet = true; // the view must not refit under the user's hand
@@ -232,6 +281,9 @@ void SurfaceView::mouseReleaseEvent(QMouseEvent *event)
         if (a >= 0) {
             setSelectedNetEdge(a, b);
             emit netEdgeClicked(a, b);
+        } else if (const int f = hitFace(drag.press); f >= 0) {
+            setSelectedNetFace(f);
+            emit netFaceClicked(f);
         }
     }
     update();

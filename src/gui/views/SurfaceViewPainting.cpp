@@ -276,6 +276,26 @@ void SurfaceView::paintOverlay(QPainter &p, const QMatrix4x4 &mvp, const QRectF 
         faces(m_refined, m_refinedFaces, QPen(QColor(120, 120, 120, 150), 0.8 * unit));
     if (isLayerVisible(Layer::ControlNet) && m_net.rows() > 0) {
         faces(m_net, m_netFaces, QPen(QColor(40, 40, 40, 200), 1.2 * unit));
+        // Holes hatched; the selected face outlined.
+        const auto outline = [&](int f) {
+            QPolygonF poly;
+            for (int v : m_netFaces[std::size_t(f)])
+                if (v >= 0 && v < m_net.rows())
+                    poly << at(m_net, v);
+            return poly;
+        };
+        for (int f : m_holes)
+            if (f >= 0 && f < int(m_netFaces.size())) {
+                p.setPen(Qt::NoPen);
+                p.setBrush(QBrush(QColor(90, 90, 90, 150), Qt::BDiagPattern));
+                p.drawPolygon(outline(f));
+            }
+        if (m_selectedFace >= 0 && m_selectedFace < int(m_netFaces.size())) {
+            p.setPen(QPen(QColor(40, 110, 230), 3.0 * unit));
+            p.setBrush(QColor(40, 110, 230, 40));
+            p.drawPolygon(outline(m_selectedFace));
+        }
+        p.setBrush(Qt::NoBrush);
         // The selected edge: a wide halo under its crease, if it has one.
         if (const auto [a, b] = m_selectedEdge;
             a >= 0 && b >= 0 && a < m_net.rows() && b < m_net.rows()) {
