@@ -59,6 +59,26 @@ private:
     {
         return awb::test::writeFile(m_dir, name, text);
     }
+    // The window shown with an imported cube (Catmull-Clark) current and drawn.
+    void showCube(MainWindow &w, SubdivisionMeshItem **item)
+    {
+        w.resize(1200, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        std::ostringstream obj;
+        writeObj(obj, cubeMesh(), "a cube");
+        QString error;
+        QVERIFY2(w.importMesh(write("cube.obj", QByteArray::fromStdString(obj.str())),
+                              MeshScheme::CatmullClark, &error),
+                 qPrintable(error));
+        *item = qobject_cast<SubdivisionMeshItem *>(w.project()->findItem("cube"));
+        QVERIFY(*item);
+        w.setCurrentItem(*item);
+        SurfaceView *view = w.surfaceView();
+        QTRY_VERIFY_WITH_TIMEOUT(view->isVisible() && !view->isRendering()
+                                     && view->mesh().size() > 0,
+                                 awb::test::ms(30000));
+    }
     QTemporaryDir m_dir;
 };
 
@@ -410,21 +430,11 @@ void TestMeshWindow::creaseAnEdgeByClickingIt()
     // Sharpen Vertex… make a corner.
     RecordingMessages messages;
     MainWindow w(&messages, m_dir.filePath("recovery"));
-    w.resize(1200, 800);
-    w.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&w));
-    std::ostringstream obj;
-    writeObj(obj, cubeMesh(), "a cube");
-    QString error;
-    QVERIFY2(w.importMesh(write("cube.obj", QByteArray::fromStdString(obj.str())),
-                          MeshScheme::CatmullClark, &error),
-             qPrintable(error));
-    auto *item = qobject_cast<SubdivisionMeshItem *>(w.project()->findItem("cube"));
+    SubdivisionMeshItem *item = nullptr;
+    showCube(w, &item);
     QVERIFY(item);
-    w.setCurrentItem(item);
     SurfaceView *view = w.surfaceView();
-    QTRY_VERIFY_WITH_TIMEOUT(view->isVisible() && !view->isRendering() && view->mesh().size() > 0,
-                             awb::test::ms(30000));
+    QString error;
     // Nothing selected: the action says what to do.
     QVERIFY(!w.setSelectedEdgeSharpness(10, &error));
     QVERIFY2(error.contains("Click an edge"), qPrintable(error));
@@ -480,21 +490,11 @@ void TestMeshWindow::aClickedFaceBecomesAHole()
     // one undo step, and fills it again; the hole leaves the surface (fewer pieces drawn).
     RecordingMessages messages;
     MainWindow w(&messages, m_dir.filePath("recovery"));
-    w.resize(1200, 800);
-    w.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&w));
-    std::ostringstream obj;
-    writeObj(obj, cubeMesh(), "a cube");
-    QString error;
-    QVERIFY2(w.importMesh(write("cube.obj", QByteArray::fromStdString(obj.str())),
-                          MeshScheme::CatmullClark, &error),
-             qPrintable(error));
-    auto *item = qobject_cast<SubdivisionMeshItem *>(w.project()->findItem("cube"));
+    SubdivisionMeshItem *item = nullptr;
+    showCube(w, &item);
     QVERIFY(item);
-    w.setCurrentItem(item);
     SurfaceView *view = w.surfaceView();
-    QTRY_VERIFY_WITH_TIMEOUT(view->isVisible() && !view->isRendering() && view->mesh().size() > 0,
-                             awb::test::ms(30000));
+    QString error;
     QVERIFY(!w.toggleSelectedHole(&error));
     QVERIFY2(error.contains("Click inside a face"), qPrintable(error));
     // The centre on screen of each face in turn: the first click that selects that very face
