@@ -144,12 +144,50 @@ MeshTopology::MeshTopology(int vertexCount, std::vector<std::vector<int>> faces)
             outHalf[std::size_t(fill[std::size_t(halfFrom[std::size_t(h)])]++)] = h;
     }
     // For each half-edge a -> b: the first a -> b (in face order), the first b -> a (its twin,
-    // or -1), and the edges of three or more faces. Found by sorting the half-edges by their
-    // vertex pair, not by scanning each vertex's half-edges per half-edge: a vertex of a
-    // million faces (a hostile file) costs a sort, not 10^12 steps.
+    // or -1), and the edges of three or more faces. Where every vertex has few half-edges, by
+    // scanning the two ends' half-edges (linear, and what a production mesh has); otherwise by
+    // sorting the half-edges by their vertex pair: a vertex of a million faces (a hostile file)
+    // then costs a sort, not 10^12 steps.
     std::vector<int> earliest(halfEdges), twin(halfEdges, -1);
     std::vector<std::pair<std::pair<int, int>, std::vector<int>>> nonManifold;
-    {
+    int busiest = 0;
+    for (std::size_t v = 0; v < nv; ++v)
+        busiest = std::max(busiest, outStart[v + 1] - outStart[v]);
+    if (busiest <= 64) {
+        for (int h = 0; h < int(halfEdges); ++h) {
+            const int a = halfFrom[std::size_t(h)], b = halfTo[std::size_t(h)];
+            int same = -1, opposite = -1, count = 0, firstHalf = h;
+            for (int i = outStart[std::size_t(a)]; i < outStart[std::size_t(a) + 1]; ++i) {
+                const int g = outHalf[std::size_t(i)];
+                if (halfTo[std::size_t(g)] == b) {
+                    same = same < 0 ? g : same;
+                    ++count;
+                    firstHalf = std::min(firstHalf, g);
+                }
+            }
+            for (int i = outStart[std::size_t(b)]; i < outStart[std::size_t(b) + 1]; ++i) {
+                const int g = outHalf[std::size_t(i)];
+                if (halfTo[std::size_t(g)] == a) {
+                    opposite = opposite < 0 ? g : opposite;
+                    ++count;
+                    firstHalf = std::min(firstHalf, g);
+                }
+            }
+            earliest[std::size_t(h)] = same;
+            twin[std::size_t(h)] = opposite;
+            if (count > 2 && firstHalf == h) {  // named once, by its first half-edge
+                std::vector<int> on;
+                for (const int x : {a, b})
+                    for (int i = outStart[std::size_t(x)]; i < outStart[std::size_t(x) + 1]; ++i) {
+                        const int g = outHalf[std::size_t(i)];
+                        if (halfTo[std::size_t(g)] == (x == a ? b : a))
+                            on.push_back(halfFace[std::size_t(g)]);
+                    }
+                std::sort(on.begin(), on.end());
+                nonManifold.push_back({{std::min(a, b), std::max(a, b)}, std::move(on)});
+            }
+        }
+    } else {
         std::vector<std::pair<std::uint64_t, int>> byEdge(halfEdges);
         for (int h = 0; h < int(halfEdges); ++h) {
             const int a = halfFrom[std::size_t(h)], b = halfTo[std::size_t(h)];

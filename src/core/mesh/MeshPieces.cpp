@@ -511,9 +511,8 @@ SparseRows SparseRows::of(const Mat &m)
 
 namespace {
 
-MeshPieces buildManifoldPieces(const Mesh &mesh, MeshScheme scheme)
+MeshPieces buildManifoldPieces(const Mesh &mesh, MeshScheme scheme, MeshTopology t)
 {
-    MeshTopology t = checkMesh(mesh, scheme);
     MeshPieces out;
     out.scheme = scheme;
     out.inputVertexCount = t.vertexCount();
@@ -616,11 +615,12 @@ MeshPieces buildManifoldPieces(const Mesh &mesh, MeshScheme scheme)
 
 MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
 {
-    const std::optional<ManifoldSheets> sheets = manifoldSheets(mesh);
-    if (!sheets)
-        return buildManifoldPieces(mesh, scheme);
+    DrawnMesh drawn = drawnMesh(mesh, scheme);
+    if (!drawn.sheets)
+        return buildManifoldPieces(mesh, scheme, std::move(drawn.topology));
     // The pieces of the sheets, on the input's vertices: a copy is its vertex.
-    MeshPieces out = buildManifoldPieces(sheets->mesh, scheme);
+    const std::optional<ManifoldSheets> &sheets = drawn.sheets;
+    MeshPieces out = buildManifoldPieces(sheets->mesh, scheme, std::move(drawn.topology));
     const int n = int(mesh.vertices.rows());
     const auto inputVertex = [&](int v) { return v < n ? v : sheets->original[std::size_t(v)]; };
     for (MeshStencil &stencil : out.isolation) {

@@ -439,9 +439,9 @@ Mesh refineMesh(const Mesh &input, MeshScheme scheme, int steps)
         checkDrawnMesh(input, scheme);
         return input;
     }
-    const std::optional<ManifoldSheets> sheets = manifoldSheets(input);
-    const Mesh &mesh = sheets ? sheets->mesh : input;
-    MeshTopology t = checkMesh(mesh, scheme);
+    DrawnMesh drawn = drawnMesh(input, scheme);
+    const Mesh &mesh = drawn.mesh(input);
+    MeshTopology t = std::move(drawn.topology);
     Mesh m = mesh;
     m.tags = {};
     for (int k = 0; k < steps; ++k) {
@@ -510,9 +510,9 @@ int preludeLevels(const MeshTopology &t)
 Mat limitPositions(const Mesh &input, MeshScheme scheme)
 {
     // A vertex's copies in the sheets of a non-manifold mesh share its limit.
-    const std::optional<ManifoldSheets> sheets = manifoldSheets(input);
-    const Mesh &mesh = sheets ? sheets->mesh : input;
-    MeshTopology t = checkMesh(mesh, scheme);
+    DrawnMesh drawn = drawnMesh(input, scheme);
+    const Mesh &mesh = drawn.mesh(input);
+    MeshTopology t = std::move(drawn.topology);
     // Past the semi-sharp features (vertex v keeps its number at every level).
     Mat points = mesh.vertices;
     for (int level = 0, levels = preludeLevels(t); level < levels; ++level) {

@@ -86,38 +86,70 @@ std::optional<ManifoldSheets> manifoldSheets(const Mesh &mesh)
     }
     const HalfEdges h(n, mesh.faces);
     const int count = h.count();
-    // The half-edges of each edge, sorted by vertex pair (and in half-edge order within one).
-    std::vector<std::pair<std::uint64_t, int>> byEdge(static_cast<std::size_t>(count));
-    for (int e = 0; e < count; ++e)
-        byEdge[std::size_t(e)] = {edgeKey(h.from[std::size_t(e)], h.to[std::size_t(e)]), e};
-    std::sort(byEdge.begin(), byEdge.end());
-    // Per half-edge: its twin across a manifold edge, or what else its edge is.
+    // The half-edges of each edge, sorted by vertex pair (and in half-edge order within one):
+    // made when needed (a vertex of many half-edges, a non-manifold mesh).
+    std::vector<std::pair<std::uint64_t, int>> byEdge;
+    const auto sortByEdge = [&] {
+        if (!byEdge.empty())
+            return;
+        byEdge.resize(static_cast<std::size_t>(count));
+        for (int e = 0; e < count; ++e)
+            byEdge[std::size_t(e)] = {edgeKey(h.from[std::size_t(e)], h.to[std::size_t(e)]), e};
+        std::sort(byEdge.begin(), byEdge.end());
+    };
+    // Per half-edge: its twin across a manifold edge, or what else its edge is. Two faces along
+    // it in opposite directions: manifold; one face: the boundary; anything else (three or more
+    // faces, one direction, a degenerate edge, one face naming it twice) is not. Where every
+    // vertex has few half-edges, by scanning the two ends' (linear); otherwise by the sort.
     std::vector<int> twin(std::size_t(count), -1);
     std::vector<char> nonManifold(std::size_t(count), 0), boundary(std::size_t(count), 0);
     bool anyNonManifold = false;
-    for (std::size_t lo = 0, hi = 0; lo < byEdge.size(); lo = hi) {
-        while (hi < byEdge.size() && byEdge[hi].first == byEdge[lo].first)
-            ++hi;
-        const int e = byEdge[lo].second;
-        if (hi - lo == 1) {
-            boundary[std::size_t(e)] = h.from[std::size_t(e)] != h.to[std::size_t(e)];
-            nonManifold[std::size_t(e)] = !boundary[std::size_t(e)];  // degenerate (a, a)
-            anyNonManifold = anyNonManifold || nonManifold[std::size_t(e)];
-            continue;
+    int busiest = 0;
+    for (int v = 0; v < n; ++v)
+        busiest = std::max(busiest, h.outStart[std::size_t(v) + 1] - h.outStart[std::size_t(v)]);
+    if (busiest <= 64) {
+        for (int e = 0; e < count; ++e) {
+            const int a = h.from[std::size_t(e)], b = h.to[std::size_t(e)];
+            int along = 0, against = 0, opposite = -1;
+            for (int i = h.outStart[std::size_t(a)]; i < h.outStart[std::size_t(a) + 1]; ++i)
+                along += h.to[std::size_t(h.out[std::size_t(i)])] == b;
+            for (int i = h.outStart[std::size_t(b)]; i < h.outStart[std::size_t(b) + 1]; ++i)
+                if (h.to[std::size_t(h.out[std::size_t(i)])] == a) {
+                    ++against;
+                    opposite = h.out[std::size_t(i)];
+                }
+            if (a != b && along == 1 && against == 1
+                && h.face[std::size_t(opposite)] != h.face[std::size_t(e)])
+                twin[std::size_t(e)] = opposite;
+            else if (a != b && along == 1 && against == 0)
+                boundary[std::size_t(e)] = 1;
+            else
+                nonManifold[std::size_t(e)] = anyNonManifold = 1;
         }
-        const int g = byEdge[lo + 1].second;
-        // Two faces along it in opposite directions: manifold. Anything else (three or more
-        // faces, one direction, a degenerate edge, one face naming it twice) is not.
-        if (hi - lo == 2 && h.from[std::size_t(e)] == h.to[std::size_t(g)]
-            && h.from[std::size_t(e)] != h.to[std::size_t(e)]
-            && h.face[std::size_t(e)] != h.face[std::size_t(g)]) {
-            twin[std::size_t(e)] = g;
-            twin[std::size_t(g)] = e;
-            continue;
+    } else {
+        sortByEdge();
+        for (std::size_t lo = 0, hi = 0; lo < byEdge.size(); lo = hi) {
+            while (hi < byEdge.size() && byEdge[hi].first == byEdge[lo].first)
+                ++hi;
+            const int e = byEdge[lo].second;
+            if (hi - lo == 1) {
+                boundary[std::size_t(e)] = h.from[std::size_t(e)] != h.to[std::size_t(e)];
+                nonManifold[std::size_t(e)] = !boundary[std::size_t(e)];  // degenerate (a, a)
+                anyNonManifold = anyNonManifold || nonManifold[std::size_t(e)];
+                continue;
+            }
+            const int g = byEdge[lo + 1].second;
+            if (hi - lo == 2 && h.from[std::size_t(e)] == h.to[std::size_t(g)]
+                && h.from[std::size_t(e)] != h.to[std::size_t(e)]
+                && h.face[std::size_t(e)] != h.face[std::size_t(g)]) {
+                twin[std::size_t(e)] = g;
+                twin[std::size_t(g)] = e;
+                continue;
+            }
+            anyNonManifold = true;
+            for (std::size_t i = lo; i < hi; ++i)
+                nonManifold[std::size_t(byEdge[i].second)] = 1;
         }
-        anyNonManifold = true;
-        for (std::size_t i = lo; i < hi; ++i)
-            nonManifold[std::size_t(byEdge[i].second)] = 1;
     }
     // The fans: the corners at a vertex joined across its manifold edges.
     std::vector<int> parent(static_cast<std::size_t>(count));
@@ -160,6 +192,7 @@ std::optional<ManifoldSheets> manifoldSheets(const Mesh &mesh)
             return std::nullopt;
     }
 
+    sortByEdge();
     ManifoldSheets out;
     out.original = std::move(original);
     out.copies = int(out.original.size()) - n;
@@ -371,12 +404,17 @@ std::string describe(const ManifoldSheets &sheets)
         sheets.edges.size(), edges, sheets.vertices.size(), vertices, how);
 }
 
-void checkDrawnMesh(const Mesh &mesh, MeshScheme scheme)
+DrawnMesh drawnMesh(const Mesh &mesh, MeshScheme scheme)
 {
-    if (const auto sheets = manifoldSheets(mesh))
-        checkMesh(sheets->mesh, scheme);
-    else
-        checkMesh(mesh, scheme);
+    try {
+        return DrawnMesh{std::nullopt, checkMesh(mesh, scheme)};
+    } catch (const InputError &) {
+        std::optional<ManifoldSheets> sheets = manifoldSheets(mesh);
+        if (!sheets)
+            throw;
+        MeshTopology topology = checkMesh(sheets->mesh, scheme);
+        return DrawnMesh{std::move(sheets), std::move(topology)};
+    }
 }
 
 } // namespace awb

@@ -53,7 +53,15 @@ std::optional<ManifoldSheets> manifoldSheets(const Mesh &mesh);
 // named) and how they are drawn.
 std::string describe(const ManifoldSheets &sheets);
 
-// checkMesh of the mesh as it is drawn: of its sheets when it is non-manifold.
-void checkDrawnMesh(const Mesh &mesh, MeshScheme scheme);
+// The mesh as it is drawn and its checked topology: the mesh itself when checkMesh takes it
+// (a manifold mesh costs one check, as before the sheets), else its manifold sheets, checked;
+// when the mesh has no sheets either, checkMesh's refusal of the mesh itself.
+struct DrawnMesh {
+    std::optional<ManifoldSheets> sheets;
+    MeshTopology topology;
+    const Mesh &mesh(const Mesh &input) const { return sheets ? sheets->mesh : input; }
+};
+DrawnMesh drawnMesh(const Mesh &mesh, MeshScheme scheme);
+inline void checkDrawnMesh(const Mesh &mesh, MeshScheme scheme) { drawnMesh(mesh, scheme); }
 
 } // namespace awb
