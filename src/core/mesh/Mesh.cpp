@@ -1,10 +1,10 @@
 #include "core/mesh/Mesh.h"
 
 #include "core/Messages.h"
+#include "core/mesh/MeshHalfEdges.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 
 namespace awb {
 
@@ -113,115 +113,36 @@ MeshTopology::MeshTopology(int vertexCount, std::vector<std::vector<int>> faces)
                 formatMessage(coreTranslate("awb::mesh", "face %1 lists vertex %2 twice"), f, twice));
     }
     problems.raise();
-    // Half-edge h = first[f] + k runs from corner k of face f to corner k + 1; the half-edges
-    // leaving each vertex, in face order (compressed rows: OpenSubdiv's vertex-edge relation).
-    // Every lookup is a scan of one vertex's few half-edges: no hash of edges.
+    // The half-edges, each vertex's in compressed rows (OpenSubdiv's vertex-edge relation), and
+    // how they pair up (MeshHalfEdges.h): every lookup is a scan of one vertex's few
+    // half-edges, no hash of edges. For each half-edge a -> b: the first a -> b, the first
+    // b -> a (its twin, or -1), and the edges of three or more faces, named once, by their
+    // first half-edge.
     const std::size_t nf = m_faces.size(), nv = m_rings.size();
-    std::vector<int> first(nf + 1, 0), halfFace(halfEdges), halfCorner(halfEdges);
-    for (std::size_t f = 0; f < nf; ++f) {
-        first[f + 1] = first[f] + int(m_faces[f].size());
-        for (int k = 0; k < int(m_faces[f].size()); ++k) {
-            halfFace[std::size_t(first[f] + k)] = int(f);
-            halfCorner[std::size_t(first[f] + k)] = k;
-        }
-    }
-    std::vector<int> halfFrom(halfEdges), halfTo(halfEdges);
-    for (std::size_t f = 0; f < nf; ++f) {
-        const auto &loop = m_faces[f];
-        for (std::size_t k = 0; k < loop.size(); ++k) {
-            halfFrom[std::size_t(first[f]) + k] = loop[k];
-            halfTo[std::size_t(first[f]) + k] = loop[(k + 1) % loop.size()];
-        }
-    }
-    std::vector<int> outStart(nv + 1, 0), outHalf(halfEdges);
-    for (int v : halfFrom)
-        ++outStart[std::size_t(v) + 1];
-    for (std::size_t v = 0; v < nv; ++v)
-        outStart[v + 1] += outStart[v];
-    {
-        std::vector<int> fill(outStart.begin(), outStart.end() - 1);
-        for (int h = 0; h < int(halfEdges); ++h)
-            outHalf[std::size_t(fill[std::size_t(halfFrom[std::size_t(h)])]++)] = h;
-    }
-    // For each half-edge a -> b: the first a -> b (in face order), the first b -> a (its twin,
-    // or -1), and the edges of three or more faces. Where every vertex has few half-edges, by
-    // scanning the two ends' half-edges (linear, and what a production mesh has); otherwise by
-    // sorting the half-edges by their vertex pair: a vertex of a million faces (a hostile file)
-    // then costs a sort, not 10^12 steps.
-    std::vector<int> earliest(halfEdges), twin(halfEdges, -1);
+    const MeshHalfEdges half(int(nv), m_faces);
+    const std::vector<int> &first = half.first, &halfFace = half.face, &halfFrom = half.from,
+                           &halfTo = half.to, &outStart = half.outStart, &outHalf = half.out;
+    MeshHalfEdges::Pairing pairing = half.pairing();
+    const std::vector<int> &earliest = pairing.same, &twin = pairing.opposite;
     std::vector<std::pair<std::pair<int, int>, std::vector<int>>> nonManifold;
-    int busiest = 0;
-    for (std::size_t v = 0; v < nv; ++v)
-        busiest = std::max(busiest, outStart[v + 1] - outStart[v]);
-    if (busiest <= 64) {
-        for (int h = 0; h < int(halfEdges); ++h) {
-            const int a = halfFrom[std::size_t(h)], b = halfTo[std::size_t(h)];
-            int same = -1, opposite = -1, count = 0, firstHalf = h;
-            for (int i = outStart[std::size_t(a)]; i < outStart[std::size_t(a) + 1]; ++i) {
-                const int g = outHalf[std::size_t(i)];
-                if (halfTo[std::size_t(g)] == b) {
-                    same = same < 0 ? g : same;
-                    ++count;
-                    firstHalf = std::min(firstHalf, g);
-                }
+    {
+        std::vector<std::pair<int, int>> crowded;  // (the edge's first half-edge, a face on it)
+        for (int h = 0; h < int(halfEdges); ++h)
+            if (pairing.halves[std::size_t(h)] > 2) {
+                const int o = twin[std::size_t(h)];
+                crowded.push_back({o >= 0 ? std::min(earliest[std::size_t(h)], o)
+                                          : earliest[std::size_t(h)],
+                                   halfFace[std::size_t(h)]});
             }
-            for (int i = outStart[std::size_t(b)]; i < outStart[std::size_t(b) + 1]; ++i) {
-                const int g = outHalf[std::size_t(i)];
-                if (halfTo[std::size_t(g)] == a) {
-                    opposite = opposite < 0 ? g : opposite;
-                    ++count;
-                    firstHalf = std::min(firstHalf, g);
-                }
-            }
-            earliest[std::size_t(h)] = same;
-            twin[std::size_t(h)] = opposite;
-            if (count > 2 && firstHalf == h) {  // named once, by its first half-edge
-                std::vector<int> on;
-                for (const int x : {a, b})
-                    for (int i = outStart[std::size_t(x)]; i < outStart[std::size_t(x) + 1]; ++i) {
-                        const int g = outHalf[std::size_t(i)];
-                        if (halfTo[std::size_t(g)] == (x == a ? b : a))
-                            on.push_back(halfFace[std::size_t(g)]);
-                    }
-                std::sort(on.begin(), on.end());
-                nonManifold.push_back({{std::min(a, b), std::max(a, b)}, std::move(on)});
-            }
-        }
-    } else {
-        std::vector<std::pair<std::uint64_t, int>> byEdge(halfEdges);
-        for (int h = 0; h < int(halfEdges); ++h) {
-            const int a = halfFrom[std::size_t(h)], b = halfTo[std::size_t(h)];
-            byEdge[std::size_t(h)] = {(std::uint64_t(std::uint32_t(std::min(a, b))) << 32)
-                                          | std::uint32_t(std::max(a, b)),
-                                      h};
-        }
-        std::sort(byEdge.begin(), byEdge.end());
-        for (std::size_t lo = 0, hi = 0; lo < byEdge.size(); lo = hi) {
-            while (hi < byEdge.size() && byEdge[hi].first == byEdge[lo].first)
-                ++hi;
-            // The first half-edge of each direction (the group is in half-edge order).
-            int firstLow = -1, firstHigh = -1;
-            const int low = int(byEdge[lo].first >> 32);
-            for (std::size_t i = lo; i < hi; ++i) {
-                const int h = byEdge[i].second;
-                int &first = halfFrom[std::size_t(h)] == low ? firstLow : firstHigh;
-                if (first < 0)
-                    first = h;
-            }
-            for (std::size_t i = lo; i < hi; ++i) {
-                const int h = byEdge[i].second;
-                const bool fromLow = halfFrom[std::size_t(h)] == low;
-                earliest[std::size_t(h)] = fromLow ? firstLow : firstHigh;
-                twin[std::size_t(h)] = fromLow ? firstHigh : firstLow;
-            }
-            if (hi - lo > 2) {
-                std::vector<int> on;
-                for (std::size_t i = lo; i < hi; ++i)
-                    on.push_back(halfFace[std::size_t(byEdge[i].second)]);
-                std::sort(on.begin(), on.end());
-                nonManifold.push_back(
-                    {{low, int(byEdge[lo].first & 0xffffffffu)}, std::move(on)});
-            }
+        std::sort(crowded.begin(), crowded.end());
+        for (std::size_t lo = 0, hi = 0; lo < crowded.size(); lo = hi) {
+            std::vector<int> on;
+            while (hi < crowded.size() && crowded[hi].first == crowded[lo].first)
+                on.push_back(crowded[hi++].second);
+            const int e = crowded[lo].first;
+            nonManifold.push_back({{std::min(halfFrom[std::size_t(e)], halfTo[std::size_t(e)]),
+                                    std::max(halfFrom[std::size_t(e)], halfTo[std::size_t(e)])},
+                                   std::move(on)});
         }
     }
     // Edges of three or more faces, in the order of their vertex pairs.
@@ -267,11 +188,7 @@ MeshTopology::MeshTopology(int vertexCount, std::vector<std::vector<int>> faces)
     // The ring of each vertex, counter-clockwise: in a face ... a -> v -> b ..., the face lies
     // between edge (v, b) and edge (v, a) turning counter-clockwise; the next face is the one
     // with the half-edge v -> a, the twin of a -> v.
-    const auto previous = [&](int h) {
-        const int f = halfFace[std::size_t(h)], k = halfCorner[std::size_t(h)];
-        const int n = int(m_faces[std::size_t(f)].size());
-        return first[std::size_t(f)] + (k + n - 1) % n;
-    };
+    const auto previous = [&](int h) { return half.previous(h); };
     for (std::size_t v = 0; v < nv; ++v) {
         const int begin = outStart[v], end = outStart[v + 1];
         if (begin == end)

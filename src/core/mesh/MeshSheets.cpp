@@ -1,6 +1,7 @@
 #include "core/mesh/MeshSheets.h"
 
 #include "core/Messages.h"
+#include "core/mesh/MeshHalfEdges.h"
 
 #include <algorithm>
 #include <numeric>
@@ -8,53 +9,6 @@
 namespace awb {
 
 namespace {
-
-// The faces' corners as half-edges (corner k of face f runs from its vertex k to k + 1), and
-// the half-edges leaving each vertex in compressed rows.
-struct HalfEdges {
-    std::vector<int> first;  // per face, its first half-edge; first.back() = the count
-    std::vector<int> from, to, face;
-    std::vector<int> outStart, out;
-    int count() const { return int(from.size()); }
-    int next(int h) const
-    {
-        const int f = face[std::size_t(h)], b = first[std::size_t(f)];
-        const int n = first[std::size_t(f) + 1] - b;
-        return b + (h - b + 1) % n;
-    }
-    int previous(int h) const
-    {
-        const int f = face[std::size_t(h)], b = first[std::size_t(f)];
-        const int n = first[std::size_t(f) + 1] - b;
-        return b + (h - b + n - 1) % n;
-    }
-    HalfEdges(int vertexCount, const std::vector<std::vector<int>> &faces)
-    {
-        first.assign(faces.size() + 1, 0);
-        for (std::size_t f = 0; f < faces.size(); ++f)
-            first[f + 1] = first[f] + int(faces[f].size());
-        const std::size_t n = std::size_t(first.back());
-        from.resize(n);
-        to.resize(n);
-        face.resize(n);
-        for (std::size_t f = 0; f < faces.size(); ++f)
-            for (std::size_t k = 0; k < faces[f].size(); ++k) {
-                const std::size_t h = std::size_t(first[f]) + k;
-                from[h] = faces[f][k];
-                to[h] = faces[f][(k + 1) % faces[f].size()];
-                face[h] = int(f);
-            }
-        outStart.assign(std::size_t(vertexCount) + 1, 0);
-        for (int v : from)
-            ++outStart[std::size_t(v) + 1];
-        for (std::size_t v = 0; v < std::size_t(vertexCount); ++v)
-            outStart[v + 1] += outStart[v];
-        out.resize(n);
-        std::vector<int> fill(outStart.begin(), outStart.end() - 1);
-        for (int h = 0; h < int(n); ++h)
-            out[std::size_t(fill[std::size_t(from[std::size_t(h)])]++)] = h;
-    }
-};
 
 int findRoot(std::vector<int> &parent, int x)
 {
@@ -84,72 +38,26 @@ std::optional<ManifoldSheets> manifoldSheets(const Mesh &mesh)
             if (v < 0 || v >= n)
                 return std::nullopt;
     }
-    const HalfEdges h(n, mesh.faces);
+    const MeshHalfEdges h(n, mesh.faces);
     const int count = h.count();
-    // The half-edges of each edge, sorted by vertex pair (and in half-edge order within one):
-    // made when needed (a vertex of many half-edges, a non-manifold mesh).
-    std::vector<std::pair<std::uint64_t, int>> byEdge;
-    const auto sortByEdge = [&] {
-        if (!byEdge.empty())
-            return;
-        byEdge.resize(static_cast<std::size_t>(count));
-        for (int e = 0; e < count; ++e)
-            byEdge[std::size_t(e)] = {edgeKey(h.from[std::size_t(e)], h.to[std::size_t(e)]), e};
-        std::sort(byEdge.begin(), byEdge.end());
-    };
     // Per half-edge: its twin across a manifold edge, or what else its edge is. Two faces along
     // it in opposite directions: manifold; one face: the boundary; anything else (three or more
-    // faces, one direction, a degenerate edge, one face naming it twice) is not. Where every
-    // vertex has few half-edges, by scanning the two ends' (linear); otherwise by the sort.
+    // faces, one direction, a degenerate edge, one face naming it twice) is not.
+    const MeshHalfEdges::Pairing pairing = h.pairing();
     std::vector<int> twin(std::size_t(count), -1);
     std::vector<char> nonManifold(std::size_t(count), 0), boundary(std::size_t(count), 0);
     bool anyNonManifold = false;
-    int busiest = 0;
-    for (int v = 0; v < n; ++v)
-        busiest = std::max(busiest, h.outStart[std::size_t(v) + 1] - h.outStart[std::size_t(v)]);
-    if (busiest <= 64) {
-        for (int e = 0; e < count; ++e) {
-            const int a = h.from[std::size_t(e)], b = h.to[std::size_t(e)];
-            int along = 0, against = 0, opposite = -1;
-            for (int i = h.outStart[std::size_t(a)]; i < h.outStart[std::size_t(a) + 1]; ++i)
-                along += h.to[std::size_t(h.out[std::size_t(i)])] == b;
-            for (int i = h.outStart[std::size_t(b)]; i < h.outStart[std::size_t(b) + 1]; ++i)
-                if (h.to[std::size_t(h.out[std::size_t(i)])] == a) {
-                    ++against;
-                    opposite = h.out[std::size_t(i)];
-                }
-            if (a != b && along == 1 && against == 1
-                && h.face[std::size_t(opposite)] != h.face[std::size_t(e)])
-                twin[std::size_t(e)] = opposite;
-            else if (a != b && along == 1 && against == 0)
-                boundary[std::size_t(e)] = 1;
-            else
-                nonManifold[std::size_t(e)] = anyNonManifold = 1;
-        }
-    } else {
-        sortByEdge();
-        for (std::size_t lo = 0, hi = 0; lo < byEdge.size(); lo = hi) {
-            while (hi < byEdge.size() && byEdge[hi].first == byEdge[lo].first)
-                ++hi;
-            const int e = byEdge[lo].second;
-            if (hi - lo == 1) {
-                boundary[std::size_t(e)] = h.from[std::size_t(e)] != h.to[std::size_t(e)];
-                nonManifold[std::size_t(e)] = !boundary[std::size_t(e)];  // degenerate (a, a)
-                anyNonManifold = anyNonManifold || nonManifold[std::size_t(e)];
-                continue;
-            }
-            const int g = byEdge[lo + 1].second;
-            if (hi - lo == 2 && h.from[std::size_t(e)] == h.to[std::size_t(g)]
-                && h.from[std::size_t(e)] != h.to[std::size_t(e)]
-                && h.face[std::size_t(e)] != h.face[std::size_t(g)]) {
-                twin[std::size_t(e)] = g;
-                twin[std::size_t(g)] = e;
-                continue;
-            }
-            anyNonManifold = true;
-            for (std::size_t i = lo; i < hi; ++i)
-                nonManifold[std::size_t(byEdge[i].second)] = 1;
-        }
+    for (int e = 0; e < count; ++e) {
+        const int opposite = pairing.opposite[std::size_t(e)];
+        const int halves = pairing.halves[std::size_t(e)];
+        const bool degenerate = h.from[std::size_t(e)] == h.to[std::size_t(e)];
+        if (!degenerate && halves == 2 && opposite >= 0
+            && h.face[std::size_t(opposite)] != h.face[std::size_t(e)])
+            twin[std::size_t(e)] = opposite;
+        else if (!degenerate && halves == 1)
+            boundary[std::size_t(e)] = 1;
+        else
+            nonManifold[std::size_t(e)] = anyNonManifold = 1;
     }
     // The fans: the corners at a vertex joined across its manifold edges.
     std::vector<int> parent(static_cast<std::size_t>(count));
@@ -192,7 +100,12 @@ std::optional<ManifoldSheets> manifoldSheets(const Mesh &mesh)
             return std::nullopt;
     }
 
-    sortByEdge();
+    // The half-edges of each edge, sorted by vertex pair (and in half-edge order within one):
+    // the tags and the non-manifold vertices are read by edge.
+    std::vector<std::pair<std::uint64_t, int>> byEdge(static_cast<std::size_t>(count));
+    for (int e = 0; e < count; ++e)
+        byEdge[std::size_t(e)] = {edgeKey(h.from[std::size_t(e)], h.to[std::size_t(e)]), e};
+    std::sort(byEdge.begin(), byEdge.end());
     ManifoldSheets out;
     out.original = std::move(original);
     out.copies = int(out.original.size()) - n;
