@@ -140,11 +140,15 @@ ObjTag parseTag(const Words &w, std::size_t line, const Where &where)
                    where(), tag.name, shown(counts));
         at = slash + 1;
     }
-    if ((long long)w.size() != 3 + count[0] + count[1] + count[2])
+    // Each count against the words there are before any sum: counts near 2^63 (a fuzzer's
+    // find) must not overflow.
+    const long long words = static_cast<long long>(w.size()) - 3;
+    const bool fits = count[0] <= words && count[1] <= words && count[2] <= words;
+    if (!fits || count[0] + count[1] + count[2] != words)
         refuse(coreTranslate("awb::mesh",
                              "%1: the tag 't %2' announces %3 values but has %4"),
-               where(), tag.name, count[0] + count[1] + count[2],
-               static_cast<long long>(w.size()) - 3);
+               where(), tag.name,
+               fits ? std::to_string(count[0] + count[1] + count[2]) : shown(counts), words);
     std::size_t k = 3;
     for (long long i = 0; i < count[0]; ++i, ++k) {
         long long v = 0;
