@@ -88,6 +88,7 @@ private slots:
     void netsAreMatchedUpToTranslation();
     void badNetsAreNamed();
     void meshDrawsTheImagesAgain();
+    void netPointMovesTheMeshByItsWeights();
     void pinholesCloseInsideNotOutside();
 };
 
@@ -543,6 +544,85 @@ void TestSurfaces::meshDrawsTheImagesAgain()
     QCOMPARE(surfaceMeshDepth(f, start, 8, 300), 2);
     QCOMPARE(surfaceMeshDepth(f, start, 2, 1e9), 2);
     QCOMPARE(surfaceMeshDepth(f, start, 8, 0.5), 0);
+}
+
+// A mesh built with a control point's weights follows that point's move without iterating:
+// exactly when the start set's coefficients on the net do not depend on the net (the corner
+// limits, lambda P: the mesh is then the attractor's own triangulation), and within the
+// contraction of the start set's own move otherwise (a triangle of plane points, as in 000
+// Fig. 7), which the depth makes sub-pixel.
+void TestSurfaces::netPointMovesTheMeshByItsWeights()
+{
+    const LatticeScheme s = loopScheme();
+    const PatchLayout layout = patchLayout(s, "hexagon");
+    const SurfaceMatrices m = surfaceMatrices(s, layout);
+    const Mat P = randomNet(s, m.net, 5);
+    const SurfaceIfs before = buildSurfaceIfs(s, layout, m, m.net, P);
+    const Projection net = before.ifs.netCoordinates();
+    QCOMPARE(net.V.cols(), P.rows());
+    // The coefficients reproduce every drawn point: X V0 = (X N + n) P.
+    const Mat X = before.ifs.toIfsSpace(before.cornerLimitStart);
+    const Mat drawn = (X * before.ifs.ifs.views[0].V).rowwise() + before.ifs.ifs.views[0].c;
+    const Mat coefficients = (X * net.V).rowwise() + net.c;
+    QVERIFY((coefficients * P - drawn).cwiseAbs().maxCoeff() < 1e-12);
+    QVERIFY((coefficients.rowwise().sum().array() - 1.0).abs().maxCoeff() < 1e-12);
+
+    const int j = 9; // the centre of the hexagon
+    const Eigen::Vector3d delta(0.3, -0.2, 0.5);
+    Mat moved = P;
+    moved.row(j) += delta.transpose();
+    const SurfaceIfs after = buildSurfaceIfs(s, layout, m, m.net, moved);
+    const int depth = 3;
+    const auto corners = [](const SurfaceIfs &f) {
+        return StartSet::polygon(f.ifs.toIfsSpace(f.cornerLimitStart));
+    };
+    const SurfaceMesh base = buildSurfaceMesh(before.ifs.ifs, corners(before), depth, {}, {}, 1,
+                                              {}, netWeight(net, j));
+    QCOMPARE(base.weights.size(), base.positions.size() / 3);
+    const SurfaceMesh plain = buildSurfaceMesh(before.ifs.ifs, corners(before), depth, {}, {}, 1);
+    QVERIFY(plain.weights.empty());
+    QVERIFY(plain.positions == base.positions);
+    const SurfaceMesh followed = movedNetPoint(base, delta);
+    const SurfaceMesh rebuilt = buildSurfaceMesh(after.ifs.ifs, corners(after), depth, {}, {}, 1);
+    QCOMPARE(followed.positions.size(), rebuilt.positions.size());
+    double worst = 0;
+    for (std::size_t k = 0; k < rebuilt.positions.size(); ++k)
+        worst = std::max(worst, std::abs(followed.positions[k] - rebuilt.positions[k]));
+    QVERIFY2(worst < 1e-10, qPrintable(QString::number(worst)));
+    QVERIFY(std::abs(followed.area - rebuilt.area) < 1e-9 * rebuilt.area);
+    for (std::size_t k = 0; k < rebuilt.normals.size(); ++k)
+        QVERIFY(std::abs(followed.normals[k] - rebuilt.normals[k]) < 1e-5f);
+
+    // A triangle of plane points (000 Fig. 7's start): X = [t, 0] has coefficients only on the
+    // lifting's four free rows (the barycentric coordinates of t in their tetrahedron), so the
+    // move of any other point is followed exactly, and the move of a free row changes the
+    // start's coefficients: the difference shrinks with the depth like the maps' contraction.
+    Mat triangle(3, 3);
+    triangle << P.row(0), P.row(9), P.row(18);
+    const auto plane = [&](const SurfaceIfs &f) {
+        return StartSet::polygon(f.ifs.toIfsSpace(triangle));
+    };
+    const std::vector<int> &free = before.ifs.lifting.freeRows;
+    const auto gapAfterMoving = [&](int point, int k) {
+        Mat movedNet = P;
+        movedNet.row(point) += delta.transpose();
+        const SurfaceIfs a = buildSurfaceIfs(s, layout, m, m.net, movedNet);
+        const SurfaceMesh b = buildSurfaceMesh(before.ifs.ifs, plane(before), k, {}, {}, 1, {},
+                                               netWeight(net, point));
+        const SurfaceMesh f = movedNetPoint(b, delta);
+        const SurfaceMesh r = buildSurfaceMesh(a.ifs.ifs, plane(a), k, {}, {}, 1);
+        double gap = 0;
+        for (std::size_t i = 0; i < r.positions.size(); ++i)
+            gap = std::max(gap, std::abs(f.positions[i] - r.positions[i]));
+        return gap;
+    };
+    int fixed = 0;
+    while (std::binary_search(free.begin(), free.end(), fixed))
+        ++fixed;
+    QVERIFY(gapAfterMoving(fixed, 3) < 1e-10);
+    const double two = gapAfterMoving(free.front(), 2), four = gapAfterMoving(free.front(), 4);
+    QVERIFY2(two > 1e-6 && two < delta.norm(), qPrintable(QString::number(two)));
+    QVERIFY2(four < two / 2.5, qPrintable(QString("%1 %2").arg(two).arg(four)));
 }
 
 // Splats 3 pixels apart leave gaps of up to 2 pixels between them: fillPinholes closes those

@@ -306,6 +306,16 @@ Mat SubdivisionIfs::toIfsSpace(const Mat &points) const
     return out;
 }
 
+Projection SubdivisionIfs::netCoordinates() const
+{
+    const Eigen::Index m = controlPoints.rows();
+    if (barycentric() && ifs.dim() == m)
+        return {Mat::Identity(m, m), RowVec::Zero(m)};
+    if (barycentric() || !lifting.invertible || lifting.inverse.rows() != m || ifs.dim() != m - 1)
+        return {};
+    return {lifting.inverse.topRows(m - 1), lifting.inverse.row(m - 1)};
+}
+
 Ifs blockUnion(const std::vector<Ifs> &components)
 {
     if (components.empty())

@@ -89,6 +89,11 @@ struct SubdivisionIfs {
     // Plane points get zero extra lifted coordinates; in barycentric form the least-norm
     // barycentric coordinates are used (any choice gives the same attractor).
     Mat toIfsSpace(const Mat &points) const;
+    // A point X of the IFS space is drawn as c P, with c = X V + c0 its coefficients on the
+    // control points (1 x m): [X, 1] L^-1 in lifted form, X itself in barycentric form. Empty
+    // (no columns) when P is singular and the form is not barycentric. What a control point's
+    // move does to a drawn point with these coefficients held: it moves by c_j times the move.
+    Projection netCoordinates() const;
 };
 
 enum class IfsForm { Automatic, Lifted, Barycentric };

@@ -30,6 +30,7 @@ void SurfaceMesh::append(const SurfaceMesh &other)
     positions.insert(positions.end(), other.positions.begin(), other.positions.end());
     normals.insert(normals.end(), other.normals.begin(), other.normals.end());
     labels.insert(labels.end(), other.labels.begin(), other.labels.end());
+    weights.insert(weights.end(), other.weights.begin(), other.weights.end());
     area += other.area;
     nonFinite += other.nonFinite;
 }
@@ -45,8 +46,8 @@ SurfaceMesh::Kind surfaceMeshKind(const StartSet &start)
 }
 
 SurfaceMeshSink::SurfaceMeshSink(std::vector<Projection> views, ImageLabel label,
-                                 SurfaceMesh::Kind kind)
-    : m_views(std::move(views)), m_label(std::move(label))
+                                 SurfaceMesh::Kind kind, Projection weight)
+    : m_views(std::move(views)), m_label(std::move(label)), m_weight(std::move(weight))
 {
     mesh.kind = kind;
 }
@@ -54,9 +55,21 @@ SurfaceMeshSink::SurfaceMeshSink(std::vector<Projection> views, ImageLabel label
 void SurfaceMeshSink::consume(const Mat &v, StartSet::Kind, const std::uint8_t *a, int n)
 {
     const std::uint32_t label = m_label ? m_label(a, n) : std::uint32_t(n > 0 ? a[0] : 0);
+    const bool weighted = m_weight.V.cols() == 1 && m_weight.V.rows() == v.cols();
+    if (weighted) {
+        m_vertexWeight.resize(std::size_t(v.rows()));
+        for (Eigen::Index r = 0; r < v.rows(); ++r) {
+            double s = m_weight.c.size() > 0 ? m_weight.c(0) : 0.0;
+            for (Eigen::Index j = 0; j < v.cols(); ++j)
+                s += v(r, j) * m_weight.V(j, 0);
+            m_vertexWeight[std::size_t(r)] = s;
+        }
+    }
     const auto put = [&](const Mat &p, Eigen::Index r) {
         for (int k = 0; k < 3; ++k)
             mesh.positions.push_back(p(r, k));
+        if (weighted)
+            mesh.weights.push_back(m_vertexWeight[std::size_t(r)]);
     };
     for (const Projection &view : m_views) {
         if (view.V.cols() != 3 || view.V.rows() != v.cols())
@@ -118,7 +131,7 @@ void SurfaceMeshSink::consume(const Mat &v, StartSet::Kind, const std::uint8_t *
 
 SurfaceMesh buildSurfaceMesh(const Ifs &ifs, const StartSet &start, int depth,
                              const ImageLabel &label, const IterationControl &control,
-                             int threads, const OwnIteration &own)
+                             int threads, const OwnIteration &own, const Projection &weight)
 {
     if (!own.iterate)
         checkIterateInputs(ifs, start, depth);
@@ -132,7 +145,8 @@ SurfaceMesh buildSurfaceMesh(const Ifs &ifs, const StartSet &start, int depth,
     std::vector<AttractorSink *> raw;
     for (int t = 0; t < n; ++t) {
         sinks.push_back(
-            std::make_unique<SurfaceMeshSink>(ifs.views, label, kind));
+            std::make_unique<SurfaceMeshSink>(ifs.views, label, kind,
+                                              own.iterate ? Projection{} : weight));
         raw.push_back(sinks.back().get());
     }
     const IterationStats stats = own.iterate ? own.iterate(start, depth, raw, control)
@@ -147,11 +161,63 @@ SurfaceMesh buildSurfaceMesh(const Ifs &ifs, const StartSet &start, int depth,
         primitives += s->mesh.size();
     mesh.positions.reserve(primitives * std::size_t(3 * mesh.vertices()));
     mesh.labels.reserve(primitives);
+    if (!sinks.empty() && !sinks.front()->mesh.weights.empty())
+        mesh.weights.reserve(primitives * std::size_t(mesh.vertices()));
     if (mesh.kind == SurfaceMesh::Kind::Triangles)
         mesh.normals.reserve(3 * primitives);
     for (const auto &s : sinks)
         mesh.append(s->mesh);
     return mesh;
+}
+
+Projection netWeight(const Projection &netCoordinates, int j)
+{
+    if (j < 0 || j >= netCoordinates.V.cols())
+        return {};
+    Projection w;
+    w.V = netCoordinates.V.col(j);
+    w.c = RowVec::Constant(1, netCoordinates.c.size() > j ? netCoordinates.c(j) : 0.0);
+    return w;
+}
+
+SurfaceMesh movedNetPoint(const SurfaceMesh &base, const Eigen::Vector3d &delta)
+{
+    SurfaceMesh out;
+    out.kind = base.kind;
+    out.depth = base.depth;
+    out.nonFinite = base.nonFinite;
+    out.labels = base.labels;
+    out.weights = base.weights;
+    out.positions.resize(base.positions.size());
+    const std::size_t vertices = base.positions.size() / 3;
+    if (base.weights.size() != vertices) {
+        out.positions = base.positions;
+        out.normals = base.normals;
+        out.area = base.area;
+        return out;
+    }
+    const double *from = base.positions.data();
+    double *to = out.positions.data();
+    for (std::size_t v = 0; v < vertices; ++v) {
+        const double w = base.weights[v];
+        to[3 * v] = from[3 * v] + w * delta.x();
+        to[3 * v + 1] = from[3 * v + 1] + w * delta.y();
+        to[3 * v + 2] = from[3 * v + 2] + w * delta.z();
+    }
+    if (out.kind != SurfaceMesh::Kind::Triangles)
+        return out;
+    const std::size_t triangles = out.labels.size();
+    out.normals.resize(3 * triangles);
+    for (std::size_t t = 0; t < triangles; ++t) {
+        const Eigen::Map<const Eigen::Vector3d> a(to + 9 * t), b(to + 9 * t + 3), c(to + 9 * t + 6);
+        Eigen::Vector3d normal = (b - a).cross(c - a);
+        const double len = normal.norm();
+        out.area += 0.5 * len;
+        normal = len > 0 ? Eigen::Vector3d(normal / len) : Eigen::Vector3d::Zero();
+        for (int k = 0; k < 3; ++k)
+            out.normals[3 * t + std::size_t(k)] = float(normal[k]);
+    }
+    return out;
 }
 
 int surfaceMeshDepth(const Ifs &ifs, const StartSet &start, int depth, double budget,

@@ -21,6 +21,9 @@ struct SurfaceMesh {
     std::vector<double> positions;      // 3 per vertex, vertices() per primitive
     std::vector<float> normals;         // 3 per primitive (triangles; zero when degenerate)
     std::vector<std::uint32_t> labels;  // colour index per primitive
+    // Built with a weight (buildSurfaceMesh's `weight`): each vertex's coefficient on one
+    // control point (SubdivisionIfs::netCoordinates), 1 per vertex; empty otherwise.
+    std::vector<double> weights;
     int depth = 0;
     double area = 0.0;                  // total area of the triangles
     std::uint64_t nonFinite = 0;        // images left out: a coordinate was NaN or infinite
@@ -39,14 +42,18 @@ using ImageLabel = std::function<std::uint32_t(const std::uint8_t *address, int 
 // Collects the images it is fed (one sink per thread; append the results in thread order).
 class SurfaceMeshSink : public AttractorSink {
 public:
-    SurfaceMeshSink(std::vector<Projection> views, ImageLabel label, SurfaceMesh::Kind kind);
+    // `weight` (D x 1 and its constant; no columns: none) gives each vertex its weight.
+    SurfaceMeshSink(std::vector<Projection> views, ImageLabel label, SurfaceMesh::Kind kind,
+                    Projection weight = {});
     void consume(const Mat &v, StartSet::Kind k, const std::uint8_t *a, int n) override;
     SurfaceMesh mesh;
 
 private:
     std::vector<Projection> m_views;
     ImageLabel m_label;
-    Mat m_projected;  // the image through a view, reused
+    Projection m_weight;
+    Mat m_projected;                // the image through a view, reused
+    std::vector<double> m_vertexWeight;  // the image's vertices' weights, reused
 };
 
 // What an image of `start` becomes: points, segments or triangles.
@@ -65,10 +72,23 @@ struct OwnIteration {
 };
 
 // F^depth(start) through ifs.views (3 columns each) on `threads` threads (0: all cores).
-// Throws InputError like iterate(); an empty mesh when control.cancel stopped it.
+// Throws InputError like iterate(); an empty mesh when control.cancel stopped it. With a
+// `weight` (one column: a control point's column of SubdivisionIfs::netCoordinates) every
+// vertex also gets its weight (not with `own`, whose points are not of the IFS space).
 SurfaceMesh buildSurfaceMesh(const Ifs &ifs, const StartSet &start, int depth,
                              const ImageLabel &label, const IterationControl &control = {},
-                             int threads = 0, const OwnIteration &own = {});
+                             int threads = 0, const OwnIteration &own = {},
+                             const Projection &weight = {});
+
+// The weight of control point `j` as buildSurfaceMesh takes it: column j of the coefficients.
+Projection netWeight(const Projection &netCoordinates, int j);
+
+// `base` (built with a weight) drawn after its control point moved by `delta`, each image's
+// coefficients on the control points held: every vertex moves by its weight times `delta`,
+// and the normals and the area follow. For a lifted IFS this is F^k of the start set carried
+// along with the net, sub-pixel from F^k(start) at the view's depths: what a drag of a net
+// point shows at full detail in O(vertices) per move, until the release builds F^k(start).
+SurfaceMesh movedNetPoint(const SurfaceMesh &base, const Eigen::Vector3d &delta);
 
 // The largest depth <= `depth` whose primitives (images times the primitives of one image;
 // with `own`, its points) number at most `budget` (at least 0).

@@ -15,6 +15,37 @@ namespace {
 constexpr double degree = M_PI / 180.0;
 constexpr float empty = -std::numeric_limits<float>::infinity();
 
+// Buffers of rasters destroyed on this thread, taken again by the next ones.
+template <class T>
+std::vector<std::vector<T>> &pool()
+{
+    thread_local std::vector<std::vector<T>> buffers;
+    return buffers;
+}
+
+template <class T>
+std::vector<T> recycled(std::size_t n, T value)
+{
+    auto &buffers = pool<T>();
+    for (auto it = buffers.begin(); it != buffers.end(); ++it)
+        if (it->capacity() >= n && it->capacity() <= 4 * n + 4096) {
+            std::vector<T> v = std::move(*it);
+            buffers.erase(it);
+            v.assign(n, value);
+            return v;
+        }
+    return std::vector<T>(n, value);
+}
+
+template <class T>
+void giveBack(std::vector<T> &v)
+{
+    auto &buffers = pool<T>();
+    if (v.capacity() == 0 || buffers.size() >= 4)
+        return;
+    buffers.push_back(std::move(v));
+}
+
 } // namespace
 
 Eigen::Vector3d OrthoCamera::toward() const
@@ -61,8 +92,15 @@ SurfaceRaster::SurfaceRaster(int width, int height, const OrthoCamera &camera,
       m_views(std::move(views)), m_labels(std::move(labels)), m_radius(pointRadius),
       m_pixelsPerUnit(0.5 * m_h / camera.halfHeight), m_right(camera.right()),
       m_up(camera.up()), m_toward(camera.toward()),
-      m_depth(std::size_t(m_w) * m_h, empty), m_label(std::size_t(m_w) * m_h, 0)
+      m_depth(recycled<float>(std::size_t(m_w) * m_h, empty)),
+      m_label(recycled<std::uint32_t>(std::size_t(m_w) * m_h, 0u))
 {
+}
+
+SurfaceRaster::~SurfaceRaster()
+{
+    giveBack(m_depth);
+    giveBack(m_label);
 }
 
 Eigen::Vector3d SurfaceRaster::toScreen(const Eigen::Vector3d &p) const
@@ -143,18 +181,51 @@ void SurfaceRaster::triangle(const Eigen::Vector3d &a, const Eigen::Vector3d &b,
         splat((a + b + c) / 3.0, label);
         return;
     }
-    const auto edge = [](const Eigen::Vector3d &p, const Eigen::Vector3d &q, double x, double y) {
-        return (q.x() - p.x()) * (y - p.y()) - (q.y() - p.y()) * (x - p.x());
-    };
-    for (int y = y0; y <= y1; ++y)
-        for (int x = x0; x <= x1; ++x) {
-            const double px = x + 0.5, py = y + 0.5;
-            const double w0 = edge(b, c, px, py) / area, w1 = edge(c, a, px, py) / area;
-            const double w2 = 1.0 - w0 - w1;
-            if (w0 < -1e-9 || w1 < -1e-9 || w2 < -1e-9)
-                continue;
-            plot(x, y, float(w0 * a.z() + w1 * b.z() + w2 * c.z()), label);
+    // The barycentric weights as affine functions of the pixel centre, w_k = A_k x + B_k y +
+    // C_k, and each row's span where all three are >= 0 found from them (widened by a pixel
+    // against rounding, the test per pixel decides): a thin or slanted triangle costs its
+    // pixels, not its bounding box, and a pixel costs two multiply-adds and no division.
+    const double inv = 1.0 / area;
+    const double A0 = -(c.y() - b.y()) * inv, B0 = (c.x() - b.x()) * inv;
+    const double C0 = -(A0 * b.x() + B0 * b.y());
+    const double A1 = -(a.y() - c.y()) * inv, B1 = (a.x() - c.x()) * inv;
+    const double C1 = -(A1 * c.x() + B1 * c.y());
+    const double A[3] = {A0, A1, -A0 - A1};
+    constexpr double eps = 1e-9;
+    const double az = a.z(), bz = b.z(), cz = c.z();
+    for (int y = y0; y <= y1; ++y) {
+        const double py = y + 0.5;
+        const double K0 = B0 * py + C0, K1 = B1 * py + C1;
+        const double K[3] = {K0, K1, 1.0 - K0 - K1};
+        double lo = x0 + 0.5, hi = x1 + 0.5;
+        bool none = false;
+        for (int k = 0; k < 3; ++k) {
+            if (A[k] > 0)
+                lo = std::max(lo, (-eps - K[k]) / A[k]);
+            else if (A[k] < 0)
+                hi = std::min(hi, (-eps - K[k]) / A[k]);
+            else if (K[k] < -eps)
+                none = true;
         }
+        if (none || !(lo <= hi + 2.0))
+            continue;
+        const int from = std::max(x0, int(std::ceil(lo - 0.5)) - 1);
+        const int to = std::min(x1, int(std::floor(hi - 0.5)) + 1);
+        float *depth = m_depth.data() + index(0, y);
+        std::uint32_t *labels = m_label.data() + index(0, y);
+        for (int x = from; x <= to; ++x) {
+            const double px = x + 0.5;
+            const double w0 = A0 * px + K0, w1 = A1 * px + K1;
+            const double w2 = 1.0 - w0 - w1;
+            if (w0 < -eps || w1 < -eps || w2 < -eps)
+                continue;
+            const float z = float(w0 * az + w1 * bz + w2 * cz);
+            if (z > depth[x]) {
+                depth[x] = z;
+                labels[x] = label;
+            }
+        }
+    }
 }
 
 void SurfaceRaster::consume(const Mat &v, StartSet::Kind kind, const std::uint8_t *a, int n)
@@ -240,7 +311,9 @@ std::vector<std::uint32_t> drawSurfaceMesh(const SurfaceMesh &mesh, int width, i
     for (int t = 1; t < n; ++t)
         rasters.front()->merge(*rasters[std::size_t(t)]);
     rasters.front()->fillPinholes();
-    return rasters.front()->shade(palette);
+    // Shading is per pixel, whatever the mesh: every thread asked for takes a band.
+    return rasters.front()->shade(palette, 0xffffffu,
+                                  std::clamp(threads > 0 ? threads : hw, 1, hw));
 }
 
 void SurfaceRaster::merge(const SurfaceRaster &other)
@@ -313,7 +386,7 @@ void SurfaceRaster::fillPinholes()
 }
 
 std::vector<std::uint32_t> SurfaceRaster::shade(const std::vector<std::uint32_t> &palette,
-                                                std::uint32_t background) const
+                                                std::uint32_t background, int threads) const
 {
     std::vector<std::uint32_t> out(m_depth.size(), 0xff000000u | background);
     // World units per pixel, and the largest depth step still taken as the same surface.
@@ -343,7 +416,8 @@ std::vector<std::uint32_t> SurfaceRaster::shade(const std::vector<std::uint32_t>
         }
         return 0.0;
     };
-    for (int y = 0; y < m_h; ++y)
+    const auto rows = [&](int from, int to) {
+    for (int y = from; y < to; ++y)
         for (int x = 0; x < m_w; ++x) {
             const std::uint32_t l = m_label[index(x, y)];
             if (!l)
@@ -361,6 +435,14 @@ std::vector<std::uint32_t> SurfaceRaster::shade(const std::vector<std::uint32_t>
             };
             out[index(x, y)] = 0xff000000u | channel(16) | channel(8) | channel(0);
         }
+    };
+    const int n = std::clamp(threads, 1, std::max(1, m_h / 64));
+    std::vector<std::thread> bands;
+    for (int t = 1; t < n; ++t)
+        bands.emplace_back(rows, m_h * t / n, m_h * (t + 1) / n);
+    rows(0, m_h / n);
+    for (std::thread &b : bands)
+        b.join();
     return out;
 }
 

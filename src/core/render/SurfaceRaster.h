@@ -39,6 +39,12 @@ public:
     // the map with address symbol i (empty: i itself). pointRadius in pixels.
     SurfaceRaster(int width, int height, const OrthoCamera &camera, std::vector<Projection> views,
                   std::vector<int> labels = {}, double pointRadius = 1.0);
+    // The buffers go back to a small pool of the thread that destroys the raster, and the
+    // next raster of that thread takes them: frames drawn one after another do not fault in
+    // fresh pages for every picture.
+    ~SurfaceRaster() override;
+    SurfaceRaster(const SurfaceRaster &) = default;
+    SurfaceRaster &operator=(const SurfaceRaster &) = default;
     void consume(const Mat &v, StartSet::Kind k, const std::uint8_t *a, int n) override;
     // Draws primitives [first, last) of a mesh built in advance (the same pixels as consume()
     // of the images they came from; label = 1 + the primitive's colour index).
@@ -63,8 +69,10 @@ public:
     void fillPinholes();
     // palette[i]: colour (0xRRGGBB) of colour index i (cycled); lambert shading from a light
     // above left of the viewer on normals taken from the depth buffer.
+    // `threads` > 1 shades bands of rows at once (the picture is the same).
     std::vector<std::uint32_t> shade(const std::vector<std::uint32_t> &palette,
-                                     std::uint32_t background = 0xffffffu) const;
+                                     std::uint32_t background = 0xffffffu,
+                                     int threads = 1) const;
 
 private:
     std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(m_w) + x; }

@@ -3,6 +3,7 @@
 #include "gui/views/BackgroundPriority.h"
 
 #include "core/ifs/Attractor.h"
+#include "core/ifs/SurfaceIfs.h"
 #include "core/analysis/Geometry.h"
 #include "core/schemes/Scheme.h"
 #include "core/analysis/Spectrum.h"
@@ -460,6 +461,12 @@ void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
     m_surface->setControlNet(P, faces, std::move(sharp), std::move(holes));
     m_surface->setRefinedNet(mesh, meshFaces);
     m_surface->setStartVertices(toMatrix(item->startSet().points, 3));
+    // A lattice surface is drawn from its net linearly: a net point's drag moves the mesh.
+    m_surface->setNetCoordinates(d.surface ? d.surface->ifs.netCoordinates() : Projection{});
+    // Its corner limits tile it: the coarse meshes of a gesture are a closed surface.
+    m_surface->setTilingStart(d.surface && d.surface->cornerLimitStart.rows() >= 3
+                                  ? StartSet::polygon(d.surface->cornerLimitStart)
+                                  : StartSet{});
     try {
         m_surface->setIfs(std::make_shared<const Ifs>(d.ifs), item->coreStartSet(d), d.mapIndex,
                           own);

@@ -20,7 +20,8 @@ namespace awb {
 
 SurfaceView::SurfaceView(QWidget *parent, bool allowGl)
     : QWidget(parent), m_allowGl(allowGl), m_meshWorker(std::make_unique<LatestJobWorker>()),
-      m_frameWorker(std::make_unique<LatestJobWorker>())
+      m_frameWorker(std::make_unique<LatestJobWorker>()),
+      m_baseWorker(std::make_unique<LatestJobWorker>())
 {
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(true);
@@ -45,6 +46,7 @@ SurfaceView::~SurfaceView()
     // Joins the workers before the members their jobs post to go away.
     m_meshWorker.reset();
     m_frameWorker.reset();
+    m_baseWorker.reset();
 }
 
 bool SurfaceView::glAvailable()
@@ -341,8 +343,12 @@ void SurfaceView::startMeshJob()
     const bool haveCoarse = m_meshes.serial == m_dataSerial && m_meshes.coarse;
     const int fullDepth =
         surfaceMeshDepth(*m_ifs, m_start, m_settings.depth, double(m_fullBudget), m_own);
-    const int coarseDepth =
-        surfaceMeshDepth(*m_ifs, m_start, m_settings.depth, double(m_movingBudget), m_own);
+    // Coarse meshes start from the tiling start when there is one (a closed surface at any
+    // depth, not a cloud of small images); then they are never the full mesh.
+    const StartSet &coarseFrom = coarseStart();
+    const int coarseDepth = surfaceMeshDepth(*m_ifs, coarseFrom, m_settings.depth,
+                                             coarseBudget(), m_own);
+    const bool coarseIsFull = &coarseFrom == &m_start && coarseDepth == fullDepth;
     const std::uint64_t serial = m_dataSerial;
     const QPoint input = m_inputGlobal;
     const bool fromDrag =
@@ -353,6 +359,7 @@ void SurfaceView::startMeshJob()
     OwnIteration own = m_own;
     own.identity.reset();
     const StartSet start = m_start;
+    const StartSet coarseFromCopy = coarseFrom;
     const ImageLabel label = colours().label;
     // While a point moves, the coarse mesh being built ends and shows (a frame a little
     // behind the pointer beats none: cancelling each would starve the drag); a full build is
@@ -384,20 +391,32 @@ void SurfaceView::startMeshJob()
             emit frameReady();
         });
     };
-    m_meshWorker->post([ifs, own, start, label, fullDepth, coarseDepth, moving, haveCoarse,
+    // A net point dragged from a base with its weights: the full mesh moved, in O(vertices).
+    if (const auto delta = moving ? dragBaseMove() : std::nullopt) {
+        m_meshWorker->post([base = m_dragBase.mesh, d = *delta, deliver](
+                               const std::atomic<bool> &) {
+            QElapsedTimer timer;
+            timer.start();
+            deliver(std::make_shared<SurfaceMesh>(movedNetPoint(*base, d)), false,
+                    timer.nsecsElapsed() * 1e-9);
+        }, cancelRunning);
+        return;
+    }
+    m_meshWorker->post([ifs, own, start, coarseFromCopy, label, fullDepth, coarseDepth,
+                        coarseIsFull, moving, haveCoarse,
                         deliver](const std::atomic<bool> &cancel) {
         QElapsedTimer timer;
         timer.start();
         IterationControl control;
         control.cancel = &cancel;
         try {
-            if (moving || (coarseDepth < fullDepth && !haveCoarse)) {
+            if (moving || (!coarseIsFull && !haveCoarse)) {
                 auto coarse = std::make_shared<SurfaceMesh>(
-                    buildSurfaceMesh(*ifs, start, coarseDepth, label, control, 0, own));
+                    buildSurfaceMesh(*ifs, coarseFromCopy, coarseDepth, label, control, 0, own));
                 if (cancel)
                     return;
-                deliver(coarse, coarseDepth == fullDepth, timer.nsecsElapsed() * 1e-9);
-                if (moving || coarseDepth == fullDepth)
+                deliver(coarse, coarseIsFull, timer.nsecsElapsed() * 1e-9);
+                if (moving || coarseIsFull)
                     return;
             }
             auto full = std::make_shared<SurfaceMesh>(
@@ -409,6 +428,60 @@ void SurfaceView::startMeshJob()
             deliver(std::make_shared<SurfaceMesh>(), true, timer.nsecsElapsed() * 1e-9);
         }
     }, cancelRunning);
+}
+
+void SurfaceView::startDragBase(int point)
+{
+    dropDragBase();
+    if (!hasImages() || m_own.iterate || m_ifs->views.size() != 1
+        || m_netCoordinates.V.rows() != m_ifs->dim() || m_netCoordinates.V.cols() != m_net.rows())
+        return;
+    const Projection weight = netWeight(m_netCoordinates, point);
+    if (weight.V.cols() != 1)
+        return;
+    // At the moving budget, from the coarse meshes' start: the drag draws what it drew, moved.
+    const int depth = surfaceMeshDepth(*m_ifs, coarseStart(), m_settings.depth, coarseBudget(),
+                                       m_own);
+    m_baseWorker->post([this, ifs = m_ifs, start = coarseStart(), label = colours().label, depth,
+                        weight, point, net = m_net](const std::atomic<bool> &cancel) {
+        IterationControl control;
+        control.cancel = &cancel;
+        std::shared_ptr<const SurfaceMesh> mesh;
+        try {
+            mesh = std::make_shared<SurfaceMesh>(
+                buildSurfaceMesh(*ifs, start, depth, label, control, 0, {}, weight));
+        } catch (const std::exception &) {
+            return; // the drag's coarse meshes say what is wrong
+        }
+        if (cancel || mesh->empty())
+            return;
+        m_inbox.post([this, mesh, point, net] {
+            if (m_drag.kind != DragKind::ControlPoint || m_drag.index != point)
+                return; // released (or another drag) meanwhile
+            m_dragBase = DragBase{mesh, point, net};
+            if (!m_dataTimer.isActive() && dragBaseMove())
+                startMeshJob(); // the moves so far, at full detail now
+        });
+    });
+}
+
+void SurfaceView::dropDragBase()
+{
+    m_dragBase = DragBase{};
+    m_baseWorker->post([](const std::atomic<bool> &) {}, true);
+}
+
+std::optional<Eigen::Vector3d> SurfaceView::dragBaseMove() const
+{
+    const DragBase &b = m_dragBase;
+    if (!b.mesh || m_drag.kind != DragKind::ControlPoint || m_drag.index != b.point
+        || m_own.iterate || m_net.rows() != b.net.rows() || m_net.cols() != 3
+        || b.net.cols() != 3)
+        return std::nullopt;
+    for (Eigen::Index r = 0; r < m_net.rows(); ++r)
+        if (r != b.point && m_net.row(r) != b.net.row(r))
+            return std::nullopt;
+    return Eigen::Vector3d((m_net.row(b.point) - b.net.row(b.point)).transpose());
 }
 
 std::shared_ptr<const SurfaceMesh> SurfaceView::frameMesh() const

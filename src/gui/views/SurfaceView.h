@@ -83,6 +83,16 @@ public:
     // Items drawn by their own iteration (mesh items) add `own` (core/render/SurfaceMesh.h).
     void setIfs(std::shared_ptr<const Ifs> ifs, const StartSet &start,
                 std::vector<int> colourIndex = {}, OwnIteration own = {});
+    // How a point of the IFS space is drawn from the control net (SubdivisionIfs::
+    // netCoordinates; no columns: unknown). Set before setIfs. With it, a drag of a net point
+    // draws the coarse mesh of the press moved by each vertex's weight (core movedNetPoint)
+    // instead of iterating again for every move.
+    void setNetCoordinates(Projection coordinates) { m_netCoordinates = std::move(coordinates); }
+    // A start set whose images tile the attractor (a lattice patch's corner limits, SurfaceIfs::
+    // cornerLimitStart; empty: none), set before setIfs: the coarse meshes drawn while
+    // something moves start from it, a closed surface at any depth instead of the scattered
+    // small images of the item's own start set (issue 47: a dot cloud during a drag).
+    void setTilingStart(StartSet start) { m_tilingStart = std::move(start); }
     // The control net: points n x 3 and faces (index lists); empty to hide. `sharp`: its sharp
     // edges (a mesh's creases, issue 44) as vertex pairs with their sharpness, drawn over it.
     void setControlNet(const Mat &points, const std::vector<std::vector<int>> &faces,
@@ -277,7 +287,7 @@ private:
     QWidget *m_glContainer = nullptr;
 
     ThreadInbox m_inbox{this}; // the workers' results; declared before them, so it outlives them
-    std::unique_ptr<LatestJobWorker> m_meshWorker, m_frameWorker;
+    std::unique_ptr<LatestJobWorker> m_meshWorker, m_frameWorker, m_baseWorker;
     std::shared_ptr<const Ifs> m_ifs;
     OwnIteration m_own;
     // Whether there is anything to iterate: maps and a start set, or the item's own iteration.
@@ -307,6 +317,35 @@ private:
     QTimer m_dataTimer;          // coalesces edits into one job
 
     MeshState m_meshes;
+    // The full mesh of the data a net-point drag started from, with the dragged point's
+    // weights (built on m_baseWorker at the press): each move draws it moved; the release
+    // builds the exact one.
+    struct DragBase {
+        std::shared_ptr<const SurfaceMesh> mesh;
+        int point = -1;
+        Mat net;  // the net it was built of
+    };
+    DragBase m_dragBase;
+    Projection m_netCoordinates;
+    StartSet m_tilingStart;
+    // The coarse meshes' primitives at most: a tiling start's triangles cover the whole
+    // surface (each pixel several times where a patch's pieces overlap, 1.5x per level for
+    // Loop's hexagon), where a small start's are specks, so they get a quarter of the budget.
+    double coarseBudget() const
+    {
+        return double(m_movingBudget) / (&coarseStart() == &m_tilingStart ? 4.0 : 1.0);
+    }
+    const StartSet &coarseStart() const
+    {
+        return m_tilingStart.vertices.rows() > 0 && m_tilingStart.vertices.cols() == m_start.vertices.cols()
+                       && !m_own.iterate
+                   ? m_tilingStart
+                   : m_start;
+    }
+    void startDragBase(int point);
+    void dropDragBase();
+    // The dragged point's move since the base, when only it moved; nothing otherwise.
+    std::optional<Eigen::Vector3d> dragBaseMove() const;
     std::uint64_t m_dataSerial = 0;  // bumped by every data change
     double m_meshSeconds = 0.0;
     bool m_meshBusy = false, m_frameBusy = false;

@@ -199,6 +199,7 @@ void SurfaceView::mousePressEvent(QMouseEvent *event)
         m_drag.startWorld = m_drag.currentWorld = QVector3D(
             float(m_net(c, 0)), float(m_net(c, 1)), float(m_net(c, 2)));
         m_cameraSet = true; // the view must not refit under the user's hand
+        startDragBase(c);
         emit controlPointPressed(c);
     } else if (s >= 0) {
         m_drag.kind = DragKind::StartVertex;
@@ -257,6 +258,7 @@ void SurfaceView::mouseReleaseEvent(QMouseEvent *event)
         // dock up to date on this thread) then runs beside it instead of before it. The
         // gesture this drag made ends with it (setGestureActive(false) follows).
         m_externalGesture = false;
+        dropDragBase();
         startMeshJob();
     }
     if (drag.kind == DragKind::ControlPoint)
