@@ -7838,7 +7838,7 @@ meze: %9
     </message>
     <message>
         <source>The item.</source>
-        <translation>Položka.</translation>
+        <translation type="vanished">Položka.</translation>
     </message>
     <message>
         <source>Iteration depth (default: the item&apos;s).</source>
@@ -7858,7 +7858,7 @@ meze: %9
     </message>
     <message>
         <source>--item NAME is required</source>
-        <translation>--item NAME je povinné</translation>
+        <translation type="vanished">--item NAME je povinné</translation>
     </message>
     <message>
         <source>--csv is required (the only output format)</source>
@@ -8222,7 +8222,7 @@ Volby jednotlivých příkazů vypíše &apos;attractor-cli &lt;command&gt; --he
     </message>
     <message>
         <source>--item NAME, --format ply|obj|ifs|flame|matlab and --out FILE are required</source>
-        <translation>jsou vyžadovány --item NÁZEV, --format ply|obj|ifs|flame|matlab a --out SOUBOR</translation>
+        <translation type="vanished">jsou vyžadovány --item NÁZEV, --format ply|obj|ifs|flame|matlab a --out SOUBOR</translation>
     </message>
     <message>
         <source>--format must be ply, obj, ifs, flame or matlab, got &apos;%1&apos;</source>
@@ -8671,6 +8671,22 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     <message>
         <source>attractor-cli: note: the mesh is %1%2</source>
         <translation>attractor-cli: poznámka: síť je %1%2</translation>
+    </message>
+    <message>
+        <source>… (%1 in all)</source>
+        <translation>… (celkem %1)</translation>
+    </message>
+    <message>
+        <source>--item NAME is required: %1 has %2 items with an attractor: %3</source>
+        <translation>--item NÁZEV je povinný: %1 má %2 položek s atraktorem: %3</translation>
+    </message>
+    <message>
+        <source>The item (needed when the project has several).</source>
+        <translation>Položka (nutná, má-li projekt více položek).</translation>
+    </message>
+    <message>
+        <source>--format ply|obj|ifs|flame|matlab and --out FILE are required</source>
+        <translation>--format ply|obj|ifs|flame|matlab a --out SOUBOR jsou povinné</translation>
     </message>
 </context>
 <context>

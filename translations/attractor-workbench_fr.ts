@@ -7827,7 +7827,7 @@ limites&#xa0;: %9
     </message>
     <message>
         <source>The item.</source>
-        <translation>L’élément.</translation>
+        <translation type="vanished">L’élément.</translation>
     </message>
     <message>
         <source>Iteration depth (default: the item&apos;s).</source>
@@ -7847,7 +7847,7 @@ limites&#xa0;: %9
     </message>
     <message>
         <source>--item NAME is required</source>
-        <translation>--item NOM est obligatoire</translation>
+        <translation type="vanished">--item NOM est obligatoire</translation>
     </message>
     <message>
         <source>--csv is required (the only output format)</source>
@@ -8209,7 +8209,7 @@ Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les
     </message>
     <message>
         <source>--item NAME, --format ply|obj|ifs|flame|matlab and --out FILE are required</source>
-        <translation>--item NOM, --format ply|obj|ifs|flame|matlab et --out FICHIER sont obligatoires</translation>
+        <translation type="vanished">--item NOM, --format ply|obj|ifs|flame|matlab et --out FICHIER sont obligatoires</translation>
     </message>
     <message>
         <source>--format must be ply, obj, ifs, flame or matlab, got &apos;%1&apos;</source>
@@ -8658,6 +8658,22 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     <message>
         <source>attractor-cli: note: the mesh is %1%2</source>
         <translation>attractor-cli: note : le maillage est %1%2</translation>
+    </message>
+    <message>
+        <source>… (%1 in all)</source>
+        <translation>… (%1 en tout)</translation>
+    </message>
+    <message>
+        <source>--item NAME is required: %1 has %2 items with an attractor: %3</source>
+        <translation>--item NOM est requis : %1 a %2 éléments avec un attracteur : %3</translation>
+    </message>
+    <message>
+        <source>The item (needed when the project has several).</source>
+        <translation>L’élément (requis quand le projet en a plusieurs).</translation>
+    </message>
+    <message>
+        <source>--format ply|obj|ifs|flame|matlab and --out FILE are required</source>
+        <translation>--format ply|obj|ifs|flame|matlab et --out FICHIER sont requis</translation>
     </message>
 </context>
 <context>

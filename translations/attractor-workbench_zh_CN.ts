@@ -7816,7 +7816,7 @@ bounds: %9
     </message>
     <message>
         <source>The item.</source>
-        <translation>对象。</translation>
+        <translation type="vanished">对象。</translation>
     </message>
     <message>
         <source>Iteration depth (default: the item&apos;s).</source>
@@ -7836,7 +7836,7 @@ bounds: %9
     </message>
     <message>
         <source>--item NAME is required</source>
-        <translation>必须提供 --item NAME</translation>
+        <translation type="vanished">必须提供 --item NAME</translation>
     </message>
     <message>
         <source>--csv is required (the only output format)</source>
@@ -8196,7 +8196,7 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>--item NAME, --format ply|obj|ifs|flame|matlab and --out FILE are required</source>
-        <translation>必须指定 --item 名称、--format ply|obj|ifs|flame|matlab 和 --out 文件</translation>
+        <translation type="vanished">必须指定 --item 名称、--format ply|obj|ifs|flame|matlab 和 --out 文件</translation>
     </message>
     <message>
         <source>--format must be ply, obj, ifs, flame or matlab, got &apos;%1&apos;</source>
@@ -8645,6 +8645,22 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>attractor-cli: note: the mesh is %1%2</source>
         <translation>attractor-cli: 注意：该网格为%1%2</translation>
+    </message>
+    <message>
+        <source>… (%1 in all)</source>
+        <translation>……（共 %1 个）</translation>
+    </message>
+    <message>
+        <source>--item NAME is required: %1 has %2 items with an attractor: %3</source>
+        <translation>需要 --item 名称：%1 有 %2 个带吸引子的对象：%3</translation>
+    </message>
+    <message>
+        <source>The item (needed when the project has several).</source>
+        <translation>对象（项目有多个对象时必需）。</translation>
+    </message>
+    <message>
+        <source>--format ply|obj|ifs|flame|matlab and --out FILE are required</source>
+        <translation>需要 --format ply|obj|ifs|flame|matlab 和 --out 文件</translation>
     </message>
 </context>
 <context>

@@ -76,6 +76,30 @@ AttractorItem *attractorItem(const Project &project, const QString &name)
     throw Failure{CliTr::tr("%1 has no item with an attractor").arg(project.fileName())};
 }
 
+AttractorItem *namedOrOnlyAttractorItem(const Project &project, const QString &name)
+{
+    if (!name.isEmpty())
+        return attractorItem(project, name);
+    QList<AttractorItem *> items;
+    for (Item *item : project.items())
+        if (auto *a = qobject_cast<AttractorItem *>(item))
+            items << a;
+    if (items.size() == 1)
+        return items.front();
+    if (items.isEmpty())
+        throw Failure{CliTr::tr("%1 has no item with an attractor").arg(project.fileName())};
+    QStringList names;
+    for (int i = 0; i < items.size() && i < 8; ++i)
+        names << QLatin1Char('\'') + items[i]->name() + QLatin1Char('\'');
+    if (items.size() > 8)
+        names << CliTr::tr("… (%1 in all)").arg(items.size());
+    throw Failure{CliTr::tr("--item NAME is required: %1 has %2 items with an attractor: %3")
+                      .arg(project.fileName())
+                      .arg(items.size())
+                      .arg(names.join(QStringLiteral(", "))),
+                  2};
+}
+
 std::shared_ptr<const DerivedIfs> derived(const AttractorItem *item)
 {
     auto d = item->derivedIfs();

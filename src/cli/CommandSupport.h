@@ -46,6 +46,9 @@ void load(Project &project, const QString &file);
 void save(Project &project, const QCommandLineParser &parser);
 // The item named `name` (the first item with an attractor when empty).
 AttractorItem *attractorItem(const Project &project, const QString &name);
+// The item `name`, or without a name the project's only item with an attractor; a project of
+// several such items needs --item, and the message lists their names (exit 2).
+AttractorItem *namedOrOnlyAttractorItem(const Project &project, const QString &name);
 std::shared_ptr<const DerivedIfs> derived(const AttractorItem *item);
 int intOption(const QCommandLineParser &parser, const QString &name, int lo, int hi);
 // --scheme of the mesh commands: catmull-clark or loop (exit 2 otherwise).

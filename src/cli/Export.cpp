@@ -99,7 +99,7 @@ int exportData(const QStringList &args)
                       "the frame of render's --size and --bounds (flame); or its matrices S_i, "
                       "M_i, A_i as MATLAB cell arrays for the JSR toolbox (matlab)."));
         parser.addPositionalArgument("project", CliTr::tr("The .awb project file."));
-        parser.addOptions({{"item", CliTr::tr("The item."), "name"},
+        parser.addOptions({{"item", CliTr::tr("The item (needed when the project has several)."), "name"},
                            {"format", CliTr::tr("ply (attractor points), obj (subdivided "
                                                 "mesh), ifs (Fractint), flame (flam3) or "
                                                 "matlab (matrices)."),
@@ -113,11 +113,9 @@ int exportData(const QStringList &args)
                             "50000000"}});
         parser.addOptions(frameOptionList());
         parseOrFail(parser, args, 1);
-        if (!parser.isSet("item") || !parser.isSet("out") || !parser.isSet("format"))
+        if (!parser.isSet("out") || !parser.isSet("format"))
             throw Failure{
-                CliTr::tr("--item NAME, --format ply|obj|ifs|flame|matlab and --out FILE are "
-                          "required"),
-                2};
+                CliTr::tr("--format ply|obj|ifs|flame|matlab and --out FILE are required"), 2};
         const QString format = parser.value("format").toLower();
         if (format != "ply" && format != "obj" && format != "ifs" && format != "flame"
             && format != "matlab")
@@ -126,7 +124,7 @@ int exportData(const QStringList &args)
                 2};
         Project project;
         load(project, parser.positionalArguments().first());
-        AttractorItem *item = attractorItem(project, parser.value("item"));
+        AttractorItem *item = namedOrOnlyAttractorItem(project, parser.value("item"));
         auto d = derived(item);
         const QString outFile = parser.value("out");
         WholeFileWriter writer;

@@ -57,7 +57,7 @@ int points(const QStringList &args)
                    "applied last (1-based), and the view. --address w limits them to the sub-copy "
                    "f_w(A): the points f_w(F^k(X0))."));
         parser.addPositionalArgument("project", CliTr::tr("The .awb project file."));
-        parser.addOptions({{"item", CliTr::tr("The item."), "name"},
+        parser.addOptions({{"item", CliTr::tr("The item (needed when the project has several)."), "name"},
                            {"depth", CliTr::tr("Iteration depth (default: the item's)."), "k"},
                            {"start", CliTr::tr("Start set: point:x,y | segment:x1,y1,x2,y2 | "
                                             "triangle:... | polygon:... | points:... (plane "
@@ -75,13 +75,11 @@ int points(const QStringList &args)
                            {"max-points", CliTr::tr("Refuse to print more (default 10000000)."), "n",
                             "10000000"}});
         parseOrFail(parser, args, 1);
-        if (!parser.isSet("item"))
-            throw Failure{CliTr::tr("--item NAME is required"), 2};
         if (!parser.isSet("csv"))
             throw Failure{CliTr::tr("--csv is required (the only output format)"), 2};
         Project project;
         load(project, parser.positionalArguments().first());
-        AttractorItem *item = attractorItem(project, parser.value("item"));
+        AttractorItem *item = namedOrOnlyAttractorItem(project, parser.value("item"));
         auto d = derived(item);
         const int depth = parser.isSet("depth") ? intOption(parser, "depth", 0, 64)
                                                 : item->algorithm().depth;

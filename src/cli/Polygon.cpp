@@ -57,18 +57,16 @@ int polygon(const QStringList &args)
                    "\"points\"}: the figures of 001 for a normal-vector item (eq. (1) applied K "
                    "times), classic subdivision S_w P for a subdivision curve."));
         parser.addPositionalArgument("project", CliTr::tr("The .awb project file."));
-        parser.addOptions({{"item", CliTr::tr("The item."), "name"},
+        parser.addOptions({{"item", CliTr::tr("The item (needed when the project has several)."), "name"},
                            {"level", CliTr::tr("Subdivision steps K (0: the control "
                                             "polygon)."), "k", "0"},
                            {"json", CliTr::tr("Print JSON (the only format).")}});
         parseOrFail(parser, args, 1);
-        if (!parser.isSet("item"))
-            throw Failure{CliTr::tr("--item NAME is required"), 2};
         if (!parser.isSet("json"))
             throw Failure{CliTr::tr("--json is required (the only output format)"), 2};
         Project project;
         load(project, parser.positionalArguments().first());
-        AttractorItem *item = attractorItem(project, parser.value("item"));
+        AttractorItem *item = namedOrOnlyAttractorItem(project, parser.value("item"));
         const int level = intOption(parser, "level", 0, 30);
         Mat points;
         bool closed = false;

@@ -10,6 +10,7 @@
 
 #include "TestMain.h"
 
+#include "TestPaths.h"
 #include "TestTime.h"
 
 class TestCli : public QObject {
@@ -79,6 +80,25 @@ void TestCli::usageErrors()
     QVERIFY(out.contains("--out"));
     QCOMPARE(run({"examples", "--list"}, &out), 0);
     QCOMPARE(out.count('\n'), 3);
+
+    // points, polygon and export take a project's only item without --item; with several
+    // they ask for it and name them.
+    const QString dir = awb::test::sourceDir() + "/examples/";
+    const QString one = dir + "000-fig02-cubic-bspline-from-point.awb";
+    QCOMPARE(run({"points", one, "--csv", "--depth", "2"}, &out, &err), 0);
+    QVERIFY2(out.startsWith("x,y"), qPrintable(out.left(80) + err));
+    QCOMPARE(out.count(QLatin1Char('\n')), 1 + 2 * 2); // two maps, depth 2, one start point
+    QCOMPARE(run({"polygon", one, "--level", "1", "--json"}, &out, &err), 0);
+    QVERIFY2(out.contains("\"points\""), qPrintable(err));
+    const QString two = dir + "001-fig06-koch-type-curves.awb";
+    QCOMPARE(run({"points", two, "--csv"}, &out, &err), 2);
+    QVERIFY2(err.contains("--item NAME is required") && err.contains("has 2 items")
+                 && err.contains("'001 Fig. 6(b): scheme (5) on a triangle, positive normals'"),
+             qPrintable(err));
+    QTemporaryDir tmp;
+    QCOMPARE(run({"export", two, "--format", "ply", "--out", tmp.filePath("a.ply")}, &out, &err),
+             2);
+    QVERIFY2(err.contains("--item NAME is required"), qPrintable(err));
 }
 
 void TestCli::renderUsesTheItemsColours()
