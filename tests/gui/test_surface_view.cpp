@@ -84,6 +84,7 @@ private slots:
     void cameraMovesTheFigure();
     void mainWindowShowsSurfaces();
     void dragIsOneUndoStep();
+    void releasedPointKeepsTheFullMesh();
     void orbitTurnsTheItemsCamera();
     void mapsOffMakeTheFractal();
     void tableEditsXyz();
@@ -277,6 +278,97 @@ void TestSurfaceView::dragIsOneUndoStep()
     QVERIFY(item->startSet().points[std::size_t(v)] != vertex);
     w.project()->undoStack()->undo();
     QCOMPARE(item->startSet().points[std::size_t(v)], vertex);
+}
+
+// A net point's drag builds, at the press, the full mesh with each vertex's weight on the point;
+// at the release that mesh moved is F^k(X0) of the moved net when no start vertex has a
+// coefficient on the point (docs/mathematics.md, "Dragging a net point"): the full picture
+// without iterating again.
+void TestSurfaceView::releasedPointKeepsTheFullMesh()
+{
+    qputenv("AWB_NO_GL", "1");
+    RecordingMessages messages;
+    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery-release"));
+    qunsetenv("AWB_NO_GL");
+    w.resize(1200, 800);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    // A net without the hexagon's symmetry: the lifting's rows (the largest simplex, chosen
+    // greedily) are then clear winners that a small drag does not change.
+    auto loop = loopItem();
+    PointList net = loop->controlPoints(0);
+    for (std::size_t k = 0; k < net.size(); ++k) {
+        net[k].x += 0.05 * std::sin(3.0 * double(k));
+        net[k].y += 0.05 * std::cos(5.0 * double(k));
+        net[k].z += (k == 0 ? 0.8 : 0.0) + (k == 18 ? -0.6 : 0.0) + 0.05 * std::sin(7.0 * double(k));
+    }
+    QVERIFY(loop->setControlPoints(0, net));
+    w.project()->addItem(std::move(loop));
+    auto *item = qobject_cast<SubdivisionSurfaceItem *>(w.currentItem());
+    QVERIFY(item);
+    SurfaceView *view = w.surfaceView();
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && view->isFullDetail(), awb::test::ms(20000));
+    // A net point that is none of the lifting's free rows (the start's plane points have
+    // coefficients only there), on screen and apart from every other handle.
+    const std::vector<int> free = item->derivedIfs()->surface->ifs.lifting.freeRows;
+    int j = -1;
+    for (int c = 0; c < view->controlPointCount() && j < 0; ++c) {
+        if (std::binary_search(free.begin(), free.end(), c)
+            || !view->rect().adjusted(20, 60, -20, -20).contains(
+                view->controlPointScreen(c).toPoint()))
+            continue;
+        bool apart = true;
+        for (int o = 0; o < view->controlPointCount(); ++o)
+            apart = apart && (o == c || (view->controlPointScreen(o) - view->controlPointScreen(c))
+                                                .manhattanLength() > 8);
+        for (int v = 0; v < view->startVertexCount(); ++v)
+            apart = apart
+                    && (view->startVertexScreen(v) - view->controlPointScreen(c)).manhattanLength()
+                           > 8;
+        if (apart)
+            j = c;
+    }
+    QVERIFY2(j >= 0, "no net point to drag apart from the others");
+    const QPoint grab = view->controlPointScreen(j).toPoint();
+    QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, grab);
+    QTRY_VERIFY_WITH_TIMEOUT(view->hasDragBase(true), awb::test::ms(30000));
+    QTest::mouseMove(view, grab + QPoint(0, -8));
+    QTest::mouseMove(view, grab + QPoint(0, -16));
+    QTest::qWait(30);
+    QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, grab + QPoint(0, -16));
+    QTRY_VERIFY_WITH_TIMEOUT(view->isFullDetail(), awb::test::ms(30000));
+    // (The lifting kept its rows: the start's coefficients are those of the press.)
+    QVERIFY(item->derivedIfs()->surface->ifs.lifting.freeRows == free);
+    QVERIFY(view->fullMeshMovedFromPress());
+    // It is F^k(X0) of the moved net: the same triangles as the iteration of the item's data
+    // (in another order: compared by their count, area and the moments of their vertices).
+    const SurfaceMesh &shown = view->mesh();
+    const auto d = item->derivedIfs();
+    const SurfaceMesh rebuilt =
+        buildSurfaceMesh(d->ifs, item->coreStartSet(*d), shown.depth, {}, {}, 1);
+    QCOMPARE(shown.size(), rebuilt.size());
+    QVERIFY2(std::abs(shown.area - rebuilt.area) < 1e-9 * rebuilt.area,
+             qPrintable(QString("%1 %2 %3").arg(shown.area, 0, 'g', 17).arg(rebuilt.area, 0, 'g', 17).arg(shown.depth)));
+    const auto moments = [](const SurfaceMesh &m) {
+        Eigen::Vector3d sum = Eigen::Vector3d::Zero(), squares = Eigen::Vector3d::Zero();
+        for (std::size_t i = 0; i + 2 < m.positions.size(); i += 3) {
+            const Eigen::Vector3d p(m.positions[i], m.positions[i + 1], m.positions[i + 2]);
+            sum += p;
+            squares += p.cwiseProduct(p);
+        }
+        return std::pair{sum, squares};
+    };
+    const auto [s0, q0] = moments(shown);
+    const auto [s1, q1] = moments(rebuilt);
+    QVERIFY2((s0 - s1).norm() < 1e-8 * std::max(1.0, s1.norm()),
+             qPrintable(QString::number((s0 - s1).norm())));
+    QVERIFY((q0 - q1).norm() < 1e-8 * std::max(1.0, q1.norm()));
+    // And it moved: the net point's drag changed the surface.
+    const double movedArea = shown.area; // `shown` goes with the undo's new mesh
+    w.project()->undoStack()->undo();
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && view->isFullDetail(), awb::test::ms(20000));
+    QVERIFY(!view->fullMeshMovedFromPress());
+    QVERIFY(std::abs(view->mesh().area - movedArea) > 1e-6 * movedArea);
 }
 
 void TestSurfaceView::mapsOffMakeTheFractal()

@@ -4,6 +4,7 @@
 
 #include "gui/views/SurfaceView.h"
 
+#include "gui/views/BackgroundPriority.h"
 #include "gui/views/LatestJobWorker.h"
 #include "gui/views/SurfaceGLWindow.h"
 
@@ -370,7 +371,8 @@ void SurfaceView::startMeshJob()
     m_meshBusy = true;
     // Posted per mesh, in order: the coarse one first (a frame now), then the full one.
     const auto deliver = [this, serial, input, fromDrag](std::shared_ptr<const SurfaceMesh> mesh,
-                                                        bool full, double seconds) {
+                                                        bool full, double seconds,
+                                                        bool moved = false) {
         m_inbox.post([=, this] {
             if (serial < m_meshes.serial)
                 return; // older than the mesh shown
@@ -383,14 +385,45 @@ void SurfaceView::startMeshJob()
             m_meshes.input = input;
             m_meshes.fromDrag = fromDrag;
             m_meshes.coarse = full && m_meshes.coarse ? m_meshes.coarse : mesh;
-            if (full)
+            if (full) {
                 m_meshes.full = mesh;
+                m_meshes.fullMoved = moved;
+            }
             m_meshSeconds = seconds;
             m_meshBusy = serial != m_dataSerial || (!full && !pointMoving());
             requestFrame();
             emit frameReady();
         });
     };
+    // A net point released with its full base ready: that mesh moved, at once; it is the full
+    // mesh when exact, else the exact one follows.
+    if (!moving && m_release.base && m_release.base->depth == fullDepth) {
+        auto base = std::move(m_release.base);
+        const Eigen::Vector3d d = m_release.delta;
+        const bool exact = m_release.exact;
+        m_release = Release{};
+        m_meshWorker->post([base, d, exact, ifs, own, start, label, fullDepth,
+                            deliver](const std::atomic<bool> &cancel) {
+            QElapsedTimer timer;
+            timer.start();
+            deliver(std::make_shared<SurfaceMesh>(movedNetPoint(*base, d)), exact,
+                    timer.nsecsElapsed() * 1e-9, exact);
+            if (exact || cancel)
+                return;
+            IterationControl control;
+            control.cancel = &cancel;
+            try {
+                auto full = std::make_shared<SurfaceMesh>(
+                    buildSurfaceMesh(*ifs, start, fullDepth, label, control, 0, own));
+                if (!cancel)
+                    deliver(full, true, timer.nsecsElapsed() * 1e-9);
+            } catch (const std::exception &) {
+                deliver(std::make_shared<SurfaceMesh>(), true, timer.nsecsElapsed() * 1e-9);
+            }
+        }, cancelRunning);
+        return;
+    }
+    m_release = Release{};
     // A net point dragged from a base with its weights: the full mesh moved, in O(vertices).
     if (const auto delta = moving ? dragBaseMove() : std::nullopt) {
         m_meshWorker->post([base = m_dragBase.mesh, d = *delta, deliver](
@@ -434,7 +467,8 @@ void SurfaceView::startDragBase(int point)
 {
     dropDragBase();
     if (!hasImages() || m_own.iterate || m_ifs->views.size() != 1
-        || m_netCoordinates.V.rows() != m_ifs->dim() || m_netCoordinates.V.cols() != m_net.rows())
+        || m_netCoordinates.V.rows() != m_ifs->dim() || m_netCoordinates.V.cols() != m_net.rows()
+        || m_start.vertices.cols() != m_ifs->dim())
         return;
     const Projection weight = netWeight(m_netCoordinates, point);
     if (weight.V.cols() != 1)
@@ -442,27 +476,52 @@ void SurfaceView::startDragBase(int point)
     // At the moving budget, from the coarse meshes' start: the drag draws what it drew, moved.
     const int depth = surfaceMeshDepth(*m_ifs, coarseStart(), m_settings.depth, coarseBudget(),
                                        m_own);
-    m_baseWorker->post([this, ifs = m_ifs, start = coarseStart(), label = colours().label, depth,
-                        weight, point, net = m_net](const std::atomic<bool> &cancel) {
+    // Then the full mesh, moved at the release: F^k(X0) itself when no start vertex has a
+    // coefficient on the point (its coefficients then do not depend on where the point is).
+    const int fullDepth =
+        surfaceMeshDepth(*m_ifs, m_start, m_settings.depth, double(m_fullBudget), m_own);
+    const Mat coefficients = startCoefficients();
+    m_baseWorker->post([this, ifs = m_ifs, coarse = coarseStart(), start = m_start,
+                        label = colours().label, depth, fullDepth, coefficients, weight, point,
+                        net = m_net](const std::atomic<bool> &cancel) {
         IterationControl control;
         control.cancel = &cancel;
-        std::shared_ptr<const SurfaceMesh> mesh;
-        try {
-            mesh = std::make_shared<SurfaceMesh>(
-                buildSurfaceMesh(*ifs, start, depth, label, control, 0, {}, weight));
-        } catch (const std::exception &) {
-            return; // the drag's coarse meshes say what is wrong
+        for (const bool full : {false, true}) {
+            std::shared_ptr<const SurfaceMesh> mesh;
+            try {
+                // The full one at background priority (this worker's thread stays there):
+                // the drag's frames come first.
+                if (full)
+                    lowerThisThreadPriority();
+                mesh = std::make_shared<SurfaceMesh>(buildSurfaceMesh(
+                    *ifs, full ? start : coarse, full ? fullDepth : depth, label, control, 0, {},
+                    weight));
+            } catch (const std::exception &) {
+                return; // the drag's coarse meshes say what is wrong
+            }
+            if (cancel || mesh->empty())
+                return;
+            m_inbox.post([this, mesh, point, net, full, coefficients] {
+                if (m_drag.kind != DragKind::ControlPoint || m_drag.index != point
+                    || (full && m_dragBase.point != point))
+                    return; // released (or another drag) meanwhile
+                if (full) {
+                    m_dragBase.full = mesh;
+                    return;
+                }
+                m_dragBase = DragBase{mesh, nullptr, point, net, coefficients};
+                if (!m_dataTimer.isActive() && dragBaseMove())
+                    startMeshJob(); // the moves so far, at full detail now
+            });
         }
-        if (cancel || mesh->empty())
-            return;
-        m_inbox.post([this, mesh, point, net] {
-            if (m_drag.kind != DragKind::ControlPoint || m_drag.index != point)
-                return; // released (or another drag) meanwhile
-            m_dragBase = DragBase{mesh, point, net};
-            if (!m_dataTimer.isActive() && dragBaseMove())
-                startMeshJob(); // the moves so far, at full detail now
-        });
     });
+}
+
+Mat SurfaceView::startCoefficients() const
+{
+    if (m_netCoordinates.V.cols() == 0 || m_start.vertices.cols() != m_netCoordinates.V.rows())
+        return {};
+    return (m_start.vertices * m_netCoordinates.V).rowwise() + m_netCoordinates.c;
 }
 
 void SurfaceView::dropDragBase()

@@ -177,6 +177,18 @@ public:
     bool isRendering() const { return m_meshBusy || m_frameBusy; }
     // The full mesh of the data shown is being built (from the release of a drag on).
     bool fullMeshPending() const { return m_fullPending && m_fullSerial == m_dataSerial; }
+    // The full mesh shown is the one built at a net point's press, moved by the point's weights
+    // at the release (exact there: no start vertex has a coefficient on the point).
+    bool fullMeshMovedFromPress() const
+    {
+        return m_meshes.full && m_meshes.fullMoved && m_meshes.serial == m_dataSerial;
+    }
+    // A net point's drag has its press's mesh with the point's weights: the coarse one, and
+    // with `full` the full one too.
+    bool hasDragBase(bool full) const
+    {
+        return full ? bool(m_dragBase.full) : bool(m_dragBase.mesh);
+    }
     // Paints the figure into `target` of any painter with the CPU renderer (same camera,
     // colours, overlays): for printing, export and the batch mode. On the calling thread.
     void renderTo(QPainter *painter, const QRectF &target) const;
@@ -247,6 +259,7 @@ private:
         std::uint64_t serial = 0;      // the data it was made of (m_dataSerial then)
         QPoint input;
         bool fromDrag = false;
+        bool fullMoved = false;  // the full mesh is the press's full mesh moved (exact)
     };
 
     // ---- SurfaceView.cpp: data and jobs
@@ -322,10 +335,23 @@ private:
     // builds the exact one.
     struct DragBase {
         std::shared_ptr<const SurfaceMesh> mesh;
+        std::shared_ptr<const SurfaceMesh> full;  // F^k(X0) at full detail, with the weights
         int point = -1;
-        Mat net;  // the net it was built of
+        Mat net;           // the net it was built of
+        Mat coefficients;  // the start vertices' coefficients on the net then
     };
+    // The start vertices' coefficients on the control points (SubdivisionIfs::netCoordinates):
+    // when a drag leaves them as they were, the press's mesh moved is F^k(X0) exactly (not when
+    // a start vertex has a coefficient on the point, nor when the lifting chose other rows).
+    Mat startCoefficients() const;
     DragBase m_dragBase;
+    // What a release hands to startMeshJob: the full base and the point's move.
+    struct Release {
+        std::shared_ptr<const SurfaceMesh> base;
+        Eigen::Vector3d delta = Eigen::Vector3d::Zero();
+        bool exact = false;
+    };
+    Release m_release;
     Projection m_netCoordinates;
     StartSet m_tilingStart;
     // The coarse meshes' primitives at most: a tiling start's triangles cover the whole

@@ -251,6 +251,16 @@ void SurfaceView::mouseReleaseEvent(QMouseEvent *event)
 {
     logInput("release", event);
     const Drag drag = m_drag;
+    // A net point's full base, moved at the release (startMeshJob), when only it moved.
+    m_release = Release{};
+    if (const auto delta = dragBaseMove(); delta && m_dragBase.full) {
+        const Mat now = startCoefficients();
+        const Mat &then = m_dragBase.coefficients;
+        const bool exact = now.size() > 0 && now.rows() == then.rows()
+                           && now.cols() == then.cols()
+                           && (now - then).cwiseAbs().maxCoeff() < 1e-12;
+        m_release = Release{m_dragBase.full, *delta, exact};
+    }
     m_drag = Drag{};
     if (drag.kind == DragKind::ControlPoint || drag.kind == DragKind::StartVertex) {
         // Full detail after the drag's coarse meshes, started now on the mesh worker: the
