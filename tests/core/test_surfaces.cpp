@@ -90,6 +90,7 @@ private slots:
     void meshDrawsTheImagesAgain();
     void netPointMovesTheMeshByItsWeights();
     void pinholesCloseInsideNotOutside();
+    void lastMapFusedWithTheViews();
 };
 
 void TestSurfaces::bicubicMaskIsTensorCubic()
@@ -623,6 +624,72 @@ void TestSurfaces::netPointMovesTheMeshByItsWeights()
     const double two = gapAfterMoving(free.front(), 2), four = gapAfterMoving(free.front(), 4);
     QVERIFY2(two > 1e-6 && two < delta.norm(), qPrintable(QString::number(two)));
     QVERIFY2(four < two / 2.5, qPrintable(QString("%1 %2").arg(two).arg(four)));
+}
+
+namespace {
+// The sinks as they were before the iteration fused the last map with their projections.
+class UnfusedMeshSink : public SurfaceMeshSink {
+public:
+    using SurfaceMeshSink::SurfaceMeshSink;
+    const std::vector<Projection> *projections() const override { return nullptr; }
+};
+class UnfusedRaster : public SurfaceRaster {
+public:
+    using SurfaceRaster::SurfaceRaster;
+    const std::vector<Projection> *projections() const override { return nullptr; }
+};
+} // namespace
+
+// The iteration applies the last map and a sink's projections as one product (D x 3 per vertex
+// instead of D x D): the same mesh, weights and picture as projecting the images it made.
+void TestSurfaces::lastMapFusedWithTheViews()
+{
+    const LatticeScheme s = loopScheme();
+    const PatchLayout layout = patchLayout(s, "hexagon");
+    const SurfaceMatrices m = surfaceMatrices(s, layout);
+    const Mat P = randomNet(s, m.net, 7);
+    const SurfaceIfs f = buildSurfaceIfs(s, layout, m, m.net, P);
+    Mat triangle(3, 3);
+    triangle << P.row(0), P.row(9), P.row(18);
+    const StartSet start = StartSet::polygon(f.ifs.toIfsSpace(triangle));
+    const Projection weight = netWeight(f.ifs.netCoordinates(), 9);
+    const ImageLabel label = [](const std::uint8_t *a, int n) {
+        return std::uint32_t(n > 1 ? 6 * a[0] + a[1] : 0);
+    };
+    for (int depth : {0, 1, 3}) {
+        SurfaceMeshSink fused(f.ifs.ifs.views, label, SurfaceMesh::Kind::Triangles, weight);
+        UnfusedMeshSink plain(f.ifs.ifs.views, label, SurfaceMesh::Kind::Triangles, weight);
+        QVERIFY(fused.projections() && fused.projections()->size() == 2);
+        iterate(f.ifs.ifs, start, depth, fused);
+        iterate(f.ifs.ifs, start, depth, plain);
+        const SurfaceMesh &a = fused.mesh, &b = plain.mesh;
+        QCOMPARE(a.size(), std::size_t(std::pow(6.0, depth)));
+        QVERIFY(a.labels == b.labels);
+        QCOMPARE(a.positions.size(), b.positions.size());
+        QCOMPARE(a.weights.size(), a.positions.size() / 3);
+        QCOMPARE(a.weights.size(), b.weights.size());
+        double worst = 0, worstWeight = 0;
+        for (std::size_t k = 0; k < a.positions.size(); ++k)
+            worst = std::max(worst, std::abs(a.positions[k] - b.positions[k]));
+        for (std::size_t k = 0; k < a.weights.size(); ++k)
+            worstWeight = std::max(worstWeight, std::abs(a.weights[k] - b.weights[k]));
+        QVERIFY2(worst < 1e-12 && worstWeight < 1e-12,
+                 qPrintable(QString("%1 %2").arg(worst).arg(worstWeight)));
+        QVERIFY(std::abs(a.area - b.area) < 1e-12 * std::max(1.0, b.area));
+    }
+    // The CPU raster of the same images: the same pixels but where a sample sits on an edge.
+    const OrthoCamera camera = OrthoCamera::fit(f.cornerLimitStart, -60, 30, 1.25);
+    SurfaceRaster fused(250, 200, camera, f.ifs.ifs.views);
+    UnfusedRaster plain(250, 200, camera, f.ifs.ifs.views);
+    const StartSet tiles = StartSet::polygon(f.ifs.toIfsSpace(f.cornerLimitStart));
+    iterate(f.ifs.ifs, tiles, 4, fused);
+    iterate(f.ifs.ifs, tiles, 4, plain);
+    QVERIFY2(plain.coveredPixels() > 2000, qPrintable(QString::number(plain.coveredPixels())));
+    int differ = 0;
+    for (int y = 0; y < 200; ++y)
+        for (int x = 0; x < 250; ++x)
+            differ += fused.label(x, y) != plain.label(x, y);
+    QVERIFY2(differ <= int(plain.coveredPixels() / 500), qPrintable(QString::number(differ)));
 }
 
 // Splats 3 pixels apart leave gaps of up to 2 pixels between them: fillPinholes closes those

@@ -49,6 +49,24 @@ public:
                     m_rows[i][std::size_t(k * D + j)] = A(k, j);
         }
         m_row.resize(std::size_t(D));
+        // The last map fused with the sink's projections: per map and projection, A V and b V + c.
+        const std::vector<Projection> *projections = sink.projections();
+        if (projections && depth >= 1) {
+            m_fused = true;
+            m_fusedMaps.resize(ifs.maps.size());
+            for (std::size_t i = 0; i < ifs.maps.size(); ++i) {
+                const AffineMap &f = ifs.maps[i];
+                for (const Projection &p : *projections) {
+                    Fused q;
+                    if (p.V.rows() == D && p.c.size() == p.V.cols()) {
+                        q.M = f.A * p.V;
+                        q.c = f.b * p.V + p.c;
+                    }
+                    m_fusedMaps[i].push_back(std::move(q));
+                }
+            }
+            m_projected.resize(projections->size());
+        }
     }
 
     // Apply the fixed innermost choices `prefix`, then walk the rest.
@@ -94,8 +112,41 @@ private:
         m_address[m_depth - level - 1] = std::uint8_t(i);
     }
 
+    // The images of the last level through the sink's projections (see projections()).
+    bool emitProjected(int level)
+    {
+        const Mat &X = m_buf[level];
+        const Eigen::Index n = X.rows(), D = X.cols();
+        for (int i = 0; i < m_ifs.size(); ++i) {
+            const std::vector<Fused> &maps = m_fusedMaps[std::size_t(i)];
+            for (std::size_t p = 0; p < maps.size(); ++p) {
+                const Fused &q = maps[p];
+                Mat &Y = m_projected[p];
+                const Eigen::Index k = q.M.cols();
+                Y.resize(n, k);
+                for (Eigen::Index j = 0; j < k; ++j) {
+                    const double *col = q.M.data() + j * D;
+                    for (Eigen::Index r = 0; r < n; ++r) {
+                        double s = 0;
+                        for (Eigen::Index e = 0; e < D; ++e)
+                            s += X(r, e) * col[e];
+                        Y(r, j) = s + q.c(j);
+                    }
+                }
+            }
+            m_address[0] = std::uint8_t(i);
+            m_sink.consumeProjected(m_projected, m_kind, m_address.data(), m_depth);
+            ++m_emitted;
+            if ((m_emitted & 4095) == 0 && !tick(4096))
+                return false;
+        }
+        return true;
+    }
+
     bool walk(int level)
     {
+        if (m_fused && level == m_depth - 1)
+            return emitProjected(level);
         if (level == m_depth) {
             m_sink.consume(m_buf[level], m_kind, m_address.data(), m_depth);
             ++m_emitted;
@@ -131,6 +182,13 @@ private:
     std::vector<double> m_row;               // the row of y being summed
     std::vector<std::uint8_t> m_address;
     std::uint64_t m_emitted = 0;
+    struct Fused {
+        Mat M;     // A_i V (D x k; 0 columns: the projection does not fit)
+        RowVec c;  // b_i V + c
+    };
+    bool m_fused = false;
+    std::vector<std::vector<Fused>> m_fusedMaps;  // per map, per projection
+    std::vector<Mat> m_projected;                 // the image through each projection, reused
 };
 
 } // namespace

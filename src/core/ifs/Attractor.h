@@ -32,6 +32,19 @@ public:
     virtual ~AttractorSink() = default;
     virtual void consume(const Mat &vertices, StartSet::Kind kind, const std::uint8_t *address,
                          int length) = 0;
+    // A sink that needs the images only through fixed affine maps x -> x V + c (a 3D view's
+    // world coordinates, a control point's weight) may list them here. Deterministic iteration
+    // then applies the last map and each of them as one product, x (A_i V) + (b_i V + c): D x k
+    // per vertex instead of D x D, several times less work on the lifted spaces of surfaces
+    // (D = 11 to 36). It calls consumeProjected with one matrix per listed map, in the list's
+    // order (0 columns where V does not have D rows); images of depth 0, and of a depth the
+    // task split reaches, still come to consume(). The list must not change during a run.
+    virtual const std::vector<Projection> *projections() const { return nullptr; }
+    virtual void consumeProjected(const std::vector<Mat> &projected, StartSet::Kind kind,
+                                  const std::uint8_t *address, int length)
+    {
+        (void)projected, (void)kind, (void)address, (void)length;
+    }
 };
 
 struct IterationControl {

@@ -50,27 +50,38 @@ SurfaceMeshSink::SurfaceMeshSink(std::vector<Projection> views, ImageLabel label
     : m_views(std::move(views)), m_label(std::move(label)), m_weight(std::move(weight))
 {
     mesh.kind = kind;
+    m_weighted = m_weight.V.cols() == 1;
+    if (m_weighted && m_weight.c.size() != 1)
+        m_weight.c = RowVec::Zero(1);
+    m_projections = m_views;
+    if (m_weighted)
+        m_projections.push_back(m_weight);
+}
+
+void SurfaceMeshSink::reserve(std::size_t primitives)
+{
+    const std::size_t v = std::size_t(mesh.vertices());
+    mesh.positions.reserve(3 * v * primitives);
+    mesh.labels.reserve(primitives);
+    if (m_weighted)
+        mesh.weights.reserve(v * primitives);
+    if (mesh.kind == SurfaceMesh::Kind::Triangles)
+        mesh.normals.reserve(3 * primitives);
 }
 
 void SurfaceMeshSink::consume(const Mat &v, StartSet::Kind, const std::uint8_t *a, int n)
 {
     const std::uint32_t label = m_label ? m_label(a, n) : std::uint32_t(n > 0 ? a[0] : 0);
-    const bool weighted = m_weight.V.cols() == 1 && m_weight.V.rows() == v.cols();
+    const bool weighted = m_weighted && m_weight.V.rows() == v.cols();
     if (weighted) {
         m_vertexWeight.resize(std::size_t(v.rows()));
         for (Eigen::Index r = 0; r < v.rows(); ++r) {
-            double s = m_weight.c.size() > 0 ? m_weight.c(0) : 0.0;
+            double s = m_weight.c(0);
             for (Eigen::Index j = 0; j < v.cols(); ++j)
                 s += v(r, j) * m_weight.V(j, 0);
             m_vertexWeight[std::size_t(r)] = s;
         }
     }
-    const auto put = [&](const Mat &p, Eigen::Index r) {
-        for (int k = 0; k < 3; ++k)
-            mesh.positions.push_back(p(r, k));
-        if (weighted)
-            mesh.weights.push_back(m_vertexWeight[std::size_t(r)]);
-    };
     for (const Projection &view : m_views) {
         if (view.V.cols() != 3 || view.V.rows() != v.cols())
             continue;
@@ -90,42 +101,64 @@ void SurfaceMeshSink::consume(const Mat &v, StartSet::Kind, const std::uint8_t *
                 p(r, k) = s + view.c(k);
             }
         }
-        if (!p.allFinite()) {
-            ++mesh.nonFinite;
-            continue;
+        add(p, weighted ? m_vertexWeight.data() : nullptr, label);
+    }
+}
+
+void SurfaceMeshSink::consumeProjected(const std::vector<Mat> &projected, StartSet::Kind,
+                                       const std::uint8_t *a, int n)
+{
+    const std::uint32_t label = m_label ? m_label(a, n) : std::uint32_t(n > 0 ? a[0] : 0);
+    const Mat *weight = m_weighted ? &projected[m_views.size()] : nullptr;
+    const double *weights = weight && weight->cols() == 1 ? weight->data() : nullptr;
+    for (std::size_t i = 0; i < m_views.size(); ++i)
+        if (projected[i].cols() == 3)
+            add(projected[i], weights, label);
+}
+
+void SurfaceMeshSink::add(const Mat &p, const double *weights, std::uint32_t label)
+{
+    if (!p.allFinite()) {
+        ++mesh.nonFinite;
+        return;
+    }
+    const auto put = [&](Eigen::Index r) {
+        for (int k = 0; k < 3; ++k)
+            mesh.positions.push_back(p(r, k));
+        if (weights)
+            mesh.weights.push_back(weights[r]);
+    };
+    switch (mesh.kind) {
+    case SurfaceMesh::Kind::Points:
+        for (Eigen::Index r = 0; r < p.rows(); ++r) {
+            put(r);
+            mesh.labels.push_back(label);
         }
-        switch (mesh.kind) {
-        case SurfaceMesh::Kind::Points:
-            for (Eigen::Index r = 0; r < p.rows(); ++r) {
-                put(p, r);
-                mesh.labels.push_back(label);
-            }
-            break;
-        case SurfaceMesh::Kind::Segments:
-            for (Eigen::Index r = 0; r + 1 < p.rows(); ++r) {
-                put(p, r);
-                put(p, r + 1);
-                mesh.labels.push_back(label);
-            }
-            break;
-        case SurfaceMesh::Kind::Triangles:
-            // A fan from the first vertex, as SurfaceRaster fills a polygon image.
-            for (Eigen::Index r = 1; r + 1 < p.rows(); ++r) {
-                put(p, 0);
-                put(p, r);
-                put(p, r + 1);
-                const Eigen::Vector3d e1 = (p.row(r) - p.row(0)).transpose();
-                const Eigen::Vector3d e2 = (p.row(r + 1) - p.row(0)).transpose();
-                Eigen::Vector3d normal = e1.cross(e2);
-                const double len = normal.norm();
-                mesh.area += 0.5 * len;
-                normal = len > 0 ? Eigen::Vector3d(normal / len) : Eigen::Vector3d::Zero();
-                for (int k = 0; k < 3; ++k)
-                    mesh.normals.push_back(float(normal[k]));
-                mesh.labels.push_back(label);
-            }
-            break;
+        break;
+    case SurfaceMesh::Kind::Segments:
+        for (Eigen::Index r = 0; r + 1 < p.rows(); ++r) {
+            put(r);
+            put(r + 1);
+            mesh.labels.push_back(label);
         }
+        break;
+    case SurfaceMesh::Kind::Triangles:
+        // A fan from the first vertex, as SurfaceRaster fills a polygon image.
+        for (Eigen::Index r = 1; r + 1 < p.rows(); ++r) {
+            put(0);
+            put(r);
+            put(r + 1);
+            const Eigen::Vector3d e1 = (p.row(r) - p.row(0)).transpose();
+            const Eigen::Vector3d e2 = (p.row(r + 1) - p.row(0)).transpose();
+            Eigen::Vector3d normal = e1.cross(e2);
+            const double len = normal.norm();
+            mesh.area += 0.5 * len;
+            normal = len > 0 ? Eigen::Vector3d(normal / len) : Eigen::Vector3d::Zero();
+            for (int k = 0; k < 3; ++k)
+                mesh.normals.push_back(float(normal[k]));
+            mesh.labels.push_back(label);
+        }
+        break;
     }
 }
 
@@ -143,10 +176,17 @@ SurfaceMesh buildSurfaceMesh(const Ifs &ifs, const StartSet &start, int depth,
     const int n = std::clamp(threads > 0 ? threads : hw, 1, 64);
     std::vector<std::unique_ptr<SurfaceMeshSink>> sinks;
     std::vector<AttractorSink *> raw;
+    // Each sink's share reserved up front (the images of a task of the split vary little):
+    // growing by doubling would copy and fault in the arrays twice over.
+    const double images = own.iterate ? 0.0
+                                      : imageCount(ifs, depth) * double(ifs.views.size())
+                                            * primitivesPerImage(start) / n;
+    const std::size_t share = images < 2e7 ? std::size_t(images * 1.05) : 0;
     for (int t = 0; t < n; ++t) {
         sinks.push_back(
             std::make_unique<SurfaceMeshSink>(ifs.views, label, kind,
                                               own.iterate ? Projection{} : weight));
+        sinks.back()->reserve(share);
         raw.push_back(sinks.back().get());
     }
     const IterationStats stats = own.iterate ? own.iterate(start, depth, raw, control)
@@ -156,6 +196,11 @@ SurfaceMesh buildSurfaceMesh(const Ifs &ifs, const StartSet &start, int depth,
     mesh.depth = depth;
     if (stats.cancelled)
         return mesh;
+    if (sinks.size() == 1) {
+        mesh = std::move(sinks.front()->mesh);
+        mesh.depth = depth;
+        return mesh;
+    }
     std::size_t primitives = 0;
     for (const auto &s : sinks)
         primitives += s->mesh.size();

@@ -45,13 +45,24 @@ public:
     // `weight` (D x 1 and its constant; no columns: none) gives each vertex its weight.
     SurfaceMeshSink(std::vector<Projection> views, ImageLabel label, SurfaceMesh::Kind kind,
                     Projection weight = {});
+    // Room for this many primitives (an estimate: more still fit).
+    void reserve(std::size_t primitives);
     void consume(const Mat &v, StartSet::Kind k, const std::uint8_t *a, int n) override;
+    // The views, then the weight when there is one: the iteration fuses them with its last map.
+    const std::vector<Projection> *projections() const override { return &m_projections; }
+    void consumeProjected(const std::vector<Mat> &projected, StartSet::Kind k,
+                          const std::uint8_t *a, int n) override;
     SurfaceMesh mesh;
 
 private:
+    // One image through one view (n x 3) as primitives; `weights` one per vertex or null.
+    void add(const Mat &p, const double *weights, std::uint32_t label);
+
     std::vector<Projection> m_views;
     ImageLabel m_label;
     Projection m_weight;
+    bool m_weighted = false;
+    std::vector<Projection> m_projections;  // m_views, then m_weight if weighted
     Mat m_projected;                // the image through a view, reused
     std::vector<double> m_vertexWeight;  // the image's vertices' weights, reused
 };

@@ -228,33 +228,50 @@ void SurfaceRaster::triangle(const Eigen::Vector3d &a, const Eigen::Vector3d &b,
     }
 }
 
-void SurfaceRaster::consume(const Mat &v, StartSet::Kind kind, const std::uint8_t *a, int n)
+std::uint32_t SurfaceRaster::imageLabel(const std::uint8_t *a, int n) const
 {
     const int symbol = n > 0 ? a[0] : 0;
-    const std::uint32_t label =
-        1u + std::uint32_t(symbol < int(m_labels.size()) ? m_labels[size_t(symbol)] : symbol);
+    return 1u + std::uint32_t(symbol < int(m_labels.size()) ? m_labels[size_t(symbol)] : symbol);
+}
+
+void SurfaceRaster::consume(const Mat &v, StartSet::Kind kind, const std::uint8_t *a, int n)
+{
+    const std::uint32_t label = imageLabel(a, n);
     for (const Projection &view : m_views) {
         const Mat p = project(view, v);
-        if (p.cols() != 3)
-            continue;
-        if (!p.allFinite()) {
-            ++m_nonFinite;
-            continue;
-        }
-        std::vector<Eigen::Vector3d> &s = m_screen;  // reused: no allocation per image
-        s.resize(size_t(p.rows()));
-        for (Eigen::Index r = 0; r < p.rows(); ++r)
-            s[size_t(r)] = toScreen(p.row(r).transpose());
-        if (kind == StartSet::Kind::Points || s.size() == 1) {
-            for (const auto &q : s)
-                splat(q, label);
-        } else if (kind == StartSet::Kind::Polyline || s.size() == 2) {
-            for (size_t r = 0; r + 1 < s.size(); ++r)
-                line(s[r], s[r + 1], label);
-        } else {
-            for (size_t r = 1; r + 1 < s.size(); ++r)
-                triangle(s[0], s[r], s[r + 1], label);
-        }
+        if (p.cols() == 3)
+            drawImage(p, kind, label);
+    }
+}
+
+void SurfaceRaster::consumeProjected(const std::vector<Mat> &projected, StartSet::Kind kind,
+                                     const std::uint8_t *a, int n)
+{
+    const std::uint32_t label = imageLabel(a, n);
+    for (const Mat &p : projected)
+        if (p.cols() == 3)
+            drawImage(p, kind, label);
+}
+
+void SurfaceRaster::drawImage(const Mat &p, StartSet::Kind kind, std::uint32_t label)
+{
+    if (!p.allFinite()) {
+        ++m_nonFinite;
+        return;
+    }
+    std::vector<Eigen::Vector3d> &s = m_screen;  // reused: no allocation per image
+    s.resize(size_t(p.rows()));
+    for (Eigen::Index r = 0; r < p.rows(); ++r)
+        s[size_t(r)] = toScreen(p.row(r).transpose());
+    if (kind == StartSet::Kind::Points || s.size() == 1) {
+        for (const auto &q : s)
+            splat(q, label);
+    } else if (kind == StartSet::Kind::Polyline || s.size() == 2) {
+        for (size_t r = 0; r + 1 < s.size(); ++r)
+            line(s[r], s[r + 1], label);
+    } else {
+        for (size_t r = 1; r + 1 < s.size(); ++r)
+            triangle(s[0], s[r], s[r + 1], label);
     }
 }
 

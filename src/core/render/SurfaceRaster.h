@@ -46,6 +46,10 @@ public:
     SurfaceRaster(const SurfaceRaster &) = default;
     SurfaceRaster &operator=(const SurfaceRaster &) = default;
     void consume(const Mat &v, StartSet::Kind k, const std::uint8_t *a, int n) override;
+    // The views: the iteration fuses them with its last map.
+    const std::vector<Projection> *projections() const override { return &m_views; }
+    void consumeProjected(const std::vector<Mat> &projected, StartSet::Kind k,
+                          const std::uint8_t *a, int n) override;
     // Draws primitives [first, last) of a mesh built in advance (the same pixels as consume()
     // of the images they came from; label = 1 + the primitive's colour index).
     void draw(const SurfaceMesh &mesh, std::size_t first, std::size_t last);
@@ -76,6 +80,9 @@ public:
 
 private:
     std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(m_w) + x; }
+    std::uint32_t imageLabel(const std::uint8_t *a, int n) const;
+    // One image through one view (n x 3 world points).
+    void drawImage(const Mat &p, StartSet::Kind kind, std::uint32_t label);
     void plot(int x, int y, float z, std::uint32_t label);
     void splat(const Eigen::Vector3d &s, std::uint32_t label);
     void line(const Eigen::Vector3d &a, const Eigen::Vector3d &b, std::uint32_t label);

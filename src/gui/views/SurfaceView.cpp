@@ -395,31 +395,19 @@ void SurfaceView::startMeshJob()
             emit frameReady();
         });
     };
-    // A net point released with its full base ready: that mesh moved, at once; it is the full
-    // mesh when exact, else the exact one follows.
-    if (!moving && m_release.base && m_release.base->depth == fullDepth) {
+    // A net point released with its full base ready and exact for the new net (the start's
+    // coefficients did not change): that mesh moved is the full mesh, no iteration. When not
+    // exact the full mesh is built below: with the last map fused into the view it takes
+    // about as long as drawing the moved base would, which would only delay it.
+    if (!moving && m_release.base && m_release.exact && m_release.base->depth == fullDepth) {
         auto base = std::move(m_release.base);
         const Eigen::Vector3d d = m_release.delta;
-        const bool exact = m_release.exact;
         m_release = Release{};
-        m_meshWorker->post([base, d, exact, ifs, own, start, label, fullDepth,
-                            deliver](const std::atomic<bool> &cancel) {
+        m_meshWorker->post([base, d, deliver](const std::atomic<bool> &) {
             QElapsedTimer timer;
             timer.start();
-            deliver(std::make_shared<SurfaceMesh>(movedNetPoint(*base, d)), exact,
-                    timer.nsecsElapsed() * 1e-9, exact);
-            if (exact || cancel)
-                return;
-            IterationControl control;
-            control.cancel = &cancel;
-            try {
-                auto full = std::make_shared<SurfaceMesh>(
-                    buildSurfaceMesh(*ifs, start, fullDepth, label, control, 0, own));
-                if (!cancel)
-                    deliver(full, true, timer.nsecsElapsed() * 1e-9);
-            } catch (const std::exception &) {
-                deliver(std::make_shared<SurfaceMesh>(), true, timer.nsecsElapsed() * 1e-9);
-            }
+            deliver(std::make_shared<SurfaceMesh>(movedNetPoint(*base, d)), true,
+                    timer.nsecsElapsed() * 1e-9, true);
         }, cancelRunning);
         return;
     }
@@ -480,13 +468,19 @@ void SurfaceView::startDragBase(int point)
     // coefficient on the point (its coefficients then do not depend on where the point is).
     const int fullDepth =
         surfaceMeshDepth(*m_ifs, m_start, m_settings.depth, double(m_fullBudget), m_own);
+    // A start vertex with a coefficient on the point: c P^ = [X0, 1] forces c to change with
+    // any move of it, so the moved full mesh could never be F^k(X0): not built.
     const Mat coefficients = startCoefficients();
+    const bool fullCanBeExact = point < coefficients.cols()
+                                && coefficients.col(point).cwiseAbs().maxCoeff() < 1e-12;
     m_baseWorker->post([this, ifs = m_ifs, coarse = coarseStart(), start = m_start,
                         label = colours().label, depth, fullDepth, coefficients, weight, point,
-                        net = m_net](const std::atomic<bool> &cancel) {
+                        net = m_net, fullCanBeExact](const std::atomic<bool> &cancel) {
         IterationControl control;
         control.cancel = &cancel;
         for (const bool full : {false, true}) {
+            if (full && !fullCanBeExact)
+                return;
             std::shared_ptr<const SurfaceMesh> mesh;
             try {
                 // The full one at background priority (this worker's thread stays there):
