@@ -230,19 +230,31 @@ DensitySink::DensitySink(const RasterFrame &frame, std::vector<Projection> views
 void DensitySink::consume(const Mat &v, StartSet::Kind kind, const std::uint8_t *a, int n)
 {
     const std::uint32_t label = addressLabel(a, n, m_colours.prefix, m_maps);
+    for (const Projection &view : m_views)
+        plot(project(view, v), kind, label);
+}
+
+void DensitySink::consumeProjected(const std::vector<Mat> &projected, StartSet::Kind kind,
+                                   const std::uint8_t *a, int n)
+{
+    const std::uint32_t label = addressLabel(a, n, m_colours.prefix, m_maps);
+    for (const Mat &p : projected)
+        if (p.cols() >= 2)
+            plot(p, kind, label);
+}
+
+void DensitySink::plot(const Mat &p, StartSet::Kind kind, std::uint32_t label)
+{
     const double sx = m_frame.cellsX() / (m_frame.x1 - m_frame.x0);
     const double sy = m_frame.cellsY() / (m_frame.y1 - m_frame.y0);
     Plotter plotter{m_image, m_image.cellsX(), m_image.cellsY(), m_coords.data()};
     std::vector<double> xs;
-    m_screen.resize(std::size_t(v.rows()) * 2);
-    for (const Projection &view : m_views) {
-        const Mat p = project(view, v);
-        for (Eigen::Index r = 0; r < p.rows(); ++r) {
-            m_screen[2 * r] = (p(r, 0) - m_frame.x0) * sx;
-            m_screen[2 * r + 1] = (m_frame.y1 - p(r, 1)) * sy;
-        }
-        plotter.image(m_screen.data(), int(p.rows()), kind, label, xs);
+    m_screen.resize(std::size_t(p.rows()) * 2);
+    for (Eigen::Index r = 0; r < p.rows(); ++r) {
+        m_screen[2 * r] = (p(r, 0) - m_frame.x0) * sx;
+        m_screen[2 * r + 1] = (m_frame.y1 - p(r, 1)) * sy;
     }
+    plotter.image(m_screen.data(), int(p.rows()), kind, label, xs);
 }
 
 } // namespace awb

@@ -72,6 +72,10 @@ public:
                 const EngineColours &colours, int maps);
     void consume(const Mat &v, StartSet::Kind kind, const std::uint8_t *address,
                  int length) override;
+    // The views: the iteration fuses them with its last map.
+    const std::vector<Projection> *projections() const override { return &m_views; }
+    void consumeProjected(const std::vector<Mat> &projected, StartSet::Kind kind,
+                          const std::uint8_t *address, int length) override;
     DensityImage &image() { return m_image; }
     const DensityImage &image() const { return m_image; }
 
@@ -83,6 +87,8 @@ private:
     DensityImage m_image;
     std::vector<std::uint8_t> m_coords;
     std::vector<double> m_screen;
+    // One image through one view (n x 2 plane points) into the image.
+    void plot(const Mat &p, StartSet::Kind kind, std::uint32_t label);
 };
 
 // The vector kernels the engine runs here: "avx2" (x86-64 processors that have it) or
