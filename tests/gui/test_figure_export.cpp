@@ -23,8 +23,10 @@
 #include <QImageReader>
 #include <QPainter>
 #include <QPdfWriter>
+#include <QPrinter>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -46,6 +48,7 @@ private slots:
     void batchMatricesAsLatex();
     void batchBadOptions();
     void sheetMatricesAreAtLeast8pt();
+    void printedSheetKeepsItsTitleOnThePage();
     void pngCarriesItsItemAndReopens();
 
 private:
@@ -292,6 +295,58 @@ void TestFigureExport::sheetMatricesAreAtLeast8pt()
         for (int x : {0, 5, 10, picture.width() - 11, picture.width() - 1})
             QVERIFY2(picture.pixel(x, y) == qRgb(255, 255, 255),
                      qPrintable(QStringLiteral("%1, %2").arg(x).arg(y)));
+}
+
+// The sheet as a printer gets it (a QPrinter, as File > Print and Print Preview paint it, here
+// into a PDF file) and rasterised by poppler: a long title wraps inside the page's printable
+// area, nothing is drawn in the 12 mm margins, and the title is there at the top (issue 47: in
+// Print Preview the title left the frame).
+void TestFigureExport::printedSheetKeepsItsTitleOnThePage()
+{
+    const QString pdftoppm = QStandardPaths::findExecutable(QStringLiteral("pdftoppm"));
+    QVERIFY2(!pdftoppm.isEmpty(), "pdftoppm (poppler-utils, installed by scripts/setup.sh)");
+    QTemporaryDir dir;
+    test::ShownWindow shown(dir.path(), QSize(1200, 800));
+    QVERIFY(shown.window.openFile(awb::test::sourceDir()
+                                  + QStringLiteral("/examples/mesh-cube-catmull-clark.awb")));
+    Item *mesh = shown.window.project()->child(0);
+    QVERIFY(mesh->setName(QStringLiteral("A control mesh with a long name that a printed title "
+                                         "has to wrap twice on the page of a landscape A4 sheet")));
+    shown.window.setCurrentItem(mesh);
+    shown.window.controller()->refreshNow();
+    FigureSheet sheet(mesh, shown.window.attractorView(), shown.window.spectrumView(),
+                      shown.window.surfaceView());
+    QPrinter printer(QPrinter::HighResolution);
+    printer.setOutputFormat(QPrinter::PdfFormat);
+    printer.setOutputFileName(dir.filePath("printed.pdf"));
+    printer.setPageLayout(QPageLayout(QPageSize(QPageSize::A4), QPageLayout::Landscape,
+                                      QMarginsF(12, 12, 12, 12), QPageLayout::Millimeter));
+    QVERIFY(sheet.print(&printer));
+    QProcess poppler;
+    poppler.start(pdftoppm, {QStringLiteral("-r"), QStringLiteral("40"), QStringLiteral("-png"),
+                             QStringLiteral("-singlefile"), dir.filePath("printed.pdf"),
+                             dir.filePath("printed")});
+    QVERIFY(poppler.waitForFinished(60000));
+    QCOMPARE(poppler.exitCode(), 0);
+    const QImage page(dir.filePath("printed.png"));
+    QVERIFY(!page.isNull());
+    // A4 landscape at 40 dpi: 468 x 331 pixels; 12 mm is 18.9 pixels.
+    QVERIFY2(std::abs(page.width() - 468) <= 2 && std::abs(page.height() - 331) <= 2,
+             qPrintable(QStringLiteral("%1 x %2").arg(page.width()).arg(page.height())));
+    const int margin = 17;
+    const auto ink = [&](int x, int y) { return qGray(page.pixel(x, y)) < 200; };
+    for (int y = 0; y < page.height(); ++y)
+        for (int x = 0; x < page.width(); ++x) {
+            const bool inMargin = x < margin || y < margin || x >= page.width() - margin
+                                  || y >= page.height() - margin;
+            QVERIFY2(!(inMargin && ink(x, y)), qPrintable(QStringLiteral("ink at %1, %2").arg(x).arg(y)));
+        }
+    // The title's first line: ink in the band just below the top margin, on the left.
+    int titleInk = 0;
+    for (int y = margin; y < margin + 14; ++y)
+        for (int x = margin; x < page.width() / 2; ++x)
+            titleInk += ink(x, y);
+    QVERIFY2(titleInk > 50, qPrintable(QString::number(titleInk)));
 }
 
 // A PNG export carries the item's project (and the version) in PNG text chunks, as flam3 keeps
