@@ -57,9 +57,9 @@ public:
             for (std::size_t i = 0; i < ifs.maps.size(); ++i) {
                 const AffineMap &f = ifs.maps[i];
                 for (const Projection &p : *projections) {
-                    Fused q;
+                    Projection q; // 0 columns: the projection does not fit
                     if (p.V.rows() == D && p.c.size() == p.V.cols()) {
-                        q.M = f.A * p.V;
+                        q.V = f.A * p.V;
                         q.c = f.b * p.V + p.c;
                     }
                     m_fusedMaps[i].push_back(std::move(q));
@@ -118,14 +118,14 @@ private:
         const Mat &X = m_buf[level];
         const Eigen::Index n = X.rows(), D = X.cols();
         for (int i = 0; i < m_ifs.size(); ++i) {
-            const std::vector<Fused> &maps = m_fusedMaps[std::size_t(i)];
+            const std::vector<Projection> &maps = m_fusedMaps[std::size_t(i)];
             for (std::size_t p = 0; p < maps.size(); ++p) {
-                const Fused &q = maps[p];
+                const Projection &q = maps[p];
                 Mat &Y = m_projected[p];
-                const Eigen::Index k = q.M.cols();
+                const Eigen::Index k = q.V.cols();
                 Y.resize(n, k);
                 for (Eigen::Index j = 0; j < k; ++j) {
-                    const double *col = q.M.data() + j * D;
+                    const double *col = q.V.data() + j * D;
                     for (Eigen::Index r = 0; r < n; ++r) {
                         double s = 0;
                         for (Eigen::Index e = 0; e < D; ++e)
@@ -182,12 +182,9 @@ private:
     std::vector<double> m_row;               // the row of y being summed
     std::vector<std::uint8_t> m_address;
     std::uint64_t m_emitted = 0;
-    struct Fused {
-        Mat M;     // A_i V (D x k; 0 columns: the projection does not fit)
-        RowVec c;  // b_i V + c
-    };
     bool m_fused = false;
-    std::vector<std::vector<Fused>> m_fusedMaps;  // per map, per projection
+    // Per map, per projection of the sink: x -> x (A_i V) + (b_i V + c).
+    std::vector<std::vector<Projection>> m_fusedMaps;
     std::vector<Mat> m_projected;                 // the image through each projection, reused
 };
 
