@@ -1098,7 +1098,7 @@
     </message>
     <message>
         <source>The set X0 deterministic iteration starts from; drag its vertices in the attractor view. Lifted points are points of the lifted space of 000 §2; vertex limits, a mesh&apos;s vertices&apos; limit positions.</source>
-        <translation>Množina X0, z níž vychází deterministická iterace; její vrcholy přetáhněte v pohledu atraktoru. Zdvižené body jsou body zdviženého prostoru podle 000 §2; limitní polohy vrcholů jsou polohy, k nimž v limitě směřují vrcholy sítě.</translation>
+        <translation type="vanished">Množina X0, z níž vychází deterministická iterace; její vrcholy přetáhněte v pohledu atraktoru. Zdvižené body jsou body zdviženého prostoru podle 000 §2; limitní polohy vrcholů jsou polohy, k nimž v limitě směřují vrcholy sítě.</translation>
     </message>
     <message>
         <source>The item has no control points.</source>
@@ -1195,6 +1195,38 @@
     <message>
         <source>the points of %1 were refused</source>
         <translation>body položky %1 byly odmítnuty</translation>
+    </message>
+    <message>
+        <source>the start set &quot;net&quot; (control points of the net by index) is for items whose IFS is built from one control net (curves, surfaces, fractals with control points); this item: %1</source>
+        <translation>počáteční množina „net“ (body řídicí sítě podle indexu) je jen pro položky, jejichž IFS vzniká z jedné řídicí sítě (křivky, plochy, fraktály s řídicími body); tato položka: %1</translation>
+    </message>
+    <message>
+        <source>net point %1 of the start set has the index %2; this item has %3 control points (indices 0 to %4)</source>
+        <translation>bod sítě %1 počáteční množiny má index %2; tato položka má %3 řídicích bodů (indexy 0 až %4)</translation>
+    </message>
+    <message>
+        <source>Net points</source>
+        <translation>Body sítě</translation>
+    </message>
+    <message>
+        <source>The set X0 deterministic iteration starts from; drag its vertices in the attractor view. Lifted points are points of the lifted space of 000 §2; vertex limits, a mesh&apos;s vertices&apos; limit positions; net points, control points by index, which the set follows when they move.</source>
+        <translation>Množina X0, z níž vychází deterministická iterace; její vrcholy přetáhněte v pohledu atraktoru. Zdvižené body jsou body zdviženého prostoru podle 000 §2; limitní polohy vrcholů jsou polohy, k nimž v limitě směřují vrcholy sítě; body sítě jsou řídicí body podle indexu, které množina sleduje, když se pohnou.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a net point index (an integer from 0).</source>
+        <translation>„%1“ není index bodu sítě (celé číslo od 0).</translation>
+    </message>
+    <message>
+        <source>Control points by index, counted from 0 (commas between them): the start set is their point, segment or polygon in the lifted space, and it follows them when they move.</source>
+        <translation>Řídicí body podle indexu, počítáno od 0 (oddělené čárkami): počáteční množina je jejich bod, úsečka nebo mnohoúhelník ve zdviženém prostoru a sleduje je, když se pohnou.</translation>
+    </message>
+    <message>
+        <source>net point %1 of the start set has the index %2; the net has %3 points</source>
+        <translation>bod sítě %1 počáteční množiny má index %2; síť má %3 bodů</translation>
+    </message>
+    <message>
+        <source>this item has no control net to start from</source>
+        <translation>tato položka nemá řídicí síť, z níž by mohla začít</translation>
     </message>
 </context>
 <context>
@@ -5158,11 +5190,11 @@ Ne ji importuje tak, jak je.</translation>
     </message>
     <message>
         <source>expected an array of &quot;#rrggbb&quot; strings</source>
-        <translation>očekáváno pole řetězců &quot;#rrggbb&quot;</translation>
+        <translation type="vanished">očekáváno pole řetězců &quot;#rrggbb&quot;</translation>
     </message>
     <message>
         <source>expected a string &quot;#rrggbb&quot;</source>
-        <translation>očekáván řetězec &quot;#rrggbb&quot;</translation>
+        <translation type="vanished">očekáván řetězec &quot;#rrggbb&quot;</translation>
     </message>
     <message>
         <source>a &quot;vertex-limits&quot; start set has no points (it starts at the limit positions of the mesh&apos;s vertices)</source>
@@ -5171,6 +5203,18 @@ Ne ji importuje tak, jak je.</translation>
     <message>
         <source>the item</source>
         <translation>položka</translation>
+    </message>
+    <message>
+        <source>expected an array of net point indices [0, 9, 18]</source>
+        <translation>očekáváno pole indexů bodů sítě [0, 9, 18]</translation>
+    </message>
+    <message>
+        <source>%1 net point indices; a start set takes at most %2</source>
+        <translation>%1 indexů bodů sítě; počáteční množina jich smí mít nejvýše %2</translation>
+    </message>
+    <message>
+        <source>expected a net point index (an integer from 0)</source>
+        <translation>očekáván index bodu sítě (celé číslo od 0)</translation>
     </message>
 </context>
 <context>
@@ -6161,6 +6205,18 @@ Ne ji importuje tak, jak je.</translation>
         <source>a start set of kind &quot;%1&quot; needs at least %2 points, got %3</source>
         <translation>počáteční množina druhu „%1“: počet bodů musí být alespoň %2, zadáno %3</translation>
     </message>
+    <message>
+        <source>a start set of net points needs at least one index</source>
+        <translation>počáteční množina z bodů sítě potřebuje alespoň jeden index</translation>
+    </message>
+    <message>
+        <source>a start set of net points takes at most %1 indices, got %2</source>
+        <translation>počáteční množina z bodů sítě smí mít nejvýše %1 indexů, zadáno %2</translation>
+    </message>
+    <message>
+        <source>net point %1 of the start set has the index %2: indices count from 0</source>
+        <translation>bod sítě %1 počáteční množiny má index %2: indexy se počítají od 0</translation>
+    </message>
 </context>
 <context>
     <name>awb::StartSetText</name>
@@ -6170,7 +6226,7 @@ Ne ji importuje tak, jak je.</translation>
     </message>
     <message>
         <source>a start set is written point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | vertex-limits, got &apos;%1&apos;</source>
-        <translation>počáteční množina se zapisuje point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | vertex-limits, zadáno „%1“</translation>
+        <translation type="vanished">počáteční množina se zapisuje point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | vertex-limits, zadáno „%1“</translation>
     </message>
     <message>
         <source>a %1 needs %2 coordinates (%3 per point), got %4</source>
@@ -6187,6 +6243,18 @@ Ne ji importuje tak, jak je.</translation>
     <message>
         <source>vertex-limits needs a mesh item; &apos;%1&apos; is a %2</source>
         <translation>vertex-limits potřebuje položku sítě; „%1“ je %2</translation>
+    </message>
+    <message>
+        <source>a start set is written point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | net:i,j,... | vertex-limits, got &apos;%1&apos;</source>
+        <translation>počáteční množina se zapisuje point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | net:i,j,... | vertex-limits, zadáno „%1“</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a net point index (an integer from 0)</source>
+        <translation>„%1“ není index bodu sítě (celé číslo od 0)</translation>
+    </message>
+    <message>
+        <source>net: needs at least one index</source>
+        <translation>net: potřebuje alespoň jeden index</translation>
     </message>
 </context>
 <context>
@@ -7998,7 +8066,7 @@ meze: %9
     </message>
     <message>
         <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2) | vertex-limits (a mesh item: the limit positions of the vertices of the mesh refined k times; default: the item&apos;s).</source>
-        <translation>Počáteční množina: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (rovinné souřadnice; u plochy x,y,z) | lifted:x,y,c1,...;x,y,c1,... (body zdviženého prostoru z 000 §2) | vertex-limits (položka se sítí: limitní polohy vrcholů sítě zjemněné k-krát; výchozí: podle položky).</translation>
+        <translation type="vanished">Počáteční množina: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (rovinné souřadnice; u plochy x,y,z) | lifted:x,y,c1,...;x,y,c1,... (body zdviženého prostoru z 000 §2) | vertex-limits (položka se sítí: limitní polohy vrcholů sítě zjemněné k-krát; výchozí: podle položky).</translation>
     </message>
     <message>
         <source>--start vertex-limits needs a mesh item; &apos;%1&apos; is a %2</source>
@@ -8687,6 +8755,10 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     <message>
         <source>--format ply|obj|ifs|flame|matlab and --out FILE are required</source>
         <translation>--format ply|obj|ifs|flame|matlab a --out SOUBOR jsou povinné</translation>
+    </message>
+    <message>
+        <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2) | net:i,j,... (control points by index, from 0: the rows of the lifted P) | vertex-limits (a mesh item: the limit positions of the vertices of the mesh refined k times; default: the item&apos;s).</source>
+        <translation>Počáteční množina: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (rovinné souřadnice; u plochy x,y,z) | lifted:x,y,c1,...;x,y,c1,... (body zdviženého prostoru z 000 §2) | net:i,j,... (řídicí body podle indexu od 0: řádky zdvižené matice P) | vertex-limits (položka se sítí: limitní polohy vrcholů sítě zjemněné k-krát; výchozí: podle položky).</translation>
     </message>
 </context>
 <context>

@@ -1097,7 +1097,7 @@
     </message>
     <message>
         <source>The set X0 deterministic iteration starts from; drag its vertices in the attractor view. Lifted points are points of the lifted space of 000 §2; vertex limits, a mesh&apos;s vertices&apos; limit positions.</source>
-        <translation>L’ensemble X0 dont part l’itération déterministe&#x202f;; faites glisser ses sommets dans la vue de l’attracteur. Les points relevés sont des points de l’espace relevé de 000 §2&#x202f;; les positions limites des sommets, celles des sommets d’un maillage.</translation>
+        <translation type="vanished">L’ensemble X0 dont part l’itération déterministe&#x202f;; faites glisser ses sommets dans la vue de l’attracteur. Les points relevés sont des points de l’espace relevé de 000 §2&#x202f;; les positions limites des sommets, celles des sommets d’un maillage.</translation>
     </message>
     <message>
         <source>The item has no control points.</source>
@@ -1194,6 +1194,38 @@
     <message>
         <source>the points of %1 were refused</source>
         <translation>les points de %1 ont été refusés</translation>
+    </message>
+    <message>
+        <source>the start set &quot;net&quot; (control points of the net by index) is for items whose IFS is built from one control net (curves, surfaces, fractals with control points); this item: %1</source>
+        <translation>l’ensemble initial « net » (points de contrôle du réseau par indice) est réservé aux éléments dont l’IFS est construit à partir d’un seul réseau de contrôle (courbes, surfaces, fractales à points de contrôle) ; cet élément : %1</translation>
+    </message>
+    <message>
+        <source>net point %1 of the start set has the index %2; this item has %3 control points (indices 0 to %4)</source>
+        <translation>le point de réseau %1 de l’ensemble initial a l’indice %2 ; cet élément a %3 points de contrôle (indices 0 à %4)</translation>
+    </message>
+    <message>
+        <source>Net points</source>
+        <translation>Points du réseau</translation>
+    </message>
+    <message>
+        <source>The set X0 deterministic iteration starts from; drag its vertices in the attractor view. Lifted points are points of the lifted space of 000 §2; vertex limits, a mesh&apos;s vertices&apos; limit positions; net points, control points by index, which the set follows when they move.</source>
+        <translation>L’ensemble X0 dont part l’itération déterministe ; faites glisser ses sommets dans la vue de l’attracteur. Les points relevés sont des points de l’espace relevé de 000 §2 ; les positions limites des sommets, celles des sommets d’un maillage ; les points du réseau, des points de contrôle par indice, que l’ensemble suit quand ils bougent.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a net point index (an integer from 0).</source>
+        <translation>« %1 » n’est pas un indice de point du réseau (un entier à partir de 0).</translation>
+    </message>
+    <message>
+        <source>Control points by index, counted from 0 (commas between them): the start set is their point, segment or polygon in the lifted space, and it follows them when they move.</source>
+        <translation>Points de contrôle par indice, comptés à partir de 0 (séparés par des virgules) : l’ensemble initial est leur point, leur segment ou leur polygone dans l’espace relevé, et il les suit quand ils bougent.</translation>
+    </message>
+    <message>
+        <source>net point %1 of the start set has the index %2; the net has %3 points</source>
+        <translation>le point de réseau %1 de l’ensemble initial a l’indice %2 ; le réseau a %3 points</translation>
+    </message>
+    <message>
+        <source>this item has no control net to start from</source>
+        <translation>cet élément n’a pas de réseau de contrôle dont partir</translation>
     </message>
 </context>
 <context>
@@ -5150,11 +5182,11 @@ Non l’importe tel quel.</translation>
     </message>
     <message>
         <source>expected an array of &quot;#rrggbb&quot; strings</source>
-        <translation>tableau de chaînes &quot;#rrggbb&quot; attendu</translation>
+        <translation type="vanished">tableau de chaînes &quot;#rrggbb&quot; attendu</translation>
     </message>
     <message>
         <source>expected a string &quot;#rrggbb&quot;</source>
-        <translation>chaîne &quot;#rrggbb&quot; attendue</translation>
+        <translation type="vanished">chaîne &quot;#rrggbb&quot; attendue</translation>
     </message>
     <message>
         <source>a &quot;vertex-limits&quot; start set has no points (it starts at the limit positions of the mesh&apos;s vertices)</source>
@@ -5163,6 +5195,18 @@ Non l’importe tel quel.</translation>
     <message>
         <source>the item</source>
         <translation>l’élément</translation>
+    </message>
+    <message>
+        <source>expected an array of net point indices [0, 9, 18]</source>
+        <translation>tableau d’indices de points du réseau attendu [0, 9, 18]</translation>
+    </message>
+    <message>
+        <source>%1 net point indices; a start set takes at most %2</source>
+        <translation>%1 indices de points du réseau ; un ensemble initial en prend au plus %2</translation>
+    </message>
+    <message>
+        <source>expected a net point index (an integer from 0)</source>
+        <translation>indice de point du réseau attendu (un entier à partir de 0)</translation>
     </message>
 </context>
 <context>
@@ -6150,6 +6194,18 @@ Non l’importe tel quel.</translation>
         <source>a start set of kind &quot;%1&quot; needs at least %2 points, got %3</source>
         <translation>un ensemble initial de type &quot;%1&quot; demande au moins %2 points (reçu&#xa0;: %3)</translation>
     </message>
+    <message>
+        <source>a start set of net points needs at least one index</source>
+        <translation>un ensemble initial de points du réseau demande au moins un indice</translation>
+    </message>
+    <message>
+        <source>a start set of net points takes at most %1 indices, got %2</source>
+        <translation>un ensemble initial de points du réseau prend au plus %1 indices, reçu %2</translation>
+    </message>
+    <message>
+        <source>net point %1 of the start set has the index %2: indices count from 0</source>
+        <translation>le point de réseau %1 de l’ensemble initial a l’indice %2 : les indices commencent à 0</translation>
+    </message>
 </context>
 <context>
     <name>awb::StartSetText</name>
@@ -6159,7 +6215,7 @@ Non l’importe tel quel.</translation>
     </message>
     <message>
         <source>a start set is written point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | vertex-limits, got &apos;%1&apos;</source>
-        <translation>un ensemble initial s’écrit point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | vertex-limits, reçu « %1 »</translation>
+        <translation type="vanished">un ensemble initial s’écrit point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | vertex-limits, reçu « %1 »</translation>
     </message>
     <message>
         <source>a %1 needs %2 coordinates (%3 per point), got %4</source>
@@ -6176,6 +6232,18 @@ Non l’importe tel quel.</translation>
     <message>
         <source>vertex-limits needs a mesh item; &apos;%1&apos; is a %2</source>
         <translation>vertex-limits demande un élément maillage ; « %1 » est un %2</translation>
+    </message>
+    <message>
+        <source>a start set is written point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | net:i,j,... | vertex-limits, got &apos;%1&apos;</source>
+        <translation>un ensemble initial s’écrit point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | net:i,j,... | vertex-limits, reçu « %1 »</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a net point index (an integer from 0)</source>
+        <translation>« %1 » n’est pas un indice de point du réseau (un entier à partir de 0)</translation>
+    </message>
+    <message>
+        <source>net: needs at least one index</source>
+        <translation>net: demande au moins un indice</translation>
     </message>
 </context>
 <context>
@@ -7987,7 +8055,7 @@ limites&#xa0;: %9
     </message>
     <message>
         <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2) | vertex-limits (a mesh item: the limit positions of the vertices of the mesh refined k times; default: the item&apos;s).</source>
-        <translation>Ensemble initial&#xa0;: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (coordonnées du plan&#x202f;; x,y,z pour une surface) | lifted:x,y,c1,...;x,y,c1,... (points de l’espace relevé de 000 §2) | vertex-limits (élément maillage&#xa0;: les positions limites des sommets du maillage raffiné k fois&#x202f;; par défaut&#xa0;: celui de l’élément).</translation>
+        <translation type="vanished">Ensemble initial&#xa0;: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (coordonnées du plan&#x202f;; x,y,z pour une surface) | lifted:x,y,c1,...;x,y,c1,... (points de l’espace relevé de 000 §2) | vertex-limits (élément maillage&#xa0;: les positions limites des sommets du maillage raffiné k fois&#x202f;; par défaut&#xa0;: celui de l’élément).</translation>
     </message>
     <message>
         <source>--start vertex-limits needs a mesh item; &apos;%1&apos; is a %2</source>
@@ -8674,6 +8742,10 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     <message>
         <source>--format ply|obj|ifs|flame|matlab and --out FILE are required</source>
         <translation>--format ply|obj|ifs|flame|matlab et --out FICHIER sont requis</translation>
+    </message>
+    <message>
+        <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2) | net:i,j,... (control points by index, from 0: the rows of the lifted P) | vertex-limits (a mesh item: the limit positions of the vertices of the mesh refined k times; default: the item&apos;s).</source>
+        <translation>Ensemble initial : point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (coordonnées du plan ; x,y,z pour une surface) | lifted:x,y,c1,...;x,y,c1,... (points de l’espace relevé de 000 §2) | net:i,j,... (points de contrôle par indice, à partir de 0 : les lignes de la matrice P relevée) | vertex-limits (élément maillage : les positions limites des sommets du maillage raffiné k fois ; par défaut : celui de l’élément).</translation>
     </message>
 </context>
 <context>

@@ -1096,7 +1096,7 @@
     </message>
     <message>
         <source>The set X0 deterministic iteration starts from; drag its vertices in the attractor view. Lifted points are points of the lifted space of 000 §2; vertex limits, a mesh&apos;s vertices&apos; limit positions.</source>
-        <translation>确定性迭代的初始集 X0；在吸引子视图中拖动其顶点即可修改。提升点是 000 §2 中提升空间的点；顶点极限位置是网格各顶点的极限位置。</translation>
+        <translation type="vanished">确定性迭代的初始集 X0；在吸引子视图中拖动其顶点即可修改。提升点是 000 §2 中提升空间的点；顶点极限位置是网格各顶点的极限位置。</translation>
     </message>
     <message>
         <source>The item has no control points.</source>
@@ -1193,6 +1193,38 @@
     <message>
         <source>the points of %1 were refused</source>
         <translation>%1 的点被拒绝</translation>
+    </message>
+    <message>
+        <source>the start set &quot;net&quot; (control points of the net by index) is for items whose IFS is built from one control net (curves, surfaces, fractals with control points); this item: %1</source>
+        <translation>初始集 “net”（按索引选取的控制网格点）只适用于由单个控制网格构造 IFS 的对象（曲线、曲面、带控制点的分形）；此对象：%1</translation>
+    </message>
+    <message>
+        <source>net point %1 of the start set has the index %2; this item has %3 control points (indices 0 to %4)</source>
+        <translation>初始集的第 %1 个网格点索引为 %2；此对象有 %3 个控制点（索引 0 到 %4）</translation>
+    </message>
+    <message>
+        <source>Net points</source>
+        <translation>网格点</translation>
+    </message>
+    <message>
+        <source>The set X0 deterministic iteration starts from; drag its vertices in the attractor view. Lifted points are points of the lifted space of 000 §2; vertex limits, a mesh&apos;s vertices&apos; limit positions; net points, control points by index, which the set follows when they move.</source>
+        <translation>确定性迭代的初始集 X0；在吸引子视图中拖动其顶点即可修改。提升点是 000 §2 中提升空间的点；顶点极限位置是网格各顶点的极限位置；网格点是按索引选取的控制点，控制点移动时初始集随之移动。</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a net point index (an integer from 0).</source>
+        <translation>“%1”不是网格点索引（从 0 开始的整数）。</translation>
+    </message>
+    <message>
+        <source>Control points by index, counted from 0 (commas between them): the start set is their point, segment or polygon in the lifted space, and it follows them when they move.</source>
+        <translation>按索引选取的控制点，从 0 开始计数（以逗号分隔）：初始集是它们在提升空间中构成的点、线段或多边形，并随它们移动。</translation>
+    </message>
+    <message>
+        <source>net point %1 of the start set has the index %2; the net has %3 points</source>
+        <translation>初始集的第 %1 个网格点索引为 %2；网格只有 %3 个点</translation>
+    </message>
+    <message>
+        <source>this item has no control net to start from</source>
+        <translation>此对象没有可作为起点的控制网格</translation>
     </message>
 </context>
 <context>
@@ -5142,11 +5174,11 @@ No imports it as it is.</source>
     </message>
     <message>
         <source>expected an array of &quot;#rrggbb&quot; strings</source>
-        <translation>应为 &quot;#rrggbb&quot; 字符串的数组</translation>
+        <translation type="vanished">应为 &quot;#rrggbb&quot; 字符串的数组</translation>
     </message>
     <message>
         <source>expected a string &quot;#rrggbb&quot;</source>
-        <translation>应为字符串 &quot;#rrggbb&quot;</translation>
+        <translation type="vanished">应为字符串 &quot;#rrggbb&quot;</translation>
     </message>
     <message>
         <source>a &quot;vertex-limits&quot; start set has no points (it starts at the limit positions of the mesh&apos;s vertices)</source>
@@ -5155,6 +5187,18 @@ No imports it as it is.</source>
     <message>
         <source>the item</source>
         <translation>该项</translation>
+    </message>
+    <message>
+        <source>expected an array of net point indices [0, 9, 18]</source>
+        <translation>应为网格点索引数组 [0, 9, 18]</translation>
+    </message>
+    <message>
+        <source>%1 net point indices; a start set takes at most %2</source>
+        <translation>%1 个网格点索引；初始集最多只能有 %2 个</translation>
+    </message>
+    <message>
+        <source>expected a net point index (an integer from 0)</source>
+        <translation>应为网格点索引（从 0 开始的整数）</translation>
     </message>
 </context>
 <context>
@@ -6139,6 +6183,18 @@ No imports it as it is.</source>
         <source>a start set of kind &quot;%1&quot; needs at least %2 points, got %3</source>
         <translation>类型为 &quot;%1&quot; 的初始集至少需要 %2 个点，实际为 %3 个</translation>
     </message>
+    <message>
+        <source>a start set of net points needs at least one index</source>
+        <translation>网格点初始集至少需要一个索引</translation>
+    </message>
+    <message>
+        <source>a start set of net points takes at most %1 indices, got %2</source>
+        <translation>网格点初始集最多 %1 个索引，得到 %2 个</translation>
+    </message>
+    <message>
+        <source>net point %1 of the start set has the index %2: indices count from 0</source>
+        <translation>初始集的第 %1 个网格点索引为 %2：索引从 0 开始</translation>
+    </message>
 </context>
 <context>
     <name>awb::StartSetText</name>
@@ -6148,7 +6204,7 @@ No imports it as it is.</source>
     </message>
     <message>
         <source>a start set is written point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | vertex-limits, got &apos;%1&apos;</source>
-        <translation>初始集的写法为 point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | vertex-limits，得到的是“%1”</translation>
+        <translation type="vanished">初始集的写法为 point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | vertex-limits，得到的是“%1”</translation>
     </message>
     <message>
         <source>a %1 needs %2 coordinates (%3 per point), got %4</source>
@@ -6165,6 +6221,18 @@ No imports it as it is.</source>
     <message>
         <source>vertex-limits needs a mesh item; &apos;%1&apos; is a %2</source>
         <translation>vertex-limits 需要网格对象；“%1”是%2</translation>
+    </message>
+    <message>
+        <source>a start set is written point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | net:i,j,... | vertex-limits, got &apos;%1&apos;</source>
+        <translation>初始集的写法为 point:x,y | segment:x1,y1,x2,y2 | triangle:x1,y1,x2,y2,x3,y3 | polygon:... | points:... | lifted:x,y,c1,...;... | net:i,j,... | vertex-limits，得到的是“%1”</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a net point index (an integer from 0)</source>
+        <translation>“%1”不是网格点索引（从 0 开始的整数）</translation>
+    </message>
+    <message>
+        <source>net: needs at least one index</source>
+        <translation>net: 至少需要一个索引</translation>
     </message>
 </context>
 <context>
@@ -7976,7 +8044,7 @@ bounds: %9
     </message>
     <message>
         <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2) | vertex-limits (a mesh item: the limit positions of the vertices of the mesh refined k times; default: the item&apos;s).</source>
-        <translation>初始集：point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:...（平面坐标；曲面为 x,y,z）| lifted:x,y,c1,...;x,y,c1,...（000 §2 提升空间中的点）| vertex-limits（网格对象：网格细化 k 次后各顶点的极限位置；默认：对象自身的初始集）。</translation>
+        <translation type="vanished">初始集：point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:...（平面坐标；曲面为 x,y,z）| lifted:x,y,c1,...;x,y,c1,...（000 §2 提升空间中的点）| vertex-limits（网格对象：网格细化 k 次后各顶点的极限位置；默认：对象自身的初始集）。</translation>
     </message>
     <message>
         <source>--start vertex-limits needs a mesh item; &apos;%1&apos; is a %2</source>
@@ -8661,6 +8729,10 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>--format ply|obj|ifs|flame|matlab and --out FILE are required</source>
         <translation>需要 --format ply|obj|ifs|flame|matlab 和 --out 文件</translation>
+    </message>
+    <message>
+        <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2) | net:i,j,... (control points by index, from 0: the rows of the lifted P) | vertex-limits (a mesh item: the limit positions of the vertices of the mesh refined k times; default: the item&apos;s).</source>
+        <translation>初始集：point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:...（平面坐标；曲面为 x,y,z）| lifted:x,y,c1,...;x,y,c1,...（000 §2 提升空间中的点）| net:i,j,...（按索引选取的控制点，从 0 开始：提升矩阵 P 的行）| vertex-limits（网格对象：网格细化 k 次后各顶点的极限位置；默认：对象自身的初始集）。</translation>
     </message>
 </context>
 <context>

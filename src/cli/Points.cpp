@@ -63,7 +63,9 @@ int points(const QStringList &args)
                                             "triangle:... | polygon:... | points:... (plane "
                                             "coordinates; x,y,z for a surface) | "
                                             "lifted:x,y,c1,...;x,y,c1,... (points of the lifted "
-                                            "space of 000 §2) | vertex-limits (a mesh item: the "
+                                            "space of 000 §2) | net:i,j,... (control points by "
+                                            "index, from 0: the rows of the lifted P) | "
+                                            "vertex-limits (a mesh item: the "
                                             "limit positions of the vertices of the mesh refined "
                                             "k times; default: the item's)."),
                             "set"},

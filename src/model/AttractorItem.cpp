@@ -6,10 +6,28 @@
 #include "model/Project.h"
 #include "model/ProjectIO.h"
 
+#include <QRegularExpression>
+
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace awb {
+
+namespace {
+
+// The net start set a net begins with: its largest triangle (the lifting's first free rows,
+// 000 §2), the start of 000 Fig. 7.
+std::vector<int> largestNetTriangle(const PointList &control, int dimension)
+{
+    if (control.empty())
+        return {};
+    std::vector<int> rows = affineBasisRows(toMatrix(control, dimension));
+    rows.resize(std::min<size_t>(rows.size(), 3));
+    return rows;
+}
+
+} // namespace
 
 AttractorItem::AttractorItem(const QString &defaultName) : Item(defaultName) {}
 
@@ -21,6 +39,9 @@ MaybeProblem AttractorItem::checkStartSet(const StartSetSpec &s) const
                                    .arg(typeName())};
     if (MaybeProblem p = s.check())
         return p;
+    if (s.kind == StartSetSpec::Kind::Net)
+        if (MaybeProblem p = checkNetStart(s.net))
+            return p;
     // Lifted points need the lifted space's number of coordinates.
     if (s.kind == StartSetSpec::Kind::Lifted && s != m_startSet)
         if (const auto d = derivedIfs()) {
@@ -30,6 +51,25 @@ MaybeProblem AttractorItem::checkStartSet(const StartSetSpec &s) const
                 return Problem{"points", QString::fromStdString(e.what())};
             }
         }
+    return std::nullopt;
+}
+
+MaybeProblem AttractorItem::checkNetStart(const std::vector<int> &net) const
+{
+    const int m = controlPointSetCount() ? int(controlPoints(0).size()) : 0;
+    if (!startsAtNetPoints())
+        return Problem{"kind", tr("the start set \"net\" (control points of the net by index) is "
+                                  "for items whose IFS is built from one control net (curves, "
+                                  "surfaces, fractals with control points); this item: %1")
+                                   .arg(typeName())};
+    for (size_t k = 0; k < net.size(); ++k)
+        if (net[k] >= m)
+            return Problem{"points", tr("net point %1 of the start set has the index %2; this "
+                                        "item has %3 control points (indices 0 to %4)")
+                                         .arg(k + 1)
+                                         .arg(net[k])
+                                         .arg(m)
+                                         .arg(m - 1)};
     return std::nullopt;
 }
 
@@ -71,6 +111,7 @@ PointList startPointsFor(StartSetSpec::Kind kind, const PointList &control)
     case StartSetSpec::Kind::Points: return c;
     case StartSetSpec::Kind::Lifted: return c;
     case StartSetSpec::Kind::VertexLimits: return {};  // mesh items
+    case StartSetSpec::Kind::Net: return {};           // indices, no points
     }
     return c;
 }
@@ -85,6 +126,14 @@ QString liftedText(const std::vector<std::vector<double>> &points)
         text << c.join(QStringLiteral(", "));
     }
     return text.join(QStringLiteral("; "));
+}
+
+QString netText(const std::vector<int> &net)
+{
+    QStringList text;
+    for (int i : net)
+        text << QString::number(i);
+    return text.join(QStringLiteral(", "));
 }
 
 } // namespace
@@ -102,21 +151,32 @@ const PropertyTable &AttractorItem::attractorProperties()
         start.choice("start_set.kind", &StartSetSpec::kind, StartSetSpec::kindNames(),
                      {QT_TR_NOOP("Point"), QT_TR_NOOP("Segment"), QT_TR_NOOP("Triangle"),
                       QT_TR_NOOP("Polygon"), QT_TR_NOOP("Points"), QT_TR_NOOP("Lifted points"),
-                      QT_TR_NOOP("Vertex limits")})
+                      QT_TR_NOOP("Vertex limits"), QT_TR_NOOP("Net points")})
             .label(QT_TR_NOOP("Kind"))
             .group(QT_TR_NOOP("Start set X0"))
             .tip(QT_TR_NOOP("The set X0 deterministic iteration starts from; drag its vertices "
                             "in the attractor view. Lifted points are points of the lifted "
                             "space of 000 §2; vertex limits, a mesh's vertices' limit "
-                            "positions."))
+                            "positions; net points, control points by index, which the set "
+                            "follows when they move."))
             // A new kind starts where the curve is: from the control points, or the
             // centroid lifted with zero extra coordinates.
             .onEdit([](const AttractorItem &item, StartSetSpec &s) -> MaybeProblem {
                 const PointList control =
                     item.controlPointSetCount() ? item.controlPoints(0) : PointList{};
                 s.lifted.clear();
+                s.net.clear();
                 if (s.kind == K::VertexLimits) {
                     s.points.clear();
+                    return std::nullopt;
+                }
+                if (s.kind == K::Net) {
+                    // The largest triangle of the net (the lifting's first free rows, 000 §2):
+                    // the start of 000 Fig. 7.
+                    s.points.clear();
+                    if (control.empty())
+                        return Problem{"kind", tr("The item has no control points.")};
+                    s.net = largestNetTriangle(control, item.pointDimension());
                     return std::nullopt;
                 }
                 if (s.kind != K::Lifted) {
@@ -145,6 +205,12 @@ const PropertyTable &AttractorItem::attractorProperties()
                 [](const AttractorItem &item, const StartSetSpec &s) -> QJsonValue {
                     if (s.kind == K::VertexLimits)
                         return QJsonArray();
+                    if (s.kind == K::Net) {
+                        QJsonArray indices;
+                        for (int i : s.net)
+                            indices.append(i);
+                        return indices;
+                    }
                     if (s.kind != K::Lifted)
                         return ProjectIO::pointsToJson(s.points, item.pointDimension());
                     QJsonArray points;
@@ -158,6 +224,35 @@ const PropertyTable &AttractorItem::attractorProperties()
                 },
                 [](const AttractorItem &item, StartSetSpec &s, const QJsonValue &v,
                    const QString &where) {
+                    s.net.clear();
+                    if (s.kind == K::Net) {
+                        if (!v.isArray())
+                            throw LoadError{where, QCoreApplication::translate(
+                                                       "awb::ProjectIO",
+                                                       "expected an array of net point indices "
+                                                       "[0, 9, 18]")};
+                        const QJsonArray a = v.toArray();
+                        if (a.size() > StartSetSpec::maxNetPoints)
+                            throw LoadError{where, QCoreApplication::translate(
+                                                       "awb::ProjectIO",
+                                                       "%1 net point indices; a start set takes "
+                                                       "at most %2")
+                                                       .arg(a.size())
+                                                       .arg(StartSetSpec::maxNetPoints)};
+                        s.points.clear();
+                        s.lifted.clear();
+                        for (qsizetype i = 0; i < a.size(); ++i) {
+                            const QString at = where + QStringLiteral("[%1]").arg(i + 1);
+                            const double n = FieldReader::toNumber(a[i], at);
+                            if (n != std::floor(n) || n < 0 || n > 1e9)
+                                throw LoadError{at, QCoreApplication::translate(
+                                                        "awb::ProjectIO",
+                                                        "expected a net point index (an integer "
+                                                        "from 0)")};
+                            s.net.push_back(int(n));
+                        }
+                        return;
+                    }
                     if (s.kind == K::Lifted) {
                         if (!v.isArray())
                             throw LoadError{where, QCoreApplication::translate(
@@ -222,6 +317,41 @@ const PropertyTable &AttractorItem::attractorProperties()
             // A mesh starts at its vertices' limits: no lifted space to type points of.
             .shownWhen([](const AttractorItem &item, const StartSetSpec &) {
                 return !item.startsAtVertexLimits();
+            });
+        start
+            .text(
+                "start_set.net",
+                [](const AttractorItem &, const StartSetSpec &s) { return netText(s.net); },
+                [](const AttractorItem &, StartSetSpec &s, const QString &text) -> MaybeProblem {
+                    std::vector<int> net;
+                    for (const QString &n : text.split(QRegularExpression(QStringLiteral("[,;\\s]+")),
+                                                       Qt::SkipEmptyParts)) {
+                        bool ok = false;
+                        const int i = n.toInt(&ok);
+                        if (!ok)
+                            return Problem{"points", tr("'%1' is not a net point index (an "
+                                                        "integer from 0).")
+                                                         .arg(n)};
+                        net.push_back(i);
+                    }
+                    // Typed indices make the start set one of net points.
+                    s.kind = K::Net;
+                    s.net = net;
+                    s.points.clear();
+                    s.lifted.clear();
+                    return std::nullopt;
+                })
+            .notSaved()
+            .label(QT_TR_NOOP("Net points"))
+            .group(QT_TR_NOOP("Start set X0"))
+            .tip(QT_TR_NOOP("Control points by index, counted from 0 (commas between them): "
+                            "the start set is their point, segment or polygon in the lifted "
+                            "space, and it follows them when they move."))
+            .enabledWhen([](const AttractorItem &, const StartSetSpec &s) {
+                return s.kind == K::Net;
+            })
+            .shownWhen([](const AttractorItem &item, const StartSetSpec &) {
+                return item.startsAtNetPoints();
             });
 
         auto algorithm = d.part(&AttractorItem::m_algorithm, &AttractorItem::checkAlgorithm,
@@ -353,8 +483,70 @@ bool AttractorItem::insertControlPoint(int index, const Point &point, int set)
         || index > int(pointStorage(set).size()) || !allFinite({point})
         || int(pointStorage(set).size()) >= maxControlPoints)
         return false;
-    execute(new InsertControlPointCommand(this, set, index, point));
+    // A start set of net points or of lifted points depends on the net's count: kept valid in
+    // the same undo step, so that a saved file always reads back.
+    auto *command = new InsertControlPointCommand(this, set, index, point);
+    std::optional<CompoundEdit> edit;
+    if (startSetFollowsCount())
+        edit.emplace(project(), command->text());
+    execute(command);
+    if (edit)
+        refitStartSet(set, [index](int i) { return i >= index ? i + 1 : i; });
     return true;
+}
+
+bool AttractorItem::startSetFollowsCount() const
+{
+    return m_startSet.kind == StartSetSpec::Kind::Net
+           || m_startSet.kind == StartSetSpec::Kind::Lifted;
+}
+
+void AttractorItem::refitStartSet(int set, const std::function<int(int)> &remap)
+{
+    StartSetSpec s = m_startSet;
+    if (s.kind == StartSetSpec::Kind::Net && set == 0) {
+        // Indices follow their points; a removed point leaves the set (all removed: the
+        // centroid of the net as a point).
+        std::vector<int> kept;
+        for (int i : s.net)
+            if (const int j = remap(i); j >= 0)
+                kept.push_back(j);
+        s.net = kept;
+        if (s.net.empty()) {
+            s.kind = StartSetSpec::Kind::Point;
+            s.points = startPointsFor(s.kind, controlPoints(0));
+        }
+    } else if (s.kind == StartSetSpec::Kind::Lifted) {
+        fitLiftedPoints(s);
+    }
+    if (s != m_startSet)
+        setStartSet(s);
+}
+
+void AttractorItem::fitLiftedPoints(StartSetSpec &s) const
+{
+    // x, y (and z) and as many extra coordinates as the lifting has: zeros added, or the last
+    // ones dropped.
+    if (const auto d = derivedIfs())
+        for (auto &p : s.lifted)
+            p.resize(std::size_t(std::max(d->ifs.dim(), 2)), 0.0);
+}
+
+void AttractorItem::refitDependents()
+{
+    StartSetSpec s = m_startSet;
+    if (s.kind == StartSetSpec::Kind::Net && checkNetStart(s.net)) {
+        const PointList &control = controlPointSetCount() ? controlPoints(0) : PointList{};
+        s.net = largestNetTriangle(control, pointDimension());
+        if (s.net.empty()) {
+            s.kind = StartSetSpec::Kind::Point;
+            s.points = startPointsFor(s.kind, control);
+        }
+    } else if (s.kind == StartSetSpec::Kind::Lifted) {
+        fitLiftedPoints(s);
+    }
+    if (s != m_startSet)
+        setStartSet(s);
 }
 
 bool AttractorItem::removeControlPoint(int index, int set)
@@ -370,8 +562,19 @@ bool AttractorItem::removeControlPoints(std::vector<int> indices, int set)
     indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
     if (indices.front() < 0 || indices.back() >= int(pointStorage(set).size()))
         return false;
+    const auto remap = [indices](int i) {
+        const auto at = std::lower_bound(indices.begin(), indices.end(), i);
+        return at != indices.end() && *at == i ? -1 : i - int(at - indices.begin());
+    };
     if (indices.size() == 1) {
-        execute(new RemoveControlPointCommand(this, set, indices.front()));
+        auto *command = new RemoveControlPointCommand(this, set, indices.front());
+        if (!startSetFollowsCount()) {
+            execute(command);
+            return true;
+        }
+        CompoundEdit edit(project(), command->text());
+        execute(command);
+        refitStartSet(set, remap);
         return true;
     }
     // From the back, so that the indices still to remove do not shift.
@@ -379,6 +582,8 @@ bool AttractorItem::removeControlPoints(std::vector<int> indices, int set)
                                     int(indices.size())).arg(name()));
     for (auto it = indices.rbegin(); it != indices.rend(); ++it)
         execute(new RemoveControlPointCommand(this, set, *it));
+    if (startSetFollowsCount())
+        refitStartSet(set, remap);
     return true;
 }
 
@@ -462,6 +667,8 @@ StartSet AttractorItem::coreStartSet(const DerivedIfs &derived) const
 {
     if (m_startSet.kind == StartSetSpec::Kind::Lifted)
         return StartSet::points(liftedStartPoints(derived, m_startSet.lifted));
+    if (m_startSet.kind == StartSetSpec::Kind::Net)
+        return netStartSet(derived, m_startSet.net);
     if (m_startSet.kind == StartSetSpec::Kind::VertexLimits) {
         if (const MaybeProblem p = checkStartSet(m_startSet); p || !derived.vertexLimitStart)
             throw InputError(p ? p->message.toStdString() : derived.note.toStdString());
@@ -478,6 +685,7 @@ StartSet AttractorItem::coreStartSet(const DerivedIfs &derived) const
     case StartSetSpec::Kind::Points:
     case StartSetSpec::Kind::Lifted:        // handled above
     case StartSetSpec::Kind::VertexLimits:  // handled above
+    case StartSetSpec::Kind::Net:           // handled above
         return StartSet::points(vertices);
     case StartSetSpec::Kind::Segment:
         return StartSet::polyline(vertices);
@@ -514,6 +722,46 @@ Mat liftedStartPoints(const DerivedIfs &derived, const std::vector<std::vector<d
             X(Eigen::Index(k), c) = points[k][size_t(c)];
     }
     return X;
+}
+
+Mat netPointRows(const SubdivisionIfs &s, const std::vector<int> &net)
+{
+    const int m = int(s.controlPoints.rows());
+    const int D = s.ifs.dim();
+    if (!s.barycentric() && !s.lifting.invertible)
+        throw InputError(s.lifting.reason);
+    Mat X(Eigen::Index(net.size()), D);
+    for (size_t k = 0; k < net.size(); ++k) {
+        if (net[k] < 0 || net[k] >= m)
+            throw InputError(QCoreApplication::translate("awb::AttractorItem",
+                                                         "net point %1 of the start set has the "
+                                                         "index %2; the net has %3 points")
+                                 .arg(k + 1)
+                                 .arg(net[k])
+                                 .arg(m)
+                                 .toStdString());
+        // Barycentric form: the unit vector; lifted: the row of the lifted P, its trailing 1
+        // dropped.
+        X.row(Eigen::Index(k)) = s.barycentric()
+                                     ? RowVec(RowVec::Unit(m, net[k]))
+                                     : RowVec(s.lifting.lifted.row(net[k]).head(D));
+    }
+    return X;
+}
+
+StartSet netStartSet(const DerivedIfs &derived, const std::vector<int> &net)
+{
+    if (!derived.subdivision)
+        throw InputError(QCoreApplication::translate("awb::AttractorItem",
+                                                     "this item has no control net to start "
+                                                     "from")
+                             .toStdString());
+    const Mat X = netPointRows(*derived.subdivision, net);
+    if (net.size() == 1)
+        return StartSet::points(X);
+    if (net.size() == 2)
+        return StartSet::polyline(X);
+    return StartSet::polygon(X);
 }
 
 // ---- files ------------------------------------------------------------------------------------

@@ -77,6 +77,12 @@ struct DerivedIfs {
 // Lifted start points (each with the IFS space's dim() coordinates) as rows; throws InputError
 // naming the expected count, or when the IFS is in barycentric form (no lifting).
 Mat liftedStartPoints(const DerivedIfs &derived, const std::vector<std::vector<double>> &points);
+// Control points of `s` by index as points of its IFS space: the rows of the lifted P, or unit
+// vectors in barycentric form. Throws InputError.
+Mat netPointRows(const SubdivisionIfs &s, const std::vector<int> &net);
+// The start set of kind "net" (the item's `subdivision`): one index a point, two a segment,
+// more a polygon. Throws InputError.
+StartSet netStartSet(const DerivedIfs &derived, const std::vector<int> &net);
 
 class AttractorItem : public Item {
     Q_OBJECT
@@ -84,7 +90,20 @@ public:
     const StartSetSpec &startSet() const { return m_startSet; }
     // The spec's own check, and "vertex-limits" only for items with vertices (meshes).
     MaybeProblem checkStartSet(const StartSetSpec &s) const;
+    MaybeProblem checkNetStart(const std::vector<int> &net) const;
+    // A start set of net points or of lifted points changes meaning with the net's count.
+    bool startSetFollowsCount() const;
+    // After a change of point set `set`'s count (old index -> new, -1 when removed): net
+    // indices follow their points, lifted points get the new lifting's coordinate count.
+    void refitStartSet(int set, const std::function<int(int)> &remap);
+    // After an edit that changed the net as a whole (a new scheme or layout, a new lifting):
+    // a net start set whose indices no longer fit starts again from the net's largest
+    // triangle, lifted points get the new lifting's coordinate count.
+    bool hasDependents() const override { return startSetFollowsCount(); }
+    void refitDependents() override;
     virtual bool startsAtVertexLimits() const { return false; }
+    // Items whose IFS is built from one control net take the start set kind "net".
+    virtual bool startsAtNetPoints() const { return false; }
     bool setStartSet(const StartSetSpec &startSet, int gesture = 0);
 
     const AlgorithmSpec &algorithm() const { return m_algorithm; }
@@ -179,6 +198,7 @@ protected:
     void setInitialStartSet(const StartSetSpec &startSet) { m_startSet = startSet; }
 
 private:
+    void fitLiftedPoints(StartSetSpec &s) const;
     friend class PointSetPart;  // stores the points read from a file
     friend class MoveControlPointsCommand;
     friend class InsertControlPointCommand;

@@ -80,7 +80,8 @@ void Item::applyProperty(Value Owner::*field, const Value &value, void (Owner::*
     auto *owner = static_cast<Owner *>(this);
     if (owner->*field == value)
         return;
-    execute(new PropertyCommand<Owner, Value>(owner, field, value, signal, text, gesture));
+    executeProperty(new PropertyCommand<Owner, Value>(owner, field, value, signal, text, gesture),
+                    gesture);
 }
 
 // Adds an item to the tree. Ownership: the command owns the item before its first redo and

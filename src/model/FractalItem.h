@@ -57,6 +57,7 @@ public:
 
     int mapCount() const override { return m_fractal.mapCount(); }
     int pointDimension() const override { return m_fractal.dimension(); }
+    bool startsAtNetPoints() const override { return true; }
     int controlPointSetCount() const override { return 1; }
     // A preset's S_i fix the number of points, and so do custom reference points; a custom
     // IFS on its own control points takes any number (>= 3).

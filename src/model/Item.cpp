@@ -76,6 +76,17 @@ void Item::execute(QUndoCommand *command)
     }
 }
 
+void Item::executeProperty(QUndoCommand *command, int gesture)
+{
+    if (gesture != 0 || !hasDependents()) {
+        execute(command);
+        return;
+    }
+    const CompoundEdit edit(m_project, command->text());
+    execute(command);
+    refitDependents();
+}
+
 void Item::inputsChanged()
 {
     ++m_generation;

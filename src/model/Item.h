@@ -175,6 +175,8 @@ protected:
                        const QString &text, int gesture = 0);
     // Pushes on the project's stack, or applies at once when the item is not in a project.
     void execute(QUndoCommand *command);
+    // execute() for a property's command, with refitDependents() in the same undo step.
+    void executeProperty(QUndoCommand *command, int gesture);
     // For the commands, after they stored an input and before the property's own signal:
     // bumps the generation, drops the derived data and emits derivedChanged().
     void inputsChanged();
@@ -183,6 +185,11 @@ protected:
     virtual bool dropDerived() { return false; }
     // Rename support: point references to `from` at `to` (through undoable setters).
     virtual void renameReference(const QString &from, const QString &to);
+    // Values whose validity depends on another property's shape (an attractor's start set of
+    // net points on its net's count): a property edit that is not a gesture is followed, in
+    // the same undo step, by refitDependents(), which makes them valid again.
+    virtual bool hasDependents() const { return false; }
+    virtual void refitDependents() {}
 
 private:
     friend class Project;

@@ -36,7 +36,7 @@ bool allFinite(const PointList &points)
 const QStringList &StartSetSpec::kindNames()
 {
     static const QStringList names{"point",  "segment", "triangle",     "polygon",
-                                   "points", "lifted",  "vertex-limits"};
+                                   "points", "lifted",  "vertex-limits", "net"};
     return names;
 }
 
@@ -59,6 +59,22 @@ MaybeProblem StartSetSpec::check() const
     }
     if (kind == Kind::VertexLimits)
         return std::nullopt;
+    if (kind == Kind::Net) {
+        if (net.empty())
+            return Problem{"points", tr("a start set of net points needs at least one index")};
+        if (net.size() > size_t(maxNetPoints))
+            return Problem{"points", tr("a start set of net points takes at most %1 indices, "
+                                        "got %2")
+                                         .arg(maxNetPoints)
+                                         .arg(net.size())};
+        for (size_t k = 0; k < net.size(); ++k)
+            if (net[k] < 0)
+                return Problem{"points", tr("net point %1 of the start set has the index %2: "
+                                            "indices count from 0")
+                                             .arg(k + 1)
+                                             .arg(net[k])};
+        return std::nullopt;
+    }
     if (!allFinite(points))
         return Problem{"points", tr("every point must have finite coordinates")};
     const int n = int(points.size());
@@ -71,7 +87,8 @@ MaybeProblem StartSetSpec::check() const
     case Kind::Polygon: least = 3; break;
     case Kind::Points: least = 1; break;
     case Kind::Lifted:
-    case Kind::VertexLimits: break;
+    case Kind::VertexLimits:
+    case Kind::Net: break;
     }
     if (exact > 0 && n != exact)
         return Problem{"points", tr("a start set of kind \"%1\" needs exactly %2 points, got %3")

@@ -50,13 +50,18 @@ struct StartSetSpec {
     Q_DECLARE_TR_FUNCTIONS(awb::StartSetSpec)
 public:
     // VertexLimits: the limit positions of a mesh item's vertices (exact at every depth); no
-    // points.
-    enum class Kind { Point, Segment, Triangle, Polygon, Points, Lifted, VertexLimits };
+    // points. Net: control points of the item's net by index (0-based), as the lifted space
+    // has them -- the rows of the lifted P (000 §2) -- so the set follows the net when a point
+    // moves; one index is a point, two a segment, more a polygon. No points.
+    enum class Kind { Point, Segment, Triangle, Polygon, Points, Lifted, VertexLimits, Net };
     Kind kind = Kind::Point;
     PointList points{{0.0, 0.0}};
     // Kind Lifted: the points, each with the lifted space's number of coordinates (the item
     // checks the count against its IFS when it is computed).
     std::vector<std::vector<double>> lifted{};
+    // Kind Net: the indices (the item checks them against its number of control points).
+    std::vector<int> net{};
+    static constexpr int maxNetPoints = 4096;
 
     bool operator==(const StartSetSpec &) const = default;
     // Right number of finite points for the kind (1, 2, 3, >= 3, >= 1).

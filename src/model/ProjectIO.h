@@ -124,12 +124,6 @@ public:
     static QJsonArray pointsToJson(const PointList &points, int dim = 2);
     // A row of numbers (a map's b, a row of its A, a limit position) as a JSON array.
     static QJsonArray rowToJson(const RowVec &row);
-    static QJsonObject startSetToJson(const StartSetSpec &s, int dim = 2);
-    static StartSetSpec readStartSet(const FieldReader &r, int dim = 2);
-    static QJsonObject algorithmToJson(const AlgorithmSpec &a);
-    static AlgorithmSpec readAlgorithm(const FieldReader &r);
-    static QJsonObject styleToJson(const StyleSpec &s);
-    static StyleSpec readStyle(const FieldReader &r);
 
 private:
     // `checkAnimation`: also check that the item accepts its animation's values (which reads

@@ -38,7 +38,7 @@ StartSet::Kind parseStartSetText(const QString &text, Mat *points, int dim)
                                                 "segment:x1,y1,x2,y2 | "
                                                 "triangle:x1,y1,x2,y2,x3,y3 | polygon:... | "
                                                 "points:... | lifted:x,y,c1,...;... | "
-                                                "vertex-limits, got '%1'")
+                                                "net:i,j,... | vertex-limits, got '%1'")
                                     .arg(text),
                                 true};
     QList<double> v;
@@ -79,6 +79,26 @@ StartSet startSetFromText(const AttractorItem &item, const DerivedIfs &d, const 
             throw StartSetTextError{StartTextTr::tr("lifted: needs at least one point")};
         try {
             return StartSet::points(liftedStartPoints(d, lifted));
+        } catch (const InputError &e) {
+            throw StartSetTextError{QString::fromStdString(e.what())};
+        }
+    }
+    if (text.startsWith("net:")) {
+        // Control points by index (0-based): net:0,9,18
+        std::vector<int> net;
+        for (const QString &n : text.mid(4).split(',', Qt::SkipEmptyParts)) {
+            bool ok = false;
+            const int i = n.trimmed().toInt(&ok);
+            if (!ok || i < 0)
+                throw StartSetTextError{
+                    StartTextTr::tr("'%1' is not a net point index (an integer from 0)")
+                        .arg(n.trimmed())};
+            net.push_back(i);
+        }
+        if (net.empty())
+            throw StartSetTextError{StartTextTr::tr("net: needs at least one index")};
+        try {
+            return netStartSet(d, net);
         } catch (const InputError &e) {
             throw StartSetTextError{QString::fromStdString(e.what())};
         }

@@ -3,7 +3,8 @@
 // Item.points(start=TEXT) read the same forms through this one reader --
 //   point:x,y  segment:x1,y1,x2,y2  triangle:x1,y1,...  polygon:...  points:...
 //   (x,y,z per point for items of space), lifted:x,y,c1,..;x,y,c1,.. (points of the lifted
-//   space, 000 §2), vertex-limits (a mesh item's vertices' limit positions).
+//   space, 000 §2), net:i,j,.. (control points by index: the rows of the lifted P),
+//   vertex-limits (a mesh item's vertices' limit positions).
 
 #include "core/ifs/Attractor.h"
 

@@ -37,6 +37,7 @@ public:
 
     int mapCount() const override { return m_scheme.arity(); }
     int controlPointSetCount() const override { return 1; }
+    bool startsAtNetPoints() const override { return true; }
     // The user's own m x m matrices S_i fix m (points can be added or removed only while
     // their number is not m yet); a Bézier curve takes degree + 1 points (the GUI raises the
     // degree with an inserted point).

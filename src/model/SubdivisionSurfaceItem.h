@@ -105,6 +105,7 @@ public:
 
     int mapCount() const override { return m_net.usedMapCount(); }
     int pointDimension() const override { return 3; }
+    bool startsAtNetPoints() const override { return true; }
     int controlPointSetCount() const override { return 1; }
     bool pointCountEditable(int) const override { return false; }
 

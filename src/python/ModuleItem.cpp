@@ -312,7 +312,8 @@ void defineItemClass(py::module_ &m)
             "points(depth=None, start=None, address=None, max_points=1e8, with_maps=False) -> "
             "numpy (N, d)\n\nThe points of F^depth(X0) (attractor-cli points): depth the item's "
             "by default; start the item's start set, or an (n, d) array of points, or a text as "
-            "--start takes (\"segment:0,0,1,0\", \"lifted:...\", \"vertex-limits\"); address "
+            "--start takes (\"segment:0,0,1,0\", \"lifted:...\", \"net:0,9,18\", "
+            "\"vertex-limits\"); address "
             "a list of 0-based maps w (the sub-copy f_w(A)). With with_maps, also each point's "
             "0-based map applied last (-1 for X0). Ctrl+C cancels.")
         .def(

@@ -118,6 +118,21 @@ void TestSurfacesCli::pointsAreThreeDimensional()
     const QList<QByteArray> lines = out.trimmed().split('\n');
     QCOMPARE(lines.first(), QByteArray("x,y,z,map,view"));
     QCOMPARE(lines.size() - 1, 6 * 6 * 3);  // 6^2 images of a triangle
+    // Its start set is net points 0, 9, 18 (the rows of the lifted P): typed, the same points.
+    QByteArray typed;
+    QCOMPARE(run({"points", example("000-fig07-box-spline-hexagon.awb"), "--item",
+                  "000 Fig. 7: box-spline hexagon from a triangle", "--depth", "2", "--start",
+                  "net:0,9,18", "--csv"},
+                 &typed, &err),
+             0);
+    QCOMPARE(typed, out);
+    QCOMPARE(run({"points", example("000-fig07-box-spline-hexagon.awb"), "--item",
+                  "000 Fig. 7: box-spline hexagon from a triangle", "--start", "net:0,19",
+                  "--csv"},
+                 &typed, &err),
+             1);
+    QVERIFY2(err.contains("net point 2 of the start set has the index 19; the net has 19 points"),
+             err.constData());
     for (int i = 1; i < lines.size(); ++i) {
         const QList<QByteArray> f = lines[i].split(',');
         QCOMPARE(f.size(), 5);

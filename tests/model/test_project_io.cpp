@@ -422,7 +422,7 @@ private slots:
                     QVERIFY2(a->derivedIfs(), qPrintable(a->derivedError()));
             ++examples;
         }
-        QCOMPARE(examples, 15);
+        QCOMPARE(examples, 16);
     }
 };
 
