@@ -463,6 +463,7 @@ void ItemController::refreshSurface(AttractorItem *item, const DerivedIfs &d)
     m_surface->setStartVertices(toMatrix(item->startSet().points, 3));
     // A lattice surface is drawn from its net linearly: a net point's drag moves the mesh.
     m_surface->setNetCoordinates(d.surface ? d.surface->ifs.netCoordinates() : Projection{});
+    m_surface->setStartFollowsNet(item->startSet().kind == StartSetSpec::Kind::Net);
     // Its corner limits tile it: the coarse meshes of a gesture are a closed surface.
     m_surface->setTilingStart(d.surface && d.surface->cornerLimitStart.rows() >= 3
                                   ? StartSet::polygon(d.surface->cornerLimitStart)
@@ -548,8 +549,11 @@ void ItemController::refreshViews()
     m_refreshTimer.stop();
     const auto *plot = qobject_cast<const EigenvaluePlotItem *>(m_item.data());
     AttractorItem *item = drawnItem();
-    // The plot's source is shown, not edited, in the views.
-    m_attractor->setStartSetEditable(!plot && !m_frame);
+    // The plot's source is shown, not edited, in the views; lifted points and net points have
+    // no plane points to drag (net points move with the net's handles).
+    const bool planeStart = item && item->startSet().kind != StartSetSpec::Kind::Lifted
+                            && item->startSet().kind != StartSetSpec::Kind::Net;
+    m_attractor->setStartSetEditable(!plot && !m_frame && planeStart);
     QString problem;
     if (!item) {
         clearViews();

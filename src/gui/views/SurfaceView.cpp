@@ -469,10 +469,12 @@ void SurfaceView::startDragBase(int point)
     const int fullDepth =
         surfaceMeshDepth(*m_ifs, m_start, m_settings.depth, double(m_fullBudget), m_own);
     // A start vertex with a coefficient on the point: c P^ = [X0, 1] forces c to change with
-    // any move of it, so the moved full mesh could never be F^k(X0): not built.
+    // any move of it, so the moved full mesh could never be F^k(X0): not built -- unless the
+    // start is made of net points, which move with the net (their coefficients stay e_j).
     const Mat coefficients = startCoefficients();
-    const bool fullCanBeExact = point < coefficients.cols()
-                                && coefficients.col(point).cwiseAbs().maxCoeff() < 1e-12;
+    const bool fullCanBeExact =
+        m_startFollowsNet
+        || (point < coefficients.cols() && coefficients.col(point).cwiseAbs().maxCoeff() < 1e-12);
     m_baseWorker->post([this, ifs = m_ifs, coarse = coarseStart(), start = m_start,
                         label = colours().label, depth, fullDepth, coefficients, weight, point,
                         net = m_net, fullCanBeExact](const std::atomic<bool> &cancel) {

@@ -88,6 +88,10 @@ public:
     // draws the coarse mesh of the press moved by each vertex's weight (core movedNetPoint)
     // instead of iterating again for every move.
     void setNetCoordinates(Projection coordinates) { m_netCoordinates = std::move(coordinates); }
+    // The start set is made of net points (start set kind "net"): its coefficients on the net
+    // are unit vectors whatever the points' positions, so a net point's drag moves F^k(X0)
+    // exactly (the full mesh of the press, moved, is the picture at the release).
+    void setStartFollowsNet(bool follows) { m_startFollowsNet = follows; }
     // A start set whose images tile the attractor (a lattice patch's corner limits, SurfaceIfs::
     // cornerLimitStart; empty: none), set before setIfs: the coarse meshes drawn while
     // something moves start from it, a closed surface at any depth instead of the scattered
@@ -353,6 +357,7 @@ private:
     };
     Release m_release;
     Projection m_netCoordinates;
+    bool m_startFollowsNet = false;
     StartSet m_tilingStart;
     // The coarse meshes' primitives at most: a tiling start's triangles cover the whole
     // surface (each pixel several times where a patch's pieces overlap, 1.5x per level for
