@@ -410,35 +410,66 @@ std::vector<std::uint32_t> toneMap(const DensityImage &image, const RasterFrame 
     return out;
 }
 
+namespace {
+
+// One output pixel's sums over its ss x ss cells: {n, n r, n g, n b} (densitySums).
+struct PixelSummer {
+    const DensityImage &image;
+    const std::vector<Rgb8> &labels;
+    std::vector<Rgb8> ramp;
+    int cw, ss;
+    bool hitsImage;
+
+    PixelSummer(const DensityImage &image, const RasterFrame &frame,
+                const std::vector<Rgb8> &labels)
+        : image(image), labels(labels), ramp(colourRamp(labels)), cw(image.cellsX()),
+          ss(frame.supersample), hitsImage(image.mode() == Accumulation::Hits)
+    {
+        if (image.cellsX() != frame.width * ss || image.cellsY() != frame.height * ss)
+            throw InputError(
+                coreTranslate("awb::render", "density image does not match its frame"));
+    }
+    // The hits of the pixel alone.
+    double count(int x, int y) const
+    {
+        double n = 0;
+        for (int sy = 0; sy < ss; ++sy)
+            for (int sx = 0; sx < ss; ++sx)
+                n += std::max(0.0, image.cell(std::size_t(y * ss + sy) * cw + (x * ss + sx))[0]);
+        return n;
+    }
+    std::array<double, 4> operator()(int x, int y) const
+    {
+        std::array<double, 4> s{0, 0, 0, 0};
+        for (int sy = 0; sy < ss; ++sy)
+            for (int sx = 0; sx < ss; ++sx) {
+                const auto c = image.cell(std::size_t(y * ss + sy) * cw + (x * ss + sx));
+                if (c[0] <= 0)
+                    continue;
+                Rgb8 colour;
+                if (!hitsImage)
+                    colour = ramp[std::size_t(std::clamp(std::lround(c[1] / c[0]), 0L, 255L))];
+                else if (!labels.empty())
+                    colour = labels[std::min(std::size_t(c[1]) - 1, labels.size() - 1)];
+                s[0] += c[0];
+                s[1] += c[0] * colour.r, s[2] += c[0] * colour.g, s[3] += c[0] * colour.b;
+            }
+        return s;
+    }
+};
+
+} // namespace
+
 std::vector<std::array<double, 4>> densitySums(const DensityImage &image,
                                                const RasterFrame &frame,
                                                const std::vector<Rgb8> &labels)
 {
-    const int W = frame.width, H = frame.height, ss = frame.supersample;
-    if (image.cellsX() != W * ss || image.cellsY() != H * ss)
-        throw InputError(coreTranslate("awb::render", "density image does not match its frame"));
-    const int cw = image.cellsX();
-    const std::vector<Rgb8> ramp = colourRamp(labels);
-    const bool hitsImage = image.mode() == Accumulation::Hits;
+    const PixelSummer sums(image, frame, labels);
+    const int W = frame.width, H = frame.height;
     std::vector<std::array<double, 4>> px(std::size_t(W) * H);
     for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x) {
-            std::array<double, 4> s{0, 0, 0, 0};
-            for (int sy = 0; sy < ss; ++sy)
-                for (int sx = 0; sx < ss; ++sx) {
-                    const auto c = image.cell(std::size_t(y * ss + sy) * cw + (x * ss + sx));
-                    if (c[0] <= 0)
-                        continue;
-                    Rgb8 colour;
-                    if (!hitsImage)
-                        colour = ramp[std::size_t(std::clamp(std::lround(c[1] / c[0]), 0L, 255L))];
-                    else if (!labels.empty())
-                        colour = labels[std::min(std::size_t(c[1]) - 1, labels.size() - 1)];
-                    s[0] += c[0];
-                    s[1] += c[0] * colour.r, s[2] += c[0] * colour.g, s[3] += c[0] * colour.b;
-                }
-            px[std::size_t(y) * W + x] = s;
-        }
+        for (int x = 0; x < W; ++x)
+            px[std::size_t(y) * W + x] = sums(x, y);
     return px;
 }
 
@@ -530,18 +561,21 @@ void toneMapInto(const DensityImage &image, const RasterFrame &frame, const Tone
     }
 
     // Density: box-filter the cells into pixels (counts and colours weighted by count), then
-    // log-scale against the densest pixel.
-    const std::vector<std::array<double, 4>> px = densitySums(image, frame, labels);
+    // log-scale against the densest pixel -- two passes over the cells, no image of sums (a
+    // megapixel's would be 32 MB to fault in, a third of a short render's time).
+    const PixelSummer sums(image, frame, labels);
     double maxCount = 0;
-    for (const auto &p : px)
-        maxCount = std::max(maxCount, p[0]);
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x)
+            maxCount = std::max(maxCount, sums.count(x, y));
     if (maxCount <= 0)
         return;
     const double g = 1.0 / std::max(0.1, tone.gamma);
     const double vib = std::clamp(tone.vibrancy, 0.0, 1.0);
     const double norm = 1.0 / std::log1p(maxCount);
-    for (std::size_t i = 0; i < px.size(); ++i) {
-        const auto &s = px[i];
+    for (std::size_t i = 0; i < std::size_t(W) * H; ++i) {
+        const int x = int(i % std::size_t(W)), y = int(i / std::size_t(W));
+        const auto s = sums(x, y);
         if (s[0] <= 0)
             continue;
         // Log density in (0, 1], the densest pixel at 1.
