@@ -8760,6 +8760,18 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
         <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2) | net:i,j,... (control points by index, from 0: the rows of the lifted P) | vertex-limits (a mesh item: the limit positions of the vertices of the mesh refined k times; default: the item&apos;s).</source>
         <translation>Počáteční množina: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (rovinné souřadnice; u plochy x,y,z) | lifted:x,y,c1,...;x,y,c1,... (body zdviženého prostoru z 000 §2) | net:i,j,... (řídicí body podle indexu od 0: řádky zdvižené matice P) | vertex-limits (položka se sítí: limitní polohy vrcholů sítě zjemněné k-krát; výchozí: podle položky).</translation>
     </message>
+    <message>
+        <source>%1: %2 % (%3 s</source>
+        <translation>%1: %2 % (%3 s</translation>
+    </message>
+    <message>
+        <source>, about %1 s left</source>
+        <translation>, zbývá asi %1 s</translation>
+    </message>
+    <message>
+        <source>Report the iteration&apos;s progress on stderr, one line per report (default: on a terminal only, after a second).</source>
+        <translation>Hlásit průběh iterace na stderr, jeden řádek na hlášení (výchozí: jen na terminálu, po první sekundě).</translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>

@@ -8747,6 +8747,18 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
         <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2) | net:i,j,... (control points by index, from 0: the rows of the lifted P) | vertex-limits (a mesh item: the limit positions of the vertices of the mesh refined k times; default: the item&apos;s).</source>
         <translation>Ensemble initial : point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (coordonnées du plan ; x,y,z pour une surface) | lifted:x,y,c1,...;x,y,c1,... (points de l’espace relevé de 000 §2) | net:i,j,... (points de contrôle par indice, à partir de 0 : les lignes de la matrice P relevée) | vertex-limits (élément maillage : les positions limites des sommets du maillage raffiné k fois ; par défaut : celui de l’élément).</translation>
     </message>
+    <message>
+        <source>%1: %2 % (%3 s</source>
+        <translation>%1 : %2 % (%3 s</translation>
+    </message>
+    <message>
+        <source>, about %1 s left</source>
+        <translation>, environ %1 s restantes</translation>
+    </message>
+    <message>
+        <source>Report the iteration&apos;s progress on stderr, one line per report (default: on a terminal only, after a second).</source>
+        <translation>Indiquer l’avancement de l’itération sur stderr, une ligne par indication (par défaut : sur un terminal seulement, après une seconde).</translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>

@@ -8734,6 +8734,18 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
         <source>Start set: point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:... (plane coordinates; x,y,z for a surface) | lifted:x,y,c1,...;x,y,c1,... (points of the lifted space of 000 §2) | net:i,j,... (control points by index, from 0: the rows of the lifted P) | vertex-limits (a mesh item: the limit positions of the vertices of the mesh refined k times; default: the item&apos;s).</source>
         <translation>初始集：point:x,y | segment:x1,y1,x2,y2 | triangle:... | polygon:... | points:...（平面坐标；曲面为 x,y,z）| lifted:x,y,c1,...;x,y,c1,...（000 §2 提升空间中的点）| net:i,j,...（按索引选取的控制点，从 0 开始：提升矩阵 P 的行）| vertex-limits（网格对象：网格细化 k 次后各顶点的极限位置；默认：对象自身的初始集）。</translation>
     </message>
+    <message>
+        <source>%1: %2 % (%3 s</source>
+        <translation>%1：%2 %（%3 秒</translation>
+    </message>
+    <message>
+        <source>, about %1 s left</source>
+        <translation>，约剩 %1 秒</translation>
+    </message>
+    <message>
+        <source>Report the iteration&apos;s progress on stderr, one line per report (default: on a terminal only, after a second).</source>
+        <translation>在 stderr 上报告迭代进度，每次报告一行（默认：仅在终端上，一秒之后）。</translation>
+    </message>
 </context>
 <context>
     <name>awb::core</name>

@@ -10,6 +10,14 @@
 #include "model/Project.h"
 
 #include <QCoreApplication>
+#include <QElapsedTimer>
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <mutex>
+
+#include <unistd.h>
 
 namespace awb::cli {
 
@@ -22,6 +30,49 @@ QTextStream &err()
 {
     static QTextStream s(stderr);
     return s;
+}
+
+std::function<void(double)> progressLine(const QString &what, bool always)
+{
+    const bool terminal = isatty(fileno(stderr)) != 0;
+    if (!terminal && !always)
+        return {};
+    struct State {
+        std::mutex mutex;
+        QElapsedTimer clock;
+        qint64 shownAt = -1;
+        int percent = -1;
+    };
+    auto state = std::make_shared<State>();
+    state->clock.start();
+    const QByteArray name = what.toLocal8Bit();
+    return [state, terminal, name](double fraction) {
+        const std::lock_guard<std::mutex> lock(state->mutex);
+        const qint64 ms = state->clock.elapsed();
+        const int percent = int(std::clamp(fraction, 0.0, 1.0) * 100.0);
+        const bool last = percent == 100;
+        if (percent == state->percent || (terminal && ms < 1000 && !last)
+            || (!last && state->shownAt >= 0 && ms - state->shownAt < 200))
+            return;
+        if (last && state->percent < 0 && terminal && ms < 1000)
+            return;  // done before a line was worth showing
+        state->percent = percent;
+        state->shownAt = ms;
+        QString line = CliTr::tr("%1: %2 % (%3 s").arg(QString::fromLocal8Bit(name))
+                           .arg(percent)
+                           .arg(double(ms) / 1000.0, 0, 'f', 1);
+        if (percent > 0 && !last) {
+            const double left = double(ms) / 1000.0 * (100.0 - percent) / percent;
+            line += CliTr::tr(", about %1 s left").arg(left, 0, 'f', left < 10 ? 1 : 0);
+        }
+        line += QStringLiteral(")");
+        const QByteArray text = line.toLocal8Bit();
+        if (terminal)
+            std::fprintf(stderr, "\r%s\033[K%s", text.constData(), last ? "\n" : "");
+        else
+            std::fprintf(stderr, "%s\n", text.constData());
+        std::fflush(stderr);
+    };
 }
 
 void parseOrFail(QCommandLineParser &parser, const QStringList &args, int positional)

@@ -14,6 +14,7 @@
 #include <QTextStream>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 
 namespace awb {
@@ -53,6 +54,11 @@ std::shared_ptr<const DerivedIfs> derived(const AttractorItem *item);
 int intOption(const QCommandLineParser &parser, const QString &name, int lo, int hi);
 // --scheme of the mesh commands: catmull-clark or loop (exit 2 otherwise).
 MeshScheme meshSchemeOption(const QCommandLineParser &parser);
+// A progress line on stderr for a long computation (`render`): the returned function takes
+// the fraction done, from any thread. On a terminal it is one line rewritten in place, from
+// the first second on; with `always` (--progress) it is also written to a file or a pipe, one
+// line per report, from the start. Nothing otherwise.
+std::function<void(double)> progressLine(const QString &what, bool always);
 // A count written as digits or in exponent form ("1e9"), whole, from lo to hi.
 std::uint64_t countOption(const QCommandLineParser &parser, const QString &name, double lo,
                           double hi);

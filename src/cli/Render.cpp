@@ -64,6 +64,9 @@ int render(const QStringList &args)
                                            "attractor)."),
                             "name"},
                            {"out", CliTr::tr("Output file: .png, .svg, .pdf or .exr."), "file"},
+                           {"progress", CliTr::tr("Report the iteration's progress on stderr, "
+                                                  "one line per report (default: on a "
+                                                  "terminal only, after a second).")},
                            {"scaled", CliTr::tr("A complex Bézier curve of t = 1/2 + iy in the "
                                                 "scaled coordinates g(z, 1/(2y)) of 004 Thm "
                                                 "3.7.3, where it approaches the Takagi graph "
@@ -72,7 +75,8 @@ int render(const QStringList &args)
         parseOrFail(parser, args, 1);
         if (!parser.isSet("out"))
             throw Failure{CliTr::tr("--out FILE is required"), 2};
-        const FigureOptions options = figureOptions(parser);
+        FigureOptions options = figureOptions(parser);
+        options.progress = progressLine(QStringLiteral("render"), parser.isSet("progress"));
         Project project;
         load(project, parser.positionalArguments().first());
         AttractorItem *item = attractorItem(project, parser.value("item"));

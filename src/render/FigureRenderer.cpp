@@ -223,6 +223,7 @@ void drawRaster(QPainter &p, const FigureSpec &spec, const Frame &f, int depth)
     r.dotRadius = scale > 1.5 && spec.tone.mode == Accumulation::Hits ? 1 : 0;
     IterationControl control;
     control.cancel = spec.cancel;
+    control.progress = spec.progress;
     const QImage img = renderAttractorImage(r, nullptr, control);
     p.save();
     p.setRenderHint(QPainter::SmoothPixmapTransform);

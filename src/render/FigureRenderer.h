@@ -58,6 +58,7 @@ struct FigureSpec {
     QRectF bounds;
     FigureMetadata metadata;           // written into PNG and SVG files (the item's project)
     const std::atomic<bool> *cancel = nullptr;  // stops the raster panels' iteration
+    std::function<void(double)> progress;       // their fraction done (from worker threads)
 };
 
 // Colour of map i (by address): a qualitative palette that reads on white and in print.

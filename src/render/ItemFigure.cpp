@@ -59,6 +59,7 @@ void writeRawDensity(const FigureSpec &spec, const std::shared_ptr<const Derived
     r.threads = spec.threads;
     IterationControl control;
     control.cancel = o.cancel;
+    control.progress = o.progress;
     const AttractorDensity density = renderAttractorDensity(r, control);
     if (o.cancel && o.cancel->load())
         fail(FigureTr::tr("the rendering was cancelled"));
@@ -178,6 +179,8 @@ void renderItemFigure(const Project &project, AttractorItem *item, const FigureO
                         .arg(az)
                         .arg(el);
         s.metadata = itemFigureMetadata(project, *item);
+        s.control.cancel = o.cancel;
+        s.control.progress = o.progress;
         QString error;
         if (!writeSurfaceFigure(s, outFile, &error, o.format))
             fail(error);
@@ -211,6 +214,7 @@ void renderItemFigure(const Project &project, AttractorItem *item, const FigureO
     }
     spec.metadata = itemFigureMetadata(project, *item);
     spec.cancel = o.cancel;
+    spec.progress = o.progress;
     const QString suffix = o.format.isEmpty() ? QFileInfo(outFile).suffix().toLower() : o.format;
     if (suffix == QLatin1String("exr") || o.bits == 16 || o.rawDensity) {
         writeRawDensity(spec, d, depth, o, suffix, caption, outFile);

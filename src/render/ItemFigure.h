@@ -45,6 +45,9 @@ struct FigureOptions {
     // Set to stop the attractor's raster early (Python's render on Ctrl+C): the figure is then
     // not written and renderItemFigure throws.
     const std::atomic<bool> *cancel = nullptr;
+    // Called with the fraction of the attractor's iteration done, from worker threads (the
+    // CLI's progress line).
+    std::function<void(double)> progress;
     // Set: the raw density (format "exr") is returned here instead of written to a file --
     // one chunk of a render split over a cluster's workers (python/attractor_workbench/
     // render.py), whose sum the module writes with writeDensityExr / writeDensityPng16.

@@ -2,6 +2,7 @@
 
 #include "render/FigureFile.h"
 
+#include <QCoreApplication>
 #include <QFontMetrics>
 #include <QPainter>
 
@@ -68,8 +69,7 @@ OrthoCamera surfaceCamera(const SurfaceFigureSpec &spec, int height)
                             double(spec.width) / std::max(height, 1));
 }
 
-QImage renderSurfaceFigure(const SurfaceFigureSpec &spec, const std::atomic<bool> *cancel,
-                           IterationStats *statsOut)
+QImage renderSurfaceFigure(const SurfaceFigureSpec &spec, IterationStats *statsOut)
 {
     const int h = pictureHeight(spec);
     const OrthoCamera camera = surfaceCamera(spec, h);
@@ -83,8 +83,7 @@ QImage renderSurfaceFigure(const SurfaceFigureSpec &spec, const std::atomic<bool
                 spec.width, h, camera, spec.ifs->views, spec.mapColors, spec.pointRadius));
             sinks.push_back(rasters.back().get());
         }
-        IterationControl control;
-        control.cancel = cancel;
+        const IterationControl &control = spec.control;
         if (spec.iterate) {
             stats = spec.iterate(spec.start, spec.depth, sinks, control);
         } else if (spec.random) {
@@ -153,6 +152,12 @@ bool writeSurfaceFigure(const SurfaceFigureSpec &spec, const QString &fileName, 
                         const QString &format)
 {
     const QImage image = renderSurfaceFigure(spec);
+    if (image.isNull()) {
+        if (error)
+            *error = QCoreApplication::translate("awb::ItemFigure",
+                                                 "the rendering was cancelled");
+        return false;
+    }
     PaintedFigureOptions o;
     o.title = spec.caption;
     o.metadata = spec.metadata;

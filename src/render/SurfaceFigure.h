@@ -44,13 +44,14 @@ struct SurfaceFigureSpec {
     int height = 700;
     int threads = 0;                 // 0: the machine's cores
     FigureMetadata metadata;         // written into PNG and SVG files (the item's project)
+    IterationControl control;        // the iteration's cancel flag and progress
 };
 
 // The camera SurfaceFigureSpec's picture uses: fitted to framePoints and a coarse iterate.
 OrthoCamera surfaceCamera(const SurfaceFigureSpec &spec, int pictureHeight);
-// The picture (width x height, caption included). Returns a null image when cancelled.
-QImage renderSurfaceFigure(const SurfaceFigureSpec &spec, const std::atomic<bool> *cancel = nullptr,
-                           IterationStats *stats = nullptr);
+// The picture (width x height, caption included). Returns a null image when spec.control's
+// cancel flag stopped it.
+QImage renderSurfaceFigure(const SurfaceFigureSpec &spec, IterationStats *stats = nullptr);
 // PNG, or SVG/PDF with the picture embedded as a lossless raster, by the file's suffix.
 // `format` (png, svg, pdf) defaults to the file's suffix.
 bool writeSurfaceFigure(const SurfaceFigureSpec &spec, const QString &fileName, QString *error,

@@ -30,6 +30,7 @@ private slots:
     void renderDrawsTheSurface_data();
     void renderDrawsTheSurface();
     void badOptions();
+    void renderReportsProgress();
 
 private:
     QString example(const QString &name) const { return awb::test::examplePath(name); }
@@ -289,6 +290,33 @@ void TestSurfacesCli::badOptions()
                  &out, &err),
              1);
     QVERIFY(err.contains("--max-points"));
+}
+
+// `render --progress` reports the iteration's fraction done on stderr, rising to 100 % -- for
+// a surface (its own raster) and a plane attractor (the engine); without it and without a
+// terminal (a pipe, as here) stderr stays quiet.
+void TestSurfacesCli::renderReportsProgress()
+{
+    const QString png = m_dir.filePath("progress.png");
+    for (const QStringList &args :
+         {QStringList{example("000-fig07-box-spline-hexagon.awb"), "--depth", "8"},
+          QStringList{example("000-fig11-sierpinski-with-control-points.awb"), "--samples",
+                      "3e7", "--threads", "1"}}) {
+        QByteArray err;
+        QCOMPARE(run(QStringList{"render"} + args + QStringList{"--progress", "--out", png},
+                     nullptr, &err),
+                 0);
+        const QList<QByteArray> lines = err.trimmed().split('\n');
+        QVERIFY2(lines.last().startsWith("render: 100 % ("), err.constData());
+        int previous = -1;
+        for (const QByteArray &line : lines) {
+            const int percent = line.mid(8, line.indexOf('%') - 8).trimmed().toInt();
+            QVERIFY2(line.startsWith("render: ") && percent > previous, err.constData());
+            previous = percent;
+        }
+        QCOMPARE(run(QStringList{"render"} + args + QStringList{"--out", png}, nullptr, &err), 0);
+        QCOMPARE(err, QByteArray());
+    }
 }
 
 AWB_TEST_MAIN(TestSurfacesCli)
