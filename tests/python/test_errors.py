@@ -651,7 +651,11 @@ def test_ctrl_c_interrupts_points(examples, file):
 
 
 @pytest.mark.subprocess
-def test_ctrl_c_interrupts_render(examples, tmp_path):
+@pytest.mark.parametrize("file, amount", [
+    ("002-fig03-union-p1.awb", "samples=1e9"),
+    # A surface (its own raster, render/SurfaceFigure): 6^11 triangles, a minute.
+    ("000-fig07-box-spline-hexagon.awb", "depth=11")])
+def test_ctrl_c_interrupts_render(examples, tmp_path, file, amount):
     code = (
         "import signal, sys, time\n"
         "signal.signal(signal.SIGINT, signal.default_int_handler)\n"
@@ -660,12 +664,12 @@ def test_ctrl_c_interrupts_render(examples, tmp_path):
         "print('ready', flush=True)\n"
         "t = time.monotonic()\n"
         "try:\n"
-        "    item.render(sys.argv[2], size=(64, 64), samples=1e9, threads=1)\n"
+        "    item.render(sys.argv[2], size=(64, 64), %s, threads=1)\n" % amount +
         "    print('finished after %.2f s' % (time.monotonic() - t), flush=True)\n"
         "except KeyboardInterrupt:\n"
         "    print('interrupted after %.2f s' % (time.monotonic() - t), flush=True)\n")
     child = subprocess.Popen([sys.executable, "-c", code,
-                              str(examples / "002-fig03-union-p1.awb"), str(tmp_path / "f.png")],
+                              str(examples / file), str(tmp_path / "f.png")],
                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                              env=subprocess_env())
     try:
