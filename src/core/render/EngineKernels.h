@@ -137,13 +137,7 @@ inline std::int32_t cellIndex(double sx, double sy, int w, int h)
 // the processor (leafKernels). The AVX2 loops add and multiply the same numbers in the same
 // order, without fused multiply-adds, so both give the same cells bit for bit.
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define AWB_AVX2_KERNELS 1
-#define AWB_AVX2_TARGET __attribute__((target("avx2")))
-#define AWB_INLINE_BODY __attribute__((always_inline)) inline
-#else
-#define AWB_INLINE_BODY inline
-#endif
+// (AWB_AVX2_KERNELS, AWB_AVX2_TARGET and AWB_INLINE_BODY: EngineShared.h.)
 
 // s[r][k] = C[k] + sum_j X[r][j] L[j][k] for the n vertices X (rows of D) and k < len.
 template <int D>

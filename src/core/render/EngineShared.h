@@ -18,6 +18,17 @@ namespace awb::engine {
 constexpr int kMaxFixedDim = 12;
 constexpr int kInterleave = 4;  // orbits advanced together per thread
 
+// x86-64 with GCC or Clang: the kernels exist twice, for the baseline and for AVX2 (chosen at
+// run time by haveAvx2). Defined here, where Engine.cpp (haveAvx2 itself) sees it too: defined
+// only beside the kernels, haveAvx2 was compiled without it and every render ran the baseline.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define AWB_AVX2_KERNELS 1
+#define AWB_AVX2_TARGET __attribute__((target("avx2")))
+#define AWB_INLINE_BODY __attribute__((always_inline)) inline
+#else
+#define AWB_INLINE_BODY inline
+#endif
+
 // Whether the AVX2 kernels run: the processor has AVX2 and forceBaselineKernels is off
 // (Engine.cpp).
 bool haveAvx2();
