@@ -442,7 +442,9 @@ std::vector<std::uint32_t> SurfaceRaster::shade(const std::vector<std::uint32_t>
             // dz/dx along screen x (right); screen y grows downward, so up = -dy.
             const double gx = slope(x, y, 1, 0), gy = -slope(x, y, 0, 1);
             const Eigen::Vector3d normal = Eigen::Vector3d(-gx, -gy, 1.0).normalized();
-            const double lambert = std::abs(normal.dot(light));
+            // Depths of absurd size (a net point at 1e300) give no slope: lit face on.
+            const double lambert =
+                std::isfinite(gx) && std::isfinite(gy) ? std::abs(normal.dot(light)) : 1.0;
             const double shadeFactor = 0.3 + 0.75 * lambert;
             const std::uint32_t base =
                 palette.empty() ? 0x808080u : palette[(l - 1) % palette.size()];
