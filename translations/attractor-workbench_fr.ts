@@ -1213,7 +1213,7 @@
     </message>
     <message>
         <source>&apos;%1&apos; is not a net point index (an integer from 0).</source>
-        <translation>« %1 » n’est pas un indice de point du réseau (un entier à partir de 0).</translation>
+        <translation type="vanished">« %1 » n’est pas un indice de point du réseau (un entier à partir de 0).</translation>
     </message>
     <message>
         <source>Control points by index, counted from 0 (commas between them): the start set is their point, segment or polygon in the lifted space, and it follows them when they move.</source>

@@ -5,8 +5,7 @@
 #include "model/PointSetProperty.h"
 #include "model/Project.h"
 #include "model/ProjectIO.h"
-
-#include <QRegularExpression>
+#include "model/StartSetText.h"
 
 #include <algorithm>
 #include <cmath>
@@ -323,20 +322,13 @@ const PropertyTable &AttractorItem::attractorProperties()
                 "start_set.net",
                 [](const AttractorItem &, const StartSetSpec &s) { return netText(s.net); },
                 [](const AttractorItem &, StartSetSpec &s, const QString &text) -> MaybeProblem {
-                    std::vector<int> net;
-                    for (const QString &n : text.split(QRegularExpression(QStringLiteral("[,;\\s]+")),
-                                                       Qt::SkipEmptyParts)) {
-                        bool ok = false;
-                        const int i = n.toInt(&ok);
-                        if (!ok)
-                            return Problem{"points", tr("'%1' is not a net point index (an "
-                                                        "integer from 0).")
-                                                         .arg(n)};
-                        net.push_back(i);
+                    try {
+                        s.net = netIndicesFromText(text);
+                    } catch (const StartSetTextError &e) {
+                        return Problem{"points", e.message};
                     }
                     // Typed indices make the start set one of net points.
                     s.kind = K::Net;
-                    s.net = net;
                     s.points.clear();
                     s.lifted.clear();
                     return std::nullopt;
@@ -483,16 +475,23 @@ bool AttractorItem::insertControlPoint(int index, const Point &point, int set)
         || index > int(pointStorage(set).size()) || !allFinite({point})
         || int(pointStorage(set).size()) >= maxControlPoints)
         return false;
+    executeCounted(new InsertControlPointCommand(this, set, index, point), set,
+                   [index](int i) { return i >= index ? i + 1 : i; });
+    return true;
+}
+
+void AttractorItem::executeCounted(QUndoCommand *command, int set,
+                                   const std::function<int(int)> &remap)
+{
     // A start set of net points or of lifted points depends on the net's count: kept valid in
     // the same undo step, so that a saved file always reads back.
-    auto *command = new InsertControlPointCommand(this, set, index, point);
-    std::optional<CompoundEdit> edit;
-    if (startSetFollowsCount())
-        edit.emplace(project(), command->text());
+    if (!startSetFollowsCount()) {
+        execute(command);
+        return;
+    }
+    const CompoundEdit edit(project(), command->text());
     execute(command);
-    if (edit)
-        refitStartSet(set, [index](int i) { return i >= index ? i + 1 : i; });
-    return true;
+    refitStartSet(set, remap);
 }
 
 bool AttractorItem::startSetFollowsCount() const
@@ -504,46 +503,30 @@ bool AttractorItem::startSetFollowsCount() const
 void AttractorItem::refitStartSet(int set, const std::function<int(int)> &remap)
 {
     StartSetSpec s = m_startSet;
-    if (s.kind == StartSetSpec::Kind::Net && set == 0) {
-        // Indices follow their points; a removed point leaves the set (all removed: the
-        // centroid of the net as a point).
+    if (s.kind == StartSetSpec::Kind::Net && set == 0 && remap) {
+        // Indices follow their points; a removed point leaves the set.
         std::vector<int> kept;
         for (int i : s.net)
             if (const int j = remap(i); j >= 0)
                 kept.push_back(j);
         s.net = kept;
-        if (s.net.empty()) {
-            s.kind = StartSetSpec::Kind::Point;
-            s.points = startPointsFor(s.kind, controlPoints(0));
-        }
-    } else if (s.kind == StartSetSpec::Kind::Lifted) {
-        fitLiftedPoints(s);
     }
-    if (s != m_startSet)
-        setStartSet(s);
-}
-
-void AttractorItem::fitLiftedPoints(StartSetSpec &s) const
-{
-    // x, y (and z) and as many extra coordinates as the lifting has: zeros added, or the last
-    // ones dropped.
-    if (const auto d = derivedIfs())
-        for (auto &p : s.lifted)
-            p.resize(std::size_t(std::max(d->ifs.dim(), 2)), 0.0);
-}
-
-void AttractorItem::refitDependents()
-{
-    StartSetSpec s = m_startSet;
-    if (s.kind == StartSetSpec::Kind::Net && checkNetStart(s.net)) {
-        const PointList &control = controlPointSetCount() ? controlPoints(0) : PointList{};
-        s.net = largestNetTriangle(control, pointDimension());
+    const PointList &control = controlPointSetCount() ? controlPoints(0) : PointList{};
+    if (s.kind == StartSetSpec::Kind::Net) {
+        // All its points removed: the centroid of the net as a point; indices past a new net:
+        // that net's largest triangle.
+        if (!s.net.empty() && checkNetStart(s.net))
+            s.net = largestNetTriangle(control, pointDimension());
         if (s.net.empty()) {
             s.kind = StartSetSpec::Kind::Point;
             s.points = startPointsFor(s.kind, control);
         }
     } else if (s.kind == StartSetSpec::Kind::Lifted) {
-        fitLiftedPoints(s);
+        // x, y (and z) and as many extra coordinates as the lifting has: zeros added, or the
+        // last ones dropped.
+        if (const auto d = derivedIfs())
+            for (auto &p : s.lifted)
+                p.resize(std::size_t(std::max(d->ifs.dim(), 2)), 0.0);
     }
     if (s != m_startSet)
         setStartSet(s);
@@ -567,14 +550,7 @@ bool AttractorItem::removeControlPoints(std::vector<int> indices, int set)
         return at != indices.end() && *at == i ? -1 : i - int(at - indices.begin());
     };
     if (indices.size() == 1) {
-        auto *command = new RemoveControlPointCommand(this, set, indices.front());
-        if (!startSetFollowsCount()) {
-            execute(command);
-            return true;
-        }
-        CompoundEdit edit(project(), command->text());
-        execute(command);
-        refitStartSet(set, remap);
+        executeCounted(new RemoveControlPointCommand(this, set, indices.front()), set, remap);
         return true;
     }
     // From the back, so that the indices still to remove do not shift.

@@ -95,12 +95,12 @@ public:
     bool startSetFollowsCount() const;
     // After a change of point set `set`'s count (old index -> new, -1 when removed): net
     // indices follow their points, lifted points get the new lifting's coordinate count.
+    // Without `remap` (an edit that changed the net as a whole: a new scheme or layout, a new
+    // lifting), a net start set whose indices no longer fit starts again from the net's largest
+    // triangle.
     void refitStartSet(int set, const std::function<int(int)> &remap);
-    // After an edit that changed the net as a whole (a new scheme or layout, a new lifting):
-    // a net start set whose indices no longer fit starts again from the net's largest
-    // triangle, lifted points get the new lifting's coordinate count.
     bool hasDependents() const override { return startSetFollowsCount(); }
-    void refitDependents() override;
+    void refitDependents() override { refitStartSet(0, nullptr); }
     virtual bool startsAtVertexLimits() const { return false; }
     // Items whose IFS is built from one control net take the start set kind "net".
     virtual bool startsAtNetPoints() const { return false; }
@@ -198,7 +198,9 @@ protected:
     void setInitialStartSet(const StartSetSpec &startSet) { m_startSet = startSet; }
 
 private:
-    void fitLiftedPoints(StartSetSpec &s) const;
+    // Runs a command that changes point set `set`'s count, and refitStartSet(set, remap) in
+    // the same undo step when the start set follows the count.
+    void executeCounted(QUndoCommand *command, int set, const std::function<int(int)> &remap);
     friend class PointSetPart;  // stores the points read from a file
     friend class MoveControlPointsCommand;
     friend class InsertControlPointCommand;

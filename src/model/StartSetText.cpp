@@ -1,5 +1,7 @@
 #include "model/StartSetText.h"
 
+#include <QRegularExpression>
+
 #include "model/AttractorItem.h"
 
 #include <QCoreApplication>
@@ -64,6 +66,23 @@ StartSet::Kind parseStartSetText(const QString &text, Mat *points, int dim)
     return StartSet::Kind::Points;
 }
 
+std::vector<int> netIndicesFromText(const QString &text)
+{
+    std::vector<int> net;
+    static const QRegularExpression between(QStringLiteral("[,;\\s]+"));
+    for (const QString &n : text.split(between, Qt::SkipEmptyParts)) {
+        bool ok = false;
+        const int i = n.toInt(&ok);
+        if (!ok || i < 0)
+            throw StartSetTextError{
+                StartTextTr::tr("'%1' is not a net point index (an integer from 0)").arg(n)};
+        net.push_back(i);
+    }
+    if (net.empty())
+        throw StartSetTextError{StartTextTr::tr("net: needs at least one index")};
+    return net;
+}
+
 StartSet startSetFromText(const AttractorItem &item, const DerivedIfs &d, const QString &text)
 {
     if (text.startsWith("lifted:")) {
@@ -85,18 +104,7 @@ StartSet startSetFromText(const AttractorItem &item, const DerivedIfs &d, const 
     }
     if (text.startsWith("net:")) {
         // Control points by index (0-based): net:0,9,18
-        std::vector<int> net;
-        for (const QString &n : text.mid(4).split(',', Qt::SkipEmptyParts)) {
-            bool ok = false;
-            const int i = n.trimmed().toInt(&ok);
-            if (!ok || i < 0)
-                throw StartSetTextError{
-                    StartTextTr::tr("'%1' is not a net point index (an integer from 0)")
-                        .arg(n.trimmed())};
-            net.push_back(i);
-        }
-        if (net.empty())
-            throw StartSetTextError{StartTextTr::tr("net: needs at least one index")};
+        const std::vector<int> net = netIndicesFromText(text.mid(4));
         try {
             return netStartSet(d, net);
         } catch (const InputError &e) {

@@ -10,6 +10,8 @@
 
 #include <QString>
 
+#include <vector>
+
 namespace awb {
 
 class AttractorItem;
@@ -25,6 +27,11 @@ struct StartSetTextError {
 // The kind and points (n x dim, one per row) of "point:x,y", "segment:...", "triangle:...",
 // "polygon:..." or "points:...". Throws StartSetTextError.
 StartSet::Kind parseStartSetText(const QString &text, Mat *points, int dim = 2);
+
+// Net point indices written as text, "0, 9, 18" (commas, semicolons or spaces between them):
+// the Properties dock's field and the "net:" form below. Throws StartSetTextError naming the
+// first word that is no index (an integer from 0), or for no index at all.
+std::vector<int> netIndicesFromText(const QString &text);
 
 // The start set `text` gives for `item` in the IFS space of `d` (its derived IFS). Throws
 // StartSetTextError.

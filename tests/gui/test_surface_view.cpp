@@ -42,6 +42,17 @@ using awb::test::reference;
 
 namespace {
 
+// The main window on the CPU renderer (no GL, also under Xvfb), 1200 x 800, shown.
+std::unique_ptr<MainWindow> cpuWindow(RecordingMessages *messages, const QString &recovery)
+{
+    qputenv("AWB_NO_GL", "1");
+    auto w = std::make_unique<MainWindow>(messages, recovery);
+    qunsetenv("AWB_NO_GL");
+    w->resize(1200, 800);
+    w->show();
+    return w;
+}
+
 std::unique_ptr<SubdivisionSurfaceItem> loopItem(int depth = 6)
 {
     auto item = std::make_unique<SubdivisionSurfaceItem>();
@@ -230,21 +241,17 @@ void TestSurfaceView::mainWindowShowsSurfaces()
 void TestSurfaceView::dragIsOneUndoStep()
 {
     // The CPU path's frames are compared here, also under Xvfb (glDragUnderXvfb drags on GL).
-    qputenv("AWB_NO_GL", "1");
     RecordingMessages messages;
-    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
-    qunsetenv("AWB_NO_GL");
-    QCOMPARE(w.surfaceView()->path(), SurfaceView::Path::Cpu);
-    w.resize(1200, 800);
-    w.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&w));
-    w.project()->addItem(loopItem());
-    auto *item = qobject_cast<SubdivisionSurfaceItem *>(w.currentItem());
+    const auto w = cpuWindow(&messages, m_dir.path() + QStringLiteral("/recovery"));
+    QCOMPARE(w->surfaceView()->path(), SurfaceView::Path::Cpu);
+    QVERIFY(QTest::qWaitForWindowExposed(w.get()));
+    w->project()->addItem(loopItem());
+    auto *item = qobject_cast<SubdivisionSurfaceItem *>(w->currentItem());
     QVERIFY(item);
-    SurfaceView *view = w.surfaceView();
+    SurfaceView *view = w->surfaceView();
     QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && !view->cpuImage().isNull(), awb::test::ms(10000));
     const QImage before = view->cpuImage();
-    const int steps = w.project()->undoStack()->count();
+    const int steps = w->project()->undoStack()->count();
     const Point original = item->controlPoints(0)[9];
     const QPoint grab = view->controlPointScreen(9).toPoint();
     // The full picture is on its way when the window hears of the release (issue 28: the
@@ -266,11 +273,11 @@ void TestSurfaceView::dragIsOneUndoStep()
     // The point moved up on screen (in the view plane: z grows at this elevation).
     const Point moved = item->controlPoints(0)[9];
     QVERIFY(moved.z > original.z + 0.1);
-    QCOMPARE(w.project()->undoStack()->count(), steps + 1);
+    QCOMPARE(w->project()->undoStack()->count(), steps + 1);
     // The click selected the point: its row in the Properties table.
     QCOMPARE(view->selectedControlPoint(), 9);
     auto *table = qobject_cast<QTableWidget *>(
-        w.propertiesWidget()->editor(QStringLiteral("points")));
+        w->propertiesWidget()->editor(QStringLiteral("points")));
     QVERIFY(table);
     QCOMPARE(table->currentRow(), 9);
     // The picture of the moved point follows (the full picture is asked for a moment after the
@@ -278,7 +285,7 @@ void TestSurfaceView::dragIsOneUndoStep()
     QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering()
                                  && compare(before, view->cpuImage()).coverageMismatch > 0.01,
                              awb::test::ms(10000));
-    w.project()->undoStack()->undo();
+    w->project()->undoStack()->undo();
     QCOMPARE(item->controlPoints(0)[9], original);
     QTest::qWait(50);
     QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering(), awb::test::ms(10000));
@@ -298,14 +305,14 @@ void TestSurfaceView::dragIsOneUndoStep()
     QVERIFY2(v >= 0, "every start vertex lies on a control point");
     const Point vertex = item->startSet().points[std::size_t(v)];
     const QPoint at = view->startVertexScreen(v).toPoint();
-    const int index = w.project()->undoStack()->index();
+    const int index = w->project()->undoStack()->index();
     QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, at);
     QTest::mouseMove(view, at + QPoint(15, 0));
     QTest::mouseMove(view, at + QPoint(30, 0));
     QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, at + QPoint(30, 0));
-    QCOMPARE(w.project()->undoStack()->index(), index + 1);
+    QCOMPARE(w->project()->undoStack()->index(), index + 1);
     QVERIFY(item->startSet().points[std::size_t(v)] != vertex);
-    w.project()->undoStack()->undo();
+    w->project()->undoStack()->undo();
     QCOMPARE(item->startSet().points[std::size_t(v)], vertex);
 }
 
@@ -332,13 +339,9 @@ void dragNetHandle(SurfaceView *view, QPoint grab, QPoint by)
 // without iterating again.
 void TestSurfaceView::releasedPointKeepsTheFullMesh()
 {
-    qputenv("AWB_NO_GL", "1");
     RecordingMessages messages;
-    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery-release"));
-    qunsetenv("AWB_NO_GL");
-    w.resize(1200, 800);
-    w.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    const auto w = cpuWindow(&messages, m_dir.path() + QStringLiteral("/recovery-release"));
+    QVERIFY(QTest::qWaitForWindowExposed(w.get()));
     // A net without the hexagon's symmetry: the lifting's rows (the largest simplex, chosen
     // greedily) are then clear winners that a small drag does not change.
     auto loop = loopItem();
@@ -349,10 +352,10 @@ void TestSurfaceView::releasedPointKeepsTheFullMesh()
         net[k].z += (k == 0 ? 0.8 : 0.0) + (k == 18 ? -0.6 : 0.0) + 0.05 * std::sin(7.0 * double(k));
     }
     QVERIFY(loop->setControlPoints(0, net));
-    w.project()->addItem(std::move(loop));
-    auto *item = qobject_cast<SubdivisionSurfaceItem *>(w.currentItem());
+    w->project()->addItem(std::move(loop));
+    auto *item = qobject_cast<SubdivisionSurfaceItem *>(w->currentItem());
     QVERIFY(item);
-    SurfaceView *view = w.surfaceView();
+    SurfaceView *view = w->surfaceView();
     QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && view->isFullDetail(), awb::test::ms(20000));
     // A net point that is none of the lifting's free rows (the start's plane points have
     // coefficients only there), on screen and apart from every other handle.
@@ -390,8 +393,8 @@ void TestSurfaceView::releasedPointKeepsTheFullMesh()
     QVERIFY2(difference.isEmpty(), qPrintable(difference));
     // And it moved: the net point's drag changed the surface.
     const double movedArea = shown.area; // `shown` goes with the undo's new mesh
-    w.project()->undoStack()->undo();
-    w.controller()->refreshNow(); // (the views follow the model on a timer)
+    w->project()->undoStack()->undo();
+    w->controller()->refreshNow(); // (the views follow the model on a timer)
     QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && view->isFullDetail(), awb::test::ms(20000));
     QVERIFY(!view->fullMeshMovedFromPress());
     QVERIFY(std::abs(view->mesh().area - movedArea) > 1e-6 * movedArea);
@@ -403,18 +406,14 @@ void TestSurfaceView::releasedPointKeepsTheFullMesh()
 // had to be iterated again (and iterated to scattered pieces).
 void TestSurfaceView::releasedStartCornerKeepsTheFullMesh()
 {
-    qputenv("AWB_NO_GL", "1");
     RecordingMessages messages;
-    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery-net"));
-    qunsetenv("AWB_NO_GL");
-    w.resize(1200, 800);
-    w.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&w));
-    QVERIFY(w.openFile(awb::test::sourceDir() + "/examples/000-fig07-box-spline-hexagon.awb"));
-    auto *item = qobject_cast<SubdivisionSurfaceItem *>(w.currentItem());
+    const auto w = cpuWindow(&messages, m_dir.path() + QStringLiteral("/recovery-net"));
+    QVERIFY(QTest::qWaitForWindowExposed(w.get()));
+    QVERIFY(w->openFile(awb::test::sourceDir() + "/examples/000-fig07-box-spline-hexagon.awb"));
+    auto *item = qobject_cast<SubdivisionSurfaceItem *>(w->currentItem());
     QVERIFY(item);
     QCOMPARE(item->startSet().kind, StartSetSpec::Kind::Net);
-    SurfaceView *view = w.surfaceView();
+    SurfaceView *view = w->surfaceView();
     QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && view->isFullDetail(), awb::test::ms(20000));
     QCOMPARE(view->startVertexCount(), 0); // no handles of its own: the net's are its corners
     const QPoint grab = view->controlPointScreen(9).toPoint();
