@@ -49,15 +49,16 @@ head_of() {  # NAME CX CY SCALE
 build/bin/attractor-cli import "$tmp/variations.flam3" --out "$tmp/variations.awb" >/dev/null
 
 now() { date +%s.%N; }
-compare() {  # TITLE FLAME PROJECT
+compare() {  # TITLE FLAME PROJECT SIZE
   local t0 t1 t2
   t0=$(now)
   /usr/bin/time -f %M -o "$tmp/flam3.rss" env nthreads="$THREADS" ss=1 qs=1 isaac_seed=1 \
     out="$tmp/flam3.png" format=png verbose=0 flam3-render < "$2" >/dev/null 2>&1
   t1=$(now)
-  # The CLI's panel is the raster plus 16 px of margin; 26 px caption below.
+  # An IFS item's panel is the raster plus 16 px of margin and a 26 px caption; a flame item
+  # writes its picture alone, with flam3's tone (filters, estimator, gamma), as flam3 does.
   /usr/bin/time -f %M -o "$tmp/awb.rss" build/bin/attractor-cli render "$3" \
-    --samples "$SAMPLES" --threads "$THREADS" --size $((SIDE + 16))x$((SIDE + 8 + 26)) \
+    --samples "$SAMPLES" --threads "$THREADS" --size "$4" \
     --out "$tmp/awb.png" >/dev/null
   t2=$(now)
   awk -v title="$1" -v s="$SAMPLES" -v th="$THREADS" -v a="$t0" -v b="$t1" -v c="$t2" \
@@ -69,5 +70,7 @@ compare() {  # TITLE FLAME PROJECT
     printf "  ratio (attractor-cli / flam3)  %.2fx\n", w / f;
   }'
 }
-compare "Sierpinski, 3 linear maps" "$tmp/sierpinski.flam3" bench/sierpinski-plane.awb
-compare "3 xforms of non-linear variations (a flame item)" "$tmp/variations.flam3" "$tmp/variations.awb"
+compare "Sierpinski, 3 linear maps" "$tmp/sierpinski.flam3" bench/sierpinski-plane.awb \
+  $((SIDE + 16))x$((SIDE + 8 + 26))
+compare "3 xforms of non-linear variations (a flame item)" "$tmp/variations.flam3" \
+  "$tmp/variations.awb" ${SIDE}x${SIDE}

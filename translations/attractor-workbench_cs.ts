@@ -1070,7 +1070,7 @@
     </message>
     <message>
         <source>Triangle</source>
-        <translation>Trojúhelník</translation>
+        <translation>Trojúhelníkový</translation>
     </message>
     <message>
         <source>Polygon</source>
@@ -2379,7 +2379,7 @@
     <name>awb::FigureFile</name>
     <message>
         <source>cannot write %1</source>
-        <translation>%1 nelze zapsat</translation>
+        <translation>nelze zapsat %1</translation>
     </message>
     <message>
         <source>cannot write %1: %2</source>
@@ -3048,6 +3048,86 @@
         <source>a channel must be from 0 to 1</source>
         <translation>kanál musí být od 0 do 1</translation>
     </message>
+    <message>
+        <source>Gaussian</source>
+        <translation>Gaussův</translation>
+    </message>
+    <message>
+        <source>Hermite</source>
+        <translation>Hermitův</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>Obdélníkový</translation>
+    </message>
+    <message>
+        <source>Triangle</source>
+        <translation>Trojúhelníkový</translation>
+    </message>
+    <message>
+        <source>Bell</source>
+        <translation>Zvonový</translation>
+    </message>
+    <message>
+        <source>B-spline</source>
+        <translation>B-spline</translation>
+    </message>
+    <message>
+        <source>Lanczos 3 (flam3 draws Mitchell)</source>
+        <translation>Lanczos 3 (flam3 kreslí Mitchell)</translation>
+    </message>
+    <message>
+        <source>Lanczos 2 (flam3 draws Blackman)</source>
+        <translation>Lanczos 2 (flam3 kreslí Blackman)</translation>
+    </message>
+    <message>
+        <source>Mitchell (flam3 draws Catmull-Rom)</source>
+        <translation>Mitchell (flam3 kreslí Catmull-Rom)</translation>
+    </message>
+    <message>
+        <source>Blackman (flam3 draws Hanning)</source>
+        <translation>Blackman (flam3 kreslí Hanning)</translation>
+    </message>
+    <message>
+        <source>Catmull-Rom (flam3 draws Hamming)</source>
+        <translation>Catmull-Rom (flam3 kreslí Hamming)</translation>
+    </message>
+    <message>
+        <source>Hamming (flam3 draws Lanczos 3)</source>
+        <translation>Hamming (flam3 kreslí Lanczos 3)</translation>
+    </message>
+    <message>
+        <source>Hanning (flam3 draws Lanczos 2)</source>
+        <translation>Hanning (flam3 kreslí Lanczos 2)</translation>
+    </message>
+    <message>
+        <source>Quadratic</source>
+        <translation>Kvadratický</translation>
+    </message>
+    <message>
+        <source>Filter shape</source>
+        <translation>Tvar filtru</translation>
+    </message>
+    <message>
+        <source>flam3&apos;s filter_shape; from Lanczos 3 on, flam3 3.1.1 draws another shape than the name says, and so do we</source>
+        <translation>filter_shape programu flam3; od Lanczos 3 dál kreslí flam3 3.1.1 jiný tvar, než říká název, a my také</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Skokový</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>Lineární</translation>
+    </message>
+    <message>
+        <source>Palette mode</source>
+        <translation>Režim palety</translation>
+    </message>
+    <message>
+        <source>flam3&apos;s palette_mode: a hit takes the palette entry at its colour coordinate (step) or between the two entries around it (linear)</source>
+        <translation>palette_mode programu flam3: zásah dostane položku palety na své barevné souřadnici (skokově) nebo barvu mezi dvěma okolními položkami (lineárně)</translation>
+    </message>
 </context>
 <context>
     <name>awb::FractalItem</name>
@@ -3655,6 +3735,18 @@ Odečíst rozdíl %7 od prvku ve sloupci %8 (%9 → %10), aby byl součet řádk
     <message>
         <source>item &apos;%1&apos; is drawn by random iteration only (its maps are not affine): give --samples, not --depth</source>
         <translation>položka „%1“ se kreslí pouze náhodnou iterací (její zobrazení nejsou afinní): zadejte --samples, ne --depth</translation>
+    </message>
+    <message>
+        <source>give --bounds: the item has no frame of its own</source>
+        <translation>zadejte --bounds: položka nemá vlastní rámec</translation>
+    </message>
+    <message>
+        <source>%1 samples; at most %2</source>
+        <translation>%1 vzorků; nejvýše %2</translation>
+    </message>
+    <message>
+        <source>cannot write %1</source>
+        <translation>nelze zapsat %1</translation>
     </message>
 </context>
 <context>
@@ -8943,7 +9035,46 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     </message>
     <message>
         <source>there is no flame to draw</source>
-        <translation>není žádný plamen ke kreslení</translation>
+        <translation>není co kreslit: chybí plamen</translation>
+    </message>
+    <message>
+        <source>the spatial filter of radius %1 at supersample %2 would be %3 cells wide; at most %4</source>
+        <translation>prostorový filtr poloměru %1 při převzorkování %2 by měl šířku %3 buněk; nejvýše %4</translation>
+    </message>
+    <message>
+        <source>the spatial filter of radius %1 is too small</source>
+        <translation>prostorový filtr poloměru %1 je příliš malý</translation>
+    </message>
+    <message>
+        <source>the estimator curve must be &gt; 0</source>
+        <translation>křivka odhadu musí být &gt; 0</translation>
+    </message>
+    <message>
+        <source>the estimator radius %1 must be at least its minimum %2 (and not negative)</source>
+        <translation>poloměr odhadu %1 musí být alespoň jeho minimum %2 (a nezáporný)</translation>
+    </message>
+    <message>
+        <source>the estimator (radius %1, minimum %2, curve %3) needs too many kernels (%4)</source>
+        <translation>odhad (poloměr %1, minimum %2, křivka %3) potřebuje příliš mnoho jader (%4)</translation>
+    </message>
+    <message>
+        <source>the estimator of radius %1 at supersample %2 needs %3 coefficients; at most %4</source>
+        <translation>odhad poloměru %1 při převzorkování %2 potřebuje %3 koeficientů; nejvýše %4</translation>
+    </message>
+    <message>
+        <source>a %1 x %2 picture of the flame at supersample %3 needs %4 x %5 histogram cells; at most 32768 a side</source>
+        <translation>obraz plamene %1 x %2 při převzorkování %3 potřebuje %4 x %5 buněk histogramu; nejvýše 32768 na stranu</translation>
+    </message>
+    <message>
+        <source>a %1 x %2 picture of the flame at supersample %3 needs %4 MB of histograms; at most %5 MB</source>
+        <translation>obraz plamene %1 x %2 při převzorkování %3 potřebuje %4 MB histogramů; nejvýše %5 MB</translation>
+    </message>
+</context>
+<context>
+    <name>awb::flame::MakeSink</name>
+    <message>
+        <source>there is no flame to draw</source>
+        <translation>není co kreslit: chybí plamen</translation>
     </message>
 </context>
 <context>

@@ -2378,7 +2378,7 @@
     <name>awb::FigureFile</name>
     <message>
         <source>cannot write %1</source>
-        <translation>impossible d’écrire %1</translation>
+        <translation>impossible d&apos;écrire %1</translation>
     </message>
     <message>
         <source>cannot write %1: %2</source>
@@ -3045,6 +3045,86 @@
         <source>a channel must be from 0 to 1</source>
         <translation>un canal doit être compris entre 0 et 1</translation>
     </message>
+    <message>
+        <source>Gaussian</source>
+        <translation>Gaussien</translation>
+    </message>
+    <message>
+        <source>Hermite</source>
+        <translation>Hermite</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>Boîte</translation>
+    </message>
+    <message>
+        <source>Triangle</source>
+        <translation>Triangle</translation>
+    </message>
+    <message>
+        <source>Bell</source>
+        <translation>Cloche</translation>
+    </message>
+    <message>
+        <source>B-spline</source>
+        <translation>B-spline</translation>
+    </message>
+    <message>
+        <source>Lanczos 3 (flam3 draws Mitchell)</source>
+        <translation>Lanczos 3 (flam3 dessine Mitchell)</translation>
+    </message>
+    <message>
+        <source>Lanczos 2 (flam3 draws Blackman)</source>
+        <translation>Lanczos 2 (flam3 dessine Blackman)</translation>
+    </message>
+    <message>
+        <source>Mitchell (flam3 draws Catmull-Rom)</source>
+        <translation>Mitchell (flam3 dessine Catmull-Rom)</translation>
+    </message>
+    <message>
+        <source>Blackman (flam3 draws Hanning)</source>
+        <translation>Blackman (flam3 dessine Hanning)</translation>
+    </message>
+    <message>
+        <source>Catmull-Rom (flam3 draws Hamming)</source>
+        <translation>Catmull-Rom (flam3 dessine Hamming)</translation>
+    </message>
+    <message>
+        <source>Hamming (flam3 draws Lanczos 3)</source>
+        <translation>Hamming (flam3 dessine Lanczos 3)</translation>
+    </message>
+    <message>
+        <source>Hanning (flam3 draws Lanczos 2)</source>
+        <translation>Hanning (flam3 dessine Lanczos 2)</translation>
+    </message>
+    <message>
+        <source>Quadratic</source>
+        <translation>Quadratique</translation>
+    </message>
+    <message>
+        <source>Filter shape</source>
+        <translation>Forme du filtre</translation>
+    </message>
+    <message>
+        <source>flam3&apos;s filter_shape; from Lanczos 3 on, flam3 3.1.1 draws another shape than the name says, and so do we</source>
+        <translation>filter_shape de flam3 ; à partir de Lanczos 3, flam3 3.1.1 dessine une autre forme que celle que dit le nom, et nous aussi</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Par paliers</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>Linéaire</translation>
+    </message>
+    <message>
+        <source>Palette mode</source>
+        <translation>Mode de palette</translation>
+    </message>
+    <message>
+        <source>flam3&apos;s palette_mode: a hit takes the palette entry at its colour coordinate (step) or between the two entries around it (linear)</source>
+        <translation>palette_mode de flam3 : un impact prend l&apos;entrée de la palette à sa coordonnée de couleur (par paliers) ou la couleur entre les deux entrées qui l&apos;entourent (linéaire)</translation>
+    </message>
 </context>
 <context>
     <name>awb::FractalItem</name>
@@ -3652,6 +3732,18 @@ Retrancher la différence %7 du coefficient de la colonne %8 (%9 → %10) pour q
     <message>
         <source>item &apos;%1&apos; is drawn by random iteration only (its maps are not affine): give --samples, not --depth</source>
         <translation>l&apos;élément « %1 » ne se dessine que par itération aléatoire (ses applications ne sont pas affines) : donnez --samples, pas --depth</translation>
+    </message>
+    <message>
+        <source>give --bounds: the item has no frame of its own</source>
+        <translation>donnez --bounds : l&apos;élément n&apos;a pas de cadre propre</translation>
+    </message>
+    <message>
+        <source>%1 samples; at most %2</source>
+        <translation>%1 échantillons ; au plus %2</translation>
+    </message>
+    <message>
+        <source>cannot write %1</source>
+        <translation>impossible d&apos;écrire %1</translation>
     </message>
 </context>
 <context>
@@ -8930,7 +9022,46 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     </message>
     <message>
         <source>there is no flame to draw</source>
-        <translation>il n&apos;y a aucune flamme à dessiner</translation>
+        <translation>il n&apos;y a pas de flamme à dessiner</translation>
+    </message>
+    <message>
+        <source>the spatial filter of radius %1 at supersample %2 would be %3 cells wide; at most %4</source>
+        <translation>le filtre spatial de rayon %1 au suréchantillonnage %2 aurait %3 cellules de large ; au plus %4</translation>
+    </message>
+    <message>
+        <source>the spatial filter of radius %1 is too small</source>
+        <translation>le filtre spatial de rayon %1 est trop petit</translation>
+    </message>
+    <message>
+        <source>the estimator curve must be &gt; 0</source>
+        <translation>la courbe de l&apos;estimateur doit être &gt; 0</translation>
+    </message>
+    <message>
+        <source>the estimator radius %1 must be at least its minimum %2 (and not negative)</source>
+        <translation>le rayon %1 de l&apos;estimateur doit être au moins son minimum %2 (et non négatif)</translation>
+    </message>
+    <message>
+        <source>the estimator (radius %1, minimum %2, curve %3) needs too many kernels (%4)</source>
+        <translation>l&apos;estimateur (rayon %1, minimum %2, courbe %3) demande trop de noyaux (%4)</translation>
+    </message>
+    <message>
+        <source>the estimator of radius %1 at supersample %2 needs %3 coefficients; at most %4</source>
+        <translation>l&apos;estimateur de rayon %1 au suréchantillonnage %2 demande %3 coefficients ; au plus %4</translation>
+    </message>
+    <message>
+        <source>a %1 x %2 picture of the flame at supersample %3 needs %4 x %5 histogram cells; at most 32768 a side</source>
+        <translation>une image %1 x %2 de la flamme au suréchantillonnage %3 demande %4 x %5 cellules d&apos;histogramme ; au plus 32768 par côté</translation>
+    </message>
+    <message>
+        <source>a %1 x %2 picture of the flame at supersample %3 needs %4 MB of histograms; at most %5 MB</source>
+        <translation>une image %1 x %2 de la flamme au suréchantillonnage %3 demande %4 Mo d&apos;histogrammes ; au plus %5 Mo</translation>
+    </message>
+</context>
+<context>
+    <name>awb::flame::MakeSink</name>
+    <message>
+        <source>there is no flame to draw</source>
+        <translation>il n&apos;y a pas de flamme à dessiner</translation>
     </message>
 </context>
 <context>

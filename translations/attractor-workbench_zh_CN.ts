@@ -1068,7 +1068,7 @@
     </message>
     <message>
         <source>Triangle</source>
-        <translation>三角形</translation>
+        <translation>三角</translation>
     </message>
     <message>
         <source>Polygon</source>
@@ -3042,6 +3042,86 @@
         <source>a channel must be from 0 to 1</source>
         <translation>通道值必须在 0 到 1 之间</translation>
     </message>
+    <message>
+        <source>Gaussian</source>
+        <translation>高斯</translation>
+    </message>
+    <message>
+        <source>Hermite</source>
+        <translation>Hermite</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>盒式</translation>
+    </message>
+    <message>
+        <source>Triangle</source>
+        <translation>三角</translation>
+    </message>
+    <message>
+        <source>Bell</source>
+        <translation>钟形</translation>
+    </message>
+    <message>
+        <source>B-spline</source>
+        <translation>B 样条</translation>
+    </message>
+    <message>
+        <source>Lanczos 3 (flam3 draws Mitchell)</source>
+        <translation>Lanczos 3（flam3 画的是 Mitchell）</translation>
+    </message>
+    <message>
+        <source>Lanczos 2 (flam3 draws Blackman)</source>
+        <translation>Lanczos 2（flam3 画的是 Blackman）</translation>
+    </message>
+    <message>
+        <source>Mitchell (flam3 draws Catmull-Rom)</source>
+        <translation>Mitchell（flam3 画的是 Catmull-Rom）</translation>
+    </message>
+    <message>
+        <source>Blackman (flam3 draws Hanning)</source>
+        <translation>Blackman（flam3 画的是 Hanning）</translation>
+    </message>
+    <message>
+        <source>Catmull-Rom (flam3 draws Hamming)</source>
+        <translation>Catmull-Rom（flam3 画的是 Hamming）</translation>
+    </message>
+    <message>
+        <source>Hamming (flam3 draws Lanczos 3)</source>
+        <translation>Hamming（flam3 画的是 Lanczos 3）</translation>
+    </message>
+    <message>
+        <source>Hanning (flam3 draws Lanczos 2)</source>
+        <translation>Hanning（flam3 画的是 Lanczos 2）</translation>
+    </message>
+    <message>
+        <source>Quadratic</source>
+        <translation>二次</translation>
+    </message>
+    <message>
+        <source>Filter shape</source>
+        <translation>滤波器形状</translation>
+    </message>
+    <message>
+        <source>flam3&apos;s filter_shape; from Lanczos 3 on, flam3 3.1.1 draws another shape than the name says, and so do we</source>
+        <translation>flam3 的 filter_shape；从 Lanczos 3 起，flam3 3.1.1 画的形状与名称不符，本程序也一样</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>阶梯</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation>线性</translation>
+    </message>
+    <message>
+        <source>Palette mode</source>
+        <translation>调色板模式</translation>
+    </message>
+    <message>
+        <source>flam3&apos;s palette_mode: a hit takes the palette entry at its colour coordinate (step) or between the two entries around it (linear)</source>
+        <translation>flam3 的 palette_mode：一次命中取其颜色坐标处的调色板条目（阶梯），或取其两侧条目之间的颜色（线性）</translation>
+    </message>
 </context>
 <context>
     <name>awb::FractalItem</name>
@@ -3649,6 +3729,18 @@ Take the difference %7 from the entry in column %8 (%9 → %10) so that the row 
     <message>
         <source>item &apos;%1&apos; is drawn by random iteration only (its maps are not affine): give --samples, not --depth</source>
         <translation>项目“%1”只能通过随机迭代绘制（其映射不是仿射的）：请使用 --samples，而不是 --depth</translation>
+    </message>
+    <message>
+        <source>give --bounds: the item has no frame of its own</source>
+        <translation>请给出 --bounds：该项没有自己的画框</translation>
+    </message>
+    <message>
+        <source>%1 samples; at most %2</source>
+        <translation>%1 个样本；最多 %2</translation>
+    </message>
+    <message>
+        <source>cannot write %1</source>
+        <translation>无法写入 %1</translation>
     </message>
 </context>
 <context>
@@ -8917,7 +9009,46 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>there is no flame to draw</source>
-        <translation>没有可绘制的火焰</translation>
+        <translation>没有要绘制的火焰</translation>
+    </message>
+    <message>
+        <source>the spatial filter of radius %1 at supersample %2 would be %3 cells wide; at most %4</source>
+        <translation>半径 %1、超采样 %2 的空间滤波器宽 %3 个单元；最多 %4</translation>
+    </message>
+    <message>
+        <source>the spatial filter of radius %1 is too small</source>
+        <translation>半径 %1 的空间滤波器太小</translation>
+    </message>
+    <message>
+        <source>the estimator curve must be &gt; 0</source>
+        <translation>估计器曲线必须 &gt; 0</translation>
+    </message>
+    <message>
+        <source>the estimator radius %1 must be at least its minimum %2 (and not negative)</source>
+        <translation>估计器半径 %1 必须不小于其最小值 %2（且非负）</translation>
+    </message>
+    <message>
+        <source>the estimator (radius %1, minimum %2, curve %3) needs too many kernels (%4)</source>
+        <translation>估计器（半径 %1，最小值 %2，曲线 %3）需要的核太多（%4）</translation>
+    </message>
+    <message>
+        <source>the estimator of radius %1 at supersample %2 needs %3 coefficients; at most %4</source>
+        <translation>半径 %1、超采样 %2 的估计器需要 %3 个系数；最多 %4</translation>
+    </message>
+    <message>
+        <source>a %1 x %2 picture of the flame at supersample %3 needs %4 x %5 histogram cells; at most 32768 a side</source>
+        <translation>超采样 %3 下 %1 x %2 的火焰图像需要 %4 x %5 个直方图单元；每边最多 32768</translation>
+    </message>
+    <message>
+        <source>a %1 x %2 picture of the flame at supersample %3 needs %4 MB of histograms; at most %5 MB</source>
+        <translation>超采样 %3 下 %1 x %2 的火焰图像需要 %4 MB 直方图；最多 %5 MB</translation>
+    </message>
+</context>
+<context>
+    <name>awb::flame::MakeSink</name>
+    <message>
+        <source>there is no flame to draw</source>
+        <translation>没有要绘制的火焰</translation>
     </message>
 </context>
 <context>

@@ -65,6 +65,7 @@ void readFrameOptions(const QCommandLineParser &parser, FigureOptions &o)
                           .arg(parser.value("size"))};
     o.width = sm.captured(1).toInt();
     o.height = sm.captured(2).toInt();
+    o.sizeGiven = parser.isSet("size");
     if (parser.isSet("bounds")) {
         const QStringList parts = parser.value("bounds").split(',');
         double v[4] = {};

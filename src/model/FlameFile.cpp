@@ -2,6 +2,7 @@
 
 #include "core/Messages.h"
 #include "core/flame/FlameChaos.h"
+#include "core/flame/FlameTone.h"
 #include "core/flame/Variations.h"
 
 #include <QCoreApplication>
@@ -25,14 +26,14 @@ using flame::Flame;
 using flame::FlameXform;
 
 // Attributes of <flame> that change nothing of the still picture flam3 draws here: animation,
-// interpolation, the filter shapes, the file's own notes.
+// interpolation, the file's own notes.
 bool ignoredFlameAttribute(QStringView name)
 {
     static const QStringList names{
         "version", "time", "interpolation", "interpolation_type", "interpolation_space",
-        "palette_interpolation", "hsv_rgb_palette_blend", "filter_shape", "temporal_filter_type",
+        "palette_interpolation", "hsv_rgb_palette_blend", "temporal_filter_type",
         "temporal_filter_width", "temporal_filter_exp", "temporal_samples", "passes",
-        "palette_mode", "url", "nick", "notes", "contrast", "genome_index", "parent",
+        "url", "nick", "notes", "contrast", "genome_index", "parent",
         "hue", "soloxform", "new_linear", "plugins"};
     return names.contains(name);
 }
@@ -293,6 +294,23 @@ private:
                     f.supersample = int(*v);
             } else if (key == QLatin1String("filter")) {
                 real(&f.filter);
+            } else if (key == QLatin1String("filter_shape")) {
+                // flam3 draws an unknown shape with the Gaussian, after a warning.
+                const int id = flame::filterShapeId(value.toStdString());
+                if (id < 0)
+                    ignored << QStringLiteral("filter_shape=\"%1\" (not one of flam3's: the "
+                                              "Gaussian is used)")
+                                   .arg(value);
+                f.filterShape = flame::FilterShape(std::max(id, 0));
+            } else if (key == QLatin1String("palette_mode")) {
+                if (value == QLatin1String("linear"))
+                    f.paletteMode = flame::PaletteMode::Linear;
+                else if (value == QLatin1String("step"))
+                    f.paletteMode = flame::PaletteMode::Step;
+                else
+                    ignored << QStringLiteral("palette_mode=\"%1\" (flam3's are step and "
+                                              "linear: step is used)")
+                                   .arg(value);
             } else if (key == QLatin1String("estimator_radius")) {
                 real(&f.estimatorRadius);
             } else if (key == QLatin1String("estimator_minimum")) {
@@ -689,7 +707,10 @@ QByteArray flameElement(const Flame &f)
     if (f.zoom != 0)
         out += " zoom=\"" + num(f.zoom) + '"';
     out += " quality=\"" + num(f.quality) + "\" supersample=\"" + QByteArray::number(f.supersample)
-           + "\" filter=\"" + num(f.filter) + '"';
+           + "\" filter=\"" + num(f.filter) + "\" filter_shape=\""
+           + QByteArray::fromStdString(std::string(flame::filterShapeName(f.filterShape)))
+           + "\" palette_mode=\""
+           + (f.paletteMode == flame::PaletteMode::Linear ? "linear" : "step") + '"';
     out += " background=\"" + num(f.background.r) + ' ' + num(f.background.g) + ' '
            + num(f.background.b) + '"';
     out += " brightness=\"" + num(f.brightness) + "\" gamma=\"" + num(f.gamma)

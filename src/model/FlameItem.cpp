@@ -2,6 +2,7 @@
 
 #include "core/Messages.h"
 #include "core/flame/FlameChaos.h"
+#include "core/flame/FlameTone.h"
 #include "core/flame/Variations.h"
 #include "model/Commands.h"
 #include "model/ProjectIO.h"
@@ -372,12 +373,30 @@ DerivedIfs FlameItem::computeIfs() const
         stats.cancelled = s.cancelled;
         return stats;
     };
+    out.chaos.picture = [shared](const ChaosJob &job, std::vector<std::uint32_t> &pixels,
+                                 const IterationControl &control) {
+        flame::FlameImageJob r;
+        r.flame = shared.get();
+        r.frame = job.frame;
+        r.samples = job.samples;
+        r.seed = job.seed;
+        r.threads = job.threads;
+        flame::FlameImage image = flame::renderFlameImage(r, control);
+        pixels = std::move(image.argb);
+        IterationStats stats;
+        stats.images = image.stats.samples;
+        stats.cancelled = image.stats.cancelled;
+        return stats;
+    };
     out.chaos.colours = flame::flamePaletteRgb(m_flame);
     // 20 000 steps: a few milliseconds, about 1 % of the exponent (one orbit, a fixed seed).
     if (const double l = flame::flameLyapunov(m_flame).exponent; std::isfinite(l))
         out.chaos.lyapunov = l;
     const RasterFrame camera = flame::flameFrame(m_flame);
     out.chaos.frame = std::array<double, 4>{camera.x0, camera.y0, camera.x1, camera.y1};
+    out.chaos.width = m_flame.width;
+    out.chaos.height = m_flame.height;
+    out.chaos.samplesPerPixel = flame::flameSamples(m_flame) / (double(m_flame.width) * m_flame.height);
     out.toIfsSpace = [](const Mat &X) { return X; };
     out.note = tr("a fractal flame, drawn by its own chaos game as flam3 draws it; the spectra "
                   "are those of the xforms' affine (pre) maps, y up");
@@ -515,6 +534,29 @@ const PropertyTable &FlameItem::declaration()
             .label(QT_TR_NOOP("Filter radius (pixels)"))
             .group(QT_TR_NOOP("Tone"))
             .range(0, 1e3);
+        f.choice("tone.filter_shape", &Flame::filterShape,
+                 {"gaussian", "hermite", "box", "triangle", "bell", "bspline", "lanczos3",
+                  "lanczos2", "mitchell", "blackman", "catrom", "hamming", "hanning",
+                  "quadratic"},
+                 {QT_TR_NOOP("Gaussian"), QT_TR_NOOP("Hermite"), QT_TR_NOOP("Box"),
+                  QT_TR_NOOP("Triangle"), QT_TR_NOOP("Bell"), QT_TR_NOOP("B-spline"),
+                  QT_TR_NOOP("Lanczos 3 (flam3 draws Mitchell)"),
+                  QT_TR_NOOP("Lanczos 2 (flam3 draws Blackman)"),
+                  QT_TR_NOOP("Mitchell (flam3 draws Catmull-Rom)"),
+                  QT_TR_NOOP("Blackman (flam3 draws Hanning)"),
+                  QT_TR_NOOP("Catmull-Rom (flam3 draws Hamming)"),
+                  QT_TR_NOOP("Hamming (flam3 draws Lanczos 3)"),
+                  QT_TR_NOOP("Hanning (flam3 draws Lanczos 2)"), QT_TR_NOOP("Quadratic")})
+            .label(QT_TR_NOOP("Filter shape"))
+            .group(QT_TR_NOOP("Tone"))
+            .tip(QT_TR_NOOP("flam3's filter_shape; from Lanczos 3 on, flam3 3.1.1 draws "
+                            "another shape than the name says, and so do we"));
+        f.choice("tone.palette_mode", &Flame::paletteMode, {"step", "linear"},
+                 {QT_TR_NOOP("Step"), QT_TR_NOOP("Linear")})
+            .label(QT_TR_NOOP("Palette mode"))
+            .group(QT_TR_NOOP("Tone"))
+            .tip(QT_TR_NOOP("flam3's palette_mode: a hit takes the palette entry at its colour "
+                            "coordinate (step) or between the two entries around it (linear)"));
         f.real("tone.estimator_radius", &Flame::estimatorRadius)
             .label(QT_TR_NOOP("Estimator radius"))
             .group(QT_TR_NOOP("Tone"))

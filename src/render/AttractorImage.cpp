@@ -7,6 +7,8 @@
 
 #include <QElapsedTimer>
 
+#include <cstring>
+
 #include <algorithm>
 #include <cmath>
 #include <thread>
@@ -110,13 +112,9 @@ void checkRenderRequest(const RenderRequest &r)
 
 namespace {
 
-// The histogram of a picture: the frame, the colours and the engine's (or an automaton's)
-// hits. False when control.cancel stopped it.
-bool accumulatePicture(const RenderRequest &r, int depth, std::uint64_t samples,
-                       const IterationControl &control, DensityImage &density, RasterFrame &frame,
-                       EngineColours &colours, IterationStats &stats)
+RasterFrame pictureFrame(const RenderRequest &r)
 {
-    checkRenderRequest(r);
+    RasterFrame frame;
     const QRectF w = r.world.normalized();
     frame.width = r.size.width();
     frame.height = r.size.height();
@@ -126,6 +124,17 @@ bool accumulatePicture(const RenderRequest &r, int depth, std::uint64_t samples,
     while (frame.supersample > 1 && 8.0 * frame.cellsX() * frame.cellsY() > 256.0 * (1 << 20))
         --frame.supersample;
     frame.validate();
+    return frame;
+}
+
+// The histogram of a picture: the frame, the colours and the engine's (or an automaton's)
+// hits. False when control.cancel stopped it.
+bool accumulatePicture(const RenderRequest &r, int depth, std::uint64_t samples,
+                       const IterationControl &control, DensityImage &density, RasterFrame &frame,
+                       EngineColours &colours, IterationStats &stats)
+{
+    checkRenderRequest(r);
+    frame = pictureFrame(r);
     if (r.chaos) {
         // Its own chaos game, its own colours (a flame's palette, labels 0..255).
         colours.prefix = 1;
@@ -197,6 +206,37 @@ QImage renderAttractorImage(const RenderRequest &r, int depth, std::uint64_t sam
     QElapsedTimer timer;
     timer.start();
     const QRectF w = r.world.normalized();
+    if (r.chaos.picture && r.tone.mode == Accumulation::Density) {
+        // The item's own tone (a flame as flam3 draws it): its pixels as they are.
+        checkRenderRequest(r);
+        ChaosJob job;
+        job.frame = pictureFrame(r);
+        job.accumulation = Accumulation::Density;
+        job.samples = samples;
+        job.seed = r.seed;
+        job.threads = threadsFor(r);
+        std::vector<std::uint32_t> pixels;
+        const IterationStats stats = r.chaos.picture(job, pixels, control);
+        if (stats.cancelled || (control.cancel && control.cancel->load())
+            || pixels.size() != std::size_t(job.frame.width) * std::size_t(job.frame.height))
+            return {};
+        QImage image(job.frame.width, job.frame.height, QImage::Format_ARGB32_Premultiplied);
+        if (image.isNull())
+            throw InputError("not enough memory for a " + std::to_string(job.frame.width) + "x"
+                             + std::to_string(job.frame.height) + " picture");
+        for (int y = 0; y < job.frame.height; ++y)
+            std::memcpy(image.scanLine(y), pixels.data() + std::size_t(y) * std::size_t(job.frame.width),
+                        std::size_t(job.frame.width) * 4);
+        if (info) {
+            info->depth = 0;
+            info->images = double(stats.images);
+            info->seconds = timer.nsecsElapsed() * 1e-9;
+            info->final = samples == r.samples;
+            info->world = w;
+            info->litPixels = std::uint64_t(job.frame.width) * std::uint64_t(job.frame.height);
+        }
+        return image;
+    }
     // Reused by the next picture rendered on this thread (a drag: no allocation per step).
     static thread_local DensityImage density;
     RasterFrame frame;

@@ -9,6 +9,7 @@
 #include "model/Project.h"
 #include "model/SubdivisionMeshItem.h"
 #include "model/SubdivisionSurfaceItem.h"
+#include "render/AttractorImage.h"
 #include "render/DensityFile.h"
 #include "render/FigureFile.h"
 #include "render/FigureRenderer.h"
@@ -74,6 +75,56 @@ void writeRawDensity(const FigureSpec &spec, const std::shared_ptr<const Derived
                         : writeDensityPng16(outFile, density, info, &error);
     if (!ok)
         fail(error);
+}
+
+} // namespace
+
+namespace {
+
+// An item that draws its own picture (a flame, as flam3-render draws it): that picture alone,
+// no caption or margins, in the item's own frame and size unless --bounds or --size are given
+// (--bounds then exactly, without the figures' padding), with the item's own sample count
+// (a flame's quality) unless --samples is.
+void writeOwnPicture(const DerivedIfs &d, const FigureSpec &spec, const FigureOptions &o,
+                     const QString &outFile)
+{
+    RenderRequest r;
+    r.chaos = d.chaos;
+    r.mode = RenderRequest::Mode::Random;
+    r.tone = spec.tone;
+    r.seed = spec.seed;
+    r.threads = spec.threads;
+    const bool own = d.chaos.width > 0 && d.chaos.height > 0;
+    r.size = o.sizeGiven || !own ? QSize(o.width, o.height) : QSize(d.chaos.width, d.chaos.height);
+    if (o.bounds.isValid()) {
+        r.world = o.bounds;
+    } else if (d.chaos.frame) {
+        // The item's frame, centred and whole in the picture at square pixels (another --size
+        // is the same picture at another resolution, more of the plane on the longer side).
+        const auto &f = *d.chaos.frame;
+        const double fw = f[2] - f[0], fh = f[3] - f[1];
+        const double ppu = std::min(r.size.width() / fw, r.size.height() / fh);
+        const double w = r.size.width() / ppu, h = r.size.height() / ppu;
+        const double cx = 0.5 * (f[0] + f[2]), cy = 0.5 * (f[1] + f[3]);
+        r.world = QRectF(cx - w / 2, cy - h / 2, w, h);
+    } else {
+        fail(FigureTr::tr("give --bounds: the item has no frame of its own"));
+    }
+    r.samples = o.samples ? *o.samples
+                : d.chaos.samplesPerPixel > 0
+                    ? std::uint64_t(std::max(1.0, std::round(d.chaos.samplesPerPixel * r.size.width()
+                                                              * r.size.height())))
+                    : spec.samples;
+    if (double(r.samples) > double(kMaxChaosSamples))
+        fail(FigureTr::tr("%1 samples; at most %2").arg(r.samples).arg(double(kMaxChaosSamples)));
+    IterationControl control;
+    control.cancel = o.cancel;
+    control.progress = o.progress;
+    const QImage image = renderAttractorImage(r, 0, r.samples, nullptr, control);
+    if (image.isNull() || (o.cancel && o.cancel->load()))
+        fail(FigureTr::tr("the rendering was cancelled"));
+    if (!image.save(outFile, "png"))
+        fail(FigureTr::tr("cannot write %1").arg(outFile));
 }
 
 } // namespace
@@ -184,6 +235,13 @@ void renderItemFigure(const Project &project, AttractorItem *item, const FigureO
         QString error;
         if (!writeSurfaceFigure(s, outFile, &error, o.format))
             fail(error);
+        return;
+    }
+    const QString format =
+        o.format.isEmpty() ? QFileInfo(outFile).suffix().toLower() : o.format;
+    if (d->chaos.picture && spec.tone.mode == Accumulation::Density && !measure
+        && format == QLatin1String("png") && o.bits == 8 && !o.rawDensity) {
+        writeOwnPicture(*d, spec, o, outFile);
         return;
     }
     for (int s = 0; s < item->controlPointSetCount(); ++s)

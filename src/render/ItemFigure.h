@@ -27,6 +27,7 @@ class Project;
 
 struct FigureOptions {
     int width = 900, height = 700;
+    bool sizeGiven = false;  // width and height asked for (not the default)
     std::optional<int> depth;               // default: the item's
     std::optional<std::uint64_t> samples;   // random iteration with this many points
     std::optional<std::uint64_t> seed;      // its seed (default: the item's)

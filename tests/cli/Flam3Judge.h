@@ -3,6 +3,7 @@
 // scripts/setup.sh): a genome rendered by flam3 and by attractor-cli in the same frame, the two
 // pictures compared by block means of alpha (BlockCompare.h).
 
+#include <QDir>
 #include <QImage>
 #include <QProcess>
 #include <QProcessEnvironment>
@@ -110,14 +111,19 @@ inline double chromaDistance(const BlockChroma &a, const BlockChroma &b, double 
     return n ? sum / n : 2.0;
 }
 
-// flam3-render of a genome into `png` (with alpha: transparency=1).
-inline bool flam3Render(const QString &flame, const QString &png, QString *why)
+// flam3-render of a genome into `png` (with alpha: transparency=1; `more` sets other
+// variables of flam3-render, e.g. transparency=0 for the picture on its background, or
+// isaac_seed for other random numbers).
+inline bool flam3Render(const QString &flame, const QString &png, QString *why,
+                        const QList<std::pair<QString, QString>> &more = {})
 {
     QProcess p;
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert("format", "png");
     env.insert("transparency", "1");
     env.insert("out", png);
+    for (const auto &[k, v] : more)
+        env.insert(k, v);
     env.insert("nthreads", "2");
     p.setProcessEnvironment(env);
     p.setStandardInputFile(flame);
@@ -127,6 +133,20 @@ inline bool flam3Render(const QString &flame, const QString &png, QString *why)
         return false;
     }
     return true;
+}
+
+// The genomes of tests/cli/data/flames (30 files written by flam3-genome), by name; in the
+// instrumented builds (scripts/sanitize.sh: AWB_TEST_TIME_SCALE), which look for memory
+// errors and races rather than at pictures, every `step`-th of them.
+inline QStringList judgedFlames(const QString &dir, int step)
+{
+    QStringList files = QDir(dir).entryList({"*.flame"}, QDir::Files, QDir::Name);
+    if (qEnvironmentVariableIntValue("AWB_TEST_TIME_SCALE") <= 1)
+        return files;
+    QStringList some;
+    for (qsizetype i = 0; i < files.size(); i += step)
+        some << files[i];
+    return some;
 }
 
 // A genome with its quality (samples per pixel) raised, as flam3-render should draw it.

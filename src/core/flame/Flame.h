@@ -66,6 +66,19 @@ struct FlameColour {
     bool operator==(const FlameColour &) const = default;
 };
 
+// How a colour coordinate picks its colour: flam3's palette_mode. Step: the entry int(256 c)
+// (flam3's default); linear: between the two entries around 256 c.
+enum class PaletteMode { Step, Linear };
+
+// The spatial filter's shape: flam3's filter_shape, numbered as flam3's parser numbers the
+// names (flam3.h). flam3's filters.c numbers its functions otherwise from 6 on, so the name
+// "lanczos3" draws with Mitchell's filter there, and so here (flame/FlameTone.cpp).
+enum class FilterShape {
+    Gaussian, Hermite, Box, Triangle, Bell, BSpline, Lanczos3, Lanczos2, Mitchell, Blackman,
+    Catrom, Hamming, Hanning, Quadratic
+};
+inline constexpr int kFilterShapeCount = 14;
+
 struct Flame {
     std::string name;
     std::vector<FlameXform> xforms;
@@ -88,6 +101,8 @@ struct Flame {
     FlameColour background;
     int supersample = 1;
     double filter = 0.5;     // spatial filter radius (pixels)
+    FilterShape filterShape = FilterShape::Gaussian;
+    PaletteMode paletteMode = PaletteMode::Step;
     double estimatorRadius = 9, estimatorMinimum = 0, estimatorCurve = 0.4;
     bool operator==(const Flame &) const = default;
 };

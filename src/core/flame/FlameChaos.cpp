@@ -145,11 +145,64 @@ std::uint32_t paletteIndex(double c)
     return i >= 255.0 ? 255u : (i > 0 ? std::uint32_t(i) : 0u);
 }
 
-// One stream's samples into `image`.
+// Where the engine's histogram takes a hit: its palette index as the label; an xform's opacity
+// as the probability of drawing the hit (the same expected density in whole hits).
+struct LabelSink {
+    DensityImage &image;
+    const std::uint8_t *coordinates;
+
+    bool keep(double opacity, Xoshiro256 &rng) const
+    {
+        return opacity == 1.0 || (opacity > 0 && uniform01(rng) < opacity);
+    }
+    void hit(std::size_t k, double c, double) { image.add(k, paletteIndex(c), coordinates); }
+};
+
+// Where flam3's buckets take a hit (rect.c, iter_thread): the palette's colour at the colour
+// coordinate, step or linear, weighted by the xform's opacity.
+struct ColourSink {
+    FlameHistogram &histogram;
+    const std::array<double, 3> *dmap;  // the palette times 255
+    bool linear;
+
+    bool keep(double opacity, Xoshiro256 &) const { return opacity != 0; }
+    void hit(std::size_t k, double c, double opacity)
+    {
+        // flam3: (int)(c * 256), clamped; NaN cannot occur (finite colours, convex steps).
+        const double d = std::clamp(c * 256.0, -1.0, 257.0);
+        int i = int(d);
+        std::array<double, 3> rgb;
+        if (linear) {
+            double frac;
+            if (i < 0) {
+                i = 0;
+                frac = 0;
+            } else if (i >= 255) {
+                i = 254;
+                frac = 1;
+            } else {
+                frac = d - i;
+            }
+            for (int j = 0; j < 3; ++j)
+                rgb[std::size_t(j)] = dmap[i][std::size_t(j)] * (1.0 - frac)
+                                      + dmap[i + 1][std::size_t(j)] * frac;
+        } else {
+            rgb = dmap[std::clamp(i, 0, 255)];
+        }
+        auto &cell = histogram.cells[k];
+        cell[0] += opacity * rgb[0];
+        cell[1] += opacity * rgb[1];
+        cell[2] += opacity * rgb[2];
+        cell[3] += opacity * 255.0;
+    }
+};
+
+// One stream's samples into `sink`.
+template <class Sink>
 FlameStats runStream(const Xforms &xf, const Choice &choice, const Plot &plot,
-                     std::uint64_t seed, int stream, std::uint64_t samples, DensityImage &image,
-                     const std::uint8_t *coordinates, const IterationControl &control,
-                     std::atomic<std::uint64_t> &done, double total)
+                     std::uint64_t seed, int stream, std::uint64_t samples, Sink &sink,
+                     const IterationControl &control, std::atomic<std::uint64_t> &done,
+                     double total)
 {
     FlameStats stats;
     Xoshiro256 rng(seed, std::uint64_t(stream));
@@ -168,6 +221,10 @@ FlameStats runStream(const Xforms &xf, const Choice &choice, const Plot &plot,
         for (int i = -kFuse; i < batch; ++i) {
             const int fn = choice.rows[std::size_t(choice.xaos ? last : 0)].pick(rng.next());
             double q[2];
+            // flam3's apply_xform moves the colour before it knows the point is bad, and a
+            // retry keeps it (flam3_iterate: p[2] = q[2]).
+            const double s = xf.speed[std::size_t(fn)];
+            c = s * xf.colour[std::size_t(fn)] + (1.0 - s) * c;
             if (!xf.maps[std::size_t(fn)].apply(p, q, rng)) {
                 ++stats.badValues;
                 if (++consecutive < 5) {
@@ -179,8 +236,6 @@ FlameStats runStream(const Xforms &xf, const Choice &choice, const Plot &plot,
             }
             consecutive = 0;
             last = fn + 1;
-            const double s = xf.speed[std::size_t(fn)];
-            c = s * xf.colour[std::size_t(fn)] + (1.0 - s) * c;
             p[0] = q[0];
             p[1] = q[1];
             double r[2] = {p[0], p[1]};
@@ -192,20 +247,62 @@ FlameStats runStream(const Xforms &xf, const Choice &choice, const Plot &plot,
             if (i < 0)
                 continue;
             const double opacity = xf.opacity[std::size_t(fn)];
-            if (opacity != 1.0 && !(opacity > 0 && uniform01(rng) < opacity))
+            if (!sink.keep(opacity, rng))
                 continue;
             const std::ptrdiff_t k = plot.cell(r[0], r[1]);
             if (k < 0) {
                 ++stats.offscreen;
                 continue;
             }
-            image.add(std::size_t(k), paletteIndex(rc), coordinates);
+            sink.hit(std::size_t(k), rc, opacity);
         }
         left -= std::uint64_t(batch);
         stats.samples += std::uint64_t(batch);
         const std::uint64_t d = done.fetch_add(std::uint64_t(batch)) + std::uint64_t(batch);
         if (control.progress)
             control.progress(std::min(1.0, double(d) / total));
+    }
+    return stats;
+}
+
+// The streams of `job` on its threads, each thread's sink made by makeSink(t) (t = 0 first, on
+// the caller's thread); returns the summed stats.
+template <class MakeSink>
+FlameStats playStreams(const FlameRaster &job, const IterationControl &control,
+                       MakeSink makeSink)
+{
+    if (!job.flame)
+        throw InputError(tr("there is no flame to draw"));
+    const Flame &flame = *job.flame;
+    checkFlame(flame);
+    job.frame.validate();
+    const Xforms xf(flame);
+    const Choice choice(flame);
+    const Plot plot(flame, job.frame);
+    const int threads = std::clamp(job.threads, 1, kChaosStreams);
+    std::vector<FlameStats> results(static_cast<std::size_t>(threads));
+    std::atomic<std::uint64_t> done{0};
+    const double total = std::max(1.0, double(job.samples));
+    onThreads(threads, [&](int t) {
+        auto sink = makeSink(t);
+        const int first = kChaosStreams * t / threads, last = kChaosStreams * (t + 1) / threads;
+        FlameStats &r = results[std::size_t(t)];
+        for (int s = first; s < last && !r.cancelled; ++s) {
+            const FlameStats one = runStream(xf, choice, plot, job.seed, s,
+                                             streamShare(job.samples, s), sink, control, done,
+                                             total);
+            r.samples += one.samples;
+            r.badValues += one.badValues;
+            r.offscreen += one.offscreen;
+            r.cancelled = one.cancelled;
+        }
+    });
+    FlameStats stats;
+    for (const FlameStats &r : results) {
+        stats.samples += r.samples;
+        stats.badValues += r.badValues;
+        stats.offscreen += r.offscreen;
+        stats.cancelled = stats.cancelled || r.cancelled;
     }
     return stats;
 }
@@ -311,7 +408,10 @@ RasterFrame flameFrame(const Flame &f)
     return frame;
 }
 
-double flameSamples(const Flame &f) { return f.quality * double(f.width) * double(f.height); }
+double flameSamples(const Flame &f)
+{
+    return f.quality * std::pow(4.0, f.zoom) * double(f.width) * double(f.height);
+}
 
 std::vector<Rgb8> flamePaletteRgb(const Flame &f)
 {
@@ -327,49 +427,51 @@ std::vector<Rgb8> flamePaletteRgb(const Flame &f)
 FlameStats accumulateFlame(const FlameRaster &job, DensityImage &out,
                            const IterationControl &control)
 {
-    if (!job.flame)
-        throw InputError(tr("there is no flame to draw"));
-    const Flame &flame = *job.flame;
-    checkFlame(flame);
-    job.frame.validate();
-    const Xforms xf(flame);
-    const Choice choice(flame);
-    const Plot plot(flame, job.frame);
     std::vector<std::uint8_t> coordinates(256);
     for (int i = 0; i < 256; ++i)
         coordinates[std::size_t(i)] = std::uint8_t(i);
     const int threads = std::clamp(job.threads, 1, kChaosStreams);
     std::vector<DensityImage> images(static_cast<std::size_t>(threads - 1));
-    out.reset(job.frame.cellsX(), job.frame.cellsY(), job.accumulation);
-    std::vector<FlameStats> results(static_cast<std::size_t>(threads));
-    std::atomic<std::uint64_t> done{0};
-    const double total = std::max(1.0, double(job.samples));
-    onThreads(threads, [&](int t) {
+    const FlameStats stats = playStreams(job, control, [&](int t) {
         DensityImage &image = t == 0 ? out : images[std::size_t(t - 1)];
-        if (t > 0)
-            image.reset(job.frame.cellsX(), job.frame.cellsY(), job.accumulation);
-        const int first = kChaosStreams * t / threads, last = kChaosStreams * (t + 1) / threads;
-        FlameStats &r = results[std::size_t(t)];
-        for (int s = first; s < last && !r.cancelled; ++s) {
-            const FlameStats one = runStream(xf, choice, plot, job.seed, s,
-                                             streamShare(job.samples, s), image,
-                                             coordinates.data(), control, done, total);
-            r.samples += one.samples;
-            r.badValues += one.badValues;
-            r.offscreen += one.offscreen;
-            r.cancelled = one.cancelled;
-        }
+        image.reset(job.frame.cellsX(), job.frame.cellsY(), job.accumulation);
+        return LabelSink{image, coordinates.data()};
     });
-    FlameStats stats;
-    for (const FlameStats &r : results) {
-        stats.samples += r.samples;
-        stats.badValues += r.badValues;
-        stats.offscreen += r.offscreen;
-        stats.cancelled = stats.cancelled || r.cancelled;
-    }
     for (const DensityImage &image : images)
         out.merge(image);
     out.offscreen = stats.offscreen;
+    return stats;
+}
+
+FlameStats accumulateFlameColours(const FlameRaster &job, FlameHistogram &out,
+                                  const IterationControl &control)
+{
+    const Flame *flame = job.flame;
+    std::array<std::array<double, 3>, 256> dmap{};
+    if (flame)
+        for (std::size_t i = 0; i < 256; ++i)
+            dmap[i] = {flame->palette[i].r * 255.0, flame->palette[i].g * 255.0,
+                       flame->palette[i].b * 255.0};
+    const bool linear = flame && flame->paletteMode == PaletteMode::Linear;
+    const int threads = std::clamp(job.threads, 1, kChaosStreams);
+    const std::size_t cells = std::size_t(job.frame.cellsX()) * std::size_t(job.frame.cellsY());
+    std::vector<FlameHistogram> parts(static_cast<std::size_t>(threads - 1));
+    out.width = job.frame.cellsX();
+    out.height = job.frame.cellsY();
+    const FlameStats stats = playStreams(job, control, [&](int t) {
+        FlameHistogram &h = t == 0 ? out : parts[std::size_t(t - 1)];
+        h.cells.assign(cells, {0, 0, 0, 0});
+        return ColourSink{h, dmap.data(), linear};
+    });
+    // The parts summed in a fixed order, cell ranges on the threads.
+    onThreads(threads, [&](int t) {
+        const std::size_t first = cells * std::size_t(t) / std::size_t(threads);
+        const std::size_t last = cells * std::size_t(t + 1) / std::size_t(threads);
+        for (const FlameHistogram &part : parts)
+            for (std::size_t i = first; i < last; ++i)
+                for (int c = 0; c < 4; ++c)
+                    out.cells[i][std::size_t(c)] += part.cells[i][std::size_t(c)];
+    });
     return stats;
 }
 

@@ -51,13 +51,27 @@ void checkFlame(const Flame &flame);
 // at supersample 1: flam3-render's frame of the flame.
 RasterFrame flameFrame(const Flame &flame);
 
-// The sample count flam3 draws: quality x width x height.
+// The sample count flam3 draws: quality x 4^zoom x width x height (flam3's sample density is
+// the quality times the zoom's scale squared).
 double flameSamples(const Flame &flame);
 
 // Accumulates the flame into `out` (cleared first, sized to the frame's cells). Throws
 // InputError (checkFlame, the frame). Returns with stats.cancelled when control.cancel is set.
 FlameStats accumulateFlame(const FlameRaster &job, DensityImage &out,
                            const IterationControl &control = {});
+
+// The histogram flam3 fills (rect.c's buckets): per cell the sums of the hits' palette colours
+// (r, g, b, 0..255, as flam3's dmap, step or linear by the flame's palette mode) and of 255 per
+// hit, each hit weighted by its xform's opacity (flam3's logvis). Row 0 at the top.
+struct FlameHistogram {
+    int width = 0, height = 0;
+    std::vector<std::array<double, 4>> cells;
+};
+
+// Accumulates the flame into `out` (resized to the frame's cells and cleared; frame.supersample
+// 1: job.frame's width and height are the cells). Throws InputError as accumulateFlame.
+FlameStats accumulateFlameColours(const FlameRaster &job, FlameHistogram &out,
+                                  const IterationControl &control = {});
 
 // The top Lyapunov exponent of the flame's chaos game along one orbit (Benettin's method): the
 // mean log of how much one step stretches a small displacement, renormalised every step, the

@@ -27,9 +27,19 @@ struct CustomChaos {
     // cannot draw; returns with `cancelled` when control.cancel is set.
     std::function<IterationStats(const ChaosJob &, DensityImage &, const IterationControl &)> run;
     std::vector<Rgb8> colours;  // the labels' colours
+    // Set when the item also tone-maps its own game (a flame: flam3's estimator, spatial
+    // filter and tone, flame/FlameTone.h): the picture of job.frame, width x height pixels
+    // 0xAARRGGBB (cleared and sized here). The density tone draws with it.
+    std::function<IterationStats(const ChaosJob &, std::vector<std::uint32_t> &,
+                                 const IterationControl &)>
+        picture;
     // The rectangle (x0, y0, x1, y1; y up) the item frames when asked to fit its content (a
     // flame's camera): its points may lie anywhere, so none are measured.
     std::optional<std::array<double, 4>> frame;
+    // The item's own picture (a flame's camera): its size in pixels and the samples it draws
+    // per pixel (flam3's quality), for a picture drawn as the item's own tool draws it.
+    int width = 0, height = 0;
+    double samplesPerPixel = 0;
     // The top Lyapunov exponent of the game along its own orbit (per step; negative: it
     // contracts on average), when the item measures it: what its maps' spectra cannot tell.
     std::optional<double> lyapunov;
