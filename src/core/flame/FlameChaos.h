@@ -60,12 +60,15 @@ double flameSamples(const Flame &flame);
 FlameStats accumulateFlame(const FlameRaster &job, DensityImage &out,
                            const IterationControl &control = {});
 
-// The histogram flam3 fills (rect.c's buckets): per cell the sums of the hits' palette colours
-// (r, g, b, 0..255, as flam3's dmap, step or linear by the flame's palette mode) and of 255 per
-// hit, each hit weighted by its xform's opacity (flam3's logvis). Row 0 at the top.
+// The histogram flam3 fills (rect.c's buckets, as flam3-render's default bits=33 keeps them:
+// unsigned 32-bit sums): per cell the sums of the hits' palette colours (r, g, b, 0..255, as
+// flam3's dmap, step or linear by the flame's palette mode) and of 255 per hit, each hit
+// weighted by its xform's opacity (flam3's logvis); each sum, as flam3's, truncated to a whole
+// number after every hit and held at 2^32 - 1. Row 0 at the top. Whole numbers: the threads'
+// parts sum to the same histogram in any order.
 struct FlameHistogram {
     int width = 0, height = 0;
-    std::vector<std::array<double, 4>> cells;
+    std::vector<std::array<std::uint32_t, 4>> cells;
 };
 
 // Accumulates the flame into `out` (resized to the frame's cells and cleared; frame.supersample

@@ -165,6 +165,7 @@ void hsvToRgb(const double hsv[3], double rgb[3])
 }
 
 using Cell = std::array<double, 4>;
+using Bucket = std::array<std::uint32_t, 4>;
 
 // The log scaling without the estimator (rect.c): every lit cell by k1 log(1 + k2 a) / a.
 void logScale(const FlameHistogram &h, std::vector<Cell> &acc, double k1, double k2,
@@ -175,11 +176,12 @@ void logScale(const FlameHistogram &h, std::vector<Cell> &acc, double k1, double
         const std::size_t first = n * std::size_t(t) / std::size_t(threads);
         const std::size_t last = n * std::size_t(t + 1) / std::size_t(threads);
         for (std::size_t i = first; i < last; ++i) {
-            const Cell &c = h.cells[i];
-            if (c[3] == 0.0)
+            const Bucket &c = h.cells[i];
+            if (c[3] == 0)
                 continue;
-            const double ls = k1 * std::log(1.0 + c[3] * k2) / c[3];
-            acc[i] = {c[0] * ls, c[1] * ls, c[2] * ls, c[3] * ls};
+            const double a = c[3];
+            const double ls = k1 * std::log(1.0 + a * k2) / a;
+            acc[i] = {c[0] * ls, c[1] * ls, c[2] * ls, a * ls};
         }
     });
 }
@@ -204,9 +206,11 @@ void estimateRows(const FlameHistogram &h, std::vector<Cell> &acc, const Density
     };
     for (int j = first; j < last; ++j) {
         for (int i = ss - 1; i < w - (ss - 1); ++i) {
-            const Cell &b = h.cells[std::size_t(i) + std::size_t(j) * std::size_t(w)];
-            if (b[3] == 0.0)
+            const Bucket &bucket = h.cells[std::size_t(i) + std::size_t(j) * std::size_t(w)];
+            if (bucket[3] == 0)
                 continue;
+            const double b[4] = {double(bucket[0]), double(bucket[1]), double(bucket[2]),
+                                 double(bucket[3])};
             double fSelect = 0.0;
             for (int ii = -half; ii <= half; ++ii)
                 for (int jj = -half; jj <= half; ++jj)
@@ -488,14 +492,19 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
         throw InputError(formatMessage(tr("a %1 x %2 picture of the flame at supersample %3 needs "
                                           "%4 x %5 histogram cells; at most 32768 a side"),
                                        W, H, ss, streamedNumber(cellsX), streamedNumber(cellsY)));
+    // Memory: a histogram of buckets per thread, then the log-scaled cells and the filter's
+    // rows (doubles).
     int threads = std::clamp(job.threads, 1, kChaosStreams);
-    const double bytesPerCopy = cellsX * cellsY * sizeof(Cell);
-    while (threads > 1 && bytesPerCopy * (threads + 1) > kMaxFlameHistogramBytes)
+    const double cells = cellsX * cellsY;
+    auto bytes = [&](int t) {
+        return cells * (double(sizeof(Bucket)) * t + 2.0 * sizeof(Cell));
+    };
+    while (threads > 1 && bytes(threads) > kMaxFlameHistogramBytes)
         --threads;
-    if (bytesPerCopy * 2 > kMaxFlameHistogramBytes)
+    if (bytes(1) > kMaxFlameHistogramBytes)
         throw InputError(formatMessage(tr("a %1 x %2 picture of the flame at supersample %3 needs "
                                           "%4 MB of histograms; at most %5 MB"),
-                                       W, H, ss, std::lround(bytesPerCopy * 2 / (1 << 20)),
+                                       W, H, ss, std::lround(bytes(1) / (1 << 20)),
                                        std::lround(kMaxFlameHistogramBytes / (1 << 20))));
 
     // The histogram's frame: the picture's, widened by the gutter's cells.
