@@ -566,6 +566,7 @@ bool AttractorItem::removeControlPoints(std::vector<int> indices, int set)
 void AttractorItem::storePoint(int set, int index, const Point &p)
 {
     pointStorage(set)[size_t(index)] = p;
+    pointsStored(set);
     inputsChanged();
     emit controlPointMoved(set, index);
     emit controlPointsChanged(set);
@@ -576,6 +577,7 @@ void AttractorItem::storeInsertedPoint(int set, int index, const Point &p)
 {
     PointList &points = pointStorage(set);
     points.insert(points.begin() + index, p);
+    pointsStored(set);
     inputsChanged();
     emit controlPointInserted(set, index);
     emit controlPointsChanged(set);
@@ -586,6 +588,7 @@ void AttractorItem::storeRemovedPoint(int set, int index)
 {
     PointList &points = pointStorage(set);
     points.erase(points.begin() + index);
+    pointsStored(set);
     inputsChanged();
     emit controlPointRemoved(set, index);
     emit controlPointsChanged(set);

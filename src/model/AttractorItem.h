@@ -188,6 +188,10 @@ protected:
     bool dropDerived() override;
     // The storage of point set `set` (0 <= set < controlPointSetCount()).
     virtual PointList &pointStorage(int set) = 0;
+    // Called when an edit (or its undo) has stored into point set `set`, before the derived
+    // data is dropped: an item whose points stand for other inputs (a flame's xform triangles)
+    // updates them here.
+    virtual void pointsStored(int set) { Q_UNUSED(set); }
     const PointList &pointStorage(int set) const
     {
         return const_cast<AttractorItem *>(this)->pointStorage(set);

@@ -10,6 +10,7 @@
 
 #include <QJsonArray>
 
+#include <algorithm>
 #include <cmath>
 
 namespace awb {
@@ -317,6 +318,94 @@ MaybeProblem FlameItem::checkFlame(const Flame &f) const
     if (!(f.scale > 0) || !std::isfinite(f.scale))
         return Problem{"camera.scale", tr("the scale (pixels per unit) must be positive")};
     return std::nullopt;
+}
+
+PointList flameTriangle(const Affine2 &m)
+{
+    return {{m.c, -m.f}, {m.a + m.c, -(m.d + m.f)}, {m.b + m.c, -(m.e + m.f)}};
+}
+
+Affine2 flameMapOfTriangle(const PointList &t)
+{
+    Affine2 m;
+    m.c = t[0][0];
+    m.f = -t[0][1];
+    m.a = t[1][0] - m.c;
+    m.d = -t[1][1] - m.f;
+    m.b = t[2][0] - m.c;
+    m.e = -t[2][1] - m.f;
+    return m;
+}
+
+namespace {
+constexpr std::size_t kExactTriangles = 64;
+
+void remember(std::vector<std::pair<PointList, Affine2>> &list, const PointList &t,
+              const Affine2 &m)
+{
+    for (auto &e : list)
+        if (e.first == t) {
+            e.second = m;
+            return;
+        }
+    if (list.size() >= kExactTriangles)
+        list.erase(list.begin());
+    list.emplace_back(t, m);
+}
+} // namespace
+
+void FlameItem::syncTriangles() const
+{
+    std::vector<Affine2> pres;
+    for (const FlameXform &x : m_flame.xforms)
+        pres.push_back(x.pre);
+    if (m_flame.finalXform)
+        pres.push_back(m_flame.finalXform->pre);
+    if (pres == m_trianglesOf && m_triangles.size() == pres.size())
+        return;
+    m_triangles.resize(pres.size());
+    m_exact.resize(pres.size());
+    for (std::size_t i = 0; i < pres.size(); ++i) {
+        if (i < m_trianglesOf.size() && m_trianglesOf[i] == pres[i])
+            continue;
+        // The triangle this map was last drawn as, if it came from one (an undo).
+        const auto known = std::find_if(m_exact[i].begin(), m_exact[i].end(),
+                                        [&](const auto &e) { return e.second == pres[i]; });
+        m_triangles[i] = known != m_exact[i].end() ? known->first : flameTriangle(pres[i]);
+        remember(m_exact[i], m_triangles[i], pres[i]);
+    }
+    m_trianglesOf = pres;
+}
+
+int FlameItem::controlPointSetCount() const
+{
+    syncTriangles();
+    return int(m_triangles.size());
+}
+
+PointList &FlameItem::pointStorage(int set)
+{
+    syncTriangles();
+    return m_triangles[std::size_t(set)];
+}
+
+Affine2 &FlameItem::preOf(int set)
+{
+    return std::size_t(set) < m_flame.xforms.size() ? m_flame.xforms[std::size_t(set)].pre
+                                                    : m_flame.finalXform->pre;
+}
+
+void FlameItem::pointsStored(int set)
+{
+    const PointList &t = m_triangles[std::size_t(set)];
+    auto &exact = m_exact[std::size_t(set)];
+    const auto known = std::find_if(exact.begin(), exact.end(),
+                                    [&](const auto &e) { return e.first == t; });
+    const Affine2 m = known != exact.end() ? known->second : flameMapOfTriangle(t);
+    remember(exact, t, m);
+    preOf(set) = m;
+    m_trianglesOf[std::size_t(set)] = m;
+    emit flameChanged();
 }
 
 bool FlameItem::setFlame(const Flame &f, int gesture, QString *error)

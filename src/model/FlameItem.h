@@ -45,17 +45,37 @@ public:
 
     int mapCount() const override { return int(m_flame.xforms.size()); }
 
+    // Each xform's pre map as the triangle Apophysis draws (and the final xform's last): the
+    // images of (0, 0), (1, 0) and (0, 1), in the picture's orientation (y up). Dragging a
+    // corner changes the map, one undo step a drag; undo gives the map back exactly.
+    int controlPointSetCount() const override;
+    bool controlPointSetClosed(int) const override { return true; }
+    bool pointCountEditable(int) const override { return false; }
+    int maxPointCount(int) const override { return 3; }
+
 signals:
     void flameChanged();
 
 protected:
     DerivedIfs computeIfs() const override;
-    PointList &pointStorage(int) override { return m_noPoints; }
+    PointList &pointStorage(int set) override;
+    void pointsStored(int set) override;
 
 private:
+    // The triangles of the maps they were drawn from (rebuilt when a map changes otherwise),
+    // and per set the last triangles with their exact maps, so that a triangle restored by an
+    // undo gives its map back to the last bit.
+    void syncTriangles() const;
+    flame::Affine2 &preOf(int set);
     flame::Flame m_flame;
-    PointList m_noPoints;
+    mutable std::vector<PointList> m_triangles;
+    mutable std::vector<flame::Affine2> m_trianglesOf;
+    mutable std::vector<std::vector<std::pair<PointList, flame::Affine2>>> m_exact;
 };
+
+// The triangle of a pre map (y up) and the map of a triangle.
+PointList flameTriangle(const flame::Affine2 &m);
+flame::Affine2 flameMapOfTriangle(const PointList &t);
 
 // An xform's affine map in the application's row convention and orientation: x |-> x A + b
 // with y up (flam3's y points down the picture, so the map is mirrored: R f R, R = diag(1, -1)).

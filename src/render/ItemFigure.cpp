@@ -244,7 +244,8 @@ void renderItemFigure(const Project &project, AttractorItem *item, const FigureO
         writeOwnPicture(*d, spec, o, outFile);
         return;
     }
-    for (int s = 0; s < item->controlPointSetCount(); ++s)
+    // A game of its own (a flame): its points are handles of its maps, not of the figure.
+    for (int s = 0; !d->chaos && s < item->controlPointSetCount(); ++s)
         if (!item->controlPoints(s).empty()) {
             spec.controlPolygons.push_back(toMatrix(item->controlPoints(s)));
             spec.controlClosed.push_back(item->controlPointSetClosed(s));
