@@ -2918,7 +2918,7 @@
     </message>
     <message>
         <source>Final xform</source>
-        <translation>Závěrečný xform</translation>
+        <translation>Závěrečná xform</translation>
     </message>
     <message>
         <source>Drawn on every point without moving the orbit; null: none</source>
@@ -3127,6 +3127,109 @@
     <message>
         <source>flam3&apos;s palette_mode: a hit takes the palette entry at its colour coordinate (step) or between the two entries around it (linear)</source>
         <translation>palette_mode programu flam3: zásah dostane položku palety na své barevné souřadnici (skokově) nebo barvu mezi dvěma okolními položkami (lineárně)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FlameXformEditor</name>
+    <message>
+        <source>The xform to edit; its pre map is its triangle in the attractor view (drag a corner) and in the point table below</source>
+        <translation>Xform k úpravě; její počáteční zobrazení je její trojúhelník v pohledu na atraktor (táhněte roh) a v tabulce bodů níže</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Přidat</translation>
+    </message>
+    <message>
+        <source>A new xform (linear, weight 1) after the others</source>
+        <translation>Nová xform (lineární, váha 1) za ostatními</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Zdvojit</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Smazat</translation>
+    </message>
+    <message>
+        <source>Weight:</source>
+        <translation>Váha:</translation>
+    </message>
+    <message>
+        <source>Colour:</source>
+        <translation>Barva:</translation>
+    </message>
+    <message>
+        <source>Colour speed:</source>
+        <translation>Rychlost barvy:</translation>
+    </message>
+    <message>
+        <source>Opacity:</source>
+        <translation>Neprůhlednost:</translation>
+    </message>
+    <message>
+        <source>Variation</source>
+        <translation>Variace</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>Váha</translation>
+    </message>
+    <message>
+        <source>The xform&apos;s variations; a weight of 0 removes one</source>
+        <translation>Variace xform; váha 0 jednu odebere</translation>
+    </message>
+    <message>
+        <source>Add a variation…</source>
+        <translation>Přidat variaci…</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parametr</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Hodnota</translation>
+    </message>
+    <message>
+        <source>The parameters of the xform&apos;s variations</source>
+        <translation>Parametry variací xform</translation>
+    </message>
+    <message>
+        <source>A flame needs at least one xform.</source>
+        <translation>Plamen potřebuje alespoň jednu xform.</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Barva</translation>
+    </message>
+    <message>
+        <source>Colour speed</source>
+        <translation>Rychlost barvy</translation>
+    </message>
+    <message>
+        <source>Opacity</source>
+        <translation>Neprůhlednost</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number</source>
+        <translation>%1: &apos;%2&apos; není číslo</translation>
+    </message>
+    <message>
+        <source>Xform %1</source>
+        <translation>Xform %1</translation>
+    </message>
+    <message>
+        <source>Xform %1: %2</source>
+        <translation>Xform %1: %2</translation>
+    </message>
+    <message>
+        <source>Final xform</source>
+        <translation>Závěrečná xform</translation>
     </message>
 </context>
 <context>
@@ -5516,7 +5619,7 @@ Ne ji importuje tak, jak je.</translation>
     </message>
     <message>
         <source>Delete</source>
-        <translation>Odstranit</translation>
+        <translation>Smazat</translation>
     </message>
     <message>
         <source>Delete the selected points (one undo step)</source>
@@ -5625,6 +5728,10 @@ Ne ji importuje tak, jak je.</translation>
     <message>
         <source>vertex %1 (missing)</source>
         <translation type="vanished">vrchol %1 (chybí)</translation>
+    </message>
+    <message>
+        <source>Xforms</source>
+        <translation>Xformy</translation>
     </message>
 </context>
 <context>
@@ -9815,7 +9922,7 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a number</source>
-        <translation>%1: „%2“ není číslo</translation>
+        <translation>%1: &apos;%2&apos; není číslo</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a finite number</source>

@@ -2915,7 +2915,7 @@
     </message>
     <message>
         <source>Final xform</source>
-        <translation>Xform final</translation>
+        <translation>Xform finale</translation>
     </message>
     <message>
         <source>Drawn on every point without moving the orbit; null: none</source>
@@ -3124,6 +3124,109 @@
     <message>
         <source>flam3&apos;s palette_mode: a hit takes the palette entry at its colour coordinate (step) or between the two entries around it (linear)</source>
         <translation>palette_mode de flam3 : un impact prend l&apos;entrée de la palette à sa coordonnée de couleur (par paliers) ou la couleur entre les deux entrées qui l&apos;entourent (linéaire)</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FlameXformEditor</name>
+    <message>
+        <source>The xform to edit; its pre map is its triangle in the attractor view (drag a corner) and in the point table below</source>
+        <translation>La transformation (xform) à modifier ; son application initiale est son triangle dans la vue de l&apos;attracteur (faites glisser un coin) et dans le tableau des points ci-dessous</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Ajouter</translation>
+    </message>
+    <message>
+        <source>A new xform (linear, weight 1) after the others</source>
+        <translation>Une nouvelle xform (linéaire, poids 1) après les autres</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Dupliquer</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Supprimer</translation>
+    </message>
+    <message>
+        <source>Weight:</source>
+        <translation>Poids :</translation>
+    </message>
+    <message>
+        <source>Colour:</source>
+        <translation>Couleur :</translation>
+    </message>
+    <message>
+        <source>Colour speed:</source>
+        <translation>Vitesse de couleur :</translation>
+    </message>
+    <message>
+        <source>Opacity:</source>
+        <translation>Opacité :</translation>
+    </message>
+    <message>
+        <source>Variation</source>
+        <translation>Variation</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>Poids</translation>
+    </message>
+    <message>
+        <source>The xform&apos;s variations; a weight of 0 removes one</source>
+        <translation>Les variations de la xform ; un poids de 0 en retire une</translation>
+    </message>
+    <message>
+        <source>Add a variation…</source>
+        <translation>Ajouter une variation…</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Paramètre</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Valeur</translation>
+    </message>
+    <message>
+        <source>The parameters of the xform&apos;s variations</source>
+        <translation>Les paramètres des variations de la xform</translation>
+    </message>
+    <message>
+        <source>A flame needs at least one xform.</source>
+        <translation>Une flamme a besoin d&apos;au moins une xform.</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Couleur</translation>
+    </message>
+    <message>
+        <source>Colour speed</source>
+        <translation>Vitesse de couleur</translation>
+    </message>
+    <message>
+        <source>Opacity</source>
+        <translation>Opacité</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number</source>
+        <translation>%1 : « %2 » n&apos;est pas un nombre</translation>
+    </message>
+    <message>
+        <source>Xform %1</source>
+        <translation>Xform %1</translation>
+    </message>
+    <message>
+        <source>Xform %1: %2</source>
+        <translation>Xform %1 : %2</translation>
+    </message>
+    <message>
+        <source>Final xform</source>
+        <translation>Xform finale</translation>
     </message>
 </context>
 <context>
@@ -5175,7 +5278,7 @@ Non l’importe tel quel.</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation>%1&#xa0;: %2</translation>
+        <translation>%1 : %2</translation>
     </message>
 </context>
 <context>
@@ -5559,7 +5662,7 @@ Non l’importe tel quel.</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation>%1&#xa0;: %2</translation>
+        <translation>%1 : %2</translation>
     </message>
     <message>
         <source>Depth</source>
@@ -5616,6 +5719,10 @@ Non l’importe tel quel.</translation>
     <message>
         <source>vertex %1 (missing)</source>
         <translation type="vanished">sommet %1 (manquant)</translation>
+    </message>
+    <message>
+        <source>Xforms</source>
+        <translation>Xforms</translation>
     </message>
 </context>
 <context>
@@ -8533,7 +8640,7 @@ Lancez «&#xa0;attractor-cli &lt;commande&gt; --help&#xa0;» pour connaître les
     </message>
     <message>
         <source>%1: %2</source>
-        <translation>%1&#xa0;: %2</translation>
+        <translation>%1 : %2</translation>
     </message>
     <message>
         <source>%1: larger than 64 MiB, not a certificate</source>
@@ -9802,7 +9909,7 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a number</source>
-        <translation>%1&#xa0;: «&#xa0;%2&#xa0;» n’est pas un nombre</translation>
+        <translation>%1 : « %2 » n&apos;est pas un nombre</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a finite number</source>

@@ -2904,7 +2904,7 @@
     </message>
     <message>
         <source>Xforms</source>
-        <translation>Xform</translation>
+        <translation>Xforms</translation>
     </message>
     <message>
         <source>flam3&apos;s xforms: {&quot;coefs&quot;: [a, d, b, e, c, f], &quot;variations&quot;: {&quot;linear&quot;: 1, ...}, &quot;weight&quot;: w, &quot;color&quot;: c, ...} each</source>
@@ -3121,6 +3121,109 @@
     <message>
         <source>flam3&apos;s palette_mode: a hit takes the palette entry at its colour coordinate (step) or between the two entries around it (linear)</source>
         <translation>flam3 的 palette_mode：一次命中取其颜色坐标处的调色板条目（阶梯），或取其两侧条目之间的颜色（线性）</translation>
+    </message>
+</context>
+<context>
+    <name>awb::FlameXformEditor</name>
+    <message>
+        <source>The xform to edit; its pre map is its triangle in the attractor view (drag a corner) and in the point table below</source>
+        <translation>要编辑的 xform；其前置映射就是吸引子视图中的三角形（拖动一个角）以及下方点表中的点</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>添加</translation>
+    </message>
+    <message>
+        <source>A new xform (linear, weight 1) after the others</source>
+        <translation>在其他 xform 之后新建一个 xform（线性，权重 1）</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>复制</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>删除</translation>
+    </message>
+    <message>
+        <source>Weight:</source>
+        <translation>权重：</translation>
+    </message>
+    <message>
+        <source>Colour:</source>
+        <translation>颜色：</translation>
+    </message>
+    <message>
+        <source>Colour speed:</source>
+        <translation>颜色速度：</translation>
+    </message>
+    <message>
+        <source>Opacity:</source>
+        <translation>不透明度：</translation>
+    </message>
+    <message>
+        <source>Variation</source>
+        <translation>变体</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>权重</translation>
+    </message>
+    <message>
+        <source>The xform&apos;s variations; a weight of 0 removes one</source>
+        <translation>该 xform 的变体；权重为 0 即移除</translation>
+    </message>
+    <message>
+        <source>Add a variation…</source>
+        <translation>添加变体…</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>The parameters of the xform&apos;s variations</source>
+        <translation>该 xform 各变体的参数</translation>
+    </message>
+    <message>
+        <source>A flame needs at least one xform.</source>
+        <translation>火焰至少需要一个 xform。</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>颜色</translation>
+    </message>
+    <message>
+        <source>Colour speed</source>
+        <translation>颜色速度</translation>
+    </message>
+    <message>
+        <source>Opacity</source>
+        <translation>不透明度</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number</source>
+        <translation>%1：“%2”不是数字</translation>
+    </message>
+    <message>
+        <source>Xform %1</source>
+        <translation>Xform %1</translation>
+    </message>
+    <message>
+        <source>Xform %1: %2</source>
+        <translation>Xform %1：%2</translation>
+    </message>
+    <message>
+        <source>Final xform</source>
+        <translation>最终 xform</translation>
     </message>
 </context>
 <context>
@@ -5607,6 +5710,10 @@ No imports it as it is.</source>
     <message>
         <source>vertex %1 (missing)</source>
         <translation type="vanished">顶点 %1（缺失）</translation>
+    </message>
+    <message>
+        <source>Xforms</source>
+        <translation>Xforms</translation>
     </message>
 </context>
 <context>
@@ -9789,7 +9896,7 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a number</source>
-        <translation>%1：“%2”不是数</translation>
+        <translation>%1：“%2”不是数字</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a finite number</source>

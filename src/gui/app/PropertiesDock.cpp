@@ -1,12 +1,14 @@
 #include "gui/app/PropertiesDock.h"
 
 #include "gui/app/CompactEditors.h"
+#include "gui/app/FlameXformEditor.h"
 #include "gui/app/FrameBudget.h"
 #include "gui/app/Messages.h"
 #include "gui/app/WheelGuard.h"
 #include "gui/views/ComplexPlanePicker.h"
 #include "model/AttractorItem.h"
 #include "model/EigenvaluePlotItem.h"
+#include "model/FlameItem.h"
 #include "model/NumberFormat.h"
 #include "model/Project.h"
 #include "model/PropertyTable.h"
@@ -99,7 +101,12 @@ void PropertiesWidget::setItem(Item *item)
     rebuild();
 }
 
-QWidget *PropertiesWidget::editor(const QString &key) const { return m_editors.value(key); }
+QWidget *PropertiesWidget::editor(const QString &key) const
+{
+    if (key.startsWith(QLatin1String("xforms.")) && m_xforms)
+        return m_xforms->editor(key.mid(7));
+    return m_editors.value(key);
+}
 QWidget *PropertiesWidget::slider(const QString &key) const { return m_sliders.value(key); }
 
 void PropertiesWidget::onItemChanged()
@@ -246,6 +253,15 @@ void PropertiesWidget::rebuild()
     }
     if (plotForm)
         addEigenvaluePlotStatus(plotForm);
+    m_xforms = nullptr;
+    if (auto *flameItem = qobject_cast<FlameItem *>(m_item.data())) {
+        // A flame's xforms, beside its camera and tone.
+        auto *box = new QGroupBox(tr("Xforms"));
+        auto *boxLayout = new QVBoxLayout(box);
+        m_xforms = new FlameXformEditor(flameItem, [this](const QString &m) { report(m); });
+        boxLayout->addWidget(m_xforms);
+        content->addWidget(box);
+    }
     if (qobject_cast<AttractorItem *>(m_item.data()))
         addPointEditors();
     content->addStretch();

@@ -22,6 +22,7 @@ class QVBoxLayout;
 
 namespace awb {
 
+class FlameXformEditor;
 class FrameBudget;
 class Item;
 class Messages;
@@ -39,7 +40,7 @@ public:
     // "start_set.kind", "algorithm.depth", "style.color_by", "source", ...); nullptr for an
     // unknown key. For tests. Besides the parameters' keys: "style.colors" (the palette
     // button), "points" (the table), "points.set", "points.add", "points.insert",
-    // "points.delete".
+    // "points.delete"; for a flame "xforms.NAME" (FlameXformEditor::editor).
     QWidget *editor(const QString &key) const;
     QWidget *slider(const QString &key) const;
     // The colours an item without its own uses (the preferences' palette; empty: the views').
@@ -83,6 +84,7 @@ private:
     QList<Binding> m_bindings;
     QHash<QString, QWidget *> m_editors, m_sliders;
     QTableWidget *m_points = nullptr;
+    FlameXformEditor *m_xforms = nullptr;  // a flame's xforms
     int m_pointSet = 0;  // the point set the table shows
     int m_updating = 0;
     FrameBudget *m_budget = nullptr;
