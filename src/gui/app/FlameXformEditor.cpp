@@ -9,6 +9,7 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QHash>
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
@@ -107,34 +108,16 @@ FlameXformEditor::FlameXformEditor(FlameItem *item, std::function<void(const QSt
         if (!m_updating)
             refresh();
     });
-    connect(m_add, &QPushButton::clicked, this, [this] {
-        if (!m_item)
-            return;
-        Flame f = m_item->flame();
-        f.xforms.push_back(plainXform());
-        QString error;
-        if (!m_item->setFlame(f, 0, &error))
-            m_report(error);
-        else
-            m_which->setCurrentIndex(int(f.xforms.size()) - 1);
-        refresh();
-    });
+    connect(m_add, &QPushButton::clicked, this, [this] { append(plainXform()); });
     connect(m_duplicate, &QPushButton::clicked, this, [this] {
         if (!m_item)
             return;
         Flame f = m_item->flame();
-        const FlameXform *x = xformOf(f);
-        if (!x)
-            return;
-        const FlameXform copy = *x;
-        f.xforms.push_back(copy);
-        f.xforms.back().xaos.clear();
-        QString error;
-        if (!m_item->setFlame(f, 0, &error))
-            m_report(error);
-        else
-            m_which->setCurrentIndex(int(f.xforms.size()) - 1);
-        refresh();
+        if (const FlameXform *x = xformOf(f)) {
+            FlameXform copy = *x;
+            copy.xaos.clear();
+            append(copy);
+        }
     });
     connect(m_delete, &QPushButton::clicked, this, [this] {
         if (!m_item)
@@ -231,32 +214,29 @@ FlameXformEditor::FlameXformEditor(FlameItem *item, std::function<void(const QSt
 
 QWidget *FlameXformEditor::editor(const QString &name) const
 {
-    if (name == QLatin1String("xform"))
-        return m_which;
-    if (name == QLatin1String("add"))
-        return m_add;
-    if (name == QLatin1String("duplicate"))
-        return m_duplicate;
-    if (name == QLatin1String("delete"))
-        return m_delete;
-    if (name == QLatin1String("weight"))
-        return m_weight;
-    if (name == QLatin1String("color"))
-        return m_colour;
-    if (name == QLatin1String("color_speed"))
-        return m_speed;
-    if (name == QLatin1String("opacity"))
-        return m_opacity;
-    if (name == QLatin1String("variations"))
-        return m_variations;
-    if (name == QLatin1String("add_variation"))
-        return m_addVariation;
-    if (name == QLatin1String("parameters"))
-        return m_parameters;
-    return nullptr;
+    const QHash<QString, QWidget *> editors{
+        {"xform", m_which},         {"add", m_add},         {"duplicate", m_duplicate},
+        {"delete", m_delete},       {"weight", m_weight},   {"color", m_colour},
+        {"color_speed", m_speed},   {"opacity", m_opacity}, {"variations", m_variations},
+        {"add_variation", m_addVariation}, {"parameters", m_parameters}};
+    return editors.value(name);
 }
 
 int FlameXformEditor::current() const { return std::max(0, m_which->currentIndex()); }
+
+void FlameXformEditor::append(const FlameXform &x)
+{
+    if (!m_item)
+        return;
+    Flame f = m_item->flame();
+    f.xforms.push_back(x);
+    QString error;
+    if (!m_item->setFlame(f, 0, &error))
+        m_report(error);
+    else
+        m_which->setCurrentIndex(int(f.xforms.size()) - 1);
+    refresh();
+}
 
 FlameXform *FlameXformEditor::xformOf(Flame &f) const
 {

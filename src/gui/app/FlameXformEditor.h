@@ -42,6 +42,8 @@ private:
     // Applies `change` to a copy of the flame's current xform (and the flame), as one undo step.
     bool edit(const std::function<void(flame::Flame &, flame::FlameXform &)> &change);
     flame::FlameXform *xformOf(flame::Flame &f) const;
+    // Appends an xform (one undo step) and shows it.
+    void append(const flame::FlameXform &x);
 
     QPointer<FlameItem> m_item;
     std::function<void(const QString &)> m_report;
