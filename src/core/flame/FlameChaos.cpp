@@ -483,7 +483,8 @@ FlameStats accumulateFlame(const FlameRaster &job, DensityImage &out,
 }
 
 FlameStats accumulateFlameColours(const FlameRaster &job, FlameHistogram &out,
-                                  const IterationControl &control)
+                                  const IterationControl &control,
+                                  std::vector<FlameHistogram> *kept)
 {
     const Flame *flame = job.flame;
     std::array<std::array<double, 3>, 256> dmap{};
@@ -494,7 +495,9 @@ FlameStats accumulateFlameColours(const FlameRaster &job, FlameHistogram &out,
     const bool linear = flame && flame->paletteMode == PaletteMode::Linear;
     const int threads = std::clamp(job.threads, 1, kChaosStreams);
     const std::size_t cells = std::size_t(job.frame.cellsX()) * std::size_t(job.frame.cellsY());
-    std::vector<FlameHistogram> parts(static_cast<std::size_t>(threads - 1));
+    std::vector<FlameHistogram> own;
+    std::vector<FlameHistogram> &parts = kept ? *kept : own;
+    parts.resize(static_cast<std::size_t>(threads - 1));
     out.width = job.frame.cellsX();
     out.height = job.frame.cellsY();
     const FlameStats stats = playStreams(job, control, [&](int t) {

@@ -73,8 +73,11 @@ struct FlameHistogram {
 
 // Accumulates the flame into `out` (resized to the frame's cells and cleared; frame.supersample
 // 1: job.frame's width and height are the cells). Throws InputError as accumulateFlame.
+// `parts` (when given) holds the other threads' histograms and keeps their memory for the
+// next call (a window's renders of one size: no allocation, no page faults each time).
 FlameStats accumulateFlameColours(const FlameRaster &job, FlameHistogram &out,
-                                  const IterationControl &control = {});
+                                  const IterationControl &control = {},
+                                  std::vector<FlameHistogram> *parts = nullptr);
 
 // The top Lyapunov exponent of the flame's chaos game along one orbit (Benettin's method): the
 // mean log of how much one step stretches a small displacement, renormalised every step, the

@@ -523,9 +523,22 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
     raster.samples = job.samples;
     raster.seed = job.seed;
     raster.threads = threads;
-    FlameHistogram histogram;
+    // The buffers of the last picture on this thread, reused when they are not huge (a window
+    // renders many pictures of one size; an export's gigabytes are given back).
+    struct Workspace {
+        FlameHistogram histogram;
+        std::vector<FlameHistogram> parts;
+        std::vector<Cell> acc, across;
+    };
+    static thread_local Workspace kept;
+    Workspace fresh;
+    const bool keep = bytes(threads) <= kKeptFlameBytes;
+    Workspace &w = keep ? kept : fresh;
+    if (!keep)
+        kept = Workspace{};
+    FlameHistogram &histogram = w.histogram;
     FlameImage out;
-    out.stats = accumulateFlameColours(raster, histogram, control);
+    out.stats = accumulateFlameColours(raster, histogram, control, &w.parts);
     if (out.stats.cancelled)
         return out;
 
@@ -535,12 +548,12 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
     const double sampleDensity = std::max<double>(1.0, double(job.samples)) / (double(W) * H);
     const double k1 = f.brightness * 255.0 * 268.0 / 256.0;
     const double k2 = double(ss) * ss / (area * 255.0 * sampleDensity);
-    std::vector<Cell> acc(histogram.cells.size(), Cell{0, 0, 0, 0});
+    std::vector<Cell> &acc = w.acc;
+    acc.assign(histogram.cells.size(), Cell{0, 0, 0, 0});
     if (estimator)
         estimate(histogram, acc, de, f.estimatorCurve, ss, k1, k2, threads);
     else
         logScale(histogram, acc, k1, k2, threads);
-    histogram.cells = {};
     if (control.cancel && control.cancel->load()) {
         out.stats.cancelled = true;
         return out;
@@ -564,7 +577,8 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
     }
     const int rows = int(cellsY);
     const std::size_t stride = std::size_t(cellsX);
-    std::vector<Cell> across(std::size_t(rows) * std::size_t(W), Cell{0, 0, 0, 0});
+    std::vector<Cell> &across = w.across;
+    across.assign(std::size_t(rows) * std::size_t(W), Cell{0, 0, 0, 0});
     onThreads(threads, [&](int t) {
         for (int y = t; y < rows; y += threads)
             for (int i = 0; i < W; ++i) {
@@ -578,7 +592,6 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
                 across[std::size_t(y) * std::size_t(W) + std::size_t(i)] = s;
             }
     });
-    acc = {};
     const double g = 1.0 / f.gamma;
     const double vibrancy = f.vibrancy;
     const double background[3] = {f.background.r * 256.0, f.background.g * 256.0,

@@ -72,6 +72,8 @@ struct FlameImage {
 // The most bytes the histograms of one picture may take (the threads' and the accumulator):
 // a picture that needs more draws on fewer threads, then is refused (InputError).
 inline constexpr double kMaxFlameHistogramBytes = 1.0 * (1 << 30);
+// Below this, a thread keeps the buffers of its last picture for the next one.
+inline constexpr double kKeptFlameBytes = 256.0 * (1 << 20);
 
 // flam3's picture of job.flame (above). Throws InputError (checkFlame, the filters, the frame,
 // the memory); returns with stats.cancelled (and no pixels) when control.cancel is set.
