@@ -207,14 +207,17 @@ struct ColourSink {
         slot = {k, opacity * rgb[0], opacity * rgb[1], opacity * rgb[2], opacity * 255.0};
     }
     // flam3's bump_no_overflow on an unsigned sum: dest = (unsigned)(dest + delta), held at
-    // UINT_MAX.
+    // UINT_MAX -- and at 0 (a negative opacity, which flam3 would convert undefined).
     static void bump(std::uint32_t &dest, double delta)
     {
         constexpr std::uint32_t top = std::numeric_limits<std::uint32_t>::max();
-        if (double(top - dest) > delta)
-            dest = std::uint32_t(double(dest) + delta);
-        else
+        const double sum = double(dest) + delta;
+        if (!(double(top - dest) > delta))
             dest = top;
+        else if (sum > 0)
+            dest = std::uint32_t(sum);
+        else
+            dest = 0;
     }
     void add(const Hit &h)
     {
