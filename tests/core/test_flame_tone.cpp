@@ -273,6 +273,12 @@ void TestFlameTone::picture()
     job.threads = 1;
     const FlameImage again = renderFlameImage(job);
     QVERIFY(again.argb == one.argb);
+    // A negative opacity (finite, so accepted) subtracts its hits down to an empty cell, never
+    // below (the instrumented build checks the conversion); the picture is still drawn.
+    f.xforms[1].opacity = -1;
+    const FlameImage negative = renderFlameImage(job);
+    QCOMPARE(negative.argb.size(), one.argb.size());
+    QCOMPARE(negative.argb[std::size_t(63 * 64 + 63)], 0xffff0000u);
 }
 
 AWB_TEST_MAIN(TestFlameTone)
