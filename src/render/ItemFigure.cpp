@@ -86,7 +86,7 @@ namespace {
 // (--bounds then exactly, without the figures' padding), with the item's own sample count
 // (a flame's quality) unless --samples is.
 void writeOwnPicture(const DerivedIfs &d, const FigureSpec &spec, const FigureOptions &o,
-                     const QString &outFile)
+                     const FigureMetadata &metadata, const QString &outFile)
 {
     RenderRequest r;
     r.chaos = d.chaos;
@@ -120,9 +120,11 @@ void writeOwnPicture(const DerivedIfs &d, const FigureSpec &spec, const FigureOp
     IterationControl control;
     control.cancel = o.cancel;
     control.progress = o.progress;
-    const QImage image = renderAttractorImage(r, 0, r.samples, nullptr, control);
+    QImage image = renderAttractorImage(r, 0, r.samples, nullptr, control);
     if (image.isNull() || (o.cancel && o.cancel->load()))
         fail(FigureTr::tr("the rendering was cancelled"));
+    // The project inside, as every figure: File > Open of the PNG opens it.
+    addPngText(image, metadata);
     if (!image.save(outFile, "png"))
         fail(FigureTr::tr("cannot write %1").arg(outFile));
 }
@@ -241,7 +243,7 @@ void renderItemFigure(const Project &project, AttractorItem *item, const FigureO
         o.format.isEmpty() ? QFileInfo(outFile).suffix().toLower() : o.format;
     if (d->chaos.picture && spec.tone.mode == Accumulation::Density && !measure
         && format == QLatin1String("png") && o.bits == 8 && !o.rawDensity) {
-        writeOwnPicture(*d, spec, o, outFile);
+        writeOwnPicture(*d, spec, o, itemFigureMetadata(project, *item), outFile);
         return;
     }
     // A game of its own (a flame): its points are handles of its maps, not of the figure.

@@ -187,6 +187,10 @@ void TestFlameTone::everyToneSettingAsFlam3()
         apart += j.tellsApart();
     }
     qInfo("genome-12 under flam3's tone settings:\n  %s", qPrintable(report.join("\n  ")));
+    // The picture carries its project, as every figure: `check` opens the PNG as the project.
+    QByteArray out;
+    QCOMPARE(runProgram(cliPath(), {"check", m_dir.filePath("setting0.ours.png")}, &out), 0);
+    QVERIFY2(out.contains("OK, 1 item"), out.constData());
     QVERIFY2(failed.isEmpty(), qPrintable(failed.join("; ")));
     QVERIFY2(apart >= int(settings.size()) - 1, qPrintable(report.join("; ")));
 }
