@@ -143,6 +143,10 @@ const PropertyTable &Item::itemProperties()
         const auto drawn = [](const Item &i, const StyleSpec &) {
             return i.inherits("awb::AttractorItem");
         };
+        // A flame colours and tones itself (its palette, flam3's gamma under "Tone").
+        const auto mapColoured = [](const Item &i, const StyleSpec &) {
+            return i.inherits("awb::AttractorItem") && !i.inherits("awb::FlameItem");
+        };
         style.checkedOnRead([](const Item &, const StyleSpec &s) { return s.check(); },
                             QStringLiteral("style"));
         style.choice("style.color_by", &StyleSpec::colorBy, StyleSpec::colorByNames(),
@@ -150,13 +154,13 @@ const PropertyTable &Item::itemProperties()
                       QT_TR_NOOP("Single colour")})
             .label(QT_TR_NOOP("Colour"))
             .group(QT_TR_NOOP("Style"))
-            .shownWhen(drawn)
+            .shownWhen(mapColoured)
             .tip(QT_TR_NOOP("The attractor's colours: by the map that made each point, by the "
                             "first symbols of its address, or one colour"));
         style.integer("style.prefix_length", &StyleSpec::prefixLength)
             .label(QT_TR_NOOP("Prefix length"))
             .group(QT_TR_NOOP("Style"))
-            .shownWhen(drawn)
+            .shownWhen(mapColoured)
             .range(1, StyleSpec::maxPrefixLength)
             .tip(QT_TR_NOOP("Colour by address: how many of its first symbols pick the colour"))
             .notAnimated()
@@ -202,7 +206,7 @@ const PropertyTable &Item::itemProperties()
         style.real("style.gamma", &StyleSpec::gamma)
             .label(QT_TR_NOOP("Gamma"))
             .group(QT_TR_NOOP("Style"))
-            .shownWhen(drawn)
+            .shownWhen(mapColoured)
             .range(0.2, 10)
             .tip(QT_TR_NOOP("Gamma of the density tone"))
             .enabledWhen([](const Item &, const StyleSpec &s) {

@@ -245,7 +245,8 @@ void PropertiesWidget::rebuild()
         }
         addParameter(form, info);
         // The palette beside the point size; the plot's state under its source.
-        if (info.key == QLatin1String("style.point_size"))
+        if (info.key == QLatin1String("style.point_size")
+            && !qobject_cast<FlameItem *>(m_item.data()))  // a flame has its own palette
             addPaletteEditor(form);
         if (info.key == QLatin1String("source")
             && qobject_cast<EigenvaluePlotItem *>(m_item.data()))
