@@ -18,7 +18,8 @@
 // Cases: sierpinski-d8, sierpinski-d11 (000 Fig. 11), bspline-d14 (000 Fig. 2), loop-drag-3d
 // (000 Fig. 7, a net point: the start triangle's vertex 9), loop-drag-3d-p5 (net point 5, no
 // vertex of the start), loop-orbit-3d (the camera), cube-drag-100k, cube-orbit-100k,
-// cube-drag-1m, cube-orbit-1m (a Catmull-Clark mesh, issue 31). The goals (issue 28): 2D drags
+// cube-drag-1m, cube-orbit-1m (a Catmull-Clark mesh, issue 31), flame-drag (a corner of a
+// flame's xform triangle, issue 45). The goals (issue 28): 2D drags
 // >= 30 frames/s, lag <= 50 ms, final <= 150 ms (depth 11: 300 ms); 3D >= 20 frames/s, full
 // quality <= 300 ms after the release. No timed test depends on this program.
 
@@ -103,6 +104,11 @@ std::vector<Case> cases()
         {QStringLiteral("cube-orbit-100k"), cube, cubeItem, 5, QStringLiteral("surface"), -1, 3, 0},
         {QStringLiteral("cube-drag-1m"), cube, cubeItem, 7, QStringLiteral("surface"), 6, 3, 0},
         {QStringLiteral("cube-orbit-1m"), cube, cubeItem, 7, QStringLiteral("surface"), -1, 3, 0},
+        // A flame (issue 45): a corner of its first xform's triangle, drawn by flam3's tone
+        // (the density estimator and filters on every frame).
+        {QStringLiteral("flame-drag"), QStringLiteral("flam3-genome-final-xform.awb"),
+         QStringLiteral("flam3-genome 20: julian, pie, rings and a final xform"), 0,
+         QStringLiteral("attractor"), 1, 3, 0},
     };
 }
 
