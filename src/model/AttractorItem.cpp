@@ -153,6 +153,9 @@ const PropertyTable &AttractorItem::attractorProperties()
                       QT_TR_NOOP("Vertex limits"), QT_TR_NOOP("Net points")})
             .label(QT_TR_NOOP("Kind"))
             .group(QT_TR_NOOP("Start set X0"))
+            .shownWhen([](const AttractorItem &item, const StartSetSpec &) {
+                return item.hasStartSet();
+            })
             .tip(QT_TR_NOOP("The set X0 deterministic iteration starts from; drag its vertices "
                             "in the attractor view. Lifted points are points of the lifted "
                             "space of 000 §2; vertex limits, a mesh's vertices' limit "
@@ -315,7 +318,7 @@ const PropertyTable &AttractorItem::attractorProperties()
             })
             // A mesh starts at its vertices' limits: no lifted space to type points of.
             .shownWhen([](const AttractorItem &item, const StartSetSpec &) {
-                return !item.startsAtVertexLimits();
+                return !item.startsAtVertexLimits() && item.hasStartSet();
             });
         start
             .text(

@@ -104,6 +104,9 @@ public:
     virtual bool startsAtVertexLimits() const { return false; }
     // Items whose IFS is built from one control net take the start set kind "net".
     virtual bool startsAtNetPoints() const { return false; }
+    // False for an item whose game starts from points of its own (a flame: random points of
+    // [-1, 1]^2, as flam3's): no start set to edit or to show.
+    virtual bool hasStartSet() const { return true; }
     bool setStartSet(const StartSetSpec &startSet, int gesture = 0);
 
     const AlgorithmSpec &algorithm() const { return m_algorithm; }

@@ -44,6 +44,7 @@ public:
     const PropertyTable &properties() const override { return declaration(); }
 
     int mapCount() const override { return int(m_flame.xforms.size()); }
+    bool hasStartSet() const override { return false; }
 
     // Each xform's pre map as the triangle Apophysis draws (and the final xform's last): the
     // images of (0, 0), (1, 0) and (0, 1), in the picture's orientation (y up). Dragging a
