@@ -3201,19 +3201,19 @@
     </message>
     <message>
         <source>Colour</source>
-        <translation>Barva</translation>
+        <translation type="vanished">Barva</translation>
     </message>
     <message>
         <source>Colour speed</source>
-        <translation>Rychlost barvy</translation>
+        <translation type="vanished">Rychlost barvy</translation>
     </message>
     <message>
         <source>Opacity</source>
-        <translation>Neprůhlednost</translation>
+        <translation type="vanished">Neprůhlednost</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation>%1: %2</translation>
+        <translation type="vanished">%1: %2</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a number</source>

@@ -3198,19 +3198,19 @@
     </message>
     <message>
         <source>Colour</source>
-        <translation>Couleur</translation>
+        <translation type="vanished">Couleur</translation>
     </message>
     <message>
         <source>Colour speed</source>
-        <translation>Vitesse de couleur</translation>
+        <translation type="vanished">Vitesse de couleur</translation>
     </message>
     <message>
         <source>Opacity</source>
-        <translation>Opacité</translation>
+        <translation type="vanished">Opacité</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation>%1 : %2</translation>
+        <translation type="vanished">%1 : %2</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a number</source>

@@ -3195,19 +3195,19 @@
     </message>
     <message>
         <source>Colour</source>
-        <translation>颜色</translation>
+        <translation type="vanished">颜色</translation>
     </message>
     <message>
         <source>Colour speed</source>
-        <translation>颜色速度</translation>
+        <translation type="vanished">颜色速度</translation>
     </message>
     <message>
         <source>Opacity</source>
-        <translation>不透明度</translation>
+        <translation type="vanished">不透明度</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation>%1：%2</translation>
+        <translation type="vanished">%1：%2</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a number</source>

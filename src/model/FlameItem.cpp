@@ -447,8 +447,14 @@ DerivedIfs FlameItem::computeIfs() const
     out.A.unavailable = QString();
     out.S.unavailable = tr("a flame has no subdivision matrices: its maps are not affine");
     auto shared = std::make_shared<const Flame>(m_flame);
-    out.chaos.run = [shared](const ChaosJob &job, DensityImage &image,
-                             const IterationControl &control) {
+    const auto statsOf = [](const flame::FlameStats &s) {
+        IterationStats stats;
+        stats.images = s.samples;
+        stats.cancelled = s.cancelled;
+        return stats;
+    };
+    out.chaos.run = [shared, statsOf](const ChaosJob &job, DensityImage &image,
+                                      const IterationControl &control) {
         flame::FlameRaster r;
         r.flame = shared.get();
         r.frame = job.frame;
@@ -456,14 +462,11 @@ DerivedIfs FlameItem::computeIfs() const
         r.samples = job.samples;
         r.seed = job.seed;
         r.threads = job.threads;
-        const flame::FlameStats s = flame::accumulateFlame(r, image, control);
-        IterationStats stats;
-        stats.images = s.samples;
-        stats.cancelled = s.cancelled;
-        return stats;
+        return statsOf(flame::accumulateFlame(r, image, control));
     };
-    out.chaos.picture = [shared](const ChaosJob &job, std::vector<std::uint32_t> &pixels,
-                                 const IterationControl &control) {
+    out.chaos.picture = [shared, statsOf](const ChaosJob &job,
+                                          std::vector<std::uint32_t> &pixels,
+                                          const IterationControl &control) {
         flame::FlameImageJob r;
         r.flame = shared.get();
         r.frame = job.frame;
@@ -472,10 +475,7 @@ DerivedIfs FlameItem::computeIfs() const
         r.threads = job.threads;
         flame::FlameImage image = flame::renderFlameImage(r, control);
         pixels = std::move(image.argb);
-        IterationStats stats;
-        stats.images = image.stats.samples;
-        stats.cancelled = image.stats.cancelled;
-        return stats;
+        return statsOf(image.stats);
     };
     out.chaos.colours = flame::flamePaletteRgb(m_flame);
     // 20 000 steps: a few milliseconds, about 1 % of the exponent (one orbit, a fixed seed).

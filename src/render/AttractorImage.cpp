@@ -112,6 +112,15 @@ void checkRenderRequest(const RenderRequest &r)
 
 namespace {
 
+QImage newPicture(const RasterFrame &frame)
+{
+    QImage image(frame.width, frame.height, QImage::Format_ARGB32_Premultiplied);
+    if (image.isNull())
+        throw InputError("not enough memory for a " + std::to_string(frame.width) + "x"
+                         + std::to_string(frame.height) + " picture");
+    return image;
+}
+
 RasterFrame pictureFrame(const RenderRequest &r)
 {
     RasterFrame frame;
@@ -220,10 +229,7 @@ QImage renderAttractorImage(const RenderRequest &r, int depth, std::uint64_t sam
         if (stats.cancelled || (control.cancel && control.cancel->load())
             || pixels.size() != std::size_t(job.frame.width) * std::size_t(job.frame.height))
             return {};
-        QImage image(job.frame.width, job.frame.height, QImage::Format_ARGB32_Premultiplied);
-        if (image.isNull())
-            throw InputError("not enough memory for a " + std::to_string(job.frame.width) + "x"
-                             + std::to_string(job.frame.height) + " picture");
+        QImage image = newPicture(job.frame);
         for (int y = 0; y < job.frame.height; ++y)
             std::memcpy(image.scanLine(y), pixels.data() + std::size_t(y) * std::size_t(job.frame.width),
                         std::size_t(job.frame.width) * 4);
@@ -245,10 +251,7 @@ QImage renderAttractorImage(const RenderRequest &r, int depth, std::uint64_t sam
     if (!accumulatePicture(r, depth, samples, control, density, frame, colours, stats))
         return {};
 
-    QImage image(frame.width, frame.height, QImage::Format_ARGB32_Premultiplied);
-    if (image.isNull())
-        throw InputError("not enough memory for a " + std::to_string(frame.width) + "x"
-                         + std::to_string(frame.height) + " picture");
+    QImage image = newPicture(frame);
     // 32-bit rows are contiguous: the tone mapping writes straight into the image.
     auto *argb = reinterpret_cast<std::uint32_t *>(image.bits());
     toneMapInto(density, frame, r.tone, colours.labelColours, argb);

@@ -314,16 +314,17 @@ SpatialFilter spatialFilter(FilterShape shape, double radius, int supersample)
     if ((width ^ supersample) & 1)
         ++width;
     const double adjust = fw > 0.0 ? support * width / fw : 1.0;
+    // The shape at the cells' centres; flam3's kernel is its product with itself.
+    std::vector<double> f(static_cast<std::size_t>(width));
+    for (int i = 0; i < width; ++i)
+        f[std::size_t(i)] = shapeValue(shape, ((2.0 * i + 1.0) / double(width) - 1.0) * adjust);
     SpatialFilter out;
     out.width = width;
     out.coefs.resize(std::size_t(width) * std::size_t(width));
     for (int i = 0; i < width; ++i)
-        for (int j = 0; j < width; ++j) {
-            const double ii = ((2.0 * i + 1.0) / double(width) - 1.0) * adjust;
-            const double jj = ((2.0 * j + 1.0) / double(width) - 1.0) * adjust;
+        for (int j = 0; j < width; ++j)
             out.coefs[std::size_t(i) + std::size_t(j) * std::size_t(width)] =
-                shapeValue(shape, ii) * shapeValue(shape, jj);
-        }
+                f[std::size_t(i)] * f[std::size_t(j)];
     double sum = 0;
     for (double c : out.coefs)
         sum += c;
@@ -336,6 +337,12 @@ SpatialFilter spatialFilter(FilterShape shape, double radius, int supersample)
                                        streamedNumber(radius)));
     for (double &c : out.coefs)
         c /= sum;
+    double rowSum = 0;
+    for (double v : f)
+        rowSum += v;
+    out.row = std::move(f);
+    for (double &v : out.row)
+        v /= rowSum;
     return out;
 }
 
@@ -562,19 +569,7 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
     // The spatial filter (separable: flam3's kernel is the product of one row by itself,
     // normalised) at the pixels' cells, then the tone of each pixel (earlyclip off).
     const int fw = filter.width;
-    std::vector<double> k1d(std::size_t(fw), 0.0);
-    // The row weights straight from the shape (the kernel's diagonal is the square of them).
-    {
-        const double support = kSupport[std::size_t(f.filterShape)];
-        const double fwd = 2.0 * support * ss * f.filter;
-        const double adjust = fwd > 0.0 ? support * fw / fwd : 1.0;
-        double s = 0;
-        for (int i = 0; i < fw; ++i)
-            s += (k1d[std::size_t(i)] =
-                      shapeValue(f.filterShape, ((2.0 * i + 1.0) / double(fw) - 1.0) * adjust));
-        for (double &v : k1d)
-            v /= s;
-    }
+    const std::vector<double> &k1d = filter.row;
     const int rows = int(cellsY);
     const std::size_t stride = std::size_t(cellsX);
     std::vector<Cell> &across = w.across;

@@ -30,6 +30,9 @@ inline constexpr int kMaxFilterWidth = 1025;
 struct SpatialFilter {
     int width = 1;
     std::vector<double> coefs;  // coefs[i + j * width]
+    // The kernel is row x row (flam3's is the shape's product with itself, normalised): the
+    // picture filters the rows, then the columns, with it.
+    std::vector<double> row;
 };
 SpatialFilter spatialFilter(FilterShape shape, double radius, int supersample);
 

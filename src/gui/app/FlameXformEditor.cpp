@@ -137,15 +137,8 @@ FlameXformEditor::FlameXformEditor(FlameItem *item, std::function<void(const QSt
                 if (std::size_t(i) < x.xaos.size())
                     x.xaos.erase(x.xaos.begin() + i);
         }
-        QString error;
-        if (!m_item->setFlame(f, 0, &error))
-            m_report(error);
-        refresh();
+        commit(f);
     });
-    for (auto [box, label] : {std::pair{m_weight, tr("Weight")}, {m_colour, tr("Colour")},
-                              {m_speed, tr("Colour speed")}, {m_opacity, tr("Opacity")}})
-        static_cast<ExactSpinBox *>(box)->setRefusal(
-            [this, label = label](const QString &why) { m_report(tr("%1: %2").arg(label, why)); });
     auto field = [this](QDoubleSpinBox *box, double FlameXform::*member) {
         connect(box, &QDoubleSpinBox::valueChanged, this, [this, member](double v) {
             if (!m_updating)
@@ -230,12 +223,20 @@ void FlameXformEditor::append(const FlameXform &x)
         return;
     Flame f = m_item->flame();
     f.xforms.push_back(x);
-    QString error;
-    if (!m_item->setFlame(f, 0, &error))
-        m_report(error);
-    else
+    if (commit(f))
         m_which->setCurrentIndex(int(f.xforms.size()) - 1);
+}
+
+bool FlameXformEditor::commit(const Flame &f)
+{
+    // One undo step; the item's flameChanged brings the editors up to date. A refusal is
+    // reported and the editors show the model again.
+    QString error;
+    if (m_item->setFlame(f, 0, &error))
+        return true;
+    m_report(error);
     refresh();
+    return false;
 }
 
 FlameXform *FlameXformEditor::xformOf(Flame &f) const
@@ -255,14 +256,7 @@ bool FlameXformEditor::edit(const std::function<void(Flame &, FlameXform &)> &ch
     if (!x)
         return false;
     change(f, *x);
-    if (f == m_item->flame())
-        return true;
-    QString error;
-    const bool ok = m_item->setFlame(f, 0, &error);
-    if (!ok)
-        m_report(error);
-    refresh();
-    return ok;
+    return f == m_item->flame() || commit(f);
 }
 
 void FlameXformEditor::refresh()

@@ -44,6 +44,8 @@ private:
     flame::FlameXform *xformOf(flame::Flame &f) const;
     // Appends an xform (one undo step) and shows it.
     void append(const flame::FlameXform &x);
+    // Sets the item's flame (one undo step); false, reported, when refused.
+    bool commit(const flame::Flame &f);
 
     QPointer<FlameItem> m_item;
     std::function<void(const QString &)> m_report;
