@@ -2,6 +2,7 @@
 // Catmull-Clark and Loop with OpenSubdiv's rules (VTX_BOUNDARY_EDGE_ONLY), limit positions,
 // and the eigenvalues of the local subdivision matrix against their closed forms.
 
+#include "core/BigAllocator.h"
 #include "core/mesh/Mesh.h"
 #include "core/mesh/MeshExamples.h"
 #include "core/mesh/MeshRefine.h"
@@ -49,6 +50,7 @@ private slots:
     void characteristicMapWindsOnce();
     void characteristicMapIsKeptForDrawing();
     void badMeshesAreRefusedByName();
+    void flatRelationsKeepTheRows();
 };
 
 void TestMesh::cubeAfterOneCatmullClarkStep()
@@ -348,4 +350,55 @@ void TestMesh::badMeshesAreRefusedByName()
 }
 
 AWB_TEST_MAIN(TestMesh)
+// The mesh room's flat relations (IndexRows, StencilTable) and the allocator of their large
+// arrays: the rows read back as given, a large block is whole and, mapped, on 2 MB boundaries.
+void TestMesh::flatRelationsKeepTheRows()
+{
+    const std::vector<std::vector<int>> rows{{0, 1, 2}, {}, {3, 4, 5, 6}, {7}};
+    const IndexRows flat(rows);
+    QCOMPARE(flat.size(), rows.size());
+    QCOMPARE(flat.toVectors(), rows);
+    QCOMPARE(int(flat[2].size()), 4);
+    QCOMPARE(flat[2][3], 6);
+    std::size_t visited = 0;
+    for (const auto row : flat)
+        visited += row.size();
+    QCOMPARE(visited, std::size_t(8));
+    IndexRows faces = IndexRows::shapedLike(flat, -1);
+    QCOMPARE(faces.starts(), flat.starts());
+    QCOMPARE(faces[3][0], -1);
+
+    StencilTable table;
+    table.push_back({{0, 0.5}, {1, 0.5}});
+    table.push_back({{2, 1.0}});
+    table.push_back({{0, 0.25}, {1, 0.25}, {2, 0.5}});
+    QCOMPARE(table.size(), std::size_t(3));
+    QCOMPARE(table.entryCount(), std::size_t(6));
+    const Mat data = (Mat(3, 1) << 1.0, 3.0, 8.0).finished();
+    const Mat applied = applyStencils(table, data);
+    QCOMPARE(applied(0, 0), 2.0);
+    QCOMPARE(applied(1, 0), 8.0);
+    QCOMPARE(applied(2, 0), 5.0);
+    // Stencil 0 over the table itself: (s0 + s1) / 2 = p0 / 4 + p1 / 4 + p2 / 2.
+    const MeshStencil composed = composeStencils(table[0], table);
+    QCOMPARE(composed, (MeshStencil{{0, 0.25}, {1, 0.25}, {2, 0.5}}));
+    table.truncate(1);
+    QCOMPARE(table.size(), std::size_t(1));
+    QCOMPARE(table.entryCount(), std::size_t(2));
+
+    // 24 MB: past the threshold of the mapped blocks; every element kept through a growth.
+    BigVector<int> big(6 << 20);
+    for (std::size_t i = 0; i < big.size(); ++i)
+        big[i] = int(i);
+    big.push_back(-1);
+    long long sum = 0;
+    for (std::size_t i = 0; i + 1 < big.size(); ++i)
+        sum += big[i] == int(i) ? 1 : 0;
+    QCOMPARE(sum, (long long)(6 << 20));
+#if defined(__linux__) && !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+    QCOMPARE(reinterpret_cast<std::uintptr_t>(big.data()) % (std::uintptr_t(2) << 20),
+             std::uintptr_t(0));
+#endif
+}
+
 #include "test_mesh.moc"

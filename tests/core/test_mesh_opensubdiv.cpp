@@ -84,9 +84,10 @@ Mat openSubdivSurface(const Mesh &m, const std::vector<int> &faces,
 RowVec piecePoint(const MeshPieces &pieces, const MeshPieceRoot &root, const Mat &level, double u,
                   double v)
 {
-    Mat net(Eigen::Index(root.net.size()), 3);
-    for (std::size_t i = 0; i < root.net.size(); ++i)
-        net.row(Eigen::Index(i)) = level.row(root.net[i]);
+    const auto rootNet = pieces.net(root);
+    Mat net(Eigen::Index(rootNet.size()), 3);
+    for (std::size_t i = 0; i < rootNet.size(); ++i)
+        net.row(Eigen::Index(i)) = level.row(rootNet[i]);
     int type = root.type;
     for (int step = 0; step < 40; ++step) {
         const int j = u < 0.5 ? (v < 0.5 ? 0 : 3) : (v < 0.5 ? 1 : 2);

@@ -68,9 +68,8 @@ MeshScheme suggestedScheme(const Mesh &mesh)
     return triangles ? MeshScheme::Loop : MeshScheme::CatmullClark;
 }
 
-MeshTopology::MeshTopology(int vertexCount, std::vector<std::vector<int>> faces)
-    : m_faces(std::move(faces)), m_faceEdges(m_faces.size()),
-      m_rings(std::size_t(std::max(vertexCount, 0)))
+MeshTopology::MeshTopology(int vertexCount, IndexRows faces)
+    : m_faces(std::move(faces)), m_ringBoundary(std::size_t(std::max(vertexCount, 0)), 0)
 {
     if (vertexCount <= 0)
         throw InputError(coreTranslate("awb::mesh", "the mesh has no vertices"));
@@ -79,7 +78,7 @@ MeshTopology::MeshTopology(int vertexCount, std::vector<std::vector<int>> faces)
     Problems problems;
     std::size_t halfEdges = 0;
     for (std::size_t f = 0; f < m_faces.size(); ++f) {
-        const auto &loop = m_faces[f];
+        const auto loop = m_faces[f];
         halfEdges += loop.size();
         if (loop.size() < 3)
             problems.add(formatMessage(
@@ -103,7 +102,7 @@ MeshTopology::MeshTopology(int vertexCount, std::vector<std::vector<int>> faces)
                     if (loop[i] == loop[j] && (twice < 0 || loop[i] < twice))
                         twice = loop[i];
         } else {
-            std::vector<int> sorted = loop;
+            std::vector<int> sorted(loop.begin(), loop.end());
             std::sort(sorted.begin(), sorted.end());
             if (auto it = std::adjacent_find(sorted.begin(), sorted.end()); it != sorted.end())
                 twice = *it;
@@ -118,12 +117,12 @@ MeshTopology::MeshTopology(int vertexCount, std::vector<std::vector<int>> faces)
     // half-edges, no hash of edges. For each half-edge a -> b: the first a -> b, the first
     // b -> a (its twin, or -1), and the edges of three or more faces, named once, by their
     // first half-edge.
-    const std::size_t nf = m_faces.size(), nv = m_rings.size();
+    const std::size_t nf = m_faces.size(), nv = m_ringBoundary.size();
     const MeshHalfEdges half(int(nv), m_faces);
-    const std::vector<int> &first = half.first, &halfFace = half.face, &halfFrom = half.from,
+    const BigVector<int> &first = half.first, &halfFace = half.face, &halfFrom = half.from,
                            &halfTo = half.to, &outStart = half.outStart, &outHalf = half.out;
     MeshHalfEdges::Pairing pairing = half.pairing();
-    const std::vector<int> &earliest = pairing.same, &twin = pairing.opposite;
+    const BigVector<int> &earliest = pairing.same, &twin = pairing.opposite;
     std::vector<std::pair<std::pair<int, int>, std::vector<int>>> nonManifold;
     {
         std::vector<std::pair<int, int>> crowded;  // (the edge's first half-edge, a face on it)
@@ -162,11 +161,12 @@ MeshTopology::MeshTopology(int vertexCount, std::vector<std::vector<int>> faces)
                 halfFrom[std::size_t(h)], halfTo[std::size_t(h)]));
     problems.raise();
     // Edges, numbered in the order the faces first name them.
-    std::vector<int> edgeOfHalf(halfEdges, -1);
+    BigVector<int> edgeOfHalf(halfEdges, -1);
     m_edges.reserve(halfEdges / 2 + 1);
+    m_faceEdges = IndexRows::shapedLike(m_faces, -1);
     for (std::size_t f = 0; f < nf; ++f) {
-        const auto &loop = m_faces[f];
-        m_faceEdges[f].resize(loop.size());
+        const auto loop = m_faces[f];
+        const auto faceEdges = m_faceEdges.row(f);
         for (std::size_t k = 0; k < loop.size(); ++k) {
             const int h = first[f] + int(k), t = twin[std::size_t(h)];
             int e;
@@ -182,47 +182,51 @@ MeshTopology::MeshTopology(int vertexCount, std::vector<std::vector<int>> faces)
                 m_edges.push_back(edge);
             }
             edgeOfHalf[std::size_t(h)] = e;
-            m_faceEdges[f][k] = e;
+            faceEdges[k] = e;
         }
     }
     // The ring of each vertex, counter-clockwise: in a face ... a -> v -> b ..., the face lies
     // between edge (v, b) and edge (v, a) turning counter-clockwise; the next face is the one
     // with the half-edge v -> a, the twin of a -> v.
     const auto previous = [&](int h) { return half.previous(h); };
+    m_ringEdges.reserve(nv, halfEdges + nv);
+    m_ringFaces.reserve(nv, halfEdges);
+    std::vector<int> ringEdges, ringFaces;
     for (std::size_t v = 0; v < nv; ++v) {
         const int begin = outStart[v], end = outStart[v + 1];
-        if (begin == end)
-            continue;
-        Ring &ring = m_rings[v];
-        // Start at a boundary half-edge v -> b (no b -> v) when there is one.
-        int start = outHalf[std::size_t(begin)];
-        for (int i = begin; i < end; ++i)
-            if (twin[std::size_t(outHalf[std::size_t(i)])] < 0) {
-                start = outHalf[std::size_t(i)];
-                ring.boundary = true;
-                break;
+        ringEdges.clear();
+        ringFaces.clear();
+        if (begin < end) {
+            // Start at a boundary half-edge v -> b (no b -> v) when there is one.
+            int start = outHalf[std::size_t(begin)];
+            for (int i = begin; i < end; ++i)
+                if (twin[std::size_t(outHalf[std::size_t(i)])] < 0) {
+                    start = outHalf[std::size_t(i)];
+                    m_ringBoundary[v] = 1;
+                    break;
+                }
+            int at = start;
+            for (;;) {
+                ringEdges.push_back(edgeOfHalf[std::size_t(at)]);
+                ringFaces.push_back(halfFace[std::size_t(at)]);
+                const int back = previous(at);
+                const int next = twin[std::size_t(back)];
+                if (next < 0) {  // edge (v, a) is on the boundary: the fan ends
+                    ringEdges.push_back(edgeOfHalf[std::size_t(back)]);
+                    break;
+                }
+                at = next;
+                if (at == start)
+                    break;
             }
-        ring.edges.reserve(std::size_t(end - begin + 1));
-        ring.faces.reserve(std::size_t(end - begin));
-        int at = start;
-        for (;;) {
-            ring.edges.push_back(edgeOfHalf[std::size_t(at)]);
-            ring.faces.push_back(halfFace[std::size_t(at)]);
-            const int back = previous(at);
-            const int next = twin[std::size_t(back)];
-            if (next < 0) {  // edge (v, a) is on the boundary: the fan ends
-                ring.edges.push_back(edgeOfHalf[std::size_t(back)]);
-                break;
-            }
-            at = next;
-            if (at == start)
-                break;
+            if (int(ringFaces.size()) != end - begin)
+                problems.add(formatMessage(
+                    coreTranslate("awb::mesh", "vertex %1 is non-manifold: its %2 faces do not "
+                                               "form one fan around it"),
+                    v, end - begin));
         }
-        if (int(ring.faces.size()) != end - begin)
-            problems.add(formatMessage(
-                coreTranslate("awb::mesh", "vertex %1 is non-manifold: its %2 faces do not form "
-                                           "one fan around it"),
-                v, end - begin));
+        m_ringEdges.push_back(ringEdges);
+        m_ringFaces.push_back(ringFaces);
     }
     problems.raise();
 }
@@ -253,7 +257,7 @@ std::vector<int> MeshTopology::extraordinaryVertices(MeshScheme scheme) const
 
 std::vector<float> MeshTopology::ringSharpness(int v) const
 {
-    const auto &edges = ring(v).edges;
+    const auto edges = ring(v).edges;
     std::vector<float> out(edges.size());
     for (std::size_t k = 0; k < edges.size(); ++k)
         out[k] = edgeSharpness(edges[k]);
@@ -291,9 +295,9 @@ void MeshTopology::applySharpness(const MeshSharpness &s)
             anyEdge = true;
             m_edgeSharpness[std::size_t(e)] = std::max(m_edgeSharpness[std::size_t(e)], value);
         }
-    for (std::size_t v = 0; v < s.vertices.size() && v < m_rings.size(); ++v)
+    for (std::size_t v = 0; v < s.vertices.size() && v < m_ringBoundary.size(); ++v)
         if (crease::isSharp(s.vertices[v])) {
-            m_vertexSharpness.resize(m_rings.size(), kSharpnessSmooth);
+            m_vertexSharpness.resize(m_ringBoundary.size(), kSharpnessSmooth);
             m_vertexSharpness[v] = s.vertices[v];
         }
     for (std::size_t f = 0; f < s.holes.size() && f < m_faces.size(); ++f)
@@ -332,7 +336,7 @@ void applyTags(MeshTopology &t, const Mesh &mesh)
         else
             for (int f : t.edge(e).face)
                 if (f >= 0) {
-                    const auto &edges = t.faceEdges(f);
+                    const auto edges = t.faceEdges(f);
                     const auto k = std::size_t(std::find(edges.begin(), edges.end(), e)
                                                - edges.begin());
                     s.faceEdges[std::size_t(f)][k] = tag.sharpness;
@@ -373,13 +377,13 @@ void applyTags(MeshTopology &t, const Mesh &mesh)
     const auto tagged = [&](int e) {
         const auto &edge = t.edge(e);
         const int f = edge.face[0];
-        const auto &edges = t.faceEdges(f);
+        const auto edges = t.faceEdges(f);
         const auto k = std::size_t(std::find(edges.begin(), edges.end(), e) - edges.begin());
         return s.faceEdges.empty() ? kSharpnessSmooth : s.faceEdges[std::size_t(f)][k];
     };
     bool changed = false;
     for (int v = 0; v < t.vertexCount(); ++v) {
-        const auto &ring = t.ring(v);
+        const auto ring = t.ring(v);
         if (!ring.boundary)
             continue;
         if (tags.options.boundary == BoundaryInterpolation::EdgeAndCorner

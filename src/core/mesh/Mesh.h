@@ -13,8 +13,10 @@
 // Qt-free. Doubles throughout.
 
 #include "core/Types.h"
+#include "core/mesh/IndexRows.h"
 #include "core/mesh/MeshTags.h"
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -57,7 +59,11 @@ MeshScheme suggestedScheme(const Mesh &mesh);
 // sheets (MeshSheets.h) first, as OpenSubdiv draws it.
 class MeshTopology {
 public:
-    MeshTopology(int vertexCount, std::vector<std::vector<int>> faces);
+    MeshTopology(int vertexCount, IndexRows faces);
+    MeshTopology(int vertexCount, const std::vector<std::vector<int>> &faces)
+        : MeshTopology(vertexCount, IndexRows(faces))
+    {
+    }
 
     struct Edge {
         int v[2] = {-1, -1};
@@ -68,23 +74,29 @@ public:
     // between edges k and k + 1 (mod the edge count inside). Inside, edges.size() ==
     // faces.size(); on the boundary edges.size() == faces.size() + 1, and edges.front() and
     // edges.back() are the two boundary edges.
+    // (A view into the topology, kept in compressed rows.)
     struct Ring {
-        std::vector<int> edges;
-        std::vector<int> faces;
+        std::span<const int> edges;
+        std::span<const int> faces;
         bool boundary = false;
     };
 
-    int vertexCount() const { return int(m_rings.size()); }
+    int vertexCount() const { return int(m_ringBoundary.size()); }
     int faceCount() const { return int(m_faces.size()); }
     int edgeCount() const { return int(m_edges.size()); }
-    const std::vector<int> &face(int f) const { return m_faces[std::size_t(f)]; }
+    std::span<const int> face(int f) const { return m_faces[std::size_t(f)]; }
+    const IndexRows &faces() const { return m_faces; }
     // Edge k of face f joins its corners k and k + 1.
-    const std::vector<int> &faceEdges(int f) const { return m_faceEdges[std::size_t(f)]; }
+    std::span<const int> faceEdges(int f) const { return m_faceEdges[std::size_t(f)]; }
     const Edge &edge(int e) const { return m_edges[std::size_t(e)]; }
-    const Ring &ring(int v) const { return m_rings[std::size_t(v)]; }
+    Ring ring(int v) const
+    {
+        return {m_ringEdges[std::size_t(v)], m_ringFaces[std::size_t(v)],
+                m_ringBoundary[std::size_t(v)] != 0};
+    }
     // The number of edges at v (0 for a vertex of no face).
-    int valence(int v) const { return int(ring(v).edges.size()); }
-    bool onBoundary(int v) const { return ring(v).boundary; }
+    int valence(int v) const { return int(m_ringEdges[std::size_t(v)].size()); }
+    bool onBoundary(int v) const { return m_ringBoundary[std::size_t(v)] != 0; }
     int otherEnd(int e, int v) const { return edge(e).v[0] == v ? edge(e).v[1] : edge(e).v[0]; }
     // The edge joining a and b, or -1.
     int findEdge(int a, int b) const;
@@ -119,10 +131,11 @@ public:
     void applySharpness(const MeshSharpness &s);
 
 private:
-    std::vector<std::vector<int>> m_faces;
-    std::vector<std::vector<int>> m_faceEdges;
-    std::vector<Edge> m_edges;
-    std::vector<Ring> m_rings;
+    IndexRows m_faces;
+    IndexRows m_faceEdges;  // shaped like m_faces
+    BigVector<Edge> m_edges;
+    IndexRows m_ringEdges, m_ringFaces;  // per vertex
+    std::vector<char> m_ringBoundary;
     MeshOptions m_options;
     std::vector<float> m_edgeSharpness;    // empty: all smooth
     std::vector<float> m_vertexSharpness;  // empty: all smooth

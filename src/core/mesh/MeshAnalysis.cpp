@@ -97,18 +97,20 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
 {
     const Mat level = isolatedPositions(pieces, inputVertices);
     std::map<int, LeftVectors> left;         // by settled type
-    std::map<int, Eigen::Vector3d> outward;  // by vertex of the isolated mesh
+    // By vertex of the isolated mesh: the sum of its faces' corner normals (vertex roots only).
+    std::vector<Eigen::Vector3d> outward(std::size_t(level.rows()), Eigen::Vector3d::Zero());
+    std::vector<char> rooted(std::size_t(level.rows()), 0);
     for (const MeshPieceRoot &root : pieces.roots)
         if (root.vertex >= 0)
-            outward[root.vertex] = Eigen::Vector3d::Zero();
+            rooted[std::size_t(root.vertex)] = 1;
     for (const auto &face : pieces.isolatedFaces)
         for (std::size_t k = 0; k < face.size(); ++k)
-            if (const auto it = outward.find(face[k]); it != outward.end()) {
+            if (rooted[std::size_t(face[k])]) {
                 const Eigen::Vector3d p = level.row(face[k]).transpose();
                 const Eigen::Vector3d a = level.row(face[(k + 1) % face.size()]).transpose();
                 const Eigen::Vector3d b =
                     level.row(face[(k + face.size() - 1) % face.size()]).transpose();
-                it->second += (a - p).cross(b - p);
+                outward[std::size_t(face[k])] += (a - p).cross(b - p);
             }
     std::vector<ExtraordinaryVertex> vertices, faces;
     std::map<int, std::shared_ptr<const AnalysedMatrix>> ringMatrices;   // by valence
@@ -130,9 +132,10 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
         e.valence = type.valence;
         e.boundary = type.boundary;
         // The net of the settled type, and its S.
-        Mat net(Eigen::Index(root.net.size()), 3);
-        for (std::size_t i = 0; i < root.net.size(); ++i)
-            net.row(Eigen::Index(i)) = level.row(root.net[i]);
+        const auto rootNet = pieces.net(root);
+        Mat net(Eigen::Index(rootNet.size()), 3);
+        for (std::size_t i = 0; i < rootNet.size(); ++i)
+            net.row(Eigen::Index(i)) = level.row(rootNet[i]);
         int t = root.type;
         const int settled = settledType(pieces, t);
         while (settled >= 0 && t != settled) {
@@ -153,7 +156,7 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
                     lambda = closedFormSubdominant(pieces.scheme, type.valence);
                 it = left.emplace(settled, leftVectors(type.children[0].S, lambda)).first;
             }
-            limitAndNormal(it->second, net, outward[root.vertex], e);
+            limitAndNormal(it->second, net, outward[std::size_t(root.vertex)], e);
         }
         if (e.smoothInterior() && !ringAnalysable(e.valence)) {
             e.ring = "none";

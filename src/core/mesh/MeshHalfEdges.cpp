@@ -6,29 +6,28 @@
 
 namespace awb {
 
-MeshHalfEdges::MeshHalfEdges(int vertexCount, const std::vector<std::vector<int>> &faces)
+MeshHalfEdges::MeshHalfEdges(int vertexCount, const IndexRows &faces) : first(faces.starts())
 {
-    first.assign(faces.size() + 1, 0);
-    for (std::size_t f = 0; f < faces.size(); ++f)
-        first[f + 1] = first[f] + int(faces[f].size());
     const std::size_t n = std::size_t(first.back());
     from.resize(n);
     to.resize(n);
     face.resize(n);
-    for (std::size_t f = 0; f < faces.size(); ++f)
-        for (std::size_t k = 0; k < faces[f].size(); ++k) {
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        const auto loop = faces[f];
+        for (std::size_t k = 0; k < loop.size(); ++k) {
             const std::size_t h = std::size_t(first[f]) + k;
-            from[h] = faces[f][k];
-            to[h] = faces[f][(k + 1) % faces[f].size()];
+            from[h] = loop[k];
+            to[h] = loop[k + 1 < loop.size() ? k + 1 : 0];
             face[h] = int(f);
         }
+    }
     outStart.assign(std::size_t(vertexCount) + 1, 0);
     for (int v : from)
         ++outStart[std::size_t(v) + 1];
     for (std::size_t v = 0; v < std::size_t(vertexCount); ++v)
         outStart[v + 1] += outStart[v];
     out.resize(n);
-    std::vector<int> fill(outStart.begin(), outStart.end() - 1);
+    BigVector<int> fill(outStart.begin(), outStart.end() - 1);
     for (int h = 0; h < int(n); ++h)
         out[std::size_t(fill[std::size_t(from[std::size_t(h)])]++)] = h;
 }

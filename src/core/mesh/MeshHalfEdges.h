@@ -3,19 +3,25 @@
 // by the topology's checks (Mesh.cpp) and the manifold sheets (MeshSheets.cpp), so that an edge's
 // faces are found one way. Internal to the mesh room. Qt-free.
 
+#include "core/mesh/IndexRows.h"
+
 #include <vector>
 
 namespace awb {
 
 struct MeshHalfEdges {
     // Half-edge h = first[f] + k runs from corner k of face f to corner k + 1.
-    std::vector<int> first;  // per face, its first half-edge; first.back() = the count
-    std::vector<int> from, to, face;
+    BigVector<int> first;  // per face, its first half-edge; first.back() = the count
+    BigVector<int> from, to, face;
     // The half-edges leaving each vertex, in half-edge order (compressed rows).
-    std::vector<int> outStart, out;
+    BigVector<int> outStart, out;
 
     // `faces` must name vertices 0 .. vertexCount - 1 (checked by the caller).
-    MeshHalfEdges(int vertexCount, const std::vector<std::vector<int>> &faces);
+    MeshHalfEdges(int vertexCount, const IndexRows &faces);
+    MeshHalfEdges(int vertexCount, const std::vector<std::vector<int>> &faces)
+        : MeshHalfEdges(vertexCount, IndexRows(faces))
+    {
+    }
     int count() const { return int(from.size()); }
     int corner(int h) const { return h - first[std::size_t(face[std::size_t(h)])]; }
     int next(int h) const;
@@ -28,7 +34,7 @@ struct MeshHalfEdges {
     // otherwise by sorting the half-edges by vertex pair: a vertex of a million faces (a hostile
     // file) costs a sort, not 10^12 steps.
     struct Pairing {
-        std::vector<int> same, opposite, halves;
+        BigVector<int> same, opposite, halves;
     };
     Pairing pairing() const;
 };

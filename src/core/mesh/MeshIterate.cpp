@@ -61,11 +61,12 @@ public:
                           std::vector<double>(std::size_t(3 * m_maxNet), 0.0));
         m_address.assign(std::size_t(depth) + 1, 0);
         double *net = m_nets[0].data();
-        for (std::size_t i = 0; i < root.net.size(); ++i)
+        const auto rootNet = m_pieces.net(root);
+        for (std::size_t i = 0; i < rootNet.size(); ++i)
             for (int k = 0; k < 3; ++k)
-                net[3 * i + std::size_t(k)] = level(root.net[i], k);
+                net[3 * i + std::size_t(k)] = level(rootNet[i], k);
         if (m_start.kind == MeshStart::Kind::Points)
-            liftStart(root.type, level, root.net);
+            liftStart(root.type, level, rootNet);
         descend(root.type, 0, depth);
     }
 
@@ -77,7 +78,7 @@ private:
     // over the net of the type's first piece met breadth first (the root's own net for the
     // root's type, so that depth 0 gives the start set itself). Each type keeps its weights at
     // every depth below: f_w(X0) then stays within |w| diam(net) of the shrinking piece.
-    void liftStart(int rootType, const Mat &level, const std::vector<int> &rootNet)
+    void liftStart(int rootType, const Mat &level, std::span<const int> rootNet)
     {
         m_weights.assign(m_pieces.types.size(), Mat());
         Mat net(Eigen::Index(rootNet.size()), 3);

@@ -27,7 +27,7 @@ struct Seed {
     int start = 0;
 };
 
-int cornerOf(const std::vector<int> &loop, int v)
+int cornerOf(std::span<const int> loop, int v)
 {
     return int(std::find(loop.begin(), loop.end(), v) - loop.begin());
 }
@@ -90,9 +90,15 @@ struct WalkMarks {
 
 // Without `faces`, only the net and the key (enough to find a known type; a mesh of a million
 // faces has as many pieces and a few types): no list per face.
-Walk walk(const MeshTopology &t, const Seed &seed, bool faces = true)
+// Into w (its vectors reused: a million walks, a few allocations).
+void walk(const MeshTopology &t, const Seed &seed, bool faces, Walk &w)
 {
-    Walk w;
+    w.order.clear();
+    w.faces.clear();
+    w.coreCount = 0;
+    w.key.clear();
+    w.sharpness = {};
+    w.semiSharp = false;
     thread_local WalkMarks marks;
     marks.begin(t);
     const auto add = [&](int x) {
@@ -106,7 +112,7 @@ Walk walk(const MeshTopology &t, const Seed &seed, bool faces = true)
     const bool sharp = t.hasSharpness(), holes = t.hasHoles();
     const auto addFace = [&](int g, int corner) {
         marks.faceStamp[std::size_t(g)] = marks.stamp;
-        const auto &loop = t.face(g);
+        const auto loop = t.face(g);
         const int m = int(loop.size());
         w.key.push_back(m);
         for (int i = 0; i < m; ++i)
@@ -130,7 +136,7 @@ Walk walk(const MeshTopology &t, const Seed &seed, bool faces = true)
     };
     w.key.push_back(seed.vertex ? 1 : 0);
     if (seed.vertex) {
-        const auto &ring = t.ring(seed.id);
+        const auto ring = t.ring(seed.id);
         const int F = int(ring.faces.size());
         int s = 0;
         if (!ring.boundary)
@@ -148,7 +154,7 @@ Walk walk(const MeshTopology &t, const Seed &seed, bool faces = true)
     w.coreCount = int(w.order.size());
     for (int c = 0; c < w.coreCount; ++c) {
         const int u = w.order[std::size_t(c)];
-        const auto &ring = t.ring(u);
+        const auto ring = t.ring(u);
         const int F = int(ring.faces.size());
         int s = 0;
         if (!ring.boundary) {
@@ -179,6 +185,12 @@ Walk walk(const MeshTopology &t, const Seed &seed, bool faces = true)
             w.semiSharp = w.semiSharp || crease::isSemiSharp(w.sharpness.vertices.back());
         }
     }
+}
+
+Walk walk(const MeshTopology &t, const Seed &seed)
+{
+    Walk w;
+    walk(t, seed, true, w);
     return w;
 }
 
@@ -257,7 +269,7 @@ bool irregular(const MeshTopology &t, int v, MeshScheme scheme)
     const int n = t.valence(v), inner = regularValence(scheme);
     if (n == 0)
         return false;
-    const auto &ring = t.ring(v);
+    const auto ring = t.ring(v);
     if (!t.hasSharpness())
         return n != (ring.boundary ? inner / 2 + 1 : inner);
     if (ring.boundary && ring.faces.size() == 1)  // regular only as an infinitely sharp corner
@@ -283,7 +295,7 @@ bool irregular(const MeshTopology &t, int v, MeshScheme scheme)
 bool isolated(const MeshTopology &t, MeshScheme scheme)
 {
     for (int f = 0; f < t.faceCount(); ++f) {
-        const auto &loop = t.face(f);
+        const auto loop = t.face(f);
         if (scheme == MeshScheme::CatmullClark && loop.size() != 4)
             return false;
         int count = 0;
@@ -302,12 +314,13 @@ public:
     // The type of the piece `seed` of `t` (new types are completed by run()); *net its net.
     int typeOf(const MeshTopology &t, const Seed &seed, std::vector<int> *net)
     {
-        Walk w = walk(t, seed, false);
-        if (const auto it = m_byKey.find(w.key); it != m_byKey.end()) {
-            *net = std::move(w.order);
+        thread_local Walk known;
+        walk(t, seed, false, known);
+        if (const auto it = m_byKey.find(known.key); it != m_byKey.end()) {
+            net->assign(known.order.begin(), known.order.end());
             return it->second;
         }
-        w = walk(t, seed);
+        Walk w = walk(t, seed);
         *net = w.order;
         if (int(types.size()) >= kMaxTypes)
             throw InputError(formatMessage(
@@ -381,14 +394,14 @@ private:
         const int coreCount = int(types[std::size_t(p.type)].corners.size());
         const Split s0 = splitFans(m, p.faces);
         const MeshTopology t = splitTopology(s0, p.sharpness);
-        const std::vector<MeshStencil> limit = limitStencils(t, m_scheme);
+        const StencilTable limit = limitStencils(t, m_scheme);
         Mat limits = Mat::Zero(coreCount, m);
         for (int c = 0; c < coreCount; ++c)
             for (const auto &[q, w] : limit[std::size_t(c)])
                 limits(c, s0.copyOf[std::size_t(q)]) += w;
 
         const Refinement r = refineTopology(t, m_scheme);
-        const Split s1 = splitFans(int(r.stencils.size()), r.faces);
+        const Split s1 = splitFans(int(r.stencils.size()), r.faces.toVectors());
         const MeshTopology t1 = splitTopology(s1, r.sharpness);
         const int nv = t.vertexCount();
         // The first child face of face f in r.faces (refineTopology's order).
@@ -534,13 +547,12 @@ MeshPieces buildManifoldPieces(const Mesh &mesh, MeshScheme scheme, MeshTopology
                               "face %1 has %2 sides; faces of more than %3 sides are not "
                               "supported"),
                 f, t.face(f).size(), kMaxValence));
-    out.isolation.resize(std::size_t(t.vertexCount()));
+    out.isolation.reserve(std::size_t(t.vertexCount()), std::size_t(t.vertexCount()));
     out.origin.resize(std::size_t(t.vertexCount()));
     for (int v = 0; v < t.vertexCount(); ++v) {
-        out.isolation[std::size_t(v)] = {{v, 1.0}};
+        out.isolation.push_back({{v, 1.0}});
         out.origin[std::size_t(v)] = v;
     }
-    std::vector<std::vector<int>> faces = mesh.faces;
     out.inputTags = mesh.tags;
     // Chaikin's rule takes a semi-sharp edge's neighbours beyond a piece's net: the semi-sharp
     // features are refined away on the whole mesh first (uniform creasing keeps them in the
@@ -557,12 +569,15 @@ MeshPieces buildManifoldPieces(const Mesh &mesh, MeshScheme scheme, MeshTopology
                               "Chaikin's creases last %1 more levels here; the mesh would have "
                               "more than %2 faces (use the uniform crease method)"),
                 preludeLevels(t), kMaxPreludeFaces));
-        const Refinement r = refineTopology(t, scheme);
+        Refinement r = refineTopology(t, scheme);
         const int nv = t.vertexCount(), ne = t.edgeCount();
-        std::vector<MeshStencil> isolation;
+        StencilTable isolation;
+        // (A point's stencil on the input grows about fourfold a step.)
+        isolation.reserve(r.stencils.size(), 4 * r.stencils.entryCount());
         std::vector<int> origin;
+        origin.reserve(r.stencils.size());
         for (std::size_t p = 0; p < r.stencils.size(); ++p) {
-            isolation.push_back(composeStencils(r.stencils[p], out.isolation));
+            appendComposed(isolation, r.stencils[p], out.isolation);
             const int id = int(p);
             origin.push_back(id < nv                                    ? out.origin[p]
                              : out.steps == 0 && id >= nv + ne          ? -1 - (id - nv - ne)
@@ -570,13 +585,13 @@ MeshPieces buildManifoldPieces(const Mesh &mesh, MeshScheme scheme, MeshTopology
         }
         out.isolation = std::move(isolation);
         out.origin = std::move(origin);
-        faces = r.faces;
-        t = refinedTopology(r);
+        t = refinedTopology(std::move(r));
         ++out.steps;
     }
-    out.isolatedFaces = faces;
+    out.isolatedFaces = t.faces();
 
     TypeBuilder builder(scheme);
+    std::vector<int> net;
     for (int f = 0; f < t.faceCount(); ++f) {
         bool regular = true;
         for (int v : t.face(f))
@@ -585,16 +600,20 @@ MeshPieces buildManifoldPieces(const Mesh &mesh, MeshScheme scheme, MeshTopology
             continue;
         MeshPieceRoot root;
         root.face = f;
-        root.type = builder.typeOf(t, {false, f, 0}, &root.net);
-        out.roots.push_back(std::move(root));
+        root.number = int(out.roots.size());
+        root.type = builder.typeOf(t, {false, f, 0}, &net);
+        out.roots.push_back(root);
+        out.rootNets.push_back(net);
     }
     for (int v = 0; v < t.vertexCount(); ++v) {
         if (!irregular(t, v, scheme))
             continue;
         MeshPieceRoot root;
         root.vertex = v;
-        root.type = builder.typeOf(t, {true, v, t.ring(v).edges.front()}, &root.net);
-        out.roots.push_back(std::move(root));
+        root.number = int(out.roots.size());
+        root.type = builder.typeOf(t, {true, v, t.ring(v).edges.front()}, &net);
+        out.roots.push_back(root);
+        out.rootNets.push_back(net);
     }
     builder.run();
     builder.preludeLimits();
@@ -623,7 +642,11 @@ MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
     MeshPieces out = buildManifoldPieces(sheets->mesh, scheme, std::move(drawn.topology));
     const int n = int(mesh.vertices.rows());
     const auto inputVertex = [&](int v) { return v < n ? v : sheets->original[std::size_t(v)]; };
-    for (MeshStencil &stencil : out.isolation) {
+    StencilTable isolation;
+    isolation.reserve(out.isolation.size(), out.isolation.entryCount());
+    MeshStencil stencil;
+    for (std::size_t k = 0; k < out.isolation.size(); ++k) {
+        stencil.assign(out.isolation[k].begin(), out.isolation[k].end());
         for (auto &[p, w] : stencil)
             p = inputVertex(p);
         std::sort(stencil.begin(), stencil.end(),
@@ -635,7 +658,9 @@ MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
             else
                 stencil[kept++] = stencil[i];
         stencil.resize(kept);
+        isolation.push_back(stencil);
     }
+    out.isolation = std::move(isolation);
     for (int &o : out.origin)
         if (o >= n)
             o = inputVertex(o);

@@ -98,9 +98,9 @@ struct MeshPieceType {
 
 struct MeshPieceRoot {
     int type = 0;
-    std::vector<int> net;  // vertices of the isolated mesh, in the type's order
-    int vertex = -1;       // vertex pieces: the vertex of the isolated mesh
-    int face = -1;         // face pieces: the face of the isolated mesh
+    int number = 0;   // its place in MeshPieces::roots: its net is MeshPieces::net(root)
+    int vertex = -1;  // vertex pieces: the vertex of the isolated mesh
+    int face = -1;    // face pieces: the face of the isolated mesh
 };
 
 struct MeshPieces {
@@ -112,14 +112,19 @@ struct MeshPieces {
     int steps = 0;  // isolation steps L (and, with Chaikin creases, the levels they last)
     // The isolated mesh's vertices as stencils on the input's (vertex v < inputVertexCount is
     // the input's vertex v at every level), and its faces.
-    std::vector<MeshStencil> isolation;
-    std::vector<std::vector<int>> isolatedFaces;
+    StencilTable isolation;
+    IndexRows isolatedFaces;
     // Where an isolated vertex comes from: >= 0 an input vertex; -1 - f the centre of input
     // face f (a Catmull-Clark face that is not a quad); otherwise kNewPoint.
     std::vector<int> origin;
     static constexpr int kNewPoint = -1000000000;
     std::vector<MeshPieceType> types;
     std::vector<MeshPieceRoot> roots;
+    IndexRows rootNets;  // per root, the vertices of the isolated mesh, in its type's order
+    std::span<const int> net(const MeshPieceRoot &root) const
+    {
+        return rootNets[std::size_t(root.number)];
+    }
     std::vector<int> loneVertices;  // input vertices of no face: they stay where they are
 };
 

@@ -17,7 +17,7 @@ namespace {
 using namespace meshrules;
 
 // Sums weights of the same point (sorted by point), in place.
-MeshStencil merged(MeshStencil s)
+void mergeInPlace(MeshStencil &s)
 {
     std::sort(s.begin(), s.end());
     std::size_t n = 0;
@@ -28,10 +28,15 @@ MeshStencil merged(MeshStencil s)
             s[n++] = s[i];
     }
     s.resize(n);
+}
+
+MeshStencil merged(MeshStencil s)
+{
+    mergeInPlace(s);
     return s;
 }
 
-void addFaceCentroid(MeshStencil &s, const std::vector<int> &face, double weight)
+void addFaceCentroid(MeshStencil &s, std::span<const int> face, double weight)
 {
     for (int v : face)
         s.emplace_back(v, weight / double(face.size()));
@@ -40,7 +45,7 @@ void addFaceCentroid(MeshStencil &s, const std::vector<int> &face, double weight
 // The other ends of the first and last sharp edges at v (its crease when it has two).
 std::pair<int, int> creaseEnds(const MeshTopology &t, int v, const std::vector<float> &sharpness)
 {
-    const auto &edges = t.ring(v).edges;
+    const auto edges = t.ring(v).edges;
     std::size_t first = 0, last = edges.size() - 1;
     while (first < last && !crease::isSharp(sharpness[first]))
         ++first;
@@ -54,24 +59,33 @@ MeshStencil creaseMask(int v, std::pair<int, int> ends, double self, double neig
     return merged({{v, self}, {ends.first, neighbour}, {ends.second, neighbour}});
 }
 
-// The smooth vertex point of an interior vertex.
-MeshStencil smoothVertex(const MeshTopology &t, int v, MeshScheme scheme)
+// The smooth vertex point of an interior vertex, into s.
+void smoothVertex(const MeshTopology &t, int v, MeshScheme scheme, MeshStencil &s)
 {
-    const auto &ring = t.ring(v);
+    const auto ring = t.ring(v);
     const int n = int(ring.edges.size());
+    s.clear();
     if (scheme == MeshScheme::Loop) {
         const double beta = loopBeta(n);
-        MeshStencil s{{v, 1.0 - n * beta}};
+        s.emplace_back(v, 1.0 - n * beta);
         for (int e : ring.edges)
             s.emplace_back(t.otherEnd(e, v), beta);
-        return merged(std::move(s));
+        mergeInPlace(s);
+        return;
     }
-    MeshStencil s{{v, catmarkVertexSelf(n)}};
+    s.emplace_back(v, catmarkVertexSelf(n));
     for (int e : ring.edges)
         s.emplace_back(t.otherEnd(e, v), catmarkVertexRing(n));
     for (int f : ring.faces)
         addFaceCentroid(s, t.face(f), catmarkVertexRing(n));
-    return merged(std::move(s));
+    mergeInPlace(s);
+}
+
+MeshStencil smoothVertex(const MeshTopology &t, int v, MeshScheme scheme)
+{
+    MeshStencil s;
+    smoothVertex(t, v, scheme, s);
+    return s;
 }
 
 // The vertex point of v under `rule` with edge sharpness `sharpness` around it.
@@ -90,27 +104,11 @@ MeshStencil ruleVertex(const MeshTopology &t, int v, MeshScheme scheme, VertexRu
     return MeshStencil{{v, 1.0}};
 }
 
-// The vertex point, as Sdc::Scheme::ComputeVertexVertexMask: the rule of the vertex, and where
-// a semi-sharp feature ends at this level, that rule blended with the next level's.
-MeshStencil vertexPoint(const MeshTopology &t, int v, MeshScheme scheme)
+// vertexPoint at a vertex of rule `pRule` (crease or corner) with its ring's sharpness.
+MeshStencil vertexPointSharp(const MeshTopology &t, int v, MeshScheme scheme,
+                             const std::vector<float> &parent, float parentVertex, VertexRule pRule)
 {
-    const auto &ring = t.ring(v);
-    if (ring.edges.empty())
-        return MeshStencil{{v, 1.0}};
-    if (!t.hasSharpness())  // the common case, without a vector per vertex: only the boundary
-        return ring.boundary ? creaseMask(v,
-                                          {t.otherEnd(ring.edges.front(), v),
-                                           t.otherEnd(ring.edges.back(), v)},
-                                          kCreaseSelf, kCreaseNeighbour)
-                             : smoothVertex(t, v, scheme);
-    const std::vector<float> parent = t.ringSharpness(v);
-    const float parentVertex = t.vertexSharpness(v);
-    const VertexRule pRule = crease::vertexRule(parentVertex, parent);
-    if (pRule == VertexRule::Smooth || pRule == VertexRule::Dart)
-        return smoothVertex(t, v, scheme);
     MeshStencil mask = ruleVertex(t, v, scheme, pRule, parent);
-    if (!t.hasSharpness())
-        return mask;
     const CreaseMethod method = t.options().creaseMethod;
     const std::vector<float> child = crease::subdivideAroundVertex(parent, method);
     const float childVertex = crease::decrement(parentVertex);
@@ -125,6 +123,33 @@ MeshStencil vertexPoint(const MeshTopology &t, int v, MeshScheme scheme)
     return merged(std::move(mask));
 }
 
+// The vertex point, as Sdc::Scheme::ComputeVertexVertexMask: the rule of the vertex, and where
+// a semi-sharp feature ends at this level, that rule blended with the next level's. Into s.
+void vertexPoint(const MeshTopology &t, int v, MeshScheme scheme, MeshStencil &s)
+{
+    const auto ring = t.ring(v);
+    if (ring.edges.empty()) {
+        s.assign({{v, 1.0}});
+        return;
+    }
+    if (!t.hasSharpness()) {  // the common case, without a vector per vertex: only the boundary
+        if (ring.boundary)
+            s = creaseMask(v, {t.otherEnd(ring.edges.front(), v), t.otherEnd(ring.edges.back(), v)},
+                           kCreaseSelf, kCreaseNeighbour);
+        else
+            smoothVertex(t, v, scheme, s);
+        return;
+    }
+    const std::vector<float> parent = t.ringSharpness(v);
+    const float parentVertex = t.vertexSharpness(v);
+    const VertexRule pRule = crease::vertexRule(parentVertex, parent);
+    if (pRule == VertexRule::Smooth || pRule == VertexRule::Dart) {
+        smoothVertex(t, v, scheme, s);
+        return;
+    }
+    s = vertexPointSharp(t, v, scheme, parent, parentVertex, pRule);
+}
+
 // The corner of triangle f opposite edge e.
 int opposite(const MeshTopology &t, int f, int e)
 {
@@ -135,14 +160,17 @@ int opposite(const MeshTopology &t, int f, int e)
     return edge.v[0];
 }
 
-MeshStencil smoothEdge(const MeshTopology &t, int e, MeshScheme scheme)
+void smoothEdge(const MeshTopology &t, int e, MeshScheme scheme, MeshStencil &s)
 {
     const auto &edge = t.edge(e);
-    if (scheme == MeshScheme::Loop)
-        return merged({{edge.v[0], 0.375},
-                       {edge.v[1], 0.375},
-                       {opposite(t, edge.face[0], e), 0.125},
-                       {opposite(t, edge.face[1], e), 0.125}});
+    if (scheme == MeshScheme::Loop) {
+        s.assign({{edge.v[0], 0.375},
+                  {edge.v[1], 0.375},
+                  {opposite(t, edge.face[0], e), 0.125},
+                  {opposite(t, edge.face[1], e), 0.125}});
+        mergeInPlace(s);
+        return;
+    }
     // OpenSubdiv's "smooth triangles": 0.47 toward a triangle's centre instead of 1/4.
     double face = 0.25;
     if (t.options().triangles == TriangleSubdivision::Smooth) {
@@ -151,10 +179,10 @@ MeshStencil smoothEdge(const MeshTopology &t, int e, MeshScheme scheme)
             face = 0.5 * ((tri0 ? 0.470 : 0.25) + (tri1 ? 0.470 : 0.25));
     }
     const double vertex = 0.5 * (1.0 - 2.0 * face);
-    MeshStencil s{{edge.v[0], vertex}, {edge.v[1], vertex}};
+    s.assign({{edge.v[0], vertex}, {edge.v[1], vertex}});
     addFaceCentroid(s, t.face(edge.face[0]), face);
     addFaceCentroid(s, t.face(edge.face[1]), face);
-    return merged(std::move(s));
+    mergeInPlace(s);
 }
 
 // The sharpness one level down of the half of edge e at its end v.
@@ -163,7 +191,7 @@ float childHalf(const MeshTopology &t, int e, int v)
     const float s = t.edgeSharpness(e);
     if (t.options().creaseMethod == CreaseMethod::Uniform || !crease::isSemiSharp(s))
         return crease::decrement(s);
-    const auto &edges = t.ring(v).edges;
+    const auto edges = t.ring(v).edges;
     const auto k = std::size_t(std::find(edges.begin(), edges.end(), e) - edges.begin());
     return crease::subdivideAroundVertex(t.ringSharpness(v), CreaseMethod::Chaikin)[k];
 }
@@ -171,24 +199,28 @@ float childHalf(const MeshTopology &t, int e, int v)
 // The edge point, as Sdc::Scheme::ComputeEdgeVertexMask: the midpoint of a sharp edge whose
 // halves stay sharp, the smooth rule of a smooth edge, and the two blended by the sharpness of
 // an edge that becomes smooth at this level.
-MeshStencil edgePoint(const MeshTopology &t, int e, MeshScheme scheme)
+void edgePoint(const MeshTopology &t, int e, MeshScheme scheme, MeshStencil &mask)
 {
     const auto &edge = t.edge(e);
     const float s = t.edgeSharpness(e);
-    if (!crease::isSharp(s))
-        return smoothEdge(t, e, scheme);
-    MeshStencil mid{{edge.v[0], 0.5}, {edge.v[1], 0.5}};
+    if (!crease::isSharp(s)) {
+        smoothEdge(t, e, scheme, mask);
+        return;
+    }
+    const MeshStencil mid = merged({{edge.v[0], 0.5}, {edge.v[1], 0.5}});
     if (edge.boundary() || crease::isInfinite(s)
         || (crease::isSharp(childHalf(t, e, edge.v[0]))
-            && crease::isSharp(childHalf(t, e, edge.v[1]))))
-        return merged(std::move(mid));
+            && crease::isSharp(childHalf(t, e, edge.v[1])))) {
+        mask = mid;
+        return;
+    }
     const double w = s;
-    MeshStencil mask = smoothEdge(t, e, scheme);
+    smoothEdge(t, e, scheme, mask);
     for (auto &entry : mask)
         entry.second *= 1.0 - w;
     for (const auto &[p, u] : mid)
         mask.emplace_back(p, w * u);
-    return merged(std::move(mask));
+    mergeInPlace(mask);
 }
 
 // The exact limit of a dart (one sharp edge ends at v): the left eigenvector for eigenvalue 1
@@ -200,16 +232,17 @@ MeshStencil edgePoint(const MeshTopology &t, int e, MeshScheme scheme)
 // prelude's end) it is the fixed point of this level's rules, not yet the limit.
 std::optional<MeshStencil> dartLimit(const MeshTopology &t, int v, MeshScheme scheme)
 {
-    const auto &ring = t.ring(v);
+    const auto ring = t.ring(v);
     std::vector<int> points{v};
-    std::vector<MeshStencil> rows{vertexPoint(t, v, scheme)};
+    std::vector<MeshStencil> rows(1);
+    vertexPoint(t, v, scheme, rows.back());
     for (int e : ring.edges) {
         points.push_back(t.otherEnd(e, v));
-        rows.push_back(edgePoint(t, e, scheme));
+        edgePoint(t, e, scheme, rows.emplace_back());
     }
     if (scheme == MeshScheme::CatmullClark)
         for (int f : ring.faces) {
-            const auto &face = t.face(f);
+            const auto face = t.face(f);
             if (face.size() != 4)
                 return std::nullopt;
             const int corner = int(std::find(face.begin(), face.end(), v) - face.begin());
@@ -247,7 +280,7 @@ std::optional<MeshStencil> dartLimit(const MeshTopology &t, int v, MeshScheme sc
 // stay.
 std::optional<MeshStencil> directLimit(const MeshTopology &t, int v, MeshScheme scheme)
 {
-    const auto &ring = t.ring(v);
+    const auto ring = t.ring(v);
     if (ring.edges.empty())
         return MeshStencil{{v, 1.0}};
     if (!t.hasSharpness()) {  // the common case, without a vector per vertex
@@ -282,7 +315,7 @@ std::optional<MeshStencil> directLimit(const MeshTopology &t, int v, MeshScheme 
     for (int e : ring.edges)
         s.emplace_back(t.otherEnd(e, v), catmarkLimitEdge(n));
     for (int f : ring.faces) {
-        const auto &face = t.face(f);
+        const auto face = t.face(f);
         if (face.size() != 4)
             return std::nullopt;
         const int corner = int(std::find(face.begin(), face.end(), v) - face.begin());
@@ -313,13 +346,13 @@ MeshSharpness childSharpness(const MeshTopology &t, MeshScheme scheme)
         around[std::size_t(v)] =
             crease::subdivideAroundVertex(t.ringSharpness(v), t.options().creaseMethod);
     const auto half = [&](int e, int v) {
-        const auto &edges = t.ring(v).edges;
+        const auto edges = t.ring(v).edges;
         const auto k = std::size_t(std::find(edges.begin(), edges.end(), e) - edges.begin());
         return around[std::size_t(v)][k];
     };
     for (int f = 0; f < nf; ++f) {
-        const auto &c = t.face(f);
-        const auto &e = t.faceEdges(f);
+        const auto c = t.face(f);
+        const auto e = t.faceEdges(f);
         const std::size_t k = c.size();
         if (scheme == MeshScheme::CatmullClark) {
             for (std::size_t i = 0; i < k; ++i)  // {v_i, e_i, f, e_(i-1)}
@@ -337,14 +370,22 @@ MeshSharpness childSharpness(const MeshTopology &t, MeshScheme scheme)
 
 } // namespace
 
-MeshStencil composeStencils(const MeshStencil &outer, const std::vector<MeshStencil> &inner)
+namespace {
+
+// The composition's sums into the thread's `met` (sorted) and `sum`.
+struct ComposeMarks {
+    std::vector<double> sum;
+    std::vector<unsigned> stamp;
+    unsigned current = 0;
+    std::vector<int> met;
+};
+
+const ComposeMarks &composed(std::span<const StencilTable::Entry> outer, const StencilTable &inner)
 {
     // A sum per point met, on marks reused from call to call (the isolation of a mesh of a
     // million faces composes a million stencils): the products are summed in the order met.
-    thread_local std::vector<double> sum;
-    thread_local std::vector<unsigned> stamp;
-    thread_local unsigned current = 0;
-    thread_local std::vector<int> met;
+    thread_local ComposeMarks marks;
+    auto &[sum, stamp, current, met] = marks;
     if (++current == 0) {
         std::fill(stamp.begin(), stamp.end(), 0u);
         current = 1;
@@ -364,11 +405,30 @@ MeshStencil composeStencils(const MeshStencil &outer, const std::vector<MeshSten
             sum[std::size_t(q)] += w * u;
         }
     std::sort(met.begin(), met.end());
+    return marks;
+}
+
+} // namespace
+
+MeshStencil composeStencils(std::span<const StencilTable::Entry> outer, const StencilTable &inner)
+{
+    const ComposeMarks &m = composed(outer, inner);
     MeshStencil s;
-    s.reserve(met.size());
-    for (int q : met)
-        s.emplace_back(q, sum[std::size_t(q)]);
+    s.reserve(m.met.size());
+    for (int q : m.met)
+        s.emplace_back(q, m.sum[std::size_t(q)]);
     return s;
+}
+
+void appendComposed(StencilTable &out, std::span<const StencilTable::Entry> outer,
+                    const StencilTable &inner)
+{
+    const ComposeMarks &m = composed(outer, inner);
+    thread_local MeshStencil s;
+    s.clear();
+    for (int q : m.met)
+        s.emplace_back(q, m.sum[std::size_t(q)]);
+    out.push_back(s);
 }
 
 Refinement refineTopology(const MeshTopology &t, MeshScheme scheme)
@@ -382,30 +442,42 @@ Refinement refineTopology(const MeshTopology &t, MeshScheme scheme)
                     coreTranslate("awb::mesh",
                                   "face %1 has %2 vertices; Loop subdivision takes triangles only"),
                     f, t.face(f).size()));
-    r.stencils.reserve(std::size_t(nv + ne + (scheme == MeshScheme::CatmullClark ? nf : 0)));
-    for (int v = 0; v < nv; ++v)
-        r.stencils.push_back(vertexPoint(t, v, scheme));
-    for (int e = 0; e < ne; ++e)
-        r.stencils.push_back(edgePoint(t, e, scheme));
+    const std::size_t corners = std::size_t(t.faces().start(std::size_t(nf)));
+    r.stencils.reserve(std::size_t(nv + ne + (scheme == MeshScheme::CatmullClark ? nf : 0)),
+                       scheme == MeshScheme::Loop ? 7 * std::size_t(nv) + 4 * std::size_t(ne)
+                                                  : 3 * corners + 6 * std::size_t(ne) + corners);
+    MeshStencil s;
+    for (int v = 0; v < nv; ++v) {
+        vertexPoint(t, v, scheme, s);
+        r.stencils.push_back(s);
+    }
+    for (int e = 0; e < ne; ++e) {
+        edgePoint(t, e, scheme, s);
+        r.stencils.push_back(s);
+    }
     const auto edgeChild = [nv](int e) { return nv + e; };
     if (scheme == MeshScheme::CatmullClark) {
+        r.faces.reserve(std::size_t(t.faces().start(std::size_t(nf))),
+                        4 * std::size_t(t.faces().start(std::size_t(nf))));
         for (int f = 0; f < nf; ++f) {
-            MeshStencil s;
+            s.clear();
             addFaceCentroid(s, t.face(f), 1.0);
-            r.stencils.push_back(merged(std::move(s)));
+            mergeInPlace(s);
+            r.stencils.push_back(s);
         }
         for (int f = 0; f < nf; ++f) {
-            const auto &face = t.face(f);
-            const auto &edges = t.faceEdges(f);
+            const auto face = t.face(f);
+            const auto edges = t.faceEdges(f);
             const std::size_t k = face.size();
             for (std::size_t i = 0; i < k; ++i)
                 r.faces.push_back({face[i], edgeChild(edges[i]), nv + ne + f,
                                    edgeChild(edges[(i + k - 1) % k])});
         }
     } else {
+        r.faces.reserve(4 * std::size_t(nf), 12 * std::size_t(nf));
         for (int f = 0; f < nf; ++f) {
-            const auto &c = t.face(f);
-            const auto &e = t.faceEdges(f);
+            const auto c = t.face(f);
+            const auto e = t.faceEdges(f);
             const int e0 = edgeChild(e[0]), e1 = edgeChild(e[1]), e2 = edgeChild(e[2]);
             r.faces.push_back({c[0], e0, e2});
             r.faces.push_back({c[1], e1, e0});
@@ -417,6 +489,13 @@ Refinement refineTopology(const MeshTopology &t, MeshScheme scheme)
     return r;
 }
 
+MeshTopology refinedTopology(Refinement &&r)
+{
+    MeshTopology child(int(r.stencils.size()), std::move(r.faces));
+    child.applySharpness(r.sharpness);
+    return child;
+}
+
 MeshTopology refinedTopology(const Refinement &r)
 {
     MeshTopology child(int(r.stencils.size()), r.faces);
@@ -424,7 +503,7 @@ MeshTopology refinedTopology(const Refinement &r)
     return child;
 }
 
-Mat applyStencils(const std::vector<MeshStencil> &stencils, const Mat &data)
+Mat applyStencils(const StencilTable &stencils, const Mat &data)
 {
     Mat out = Mat::Zero(Eigen::Index(stencils.size()), data.cols());
     for (std::size_t i = 0; i < stencils.size(); ++i)
@@ -442,37 +521,48 @@ Mesh refineMesh(const Mesh &input, MeshScheme scheme, int steps)
     DrawnMesh drawn = drawnMesh(input, scheme);
     const Mesh &mesh = drawn.mesh(input);
     MeshTopology t = std::move(drawn.topology);
-    Mesh m = mesh;
-    m.tags = {};
+    Mesh m;
+    m.vertices = mesh.vertices;
     for (int k = 0; k < steps; ++k) {
         Refinement r = refineTopology(t, scheme);
         m.vertices = applyStencils(r.stencils, m.vertices);
-        t = refinedTopology(r);
-        m.faces = std::move(r.faces);
+        t = refinedTopology(std::move(r));
     }
+    m.faces = t.faces().toVectors();
     if (t.hasSharpness() || t.hasHoles() || !(t.options() == MeshOptions{}))
         m.tags = tagsOf(t);
     return m;
 }
 
-std::vector<MeshStencil> limitStencils(const MeshTopology &t, MeshScheme scheme)
+StencilTable limitStencils(const MeshTopology &t, MeshScheme scheme)
 {
-    std::vector<MeshStencil> out(std::size_t(t.vertexCount()));
+    StencilTable out;
+    out.reserve(std::size_t(t.vertexCount()), 9 * std::size_t(t.vertexCount()));
     std::vector<int> later;
     for (int v = 0; v < t.vertexCount(); ++v) {
-        if (auto s = directLimit(t, v, scheme))
-            out[std::size_t(v)] = std::move(*s);
-        else
+        if (auto s = directLimit(t, v, scheme)) {
+            out.push_back(*s);
+        } else {
             later.push_back(v);
+            out.push_back({});
+        }
     }
     if (later.empty())
         return out;
     // After one step every face at a vertex point is a quad; the vertex keeps its number.
     const Refinement r = refineTopology(t, scheme);
     const MeshTopology child = refinedTopology(r);
-    for (int v : later)
-        out[std::size_t(v)] = composeStencils(*directLimit(child, v, scheme), r.stencils);
-    return out;
+    StencilTable all;
+    all.reserve(out.size(), out.entryCount() + 25 * later.size());
+    for (int v = 0, k = 0; v < t.vertexCount(); ++v) {
+        if (k < int(later.size()) && later[std::size_t(k)] == v) {
+            appendComposed(all, *directLimit(child, v, scheme), r.stencils);
+            ++k;
+        } else {
+            all.push_back(out[std::size_t(v)]);
+        }
+    }
+    return all;
 }
 
 MeshTags tagsOf(const MeshTopology &t)
@@ -522,12 +612,12 @@ Mat limitPositions(const Mesh &input, MeshScheme scheme)
                               "the semi-sharp features last %1 levels; the mesh would have "
                               "more than %2 faces before its limit positions can be taken"),
                 levels, kMaxPreludeFaces));
-        const Refinement r = refineTopology(t, scheme);
+        Refinement r = refineTopology(t, scheme);
         points = applyStencils(r.stencils, points);
-        t = refinedTopology(r);
+        t = refinedTopology(std::move(r));
     }
-    std::vector<MeshStencil> limits = limitStencils(t, scheme);
-    limits.resize(std::size_t(input.vertices.rows()));
+    StencilTable limits = limitStencils(t, scheme);
+    limits.truncate(std::size_t(input.vertices.rows()));
     return applyStencils(limits, points);
 }
 

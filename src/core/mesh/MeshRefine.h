@@ -10,6 +10,8 @@
 
 #include "core/mesh/Mesh.h"
 
+#include <initializer_list>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -18,30 +20,73 @@ namespace awb {
 // (old point, weight), weights sum to 1. (Not LatticeScheme.h's Stencil, on lattice points.)
 using MeshStencil = std::vector<std::pair<int, double>>;
 
+// Many stencils in one table (OpenSubdiv's Far::StencilTable): a million points' stencils are
+// two allocations, not a million. Stencil i is a span of (point, weight).
+class StencilTable {
+public:
+    using Entry = std::pair<int, double>;
+    std::size_t size() const { return m_start.size() - 1; }
+    bool empty() const { return size() == 0; }
+    std::span<const Entry> operator[](std::size_t i) const
+    {
+        return {m_entries.data() + m_start[i], m_start[i + 1] - m_start[i]};
+    }
+    std::size_t entryCount() const { return m_entries.size(); }
+    void reserve(std::size_t stencils, std::size_t entries)
+    {
+        m_start.reserve(stencils + 1);
+        m_entries.reserve(entries);
+    }
+    void push_back(std::span<const Entry> stencil)
+    {
+        m_entries.insert(m_entries.end(), stencil.begin(), stencil.end());
+        m_start.push_back(m_entries.size());
+    }
+    void push_back(std::initializer_list<Entry> stencil)
+    {
+        push_back(std::span<const Entry>(stencil.begin(), stencil.size()));
+    }
+    // Keeps the first n stencils.
+    void truncate(std::size_t n)
+    {
+        if (n >= size())
+            return;
+        m_start.resize(n + 1);
+        m_entries.resize(m_start.back());
+    }
+
+private:
+    BigVector<std::size_t> m_start{0};
+    BigVector<Entry> m_entries;
+};
+
 struct Refinement {
-    std::vector<std::vector<int>> faces;  // of the refined mesh, counter-clockwise
-    std::vector<MeshStencil> stencils;    // one per point of the refined mesh (numbered as above)
+    IndexRows faces;                      // of the refined mesh, counter-clockwise
+    StencilTable stencils;                // one per point of the refined mesh (numbered as above)
     MeshSharpness sharpness;              // its sharp features one level down (MeshTags.h)
 };
 
 // `outer` (over the points of a refinement) as a stencil over the old points, given the
-// refinement's stencils `inner`.
-MeshStencil composeStencils(const MeshStencil &outer, const std::vector<MeshStencil> &inner);
+// refinement's stencils `inner`; appendComposed adds it to a table.
+MeshStencil composeStencils(std::span<const StencilTable::Entry> outer, const StencilTable &inner);
+void appendComposed(StencilTable &out, std::span<const StencilTable::Entry> outer,
+                    const StencilTable &inner);
 
 // One step on a topology (checked: triangles only for Loop; InputError otherwise), with the
 // rules of its sharp features as OpenSubdiv 3.5 applies them (Sdc::Scheme's masks with the
 // rule of each vertex and edge, semi-sharp features blended where they end).
 Refinement refineTopology(const MeshTopology &topology, MeshScheme scheme);
 
-// The topology of the refined mesh, with its sharp features.
+// The topology of the refined mesh, with its sharp features (the second takes its faces).
 MeshTopology refinedTopology(const Refinement &refinement);
+MeshTopology refinedTopology(Refinement &&refinement);
 
 // The tags that give `topology`'s sharp features back (interior edges and vertices of nonzero
 // sharpness, holes, options).
 MeshTags tagsOf(const MeshTopology &topology);
 
 // rows of data (one per old point) -> one row per stencil.
-Mat applyStencils(const std::vector<MeshStencil> &stencils, const Mat &data);
+Mat applyStencils(const StencilTable &stencils, const Mat &data);
 
 // The mesh after `steps` steps (checked by checkMesh first). A non-manifold mesh is refined as
 // its manifold sheets (MeshSheets.h): a vertex on a non-manifold edge or vertex appears once
@@ -52,7 +97,7 @@ Mesh refineMesh(const Mesh &mesh, MeshScheme scheme, int steps = 1);
 // MeshRules.h by each vertex's rule at this level (as OpenSubdiv's PrimvarRefiner::Limit: a
 // semi-sharp feature counts as sharp; limitPositions() refines past them first); for a Catmull-Clark vertex next to a face that is not a quad, the mask of its
 // point after one step composed with that step. A vertex of no face stays where it is.
-std::vector<MeshStencil> limitStencils(const MeshTopology &topology, MeshScheme scheme);
+StencilTable limitStencils(const MeshTopology &topology, MeshScheme scheme);
 
 // The limit positions of the mesh's vertices (n x 3; a non-manifold mesh's from its sheets,
 // MeshSheets.h): the limit stencils after the levels

@@ -214,7 +214,7 @@ CharacteristicMap characteristicMapOn(Star &star, MeshScheme scheme, const MeshT
         for (std::size_t f = 0; f < faces.size(); ++f)
             next.insert(next.end(), scheme == MeshScheme::Loop ? 4 : faces[f].size(), ancestor[f]);
         ancestor = std::move(next);
-        faces = r.faces;
+        faces = r.faces.toVectors();
         t = refinedTopology(r);
     }
     const Mat limit = applyStencils(limitStencils(t, scheme), data);
