@@ -2821,6 +2821,10 @@
         <source>&lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number from %1 to %2, got &apos;%3&apos;</source>
         <translation>&lt;symmetry&gt; vyžaduje kind=&quot;k&quot;, celé číslo od %1 do %2, zadáno „%3“</translation>
     </message>
+    <message>
+        <source>passes=&quot;%1&quot; must be a whole number from 1 to %2</source>
+        <translation>passes=&quot;%1&quot; musí být celé číslo od 1 do %2</translation>
+    </message>
 </context>
 <context>
     <name>awb::FlameItem</name>
@@ -3127,6 +3131,14 @@
     <message>
         <source>flam3&apos;s palette_mode: a hit takes the palette entry at its colour coordinate (step) or between the two entries around it (linear)</source>
         <translation>palette_mode programu flam3: zásah dostane položku palety na své barevné souřadnici (skokově) nebo barvu mezi dvěma okolními položkami (lineárně)</translation>
+    </message>
+    <message>
+        <source>Passes</source>
+        <translation>Průchody</translation>
+    </message>
+    <message>
+        <source>flam3&apos;s passes: the samples drawn in that many histograms, each log-scaled and density-estimated apart, then summed (a little smoother than one)</source>
+        <translation>passes programu flam3: vzorky se kreslí do tolika histogramů, každý se zvlášť logaritmicky škáluje a odhaduje se jeho hustota, pak se sečtou (o něco hladší než jeden)</translation>
     </message>
 </context>
 <context>
@@ -9175,6 +9187,10 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     <message>
         <source>a %1 x %2 picture of the flame at supersample %3 needs %4 MB of histograms; at most %5 MB</source>
         <translation>obraz plamene %1 x %2 při převzorkování %3 potřebuje %4 MB histogramů; nejvýše %5 MB</translation>
+    </message>
+    <message>
+        <source>the flame&apos;s passes is %1; it takes 1 to %2</source>
+        <translation>počet průchodů plamene je %1; povoleno je 1 až %2</translation>
     </message>
 </context>
 <context>

@@ -2818,6 +2818,10 @@
         <source>&lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number from %1 to %2, got &apos;%3&apos;</source>
         <translation>&lt;symmetry&gt; nécessite kind=&quot;k&quot;, un entier de %1 à %2, reçu « %3 »</translation>
     </message>
+    <message>
+        <source>passes=&quot;%1&quot; must be a whole number from 1 to %2</source>
+        <translation>passes=&quot;%1&quot; doit être un nombre entier de 1 à %2</translation>
+    </message>
 </context>
 <context>
     <name>awb::FlameItem</name>
@@ -3124,6 +3128,14 @@
     <message>
         <source>flam3&apos;s palette_mode: a hit takes the palette entry at its colour coordinate (step) or between the two entries around it (linear)</source>
         <translation>palette_mode de flam3 : un impact prend l&apos;entrée de la palette à sa coordonnée de couleur (par paliers) ou la couleur entre les deux entrées qui l&apos;entourent (linéaire)</translation>
+    </message>
+    <message>
+        <source>Passes</source>
+        <translation>Passes</translation>
+    </message>
+    <message>
+        <source>flam3&apos;s passes: the samples drawn in that many histograms, each log-scaled and density-estimated apart, then summed (a little smoother than one)</source>
+        <translation>passes de flam3 : les échantillons tirés dans autant d&apos;histogrammes, chacun mis à l&apos;échelle logarithmique et estimé en densité à part, puis sommés (un peu plus lisse qu&apos;une seule)</translation>
     </message>
 </context>
 <context>
@@ -9162,6 +9174,10 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     <message>
         <source>a %1 x %2 picture of the flame at supersample %3 needs %4 MB of histograms; at most %5 MB</source>
         <translation>une image %1 x %2 de la flamme au suréchantillonnage %3 demande %4 Mo d&apos;histogrammes ; au plus %5 Mo</translation>
+    </message>
+    <message>
+        <source>the flame&apos;s passes is %1; it takes 1 to %2</source>
+        <translation>la flamme a %1 passes ; elle en accepte de 1 à %2</translation>
     </message>
 </context>
 <context>

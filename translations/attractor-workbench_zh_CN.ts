@@ -2815,6 +2815,10 @@
         <source>&lt;symmetry&gt; needs kind=&quot;k&quot;, a whole number from %1 to %2, got &apos;%3&apos;</source>
         <translation>&lt;symmetry&gt; 需要 kind=&quot;k&quot;，为 %1 到 %2 之间的整数，实际为“%3”</translation>
     </message>
+    <message>
+        <source>passes=&quot;%1&quot; must be a whole number from 1 to %2</source>
+        <translation>passes=&quot;%1&quot; 必须是 1 到 %2 之间的整数</translation>
+    </message>
 </context>
 <context>
     <name>awb::FlameItem</name>
@@ -3121,6 +3125,14 @@
     <message>
         <source>flam3&apos;s palette_mode: a hit takes the palette entry at its colour coordinate (step) or between the two entries around it (linear)</source>
         <translation>flam3 的 palette_mode：一次命中取其颜色坐标处的调色板条目（阶梯），或取其两侧条目之间的颜色（线性）</translation>
+    </message>
+    <message>
+        <source>Passes</source>
+        <translation>遍数</translation>
+    </message>
+    <message>
+        <source>flam3&apos;s passes: the samples drawn in that many histograms, each log-scaled and density-estimated apart, then summed (a little smoother than one)</source>
+        <translation>flam3 的 passes：样本分别绘入这么多个直方图，每个单独做对数缩放和密度估计，然后相加（比一遍略平滑）</translation>
     </message>
 </context>
 <context>
@@ -9149,6 +9161,10 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>a %1 x %2 picture of the flame at supersample %3 needs %4 MB of histograms; at most %5 MB</source>
         <translation>超采样 %3 下 %1 x %2 的火焰图像需要 %4 MB 直方图；最多 %5 MB</translation>
+    </message>
+    <message>
+        <source>the flame&apos;s passes is %1; it takes 1 to %2</source>
+        <translation>火焰的遍数为 %1；允许 1 到 %2</translation>
     </message>
 </context>
 <context>

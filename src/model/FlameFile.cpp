@@ -32,7 +32,7 @@ bool ignoredFlameAttribute(QStringView name)
     static const QStringList names{
         "version", "time", "interpolation", "interpolation_type", "interpolation_space",
         "palette_interpolation", "hsv_rgb_palette_blend", "temporal_filter_type",
-        "temporal_filter_width", "temporal_filter_exp", "temporal_samples", "passes",
+        "temporal_filter_width", "temporal_filter_exp", "temporal_samples",
         "url", "nick", "notes", "contrast", "genome_index", "parent",
         "hue", "soloxform", "new_linear", "plugins"};
     return names.contains(name);
@@ -271,6 +271,14 @@ private:
                 real(&f.quality);
                 if (!(f.quality > 0))
                     fail(FlameFileTr::tr("quality=\"%1\" must be positive").arg(value));
+            } else if (key == QLatin1String("passes")) {
+                const auto v = readWhole(value, 1, flame::kMaxFlamePasses);
+                if (!v)
+                    fail(FlameFileTr::tr("passes=\"%1\" must be a whole number from 1 to %2")
+                             .arg(value)
+                             .arg(flame::kMaxFlamePasses));
+                else
+                    f.passes = int(*v);
             } else if (key == QLatin1String("brightness")) {
                 real(&f.brightness);
             } else if (key == QLatin1String("gamma")) {
@@ -706,7 +714,8 @@ QByteArray flameElement(const Flame &f)
     out += " scale=\"" + num(f.scale) + "\" rotate=\"" + num(f.rotate) + '"';
     if (f.zoom != 0)
         out += " zoom=\"" + num(f.zoom) + '"';
-    out += " quality=\"" + num(f.quality) + "\" supersample=\"" + QByteArray::number(f.supersample)
+    out += " quality=\"" + num(f.quality) + "\" passes=\"" + QByteArray::number(f.passes)
+           + "\" supersample=\"" + QByteArray::number(f.supersample)
            + "\" filter=\"" + num(f.filter) + "\" filter_shape=\""
            + QByteArray::fromStdString(std::string(flame::filterShapeName(f.filterShape)))
            + "\" palette_mode=\""

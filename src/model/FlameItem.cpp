@@ -614,6 +614,14 @@ const PropertyTable &FlameItem::declaration()
              })
             .label(QT_TR_NOOP("Background"))
             .tip(QT_TR_NOOP("[r, g, b] from 0 to 1"));
+        f.integer("tone.passes", &Flame::passes)
+            .label(QT_TR_NOOP("Passes"))
+            .group(QT_TR_NOOP("Tone"))
+            .tip(QT_TR_NOOP("flam3's passes: the samples drawn in that many histograms, each "
+                            "log-scaled and density-estimated apart, then summed (a little "
+                            "smoother than one)"))
+            .range(1, flame::kMaxFlamePasses)
+            .notAnimated();
         f.integer("tone.supersample", &Flame::supersample)
             .label(QT_TR_NOOP("Supersample"))
             .group(QT_TR_NOOP("Tone"))

@@ -85,8 +85,9 @@ namespace {
 // no caption or margins, in the item's own frame and size unless --bounds or --size are given
 // (--bounds then exactly, without the figures' padding), with the item's own sample count
 // (a flame's quality) unless --samples is.
-void writeOwnPicture(const DerivedIfs &d, const FigureSpec &spec, const FigureOptions &o,
-                     const FigureMetadata &metadata, const QString &outFile)
+void writeOwnPicture(const QString &itemName, const DerivedIfs &d, const FigureSpec &spec,
+                     const FigureOptions &o, const FigureMetadata &metadata,
+                     const QString &outFile)
 {
     RenderRequest r;
     r.chaos = d.chaos;
@@ -120,7 +121,12 @@ void writeOwnPicture(const DerivedIfs &d, const FigureSpec &spec, const FigureOp
     IterationControl control;
     control.cancel = o.cancel;
     control.progress = o.progress;
-    QImage image = renderAttractorImage(r, 0, r.samples, nullptr, control);
+    QImage image;
+    try {
+        image = renderAttractorImage(r, 0, r.samples, nullptr, control);
+    } catch (const InputError &e) {  // the picture's own limits: a flame's filters, its memory
+        fail(FigureTr::tr("item '%1': %2").arg(itemName, QString::fromStdString(e.what())));
+    }
     if (image.isNull() || (o.cancel && o.cancel->load()))
         fail(FigureTr::tr("the rendering was cancelled"));
     // The project inside, as every figure: File > Open of the PNG opens it.
@@ -243,7 +249,7 @@ void renderItemFigure(const Project &project, AttractorItem *item, const FigureO
         o.format.isEmpty() ? QFileInfo(outFile).suffix().toLower() : o.format;
     if (d->chaos.picture && spec.tone.mode == Accumulation::Density && !measure
         && format == QLatin1String("png") && o.bits == 8 && !o.rawDensity) {
-        writeOwnPicture(*d, spec, o, itemFigureMetadata(project, *item), outFile);
+        writeOwnPicture(item->name(), *d, spec, o, itemFigureMetadata(project, *item), outFile);
         return;
     }
     // A game of its own (a flame): its points are handles of its maps, not of the figure.

@@ -5,7 +5,8 @@
 // zoom, rotation). Two renders of flam3 with different seeds differ by their noise; ours must
 // differ from flam3's by no more than that (the mean absolute difference of the RGB channels,
 // within 1.25 x + 0.004), and clearly more from flam3's picture of the flame made brighter, so
-// that the comparison can fail.
+// that the comparison can fail. flam3's passes, which only change the grain, are judged by the
+// grain; the picture's limits by their message.
 
 #include "TestPaths.h"
 #include <QDir>
@@ -70,6 +71,31 @@ double meanDifference(const QImage &a, const QImage &b)
     return sum / (3.0 * 255.0 * x.width() * x.height());
 }
 
+// How grainy a picture is: the mean absolute difference of the RGB channels from the mean of
+// each pixel's 3 x 3 neighbourhood (inner pixels), 0..1.
+double roughness(const QImage &image)
+{
+    const QImage x = image.convertToFormat(QImage::Format_RGB32);
+    double sum = 0;
+    long long count = 0;
+    for (int r = 1; r + 1 < x.height(); ++r)
+        for (int c = 1; c + 1 < x.width(); ++c) {
+            int mean[3] = {0, 0, 0};
+            for (int dr = -1; dr <= 1; ++dr)
+                for (int dc = -1; dc <= 1; ++dc) {
+                    const QRgb q = x.pixel(c + dc, r + dr);
+                    mean[0] += qRed(q);
+                    mean[1] += qGreen(q);
+                    mean[2] += qBlue(q);
+                }
+            const QRgb p = x.pixel(c, r);
+            sum += std::abs(qRed(p) - mean[0] / 9.0) + std::abs(qGreen(p) - mean[1] / 9.0)
+                   + std::abs(qBlue(p) - mean[2] / 9.0);
+            ++count;
+        }
+    return count ? sum / (3.0 * 255.0 * double(count)) : 0.0;
+}
+
 struct Judgement {
     double ours = 0, noise = 0, brighter = 0;
     bool same() const { return ours <= 1.25 * noise + 0.004; }
@@ -84,6 +110,8 @@ private slots:
     void initTestCase() { QVERIFY(m_dir.isValid()); }
     void realFlamesLookAsFlam3DrawsThem();
     void everyToneSettingAsFlam3();
+    void passesAsFlam3();
+    void pictureLimitsNameTheItem();
 
 private:
     // flam3-render twice (two seeds), once brighter, and attractor-cli's render of the item
@@ -193,6 +221,74 @@ void TestFlameTone::everyToneSettingAsFlam3()
     QVERIFY2(out.contains("OK, 1 item"), out.constData());
     QVERIFY2(failed.isEmpty(), qPrintable(failed.join("; ")));
     QVERIFY2(apart >= int(settings.size()) - 1, qPrintable(report.join("; ")));
+}
+
+// flam3's passes: each pass's histogram log-scaled and density-estimated apart, then summed.
+// At quality 20 ten passes are much smoother than one (each pass's estimator sees a tenth of
+// the hits, so its kernels are wider); the mean difference cannot tell them apart (both are
+// within flam3's own noise), the grain can: ours must be as grainy as flam3's picture within
+// 25 % at one and at ten passes, and flam3's two must differ by more than that.
+void TestFlameTone::passesAsFlam3()
+{
+    const QByteArray base = withQuality(readAll(flamesDir() + "/genome-12.flame"), 20);
+    double theirs[2] = {0, 0}, ours[2] = {0, 0};
+    QStringList report;
+    for (int k = 0; k < 2; ++k) {
+        const QString passes = k ? QStringLiteral("10") : QStringLiteral("1");
+        const QString name = QStringLiteral("passes") + passes;
+        const QString path = m_dir.filePath(name + ".flame"), flam3 = m_dir.filePath(name + ".png"),
+                      mine = m_dir.filePath(name + ".ours.png"),
+                      project = m_dir.filePath(name + ".awb");
+        QVERIFY(put(path, withAttributes(base, {{"passes", passes}})));
+        QString why;
+        QVERIFY2(flam3Render(path, flam3, &why, {{"transparency", "0"}, {"isaac_seed", "first"}}),
+                 qPrintable(why));
+        QByteArray err;
+        QVERIFY2(runProgram(cliPath(), {"import", path, "--out", project}, nullptr, &err) == 0,
+                 err.constData());
+        QVERIFY2(runProgram(cliPath(), {"render", project, "--out", mine}, nullptr, &err) == 0,
+                 err.constData());
+        theirs[k] = roughness(QImage(flam3));
+        ours[k] = roughness(QImage(mine));
+        report << QStringLiteral("passes %1: grain ours %2, flam3's %3, mean difference %4")
+                      .arg(passes)
+                      .arg(ours[k], 0, 'f', 4)
+                      .arg(theirs[k], 0, 'f', 4)
+                      .arg(meanDifference(QImage(mine), QImage(flam3)), 0, 'f', 4);
+    }
+    qInfo("genome-12 at quality 20:\n  %s", qPrintable(report.join("\n  ")));
+    for (int k = 0; k < 2; ++k)
+        QVERIFY2(std::abs(ours[k] - theirs[k]) <= 0.25 * theirs[k], qPrintable(report.join("; ")));
+    QVERIFY2(theirs[1] < 0.7 * theirs[0], qPrintable(report.join("; ")));
+    // The setting is kept in the project, and written back to a flame.
+    QByteArray out;
+    QCOMPARE(runProgram(cliPath(), {"export", m_dir.filePath("passes10.awb"), "--format", "flame", "--out",
+                                    m_dir.filePath("passes10.back.flame")},
+                        &out),
+             0);
+    QVERIFY(readAll(m_dir.filePath("passes10.back.flame")).contains("passes=\"10\""));
+}
+
+// A flame whose picture cannot be drawn (a spatial filter wider than 1025 cells, passes out of
+// range) is refused with a message that names the item and the limit, exit 1.
+void TestFlameTone::pictureLimitsNameTheItem()
+{
+    const QString flame = m_dir.filePath("wide.flame"), project = m_dir.filePath("wide.awb");
+    QVERIFY(put(flame, "<flame name=\"wide\" size=\"64 64\" filter=\"900\">"
+                       "<xform weight=\"1\" coefs=\"0.5 0 0 0.5 0 0\" swirl=\"1\"/></flame>\n"));
+    QByteArray out, err;
+    QCOMPARE(runProgram(cliPath(), {"import", flame, "--out", project}, &out, &err), 0);
+    QCOMPARE(runProgram(cliPath(), {"render", project, "--out", m_dir.filePath("wide.png")}, &out,
+                        &err),
+             1);
+    QCOMPARE(err.trimmed(), QByteArray("attractor-cli: item 'wide': the spatial filter of radius "
+                                       "900 at supersample 1 would be 2700 cells wide; at most "
+                                       "1025"));
+    QVERIFY(!QFile::exists(m_dir.filePath("wide.png")));
+    QVERIFY(put(flame, "<flame name=\"p\" passes=\"65\"><xform weight=\"1\" "
+                       "coefs=\"0.5 0 0 0.5 0 0\"/></flame>\n"));
+    QCOMPARE(runProgram(cliPath(), {"import", flame, "--out", project}, &out, &err), 1);
+    QVERIFY2(err.contains("passes=\"65\" must be a whole number from 1 to 64"), err.constData());
 }
 
 AWB_TEST_MAIN(TestFlameTone)

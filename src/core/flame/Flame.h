@@ -93,6 +93,9 @@ struct Flame {
     int width = 100, height = 100;
     // Tone: flam3's log-density display and its sampling.
     double quality = 1;      // samples per output pixel (flam3's default)
+    // flam3's passes: the samples drawn in that many histograms, each log-scaled (and density
+    // estimated) apart and summed; a little smoother than one pass.
+    int passes = 1;
     double brightness = 4;
     double gamma = 4;
     double gammaThreshold = 0.01;

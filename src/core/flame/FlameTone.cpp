@@ -181,7 +181,11 @@ void logScale(const FlameHistogram &h, std::vector<Cell> &acc, double k1, double
                 continue;
             const double a = c[3];
             const double ls = k1 * std::log(1.0 + a * k2) / a;
-            acc[i] = {c[0] * ls, c[1] * ls, c[2] * ls, a * ls};
+            Cell &out = acc[i];  // summed over flam3's passes
+            out[0] += c[0] * ls;
+            out[1] += c[1] * ls;
+            out[2] += c[2] * ls;
+            out[3] += a * ls;
         }
     });
 }
@@ -474,6 +478,9 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
         throw InputError(tr("there is no flame to draw"));
     const Flame &f = *job.flame;
     checkFlame(f);
+    if (f.passes < 1 || f.passes > kMaxFlamePasses)
+        throw InputError(formatMessage(tr("the flame's passes is %1; it takes 1 to %2"), f.passes,
+                                       kMaxFlamePasses));
     RasterFrame frame = job.frame;
     frame.supersample = 1;
     frame.validate();
@@ -545,25 +552,37 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
         kept = Workspace{};
     FlameHistogram &histogram = w.histogram;
     FlameImage out;
-    out.stats = accumulateFlameColours(raster, histogram, control, &w.parts);
-    if (out.stats.cancelled)
-        return out;
-
-    // rect.c: k1 from the brightness, k2 from the sample density per unit area.
+    // rect.c: k1 from the brightness, k2 from the sample density per unit area; each of flam3's
+    // passes (its batches) draws its share of the samples in a histogram of its own, log-scaled
+    // with k1 / passes and k2 * passes into the sum.
+    const int passes = f.passes;
     const double ppux = W / (frame.x1 - frame.x0), ppuy = H / (frame.y1 - frame.y0);
     const double area = W * double(H) / (ppux * ppuy);
     const double sampleDensity = std::max<double>(1.0, double(job.samples)) / (double(W) * H);
-    const double k1 = f.brightness * 255.0 * 268.0 / 256.0;
-    const double k2 = double(ss) * ss / (area * 255.0 * sampleDensity);
+    const double k1 = f.brightness * 255.0 * 268.0 / 256.0 / passes;
+    const double k2 = double(ss) * ss * passes / (area * 255.0 * sampleDensity);
     std::vector<Cell> &acc = w.acc;
-    acc.assign(histogram.cells.size(), Cell{0, 0, 0, 0});
-    if (estimator)
-        estimate(histogram, acc, de, f.estimatorCurve, ss, k1, k2, threads);
-    else
-        logScale(histogram, acc, k1, k2, threads);
-    if (control.cancel && control.cancel->load()) {
-        out.stats.cancelled = true;
-        return out;
+    for (int pass = 0; pass < passes; ++pass) {
+        raster.samples = job.samples / std::uint64_t(passes)
+                         + (std::uint64_t(pass) < job.samples % std::uint64_t(passes) ? 1 : 0);
+        raster.seed = job.seed + std::uint64_t(pass) * 0x9E3779B97F4A7C15ull;
+        const FlameStats stats = accumulateFlameColours(raster, histogram, control, &w.parts);
+        out.stats.samples += stats.samples;
+        out.stats.badValues += stats.badValues;
+        out.stats.offscreen += stats.offscreen;
+        out.stats.cancelled = stats.cancelled;
+        if (out.stats.cancelled)
+            return out;
+        if (pass == 0)
+            acc.assign(histogram.cells.size(), Cell{0, 0, 0, 0});
+        if (estimator)
+            estimate(histogram, acc, de, f.estimatorCurve, ss, k1, k2, threads);
+        else
+            logScale(histogram, acc, k1, k2, threads);
+        if (control.cancel && control.cancel->load()) {
+            out.stats.cancelled = true;
+            return out;
+        }
     }
 
     // The spatial filter (separable: flam3's kernel is the product of one row by itself,

@@ -72,6 +72,9 @@ struct FlameImage {
     FlameStats stats;
 };
 
+// The most passes of a picture (flam3's own limit is the sample count).
+inline constexpr int kMaxFlamePasses = 64;
+
 // The most bytes the histograms of one picture may take (the threads' and the accumulator):
 // a picture that needs more draws on fewer threads, then is refused (InputError).
 inline constexpr double kMaxFlameHistogramBytes = 1.0 * (1 << 30);
