@@ -585,6 +585,7 @@ MeshPieces buildManifoldPieces(const Mesh &mesh, MeshScheme scheme, MeshTopology
         }
         out.isolation = std::move(isolation);
         out.origin = std::move(origin);
+        r.stencils = StencilTable{};  // composed: given back before the next level is built
         t = refinedTopology(std::move(r));
         ++out.steps;
     }

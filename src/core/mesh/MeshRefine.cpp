@@ -486,19 +486,20 @@ Refinement refineTopology(const MeshTopology &t, MeshScheme scheme)
         }
     }
     r.sharpness = childSharpness(t, scheme);
+    r.pointCount = int(r.stencils.size());
     return r;
 }
 
 MeshTopology refinedTopology(Refinement &&r)
 {
-    MeshTopology child(int(r.stencils.size()), std::move(r.faces));
+    MeshTopology child(r.pointCount, std::move(r.faces));
     child.applySharpness(r.sharpness);
     return child;
 }
 
 MeshTopology refinedTopology(const Refinement &r)
 {
-    MeshTopology child(int(r.stencils.size()), r.faces);
+    MeshTopology child(r.pointCount, r.faces);
     child.applySharpness(r.sharpness);
     return child;
 }

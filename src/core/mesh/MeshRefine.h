@@ -63,6 +63,7 @@ private:
 struct Refinement {
     IndexRows faces;                      // of the refined mesh, counter-clockwise
     StencilTable stencils;                // one per point of the refined mesh (numbered as above)
+    int pointCount = 0;                   // the points of the refined mesh (stencils' count)
     MeshSharpness sharpness;              // its sharp features one level down (MeshTags.h)
 };
 
