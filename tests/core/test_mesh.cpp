@@ -14,6 +14,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace awb;
@@ -51,6 +52,7 @@ private slots:
     void characteristicMapIsKeptForDrawing();
     void badMeshesAreRefusedByName();
     void flatRelationsKeepTheRows();
+    void refinedTopologyFromTheParent();
 };
 
 void TestMesh::cubeAfterOneCatmullClarkStep()
@@ -399,6 +401,50 @@ void TestMesh::flatRelationsKeepTheRows()
     QCOMPARE(reinterpret_cast<std::uintptr_t>(big.data()) % (std::uintptr_t(2) << 20),
              std::uintptr_t(0));
 #endif
+}
+
+// A refinement's child topology is linked from the parent's relations (childTwins, no search):
+// it must be the topology that the checked construction finds from the child's faces alone --
+// the same edges in the same order, faces' edges and vertex rings -- closed and open, quads,
+// triangles and pentagons, both schemes, two levels down.
+void TestMesh::refinedTopologyFromTheParent()
+{
+    const std::vector<std::pair<Mesh, MeshScheme>> cases{
+        {cubeMesh(), MeshScheme::CatmullClark},
+        {pentagonalPrismMesh(), MeshScheme::CatmullClark},
+        {gridMesh(3, 2, false), MeshScheme::CatmullClark},
+        {gridMesh(3, 2, true), MeshScheme::CatmullClark},
+        {torusMesh(5, 4, true), MeshScheme::CatmullClark},
+        {icosahedronMesh(), MeshScheme::Loop},
+        {gridMesh(3, 3, true), MeshScheme::Loop},
+        {diagonalGridMesh(4, 3, 7), MeshScheme::Loop},
+    };
+    int compared = 0;
+    for (const auto &[mesh, scheme] : cases) {
+        MeshTopology t = checkMesh(mesh, scheme);
+        for (int level = 0; level < 2; ++level) {
+            const Refinement r = refineTopology(t, scheme);
+            const MeshTopology linked = refinedTopology(r);
+            const MeshTopology searched(r.pointCount, r.faces);
+            QCOMPARE(linked.edgeCount(), searched.edgeCount());
+            for (int e = 0; e < linked.edgeCount(); ++e) {
+                const auto &a = linked.edge(e), &b = searched.edge(e);
+                QVERIFY(a.v[0] == b.v[0] && a.v[1] == b.v[1]);
+                QVERIFY(a.face[0] == b.face[0] && a.face[1] == b.face[1]);
+            }
+            QCOMPARE(linked.faces().values(), searched.faces().values());
+            for (int f = 0; f < linked.faceCount(); ++f)
+                QVERIFY(std::ranges::equal(linked.faceEdges(f), searched.faceEdges(f)));
+            for (int v = 0; v < linked.vertexCount(); ++v) {
+                QVERIFY(std::ranges::equal(linked.ring(v).edges, searched.ring(v).edges));
+                QVERIFY(std::ranges::equal(linked.ring(v).faces, searched.ring(v).faces));
+                QCOMPARE(linked.onBoundary(v), searched.onBoundary(v));
+            }
+            t = linked;
+            ++compared;
+        }
+    }
+    QCOMPARE(compared, 16);
 }
 
 #include "test_mesh.moc"

@@ -117,10 +117,8 @@ MeshTopology::MeshTopology(int vertexCount, IndexRows faces)
     // half-edges, no hash of edges. For each half-edge a -> b: the first a -> b, the first
     // b -> a (its twin, or -1), and the edges of three or more faces, named once, by their
     // first half-edge.
-    const std::size_t nf = m_faces.size(), nv = m_ringBoundary.size();
-    const MeshHalfEdges half(int(nv), m_faces);
-    const BigVector<int> &first = half.first, &halfFace = half.face, &halfFrom = half.from,
-                           &halfTo = half.to, &outStart = half.outStart, &outHalf = half.out;
+    const MeshHalfEdges half(int(m_ringBoundary.size()), m_faces);
+    const BigVector<int> &halfFace = half.face, &halfFrom = half.from, &halfTo = half.to;
     MeshHalfEdges::Pairing pairing = half.pairing();
     const BigVector<int> &earliest = pairing.same, &twin = pairing.opposite;
     std::vector<std::pair<std::pair<int, int>, std::vector<int>>> nonManifold;
@@ -160,8 +158,28 @@ MeshTopology::MeshTopology(int vertexCount, IndexRows faces)
                 halfFace[std::size_t(earliest[std::size_t(h)])], halfFace[std::size_t(h)],
                 halfFrom[std::size_t(h)], halfTo[std::size_t(h)]));
     problems.raise();
+    for (const auto &[v, faces] : link(twin))
+        problems.add(formatMessage(
+            coreTranslate("awb::mesh", "vertex %1 is non-manifold: its %2 faces do not form one "
+                                       "fan around it"),
+            v, faces));
+    problems.raise();
+}
+
+MeshTopology::MeshTopology(int vertexCount, IndexRows faces, const BigVector<int> &twin)
+    : m_faces(std::move(faces)), m_ringBoundary(std::size_t(std::max(vertexCount, 0)), 0)
+{
+    link(twin);
+}
+
+std::vector<std::pair<int, int>> MeshTopology::link(const BigVector<int> &twin)
+{
+    std::vector<std::pair<int, int>> notOneFan;
+    const std::size_t nf = m_faces.size(), nv = m_ringBoundary.size();
+    const BigVector<int> &first = m_faces.starts(), &from = m_faces.values();
+    const std::size_t halfEdges = from.size();
     // Edges, numbered in the order the faces first name them.
-    BigVector<int> edgeOfHalf(halfEdges, -1);
+    BigVector<int> edgeOfHalf(halfEdges, -1), halfFace(halfEdges);
     m_edges.reserve(halfEdges / 2 + 1);
     m_faceEdges = IndexRows::shapedLike(m_faces, -1);
     for (std::size_t f = 0; f < nf; ++f) {
@@ -169,6 +187,7 @@ MeshTopology::MeshTopology(int vertexCount, IndexRows faces)
         const auto faceEdges = m_faceEdges.row(f);
         for (std::size_t k = 0; k < loop.size(); ++k) {
             const int h = first[f] + int(k), t = twin[std::size_t(h)];
+            halfFace[std::size_t(h)] = int(f);
             int e;
             if (t >= 0 && t < h) {
                 e = edgeOfHalf[std::size_t(t)];
@@ -185,26 +204,38 @@ MeshTopology::MeshTopology(int vertexCount, IndexRows faces)
             faceEdges[k] = e;
         }
     }
+    // Per vertex: the first half-edge leaving it, the first with no twin (on the boundary), and
+    // how many leave it.
+    BigVector<int> firstOut(nv, -1), firstOpen(nv, -1), outCount(nv, 0);
+    for (std::size_t h = 0; h < halfEdges; ++h) {
+        const auto v = std::size_t(from[h]);
+        if (firstOut[v] < 0)
+            firstOut[v] = int(h);
+        if (firstOpen[v] < 0 && twin[h] < 0)
+            firstOpen[v] = int(h);
+        ++outCount[v];
+    }
+    const auto previous = [&](int h) {
+        const int f = halfFace[std::size_t(h)], b = first[std::size_t(f)];
+        const int n = first[std::size_t(f) + 1] - b;
+        return b + (h - b + n - 1) % n;
+    };
     // The ring of each vertex, counter-clockwise: in a face ... a -> v -> b ..., the face lies
     // between edge (v, b) and edge (v, a) turning counter-clockwise; the next face is the one
     // with the half-edge v -> a, the twin of a -> v.
-    const auto previous = [&](int h) { return half.previous(h); };
     m_ringEdges.reserve(nv, halfEdges + nv);
     m_ringFaces.reserve(nv, halfEdges);
     std::vector<int> ringEdges, ringFaces;
     for (std::size_t v = 0; v < nv; ++v) {
-        const int begin = outStart[v], end = outStart[v + 1];
         ringEdges.clear();
         ringFaces.clear();
-        if (begin < end) {
+        if (firstOut[v] >= 0) {
             // Start at a boundary half-edge v -> b (no b -> v) when there is one.
-            int start = outHalf[std::size_t(begin)];
-            for (int i = begin; i < end; ++i)
-                if (twin[std::size_t(outHalf[std::size_t(i)])] < 0) {
-                    start = outHalf[std::size_t(i)];
-                    m_ringBoundary[v] = 1;
-                    break;
-                }
+            int start = firstOut[v];
+            if (firstOpen[v] >= 0) {
+                start = firstOpen[v];
+                m_ringBoundary[v] = 1;
+            }
             int at = start;
             for (;;) {
                 ringEdges.push_back(edgeOfHalf[std::size_t(at)]);
@@ -216,19 +247,16 @@ MeshTopology::MeshTopology(int vertexCount, IndexRows faces)
                     break;
                 }
                 at = next;
-                if (at == start)
+                if (at == start || int(ringFaces.size()) > outCount[v])
                     break;
             }
-            if (int(ringFaces.size()) != end - begin)
-                problems.add(formatMessage(
-                    coreTranslate("awb::mesh", "vertex %1 is non-manifold: its %2 faces do not "
-                                               "form one fan around it"),
-                    v, end - begin));
+            if (int(ringFaces.size()) != outCount[v])
+                notOneFan.push_back({int(v), outCount[v]});
         }
         m_ringEdges.push_back(ringEdges);
         m_ringFaces.push_back(ringFaces);
     }
-    problems.raise();
+    return notOneFan;
 }
 
 int MeshTopology::findEdge(int a, int b) const

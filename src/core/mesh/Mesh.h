@@ -18,6 +18,7 @@
 
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace awb {
@@ -64,6 +65,10 @@ public:
         : MeshTopology(vertexCount, IndexRows(faces))
     {
     }
+    // Faces known to be a manifold surface with their twins (twin[h]: the half-edge that runs
+    // back along half-edge h = corner k of face f, faces.start(f) + k; -1 on the boundary), as
+    // a refinement knows them from its parent: no search, no check (MeshRefine.cpp).
+    MeshTopology(int vertexCount, IndexRows faces, const BigVector<int> &twin);
 
     struct Edge {
         int v[2] = {-1, -1};
@@ -131,6 +136,10 @@ public:
     void applySharpness(const MeshSharpness &s);
 
 private:
+    // Edges (numbered in the order the faces first name them) and rings from the twins; the
+    // vertices whose faces do not form one fan, with their face counts.
+    std::vector<std::pair<int, int>> link(const BigVector<int> &twin);
+
     IndexRows m_faces;
     IndexRows m_faceEdges;  // shaped like m_faces
     BigVector<Edge> m_edges;

@@ -64,6 +64,7 @@ struct Refinement {
     IndexRows faces;                      // of the refined mesh, counter-clockwise
     StencilTable stencils;                // one per point of the refined mesh (numbered as above)
     int pointCount = 0;                   // the points of the refined mesh (stencils' count)
+    BigVector<int> twins;                 // of its half-edges, from the parent's relations
     MeshSharpness sharpness;              // its sharp features one level down (MeshTags.h)
 };
 
