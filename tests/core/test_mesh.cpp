@@ -382,8 +382,10 @@ void TestMesh::flatRelationsKeepTheRows()
     QCOMPARE(applied(1, 0), 8.0);
     QCOMPARE(applied(2, 0), 5.0);
     // Stencil 0 over the table itself: (s0 + s1) / 2 = p0 / 4 + p1 / 4 + p2 / 2.
-    const MeshStencil composed = composeStencils(table[0], table);
-    QCOMPARE(composed, (MeshStencil{{0, 0.25}, {1, 0.25}, {2, 0.5}}));
+    StencilTable composed;
+    appendComposed(composed, table[0], table);
+    const MeshStencil expected{{0, 0.25}, {1, 0.25}, {2, 0.5}};
+    QVERIFY(std::ranges::equal(composed[0], expected));
     table.truncate(1);
     QCOMPARE(table.size(), std::size_t(1));
     QCOMPARE(table.entryCount(), std::size_t(2));

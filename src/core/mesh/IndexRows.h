@@ -89,11 +89,6 @@ public:
     const_iterator begin() const { return {this, 0}; }
     const_iterator end() const { return {this, size()}; }
 
-    bool operator==(const IndexRows &o) const
-    {
-        return m_start == o.m_start && m_values == o.m_values;
-    }
-
 private:
     BigVector<int> m_start{0};
     BigVector<int> m_values;

@@ -650,15 +650,7 @@ MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
         stencil.assign(out.isolation[k].begin(), out.isolation[k].end());
         for (auto &[p, w] : stencil)
             p = inputVertex(p);
-        std::sort(stencil.begin(), stencil.end(),
-                  [](const auto &a, const auto &b) { return a.first < b.first; });
-        std::size_t kept = 0;
-        for (std::size_t i = 0; i < stencil.size(); ++i)
-            if (kept > 0 && stencil[kept - 1].first == stencil[i].first)
-                stencil[kept - 1].second += stencil[i].second;
-            else
-                stencil[kept++] = stencil[i];
-        stencil.resize(kept);
+        mergeStencil(stencil);
         isolation.push_back(stencil);
     }
     out.isolation = std::move(isolation);

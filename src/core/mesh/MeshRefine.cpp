@@ -12,12 +12,7 @@
 
 namespace awb {
 
-namespace {
-
-using namespace meshrules;
-
-// Sums weights of the same point (sorted by point), in place.
-void mergeInPlace(MeshStencil &s)
+void mergeStencil(MeshStencil &s)
 {
     std::sort(s.begin(), s.end());
     std::size_t n = 0;
@@ -30,9 +25,13 @@ void mergeInPlace(MeshStencil &s)
     s.resize(n);
 }
 
+namespace {
+
+using namespace meshrules;
+
 MeshStencil merged(MeshStencil s)
 {
-    mergeInPlace(s);
+    mergeStencil(s);
     return s;
 }
 
@@ -70,7 +69,7 @@ void smoothVertex(const MeshTopology &t, int v, MeshScheme scheme, MeshStencil &
         s.emplace_back(v, 1.0 - n * beta);
         for (int e : ring.edges)
             s.emplace_back(t.otherEnd(e, v), beta);
-        mergeInPlace(s);
+        mergeStencil(s);
         return;
     }
     s.emplace_back(v, catmarkVertexSelf(n));
@@ -78,7 +77,7 @@ void smoothVertex(const MeshTopology &t, int v, MeshScheme scheme, MeshStencil &
         s.emplace_back(t.otherEnd(e, v), catmarkVertexRing(n));
     for (int f : ring.faces)
         addFaceCentroid(s, t.face(f), catmarkVertexRing(n));
-    mergeInPlace(s);
+    mergeStencil(s);
 }
 
 MeshStencil smoothVertex(const MeshTopology &t, int v, MeshScheme scheme)
@@ -168,7 +167,7 @@ void smoothEdge(const MeshTopology &t, int e, MeshScheme scheme, MeshStencil &s)
                   {edge.v[1], 0.375},
                   {opposite(t, edge.face[0], e), 0.125},
                   {opposite(t, edge.face[1], e), 0.125}});
-        mergeInPlace(s);
+        mergeStencil(s);
         return;
     }
     // OpenSubdiv's "smooth triangles": 0.47 toward a triangle's centre instead of 1/4.
@@ -182,7 +181,7 @@ void smoothEdge(const MeshTopology &t, int e, MeshScheme scheme, MeshStencil &s)
     s.assign({{edge.v[0], vertex}, {edge.v[1], vertex}});
     addFaceCentroid(s, t.face(edge.face[0]), face);
     addFaceCentroid(s, t.face(edge.face[1]), face);
-    mergeInPlace(s);
+    mergeStencil(s);
 }
 
 // The sharpness one level down of the half of edge e at its end v.
@@ -220,7 +219,7 @@ void edgePoint(const MeshTopology &t, int e, MeshScheme scheme, MeshStencil &mas
         entry.second *= 1.0 - w;
     for (const auto &[p, u] : mid)
         mask.emplace_back(p, w * u);
-    mergeInPlace(mask);
+    mergeStencil(mask);
 }
 
 // The exact limit of a dart (one sharp edge ends at v): the left eigenvector for eigenvalue 1
@@ -472,16 +471,6 @@ BigVector<int> childTwins(const MeshTopology &t, MeshScheme scheme)
 
 } // namespace
 
-MeshStencil composeStencils(std::span<const StencilTable::Entry> outer, const StencilTable &inner)
-{
-    const ComposeMarks &m = composed(outer, inner);
-    MeshStencil s;
-    s.reserve(m.met.size());
-    for (int q : m.met)
-        s.emplace_back(q, m.sum[std::size_t(q)]);
-    return s;
-}
-
 void appendComposed(StencilTable &out, std::span<const StencilTable::Entry> outer,
                     const StencilTable &inner)
 {
@@ -524,7 +513,7 @@ Refinement refineTopology(const MeshTopology &t, MeshScheme scheme)
         for (int f = 0; f < nf; ++f) {
             s.clear();
             addFaceCentroid(s, t.face(f), 1.0);
-            mergeInPlace(s);
+            mergeStencil(s);
             r.stencils.push_back(s);
         }
         for (int f = 0; f < nf; ++f) {

@@ -68,9 +68,11 @@ struct Refinement {
     MeshSharpness sharpness;              // its sharp features one level down (MeshTags.h)
 };
 
-// `outer` (over the points of a refinement) as a stencil over the old points, given the
-// refinement's stencils `inner`; appendComposed adds it to a table.
-MeshStencil composeStencils(std::span<const StencilTable::Entry> outer, const StencilTable &inner);
+// Sorts a stencil by point and sums the weights of each point, in place.
+void mergeStencil(MeshStencil &stencil);
+
+// Appends to `out` the stencil `outer` (over the points of a refinement) as a stencil over the
+// old points, given the refinement's stencils `inner`.
 void appendComposed(StencilTable &out, std::span<const StencilTable::Entry> outer,
                     const StencilTable &inner);
 
