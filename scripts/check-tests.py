@@ -8,7 +8,8 @@ The tree defines, independently of CMake's conditions:
   - fuzz_replay_<target> for each `awb_fuzz_target(<target>` of tests/fuzz/CMakeLists.txt.
 Each build kind leaves out what it documents: the instrumented builds the Debian package test
 (`packaging_test_package`); the AddressSanitizer build the Python suite and the OpenGL view
-(AWB_ASAN_LEFT_OUT in tests/CMakeLists.txt); the ThreadSanitizer build runs the tests labelled `threads` only
+(AWB_ASAN_LEFT_OUT in tests/CMakeLists.txt), and the GUI's and the window's unless AWB_ASAN_GUI=1;
+the ThreadSanitizer build runs the tests labelled `threads` only
 (AWB_THREADED_TESTS in tests/CMakeLists.txt, kept complete by scripts/threaded-tests.py) below
 the GUI -- the GUI's and the window's too with AWB_TSAN_GUI=1 -- and each of those must exist.
 
@@ -91,6 +92,9 @@ def main():
         # scripts/sanitize.sh thread runs the GUI's and the window's only with AWB_TSAN_GUI=1.
         if os.environ.get("AWB_TSAN_GUI", "0") != "1":
             expected = {t for t in expected if not re.match(r"(gui|i18n)_", t)}
+    # scripts/sanitize.sh (address) runs the GUI's and the window's only with AWB_ASAN_GUI=1.
+    if a.kind == "asan" and os.environ.get("AWB_ASAN_GUI", "0") != "1":
+        expected = {t for t in expected if not re.match(r"(gui|i18n)_", t)}
     if a.log:
         text = pathlib.Path(a.log).read_text(errors="replace")
         m = re.findall(r"tests passed, (\d+) tests? failed out of (\d+)", text)
