@@ -10330,7 +10330,7 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     </message>
     <message>
         <source>%1 is a defective eigenvalue (a Jordan block) among the two largest: Reif&apos;s criterion takes them diagonalizable (not decided)</source>
-        <translation>%1 je defektní vlastní číslo (Jordanův blok) mezi dvěma největšími: Reifovo kritérium předpokládá diagonalizovatelnost (nerozhodnuto)</translation>
+        <translation type="vanished">%1 je defektní vlastní číslo (Jordanův blok) mezi dvěma největšími: Reifovo kritérium předpokládá diagonalizovatelnost (nerozhodnuto)</translation>
     </message>
     <message>
         <source>lambda2 = lambda3 = %1: the tangent plane is not determined by the two largest</source>
@@ -10355,6 +10355,22 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
     <message>
         <source>%1: %2 hole tags name a face made a hole before</source>
         <translation>%1: %2 značek díry jmenuje stěnu, která již díra je</translation>
+    </message>
+    <message>
+        <source>lambda1 = lambda2 = %1 is a Jordan block: the rings shear, and Reif&apos;s criterion holds for the map of its eigenvector and generalized eigenvector</source>
+        <translation>lambda1 = lambda2 = %1 je Jordanův blok: prstence se zkosí a Reifovo kritérium platí pro zobrazení jeho vlastního a zobecněného vlastního vektoru</translation>
+    </message>
+    <message>
+        <source>lambda1 = lambda2 = %1 has two eigenvectors and a Jordan chain: the normal and the rings follow the map of the two eigenvectors</source>
+        <translation>lambda1 = lambda2 = %1 má dva vlastní vektory a Jordanův řetězec: normála i prstence se řídí zobrazením obou vlastních vektorů</translation>
+    </message>
+    <message>
+        <source>lambda2 = %1 is a Jordan block: its chain&apos;s top term k lambda2^k dominates, and Reif&apos;s criterion holds for the map of the eigenvectors of lambda1 and of the chain&apos;s top</source>
+        <translation>lambda2 = %1 je Jordanův blok: převládá člen k lambda2^k vrcholu jeho řetězce a Reifovo kritérium platí pro zobrazení vlastních vektorů lambda1 a vrcholu řetězce</translation>
+    </message>
+    <message>
+        <source>%1 is a defective eigenvalue with a Jordan chain longer than two, or more than one chain: Reif&apos;s criterion is not decided there</source>
+        <translation>%1 je defektní vlastní číslo s Jordanovým řetězcem delším než dva, nebo s více řetězci: Reifovo kritérium zde není rozhodnuto</translation>
     </message>
 </context>
 <context>

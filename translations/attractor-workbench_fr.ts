@@ -10317,7 +10317,7 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     </message>
     <message>
         <source>%1 is a defective eigenvalue (a Jordan block) among the two largest: Reif&apos;s criterion takes them diagonalizable (not decided)</source>
-        <translation>%1 est une valeur propre défective (un bloc de Jordan) parmi les deux plus grandes : le critère de Reif les suppose diagonalisables (non décidé)</translation>
+        <translation type="vanished">%1 est une valeur propre défective (un bloc de Jordan) parmi les deux plus grandes : le critère de Reif les suppose diagonalisables (non décidé)</translation>
     </message>
     <message>
         <source>lambda2 = lambda3 = %1: the tangent plane is not determined by the two largest</source>
@@ -10342,6 +10342,22 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
     <message>
         <source>%1: %2 hole tags name a face made a hole before</source>
         <translation>%1 : %2 étiquettes de trou nomment une face déjà trouée</translation>
+    </message>
+    <message>
+        <source>lambda1 = lambda2 = %1 is a Jordan block: the rings shear, and Reif&apos;s criterion holds for the map of its eigenvector and generalized eigenvector</source>
+        <translation>lambda1 = lambda2 = %1 est un bloc de Jordan : les anneaux se cisaillent, et le critère de Reif vaut pour l&apos;application de son vecteur propre et de son vecteur propre généralisé</translation>
+    </message>
+    <message>
+        <source>lambda1 = lambda2 = %1 has two eigenvectors and a Jordan chain: the normal and the rings follow the map of the two eigenvectors</source>
+        <translation>lambda1 = lambda2 = %1 a deux vecteurs propres et une chaîne de Jordan : la normale et les anneaux suivent l&apos;application des deux vecteurs propres</translation>
+    </message>
+    <message>
+        <source>lambda2 = %1 is a Jordan block: its chain&apos;s top term k lambda2^k dominates, and Reif&apos;s criterion holds for the map of the eigenvectors of lambda1 and of the chain&apos;s top</source>
+        <translation>lambda2 = %1 est un bloc de Jordan : le terme k lambda2^k du sommet de sa chaîne domine, et le critère de Reif vaut pour l&apos;application des vecteurs propres de lambda1 et du sommet de la chaîne</translation>
+    </message>
+    <message>
+        <source>%1 is a defective eigenvalue with a Jordan chain longer than two, or more than one chain: Reif&apos;s criterion is not decided there</source>
+        <translation>%1 est une valeur propre défective avec une chaîne de Jordan de longueur supérieure à deux, ou plusieurs chaînes : le critère de Reif n&apos;y est pas décidé</translation>
     </message>
 </context>
 <context>

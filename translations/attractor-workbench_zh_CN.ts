@@ -10304,7 +10304,7 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     </message>
     <message>
         <source>%1 is a defective eigenvalue (a Jordan block) among the two largest: Reif&apos;s criterion takes them diagonalizable (not decided)</source>
-        <translation>%1 是两个最大特征值中的亏损特征值（若尔当块）：Reif 判据假定其可对角化（未判定）</translation>
+        <translation type="vanished">%1 是两个最大特征值中的亏损特征值（若尔当块）：Reif 判据假定其可对角化（未判定）</translation>
     </message>
     <message>
         <source>lambda2 = lambda3 = %1: the tangent plane is not determined by the two largest</source>
@@ -10329,6 +10329,22 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
     <message>
         <source>%1: %2 hole tags name a face made a hole before</source>
         <translation>%1：%2 个孔标签指向之前已设为孔的面</translation>
+    </message>
+    <message>
+        <source>lambda1 = lambda2 = %1 is a Jordan block: the rings shear, and Reif&apos;s criterion holds for the map of its eigenvector and generalized eigenvector</source>
+        <translation>lambda1 = lambda2 = %1 是一个若尔当块：环发生剪切，Reif 判据对其特征向量与广义特征向量构成的映射成立</translation>
+    </message>
+    <message>
+        <source>lambda1 = lambda2 = %1 has two eigenvectors and a Jordan chain: the normal and the rings follow the map of the two eigenvectors</source>
+        <translation>lambda1 = lambda2 = %1 有两个特征向量和一条若尔当链：法向与环由两个特征向量构成的映射决定</translation>
+    </message>
+    <message>
+        <source>lambda2 = %1 is a Jordan block: its chain&apos;s top term k lambda2^k dominates, and Reif&apos;s criterion holds for the map of the eigenvectors of lambda1 and of the chain&apos;s top</source>
+        <translation>lambda2 = %1 是一个若尔当块：其链顶项 k lambda2^k 占主导，Reif 判据对 lambda1 的特征向量与链顶特征向量构成的映射成立</translation>
+    </message>
+    <message>
+        <source>%1 is a defective eigenvalue with a Jordan chain longer than two, or more than one chain: Reif&apos;s criterion is not decided there</source>
+        <translation>%1 是亏损特征值，其若尔当链长于二或不止一条：此处 Reif 判据无法判定</translation>
     </message>
 </context>
 <context>

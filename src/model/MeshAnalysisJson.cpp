@@ -66,6 +66,8 @@ QJsonObject kindJson(const ExtraordinaryVertex &e, MeshScheme scheme)
                           {"curvature", QString::fromStdString(v.curvature)}};
             if (!v.reason.empty())
                 j["reason"] = QString::fromStdString(v.reason);
+            if (!v.chain.empty())
+                j["jordan"] = QString::fromStdString(v.chain);
             sectors.append(j);
         }
         o["sectors"] = sectors;

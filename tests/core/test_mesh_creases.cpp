@@ -150,6 +150,7 @@ private slots:
     void polesOfValence360();
     void smoothStarThroughTheSectorPathIsTheInteriorAnalysis();
     void sharpVerticesSectorBySector();
+    void jordanBlocksAreDecided();
     void repeatedTagsKeepTheLastAsOpenSubdiv();
 };
 
@@ -463,6 +464,81 @@ void TestMeshCreases::sharpVerticesSectorBySector()
         }
     }
     QVERIFY2(checked >= 20, qPrintable(QString::number(checked)));
+}
+
+void TestMeshCreases::jordanBlocksAreDecided()
+{
+    // At sharp vertices a sector's own matrix is often defective (the crease's 1/2 meets the
+    // sector's 1/2, a 1/4 the crease's 1/4). Read by the shear argument (VertexSpectrum.cpp,
+    // readPair; docs/mathematics.md), every canonical crease, dart, corner and boundary star of
+    // valence 3 to 8 gets a verdict, both schemes.
+    const auto star = [](int n, bool boundary, std::vector<int> sharp, bool corner) {
+        SharpNeighbourhood s{n, boundary, std::vector<char>(std::size_t(n), 0), corner};
+        for (int k : sharp)
+            s.sharpEdges[std::size_t(k)] = 1;
+        return s;
+    };
+    int chains = 0;
+    for (MeshScheme scheme : {MeshScheme::CatmullClark, MeshScheme::Loop})
+        for (int n = 3; n <= 8; ++n)
+            for (const SharpNeighbourhood &s :
+                 {star(n, false, {0, n / 2}, false), star(n, false, {0}, false),
+                  star(n, false, {0, n / 2}, true), star(n, true, {0, n - 1}, false)}) {
+                const SharpVertexSpectrum v = sharpVertexSpectrum(scheme, s);
+                QVERIFY2(v.c1.has_value(), qPrintable(QString("valence %1").arg(n)));
+                for (const SectorVerdict &sector : v.sectors) {
+                    QVERIFY(sector.decided);
+                    chains += !sector.chain.empty();
+                }
+            }
+    QVERIFY2(chains >= 15, qPrintable(QString::number(chains)));  // 17 on x86-64
+
+    const struct {
+        MeshScheme scheme;
+        SharpNeighbourhood star;
+        int sector;
+        double lambda1, lambda2, mu;
+        bool chain, c1;
+        const char *reason;
+    } cases[] = {
+        // A chain at lambda2 < lambda1: the one-face side of a Catmull-Clark crease of valence 3
+        // (1/4 defective) and the Catmull-Clark boundary of valence 5 (1/2 defective, the
+        // boundary curve's and the sector's): C1 on the map of the two eigenvectors.
+        {MeshScheme::CatmullClark, star(3, false, {0, 1}, false), 0, 0.5, 0.25, 0.125, true, true, ""},
+        {MeshScheme::CatmullClark, star(5, true, {0, 4}, false), 0, 0.6111165, 0.5, 0.3657123, true,
+         true, ""},
+        {MeshScheme::CatmullClark, star(8, false, {0, 4}, false), 0, 0.6111165, 0.5, 0.3657123,
+         true, true, ""},
+        // lambda1 = lambda2 = 1/2 with two eigenvectors (the two crease tangents) and a chain:
+        // the Catmull-Clark corner sectors of two faces; the one-face sector has none.
+        {MeshScheme::CatmullClark, star(4, false, {0, 2}, true), 0, 0.5, 0.5, 0.25, true, true, ""},
+        {MeshScheme::CatmullClark, star(3, false, {0, 1}, true), 0, 0.5, 0.5, 0.25, false, true, ""},
+        // Three eigenvectors at 1/2 (the two crease tangents and the sector's own): a corner's
+        // sector has no determined tangent plane.
+        {MeshScheme::CatmullClark, star(6, false, {0, 3}, true), 0, 0.5796823, 0.5, 0.4100971, false,
+         false, "lambda2 = lambda3"},
+        // Loop's boundary of valence 7: a chain at 1/2 below 0.5915, and the map of the two
+        // eigenvectors folds.
+        {MeshScheme::Loop, star(7, true, {0, 6}, false), 0, 0.5915064, 0.5, 0.375, true, false,
+         "not regular"},
+    };
+    for (const auto &c : cases) {
+        const SharpVertexSpectrum v = sharpVertexSpectrum(c.scheme, c.star);
+        const SectorVerdict &s = v.sectors.at(std::size_t(c.sector));
+        const QString what = QString("%1 valence %2: %3 %4 %5 (%6)")
+                                 .arg(c.scheme == MeshScheme::Loop ? "Loop" : "Catmull-Clark")
+                                 .arg(c.star.valence)
+                                 .arg(s.lambda1, 0, 'g', 8)
+                                 .arg(s.lambda2, 0, 'g', 8)
+                                 .arg(s.mu, 0, 'g', 8)
+                                 .arg(s.reason.c_str());
+        QVERIFY2(std::abs(s.lambda1 - c.lambda1) < 1e-5 && std::abs(s.lambda2 - c.lambda2) < 1e-5
+                     && std::abs(s.mu - c.mu) < 1e-5,
+                 qPrintable(what));
+        QVERIFY2(s.decided && s.c1() == c.c1, qPrintable(what));
+        QVERIFY2(s.chain.empty() != c.chain, qPrintable(what));
+        QVERIFY2(QString::fromStdString(s.reason).contains(c.reason), qPrintable(what));
+    }
 }
 
 void TestMeshCreases::repeatedTagsKeepTheLastAsOpenSubdiv()

@@ -386,18 +386,17 @@ std::vector<VertexSpectrum> valenceSpectra(MeshScheme scheme, int from, int to)
 namespace {
 
 // The generalized eigenspace of `value`, of algebraic multiplicity m: the null space of
-// (S - value I)^m (its last m right singular vectors), ring x m; and whether the eigenvalue is
-// defective (fewer than m independent eigenvectors: a Jordan block).
-Mat generalizedSpace(const Mat &S, double value, int m, bool *defective)
+// (S - value I)^m (its last m right singular vectors), ring x m; and how many independent
+// eigenvectors it holds (fewer than m: a Jordan block).
+Mat generalizedSpace(const Mat &S, double value, int m, int *geometric)
 {
     const Mat shifted = S - value * Mat::Identity(S.rows(), S.cols());
     Eigen::JacobiSVD<Mat> once(shifted);
     const auto &sigma = once.singularValues();
     const double tol = 1e-7 * std::max(1.0, sigma(0));
-    int geometric = 0;
-    while (geometric < sigma.size() && sigma(sigma.size() - 1 - geometric) < tol)
-        ++geometric;
-    *defective = geometric < m;
+    *geometric = 0;
+    while (*geometric < sigma.size() && sigma(sigma.size() - 1 - *geometric) < tol)
+        ++*geometric;
     Mat power = shifted;
     for (int k = 1; k < m; ++k)
         power = power * shifted;
@@ -405,21 +404,154 @@ Mat generalizedSpace(const Mat &S, double value, int m, bool *defective)
     return svd.matrixV().rightCols(m);
 }
 
-// The combinations of `basis`'s columns that vary most on `rows`: its restriction's right
-// singular vectors, the largest first, as long as they are not zero there.
-Mat seenOn(const Mat &basis, const std::vector<int> &rows, int most)
+// The eigenvectors of the real eigenvalue `value`, k of them: the last k right singular
+// vectors of S - value I.
+Mat eigenvectorsOf(const Mat &S, double value, int k)
 {
-    if (basis.cols() == 0)
-        return Mat(basis.rows(), 0);
-    Mat restricted(Eigen::Index(rows.size()), basis.cols());
-    for (std::size_t r = 0; r < rows.size(); ++r)
-        restricted.row(Eigen::Index(r)) = basis.row(rows[r]);
-    Eigen::JacobiSVD<Mat> svd(restricted, Eigen::ComputeFullV);
-    const auto &sigma = svd.singularValues();
-    Eigen::Index k = 0;
-    while (k < sigma.size() && k < most && sigma(k) > 1e-6)
-        ++k;
-    return basis * svd.matrixV().leftCols(k);
+    Eigen::JacobiSVD<Mat> svd(S - value * Mat::Identity(S.rows(), S.cols()), Eigen::ComputeFullV);
+    return svd.matrixV().rightCols(k);
+}
+
+// The eigenvector at the top of the one Jordan chain of a generalized eigenspace `space` (of
+// the real eigenvalue `value`): (S - value I) maps the space onto it.
+Vec chainTop(const Mat &S, double value, const Mat &space)
+{
+    const Mat image = S * space - value * space;
+    Eigen::JacobiSVD<Mat> svd(image, Eigen::ComputeThinU);
+    return svd.matrixU().col(0);
+}
+
+// A distinct eigenvalue of S below 1 in modulus (and not 0): its algebraic multiplicity, its
+// independent eigenvectors, and for a real one its generalized eigenspace.
+struct Cluster {
+    Complex value;
+    Mat space;
+    int multiplicity = 1;
+    int geometric = 1;
+    bool real() const { return value.imag() == 0.0; }
+    bool defective() const { return geometric < multiplicity; }
+};
+
+// The clusters of S, largest modulus first. A defective eigenvalue comes out of the eigensolver
+// split by up to eps^(1/3) (a triple 1/4 as 1/4 +- 7e-9 i): values within 1e-5 are one cluster,
+// at their mean, real when its imaginary part is below 1e-5, its algebraic multiplicity the
+// count. The dominant eigenvalue 1 (the limit position) is left out.
+std::vector<Cluster> eigenClusters(const Mat &S)
+{
+    const Spectrum sp = spectrum(S, 1e-9);
+    const double near = 1e-5;
+    std::vector<Cluster> clusters;
+    for (std::size_t k = 0; k < sp.values.size();) {
+        std::size_t end = k + 1;
+        Complex sum = sp.values[k];
+        while (end < sp.values.size() && std::abs(sp.values[end] - sp.values[k]) < near)
+            sum += sp.values[end++];
+        Complex value = sum / double(end - k);
+        const int multiplicity = int(end - k);
+        k = end;
+        if (std::abs(value.imag()) < near)
+            value = value.real();
+        if (std::abs(value - 1.0) < near)
+            continue;
+        if (std::abs(value) < 1e-12)
+            break;
+        Cluster c{value, Mat(), multiplicity, multiplicity};
+        if (c.real())
+            c.space = generalizedSpace(S, value.real(), multiplicity, &c.geometric);
+        clusters.push_back(std::move(c));
+    }
+    return clusters;
+}
+
+// What a sector's two largest eigenvalues below 1 say (Reif 1995; the Jordan blocks by the
+// shear argument of Peters and Reif 2008), from the clusters of the sector's own matrix. The
+// limit's ring at level k is sum_j lambda_j^k psi_j c_j, and a Jordan chain v, w (S w = lambda
+// w + v) adds k lambda^(k-1) psi_v c_w. So (docs/mathematics.md, "Jordan blocks"):
+//   - lambda1 > lambda2, each simple, or lambda1 = lambda2 with two eigenvectors: Reif's
+//     criterion on the two eigenvectors;
+//   - a chain at lambda2 < lambda1: the top term k lambda2^(k-1) psi_v c_w of its one chain
+//     dominates lambda2's others, the tangent plane converges (as 1/k) and the scaled rings
+//     tend to the map of v1 and the chain's top eigenvector v;
+//   - lambda1 = lambda2 with one eigenvector, a chain of two: the ring is lambda^k (psi_v (c_v
+//     + k/lambda c_w) + psi_w c_w); in the plane of c_v, c_w its coordinates are the map
+//     (psi_v, psi_w) sheared by k / lambda, a linear map of determinant 1: the criterion on the
+//     eigenvector and the generalized eigenvector;
+//   - lambda1 = lambda2 with two eigenvectors and one chain of two: the normal is c_w x c_a
+//     (the c_v terms cancel) and the scaled rings tend to the map of the two eigenvectors;
+//   - lambda2 = lambda3 with independent eigenvectors and no chain: the tangent plane is not
+//     determined (not C1 for generic data);
+//   - longer chains, or more than one: not decided.
+struct PairVerdict {
+    double lambda1 = 0.0, lambda2 = 0.0, mu = 0.0;
+    bool real = false, separated = false, decided = true;
+    std::string chain;  // how a Jordan chain was read, or ""
+    Mat plane;          // rows x 2: the two vectors of the map, when real and separated
+};
+
+PairVerdict readPair(const Mat &S, const std::vector<Cluster> &clusters)
+{
+    PairVerdict p;
+    if (clusters.empty())
+        return p;
+    const Cluster &a = clusters[0];
+    const Cluster *b = a.multiplicity >= 2 ? &a : clusters.size() > 1 ? &clusters[1] : nullptr;
+    if (!b)
+        return p;
+    p.lambda1 = std::abs(a.value);
+    p.lambda2 = std::abs(b->value);
+    // mu: the largest modulus below lambda2.
+    for (const Cluster &c : clusters)
+        if (std::abs(c.value) < p.lambda2 - 1e-7) {
+            p.mu = std::abs(c.value);
+            break;
+        }
+    p.real = a.real() && b->real() && a.value.real() > 0 && b->value.real() > 0;
+    if (!p.real)
+        return p;
+    const int chains = b->multiplicity - b->geometric;  // generalized vectors beyond the eigenvectors
+    p.plane.resize(S.rows(), 2);
+    if (b == &a) {  // lambda1 = lambda2 = lambda
+        const double lambda = a.value.real();
+        if (a.geometric == 2 && chains <= 1) {
+            p.plane = eigenvectorsOf(S, lambda, 2);
+        } else if (a.geometric == 1 && a.multiplicity == 2) {
+            p.plane = a.space;  // the eigenvector and its chain's next
+        } else {
+            p.decided = chains == 0;  // three or more eigenvectors: lambda2 = lambda3
+            return p;
+        }
+        p.separated = true;
+        if (chains > 0)
+            p.chain = formatMessage(
+                a.geometric == 1
+                    ? coreTranslate("awb::mesh", "lambda1 = lambda2 = %1 is a Jordan block: the "
+                                                 "rings shear, and Reif's criterion holds for "
+                                                 "the map of its eigenvector and generalized "
+                                                 "eigenvector")
+                    : coreTranslate("awb::mesh", "lambda1 = lambda2 = %1 has two eigenvectors "
+                                                 "and a Jordan chain: the normal and the rings "
+                                                 "follow the map of the two eigenvectors"),
+                streamedNumber(p.lambda1));
+        return p;
+    }
+    // lambda1 simple; lambda2's one chain, if any, in charge through its top.
+    const double lambda2 = b->value.real();
+    if (b->geometric > 1 && chains != 1) {
+        p.decided = chains == 0;  // lambda2 = lambda3 with independent eigenvectors
+        return p;
+    }
+    p.separated = true;
+    p.plane.col(0) = eigenvectorsOf(S, a.value.real(), 1);
+    p.plane.col(1) = b->geometric == 1 ? Vec(eigenvectorsOf(S, lambda2, 1))
+                                       : chainTop(S, lambda2, b->space);
+    if (chains > 0)
+        p.chain = formatMessage(
+            coreTranslate("awb::mesh", "lambda2 = %1 is a Jordan block: its chain's top term "
+                                       "k lambda2^k dominates, and Reif's criterion holds for the "
+                                       "map of the eigenvectors of lambda1 and of the chain's "
+                                       "top"),
+            streamedNumber(p.lambda2));
+    return p;
 }
 
 } // namespace
@@ -469,41 +601,7 @@ SharpVertexSpectrum sharpVertexSpectrum(MeshScheme scheme, const SharpNeighbourh
     out.neighbourhood = star;
     out.rule = topology.rule(0);
     out.S = localMatrix(refinement, coarse, fine);
-    const Spectrum sp = spectrum(out.S, 1e-9);
-    out.eigenvalues = sp.values;
-    // The distinct eigenvalues below 1 and their eigenspaces (complex ones: no space, counted
-    // in every sector).
-    const double tol = 1e-9;
-    struct Cluster {
-        Complex value;
-        Mat space;             // the generalized eigenspace (real values)
-        int multiplicity = 1;  // algebraic
-        bool defective = false;
-    };
-    std::vector<Cluster> clusters;
-    // A defective eigenvalue comes out of the eigensolver split by up to eps^(1/3) (a triple
-    // 1/4 as 1/4 +- 7e-9 i): values within 1e-5 are one cluster, at their mean, real when
-    // its imaginary part is below 1e-5, its algebraic multiplicity the count.
-    const double near = 1e-5;
-    for (std::size_t k = 0; k < sp.values.size();) {
-        std::size_t end = k + 1;
-        Complex sum = sp.values[k];
-        while (end < sp.values.size() && std::abs(sp.values[end] - sp.values[k]) < near)
-            sum += sp.values[end++];
-        Complex value = sum / double(end - k);
-        const int multiplicity = int(end - k);
-        k = end;
-        if (std::abs(value.imag()) < near)
-            value = value.real();
-        if (std::abs(value - 1.0) < near)
-            continue;  // the dominant eigenvalue: the limit position
-        if (std::abs(value) < 1e-12)
-            break;
-        Cluster c{value, Mat(), multiplicity};
-        if (value.imag() == 0.0)
-            c.space = generalizedSpace(out.S, value.real(), multiplicity, &c.defective);
-        clusters.push_back(std::move(c));
-    }
+    out.eigenvalues = spectrum(out.S, 1e-9).values;
     // The sectors: runs of faces between sharp spokes.
     std::vector<int> cuts;
     for (int k = 0; k < spokes; ++k)
@@ -522,6 +620,7 @@ SharpVertexSpectrum sharpVertexSpectrum(MeshScheme scheme, const SharpNeighbourh
         }
     }
     const std::vector<std::pair<int, int>> perSector = ringSector(scheme);
+    const double tol = 1e-9;
     bool failed = false, undecided = false;
     int worst = -1;  // the worst curvature verdict: 0 zero, 1 bounded, 2 unbounded
     for (const auto &[first, count] : runs) {
@@ -539,66 +638,47 @@ SharpVertexSpectrum sharpVertexSpectrum(MeshScheme scheme, const SharpNeighbourh
                 rows.insert(column.at(s.id(k, 0, j)));
         }
         const std::vector<int> sectorRows(rows.begin(), rows.end());
-        // The sector's eigenvalues, each as often as its eigenvectors are independent there.
-        // (A defective eigenvalue, whose Jordan chain adds k lambda^k terms, is marked.)
-        std::vector<std::pair<Complex, Mat>> seen;
-        std::vector<char> defective;
-        for (const Cluster &c : clusters) {
-            if (c.space.cols() == 0) {  // complex: taken as seen
-                seen.push_back({c.value, Mat()});
-                defective.push_back(0);
-                continue;
+        // The sector's points one level finer are combinations of its own (the creases that
+        // bound it follow their curve rule): its own matrix, whose eigenvalues are those seen
+        // on it, and whose Jordan blocks are its own.
+        const auto r = Eigen::Index(sectorRows.size());
+        Mat sectorS(r, r);
+        double outside = 0.0;
+        for (Eigen::Index i = 0; i < r; ++i) {
+            double all = 0.0;
+            for (Eigen::Index j = 0; j < r; ++j) {
+                sectorS(i, j) = out.S(sectorRows[std::size_t(i)], sectorRows[std::size_t(j)]);
+                all += std::abs(sectorS(i, j));
             }
-            const Mat vectors = seenOn(c.space, sectorRows, 3);
-            for (Eigen::Index k = 0; k < vectors.cols(); ++k) {
-                seen.push_back({c.value, vectors.col(k)});
-                defective.push_back(c.defective);
-            }
-            if (seen.size() >= 4)
-                break;
+            outside = std::max(outside, out.S.row(sectorRows[std::size_t(i)]).cwiseAbs().sum() - all);
         }
-        const auto real = [&](std::size_t k) {
-            return k < seen.size() && seen[k].second.size() > 0 && seen[k].first.real() > tol;
-        };
-        if (seen.size() >= 2) {
-            v.lambda1 = std::abs(seen[0].first);
-            v.lambda2 = std::abs(seen[1].first);
-        }
-        for (std::size_t k = 2; k < seen.size(); ++k)
-            if (std::abs(seen[k].first) < v.lambda2 - 1e-7) {
-                v.mu = std::abs(seen[k].first);
-                break;
-            }
-        const bool separated =
-            seen.size() < 3 || std::abs(seen[2].first) < v.lambda2 - 1e-7;
-        // A Jordan block at lambda1 > lambda2 (or at lambda2 alone) multiplies its term by k:
-        // the char map of the two eigenvectors still describes the limit. At lambda1 = lambda2
-        // the criterion does not apply: not decided.
-        // Likewise lambda2 = lambda3 inside a Jordan block: its chain's top term k lambda^k
-        // dominates the others, so the moduli alone do not separate them.
-        v.decided = !(seen.size() >= 2 && std::abs(seen[0].first - seen[1].first) < near
-                      && defective[0])
-                    && !(seen.size() >= 3 && std::abs(seen[1].first - seen[2].first) < near
-                         && defective[1]);
-        v.spectral = real(0) && real(1) && separated;
-        if (!real(0) || !real(1))
+        if (outside > 1e-12)
+            throw std::logic_error("sharpVertexSpectrum: a sector's points depend on others");
+        const PairVerdict pair = readPair(sectorS, eigenClusters(sectorS));
+        v.lambda1 = pair.lambda1;
+        v.lambda2 = pair.lambda2;
+        v.mu = pair.mu;
+        v.decided = pair.decided;
+        v.chain = pair.chain;
+        v.spectral = pair.real && pair.separated;
+        if (!pair.real)
             v.reason = coreTranslate("awb::mesh", "its largest eigenvalues below 1 are not "
                                                   "real and positive");
         else if (!v.decided)
             v.reason = formatMessage(
-                coreTranslate("awb::mesh", "%1 is a defective eigenvalue (a Jordan block) among "
-                                           "the two largest: Reif's criterion takes them "
-                                           "diagonalizable (not decided)"),
+                coreTranslate("awb::mesh", "%1 is a defective eigenvalue with a Jordan chain "
+                                           "longer than two, or more than one chain: Reif's "
+                                           "criterion is not decided there"),
                 streamedNumber(v.lambda2));
-        else if (!separated)
+        else if (!pair.separated)
             v.reason = formatMessage(
                 coreTranslate("awb::mesh", "lambda2 = lambda3 = %1: the tangent plane is not "
                                            "determined by the two largest"),
                 streamedNumber(v.lambda2));
         if (v.spectral) {
-            Mat Q(m, 2);
-            Q.col(0) = seen[0].second.col(0);
-            Q.col(1) = seen[1].second.col(0);
+            Mat Q = Mat::Zero(m, 2);
+            for (Eigen::Index i = 0; i < r; ++i)
+                Q.row(sectorRows[std::size_t(i)]) = pair.plane.row(i);
             v.map = characteristicMapOn(s, scheme, tags, coarse, Q, chosen);
             v.regular = v.map.regular();
             v.injective = v.map.injective();

@@ -103,20 +103,26 @@ struct SharpNeighbourhood {
 
 // Reif's criterion sector by sector (Zorin 2000; Biermann, Levin and Zorin 2000): a sector is a
 // run of faces between two sharp edges, or the whole disk around an interior vertex with fewer
-// than two. Its eigenvalues are those of S whose eigenvectors do not vanish on it: the limit
-// there is C1 for generic data (up to the creases, which are the sector's boundary) when the
-// two largest below 1 are real and positive, lambda1 >= lambda2 > |lambda3|, and the
-// characteristic map of their eigenvectors is regular and injective on the sector (a wedge:
-// its boundary's image a simple curve). Curvature: mu against lambda2^2, as inside.
+// than two. Its points one level finer are combinations of its own, so it has its own matrix
+// (S on the sector's rows): the limit there is C1 for generic data (up to the creases, which
+// are the sector's boundary) when that matrix's two largest eigenvalues below 1 are real and
+// positive, lambda1 >= lambda2 > |lambda3|, and the characteristic map of their eigenvectors
+// is regular and injective on the sector (a wedge: its boundary's image a simple curve).
+// Jordan blocks (Peters and Reif 2008): a chain at lambda2 < lambda1 leaves the map of the two
+// eigenvectors in charge; a chain of two at lambda1 = lambda2 shears the rings, and the map of
+// its eigenvector and generalized eigenvector is the one checked (VertexSpectrum.cpp,
+// readPair). Curvature: mu against lambda2^2, as inside.
 struct SectorVerdict {
     int firstFace = 0;  // in ring order
     int faces = 0;
     double lambda1 = 0.0, lambda2 = 0.0, mu = 0.0;
     bool spectral = false, regular = false, injective = false;
-    // False where lambda1 = lambda2 has a Jordan block (the criterion does not apply).
+    // False where the criterion does not apply: a longer chain at lambda1 = lambda2, or a chain
+    // beside a second eigenvector of the same value.
     bool decided = true;
     bool c1() const { return decided && spectral && regular && injective; }
     std::string reason;     // why not C1, or ""
+    std::string chain;      // how a Jordan block among the two largest was read, or ""
     std::string curvature;  // "zero", "bounded", "unbounded"
     CharacteristicMap map;  // when spectral
 };

@@ -212,6 +212,8 @@ QString VertexPanel::verdictHtml(const ExtraordinaryVertex &e, MeshScheme scheme
             line += v.c1()       ? tr("; C¹, curvature %1").arg(curvature)
                     : v.decided ? tr("; not C¹: %1").arg(QString::fromStdString(v.reason))
                                 : tr("; %1").arg(QString::fromStdString(v.reason));
+            if (!v.chain.empty())
+                line += QStringLiteral(" (%1)").arg(QString::fromStdString(v.chain));
             html += QStringLiteral("<li>%1 %2</li>").arg(mark(v.c1()), line.toHtmlEscaped());
         }
         html += QStringLiteral("</ul><p><b>%1</b></p>")
