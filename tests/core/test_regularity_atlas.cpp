@@ -12,6 +12,7 @@
 #include <QtTest>
 
 #include "TestMain.h"
+#include "TestTime.h"
 
 #include <algorithm>
 #include <cmath>
@@ -93,6 +94,7 @@ class TestRegularityAtlas : public QObject {
 private slots:
     void fourPointC1Region()
     {
+        AWB_SKIP_WITHOUT_THREADS();
         AtlasOptions o;
         o.smoothness = 1;
         o.tolerance = 1e-6;
@@ -137,6 +139,7 @@ private slots:
 
     void sixPointPlane()
     {
+        AWB_SKIP_WITHOUT_THREADS();
         AtlasOptions o;
         o.smoothness = 1;
         o.refineLevels = 1;
@@ -193,6 +196,7 @@ private slots:
 
     void dubucDeslauriersIsC2()
     {
+        AWB_SKIP_WITHOUT_THREADS();
         AtlasOptions o;
         o.smoothness = 2;
         const AtlasRow r = evaluateAtlasPoint(sixPoint, {-25.0 / 256, 3.0 / 256}, o);
