@@ -30,6 +30,17 @@ QString schemeName(MeshScheme scheme)
                                       : VertexPanel::tr("Catmull–Clark");
 }
 
+// The core's messages name eigenvalues in ASCII ("lambda2 = lambda3"): here, in the panel's
+// own letters.
+QString greek(const std::string &message)
+{
+    QString text = QString::fromStdString(message);
+    for (const auto &[ascii, letter] : {std::pair{"lambda1", "λ₁"}, std::pair{"lambda2", "λ₂"},
+                                        std::pair{"lambda3", "λ₃"}})
+        text.replace(QLatin1String(ascii), QString::fromUtf8(letter));
+    return text;
+}
+
 QString mark(bool ok)
 {
     return ok ? QStringLiteral("<span style='color:#1a7f1a'>✓</span>")
@@ -210,10 +221,10 @@ QString VertexPanel::verdictHtml(const ExtraordinaryVertex &e, MeshScheme scheme
                                       : v.curvature == "bounded" ? tr("bounded (μ = λ₂²)")
                                                                  : tr("unbounded (μ > λ₂²)");
             line += v.c1()       ? tr("; C¹, curvature %1").arg(curvature)
-                    : v.decided ? tr("; not C¹: %1").arg(QString::fromStdString(v.reason))
-                                : tr("; %1").arg(QString::fromStdString(v.reason));
+                    : v.decided ? tr("; not C¹: %1").arg(greek(v.reason))
+                                : tr("; %1").arg(greek(v.reason));
             if (!v.chain.empty())
-                line += QStringLiteral(" (%1)").arg(QString::fromStdString(v.chain));
+                line += QStringLiteral(" (%1)").arg(greek(v.chain));
             html += QStringLiteral("<li>%1 %2</li>").arg(mark(v.c1()), line.toHtmlEscaped());
         }
         html += QStringLiteral("</ul><p><b>%1</b></p>")
