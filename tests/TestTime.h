@@ -32,7 +32,10 @@ inline constexpr bool kThreadSanitizer = AWB_TEST_TSAN;
 } // namespace awb::test
 
 // At the top of a test function that starts no thread (tests/CMakeLists.txt, AWB_THREADED_TESTS
-// labels whole files): skipped under ThreadSanitizer only.
+// labels whole files): skipped under ThreadSanitizer only. Which functions start none was
+// measured as scripts/threaded-tests.py measures files, per function (`strace -f -e
+// trace=clone,clone3 build/tests/<layer>_tests <file> <function>`, no CLONE_THREAD); a function
+// whose code comes to start threads must lose the mark.
 #define AWB_SKIP_WITHOUT_THREADS()                                                               \
     do {                                                                                       \
         if (awb::test::kThreadSanitizer)                                                       \

@@ -23,6 +23,7 @@
 #include "BlockCompare.h"
 #include "Flam3Judge.h"
 #include "TestMain.h"
+#include "TestTime.h"
 
 #include "CliRunner.h"
 
@@ -91,6 +92,7 @@ void TestFlameCli::initTestCase()
 
 void TestFlameCli::coefficientOrderPostAndMirror()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // x' = a x + b y + c, y' = d x + e y + f is written coefs="a d b e c f"; post the same.
     const QString flame = m_dir.filePath("order.flame");
     QVERIFY(put(flame, R"(<flame name="order" size="100 100" center="0 0" scale="30">
@@ -136,6 +138,7 @@ void TestFlameCli::coefficientOrderPostAndMirror()
 
 void TestFlameCli::finalXformConjugates()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // A final xform F (here x |-> 2x + (1, 0)) is drawn on every point: the picture is F(A),
     // the attractor of F f F^-1. For f = x/2 (fixed point 0) that is x/2 + (0.5, 0), whose
     // fixed point is F(0) = (1, 0); the second, x/2 + (0.5, 0), becomes x/2 + (1.5, 0).
@@ -157,6 +160,7 @@ void TestFlameCli::finalXformConjugates()
 
 void TestFlameCli::nonLinearVariationsAreNamed()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const QString flame = m_dir.filePath("vars.flame");
     QVERIFY(put(flame, R"(<flame name="vars">
   <xform weight="1" linear="1" coefs="0.5 0 0 0.5 0 0"/>
@@ -195,6 +199,7 @@ void TestFlameCli::nonLinearVariationsAreNamed()
 
 void TestFlameCli::symmetryAddsFlam3sXforms()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // kind = -3: the reflection x |-> -x (y up: the same), then the rotations by 120 and 240
     // degrees with cosines and sines rounded to 6 decimals, as flam3_add_symmetry.
     const QString flame = m_dir.filePath("sym.flame");
@@ -218,6 +223,7 @@ void TestFlameCli::symmetryAddsFlam3sXforms()
 
 void TestFlameCli::malformedFlames()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const QString flame = m_dir.filePath("bad.flame");
     QVERIFY(put(flame, R"(<flames>
 <flame name="good"><xform weight="1" linear="1" coefs="0.5 0 0 0.5 0 0"/>
@@ -357,6 +363,7 @@ void TestFlameCli::liveGenomeImports()
 
 void TestFlameCli::manyMapsAndNoAttractor()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // Ten xforms and symmetry kind -5 (a reflection and four rotations): 15 maps, whose
     // depth-8 deterministic iteration would make 2.6e9 images. The import picks the deepest
     // depth under 2^31 (7), so the project it writes is one the next command loads (a live
@@ -400,6 +407,7 @@ void TestFlameCli::manyMapsAndNoAttractor()
 
 void TestFlameCli::bundledGenomes()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // examples/flam3-linear-genomes.flame: the three genomes above in one file, each an item,
     // nothing lost; the analysis tells the two kinds of contraction apart.
     const QString project = m_dir.filePath("genomes.awb");

@@ -22,6 +22,7 @@
 #include "CliRunner.h"
 #include "Flam3Judge.h"
 #include "TestMain.h"
+#include "TestTime.h"
 
 #include <algorithm>
 
@@ -137,6 +138,7 @@ void TestFlameItem::realFlamesRenderAsFlam3Renders()
 
 void TestFlameItem::exportImportIsExact()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // A flame with xaos, post, a final xform and parametric variations: exported as flam3
     // writes it and imported again, the item is the same, number for number.
     const QString source = flamesDir() + "/xaos-2.flame";
@@ -163,6 +165,7 @@ void TestFlameItem::exportImportIsExact()
 
 void TestFlameItem::whatAFlameIsNot()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const QString project = m_dir.filePath("not.awb");
     QCOMPARE(run({"import", flamesDir() + "/genome-07.flame", "--out", project}), 0);
     const QString name = firstItem(project)["name"].toString();

@@ -13,6 +13,7 @@
 
 #include "TestFiles.h"
 #include "TestMain.h"
+#include "TestTime.h"
 
 #include "CliRunner.h"
 
@@ -116,6 +117,7 @@ void TestImportCli::importKeepsTheGoodEntries()
 
 void TestImportCli::bundledLibrary()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // examples/fractint-classics.ifs: every entry imports (exit 0), 2D and 3D.
     QByteArray out, err;
     const QString awb = m_dir.filePath("classics.awb");
@@ -151,6 +153,7 @@ void TestImportCli::bundledLibrary()
 
 void TestImportCli::exportRoundTrip()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const QString awb = m_dir.filePath("round.awb");
     QByteArray out, err;
     run({"import", write("round.ifs", library), "--out", awb}, &out, &err);
@@ -221,6 +224,7 @@ void TestImportCli::contractiveOnAverage()
 
 void TestImportCli::refusals()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     QByteArray out, err;
     QCOMPARE(run({"import", write("none.ifs", "; nothing\nonly {\n"), "--out",
                   m_dir.filePath("none.awb")},
@@ -281,6 +285,7 @@ void TestImportCli::refusals()
 
 void TestImportCli::legacyFilesAndLimits()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     QByteArray out, err;
     // Fractint 15's one-IFS files: bare rows, one entry named after the file.
     const QString fern = write("fern.ifs", "0 0 0 .16 0 0 .01\n.85 .04 -.04 .85 0 1.6 .85\n"

@@ -13,6 +13,7 @@
 #include <QtTest>
 
 #include "TestMain.h"
+#include "TestTime.h"
 
 #include "CliRunner.h"
 
@@ -69,6 +70,7 @@ void TestSurfacesCli::analyseReportsTheScheme_data()
 
 void TestSurfacesCli::analyseReportsTheScheme()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     QFETCH(QString, file);
     QFETCH(QString, scheme);
     QFETCH(int, maps);
@@ -111,6 +113,7 @@ void TestSurfacesCli::analyseReportsTheScheme()
 
 void TestSurfacesCli::pointsAreThreeDimensional()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     QByteArray out, err;
     QCOMPARE(run({"points", example("000-fig07-box-spline-hexagon.awb"), "--item",
                   "000 Fig. 7: box-spline hexagon from a triangle", "--depth", "2", "--csv"},
@@ -157,6 +160,7 @@ void TestSurfacesCli::pointsAreThreeDimensional()
 
 void TestSurfacesCli::plyIsReadByMeshio()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const QString python = debianPython();
     const QString ply = m_dir.filePath("fig9.ply");
     QByteArray out, err;
@@ -182,6 +186,7 @@ print(len(m.points), m.points.shape[1], ' '.join(map(str, maps)))
 
 void TestSurfacesCli::objIsReadByMeshioAndAssimp()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const QString obj = m_dir.filePath("fig6.obj");
     QByteArray out, err;
     QCOMPARE(run({"export", example("000-fig06-bicubic-patch.awb"), "--item",
@@ -206,6 +211,7 @@ print(len(m.points), sum(len(c.data) for c in m.cells))
 
 void TestSurfacesCli::matlabCellArrayOfTheBicubicPatch()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // The four 16 x 16 S_i of the bicubic patch (000 Fig. 6) for MATLAB's JSR toolbox: a cell
     // array of exact fractions -- the tensor products of the cubic B-spline's 1/8, 3/4, 1/2.
     const QString m = m_dir.filePath("fig6.m");
@@ -264,6 +270,7 @@ void TestSurfacesCli::renderDrawsTheSurface()
 
 void TestSurfacesCli::badOptions()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     QByteArray out, err;
     const QString fig6 = example("000-fig06-bicubic-patch.awb");
     QCOMPARE(run({"render", fig6, "--out", m_dir.filePath("x.png"), "--view", "10,120"}, &out,

@@ -9,6 +9,7 @@
 #include <QtTest>
 
 #include "TestMain.h"
+#include "TestTime.h"
 #include <algorithm>
 #include <map>
 #include <string>
@@ -62,6 +63,7 @@ void TestAttractors::convergesFromAnyStartSetAtEigenvalueRate_data()
 
 void TestAttractors::convergesFromAnyStartSetAtEigenvalueRate()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // 000 §2: "iteration on any compact set X0 would yield the same fractal". The Hausdorff
     // distance between F^k(X0) and the curve falls by the factor 1/lambda = 2 per level, where
     // lambda = 1/2 is the subdominant eigenvalue of S_1, S_2 (the largest of A_1, A_2).
@@ -98,6 +100,7 @@ void TestAttractors::convergesFromAnyStartSetAtEigenvalueRate()
 
 void TestAttractors::thesisExample362FromItsStartSet()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // 004 Example 3.6.2, Fig. 3.2: X0 = {[0,0],[1,4],[2,4],[4,0],[5,0]} converges to the
     // quadratic B-spline, which interpolates the fixed points (1/2, 2) and (6, -1/2).
     const Mat P = pts({{0, 0}, {1, 4}, {4, 4}, {5, -1}, {7, 0}});
@@ -112,6 +115,7 @@ void TestAttractors::thesisExample362FromItsStartSet()
 
 void TestAttractors::fourPointFromSegment()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // 000 Fig. 5: the four-point IFS from a line segment converges to the curve of classic
     // subdivision (no closed form: compare with 12 levels of classic subdivision, whose vertices
     // lie on the limit curve because the scheme interpolates).
@@ -137,6 +141,7 @@ void TestAttractors::fourPointFromSegment()
 
 void TestAttractors::bezierAnyDegreeAndSplit()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     for (int n : {2, 3, 5}) {
         for (double t : {0.5, 0.3}) {
             Mat P(n + 1, 2);
@@ -162,6 +167,7 @@ void TestAttractors::bezierAnyDegreeAndSplit()
 
 void TestAttractors::liftedStartPoint()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // 000 Fig. 2: "a random homogeneous point in five dimensions".
     const auto s = buildSubdivisionIfs(bsplineScheme(3), kFig2);
     const Mat X = attractorPoints(s, StartSet::points(s.toIfsSpace(pts({{9, -4, 3, 7, 1}}))), 14);
@@ -170,6 +176,7 @@ void TestAttractors::liftedStartPoint()
 
 void TestAttractors::chaosGameLiesOnCurveWithAddresses()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const UniformScheme cubic = bsplineScheme(3);
     const auto s = buildSubdivisionIfs(cubic, kFig2);
     const Mat exact = *cubic.exactCurve(kFig2, 20000);
@@ -227,6 +234,7 @@ void TestAttractors::parallelEqualsSerial()
 // chord of one piece, so consecutive images share their end points: f_w(P_3) = f_{w+1}(P_0).
 void TestAttractors::iterateAlongFollowsTheCurve()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const auto s = buildSubdivisionIfs(BezierScheme(3), pts({{0, 0}, {1, 3}, {4, 3}, {5, 0}}));
     // The chord between the lifted end points P_0 and P_3: rows of the lifted control points
     // without their last (homogeneous, all ones) column.
@@ -306,6 +314,7 @@ void TestAttractors::rasterIsFilledAndDeterministic()
 
 void TestAttractors::unionOfTwoBeziers()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // 000 §2.2, Fig. 4: block IFS of two quadratic Bézier curves; start point
     // (2, 3/2, 1, 2, 3/2, 1): each component gets (2, 3/2) with its homogeneous 1.
     const Mat P = pts({{0, 0}, {1, 2}, {2, 0}});
@@ -334,6 +343,7 @@ void TestAttractors::unionOfTwoBeziers()
 
 void TestAttractors::singularControlPointsUseBarycentricForm()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // The last three control points are collinear: P is singular (NOTES.md), the attractor is
     // computed in barycentric form and is still the B-spline curve.
     const Mat P = pts({{0, 0}, {1, 3}, {2, 1}, {3, 2}, {4, 3}});
@@ -365,6 +375,7 @@ void TestAttractors::singularControlPointsUseBarycentricForm()
 
 void TestAttractors::contractionOnAverage()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // x -> 1.2 x (probability p) and x -> 0.3 x + 1 (1 - p): the first map does not contract,
     // but random iteration does when p log 1.2 + (1 - p) log 0.3 < 0 (Barnsley-Elton 1988):
     // the Lyapunov exponent along the orbit is that mean, within its sampling error.
@@ -396,6 +407,7 @@ void TestAttractors::contractionOnAverage()
 
 void TestAttractors::badInputIsRefused()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const auto s = buildSubdivisionIfs(bsplineScheme(3), kFig2);
     const StartSet p = StartSet::points(s.toIfsSpace(pts({{0, 0}})));
     PointCollector c(s.ifs.views.front());

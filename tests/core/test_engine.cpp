@@ -14,6 +14,7 @@
 
 #include "EngineTests.h"
 #include "TestMain.h"
+#include "TestTime.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -44,6 +45,7 @@ private slots:
 
 void TestEngine::kernelsAgreeWithTheSinkPath()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // 000 Fig. 2: the cubic B-spline on five points, lifted dimension 4, depth 11.
     const auto s = buildSubdivisionIfs(bsplineScheme(3),
                                        pts({{0, 0}, {1, 2}, {3, 2.5}, {4.5, 1}, {6, 2}}));
@@ -94,6 +96,7 @@ void TestEngine::threadsDoNotChangeThePicture()
 
 void TestEngine::randomIterationMatchesTheSinkStreams()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const Ifs ifs = sierpinski({0.5, 0.3, 0.2});
     RowVec x0(2);
     x0 << 0.3, 0.3;
@@ -175,6 +178,7 @@ void TestEngine::densityIsTheInvariantMeasure()
 
 void TestEngine::aliasTableDrawsTheProbabilities()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const std::vector<double> p = {0.1, 0.0, 0.45, 0.3, 0.15};
     const AliasTable table(p, 5);
     Xoshiro256 rng(42, 0);
@@ -192,6 +196,7 @@ void TestEngine::aliasTableDrawsTheProbabilities()
 
 void TestEngine::polygonsAndSegmentsAreRasterised()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // Depth 0 of a big triangle fills it; a segment draws its cells once each.
     const Ifs ifs = sierpinski();
     EngineJob j = job(ifs, StartSet::polygon(pts({{0, 0}, {1, 0}, {0, 1}})), 100, 0, 0, 1, 1);
@@ -215,6 +220,7 @@ void TestEngine::polygonsAndSegmentsAreRasterised()
 
 void TestEngine::toneMappingIsMonotone()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     DensityImage img(4, 1, Accumulation::Density);
     for (int k = 0; k < 1; ++k)
         img.addDensity(0, 0);
@@ -242,6 +248,7 @@ void TestEngine::toneMappingIsMonotone()
 
 void TestEngine::supersamplingAntiAliases()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // A horizontal segment through the middle of a pixel row, 3x3 cells per pixel: the lit
     // pixels are partly covered (alpha 1/3), not opaque.
     const Ifs ifs = sierpinski();
@@ -261,6 +268,7 @@ void TestEngine::supersamplingAntiAliases()
 
 void TestEngine::largeDimensionsUseTheSinkPath()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // 16 control points of a cubic B-spline: lifted dimension 15 > 12, the sink path.
     Mat P(16, 2);
     for (int i = 0; i < 16; ++i)
@@ -278,6 +286,7 @@ void TestEngine::largeDimensionsUseTheSinkPath()
 
 void TestEngine::badInputIsRefused()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const Ifs ifs = sierpinski();
     RowVec x0(2);
     x0 << 0.3, 0.3;
@@ -312,6 +321,7 @@ void TestEngine::badInputIsRefused()
 
 void TestEngine::smallImagesMatchTheRasteriser()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // The plane Sierpinski gasket with dyadic numbers everywhere (maps, start triangle, frame)
     // computes every vertex exactly on both paths, so the fused kernel's shortcuts for images
     // inside one cell and for small images inside the raster must give exactly the cells of
@@ -444,6 +454,7 @@ void TestEngine::vectorKernelsMatchTheBaseline()
 // version (lit pixels spread, empty rows skipped) must give exactly this.
 void TestEngine::dilateMatchesItsDefinition()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     std::mt19937 random(7);
     for (int r = 1; r <= 4; ++r) {
         for (const double fill : {0.0, 0.002, 0.05, 0.5}) {

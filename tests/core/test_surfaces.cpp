@@ -13,6 +13,7 @@
 #include <QtTest>
 
 #include "TestMain.h"
+#include "TestTime.h"
 
 #include <random>
 
@@ -95,6 +96,7 @@ private slots:
 
 void TestSurfaces::bicubicMaskIsTensorCubic()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const LatticeScheme s = bicubicScheme();
     const double c[5] = {1 / 8.0, 1 / 2.0, 3 / 4.0, 1 / 2.0, 1 / 8.0};
     QCOMPARE(int(s.mask().size()), 25);
@@ -106,6 +108,7 @@ void TestSurfaces::bicubicMaskIsTensorCubic()
 
 void TestSurfaces::loopMaskIsLoopsRules()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const LatticeScheme s = loopScheme();
     QCOMPARE(int(s.mask().size()), 19);
     // Vertex rule of a regular vertex: 5/8 itself, 1/16 each of its six neighbours.
@@ -127,6 +130,7 @@ void TestSurfaces::loopMaskIsLoopsRules()
 
 void TestSurfaces::sqrt3MaskIsTwoRoundsOfKobbelt()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const LatticeScheme s = sqrt3Scheme();
     QCOMPARE(s.dilation(), 3);
     double sum = 0.0;
@@ -146,6 +150,7 @@ void TestSurfaces::sqrt3MaskIsTwoRoundsOfKobbelt()
 
 void TestSurfaces::limitStencils()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // Loop: 1/2 the vertex, 1/12 each neighbour (chi = 1/(3/(8 beta) + n), beta = 1/16, n = 6).
     const LatticeScheme loop = loopScheme();
     for (const auto &[beta, w] : loop.limitStencil())
@@ -175,6 +180,7 @@ void TestSurfaces::netsAndMapCounts_data()
 
 void TestSurfaces::netsAndMapCounts()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     QFETCH(int, index);
     const Case &c = cases[index];
     const LatticeScheme s = c.scheme();
@@ -192,6 +198,7 @@ void TestSurfaces::layoutsCoverTheirDomain_data() { netsAndMapCounts_data(); }
 
 void TestSurfaces::layoutsCoverTheirDomain()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     QFETCH(int, index);
     const Case &c = cases[index];
     const LatticeScheme s = c.scheme();
@@ -225,6 +232,7 @@ void TestSurfaces::layoutsCoverTheirDomain()
 
 void TestSurfaces::spectra()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const auto leading = [](const Mat &S, int n) {
         std::vector<Complex> v = spectrum(S).values;
         v.resize(size_t(n));
@@ -288,6 +296,7 @@ void TestSurfaces::attractorIsTheLimitSurface_data() { netsAndMapCounts_data(); 
 // computed by global refinement of the net (mask convolution, no S_i) is rounding error.
 void TestSurfaces::attractorIsTheLimitSurface()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     QFETCH(int, index);
     const Case &c = cases[index];
     const LatticeScheme s = c.scheme();
@@ -308,6 +317,7 @@ void TestSurfaces::attractorIsTheLimitSurface()
 
 void TestSurfaces::bicubicAttractorMatchesClosedForm()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const LatticeScheme s = bicubicScheme();
     const PatchLayout layout = patchLayout(s, "square");
     const SurfaceMatrices m = surfaceMatrices(s, layout);
@@ -339,6 +349,7 @@ void TestSurfaces::bicubicAttractorMatchesClosedForm()
 // eigenvalue per level.
 void TestSurfaces::anyStartSetConverges()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     for (const Case &c : cases) {
         if (c.mapCount > 9)
             continue;
@@ -364,6 +375,7 @@ void TestSurfaces::anyStartSetConverges()
 // 000 Fig. 9: leaving maps out draws a fractal lying on the surface.
 void TestSurfaces::subsetOfMapsLiesOnTheSurface()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const LatticeScheme s = loopScheme();
     const PatchLayout layout = patchLayout(s, "hexagon");
     const SurfaceMatrices m = surfaceMatrices(s, layout);
@@ -382,6 +394,7 @@ void TestSurfaces::subsetOfMapsLiesOnTheSurface()
 
 void TestSurfaces::refinementConvergesToTheAttractor()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // The classic route (refined nets, 000 Figs. 6-8 top) and the IFS route meet: the refined
     // vertices over the domain approach the limit surface by a factor ~ 1/4 per round.
     const LatticeScheme s = loopScheme();
@@ -409,6 +422,7 @@ void TestSurfaces::refinementConvergesToTheAttractor()
 
 void TestSurfaces::liftingOfSurfaceNets()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     // The default net lies on a paraboloid; its last four points lie on a line of the lattice
     // and so in one vertical plane: 000's placement of the identity columns would be singular,
     // the chosen free rows are not.
@@ -436,6 +450,7 @@ void TestSurfaces::liftingOfSurfaceNets()
 
 void TestSurfaces::netsAreMatchedUpToTranslation()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const LatticeScheme s = loopScheme();
     const PatchLayout layout = patchLayout(s, "triangle");
     const SurfaceMatrices m = surfaceMatrices(s, layout);
@@ -454,6 +469,7 @@ void TestSurfaces::netsAreMatchedUpToTranslation()
 
 void TestSurfaces::badNetsAreNamed()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const LatticeScheme s = loopScheme();
     const SurfaceMatrices m = surfaceMatrices(s, patchLayout(s, "hexagon"));
     const auto message = [&](std::vector<LatticePoint> user) {
@@ -554,6 +570,7 @@ void TestSurfaces::meshDrawsTheImagesAgain()
 // Fig. 7), which the depth makes sub-pixel.
 void TestSurfaces::netPointMovesTheMeshByItsWeights()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const LatticeScheme s = loopScheme();
     const PatchLayout layout = patchLayout(s, "hexagon");
     const SurfaceMatrices m = surfaceMatrices(s, layout);
@@ -644,6 +661,7 @@ public:
 // instead of D x D): the same mesh, weights and picture as projecting the images it made.
 void TestSurfaces::lastMapFusedWithTheViews()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     const LatticeScheme s = loopScheme();
     const PatchLayout layout = patchLayout(s, "hexagon");
     const SurfaceMatrices m = surfaceMatrices(s, layout);
@@ -696,6 +714,7 @@ void TestSurfaces::lastMapFusedWithTheViews()
 // inside the picture and does not grow its outline.
 void TestSurfaces::pinholesCloseInsideNotOutside()
 {
+    AWB_SKIP_WITHOUT_THREADS();
     SurfaceMesh grid;
     grid.kind = SurfaceMesh::Kind::Points;
     // Points in the plane z = 0 seen from above: world units are pixels (half height 50 at
