@@ -421,8 +421,9 @@ Vec chainTop(const Mat &S, double value, const Mat &space)
     return svd.matrixU().col(0);
 }
 
-// A distinct eigenvalue of S below 1 in modulus (and not 0): its algebraic multiplicity, its
-// independent eigenvectors, and for a real one its generalized eigenspace.
+// A distinct eigenvalue of S below 1 in modulus (and not 0): its algebraic multiplicity, and
+// for a real one among the two largest its independent eigenvectors and generalized eigenspace
+// (the others keep geometric = multiplicity and no space).
 struct Cluster {
     Complex value;
     Mat space;
@@ -456,7 +457,7 @@ std::vector<Cluster> eigenClusters(const Mat &S)
         if (std::abs(value) < 1e-12)
             break;
         Cluster c{value, Mat(), multiplicity, multiplicity};
-        if (c.real())
+        if (c.real() && clusters.size() < 2)  // readPair reads the two largest' structure only
             c.space = generalizedSpace(S, value.real(), multiplicity, &c.geometric);
         clusters.push_back(std::move(c));
     }
@@ -642,16 +643,10 @@ SharpVertexSpectrum sharpVertexSpectrum(MeshScheme scheme, const SharpNeighbourh
         // bound it follow their curve rule): its own matrix, whose eigenvalues are those seen
         // on it, and whose Jordan blocks are its own.
         const auto r = Eigen::Index(sectorRows.size());
-        Mat sectorS(r, r);
-        double outside = 0.0;
-        for (Eigen::Index i = 0; i < r; ++i) {
-            double all = 0.0;
-            for (Eigen::Index j = 0; j < r; ++j) {
-                sectorS(i, j) = out.S(sectorRows[std::size_t(i)], sectorRows[std::size_t(j)]);
-                all += std::abs(sectorS(i, j));
-            }
-            outside = std::max(outside, out.S.row(sectorRows[std::size_t(i)]).cwiseAbs().sum() - all);
-        }
+        const Mat sectorS = out.S(sectorRows, sectorRows);
+        const double outside = (out.S(sectorRows, Eigen::all).cwiseAbs().rowwise().sum()
+                                - sectorS.cwiseAbs().rowwise().sum())
+                                   .maxCoeff();
         if (outside > 1e-12)
             throw std::logic_error("sharpVertexSpectrum: a sector's points depend on others");
         const PairVerdict pair = readPair(sectorS, eigenClusters(sectorS));
