@@ -347,8 +347,10 @@ void applyTags(MeshTopology &t, const Mesh &mesh)
     s.options = tags.options;
     if (!tags.edges.empty())
         s.faceEdges.resize(std::size_t(t.faceCount()));
-    for (int f = 0; f < t.faceCount() && !tags.edges.empty(); ++f)
-        s.faceEdges[std::size_t(f)].assign(t.faceEdges(f).size(), kSharpnessSmooth);
+    // Each edge's sharpness (the last tag of an edge wins, as OpenSubdiv applies them), then
+    // each face's edges read from it: one pass over the faces, whatever their size.
+    std::vector<float> edgeSharpness(tags.edges.empty() ? 0 : std::size_t(t.edgeCount()),
+                                     kSharpnessSmooth);
     for (const SharpEdge &tag : tags.edges) {
         const int e = t.findEdge(tag.a, tag.b);
         if (badSharpness(tag.sharpness))
@@ -362,13 +364,14 @@ void applyTags(MeshTopology &t, const Mesh &mesh)
                               "a crease names vertices %1 and %2, but no edge joins them"),
                 tag.a, tag.b));
         else
-            for (int f : t.edge(e).face)
-                if (f >= 0) {
-                    const auto edges = t.faceEdges(f);
-                    const auto k = std::size_t(std::find(edges.begin(), edges.end(), e)
-                                               - edges.begin());
-                    s.faceEdges[std::size_t(f)][k] = tag.sharpness;
-                }
+            edgeSharpness[std::size_t(e)] = tag.sharpness;
+    }
+    for (int f = 0; f < t.faceCount() && !tags.edges.empty(); ++f) {
+        const auto edges = t.faceEdges(f);
+        auto &sharpness = s.faceEdges[std::size_t(f)];
+        sharpness.resize(edges.size());
+        for (std::size_t k = 0; k < edges.size(); ++k)
+            sharpness[k] = edgeSharpness[std::size_t(edges[k])];
     }
     for (const SharpVertex &tag : tags.vertices) {
         if (tag.vertex < 0 || tag.vertex >= t.vertexCount())
