@@ -4,6 +4,9 @@
 #include "core/Threads.h"
 #include "core/Types.h"
 #include "core/flame/Variations.h"
+#include "core/flame/FlameGame.h"
+#include "core/flame/XformWave.h"
+#include "core/render/EngineShared.h"
 #include "core/ifs/Random.h"
 
 #include <algorithm>
@@ -14,7 +17,15 @@
 
 namespace awb::flame {
 
+using namespace detail;
+
 namespace {
+
+#if defined(AWB_AVX2_KERNELS)
+#define AWB_WAVE_DRIVER __attribute__((target("avx2,fma")))
+#else
+#define AWB_WAVE_DRIVER
+#endif
 
 std::string tr(const char *text) { return coreTranslate("awb::flame", text); }
 
@@ -49,193 +60,6 @@ void checkXform(const FlameXform &x, const std::string &which)
                                               "finite number"),
                                            which));
 }
-
-// The choice of the next xform: row 0 by the weights alone, row i + 1 after xform i by the
-// weights times its xaos row (one row when no xaos differs from 1).
-struct Choice {
-    std::vector<AliasTable> rows;
-    bool xaos = false;
-
-    explicit Choice(const Flame &f)
-    {
-        const std::size_t n = f.xforms.size();
-        std::vector<double> w(n);
-        for (std::size_t j = 0; j < n; ++j)
-            w[j] = f.xforms[j].weight;
-        rows.emplace_back(w, int(n));
-        for (const FlameXform &x : f.xforms)
-            for (std::size_t j = 0; j < n; ++j)
-                xaos = xaos || x.xaosTo(j) != 1.0;
-        if (!xaos)
-            return;
-        for (const FlameXform &x : f.xforms) {
-            std::vector<double> r(n);
-            for (std::size_t j = 0; j < n; ++j)
-                r[j] = w[j] * x.xaosTo(j);
-            rows.emplace_back(r, int(n));
-        }
-    }
-};
-
-struct Plot {
-    // World to cells: col = (x - x0) sx, row = (y_flame + y1) sy (y_flame = -y_world).
-    double x0, y1, sx, sy;
-    int w, h;
-    // Rotation about the centre (flam3 rotates the plotted points, not the orbit).
-    bool rotated = false;
-    double cx = 0, cy = 0, r00 = 1, r01 = 0, r10 = 0, r11 = 1;
-
-    Plot(const Flame &f, const RasterFrame &frame)
-        : x0(frame.x0), y1(frame.y1), sx(frame.cellsX() / (frame.x1 - frame.x0)),
-          sy(frame.cellsY() / (frame.y1 - frame.y0)), w(frame.cellsX()), h(frame.cellsY())
-    {
-        if (f.rotate != 0) {
-            rotated = true;
-            cx = f.centre[0];
-            cy = f.centre[1];
-            const double a = f.rotate * 2 * M_PI / 360.0;
-            r00 = std::cos(a);
-            r01 = -std::sin(a);
-            r10 = -r01;
-            r11 = r00;
-        }
-    }
-    // The cell of a point, or -1 off the frame.
-    std::ptrdiff_t cell(double x, double y) const
-    {
-        if (rotated) {
-            const double dx = x - cx, dy = y - cy;
-            x = dx * r00 + dy * r01 + cx;
-            y = dx * r10 + dy * r11 + cy;
-        }
-        const double u = (x - x0) * sx, v = (y + y1) * sy;
-        if (!(u >= 0 && v >= 0 && u < w && v < h))
-            return -1;
-        return std::ptrdiff_t(v) * w + std::ptrdiff_t(u);
-    }
-};
-
-struct Xforms {
-    std::vector<XformMap> maps;
-    std::vector<double> colour, speed, opacity;
-    std::unique_ptr<XformMap> final;
-    double finalColour = 0, finalSpeed = 0, finalOpacity = 1;
-
-    explicit Xforms(const Flame &f)
-    {
-        for (const FlameXform &x : f.xforms) {
-            maps.emplace_back(x);
-            colour.push_back(x.colour);
-            speed.push_back(x.colourSpeed);
-            opacity.push_back(x.opacity);
-        }
-        if (f.finalXform) {
-            final = std::make_unique<XformMap>(*f.finalXform);
-            finalColour = f.finalXform->colour;
-            finalSpeed = f.finalXform->colourSpeed;
-            finalOpacity = f.finalXform->opacity;
-        }
-    }
-};
-
-std::uint32_t paletteIndex(double c)
-{
-    // flam3: (int)(c * 256), the last entry for c = 1.
-    const double i = c * 256.0;
-    return i >= 255.0 ? 255u : (i > 0 ? std::uint32_t(i) : 0u);
-}
-
-// Where the engine's histogram takes a hit: its palette index as the label; an xform's opacity
-// as the probability of drawing the hit (the same expected density in whole hits).
-struct LabelSink {
-    DensityImage &image;
-    const std::uint8_t *coordinates;
-
-    bool keep(double opacity, Xoshiro256 &rng) const
-    {
-        return opacity == 1.0 || (opacity > 0 && uniform01(rng) < opacity);
-    }
-    void hit(std::size_t k, double c, double) { image.add(k, paletteIndex(c), coordinates); }
-    void flush() {}
-};
-
-// Where flam3's buckets take a hit (rect.c, iter_thread): the palette's colour at the colour
-// coordinate, step or linear, weighted by the xform's opacity. A hit's 32-byte cell is
-// scattered over a histogram larger than the caches: the cell is prefetched when the hit
-// comes and added kPending hits later, so that the orbit's next steps hide the miss
-// (measured on a 1024^2 variation flame: the add's load was 35 % of the render).
-struct ColourSink {
-    static constexpr std::size_t kPending = 16;  // a power of 2
-    FlameHistogram &histogram;
-    const std::array<double, 3> *dmap;  // the palette times 255
-    bool linear;
-    struct Hit {
-        std::size_t k;
-        double r, g, b, a;
-    };
-    std::array<Hit, kPending> pending{};
-    std::size_t count = 0;
-
-    bool keep(double opacity, Xoshiro256 &) const { return opacity != 0; }
-    void hit(std::size_t k, double c, double opacity)
-    {
-        // flam3: (int)(c * 256), clamped; NaN cannot occur (finite colours, convex steps).
-        const double d = std::clamp(c * 256.0, -1.0, 257.0);
-        int i = int(d);
-        std::array<double, 3> rgb;
-        if (linear) {
-            double frac;
-            if (i < 0) {
-                i = 0;
-                frac = 0;
-            } else if (i >= 255) {
-                i = 254;
-                frac = 1;
-            } else {
-                frac = d - i;
-            }
-            for (int j = 0; j < 3; ++j)
-                rgb[std::size_t(j)] = dmap[i][std::size_t(j)] * (1.0 - frac)
-                                      + dmap[i + 1][std::size_t(j)] * frac;
-        } else {
-            rgb = dmap[std::clamp(i, 0, 255)];
-        }
-        __builtin_prefetch(&histogram.cells[k], 1);
-        Hit &slot = pending[count++ & (kPending - 1)];
-        if (count > kPending)
-            add(slot);
-        slot = {k, opacity * rgb[0], opacity * rgb[1], opacity * rgb[2], opacity * 255.0};
-    }
-    // flam3's bump_no_overflow on an unsigned sum: dest = (unsigned)(dest + delta), held at
-    // UINT_MAX -- and at 0 (a negative opacity, which flam3 would convert undefined).
-    static void bump(std::uint32_t &dest, double delta)
-    {
-        constexpr std::uint32_t top = std::numeric_limits<std::uint32_t>::max();
-        const double sum = double(dest) + delta;
-        if (!(double(top - dest) > delta))
-            dest = top;
-        else if (sum > 0)
-            dest = std::uint32_t(sum);
-        else
-            dest = 0;
-    }
-    void add(const Hit &h)
-    {
-        auto &cell = histogram.cells[h.k];
-        bump(cell[0], h.r);
-        bump(cell[1], h.g);
-        bump(cell[2], h.b);
-        bump(cell[3], h.a);
-    }
-    // The hits still pending, in the order they came (a cell takes its sums in hit order).
-    void flush()
-    {
-        const std::size_t n = std::min(count, kPending);
-        for (std::size_t j = count - n; j < count; ++j)
-            add(pending[j & (kPending - 1)]);
-        count = 0;
-    }
-};
 
 // One stream's samples into `sink`.
 template <class Sink>
@@ -307,6 +131,200 @@ FlameStats runStream(const Xforms &xf, const Choice &choice, const Plot &plot,
     return stats;
 }
 
+// The orbits of one stream's wave: how many run side by side. Each runs its own batches of
+// kBatch samples after kFuse steps, as one scalar orbit does; enough lanes that the orbits
+// choosing one xform fill registers, few enough that a small request (a window's first
+// pictures) does not spend its samples on fuses. A function of the stream's samples alone:
+// equal requests give equal pictures on any number of threads.
+int waveOrbits(std::uint64_t samples)
+{
+    return int(std::clamp<std::uint64_t>(samples / 2048, 4, 64));
+}
+
+// One stream's samples into `sink`, its orbits advanced together (XformWave.h): in each step
+// every running orbit chooses its xform, the orbits of each xform go through it together, then
+// through the final xform, each into the sink in orbit order. The same game as runStream's
+// (restarts, fuse, xaos, bad values retried, the final xform and opacities) on each orbit.
+// Compiled for AVX2 (only called where XformWave runs): the sink's four sums in one register.
+template <class Sink>
+AWB_WAVE_DRIVER FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot,
+                                   std::uint64_t seed, int stream, std::uint64_t samples,
+                                   Sink &sink, const IterationControl &control,
+                                   std::atomic<std::uint64_t> &done, double total)
+{
+    FlameStats stats;
+    WaveRandom random(seed, std::uint64_t(stream));
+    Xoshiro256 &rng = random.scalar;
+    const std::size_t orbits = std::size_t(waveOrbits(samples));
+    const std::size_t nx = xf.maps.size();
+    constexpr int W = XformWave::kWidth;
+
+    // The orbits' state by orbit; `running` lists the orbits still drawing, in order.
+    std::vector<double> X(orbits), Y(orbits), C(orbits);
+    std::vector<int> last(orbits), step(orbits), batch(orbits), consecutive(orbits);
+    std::vector<std::uint64_t> left(orbits);
+    std::vector<int> running;
+    // Per running orbit (by position in `running`): its xform and its slot in the arrays.
+    std::vector<int> chosen(orbits), slot(orbits);
+    // Each xform's orbits in one run of the arrays, the runs starting at multiples of W.
+    const std::size_t room = orbits + nx * W + W;
+    std::vector<double> ax(room), ay(room), qx(room), qy(room);
+    std::vector<std::uint8_t> bad(room);
+    std::vector<int> count(nx), start(nx);
+    std::vector<double> fx(room), fy(room), gx(room), gy(room);
+    std::vector<std::uint8_t> fbad(room);
+    std::vector<int> finalOf(orbits), finished;
+    // The colour's move by xform: c' = speed colour + (1 - speed) c.
+    std::vector<double> towards(nx), keepC(nx);
+    for (std::size_t k = 0; k < nx; ++k) {
+        towards[k] = xf.speed[k] * xf.colour[k];
+        keepC[k] = 1.0 - xf.speed[k];
+    }
+    const AliasTable *rows = choice.rows.data();
+
+    auto uniform11 = [&] { return 2.0 * uniform01(rng) - 1.0; };
+    // Starts orbit o's next batch; false when it has drawn its share.
+    auto restart = [&](std::size_t o) {
+        if (left[o] == 0)
+            return false;
+        batch[o] = int(std::min<std::uint64_t>(left[o], kBatch));
+        left[o] -= std::uint64_t(batch[o]);
+        X[o] = uniform11();
+        Y[o] = uniform11();
+        C[o] = uniform01(rng);
+        last[o] = 0;
+        consecutive[o] = 0;
+        step[o] = -kFuse;
+        return true;
+    };
+    for (std::size_t o = 0; o < orbits; ++o) {
+        left[o] = samples / orbits + (o < samples % orbits ? 1 : 0);
+        if (restart(o))
+            running.push_back(int(o));
+    }
+    // One drawn point (of an orbit that went through xform fn) into the sink.
+    auto draw = [&](int fn, double px, double py, double rc) {
+        const double opacity = xf.opacity[std::size_t(fn)];
+        if (!sink.keep(opacity, rng))
+            return;
+        const std::ptrdiff_t k = plot.cell(px, py);
+        if (k < 0)
+            ++stats.offscreen;
+        else
+            sink.hit(std::size_t(k), rc, opacity);
+    };
+
+    while (!running.empty()) {
+        if (control.cancel && control.cancel->load(std::memory_order_relaxed)) {
+            stats.cancelled = true;
+            break;
+        }
+        const std::size_t n = running.size();
+        // Choose (the colour moves first, as in flam3's apply_xform), then gather by xform.
+        std::fill(count.begin(), count.end(), 0);
+        for (std::size_t r = 0; r < n; ++r) {
+            const std::size_t o = std::size_t(running[r]);
+            const int fn = rows[choice.xaos ? last[o] : 0].pick(rng.next());
+            C[o] = towards[std::size_t(fn)] + keepC[std::size_t(fn)] * C[o];
+            chosen[r] = fn;
+            ++count[std::size_t(fn)];
+        }
+        int at = 0;
+        for (std::size_t k = 0; k < nx; ++k) {
+            start[k] = at;
+            at += (count[k] + W - 1) / W * W;
+        }
+        for (std::size_t r = 0; r < n; ++r) {
+            const std::size_t o = std::size_t(running[r]);
+            const int sl = start[std::size_t(chosen[r])]++;
+            slot[r] = sl;
+            ax[std::size_t(sl)] = X[o];
+            ay[std::size_t(sl)] = Y[o];
+        }
+        for (std::size_t k = 0; k < nx; ++k)
+            if (count[k] > 0) {
+                const std::size_t s0 = std::size_t(start[k] - count[k]);
+                xf.waves[k].apply(&ax[s0], &ay[s0], &qx[s0], &qy[s0], &bad[s0], count[k],
+                                  random);
+            }
+        // Bad values retried (no step); past the fuse, the point is drawn -- through the
+        // final xform first, when there is one (the orbit goes on from the point before it).
+        std::size_t finals = 0;
+        finished.clear();
+        for (std::size_t r = 0; r < n; ++r) {
+            const std::size_t o = std::size_t(running[r]);
+            const std::size_t sl = std::size_t(slot[r]);
+            X[o] = qx[sl];
+            Y[o] = qy[sl];
+            if (bad[sl]) {
+                ++stats.badValues;
+                if (++consecutive[o] < 5) {
+                    slot[r] = -1;
+                    continue;
+                }
+            }
+            consecutive[o] = 0;
+            const int fn = chosen[r];
+            last[o] = fn + 1;
+            if (step[o]++ < 0) {
+                slot[r] = -1;
+                continue;
+            }
+            if (step[o] == batch[o])
+                finished.push_back(int(r));
+            if (!xf.finalWave) {
+                draw(fn, X[o], Y[o], C[o]);
+                continue;
+            }
+            if (xf.finalOpacity == 1.0 || uniform01(rng) < xf.finalOpacity) {
+                finalOf[r] = int(finals);
+                fx[finals] = X[o];
+                fy[finals] = Y[o];
+                ++finals;
+            } else {
+                finalOf[r] = -1;
+            }
+        }
+        if (xf.finalWave) {
+            if (finals > 0)
+                xf.finalWave->apply(fx.data(), fy.data(), gx.data(), gy.data(), fbad.data(),
+                                    int(finals), random);
+            for (std::size_t r = 0; r < n; ++r) {
+                if (slot[r] < 0)
+                    continue;
+                const std::size_t o = std::size_t(running[r]);
+                const int f = finalOf[r];
+                if (f < 0)
+                    draw(chosen[r], X[o], Y[o], C[o]);
+                else
+                    draw(chosen[r], gx[std::size_t(f)], gy[std::size_t(f)],
+                         xf.finalSpeed * xf.finalColour + (1.0 - xf.finalSpeed) * C[o]);
+            }
+        }
+        // Finished batches: their orbits restart, or leave when they have drawn their share.
+        if (!finished.empty()) {
+            std::size_t kept = 0, f = 0;
+            for (std::size_t r = 0; r < n; ++r) {
+                const std::size_t o = std::size_t(running[r]);
+                if (f < finished.size() && std::size_t(finished[f]) == r) {
+                    ++f;
+                    stats.samples += std::uint64_t(batch[o]);
+                    const std::uint64_t d =
+                        done.fetch_add(std::uint64_t(batch[o])) + std::uint64_t(batch[o]);
+                    if (control.progress)
+                        control.progress(std::min(1.0, double(d) / total));
+                    if (!restart(o))
+                        continue;
+                }
+                running[kept++] = int(o);
+            }
+            running.resize(kept);
+        }
+    }
+    sink.flush();
+    return stats;
+}
+
 // The streams of `job` on its threads, each thread's sink made by makeSink(t) (t = 0 first, on
 // the caller's thread); returns the summed stats.
 template <class MakeSink>
@@ -330,9 +348,11 @@ FlameStats playStreams(const FlameRaster &job, const IterationControl &control,
         const int first = kChaosStreams * t / threads, last = kChaosStreams * (t + 1) / threads;
         FlameStats &r = results[std::size_t(t)];
         for (int s = first; s < last && !r.cancelled; ++s) {
-            const FlameStats one = runStream(xf, choice, plot, job.seed, s,
-                                             streamShare(job.samples, s), sink, control, done,
-                                             total);
+            const std::uint64_t share = streamShare(job.samples, s);
+            const FlameStats one =
+                xf.waves.empty()
+                    ? runStream(xf, choice, plot, job.seed, s, share, sink, control, done, total)
+                    : runWave(xf, choice, plot, job.seed, s, share, sink, control, done, total);
             r.samples += one.samples;
             r.badValues += one.badValues;
             r.offscreen += one.offscreen;
@@ -490,11 +510,11 @@ FlameStats accumulateFlameColours(const FlameRaster &job, FlameHistogram &out,
                                   std::vector<FlameHistogram> *kept)
 {
     const Flame *flame = job.flame;
-    std::array<std::array<double, 3>, 256> dmap{};
+    std::vector<ColourSink::Sums> dmap(256);
     if (flame)
         for (std::size_t i = 0; i < 256; ++i)
-            dmap[i] = {flame->palette[i].r * 255.0, flame->palette[i].g * 255.0,
-                       flame->palette[i].b * 255.0};
+            dmap[i] = ColourSink::Sums{flame->palette[i].r * 255.0, flame->palette[i].g * 255.0,
+                                       flame->palette[i].b * 255.0, 255.0};
     const bool linear = flame && flame->paletteMode == PaletteMode::Linear;
     const int threads = std::clamp(job.threads, 1, kChaosStreams);
     const std::size_t cells = std::size_t(job.frame.cellsX()) * std::size_t(job.frame.cellsY());

@@ -13,6 +13,7 @@
 // it (flamePaletteRgb gives the labels' colours). Equal requests give equal pictures on any
 // number of threads: the samples run in the kChaosStreams streams of ifs/Random.h.
 
+#include "core/BigAllocator.h"
 #include "core/flame/Flame.h"
 #include "core/ifs/Attractor.h"
 #include "core/render/Density.h"
@@ -66,9 +67,11 @@ FlameStats accumulateFlame(const FlameRaster &job, DensityImage &out,
 // weighted by its xform's opacity (flam3's logvis); each sum, as flam3's, truncated to a whole
 // number after every hit and held at 2^32 - 1. Row 0 at the top. Whole numbers: the threads'
 // parts sum to the same histogram in any order.
+// The cells as huge pages where Linux gives them (BigAllocator.h): the chaos game's scattered
+// hits miss the translation cache on 4 KiB pages (a 1024^2 histogram is 16 MiB).
 struct FlameHistogram {
     int width = 0, height = 0;
-    std::vector<std::array<std::uint32_t, 4>> cells;
+    BigVector<std::array<std::uint32_t, 4>> cells;
 };
 
 // Accumulates the flame into `out` (resized to the frame's cells and cleared; frame.supersample

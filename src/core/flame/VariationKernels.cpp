@@ -16,6 +16,7 @@
 #include "core/flame/Variations.h"
 
 #include "core/flame/VariationIds.h"
+#include "core/flame/VariationTerm.h"
 
 #include <climits>
 #include <cmath>
@@ -47,26 +48,12 @@ inline int truncToInt(double v)
     return int(v);
 }
 
-// The point through one xform: flam3's flam3_iter_helper.
-struct Point {
-    double tx, ty;           // pre(p), moved by pre_blur
-    double sumsq, sqrt;      // always computed
-    double atanXY = 0;       // atan2(tx, ty), if m_atanXY
-    double sina = 0, cosa = 0;  // tx / sqrt, ty / sqrt, if m_angles
-    double atanYX = 0;       // atan2(ty, tx), if m_atanYX
-    double px = 0, py = 0;   // the sum of the terms
-
-    void add(double x, double y)
-    {
-        px += x;
-        py += y;
-    }
-};
+} // namespace
 
 // One term: px, py += weight * V(tx, ty), as flam3's varN_... functions. P: the parameters
 // by Param id, K: the constants by Const id.
-void addTerm(int id, double w, Point &s, const double *P, const double *K, const Affine2 &pre,
-             Xoshiro256 &rng)
+void detail::addTerm(int id, double w, Point &s, const double *P, const double *K,
+                     const Affine2 &pre, Xoshiro256 &rng)
 {
     const double tx = s.tx, ty = s.ty;
     double &px = s.px, &py = s.py;
@@ -733,8 +720,6 @@ void addTerm(int id, double w, Point &s, const double *P, const double *K, const
         break;
     }
 }
-
-} // namespace
 
 bool XformMap::apply(const double p[2], double q[2], Xoshiro256 &rng) const
 {

@@ -49,6 +49,7 @@ public:
     bool random() const { return m_random; }
 
 private:
+    friend class XformWave;  // the same xform on a wave of orbits (XformWave.h)
     struct Term {
         int id;
         double weight;

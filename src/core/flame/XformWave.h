@@ -1,0 +1,49 @@
+#pragma once
+// One xform on a wave of orbits: XformMap::apply on lanes of points held as arrays (x[i],
+// y[i]), four at a time in AVX2 registers, the variations' sines, exponentials and arctangents
+// by glibc's vector math library (libmvec, 4 ulp). What FlameChaos.cpp's chaos game runs when
+// the processor has AVX2: the orbits that chose the same xform in one step go through it
+// together. A term with no vector kernel here runs lane by lane through XformMap's own code
+// (VariationTerm.h), so every variation runs and each has one definition of its formula
+// besides its vector form. The vector kernels keep the scalar formulas' operations; their
+// results differ from XformMap::apply's in the last bits (libmvec's 4 ulp, fused
+// multiply-adds), and their random draws come from four more streams, so a wave's picture is
+// the scalar one's in distribution, not point by point (tests/core/test_flame_wave.cpp).
+
+#include "core/flame/Variations.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace awb::flame {
+
+// The random numbers of one stream's wave: the stream's own generator (lane-by-lane terms,
+// the chaos game's choices) and four generators of the vector kernels' draws.
+struct WaveRandom {
+    WaveRandom(std::uint64_t seed, std::uint64_t stream);
+    Xoshiro256 scalar;
+    alignas(32) std::uint64_t lanes[4][4];  // word w of lane j's state: lanes[w][j]
+};
+
+class XformWave {
+public:
+    static constexpr int kWidth = 4;  // lanes per register
+    // Whether this machine runs waves: AVX2, and the engine's kernels not forced to the
+    // baseline (engine::forceBaselineKernels, as the IFS engine's own AVX2 kernels).
+    static bool available();
+    // Whether term `id` has a vector kernel (the others run lane by lane).
+    static bool vectorKernel(int id);
+
+    explicit XformWave(const XformMap &map);
+
+    // (qx[i], qy[i]) = map(x[i], y[i]) and bad[i] = whether that was a bad value (q then
+    // flam3's replacement, a random point of [-1, 1]^2), for i < n. Each array holds n rounded
+    // up to kWidth entries (the extra lanes are computed and ignored). Requires available().
+    void apply(const double *x, const double *y, double *qx, double *qy, std::uint8_t *bad,
+               int n, WaveRandom &rng) const;
+
+private:
+    const XformMap *m_map;
+};
+
+} // namespace awb::flame

@@ -1,0 +1,308 @@
+// The flame's wave of orbits (src/core/flame/XformWave.cpp: four lanes in AVX2, libmvec's
+// functions) against XformMap::apply, which tests/core/test_flame_variations.cpp holds to
+// libflam3's own apply_xform:
+//  - every deterministic variation of the 99 -- those with a vector kernel and those the wave
+//    runs lane by lane -- on 400 points of [-2.5, 2.5]^2 through a pre-affine with a
+//    translation, alone and after linear, with a post transform: relative error <= 1e-9
+//    (relative to max(1, |value|), as the scalar kernels against libflam3) and the same
+//    bad-value verdicts;
+//  - the random ones (different generators) by their distributions over 20000 draws at fixed
+//    points: mean and standard deviation of each coordinate within 6 standard errors;
+//  - lane counts that are not multiples of four, and a bad value in one lane only;
+//  - a whole flame's histogram drawn by the wave against the scalar game's
+//    (forceBaselineKernels): the same total weight and the same lit blocks.
+// Skipped only where the processor has no AVX2 (the wave does not run there).
+#include "core/flame/FlameChaos.h"
+#include "core/flame/Variations.h"
+#include "core/flame/XformWave.h"
+#include "core/render/Engine.h"
+
+#include <QtTest>
+
+#include "TestMain.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+using namespace awb;
+using namespace awb::flame;
+
+namespace {
+
+// A few parameters away from their defaults, so that the kernels read them.
+FlameXform xformOf(int id, bool withLinear, bool withPost)
+{
+    FlameXform x;
+    x.variations = {{id, 0.7}};
+    if (withLinear && id != 0)
+        x.variations.insert(x.variations.begin(), VariationTerm{0, 0.3});
+    x.pre = {0.8, -0.3, 0.15, 0.25, 0.9, -0.2};
+    if (withPost)
+        x.post = {0.9, 0.2, 0.05, -0.1, 1.1, 0.1};
+    auto set = [&](const char *name, double v) {
+        const int p = parameterId(name);
+        if (p < 0)
+            qFatal("no parameter %s", name);
+        x.parameters[std::size_t(p)] = v;
+    };
+    set("julian_power", 3);
+    set("juliascope_power", -4);
+    set("julian_dist", 0.7);
+    set("blob_low", 0.3);
+    set("blob_waves", 3);
+    set("pdj_a", 1.1);
+    set("pdj_b", -2.0);
+    set("pdj_c", 0.7);
+    set("pdj_d", 1.6);
+    set("perspective_angle", 0.4);
+    set("perspective_dist", 2.5);
+    set("curl_c1", 0.6);
+    set("curl_c2", 0.2);
+    set("bent2_x", 0.4);
+    set("bent2_y", 1.7);
+    set("splits_x", 0.3);
+    set("splits_y", -0.2);
+    set("waves2_freqx", 2.0);
+    set("waves2_scalex", 0.3);
+    set("waves2_freqy", 1.5);
+    set("waves2_scaley", 0.2);
+    set("radial_blur_angle", 0.6);
+    set("rectangles_x", 0.7);
+    set("fan2_x", 0.4);
+    set("rings2_val", 0.6);
+    x.weight = 1;
+    return x;
+}
+
+double scaleOf(double v) { return std::max(1.0, std::fabs(v)); }
+
+struct Lanes {
+    std::vector<double> x, y, qx, qy;
+    std::vector<std::uint8_t> bad;
+    explicit Lanes(int n)
+        : x(std::size_t(n + 4)), y(std::size_t(n + 4)), qx(std::size_t(n + 4)),
+          qy(std::size_t(n + 4)), bad(std::size_t(n + 4))
+    {
+    }
+};
+
+// The 10, 30, 45, 60 and 90 % quantiles: robust where a variation's tails are heavy (arch's
+// 1 / cos, rays' tan), and away from the steps of the discrete ones (julia's 2 roots, julian's
+// 3, juliascope's 4, pie's 6 slices: at 1/2, 1/3, 1/4 and 1/6 a quantile would fall on either side).
+std::vector<double> quantiles(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    std::vector<double> q;
+    for (double f : {0.1, 0.3, 0.45, 0.6, 0.9})
+        q.push_back(v[std::size_t(f * double(v.size() - 1))]);
+    return q;
+}
+
+} // namespace
+
+class TestFlameWave : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        if (!XformWave::available())
+            QSKIP("this processor has no AVX2: the wave of orbits does not run here");
+    }
+
+    void deterministicVariationsAsTheScalarKernels()
+    {
+        const int n = 400;
+        Lanes l(n);
+        Xoshiro256 points(7, 0);
+        for (int i = 0; i < n; ++i) {
+            l.x[std::size_t(i)] = 5 * uniform01(points) - 2.5;
+            l.y[std::size_t(i)] = 5 * uniform01(points) - 2.5;
+        }
+        int vectorised = 0, laneByLane = 0;
+        for (int id = 0; id < kVariationCount; ++id) {
+            if (variationIsRandom(id))
+                continue;
+            (XformWave::vectorKernel(id) ? vectorised : laneByLane) += 1;
+            for (int setting = 0; setting < 3; ++setting) {
+                const XformMap map(xformOf(id, setting >= 1, setting == 2));
+                const XformWave wave(map);
+                WaveRandom random(1, 0);
+                wave.apply(l.x.data(), l.y.data(), l.qx.data(), l.qy.data(), l.bad.data(), n,
+                           random);
+                Xoshiro256 rng(1, 0);
+                for (int i = 0; i < n; ++i) {
+                    const double p[2] = {l.x[std::size_t(i)], l.y[std::size_t(i)]};
+                    double q[2];
+                    const bool ok = map.apply(p, q, rng);
+                    const auto where = QStringLiteral("%1 (setting %2) at (%3, %4)")
+                                           .arg(QString::fromUtf8(variationName(id).data(),
+                                                                  qsizetype(variationName(id).size())))
+                                           .arg(setting)
+                                           .arg(p[0], 0, 'g', 17)
+                                           .arg(p[1], 0, 'g', 17);
+                    QVERIFY2(ok == !l.bad[std::size_t(i)], qPrintable(where));
+                    if (!ok)
+                        continue;
+                    const double ex = std::fabs(l.qx[std::size_t(i)] - q[0]) / scaleOf(q[0]);
+                    const double ey = std::fabs(l.qy[std::size_t(i)] - q[1]) / scaleOf(q[1]);
+                    QVERIFY2(ex <= 1e-9 && ey <= 1e-9,
+                             qPrintable(where + QStringLiteral(": wave (%1, %2), scalar (%3, %4)")
+                                                   .arg(l.qx[std::size_t(i)], 0, 'g', 17)
+                                                   .arg(l.qy[std::size_t(i)], 0, 'g', 17)
+                                                   .arg(q[0], 0, 'g', 17)
+                                                   .arg(q[1], 0, 'g', 17)));
+                }
+            }
+        }
+        qInfo("%d deterministic variations with a vector kernel, %d lane by lane", vectorised,
+              laneByLane);
+        QVERIFY(vectorised >= 40);
+    }
+
+    void randomVariationsByTheirDistributions()
+    {
+        const int draws = 20000;
+        const double points[3][2] = {{0.3, -0.4}, {1.2, 0.7}, {-0.8, 1.5}};
+        int tested = 0;
+        for (int id = 0; id < kVariationCount; ++id) {
+            if (!variationIsRandom(id))
+                continue;
+            ++tested;
+            // With linear beside it: pre_blur moves the point the terms see.
+            const XformMap map(xformOf(id, true, false));
+            const XformWave wave(map);
+            const auto name = QString::fromUtf8(variationName(id).data(),
+                                                qsizetype(variationName(id).size()));
+            for (const auto &p : points) {
+                Lanes l(draws);
+                std::fill(l.x.begin(), l.x.end(), p[0]);
+                std::fill(l.y.begin(), l.y.end(), p[1]);
+                WaveRandom random(3, 1);
+                wave.apply(l.x.data(), l.y.data(), l.qx.data(), l.qy.data(), l.bad.data(),
+                           draws, random);
+                std::vector<double> wx, wy, sx, sy;
+                Xoshiro256 rng(5, 2);
+                for (int i = 0; i < draws; ++i) {
+                    double q[2];
+                    if (map.apply(p, q, rng)) {
+                        sx.push_back(q[0]);
+                        sy.push_back(q[1]);
+                    }
+                    if (!l.bad[std::size_t(i)]) {
+                        wx.push_back(l.qx[std::size_t(i)]);
+                        wy.push_back(l.qy[std::size_t(i)]);
+                    }
+                }
+                const double badW = double(draws) - double(wx.size());
+                const double badS = double(draws) - double(sx.size());
+                QVERIFY2(std::fabs(badW - badS) <= 6 * std::sqrt(std::max(badW, badS)) + 2,
+                         qPrintable(name + QStringLiteral(": bad values %1 against %2")
+                                               .arg(badW)
+                                               .arg(badS)));
+                for (const auto &[w, s] : {std::pair{&wx, &sx}, std::pair{&wy, &sy}}) {
+                    const std::vector<double> qw = quantiles(*w), qs = quantiles(*s);
+                    const double spread = qs[4] - qs[0];
+                    for (std::size_t k = 0; k < qw.size(); ++k)
+                        QVERIFY2(std::fabs(qw[k] - qs[k]) <= 0.05 * spread + 1e-9,
+                                 qPrintable(name + QStringLiteral(": quantile %1 wave %2, "
+                                                                  "scalar %3 (10-90 %% spread %4)")
+                                                       .arg(k)
+                                                       .arg(qw[k])
+                                                       .arg(qs[k])
+                                                       .arg(spread)));
+                }
+            }
+        }
+        QVERIFY(tested >= 15);
+    }
+
+    void partialLanesAndOneBadLane()
+    {
+        // Five lanes (one register and one lane of the next): a pre-affine that sends three of
+        // them beyond flam3's 1e10 (bad: a random replacement in [-1, 1]^2), two not; the
+        // padding lanes hold NaN and are ignored.
+        FlameXform x;
+        x.variations = {{0, 1.0}};
+        x.pre = {1e12, 0, 0, 0, 1, 0};
+        const XformMap map(x);
+        const XformWave wave(map);
+        Lanes l(5);
+        const double xs[5] = {0.5, 2e-11, 0.25, -0.3, 1e-12};
+        for (std::size_t i = 0; i < 5; ++i) {
+            l.x[i] = xs[i];
+            l.y[i] = 0.25 * double(i);
+        }
+        l.x[5] = l.x[6] = l.x[7] = std::nan("");
+        WaveRandom random(1, 0);
+        wave.apply(l.x.data(), l.y.data(), l.qx.data(), l.qy.data(), l.bad.data(), 5, random);
+        const bool bad[5] = {true, false, true, true, false};
+        Xoshiro256 rng(1, 0);
+        for (std::size_t i = 0; i < 5; ++i) {
+            QCOMPARE(bool(l.bad[i]), bad[i]);
+            if (bad[i]) {
+                QVERIFY(std::fabs(l.qx[i]) <= 1 && std::fabs(l.qy[i]) <= 1);
+                continue;
+            }
+            const double p[2] = {l.x[i], l.y[i]};
+            double q[2];
+            QVERIFY(map.apply(p, q, rng));
+            QCOMPARE(l.qx[i], q[0]);
+            QCOMPARE(l.qy[i], q[1]);
+        }
+    }
+
+    void flameAsTheScalarGame()
+    {
+        // tests/cli/test_flame_chaos.cpp holds the wave's pictures to flam3-render's; here the
+        // wave against the scalar game on one flame with a final xform, xaos and opacity.
+        Flame f;
+        f.width = f.height = 128;
+        f.scale = 32;
+        for (std::size_t i = 0; i < 256; ++i)
+            f.palette[i] = {i / 255.0, 0.3, 1 - i / 255.0};
+        FlameXform a = xformOf(variationId("julian"), true, false);
+        a.colour = 0;
+        FlameXform b = xformOf(variationId("swirl"), false, true);
+        b.colour = 1;
+        b.opacity = 0.6;
+        b.xaos = {2.0, 0.5};
+        FlameXform c = xformOf(variationId("spherical"), true, false);
+        c.pre = {0.5, 0, 0.3, 0, 0.5, -0.2};
+        c.colour = 0.5;
+        f.xforms = {a, b, c};
+        FlameXform fin = xformOf(variationId("bubble"), false, false);
+        fin.pre = {1, 0, 0, 0, 1, 0};
+        f.finalXform = fin;
+        FlameRaster job;
+        job.flame = &f;
+        job.frame = flameFrame(f);
+        job.samples = 2000000;
+        FlameHistogram wave, scalar;
+        const FlameStats ws = accumulateFlameColours(job, wave);
+        forceBaselineKernels(true);
+        const FlameStats ss = accumulateFlameColours(job, scalar);
+        forceBaselineKernels(false);
+        QCOMPARE(ws.samples, job.samples);
+        QCOMPARE(ss.samples, job.samples);
+        double tw = 0, ts = 0;
+        int litBoth = 0, litOne = 0;
+        for (std::size_t i = 0; i < wave.cells.size(); ++i) {
+            tw += wave.cells[i][3];
+            ts += scalar.cells[i][3];
+            const bool lw = wave.cells[i][3] > 0, ls = scalar.cells[i][3] > 0;
+            litBoth += lw && ls;
+            litOne += lw != ls;
+        }
+        qInfo("total alpha: wave %.0f, scalar %.0f; cells lit in both %d, in one %d", tw, ts,
+              litBoth, litOne);
+        QVERIFY(std::fabs(tw - ts) <= 0.01 * ts);  // opacity 0.6: ~1e6 hits a side
+        QVERIFY(litOne <= litBoth / 20);
+        QVERIFY(std::llabs(std::int64_t(ws.offscreen) - std::int64_t(ss.offscreen))
+                <= 6 * std::sqrt(double(ss.offscreen)) + 10);
+    }
+};
+
+AWB_TEST_APPLESS_MAIN(TestFlameWave)
+#include "test_flame_wave.moc"
