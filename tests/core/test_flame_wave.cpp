@@ -1,4 +1,4 @@
-// The flame's wave of orbits (src/core/flame/XformWave.cpp: four lanes in AVX2, libmvec's
+// The flame's wave of orbits (src/core/flame/XformWaveAvx2.cpp: four lanes in AVX2, libmvec's
 // functions) against XformMap::apply, which tests/core/test_flame_variations.cpp holds to
 // libflam3's own apply_xform:
 //  - every deterministic variation of the 99 -- those with a vector kernel and those the wave
