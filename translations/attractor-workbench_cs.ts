@@ -3622,6 +3622,10 @@
         <source>%1 is shown, not edited</source>
         <translation>%1 se jen zobrazuje, nelze upravit</translation>
     </message>
+    <message>
+        <source>Change %1 of %2</source>
+        <translation>Změnit %1 položky %2</translation>
+    </message>
 </context>
 <context>
     <name>awb::ItemAddress</name>

@@ -3619,6 +3619,10 @@
         <source>%1 is shown, not edited</source>
         <translation>%1&#xa0;: affichage seul, non modifiable</translation>
     </message>
+    <message>
+        <source>Change %1 of %2</source>
+        <translation>Modifier %1 de %2</translation>
+    </message>
 </context>
 <context>
     <name>awb::ItemAddress</name>

@@ -3616,6 +3616,10 @@
         <source>%1 is shown, not edited</source>
         <translation>%1 仅供显示，不可编辑</translation>
     </message>
+    <message>
+        <source>Change %1 of %2</source>
+        <translation>更改 %2 的 %1</translation>
+    </message>
 </context>
 <context>
     <name>awb::ItemAddress</name>

@@ -78,6 +78,8 @@ void Item::execute(QUndoCommand *command)
 
 void Item::executeProperty(QUndoCommand *command, int gesture)
 {
+    if (!m_editName.isEmpty())
+        command->setText(m_editName);
     if (gesture != 0 || !hasDependents()) {
         execute(command);
         return;

@@ -165,6 +165,25 @@ signals:
     // Cached derived data was dropped: views showing it should ask again.
     void derivedChanged();
 
+public:
+    // While one is alive, the item's property edits are named `text` on the undo stack: a
+    // declared field's edit (the Properties dock, Python, `set`) names the field, not the part
+    // that holds it ("Change Gamma of flame", not "Change flame of flame").
+    class EditName {
+    public:
+        EditName(Item &item, const QString &text) : m_item(item), m_before(item.m_editName)
+        {
+            item.m_editName = text;
+        }
+        ~EditName() { m_item.m_editName = m_before; }
+        EditName(const EditName &) = delete;
+        EditName &operator=(const EditName &) = delete;
+
+    private:
+        Item &m_item;
+        QString m_before;
+    };
+
 protected:
     explicit Item(const QString &defaultName);
 
@@ -200,6 +219,7 @@ private:
     friend class Declaration;  // the declared parts store through applyProperty()
 
     QString m_name;
+    QString m_editName;  // EditName's, or empty
     StyleSpec m_style;
     AnimationSpec m_animation{0.0, 25.0, {}};
     QJsonObject m_unknownFields;

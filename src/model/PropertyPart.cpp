@@ -14,6 +14,12 @@ QString shownNotEdited(const QString &label)
     return QCoreApplication::translate("awb::Item", "%1 is shown, not edited").arg(label);
 }
 
+// The undo step of one field's edit.
+QString editText(const Item &item, const QString &label)
+{
+    return QCoreApplication::translate("awb::Item", "Change %1 of %2").arg(label, item.name());
+}
+
 } // namespace
 
 bool PartCore::commit(Item &item, const void *next, int gesture, QString *error,
@@ -90,6 +96,7 @@ std::optional<bool> PartCore::set(Item &item, const QString &key, const QVariant
         x && property::numeric(i.type)
         && (!std::isfinite(*x) || *x < i.minimum || *x > i.maximum))
         return refuse(property::outOfRange(i, *x));
+    const Item::EditName naming(item, editText(item, i.label));
     return commit(item, next->get(), f->merges ? gesture : 0, error, true);
 }
 
@@ -116,6 +123,7 @@ std::optional<bool> PartCore::setJson(Item &item, const QString &key, const QJso
                                            : QStringLiteral("%1: %2").arg(e.field, e.message);
             return false;
         }
+        const Item::EditName naming(item, editText(item, info(item, now, f).label));
         return commit(item, next->get(), 0, error);
     }
     return std::nullopt;

@@ -147,6 +147,9 @@ void TestDeclaredProperties::everyParameterEditIsOneUndoStep()
             if (itemBytes(*item) == before)
                 continue;  // a value the file does not hold (the start set's text form)
             QCOMPARE(p.undoStack()->index(), steps + 1);
+            // The undo step names the field edited, not the part that holds it.
+            QCOMPARE(p.undoStack()->text(steps),
+                     QStringLiteral("Change %1 of %2").arg(info.label, item->name()));
             const QByteArray after = itemBytes(*item);
             p.undoStack()->undo();
             QVERIFY2(itemBytes(*item) == before, qPrintable(item->name() + ": " + info.key));
