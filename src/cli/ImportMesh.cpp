@@ -107,13 +107,12 @@ int importMesh(const QStringList &args)
             throw Failure{QStringLiteral("%1: %2").arg(file, added->derivedError())};
         if (!project.saveAs(parser.value("out"), &error))
             throw Failure{error};
-        const auto extraordinary = added->extraordinary();
         out() << CliTr::tr("%1: item '%2', %3 vertices, %4 faces, %5 extraordinary "
                                   "vertices (%6)\n")
                      .arg(parser.value("out"), added->name())
                      .arg(mesh.vertices.rows())
                      .arg(mesh.faces.size())
-                     .arg(extraordinary->size())
+                     .arg(added->extraordinaryCount())
                      .arg(MeshInputs::schemeNames().at(int(scheme)));
         if (!mesh.tags.empty())
             out() << CliTr::tr("  sharp features: %1 creases, %2 corners, %3 holes; boundary "

@@ -245,6 +245,12 @@ std::shared_ptr<const std::vector<ExtraordinaryVertex>> SubdivisionMeshItem::ext
     return list;
 }
 
+int SubdivisionMeshItem::extraordinaryCount() const
+{
+    const auto p = pieces();
+    return p ? awb::extraordinaryCount(*p) : 0;
+}
+
 std::string SubdivisionMeshItem::limitObj(int rounds) const
 {
     if (const MaybeProblem p = m_inputs.check())

@@ -77,6 +77,8 @@ public:
     // The extraordinary vertices with their spectra (empty when the mesh is refused); kept
     // until the mesh changes.
     std::shared_ptr<const std::vector<ExtraordinaryVertex>> extraordinary() const;
+    // How many extraordinary() lists, without analysing them (0 when the mesh is refused).
+    int extraordinaryCount() const;
     // The one at input vertex `vertex` (or, with `face` >= 0, at the centre of that face), or
     // null.
     const ExtraordinaryVertex *findExtraordinary(

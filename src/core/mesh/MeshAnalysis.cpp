@@ -92,6 +92,31 @@ const std::vector<Complex> &ExtraordinaryVertex::eigenvalues() const
     return matrix ? matrix->eigenvalues : none;
 }
 
+namespace {
+
+// Whether a piece's root is one of the extraordinary vertices listed: a vertex root (not a
+// face's), not a corner of one face (the crease rule), and a point of the input (a vertex, or
+// a Catmull-Clark face's centre), not one the isolating steps made.
+bool listed(const MeshPieces &pieces, const MeshPieceRoot &root)
+{
+    if (root.vertex < 0)
+        return false;
+    const MeshPieceType &type = pieces.types[std::size_t(root.type)];
+    if (type.boundary && type.valence == 2)
+        return false;
+    return pieces.origin[std::size_t(root.vertex)] != MeshPieces::kNewPoint;
+}
+
+} // namespace
+
+int extraordinaryCount(const MeshPieces &pieces)
+{
+    int n = 0;
+    for (const MeshPieceRoot &root : pieces.roots)
+        n += listed(pieces, root);
+    return n;
+}
+
 std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
                                                        const Mat &inputVertices)
 {
@@ -116,14 +141,10 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
     std::map<int, std::shared_ptr<const AnalysedMatrix>> ringMatrices;   // by valence
     std::map<int, std::shared_ptr<const AnalysedMatrix>> pieceMatrices;  // by settled type
     for (const MeshPieceRoot &root : pieces.roots) {
-        if (root.vertex < 0)
+        if (!listed(pieces, root))
             continue;
         const MeshPieceType &type = pieces.types[std::size_t(root.type)];
-        if (type.boundary && type.valence == 2)  // a corner of one face: the crease rule
-            continue;
         const int origin = pieces.origin[std::size_t(root.vertex)];
-        if (origin == MeshPieces::kNewPoint)
-            continue;
         ExtraordinaryVertex e;
         if (origin >= 0)
             e.vertex = origin;

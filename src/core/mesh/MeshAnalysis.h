@@ -63,5 +63,7 @@ struct ExtraordinaryVertex {
 // quads; in the order: input vertices, then faces.
 std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
                                                        const Mat &inputVertices);
+// How many extraordinaryVertices() lists, without analysing them (import's report).
+int extraordinaryCount(const MeshPieces &pieces);
 
 } // namespace awb
