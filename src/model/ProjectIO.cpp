@@ -163,8 +163,22 @@ PointList FieldReader::points(const QString &key, const std::optional<PointList>
                            : tr("expected an array of points [x, y]"));
     PointList out;
     const QJsonArray a = v.toArray();
-    for (qsizetype i = 0; i < a.size(); ++i)
-        out.push_back(toPoint(a[i], path(key) + QStringLiteral("[%1]").arg(i + 1), dim));
+    out.reserve(std::size_t(a.size()));
+    for (qsizetype i = 0; i < a.size(); ++i) {
+        // A point of finite numbers is read without naming where it is (a mesh's 10^5
+        // points); anything else is read by toPoint, which names the place of the problem.
+        const QJsonValue p = a[i];
+        const QJsonArray c = p.toArray();
+        if (p.isArray() && c.size() == dim) {
+            const double x = c[0].toDouble(NAN), y = c[1].toDouble(NAN),
+                         z = dim == 3 ? c[2].toDouble(NAN) : 0.0;
+            if (std::isfinite(x) && std::isfinite(y) && std::isfinite(z)) {
+                out.push_back({x, y, z});
+                continue;
+            }
+        }
+        out.push_back(toPoint(p, path(key) + QStringLiteral("[%1]").arg(i + 1), dim));
+    }
     return out;
 }
 

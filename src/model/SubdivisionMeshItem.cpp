@@ -428,18 +428,24 @@ const PropertyTable &SubdivisionMeshItem::declaration()
                     m.faces.clear();
                     m.faces.reserve(std::size_t(rows.size()));
                     for (qsizetype k = 0; k < rows.size(); ++k) {
-                        const QString at = where + QStringLiteral("[%1]").arg(k + 1);
+                        // Where a problem is, made only for the message (10^5 faces).
+                        const auto at = [&] { return where + QStringLiteral("[%1]").arg(k + 1); };
                         if (!rows[k].isArray())
-                            throw LoadError{at, tr("expected a face: an array of vertex "
-                                                   "numbers (0-based)")};
+                            throw LoadError{at(), tr("expected a face: an array of vertex "
+                                                     "numbers (0-based)")};
                         const QJsonArray loop = rows[k].toArray();
                         std::vector<int> face;
+                        face.reserve(std::size_t(loop.size()));
                         for (qsizetype i = 0; i < loop.size(); ++i) {
-                            const double x = FieldReader::toNumber(
-                                loop[i], at + QStringLiteral("[%1]").arg(i + 1));
+                            const QJsonValue n = loop[i];
+                            const double x =
+                                n.isDouble() && std::isfinite(n.toDouble())
+                                    ? n.toDouble()
+                                    : FieldReader::toNumber(
+                                          n, at() + QStringLiteral("[%1]").arg(i + 1));
                             if (x != std::floor(x) || std::abs(x) > 1e9)
-                                throw LoadError{at, tr("vertex numbers are whole numbers "
-                                                       "(0-based)")};
+                                throw LoadError{at(), tr("vertex numbers are whole numbers "
+                                                         "(0-based)")};
                             face.push_back(int(x));
                         }
                         m.faces.push_back(std::move(face));
