@@ -9,8 +9,9 @@
 //  - the random ones (different generators) by their distributions over 20000 draws at fixed
 //    points: mean and standard deviation of each coordinate within 6 standard errors;
 //  - lane counts that are not multiples of four, and a bad value in one lane only;
-//  - a whole flame's histogram drawn by the wave against the scalar game's
-//    (forceBaselineKernels): the same total weight and the same lit blocks.
+//  - a whole flame's histogram drawn by the vector kernels against the scalar kernels'
+//    (forceBaselineKernels: the same game, XformMap::apply on each lane): the same total
+//    weight and the same lit blocks.
 // Skipped only where the processor has no AVX2 (the wave does not run there).
 #include "core/flame/FlameChaos.h"
 #include "core/flame/Variations.h"
@@ -256,7 +257,8 @@ private slots:
     void flameAsTheScalarGame()
     {
         // tests/cli/test_flame_chaos.cpp holds the wave's pictures to flam3-render's; here the
-        // wave against the scalar game on one flame with a final xform, xaos and opacity.
+        // vector kernels against the scalar ones on one flame with a final xform, xaos and
+        // opacity.
         Flame f;
         f.width = f.height = 128;
         f.scale = 32;

@@ -6,7 +6,6 @@
 #include "core/flame/Variations.h"
 #include "core/flame/FlameGame.h"
 #include "core/flame/XformWave.h"
-#include "core/render/EngineShared.h"
 #include "core/ifs/Random.h"
 
 #include <algorithm>
@@ -20,12 +19,6 @@ namespace awb::flame {
 using namespace detail;
 
 namespace {
-
-#if defined(AWB_AVX2_KERNELS)
-#define AWB_WAVE_DRIVER __attribute__((target("avx2,fma")))
-#else
-#define AWB_WAVE_DRIVER
-#endif
 
 std::string tr(const char *text) { return coreTranslate("awb::flame", text); }
 
@@ -61,76 +54,6 @@ void checkXform(const FlameXform &x, const std::string &which)
                                            which));
 }
 
-// One stream's samples into `sink`.
-template <class Sink>
-FlameStats runStream(const Xforms &xf, const Choice &choice, const Plot &plot,
-                     std::uint64_t seed, int stream, std::uint64_t samples, Sink &sink,
-                     const IterationControl &control, std::atomic<std::uint64_t> &done,
-                     double total)
-{
-    FlameStats stats;
-    Xoshiro256 rng(seed, std::uint64_t(stream));
-    auto uniform11 = [&] { return 2.0 * uniform01(rng) - 1.0; };
-    std::uint64_t left = samples;
-    while (left > 0) {
-        if (control.cancel && control.cancel->load(std::memory_order_relaxed)) {
-            stats.cancelled = true;
-            sink.flush();
-            return stats;
-        }
-        const int batch = int(std::min<std::uint64_t>(left, kBatch));
-        double p[2] = {uniform11(), uniform11()};
-        double c = uniform01(rng);
-        int last = 0;
-        int consecutive = 0;
-        for (int i = -kFuse; i < batch; ++i) {
-            const int fn = choice.rows[std::size_t(choice.xaos ? last : 0)].pick(rng.next());
-            double q[2];
-            // flam3's apply_xform moves the colour before it knows the point is bad, and a
-            // retry keeps it (flam3_iterate: p[2] = q[2]).
-            const double s = xf.speed[std::size_t(fn)];
-            c = s * xf.colour[std::size_t(fn)] + (1.0 - s) * c;
-            if (!xf.maps[std::size_t(fn)].apply(p, q, rng)) {
-                ++stats.badValues;
-                if (++consecutive < 5) {
-                    p[0] = q[0];
-                    p[1] = q[1];
-                    --i;
-                    continue;
-                }
-            }
-            consecutive = 0;
-            last = fn + 1;
-            p[0] = q[0];
-            p[1] = q[1];
-            double r[2] = {p[0], p[1]};
-            double rc = c;
-            if (xf.final && (xf.finalOpacity == 1.0 || uniform01(rng) < xf.finalOpacity)) {
-                xf.final->apply(p, r, rng);
-                rc = xf.finalSpeed * xf.finalColour + (1.0 - xf.finalSpeed) * c;
-            }
-            if (i < 0)
-                continue;
-            const double opacity = xf.opacity[std::size_t(fn)];
-            if (!sink.keep(opacity, rng))
-                continue;
-            const std::ptrdiff_t k = plot.cell(r[0], r[1]);
-            if (k < 0) {
-                ++stats.offscreen;
-                continue;
-            }
-            sink.hit(std::size_t(k), rc, opacity);
-        }
-        left -= std::uint64_t(batch);
-        stats.samples += std::uint64_t(batch);
-        const std::uint64_t d = done.fetch_add(std::uint64_t(batch)) + std::uint64_t(batch);
-        if (control.progress)
-            control.progress(std::min(1.0, double(d) / total));
-    }
-    sink.flush();
-    return stats;
-}
-
 // The orbits of one stream's wave: how many run side by side. Each runs its own batches of
 // kBatch samples after kFuse steps, as one scalar orbit does; enough lanes that the orbits
 // choosing one xform fill registers, few enough that a small request (a window's first
@@ -143,14 +66,16 @@ int waveOrbits(std::uint64_t samples)
 
 // One stream's samples into `sink`, its orbits advanced together (XformWave.h): in each step
 // every running orbit chooses its xform, the orbits of each xform go through it together, then
-// through the final xform, each into the sink in orbit order. The same game as runStream's
-// (restarts, fuse, xaos, bad values retried, the final xform and opacities) on each orbit.
-// Compiled for AVX2 (only called where XformWave runs): the sink's four sums in one register.
+// through the final xform, each into the sink in orbit order. flam3's game (flam3_iterate) on
+// each orbit: batches of kBatch samples from a random restart after kFuse steps, the xform by
+// weight or xaos row, the colour moved first, a bad value retried from flam3's replacement up
+// to four times (the fifth drawn), the final xform drawn with its opacity, the xform's
+// opacity. On every processor: XformWave applies the scalar kernels where AVX2 does not run.
 template <class Sink>
-AWB_WAVE_DRIVER FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot,
-                                   std::uint64_t seed, int stream, std::uint64_t samples,
-                                   Sink &sink, const IterationControl &control,
-                                   std::atomic<std::uint64_t> &done, double total)
+FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std::uint64_t seed,
+                   int stream, std::uint64_t samples, Sink &sink,
+                   const IterationControl &control, std::atomic<std::uint64_t> &done,
+                   double total)
 {
     FlameStats stats;
     WaveRandom random(seed, std::uint64_t(stream));
@@ -350,9 +275,7 @@ FlameStats playStreams(const FlameRaster &job, const IterationControl &control,
         for (int s = first; s < last && !r.cancelled; ++s) {
             const std::uint64_t share = streamShare(job.samples, s);
             const FlameStats one =
-                xf.waves.empty()
-                    ? runStream(xf, choice, plot, job.seed, s, share, sink, control, done, total)
-                    : runWave(xf, choice, plot, job.seed, s, share, sink, control, done, total);
+                runWave(xf, choice, plot, job.seed, s, share, sink, control, done, total);
             r.samples += one.samples;
             r.badValues += one.badValues;
             r.offscreen += one.offscreen;

@@ -1,6 +1,5 @@
 #pragma once
-// The pieces of the flame's chaos game (FlameChaos.cpp), shared by its scalar run and its wave
-// of orbits: the xform choice (weights, xaos), the camera to cells, the xforms ready to apply
+// The pieces of the flame's chaos game (FlameChaos.cpp): the xform choice (weights, xaos), the camera to cells, the xforms ready to apply
 // (and their waves, XformWave.h), and the two sinks a hit goes to -- the engine's labelled
 // histogram and flam3's colour buckets. Internal to src/core/flame.
 
@@ -91,7 +90,7 @@ struct Xforms {
     std::vector<double> colour, speed, opacity;
     std::unique_ptr<XformMap> final;
     double finalColour = 0, finalSpeed = 0, finalOpacity = 1;
-    // The same maps on waves of orbits (XformWave.h), where the processor runs them.
+    // The same maps on waves of orbits (XformWave.h).
     std::vector<XformWave> waves;
     std::unique_ptr<XformWave> finalWave;
 
@@ -112,12 +111,10 @@ struct Xforms {
             finalSpeed = f.finalXform->colourSpeed;
             finalOpacity = f.finalXform->opacity;
         }
-        if (XformWave::available()) {
-            for (const XformMap &m : maps)
-                waves.emplace_back(m);
-            if (final)
-                finalWave = std::make_unique<XformWave>(*final);
-        }
+        for (const XformMap &m : maps)
+            waves.emplace_back(m);
+        if (final)
+            finalWave = std::make_unique<XformWave>(*final);
     }
 };
 

@@ -1,6 +1,6 @@
 // XformWave's parts that run on any processor: the lanes' generators, which terms have a
-// vector kernel, whether the wave runs here. The kernels and XformWave::apply are in
-// XformWaveAvx2.cpp, the one file compiled for AVX2.
+// vector kernel, whether they run here, and the lane-by-lane apply where they do not. The
+// kernels are in XformWaveAvx2.cpp, the one file compiled for AVX2.
 #include "core/flame/XformWave.h"
 
 #include "core/flame/VariationIds.h"
@@ -41,7 +41,23 @@ bool XformWave::vectorKernel(int id)
     }
 }
 
-XformWave::XformWave(const XformMap &map) : m_map(&map) {}
+XformWave::XformWave(const XformMap &map) : m_map(&map), m_vector(available()) {}
+
+void XformWave::apply(const double *x, const double *y, double *qx, double *qy,
+                      std::uint8_t *bad, int n, WaveRandom &rng) const
+{
+    if (m_vector) {
+        applyAvx2(x, y, qx, qy, bad, n, rng);
+        return;
+    }
+    for (int i = 0; i < n; ++i) {
+        const double p[2] = {x[i], y[i]};
+        double q[2];
+        bad[i] = !m_map->apply(p, q, rng.scalar);
+        qx[i] = q[0];
+        qy[i] = q[1];
+    }
+}
 
 #if defined(AWB_AVX2_KERNELS)
 
@@ -51,10 +67,10 @@ bool XformWave::available() { return engine::haveAvx2(); }
 
 bool XformWave::available() { return false; }
 
-void XformWave::apply(const double *, const double *, double *, double *, std::uint8_t *, int,
-                      WaveRandom &) const
+void XformWave::applyAvx2(const double *, const double *, double *, double *, std::uint8_t *,
+                          int, WaveRandom &) const
 {
-    throw std::logic_error("XformWave::apply: no vector kernels on this platform");
+    throw std::logic_error("XformWave::applyAvx2: no vector kernels on this platform");
 }
 
 #endif

@@ -1,6 +1,6 @@
 #pragma once
 // One xform on a wave of orbits: XformMap::apply on lanes of points held as arrays (x[i],
-// y[i]), four at a time in AVX2 registers, the variations' sines, exponentials and arctangents
+// y[i]), four at a time in AVX2 registers where the processor has them, the variations' sines, exponentials and arctangents
 // by glibc's vector math library (libmvec, 4 ulp). What FlameChaos.cpp's chaos game runs when
 // the processor has AVX2: the orbits that chose the same xform in one step go through it
 // together. A term with no vector kernel here runs lane by lane through XformMap's own code
@@ -28,8 +28,9 @@ struct WaveRandom {
 class XformWave {
 public:
     static constexpr int kWidth = 4;  // lanes per register
-    // Whether this machine runs waves: AVX2, and the engine's kernels not forced to the
-    // baseline (engine::forceBaselineKernels, as the IFS engine's own AVX2 kernels).
+    // Whether this machine runs the vector kernels: AVX2, and the engine's kernels not forced
+    // to the baseline (engine::forceBaselineKernels, as the IFS engine's own AVX2 kernels).
+    // Elsewhere a wave applies XformMap::apply lane by lane: the same game, scalar kernels.
     static bool available();
     // Whether term `id` has a vector kernel (the others run lane by lane).
     static bool vectorKernel(int id);
@@ -38,12 +39,18 @@ public:
 
     // (qx[i], qy[i]) = map(x[i], y[i]) and bad[i] = whether that was a bad value (q then
     // flam3's replacement, a random point of [-1, 1]^2), for i < n. Each array holds n rounded
-    // up to kWidth entries (the extra lanes are computed and ignored). Requires available().
+    // up to kWidth entries (the extra lanes are computed and ignored). By the vector kernels
+    // when available() was true at construction, else by XformMap::apply on each lane.
     void apply(const double *x, const double *y, double *qx, double *qy, std::uint8_t *bad,
                int n, WaveRandom &rng) const;
 
 private:
+    // The vector kernels (XformWaveAvx2.cpp).
+    void applyAvx2(const double *x, const double *y, double *qx, double *qy, std::uint8_t *bad,
+                   int n, WaveRandom &rng) const;
+
     const XformMap *m_map;
+    bool m_vector;
 };
 
 } // namespace awb::flame

@@ -1,4 +1,4 @@
-// XformWave::apply (XformWave.h) and its vector kernels: the scalar ones of
+// XformWave::applyAvx2 (XformWave.h) and its vector kernels: the scalar ones of
 // VariationKernels.cpp in GCC's vector extension (the same expressions on four doubles),
 // calling libmvec's AVX2 variants (_ZGVdN4v_sin, ...: glibc's vector ABI names), declared here
 // since glibc declares them only under -ffast-math.
@@ -383,7 +383,7 @@ AWB_WAVE_INLINE auto badValue4(V x) { return x != x || x > 1e10 || x < -1e10; }
 
 } // namespace
 
-void XformWave::apply(const double *x, const double *y, double *qx, double *qy,
+void XformWave::applyAvx2(const double *x, const double *y, double *qx, double *qy,
                                       std::uint8_t *bad, int n, WaveRandom &random) const
 {
     const XformMap &m = *m_map;
