@@ -2662,6 +2662,10 @@
         <source>flame &apos;%1&apos;: its xaos rows make %2 arcs between its xforms, more than the %3 a controlled IFS may have</source>
         <translation>plamen &apos;%1&apos;: jeho řádky xaos vytvářejí mezi jeho xform %2 hran, více než %3, které smí mít řízený IFS</translation>
     </message>
+    <message>
+        <source>%1: flame &apos;%2&apos; not imported: %3</source>
+        <translation>%1: plamen „%2“ nebyl importován: %3</translation>
+    </message>
 </context>
 <context>
     <name>awb::FlameFile</name>

@@ -2659,6 +2659,10 @@
         <source>flame &apos;%1&apos;: its xaos rows make %2 arcs between its xforms, more than the %3 a controlled IFS may have</source>
         <translation>flamme &apos;%1&apos; : ses lignes xaos créent %2 arcs entre ses xforms, plus que les %3 qu&apos;un IFS contrôlé peut avoir</translation>
     </message>
+    <message>
+        <source>%1: flame &apos;%2&apos; not imported: %3</source>
+        <translation>%1&#xa0;: flamme «&#xa0;%2&#xa0;» non importée&#xa0;: %3</translation>
+    </message>
 </context>
 <context>
     <name>awb::FlameFile</name>

@@ -2656,6 +2656,10 @@
         <source>flame &apos;%1&apos;: its xaos rows make %2 arcs between its xforms, more than the %3 a controlled IFS may have</source>
         <translation>火焰 &apos;%1&apos;：其 xaos 行在其各 xform 之间产生 %2 条弧，超过了受控IFS所允许的 %3 条</translation>
     </message>
+    <message>
+        <source>%1: flame &apos;%2&apos; not imported: %3</source>
+        <translation>%1：火焰“%2”未导入：%3</translation>
+    </message>
 </context>
 <context>
     <name>awb::FlameFile</name>

@@ -349,12 +349,25 @@ ImportedItems importFlameText(const QByteArray &text, const QString &fileName)
         QString name = QString::fromStdString(r.flame.name).trimmed();
         if (name.isEmpty())
             name = FlameTr::tr("flame %1").arg(k + 1);
+        const std::size_t before = out.items.size();
         if (affineFlame(r.flame))
             importAffineFlame(r, name, file, out);
         else if (linearXaosFlame(r.flame))
             importXaosFlame(r, name, file, out);
         else
             importFlameItem(r, name, file, out);
+        // What is imported must read back as a project file holds it (the fields' declared
+        // ranges: quality="1e12" would be refused by every reader of the project it went
+        // into): an item that does not is left out, with the reader's words.
+        for (std::size_t i = before; i < out.items.size();) {
+            QString error;
+            if (ProjectIO::copyItem(*out.items[i], &error)) {
+                ++i;
+                continue;
+            }
+            out.problems << FlameTr::tr("%1: flame '%2' not imported: %3").arg(file, name, error);
+            out.items.erase(out.items.begin() + std::ptrdiff_t(i));
+        }
     }
     return out;
 }

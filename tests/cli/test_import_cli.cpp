@@ -235,6 +235,20 @@ void TestImportCli::refusals()
                  && err.contains("no entry could be imported"),
              err.constData());
     QVERIFY(!QFile::exists(m_dir.filePath("none.awb")));
+    // A flame whose field lies outside what a project holds (quality 1e12, the declared range
+    // 1e-6 to 1e6) is not imported: import never writes what the program then refuses.
+    QCOMPARE(run({"import",
+                  write("q.flame", "<flame name=\"q\" size=\"64 64\" scale=\"16\" "
+                                   "quality=\"1e12\"><xform weight=\"1\" spherical=\"1\" "
+                                   "coefs=\"0.5 0 0 0.5 0 0\"/></flame>"),
+                  "--out", m_dir.filePath("q.awb")},
+                 &out, &err),
+             1);
+    QVERIFY2(err.contains("q.flame: flame 'q' not imported: field \"tone.quality\": 1e+12 is "
+                          "outside the range")
+                 && err.contains("no entry could be imported"),
+             err.constData());
+    QVERIFY(!QFile::exists(m_dir.filePath("q.awb")));
     QCOMPARE(run({"import", write("x.txt", "a { }"), "--out", m_dir.filePath("x.awb")}, &out,
                  &err),
              2);
