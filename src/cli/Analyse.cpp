@@ -43,7 +43,6 @@
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QJsonArray>
-#include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
 #include <QTextStream>
@@ -78,11 +77,10 @@ int analyse(const QStringList &args)
                           2};
         Project project;
         load(project, parser.positionalArguments().first());
-        QJsonArray items;
         if (parser.isSet("item")) {
             const AttractorItem *item = attractorItem(project, parser.value("item"));
             Regularity regularity;
-            items.append(analyseItemJson(item, &regularity));
+            const QJsonObject json = analyseItemJson(item, &regularity);
             if (parser.isSet("certificate")) {
                 const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item);
                 if (!curve)
@@ -96,12 +94,18 @@ int analyse(const QStringList &args)
                 if (!writeWholeFile(parser.value("certificate"), cert, &why))
                     throw Failure{why};
             }
+            printJson(QJsonObject{{"items", QJsonArray{json}}});
         } else {
-            for (Item *item : project.items())
-                if (auto *a = qobject_cast<AttractorItem *>(item))
-                    items.append(analyseItemJson(a));
+            // Item by item: each analysis printed and released before the next is made.
+            const QList<Item *> all = project.items();
+            qsizetype next = 0;
+            printJsonList("items", [&]() -> QJsonValue {
+                while (next < all.size())
+                    if (auto *a = qobject_cast<AttractorItem *>(all[next++]))
+                        return analyseItemJson(a);
+                return QJsonValue(QJsonValue::Undefined);
+            });
         }
-        out() << QJsonDocument(QJsonObject{{"items", items}}).toJson(QJsonDocument::Indented);
         return 0;
     });
 }

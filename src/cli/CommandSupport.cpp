@@ -11,6 +11,8 @@
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QJsonArray>
+#include <QJsonDocument>
 
 #include <algorithm>
 #include <cstdio>
@@ -30,6 +32,103 @@ QTextStream &err()
 {
     static QTextStream s(stderr);
     return s;
+}
+
+namespace {
+
+void put(QByteArrayView bytes)
+{
+    std::fwrite(bytes.data(), 1, std::size_t(bytes.size()), stdout);
+}
+
+// Qt's own text of `value` as a document's top (4 spaces a level), without a final line break.
+QByteArray qtText(const QJsonValue &value)
+{
+    QByteArray text;
+    if (value.isObject())
+        text = QJsonDocument(value.toObject()).toJson(QJsonDocument::Indented);
+    else if (value.isArray())
+        text = QJsonDocument(value.toArray()).toJson(QJsonDocument::Indented);
+    else  // a scalar, as the one member of a compact array: "[v]"
+        return QJsonDocument(QJsonArray{value}).toJson(QJsonDocument::Compact).chopped(1).sliced(1);
+    text.chop(1);
+    return text;
+}
+
+// `text` moved `depth` levels in: 4 * depth spaces after each line break.
+void putIndented(const QByteArray &text, int depth)
+{
+    const QByteArray pad(4 * depth, ' ');
+    qsizetype from = 0;
+    for (qsizetype nl; (nl = text.indexOf('\n', from)) >= 0; from = nl + 1) {
+        put(QByteArrayView(text).sliced(from, nl + 1 - from));
+        put(pad);
+    }
+    put(QByteArrayView(text).sliced(from));
+}
+
+// Containers up to this size, below the first levels, are printed by Qt at once.
+constexpr qsizetype kWhole = 64;
+
+// `value` at nesting `depth`, as Qt's writer nests it (QJsonPrivate::Writer: "[\n", members at
+// depth + 1 joined by ",\n", "\n", the closing bracket at depth).
+void printValue(const QJsonValue &value, int depth)
+{
+    const QByteArray pad(4 * (depth + 1), ' ');
+    if (value.isArray() && value.toArray().size() > kWhole) {
+        const QJsonArray a = value.toArray();
+        put("[\n");
+        for (qsizetype i = 0; i < a.size(); ++i) {
+            put(i ? ",\n" : "");
+            put(pad);
+            printValue(a.at(i), depth + 1);
+        }
+        put("\n");
+        put(QByteArray(4 * depth, ' '));
+        put("]");
+    } else if (value.isObject() && !value.toObject().isEmpty()
+               && (depth < 4 || value.toObject().size() > kWhole)) {
+        const QJsonObject o = value.toObject();
+        put("{\n");
+        for (auto it = o.begin(); it != o.end(); ++it) {
+            put(it != o.begin() ? ",\n" : "");
+            put(pad);
+            put(qtText(it.key()));
+            put(": ");
+            printValue(it.value(), depth + 1);
+        }
+        put("\n");
+        put(QByteArray(4 * depth, ' '));
+        put("}");
+    } else {
+        putIndented(qtText(value), depth);
+    }
+}
+
+} // namespace
+
+void printJson(const QJsonObject &document)
+{
+    out().flush();
+    printValue(document, 0);
+    put("\n");
+    std::fflush(stdout);
+}
+
+void printJsonList(const QString &key, const std::function<QJsonValue()> &next)
+{
+    out().flush();
+    put("{\n    ");
+    put(qtText(key));
+    put(": [");
+    bool first = true;
+    for (QJsonValue v = next(); !v.isUndefined(); v = next()) {
+        put(first ? "\n        " : ",\n        ");
+        first = false;
+        printValue(v, 2);
+    }
+    put("\n    ]\n}\n");
+    std::fflush(stdout);
 }
 
 std::function<void(double)> progressLine(const QString &what, bool always)

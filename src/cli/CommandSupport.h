@@ -10,6 +10,8 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QJsonObject>
+#include <QJsonValue>
 #include <QString>
 #include <QTextStream>
 
@@ -33,6 +35,15 @@ struct CliTr {
 
 QTextStream &out();
 QTextStream &err();
+
+// Prints `document` on stdout as QJsonDocument::Indented writes it, byte for byte, without
+// ever holding the whole text: large arrays and objects are written member by member (a mesh's
+// analysis lists hundreds of thousands of vertices; its text as one QByteArray, then through
+// QTextStream's QString, took five times the text's size).
+void printJson(const QJsonObject &document);
+// The document {"key": [ ... ]}, its members printed as `next` gives them (an undefined value
+// ends the list): each is printed and released before the next is made.
+void printJsonList(const QString &key, const std::function<QJsonValue()> &next);
 
 // Raised for a user error with its exit code; caught at the command's top by guarded().
 struct Failure {

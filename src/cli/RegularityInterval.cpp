@@ -17,7 +17,6 @@
 
 #include <QCommandLineParser>
 #include <QJsonArray>
-#include <QJsonDocument>
 #include <QJsonObject>
 
 #include <cmath>
@@ -114,15 +113,14 @@ int regularityInterval(const QStringList &args)
                                                                : QJsonValue::Null},
                                            {"upper", s.applies ? QJsonValue(s.upper)
                                                                : QJsonValue::Null}});
-            out() << QJsonDocument(QJsonObject{{"item", curve->name()},
-                                               {"parameter", name},
-                                               {"smoothness", k},
-                                               {"range", QJsonArray{from, to}},
-                                               {"intervals", runs},
-                                               {"evaluations", int(result.samples.size())},
-                                               {"seconds", result.seconds},
-                                               {"samples", samples}})
-                         .toJson(QJsonDocument::Indented);
+            printJson(QJsonObject{{"item", curve->name()},
+                                  {"parameter", name},
+                                  {"smoothness", k},
+                                  {"range", QJsonArray{from, to}},
+                                  {"intervals", runs},
+                                  {"evaluations", int(result.samples.size())},
+                                  {"seconds", result.seconds},
+                                  {"samples", samples}});
             return 0;
         }
         out() << CliTr::tr("%1: C^%2 for %3 in %4 interval(s) of [%5, %6]")

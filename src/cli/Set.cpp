@@ -130,10 +130,9 @@ int set(const QStringList &args)
                 QJsonArray list;
                 for (const PropertyDescription &d : all)
                     list.append(describeJson(d));
-                out() << QJsonDocument(QJsonObject{{"item", item->name()},
-                                                   {"type", item->type()},
-                                                   {"properties", list}})
-                             .toJson(QJsonDocument::Indented);
+                printJson(QJsonObject{{"item", item->name()},
+                                      {"type", item->type()},
+                                      {"properties", list}});
                 return 0;
             }
             out() << CliTr::tr("%1 (%2)").arg(item->name(), item->type()) << "\n";

@@ -10,7 +10,6 @@
 #include "model/SubdivisionMeshItem.h"
 
 #include <QCommandLineParser>
-#include <QJsonDocument>
 
 namespace awb::cli {
 
@@ -33,9 +32,8 @@ int valences(const QStringList &args)
         const int to = intOption(parser, "to", from, 64);
         const QJsonArray rows = valenceTableJson(scheme, from, to);
         if (parser.isSet("json")) {
-            out() << QJsonDocument(QJsonObject{{"scheme", parser.value("scheme").toLower()},
-                                               {"valences", rows}})
-                         .toJson(QJsonDocument::Indented);
+            printJson(QJsonObject{{"scheme", parser.value("scheme").toLower()},
+                                  {"valences", rows}});
             return 0;
         }
         out() << QStringLiteral("%1 %2 %3 %4  %5  %6\n")

@@ -12,7 +12,6 @@
 #include <QCommandLineParser>
 #include <QFile>
 #include <QJsonArray>
-#include <QJsonDocument>
 #include <QJsonObject>
 
 namespace awb::cli {
@@ -45,7 +44,7 @@ int verifyRegularity(const QStringList &args)
                 o["smp"] = smp;
                 o["scheme"] = c.scheme;
             }
-            out() << QJsonDocument(o).toJson(QJsonDocument::Indented);
+            printJson(o);
         } else {
             (c.ok ? out() : err()) << file << ": " << c.message << "\n";
         }

@@ -89,6 +89,8 @@ void TestExamples::everyExample()
     // Analyse: every attractor item has maps with eigenvalues, and every map contracts.
     QCOMPARE(run({"analyse", file, "--json"}, &out, &err), 0);
     const QJsonObject root = QJsonDocument::fromJson(out).object();
+    // Printed piece by piece (CommandSupport.h printJson), byte for byte Qt's indented text.
+    QCOMPARE(out, QJsonDocument(root).toJson(QJsonDocument::Indented));
     const QJsonArray items = root["items"].toArray();
     QVERIFY(!items.isEmpty());
     for (const QJsonValue &v : items) {

@@ -70,7 +70,13 @@ private:
         QByteArray out;
         if (run({"analyse", project, "--json"}, &out) != 0)
             return {};
-        return QJsonDocument::fromJson(out).object()["items"].toArray().first().toObject();
+        const QJsonObject root = QJsonDocument::fromJson(out).object();
+        // Printed piece by piece (CommandSupport.h printJson), byte for byte Qt's text.
+        if (out != QJsonDocument(root).toJson(QJsonDocument::Indented)) {
+            qWarning() << "analyse --json is not Qt's indented text of what it says";
+            return {};
+        }
+        return root["items"].toArray().first().toObject();
     }
     QTemporaryDir m_dir;
 };
@@ -232,6 +238,16 @@ void TestMeshCli::analyseListsTheExtraordinaryVertices()
     QCOMPARE(p[11].toObject()["face"].toInt(), 1);
     QCOMPARE(p[11].toObject()["valence"].toInt(), 5);
     QVERIFY(prism["pieces"].toObject()["types"].toArray().size() > 2);
+    // A torus of 6 x 8 quads split in triangles, under Catmull-Clark: 96 triangle centres of
+    // valence 3 and 48 vertices of valence 6 -- a list printed vertex by vertex (and the text
+    // still Qt's, analyse() checks), with its two kinds once each.
+    const QJsonObject torus = analyse(importMesh(torusMesh(6, 8, true), "catmull-clark", "t"));
+    const QJsonArray t = torus["extraordinary"].toArray();
+    QCOMPARE(t.size(), 96 + 48);
+    QCOMPARE(torus["vertex_kinds"].toArray().size(), 2);
+    QCOMPARE(t[47].toObject()["valence"].toInt(), 6);
+    QCOMPARE(t[48].toObject()["face"].toInt(), 0);
+    QCOMPARE(t[48].toObject()["valence"].toInt(), 3);
 }
 
 void TestMeshCli::exportObjIsTheRefinedMeshAtItsLimit()
