@@ -91,6 +91,8 @@ public:
     int edgeCount() const { return int(m_edges.size()); }
     std::span<const int> face(int f) const { return m_faces[std::size_t(f)]; }
     const IndexRows &faces() const { return m_faces; }
+    // The faces taken from a topology that is not used again (its relations stay).
+    IndexRows takeFaces() && { return std::move(m_faces); }
     // Edge k of face f joins its corners k and k + 1.
     std::span<const int> faceEdges(int f) const { return m_faceEdges[std::size_t(f)]; }
     const Edge &edge(int e) const { return m_edges[std::size_t(e)]; }

@@ -547,12 +547,9 @@ MeshPieces buildManifoldPieces(const Mesh &mesh, MeshScheme scheme, MeshTopology
                               "face %1 has %2 sides; faces of more than %3 sides are not "
                               "supported"),
                 f, t.face(f).size(), kMaxValence));
-    out.isolation.reserve(std::size_t(t.vertexCount()), std::size_t(t.vertexCount()));
     out.origin.resize(std::size_t(t.vertexCount()));
-    for (int v = 0; v < t.vertexCount(); ++v) {
-        out.isolation.push_back({{v, 1.0}});
+    for (int v = 0; v < t.vertexCount(); ++v)
         out.origin[std::size_t(v)] = v;
-    }
     out.inputTags = mesh.tags;
     // Chaikin's rule takes a semi-sharp edge's neighbours beyond a piece's net: the semi-sharp
     // features are refined away on the whole mesh first (uniform creasing keeps them in the
@@ -571,33 +568,47 @@ MeshPieces buildManifoldPieces(const Mesh &mesh, MeshScheme scheme, MeshTopology
                 preludeLevels(t), kMaxPreludeFaces));
         Refinement r = refineTopology(t, scheme);
         const int nv = t.vertexCount(), ne = t.edgeCount();
-        StencilTable isolation;
-        // (A point's stencil on the input grows about fourfold a step.)
-        isolation.reserve(r.stencils.size(), 4 * r.stencils.entryCount());
         std::vector<int> origin;
         origin.reserve(r.stencils.size());
         for (std::size_t p = 0; p < r.stencils.size(); ++p) {
-            appendComposed(isolation, r.stencils[p], out.isolation);
             const int id = int(p);
             origin.push_back(id < nv                                    ? out.origin[p]
                              : out.steps == 0 && id >= nv + ne          ? -1 - (id - nv - ne)
                                                                         : MeshPieces::kNewPoint);
         }
-        out.isolation = std::move(isolation);
         out.origin = std::move(origin);
-        r.stencils = StencilTable{};  // composed: given back before the next level is built
+        out.isolation.push_back(std::move(r.stencils));
         t = refinedTopology(std::move(r));
         ++out.steps;
     }
-    out.isolatedFaces = t.faces();
+
+    // The roots' nets, sized before they are walked (a regular face's 16 or 12 points, an
+    // interior vertex's 6n + 1 or 3n + 1): one allocation, where a growing array held its old
+    // and its doubled copy at once -- the top of a large mesh's peak.
+    const auto regularFace = [&](int f) {
+        for (int v : t.face(f))
+            if (irregular(t, v, scheme))
+                return false;
+        return !t.hole(f);
+    };
+    std::size_t rootCount = 0, netValues = 0;
+    for (int f = 0; f < t.faceCount(); ++f)
+        if (regularFace(f)) {
+            ++rootCount;
+            netValues += scheme == MeshScheme::CatmullClark ? 16 : 12;
+        }
+    for (int v = 0; v < t.vertexCount(); ++v)
+        if (irregular(t, v, scheme)) {
+            ++rootCount;
+            netValues += std::size_t(scheme == MeshScheme::CatmullClark ? 6 : 3) * t.valence(v) + 1;
+        }
+    out.roots.reserve(rootCount);
+    out.rootNets.reserve(rootCount, netValues);
 
     TypeBuilder builder(scheme);
     std::vector<int> net;
     for (int f = 0; f < t.faceCount(); ++f) {
-        bool regular = true;
-        for (int v : t.face(f))
-            regular = regular && !irregular(t, v, scheme);
-        if (!regular || t.hole(f))
+        if (!regularFace(f))
             continue;
         MeshPieceRoot root;
         root.face = f;
@@ -616,6 +627,7 @@ MeshPieces buildManifoldPieces(const Mesh &mesh, MeshScheme scheme, MeshTopology
         out.roots.push_back(root);
         out.rootNets.push_back(net);
     }
+    out.isolatedFaces = std::move(t).takeFaces();  // t is not used again
     builder.run();
     builder.preludeLimits();
     out.types = std::move(builder.types);
@@ -643,17 +655,12 @@ MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
     MeshPieces out = buildManifoldPieces(sheets->mesh, scheme, std::move(drawn.topology));
     const int n = int(mesh.vertices.rows());
     const auto inputVertex = [&](int v) { return v < n ? v : sheets->original[std::size_t(v)]; };
-    StencilTable isolation;
-    isolation.reserve(out.isolation.size(), out.isolation.entryCount());
-    MeshStencil stencil;
-    for (std::size_t k = 0; k < out.isolation.size(); ++k) {
-        stencil.assign(out.isolation[k].begin(), out.isolation[k].end());
-        for (auto &[p, w] : stencil)
-            p = inputVertex(p);
-        mergeStencil(stencil);
-        isolation.push_back(stencil);
-    }
-    out.isolation = std::move(isolation);
+    StencilTable copies;  // each vertex of the sheets from the input's
+    const int sheetVertices = int(sheets->mesh.vertices.rows());
+    copies.reserve(std::size_t(sheetVertices), std::size_t(sheetVertices));
+    for (int v = 0; v < sheetVertices; ++v)
+        copies.push_back({{inputVertex(v), 1.0}});
+    out.isolation.insert(out.isolation.begin(), std::move(copies));
     for (int &o : out.origin)
         if (o >= n)
             o = inputVertex(o);
@@ -666,7 +673,10 @@ MeshPieces buildMeshPieces(const Mesh &mesh, MeshScheme scheme)
 
 Mat isolatedPositions(const MeshPieces &pieces, const Mat &inputVertices)
 {
-    return applyStencils(pieces.isolation, inputVertices);
+    Mat level = inputVertices;
+    for (const StencilTable &stencils : pieces.isolation)
+        level = applyStencils(stencils, level);
+    return level;
 }
 
 int settledType(const MeshPieces &pieces, int type)

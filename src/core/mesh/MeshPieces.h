@@ -110,9 +110,14 @@ struct MeshPieces {
     std::vector<std::vector<int>> inputFaces;
     MeshTags inputTags;
     int steps = 0;  // isolation steps L (and, with Chaikin creases, the levels they last)
-    // The isolated mesh's vertices as stencils on the input's (vertex v < inputVertexCount is
-    // the input's vertex v at every level), and its faces.
-    StencilTable isolation;
+    // The isolated mesh's vertices from the input's, level by level as OpenSubdiv's
+    // PrimvarRefiner goes (vertex v < inputVertexCount is the input's vertex v at every level):
+    // level k's stencils are over level k - 1's points, level 0 the input's vertices (for a
+    // non-manifold input, the first table gives each vertex's copies in the sheets,
+    // MeshSheets.h); none when the input is isolated already. Each level's stencils are kept
+    // as refineTopology made them: composing them over the input would hold two tables of
+    // the finest level at once (a quarter of a large mesh's peak) for no gain in applying them.
+    std::vector<StencilTable> isolation;
     IndexRows isolatedFaces;
     // Where an isolated vertex comes from: >= 0 an input vertex; -1 - f the centre of input
     // face f (a Catmull-Clark face that is not a quad); otherwise kNewPoint.
