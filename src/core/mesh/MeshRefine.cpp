@@ -379,7 +379,8 @@ struct ComposeMarks {
     std::vector<int> met;
 };
 
-const ComposeMarks &composed(std::span<const StencilTable::Entry> outer, const StencilTable &inner)
+template <class Range>
+const ComposeMarks &composed(const Range &outer, const StencilTable &inner)
 {
     // A sum per point met, on marks reused from call to call (the isolation of a mesh of a
     // million faces composes a million stencils): the products are summed in the order met.
@@ -469,10 +470,8 @@ BigVector<int> childTwins(const MeshTopology &t, MeshScheme scheme)
     return twin;
 }
 
-} // namespace
-
-void appendComposed(StencilTable &out, std::span<const StencilTable::Entry> outer,
-                    const StencilTable &inner)
+template <class Range>
+void appendComposedRange(StencilTable &out, const Range &outer, const StencilTable &inner)
 {
     const ComposeMarks &m = composed(outer, inner);
     thread_local MeshStencil s;
@@ -480,6 +479,19 @@ void appendComposed(StencilTable &out, std::span<const StencilTable::Entry> oute
     for (int q : m.met)
         s.emplace_back(q, m.sum[std::size_t(q)]);
     out.push_back(s);
+}
+
+} // namespace
+
+void appendComposed(StencilTable &out, std::span<const StencilTable::Entry> outer,
+                    const StencilTable &inner)
+{
+    appendComposedRange(out, outer, inner);
+}
+
+void appendComposed(StencilTable &out, StencilTable::Stencil outer, const StencilTable &inner)
+{
+    appendComposedRange(out, outer, inner);
 }
 
 Refinement refineTopology(const MeshTopology &t, MeshScheme scheme)
