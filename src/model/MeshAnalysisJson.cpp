@@ -77,21 +77,26 @@ QJsonObject kindJson(const ExtraordinaryVertex &e, MeshScheme scheme)
     return o;
 }
 
-// A vertex: where it is, and its kind (an index into "vertex_kinds").
+// A vertex: where it is, and its kind (an index into "vertex_kinds"). Its keys are inserted
+// in the object's own (sorted) order, each an append, as Latin-1 views (no QString each): a
+// large mesh lists a hundred thousand of these, and the unsorted inserts were a sixth of
+// `analyse`.
 QJsonObject vertexJson(const ExtraordinaryVertex &e, int kind)
 {
+    using namespace Qt::StringLiterals;
     QJsonObject o;
+    if (e.vertex < 0)
+        o.insert("face"_L1, e.face);
+    o.insert("kind"_L1, kind);
+    const bool placed = e.limit.size() == 3;
+    if (placed)
+        o.insert("limit"_L1, QJsonArray{e.limit(0), e.limit(1), e.limit(2)});
+    if (placed)
+        o.insert("normal"_L1, QJsonArray{e.normal(0), e.normal(1), e.normal(2)});
+    o.insert("rule"_L1, QString::fromStdString(e.rule));
+    o.insert("valence"_L1, e.valence);
     if (e.vertex >= 0)
-        o["vertex"] = e.vertex;
-    else
-        o["face"] = e.face;
-    o["kind"] = kind;
-    o["valence"] = e.valence;
-    o["rule"] = QString::fromStdString(e.rule);
-    if (e.limit.size() == 3) {
-        o["limit"] = ProjectIO::rowToJson(e.limit);
-        o["normal"] = ProjectIO::rowToJson(e.normal);
-    }
+        o.insert("vertex"_L1, e.vertex);
     return o;
 }
 
