@@ -164,11 +164,15 @@ void hsvToRgb(const double hsv[3], double rgb[3])
     }
 }
 
+// The accumulator of the log-scaled, density-estimated cells is float, as flam3-render's
+// (its default bits=33: an unsigned histogram, a float accumulator; flam3.c), each sum taken
+// in double and stored as float (its abump_no_overflow); the spatial filter's sums are double.
+using Accum = std::array<float, 4>;
 using Cell = std::array<double, 4>;
 using Bucket = std::array<std::uint32_t, 4>;
 
 // The log scaling without the estimator (rect.c): every lit cell by k1 log(1 + k2 a) / a.
-void logScale(const FlameHistogram &h, std::vector<Cell> &acc, double k1, double k2,
+void logScale(const FlameHistogram &h, std::vector<Accum> &acc, double k1, double k2,
               int threads)
 {
     const std::size_t n = h.cells.size();
@@ -181,7 +185,7 @@ void logScale(const FlameHistogram &h, std::vector<Cell> &acc, double k1, double
                 continue;
             const double a = c[3];
             const double ls = k1 * std::log(1.0 + a * k2) / a;
-            Cell &out = acc[i];  // summed over flam3's passes
+            Accum &out = acc[i];  // summed over flam3's passes
             out[0] += c[0] * ls;
             out[1] += c[1] * ls;
             out[2] += c[2] * ls;
@@ -192,7 +196,7 @@ void logScale(const FlameHistogram &h, std::vector<Cell> &acc, double k1, double
 
 // The density estimator (rect.c, de_thread) on the rows [first, last) of the histogram, in
 // row order. Writes reach `reach` rows above and below.
-void estimateRows(const FlameHistogram &h, std::vector<Cell> &acc, const DensityEstimator &de,
+void estimateRows(const FlameHistogram &h, std::vector<Accum> &acc, const DensityEstimator &de,
                   double curve, int ss, double k1, double k2, int first, int last)
 {
     const int w = h.width, hgt = h.height;
@@ -201,7 +205,7 @@ void estimateRows(const FlameHistogram &h, std::vector<Cell> &acc, const Density
     const double scfact = std::pow(ss / (ss + 1.0), 2.0);
     auto add = [&](int x, int y, const double c[4]) {
         if (y >= 0 && y < hgt && x >= 0 && x < w) {
-            Cell &a = acc[std::size_t(x) + std::size_t(y) * std::size_t(w)];
+            Accum &a = acc[std::size_t(x) + std::size_t(y) * std::size_t(w)];
             a[0] += c[0];
             a[1] += c[1];
             a[2] += c[2];
@@ -271,7 +275,7 @@ void estimateRows(const FlameHistogram &h, std::vector<Cell> &acc, const Density
 // The estimator over the histogram's rows in bands at least 2 reach + 1 rows high: the even
 // bands side by side, then the odd ones. No two bands of a phase write the same cell, and each
 // cell takes its sums in the same order on any number of threads.
-void estimate(const FlameHistogram &h, std::vector<Cell> &acc, const DensityEstimator &de,
+void estimate(const FlameHistogram &h, std::vector<Accum> &acc, const DensityEstimator &de,
               double curve, int ss, double k1, double k2, int threads)
 {
     const int first = ss - 1, last = h.height - (ss - 1);
@@ -506,12 +510,12 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
         throw InputError(formatMessage(tr("a %1 x %2 picture of the flame at supersample %3 needs "
                                           "%4 x %5 histogram cells; at most 32768 a side"),
                                        W, H, ss, streamedNumber(cellsX), streamedNumber(cellsY)));
-    // Memory: a histogram of buckets per thread, then the log-scaled cells and the filter's
-    // rows (doubles).
+    // Memory: a histogram of buckets per thread, then the log-scaled cells (floats); the
+    // spatial filter's rows are held for a band of 16 pixel rows per thread (small beside them).
     int threads = std::clamp(job.threads, 1, kChaosStreams);
     const double cells = cellsX * cellsY;
     auto bytes = [&](int t) {
-        return cells * (double(sizeof(Bucket)) * t + 2.0 * sizeof(Cell));
+        return cells * (double(sizeof(Bucket)) * t + double(sizeof(Accum)));
     };
     while (threads > 1 && bytes(threads) > kMaxFlameHistogramBytes)
         --threads;
@@ -542,7 +546,8 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
     struct Workspace {
         FlameHistogram histogram;
         std::vector<FlameHistogram> parts;
-        std::vector<Cell> acc, across;
+        std::vector<Accum> acc;
+        std::vector<Cell> across;
     };
     static thread_local Workspace kept;
     Workspace fresh;
@@ -561,7 +566,7 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
     const double sampleDensity = std::max<double>(1.0, double(job.samples)) / (double(W) * H);
     const double k1 = f.brightness * 255.0 * 268.0 / 256.0 / passes;
     const double k2 = double(ss) * ss * passes / (area * 255.0 * sampleDensity);
-    std::vector<Cell> &acc = w.acc;
+    std::vector<Accum> &acc = w.acc;
     for (int pass = 0; pass < passes; ++pass) {
         raster.samples = job.samples / std::uint64_t(passes)
                          + (std::uint64_t(pass) < job.samples % std::uint64_t(passes) ? 1 : 0);
@@ -574,7 +579,7 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
         if (out.stats.cancelled)
             return out;
         if (pass == 0)
-            acc.assign(histogram.cells.size(), Cell{0, 0, 0, 0});
+            acc.assign(histogram.cells.size(), Accum{0, 0, 0, 0});
         if (estimator)
             estimate(histogram, acc, de, f.estimatorCurve, ss, k1, k2, threads);
         else
@@ -613,7 +618,7 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
             for (int r = 0; r < readRows; ++r)
                 for (int i = 0; i < W; ++i) {
                     Cell s{0, 0, 0, 0};
-                    const Cell *row = acc.data() + std::size_t(y0 + r) * stride
+                    const Accum *row = acc.data() + std::size_t(y0 + r) * stride
                                       + std::size_t(deOffset + i * ss);
                     for (int ii = 0; ii < fw; ++ii) {
                         const double k = k1d[std::size_t(ii)];
