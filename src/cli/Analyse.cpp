@@ -48,6 +48,7 @@
 #include <QTextStream>
 
 #include <sstream>
+#include <utility>
 
 namespace awb::cli {
 
@@ -80,7 +81,7 @@ int analyse(const QStringList &args)
         if (parser.isSet("item")) {
             const AttractorItem *item = attractorItem(project, parser.value("item"));
             Regularity regularity;
-            const QJsonObject json = analyseItemJson(item, &regularity);
+            std::optional<ItemAnalysis> analysis = analyseItem(item, &regularity);
             if (parser.isSet("certificate")) {
                 const auto *curve = qobject_cast<const SubdivisionCurveItem *>(item);
                 if (!curve)
@@ -94,16 +95,16 @@ int analyse(const QStringList &args)
                 if (!writeWholeFile(parser.value("certificate"), cert, &why))
                     throw Failure{why};
             }
-            printJson(QJsonObject{{"items", QJsonArray{json}}});
+            printJsonList("items", [&] { return std::exchange(analysis, std::nullopt); });
         } else {
             // Item by item: each analysis printed and released before the next is made.
             const QList<Item *> all = project.items();
             qsizetype next = 0;
-            printJsonList("items", [&]() -> QJsonValue {
+            printJsonList("items", [&]() -> std::optional<ItemAnalysis> {
                 while (next < all.size())
                     if (auto *a = qobject_cast<AttractorItem *>(all[next++]))
-                        return analyseItemJson(a);
-                return QJsonValue(QJsonValue::Undefined);
+                        return analyseItem(a);
+                return std::nullopt;
             });
         }
         return 0;

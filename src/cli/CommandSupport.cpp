@@ -105,6 +105,56 @@ void printValue(const QJsonValue &value, int depth)
     }
 }
 
+// An object at `depth` whose `lists` are printed member by member in their keys' places (the
+// object's keys and the lists' merged in Qt's order: QString's, as std::map's).
+void printObject(const QJsonObject &o, const std::map<QString, JsonList> &lists, int depth)
+{
+    if (lists.empty()) {
+        printValue(o, depth);
+        return;
+    }
+    const QByteArray pad(4 * (depth + 1), ' ');
+    put("{\n");
+    auto it = o.begin();
+    auto list = lists.begin();
+    bool first = true;
+    while (it != o.end() || list != lists.end()) {
+        put(first ? "" : ",\n");
+        first = false;
+        put(pad);
+        if (list == lists.end() || (it != o.end() && it.key() < list->first)) {
+            put(qtText(it.key()));
+            put(": ");
+            printValue(it.value(), depth + 1);
+            ++it;
+            continue;
+        }
+        put(qtText(list->first));
+        put(": ");
+        const JsonList &l = list->second;
+        if (l.size == 0) {
+            put("[\n");
+            put(QByteArray(4 * (depth + 1), ' '));
+            put("]");
+        } else {
+            const QByteArray inner(4 * (depth + 2), ' ');
+            put("[\n");
+            for (qsizetype i = 0; i < l.size; ++i) {
+                put(i ? ",\n" : "");
+                put(inner);
+                printValue(l.at(i), depth + 2);
+            }
+            put("\n");
+            put(QByteArray(4 * (depth + 1), ' '));
+            put("]");
+        }
+        ++list;
+    }
+    put("\n");
+    put(QByteArray(4 * depth, ' '));
+    put("}");
+}
+
 } // namespace
 
 void printJson(const QJsonObject &document)
@@ -115,17 +165,17 @@ void printJson(const QJsonObject &document)
     std::fflush(stdout);
 }
 
-void printJsonList(const QString &key, const std::function<QJsonValue()> &next)
+void printJsonList(const QString &key, const std::function<std::optional<ItemAnalysis>()> &next)
 {
     out().flush();
     put("{\n    ");
     put(qtText(key));
     put(": [");
     bool first = true;
-    for (QJsonValue v = next(); !v.isUndefined(); v = next()) {
+    for (std::optional<ItemAnalysis> v = next(); v; v = next()) {
         put(first ? "\n        " : ",\n        ");
         first = false;
-        printValue(v, 2);
+        printObject(v->json, v->lists, 2);
     }
     put("\n    ]\n}\n");
     std::fflush(stdout);

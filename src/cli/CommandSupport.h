@@ -6,6 +6,7 @@
 #include "core/Types.h"
 #include "core/ifs/Attractor.h"
 #include "core/mesh/Mesh.h"
+#include "model/ItemAnalysisJson.h"
 #include "render/FigureFile.h"
 
 #include <QCommandLineParser>
@@ -18,6 +19,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 
 namespace awb {
 class AttractorItem;
@@ -41,9 +43,10 @@ QTextStream &err();
 // analysis lists hundreds of thousands of vertices; its text as one QByteArray, then through
 // QTextStream's QString, took five times the text's size).
 void printJson(const QJsonObject &document);
-// The document {"key": [ ... ]}, its members printed as `next` gives them (an undefined value
-// ends the list): each is printed and released before the next is made.
-void printJsonList(const QString &key, const std::function<QJsonValue()> &next);
+// The document {"key": [ ... ]}, its members printed as `next` gives them (none ends the list):
+// each is printed and released before the next is made, its lists (ItemAnalysisJson.h) member
+// by member in their keys' places.
+void printJsonList(const QString &key, const std::function<std::optional<ItemAnalysis>()> &next);
 
 // Raised for a user error with its exit code; caught at the command's top by guarded().
 struct Failure {

@@ -160,10 +160,27 @@ QJsonObject jointSpectralRadiusJson(const Ifs &ifs)
 
 } // namespace
 
-// `regularity`, when given, receives the curve's regularity (its certificate for --certificate).
-QJsonObject analyseItemJson(const AttractorItem *item, Regularity *regularity)
+QJsonArray JsonList::whole() const
 {
-    QJsonObject o;
+    QJsonArray a;
+    for (qsizetype i = 0; i < size; ++i)
+        a.append(at(i));
+    return a;
+}
+
+QJsonObject ItemAnalysis::whole() const
+{
+    QJsonObject o = json;
+    for (const auto &[key, list] : lists)
+        o[key] = list.whole();
+    return o;
+}
+
+// `regularity`, when given, receives the curve's regularity (its certificate for --certificate).
+ItemAnalysis analyseItem(const AttractorItem *item, Regularity *regularity)
+{
+    ItemAnalysis analysis;
+    QJsonObject &o = analysis.json;
     o["name"] = item->name();
     o["type"] = item->type();
     // An automaton's contraction, also when it has no attractor (issue 46).
@@ -174,7 +191,7 @@ QJsonObject analyseItemJson(const AttractorItem *item, Regularity *regularity)
     auto d = item->derivedIfs();
     if (!d) {
         o["error"] = item->derivedError();
-        return o;
+        return analysis;
     }
     if (!d->note.isEmpty())
         o["note"] = d->note;
@@ -266,9 +283,10 @@ QJsonObject analyseItemJson(const AttractorItem *item, Regularity *regularity)
         o["joint_spectral_radius"] = jointSpectralRadiusJson(d->ifs);
     // A mesh: its extraordinary vertices and the pieces of its IFS with condensation.
     if (const auto *mesh = qobject_cast<const SubdivisionMeshItem *>(item)) {
-        const QJsonObject m = meshAnalysisJson(*mesh);
-        for (auto it = m.begin(); it != m.end(); ++it)
+        ItemAnalysis m = meshAnalysis(*mesh);
+        for (auto it = m.json.begin(); it != m.json.end(); ++it)
             o[it.key()] = it.value();
+        analysis.lists.merge(m.lists);
     }
     // The scheme's certified Hölder regularity (issue 16): an interval, its class C^n, how;
     // exact with an invariant polytope's certificate where one closes (issue 32).
@@ -335,7 +353,7 @@ QJsonObject analyseItemJson(const AttractorItem *item, Regularity *regularity)
     } catch (const InputError &e) {
         o["box_dimension_error"] = QString::fromStdString(e.what());
     }
-    return o;
+    return analysis;
 }
 
 

@@ -6,15 +6,40 @@
 // certified Hausdorff distance to the exact curve, the box-counting dimension, a mesh's
 // extraordinary vertices and a subdivision curve's certified Hölder regularity.
 
+#include <QJsonArray>
 #include <QJsonObject>
+#include <QJsonValue>
+#include <QString>
+
+#include <functional>
+#include <map>
 
 namespace awb {
 
 class AttractorItem;
 struct Regularity;
 
+// A member too large to hold as one JSON tree -- a mesh lists a hundred thousand extraordinary
+// vertices -- given as its size and its members one at a time, each made when it is asked for.
+struct JsonList {
+    qsizetype size = 0;
+    std::function<QJsonValue(qsizetype)> at;
+    QJsonArray whole() const;
+};
+
+// An analysis: its JSON, and its large arrays apart (`lists`, by key; not in `json`).
+struct ItemAnalysis {
+    QJsonObject json;
+    std::map<QString, JsonList> lists;
+    QJsonObject whole() const;  // the lists filled in
+};
+
 // `regularity`, when given, receives the curve's regularity (its certificate for
 // `analyse --certificate`); left as is for other items.
-QJsonObject analyseItemJson(const AttractorItem *item, Regularity *regularity = nullptr);
+ItemAnalysis analyseItem(const AttractorItem *item, Regularity *regularity = nullptr);
+inline QJsonObject analyseItemJson(const AttractorItem *item, Regularity *regularity = nullptr)
+{
+    return analyseItem(item, regularity).whole();
+}
 
 } // namespace awb

@@ -132,22 +132,26 @@ QJsonObject piecesJson(const MeshPieces &pieces)
 
 } // namespace
 
-QJsonObject meshAnalysisJson(const SubdivisionMeshItem &item)
+ItemAnalysis meshAnalysis(const SubdivisionMeshItem &item)
 {
+    ItemAnalysis analysis;
     const auto pieces = item.pieces();
     if (!pieces)
-        return {};
-    QJsonObject o;
+        return analysis;
+    QJsonObject &o = analysis.json;
     o["kind"] = item.type();
     o["scheme"] = MeshInputs::schemeNames().at(int(item.scheme()));
     o["vertex_count"] = int(item.inputs().vertices.size());
     o["face_count"] = int(item.inputs().faces.size());
     // The vertices, and their kinds once each: a mesh of a million faces has hundreds of
     // thousands of extraordinary vertices and a few kinds (the output's size is what it says).
-    QJsonArray extraordinary, kinds;
+    // The vertices' JSON is made one at a time, when asked for (a list: printed as it goes).
+    QJsonArray kinds;
     std::vector<int> counts;
     std::map<std::tuple<const AnalysedMatrix *, int, bool, std::string, std::string>, int> kindOf;
-    const auto vertices = item.extraordinary();  // held: the loop reads it
+    const auto vertices = item.extraordinary();  // held by the list's members
+    auto kindOfVertex = std::make_shared<std::vector<int>>();
+    kindOfVertex->reserve(vertices->size());
     for (const ExtraordinaryVertex &e : *vertices) {
         const auto [it, added] = kindOf.emplace(
             std::make_tuple(e.matrix.get(), e.valence, e.boundary, e.rule, e.note),
@@ -159,17 +163,20 @@ QJsonObject meshAnalysisJson(const SubdivisionMeshItem &item)
             counts.push_back(0);
         }
         ++counts[std::size_t(it->second)];
-        extraordinary.append(vertexJson(e, it->second));
+        kindOfVertex->push_back(it->second);
     }
     for (auto &&kind : kinds) {  // how many vertices each kind has
         QJsonObject k = kind.toObject();
         k["vertices"] = counts[std::size_t(k["index"].toInt())];
         kind = k;
     }
-    o["extraordinary"] = extraordinary;
+    analysis.lists["extraordinary"] = {
+        qsizetype(vertices->size()), [vertices, kindOfVertex](qsizetype i) -> QJsonValue {
+            return vertexJson((*vertices)[std::size_t(i)], (*kindOfVertex)[std::size_t(i)]);
+        }};
     o["vertex_kinds"] = kinds;
     o["pieces"] = piecesJson(*pieces);
-    return o;
+    return analysis;
 }
 
 QJsonArray valenceTableJson(MeshScheme scheme, int from, int to)

@@ -4,6 +4,7 @@
 // verdicts, and the pieces of the IFS with condensation with their maps.
 
 #include "core/mesh/Mesh.h"
+#include "model/ItemAnalysisJson.h"
 
 #include <QJsonArray>
 #include <QJsonObject>
@@ -18,7 +19,13 @@ class SubdivisionMeshItem;
 // "roots", "types": [...]}. Empty when the mesh is refused.
 // An interior extraordinary vertex also has "characteristic_map": {"regular", "injective",
 // "winding", "min_area", "max_area", "cells"} (Reif's check, VertexSpectrum.h).
-QJsonObject meshAnalysisJson(const SubdivisionMeshItem &item);
+// meshAnalysis() gives "extraordinary" as a list (ItemAnalysisJson.h), each vertex's JSON made
+// when it is asked for; meshAnalysisJson() fills it in.
+ItemAnalysis meshAnalysis(const SubdivisionMeshItem &item);
+inline QJsonObject meshAnalysisJson(const SubdivisionMeshItem &item)
+{
+    return meshAnalysis(item).whole();
+}
 
 // The valence explorer's table (issue 31; `attractor-cli valences`): per valence n = from ...
 // to, {"valence", "subdominant", "closed_form", "subsubdominant", "lambda_squared",

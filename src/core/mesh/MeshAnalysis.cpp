@@ -137,7 +137,10 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
                     level.row(face[(k + face.size() - 1) % face.size()]).transpose();
                 outward[std::size_t(face[k])] += (a - p).cross(b - p);
             }
-    std::vector<ExtraordinaryVertex> vertices, faces;
+    // One array of the count listed (a large mesh lists a hundred thousand of these: two
+    // growing arrays, then one joined from them, held three copies at once).
+    std::vector<ExtraordinaryVertex> vertices;
+    vertices.reserve(std::size_t(extraordinaryCount(pieces)));
     std::map<int, std::shared_ptr<const AnalysedMatrix>> ringMatrices;   // by valence
     std::map<int, std::shared_ptr<const AnalysedMatrix>> pieceMatrices;  // by settled type
     for (const MeshPieceRoot &root : pieces.roots) {
@@ -229,14 +232,14 @@ std::vector<ExtraordinaryVertex> extraordinaryVertices(const MeshPieces &pieces,
                 e.curvature = e.sharp->curvature;
             }
         }
-        (e.vertex >= 0 ? vertices : faces).push_back(std::move(e));
+        vertices.push_back(std::move(e));
     }
+    // The input's vertices by number, then the faces' centres by face.
+    const auto order = [](const ExtraordinaryVertex &e) {
+        return e.vertex >= 0 ? std::pair{0, e.vertex} : std::pair{1, e.face};
+    };
     std::sort(vertices.begin(), vertices.end(),
-              [](const auto &a, const auto &b) { return a.vertex < b.vertex; });
-    std::sort(faces.begin(), faces.end(),
-              [](const auto &a, const auto &b) { return a.face < b.face; });
-    vertices.insert(vertices.end(), std::make_move_iterator(faces.begin()),
-                    std::make_move_iterator(faces.end()));
+              [&](const auto &a, const auto &b) { return order(a) < order(b); });
     return vertices;
 }
 
