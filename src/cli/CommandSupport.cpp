@@ -70,89 +70,65 @@ void putIndented(const QByteArray &text, int depth)
 // Containers up to this size, below the first levels, are printed by Qt at once.
 constexpr qsizetype kWhole = 64;
 
-// `value` at nesting `depth`, as Qt's writer nests it (QJsonPrivate::Writer: "[\n", members at
-// depth + 1 joined by ",\n", "\n", the closing bracket at depth).
-void printValue(const QJsonValue &value, int depth)
+void printValue(const QJsonValue &value, int depth);
+
+// n members at nesting `depth` + 1, as Qt's writer nests them (QJsonPrivate::Writer: the
+// opening bracket and a line break, the members joined by ",\n", a line break after the last,
+// the closing bracket at `depth`); member(i) prints member i.
+template <class Member>
+void printBracketed(const char *open, const char *close, qsizetype n, int depth, Member member)
 {
     const QByteArray pad(4 * (depth + 1), ' ');
-    if (value.isArray() && value.toArray().size() > kWhole) {
-        const QJsonArray a = value.toArray();
-        put("[\n");
-        for (qsizetype i = 0; i < a.size(); ++i) {
-            put(i ? ",\n" : "");
-            put(pad);
-            printValue(a.at(i), depth + 1);
-        }
-        put("\n");
-        put(QByteArray(4 * depth, ' '));
-        put("]");
-    } else if (value.isObject() && !value.toObject().isEmpty()
-               && (depth < 4 || value.toObject().size() > kWhole)) {
-        const QJsonObject o = value.toObject();
-        put("{\n");
-        for (auto it = o.begin(); it != o.end(); ++it) {
-            put(it != o.begin() ? ",\n" : "");
-            put(pad);
-            put(qtText(it.key()));
-            put(": ");
-            printValue(it.value(), depth + 1);
-        }
-        put("\n");
-        put(QByteArray(4 * depth, ' '));
-        put("}");
-    } else {
-        putIndented(qtText(value), depth);
+    put(open);
+    put("\n");
+    for (qsizetype i = 0; i < n; ++i) {
+        put(i ? ",\n" : "");
+        put(pad);
+        member(i);
     }
+    put(n ? "\n" : "");
+    put(QByteArray(4 * depth, ' '));
+    put(close);
 }
 
-// An object at `depth` whose `lists` are printed member by member in their keys' places (the
-// object's keys and the lists' merged in Qt's order: QString's, as std::map's).
+// An object at `depth`, its `lists` (ItemAnalysisJson.h) printed member by member in their
+// keys' places: the object's keys and the lists' merged in Qt's order (QString's, as
+// std::map's).
 void printObject(const QJsonObject &o, const std::map<QString, JsonList> &lists, int depth)
 {
-    if (lists.empty()) {
-        printValue(o, depth);
-        return;
-    }
-    const QByteArray pad(4 * (depth + 1), ' ');
-    put("{\n");
     auto it = o.begin();
     auto list = lists.begin();
-    bool first = true;
-    while (it != o.end() || list != lists.end()) {
-        put(first ? "" : ",\n");
-        first = false;
-        put(pad);
+    printBracketed("{", "}", o.size() + qsizetype(lists.size()), depth, [&](qsizetype) {
         if (list == lists.end() || (it != o.end() && it.key() < list->first)) {
             put(qtText(it.key()));
             put(": ");
             printValue(it.value(), depth + 1);
             ++it;
-            continue;
+            return;
         }
+        const JsonList &l = list->second;
         put(qtText(list->first));
         put(": ");
-        const JsonList &l = list->second;
-        if (l.size == 0) {
-            put("[\n");
-            put(QByteArray(4 * (depth + 1), ' '));
-            put("]");
-        } else {
-            const QByteArray inner(4 * (depth + 2), ' ');
-            put("[\n");
-            for (qsizetype i = 0; i < l.size; ++i) {
-                put(i ? ",\n" : "");
-                put(inner);
-                printValue(l.at(i), depth + 2);
-            }
-            put("\n");
-            put(QByteArray(4 * (depth + 1), ' '));
-            put("]");
-        }
+        printBracketed("[", "]", l.size, depth + 1,
+                       [&](qsizetype i) { printValue(l.at(i), depth + 2); });
         ++list;
+    });
+}
+
+// `value` at nesting `depth`: large arrays and the first levels' objects member by member, the
+// rest by Qt's writer at once.
+void printValue(const QJsonValue &value, int depth)
+{
+    if (value.isArray() && value.toArray().size() > kWhole) {
+        const QJsonArray a = value.toArray();
+        printBracketed("[", "]", a.size(), depth,
+                       [&](qsizetype i) { printValue(a.at(i), depth + 1); });
+    } else if (value.isObject() && !value.toObject().isEmpty()
+               && (depth < 4 || value.toObject().size() > kWhole)) {
+        printObject(value.toObject(), {}, depth);
+    } else {
+        putIndented(qtText(value), depth);
     }
-    put("\n");
-    put(QByteArray(4 * depth, ' '));
-    put("}");
 }
 
 } // namespace

@@ -88,11 +88,10 @@ QJsonObject vertexJson(const ExtraordinaryVertex &e, int kind)
     if (e.vertex < 0)
         o.insert("face"_L1, e.face);
     o.insert("kind"_L1, kind);
-    const bool placed = e.limit.size() == 3;
-    if (placed)
-        o.insert("limit"_L1, QJsonArray{e.limit(0), e.limit(1), e.limit(2)});
-    if (placed)
-        o.insert("normal"_L1, QJsonArray{e.normal(0), e.normal(1), e.normal(2)});
+    if (e.limit.size() == 3) {
+        o.insert("limit"_L1, ProjectIO::rowToJson(e.limit));
+        o.insert("normal"_L1, ProjectIO::rowToJson(e.normal));
+    }
     o.insert("rule"_L1, QString::fromStdString(e.rule));
     o.insert("valence"_L1, e.valence);
     if (e.vertex >= 0)

@@ -1,7 +1,8 @@
 #pragma once
-// The pieces of the flame's chaos game (FlameChaos.cpp): the xform choice (weights, xaos), the camera to cells, the xforms ready to apply
-// (and their waves, XformWave.h), and the two sinks a hit goes to -- the engine's labelled
-// histogram and flam3's colour buckets. Internal to src/core/flame.
+// The pieces of the flame's chaos game (FlameChaos.cpp): the xform choice (weights, xaos), the
+// camera to cells, the xforms ready to apply (and their waves, XformWave.h), and the two sinks
+// a hit goes to -- the engine's labelled histogram and flam3's colour buckets. Internal to
+// src/core/flame.
 
 #include "core/flame/Flame.h"
 #include "core/flame/FlameChaos.h"

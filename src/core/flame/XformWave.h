@@ -1,9 +1,9 @@
 #pragma once
 // One xform on a wave of orbits: XformMap::apply on lanes of points held as arrays (x[i],
-// y[i]), four at a time in AVX2 registers where the processor has them, the variations' sines, exponentials and arctangents
-// by glibc's vector math library (libmvec, 4 ulp). What FlameChaos.cpp's chaos game runs when
-// the processor has AVX2: the orbits that chose the same xform in one step go through it
-// together. A term with no vector kernel here runs lane by lane through XformMap's own code
+// y[i]), four at a time in AVX2 registers where the processor has them, the variations' sines,
+// exponentials and arctangents by glibc's vector math library (libmvec, 4 ulp). What
+// FlameChaos.cpp's chaos game runs on every processor: the orbits that chose the same xform in
+// one step go through it together (lane by lane through XformMap::apply without AVX2). A term with no vector kernel here runs lane by lane through XformMap's own code
 // (VariationTerm.h), so every variation runs and each has one definition of its formula
 // besides its vector form. The vector kernels keep the scalar formulas' operations; their
 // results differ from XformMap::apply's in the last bits (libmvec's 4 ulp, fused

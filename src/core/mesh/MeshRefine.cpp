@@ -379,8 +379,7 @@ struct ComposeMarks {
     std::vector<int> met;
 };
 
-template <class Range>
-const ComposeMarks &composed(const Range &outer, const StencilTable &inner)
+const ComposeMarks &composed(std::span<const StencilTable::Entry> outer, const StencilTable &inner)
 {
     // A sum per point met, on marks reused from call to call (the isolation of a mesh of a
     // million faces composes a million stencils): the products are summed in the order met.
@@ -470,8 +469,10 @@ BigVector<int> childTwins(const MeshTopology &t, MeshScheme scheme)
     return twin;
 }
 
-template <class Range>
-void appendComposedRange(StencilTable &out, const Range &outer, const StencilTable &inner)
+} // namespace
+
+void appendComposed(StencilTable &out, std::span<const StencilTable::Entry> outer,
+                    const StencilTable &inner)
 {
     const ComposeMarks &m = composed(outer, inner);
     thread_local MeshStencil s;
@@ -479,19 +480,6 @@ void appendComposedRange(StencilTable &out, const Range &outer, const StencilTab
     for (int q : m.met)
         s.emplace_back(q, m.sum[std::size_t(q)]);
     out.push_back(s);
-}
-
-} // namespace
-
-void appendComposed(StencilTable &out, std::span<const StencilTable::Entry> outer,
-                    const StencilTable &inner)
-{
-    appendComposedRange(out, outer, inner);
-}
-
-void appendComposed(StencilTable &out, StencilTable::Stencil outer, const StencilTable &inner)
-{
-    appendComposedRange(out, outer, inner);
 }
 
 Refinement refineTopology(const MeshTopology &t, MeshScheme scheme)

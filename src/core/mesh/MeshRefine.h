@@ -11,6 +11,7 @@
 #include "core/mesh/Mesh.h"
 
 #include <initializer_list>
+#include <iterator>
 #include <span>
 #include <utility>
 #include <vector>
@@ -31,8 +32,11 @@ public:
     public:
         class iterator {
         public:
+            using iterator_category = std::input_iterator_tag;
             using value_type = Entry;
             using difference_type = std::ptrdiff_t;
+            using reference = Entry;
+            using pointer = void;
             iterator() = default;
             iterator(const int *p, const double *w) : m_p(p), m_w(w) {}
             Entry operator*() const { return {*m_p, *m_w}; }
@@ -61,7 +65,6 @@ public:
         iterator begin() const { return {m_points, m_weights}; }
         iterator end() const { return {m_points + m_size, m_weights + m_size}; }
         std::size_t size() const { return m_size; }
-        Entry operator[](std::size_t k) const { return {m_points[k], m_weights[k]}; }
 
     private:
         const int *m_points;
@@ -127,7 +130,6 @@ void mergeStencil(MeshStencil &stencil);
 // old points, given the refinement's stencils `inner`.
 void appendComposed(StencilTable &out, std::span<const StencilTable::Entry> outer,
                     const StencilTable &inner);
-void appendComposed(StencilTable &out, StencilTable::Stencil outer, const StencilTable &inner);
 
 // One step on a topology (checked: triangles only for Loop; InputError otherwise), with the
 // rules of its sharp features as OpenSubdiv 3.5 applies them (Sdc::Scheme's masks with the
