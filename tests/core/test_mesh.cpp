@@ -406,13 +406,19 @@ void TestMesh::flatRelationsKeepTheRows()
 #endif
 }
 
-// A refinement's child topology is linked from the parent's relations (childTwins, no search):
-// it must be the topology that the checked construction finds from the child's faces alone --
-// the same edges in the same order, faces' edges and vertex rings -- closed and open, quads,
-// triangles and pentagons, both schemes, two levels down.
+// A refinement's child topology is derived from the parent's relations (MeshChildTopology.cpp,
+// no search, no walk): it must be the topology that the checked construction finds from the
+// child's faces alone -- the same edges in the same order, faces' edges and vertex rings with
+// their first face, boundary flags -- closed and open, quads, triangles and pentagons, a vertex
+// of no face, both schemes, two levels down.
 void TestMesh::refinedTopologyFromTheParent()
 {
+    Mesh lone = gridMesh(2, 2, true);
+    lone.vertices.conservativeResize(lone.vertices.rows() + 1, 3);
+    lone.vertices.row(lone.vertices.rows() - 1) << 5.0, 5.0, 5.0;
     const std::vector<std::pair<Mesh, MeshScheme>> cases{
+        {lone, MeshScheme::CatmullClark},
+        {lone, MeshScheme::Loop},
         {cubeMesh(), MeshScheme::CatmullClark},
         {pentagonalPrismMesh(), MeshScheme::CatmullClark},
         {gridMesh(3, 2, false), MeshScheme::CatmullClark},
@@ -427,7 +433,7 @@ void TestMesh::refinedTopologyFromTheParent()
         MeshTopology t = checkMesh(mesh, scheme);
         for (int level = 0; level < 2; ++level) {
             const Refinement r = refineTopology(t, scheme);
-            const MeshTopology linked = refinedTopology(r);
+            const MeshTopology linked = refinedTopology(t, r);
             const MeshTopology searched(r.pointCount, r.faces);
             QCOMPARE(linked.edgeCount(), searched.edgeCount());
             for (int e = 0; e < linked.edgeCount(); ++e) {
@@ -447,7 +453,7 @@ void TestMesh::refinedTopologyFromTheParent()
             ++compared;
         }
     }
-    QCOMPARE(compared, 16);
+    QCOMPARE(compared, 20);
 }
 
 #include "test_mesh.moc"

@@ -166,12 +166,6 @@ MeshTopology::MeshTopology(int vertexCount, IndexRows faces)
     problems.raise();
 }
 
-MeshTopology::MeshTopology(int vertexCount, IndexRows faces, const BigVector<int> &twin)
-    : m_faces(std::move(faces)), m_ringBoundary(std::size_t(std::max(vertexCount, 0)), 0)
-{
-    link(twin);
-}
-
 std::vector<std::pair<int, int>> MeshTopology::link(const BigVector<int> &twin)
 {
     std::vector<std::pair<int, int>> notOneFan;

@@ -65,10 +65,13 @@ public:
         : MeshTopology(vertexCount, IndexRows(faces))
     {
     }
-    // Faces known to be a manifold surface with their twins (twin[h]: the half-edge that runs
-    // back along half-edge h = corner k of face f, faces.start(f) + k; -1 on the boundary), as
-    // a refinement knows them from its parent: no search, no check (MeshRefine.cpp).
-    MeshTopology(int vertexCount, IndexRows faces, const BigVector<int> &twin);
+    // The topology one step of `scheme` below `parent`, whose faces `childFaces` are in
+    // refineTopology's order (MeshRefine.h), with the parent's vertices, then its edges', then
+    // (Catmull-Clark) its faces' points. Its relations are derived from the parent's, as
+    // OpenSubdiv's Vtr::Refinement derives the child level's: no search, no check, no walk
+    // (MeshChildTopology.cpp). The same edges in the same order, rings and boundary flags as the
+    // checked construction finds from the faces alone.
+    MeshTopology(const MeshTopology &parent, MeshScheme scheme, IndexRows childFaces);
 
     struct Edge {
         int v[2] = {-1, -1};
@@ -141,6 +144,9 @@ private:
     // Edges (numbered in the order the faces first name them) and rings from the twins; the
     // vertices whose faces do not form one fan, with their face counts.
     std::vector<std::pair<int, int>> link(const BigVector<int> &twin);
+    // The child's edges and faces' edges, then its rings (MeshChildTopology.cpp).
+    void deriveEdges(const MeshTopology &parent, MeshScheme scheme);
+    void deriveRings(const MeshTopology &parent, MeshScheme scheme);
 
     IndexRows m_faces;
     IndexRows m_faceEdges;  // shaped like m_faces

@@ -407,68 +407,6 @@ const ComposeMarks &composed(std::span<const StencilTable::Entry> outer, const S
     return marks;
 }
 
-// The twin of every half-edge of the refined mesh (refineTopology's faces), from the parent's
-// relations as OpenSubdiv's Vtr::Refinement derives the child's: a half-edge inside a parent
-// face pairs with its neighbour in that face, a half of a parent edge with the other half of
-// the child face across it. Half-edge k of child face c is c's first half-edge plus k.
-BigVector<int> childTwins(const MeshTopology &t, MeshScheme scheme)
-{
-    const int nf = t.faceCount();
-    const auto &start = t.faces().starts();
-    // Where edge e lies in face g (each edge once in a face of a checked mesh).
-    const auto position = [&](int g, int e) {
-        const auto edges = t.faceEdges(g);
-        return int(std::find(edges.begin(), edges.end(), e) - edges.begin());
-    };
-    const auto across = [&](int e, int f) {
-        const auto &edge = t.edge(e);
-        return edge.face[0] == f ? edge.face[1] : edge.face[0];
-    };
-    BigVector<int> twin;
-    if (scheme == MeshScheme::CatmullClark) {
-        // Child face start[f] + i = {v_i, e_i, centre, e_(i-1)}, four half-edges each.
-        twin.assign(4 * std::size_t(start[std::size_t(nf)]), -1);
-        for (int f = 0; f < nf; ++f) {
-            const int s = start[std::size_t(f)], k = start[std::size_t(f) + 1] - s;
-            const auto edges = t.faceEdges(f);
-            for (int i = 0; i < k; ++i) {
-                const int h = 4 * (s + i);
-                twin[std::size_t(h + 1)] = 4 * (s + (i + 1) % k) + 2;  // e_i -> centre
-                twin[std::size_t(h + 2)] = 4 * (s + (i + k - 1) % k) + 1;  // centre -> e_(i-1)
-                // v_i -> e_i: in face g across e_i, e_i runs into v_i at g's corner m + 1.
-                const int e = edges[std::size_t(i)], g = across(e, f);
-                if (g >= 0) {
-                    const int m = position(g, e), kg = start[std::size_t(g) + 1] - start[std::size_t(g)];
-                    twin[std::size_t(h)] = 4 * (start[std::size_t(g)] + (m + 1) % kg) + 3;
-                }
-                // e_(i-1) -> v_i: in face g across e_(i-1), the edge leaves v_i at corner m.
-                const int e1 = edges[std::size_t((i + k - 1) % k)], g1 = across(e1, f);
-                if (g1 >= 0)
-                    twin[std::size_t(h + 3)] = 4 * (start[std::size_t(g1)] + position(g1, e1));
-            }
-        }
-        return twin;
-    }
-    // Loop: child faces 4f + i = {c_i, e_i, e_(i-1)} (i < 3) and 4f + 3 = {e0, e1, e2}.
-    twin.assign(12 * std::size_t(nf), -1);
-    for (int f = 0; f < nf; ++f) {
-        const auto edges = t.faceEdges(f);
-        const int centre = 3 * (4 * f + 3);
-        for (int i = 0; i < 3; ++i) {
-            const int h = 3 * (4 * f + i);
-            twin[std::size_t(h + 1)] = centre + (i + 2) % 3;     // e_i -> e_(i-1)
-            twin[std::size_t(centre + i)] = 3 * (4 * f + (i + 1) % 3) + 1;  // e_i -> e_(i+1)
-            const int e = edges[std::size_t(i)], g = across(e, f);
-            if (g >= 0)  // c_i -> e_i
-                twin[std::size_t(h)] = 3 * (4 * g + (position(g, e) + 1) % 3) + 2;
-            const int e1 = edges[std::size_t((i + 2) % 3)], g1 = across(e1, f);
-            if (g1 >= 0)  // e_(i-1) -> c_i
-                twin[std::size_t(h + 2)] = 3 * (4 * g1 + position(g1, e1));
-        }
-    }
-    return twin;
-}
-
 } // namespace
 
 void appendComposed(StencilTable &out, std::span<const StencilTable::Entry> outer,
@@ -538,20 +476,20 @@ Refinement refineTopology(const MeshTopology &t, MeshScheme scheme)
     }
     r.sharpness = childSharpness(t, scheme);
     r.pointCount = int(r.stencils.size());
-    r.twins = childTwins(t, scheme);
+    r.scheme = scheme;
     return r;
 }
 
-MeshTopology refinedTopology(Refinement &&r)
+MeshTopology refinedTopology(const MeshTopology &parent, Refinement &&r)
 {
-    MeshTopology child(r.pointCount, std::move(r.faces), r.twins);
+    MeshTopology child(parent, r.scheme, std::move(r.faces));
     child.applySharpness(r.sharpness);
     return child;
 }
 
-MeshTopology refinedTopology(const Refinement &r)
+MeshTopology refinedTopology(const MeshTopology &parent, const Refinement &r)
 {
-    MeshTopology child(r.pointCount, r.faces, r.twins);
+    MeshTopology child(parent, r.scheme, r.faces);
     child.applySharpness(r.sharpness);
     return child;
 }
@@ -579,7 +517,7 @@ Mesh refineMesh(const Mesh &input, MeshScheme scheme, int steps)
     for (int k = 0; k < steps; ++k) {
         Refinement r = refineTopology(t, scheme);
         m.vertices = applyStencils(r.stencils, m.vertices);
-        t = refinedTopology(std::move(r));
+        t = refinedTopology(t, std::move(r));
     }
     m.faces = t.faces().toVectors();
     if (t.hasSharpness() || t.hasHoles() || !(t.options() == MeshOptions{}))
@@ -604,7 +542,7 @@ StencilTable limitStencils(const MeshTopology &t, MeshScheme scheme)
         return out;
     // After one step every face at a vertex point is a quad; the vertex keeps its number.
     const Refinement r = refineTopology(t, scheme);
-    const MeshTopology child = refinedTopology(r);
+    const MeshTopology child = refinedTopology(t, r);
     StencilTable all;
     all.reserve(out.size(), out.entryCount() + 25 * later.size());
     for (int v = 0, k = 0; v < t.vertexCount(); ++v) {
@@ -667,7 +605,7 @@ Mat limitPositions(const Mesh &input, MeshScheme scheme)
                 levels, kMaxPreludeFaces));
         Refinement r = refineTopology(t, scheme);
         points = applyStencils(r.stencils, points);
-        t = refinedTopology(std::move(r));
+        t = refinedTopology(t, std::move(r));
     }
     StencilTable limits = limitStencils(t, scheme);
     limits.truncate(std::size_t(input.vertices.rows()));

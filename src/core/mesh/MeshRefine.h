@@ -119,7 +119,7 @@ struct Refinement {
     IndexRows faces;                      // of the refined mesh, counter-clockwise
     StencilTable stencils;                // one per point of the refined mesh (numbered as above)
     int pointCount = 0;                   // the points of the refined mesh (stencils' count)
-    BigVector<int> twins;                 // of its half-edges, from the parent's relations
+    MeshScheme scheme = MeshScheme::CatmullClark;  // whose step made it
     MeshSharpness sharpness;              // its sharp features one level down (MeshTags.h)
 };
 
@@ -136,9 +136,10 @@ void appendComposed(StencilTable &out, std::span<const StencilTable::Entry> oute
 // rule of each vertex and edge, semi-sharp features blended where they end).
 Refinement refineTopology(const MeshTopology &topology, MeshScheme scheme);
 
-// The topology of the refined mesh, with its sharp features (the second takes its faces).
-MeshTopology refinedTopology(const Refinement &refinement);
-MeshTopology refinedTopology(Refinement &&refinement);
+// The topology of the refined mesh, with its sharp features, its relations derived from those
+// of `parent`, the topology refined (the second takes the refinement's faces).
+MeshTopology refinedTopology(const MeshTopology &parent, const Refinement &refinement);
+MeshTopology refinedTopology(const MeshTopology &parent, Refinement &&refinement);
 
 // The tags that give `topology`'s sharp features back (interior edges and vertices of nonzero
 // sharpness, holes, options).

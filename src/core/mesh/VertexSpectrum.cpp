@@ -215,7 +215,7 @@ CharacteristicMap characteristicMapOn(Star &star, MeshScheme scheme, const MeshT
             next.insert(next.end(), scheme == MeshScheme::Loop ? 4 : faces[f].size(), ancestor[f]);
         ancestor = std::move(next);
         faces = r.faces.toVectors();
-        t = refinedTopology(r);
+        t = refinedTopology(t, r);
     }
     const Mat limit = applyStencils(limitStencils(t, scheme), data);
     CharacteristicMap out;
