@@ -2,8 +2,7 @@
 // reference image within a tolerance; in the main window a surface item gets the 3D view, a
 // mouse drag of a control point is one undo step the surface follows, maps switched off in the
 // Properties dock make 000 Fig. 9's fractal (undoable), the control-point table edits x, y, z,
-// and the figure sheet prints the surface to PDF. Under Xvfb (QT_QPA_PLATFORM=xcb) the GL path
-// draws the same figure and reports its frame times at 100 k and 1 M points.
+// and the figure sheet prints the surface to PDF. The GL path under Xvfb: test_surface_view_gl.
 //
 // AWB_REGENERATE_REFERENCES=1 writes the reference images anew (tests/gui/data/).
 #include "gui/app/ItemController.h"
@@ -30,6 +29,7 @@
 #include <QtTest>
 
 #include "ImageCompare.h"
+#include "SurfaceViewTestSupport.h"
 #include "TestMain.h"
 
 #include "TestTime.h"
@@ -37,7 +37,9 @@
 using namespace awb;
 using awb::test::compare;
 using awb::test::drawnPixels;
+using awb::test::feed;
 using awb::test::ImageDiff;
+using awb::test::loopItem;
 using awb::test::reference;
 
 namespace {
@@ -53,37 +55,7 @@ std::unique_ptr<MainWindow> cpuWindow(RecordingMessages *messages, const QString
     return w;
 }
 
-std::unique_ptr<SubdivisionSurfaceItem> loopItem(int depth = 6)
-{
-    auto item = std::make_unique<SubdivisionSurfaceItem>();
-    item->setName(QStringLiteral("Loop"));
-    item->setScheme({SurfaceSchemeSpec::Kind::Loop, QStringLiteral("hexagon")});
-    AlgorithmSpec a = item->algorithm();
-    a.depth = depth;
-    item->setAlgorithm(a);
-    // As Add > Subdivision surface does: the polygon of the domain's corner limit points,
-    // whose images lie on the surface (the default triangle of net points only converges).
-    const Mat c = item->derivedIfs()->surface->cornerLimitPoints;
-    StartSetSpec start;
-    start.kind = StartSetSpec::Kind::Polygon;
-    start.points.clear();
-    for (Eigen::Index r = 0; r < c.rows(); ++r)
-        start.points.push_back({c(r, 0), c(r, 1), c(r, 2)});
-    item->setStartSet(start);
-    return item;
-}
-
-// Feeds a view the item's data as ItemController does (for the view on its own).
-void feed(SurfaceView &view, SubdivisionSurfaceItem &item)
-{
-    const auto d = item.derivedIfs();
-    QVERIFY2(d, qPrintable(item.derivedError()));
-    SurfaceView::RenderSettings rs;
-    rs.depth = item.algorithm().depth;
-    view.setRenderSettings(rs);
-    view.setControlNet(toMatrix(item.controlPoints(0), 3), item.refinedMesh(0).faces);
-    view.setIfs(std::make_shared<const Ifs>(d->ifs), item.coreStartSet(*d), d->mapIndex);
-}
+// loopItem, feed: SurfaceViewTestSupport.h.
 
 // Empty when `shown` is F^k(X0) as `rebuilt` has it: the same triangles in another order,
 // compared by their count, area and the moments of their vertices; else what differs.
@@ -133,8 +105,6 @@ private slots:
     void perspectiveAndLayers();
     void batchPrintsSurfaces();
     void addMenuMakesSurfaces();
-    void glPathUnderXvfb();
-    void glDragUnderXvfb();
 
 private:
     QTemporaryDir m_dir;
@@ -614,33 +584,6 @@ void TestSurfaceView::addMenuMakesSurfaces()
     QCOMPARE(w.project()->childCount(), 1);
 }
 
-// The GL cases run in the CTest entry gui_test_surface_view_gl (Xvfb, AWB_REQUIRE_GL=1), where
-// a missing display or GL context is a failure; in the offscreen entry they skip, since the
-// offscreen platform draws with the CPU path (tested above).
-static bool glTestCanRun()
-{
-    const bool required = qEnvironmentVariableIsSet("AWB_REQUIRE_GL");
-    if (QGuiApplication::platformName() != QLatin1String("xcb")) {
-        if (required)
-            QTest::qFail("AWB_REQUIRE_GL is set but the platform is not xcb", __FILE__, __LINE__);
-        else
-            QTest::qSkip("the GL path runs under Xvfb (QT_QPA_PLATFORM=xcb); offscreen uses the "
-                         "CPU path", __FILE__, __LINE__);
-        return false;
-    }
-    // This machine's GL is a software one (llvmpipe), which the view leaves for the CPU
-    // path: the GL path is tested by asking for it.
-    qputenv("AWB_GL", "1");
-    if (!SurfaceView::glAvailable()) {
-        if (required)
-            QTest::qFail("no OpenGL context on the Xvfb display", __FILE__, __LINE__);
-        else
-            QTest::qSkip("no OpenGL context on this display", __FILE__, __LINE__);
-        return false;
-    }
-    return true;
-}
-
 // Orbiting the view sets the item's camera (one undo step): Properties, exports and the CLI
 // look from where the user turned the view; the view keeps its framing.
 void TestSurfaceView::orbitTurnsTheItemsCamera()
@@ -680,135 +623,6 @@ void TestSurfaceView::orbitTurnsTheItemsCamera()
     QCOMPARE(item->camera().azimuth, azimuth);
     QCoreApplication::processEvents();
     QTRY_COMPARE(view->camera().ortho.azimuth, azimuth);
-}
-
-void TestSurfaceView::glPathUnderXvfb()
-{
-    if (!glTestCanRun())
-        return;
-    auto item = loopItem(8);
-    SurfaceView view;
-    QCOMPARE(view.path(), SurfaceView::Path::OpenGL);
-    view.resize(800, 600);
-    view.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&view));
-    // The full mesh has more primitives than the coarse one drawn while rotating: depth 7
-    // (280 000 triangles) against depth 5 in the normal build, depth 6 against 5 in an
-    // instrumented one, whose depth-7 mesh alone takes minutes.
-    const std::size_t large = awb::test::ms(1) > 1 ? 60'000 : 400'000;
-    for (const std::size_t budget : {std::size_t(10'000), large}) {
-        QSignalSpy ready(&view, &SurfaceView::frameReady);
-        view.setDetailBudget(budget, 10'000);
-        feed(view, *item);
-        view.resetCamera();
-        QTRY_VERIFY_WITH_TIMEOUT(view.isFullDetail() && !view.isRendering(),
-                                 awb::test::ms(60000));
-        QTest::qWait(300);
-        // Frame times: rotating (the coarse mesh) and at rest (the full one).
-        QList<double> moving, still;
-        int frames = 0;
-        double last = 0;
-        const auto c = connect(&view, &SurfaceView::frameDrawn, this,
-                               [&](double ms) { ++frames; last = ms; });
-        for (int k = 0; k < 12; ++k) {
-            const int before = frames;
-            view.orbit(5, 1);
-            QTRY_VERIFY_WITH_TIMEOUT(frames > before, awb::test::ms(5000));
-            moving << last;
-        }
-        QTest::qWait(400); // settles: full detail
-        for (int k = 0; k < 5; ++k) {
-            const int before = frames;
-            view.requestGlFrame();
-            QTRY_VERIFY_WITH_TIMEOUT(frames > before, awb::test::ms(5000));
-            still << last;
-        }
-        disconnect(c);
-        std::sort(moving.begin(), moving.end());
-        std::sort(still.begin(), still.end());
-        qInfo("GL llvmpipe %zu primitives (depth %d): rotating median %.1f ms, still median "
-              "%.1f ms, mesh built in %.2f s",
-              view.mesh().size(), view.mesh().depth, moving[moving.size() / 2],
-              still[still.size() / 2], view.meshSeconds());
-        QCOMPARE(view.lastFramePrimitives(), view.mesh().size());
-    }
-    // The GL frame is the CPU figure within a tolerance (the same primitives and colours;
-    // lit by their own normals in GL, by the depth buffer's on the CPU).
-    view.setLayerVisible(SurfaceView::Layer::ControlNet, false);
-    view.setLayerVisible(SurfaceView::Layer::Axes, false);
-    QTest::qWait(300);
-    const QImage frame = view.grabGlFrame();
-    QVERIFY(!frame.isNull());
-    const QImage cpu = view.renderImage(frame.size(), false);
-    const ImageDiff d = compare(cpu, frame);
-    QVERIFY2(d.coverageMismatch < 0.15,
-             qPrintable(QStringLiteral("coverage %1").arg(d.coverageMismatch)));
-}
-
-void TestSurfaceView::glDragUnderXvfb()
-{
-    if (!glTestCanRun())
-        return;
-    RecordingMessages messages;
-    MainWindow w(&messages, m_dir.path() + QStringLiteral("/recovery"));
-    w.resize(1400, 900);
-    w.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&w));
-    w.project()->addItem(loopItem(8));
-    auto *item = qobject_cast<SubdivisionSurfaceItem *>(w.currentItem());
-    SurfaceView *view = w.surfaceView();
-    QCOMPARE(view->path(), SurfaceView::Path::OpenGL);
-    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && view->isFullDetail(), awb::test::ms(60000));
-    QTest::qWait(300);
-    QElapsedTimer refresh;
-    refresh.start();
-    for (int k = 0; k < 5; ++k)
-        w.controller()->refreshNow();
-    qInfo("ItemController::refreshNow of the surface item (docks included): %.0f ms",
-          double(refresh.nsecsElapsed()) / 5e6);
-    // `shown`: the number of clouds made when the last frame was drawn.
-    int clouds = 0, shown = 0;
-    QElapsedTimer timer;
-    double shownAt = 0;
-    connect(view, &SurfaceView::frameReady, this, [&] { ++clouds; });
-    connect(view, &SurfaceView::frameDrawn, this, [&] {
-        if (shown != clouds)
-            shownAt = double(timer.nsecsElapsed()) / 1e6;
-        shown = clouds;
-    });
-    const int steps = w.project()->undoStack()->count();
-    const Point original = item->controlPoints(0)[9];
-    const QPoint grab = view->controlPointScreen(9).toPoint();
-    QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, grab);
-    refresh.start();
-    for (int k = 0; k < 5; ++k)
-        w.controller()->refreshNow();
-    qInfo("... during a drag (the 3D view only): %.0f ms", double(refresh.nsecsElapsed()) / 5e6);
-    // Time from a mouse move to the frame showing the surface it made: edit, derived IFS,
-    // the decimated cloud on the worker, upload and draw.
-    QList<double> latency;
-    for (int k = 1; k <= 8; ++k) {
-        const int c0 = clouds;
-        timer.start();
-        QTest::mouseMove(view, grab + QPoint(0, -5 * k));
-        QTRY_VERIFY_WITH_TIMEOUT(shown > c0, awb::test::ms(10000));
-        latency << shownAt;
-        qInfo("  move %d: frame at %.0f ms (cloud %.0f ms on the worker, draw %.0f ms)", k,
-              shownAt, 1000 * view->meshSeconds(), view->lastFrameMs());
-    }
-    const std::size_t dragPrimitives = view->lastFramePrimitives();
-    QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, grab + QPoint(0, -40));
-    QCOMPARE(w.project()->undoStack()->count(), steps + 1);
-    QVERIFY(item->controlPoints(0)[9].z > original.z);
-    QTRY_VERIFY_WITH_TIMEOUT(!view->isRendering() && view->isFullDetail()
-                                 && view->mesh().size() > dragPrimitives,
-                             awb::test::ms(60000));
-    std::sort(latency.begin(), latency.end());
-    qInfo("GL llvmpipe drag: move -> new frame median %.0f ms, max %.0f ms (%zu primitives while "
-          "dragging, %zu after release)", latency[latency.size() / 2], latency.last(),
-          dragPrimitives, view->mesh().size());
-    w.project()->undoStack()->undo();
-    QCOMPARE(item->controlPoints(0)[9], original);
 }
 
 AWB_TEST_MAIN(TestSurfaceView)
