@@ -10380,6 +10380,10 @@ Volby příkazu vypíše &apos;attractor-cli &lt;příkaz&gt; --help&apos;.
         <source>%1 is a defective eigenvalue with a Jordan chain longer than two, or more than one chain: Reif&apos;s criterion is not decided there</source>
         <translation>%1 je defektní vlastní číslo s Jordanovým řetězcem delším než dva, nebo s více řetězci: Reifovo kritérium zde není rozhodnuto</translation>
     </message>
+    <message>
+        <source>the eigenvectors of lambda1 and lambda2 vanish on the crease of edge %1, whose own tangent (a smaller eigenvalue) leaves their tangent plane: not C1 for generic data</source>
+        <translation>vlastní vektory lambda1 a lambda2 jsou nulové na ostré hraně %1, jejíž vlastní tečna (menší vlastní číslo) opouští jejich tečnou rovinu: pro obecná data není C1</translation>
+    </message>
 </context>
 <context>
     <name>awb::render</name>

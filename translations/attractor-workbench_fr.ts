@@ -10367,6 +10367,10 @@ Exécutez &apos;attractor-cli &lt;commande&gt; --help&apos; pour les options d&a
         <source>%1 is a defective eigenvalue with a Jordan chain longer than two, or more than one chain: Reif&apos;s criterion is not decided there</source>
         <translation>%1 est une valeur propre défective avec une chaîne de Jordan de longueur supérieure à deux, ou plusieurs chaînes : le critère de Reif n&apos;y est pas décidé</translation>
     </message>
+    <message>
+        <source>the eigenvectors of lambda1 and lambda2 vanish on the crease of edge %1, whose own tangent (a smaller eigenvalue) leaves their tangent plane: not C1 for generic data</source>
+        <translation>les vecteurs propres de lambda1 et lambda2 s’annulent sur l’arête vive %1, dont la tangente propre (une valeur propre plus petite) sort de leur plan tangent : pas C1 pour des données génériques</translation>
+    </message>
 </context>
 <context>
     <name>awb::render</name>

@@ -10354,6 +10354,10 @@ Run &apos;attractor-cli &lt;command&gt; --help&apos; for the options of a comman
         <source>%1 is a defective eigenvalue with a Jordan chain longer than two, or more than one chain: Reif&apos;s criterion is not decided there</source>
         <translation>%1 是亏损特征值，其若尔当链长于二或不止一条：此处 Reif 判据无法判定</translation>
     </message>
+    <message>
+        <source>the eigenvectors of lambda1 and lambda2 vanish on the crease of edge %1, whose own tangent (a smaller eigenvalue) leaves their tangent plane: not C1 for generic data</source>
+        <translation>lambda1 与 lambda2 的特征向量在折痕边 %1 上为零，而该折痕自身的切线（较小的特征值）离开它们的切平面：对一般数据不是 C1</translation>
+    </message>
 </context>
 <context>
     <name>awb::render</name>

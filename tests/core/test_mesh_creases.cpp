@@ -22,6 +22,8 @@
 #include "core/mesh/MeshSheets.h"
 #include "core/mesh/VertexSpectrum.h"
 
+#include <Eigen/SVD>
+
 #include <QDir>
 #include <QtTest>
 
@@ -151,6 +153,7 @@ private slots:
     void smoothStarThroughTheSectorPathIsTheInteriorAnalysis();
     void sharpVerticesSectorBySector();
     void jordanBlocksAreDecided();
+    void boundaryCreaseLeavesTheTangentPlane();
     void repeatedTagsKeepTheLastAsOpenSubdiv();
 };
 
@@ -521,6 +524,17 @@ void TestMeshCreases::jordanBlocksAreDecided()
         // eigenvectors folds.
         {MeshScheme::Loop, star(7, true, {0, 6}, false), 0, 0.5915064, 0.5, 0.375, true, false,
          "not regular"},
+        // lambda1 and lambda2 above the crease's 1/2, their eigenvectors zero on it: the crease
+        // comes in along its own tangent, out of their plane (boundaryCreaseLeavesTheTangentPlane
+        // measures it) -- the Catmull-Clark boundary of valence 6, Loop's of 8, and the
+        // four-face sector of a Catmull-Clark corner of valence 7, whose chain at 1/2 carries
+        // one crease tangent but not the other.
+        {MeshScheme::CatmullClark, star(6, true, {0, 5}, false), 0, 0.6263413, 0.5499884, 0.5,
+         false, false, "leaves their tangent plane"},
+        {MeshScheme::Loop, star(8, true, {0, 7}, false), 0, 0.6002422, 0.5308725, 0.5, false,
+         false, "leaves their tangent plane"},
+        {MeshScheme::CatmullClark, star(7, false, {0, 3}, true), 1, 0.6111165, 0.5, 0.3657123,
+         true, false, "leaves their tangent plane"},
     };
     for (const auto &c : cases) {
         const SharpVertexSpectrum v = sharpVertexSpectrum(c.scheme, c.star);
@@ -539,6 +553,100 @@ void TestMeshCreases::jordanBlocksAreDecided()
         QVERIFY2(s.chain.empty() != c.chain, qPrintable(what));
         QVERIFY2(QString::fromStdString(s.reason).contains(c.reason), qPrintable(what));
     }
+}
+
+namespace {
+
+// An open fan of `faces` quads around boundary vertex 0 (3 x 3 quads a sector, the fan over
+// half a turn), its points jittered: generic data.
+Mesh openFan(int faces, std::mt19937 &random)
+{
+    std::uniform_real_distribution<double> jitter(-0.15, 0.15);
+    std::map<std::tuple<int, int, int>, int> ids;
+    std::vector<Eigen::RowVector3d> points;
+    const double a = M_PI / faces;
+    const auto id = [&](int s, int i, int j) {
+        if (i == 0 && j == 0)
+            s = 0;
+        else if (i == 0 && s + 1 < faces)
+            std::tie(s, i, j) = std::tuple{s + 1, j, 0};
+        const auto key = std::tuple{s, i, j};
+        if (const auto it = ids.find(key); it != ids.end())
+            return it->second;
+        const Eigen::RowVector3d u(std::cos(s * a), std::sin(s * a), 0),
+            w(std::cos((s + 1) * a), std::sin((s + 1) * a), 0);
+        Eigen::RowVector3d p = i * u + j * w;
+        if (i || j)
+            p += Eigen::RowVector3d(jitter(random), jitter(random), 3 * jitter(random));
+        points.push_back(p);
+        ids.emplace(key, int(points.size()) - 1);
+        return int(points.size()) - 1;
+    };
+    Mesh m;
+    id(0, 0, 0);
+    for (int s = 0; s < faces; ++s)
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                m.faces.push_back({id(s, i, j), id(s, i + 1, j), id(s, i + 1, j + 1), id(s, i, j + 1)});
+    m.vertices.resize(Eigen::Index(points.size()), 3);
+    for (std::size_t r = 0; r < points.size(); ++r)
+        m.vertices.row(Eigen::Index(r)) = points[r];
+    return m;
+}
+
+// The largest angle (degrees) between a boundary edge's secant at vertex 0 of the limit surface
+// `level` steps down and the plane that fits the inner edges' secants there.
+double boundaryOffPlane(const Mesh &mesh, int level)
+{
+    const Mesh refined = refineMesh(mesh, MeshScheme::CatmullClark, level);
+    const Mat limit = limitPositions(refined, MeshScheme::CatmullClark);
+    const MeshTopology t = checkMesh(refined, MeshScheme::CatmullClark);
+    std::vector<Eigen::RowVector3d> border, inner;
+    for (int e : t.ring(0).edges) {
+        const Eigen::RowVector3d u = (limit.row(t.otherEnd(e, 0)) - limit.row(0)).normalized();
+        (t.edge(e).boundary() ? border : inner).push_back(u);
+    }
+    Mat secants(Eigen::Index(inner.size()), 3);
+    for (std::size_t k = 0; k < inner.size(); ++k)
+        secants.row(Eigen::Index(k)) = inner[k];
+    const Eigen::JacobiSVD<Mat> svd(secants, Eigen::ComputeFullV);
+    const Eigen::Vector3d normal = svd.matrixV().col(2);
+    double worst = 0;
+    for (const Eigen::RowVector3d &u : border)
+        worst = std::max(worst, std::asin(std::abs(u.dot(normal))) * 180 / M_PI);
+    return worst;
+}
+
+} // namespace
+
+// The Catmull-Clark boundary as OpenSubdiv refines it, on generic data: at valence 5 (a chain
+// at 1/2 ties the boundary's tangent to the plane) the boundary curve comes into the vertex in
+// the surface's tangent plane (0.87, 0.38 degrees off at levels 3 and 5); at valence 6 (lambda1
+// = 0.626, lambda2 = 0.550 above the boundary's 1/2, their eigenvectors zero on it) it stays out
+// of it (6.7, 5.0 degrees, 4.4 at level 7: the inner secants' plane tends to its limit as
+// (0.5 / 0.55)^k, the boundary's tangent is fixed) -- sharpVertexSpectrum's verdicts, on limit
+// surfaces.
+void TestMeshCreases::boundaryCreaseLeavesTheTangentPlane()
+{
+    const auto verdict = [](int valence) {
+        SharpNeighbourhood s;
+        s.valence = valence;
+        s.boundary = true;
+        s.sharpEdges.assign(std::size_t(valence), 0);
+        s.sharpEdges.front() = s.sharpEdges.back() = 1;
+        return sharpVertexSpectrum(MeshScheme::CatmullClark, s).c1;
+    };
+    QCOMPARE(verdict(5), std::optional<bool>(true));
+    QCOMPARE(verdict(6), std::optional<bool>(false));
+    std::mt19937 random5(7), random6(7);
+    const Mesh five = openFan(4, random5), six = openFan(5, random6);
+    const double in3 = boundaryOffPlane(five, 3), in5 = boundaryOffPlane(five, 5),
+                 out3 = boundaryOffPlane(six, 3), out5 = boundaryOffPlane(six, 5);
+    qInfo("boundary tangent off the surface's tangent plane, levels 3 and 5: valence 5 %.3f, "
+          "%.3f deg; valence 6 %.3f, %.3f deg",
+          in3, in5, out3, out5);
+    QVERIFY2(in5 < 0.5 && in5 < 0.6 * in3, qPrintable(QString("%1 %2").arg(in3).arg(in5)));
+    QVERIFY2(out5 > 3.0 && out5 > 0.7 * out3, qPrintable(QString("%1 %2").arg(out3).arg(out5)));
 }
 
 void TestMeshCreases::repeatedTagsKeepTheLastAsOpenSubdiv()

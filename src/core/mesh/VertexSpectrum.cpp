@@ -156,10 +156,9 @@ Mat localMatrix(const Refinement &refinement, const std::vector<int> &coarse,
 
 // The real basis of the eigenspace of a double eigenvalue `value` of S (ring x 2). The
 // divide-and-conquer SVD: a valence-64 pole's 385 x 385 matrix in a fifth of Jacobi's time
-// (below 16 columns it is Jacobi's), its null space as exact. (The sharp features' spaces below
-// keep Jacobi's: a sector whose boundary's image collapses onto the centre is judged simple or
-// not by the rounding of points there, and the verdicts stay those the tests and the docs give;
-// see the note on characteristicMapOn's wedge.)
+// (below 16 columns it is Jacobi's), its null space as exact. The sharp features' spaces below
+// keep Jacobi's (their stars are small); their verdicts are the same under either (the table of
+// valence 3 to 8, both schemes, compared).
 Mat eigenPlane(const Mat &S, double value)
 {
     const Mat shifted = S - value * Mat::Identity(S.rows(), S.cols());
@@ -284,11 +283,9 @@ CharacteristicMap characteristicMapOn(Star &star, MeshScheme scheme, const MeshT
         return out;
     }
     // A wedge: its boundary's image simple (no two segments but neighbours cross), wound as
-    // its cells are. Where an eigenvector vanishes on a crease (its eigenvalue not one of the
-    // crease curve's), that crease's points all land on the centre's image, and which of the
-    // segments there cross is rounding's (the Catmull-Clark corner sectors of four faces,
-    // valence 7 and 8, turn from not C1 to C1 under another SVD of the same space): a rule for
-    // such collapsed runs is still to be settled.
+    // its cells are. (A crease on which both vectors of the map vanish lands on the centre's
+    // image, where which segments cross is rounding's: such sectors are judged before, on the
+    // eigenvectors themselves, by leavesThePlane.)
     const std::size_t m = outline.size();
     bool simple = m >= 3 && m == boundaryNext.size();
     for (std::size_t i = 0; simple && i < m; ++i)
@@ -570,6 +567,39 @@ PairVerdict readPair(const Mat &S, const std::vector<Cluster> &clusters)
     return p;
 }
 
+// Whether a crease that bounds a sector leaves the tangent plane (Biermann, Grundel and Zorin
+// 2015 treat the boundary): the crease's points one level finer are combinations of its own,
+// so an eigenvector whose eigenvalue is not one of the crease curve's vanishes on it. When both
+// vectors of the map vanish on a crease, the crease comes into the vertex along its own
+// tangent -- the coefficient of a smaller eigenvalue, independent of the plane's two for
+// generic data -- and the surface folds there (the characteristic map sends the crease to the
+// vertex; tests/core/test_mesh_creases.cpp measures the fold on limit surfaces). One case keeps
+// the tangent in the plane: lambda2's chain v, w with v vanishing on the crease and w not, and
+// no other eigenvector of lambda2 on it: the crease then moves as lambda2^k w c_w, and c_w is the
+// plane's (the ring's top term is k lambda2^(k-1) v c_w). The first crease that leaves the plane
+// (its spoke), or nothing.
+std::optional<int> leavesThePlane(
+    const Mat &S, const std::vector<Cluster> &clusters, const PairVerdict &pair,
+    const std::vector<std::pair<int, std::vector<Eigen::Index>>> &creases)
+{
+    const auto vanishes = [](const Mat &vectors, const std::vector<Eigen::Index> &rows) {
+        const double scale = vectors.cwiseAbs().maxCoeff();
+        return vectors(rows, Eigen::all).cwiseAbs().maxCoeff() <= 1e-8 * scale;
+    };
+    for (const auto &[spoke, rows] : creases) {
+        if (!vanishes(pair.plane, rows))
+            continue;
+        const Cluster *b = clusters.size() > 1 && clusters[0].multiplicity < 2 ? &clusters[1]
+                                                                               : nullptr;
+        const bool carried = b && b->defective() && b->real() && b->space.size() > 0
+                             && !vanishes(b->space, rows)
+                             && vanishes(eigenvectorsOf(S, b->value.real(), b->geometric), rows);
+        if (!carried)
+            return spoke;
+    }
+    return std::nullopt;
+}
+
 } // namespace
 
 SharpVertexSpectrum sharpVertexSpectrum(MeshScheme scheme, const SharpNeighbourhood &star)
@@ -664,7 +694,8 @@ SharpVertexSpectrum sharpVertexSpectrum(MeshScheme scheme, const SharpNeighbourh
                                    .maxCoeff();
         if (outside > 1e-12)
             throw std::logic_error("sharpVertexSpectrum: a sector's points depend on others");
-        const PairVerdict pair = readPair(sectorS, eigenClusters(sectorS));
+        const std::vector<Cluster> clusters = eigenClusters(sectorS);
+        const PairVerdict pair = readPair(sectorS, clusters);
         v.lambda1 = pair.lambda1;
         v.lambda2 = pair.lambda2;
         v.mu = pair.mu;
@@ -685,6 +716,32 @@ SharpVertexSpectrum sharpVertexSpectrum(MeshScheme scheme, const SharpNeighbourh
                 coreTranslate("awb::mesh", "lambda2 = lambda3 = %1: the tangent plane is not "
                                            "determined by the two largest"),
                 streamedNumber(v.lambda2));
+        // The creases that bound the sector, each by its two ring points (sector rows).
+        std::vector<std::pair<int, std::vector<Eigen::Index>>> creases;
+        if (star.boundary || cuts.size() >= 2) {
+            const auto local = [&](int point) {
+                const int row = column.at(point);
+                const auto at = std::lower_bound(sectorRows.begin(), sectorRows.end(), row);
+                if (at == sectorRows.end() || *at != row)
+                    throw std::logic_error("sharpVertexSpectrum: a crease outside its sector");
+                return Eigen::Index(at - sectorRows.begin());
+            };
+            const int last = (first + count - 1) % sectors;
+            creases.push_back({first % spokes, {local(s.id(first % sectors, 1, 0)),
+                                                local(s.id(first % sectors, 2, 0))}});
+            creases.push_back({(first + count) % spokes,
+                               {local(s.id(last, 0, 1)), local(s.id(last, 0, 2))}});
+        }
+        if (v.spectral)
+            if (const auto spoke = leavesThePlane(sectorS, clusters, pair, creases)) {
+                v.spectral = false;
+                v.reason = formatMessage(
+                    coreTranslate("awb::mesh",
+                                  "the eigenvectors of lambda1 and lambda2 vanish on the crease "
+                                  "of edge %1, whose own tangent (a smaller eigenvalue) leaves "
+                                  "their tangent plane: not C1 for generic data"),
+                    *spoke);
+            }
         if (v.spectral) {
             Mat Q = Mat::Zero(m, 2);
             for (Eigen::Index i = 0; i < r; ++i)
