@@ -11,9 +11,13 @@
 //  - lane counts that are not multiples of four, and a bad value in one lane only;
 //  - a whole flame's histogram drawn by the vector kernels against the scalar kernels'
 //    (forceBaselineKernels: the same game, XformMap::apply on each lane): the same total
-//    weight and the same lit blocks.
+//    weight and the same lit blocks;
+//  - the histogram's adds (FlameHits.h) on AVX2 registers against the scalar rule and flam3's
+//    bump_no_overflow written out here: the very same sums, step and linear palettes, at 0 and
+//    at 2^32 - 1.
 // Skipped only where the processor has no AVX2 (the wave does not run there).
 #include "core/flame/FlameChaos.h"
+#include "core/flame/FlameHits.h"
 #include "core/flame/Variations.h"
 #include "core/flame/XformWave.h"
 #include "core/render/Engine.h"
@@ -23,7 +27,9 @@
 #include "TestMain.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
+#include <random>
 #include <vector>
 
 using namespace awb;
@@ -303,6 +309,83 @@ private slots:
         QVERIFY(litOne <= litBoth / 20);
         QVERIFY(std::llabs(std::int64_t(ws.offscreen) - std::int64_t(ss.offscreen))
                 <= 6 * std::sqrt(double(ss.offscreen)) + 10);
+    }
+
+    void hitsAsFlam3Bumps()
+    {
+        using namespace awb::flame::detail;
+        std::mt19937_64 gen(7);
+        auto uniform = [&](double a, double b) {
+            return std::uniform_real_distribution<double>(a, b)(gen);
+        };
+        std::vector<double> dmap(4 * 256);
+        for (int i = 0; i < 256; ++i) {
+            dmap[std::size_t(4 * i)] = 255.0 * uniform(0, 1);
+            dmap[std::size_t(4 * i + 1)] = 255.0 * uniform(0, 1);
+            dmap[std::size_t(4 * i + 2)] = 255.0 * (i == 7 ? 1.0 : uniform(0, 1));
+            dmap[std::size_t(4 * i + 3)] = 255.0;
+        }
+        // Colours at the palette's ends and steps, and beyond; opacities of flam3's range and a
+        // negative one (held at 0 here; flam3's conversion would be undefined).
+        const double colours[] = {0.0, 1.0, 255.0 / 256, 254.5 / 256, 7.0 / 256, -0.2, 1.3};
+        const double opacities[] = {1.0, 0.6, 0.25, 3.0};
+        std::vector<FlameHit> hits(4000);
+        for (std::size_t h = 0; h < hits.size(); ++h) {
+            const double c = h % 3 == 0 ? colours[h / 3 % 7] : uniform(0, 1);
+            const double o = h % 5 == 4 ? -0.5 : opacities[h / 5 % 4];
+            hits[h] = FlameHit{c, o, std::size_t(gen() % 37)};  // cells hit many times
+        }
+        for (const bool linear : {false, true}) {
+            std::vector<std::array<std::uint32_t, 4>> start(37);
+            for (std::size_t i = 0; i < start.size(); ++i)
+                for (std::uint32_t &v : start[i])
+                    v = i % 3 == 0 ? UINT_MAX - std::uint32_t(gen() % 40000)
+                                   : std::uint32_t(gen() % 100000);
+            const HitPalette palette{dmap.data(), linear};
+            auto scalar = start, vector = start, flam3 = start;
+            addHits(hits.data(), hits.size(), palette, scalar.data());
+            addHitsAvx2(hits.data(), hits.size(), palette, vector.data());
+            // flam3 3.1.1 (rect.c): the colour index, then bump_no_overflow on each sum.
+            for (const FlameHit &hit : hits) {
+                double delta[4];
+                const double d = hit.colour * 256;
+                int i = int(std::clamp(d, -1.0, 257.0));
+                if (!linear) {
+                    i = std::clamp(i, 0, 255);
+                    for (int c = 0; c < 4; ++c)
+                        delta[c] = hit.opacity * dmap[std::size_t(4 * i + c)];
+                } else {
+                    double frac = d - i;
+                    if (i < 0) {
+                        i = 0;
+                        frac = 0;
+                    } else if (i >= 255) {
+                        i = 254;
+                        frac = 1;
+                    }
+                    for (int c = 0; c < 3; ++c)
+                        delta[c] = hit.opacity * (dmap[std::size_t(4 * i + c)] * (1.0 - frac)
+                                                  + dmap[std::size_t(4 * i + 4 + c)] * frac);
+                    delta[3] = hit.opacity * 255.0;
+                }
+                for (int c = 0; c < 4; ++c) {
+                    std::uint32_t &dest = flam3[hit.cell][std::size_t(c)];
+                    if (delta[c] < 0 && -delta[c] > dest)
+                        dest = 0;
+                    else if (UINT_MAX - dest > delta[c])
+                        dest = std::uint32_t(dest + delta[c]);
+                    else
+                        dest = UINT_MAX;
+                }
+            }
+            int held = 0;
+            for (std::size_t i = 0; i < start.size(); ++i) {
+                QCOMPARE(vector[i], scalar[i]);
+                QCOMPARE(scalar[i], flam3[i]);
+                held += scalar[i][3] == UINT_MAX;
+            }
+            QVERIFY(held > 0);  // some sums reached 2^32 - 1
+        }
     }
 };
 

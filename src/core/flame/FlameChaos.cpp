@@ -54,23 +54,37 @@ void checkXform(const FlameXform &x, const std::string &which)
                                            which));
 }
 
-// The orbits of one stream's wave: how many run side by side. Each runs its own batches of
-// kBatch samples after kFuse steps, as one scalar orbit does; enough lanes that the orbits
-// choosing one xform fill registers, few enough that a small request (a window's first
-// pictures) does not spend its samples on fuses. A function of the stream's samples alone:
-// equal requests give equal pictures on any number of threads.
-int waveOrbits(std::uint64_t samples)
+// The orbits of one stream: how many run at once. Enough that the orbits waiting for each
+// xform fill registers, few enough that a small request (a window's first pictures) does not
+// spend its samples on fuses. A function of the stream's samples and the flame alone: equal
+// requests give equal pictures on any number of threads.
+std::size_t waveOrbits(std::uint64_t samples, std::size_t xforms)
 {
-    return int(std::clamp<std::uint64_t>(samples / 2048, 4, 64));
+    const std::uint64_t most = std::clamp<std::uint64_t>(16 * xforms, 64, 256);
+    return std::size_t(std::clamp<std::uint64_t>(samples / 2048, 4, most));
 }
 
-// One stream's samples into `sink`, its orbits advanced together (XformWave.h): in each step
-// every running orbit chooses its xform, the orbits of each xform go through it together, then
-// through the final xform, each into the sink in orbit order. flam3's game (flam3_iterate) on
-// each orbit: batches of kBatch samples from a random restart after kFuse steps, the xform by
-// weight or xaos row, the colour moved first, a bad value retried from flam3's replacement up
-// to four times (the fifth drawn), the final xform drawn with its opacity, the xform's
-// opacity. On every processor: XformWave applies the scalar kernels where AVX2 does not run.
+// An orbit's counters, which go with its point from stack to stack.
+struct OrbitCounters {
+    std::uint16_t togo;   // samples its batch has still to draw
+    std::uint8_t fuse;    // steps before it is drawn
+    std::uint8_t bad;     // consecutive bad values
+    std::uint16_t last;   // the xform it last went through + 1 (its xaos row); 0 on a restart
+    std::uint16_t share;  // its share of the stream's samples
+};
+static_assert(kBatch <= 0xffff && kFuse <= 0xff && kMaxXforms < 0xffff);
+
+// One stream's samples into `sink`, as flam3's game (flam3_iterate) on each of its orbits:
+// batches of kBatch samples from a random restart after kFuse steps, the xform by weight or
+// xaos row, the colour moved first, a bad value retried from flam3's replacement up to four
+// times (the fifth drawn), the final xform drawn with its opacity, the xform's opacity.
+//
+// Each xform keeps a stack of the orbits that chose it, their points side by side: the game
+// takes a stack whole through its xform (XformWave: four orbits a register; the scalar kernels
+// lane by lane without AVX2), then each orbit is drawn, chooses its next xform and goes onto
+// that stack. Full registers first; the stacks that cannot fill one only when none can. The
+// orbits advance at their own pace; each is flam3's chain, whatever the order they are taken
+// in. A hit goes to the sink, which adds it some hits later (ColourSink).
 template <class Sink>
 FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std::uint64_t seed,
                    int stream, std::uint64_t samples, Sink &sink,
@@ -79,172 +93,140 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
 {
     FlameStats stats;
     WaveRandom random(seed, std::uint64_t(stream));
-    Xoshiro256 &rng = random.scalar;
-    const std::size_t orbits = std::size_t(waveOrbits(samples));
     const std::size_t nx = xf.maps.size();
-    constexpr int W = XformWave::kWidth;
+    const std::size_t orbits = waveOrbits(samples, nx);
+    constexpr std::size_t W = XformWave::kWidth;
 
-    // The orbits' state by orbit; `running` lists the orbits still drawing, in order.
-    std::vector<double> X(orbits), Y(orbits), C(orbits);
-    std::vector<int> last(orbits), step(orbits), batch(orbits), consecutive(orbits);
+    // The stacks, xform k's at k cap: points, colours, counters; room for every orbit and a
+    // register's padding (the waves read and write whole registers).
+    const std::size_t cap = orbits + W;
+    std::vector<double> sx(nx * cap), sy(nx * cap), sc(nx * cap);
+    std::vector<OrbitCounters> sn(nx * cap);
+    std::vector<std::uint32_t> top(nx, 0);
+    // One stack's points after its xform, and after the final xform.
+    std::vector<double> qx(cap), qy(cap), gx(cap), gy(cap);
+    std::vector<std::uint8_t> bad(cap), finalBad(cap);
+    // The shares: samples left, and the batch being drawn.
     std::vector<std::uint64_t> left(orbits);
-    std::vector<int> running;
-    // Per running orbit (by position in `running`): its xform and its slot in the arrays.
-    std::vector<int> chosen(orbits), slot(orbits);
-    // Each xform's orbits in one run of the arrays, the runs starting at multiples of W.
-    const std::size_t room = orbits + nx * W + W;
-    std::vector<double> ax(room), ay(room), qx(room), qy(room);
-    std::vector<std::uint8_t> bad(room);
-    std::vector<int> count(nx), start(nx);
-    std::vector<double> fx(room), fy(room), gx(room), gy(room);
-    std::vector<std::uint8_t> fbad(room);
-    std::vector<int> finalOf(orbits), finished;
-    // The colour's move by xform: c' = speed colour + (1 - speed) c.
-    std::vector<double> towards(nx), keepC(nx);
-    for (std::size_t k = 0; k < nx; ++k) {
-        towards[k] = xf.speed[k] * xf.colour[k];
-        keepC[k] = 1.0 - xf.speed[k];
-    }
+    std::vector<int> batch(orbits);
     const AliasTable *rows = choice.rows.data();
+    const bool xaos = choice.xaos;
 
-    auto uniform11 = [&] { return 2.0 * uniform01(rng) - 1.0; };
-    // Starts orbit o's next batch; false when it has drawn its share.
-    auto restart = [&](std::size_t o) {
-        if (left[o] == 0)
+    // Onto the stack of the xform it chooses next (by xaos row `last`).
+    auto push = [&](Xoshiro256 &rng, int last, double x, double y, double c, OrbitCounters n) {
+        const std::size_t to = std::size_t(rows[xaos ? last : 0].pick(rng.next()));
+        const std::size_t at = to * cap + top[to]++;
+        sx[at] = x;
+        sy[at] = y;
+        sc[at] = c;
+        sn[at] = n;
+    };
+    // Starts share s's next batch; false when it has drawn its samples.
+    auto restart = [&](Xoshiro256 &rng, std::size_t s) {
+        if (left[s] == 0)
             return false;
-        batch[o] = int(std::min<std::uint64_t>(left[o], kBatch));
-        left[o] -= std::uint64_t(batch[o]);
-        X[o] = uniform11();
-        Y[o] = uniform11();
-        C[o] = uniform01(rng);
-        last[o] = 0;
-        consecutive[o] = 0;
-        step[o] = -kFuse;
+        batch[s] = int(std::min<std::uint64_t>(left[s], kBatch));
+        left[s] -= std::uint64_t(batch[s]);
+        const double x = 2.0 * uniform01(rng) - 1.0, y = 2.0 * uniform01(rng) - 1.0;
+        const double c = uniform01(rng);
+        push(rng, 0, x, y, c,
+             OrbitCounters{std::uint16_t(batch[s]), std::uint8_t(kFuse), 0, 0, std::uint16_t(s)});
         return true;
     };
-    for (std::size_t o = 0; o < orbits; ++o) {
-        left[o] = samples / orbits + (o < samples % orbits ? 1 : 0);
-        if (restart(o))
-            running.push_back(int(o));
+    std::size_t alive = 0;
+    for (std::size_t s = 0; s < orbits; ++s) {
+        left[s] = samples / orbits + (s < samples % orbits ? 1 : 0);
+        alive += restart(random.scalar, s) ? 1 : 0;
     }
-    // One drawn point (of an orbit that went through xform fn) into the sink.
-    auto draw = [&](int fn, double px, double py, double rc) {
-        const double opacity = xf.opacity[std::size_t(fn)];
-        if (!sink.keep(opacity, rng))
-            return;
-        const std::ptrdiff_t k = plot.cell(px, py);
-        if (k < 0)
-            ++stats.offscreen;
-        else
-            sink.hit(std::size_t(k), rc, opacity);
+    const XformWave *finalWave = xf.finalWave.get();
+    const double finalTowards = xf.finalSpeed * xf.finalColour, finalKeep = 1.0 - xf.finalSpeed;
+    const double finalOpacity = xf.finalOpacity;
+
+    // Xform k on its stack's orbits, each then drawn and pushed onto its next xform's stack
+    // (this one's too: an orbit is read before any push can reach its place).
+    auto advance = [&](std::size_t k) {
+        const std::size_t m = top[k];
+        top[k] = 0;
+        const std::size_t base = k * cap;
+        xf.waves[k].apply(&sx[base], &sy[base], qx.data(), qy.data(), bad.data(), int(m), random);
+        if (finalWave)
+            finalWave->apply(qx.data(), qy.data(), gx.data(), gy.data(), finalBad.data(), int(m),
+                             random);
+        // Held in registers for the loop (the stores below could be the generator's words).
+        Xoshiro256 rng = random.scalar;
+        const Plot camera = plot;
+        FlameHit *hits = sink.room(m);
+        std::size_t drawn = 0;
+        // The colour's move by xform k (first, as in flam3's apply_xform).
+        const double towards = xf.speed[k] * xf.colour[k], keep = 1.0 - xf.speed[k];
+        const double opacity = xf.opacity[k];
+        const int last = int(k) + 1;
+        for (std::size_t j = 0; j < m; ++j) {
+            OrbitCounters n = sn[base + j];
+            const double colour = towards + keep * sc[base + j];
+            const double x = qx[j], y = qy[j];
+            if (bad[j]) {  // retried from the replacement, the xaos row unchanged
+                ++stats.badValues;
+                if (++n.bad < 5) {
+                    push(rng, n.last, x, y, colour, n);
+                    continue;
+                }
+            }
+            n.bad = 0;
+            n.last = std::uint16_t(last);
+            if (n.fuse > 0) {
+                --n.fuse;
+                push(rng, last, x, y, colour, n);
+                continue;
+            }
+            if (sink.keep(opacity, rng)) {
+                double px = x, py = y, pc = colour;
+                if (finalWave && (finalOpacity == 1.0 || uniform01(rng) < finalOpacity)) {
+                    px = gx[j];
+                    py = gy[j];
+                    pc = finalTowards + finalKeep * colour;
+                }
+                const std::ptrdiff_t cell = camera.cell(px, py);
+                if (cell < 0) {
+                    ++stats.offscreen;
+                } else {
+                    sink.prefetch(std::size_t(cell));
+                    hits[drawn++] = FlameHit{pc, opacity, std::size_t(cell)};
+                }
+            }
+            if (--n.togo > 0) {
+                push(rng, last, x, y, colour, n);
+                continue;
+            }
+            // The batch is drawn: the share's next, if any.
+            const std::size_t s = n.share;
+            stats.samples += std::uint64_t(batch[s]);
+            const std::uint64_t d =
+                done.fetch_add(std::uint64_t(batch[s])) + std::uint64_t(batch[s]);
+            if (control.progress)
+                control.progress(std::min(1.0, double(d) / total));
+            if (!restart(rng, s))
+                --alive;
+        }
+        random.scalar = rng;
+        sink.take(drawn, opacity);
     };
 
-    while (!running.empty()) {
+    while (alive > 0) {
         if (control.cancel && control.cancel->load(std::memory_order_relaxed)) {
             stats.cancelled = true;
             break;
         }
-        const std::size_t n = running.size();
-        // Choose (the colour moves first, as in flam3's apply_xform), then gather by xform.
-        std::fill(count.begin(), count.end(), 0);
-        for (std::size_t r = 0; r < n; ++r) {
-            const std::size_t o = std::size_t(running[r]);
-            const int fn = rows[choice.xaos ? last[o] : 0].pick(rng.next());
-            C[o] = towards[std::size_t(fn)] + keepC[std::size_t(fn)] * C[o];
-            chosen[r] = fn;
-            ++count[std::size_t(fn)];
-        }
-        int at = 0;
-        for (std::size_t k = 0; k < nx; ++k) {
-            start[k] = at;
-            at += (count[k] + W - 1) / W * W;
-        }
-        for (std::size_t r = 0; r < n; ++r) {
-            const std::size_t o = std::size_t(running[r]);
-            const int sl = start[std::size_t(chosen[r])]++;
-            slot[r] = sl;
-            ax[std::size_t(sl)] = X[o];
-            ay[std::size_t(sl)] = Y[o];
-        }
+        bool full = false;
         for (std::size_t k = 0; k < nx; ++k)
-            if (count[k] > 0) {
-                const std::size_t s0 = std::size_t(start[k] - count[k]);
-                xf.waves[k].apply(&ax[s0], &ay[s0], &qx[s0], &qy[s0], &bad[s0], count[k],
-                                  random);
+            if (top[k] >= W) {
+                advance(k);
+                full = true;
             }
-        // Bad values retried (no step); past the fuse, the point is drawn -- through the
-        // final xform first, when there is one (the orbit goes on from the point before it).
-        std::size_t finals = 0;
-        finished.clear();
-        for (std::size_t r = 0; r < n; ++r) {
-            const std::size_t o = std::size_t(running[r]);
-            const std::size_t sl = std::size_t(slot[r]);
-            X[o] = qx[sl];
-            Y[o] = qy[sl];
-            if (bad[sl]) {
-                ++stats.badValues;
-                if (++consecutive[o] < 5) {
-                    slot[r] = -1;
-                    continue;
-                }
-            }
-            consecutive[o] = 0;
-            const int fn = chosen[r];
-            last[o] = fn + 1;
-            if (step[o]++ < 0) {
-                slot[r] = -1;
-                continue;
-            }
-            if (step[o] == batch[o])
-                finished.push_back(int(r));
-            if (!xf.finalWave) {
-                draw(fn, X[o], Y[o], C[o]);
-                continue;
-            }
-            if (xf.finalOpacity == 1.0 || uniform01(rng) < xf.finalOpacity) {
-                finalOf[r] = int(finals);
-                fx[finals] = X[o];
-                fy[finals] = Y[o];
-                ++finals;
-            } else {
-                finalOf[r] = -1;
-            }
-        }
-        if (xf.finalWave) {
-            if (finals > 0)
-                xf.finalWave->apply(fx.data(), fy.data(), gx.data(), gy.data(), fbad.data(),
-                                    int(finals), random);
-            for (std::size_t r = 0; r < n; ++r) {
-                if (slot[r] < 0)
-                    continue;
-                const std::size_t o = std::size_t(running[r]);
-                const int f = finalOf[r];
-                if (f < 0)
-                    draw(chosen[r], X[o], Y[o], C[o]);
-                else
-                    draw(chosen[r], gx[std::size_t(f)], gy[std::size_t(f)],
-                         xf.finalSpeed * xf.finalColour + (1.0 - xf.finalSpeed) * C[o]);
-            }
-        }
-        // Finished batches: their orbits restart, or leave when they have drawn their share.
-        if (!finished.empty()) {
-            std::size_t kept = 0, f = 0;
-            for (std::size_t r = 0; r < n; ++r) {
-                const std::size_t o = std::size_t(running[r]);
-                if (f < finished.size() && std::size_t(finished[f]) == r) {
-                    ++f;
-                    stats.samples += std::uint64_t(batch[o]);
-                    const std::uint64_t d =
-                        done.fetch_add(std::uint64_t(batch[o])) + std::uint64_t(batch[o]);
-                    if (control.progress)
-                        control.progress(std::min(1.0, double(d) / total));
-                    if (!restart(o))
-                        continue;
-                }
-                running[kept++] = int(o);
-            }
-            running.resize(kept);
-        }
+        if (!full)
+            for (std::size_t k = 0; k < nx; ++k)
+                if (top[k] > 0)
+                    advance(k);
     }
     sink.flush();
     return stats;
@@ -420,7 +402,7 @@ FlameStats accumulateFlame(const FlameRaster &job, DensityImage &out,
     const FlameStats stats = playStreams(job, control, [&](int t) {
         DensityImage &image = t == 0 ? out : images[std::size_t(t - 1)];
         image.reset(job.frame.cellsX(), job.frame.cellsY(), job.accumulation);
-        return LabelSink{image, coordinates.data()};
+        return LabelSink{image, coordinates.data(), {}};
     });
     for (const DensityImage &image : images)
         out.merge(image);
@@ -433,12 +415,15 @@ FlameStats accumulateFlameColours(const FlameRaster &job, FlameHistogram &out,
                                   std::vector<FlameHistogram> *kept)
 {
     const Flame *flame = job.flame;
-    std::vector<ColourSink::Sums> dmap(256);
+    std::vector<double> dmap(4 * 256);
     if (flame)
-        for (std::size_t i = 0; i < 256; ++i)
-            dmap[i] = ColourSink::Sums{flame->palette[i].r * 255.0, flame->palette[i].g * 255.0,
-                                       flame->palette[i].b * 255.0, 255.0};
-    const bool linear = flame && flame->paletteMode == PaletteMode::Linear;
+        for (std::size_t i = 0; i < 256; ++i) {
+            dmap[4 * i] = flame->palette[i].r * 255.0;
+            dmap[4 * i + 1] = flame->palette[i].g * 255.0;
+            dmap[4 * i + 2] = flame->palette[i].b * 255.0;
+            dmap[4 * i + 3] = 255.0;
+        }
+    const HitPalette palette{dmap.data(), flame && flame->paletteMode == PaletteMode::Linear};
     const int threads = std::clamp(job.threads, 1, kChaosStreams);
     const std::size_t cells = std::size_t(job.frame.cellsX()) * std::size_t(job.frame.cellsY());
     std::vector<FlameHistogram> own;
@@ -449,7 +434,7 @@ FlameStats accumulateFlameColours(const FlameRaster &job, FlameHistogram &out,
     const FlameStats stats = playStreams(job, control, [&](int t) {
         FlameHistogram &h = t == 0 ? out : parts[std::size_t(t - 1)];
         h.cells.assign(cells, {0, 0, 0, 0});
-        return ColourSink{h, dmap.data(), linear};
+        return ColourSink{h, palette, XformWave::available(), std::vector<FlameHit>(2 * kHitRun)};
     });
     // The parts summed (whole numbers, held at 2^32 - 1), cell ranges on the threads.
     onThreads(threads, [&](int t) {

@@ -6,6 +6,7 @@
 
 #include "core/flame/Flame.h"
 #include "core/flame/FlameChaos.h"
+#include "core/flame/FlameHits.h"
 #include "core/flame/Variations.h"
 #include "core/flame/XformWave.h"
 #include "core/ifs/Random.h"
@@ -18,6 +19,7 @@
 #include <limits>
 #include <memory>
 #include <vector>
+#include <cstdlib>
 
 namespace awb::flame::detail {
 
@@ -126,90 +128,70 @@ inline std::uint32_t paletteIndex(double c)
     return i >= 255.0 ? 255u : (i > 0 ? std::uint32_t(i) : 0u);
 }
 
+// A sink takes the hits of one stack's orbits (FlameChaos.cpp's runWave) at once: `room(m)`
+// gives space for m hits, the game writes those it draws there (prefetching their cells), and
+// `take(n, opacity)` hands over the first n, all of one xform (whose opacity they carry).
+
 // Where the engine's histogram takes a hit: its palette index as the label; an xform's opacity
 // as the probability of drawing the hit (the same expected density in whole hits).
 struct LabelSink {
     DensityImage &image;
     const std::uint8_t *coordinates;
+    std::vector<FlameHit> hits;
 
     bool keep(double opacity, Xoshiro256 &rng) const
     {
         return opacity == 1.0 || (opacity > 0 && uniform01(rng) < opacity);
     }
-    void hit(std::size_t k, double c, double) { image.add(k, paletteIndex(c), coordinates); }
+    void prefetch(std::size_t) const {}
+    FlameHit *room(std::size_t m)
+    {
+        if (hits.size() < m)
+            hits.resize(m);
+        return hits.data();
+    }
+    void take(std::size_t n, double)
+    {
+        for (std::size_t h = 0; h < n; ++h)
+            image.add(hits[h].cell, paletteIndex(hits[h].colour), coordinates);
+    }
     void flush() {}
 };
 
-// Where flam3's buckets take a hit (rect.c, iter_thread): the palette's colour at the colour
-// coordinate, step or linear, weighted by the xform's opacity. A hit's 32-byte cell is
-// scattered over a histogram larger than the caches: the cell is prefetched when the hit
-// comes and added kPending hits later, so that the orbit's next steps hide the miss
-// (measured on a 1024^2 variation flame: the add's load was 35 % of the render; random
-// read-modify-writes of 16 MiB here: 8 ns each at once, 4.6 ns 16 later, 2.5 ns 64 later).
+// Where flam3's buckets take a hit (rect.c, iter_thread): gathered in runs of about kHitRun
+// (FlameHits.h), each cell prefetched when its hit comes and added when the run is full -- by
+// addHits, or on AVX2 registers where the wave's kernels run.
 struct ColourSink {
-    static constexpr std::size_t kPending = 64;  // a power of 2
-    // A hit's four sums (r, g, b, alpha), added at once.
-    using Sums = double __attribute__((vector_size(32)));
-    using Cell = std::uint32_t __attribute__((vector_size(16)));
     FlameHistogram &histogram;
-    const Sums *dmap;  // the palette times 255, alpha 255
-    bool linear;
-    struct Hit {
-        Sums delta;
-        std::size_t k;
-    };
-    std::array<Hit, kPending> pending{};
+    HitPalette palette;
+    bool vector;
+    std::vector<FlameHit> hits;
     std::size_t count = 0;
 
     bool keep(double opacity, Xoshiro256 &) const { return opacity != 0; }
-    void hit(std::size_t k, double c, double opacity)
+    void prefetch(std::size_t k) const { __builtin_prefetch(histogram.cells.data() + k, 1); }
+    FlameHit *room(std::size_t m)
     {
-        // flam3: (int)(c * 256), clamped; NaN cannot occur (finite colours, convex steps).
-        const double d = std::clamp(c * 256.0, -1.0, 257.0);
-        int i = int(d);
-        Sums delta;
-        if (linear) {
-            double frac;
-            if (i < 0) {
-                i = 0;
-                frac = 0;
-            } else if (i >= 255) {
-                i = 254;
-                frac = 1;
-            } else {
-                frac = d - i;
-            }
-            delta = opacity * (dmap[i] * (1.0 - frac) + dmap[i + 1] * frac);
-        } else {
-            delta = opacity * dmap[std::clamp(i, 0, 255)];
+        if (count + m > hits.size()) {
+            flush();
+            if (m > hits.size())
+                hits.resize(m);
         }
-        delta[3] = opacity * 255.0;  // the alpha sum is 255 a hit, not interpolated
-        __builtin_prefetch(&histogram.cells[k], 1);
-        Hit &slot = pending[count++ & (kPending - 1)];
-        if (count > kPending)
-            add(slot);
-        slot = {delta, k};
+        return hits.data() + count;
     }
-    // flam3's bump_no_overflow on each unsigned sum: dest = (unsigned)(dest + delta), held at
-    // UINT_MAX -- and at 0 (a negative opacity, which flam3 would convert undefined): the four
-    // sums clamped to [0, UINT_MAX] and truncated, without a branch.
-    void add(const Hit &h)
+    void take(std::size_t n, double)
     {
-        constexpr double top = double(std::numeric_limits<std::uint32_t>::max());
-        Cell cell;
-        __builtin_memcpy(&cell, histogram.cells[h.k].data(), sizeof cell);
-        Sums sum = __builtin_convertvector(cell, Sums) + h.delta;
-        sum = sum > top ? top : sum;
-        sum = sum > 0.0 ? sum : 0.0;
-        cell = __builtin_convertvector(sum, Cell);
-        __builtin_memcpy(histogram.cells[h.k].data(), &cell, sizeof cell);
+        count += n;
+        if (count >= kHitRun)
+            flush();
     }
-    // The hits still pending, in the order they came (a cell takes its sums in hit order).
+    // The hits gathered, in the order they came (a cell takes its sums in hit order).
     void flush()
     {
-        const std::size_t n = std::min(count, kPending);
-        for (std::size_t j = count - n; j < count; ++j)
-            add(pending[j & (kPending - 1)]);
+        if (vector)
+            addHitsAvx2(hits.data(), count, palette, histogram.cells.data());
+        else
+            addHits(hits.data(), count, palette, histogram.cells.data());
         count = 0;
     }
 };

@@ -1,0 +1,62 @@
+#pragma once
+// The hits of flam3's buckets (rect.c, iter_thread): each drawn point's cell, colour coordinate
+// and opacity, gathered while the orbits run and added to the histogram (FlameChaos.h's
+// FlameHistogram) a run at a time. A hit's cell is scattered over a histogram larger than the
+// caches: it is prefetched when the hit is gathered and added up to kHitRun hits later, so that
+// the orbits' next steps hide the miss. flam3's rule for one hit is written once in scalar code
+// (addHits) and once on AVX2 registers (addHitsAvx2, FlameHitsAvx2.cpp), which gives the very
+// same sums (tests/core/test_flame_wave.cpp). Internal to src/core/flame.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+namespace awb::flame::detail {
+
+struct FlameHit {
+    double colour;   // the colour coordinate, 0..1
+    double opacity;  // the xform's (flam3's logvis times its opacity)
+    std::size_t cell;
+};
+
+inline constexpr std::size_t kHitRun = 256;
+
+// The palette as flam3's dmap: entry i is (r, g, b, 255) x 255 at dmap[4 i .. 4 i + 3].
+struct HitPalette {
+    const double *dmap;  // 256 x 4
+    bool linear;         // flam3's palette_mode linear (else step)
+};
+
+// Adds the hits to the cells in order, as flam3's bump_no_overflow: a cell's four sums (r, g,
+// b: the palette at the colour, step or linear; alpha: 255), each times the opacity, added,
+// held at 2^32 - 1 (and 0), truncated to whole numbers after every hit.
+void addHits(const FlameHit *hits, std::size_t n, const HitPalette &palette,
+             std::array<std::uint32_t, 4> *cells);
+// The same on AVX2 registers; call only where XformWave::available().
+void addHitsAvx2(const FlameHit *hits, std::size_t n, const HitPalette &palette,
+                 std::array<std::uint32_t, 4> *cells);
+
+// flam3's colour index of a hit: (int)(c 256) clamped to the palette, and for the linear mode
+// the fraction towards the next entry (the last pair for c >= 255/256, the first below 0).
+// NaN cannot occur (finite colours, convex steps); out-of-range colours are clamped first so
+// that the conversion is defined. Internal to each file and always inlined: FlameHitsAvx2.cpp
+// is compiled for AVX2, and no AVX2 copy of a shared function may reach the rest of the program.
+struct PaletteIndex {
+    int i;
+    double frac;
+};
+[[gnu::always_inline]] static inline PaletteIndex paletteIndexOf(double colour, bool linear)
+{
+    double d = colour * 256.0;
+    d = d < -1.0 ? -1.0 : (d > 257.0 ? 257.0 : d);
+    const int i = int(d);
+    if (!linear)
+        return {i < 0 ? 0 : (i > 255 ? 255 : i), 0.0};
+    if (i < 0)
+        return {0, 0.0};
+    if (i >= 255)
+        return {254, 1.0};
+    return {i, d - i};
+}
+
+} // namespace awb::flame::detail

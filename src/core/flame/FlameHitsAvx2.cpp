@@ -1,0 +1,48 @@
+// addHitsAvx2 (FlameHits.h): flam3's bump_no_overflow on a hit's four sums in one register.
+// Compiled with -mavx2 -mfma as XformWaveAvx2.cpp (src/core/CMakeLists.txt says why), and run
+// only where the processor has AVX2.
+#include "core/flame/FlameHits.h"
+
+#if defined(__x86_64__) && defined(__AVX2__)
+
+#include <immintrin.h>
+
+namespace awb::flame::detail {
+
+void addHitsAvx2(const FlameHit *hits, std::size_t n, const HitPalette &palette,
+                 std::array<std::uint32_t, 4> *cells)
+{
+    // An unsigned sum u as a double: the signed conversion of u - 2^31, plus 2^31; back: the
+    // truncated double minus 2^31, converted signed, plus 2^31 (both exact on 0 .. 2^32 - 1).
+    const __m128i bias = _mm_set1_epi32(int(0x80000000u));
+    const __m256d half = _mm256_set1_pd(2147483648.0);
+    const __m256d top = _mm256_set1_pd(4294967295.0);
+    const __m256d zero = _mm256_setzero_pd();
+    for (std::size_t h = 0; h < n; ++h) {
+        const FlameHit &hit = hits[h];
+        const PaletteIndex at = paletteIndexOf(hit.colour, palette.linear);
+        const double *lo = palette.dmap + 4 * at.i;
+        __m256d delta = _mm256_loadu_pd(lo);
+        if (palette.linear) {
+            const __m256d hi = _mm256_loadu_pd(lo + 4);
+            // lo (1 - frac) + hi frac, as the scalar rule (no fused multiply-add: the same
+            // roundings); the alpha sum keeps 255.
+            const __m256d mixed = _mm256_add_pd(_mm256_mul_pd(delta, _mm256_set1_pd(1.0 - at.frac)),
+                                                _mm256_mul_pd(hi, _mm256_set1_pd(at.frac)));
+            delta = _mm256_blend_pd(mixed, delta, 0x8);
+        }
+        delta = _mm256_mul_pd(_mm256_set1_pd(hit.opacity), delta);
+        auto *cell = reinterpret_cast<std::uint32_t *>(cells + hit.cell);  // no inline call
+        const __m128i u = _mm_loadu_si128(reinterpret_cast<const __m128i *>(cell));
+        __m256d sum = _mm256_add_pd(_mm256_cvtepi32_pd(_mm_xor_si128(u, bias)), half);
+        sum = _mm256_add_pd(sum, delta);
+        sum = _mm256_max_pd(_mm256_min_pd(sum, top), zero);
+        sum = _mm256_round_pd(sum, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
+        const __m128i back = _mm_xor_si128(_mm256_cvttpd_epi32(_mm256_sub_pd(sum, half)), bias);
+        _mm_storeu_si128(reinterpret_cast<__m128i *>(cell), back);
+    }
+}
+
+} // namespace awb::flame::detail
+
+#endif
