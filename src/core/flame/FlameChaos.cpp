@@ -74,6 +74,26 @@ struct OrbitCounters {
 };
 static_assert(kBatch <= 0xffff && kFuse <= 0xff && kMaxXforms < 0xffff);
 
+// The xforms' stacks of orbits (runWave): xform k's orbits at k cap .. k cap + top[k], their
+// points, colours and counters side by side, with room for every orbit and a register's
+// padding (the waves read and write whole registers). Raw pointers, copied into the game's
+// loop: the compiler keeps them in registers there.
+struct Stacks {
+    double *x, *y, *c;
+    OrbitCounters *n;
+    std::uint32_t *top;
+    std::size_t cap;
+
+    void push(std::size_t to, double px, double py, double pc, OrbitCounters pn) const
+    {
+        const std::size_t at = to * cap + top[to]++;
+        x[at] = px;
+        y[at] = py;
+        c[at] = pc;
+        n[at] = pn;
+    }
+};
+
 // One stream's samples into `sink`, as flam3's game (flam3_iterate) on each of its orbits:
 // batches of kBatch samples from a random restart after kFuse steps, the xform by weight or
 // xaos row, the colour moved first, a bad value retried from flam3's replacement up to four
@@ -97,12 +117,11 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
     const std::size_t orbits = waveOrbits(samples, nx);
     constexpr std::size_t W = XformWave::kWidth;
 
-    // The stacks, xform k's at k cap: points, colours, counters; room for every orbit and a
-    // register's padding (the waves read and write whole registers).
     const std::size_t cap = orbits + W;
     std::vector<double> sx(nx * cap), sy(nx * cap), sc(nx * cap);
     std::vector<OrbitCounters> sn(nx * cap);
     std::vector<std::uint32_t> top(nx, 0);
+    const Stacks stacks{sx.data(), sy.data(), sc.data(), sn.data(), top.data(), cap};
     // One stack's points after its xform, and after the final xform.
     std::vector<double> qx(cap), qy(cap), gx(cap), gy(cap);
     std::vector<std::uint8_t> bad(cap), finalBad(cap);
@@ -112,16 +131,8 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
     const AliasTable *rows = choice.rows.data();
     const bool xaos = choice.xaos;
 
-    // Onto the stack of the xform it chooses next (by xaos row `last`).
-    auto push = [&](Xoshiro256 &rng, int last, double x, double y, double c, OrbitCounters n) {
-        const std::size_t to = std::size_t(rows[xaos ? last : 0].pick(rng.next()));
-        const std::size_t at = to * cap + top[to]++;
-        sx[at] = x;
-        sy[at] = y;
-        sc[at] = c;
-        sn[at] = n;
-    };
-    // Starts share s's next batch; false when it has drawn its samples.
+    // Starts share s's next batch onto its first xform's stack; false when it has drawn its
+    // samples.
     auto restart = [&](Xoshiro256 &rng, std::size_t s) {
         if (left[s] == 0)
             return false;
@@ -129,8 +140,9 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
         left[s] -= std::uint64_t(batch[s]);
         const double x = 2.0 * uniform01(rng) - 1.0, y = 2.0 * uniform01(rng) - 1.0;
         const double c = uniform01(rng);
-        push(rng, 0, x, y, c,
-             OrbitCounters{std::uint16_t(batch[s]), std::uint8_t(kFuse), 0, 0, std::uint16_t(s)});
+        stacks.push(std::size_t(rows[0].pick(rng.next())), x, y, c,
+                    OrbitCounters{std::uint16_t(batch[s]), std::uint8_t(kFuse), 0, 0,
+                                  std::uint16_t(s)});
         return true;
     };
     std::size_t alive = 0;
@@ -138,6 +150,15 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
         left[s] = samples / orbits + (s < samples % orbits ? 1 : 0);
         alive += restart(random.scalar, s) ? 1 : 0;
     }
+    // A batch drawn: counted, and the share's next started, if any.
+    auto finished = [&](Xoshiro256 &rng, std::size_t s) {
+        stats.samples += std::uint64_t(batch[s]);
+        const std::uint64_t d = done.fetch_add(std::uint64_t(batch[s])) + std::uint64_t(batch[s]);
+        if (control.progress)
+            control.progress(std::min(1.0, double(d) / total));
+        if (!restart(rng, s))
+            --alive;
+    };
     const XformWave *finalWave = xf.finalWave.get();
     const double finalTowards = xf.finalSpeed * xf.finalColour, finalKeep = 1.0 - xf.finalSpeed;
     const double finalOpacity = xf.finalOpacity;
@@ -145,30 +166,39 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
     // Xform k on its stack's orbits, each then drawn and pushed onto its next xform's stack
     // (this one's too: an orbit is read before any push can reach its place).
     auto advance = [&](std::size_t k) {
-        const std::size_t m = top[k];
-        top[k] = 0;
-        const std::size_t base = k * cap;
-        xf.waves[k].apply(&sx[base], &sy[base], qx.data(), qy.data(), bad.data(), int(m), random);
+        const Stacks st = stacks;
+        const std::size_t m = st.top[k];
+        st.top[k] = 0;
+        const std::size_t base = k * st.cap;
+        const double *px = qx.data(), *py = qy.data(), *fx = gx.data(), *fy = gy.data();
+        const std::uint8_t *isBad = bad.data();
+        xf.waves[k].apply(st.x + base, st.y + base, qx.data(), qy.data(), bad.data(), int(m),
+                          random);
         if (finalWave)
-            finalWave->apply(qx.data(), qy.data(), gx.data(), gy.data(), finalBad.data(), int(m),
-                             random);
-        // Held in registers for the loop (the stores below could be the generator's words).
+            finalWave->apply(px, py, gx.data(), gy.data(), finalBad.data(), int(m), random);
+        // In registers for the loop (the stores below could otherwise be any of these).
         Xoshiro256 rng = random.scalar;
         const Plot camera = plot;
+        const AliasTable *next = rows;
+        const bool byRow = xaos;
+        const double *colours = st.c + base;
+        const OrbitCounters *counters = st.n + base;
         FlameHit *hits = sink.room(m);
         std::size_t drawn = 0;
+        std::uint64_t badValues = 0, offscreen = 0;
         // The colour's move by xform k (first, as in flam3's apply_xform).
         const double towards = xf.speed[k] * xf.colour[k], keep = 1.0 - xf.speed[k];
         const double opacity = xf.opacity[k];
         const int last = int(k) + 1;
         for (std::size_t j = 0; j < m; ++j) {
-            OrbitCounters n = sn[base + j];
-            const double colour = towards + keep * sc[base + j];
-            const double x = qx[j], y = qy[j];
-            if (bad[j]) {  // retried from the replacement, the xaos row unchanged
-                ++stats.badValues;
+            OrbitCounters n = counters[j];
+            const double colour = towards + keep * colours[j];
+            const double x = px[j], y = py[j];
+            if (isBad[j]) {  // retried from the replacement, the xaos row unchanged
+                ++badValues;
                 if (++n.bad < 5) {
-                    push(rng, n.last, x, y, colour, n);
+                    st.push(std::size_t(next[byRow ? n.last : 0].pick(rng.next())), x, y, colour,
+                            n);
                     continue;
                 }
             }
@@ -176,39 +206,32 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
             n.last = std::uint16_t(last);
             if (n.fuse > 0) {
                 --n.fuse;
-                push(rng, last, x, y, colour, n);
-                continue;
-            }
-            if (sink.keep(opacity, rng)) {
-                double px = x, py = y, pc = colour;
-                if (finalWave && (finalOpacity == 1.0 || uniform01(rng) < finalOpacity)) {
-                    px = gx[j];
-                    py = gy[j];
-                    pc = finalTowards + finalKeep * colour;
+            } else {
+                if (sink.keep(opacity, rng)) {
+                    double hx = x, hy = y, hc = colour;
+                    if (finalWave && (finalOpacity == 1.0 || uniform01(rng) < finalOpacity)) {
+                        hx = fx[j];
+                        hy = fy[j];
+                        hc = finalTowards + finalKeep * colour;
+                    }
+                    const std::ptrdiff_t cell = camera.cell(hx, hy);
+                    if (cell < 0) {
+                        ++offscreen;
+                    } else {
+                        sink.prefetch(std::size_t(cell));
+                        hits[drawn++] = FlameHit{hc, opacity, std::size_t(cell)};
+                    }
                 }
-                const std::ptrdiff_t cell = camera.cell(px, py);
-                if (cell < 0) {
-                    ++stats.offscreen;
-                } else {
-                    sink.prefetch(std::size_t(cell));
-                    hits[drawn++] = FlameHit{pc, opacity, std::size_t(cell)};
+                if (--n.togo == 0) {
+                    finished(rng, n.share);
+                    continue;
                 }
             }
-            if (--n.togo > 0) {
-                push(rng, last, x, y, colour, n);
-                continue;
-            }
-            // The batch is drawn: the share's next, if any.
-            const std::size_t s = n.share;
-            stats.samples += std::uint64_t(batch[s]);
-            const std::uint64_t d =
-                done.fetch_add(std::uint64_t(batch[s])) + std::uint64_t(batch[s]);
-            if (control.progress)
-                control.progress(std::min(1.0, double(d) / total));
-            if (!restart(rng, s))
-                --alive;
+            st.push(std::size_t(next[byRow ? last : 0].pick(rng.next())), x, y, colour, n);
         }
         random.scalar = rng;
+        stats.badValues += badValues;
+        stats.offscreen += offscreen;
         sink.take(drawn, opacity);
     };
 
