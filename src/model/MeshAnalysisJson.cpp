@@ -60,6 +60,7 @@ QJsonObject kindJson(const ExtraordinaryVertex &e, MeshScheme scheme)
                           {"lambda2", v.lambda2},
                           {"mu", v.mu},
                           {"spectral", v.spectral},
+                          {"crease_in_plane", v.creaseInPlane},
                           {"regular", v.regular},
                           {"injective", v.injective},
                           {"c1", v.decided ? QJsonValue(v.c1()) : QJsonValue(QJsonValue::Null)},

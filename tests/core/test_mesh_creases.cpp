@@ -552,6 +552,11 @@ void TestMeshCreases::jordanBlocksAreDecided()
         QVERIFY2(s.decided && s.c1() == c.c1, qPrintable(what));
         QVERIFY2(s.chain.empty() != c.chain, qPrintable(what));
         QVERIFY2(QString::fromStdString(s.reason).contains(c.reason), qPrintable(what));
+        // A crease out of the plane is its own verdict: the spectrum itself passes there.
+        const bool outOfPlane = QString(c.reason).contains("leaves their tangent plane");
+        QVERIFY2(s.creaseInPlane != outOfPlane, qPrintable(what));
+        if (outOfPlane)
+            QVERIFY2(s.spectral, qPrintable(what));
     }
 }
 

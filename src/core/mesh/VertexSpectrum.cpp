@@ -734,7 +734,7 @@ SharpVertexSpectrum sharpVertexSpectrum(MeshScheme scheme, const SharpNeighbourh
         }
         if (v.spectral)
             if (const auto spoke = leavesThePlane(sectorS, clusters, pair, creases)) {
-                v.spectral = false;
+                v.creaseInPlane = false;
                 v.reason = formatMessage(
                     coreTranslate("awb::mesh",
                                   "the eigenvectors of lambda1 and lambda2 vanish on the crease "
@@ -742,7 +742,7 @@ SharpVertexSpectrum sharpVertexSpectrum(MeshScheme scheme, const SharpNeighbourh
                                   "their tangent plane: not C1 for generic data"),
                     *spoke);
             }
-        if (v.spectral) {
+        if (v.spectral && v.creaseInPlane) {
             Mat Q = Mat::Zero(m, 2);
             for (Eigen::Index i = 0; i < r; ++i)
                 Q.row(sectorRows[std::size_t(i)]) = pair.plane.row(i);

@@ -117,14 +117,19 @@ struct SectorVerdict {
     int faces = 0;
     double lambda1 = 0.0, lambda2 = 0.0, mu = 0.0;
     bool spectral = false, regular = false, injective = false;
+    // False where both eigenvectors vanish on a crease that bounds the sector and the crease's
+    // own tangent (a smaller eigenvalue) leaves their plane (VertexSpectrum.cpp,
+    // leavesThePlane): the spectrum may pass, the surface is not C1 there. The map is then not
+    // checked (it sends the whole crease to the vertex).
+    bool creaseInPlane = true;
     // False where the criterion does not apply: a longer chain at lambda1 = lambda2, or a chain
     // beside a second eigenvector of the same value.
     bool decided = true;
-    bool c1() const { return decided && spectral && regular && injective; }
+    bool c1() const { return decided && spectral && creaseInPlane && regular && injective; }
     std::string reason;     // why not C1, or ""
     std::string chain;      // how a Jordan block among the two largest was read, or ""
     std::string curvature;  // "zero", "bounded", "unbounded"
-    CharacteristicMap map;  // when spectral
+    CharacteristicMap map;  // when spectral and creaseInPlane
 };
 
 struct SharpVertexSpectrum {

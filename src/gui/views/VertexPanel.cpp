@@ -317,7 +317,7 @@ void VertexPanel::setVertex(const ExtraordinaryVertex &vertex, MeshScheme scheme
     const SectorVerdict *sector = nullptr;  // the first sector whose map is drawn, a failed one first
     if (vertex.sharp)
         for (const SectorVerdict &v : vertex.sharp->sectors)
-            if (v.spectral && (!sector || (sector->c1() && !v.c1())))
+            if (v.spectral && v.creaseInPlane && (!sector || (sector->c1() && !v.c1())))
                 sector = &v;
     if (interior && interior->spectralC1)
         m_map->setMap(interior->characteristic, vertex.valence);
