@@ -135,8 +135,10 @@ inline Mesh star(int n, int k, bool triangles, std::mt19937 &random)
         const double a0 = 2 * M_PI * ks / n, a1 = 2 * M_PI * (ks + 1) / n;
         const Eigen::RowVector2d u(std::cos(a0), std::sin(a0)), w(std::cos(a1), std::sin(a1));
         const Eigen::RowVector2d xy = ki * u + kj * w;
-        points.emplace_back(xy.x() + jitter(random), xy.y() + jitter(random),
-                            0.3 * std::sin(xy.x()) + jitter(random));
+        // Drawn in sequence (z, y, x: the order GCC evaluated the arguments in before), so that
+        // every compiler builds the same stars.
+        const double dz = jitter(random), dy = jitter(random), dx = jitter(random);
+        points.emplace_back(xy.x() + dx, xy.y() + dy, 0.3 * std::sin(xy.x()) + dz);
         ids.emplace(key, int(points.size()) - 1);
         return int(points.size()) - 1;
     };
