@@ -6401,6 +6401,18 @@ Ne ji importuje tak, jak je.</translation>
         <source>&lt;p&gt;&lt;b&gt;%1 is not contractive, but the IFS contracts on average&lt;/b&gt;: its Lyapunov exponent is %2 &amp;lt; 0 (Barnsley–Elton), so random iteration converges to its attractor, as in flame renderers; deterministic iteration does not.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1 není kontraktivní, ale IFS je kontraktivní v průměru&lt;/b&gt;: jeho Ljapunovův exponent je %2 &amp;lt; 0 (Barnsley–Elton), takže náhodná iterace konverguje k jeho atraktoru jako v programech pro fraktální plameny; deterministická iterace nekonverguje.&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>The spectra below are those of the xforms&apos; affine (pre) maps; the variations bend the maps, so the spectra alone say nothing of the flame&apos;s attractor.</source>
+        <translation>Spektra níže patří afinním (pre) částem xformů; variace zobrazení ohýbají, takže samotná spektra o atraktoru plamene nic neříkají.</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;The flame contracts on average&lt;/b&gt;: the top Lyapunov exponent of its chaos game along its own orbit is %1 &amp;lt; 0, so the game converges to its attractor. %2&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Plamen se v průměru zmenšuje&lt;/b&gt;: největší Ljapunovův exponent jeho hry chaosu podél jeho vlastní orbity je %1 &amp;lt; 0, takže hra konverguje k jeho atraktoru. %2&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p style=&apos;color:#b01e1e&apos;&gt;&lt;b&gt;The flame does not contract on average&lt;/b&gt;: the top Lyapunov exponent of its chaos game along its own orbit is %1 &amp;ge; 0, so its picture is not an attractor&apos;s. %2&lt;/p&gt;</source>
+        <translation>&lt;p style=&apos;color:#b01e1e&apos;&gt;&lt;b&gt;Plamen se v průměru nezmenšuje&lt;/b&gt;: největší Ljapunovův exponent jeho hry chaosu podél jeho vlastní orbity je %1 &amp;ge; 0, takže jeho obraz není obrazem atraktoru. %2&lt;/p&gt;</translation>
+    </message>
 </context>
 <context>
     <name>awb::StartSetSpec</name>

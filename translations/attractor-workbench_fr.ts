@@ -6390,6 +6390,18 @@ Non l’importe tel quel.</translation>
         <source>&lt;p&gt;&lt;b&gt;%1 is not contractive, but the IFS contracts on average&lt;/b&gt;: its Lyapunov exponent is %2 &amp;lt; 0 (Barnsley–Elton), so random iteration converges to its attractor, as in flame renderers; deterministic iteration does not.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1 n’est pas contractante, mais l’IFS est contractant en moyenne&lt;/b&gt;&#xa0;: son exposant de Lyapunov vaut %2 &amp;lt; 0 (Barnsley–Elton), donc l’itération aléatoire converge vers son attracteur, comme dans les logiciels de flammes fractales&#xa0;; l’itération déterministe ne converge pas.&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>The spectra below are those of the xforms&apos; affine (pre) maps; the variations bend the maps, so the spectra alone say nothing of the flame&apos;s attractor.</source>
+        <translation>Les spectres ci-dessous sont ceux des parties affines (pré) des xforms ; les variations courbent les applications, de sorte que les spectres seuls ne disent rien de l&apos;attracteur de la flamme.</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;The flame contracts on average&lt;/b&gt;: the top Lyapunov exponent of its chaos game along its own orbit is %1 &amp;lt; 0, so the game converges to its attractor. %2&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;La flamme contracte en moyenne&lt;/b&gt; : le plus grand exposant de Lyapunov de son jeu du chaos le long de sa propre orbite vaut %1 &amp;lt; 0, donc le jeu converge vers son attracteur. %2&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p style=&apos;color:#b01e1e&apos;&gt;&lt;b&gt;The flame does not contract on average&lt;/b&gt;: the top Lyapunov exponent of its chaos game along its own orbit is %1 &amp;ge; 0, so its picture is not an attractor&apos;s. %2&lt;/p&gt;</source>
+        <translation>&lt;p style=&apos;color:#b01e1e&apos;&gt;&lt;b&gt;La flamme ne contracte pas en moyenne&lt;/b&gt; : le plus grand exposant de Lyapunov de son jeu du chaos le long de sa propre orbite vaut %1 &amp;ge; 0, donc son image n&apos;est pas celle d&apos;un attracteur. %2&lt;/p&gt;</translation>
+    </message>
 </context>
 <context>
     <name>awb::StartSetSpec</name>

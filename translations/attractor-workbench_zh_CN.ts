@@ -6379,6 +6379,18 @@ No imports it as it is.</source>
         <source>&lt;p&gt;&lt;b&gt;%1 is not contractive, but the IFS contracts on average&lt;/b&gt;: its Lyapunov exponent is %2 &amp;lt; 0 (Barnsley–Elton), so random iteration converges to its attractor, as in flame renderers; deterministic iteration does not.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1 不是压缩的，但该 IFS 平均压缩&lt;/b&gt;：其李雅普诺夫指数为 %2 &amp;lt; 0（Barnsley–Elton），因此随机迭代收敛到其吸引子，正如火焰分形渲染器那样；确定性迭代则不收敛。&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>The spectra below are those of the xforms&apos; affine (pre) maps; the variations bend the maps, so the spectra alone say nothing of the flame&apos;s attractor.</source>
+        <translation>下面的谱是各 xform 仿射（前置）映射的谱；变体使映射弯曲，因此仅凭这些谱无法说明火焰的吸引子。</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;The flame contracts on average&lt;/b&gt;: the top Lyapunov exponent of its chaos game along its own orbit is %1 &amp;lt; 0, so the game converges to its attractor. %2&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;火焰平均意义下收缩&lt;/b&gt;：其混沌游戏沿自身轨道的最大 Lyapunov 指数为 %1 &amp;lt; 0，因此游戏收敛到其吸引子。%2&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p style=&apos;color:#b01e1e&apos;&gt;&lt;b&gt;The flame does not contract on average&lt;/b&gt;: the top Lyapunov exponent of its chaos game along its own orbit is %1 &amp;ge; 0, so its picture is not an attractor&apos;s. %2&lt;/p&gt;</source>
+        <translation>&lt;p style=&apos;color:#b01e1e&apos;&gt;&lt;b&gt;火焰平均意义下不收缩&lt;/b&gt;：其混沌游戏沿自身轨道的最大 Lyapunov 指数为 %1 &amp;ge; 0，因此其图像不是吸引子的图像。%2&lt;/p&gt;</translation>
+    </message>
 </context>
 <context>
     <name>awb::StartSetSpec</name>

@@ -168,6 +168,14 @@ void TestExchangeWindow::flamesInAndOut()
     const QByteArray flameText = h.readAll();
     QVERIFY2(flameText.contains("julia=") && flameText.contains("name=\"halves\""),
              flameText.constData());
+    // Its Spectrum panel speaks of the xforms' affine parts and of the game's own orbit, not
+    // of an IFS of those parts.
+    w.controller()->refreshNow();
+    const QString flameVerdict = w.spectrumView()->verdictText();
+    QVERIFY2(flameVerdict.contains("Lyapunov exponent of its chaos game")
+                 && flameVerdict.contains("affine (pre) maps")
+                 && !flameVerdict.contains("unique attractor"),
+             qPrintable(flameVerdict));
 
     // A flame with flam3's symmetry: a reflection (spectral radius 1) among its maps. The
     // Spectrum panel says that the IFS contracts on average instead of refusing it.

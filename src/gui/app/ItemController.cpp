@@ -376,6 +376,7 @@ void ItemController::showSpectrum()
         }
     }
     m_spectrum->setLyapunovExponent(lyapunov);
+    m_spectrum->setAffineParts(d && d->chaos && focusedSpectra().isEmpty());
     m_spectrum->setMaps(spectra);
 }
 

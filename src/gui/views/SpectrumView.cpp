@@ -516,18 +516,37 @@ void SpectrumView::updateVerdicts()
             allContractive = false;
         }
     const bool onAverage = !allContractive && m_lyapunov && *m_lyapunov < -1e-3;
-    html += allContractive
-                ? tr("<p><b>All maps are (eventually) contractive</b>: the IFS has a unique "
-                     "attractor.</p>")
-            : onAverage
-                ? tr("<p><b>%1 is not contractive, but the IFS contracts on average</b>: its "
-                     "Lyapunov exponent is %2 &lt; 0 (Barnsley–Elton), so random iteration "
-                     "converges to its attractor, as in flame renderers; deterministic "
-                     "iteration does not.</p>")
-                      .arg(firstBad, formatNumber(*m_lyapunov, 4))
-                : tr("<p style='color:#b01e1e'><b>%1 is not contractive</b>: the IFS has no "
-                     "attractor and its iteration does not converge.</p>")
-                      .arg(firstBad);
+    if (m_affineParts) {
+        // A flame: the variations bend the maps, so only the game's own orbit tells.
+        const QString parts = tr("The spectra below are those of the xforms' affine (pre) maps; "
+                                 "the variations bend the maps, so the spectra alone say "
+                                 "nothing of the flame's attractor.");
+        if (m_lyapunov && *m_lyapunov < -1e-3)
+            html += tr("<p><b>The flame contracts on average</b>: the top Lyapunov exponent of "
+                       "its chaos game along its own orbit is %1 &lt; 0, so the game converges "
+                       "to its attractor. %2</p>")
+                        .arg(formatNumber(*m_lyapunov, 4), parts);
+        else if (m_lyapunov)
+            html += tr("<p style='color:#b01e1e'><b>The flame does not contract on "
+                       "average</b>: the top Lyapunov exponent of its chaos game along its own "
+                       "orbit is %1 &ge; 0, so its picture is not an attractor's. %2</p>")
+                        .arg(formatNumber(*m_lyapunov, 4), parts);
+        else
+            html += QStringLiteral("<p>%1</p>").arg(parts);
+    } else {
+        html += allContractive
+                    ? tr("<p><b>All maps are (eventually) contractive</b>: the IFS has a unique "
+                         "attractor.</p>")
+                : onAverage
+                    ? tr("<p><b>%1 is not contractive, but the IFS contracts on average</b>: its "
+                         "Lyapunov exponent is %2 &lt; 0 (Barnsley–Elton), so random iteration "
+                         "converges to its attractor, as in flame renderers; deterministic "
+                         "iteration does not.</p>")
+                          .arg(firstBad, formatNumber(*m_lyapunov, 4))
+                    : tr("<p style='color:#b01e1e'><b>%1 is not contractive</b>: the IFS has no "
+                         "attractor and its iteration does not converge.</p>")
+                          .arg(firstBad);
+    }
     for (int i = 0; i < m_maps.size(); ++i) {
         const MapSpectrum &m = m_maps[i];
         const Contractivity &c = m.contractivity;

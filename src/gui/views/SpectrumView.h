@@ -47,6 +47,10 @@ public:
     // as flame renderers do). nullopt: not known (every map contractive, an automaton, a
     // vertex's matrix). Takes effect at the next setMaps().
     void setLyapunovExponent(std::optional<double> exponent) { m_lyapunov = exponent; }
+    // Whether the maps shown are the affine parts of maps that are not affine (a flame's
+    // xforms, bent by their variations): the verdict then rests on the Lyapunov exponent and
+    // says what the spectra cannot tell. Takes effect at the next setMaps().
+    void setAffineParts(bool affineParts) { m_affineParts = affineParts; }
     const QList<MapSpectrum> &maps() const { return m_maps; }
 
     // Eigenvalue points plotted (one per distinct eigenvalue of each map; multiplicity is
@@ -108,6 +112,7 @@ private:
     bool m_fitPending = true;
     int m_highlighted = -1;
     std::optional<double> m_lyapunov;
+    bool m_affineParts = false;
     QPointF m_pressPosition;
     bool m_inKeepAspect = false;
 };
