@@ -3667,6 +3667,13 @@
     </message>
 </context>
 <context>
+    <name>awb::ItemAnalysis</name>
+    <message>
+        <source>not measured: the flame&apos;s maps are not their affine parts, whose attractor the analysis would count</source>
+        <translation>neměřeno: zobrazení plamene nejsou jejich afinní části, jejichž atraktor by analýza počítala</translation>
+    </message>
+</context>
+<context>
     <name>awb::ItemController</name>
     <message>
         <source>%1 shows nothing: %2</source>

@@ -3664,6 +3664,13 @@
     </message>
 </context>
 <context>
+    <name>awb::ItemAnalysis</name>
+    <message>
+        <source>not measured: the flame&apos;s maps are not their affine parts, whose attractor the analysis would count</source>
+        <translation>non mesurée : les applications de la flamme ne sont pas leurs parties affines, dont l&apos;analyse compterait l&apos;attracteur</translation>
+    </message>
+</context>
+<context>
     <name>awb::ItemController</name>
     <message>
         <source>%1 shows nothing: %2</source>

@@ -3661,6 +3661,13 @@
     </message>
 </context>
 <context>
+    <name>awb::ItemAnalysis</name>
+    <message>
+        <source>not measured: the flame&apos;s maps are not their affine parts, whose attractor the analysis would count</source>
+        <translation>未测量：火焰的映射并不是其仿射部分，而分析所计数的是这些仿射部分的吸引子</translation>
+    </message>
+</context>
+<context>
     <name>awb::ItemController</name>
     <message>
         <source>%1 shows nothing: %2</source>

@@ -23,6 +23,7 @@
 #include "model/SubdivisionMeshItem.h"
 #include "model/SubdivisionSurfaceItem.h"
 
+#include <QCoreApplication>
 #include <QJsonArray>
 
 namespace awb {
@@ -326,8 +327,10 @@ ItemAnalysis analyseItem(const AttractorItem *item, Regularity *regularity)
     }
     // Box-counting dimension of the attractor at a depth giving about 2^18 points.
     o["box_dimension"] = QJsonValue::Null;
+    if (d->chaos)  // a flame: the IFS here is of its affine parts, not of its maps
+        o["box_dimension_note"] = flameBoxDimensionNote();
     try {
-        if (d->ifs.size() > 1 && !d->iterate && !d->ifs.views.empty()) {
+        if (d->ifs.size() > 1 && !d->iterate && !d->chaos && !d->ifs.views.empty()) {
             const StartSet start = item->coreStartSet(*d);
             int depth = 1;
             while (imageCount(d->ifs, depth + 1) * start.vertices.rows() <= 300000)
@@ -356,5 +359,13 @@ ItemAnalysis analyseItem(const AttractorItem *item, Regularity *regularity)
     return analysis;
 }
 
+
+QString flameBoxDimensionNote()
+{
+    return QCoreApplication::translate(
+        "awb::ItemAnalysis",
+        "not measured: the flame's maps are not their affine parts, whose attractor the "
+        "analysis would count");
+}
 
 } // namespace awb

@@ -37,6 +37,11 @@ struct ItemAnalysis {
 // `regularity`, when given, receives the curve's regularity (its certificate for
 // `analyse --certificate`); left as is for other items.
 ItemAnalysis analyseItem(const AttractorItem *item, Regularity *regularity = nullptr);
+
+// Why an item drawn by its own chaos game (a flame) has no box-counting dimension here: its
+// maps are not the affine parts whose IFS the analysis holds (the window's Analysis tab says
+// the same).
+QString flameBoxDimensionNote();
 inline QJsonObject analyseItemJson(const AttractorItem *item, Regularity *regularity = nullptr)
 {
     return analyseItem(item, regularity).whole();

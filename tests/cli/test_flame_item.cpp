@@ -177,6 +177,10 @@ void TestFlameItem::whatAFlameIsNot()
     QCOMPARE(item["type"].toString(), QString("flame"));
     QCOMPARE(item["maps"].toArray().size(), 4);
     QVERIFY(!item["maps"][0]["eigenvalues"].toArray().isEmpty());
+    // No box-counting dimension of those affine parts' attractor, which is not the flame's.
+    QVERIFY(item["box_dimension"].isNull());
+    QVERIFY2(item["box_dimension_note"].toString().contains("not their affine parts"),
+             qPrintable(item["box_dimension_note"].toString()));
     // Not points of iterated maps, not a Fractint entry, not a deterministic depth.
     QCOMPARE(run({"points", project, "--item", name, "--csv"}, &out, &err), 1);
     QVERIFY2(err.contains("fractal flame"), err.constData());

@@ -2,6 +2,7 @@
 // lengths, box-counting dimension), computed on a worker thread that a newer edit cancels.
 
 #include "gui/app/ItemController.h"
+#include "model/ItemAnalysisJson.h"
 
 #include "gui/views/BackgroundPriority.h"
 
@@ -170,7 +171,11 @@ void ItemController::startAnalysis()
     // measured against goes to the chart's tooltip.
     m_charts->setDistanceReference(certified ? tr("Fᵏ(X₀) to the %1").arg(certified->label)
                                              : QString());
-    m_worker = std::thread([this, d, start, scheme, P, exact, curve, maxDepth, ticket] {
+    // A flame's maps are not the affine parts whose IFS `d` holds: nothing of theirs measured.
+    const bool flame = bool(d->chaos);
+    const std::string flameNote = flameBoxDimensionNote().toStdString();
+    m_worker = std::thread([this, d, start, scheme, P, exact, curve, maxDepth, ticket, flame,
+                            flameNote] {
         lowerThisThreadPriority(); // the pictures' workers first
         auto result = std::make_shared<AnalysisResult>();
         try {
@@ -186,7 +191,7 @@ void ItemController::startAnalysis()
             }
             AnalysisCharts::DistanceSeries series;
             Mat deepest;
-            for (int k = 0; k <= maxDepth && !m_cancel && !d->iterate; ++k) {
+            for (int k = 0; k <= maxDepth && !m_cancel && !d->iterate && !flame; ++k) {
                 if (imageCount(d->ifs, k) * double(std::max<Eigen::Index>(1, start.vertices.rows()))
                     > analysisImages)
                     break;
@@ -211,7 +216,9 @@ void ItemController::startAnalysis()
                     rate = std::max(rate, spectrum(A).spectralRadius);
                 result->rate = rate < 1.0 ? rate : 0.0;
             }
-            if (deepest.rows() >= 16 && !m_cancel)
+            if (flame)
+                result->box.note = flameNote;
+            else if (deepest.rows() >= 16 && !m_cancel)
                 result->box = boxCountingDimension(deepest);
         } catch (const std::exception &e) {
             result->box.note = e.what();
