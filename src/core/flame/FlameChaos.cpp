@@ -234,7 +234,7 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
         random.scalar = rng;
         stats.badValues += badValues;
         stats.offscreen += offscreen;
-        sink.take(drawn, opacity);
+        sink.take(drawn);
     };
 
     while (alive > 0) {

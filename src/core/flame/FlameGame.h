@@ -19,7 +19,6 @@
 #include <limits>
 #include <memory>
 #include <vector>
-#include <cstdlib>
 
 namespace awb::flame::detail {
 
@@ -121,19 +120,13 @@ struct Xforms {
     }
 };
 
-inline std::uint32_t paletteIndex(double c)
-{
-    // flam3: (int)(c * 256), the last entry for c = 1.
-    const double i = c * 256.0;
-    return i >= 255.0 ? 255u : (i > 0 ? std::uint32_t(i) : 0u);
-}
-
 // A sink takes the hits of one stack's orbits (FlameChaos.cpp's runWave) at once: `room(m)`
 // gives space for m hits, the game writes those it draws there (prefetching their cells), and
-// `take(n, opacity)` hands over the first n, all of one xform (whose opacity they carry).
+// `take(n)` hands over the first n.
 
-// Where the engine's histogram takes a hit: its palette index as the label; an xform's opacity
-// as the probability of drawing the hit (the same expected density in whole hits).
+// Where the engine's histogram takes a hit: its palette index (flam3's step index) as the label;
+// an xform's opacity as the probability of drawing the hit (the same expected density in whole
+// hits).
 struct LabelSink {
     DensityImage &image;
     const std::uint8_t *coordinates;
@@ -150,10 +143,11 @@ struct LabelSink {
             hits.resize(m);
         return hits.data();
     }
-    void take(std::size_t n, double)
+    void take(std::size_t n)
     {
         for (std::size_t h = 0; h < n; ++h)
-            image.add(hits[h].cell, paletteIndex(hits[h].colour), coordinates);
+            image.add(hits[h].cell, std::uint32_t(paletteIndexOf(hits[h].colour, false).i),
+                      coordinates);
     }
     void flush() {}
 };
@@ -179,7 +173,7 @@ struct ColourSink {
         }
         return hits.data() + count;
     }
-    void take(std::size_t n, double)
+    void take(std::size_t n)
     {
         count += n;
         if (count >= kHitRun)
