@@ -1,4 +1,5 @@
-// The flame's wave of orbits (src/core/flame/XformWaveAvx2.cpp: four lanes in AVX2, libmvec's
+// The flame's wave of orbits (src/core/flame/XformWaveKernels.inc: four lanes in AVX2, eight in
+// AVX-512 -- each test of the kernels runs on both where the processor has both --, libmvec's
 // functions) against XformMap::apply, which tests/core/test_flame_variations.cpp holds to
 // libflam3's own apply_xform:
 //  - every deterministic variation of the 99 -- those with a vector kernel and those the wave
@@ -8,7 +9,7 @@
 //    bad-value verdicts;
 //  - the random ones (different generators) by their distributions over 20000 draws at fixed
 //    points: mean and standard deviation of each coordinate within 6 standard errors;
-//  - lane counts that are not multiples of four, and a bad value in one lane only;
+//  - lane counts that are not multiples of a register, bad values in some lanes only;
 //  - a whole flame's histogram drawn by the vector kernels against the scalar kernels'
 //    (forceBaselineKernels: the same game, XformMap::apply on each lane): the same total
 //    weight and the same lit blocks;
@@ -88,8 +89,8 @@ struct Lanes {
     std::vector<double> x, y, qx, qy;
     std::vector<std::uint8_t> bad;
     explicit Lanes(int n)
-        : x(std::size_t(n + 4)), y(std::size_t(n + 4)), qx(std::size_t(n + 4)),
-          qy(std::size_t(n + 4)), bad(std::size_t(n + 4))
+        : x(std::size_t(n + 8)), y(std::size_t(n + 8)), qx(std::size_t(n + 8)),
+          qy(std::size_t(n + 8)), bad(std::size_t(n + 8))
     {
     }
 };
@@ -106,7 +107,29 @@ std::vector<double> quantiles(std::vector<double> v)
     return q;
 }
 
+// The kernels of a test row: the eight-lane AVX-512 ones or the four-lane AVX2 ones (the latter
+// forced where the processor has both), for the waves made while it lives.
+struct Kernels {
+    explicit Kernels(bool wide) { forceAvx2Kernels(!wide); }
+    ~Kernels() { forceAvx2Kernels(false); }
+    Kernels(const Kernels &) = delete;
+    Kernels &operator=(const Kernels &) = delete;
+};
+
+void kernelRows()
+{
+    QTest::addColumn<bool>("wide");
+    QTest::newRow("AVX2, four lanes") << false;
+    QTest::newRow("AVX-512, eight lanes") << true;
+}
+
 } // namespace
+
+#define AWB_KERNELS_OF_ROW()                                                                  \
+    QFETCH(bool, wide);                                                                       \
+    if (wide && !XformWave::wide())                                                           \
+        QSKIP("this processor has no AVX-512: the eight-lane kernels do not run here");       \
+    const Kernels kernels(wide)
 
 class TestFlameWave : public QObject {
     Q_OBJECT
@@ -118,8 +141,10 @@ private slots:
             QSKIP("this processor has no AVX2: the wave of orbits does not run here");
     }
 
+    void deterministicVariationsAsTheScalarKernels_data() { kernelRows(); }
     void deterministicVariationsAsTheScalarKernels()
     {
+        AWB_KERNELS_OF_ROW();
         const int n = 400;
         Lanes l(n);
         Xoshiro256 points(7, 0);
@@ -168,8 +193,10 @@ private slots:
         QVERIFY(vectorised >= 40);
     }
 
+    void randomVariationsByTheirDistributions_data() { kernelRows(); }
     void randomVariationsByTheirDistributions()
     {
+        AWB_KERNELS_OF_ROW();
         const int draws = 20000;
         const double points[3][2] = {{0.3, -0.4}, {1.2, 0.7}, {-0.8, 1.5}};
         int tested = 0;
@@ -225,28 +252,31 @@ private slots:
         QVERIFY(tested >= 15);
     }
 
+    void partialLanesAndOneBadLane_data() { kernelRows(); }
     void partialLanesAndOneBadLane()
     {
-        // Five lanes (one register and one lane of the next): a pre-affine that sends three of
-        // them beyond flam3's 1e10 (bad: a random replacement in [-1, 1]^2), two not; the
-        // padding lanes hold NaN and are ignored.
+        AWB_KERNELS_OF_ROW();
+        // Nine lanes (two registers of four and one lane, or one of eight and one lane): a
+        // pre-affine that sends five of them beyond flam3's 1e10 (bad: a random replacement
+        // in [-1, 1]^2), four not; the padding lanes hold NaN and are ignored.
         FlameXform x;
         x.variations = {{0, 1.0}};
         x.pre = {1e12, 0, 0, 0, 1, 0};
         const XformMap map(x);
         const XformWave wave(map);
-        Lanes l(5);
-        const double xs[5] = {0.5, 2e-11, 0.25, -0.3, 1e-12};
-        for (std::size_t i = 0; i < 5; ++i) {
+        Lanes l(9);
+        const double xs[9] = {0.5, 2e-11, 0.25, -0.3, 1e-12, 4e-12, 0.125, 3.0, 2e-13};
+        for (std::size_t i = 0; i < 9; ++i) {
             l.x[i] = xs[i];
             l.y[i] = 0.25 * double(i);
         }
-        l.x[5] = l.x[6] = l.x[7] = std::nan("");
+        for (std::size_t i = 9; i < 16; ++i)
+            l.x[i] = std::nan("");
         WaveRandom random(1, 0);
-        wave.apply(l.x.data(), l.y.data(), l.qx.data(), l.qy.data(), l.bad.data(), 5, random);
-        const bool bad[5] = {true, false, true, true, false};
+        wave.apply(l.x.data(), l.y.data(), l.qx.data(), l.qy.data(), l.bad.data(), 9, random);
+        const bool bad[9] = {true, false, true, true, false, false, true, true, false};
         Xoshiro256 rng(1, 0);
-        for (std::size_t i = 0; i < 5; ++i) {
+        for (std::size_t i = 0; i < 9; ++i) {
             QCOMPARE(bool(l.bad[i]), bad[i]);
             if (bad[i]) {
                 QVERIFY(std::fabs(l.qx[i]) <= 1 && std::fabs(l.qy[i]) <= 1);
@@ -329,11 +359,14 @@ private slots:
         // negative one (held at 0 here; flam3's conversion would be undefined).
         const double colours[] = {0.0, 1.0, 255.0 / 256, 254.5 / 256, 7.0 / 256, -0.2, 1.3};
         const double opacities[] = {1.0, 0.6, 0.25, 3.0};
-        std::vector<FlameHit> hits(4000);
-        for (std::size_t h = 0; h < hits.size(); ++h) {
+        const std::size_t n = 4000;
+        HitBuffer buffer;
+        buffer.resize(n);
+        const FlameHits hits = buffer.hits();
+        for (std::size_t h = 0; h < n; ++h) {
             const double c = h % 3 == 0 ? colours[h / 3 % 7] : uniform(0, 1);
             const double o = h % 5 == 4 ? -0.5 : opacities[h / 5 % 4];
-            hits[h] = FlameHit{c, o, std::size_t(gen() % 37)};  // cells hit many times
+            hits.put(h, c, o, std::size_t(gen() % 37));  // cells hit many times
         }
         for (const bool linear : {false, true}) {
             std::vector<std::array<std::uint32_t, 4>> start(37);
@@ -343,17 +376,18 @@ private slots:
                                    : std::uint32_t(gen() % 100000);
             const HitPalette palette{dmap.data(), linear};
             auto scalar = start, vector = start, flam3 = start;
-            addHits(hits.data(), hits.size(), palette, scalar.data());
-            addHitsAvx2(hits.data(), hits.size(), palette, vector.data());
+            addHits(hits, n, palette, scalar.data());
+            addHitsAvx2(hits, n, palette, vector.data());
             // flam3 3.1.1 (rect.c): the colour index, then bump_no_overflow on each sum.
-            for (const FlameHit &hit : hits) {
+            for (std::size_t h = 0; h < n; ++h) {
+                const double colour = hits.colour[h], opacity = hits.opacity[h];
                 double delta[4];
-                const double d = hit.colour * 256;
+                const double d = colour * 256;
                 int i = int(std::clamp(d, -1.0, 257.0));
                 if (!linear) {
                     i = std::clamp(i, 0, 255);
                     for (int c = 0; c < 4; ++c)
-                        delta[c] = hit.opacity * dmap[std::size_t(4 * i + c)];
+                        delta[c] = opacity * dmap[std::size_t(4 * i + c)];
                 } else {
                     double frac = d - i;
                     if (i < 0) {
@@ -364,12 +398,12 @@ private slots:
                         frac = 1;
                     }
                     for (int c = 0; c < 3; ++c)
-                        delta[c] = hit.opacity * (dmap[std::size_t(4 * i + c)] * (1.0 - frac)
-                                                  + dmap[std::size_t(4 * i + 4 + c)] * frac);
-                    delta[3] = hit.opacity * 255.0;
+                        delta[c] = opacity * (dmap[std::size_t(4 * i + c)] * (1.0 - frac)
+                                              + dmap[std::size_t(4 * i + 4 + c)] * frac);
+                    delta[3] = opacity * 255.0;
                 }
                 for (int c = 0; c < 4; ++c) {
-                    std::uint32_t &dest = flam3[hit.cell][std::size_t(c)];
+                    std::uint32_t &dest = flam3[hits.cell[h]][std::size_t(c)];
                     if (delta[c] < 0 && -delta[c] > dest)
                         dest = 0;
                     else if (UINT_MAX - dest > delta[c])

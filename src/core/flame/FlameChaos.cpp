@@ -5,6 +5,7 @@
 #include "core/Types.h"
 #include "core/flame/Variations.h"
 #include "core/flame/FlameGame.h"
+#include "core/flame/FlameStep.h"
 #include "core/flame/XformWave.h"
 #include "core/ifs/Random.h"
 
@@ -66,35 +67,7 @@ std::size_t waveOrbits(std::uint64_t samples, std::size_t xforms)
     return std::size_t(std::clamp<std::uint64_t>(samples / 2048, 4, most));
 }
 
-// An orbit's counters, which go with its point from stack to stack.
-struct OrbitCounters {
-    std::uint16_t togo;   // samples its batch has still to draw
-    std::uint8_t fuse;    // steps before it is drawn
-    std::uint8_t bad;     // consecutive bad values
-    std::uint16_t last;   // the xform it last went through + 1 (its xaos row); 0 on a restart
-    std::uint16_t share;  // its share of the stream's samples
-};
 static_assert(kBatch <= 0xffff && kFuse <= 0xff && kMaxXforms < 0xffff);
-
-// The xforms' stacks of orbits (runWave): xform k's orbits at k cap .. k cap + top[k], their
-// points, colours and counters side by side, with room for every orbit and a register's
-// padding (the waves read and write whole registers). Raw pointers, copied into the game's
-// loop: the compiler keeps them in registers there.
-struct Stacks {
-    double *x, *y, *c;
-    OrbitCounters *n;
-    std::uint32_t *top;
-    std::size_t cap;
-
-    void push(std::size_t to, double px, double py, double pc, OrbitCounters pn) const
-    {
-        const std::size_t at = to * cap + top[to]++;
-        x[at] = px;
-        y[at] = py;
-        c[at] = pc;
-        n[at] = pn;
-    }
-};
 
 // One stream's samples into `sink`, as flam3's game (flam3_iterate) on each of its orbits:
 // batches of kBatch samples from a random restart after kFuse steps, the xform by weight or
@@ -104,9 +77,11 @@ struct Stacks {
 // Each xform keeps a stack of the orbits that chose it, their points side by side: the game
 // takes a stack whole through its xform (XformWave: four orbits a register; the scalar kernels
 // lane by lane without AVX2), then each orbit is drawn, chooses its next xform and goes onto
-// that stack. Full registers first; the stacks that cannot fill one only when none can. The
-// orbits advance at their own pace; each is flam3's chain, whatever the order they are taken
-// in. A hit goes to the sink, which adds it some hits later (ColourSink).
+// that stack (the step: FlameStep.h, eight orbits a register on AVX-512, else the scalar loop
+// here, which also takes the orbits the vector step leaves). Full registers first; the stacks
+// that cannot fill one only when none can. The orbits advance at their own pace; each is
+// flam3's chain, whatever the order they are taken in. A hit goes to the sink, which adds it
+// some hits later (ColourSink).
 template <class Sink>
 FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std::uint64_t seed,
                    int stream, std::uint64_t samples, Sink &sink,
@@ -119,7 +94,8 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
     const std::size_t orbits = waveOrbits(samples, nx);
     constexpr std::size_t W = XformWave::kWidth;
 
-    const std::size_t cap = orbits + W;
+    const std::size_t cap = orbits + kStackPadding;
+    static_assert(W <= kStackPadding);
     std::vector<double> sx(nx * cap), sy(nx * cap), sc(nx * cap);
     std::vector<OrbitCounters> sn(nx * cap);
     std::vector<std::uint32_t> top(nx, 0);
@@ -132,6 +108,11 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
     std::vector<int> batch(orbits);
     const AliasTable *rows = choice.rows.data();
     const bool xaos = choice.xaos;
+    // The AVX-512 step's orbits left to the scalar one.
+    const bool wide = XformWave::wide();
+    std::vector<std::uint32_t> deferred(wide ? cap : 0);
+    std::vector<double> deferredColour(wide ? cap : 0);
+    std::vector<OrbitCounters> deferredCounters(wide ? cap : 0);
 
     // Starts share s's next batch onto its first xform's stack; false when it has drawn its
     // samples.
@@ -178,23 +159,47 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
                           random);
         if (finalWave)
             finalWave->apply(px, py, gx.data(), gy.data(), finalBad.data(), int(m), random);
+        const FlameHits hits = sink.room(m);
+        std::size_t drawn = 0, todo = m;
+        const std::uint32_t *which = nullptr;
+        const double *colours = st.c + base;
+        const OrbitCounters *counters = st.n + base;
+        std::uint64_t offscreen = 0;
+        const double opacity = xf.opacity[k];
+        const int last = int(k) + 1;
+        if (wide) {  // eight orbits a register; the rare ones left to the loop below
+            const AliasTable &row = rows[xaos ? k + 1 : 0];
+            const StepOrbits orbits{px, py, isBad, finalWave ? fx : nullptr,
+                                    finalWave ? fy : nullptr, colours, counters, m};
+            const StepRule rule{xf.speed[k] * xf.colour[k], 1.0 - xf.speed[k], opacity,
+                                Sink::kOpacityByChance, std::uint16_t(last), finalWave != nullptr,
+                                finalTowards, finalKeep, finalOpacity, row.size(), row.uniform(),
+                                row.thresholds(), row.aliases(), plot.x0, plot.y1, plot.sx,
+                                plot.sy, plot.w, plot.h, plot.rotated, plot.cx, plot.cy,
+                                plot.r00, plot.r01, plot.r10, plot.r11, sink.prefetchBase(),
+                                sizeof(std::array<std::uint32_t, 4>)};
+            StepOut out{hits, deferred.data(), deferredColour.data(), deferredCounters.data()};
+            stepAvx512(orbits, rule, st, random.step, out);
+            drawn = out.drawn;
+            offscreen = out.offscreen;
+            todo = out.deferredCount;
+            which = deferred.data();
+            colours = deferredColour.data();
+            counters = deferredCounters.data();
+        }
         // In registers for the loop (the stores below could otherwise be any of these).
         Xoshiro256 rng = random.scalar;
         const Plot camera = plot;
         const AliasTable *next = rows;
         const bool byRow = xaos;
-        const double *colours = st.c + base;
-        const OrbitCounters *counters = st.n + base;
-        FlameHit *hits = sink.room(m);
-        std::size_t drawn = 0;
-        std::uint64_t badValues = 0, offscreen = 0;
+        std::uint64_t badValues = 0;
         // The colour's move by xform k (first, as in flam3's apply_xform).
         const double towards = xf.speed[k] * xf.colour[k], keep = 1.0 - xf.speed[k];
-        const double opacity = xf.opacity[k];
-        const int last = int(k) + 1;
-        for (std::size_t j = 0; j < m; ++j) {
-            OrbitCounters n = counters[j];
-            const double colour = towards + keep * colours[j];
+        for (std::size_t i = 0; i < todo; ++i) {
+            // Orbit j of the stack; its colour and counters at i (the AVX-512 step's copies).
+            const std::size_t j = which ? which[i] : i;
+            OrbitCounters n = counters[i];
+            const double colour = towards + keep * colours[i];
             const double x = px[j], y = py[j];
             if (isBad[j]) {  // retried from the replacement, the xaos row unchanged
                 ++badValues;
@@ -221,7 +226,7 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
                         ++offscreen;
                     } else {
                         sink.prefetch(std::size_t(cell));
-                        hits[drawn++] = FlameHit{hc, opacity, std::size_t(cell)};
+                        hits.put(drawn++, hc, opacity, std::size_t(cell));
                     }
                 }
                 if (--n.togo == 0) {
@@ -459,7 +464,9 @@ FlameStats accumulateFlameColours(const FlameRaster &job, FlameHistogram &out,
     const FlameStats stats = playStreams(job, control, [&](int t) {
         FlameHistogram &h = t == 0 ? out : parts[std::size_t(t - 1)];
         h.cells.assign(cells, {0, 0, 0, 0});
-        return ColourSink{h, palette, XformWave::available(), std::vector<FlameHit>(2 * kHitRun)};
+        ColourSink sink{h, palette, XformWave::available(), {}};
+        sink.hits.resize(2 * kHitRun);
+        return sink;
     });
     // The parts summed (whole numbers, held at 2^32 - 1), cell ranges on the threads.
     onThreads(threads, [&](int t) {

@@ -121,8 +121,10 @@ struct Xforms {
 };
 
 // A sink takes the hits of one stack's orbits (FlameChaos.cpp's runWave) at once: `room(m)`
-// gives space for m hits, the game writes those it draws there (prefetching their cells), and
-// `take(n)` hands over the first n.
+// gives space for m hits, the game writes those it draws there (prefetching their cells: cell
+// i at prefetchBase() + i sizeof(cell), when that is not null), and `take(n)` hands over the
+// first n. `keep` is its rule for an xform's opacity (kOpacityByChance: drawn with that
+// probability; else drawn whenever it is not 0, the hit weighed by it).
 
 // Where the engine's histogram takes a hit: its palette index (flam3's step index) as the label;
 // an xform's opacity as the probability of drawing the hit (the same expected density in whole
@@ -130,23 +132,25 @@ struct Xforms {
 struct LabelSink {
     DensityImage &image;
     const std::uint8_t *coordinates;
-    std::vector<FlameHit> hits;
+    HitBuffer hits;
 
+    static constexpr bool kOpacityByChance = true;
     bool keep(double opacity, Xoshiro256 &rng) const
     {
         return opacity == 1.0 || (opacity > 0 && uniform01(rng) < opacity);
     }
     void prefetch(std::size_t) const {}
-    FlameHit *room(std::size_t m)
+    const char *prefetchBase() const { return nullptr; }
+    FlameHits room(std::size_t m)
     {
         if (hits.size() < m)
             hits.resize(m);
-        return hits.data();
+        return hits.hits();
     }
     void take(std::size_t n)
     {
         for (std::size_t h = 0; h < n; ++h)
-            image.add(hits[h].cell, std::uint32_t(paletteIndexOf(hits[h].colour, false).i),
+            image.add(hits.cell[h], std::uint32_t(paletteIndexOf(hits.colour[h], false).i),
                       coordinates);
     }
     void flush() {}
@@ -159,19 +163,24 @@ struct ColourSink {
     FlameHistogram &histogram;
     HitPalette palette;
     bool vector;
-    std::vector<FlameHit> hits;
+    HitBuffer hits;
     std::size_t count = 0;
 
+    static constexpr bool kOpacityByChance = false;
     bool keep(double opacity, Xoshiro256 &) const { return opacity != 0; }
     void prefetch(std::size_t k) const { __builtin_prefetch(histogram.cells.data() + k, 1); }
-    FlameHit *room(std::size_t m)
+    const char *prefetchBase() const
+    {
+        return reinterpret_cast<const char *>(histogram.cells.data());
+    }
+    FlameHits room(std::size_t m)
     {
         if (count + m > hits.size()) {
             flush();
             if (m > hits.size())
                 hits.resize(m);
         }
-        return hits.data() + count;
+        return hits.hits().from(count);
     }
     void take(std::size_t n)
     {
@@ -183,9 +192,9 @@ struct ColourSink {
     void flush()
     {
         if (vector)
-            addHitsAvx2(hits.data(), count, palette, histogram.cells.data());
+            addHitsAvx2(hits.hits(), count, palette, histogram.cells.data());
         else
-            addHits(hits.data(), count, palette, histogram.cells.data());
+            addHits(hits.hits(), count, palette, histogram.cells.data());
         count = 0;
     }
 };

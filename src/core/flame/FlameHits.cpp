@@ -9,15 +9,15 @@
 
 namespace awb::flame::detail {
 
-void addHits(const FlameHit *hits, std::size_t n, const HitPalette &palette,
+void addHits(const FlameHits &hits, std::size_t n, const HitPalette &palette,
              std::array<std::uint32_t, 4> *cells)
 {
     constexpr double top = double(std::numeric_limits<std::uint32_t>::max());
     for (std::size_t h = 0; h < n; ++h) {
-        const FlameHit &hit = hits[h];
-        const PaletteIndex at = paletteIndexOf(hit.colour, palette.linear);
+        const PaletteIndex at = paletteIndexOf(hits.colour[h], palette.linear);
         const double *lo = palette.dmap + 4 * at.i;
-        std::array<std::uint32_t, 4> &cell = cells[hit.cell];
+        const double opacity = hits.opacity[h];
+        std::array<std::uint32_t, 4> &cell = cells[hits.cell[h]];
         for (int c = 0; c < 4; ++c) {
             // The alpha sum is 255 a hit, not interpolated.
             double delta = lo[c];
@@ -25,14 +25,14 @@ void addHits(const FlameHit *hits, std::size_t n, const HitPalette &palette,
                 delta = lo[c] * (1.0 - at.frac) + lo[4 + c] * at.frac;
             // dest = (unsigned)(dest + delta), held at UINT_MAX -- and at 0 (a negative
             // opacity, which flam3 would convert undefined).
-            const double sum = std::clamp(double(cell[std::size_t(c)]) + hit.opacity * delta, 0.0, top);
+            const double sum = std::clamp(double(cell[std::size_t(c)]) + opacity * delta, 0.0, top);
             cell[std::size_t(c)] = std::uint32_t(sum);
         }
     }
 }
 
 #if !defined(AWB_AVX2_KERNELS)
-void addHitsAvx2(const FlameHit *, std::size_t, const HitPalette &, std::array<std::uint32_t, 4> *)
+void addHitsAvx2(const FlameHits &, std::size_t, const HitPalette &, std::array<std::uint32_t, 4> *)
 {
     throw std::logic_error("addHitsAvx2: no vector kernels on this platform");
 }

@@ -10,13 +10,41 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace awb::flame::detail {
 
-struct FlameHit {
-    double colour;   // the colour coordinate, 0..1
-    double opacity;  // the xform's (flam3's logvis times its opacity)
-    std::size_t cell;
+// Hits side by side: hit h's colour coordinate (0..1), opacity (the xform's: flam3's logvis
+// times its opacity) and cell at index h of each array -- so that the AVX-512 step writes a
+// register of them at once.
+struct FlameHits {
+    double *colour;
+    double *opacity;
+    std::uint64_t *cell;
+
+    void put(std::size_t h, double c, double o, std::size_t k) const
+    {
+        colour[h] = c;
+        opacity[h] = o;
+        cell[h] = k;
+    }
+    FlameHits from(std::size_t h) const { return {colour + h, opacity + h, cell + h}; }
+};
+
+// The arrays of FlameHits, with a register's padding after them (the AVX-512 step writes whole
+// registers; the lanes beyond its hits are overwritten by the next ones or ignored).
+struct HitBuffer {
+    std::vector<double> colour, opacity;
+    std::vector<std::uint64_t> cell;
+
+    std::size_t size() const { return colour.empty() ? 0 : colour.size() - 8; }
+    void resize(std::size_t n)
+    {
+        colour.resize(n + 8);
+        opacity.resize(n + 8);
+        cell.resize(n + 8);
+    }
+    FlameHits hits() { return {colour.data(), opacity.data(), cell.data()}; }
 };
 
 inline constexpr std::size_t kHitRun = 256;
@@ -30,10 +58,10 @@ struct HitPalette {
 // Adds the hits to the cells in order, as flam3's bump_no_overflow: a cell's four sums (r, g,
 // b: the palette at the colour, step or linear; alpha: 255), each times the opacity, added,
 // held at 2^32 - 1 (and 0), truncated to whole numbers after every hit.
-void addHits(const FlameHit *hits, std::size_t n, const HitPalette &palette,
+void addHits(const FlameHits &hits, std::size_t n, const HitPalette &palette,
              std::array<std::uint32_t, 4> *cells);
 // The same on AVX2 registers; call only where XformWave::available().
-void addHitsAvx2(const FlameHit *hits, std::size_t n, const HitPalette &palette,
+void addHitsAvx2(const FlameHits &hits, std::size_t n, const HitPalette &palette,
                  std::array<std::uint32_t, 4> *cells);
 
 // flam3's colour index of a hit: (int)(c 256) clamped to the palette, and for the linear mode

@@ -9,7 +9,7 @@
 
 namespace awb::flame::detail {
 
-void addHitsAvx2(const FlameHit *hits, std::size_t n, const HitPalette &palette,
+void addHitsAvx2(const FlameHits &hits, std::size_t n, const HitPalette &palette,
                  std::array<std::uint32_t, 4> *cells)
 {
     // An unsigned sum u as a double: the signed conversion of u - 2^31, plus 2^31; back: the
@@ -19,8 +19,7 @@ void addHitsAvx2(const FlameHit *hits, std::size_t n, const HitPalette &palette,
     const __m256d top = _mm256_set1_pd(4294967295.0);
     const __m256d zero = _mm256_setzero_pd();
     for (std::size_t h = 0; h < n; ++h) {
-        const FlameHit &hit = hits[h];
-        const PaletteIndex at = paletteIndexOf(hit.colour, palette.linear);
+        const PaletteIndex at = paletteIndexOf(hits.colour[h], palette.linear);
         const double *lo = palette.dmap + 4 * at.i;
         __m256d delta = _mm256_loadu_pd(lo);
         if (palette.linear) {
@@ -31,8 +30,8 @@ void addHitsAvx2(const FlameHit *hits, std::size_t n, const HitPalette &palette,
                                                 _mm256_mul_pd(hi, _mm256_set1_pd(at.frac)));
             delta = _mm256_blend_pd(mixed, delta, 0x8);
         }
-        delta = _mm256_mul_pd(_mm256_set1_pd(hit.opacity), delta);
-        auto *cell = reinterpret_cast<std::uint32_t *>(cells + hit.cell);  // no inline call
+        delta = _mm256_mul_pd(_mm256_set1_pd(hits.opacity[h]), delta);
+        auto *cell = reinterpret_cast<std::uint32_t *>(cells + hits.cell[h]);  // no inline call
         const __m128i u = _mm_loadu_si128(reinterpret_cast<const __m128i *>(cell));
         __m256d sum = _mm256_add_pd(_mm256_cvtepi32_pd(_mm_xor_si128(u, bias)), half);
         sum = _mm256_add_pd(sum, delta);

@@ -21,6 +21,14 @@ WaveRandom::WaveRandom(std::uint64_t seed, std::uint64_t stream) : scalar(seed, 
         for (int w = 0; w < 4; ++w)
             lanes[w][j] = lane.s[w];
     }
+    for (std::uint64_t j = 0; j < 8; ++j) {
+        const Xoshiro256 kernel(seed, (stream + 1) * 0x100000000ULL + 4 + j);
+        const Xoshiro256 lane(seed, (stream + 1) * 0x100000000ULL + 12 + j);
+        for (int w = 0; w < 4; ++w) {
+            wide[w][j] = kernel.s[w];
+            step[w][j] = lane.s[w];
+        }
+    }
 }
 
 bool XformWave::vectorKernel(int id)
@@ -41,11 +49,17 @@ bool XformWave::vectorKernel(int id)
     }
 }
 
-XformWave::XformWave(const XformMap &map) : m_map(&map), m_vector(available()) {}
+XformWave::XformWave(const XformMap &map) : m_map(&map), m_vector(available()), m_wide(wide())
+{
+}
 
 void XformWave::apply(const double *x, const double *y, double *qx, double *qy,
                       std::uint8_t *bad, int n, WaveRandom &rng) const
 {
+    if (m_wide) {
+        applyAvx512(x, y, qx, qy, bad, n, rng);
+        return;
+    }
     if (m_vector) {
         applyAvx2(x, y, qx, qy, bad, n, rng);
         return;
@@ -63,14 +77,24 @@ void XformWave::apply(const double *x, const double *y, double *qx, double *qy,
 
 bool XformWave::available() { return engine::haveAvx2(); }
 
+bool XformWave::wide() { return engine::haveAvx512(); }
+
 #else
 
 bool XformWave::available() { return false; }
+
+bool XformWave::wide() { return false; }
 
 void XformWave::applyAvx2(const double *, const double *, double *, double *, std::uint8_t *,
                           int, WaveRandom &) const
 {
     throw std::logic_error("XformWave::applyAvx2: no vector kernels on this platform");
+}
+
+void XformWave::applyAvx512(const double *, const double *, double *, double *,
+                            std::uint8_t *, int, WaveRandom &) const
+{
+    throw std::logic_error("XformWave::applyAvx512: no vector kernels on this platform");
 }
 
 #endif

@@ -63,6 +63,9 @@ public:
         return std::uint32_t(r) < m_threshold[column] ? column : alias;
     }
     bool uniform() const { return m_uniform; }
+    // The table itself (pick's columns), for vector kernels that pick several at once.
+    const std::uint64_t *thresholds() const { return m_threshold.data(); }
+    const int *aliases() const { return m_alias.data(); }
 
 private:
     int m_n = 1;

@@ -15,6 +15,7 @@ using namespace engine;
 
 namespace {
 std::atomic<bool> g_baselineKernels{false};
+std::atomic<bool> g_avx2Kernels{false};
 } // namespace
 
 bool engine::haveAvx2()
@@ -30,6 +31,20 @@ bool engine::haveAvx2()
 #endif
 }
 
+bool engine::haveAvx512()
+{
+#if defined(AWB_AVX2_KERNELS)
+    static const bool avx512 = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq")
+               && __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl");
+    }();
+    return avx512 && haveAvx2() && !g_avx2Kernels.load(std::memory_order_relaxed);
+#else
+    return false;
+#endif
+}
+
 const char *engineKernels()
 {
     return haveAvx2() ? "avx2" : "baseline";
@@ -38,6 +53,11 @@ const char *engineKernels()
 void forceBaselineKernels(bool on)
 {
     g_baselineKernels = on;
+}
+
+void forceAvx2Kernels(bool on)
+{
+    g_avx2Kernels = on;
 }
 
 std::uint32_t addressLabel(const std::uint8_t *address, int length, int prefix, int maps)

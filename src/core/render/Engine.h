@@ -96,6 +96,9 @@ private:
 // afterwards (tests compare the two: they give the same cells).
 const char *engineKernels();
 void forceBaselineKernels(bool on);
+// The flame game's AVX-512 step off (the AVX2 kernels and the scalar step run instead) for the
+// renders that start afterwards: tests compare the two.
+void forceAvx2Kernels(bool on);
 
 // Label of an address (address[0] outermost) for `prefix` symbols of N maps.
 std::uint32_t addressLabel(const std::uint8_t *address, int length, int prefix, int maps);

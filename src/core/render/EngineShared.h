@@ -32,6 +32,9 @@ constexpr int kInterleave = 4;  // orbits advanced together per thread
 // Whether the AVX2 kernels run: the processor has AVX2 and forceBaselineKernels is off
 // (Engine.cpp).
 bool haveAvx2();
+// Whether the AVX-512 kernels (the flame game's step) run: the processor has AVX-512 F, DQ, BW
+// and VL, haveAvx2() holds and forceAvx2Kernels is off (Engine.cpp).
+bool haveAvx512();
 
 // How a kernel stores a hit (DensityImage's layouts): in buckets, the smallest label (hits) or
 // the colour coordinate (density); the count alone (a one-label image: a picture of one
