@@ -61,6 +61,14 @@ static AWB_WAVE_INLINE V vtrunc(V x)
 {
     return V(_mm256_round_pd(__m256d(x), _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC));
 }
+static AWB_WAVE_INLINE unsigned laneBits(U mask) { return unsigned(_mm256_movemask_pd(__m256d(mask))); }
+static AWB_WAVE_INLINE void storeLaneFlags(std::uint8_t *flags, unsigned bits)
+{
+    // Four bits spread to the low bits of four bytes: bit j moves by 7 j (no two bits of the
+    // product meet, so nothing carries).
+    const std::uint32_t bytes = (bits * 0x204081u) & 0x01010101u;
+    __builtin_memcpy(flags, &bytes, 4);
+}
 #include "core/flame/XformWaveKernels.inc"
 
 } // namespace awb::flame

@@ -8,7 +8,8 @@
 #include "core/flame/VariationIds.h"
 #include "core/flame/VariationTerm.h"
 
-#if defined(__x86_64__) && defined(__AVX512F__) && defined(__AVX512DQ__)
+#if defined(__x86_64__) && defined(__AVX512F__) && defined(__AVX512DQ__) && defined(__AVX512BW__) \
+    && defined(__AVX512VL__)
 
 #include <immintrin.h>
 
@@ -53,6 +54,11 @@ static AWB_WAVE_INLINE V vsqrt(V x) { return V(_mm512_sqrt_pd(__m512d(x))); }
 static AWB_WAVE_INLINE V vtrunc(V x)
 {
     return V(_mm512_roundscale_pd(__m512d(x), _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC));
+}
+static AWB_WAVE_INLINE unsigned laneBits(U mask) { return unsigned(_mm512_movepi64_mask(__m512i(mask))); }
+static AWB_WAVE_INLINE void storeLaneFlags(std::uint8_t *flags, unsigned bits)
+{
+    _mm_storel_epi64(reinterpret_cast<__m128i *>(flags), _mm_maskz_set1_epi8(__mmask16(bits), 1));
 }
 #include "core/flame/XformWaveKernels.inc"
 
