@@ -79,6 +79,12 @@ FlameXform xformOf(int id, bool withLinear, bool withPost)
     set("rectangles_x", 0.7);
     set("fan2_x", 0.4);
     set("rings2_val", 0.6);
+    set("fan2_y", 0.3);
+    set("pie_slices", 5);
+    set("pie_rotation", 0.7);
+    set("pie_thickness", 0.4);
+    set("disc2_rot", 0.8);
+    set("disc2_twist", 0.3);
     x.weight = 1;
     return x;
 }

@@ -42,7 +42,8 @@ bool XformWave::vectorKernel(int id)
     case kJuliascope: case kBlur: case kGaussianBlur: case kRadialBlur: case kCurl:
     case kTangent: case kSquare: case kCross: case kBent2: case kButterfly: case kPolar2:
     case kScry: case kSplits: case kWaves2: case kExp: case kLog: case kSin: case kCos:
-    case kSinh: case kCosh: case kTanh:
+    case kSinh: case kCosh: case kTanh: case kRings: case kFan: case kFan2: case kRings2:
+    case kPie: case kArch: case kRays: case kBlade: case kSecant2: case kDisc2:
         return true;
     default:
         return false;
