@@ -79,7 +79,7 @@ struct StepRule {
     bool rotated;
     double cx, cy, r00, r01, r10, r11;
     const char *prefetch;  // the sink's cells (hit cell i at prefetch + i stride), or null
-    std::size_t stride;
+    std::size_t stride;    // a power of two
 };
 
 // Where the step writes: the hits, and the orbits it leaves to the scalar step (their index,

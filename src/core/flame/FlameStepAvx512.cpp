@@ -90,6 +90,10 @@ void stepAvx512(const StepOrbits &o, const StepRule &r, const Stacks &st,
     const bool chance = r.opacityByChance && r.opacity != 1.0 && !never;
     const bool byChanceFinal = r.final && r.finalOpacity != 1.0;
     const bool few = r.n <= 4;
+    const __m512i base =
+        _mm512_set1_epi64(std::int64_t(reinterpret_cast<std::uintptr_t>(r.prefetch)));
+    // A cell's bytes (a power of two) as a shift.
+    const __m512i shift = _mm512_set1_epi64(r.stride ? __builtin_ctzll(r.stride) : 0);
 
     double *sx_ = st.x, *sy_ = st.y, *sc_ = st.c;
     std::uint64_t *sn_ = reinterpret_cast<std::uint64_t *>(st.n);
@@ -162,14 +166,21 @@ void stepAvx512(const StepOrbits &o, const StepRule &r, const Stacks &st,
             offscreen += std::size_t(__builtin_popcount(kept & ~inside));
             // Written a register at a time (no branch on how many): the next register's
             // overwrite the lanes beyond these; each cell prefetched (those beyond, cell 0).
+            // row w + column: both below 2^31 on the frame, so the 32-bit product is exact.
             const __m512i cell = _mm512_add_epi64(
-                _mm512_mullo_epi64(_mm512_cvttpd_epi64(v), wi), _mm512_cvttpd_epi64(u));
-            _mm512_storeu_si512(hits.cell + drawn, _mm512_maskz_compress_epi64(inside, cell));
+                _mm512_mul_epu32(_mm512_cvttpd_epi64(v), wi), _mm512_cvttpd_epi64(u));
+            const __m512i packed = _mm512_maskz_compress_epi64(inside, cell);
+            _mm512_storeu_si512(hits.cell + drawn, packed);
             _mm512_storeu_pd(hits.colour + drawn, _mm512_maskz_compress_pd(inside, hc));
             _mm512_storeu_pd(hits.opacity + drawn, opacity);
-            if (r.prefetch)
+            if (r.prefetch) {
+                // The addresses from an aligned copy: a load from the unaligned store just
+                // made may not be forwarded from it, and would wait for it to reach the cache.
+                alignas(64) std::uint64_t at[8];
+                _mm512_store_si512(at, _mm512_add_epi64(base, _mm512_sllv_epi64(packed, shift)));
                 for (std::size_t i = 0; i < 8; ++i)
-                    __builtin_prefetch(r.prefetch + hits.cell[drawn + i] * r.stride, 1);
+                    __builtin_prefetch(reinterpret_cast<const char *>(at[i]), 1);
+            }
             drawn += std::size_t(__builtin_popcount(inside));
         }
 
