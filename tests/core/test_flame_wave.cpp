@@ -85,6 +85,20 @@ FlameXform xformOf(int id, bool withLinear, bool withPost)
     set("pie_thickness", 0.4);
     set("disc2_rot", 0.8);
     set("disc2_twist", 0.3);
+    set("wedge_angle", 0.5);
+    set("wedge_count", 3);
+    set("wedge_swirl", 0.2);
+    set("wedge_hole", 0.1);
+    set("wedge_sph_angle", 0.4);
+    set("wedge_sph_count", 4);
+    set("wedge_sph_swirl", 0.3);
+    set("wedge_sph_hole", 0.05);
+    set("wedge_julia_angle", 0.6);
+    set("wedge_julia_count", 2);
+    set("wedge_julia_power", 3);
+    set("wedge_julia_dist", 0.8);
+    set("whorl_inside", 0.7);
+    set("whorl_outside", 0.3);
     x.weight = 1;
     return x;
 }

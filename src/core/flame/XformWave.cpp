@@ -43,7 +43,8 @@ bool XformWave::vectorKernel(int id)
     case kTangent: case kSquare: case kCross: case kBent2: case kButterfly: case kPolar2:
     case kScry: case kSplits: case kWaves2: case kExp: case kLog: case kSin: case kCos:
     case kSinh: case kCosh: case kTanh: case kRings: case kFan: case kFan2: case kRings2:
-    case kPie: case kArch: case kRays: case kBlade: case kSecant2: case kDisc2:
+    case kPie: case kArch: case kRays: case kBlade: case kSecant2: case kDisc2: case kWedge:
+    case kWedgeJulia: case kWedgeSph: case kWhorl:
         return true;
     default:
         return false;
