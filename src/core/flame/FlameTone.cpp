@@ -604,6 +604,9 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
     across.assign(std::size_t(threads) * bandRows * std::size_t(W), Cell{0, 0, 0, 0});
     const double g = 1.0 / f.gamma;
     const double vibrancy = f.vibrancy;
+    // At vibrancy 1 the dull part of a channel is 0 times a finite power for sums >= 0 and
+    // g <= 1 (a power of at most the sum); otherwise it is computed.
+    const bool vibrant = vibrancy == 1.0 && g <= 1.0;
     const double background[3] = {f.background.r * 256.0, f.background.g * 256.0,
                                   f.background.b * 256.0};
     out.width = W;
@@ -648,8 +651,12 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
                     flam3NewRgb(s, ls, f.highlightPower, rgb);
                     std::uint32_t px = 0xff000000u;
                     for (int c = 0; c < 3; ++c) {
-                        double a = rgb[c] + (1.0 - vibrancy) * 256.0 * std::pow(s[c] / 255.0, g)
-                                   + (1.0 - alpha) * background[c];
+                        // (1 - vibrancy) 256 (s / 255)^g: +0 at vibrancy 1 (flam3's default),
+                        // where the power is taken only when it could be NaN or infinite.
+                        double dull = 0.0;
+                        if (!vibrant || !(s[c] >= 0))
+                            dull = (1.0 - vibrancy) * 256.0 * std::pow(s[c] / 255.0, g);
+                        double a = rgb[c] + dull + (1.0 - alpha) * background[c];
                         // NaN (a negative lobe's sum under the gamma) as flam3's clamp would not.
                         if (!(a >= 0))
                             a = 0;
