@@ -13,7 +13,8 @@
 //  - a whole flame's histogram drawn by the vector kernels against the scalar kernels'
 //    (forceBaselineKernels: the same game, XformMap::apply on each lane): the same total
 //    weight and the same lit blocks;
-//  - the histogram's adds (FlameHits.h) on AVX2 registers against the scalar rule and flam3's
+//  - the histogram's adds (FlameHits.h) on AVX2 registers, and two hits a register on AVX-512
+//    (hits on one cell side by side among them), against the scalar rule and flam3's
 //    bump_no_overflow written out here: the very same sums, step and linear palettes, at 0 and
 //    at 2^32 - 1.
 // Skipped only where the processor has no AVX2 (the wave does not run there).
@@ -396,8 +397,13 @@ private slots:
                                    : std::uint32_t(gen() % 100000);
             const HitPalette palette{dmap.data(), linear};
             auto scalar = start, vector = start, flam3 = start;
+            auto wide = start;
             addHits(hits, n, palette, scalar.data());
             addHitsAvx2(hits, n, palette, vector.data());
+            if (XformWave::wide())
+                addHitsAvx512(hits, n, palette, wide.data());
+            else
+                wide = scalar;
             // flam3 3.1.1 (rect.c): the colour index, then bump_no_overflow on each sum.
             for (std::size_t h = 0; h < n; ++h) {
                 const double colour = hits.colour[h], opacity = hits.opacity[h];
@@ -435,6 +441,7 @@ private slots:
             int held = 0;
             for (std::size_t i = 0; i < start.size(); ++i) {
                 QCOMPARE(vector[i], scalar[i]);
+                QCOMPARE(wide[i], scalar[i]);
                 QCOMPARE(scalar[i], flam3[i]);
                 held += scalar[i][3] == UINT_MAX;
             }

@@ -464,7 +464,7 @@ FlameStats accumulateFlameColours(const FlameRaster &job, FlameHistogram &out,
     const FlameStats stats = playStreams(job, control, [&](int t) {
         FlameHistogram &h = t == 0 ? out : parts[std::size_t(t - 1)];
         h.cells.assign(cells, {0, 0, 0, 0});
-        ColourSink sink{h, palette, XformWave::available(), {}};
+        ColourSink sink{h, palette, XformWave::wide() ? 2 : XformWave::available() ? 1 : 0, {}};
         sink.hits.resize(2 * kHitRun);
         return sink;
     });

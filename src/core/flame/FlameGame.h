@@ -158,11 +158,11 @@ struct LabelSink {
 
 // Where flam3's buckets take a hit (rect.c, iter_thread): gathered in runs of about kHitRun
 // (FlameHits.h), each cell prefetched when its hit comes and added when the run is full -- by
-// addHits, or on AVX2 registers where the wave's kernels run.
+// addHits, or on AVX2 or AVX-512 registers where the wave's kernels of that width run.
 struct ColourSink {
     FlameHistogram &histogram;
     HitPalette palette;
-    bool vector;
+    int vector;  // 0: addHits, 1: addHitsAvx2, 2: addHitsAvx512
     HitBuffer hits;
     std::size_t count = 0;
 
@@ -191,7 +191,9 @@ struct ColourSink {
     // The hits gathered, in the order they came (a cell takes its sums in hit order).
     void flush()
     {
-        if (vector)
+        if (vector == 2)
+            addHitsAvx512(hits.hits(), count, palette, histogram.cells.data());
+        else if (vector == 1)
             addHitsAvx2(hits.hits(), count, palette, histogram.cells.data());
         else
             addHits(hits.hits(), count, palette, histogram.cells.data());

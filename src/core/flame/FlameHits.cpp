@@ -36,6 +36,12 @@ void addHitsAvx2(const FlameHits &, std::size_t, const HitPalette &, std::array<
 {
     throw std::logic_error("addHitsAvx2: no vector kernels on this platform");
 }
+
+void addHitsAvx512(const FlameHits &, std::size_t, const HitPalette &,
+                   std::array<std::uint32_t, 4> *)
+{
+    throw std::logic_error("addHitsAvx512: no vector kernels on this platform");
+}
 #endif
 
 } // namespace awb::flame::detail

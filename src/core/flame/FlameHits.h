@@ -4,8 +4,9 @@
 // FlameHistogram) a run at a time. A hit's cell is scattered over a histogram larger than the
 // caches: it is prefetched when the hit is gathered and added up to kHitRun hits later, so that
 // the orbits' next steps hide the miss. flam3's rule for one hit is written once in scalar code
-// (addHits) and once on AVX2 registers (addHitsAvx2, FlameHitsAvx2.cpp), which gives the very
-// same sums (tests/core/test_flame_wave.cpp). Internal to src/core/flame.
+// (addHits), on AVX2 registers (addHitsAvx2, FlameHitsAvx2.cpp) and two hits a register on
+// AVX-512 (addHitsAvx512, FlameHitsAvx512.cpp), which give the very same sums
+// (tests/core/test_flame_wave.cpp). Internal to src/core/flame.
 
 #include <array>
 #include <cstddef>
@@ -63,6 +64,10 @@ void addHits(const FlameHits &hits, std::size_t n, const HitPalette &palette,
 // The same on AVX2 registers; call only where XformWave::available().
 void addHitsAvx2(const FlameHits &hits, std::size_t n, const HitPalette &palette,
                  std::array<std::uint32_t, 4> *cells);
+// The same two hits a register on AVX-512 (FlameHitsAvx512.cpp); call only where
+// XformWave::wide().
+void addHitsAvx512(const FlameHits &hits, std::size_t n, const HitPalette &palette,
+                   std::array<std::uint32_t, 4> *cells);
 
 // flam3's colour index of a hit: (int)(c 256) clamped to the palette, and for the linear mode
 // the fraction towards the next entry (the last pair for c >= 255/256, the first below 0).
