@@ -50,9 +50,12 @@ AWB_HITS_INLINE void addOne(const FlameHits &hits, std::size_t h, const HitPalet
 
 } // namespace
 
-void addHitsAvx512(const FlameHits &hits, std::size_t n, const HitPalette &palette,
+void addHitsAvx512(const FlameHits &hitsIn, std::size_t n, const HitPalette &paletteIn,
                    std::array<std::uint32_t, 4> *cells)
 {
+    // Copies the loop keeps in registers (the cells' stores could otherwise be any of them).
+    const FlameHits hits = hitsIn;
+    const HitPalette palette = paletteIn;
     const __m512d top = _mm512_set1_pd(4294967295.0);
     const __m512d zero = _mm512_setzero_pd();
     std::size_t h = 0;
