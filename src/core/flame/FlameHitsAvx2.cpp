@@ -5,7 +5,7 @@
 
 #if defined(__x86_64__) && defined(__AVX2__)
 
-#include <immintrin.h>
+#include "core/flame/FlameHitsVector.h"
 
 namespace awb::flame::detail {
 
@@ -19,18 +19,7 @@ void addHitsAvx2(const FlameHits &hits, std::size_t n, const HitPalette &palette
     const __m256d top = _mm256_set1_pd(4294967295.0);
     const __m256d zero = _mm256_setzero_pd();
     for (std::size_t h = 0; h < n; ++h) {
-        const PaletteIndex at = paletteIndexOf(hits.colour[h], palette.linear);
-        const double *lo = palette.dmap + 4 * at.i;
-        __m256d delta = _mm256_loadu_pd(lo);
-        if (palette.linear) {
-            const __m256d hi = _mm256_loadu_pd(lo + 4);
-            // lo (1 - frac) + hi frac, as the scalar rule (no fused multiply-add: the same
-            // roundings); the alpha sum keeps 255.
-            const __m256d mixed = _mm256_add_pd(_mm256_mul_pd(delta, _mm256_set1_pd(1.0 - at.frac)),
-                                                _mm256_mul_pd(hi, _mm256_set1_pd(at.frac)));
-            delta = _mm256_blend_pd(mixed, delta, 0x8);
-        }
-        delta = _mm256_mul_pd(_mm256_set1_pd(hits.opacity[h]), delta);
+        const __m256d delta = hitDelta(hits, h, palette);
         auto *cell = reinterpret_cast<std::uint32_t *>(cells + hits.cell[h]);  // no inline call
         const __m128i u = _mm_loadu_si128(reinterpret_cast<const __m128i *>(cell));
         __m256d sum = _mm256_add_pd(_mm256_cvtepi32_pd(_mm_xor_si128(u, bias)), half);

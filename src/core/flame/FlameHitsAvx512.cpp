@@ -9,28 +9,13 @@
 #if defined(__x86_64__) && defined(__AVX512F__) && defined(__AVX512DQ__) \
     && defined(__AVX512BW__) && defined(__AVX512VL__)
 
-#include <immintrin.h>
+#include "core/flame/FlameHitsVector.h"
 
 namespace awb::flame::detail {
 
 namespace {
 
 #define AWB_HITS_INLINE __attribute__((always_inline)) inline
-
-// The four sums a hit adds, times its opacity (two hits: one a half), as the AVX2 rule.
-AWB_HITS_INLINE __m256d deltaOf(const FlameHits &hits, std::size_t h, const HitPalette &palette)
-{
-    const PaletteIndex at = paletteIndexOf(hits.colour[h], palette.linear);
-    const double *lo = palette.dmap + 4 * at.i;
-    __m256d delta = _mm256_loadu_pd(lo);
-    if (palette.linear) {
-        const __m256d hi = _mm256_loadu_pd(lo + 4);
-        const __m256d mixed = _mm256_add_pd(_mm256_mul_pd(delta, _mm256_set1_pd(1.0 - at.frac)),
-                                            _mm256_mul_pd(hi, _mm256_set1_pd(at.frac)));
-        delta = _mm256_blend_pd(mixed, delta, 0x8);
-    }
-    return _mm256_mul_pd(_mm256_set1_pd(hits.opacity[h]), delta);
-}
 
 AWB_HITS_INLINE std::uint32_t *cellOf(std::array<std::uint32_t, 4> *cells, std::uint64_t k)
 {
@@ -43,7 +28,7 @@ AWB_HITS_INLINE void addOne(const FlameHits &hits, std::size_t h, const HitPalet
 {
     std::uint32_t *cell = cellOf(cells, hits.cell[h]);
     const __m128i u = _mm_loadu_si128(reinterpret_cast<const __m128i *>(cell));
-    __m256d sum = _mm256_add_pd(_mm256_cvtepu32_pd(u), deltaOf(hits, h, palette));
+    __m256d sum = _mm256_add_pd(_mm256_cvtepu32_pd(u), hitDelta(hits, h, palette));
     sum = _mm256_max_pd(_mm256_min_pd(sum, _mm256_set1_pd(4294967295.0)), _mm256_setzero_pd());
     _mm_storeu_si128(reinterpret_cast<__m128i *>(cell), _mm256_cvttpd_epu32(sum));
 }
@@ -66,8 +51,8 @@ void addHitsAvx512(const FlameHits &hitsIn, std::size_t n, const HitPalette &pal
             continue;
         }
         std::uint32_t *c0 = cellOf(cells, hits.cell[h]), *c1 = cellOf(cells, hits.cell[h + 1]);
-        const __m512d delta = _mm512_insertf64x4(_mm512_castpd256_pd512(deltaOf(hits, h, palette)),
-                                                 deltaOf(hits, h + 1, palette), 1);
+        const __m512d delta = _mm512_insertf64x4(_mm512_castpd256_pd512(hitDelta(hits, h, palette)),
+                                                 hitDelta(hits, h + 1, palette), 1);
         const __m256i u = _mm256_inserti128_si256(
             _mm256_castsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i *>(c0))),
             _mm_loadu_si128(reinterpret_cast<const __m128i *>(c1)), 1);
