@@ -92,10 +92,11 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
     WaveRandom random(seed, std::uint64_t(stream));
     const std::size_t nx = xf.maps.size();
     const std::size_t orbits = waveOrbits(samples, nx);
-    constexpr std::size_t W = XformWave::kWidth;
+    // A register's orbits: the game advances full ones first.
+    const std::size_t W = xf.wide ? XformWave::kWidth : 4;
 
     const std::size_t cap = orbits + kStackPadding;
-    static_assert(W <= kStackPadding);
+    static_assert(XformWave::kWidth <= kStackPadding);
     std::vector<double> sx(nx * cap), sy(nx * cap), sc(nx * cap);
     std::vector<OrbitCounters> sn(nx * cap);
     std::vector<std::uint32_t> top(nx, 0);
@@ -109,7 +110,7 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
     const AliasTable *rows = choice.rows.data();
     const bool xaos = choice.xaos;
     // The AVX-512 step's orbits left to the scalar one.
-    const bool wide = XformWave::wide();
+    const bool wide = xf.wide;
     std::vector<std::uint32_t> deferred(wide ? cap : 0);
     std::vector<double> deferredColour(wide ? cap : 0);
     std::vector<OrbitCounters> deferredCounters(wide ? cap : 0);

@@ -51,7 +51,8 @@ bool XformWave::vectorKernel(int id)
     }
 }
 
-XformWave::XformWave(const XformMap &map) : m_map(&map), m_vector(available()), m_wide(wide())
+XformWave::XformWave(const XformMap &map, bool wide)
+    : m_map(&map), m_vector(available()), m_wide(wide && XformWave::wide())
 {
 }
 

@@ -42,7 +42,10 @@ public:
     // Whether term `id` has a vector kernel (the others run lane by lane).
     static bool vectorKernel(int id);
 
-    explicit XformWave(const XformMap &map);
+    // `wide`: the eight-lane kernels where wide() holds (else the four-lane ones).
+    explicit XformWave(const XformMap &map, bool wide = true);
+    // Whether this wave runs the eight-lane kernels.
+    bool isWide() const { return m_wide; }
 
     // (qx[i], qy[i]) = map(x[i], y[i]) and bad[i] = whether that was a bad value (q then
     // flam3's replacement, a random point of [-1, 1]^2), for i < n. Each array holds n rounded
