@@ -182,11 +182,19 @@ private slots:
         const double towards = 0.5 * 0.25, keep = 0.5;
         std::vector<std::array<std::uint32_t, 4>> cells(std::size_t(frame.cellsX())
                                                         * std::size_t(frame.cellsY()));
-        const StepRule rule{towards, keep, 1.0, false, std::uint16_t(k + 1), false, 0, 1, 1,
-                            row.size(), row.uniform(), row.thresholds(), row.aliases(),
-                            plot.x0, plot.y1, plot.sx, plot.sy, plot.w, plot.h, plot.rotated,
-                            plot.cx, plot.cy, plot.r00, plot.r01, plot.r10, plot.r11,
-                            reinterpret_cast<const char *>(cells.data()), 16};
+        const StepRule rule{.towards = towards,
+                            .keep = keep,
+                            .opacity = 1.0,
+                            .opacityByChance = false,
+                            .last = std::uint16_t(k + 1),
+                            .final = false,
+                            .finalTowards = 0,
+                            .finalKeep = 1,
+                            .finalOpacity = 1,
+                            .next = {row.size(), row.uniform(), row.thresholds(), row.aliases()},
+                            .camera = plot.numbers(),
+                            .prefetch = reinterpret_cast<const char *>(cells.data()),
+                            .stride = 16};
         const StepOrbits in{qx.data(), qy.data(), bad.data(), nullptr, nullptr,
                             sc.data() + k * cap, sn.data() + k * cap, m};
         HitBuffer hits;

@@ -172,13 +172,20 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
             const AliasTable &row = rows[xaos ? k + 1 : 0];
             const StepOrbits orbits{px, py, isBad, finalWave ? fx : nullptr,
                                     finalWave ? fy : nullptr, colours, counters, m};
-            const StepRule rule{xf.speed[k] * xf.colour[k], 1.0 - xf.speed[k], opacity,
-                                Sink::kOpacityByChance, std::uint16_t(last), finalWave != nullptr,
-                                finalTowards, finalKeep, finalOpacity, row.size(), row.uniform(),
-                                row.thresholds(), row.aliases(), plot.x0, plot.y1, plot.sx,
-                                plot.sy, plot.w, plot.h, plot.rotated, plot.cx, plot.cy,
-                                plot.r00, plot.r01, plot.r10, plot.r11, sink.prefetchBase(),
-                                sizeof(std::array<std::uint32_t, 4>)};
+            const StepRule rule{.towards = xf.speed[k] * xf.colour[k],
+                                .keep = 1.0 - xf.speed[k],
+                                .opacity = opacity,
+                                .opacityByChance = Sink::kOpacityByChance,
+                                .last = std::uint16_t(last),
+                                .final = finalWave != nullptr,
+                                .finalTowards = finalTowards,
+                                .finalKeep = finalKeep,
+                                .finalOpacity = finalOpacity,
+                                .next = {row.size(), row.uniform(), row.thresholds(),
+                                         row.aliases()},
+                                .camera = plot.numbers(),
+                                .prefetch = sink.prefetchBase(),
+                                .stride = sizeof(std::array<std::uint32_t, 4>)};
             StepOut out{hits, deferred.data(), deferredColour.data(), deferredCounters.data()};
             stepAvx512(orbits, rule, st, random.step, out);
             drawn = out.drawn;

@@ -7,6 +7,7 @@
 #include "core/flame/Flame.h"
 #include "core/flame/FlameChaos.h"
 #include "core/flame/FlameHits.h"
+#include "core/flame/FlameStep.h"
 #include "core/flame/Variations.h"
 #include "core/flame/XformWave.h"
 #include "core/ifs/Random.h"
@@ -71,6 +72,11 @@ struct Plot {
             r10 = -r01;
             r11 = r00;
         }
+    }
+    // The same numbers for the AVX-512 step (FlameStep.h).
+    StepCamera numbers() const
+    {
+        return {x0, y1, sx, sy, w, h, rotated, cx, cy, r00, r01, r10, r11};
     }
     // The cell of a point, or -1 off the frame.
     std::ptrdiff_t cell(double x, double y) const

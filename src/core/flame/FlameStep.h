@@ -60,24 +60,34 @@ struct StepOrbits {
     std::size_t m;
 };
 
-// What the step does with them: xform k's colour move and opacity, the final xform's, the
-// next-xform table (xform k's xaos row, or the weights), the camera (Plot's numbers) and the
-// sink's rule for an opacity (drawn with that probability, or drawn whenever it is not 0 and
-// weighed by it).
+// The camera as numbers (FlameGame.h's Plot: world to cells, rotated about the centre).
+struct StepCamera {
+    double x0, y1, sx, sy;
+    int w, h;
+    bool rotated;
+    double cx, cy, r00, r01, r10, r11;
+};
+
+// An alias table (Random.h's AliasTable: n columns, uniform or by thresholds and aliases).
+struct StepTable {
+    int n;
+    bool uniform;
+    const std::uint64_t *threshold;
+    const int *alias;
+};
+
+// What the step does with them: xform k's colour move and opacity, the sink's rule for an
+// opacity (drawn with that probability, or drawn whenever it is not 0 and weighed by it), the
+// final xform's colour move and opacity, the next-xform table (xform k's xaos row, or the
+// weights; any number of columns), the camera, and the sink's cells to prefetch.
 struct StepRule {
     double towards, keep, opacity;
     bool opacityByChance;
     std::uint16_t last;  // k + 1
     bool final;
     double finalTowards, finalKeep, finalOpacity;
-    int n;
-    bool uniform;
-    const std::uint64_t *threshold;
-    const int *alias;
-    double x0, y1, sx, sy;
-    int w, h;
-    bool rotated;
-    double cx, cy, r00, r01, r10, r11;
+    StepTable next;
+    StepCamera camera;
     const char *prefetch;  // the sink's cells (hit cell i at prefetch + i stride), or null
     std::size_t stride;    // a power of two
 };

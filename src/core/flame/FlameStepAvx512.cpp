@@ -59,26 +59,26 @@ void stepAvx512(const StepOrbits &o, const StepRule &r, const Stacks &st,
     const __m512d finalTowards = _mm512_set1_pd(r.finalTowards);
     const __m512d finalKeep = _mm512_set1_pd(r.finalKeep);
     const __m512d finalOpacity = _mm512_set1_pd(r.finalOpacity);
-    const __m512d x0 = _mm512_set1_pd(r.x0), y1 = _mm512_set1_pd(r.y1);
-    const __m512d sx = _mm512_set1_pd(r.sx), sy = _mm512_set1_pd(r.sy);
-    const __m512d wd = _mm512_set1_pd(r.w), hd = _mm512_set1_pd(r.h);
+    const __m512d x0 = _mm512_set1_pd(r.camera.x0), y1 = _mm512_set1_pd(r.camera.y1);
+    const __m512d sx = _mm512_set1_pd(r.camera.sx), sy = _mm512_set1_pd(r.camera.sy);
+    const __m512d wd = _mm512_set1_pd(r.camera.w), hd = _mm512_set1_pd(r.camera.h);
     const __m512d zero = _mm512_setzero_pd();
-    const __m512i wi = _mm512_set1_epi64(r.w);
+    const __m512i wi = _mm512_set1_epi64(r.camera.w);
     const __m512i clearedFields =
         _mm512_set1_epi64((std::int64_t(0xffff) << 32) | (std::int64_t(0xff) << 24));
     const __m512i lastBits = _mm512_set1_epi64(std::int64_t(r.last) << 32);
     const __m512i one = _mm512_set1_epi64(1);
     const __m512i togoField = _mm512_set1_epi64(0xffff);
     const __m512i fuseField = _mm512_set1_epi64(std::int64_t(0xff) << 16);
-    const __m512i columns = _mm512_set1_epi64(r.n);
+    const __m512i columns = _mm512_set1_epi64(r.next.n);
     const __m512i low32 = _mm512_set1_epi64(0xffffffffLL);
     // The alias table in registers for up to 16 columns (8 a register).
     __m512i thr0 = _mm512_setzero_si512(), thr1 = thr0, ali0 = thr0, ali1 = thr0;
-    if (!r.uniform && r.n <= 16) {
+    if (!r.next.uniform && r.next.n <= 16) {
         alignas(64) std::int64_t t[16] = {}, a[16] = {};
-        for (int i = 0; i < r.n; ++i) {
-            t[i] = std::int64_t(r.threshold[i]);
-            a[i] = r.alias[i];
+        for (int i = 0; i < r.next.n; ++i) {
+            t[i] = std::int64_t(r.next.threshold[i]);
+            a[i] = r.next.alias[i];
         }
         thr0 = _mm512_load_si512(t);
         thr1 = _mm512_load_si512(t + 8);
@@ -89,7 +89,7 @@ void stepAvx512(const StepOrbits &o, const StepRule &r, const Stacks &st,
     const bool never = r.opacity == 0 || (r.opacityByChance && !(r.opacity > 0));
     const bool chance = r.opacityByChance && r.opacity != 1.0 && !never;
     const bool byChanceFinal = r.final && r.finalOpacity != 1.0;
-    const bool few = r.n <= 4;
+    const bool few = r.next.n <= 4;
     const __m512i base =
         _mm512_set1_epi64(std::int64_t(reinterpret_cast<std::uintptr_t>(r.prefetch)));
     // A cell's bytes (a power of two) as a shift.
@@ -147,15 +147,15 @@ void stepAvx512(const StepOrbits &o, const StepRule &r, const Stacks &st,
                 hy = _mm512_mask_loadu_pd(hy, fin, o.fy + j);
                 hc = _mm512_mask_mov_pd(hc, fin, _mm512_fmadd_pd(finalKeep, colour, finalTowards));
             }
-            if (r.rotated) {
-                const __m512d dx = _mm512_sub_pd(hx, _mm512_set1_pd(r.cx));
-                const __m512d dy = _mm512_sub_pd(hy, _mm512_set1_pd(r.cy));
-                hx = _mm512_add_pd(_mm512_fmadd_pd(dx, _mm512_set1_pd(r.r00),
-                                                   _mm512_mul_pd(dy, _mm512_set1_pd(r.r01))),
-                                   _mm512_set1_pd(r.cx));
-                hy = _mm512_add_pd(_mm512_fmadd_pd(dx, _mm512_set1_pd(r.r10),
-                                                   _mm512_mul_pd(dy, _mm512_set1_pd(r.r11))),
-                                   _mm512_set1_pd(r.cy));
+            if (r.camera.rotated) {
+                const __m512d dx = _mm512_sub_pd(hx, _mm512_set1_pd(r.camera.cx));
+                const __m512d dy = _mm512_sub_pd(hy, _mm512_set1_pd(r.camera.cy));
+                hx = _mm512_add_pd(_mm512_fmadd_pd(dx, _mm512_set1_pd(r.camera.r00),
+                                                   _mm512_mul_pd(dy, _mm512_set1_pd(r.camera.r01))),
+                                   _mm512_set1_pd(r.camera.cx));
+                hy = _mm512_add_pd(_mm512_fmadd_pd(dx, _mm512_set1_pd(r.camera.r10),
+                                                   _mm512_mul_pd(dy, _mm512_set1_pd(r.camera.r11))),
+                                   _mm512_set1_pd(r.camera.cy));
             }
             const __m512d u = _mm512_mul_pd(_mm512_sub_pd(hx, x0), sx);
             const __m512d v = _mm512_mul_pd(_mm512_add_pd(hy, y1), sy);
@@ -187,18 +187,18 @@ void stepAvx512(const StepOrbits &o, const StepRule &r, const Stacks &st,
         // The next xform: flam3's choice by the row (AliasTable::pick on eight draws).
         const __m512i draw = rng.next();
         __m512i to = _mm512_srli_epi64(_mm512_mul_epu32(_mm512_srli_epi64(draw, 32), columns), 32);
-        if (!r.uniform) {
+        if (!r.next.uniform) {
             __m512i thr, ali;
-            if (r.n <= 8) {
+            if (r.next.n <= 8) {
                 thr = _mm512_permutexvar_epi64(to, thr0);
                 ali = _mm512_permutexvar_epi64(to, ali0);
-            } else if (r.n <= 16) {
+            } else if (r.next.n <= 16) {
                 thr = _mm512_permutex2var_epi64(thr0, to, thr1);
                 ali = _mm512_permutex2var_epi64(ali0, to, ali1);
             } else {
-                thr = _mm512_i64gather_epi64(to, reinterpret_cast<const long long *>(r.threshold),
-                                             8);
-                ali = _mm512_cvtepi32_epi64(_mm512_i64gather_epi32(to, r.alias, 4));
+                const auto *threshold = reinterpret_cast<const long long *>(r.next.threshold);
+                thr = _mm512_i64gather_epi64(to, threshold, 8);
+                ali = _mm512_cvtepi32_epi64(_mm512_i64gather_epi32(to, r.next.alias, 4));
             }
             const __mmask8 column =
                 _mm512_cmplt_epu64_mask(_mm512_and_si512(draw, low32), thr);
@@ -217,7 +217,7 @@ void stepAvx512(const StepOrbits &o, const StepRule &r, const Stacks &st,
             top[k] += std::uint32_t(__builtin_popcount(same));
         };
         if (few) {
-            for (int k = 0; k < r.n; ++k)
+            for (int k = 0; k < r.next.n; ++k)
                 push(std::uint64_t(k), _mm512_mask_cmpeq_epi64_mask(go, to, _mm512_set1_epi64(k)));
         } else {
             alignas(64) std::uint64_t target[8];
