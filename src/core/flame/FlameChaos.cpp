@@ -472,7 +472,11 @@ FlameStats accumulateFlameColours(const FlameRaster &job, FlameHistogram &out,
     const FlameStats stats = playStreams(job, control, [&](int t) {
         FlameHistogram &h = t == 0 ? out : parts[std::size_t(t - 1)];
         h.cells.assign(cells, {0, 0, 0, 0});
-        ColourSink sink{h, palette, XformWave::wide() ? 2 : XformWave::available() ? 1 : 0, {}};
+        using Adds = ColourSink::Adds;
+        const Adds adds = XformWave::wide()        ? Adds::Avx512
+                          : XformWave::available() ? Adds::Avx2
+                                                   : Adds::Scalar;
+        ColourSink sink{h, palette, adds, {}};
         sink.hits.resize(2 * kHitRun);
         return sink;
     });

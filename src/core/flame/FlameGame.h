@@ -175,7 +175,7 @@ struct LabelSink {
 struct ColourSink {
     FlameHistogram &histogram;
     HitPalette palette;
-    int vector;  // 0: addHits, 1: addHitsAvx2, 2: addHitsAvx512
+    enum class Adds { Scalar, Avx2, Avx512 } adds;  // addHits, addHitsAvx2, addHitsAvx512
     HitBuffer hits;
     std::size_t count = 0;
 
@@ -204,12 +204,17 @@ struct ColourSink {
     // The hits gathered, in the order they came (a cell takes its sums in hit order).
     void flush()
     {
-        if (vector == 2)
+        switch (adds) {
+        case Adds::Avx512:
             addHitsAvx512(hits.hits(), count, palette, histogram.cells.data());
-        else if (vector == 1)
+            break;
+        case Adds::Avx2:
             addHitsAvx2(hits.hits(), count, palette, histogram.cells.data());
-        else
+            break;
+        case Adds::Scalar:
             addHits(hits.hits(), count, palette, histogram.cells.data());
+            break;
+        }
         count = 0;
     }
 };

@@ -35,15 +35,16 @@ struct FlameHits {
 // The arrays of FlameHits, with a register's padding after them (the AVX-512 step writes whole
 // registers; the lanes beyond its hits are overwritten by the next ones or ignored).
 struct HitBuffer {
+    static constexpr std::size_t kPadding = 8;  // one AVX-512 register of hits
     std::vector<double> colour, opacity;
     std::vector<std::uint64_t> cell;
 
-    std::size_t size() const { return colour.empty() ? 0 : colour.size() - 8; }
+    std::size_t size() const { return colour.empty() ? 0 : colour.size() - kPadding; }
     void resize(std::size_t n)
     {
-        colour.resize(n + 8);
-        opacity.resize(n + 8);
-        cell.resize(n + 8);
+        colour.resize(n + kPadding);
+        opacity.resize(n + kPadding);
+        cell.resize(n + kPadding);
     }
     FlameHits hits() { return {colour.data(), opacity.data(), cell.data()}; }
 };

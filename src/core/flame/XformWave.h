@@ -44,8 +44,6 @@ public:
 
     // `wide`: the eight-lane kernels where wide() holds (else the four-lane ones).
     explicit XformWave(const XformMap &map, bool wide = true);
-    // Whether this wave runs the eight-lane kernels.
-    bool isWide() const { return m_wide; }
 
     // (qx[i], qy[i]) = map(x[i], y[i]) and bad[i] = whether that was a bad value (q then
     // flam3's replacement, a random point of [-1, 1]^2), for i < n. Each array holds n rounded
