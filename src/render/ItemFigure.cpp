@@ -131,8 +131,11 @@ void writeOwnPicture(const QString &itemName, const DerivedIfs &d, const FigureS
         fail(FigureTr::tr("the rendering was cancelled"));
     // The project inside, as every figure: File > Open of the PNG opens it.
     addPngText(image, metadata);
-    if (!image.save(outFile, "png"))
-        fail(FigureTr::tr("cannot write %1").arg(outFile));
+    // As every figure: zlib level 1, the whole file written at once.
+    QString error;
+    if (!writeFigureFile(outFile, [&](QIODevice &out, QString *) { return writePng(image, out); },
+                         &error))
+        fail(error);
 }
 
 } // namespace
