@@ -5,7 +5,8 @@
 //    columns (the table in one register, in two, gathered), a rotated camera: every ordinary
 //    orbit lands on the stack that AliasTable::pick gives for its lane's draw, with its point,
 //    moved colour and counted counters; every hit is Plot's cell of the point with that colour,
-//    in orbit order; the rare orbits are left to the scalar step exactly, as they came;
+//    in orbit order (with its colour, or its row of whole deltas: the xform's table and the
+//    colour's palette index); the rare orbits are left to the scalar step exactly, as they came;
 //  - whole flames (a final xform with its opacity, xaos, an xform's opacity; 12 xforms with
 //    weights and a rotation; 16 of equal weight, the most that run wide): the histograms of the
 //    wide step and of the AVX2 step (engine::forceAvx2Kernels) with the same samples, the same
@@ -129,12 +130,15 @@ private slots:
         QTest::addColumn<bool>("weights");
         QTest::addColumn<double>("rotate");
         QTest::addColumn<int>("orbits");
-        QTest::newRow("one xform (uniform), 61 orbits") << 1 << false << 0.0 << 61;
-        QTest::newRow("3 xforms in a register, 7 orbits") << 3 << true << 0.0 << 7;
-        QTest::newRow("3 xforms, 40 orbits") << 3 << true << 0.0 << 40;
-        QTest::newRow("12 xforms in two registers, rotated") << 12 << true << 30.0 << 53;
-        QTest::newRow("40 xforms gathered") << 40 << true << 0.0 << 48;
-        QTest::newRow("40 xforms of equal weight") << 40 << false << -15.0 << 33;
+        QTest::addColumn<bool>("whole");  // hits as rows of whole deltas (FlameHits::entry)
+        QTest::newRow("one xform (uniform), 61 orbits") << 1 << false << 0.0 << 61 << false;
+        QTest::newRow("3 xforms in a register, 7 orbits") << 3 << true << 0.0 << 7 << false;
+        QTest::newRow("3 xforms, 40 orbits") << 3 << true << 0.0 << 40 << false;
+        QTest::newRow("3 xforms, 40 orbits, hits as rows") << 3 << true << 0.0 << 40 << true;
+        QTest::newRow("12 xforms in two registers, rotated") << 12 << true << 30.0 << 53 << false;
+        QTest::newRow("12 xforms, rotated, hits as rows") << 12 << true << 30.0 << 53 << true;
+        QTest::newRow("40 xforms gathered") << 40 << true << 0.0 << 48 << false;
+        QTest::newRow("40 xforms of equal weight") << 40 << false << -15.0 << 33 << false;
     }
 
     void stepAsTheScalarStep()
@@ -143,6 +147,7 @@ private slots:
         QFETCH(bool, weights);
         QFETCH(double, rotate);
         QFETCH(int, orbits);
+        QFETCH(bool, whole);
         const Flame f = flameOf(columns, weights, rotate);
         const RasterFrame frame = flameFrame(f);
         const Plot plot(f, frame);
@@ -186,6 +191,7 @@ private slots:
                             .keep = keep,
                             .opacity = 1.0,
                             .opacityByChance = false,
+                            .table = whole ? 768u : 0u,
                             .last = std::uint16_t(k + 1),
                             .final = false,
                             .finalTowards = 0,
@@ -202,7 +208,8 @@ private slots:
         std::vector<std::uint32_t> deferred(cap);
         std::vector<double> deferredColour(cap);
         std::vector<OrbitCounters> deferredCounters(cap);
-        StepOut out{hits.hits(), deferred.data(), deferredColour.data(), deferredCounters.data()};
+        StepOut out{hits.hits(whole), deferred.data(), deferredColour.data(),
+                    deferredCounters.data()};
         std::uint64_t state[4][8];
         for (int w = 0; w < 4; ++w)
             for (int j = 0; j < 8; ++j)
@@ -268,6 +275,14 @@ private slots:
         QVERIFY(!expectedHits.empty());
         for (std::size_t i = 0; i < expectedHits.size(); ++i) {
             QCOMPARE(std::size_t(hits.cell[i]), expectedHits[i].cell);
+            if (whole) {  // the xform's table + the colour's palette index (step palette)
+                const double c = expectedHits[i].colour;
+                const std::uint32_t row = 768u + std::uint32_t(paletteIndexOf(c, false).i);
+                // (the step's colour is a fused multiply-add: one ulp from c at most)
+                QVERIFY(hits.entry[i] == row
+                        || std::fabs(c * 256 - std::round(c * 256)) <= 1e-12);
+                continue;
+            }
             QCOMPARE(hits.opacity[i], 1.0);
             QVERIFY(std::fabs(hits.colour[i] - expectedHits[i].colour) <= 1e-15);
         }

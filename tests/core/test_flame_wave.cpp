@@ -16,7 +16,11 @@
 //  - the histogram's adds (FlameHits.h) on AVX2 registers, and two hits a register on AVX-512
 //    (hits on one cell side by side among them), against the scalar rule and flam3's
 //    bump_no_overflow written out here: the very same sums, step and linear palettes, at 0 and
-//    at 2^32 - 1.
+//    at 2^32 - 1;
+//  - the adds of whole deltas (HitDeltas: the step palette's rows for each opacity) against the
+//    same rule on the hits' colours and opacities, to the unit, and the deltas refused where
+//    they are not whole-safe (linear palette, a negative or NaN opacity, a fraction within
+//    2^-20 of 1 -- there the double sum rounds up -- more than 16 opacities).
 // Skipped only where the processor has no AVX2 (the wave does not run there).
 #include "core/flame/FlameChaos.h"
 #include "core/flame/FlameHits.h"
@@ -387,7 +391,7 @@ private slots:
         for (std::size_t h = 0; h < n; ++h) {
             const double c = h % 3 == 0 ? colours[h / 3 % 7] : uniform(0, 1);
             const double o = h % 5 == 4 ? -0.5 : opacities[h / 5 % 4];
-            hits.put(h, c, o, std::size_t(gen() % 37));  // cells hit many times
+            hits.put(h, c, o, std::size_t(gen() % 37), 0);  // cells hit many times
         }
         for (const bool linear : {false, true}) {
             std::vector<std::array<std::uint32_t, 4>> start(37);
@@ -447,6 +451,80 @@ private slots:
             }
             QVERIFY(held > 0);  // some sums reached 2^32 - 1
         }
+    }
+
+    void wholeAddsAsTheRule()
+    {
+        using namespace awb::flame::detail;
+        std::mt19937_64 gen(11);
+        auto uniform = [&](double a, double b) {
+            return std::uniform_real_distribution<double>(a, b)(gen);
+        };
+        std::vector<double> dmap(4 * 256);
+        for (int i = 0; i < 256; ++i) {
+            for (int c = 0; c < 3; ++c)
+                dmap[std::size_t(4 * i + c)] = 255.0 * (i == 9 ? 0.0 : uniform(0, 1));
+            dmap[std::size_t(4 * i + 3)] = 255.0;
+        }
+        const HitPalette palette{dmap.data(), false};
+        // Xforms' opacities: two share a table; 3.0 and 1e9 make sums held at 2^32 - 1.
+        const std::vector<double> opacities{1.0, 0.6, 1.0, 0.25, 3.0, 1e9};
+        const HitDeltas deltas = HitDeltas::of(palette, opacities);
+        QVERIFY(!deltas.empty());
+        QCOMPARE(deltas.rows.size(), std::size_t(5 * 256));
+        QCOMPARE(deltas.table[2], deltas.table[0]);
+        const double colours[] = {0.0, 1.0, 255.0 / 256, 9.0 / 256, -0.2, 1.3, 9.5 / 256};
+        const std::size_t n = 6000, cellCount = 41;
+        HitBuffer plain, whole;
+        plain.resize(n);
+        whole.resize(n);
+        const FlameHits a = plain.hits(), b = whole.hits(true);
+        QVERIFY(a.entry == nullptr && b.entry != nullptr);
+        for (std::size_t h = 0; h < n; ++h) {
+            const double c = h % 3 == 0 ? colours[h / 3 % 7] : uniform(0, 1);
+            const std::size_t k = h % 97 == 0 ? 5 : std::size_t(gen() % 5);
+            const std::size_t cell = std::size_t(gen() % cellCount);
+            a.put(h, c, opacities[k], cell, deltas.table[k]);
+            b.put(h, c, opacities[k], cell, deltas.table[k]);
+        }
+        std::vector<std::array<std::uint32_t, 4>> start(cellCount);
+        for (std::size_t i = 0; i < start.size(); ++i)
+            for (std::uint32_t &v : start[i])
+                v = i % 4 == 0 ? UINT_MAX - std::uint32_t(gen() % 40000)
+                               : std::uint32_t(gen() % 100000);
+        auto rule = start, scalar = start, wide = start;
+        addHits(a, n, palette, rule.data());
+        addHitsWhole(b, n, deltas, scalar.data());
+        if (XformWave::wide())
+            addHitsWholeAvx512(b, n, deltas, wide.data());
+        else
+            wide = rule;
+        int held = 0;
+        for (std::size_t i = 0; i < cellCount; ++i) {
+            QCOMPARE(scalar[i], rule[i]);
+            QCOMPARE(wide[i], rule[i]);
+            held += rule[i][0] == UINT_MAX;
+        }
+        QVERIFY(held > 0);
+
+        // Where a whole delta would not give the rule's sums: refused.
+        QVERIFY(HitDeltas::of({dmap.data(), true}, opacities).empty());  // linear palette
+        QVERIFY(HitDeltas::of(palette, {1.0, -0.5}).empty());
+        QVERIFY(HitDeltas::of(palette, {1.0, std::nan("")}).empty());
+        std::vector<double> many;
+        for (int i = 0; i < 17; ++i)
+            many.push_back(1.0 - i / 64.0);
+        QVERIFY(HitDeltas::of(palette, many).empty());
+        many.pop_back();
+        QVERIFY(!HitDeltas::of(palette, many).empty());
+        // A delta of 2 - 2^-23: 3e9 + it rounds to 3e9 + 2 in doubles, so the rule gives one
+        // more than 3e9 + floor(delta).
+        auto nearWhole = dmap;
+        nearWhole[4 * 200 + 1] = 2.0 - 1.0 / (1 << 23);
+        QCOMPARE(std::uint32_t(3e9 + nearWhole[4 * 200 + 1]), std::uint32_t(3000000002u));
+        QVERIFY(HitDeltas::of({nearWhole.data(), false}, {1.0}).empty());
+        nearWhole[4 * 200 + 1] = 2.0 - 1.0 / (1 << 19);  // far enough from 2
+        QVERIFY(!HitDeltas::of({nearWhole.data(), false}, {1.0}).empty());
     }
 };
 

@@ -167,6 +167,7 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
         const OrbitCounters *counters = st.n + base;
         std::uint64_t offscreen = 0;
         const double opacity = xf.opacity[k];
+        const std::uint32_t table = sink.table(k);
         const int last = int(k) + 1;
         if (wide) {  // eight orbits a register; the rare ones left to the loop below
             const AliasTable &row = rows[xaos ? k + 1 : 0];
@@ -176,6 +177,7 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
                                 .keep = 1.0 - xf.speed[k],
                                 .opacity = opacity,
                                 .opacityByChance = Sink::kOpacityByChance,
+                                .table = table,
                                 .last = std::uint16_t(last),
                                 .final = finalWave != nullptr,
                                 .finalTowards = finalTowards,
@@ -234,7 +236,7 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
                         ++offscreen;
                     } else {
                         sink.prefetch(std::size_t(cell));
-                        hits.put(drawn++, hc, opacity, std::size_t(cell));
+                        hits.put(drawn++, hc, opacity, std::size_t(cell), table);
                     }
                 }
                 if (--n.togo == 0) {
@@ -462,6 +464,11 @@ FlameStats accumulateFlameColours(const FlameRaster &job, FlameHistogram &out,
             dmap[4 * i + 3] = 255.0;
         }
     const HitPalette palette{dmap.data(), flame && flame->paletteMode == PaletteMode::Linear};
+    std::vector<double> opacities;
+    if (flame)
+        for (const FlameXform &x : flame->xforms)
+            opacities.push_back(x.opacity);
+    const HitDeltas deltas = HitDeltas::of(palette, opacities);
     const int threads = std::clamp(job.threads, 1, kChaosStreams);
     const std::size_t cells = std::size_t(job.frame.cellsX()) * std::size_t(job.frame.cellsY());
     std::vector<FlameHistogram> own;
@@ -476,7 +483,7 @@ FlameStats accumulateFlameColours(const FlameRaster &job, FlameHistogram &out,
         const Adds adds = XformWave::wide()        ? Adds::Avx512
                           : XformWave::available() ? Adds::Avx2
                                                    : Adds::Scalar;
-        ColourSink sink{h, palette, adds, {}};
+        ColourSink sink{h, palette, adds, deltas.empty() ? nullptr : &deltas, {}};
         sink.hits.resize(2 * kHitRun);
         return sink;
     });

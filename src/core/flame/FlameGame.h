@@ -154,6 +154,7 @@ struct LabelSink {
     }
     void prefetch(std::size_t) const {}
     const char *prefetchBase() const { return nullptr; }
+    std::uint32_t table(std::size_t) const { return 0; }
     FlameHits room(std::size_t m)
     {
         if (hits.size() < m)
@@ -172,10 +173,13 @@ struct LabelSink {
 // Where flam3's buckets take a hit (rect.c, iter_thread): gathered in runs of about kHitRun
 // (FlameHits.h), each cell prefetched when its hit comes and added when the run is full -- by
 // addHits, or on AVX2 or AVX-512 registers where the wave's kernels of that width run.
+// With whole deltas (HitDeltas: the step palette, as most flames), a hit is its cell and row
+// of them, added by addHitsWhole (or its AVX-512 form).
 struct ColourSink {
     FlameHistogram &histogram;
     HitPalette palette;
     enum class Adds { Scalar, Avx2, Avx512 } adds;  // addHits, addHitsAvx2, addHitsAvx512
+    const HitDeltas *deltas;                        // null: the hits' colours and opacities
     HitBuffer hits;
     std::size_t count = 0;
 
@@ -186,6 +190,8 @@ struct ColourSink {
     {
         return reinterpret_cast<const char *>(histogram.cells.data());
     }
+    // Xform k's first row of the whole deltas.
+    std::uint32_t table(std::size_t k) const { return deltas ? deltas->table[k] : 0; }
     FlameHits room(std::size_t m)
     {
         if (count + m > hits.size()) {
@@ -193,7 +199,7 @@ struct ColourSink {
             if (m > hits.size())
                 hits.resize(m);
         }
-        return hits.hits().from(count);
+        return hits.hits(deltas != nullptr).from(count);
     }
     void take(std::size_t n)
     {
@@ -204,6 +210,14 @@ struct ColourSink {
     // The hits gathered, in the order they came (a cell takes its sums in hit order).
     void flush()
     {
+        if (deltas) {
+            if (adds == Adds::Avx512)
+                addHitsWholeAvx512(hits.hits(true), count, *deltas, histogram.cells.data());
+            else
+                addHitsWhole(hits.hits(true), count, *deltas, histogram.cells.data());
+            count = 0;
+            return;
+        }
         switch (adds) {
         case Adds::Avx512:
             addHitsAvx512(hits.hits(), count, palette, histogram.cells.data());

@@ -4,6 +4,7 @@
 #include "core/render/EngineShared.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -31,6 +32,49 @@ void addHits(const FlameHits &hits, std::size_t n, const HitPalette &palette,
     }
 }
 
+HitDeltas HitDeltas::of(const HitPalette &palette, const std::vector<double> &opacities)
+{
+    HitDeltas d;
+    if (palette.linear)
+        return d;
+    std::vector<double> distinct;
+    for (const double o : opacities) {
+        const auto at = std::find(distinct.begin(), distinct.end(), o);
+        if (at == distinct.end() && distinct.size() == kMostTables)
+            return d;
+        d.table.push_back(std::uint32_t(256 * (at - distinct.begin())));
+        if (at == distinct.end())
+            distinct.push_back(o);
+    }
+    constexpr double top = double(std::numeric_limits<std::uint32_t>::max());
+    constexpr double margin = 1.0 / (1 << 20);
+    d.rows.resize(256 * distinct.size());
+    for (std::size_t t = 0; t < distinct.size(); ++t)
+        for (std::size_t i = 0; i < 256; ++i)
+            for (std::size_t c = 0; c < 4; ++c) {
+                const double delta = distinct[t] * palette.dmap[4 * i + c];  // as addHits
+                std::uint32_t whole = std::numeric_limits<std::uint32_t>::max();
+                if (!(delta >= 0))
+                    return {};
+                if (delta < top) {
+                    const double floor = std::floor(delta);
+                    if (delta - floor > 1.0 - margin)
+                        return {};
+                    whole = std::uint32_t(floor);
+                }
+                d.rows[256 * t + i][c] = whole;
+            }
+    return d;
+}
+
+void addHitsWhole(const FlameHits &hits, std::size_t n, const HitDeltas &deltas,
+                  std::array<std::uint32_t, 4> *cells)
+{
+    const std::array<std::uint32_t, 4> *rows = deltas.rows.data();
+    for (std::size_t h = 0; h < n; ++h)
+        addWhole(cells[hits.cell[h]].data(), rows[hits.entry[h]].data());
+}
+
 #if !defined(AWB_AVX2_KERNELS)
 void addHitsAvx2(const FlameHits &, std::size_t, const HitPalette &, std::array<std::uint32_t, 4> *)
 {
@@ -41,6 +85,12 @@ void addHitsAvx512(const FlameHits &, std::size_t, const HitPalette &,
                    std::array<std::uint32_t, 4> *)
 {
     throw std::logic_error("addHitsAvx512: no vector kernels on this platform");
+}
+
+void addHitsWholeAvx512(const FlameHits &, std::size_t, const HitDeltas &,
+                        std::array<std::uint32_t, 4> *)
+{
+    throw std::logic_error("addHitsWholeAvx512: no vector kernels on this platform");
 }
 #endif
 

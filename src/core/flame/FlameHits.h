@@ -17,19 +17,22 @@ namespace awb::flame::detail {
 
 // Hits side by side: hit h's colour coordinate (0..1), opacity (the xform's: flam3's logvis
 // times its opacity) and cell at index h of each array -- so that the AVX-512 step writes a
-// register of them at once.
+// register of them at once. Where the sink adds whole deltas (HitDeltas), `entry` is not null
+// and a hit is its cell and its row of the deltas (its xform's table + its palette index) in
+// place of its colour and opacity.
 struct FlameHits {
     double *colour;
     double *opacity;
     std::uint64_t *cell;
+    std::uint32_t *entry = nullptr;
 
-    void put(std::size_t h, double c, double o, std::size_t k) const
+    // `table`: the first row of the hit's xform's deltas (used only where `entry` is set).
+    [[gnu::always_inline]] inline void put(std::size_t h, double c, double o, std::size_t k,
+                                           std::uint32_t table) const;
+    FlameHits from(std::size_t h) const
     {
-        colour[h] = c;
-        opacity[h] = o;
-        cell[h] = k;
+        return {colour + h, opacity + h, cell + h, entry ? entry + h : nullptr};
     }
-    FlameHits from(std::size_t h) const { return {colour + h, opacity + h, cell + h}; }
 };
 
 // The arrays of FlameHits, with a register's padding after them (the AVX-512 step writes whole
@@ -38,6 +41,7 @@ struct HitBuffer {
     static constexpr std::size_t kPadding = 8;  // one AVX-512 register of hits
     std::vector<double> colour, opacity;
     std::vector<std::uint64_t> cell;
+    std::vector<std::uint32_t> entry;
 
     std::size_t size() const { return colour.empty() ? 0 : colour.size() - kPadding; }
     void resize(std::size_t n)
@@ -45,8 +49,13 @@ struct HitBuffer {
         colour.resize(n + kPadding);
         opacity.resize(n + kPadding);
         cell.resize(n + kPadding);
+        entry.resize(n + kPadding);
     }
-    FlameHits hits() { return {colour.data(), opacity.data(), cell.data()}; }
+    // `whole`: the hits as rows of whole deltas (FlameHits::entry).
+    FlameHits hits(bool whole = false)
+    {
+        return {colour.data(), opacity.data(), cell.data(), whole ? entry.data() : nullptr};
+    }
 };
 
 inline constexpr std::size_t kHitRun = 256;
@@ -92,5 +101,51 @@ struct PaletteIndex {
         return {254, 1.0};
     return {i, d - i};
 }
+
+[[gnu::always_inline]] inline void FlameHits::put(std::size_t h, double c, double o, std::size_t k,
+                           std::uint32_t table) const
+{
+    if (entry) {
+        entry[h] = table + std::uint32_t(paletteIndexOf(c, false).i);
+    } else {
+        colour[h] = c;
+        opacity[h] = o;
+    }
+    cell[h] = k;
+}
+
+// flam3's sums of a hit as whole numbers, where they can be: a cell's sums are whole, so
+// (unsigned)(dest + delta) is dest + floor(delta) as long as delta >= 0 and the double sum does
+// not round up to the next whole number -- which it cannot when delta's fraction is below
+// 1 - 2^-20 (a sum below 2^32 is exact to 2^-21). With the step palette and such deltas for
+// every entry and opacity, a hit's four sums are a row of whole numbers looked up once (its
+// xform's opacity's table, its palette index) and added held at 2^32 - 1: the very sums of
+// addHits, in fewer instructions (addHitsWhole).
+struct HitDeltas {
+    static constexpr std::size_t kMostTables = 16;  // distinct opacities (64 KB of rows)
+    std::vector<std::array<std::uint32_t, 4>> rows;  // table t, palette index i: row 256 t + i
+    std::vector<std::uint32_t> table;                // xform k's first row (256 t)
+
+    // The rows for these xforms' opacities, or empty when some delta is not whole-safe (the
+    // linear palette, a negative or NaN delta, a fraction within 2^-20 of 1) or there are more
+    // than kMostTables distinct opacities: then the hits keep their colour and opacity.
+    static HitDeltas of(const HitPalette &palette, const std::vector<double> &opacities);
+    bool empty() const { return rows.empty(); }
+};
+
+// One hit's row added to its cell, each sum held at 2^32 - 1 (min(dest, ~d) + d). Always
+// inlined, as paletteIndexOf.
+[[gnu::always_inline]] static inline void addWhole(std::uint32_t *cell, const std::uint32_t *d)
+{
+    for (int c = 0; c < 4; ++c)
+        cell[c] = (cell[c] < ~d[c] ? cell[c] : ~d[c]) + d[c];
+}
+
+// The hits (rows of `deltas`) added to their cells in order, held at 2^32 - 1: addHits' sums.
+void addHitsWhole(const FlameHits &hits, std::size_t n, const HitDeltas &deltas,
+                  std::array<std::uint32_t, 4> *cells);
+// The same on AVX-512 (FlameHitsAvx512.cpp); call only where XformWave::wide().
+void addHitsWholeAvx512(const FlameHits &hits, std::size_t n, const HitDeltas &deltas,
+                        std::array<std::uint32_t, 4> *cells);
 
 } // namespace awb::flame::detail

@@ -77,12 +77,15 @@ struct StepTable {
 };
 
 // What the step does with them: xform k's colour move and opacity, the sink's rule for an
-// opacity (drawn with that probability, or drawn whenever it is not 0 and weighed by it), the
-// final xform's colour move and opacity, the next-xform table (xform k's xaos row, or the
-// weights; any number of columns), the camera, and the sink's cells to prefetch.
+// opacity (drawn with that probability, or drawn whenever it is not 0 and weighed by it), its
+// table of whole deltas, the final xform's colour move and opacity, the next-xform table (xform
+// k's xaos row, or the weights; any number of columns), the camera, and the sink's cells to
+// prefetch.
 struct StepRule {
     double towards, keep, opacity;
     bool opacityByChance;
+    std::uint32_t table;  // xform k's first row of whole deltas, where the hits are rows
+                          // (FlameHits::entry)
     std::uint16_t last;  // k + 1
     bool final;
     double finalTowards, finalKeep, finalOpacity;

@@ -6,8 +6,9 @@
 // sample less), the opacity's and the final xform's draws, the camera's cells, the next xform
 // picked from the alias table (held in registers for up to 16 xforms, gathered beyond), then
 // the orbits pushed onto their stacks, one compress per field and distinct next xform, and the
-// drawn hits written (each cell prefetched). The rare orbits -- a bad value to retry, a fuse
-// step, the last sample of a batch -- are copied out for the scalar step (StepOut::deferred).
+// drawn hits written (each cell prefetched; a hit as its colour and opacity, or its row of the
+// sink's whole deltas). The rare orbits -- a bad value to retry, a fuse step, the last sample
+// of a batch -- are copied out for the scalar step (StepOut::deferred).
 #include "core/flame/FlameStep.h"
 
 #if defined(__x86_64__) && defined(__AVX512F__) && defined(__AVX512DQ__) \
@@ -100,6 +101,13 @@ void stepAvx512(const StepOrbits &o, const StepRule &r, const Stacks &st,
     std::uint32_t *top = st.top;
     const std::size_t cap = st.cap;
     const FlameHits hits = out.hits;
+    // paletteIndexOf (FlameHits.h, step palette): colour 256 held to [-1, 257], truncated, held
+    // to the palette; plus the xform's table.
+    const bool whole = hits.entry != nullptr;
+    const __m512d by256 = _mm512_set1_pd(256.0), low = _mm512_set1_pd(-1.0);
+    const __m512d high = _mm512_set1_pd(257.0);
+    const __m256i firstEntry = _mm256_setzero_si256(), lastEntry = _mm256_set1_epi32(255);
+    const __m256i table = _mm256_set1_epi32(int(r.table));
     std::size_t drawn = 0, offscreen = 0, deferred = 0;
     const auto *counters = reinterpret_cast<const std::uint64_t *>(o.counters);
 
@@ -171,8 +179,19 @@ void stepAvx512(const StepOrbits &o, const StepRule &r, const Stacks &st,
                 _mm512_mul_epu32(_mm512_cvttpd_epi64(v), wi), _mm512_cvttpd_epi64(u));
             const __m512i packed = _mm512_maskz_compress_epi64(inside, cell);
             _mm512_storeu_si512(hits.cell + drawn, packed);
-            _mm512_storeu_pd(hits.colour + drawn, _mm512_maskz_compress_pd(inside, hc));
-            _mm512_storeu_pd(hits.opacity + drawn, opacity);
+            if (whole) {  // the row: the table's + paletteIndexOf (step) of the colour
+                const __m512d d = _mm512_min_pd(_mm512_max_pd(_mm512_mul_pd(hc, by256), low),
+                                                high);
+                const __m256i i = _mm256_add_epi32(
+                    _mm256_min_epi32(_mm256_max_epi32(_mm512_cvttpd_epi32(d), firstEntry),
+                                     lastEntry),
+                    table);
+                _mm256_storeu_si256(reinterpret_cast<__m256i *>(hits.entry + drawn),
+                                    _mm256_maskz_compress_epi32(inside, i));
+            } else {
+                _mm512_storeu_pd(hits.colour + drawn, _mm512_maskz_compress_pd(inside, hc));
+                _mm512_storeu_pd(hits.opacity + drawn, opacity);
+            }
             if (r.prefetch) {
                 // The addresses from an aligned copy: a load from the unaligned store just
                 // made may not be forwarded from it, and would wait for it to reach the cache.
