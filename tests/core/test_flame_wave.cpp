@@ -218,6 +218,50 @@ private slots:
         QVERIFY(vectorised >= 40);
     }
 
+    // The kernels' own sine and cosine (the argument reduced by pi/2 in three parts up to
+    // 2^20, libmvec's beyond): sinusoidal and swirl on arguments from 1e-6 to 1e16, the large
+    // ones among small ones in a register, against the scalar kernels (std::sin, cos).
+    void sinesOfAnyArgumentAsTheScalarKernels_data() { kernelRows(); }
+    void sinesOfAnyArgumentAsTheScalarKernels()
+    {
+        AWB_KERNELS_OF_ROW();
+        const int n = 4000;
+        Lanes l(n);
+        Xoshiro256 points(9, 0);
+        for (int i = 0; i < n; ++i) {
+            const double most = i % 16 == 5 ? 8.0 : 3.2;  // now and then beyond 2^20
+            const double x = std::pow(10.0, -3 + (most + 3) * uniform01(points));
+            const double y = std::pow(10.0, -3 + (most + 3) * uniform01(points));
+            l.x[std::size_t(i)] = uniform01(points) < 0.5 ? -x : x;
+            l.y[std::size_t(i)] = uniform01(points) < 0.5 ? -y : y;
+        }
+        for (const char *name : {"sinusoidal", "swirl"}) {
+            FlameXform x = xformOf(variationId(name), false, false);
+            x.pre = {1, 0, 0, 0, 1, 0};
+            const XformMap map(x);
+            const XformWave wave(map);
+            WaveRandom random(1, 0);
+            wave.apply(l.x.data(), l.y.data(), l.qx.data(), l.qy.data(), l.bad.data(), n, random);
+            Xoshiro256 rng(1, 0);
+            double worst = 0;
+            for (int i = 0; i < n; ++i) {
+                const double p[2] = {l.x[std::size_t(i)], l.y[std::size_t(i)]};
+                double q[2];
+                const bool ok = map.apply(p, q, rng);
+                QCOMPARE(!l.bad[std::size_t(i)], ok);
+                if (!ok)
+                    continue;
+                worst = std::max({worst, std::fabs(l.qx[std::size_t(i)] - q[0]) / scaleOf(q[0]),
+                                  std::fabs(l.qy[std::size_t(i)] - q[1]) / scaleOf(q[1])});
+                QVERIFY2(worst <= 1e-9, qPrintable(QStringLiteral("%1 at (%2, %3)")
+                                                       .arg(QLatin1String(name))
+                                                       .arg(p[0], 0, 'g', 17)
+                                                       .arg(p[1], 0, 'g', 17)));
+            }
+            qInfo("%s: largest difference %.3g", name, worst);
+        }
+    }
+
     void randomVariationsByTheirDistributions_data() { kernelRows(); }
     void randomVariationsByTheirDistributions()
     {

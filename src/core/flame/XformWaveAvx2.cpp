@@ -61,7 +61,13 @@ static AWB_WAVE_INLINE V vtrunc(V x)
 {
     return V(_mm256_round_pd(__m256d(x), _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC));
 }
-static AWB_WAVE_INLINE unsigned laneBits(U mask) { return unsigned(_mm256_movemask_pd(__m256d(mask))); }
+// The lanes where x is NaN or |x| > most, lane j as bit j.
+static AWB_WAVE_INLINE unsigned beyond(V x, double most)
+{
+    const __m256d magnitude = _mm256_castsi256_pd(_mm256_set1_epi64x(0x7fffffffffffffffLL));
+    return unsigned(_mm256_movemask_pd(
+        _mm256_cmp_pd(_mm256_and_pd(__m256d(x), magnitude), _mm256_set1_pd(most), _CMP_NLE_UQ)));
+}
 static AWB_WAVE_INLINE void storeLaneFlags(std::uint8_t *flags, unsigned bits)
 {
     // Four bits spread to the low bits of four bytes: bit j moves by 7 j (no two bits of the

@@ -55,7 +55,12 @@ static AWB_WAVE_INLINE V vtrunc(V x)
 {
     return V(_mm512_roundscale_pd(__m512d(x), _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC));
 }
-static AWB_WAVE_INLINE unsigned laneBits(U mask) { return unsigned(_mm512_movepi64_mask(__m512i(mask))); }
+// The lanes where x is NaN or |x| > most, lane j as bit j.
+static AWB_WAVE_INLINE unsigned beyond(V x, double most)
+{
+    return unsigned(
+        _mm512_cmp_pd_mask(_mm512_abs_pd(__m512d(x)), _mm512_set1_pd(most), _CMP_NLE_UQ));
+}
 static AWB_WAVE_INLINE void storeLaneFlags(std::uint8_t *flags, unsigned bits)
 {
     _mm_storel_epi64(reinterpret_cast<__m128i *>(flags), _mm_maskz_set1_epi8(__mmask16(bits), 1));
