@@ -20,7 +20,8 @@
 //  - the adds of whole deltas (HitDeltas: the step palette's rows for each opacity) against the
 //    same rule on the hits' colours and opacities, to the unit, and the deltas refused where
 //    they are not whole-safe (linear palette, a negative or NaN opacity, a fraction within
-//    2^-20 of 1 -- there the double sum rounds up -- more than 16 opacities).
+//    2^-20 of 1 -- there the double sum rounds up -- more than 16 opacities);
+//  - the game with subnormals as zero, the caller's floating-point state given back.
 // Skipped only where the processor has no AVX2 (the wave does not run there).
 #include "core/flame/FlameChaos.h"
 #include "core/flame/FlameHits.h"
@@ -29,6 +30,10 @@
 #include "core/render/Engine.h"
 
 #include <QtTest>
+
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+#endif
 
 #include "TestMain.h"
 
@@ -495,6 +500,53 @@ private slots:
             }
             QVERIFY(held > 0);  // some sums reached 2^32 - 1
         }
+    }
+
+    // The game runs with subnormals as zero (an orbit drawn to an axis reaches them; each
+    // operation on one would cost a microcode assist) and gives the caller's floating-point
+    // state back: a flame drawn to the origin, x -> x / 2, on every kernel set.
+    void subnormalsAsZeroOnlyWhileTheGameRuns()
+    {
+#if defined(__SSE__) || defined(__x86_64__)
+        Flame f;
+        f.width = f.height = 64;
+        f.scale = 16;
+        for (std::size_t i = 0; i < 256; ++i)
+            f.palette[i] = {i / 255.0, 0.3, 1 - i / 255.0};
+        FlameXform half;
+        half.variations = {{variationId("linear"), 1.0}};
+        half.pre = {0.5, 0, 0, 0, 0.5, 0};
+        half.weight = 1;
+        f.xforms = {half, half};
+        FlameRaster job;
+        job.flame = &f;
+        job.frame = flameFrame(f);
+        job.samples = 300000;  // batches of thousands of steps: 2^-1074 within the first
+        const unsigned before = _mm_getcsr();
+        QCOMPARE(before & 0x8040u, 0u);  // the program's own state: subnormals kept
+        for (const int kernels : {0, 1, 2}) {  // wide, AVX2, scalar
+            forceAvx2Kernels(kernels == 1);
+            forceBaselineKernels(kernels == 2);
+            FlameHistogram h;
+            const FlameStats st = accumulateFlameColours(job, h);
+            QCOMPARE(_mm_getcsr(), before);
+            QCOMPARE(st.samples, job.samples);
+            QCOMPARE(st.badValues, std::uint64_t(0));
+            // Every hit but those of the fuse's first steps at the origin's cell.
+            double total = 0, origin = 0;
+            const std::size_t centre = std::size_t(32 * 64 + 32);
+            for (std::size_t i = 0; i < h.cells.size(); ++i) {
+                total += h.cells[i][3];
+                if (i == centre || i == centre - 1 || i == centre - 64 || i == centre - 65)
+                    origin += h.cells[i][3];
+            }
+            QVERIFY(origin >= 0.999 * total);
+        }
+        forceAvx2Kernels(false);
+        forceBaselineKernels(false);
+#else
+        QSKIP("no MXCSR here: subnormals are the processor's own");
+#endif
     }
 
     void wholeAddsAsTheRule()

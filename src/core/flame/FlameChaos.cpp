@@ -15,6 +15,10 @@
 #include <limits>
 #include <memory>
 
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+#endif
+
 namespace awb::flame {
 
 using namespace detail;
@@ -82,12 +86,29 @@ static_assert(kBatch <= 0xffff && kFuse <= 0xff && kMaxXforms < 0xffff);
 // that cannot fill one only when none can. The orbits advance at their own pace; each is
 // flam3's chain, whatever the order they are taken in. A hit goes to the sink, which adds it
 // some hits later (ColourSink).
+// Subnormal numbers as zero while the game runs on this thread (MXCSR's flush-to-zero and
+// denormals-are-zero), restored after: an orbit drawn towards an axis (a coordinate shrinking
+// by a factor each step, as in most flames with linear and spherical) reaches them within a
+// few thousand steps, and every operation on one costs a microcode assist -- the flame of
+// three linear+spherical xforms took 17 ns a sample, 7 without. They are below any cell (a
+// picture's cell is some 1e-3 of the plane), so the picture does not change.
+struct SubnormalsAsZero {
+#if defined(__SSE__) || defined(__x86_64__)
+    unsigned saved = _mm_getcsr();
+    SubnormalsAsZero() { _mm_setcsr(saved | 0x8040u); }  // FTZ (bit 15) and DAZ (bit 6)
+    ~SubnormalsAsZero() { _mm_setcsr(saved); }
+#endif
+    SubnormalsAsZero(const SubnormalsAsZero &) = delete;
+    SubnormalsAsZero &operator=(const SubnormalsAsZero &) = delete;
+};
+
 template <class Sink>
 FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std::uint64_t seed,
                    int stream, std::uint64_t samples, Sink &sink,
                    const IterationControl &control, std::atomic<std::uint64_t> &done,
                    double total)
 {
+    const SubnormalsAsZero subnormals;
     FlameStats stats;
     WaveRandom random(seed, std::uint64_t(stream));
     const std::size_t nx = xf.maps.size();
