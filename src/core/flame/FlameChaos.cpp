@@ -168,6 +168,27 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
     const double finalTowards = xf.finalSpeed * xf.finalColour, finalKeep = 1.0 - xf.finalSpeed;
     const double finalOpacity = xf.finalOpacity;
 
+    // The AVX-512 step's rule for each xform, made once.
+    std::vector<StepRule> rules;
+    if (wide)
+        for (std::size_t k = 0; k < nx; ++k) {
+            const AliasTable &row = rows[xaos ? k + 1 : 0];
+            rules.push_back({.towards = xf.speed[k] * xf.colour[k],
+                             .keep = 1.0 - xf.speed[k],
+                             .opacity = xf.opacity[k],
+                             .opacityByChance = Sink::kOpacityByChance,
+                             .table = sink.table(k),
+                             .last = std::uint16_t(k + 1),
+                             .final = finalWave != nullptr,
+                             .finalTowards = finalTowards,
+                             .finalKeep = finalKeep,
+                             .finalOpacity = finalOpacity,
+                             .next = {row.size(), row.uniform(), row.thresholds(), row.aliases()},
+                             .camera = plot.numbers(),
+                             .prefetch = sink.prefetchBase(),
+                             .stride = sizeof(std::array<std::uint32_t, 4>)});
+        }
+
     // Xform k on its stack's orbits, each then drawn and pushed onto its next xform's stack
     // (this one's too: an orbit is read before any push can reach its place).
     auto advance = [&](std::size_t k) {
@@ -191,26 +212,10 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
         const std::uint32_t table = sink.table(k);
         const int last = int(k) + 1;
         if (wide) {  // eight orbits a register; the rare ones left to the loop below
-            const AliasTable &row = rows[xaos ? k + 1 : 0];
             const StepOrbits orbits{px, py, isBad, finalWave ? fx : nullptr,
                                     finalWave ? fy : nullptr, colours, counters, m};
-            const StepRule rule{.towards = xf.speed[k] * xf.colour[k],
-                                .keep = 1.0 - xf.speed[k],
-                                .opacity = opacity,
-                                .opacityByChance = Sink::kOpacityByChance,
-                                .table = table,
-                                .last = std::uint16_t(last),
-                                .final = finalWave != nullptr,
-                                .finalTowards = finalTowards,
-                                .finalKeep = finalKeep,
-                                .finalOpacity = finalOpacity,
-                                .next = {row.size(), row.uniform(), row.thresholds(),
-                                         row.aliases()},
-                                .camera = plot.numbers(),
-                                .prefetch = sink.prefetchBase(),
-                                .stride = sizeof(std::array<std::uint32_t, 4>)};
             StepOut out{hits, deferred.data(), deferredColour.data(), deferredCounters.data()};
-            stepAvx512(orbits, rule, st, random.step, out);
+            stepAvx512(orbits, rules[k], st, random.step, out);
             drawn = out.drawn;
             offscreen = out.offscreen;
             todo = out.deferredCount;
