@@ -3876,7 +3876,7 @@ Odečíst rozdíl %7 od prvku ve sloupci %8 (%9 → %10), aby byl součet řádk
     </message>
     <message>
         <source>cannot write %1</source>
-        <translation>nelze zapsat %1</translation>
+        <translation type="vanished">nelze zapsat %1</translation>
     </message>
 </context>
 <context>

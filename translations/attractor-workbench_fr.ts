@@ -3873,7 +3873,7 @@ Retrancher la différence %7 du coefficient de la colonne %8 (%9 → %10) pour q
     </message>
     <message>
         <source>cannot write %1</source>
-        <translation>impossible d&apos;écrire %1</translation>
+        <translation type="vanished">impossible d&apos;écrire %1</translation>
     </message>
 </context>
 <context>

@@ -3870,7 +3870,7 @@ Take the difference %7 from the entry in column %8 (%9 → %10) so that the row 
     </message>
     <message>
         <source>cannot write %1</source>
-        <translation>无法写入 %1</translation>
+        <translation type="vanished">无法写入 %1</translation>
     </message>
 </context>
 <context>
