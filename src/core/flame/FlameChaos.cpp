@@ -73,6 +73,22 @@ std::size_t waveOrbits(std::uint64_t samples, std::size_t xforms)
 
 static_assert(kBatch <= 0xffff && kFuse <= 0xff && kMaxXforms < 0xffff);
 
+// Subnormal numbers as zero while the game runs on this thread (MXCSR's flush-to-zero and
+// denormals-are-zero), restored after: an orbit drawn towards an axis (a coordinate shrinking
+// by a factor each step, as in most flames with linear and spherical) reaches them within a
+// few thousand steps, and every operation on one costs a microcode assist -- the flame of
+// three linear+spherical xforms took 16.6 ns a sample, 7.9 without. They are far inside one
+// cell (a picture's cell is some 1e-3 of the plane), so the picture does not change.
+struct SubnormalsAsZero {
+#if defined(__SSE__) || defined(__x86_64__)
+    unsigned saved = _mm_getcsr();
+    SubnormalsAsZero() { _mm_setcsr(saved | 0x8040u); }  // FTZ (bit 15) and DAZ (bit 6)
+    ~SubnormalsAsZero() { _mm_setcsr(saved); }
+#endif
+    SubnormalsAsZero(const SubnormalsAsZero &) = delete;
+    SubnormalsAsZero &operator=(const SubnormalsAsZero &) = delete;
+};
+
 // One stream's samples into `sink`, as flam3's game (flam3_iterate) on each of its orbits:
 // batches of kBatch samples from a random restart after kFuse steps, the xform by weight or
 // xaos row, the colour moved first, a bad value retried from flam3's replacement up to four
@@ -86,22 +102,6 @@ static_assert(kBatch <= 0xffff && kFuse <= 0xff && kMaxXforms < 0xffff);
 // that cannot fill one only when none can. The orbits advance at their own pace; each is
 // flam3's chain, whatever the order they are taken in. A hit goes to the sink, which adds it
 // some hits later (ColourSink).
-// Subnormal numbers as zero while the game runs on this thread (MXCSR's flush-to-zero and
-// denormals-are-zero), restored after: an orbit drawn towards an axis (a coordinate shrinking
-// by a factor each step, as in most flames with linear and spherical) reaches them within a
-// few thousand steps, and every operation on one costs a microcode assist -- the flame of
-// three linear+spherical xforms took 17 ns a sample, 7 without. They are below any cell (a
-// picture's cell is some 1e-3 of the plane), so the picture does not change.
-struct SubnormalsAsZero {
-#if defined(__SSE__) || defined(__x86_64__)
-    unsigned saved = _mm_getcsr();
-    SubnormalsAsZero() { _mm_setcsr(saved | 0x8040u); }  // FTZ (bit 15) and DAZ (bit 6)
-    ~SubnormalsAsZero() { _mm_setcsr(saved); }
-#endif
-    SubnormalsAsZero(const SubnormalsAsZero &) = delete;
-    SubnormalsAsZero &operator=(const SubnormalsAsZero &) = delete;
-};
-
 template <class Sink>
 FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std::uint64_t seed,
                    int stream, std::uint64_t samples, Sink &sink,

@@ -1,4 +1,5 @@
-// addHits (FlameHits.h): flam3's bump_no_overflow on each of a hit's four sums.
+// addHits (FlameHits.h): flam3's bump_no_overflow on each of a hit's four sums; HitDeltas and
+// addHitsWhole, the same sums as whole numbers.
 #include "core/flame/FlameHits.h"
 
 #include "core/render/EngineShared.h"
@@ -71,8 +72,12 @@ void addHitsWhole(const FlameHits &hits, std::size_t n, const HitDeltas &deltas,
                   std::array<std::uint32_t, 4> *cells)
 {
     const std::array<std::uint32_t, 4> *rows = deltas.rows.data();
-    for (std::size_t h = 0; h < n; ++h)
-        addWhole(cells[hits.cell[h]].data(), rows[hits.entry[h]].data());
+    for (std::size_t h = 0; h < n; ++h) {
+        std::uint32_t *cell = cells[hits.cell[h]].data();
+        const std::uint32_t *d = rows[hits.entry[h]].data();
+        for (int c = 0; c < 4; ++c)  // held at 2^32 - 1: min(dest, ~d) + d
+            cell[c] = (cell[c] < ~d[c] ? cell[c] : ~d[c]) + d[c];
+    }
 }
 
 #if !defined(AWB_AVX2_KERNELS)

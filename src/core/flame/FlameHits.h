@@ -6,7 +6,8 @@
 // the orbits' next steps hide the miss. flam3's rule for one hit is written once in scalar code
 // (addHits), on AVX2 registers (addHitsAvx2, FlameHitsAvx2.cpp) and two hits a register on
 // AVX-512 (addHitsAvx512, FlameHitsAvx512.cpp), which give the very same sums
-// (tests/core/test_flame_wave.cpp). Internal to src/core/flame.
+// (tests/core/test_flame_wave.cpp); where the sums allow whole numbers (HitDeltas, below), a hit
+// is its cell and a row of them, added by addHitsWhole. Internal to src/core/flame.
 
 #include <array>
 #include <cstddef>
@@ -102,8 +103,8 @@ struct PaletteIndex {
     return {i, d - i};
 }
 
-[[gnu::always_inline]] inline void FlameHits::put(std::size_t h, double c, double o, std::size_t k,
-                           std::uint32_t table) const
+[[gnu::always_inline]] inline void FlameHits::put(std::size_t h, double c, double o,
+                                                  std::size_t k, std::uint32_t table) const
 {
     if (entry) {
         entry[h] = table + std::uint32_t(paletteIndexOf(c, false).i);
@@ -132,14 +133,6 @@ struct HitDeltas {
     static HitDeltas of(const HitPalette &palette, const std::vector<double> &opacities);
     bool empty() const { return rows.empty(); }
 };
-
-// One hit's row added to its cell, each sum held at 2^32 - 1 (min(dest, ~d) + d). Always
-// inlined, as paletteIndexOf.
-[[gnu::always_inline]] static inline void addWhole(std::uint32_t *cell, const std::uint32_t *d)
-{
-    for (int c = 0; c < 4; ++c)
-        cell[c] = (cell[c] < ~d[c] ? cell[c] : ~d[c]) + d[c];
-}
 
 // The hits (rows of `deltas`) added to their cells in order, held at 2^32 - 1: addHits' sums.
 void addHitsWhole(const FlameHits &hits, std::size_t n, const HitDeltas &deltas,

@@ -76,7 +76,7 @@ void addHitsWholeAvx512(const FlameHits &hitsIn, std::size_t n, const HitDeltas 
     for (std::size_t h = 0; h < n; ++h) {
         auto *cell = reinterpret_cast<__m128i *>(cellOf(cells, hits.cell[h]));
         const __m128i d = _mm_loadu_si128(reinterpret_cast<const __m128i *>(rows + hits.entry[h]));
-        // min(dest, ~d) + d: each sum held at 2^32 - 1 (addWhole, FlameHits.h).
+        // min(dest, ~d) + d: each sum held at 2^32 - 1 (as addHitsWhole).
         const __m128i room = _mm_xor_si128(d, _mm_set1_epi32(-1));
         _mm_storeu_si128(cell, _mm_add_epi32(_mm_min_epu32(_mm_loadu_si128(cell), room), d));
     }
