@@ -41,6 +41,7 @@
 #include <climits>
 #include <cmath>
 #include <random>
+#include <string_view>
 #include <vector>
 
 using namespace awb;
@@ -224,23 +225,30 @@ private slots:
     }
 
     // The kernels' own sine and cosine (the argument reduced by pi/2 in three parts up to
-    // 2^20, libmvec's beyond): sinusoidal and swirl on arguments from 1e-6 to 1e16, the large
-    // ones among small ones in a register, against the scalar kernels (std::sin, cos).
+    // 2^20, libmvec's beyond): sinusoidal on arguments from 1e-3 to 1e8 and swirl on |z|^2 up
+    // to 2^35, the large ones among small ones in a register, against the scalar kernels
+    // (std::sin, cos). Swirl's points are multiples of 2^-8 below 2^17, so that |z|^2 is exact
+    // whether or not a compiler fuses its multiply-add (an ulp of 1e6 is 1e-10, a difference of
+    // the argument, not of the sine).
     void sinesOfAnyArgumentAsTheScalarKernels_data() { kernelRows(); }
     void sinesOfAnyArgumentAsTheScalarKernels()
     {
         AWB_KERNELS_OF_ROW();
         const int n = 4000;
-        Lanes l(n);
-        Xoshiro256 points(9, 0);
-        for (int i = 0; i < n; ++i) {
-            const double most = i % 16 == 5 ? 8.0 : 3.2;  // now and then beyond 2^20
-            const double x = std::pow(10.0, -3 + (most + 3) * uniform01(points));
-            const double y = std::pow(10.0, -3 + (most + 3) * uniform01(points));
-            l.x[std::size_t(i)] = uniform01(points) < 0.5 ? -x : x;
-            l.y[std::size_t(i)] = uniform01(points) < 0.5 ? -y : y;
-        }
         for (const char *name : {"sinusoidal", "swirl"}) {
+            const bool swirl = std::string_view(name) == "swirl";
+            Lanes l(n);
+            Xoshiro256 points(9, 0);
+            for (int i = 0; i < n; ++i) {
+                // now and then beyond 2^20
+                const double most = i % 16 == 5 ? (swirl ? 5.1 : 8.0) : 3.2;
+                for (std::vector<double> *c : {&l.x, &l.y}) {
+                    double v = std::pow(10.0, -3 + (most + 3) * uniform01(points));
+                    if (swirl)
+                        v = std::round(v * 256) / 256;
+                    (*c)[std::size_t(i)] = uniform01(points) < 0.5 ? -v : v;
+                }
+            }
             FlameXform x = xformOf(variationId(name), false, false);
             x.pre = {1, 0, 0, 0, 1, 0};
             const XformMap map(x);
