@@ -510,9 +510,10 @@ private slots:
         }
     }
 
-    // The game runs with subnormals as zero (an orbit drawn to an axis reaches them; each
-    // operation on one would cost a microcode assist) and gives the caller's floating-point
-    // state back: a flame drawn to the origin, x -> x / 2, on every kernel set.
+    // The game (and the Lyapunov exponent's orbit) runs with subnormals as zero (an orbit drawn
+    // to an axis reaches them; each operation on one would cost a microcode assist) and gives
+    // the caller's floating-point state back: a flame drawn to the origin, x -> x / 2, on every
+    // kernel set.
     void subnormalsAsZeroOnlyWhileTheGameRuns()
     {
 #if defined(__SSE__) || defined(__x86_64__)
@@ -552,6 +553,10 @@ private slots:
         }
         forceAvx2Kernels(false);
         forceBaselineKernels(false);
+        // The exponent along the orbit too (each xform halves: ln 1/2).
+        const FlameLyapunov l = flameLyapunov(f);
+        QCOMPARE(_mm_getcsr(), before);
+        QVERIFY(std::fabs(l.exponent - std::log(0.5)) <= 1e-6);
 #else
         QSKIP("no MXCSR here: subnormals are the processor's own");
 #endif

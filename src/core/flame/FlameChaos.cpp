@@ -345,6 +345,7 @@ FlameStats playStreams(const FlameRaster &job, const IterationControl &control,
 FlameLyapunov flameLyapunov(const Flame &f, std::uint64_t steps, std::uint64_t seed)
 {
     checkFlame(f);
+    const SubnormalsAsZero subnormals;  // as the game (the displaced point is never one)
     const Xforms xf(f);
     const Choice choice(f);
     Xoshiro256 rng(seed, 0);
