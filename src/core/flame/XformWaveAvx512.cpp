@@ -57,7 +57,10 @@ static AWB_WAVE_INLINE V vtrunc(V x)
 }
 // c - a b with one rounding (fused: not left to the compiler's contraction, which clang does
 // not apply to these vector types).
-static AWB_WAVE_INLINE V vfnmadd(V a, V b, V c) { return V(_mm512_fnmadd_pd(__m512d(a), __m512d(b), __m512d(c))); }
+static AWB_WAVE_INLINE V vfnmadd(V a, V b, V c)
+{
+    return V(_mm512_fnmadd_pd(__m512d(a), __m512d(b), __m512d(c)));
+}
 
 // The lanes where x is NaN or |x| > most, lane j as bit j.
 static AWB_WAVE_INLINE unsigned beyond(V x, double most)
