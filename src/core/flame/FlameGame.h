@@ -174,7 +174,7 @@ struct LabelSink {
 // (FlameHits.h), each cell prefetched when its hit comes and added when the run is full -- by
 // addHits, or on AVX2 or AVX-512 registers where the wave's kernels of that width run.
 // With whole deltas (HitDeltas: the step palette, as most flames), a hit is its cell and row
-// of them, added by addHitsWhole (or its AVX-512 form).
+// of them, added by addHitsWhole (or its AVX2 form).
 struct ColourSink {
     FlameHistogram &histogram;
     HitPalette palette;
@@ -211,10 +211,10 @@ struct ColourSink {
     void flush()
     {
         if (deltas) {
-            if (adds == Adds::Avx512)
-                addHitsWholeAvx512(hits.hits(true), count, *deltas, histogram.cells.data());
-            else
+            if (adds == Adds::Scalar)
                 addHitsWhole(hits.hits(true), count, *deltas, histogram.cells.data());
+            else  // 128-bit integer operations: AVX2's encoding serves both
+                addHitsWholeAvx2(hits.hits(true), count, *deltas, histogram.cells.data());
             count = 0;
             return;
         }

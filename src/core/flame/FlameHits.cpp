@@ -92,10 +92,10 @@ void addHitsAvx512(const FlameHits &, std::size_t, const HitPalette &,
     throw std::logic_error("addHitsAvx512: no vector kernels on this platform");
 }
 
-void addHitsWholeAvx512(const FlameHits &, std::size_t, const HitDeltas &,
-                        std::array<std::uint32_t, 4> *)
+void addHitsWholeAvx2(const FlameHits &, std::size_t, const HitDeltas &,
+                      std::array<std::uint32_t, 4> *)
 {
-    throw std::logic_error("addHitsWholeAvx512: no vector kernels on this platform");
+    throw std::logic_error("addHitsWholeAvx2: no vector kernels on this platform");
 }
 #endif
 

@@ -1,4 +1,5 @@
-// addHitsAvx2 (FlameHits.h): flam3's bump_no_overflow on a hit's four sums in one register.
+// addHitsAvx2 (FlameHits.h): flam3's bump_no_overflow on a hit's four sums in one register;
+// addHitsWholeAvx2, a hit's row of whole deltas (HitDeltas) in a quarter of one.
 // Compiled with -mavx2 -mfma as XformWaveAvx2.cpp (src/core/CMakeLists.txt says why), and run
 // only where the processor has AVX2.
 #include "core/flame/FlameHits.h"
@@ -28,6 +29,22 @@ void addHitsAvx2(const FlameHits &hits, std::size_t n, const HitPalette &palette
         sum = _mm256_round_pd(sum, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
         const __m128i back = _mm_xor_si128(_mm256_cvttpd_epi32(_mm256_sub_pd(sum, half)), bias);
         _mm_storeu_si128(reinterpret_cast<__m128i *>(cell), back);
+    }
+}
+
+void addHitsWholeAvx2(const FlameHits &hitsIn, std::size_t n, const HitDeltas &deltas,
+                      std::array<std::uint32_t, 4> *cells)
+{
+    const FlameHits hits = hitsIn;  // kept in registers (the cells' stores could be any of it)
+    const std::array<std::uint32_t, 4> *rows = deltas.rows.data();
+    const __m128i ones = _mm_set1_epi32(-1);
+    for (std::size_t h = 0; h < n; ++h) {
+        auto *cell = reinterpret_cast<__m128i *>(cells + hits.cell[h]);  // no inline call
+        const __m128i d = _mm_loadu_si128(reinterpret_cast<const __m128i *>(rows + hits.entry[h]));
+        // min(dest, ~d) + d: each sum held at 2^32 - 1 (as addHitsWhole).
+        _mm_storeu_si128(cell, _mm_add_epi32(_mm_min_epu32(_mm_loadu_si128(cell),
+                                                           _mm_xor_si128(d, ones)),
+                                             d));
     }
 }
 

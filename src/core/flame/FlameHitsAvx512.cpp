@@ -3,8 +3,7 @@
 // only where the processor has it (XformWave::wide). The rule is addHitsAvx2's, whose sums it
 // gives to the unit: the unsigned conversions of AVX-512 in place of its biased signed ones
 // (both exact on 0 .. 2^32 - 1), the same products and sums without fused multiply-adds. Two
-// hits on one cell are added one after the other. addHitsWholeAvx512: a row of whole deltas a
-// hit (HitDeltas), on a quarter register.
+// hits on one cell are added one after the other.
 #include "core/flame/FlameHits.h"
 
 #if defined(__x86_64__) && defined(__AVX512F__) && defined(__AVX512DQ__) \
@@ -66,20 +65,6 @@ void addHitsAvx512(const FlameHits &hitsIn, std::size_t n, const HitPalette &pal
     }
     if (h < n)
         addOne(hits, h, palette, cells);
-}
-
-void addHitsWholeAvx512(const FlameHits &hitsIn, std::size_t n, const HitDeltas &deltas,
-                        std::array<std::uint32_t, 4> *cells)
-{
-    const FlameHits hits = hitsIn;
-    const std::array<std::uint32_t, 4> *rows = deltas.rows.data();
-    for (std::size_t h = 0; h < n; ++h) {
-        auto *cell = reinterpret_cast<__m128i *>(cellOf(cells, hits.cell[h]));
-        const __m128i d = _mm_loadu_si128(reinterpret_cast<const __m128i *>(rows + hits.entry[h]));
-        // min(dest, ~d) + d: each sum held at 2^32 - 1 (as addHitsWhole).
-        const __m128i room = _mm_xor_si128(d, _mm_set1_epi32(-1));
-        _mm_storeu_si128(cell, _mm_add_epi32(_mm_min_epu32(_mm_loadu_si128(cell), room), d));
-    }
 }
 
 } // namespace awb::flame::detail
