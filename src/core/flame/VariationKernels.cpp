@@ -19,6 +19,7 @@
 #include "core/flame/VariationTerm.h"
 
 #include <climits>
+#include <limits>
 #include <cmath>
 #include <numbers>
 
@@ -740,7 +741,7 @@ bool XformMap::apply(const double p[2], double q[2], Xoshiro256 &rng) const
     }
 
     s.sumsq = s.tx * s.tx + s.ty * s.ty;
-    s.sqrt = std::sqrt(s.sumsq);
+    s.sqrt = m_sqrt ? std::sqrt(s.sumsq) : std::numeric_limits<double>::quiet_NaN();
     if (m_atanXY)
         s.atanXY = std::atan2(s.tx, s.ty);
     if (m_angles) {

@@ -201,6 +201,32 @@ int variationId(std::string_view name)
     return -1;
 }
 
+namespace {
+
+// Whether the variation's kernel reads the point's radius (Point::sqrt: flam3's precalc_sqrt;
+// the angles' flag implies it). Those that do not, listed; any other reads it.
+bool readsRadius(int id)
+{
+    switch (id) {
+    case kLinear: case kSinusoidal: case kSpherical: case kSwirl: case kBent: case kWaves:
+    case kPopcorn: case kExponential: case kCosine: case kPdj: case kBubble: case kCylinder:
+    case kPerspective: case kNoise: case kJulian: case kJuliascope: case kBlur:
+    case kGaussianBlur: case kPie: case kNgon: case kCurl: case kRectangles: case kArch:
+    case kTangent: case kSquare: case kRays: case kCross: case kDisc2: case kBent2:
+    case kBipolar: case kBoarders: case kButterfly: case kCell: case kCpow: case kCurve:
+    case kEdisc: case kElliptic: case kEscher: case kFoci: case kLazysusan: case kLoonie:
+    case kModulus: case kOscilloscope: case kPolar2: case kPopcorn2: case kSeparation:
+    case kSplit: case kSplits: case kStripes: case kWedgeJulia: case kWaves2: case kExp:
+    case kLog: case kSin: case kCos: case kTan: case kSec: case kCsc: case kCot: case kSinh:
+    case kCosh: case kTanh: case kSech: case kCsch: case kCoth: case kAuger: case kFlux:
+        return false;
+    default:
+        return true;
+    }
+}
+
+} // namespace
+
 bool variationIsRandom(int id)
 {
     switch (id) {
@@ -307,6 +333,7 @@ XformMap::XformMap(const FlameXform &xform)
         m_terms.push_back({v, w});
         if (variationIsRandom(v) && !(v == kSuperShape && m_p[kSuperShapeRnd] == 0))
             m_random = true;
+        m_sqrt = m_sqrt || readsRadius(v);
         switch (v) {  // what the kernels read of the point (flam3's precalc flags)
         case kPolar: case kHandkerchief: case kHeart: case kDisc: case kEx: case kJulia:
         case kFan: case kFan2: case kDisc2: case kPolar2:
@@ -315,9 +342,11 @@ XformMap::XformMap(const FlameXform &xform)
         case kBlob:
             m_atanXY = true;
             m_angles = true;
+            m_sqrt = true;  // the angles' denominator
             break;
         case kSpiral: case kHyperbolic: case kDiamond: case kPower: case kRings: case kRings2:
             m_angles = true;
+            m_sqrt = true;
             break;
         case kJulian: case kJuliascope: case kRadialBlur: case kNgon: case kSuperShape:
         case kFlower: case kConic: case kCpow: case kEscher: case kWedge: case kWedgeJulia:

@@ -58,8 +58,10 @@ private:
     bool m_hasPost = false;
     bool m_random = false;
     double m_preBlur = 0;  // pre_blur's weight (applied before the others)
-    // What the terms need of the point: flam3's precalc flags.
-    bool m_atanXY = false, m_angles = false, m_atanYX = false;
+    // What the terms need of the point: flam3's precalc flags (m_sqrt: its radius; where no
+    // term reads it, the radius is left NaN, so that a kernel that did read it would fail its
+    // tests rather than read a stale value).
+    bool m_sqrt = false, m_atanXY = false, m_angles = false, m_atanYX = false;
     std::vector<Term> m_terms;
     std::vector<double> m_p;       // the xform's parameters by id
     std::vector<double> m_consts;  // per-variation precalculated constants (implementation's)
