@@ -41,6 +41,7 @@
 #include <climits>
 #include <cmath>
 #include <random>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -222,6 +223,70 @@ private slots:
         qInfo("%d deterministic variations with a vector kernel, %d lane by lane", vectorised,
               laneByLane);
         QVERIFY(vectorised >= 40);
+    }
+
+    // julian's and juliascope's radius, |z|^(dist / power) whatever root the draw takes: by
+    // square and cube roots where dist is 1 and |power| is 1 to 4, else exp(c log) -- against
+    // std::pow (the scalar kernels', flam3's) on points from 1e-150 to 1e150 and 0, for powers
+    // -4 to 5 and dists 1 and 0.7: relative error <= 1e-13 (a few ulp: libmvec's cube root and
+    // the rotation by the root's angle), and the same bad values (0 to a negative power).
+    void radiusOfJuliansRootsAsPow_data() { kernelRows(); }
+    void radiusOfJuliansRootsAsPow()
+    {
+        AWB_KERNELS_OF_ROW();
+        std::vector<double> xs, ys;
+        Xoshiro256 points(11, 0);
+        for (int i = 0; i < 200; ++i) {
+            xs.push_back(5 * uniform01(points) - 2.5);
+            ys.push_back(5 * uniform01(points) - 2.5);
+        }
+        for (double m : {1e-150, 1e-20, 1e-3, 30.0, 1e6, 1e40, 1e150}) {
+            xs.push_back(m * 0.6);
+            ys.push_back(-m * 0.8);
+        }
+        xs.push_back(0);
+        ys.push_back(0);
+        const int n = int(xs.size());
+        Lanes l(n);
+        std::copy(xs.begin(), xs.end(), l.x.begin());
+        std::copy(ys.begin(), ys.end(), l.y.begin());
+        const double w = 0.9;
+        int checked = 0;
+        for (const char *kind : {"julian", "juliascope"})
+            for (double dist : {1.0, 0.7})
+                for (double power : {1.0, -1.0, 2.0, -2.0, 3.0, -3.0, 4.0, -4.0, 5.0}) {
+                    FlameXform x;
+                    x.variations = {{variationId(kind), w}};
+                    x.parameters[std::size_t(parameterId(std::string(kind) + "_power"))] = power;
+                    x.parameters[std::size_t(parameterId(std::string(kind) + "_dist"))] = dist;
+                    const XformMap map(x);
+                    const XformWave wave(map);
+                    WaveRandom random(3, 0);
+                    wave.apply(l.x.data(), l.y.data(), l.qx.data(), l.qy.data(), l.bad.data(), n,
+                               random);
+                    for (int i = 0; i < n; ++i) {
+                        const std::size_t j = std::size_t(i);
+                        const double sumsq = xs[j] * xs[j] + ys[j] * ys[j];
+                        const double r = w * std::pow(sumsq, dist / power / 2.0);
+                        const bool bad = !(std::fabs(r) <= 1e10);
+                        const auto where = QStringLiteral("%1 power %2 dist %3 at (%4, %5)")
+                                               .arg(QLatin1String(kind))
+                                               .arg(power)
+                                               .arg(dist)
+                                               .arg(xs[j], 0, 'g', 17)
+                                               .arg(ys[j], 0, 'g', 17);
+                        QVERIFY2(bool(l.bad[j]) == bad, qPrintable(where));
+                        if (bad)
+                            continue;
+                        const double got = std::hypot(l.qx[j], l.qy[j]);
+                        QVERIFY2(std::fabs(got - r) <= 1e-13 * r + 1e-300,
+                                 qPrintable(where + QStringLiteral(": radius %1, pow's %2")
+                                                       .arg(got, 0, 'g', 17)
+                                                       .arg(r, 0, 'g', 17)));
+                        ++checked;
+                    }
+                }
+        QVERIFY(checked > 2 * 2 * 9 * 200);
     }
 
     // The kernels' own sine and cosine (the argument reduced by pi/2 in three parts up to

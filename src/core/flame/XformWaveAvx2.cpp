@@ -34,6 +34,7 @@ __m256d _ZGVdN4v_exp(__m256d);
 __m256d _ZGVdN4v_log(__m256d);
 __m256d _ZGVdN4v_sinh(__m256d);
 __m256d _ZGVdN4v_cosh(__m256d);
+__m256d _ZGVdN4v_cbrt(__m256d);
 __m256d _ZGVdN4vv_atan2(__m256d, __m256d);
 __m256d _ZGVdN4vv_pow(__m256d, __m256d);
 }
@@ -54,6 +55,7 @@ static AWB_WAVE_INLINE V vexp(V x) { return V(_ZGVdN4v_exp(__m256d(x))); }
 static AWB_WAVE_INLINE V vlog(V x) { return V(_ZGVdN4v_log(__m256d(x))); }
 static AWB_WAVE_INLINE V vsinh(V x) { return V(_ZGVdN4v_sinh(__m256d(x))); }
 static AWB_WAVE_INLINE V vcosh(V x) { return V(_ZGVdN4v_cosh(__m256d(x))); }
+static AWB_WAVE_INLINE V vcbrt(V x) { return V(_ZGVdN4v_cbrt(__m256d(x))); }
 static AWB_WAVE_INLINE V vatan2(V y, V x) { return V(_ZGVdN4vv_atan2(__m256d(y), __m256d(x))); }
 static AWB_WAVE_INLINE V vpow(V x, V y) { return V(_ZGVdN4vv_pow(__m256d(x), __m256d(y))); }
 static AWB_WAVE_INLINE V vsqrt(V x) { return V(_mm256_sqrt_pd(__m256d(x))); }

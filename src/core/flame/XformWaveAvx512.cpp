@@ -28,6 +28,7 @@ __m512d _ZGVeN8v_exp(__m512d);
 __m512d _ZGVeN8v_log(__m512d);
 __m512d _ZGVeN8v_sinh(__m512d);
 __m512d _ZGVeN8v_cosh(__m512d);
+__m512d _ZGVeN8v_cbrt(__m512d);
 __m512d _ZGVeN8vv_atan2(__m512d, __m512d);
 __m512d _ZGVeN8vv_pow(__m512d, __m512d);
 }
@@ -48,6 +49,7 @@ static AWB_WAVE_INLINE V vexp(V x) { return V(_ZGVeN8v_exp(__m512d(x))); }
 static AWB_WAVE_INLINE V vlog(V x) { return V(_ZGVeN8v_log(__m512d(x))); }
 static AWB_WAVE_INLINE V vsinh(V x) { return V(_ZGVeN8v_sinh(__m512d(x))); }
 static AWB_WAVE_INLINE V vcosh(V x) { return V(_ZGVeN8v_cosh(__m512d(x))); }
+static AWB_WAVE_INLINE V vcbrt(V x) { return V(_ZGVeN8v_cbrt(__m512d(x))); }
 static AWB_WAVE_INLINE V vatan2(V y, V x) { return V(_ZGVeN8vv_atan2(__m512d(y), __m512d(x))); }
 static AWB_WAVE_INLINE V vpow(V x, V y) { return V(_ZGVeN8vv_pow(__m512d(x), __m512d(y))); }
 static AWB_WAVE_INLINE V vsqrt(V x) { return V(_mm512_sqrt_pd(__m512d(x))); }
