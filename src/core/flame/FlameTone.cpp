@@ -168,11 +168,13 @@ void hsvToRgb(const double hsv[3], double rgb[3])
 // (its default bits=33: an unsigned histogram, a float accumulator; flam3.c), each sum taken
 // in double and stored as float (its abump_no_overflow); the spatial filter's sums are double.
 using Accum = std::array<float, 4>;
+// The log-scaled cells: as large as the histogram, so on huge pages as it (BigAllocator.h).
+using Accums = BigVector<Accum>;
 using Cell = std::array<double, 4>;
 using Bucket = std::array<std::uint32_t, 4>;
 
 // The log scaling without the estimator (rect.c): every lit cell by k1 log(1 + k2 a) / a.
-void logScale(const FlameHistogram &h, std::vector<Accum> &acc, double k1, double k2,
+void logScale(const FlameHistogram &h, Accums &acc, double k1, double k2,
               int threads)
 {
     const std::size_t n = h.cells.size();
@@ -196,7 +198,7 @@ void logScale(const FlameHistogram &h, std::vector<Accum> &acc, double k1, doubl
 
 // The density estimator (rect.c, de_thread) on the rows [first, last) of the histogram, in
 // row order. Writes reach `reach` rows above and below.
-void estimateRows(const FlameHistogram &h, std::vector<Accum> &acc, const DensityEstimator &de,
+void estimateRows(const FlameHistogram &h, Accums &acc, const DensityEstimator &de,
                   double curve, int ss, double k1, double k2, int first, int last)
 {
     const int w = h.width, hgt = h.height;
@@ -275,7 +277,7 @@ void estimateRows(const FlameHistogram &h, std::vector<Accum> &acc, const Densit
 // The estimator over the histogram's rows in bands at least 2 reach + 1 rows high: the even
 // bands side by side, then the odd ones. No two bands of a phase write the same cell, and each
 // cell takes its sums in the same order on any number of threads.
-void estimate(const FlameHistogram &h, std::vector<Accum> &acc, const DensityEstimator &de,
+void estimate(const FlameHistogram &h, Accums &acc, const DensityEstimator &de,
               double curve, int ss, double k1, double k2, int threads)
 {
     const int first = ss - 1, last = h.height - (ss - 1);
@@ -546,7 +548,7 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
     struct Workspace {
         FlameHistogram histogram;
         std::vector<FlameHistogram> parts;
-        std::vector<Accum> acc;
+        Accums acc;
         std::vector<Cell> across;
     };
     static thread_local Workspace kept;
@@ -566,7 +568,7 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
     const double sampleDensity = std::max<double>(1.0, double(job.samples)) / (double(W) * H);
     const double k1 = f.brightness * 255.0 * 268.0 / 256.0 / passes;
     const double k2 = double(ss) * ss * passes / (area * 255.0 * sampleDensity);
-    std::vector<Accum> &acc = w.acc;
+    Accums &acc = w.acc;
     for (int pass = 0; pass < passes; ++pass) {
         raster.samples = job.samples / std::uint64_t(passes)
                          + (std::uint64_t(pass) < job.samples % std::uint64_t(passes) ? 1 : 0);
