@@ -79,12 +79,14 @@ int check(const QStringList &args)
                 err() << CliTr::tr("%1: %2: note: %3").arg(name, a->name(), d->note)
                       << "\n";
             // A flame: its affine parts say nothing of how it contracts; its orbit does.
-            if (d->chaos && d->chaos.lyapunov && !(*d->chaos.lyapunov < -1e-3))
+            const std::optional<double> lyapunov =
+                d->chaos.lyapunov ? *d->chaos.lyapunov : std::optional<double>();
+            if (d->chaos && lyapunov && !(*lyapunov < -1e-3))
                 err() << CliTr::tr("%1: %2: note: its chaos game does not contract on average "
                                    "(the Lyapunov exponent along its orbit is %3): flam3 draws "
                                    "it by discarding the points that escape")
                              .arg(name, a->name())
-                             .arg(*d->chaos.lyapunov, 0, 'g', 3)
+                             .arg(*lyapunov, 0, 'g', 3)
                       << "\n";
             if (!d->iterate && !d->chaos && d->ifs.size() > 0)
                 if (const IfsCheck c = checkIfs(d->ifs); !c.contractive)

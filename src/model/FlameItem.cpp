@@ -478,9 +478,16 @@ DerivedIfs FlameItem::computeIfs() const
         return statsOf(image.stats);
     };
     out.chaos.colours = flame::flamePaletteRgb(m_flame);
-    // 20 000 steps: a few milliseconds, about 1 % of the exponent (one orbit, a fixed seed).
-    if (const double l = flame::flameLyapunov(m_flame).exponent; std::isfinite(l))
-        out.chaos.lyapunov = l;
+    // 20 000 steps: a few milliseconds, about 1 % of the exponent (one orbit, a fixed seed);
+    // when first asked for (a render does not).
+    out.chaos.lyapunov = Lazy<std::optional<double>>([shared]() -> std::optional<double> {
+        try {
+            if (const double l = flame::flameLyapunov(*shared).exponent; std::isfinite(l))
+                return l;
+        } catch (const std::exception &) {  // a flame its check refuses: no number
+        }
+        return std::nullopt;
+    });
     const RasterFrame camera = flame::flameFrame(m_flame);
     out.chaos.frame = std::array<double, 4>{camera.x0, camera.y0, camera.x1, camera.y1};
     out.chaos.width = m_flame.width;

@@ -266,10 +266,10 @@ ItemAnalysis analyseItem(const AttractorItem *item, Regularity *regularity)
     if (d->chaos) {
         // Its own chaos game (a flame): the maps above are its affine parts; whether it
         // contracts on average is the exponent along its own orbit.
-        o["contractive_on_average"] =
-            d->chaos.lyapunov ? QJsonValue(*d->chaos.lyapunov < -1e-3) : QJsonValue();
-        o["lyapunov_exponent"] =
-            d->chaos.lyapunov ? QJsonValue(*d->chaos.lyapunov) : QJsonValue(QJsonValue::Null);
+        const std::optional<double> l =
+            d->chaos.lyapunov ? *d->chaos.lyapunov : std::optional<double>();
+        o["contractive_on_average"] = l ? QJsonValue(*l < -1e-3) : QJsonValue();
+        o["lyapunov_exponent"] = l ? QJsonValue(*l) : QJsonValue(QJsonValue::Null);
         o["lyapunov_of"] = QStringLiteral("orbit");
     } else if (!d->iterate && d->ifs.size() > 0)
         if (const IfsCheck check = checkIfs(d->ifs); !check.contractive) {

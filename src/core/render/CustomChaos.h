@@ -4,6 +4,7 @@
 // raster path (render/AttractorImage.h) hands it the picture's frame and histogram; it fills
 // the histogram with hits whose labels index `colours`.
 
+#include "core/Lazy.h"
 #include "core/ifs/Attractor.h"
 #include "core/render/Density.h"
 
@@ -42,7 +43,9 @@ struct CustomChaos {
     double samplesPerPixel = 0;
     // The top Lyapunov exponent of the game along its own orbit (per step; negative: it
     // contracts on average), when the item measures it: what its maps' spectra cannot tell.
-    std::optional<double> lyapunov;
+    // Measured when first asked for (milliseconds, which a picture does not wait for); empty
+    // when the item does not measure it, nullopt inside when the measure gave no number.
+    Lazy<std::optional<double>> lyapunov;
 
     explicit operator bool() const { return bool(run); }
 };

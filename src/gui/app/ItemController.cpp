@@ -334,7 +334,8 @@ void ItemController::showSpectrum()
         return m.contractivity.eventuallyContractive;
     });
     if (d && d->chaos) {
-        lyapunov = d->chaos.lyapunov;  // a flame: along its own orbit
+        if (d->chaos.lyapunov)
+            lyapunov = *d->chaos.lyapunov;  // a flame: along its own orbit
     } else if (!contractive && d && d->ifs.size() > 0 && !d->iterate
                && focusedSpectra().isEmpty()) {
         try {
