@@ -4,7 +4,8 @@
 //    fuse steps and batch ends among them, next-xform tables of 1 (uniform), 3, 12 and 40
 //    columns (the table in one register, in two, gathered), a rotated camera: every ordinary
 //    orbit lands on the stack that AliasTable::pick gives for its lane's draw, with its point,
-//    moved colour and counted counters; every hit is Plot's cell of the point with that colour,
+//    moved colour and counted counters (a fuse step: its fuse one less, its sample not counted,
+//    nothing drawn); every hit is Plot's cell of the point with that colour,
 //    in orbit order (with its colour, or its row of whole deltas: the xform's table and the
 //    colour's palette index); the rare orbits are left to the scalar step exactly, as they came;
 //  - whole flames (a final xform with its opacity, xaos, an xform's opacity; 12 xforms with
@@ -231,8 +232,7 @@ private slots:
         for (std::size_t g = 0; g < m; g += 8) {
             bool anyOrdinary = false;
             for (std::size_t j = g; j < std::min(m, g + 8); ++j)
-                anyOrdinary = anyOrdinary
-                              || !(bad[j] || counters[j].fuse > 0 || counters[j].togo == 1);
+                anyOrdinary = anyOrdinary || !(bad[j] || counters[j].togo == 1);
             std::uint64_t draw[8] = {};
             if (anyOrdinary)
                 for (int l = 0; l < 8; ++l) {
@@ -245,20 +245,24 @@ private slots:
                 }
             for (std::size_t j = g; j < std::min(m, g + 8); ++j) {
                 const OrbitCounters n = counters[j];
-                if (bad[j] || n.fuse > 0 || n.togo == 1) {
+                if (bad[j] || n.togo == 1) {
                     expectedDeferred.push_back(std::uint32_t(j));
                     continue;
                 }
                 const double c = towards + keep * colour[j];
-                const std::ptrdiff_t cell = plot.cell(qx[j], qy[j]);
-                if (cell < 0)
-                    ++offscreen;
-                else
-                    expectedHits.push_back(Hit{c, std::size_t(cell)});
                 OrbitCounters counted = n;
                 counted.bad = 0;  // its retries over
                 counted.last = std::uint16_t(k + 1);
-                --counted.togo;
+                if (n.fuse > 0) {  // a fuse step: nothing drawn, no sample counted
+                    --counted.fuse;
+                } else {
+                    const std::ptrdiff_t cell = plot.cell(qx[j], qy[j]);
+                    if (cell < 0)
+                        ++offscreen;
+                    else
+                        expectedHits.push_back(Hit{c, std::size_t(cell)});
+                    --counted.togo;
+                }
                 expected.push_back(Pushed{qx[j], qy[j], c, word(counted),
                                           std::size_t(row.pick(draw[j - g]))});
             }

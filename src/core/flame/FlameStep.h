@@ -5,8 +5,9 @@
 // registers, eight orbits at a time (FlameStepAvx512.cpp): the colour, counters, opacity draws,
 // final xform's choice, camera and next-xform pick as lanes, the orbits pushed onto their next
 // stacks and the hits written by compress instructions -- no orbit goes through scalar code
-// unless it is one of the rare ones (a bad value to retry, a fuse step, the last sample of its
-// batch), which the vector step leaves to the scalar one. Plain structs and one function: the
+// unless it is one of the rare ones (a bad value to retry, the last sample of its batch), which
+// the vector step leaves to the scalar one (a fuse step -- the first 15 of a batch -- counts
+// down in the lanes). Plain structs and one function: the
 // AVX-512 file includes nothing else of the program (no AVX-512 copy of a shared inline
 // function may reach the rest of it). Internal to src/core/flame.
 

@@ -7,8 +7,9 @@
 // picked from the alias table (held in registers for up to 16 xforms, gathered beyond), then
 // the orbits pushed onto their stacks, one compress per field and distinct next xform, and the
 // drawn hits written (each cell prefetched; a hit as its colour and opacity, or its row of the
-// sink's whole deltas). The rare orbits -- a bad value to retry, a fuse step, the last sample
-// of a batch -- are copied out for the scalar step (StepOut::deferred).
+// sink's whole deltas). A fuse step (the first 15 of a batch) counts down its fuse and draws
+// nothing. The rare orbits -- a bad value to retry, the last sample of a batch -- are copied
+// out for the scalar step (StepOut::deferred).
 #include "core/flame/FlameStep.h"
 
 #if defined(__x86_64__) && defined(__AVX512F__) && defined(__AVX512DQ__) \
@@ -71,6 +72,7 @@ void stepAvx512(const StepOrbits &o, const StepRule &r, const Stacks &st,
     const __m512i one = _mm512_set1_epi64(1);
     const __m512i togoField = _mm512_set1_epi64(0xffff);
     const __m512i fuseField = _mm512_set1_epi64(std::int64_t(0xff) << 16);
+    const __m512i fuseOne = _mm512_set1_epi64(std::int64_t(1) << 16);
     const __m512i columns = _mm512_set1_epi64(r.next.n);
     const __m512i low32 = _mm512_set1_epi64(0xffffffffLL);
     // The alias table in registers for up to 16 columns (8 a register).
@@ -117,7 +119,7 @@ void stepAvx512(const StepOrbits &o, const StepRule &r, const Stacks &st,
         const __m512d c = _mm512_maskz_loadu_pd(in, o.colour + j);
         const __m512i b = _mm512_cvtepu8_epi64(_mm_maskz_loadu_epi8(in, o.bad + j));
         const __mmask8 special =
-            (_mm512_test_epi64_mask(b, b) | _mm512_test_epi64_mask(n, fuseField)
+            (_mm512_test_epi64_mask(b, b)
              | _mm512_cmpeq_epi64_mask(_mm512_and_si512(n, togoField), one))
             & in;
         if (special) {  // rare: for the scalar step, as they came
@@ -132,17 +134,19 @@ void stepAvx512(const StepOrbits &o, const StepRule &r, const Stacks &st,
         const __mmask8 go = __mmask8(in & ~special);
         if (!go)
             continue;
+        // A fuse step: one fuse step less, nothing drawn, no sample counted.
+        const __mmask8 fusing = _mm512_mask_test_epi64_mask(go, n, fuseField);
         const __m512d x = _mm512_maskz_loadu_pd(go, o.qx + j);
         const __m512d y = _mm512_maskz_loadu_pd(go, o.qy + j);
         const __m512d colour = _mm512_fmadd_pd(keep, c, towards);
-        // Drawn: one sample less of the batch, its retries over (fuse is 0 already), xform k
-        // its last.
+        // Drawn: one sample less of the batch (or a fuse step less), its retries over, xform
+        // k its last.
         const __m512i counted =
             _mm512_sub_epi64(_mm512_or_si512(_mm512_andnot_si512(clearedFields, n), lastBits),
-                             one);
+                             _mm512_mask_mov_epi64(one, fusing, fuseOne));
 
         // The hit: kept by the opacity, through the final xform (by its opacity), the camera.
-        __mmask8 kept = never ? __mmask8(0) : go;
+        __mmask8 kept = never ? __mmask8(0) : __mmask8(go & ~fusing);
         if (chance)
             kept &= _mm512_cmp_pd_mask(rng.uniform(), opacity, _CMP_LT_OQ);
         if (kept) {
