@@ -225,13 +225,15 @@ private slots:
         QVERIFY(vectorised >= 40);
     }
 
-    // julian's and juliascope's radius, |z|^(dist / power) whatever root the draw takes: by
-    // square and cube roots where dist is 1 and |power| is 1 to 4, else exp(c log) -- against
-    // std::pow (the scalar kernels', flam3's) on points from 1e-150 to 1e150 and 0, for powers
-    // -4 to 5 and dists 1 and 0.7: relative error <= 1e-13 (a few ulp: libmvec's cube root and
-    // the rotation by the root's angle), and the same bad values (0 to a negative power).
-    void radiusOfJuliansRootsAsPow_data() { kernelRows(); }
-    void radiusOfJuliansRootsAsPow()
+    // julian's and juliascope's roots, whichever the draw takes: the radius |z|^(dist / power)
+    // -- by square and cube roots where dist is 1 and |power| is 1 to 4, else exp(c log) --
+    // against std::pow (the scalar kernels', flam3's) on points from 1e-150 to 1e150 and 0, for
+    // powers -4 to 5 and dists 1 and 0.7: relative error <= 1e-13 (a few ulp: libmvec's cube
+    // root and the rotation by the root's angle), and the same bad values (0 to a negative
+    // power); the direction one of flam3's |power| roots' (atan2(y, x) + 2 pi k) / power, odd k
+    // mirrored for juliascope (the kernels multiply by 1 / power): within 1e-12.
+    void juliansRootsAsFlam3s_data() { kernelRows(); }
+    void juliansRootsAsFlam3s()
     {
         AWB_KERNELS_OF_ROW();
         std::vector<double> xs, ys;
@@ -283,6 +285,20 @@ private slots:
                                  qPrintable(where + QStringLiteral(": radius %1, pow's %2")
                                                        .arg(got, 0, 'g', 17)
                                                        .arg(r, 0, 'g', 17)));
+                        if (!(got > 1e-250))  // no direction to compare
+                            continue;
+                        const bool scope = std::string_view(kind) == "juliascope";
+                        const double theta = std::atan2(ys[j], xs[j]);
+                        double nearest = 2;
+                        for (int k = 0; k < int(std::fabs(power)); ++k) {
+                            const double a =
+                                ((scope && k % 2 ? -theta : theta) + 2 * M_PI * k) / power;
+                            nearest = std::min(nearest, std::hypot(l.qx[j] / got - std::cos(a),
+                                                                   l.qy[j] / got - std::sin(a)));
+                        }
+                        QVERIFY2(nearest <= 1e-12,
+                                 qPrintable(where + QStringLiteral(": direction %1 from a root's")
+                                                       .arg(nearest, 0, 'g', 3)));
                         ++checked;
                     }
                 }

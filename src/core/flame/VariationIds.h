@@ -72,6 +72,7 @@ enum Const : int {
     cJulianAbsN, cJulianCn,                      // |power|, dist / power / 2
     cScopeAbsN, cScopeCn,
     cWedgeJuliaFactor, cWedgeJuliaAbsN, cWedgeJuliaCn,
+    cJulianInvN, cScopeInvN, cWedgeJuliaInvN,    // 1 / power (the vector kernels' angle)
     cRadialSpin, cRadialZoom,                    // sin, cos of angle pi/2
     cWavesX, cWavesY,                            // 1 / (c^2 + eps), 1 / (f^2 + eps)
     cDisc2TimesPi, cDisc2SinAdd, cDisc2CosAdd,

@@ -370,10 +370,13 @@ XformMap::XformMap(const FlameXform &xform)
     set(cJulianCn, P(kJulianDist) / P(kJulianPower) / 2.0);
     set(cScopeAbsN, std::fabs(P(kJuliascopePower)));
     set(cScopeCn, P(kJuliascopeDist) / P(kJuliascopePower) / 2.0);
+    set(cJulianInvN, 1.0 / P(kJulianPower));
+    set(cScopeInvN, 1.0 / P(kJuliascopePower));
     // wedge_julia: the wedges' compression and julian's constants
     set(cWedgeJuliaFactor, 1.0 - P(kWedgeJuliaAngle) * P(kWedgeJuliaCount) * kInvPi * 0.5);
     set(cWedgeJuliaAbsN, std::fabs(P(kWedgeJuliaPower)));
     set(cWedgeJuliaCn, P(kWedgeJuliaDist) / P(kWedgeJuliaPower) / 2.0);
+    set(cWedgeJuliaInvN, 1.0 / P(kWedgeJuliaPower));
     // radial_blur: spin and zoom shares of the blur angle
     const double blurAngle = P(kRadialBlurAngle) * kPi / 2.0;
     set(cRadialSpin, std::sin(blurAngle));
