@@ -280,6 +280,17 @@ void TestFlameTone::picture()
     job.threads = 1;
     const FlameImage again = renderFlameImage(job);
     QVERIFY(again.argb == one.argb);
+    // Without the estimator the histogram is log-scaled in its own memory: the same picture on
+    // one thread and two, lit where the estimator's is.
+    f.estimatorRadius = 0;
+    const FlameImage plain = renderFlameImage(job);
+    job.threads = 2;
+    QVERIFY(renderFlameImage(job).argb == plain.argb);
+    job.threads = 1;
+    f.estimatorRadius = 9;
+    QCOMPARE(plain.argb[0], 0xffff0000u);
+    QVERIFY(std::count(plain.argb.begin(), plain.argb.end(), 0xffff0000u)
+            < std::ptrdiff_t(plain.argb.size()));
     // A negative opacity (finite, so accepted) subtracts its hits down to an empty cell, never
     // below (the instrumented build checks the conversion); the picture is still drawn.
     f.xforms[1].opacity = -1;

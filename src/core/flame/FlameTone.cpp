@@ -9,6 +9,8 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 
 namespace awb::flame {
 
@@ -192,6 +194,30 @@ void logScale(const FlameHistogram &h, Accums &acc, double k1, double k2,
             out[1] += c[1] * ls;
             out[2] += c[2] * ls;
             out[3] += a * ls;
+        }
+    });
+}
+
+// The same in the histogram's own memory, for one pass without the estimator: each cell's four
+// sums replaced by its four floats (16 bytes both, written and read by memcpy), the unlit ones
+// by zeros -- no second array of the histogram's size to fault in (16 MB at 1024^2; a fresh
+// page is dear on a virtual machine whose host takes freed memory back).
+void logScaleInPlace(FlameHistogram &h, double k1, double k2, int threads)
+{
+    static_assert(sizeof(Accum) == sizeof(Bucket));
+    const std::size_t n = h.cells.size();
+    onThreads(threads, [&](int t) {
+        const std::size_t first = n * std::size_t(t) / std::size_t(threads);
+        const std::size_t last = n * std::size_t(t + 1) / std::size_t(threads);
+        for (std::size_t i = first; i < last; ++i) {
+            const Bucket c = h.cells[i];
+            Accum out{0, 0, 0, 0};
+            if (c[3] != 0) {  // as logScale into a cleared accumulator
+                const double a = c[3];
+                const double ls = k1 * std::log(1.0 + a * k2) / a;
+                out = {float(c[0] * ls), float(c[1] * ls), float(c[2] * ls), float(a * ls)};
+            }
+            std::memcpy(&h.cells[i], &out, sizeof out);
         }
     });
 }
@@ -516,8 +542,10 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
     // spatial filter's rows are held for a band of 16 pixel rows per thread (small beside them).
     int threads = std::clamp(job.threads, 1, kChaosStreams);
     const double cells = cellsX * cellsY;
+    // One pass without the estimator log-scales the histogram in place (logScaleInPlace).
+    const bool inPlace = !estimator && f.passes == 1;
     auto bytes = [&](int t) {
-        return cells * (double(sizeof(Bucket)) * t + double(sizeof(Accum)));
+        return cells * (double(sizeof(Bucket)) * t + (inPlace ? 0.0 : double(sizeof(Accum))));
     };
     while (threads > 1 && bytes(threads) > kMaxFlameHistogramBytes)
         --threads;
@@ -569,6 +597,8 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
     const double k1 = f.brightness * 255.0 * 268.0 / 256.0 / passes;
     const double k2 = double(ss) * ss * passes / (area * 255.0 * sampleDensity);
     Accums &acc = w.acc;
+    // The log-scaled cells as the filter reads them: acc's, or the histogram's own.
+    const std::byte *scaled = nullptr;
     for (int pass = 0; pass < passes; ++pass) {
         raster.samples = job.samples / std::uint64_t(passes)
                          + (std::uint64_t(pass) < job.samples % std::uint64_t(passes) ? 1 : 0);
@@ -580,12 +610,18 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
         out.stats.cancelled = stats.cancelled;
         if (out.stats.cancelled)
             return out;
-        if (pass == 0)
-            acc.assign(histogram.cells.size(), Accum{0, 0, 0, 0});
-        if (estimator)
-            estimate(histogram, acc, de, f.estimatorCurve, ss, k1, k2, threads);
-        else
-            logScale(histogram, acc, k1, k2, threads);
+        if (inPlace) {
+            logScaleInPlace(histogram, k1, k2, threads);
+            scaled = reinterpret_cast<const std::byte *>(histogram.cells.data());
+        } else {
+            if (pass == 0)
+                acc.assign(histogram.cells.size(), Accum{0, 0, 0, 0});
+            if (estimator)
+                estimate(histogram, acc, de, f.estimatorCurve, ss, k1, k2, threads);
+            else
+                logScale(histogram, acc, k1, k2, threads);
+            scaled = reinterpret_cast<const std::byte *>(acc.data());
+        }
         if (control.cancel && control.cancel->load()) {
             out.stats.cancelled = true;
             return out;
@@ -623,12 +659,16 @@ FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &co
             for (int r = 0; r < readRows; ++r)
                 for (int i = 0; i < W; ++i) {
                     Cell s{0, 0, 0, 0};
-                    const Accum *row = acc.data() + std::size_t(y0 + r) * stride
-                                      + std::size_t(deOffset + i * ss);
+                    const std::byte *row =
+                        scaled
+                        + (std::size_t(y0 + r) * stride + std::size_t(deOffset + i * ss))
+                              * sizeof(Accum);
                     for (int ii = 0; ii < fw; ++ii) {
                         const double k = k1d[std::size_t(ii)];
+                        Accum a;
+                        std::memcpy(&a, row + std::size_t(ii) * sizeof(Accum), sizeof a);
                         for (int c = 0; c < 4; ++c)
-                            s[std::size_t(c)] += k * row[ii][std::size_t(c)];
+                            s[std::size_t(c)] += k * a[std::size_t(c)];
                     }
                     band[std::size_t(r) * std::size_t(W) + std::size_t(i)] = s;
                 }
