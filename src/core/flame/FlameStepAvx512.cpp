@@ -106,9 +106,7 @@ void stepAvx512(const StepOrbits &o, const StepRule &r, const Stacks &st,
     // paletteIndexOf (FlameHits.h, step palette): colour 256 held to [-1, 257], truncated, held
     // to the palette; plus the xform's table.
     const bool whole = hits.entry != nullptr;
-    const __m512d by256 = _mm512_set1_pd(256.0), low = _mm512_set1_pd(-1.0);
-    const __m512d high = _mm512_set1_pd(257.0);
-    const __m256i firstEntry = _mm256_setzero_si256(), lastEntry = _mm256_set1_epi32(255);
+    const __m512d by256 = _mm512_set1_pd(256.0), lastIndex = _mm512_set1_pd(255.5);
     const __m256i table = _mm256_set1_epi32(int(r.table));
     std::size_t drawn = 0, offscreen = 0, deferred = 0;
     const auto *counters = reinterpret_cast<const std::uint64_t *>(o.counters);
@@ -184,12 +182,11 @@ void stepAvx512(const StepOrbits &o, const StepRule &r, const Stacks &st,
             const __m512i packed = _mm512_maskz_compress_epi64(inside, cell);
             _mm512_storeu_si512(hits.cell + drawn, packed);
             if (whole) {  // the row: the table's + paletteIndexOf (step) of the colour
-                const __m512d d = _mm512_min_pd(_mm512_max_pd(_mm512_mul_pd(hc, by256), low),
-                                                high);
-                const __m256i i = _mm256_add_epi32(
-                    _mm256_min_epi32(_mm256_max_epi32(_mm512_cvttpd_epi32(d), firstEntry),
-                                     lastEntry),
-                    table);
+                // colour 256 held to [0, 255.5] and truncated: paletteIndexOf's [-1, 257],
+                // truncated and held to [0, 255], for every colour (NaN: max gives 0, as -1).
+                const __m512d d = _mm512_min_pd(_mm512_max_pd(_mm512_mul_pd(hc, by256), zero),
+                                                lastIndex);
+                const __m256i i = _mm256_add_epi32(_mm512_cvttpd_epi32(d), table);
                 _mm256_storeu_si256(reinterpret_cast<__m256i *>(hits.entry + drawn),
                                     _mm256_maskz_compress_epi32(inside, i));
             } else {
