@@ -1,9 +1,11 @@
 #pragma once
 // An allocator for the large flat arrays of the mesh room (a million faces' relations, stencil
-// tables): blocks of 8 MB or more are mapped on 2 MB boundaries and advised as transparent huge
-// pages, so that touching them costs one page fault per 2 MB instead of per 4 KB (on a virtual
-// machine a page fault is dear: it was a third of a large mesh's setup). Smaller blocks, other
-// systems and the sanitizer builds (which must see every block) use operator new. Qt-free.
+// tables) and the flame's game: blocks of 8 MB or more are mapped on 2 MB boundaries and advised
+// as transparent huge pages, so that touching them costs one page fault per 2 MB instead of per
+// 4 KB (on a virtual machine a page fault is dear: it was a third of a large mesh's setup).
+// Smaller blocks, other systems and the sanitizer builds (which must see every block) use
+// operator new on a 64-byte boundary, so that a vector register's loads and stores of whole
+// registers never split across two cache lines (the flame's stacks: 1-3 % faster). Qt-free.
 
 #include <cstddef>
 #include <new>
@@ -20,6 +22,7 @@ bool release(void *p, std::size_t bytes);
 
 template <class T>
 struct BigAllocator {
+    static constexpr std::align_val_t kLine{64};
     using value_type = T;
     BigAllocator() = default;
     template <class U>
@@ -32,12 +35,12 @@ struct BigAllocator {
             throw std::bad_array_new_length();
         if (void *p = bigalloc::allocate(n * sizeof(T)))
             return static_cast<T *>(p);
-        return static_cast<T *>(::operator new(n * sizeof(T)));
+        return static_cast<T *>(::operator new(n * sizeof(T), kLine));
     }
     void deallocate(T *p, std::size_t n)
     {
         if (!bigalloc::release(p, n * sizeof(T)))
-            ::operator delete(p);
+            ::operator delete(p, kLine);
     }
     template <class U>
     bool operator==(const BigAllocator<U> &) const

@@ -1,5 +1,6 @@
 #include "core/flame/FlameChaos.h"
 
+#include "core/BigAllocator.h"
 #include "core/Messages.h"
 #include "core/Threads.h"
 #include "core/Types.h"
@@ -13,7 +14,6 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <new>
 #include <memory>
 
 #if defined(__SSE__) || defined(__x86_64__)
@@ -74,32 +74,6 @@ std::size_t waveOrbits(std::uint64_t samples, std::size_t xforms)
 
 static_assert(kBatch <= 0xffff && kFuse <= 0xff && kMaxXforms < 0xffff);
 
-// The game's arrays on 64-byte boundaries (a register's loads and stores of them then never
-// split across two cache lines).
-template <class T>
-struct CacheLineAllocator {
-    using value_type = T;
-    CacheLineAllocator() = default;
-    template <class U>
-    CacheLineAllocator(const CacheLineAllocator<U> &)
-    {
-    }
-    T *allocate(std::size_t n)
-    {
-        if (n > std::size_t(-1) / sizeof(T))
-            throw std::bad_array_new_length();
-        return static_cast<T *>(::operator new(n * sizeof(T), std::align_val_t(64)));
-    }
-    void deallocate(T *p, std::size_t) { ::operator delete(p, std::align_val_t(64)); }
-    template <class U>
-    bool operator==(const CacheLineAllocator<U> &) const
-    {
-        return true;
-    }
-};
-template <class T>
-using Lines = std::vector<T, CacheLineAllocator<T>>;
-
 // Subnormal numbers as zero while the game runs on this thread (MXCSR's flush-to-zero and
 // denormals-are-zero), restored after: an orbit drawn towards an axis (a coordinate shrinking
 // by a factor each step, as in most flames with linear and spherical) reaches them within a
@@ -148,12 +122,13 @@ FlameStats runWave(const Xforms &xf, const Choice &choice, const Plot &plot, std
     constexpr std::size_t kRegister = XformWave::kWidth;
     const std::size_t cap = (orbits + kRegister - 1) / kRegister * kRegister + kStackPadding;
     static_assert(XformWave::kWidth <= kStackPadding);
-    Lines<double> sx(nx * cap), sy(nx * cap), sc(nx * cap);
-    Lines<OrbitCounters> sn(nx * cap);
+    // On cache lines (BigAllocator), as the stacks' points after the xform.
+    BigVector<double> sx(nx * cap), sy(nx * cap), sc(nx * cap);
+    BigVector<OrbitCounters> sn(nx * cap);
     std::vector<std::uint32_t> top(nx, 0);
     const Stacks stacks{sx.data(), sy.data(), sc.data(), sn.data(), top.data(), cap};
     // One stack's points after its xform, and after the final xform.
-    Lines<double> qx(cap), qy(cap), gx(cap), gy(cap);
+    BigVector<double> qx(cap), qy(cap), gx(cap), gy(cap);
     std::vector<std::uint8_t> bad(cap), finalBad(cap);
     // The shares: samples left, and the batch being drawn.
     std::vector<std::uint64_t> left(orbits);
