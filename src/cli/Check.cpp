@@ -79,8 +79,7 @@ int check(const QStringList &args)
                 err() << CliTr::tr("%1: %2: note: %3").arg(name, a->name(), d->note)
                       << "\n";
             // A flame: its affine parts say nothing of how it contracts; its orbit does.
-            const std::optional<double> lyapunov =
-                d->chaos.lyapunov ? *d->chaos.lyapunov : std::optional<double>();
+            const std::optional<double> lyapunov = d->chaos.lyapunovExponent();
             if (d->chaos && lyapunov && !(*lyapunov < -1e-3))
                 err() << CliTr::tr("%1: %2: note: its chaos game does not contract on average "
                                    "(the Lyapunov exponent along its orbit is %3): flam3 draws "

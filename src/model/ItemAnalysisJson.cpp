@@ -266,8 +266,7 @@ ItemAnalysis analyseItem(const AttractorItem *item, Regularity *regularity)
     if (d->chaos) {
         // Its own chaos game (a flame): the maps above are its affine parts; whether it
         // contracts on average is the exponent along its own orbit.
-        const std::optional<double> l =
-            d->chaos.lyapunov ? *d->chaos.lyapunov : std::optional<double>();
+        const std::optional<double> l = d->chaos.lyapunovExponent();
         o["contractive_on_average"] = l ? QJsonValue(*l < -1e-3) : QJsonValue();
         o["lyapunov_exponent"] = l ? QJsonValue(*l) : QJsonValue(QJsonValue::Null);
         o["lyapunov_of"] = QStringLiteral("orbit");

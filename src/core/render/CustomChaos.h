@@ -46,6 +46,11 @@ struct CustomChaos {
     // Measured when first asked for (milliseconds, which a picture does not wait for); empty
     // when the item does not measure it, nullopt inside when the measure gave no number.
     Lazy<std::optional<double>> lyapunov;
+    // Its value, measured now if not yet; nullopt when the item does not measure it.
+    std::optional<double> lyapunovExponent() const
+    {
+        return lyapunov ? *lyapunov : std::nullopt;
+    }
 
     explicit operator bool() const { return bool(run); }
 };

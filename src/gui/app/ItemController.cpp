@@ -334,8 +334,7 @@ void ItemController::showSpectrum()
         return m.contractivity.eventuallyContractive;
     });
     if (d && d->chaos) {
-        if (d->chaos.lyapunov)
-            lyapunov = *d->chaos.lyapunov;  // a flame: along its own orbit
+        lyapunov = d->chaos.lyapunovExponent();  // a flame: along its own orbit
     } else if (!contractive && d && d->ifs.size() > 0 && !d->iterate
                && focusedSpectra().isEmpty()) {
         try {
