@@ -2829,6 +2829,34 @@
         <source>passes=&quot;%1&quot; must be a whole number from 1 to %2</source>
         <translation>passes=&quot;%1&quot; musí být celé číslo od 1 do %2</translation>
     </message>
+    <message>
+        <source>%1 is larger than 16 MB</source>
+        <translation>%1 je větší než 16 MB</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read</source>
+        <translation>%1 nelze přečíst</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 has no palette %2</source>
+        <translation>%1 nemá paletu %2</translation>
+    </message>
+    <message>
+        <source>its entry %1 has %2 hex digits, not 256 x 8</source>
+        <translation>jeho položka %1 má %2 šestnáctkových číslic, ne 256 x 8</translation>
+    </message>
+    <message>
+        <source>its entry %1 is not hexadecimal</source>
+        <translation>jeho položka %1 není šestnáctková</translation>
+    </message>
+    <message>
+        <source>palette %1 of flam3&apos;s palette file is not kept: %2</source>
+        <translation>paleta %1 ze souboru palet flam3 se nezachovává: %2</translation>
+    </message>
 </context>
 <context>
     <name>awb::FlameItem</name>

@@ -2826,6 +2826,34 @@
         <source>passes=&quot;%1&quot; must be a whole number from 1 to %2</source>
         <translation>passes=&quot;%1&quot; doit être un nombre entier de 1 à %2</translation>
     </message>
+    <message>
+        <source>%1 is larger than 16 MB</source>
+        <translation>%1 dépasse 16 Mo</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read</source>
+        <translation>%1 ne peut pas être lu</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>%1 has no palette %2</source>
+        <translation>%1 n&apos;a pas de palette %2</translation>
+    </message>
+    <message>
+        <source>its entry %1 has %2 hex digits, not 256 x 8</source>
+        <translation>son entrée %1 a %2 chiffres hexadécimaux, pas 256 x 8</translation>
+    </message>
+    <message>
+        <source>its entry %1 is not hexadecimal</source>
+        <translation>son entrée %1 n&apos;est pas hexadécimale</translation>
+    </message>
+    <message>
+        <source>palette %1 of flam3&apos;s palette file is not kept: %2</source>
+        <translation>la palette %1 du fichier de palettes de flam3 n&apos;est pas conservée : %2</translation>
+    </message>
 </context>
 <context>
     <name>awb::FlameItem</name>

@@ -2823,6 +2823,34 @@
         <source>passes=&quot;%1&quot; must be a whole number from 1 to %2</source>
         <translation>passes=&quot;%1&quot; 必须是 1 到 %2 之间的整数</translation>
     </message>
+    <message>
+        <source>%1 is larger than 16 MB</source>
+        <translation>%1 大于 16 MB</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read</source>
+        <translation>无法读取 %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>%1 has no palette %2</source>
+        <translation>%1 中没有调色板 %2</translation>
+    </message>
+    <message>
+        <source>its entry %1 has %2 hex digits, not 256 x 8</source>
+        <translation>其条目 %1 有 %2 个十六进制数字，而不是 256 x 8</translation>
+    </message>
+    <message>
+        <source>its entry %1 is not hexadecimal</source>
+        <translation>其条目 %1 不是十六进制</translation>
+    </message>
+    <message>
+        <source>palette %1 of flam3&apos;s palette file is not kept: %2</source>
+        <translation>未保留 flam3 调色板文件中的调色板 %1：%2</translation>
+    </message>
 </context>
 <context>
     <name>awb::FlameItem</name>

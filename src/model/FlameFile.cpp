@@ -6,11 +6,14 @@
 #include "core/flame/Variations.h"
 
 #include <QCoreApplication>
+#include <QFile>
 #include <QFileInfo>
+#include <QRegularExpression>
 #include <QXmlStreamReader>
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <cmath>
 
 namespace awb {
@@ -34,9 +37,78 @@ bool ignoredFlameAttribute(QStringView name)
         "palette_interpolation", "hsv_rgb_palette_blend", "temporal_filter_type",
         "temporal_filter_width", "temporal_filter_exp", "temporal_samples",
         "url", "nick", "notes", "contrast", "genome_index", "parent",
-        "hue", "soloxform", "new_linear", "plugins"};
+        "soloxform", "new_linear", "plugins"};
     return names.contains(name);
 }
+
+// flam3's palette file (flam3-palettes.xml, installed with flam3; the FLAM3_PALETTES variable
+// names another, as for flam3-render): each entry's number and hex data, read once an import;
+// or why it cannot be read.
+struct Flam3Palettes {
+    QString path, error;
+    std::map<int, QString> data;
+
+    Flam3Palettes()
+    {
+        const QByteArray env = qgetenv("FLAM3_PALETTES");
+        path = env.isEmpty() ? QStringLiteral("/usr/share/flam3/flam3-palettes.xml")
+                             : QString::fromLocal8Bit(env);
+        QFile file(path);
+        if (file.size() > (qint64(16) << 20)) {
+            error = FlameFileTr::tr("%1 is larger than 16 MB").arg(path);
+            return;
+        }
+        if (!file.open(QIODevice::ReadOnly)) {
+            error = FlameFileTr::tr("%1 cannot be read").arg(path);
+            return;
+        }
+        QXmlStreamReader xml(&file);
+        while (xml.readNextStartElement()) {
+            if (xml.name() == QLatin1String("palettes"))
+                continue;  // into the root
+            bool ok = false;
+            const int number = xml.attributes().value(QLatin1String("number")).toInt(&ok);
+            if (xml.name() == QLatin1String("palette") && ok)
+                data[number] = xml.attributes().value(QLatin1String("data")).toString();
+            xml.skipCurrentElement();
+        }
+        if (xml.hasError())
+            error = FlameFileTr::tr("%1: %2").arg(path, xml.errorString());
+    }
+
+    // Entry `number`, its hue turned by `hue` turns as flam3_get_palette does, into f.palette;
+    // an empty string, or why not.
+    QString get(int number, double hue, Flame &f) const
+    {
+        if (!error.isEmpty())
+            return error;
+        const auto it = data.find(number);
+        if (it == data.end())
+            return FlameFileTr::tr("%1 has no palette %2").arg(path).arg(number);
+        QString hex = it->second;
+        hex.remove(QRegularExpression(QStringLiteral("\\s")));
+        if (hex.size() != 256 * 8)
+            return FlameFileTr::tr("its entry %1 has %2 hex digits, not 256 x 8")
+                .arg(number)
+                .arg(hex.size());
+        for (int i = 0; i < 256; ++i) {
+            bool ok = false;
+            const uint v = hex.mid(8 * i, 8).toUInt(&ok, 16);
+            if (!ok)
+                return FlameFileTr::tr("its entry %1 is not hexadecimal").arg(number);
+            double rgb[3] = {((v >> 16) & 0xff) / 255.0, ((v >> 8) & 0xff) / 255.0,
+                             (v & 0xff) / 255.0};
+            if (hue != 0.0) {
+                double hsv[3];
+                flame::rgbToHsv(rgb, hsv);
+                hsv[0] += hue * 6.0;
+                flame::hsvToRgb(hsv, rgb);
+            }
+            f.palette[std::size_t(i)] = {rgb[0], rgb[1], rgb[2]};
+        }
+        return {};
+    }
+};
 
 // A whole number in [lo, hi], or nullopt.
 std::optional<long long> readWhole(QStringView text, long long lo, long long hi)
@@ -139,7 +211,21 @@ private:
         m_problem.clear();
         m_warnings.clear();
         std::array<bool, 256> given{};
+        m_paletteNumber.reset();
+        m_hue = 0;
         readFlameAttributes(f);
+        // palette="N": flam3's palette file's entry N (hue-turned); <color>s below override it.
+        if (m_paletteNumber) {
+            if (!m_palettes)
+                m_palettes.emplace();
+            const QString why = m_palettes->get(*m_paletteNumber, m_hue, f);
+            if (why.isEmpty())
+                given.fill(true);
+            else
+                warn(here(), FlameFileTr::tr("palette %1 of flam3's palette file is not kept: %2")
+                                 .arg(*m_paletteNumber)
+                                 .arg(why));
+        }
         int written = 0;  // <xform> elements so far
         while (m_problem.isEmpty() && m_xml.readNextStartElement()) {
             const QStringView tag = m_xml.name();
@@ -326,8 +412,13 @@ private:
             } else if (key == QLatin1String("estimator_curve")) {
                 real(&f.estimatorCurve);
             } else if (key == QLatin1String("palette")) {
-                ignored << QStringLiteral("palette=\"%1\" (a palette of flam3's palette file)")
-                               .arg(value);
+                if (const auto v = readWhole(value, 0, 100000))
+                    m_paletteNumber = int(*v);
+                else
+                    ignored << QStringLiteral("palette=\"%1\" (not a palette's number)")
+                                   .arg(value);
+            } else if (key == QLatin1String("hue")) {
+                real(&m_hue);
             } else if (!ignoredFlameAttribute(key)) {
                 ignored << QStringLiteral("%1=\"%2\"").arg(key.toString(), value);
             }
@@ -640,6 +731,9 @@ private:
     QString m_file;
     QString m_flame;
     QString m_problem;
+    std::optional<int> m_paletteNumber;  // the <flame>'s palette="N", and its hue
+    double m_hue = 0;
+    std::optional<Flam3Palettes> m_palettes;  // read at the first palette="N"
     QStringList m_warnings;
     FlameFileRead m_out;
 };

@@ -75,6 +75,7 @@ private slots:
     void realFlamesRenderAsFlam3Renders();
     void exportImportIsExact();
     void whatAFlameIsNot();
+    void paletteOfFlam3sPaletteFile();
 
 private:
     int run(const QStringList &args, QByteArray *out = nullptr, QByteArray *err = nullptr)
@@ -194,6 +195,56 @@ void TestFlameItem::whatAFlameIsNot()
                  &out, &err),
              1);
     QVERIFY2(err.contains("random iteration only"), err.constData());
+}
+
+// palette="N" names entry N of flam3's palette file (FLAM3_PALETTES, as for flam3-render; here
+// a file of two entries written by the test), its hue turned by hue="h" turns as
+// flam3_get_palette does: red, green and blue a sixth of a turn on are yellow, cyan and magenta
+// (a sixth back, magenta, yellow, cyan); a
+// <color> after it overrides its entry; an entry the file lacks is named in a warning.
+void TestFlameItem::paletteOfFlam3sPaletteFile()
+{
+    const QString palettes = m_dir.filePath("palettes.xml");
+    {
+        QFile f(palettes);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        QByteArray data;
+        for (int i = 0; i < 256; ++i)
+            data += i % 3 == 0 ? "00ff0000" : i % 3 == 1 ? "0000ff00" : "000000ff";
+        f.write("<palettes>\n<palette number=\"3\" name=\"other\" data=\"" + QByteArray(2048, '0')
+                + "\"/>\n<palette number=\"7\" name=\"rgb\" data=\"" + data + "\"/>\n</palettes>\n");
+    }
+    const QString flame = m_dir.filePath("named.flam3");
+    {
+        QFile f(flame);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("<flames>\n<flame name=\"n\" palette=\"7\" hue=\"0.16666666666666666\" size=\"64 64\" scale=\"16\">\n"
+                "<xform weight=\"1\" color=\"0\" spherical=\"1\" coefs=\"0.5 0 0 0.5 0 0\"/>\n"
+                "<color index=\"5\" rgb=\"10 20 30\"/>\n</flame>\n"
+                "<flame name=\"m\" palette=\"8\" size=\"64 64\" scale=\"16\">\n"
+                "<xform weight=\"1\" color=\"0\" spherical=\"1\" coefs=\"0.5 0 0 0.5 0 0\"/>\n"
+                "</flame>\n</flames>\n");
+    }
+    qputenv("FLAM3_PALETTES", palettes.toLocal8Bit());
+    const QString project = m_dir.filePath("named.awb");
+    QByteArray out, err;
+    const int code = run({"import", flame, "--out", project}, &out, &err);
+    qunsetenv("FLAM3_PALETTES");
+    QCOMPARE(code, 0);
+    QVERIFY2(err.contains("palette 8 of flam3's palette file is not kept")
+                 && err.contains("has no palette 8"),
+             err.constData());
+    QFile f(project);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QJsonArray items = QJsonDocument::fromJson(f.readAll()).object()["items"].toArray();
+    QCOMPARE(items.size(), 2);
+    // The palette as hex where every entry is a whole byte (model/FlameItem's format).
+    const QString hex = items[0].toObject()["palette"].toString();
+    QCOMPARE(hex.size(), 256 * 6);
+    QCOMPARE(hex.mid(0, 18), QStringLiteral("ffff0000ffffff00ff"));  // yellow, cyan, magenta
+    QCOMPARE(hex.mid(5 * 6, 6), QStringLiteral("0a141e"));            // <color index="5">
+    // No entry: black, as flam3's.
+    QCOMPARE(items[1].toObject()["palette"].toString(), QString(256 * 6, QLatin1Char('0')));
 }
 
 AWB_TEST_MAIN(TestFlameItem)

@@ -123,48 +123,6 @@ double shapeValue(FilterShape shape, double t)
 
 constexpr int kDeThreshold = 100;  // filters.h: DE_THRESH
 
-// palettes.c's rgb2hsv / hsv2rgb (h 0..6).
-void rgbToHsv(const double rgb[3], double hsv[3])
-{
-    const double r = rgb[0], g = rgb[1], b = rgb[2];
-    const double max = std::max({r, g, b}), min = std::min({r, g, b});
-    const double del = max - min;
-    const double s = max != 0.0 ? del / max : 0.0;
-    double h = 0;
-    if (s != 0.0) {
-        const double rc = (max - r) / del, gc = (max - g) / del, bc = (max - b) / del;
-        if (r == max)
-            h = bc - gc;
-        else if (g == max)
-            h = 2 + rc - bc;
-        else
-            h = 4 + gc - rc;
-        if (h < 0)
-            h += 6;
-    }
-    hsv[0] = h;
-    hsv[1] = s;
-    hsv[2] = max;
-}
-
-void hsvToRgb(const double hsv[3], double rgb[3])
-{
-    double h = hsv[0];
-    const double s = hsv[1], v = hsv[2];
-    h = std::fmod(h, 6.0);
-    if (h < 0)
-        h += 6.0;
-    const int j = int(std::floor(h));
-    const double f = h - j, p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
-    switch (j) {
-    case 1: rgb[0] = q, rgb[1] = v, rgb[2] = p; break;
-    case 2: rgb[0] = p, rgb[1] = v, rgb[2] = t; break;
-    case 3: rgb[0] = p, rgb[1] = q, rgb[2] = v; break;
-    case 4: rgb[0] = t, rgb[1] = p, rgb[2] = v; break;
-    case 5: rgb[0] = v, rgb[1] = p, rgb[2] = q; break;
-    default: rgb[0] = v, rgb[1] = t, rgb[2] = p; break;
-    }
-}
 
 // The accumulator of the log-scaled, density-estimated cells is float, as flam3-render's
 // (its default bits=33: an unsigned histogram, a float accumulator; flam3.c), each sum taken
@@ -323,6 +281,49 @@ void estimate(const FlameHistogram &h, Accums &acc, const DensityEstimator &de,
 }
 
 } // namespace
+
+// palettes.c's rgb2hsv / hsv2rgb (h 0..6).
+void rgbToHsv(const double rgb[3], double hsv[3])
+{
+    const double r = rgb[0], g = rgb[1], b = rgb[2];
+    const double max = std::max({r, g, b}), min = std::min({r, g, b});
+    const double del = max - min;
+    const double s = max != 0.0 ? del / max : 0.0;
+    double h = 0;
+    if (s != 0.0) {
+        const double rc = (max - r) / del, gc = (max - g) / del, bc = (max - b) / del;
+        if (r == max)
+            h = bc - gc;
+        else if (g == max)
+            h = 2 + rc - bc;
+        else
+            h = 4 + gc - rc;
+        if (h < 0)
+            h += 6;
+    }
+    hsv[0] = h;
+    hsv[1] = s;
+    hsv[2] = max;
+}
+
+void hsvToRgb(const double hsv[3], double rgb[3])
+{
+    double h = hsv[0];
+    const double s = hsv[1], v = hsv[2];
+    h = std::fmod(h, 6.0);
+    if (h < 0)
+        h += 6.0;
+    const int j = int(std::floor(h));
+    const double f = h - j, p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
+    switch (j) {
+    case 1: rgb[0] = q, rgb[1] = v, rgb[2] = p; break;
+    case 2: rgb[0] = p, rgb[1] = v, rgb[2] = t; break;
+    case 3: rgb[0] = p, rgb[1] = q, rgb[2] = v; break;
+    case 4: rgb[0] = t, rgb[1] = p, rgb[2] = v; break;
+    case 5: rgb[0] = v, rgb[1] = p, rgb[2] = q; break;
+    default: rgb[0] = v, rgb[1] = t, rgb[2] = p; break;
+    }
+}
 
 std::string_view filterShapeName(FilterShape shape)
 {

@@ -85,4 +85,9 @@ inline constexpr double kKeptFlameBytes = 256.0 * (1 << 20);
 // the memory); returns with stats.cancelled (and no pixels) when control.cancel is set.
 FlameImage renderFlameImage(const FlameImageJob &job, const IterationControl &control = {});
 
+// flam3's rgb2hsv and hsv2rgb (palettes.c: channels 0..1, hue 0..6), for the highlight power and
+// a palette's hue rotation (flam3_get_palette).
+void rgbToHsv(const double rgb[3], double hsv[3]);
+void hsvToRgb(const double hsv[3], double rgb[3]);
+
 } // namespace awb::flame
