@@ -68,8 +68,11 @@ struct Flam3Palettes {
                 continue;  // into the root
             bool ok = false;
             const int number = xml.attributes().value(QLatin1String("number")).toInt(&ok);
-            if (xml.name() == QLatin1String("palette") && ok)
-                data[number] = xml.attributes().value(QLatin1String("data")).toString();
+            if (xml.name() == QLatin1String("palette") && ok) {
+                QString hex = xml.attributes().value(QLatin1String("data")).toString();
+                hex.remove(QRegularExpression(QStringLiteral("\\s")));
+                data[number] = hex;
+            }
             xml.skipCurrentElement();
         }
         if (xml.hasError())
@@ -85,15 +88,14 @@ struct Flam3Palettes {
         const auto it = data.find(number);
         if (it == data.end())
             return FlameFileTr::tr("%1 has no palette %2").arg(path).arg(number);
-        QString hex = it->second;
-        hex.remove(QRegularExpression(QStringLiteral("\\s")));
+        const QString &hex = it->second;
         if (hex.size() != 256 * 8)
             return FlameFileTr::tr("its entry %1 has %2 hex digits, not 256 x 8")
                 .arg(number)
                 .arg(hex.size());
         for (int i = 0; i < 256; ++i) {
             bool ok = false;
-            const uint v = hex.mid(8 * i, 8).toUInt(&ok, 16);
+            const uint v = QStringView(hex).mid(8 * i, 8).toUInt(&ok, 16);
             if (!ok)
                 return FlameFileTr::tr("its entry %1 is not hexadecimal").arg(number);
             double rgb[3] = {((v >> 16) & 0xff) / 255.0, ((v >> 8) & 0xff) / 255.0,
